@@ -1,0 +1,149 @@
+#include "core/geometry/cone.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+
+#include "core/geometry/tolerances.h"
+
+namespace rockface::geometry {
+
+namespace {
+
+// min_i n_i . d for unit d, stopping early once it cannot beat `best`.
+double min_dot(const std::vector<Eigen::Vector3d>& normals, const Eigen::Vector3d& d, double best) {
+  double m = std::numeric_limits<double>::infinity();
+  for (const auto& n : normals) {
+    m = std::min(m, n.dot(d));
+    if (m <= best) return m;
+  }
+  return m;
+}
+
+double safe_asin(double s) { return std::asin(std::clamp(s, -1.0, 1.0)); }
+
+}  // namespace
+
+Cone::Cone(const std::vector<Eigen::Vector3d>& inward_normals) {
+  normals_.reserve(inward_normals.size());
+  for (const auto& n : inward_normals) add(n);
+}
+
+void Cone::add(const Eigen::Vector3d& inward_normal) {
+  const double len = inward_normal.norm();
+  if (!(len > 0) || !std::isfinite(len)) throw std::invalid_argument("cone half-space with a zero or non-finite normal");
+  normals_.push_back(inward_normal / len);
+}
+
+Cone Cone::intersect(const Cone& other) const {
+  Cone c = *this;
+  c.normals_.insert(c.normals_.end(), other.normals_.begin(), other.normals_.end());
+  return c;
+}
+
+ConeMargin Cone::margin() const {
+  ConeMargin best;
+  if (normals_.empty()) {
+    best.angle = std::numbers::pi / 2;
+    return best;
+  }
+  double best_dot = -std::numeric_limits<double>::infinity();
+  auto consider = [&](const Eigen::Vector3d& raw) {
+    const double len = raw.norm();
+    if (!(len > kParallelCross)) return;
+    const Eigen::Vector3d d = raw / len;
+    const double m = min_dot(normals_, d, best_dot);
+    if (m > best_dot) {
+      best_dot = m;
+      best.direction = d;
+    }
+  };
+  const size_t m = normals_.size();
+  // One tight half-space: d = n_i.
+  for (size_t i = 0; i < m; ++i) consider(normals_[i]);
+  // Two equally tight: d on their bisector, the maximum of n_i . d there.
+  // For (nearly) opposite normals the bisector is a whole great circle on
+  // which n_i . d is flat; the best point there is where another half-space
+  // is best, the projection of its normal onto that circle.
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = i + 1; j < m; ++j) {
+      const Eigen::Vector3d sum = normals_[i] + normals_[j];
+      consider(sum);
+      consider(-sum);
+      if (sum.norm() < kOppositeNormals) {
+        const Eigen::Vector3d u = (normals_[i] - normals_[j]).normalized();
+        consider(u.unitOrthogonal());
+        for (size_t k = 0; k < m; ++k)
+          if (k != i && k != j) consider(normals_[k] - normals_[k].dot(u) * u);
+      }
+    }
+  // Three equally tight: d is normal to (n_i - n_j) and (n_j - n_k); the
+  // cyclic sum of cross products is that normal without the cancellation of
+  // subtracting nearly equal normals first.
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = i + 1; j < m; ++j)
+      for (size_t k = j + 1; k < m; ++k) {
+        const Eigen::Vector3d c = normals_[i].cross(normals_[j]) + normals_[j].cross(normals_[k]) +
+                                  normals_[k].cross(normals_[i]);
+        consider(c);
+        consider(-c);
+      }
+  // Every candidate degenerate (e.g. two opposite half-spaces only): the cone
+  // is a plane, any direction in it has margin zero.
+  if (!std::isfinite(best_dot)) {
+    best_dot = 0;
+    Eigen::Vector3d any = normals_[0].unitOrthogonal();
+    best.direction = any;
+    best_dot = min_dot(normals_, any, -2.0);
+  }
+  best.angle = safe_asin(best_dot);
+  return best;
+}
+
+double Cone::margin_of(const Eigen::Vector3d& d) const {
+  const double len = d.norm();
+  if (!(len > 0)) return -std::numbers::pi / 2;
+  if (normals_.empty()) return std::numbers::pi / 2;
+  return safe_asin(min_dot(normals_, d / len, -2.0));
+}
+
+std::vector<Eigen::Vector3d> Cone::edges() const {
+  std::vector<Eigen::Vector3d> rays;
+  if (normals_.size() < 2 || margin().angle < -kAngleEpsRad) return rays;
+  const size_t m = normals_.size();
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = i + 1; j < m; ++j) {
+      const Eigen::Vector3d c = normals_[i].cross(normals_[j]);
+      const double len = c.norm();
+      if (!(len > kParallelCross)) continue;
+      for (double sense : {1.0, -1.0}) {
+        const Eigen::Vector3d d = sense * c / len;
+        if (min_dot(normals_, d, -2.0) < -kAngleEpsRad) continue;
+        const bool seen = std::any_of(rays.begin(), rays.end(), [&](const Eigen::Vector3d& r) {
+          return r.cross(d).norm() < kSameRayRad && r.dot(d) > 0;
+        });
+        if (!seen) rays.push_back(d);
+      }
+    }
+  return rays;
+}
+
+UnionEmptiness intersection_with_union_empty(const Cone& a, const std::vector<Cone>& b) {
+  UnionEmptiness result;
+  result.margin = std::numbers::pi / 2;  // nothing to intersect with: shut by any measure
+  for (size_t k = 0; k < b.size(); ++k) {
+    const double open = a.intersect(b[k]).margin().angle;
+    if (-open < result.margin) {
+      result.margin = -open;
+      result.open_index = static_cast<int>(k);
+    }
+  }
+  result.empty = result.margin > 0;
+  return result;
+}
+
+}  // namespace rockface::geometry

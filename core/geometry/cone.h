@@ -1,0 +1,66 @@
+#pragma once
+// Cones through the origin given as intersections of half-spaces n_i . d >= 0
+// (plane pyramids in Goodman & Shi's sense: joint, excavation, space and
+// rotation pyramids are all Cones).
+//
+// Emptiness is decided by the angular margin, never by the signs of pairwise
+// intersections: the margin is max over unit d of min_i asin(n_i . d), the
+// largest angle by which a direction can stay inside every half-space. It is
+// positive when the cone has an interior, zero when it is a plane, a line or
+// only the origin by a hair, and negative by the angle every half-space would
+// have to open for the cone to get an interior. It is continuous in the
+// normals, so nearly parallel planes give a small margin, not a flip.
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace rockface::geometry {
+
+struct ConeMargin {
+  double angle = 0;                                      // radians, see above
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // a unit direction achieving it
+};
+
+class Cone {
+ public:
+  Cone() = default;
+  // Each normal points into its half-space; it is normalised here. A zero
+  // normal has no half-space and throws std::invalid_argument.
+  explicit Cone(const std::vector<Eigen::Vector3d>& inward_normals);
+
+  void add(const Eigen::Vector3d& inward_normal);
+  const std::vector<Eigen::Vector3d>& normals() const { return normals_; }
+  bool unconstrained() const { return normals_.empty(); }
+
+  // Intersection: all half-spaces of both.
+  Cone intersect(const Cone& other) const;
+
+  // The cone's margin (exact: the optimum of the max-min problem lies where
+  // one, two or three half-spaces are equally tight, and all such candidates
+  // are evaluated; O(m^4) for m half-spaces, fine for the m <= ~20 of blocks).
+  ConeMargin margin() const;
+
+  // min_i asin(n_i . d / |d|): how far d is inside (> 0) or outside (< 0).
+  double margin_of(const Eigen::Vector3d& d) const;
+
+  // Extreme rays (unit) of a cone with an interior or a lower-dimensional
+  // pointed cone; empty for a shut cone. A cone containing a whole line (one
+  // or two half-spaces, parallel planes) has edges only where they exist.
+  std::vector<Eigen::Vector3d> edges() const;
+
+ private:
+  std::vector<Eigen::Vector3d> normals_;
+};
+
+// Whether A intersected with the union of the cones B_k is empty (that is,
+// A cap B_k is empty for every k). margin > 0: shut by that angle (the least
+// shut intersection); margin < 0: open by -margin, through B[open_index].
+struct UnionEmptiness {
+  bool empty = true;
+  double margin = 0;    // radians
+  int open_index = -1;  // the B_k whose intersection with A is most open
+};
+UnionEmptiness intersection_with_union_empty(const Cone& a, const std::vector<Cone>& b);
+
+}  // namespace rockface::geometry

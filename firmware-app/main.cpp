@@ -1,0 +1,48 @@
+// rockface: the composition root. Parses the command line and runs one verb;
+// without a verb it would start the tablet UI (not built yet: see README).
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <memory>
+
+#include "core/common/error.h"
+#include "firmware-app/verb_registry.h"
+
+namespace rockface::app {
+std::vector<Verb>& verbs() {
+  static std::vector<Verb> all;
+  return all;
+}
+}  // namespace rockface::app
+
+int main(int argc, char** argv) {
+  using namespace rockface;
+  CLI::App cli{"rockface: rock-face photogrammetry and block stability for the field tablet"};
+  cli.require_subcommand(0, 1);
+  auto& verbs = app::verbs();
+  std::sort(verbs.begin(), verbs.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  std::vector<std::pair<CLI::App*, app::VerbRun>> runs;
+  for (const auto& verb : verbs) {
+    CLI::App* sub = cli.add_subcommand(verb.name, verb.description);
+    runs.emplace_back(sub, verb.setup(*sub));
+  }
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints help (exit 0) or the usage error; usage errors are bad input.
+    const int rc = cli.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+  try {
+    for (auto& [sub, run] : runs)
+      if (sub->parsed()) return run();
+    std::cerr << "rockface: the tablet UI is not part of this build; use a verb (rockface --help)\n";
+    return 1;
+  } catch (const InputError& e) {
+    std::cerr << "rockface: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "rockface: " << e.what() << "\n";
+    return 1;
+  }
+}

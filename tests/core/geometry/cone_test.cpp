@@ -1,0 +1,154 @@
+#include "core/geometry/cone.h"
+
+#include <cmath>
+#include <random>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "core/common/units.h"
+#include "core/geometry/orientation.h"
+
+namespace rockface::geometry {
+namespace {
+
+Eigen::Vector3d n_deg(double dip, double dipdir) {
+  return plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)});
+}
+
+bool has_ray(const std::vector<Eigen::Vector3d>& rays, const Eigen::Vector3d& d, double tol) {
+  const Eigen::Vector3d u = d.normalized();
+  for (const auto& r : rays)
+    if ((r - u).norm() < tol) return true;
+  return false;
+}
+
+TEST(Cone, PublishedPyramid000) {
+  // Joints 10/110, 85/70, 90/180 (a classic Goodman & Shi example).
+  const Eigen::Vector3d n1 = n_deg(10, 110), n2 = n_deg(85, 70), n3 = n_deg(90, 180);
+  const Eigen::Vector3d i12 = n1.cross(n2), i13 = n1.cross(n3), i23 = n2.cross(n3);
+  // Published to 4 decimals.
+  EXPECT_NEAR(i12.x(), -0.3407, 5e-5);
+  EXPECT_NEAR(i12.y(), 0.9077, 5e-5);
+  EXPECT_NEAR(i12.z(), 0.1112, 5e-5);
+  EXPECT_NEAR(i13.x(), 0.9848, 5e-5);
+  EXPECT_NEAR(i13.z(), -0.1632, 5e-5);
+  EXPECT_NEAR(i23.x(), 0.0872, 5e-5);
+  EXPECT_NEAR(i23.z(), -0.9361, 5e-5);
+
+  const Cone jp000({n1, n2, n3});
+  EXPECT_GT(jp000.margin().angle, 0);
+  const auto rays = jp000.edges();
+  ASSERT_EQ(rays.size(), 3u);
+  // Edges recomputed from the same normals: equal to rounding (1e-12).
+  EXPECT_TRUE(has_ray(rays, i13, 1e-12));
+  EXPECT_TRUE(has_ray(rays, -i12, 1e-12));
+  EXPECT_TRUE(has_ray(rays, -i23, 1e-12));
+}
+
+TEST(Cone, MarginOfSimpleCones) {
+  // One half-space: a direction can be 90 degrees inside.
+  EXPECT_NEAR(Cone({Eigen::Vector3d::UnitZ()}).margin().angle, kPi / 2, 1e-12);
+  // The positive octant: best direction (1,1,1)/sqrt3, margin asin(1/sqrt3).
+  const Cone octant({Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()});
+  const ConeMargin m = octant.margin();
+  EXPECT_NEAR(m.angle, std::asin(1 / std::sqrt(3.0)), 1e-12);
+  EXPECT_NEAR(m.direction.x(), 1 / std::sqrt(3.0), 1e-12);
+  // Opposite octant added: shut by the same angle.
+  const Cone shut = octant.intersect(Cone({-Eigen::Vector3d(1, 1, 1)}));
+  EXPECT_LT(shut.margin().angle, 0);
+}
+
+TEST(Cone, ShutMarginIsHowFarEveryHalfSpaceMustOpen) {
+  // Four half-spaces whose normals are the corners of a regular tetrahedron:
+  // their centroid is the origin, so the cone is shut; the best direction is
+  // opposite one normal, at asin(-1/3) outside the other three.
+  const double s = 1 / std::sqrt(3.0);
+  const Cone tet({Eigen::Vector3d(s, s, s), Eigen::Vector3d(s, -s, -s), Eigen::Vector3d(-s, s, -s),
+                  Eigen::Vector3d(-s, -s, s)});
+  EXPECT_NEAR(tet.margin().angle, std::asin(-1.0 / 3.0), 1e-12);
+  EXPECT_TRUE(tet.edges().empty());
+}
+
+TEST(Cone, NearlyParallelPlanesGiveContinuousMargin) {
+  // A thin wedge between z = 0 and a plane tilted by eps about the y axis,
+  // closed sideways by |y| <= -x: open by exactly eps/2. Swapping the tilt
+  // shuts it; the shut margin then scales with eps (the sides let the best
+  // direction lean sideways, so it is not eps/2, but a fixed multiple of eps).
+  // No sign flip and no jump however small eps gets.
+  const Eigen::Vector3d side1(-1, 1, 0), side2(-1, -1, 0), back(-1, 0, 0);
+  double shut_ratio = 0;
+  for (double eps : {1e-3, 1e-6, 1e-9}) {
+    const Eigen::Vector3d a = Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d open_b = -Eigen::Vector3d(std::sin(eps), 0, std::cos(eps));
+    const Eigen::Vector3d shut_b = -Eigen::Vector3d(-std::sin(eps), 0, std::cos(eps));
+    // Rounding of the normals is ~1e-16; the optimum is a triple candidate
+    // built from them, good to ~1e-16 / eps relative, i.e. well under 1e-12
+    // of eps/2 absolute even at eps = 1e-9.
+    EXPECT_NEAR(Cone({a, open_b, side1, side2, back}).margin().angle, eps / 2, 1e-12) << eps;
+    const double shut = Cone({a, shut_b, side1, side2, back}).margin().angle;
+    EXPECT_LT(shut, 0) << eps;
+    if (shut_ratio == 0) shut_ratio = shut / eps;
+    // The ratio is eps-independent up to O(eps^2) terms (1e-6 at eps = 1e-3)
+    // and the ~1e-7 relative rounding at eps = 1e-9.
+    EXPECT_NEAR(shut / eps, shut_ratio, 1e-5) << eps;
+  }
+}
+
+TEST(Cone, OppositeHalfSpacesLeaveAPlane) {
+  // z >= 0 and z <= 0: the plane z = 0, margin zero, whatever else cuts it
+  // within the plane.
+  EXPECT_NEAR(Cone({Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ()}).margin().angle, 0, 1e-15);
+  EXPECT_NEAR(Cone({Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ(), Eigen::Vector3d(1, 0, 0.3)})
+                  .margin()
+                  .angle,
+              0, 1e-15);
+}
+
+TEST(Cone, MarginIsInvariantUnderRotationAndOrder) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> g;
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Eigen::Vector3d> ns;
+    for (int i = 0; i < 5; ++i) ns.emplace_back(g(rng), g(rng), g(rng));
+    const double base = Cone(ns).margin().angle;
+    const Eigen::Matrix3d r = Eigen::Quaterniond::UnitRandom().toRotationMatrix();
+    std::vector<Eigen::Vector3d> turned;
+    for (auto it = ns.rbegin(); it != ns.rend(); ++it) turned.push_back(r * *it);
+    // Same optimum evaluated on rotated normals: equal to rounding.
+    EXPECT_NEAR(Cone(turned).margin().angle, base, 1e-12);
+  }
+}
+
+TEST(Cone, MarginIsTheOptimumAgainstSampling) {
+  // No direction sampled on the sphere beats the computed optimum.
+  std::mt19937 rng(11);
+  std::normal_distribution<double> g;
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Eigen::Vector3d> ns;
+    for (int i = 0; i < 4 + trial % 4; ++i) ns.emplace_back(g(rng), g(rng), g(rng));
+    const Cone c(ns);
+    const double best = c.margin().angle;
+    for (int k = 0; k < 2000; ++k) {
+      const Eigen::Vector3d d(g(rng), g(rng), g(rng));
+      EXPECT_LE(c.margin_of(d), best + 1e-12);
+    }
+  }
+}
+
+TEST(Cone, UnionEmptiness) {
+  const Cone down({-Eigen::Vector3d::UnitZ()});
+  const Cone east({Eigen::Vector3d::UnitX()});
+  // A narrow cone about +z (half-angle atan(0.5)).
+  const Cone narrow_up({Eigen::Vector3d(1, 0, 0.5), Eigen::Vector3d(-1, 0, 0.5), Eigen::Vector3d(0, 1, 0.5),
+                        Eigen::Vector3d(0, -1, 0.5)});
+  const UnionEmptiness shut = intersection_with_union_empty(narrow_up, {down});
+  EXPECT_TRUE(shut.empty);
+  EXPECT_GT(shut.margin, 0);
+  const UnionEmptiness open = intersection_with_union_empty(narrow_up, {down, east});
+  EXPECT_FALSE(open.empty);
+  EXPECT_EQ(open.open_index, 1);
+}
+
+}  // namespace
+}  // namespace rockface::geometry
