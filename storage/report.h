@@ -1,0 +1,115 @@
+#pragma once
+// The analysis report (SCENE.md, format rockface-report/1) as plain values,
+// filled by the analysis (firmware-app) and written by report_json.cpp.
+// Coordinates here are absolute (datum added back); angles in degrees.
+// Optional parts are written only when present, so a report holds exactly
+// what was analysed.
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace rockface::storage {
+
+struct ReportMode {
+  std::string type = "none";        // falling | lifting | sliding | none
+  std::vector<std::string> planes;  // plane ids of the sliding planes
+  std::optional<Eigen::Vector3d> direction;
+  bool marginal = false;  // the resultant lies within tolerance of a mode boundary
+};
+
+struct ReportPyramid {
+  std::string face;  // free face id, or the group name of several faces
+  std::string code;  // one digit per joint, scene order
+  bool empty = false, finite = false, removable = false;
+  double margin_deg = 0;  // of the removability verdict
+  bool marginal = false;
+  double jp_margin_deg = 0;        // signed: JP open (> 0) or shut (< 0)
+  double jp_ep_margin_deg = 0;     // signed: JP cap EP open (> 0) or shut (< 0)
+  std::optional<ReportMode> mode;  // removable pyramids only
+  std::optional<double> fos;       // friction only; absent when no strengths or no sliding
+};
+
+struct ReportCorner {
+  int vertex = 0;
+  bool rotatable = false;
+  double margin_deg = 0;
+  bool marginal = false;
+  std::vector<Eigen::Vector3d> rotation_edges;  // extreme rays of the rotation space
+  std::vector<std::string> sliding_on;          // joints the block slides on while rotating
+};
+
+struct ReportEdge {
+  std::array<int, 2> vertices{};
+  bool rotatable = false;
+  double margin_deg = 0;
+  bool marginal = false;
+};
+
+struct ReportRotation {
+  std::vector<ReportCorner> corners;
+  std::vector<ReportEdge> edges;
+};
+
+struct ReportRemoteAxis {
+  bool found = false;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
+  int starts = 0, hits = 0;
+  double penalty = 0;  // best objective reached
+};
+
+struct ReportStabilityStep {
+  double lambda = 0;
+  std::vector<double> displacement;
+};
+
+struct ReportStability {
+  std::optional<double> fos;
+  std::vector<double> static_mode, dynamic_mode;
+  std::vector<ReportStabilityStep> path;
+};
+
+struct ReportBlock {
+  std::string id;
+  std::string source = "scene";     // "scene" or "traces"
+  std::vector<std::string> traces;  // trace ids of the loop (source "traces")
+  std::string code;
+  bool convex = true;
+  std::vector<Eigen::Vector3d> vertices;
+  std::optional<double> volume, mass;
+  std::optional<Eigen::Vector3d> centroid;
+  std::optional<Eigen::Matrix3d> inertia;
+  std::optional<Eigen::Vector3d> principal_moments;
+  std::map<std::string, double> face_areas;
+  bool finite = false, removable = false;
+  double margin_deg = 0;
+  bool marginal = false;
+  std::optional<ReportMode> mode;
+  std::optional<double> fos;
+  std::optional<ReportRotation> rotation;
+  std::optional<ReportRemoteAxis> remote_axis;
+  std::optional<ReportStability> stability;
+  std::vector<std::string> notes;  // e.g. "face J3 opens under water pressure"
+};
+
+struct Report {
+  std::vector<std::string> effects_simulated{"gravity"};
+  std::vector<ReportPyramid> pyramids;
+  std::vector<ReportBlock> blocks;
+  std::vector<std::string> notes;  // scene-level notes (traces left out, effects not applicable)
+  std::map<std::string, double> timings_ms;
+};
+
+// JSON text of the report (format rockface-report/1), pretty-printed.
+std::string report_to_json(const Report& report);
+// One block as a JSON object text (what the project store keeps per block).
+std::string block_to_json(const ReportBlock& block);
+// A readable table for a terminal: one line per removable or marginal
+// pyramid and per block, with verdicts, margins, modes and factors of safety.
+std::string report_summary(const Report& report);
+
+}  // namespace rockface::storage
