@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
   CLI::App cli{"rockface: rock-face photogrammetry and block stability for the field tablet"};
   cli.require_subcommand(0, 1);
   auto& verbs = app::verbs();
-  std::sort(verbs.begin(), verbs.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  std::sort(verbs.begin(), verbs.end(),
+            [](const auto& a, const auto& b) { return a.name < b.name; });
   std::vector<std::pair<CLI::App*, app::VerbRun>> runs;
   for (const auto& verb : verbs) {
     CLI::App* sub = cli.add_subcommand(verb.name, verb.description);
@@ -36,7 +37,8 @@ int main(int argc, char** argv) {
   try {
     for (auto& [sub, run] : runs)
       if (sub->parsed()) return run();
-    std::cerr << "rockface: the tablet UI is not part of this build; use a verb (rockface --help)\n";
+    std::cerr
+        << "rockface: the tablet UI is not part of this build; use a verb (rockface --help)\n";
     return 1;
   } catch (const InputError& e) {
     std::cerr << "rockface: " << e.what() << "\n";

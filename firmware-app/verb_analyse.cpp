@@ -19,8 +19,10 @@ struct AnalyseOptions {
 VerbRun setup_analyse(CLI::App& sub) {
   auto opts = std::make_shared<AnalyseOptions>();
   sub.add_option("SCENE", opts->scene, "scene file (rockface-scene/1)")->required();
-  sub.add_option("--out", opts->out, "write the report (rockface-report/1) to this file instead of stdout");
-  sub.add_flag("--summary", opts->summary, "print a readable table of verdicts instead of the JSON report");
+  sub.add_option("--out", opts->out,
+                 "write the report (rockface-report/1) to this file instead of stdout");
+  sub.add_flag("--summary", opts->summary,
+               "print a readable table of verdicts instead of the JSON report");
   return [opts] {
     const storage::Scene scene = storage::load_scene(opts->scene);
     NoProgress progress;
@@ -45,7 +47,8 @@ VerbRun setup_analyse(CLI::App& sub) {
       }
     }
     if (opts->summary) {
-      std::cout << (scene.name.empty() ? opts->scene : scene.name) << "\n" << storage::report_summary(report);
+      std::cout << (scene.name.empty() ? opts->scene : scene.name) << "\n"
+                << storage::report_summary(report);
     } else if (opts->out.empty()) {
       std::cout << json;
     }
@@ -53,8 +56,9 @@ VerbRun setup_analyse(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar reg{"analyse", "geometric and mechanical analysis of a scene; report on stdout or to a file",
-                        setup_analyse};
+const VerbRegistrar reg{
+    "analyse", "geometric and mechanical analysis of a scene; report on stdout or to a file",
+    setup_analyse};
 
 }  // namespace
 }  // namespace rockface::app

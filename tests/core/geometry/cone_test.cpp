@@ -3,8 +3,8 @@
 #include <cmath>
 #include <random>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
@@ -98,10 +98,11 @@ TEST(Cone, OppositeHalfSpacesLeaveAPlane) {
   // z >= 0 and z <= 0: the plane z = 0, margin zero, whatever else cuts it
   // within the plane.
   EXPECT_NEAR(Cone({Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ()}).margin().angle, 0, 1e-15);
-  EXPECT_NEAR(Cone({Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ(), Eigen::Vector3d(1, 0, 0.3)})
-                  .margin()
-                  .angle,
-              0, 1e-15);
+  EXPECT_NEAR(
+      Cone({Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ(), Eigen::Vector3d(1, 0, 0.3)})
+          .margin()
+          .angle,
+      0, 1e-15);
 }
 
 TEST(Cone, MarginIsInvariantUnderRotationAndOrder) {
@@ -139,8 +140,8 @@ TEST(Cone, UnionEmptiness) {
   const Cone down({-Eigen::Vector3d::UnitZ()});
   const Cone east({Eigen::Vector3d::UnitX()});
   // A narrow cone about +z (half-angle atan(0.5)).
-  const Cone narrow_up({Eigen::Vector3d(1, 0, 0.5), Eigen::Vector3d(-1, 0, 0.5), Eigen::Vector3d(0, 1, 0.5),
-                        Eigen::Vector3d(0, -1, 0.5)});
+  const Cone narrow_up({Eigen::Vector3d(1, 0, 0.5), Eigen::Vector3d(-1, 0, 0.5),
+                        Eigen::Vector3d(0, 1, 0.5), Eigen::Vector3d(0, -1, 0.5)});
   const UnionEmptiness shut = intersection_with_union_empty(narrow_up, {down});
   EXPECT_TRUE(shut.empty);
   EXPECT_GT(shut.margin, 0);
