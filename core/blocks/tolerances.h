@@ -40,3 +40,11 @@ namespace rockface::blocks {
 inline constexpr double kOnSurfaceRel = 1e-3;
 
 }  // namespace rockface::blocks
+
+namespace rockface::blocks {
+
+// Two faces meeting at an edge with outward normals closer than this (sine
+// of the angle) are flat there: the edge is neither convex nor reflex.
+inline constexpr double kReflexSine = 1e-12;
+
+}  // namespace rockface::blocks
