@@ -1,0 +1,94 @@
+#include "camera/capture_guidance.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/common/error.h"
+
+namespace rockface::camera {
+
+namespace {
+
+std::string fmt(double v, const char* unit) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.3g %s", v, unit);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<GuidanceNote> check_shot(const ExifInfo& shot, const std::string& label) {
+  std::vector<GuidanceNote> notes;
+  if (shot.flash_fired && *shot.flash_fired)
+    notes.push_back({GuidanceNote::Severity::warning,
+                     "the flash fired on the " + label +
+                         " shot: flash shadows move with the camera and spoil matching; "
+                         "switch the flash off"});
+  if (!shot.focal_length_mm)
+    notes.push_back(
+        {GuidanceNote::Severity::warning, "the " + label +
+                                              " shot has no focal length in its EXIF, so rockface "
+                                              "cannot check that it matches the calibration"});
+  return notes;
+}
+
+std::vector<GuidanceNote> check_pair(const ExifInfo& left, const ExifInfo& right,
+                                     const CaptureTolerances& tol) {
+  std::vector<GuidanceNote> refusals, warnings;
+  if (left.focal_length_mm && right.focal_length_mm) {
+    const double a = *left.focal_length_mm, b = *right.focal_length_mm;
+    if (std::abs(a - b) > tol.focal_length_rel * std::max(a, b))
+      refusals.push_back({GuidanceNote::Severity::refusal,
+                          "the left shot was taken at " + fmt(a, "mm") +
+                              " focal length and the "
+                              "right at " +
+                              fmt(b, "mm") +
+                              ": one calibration cannot serve both; set the zoom once "
+                              "(tape the ring) and retake the pair"});
+  }
+  if (left.focus_distance_m && right.focus_distance_m) {
+    const double a = *left.focus_distance_m, b = *right.focus_distance_m;
+    if (std::abs(a - b) > std::max(tol.focus_abs_m, tol.focus_rel * std::max(a, b)))
+      refusals.push_back({GuidanceNote::Severity::refusal,
+                          "the camera refocused between the shots (" + fmt(a, "m") + " then " +
+                              fmt(b, "m") +
+                              "): focusing moves the lens and changes the calibration; lock "
+                              "focus (or switch the lens to MF) and retake the pair"});
+  }
+  if (left.f_number && right.f_number && std::abs(*left.f_number - *right.f_number) > 0.05)
+    warnings.push_back({GuidanceNote::Severity::warning,
+                        "the aperture changed between the shots (f/" + fmt(*left.f_number, "") +
+                            "then f/" + fmt(*right.f_number, "") +
+                            "); use aperture priority with a fixed f-number"});
+  if (!left.model.empty() && !right.model.empty() && left.model != right.model)
+    warnings.push_back({GuidanceNote::Severity::warning, "the shots come from two camera bodies (" +
+                                                             left.model + ", " + right.model +
+                                                             "); each needs its own calibration"});
+  for (const auto& n : check_shot(left, "left")) warnings.push_back(n);
+  for (const auto& n : check_shot(right, "right")) warnings.push_back(n);
+  refusals.insert(refusals.end(), warnings.begin(), warnings.end());
+  return refusals;
+}
+
+void require_same_optics(const ExifInfo& left, const ExifInfo& right,
+                         const CaptureTolerances& tol) {
+  for (const auto& note : check_pair(left, right, tol))
+    if (note.severity == GuidanceNote::Severity::refusal)
+      throw InputError("stereo pair", note.text);
+}
+
+BaseLengthHint base_length_hint(double distance_m) {
+  if (!(distance_m > 0) || !std::isfinite(distance_m))
+    throw InputError("distance to the face", "must be a positive number of metres");
+  BaseLengthHint h;
+  h.min_m = distance_m / 8;
+  h.max_m = distance_m / 5;
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "at %.1f m from the face, place the two stations %.2f to %.2f m apart", distance_m,
+                h.min_m, h.max_m);
+  h.text = buf;
+  return h;
+}
+
+}  // namespace rockface::camera

@@ -1,0 +1,630 @@
+#include "camera/gphoto2_camera.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <gphoto2/gphoto2.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "camera/command_thread.h"
+#include "camera/gphoto2_errors.h"
+
+namespace rockface::camera {
+
+namespace fs = std::filesystem;
+using Kind = CameraError::Kind;
+
+namespace {
+
+// Logical settings and the widget names different makers give them, most
+// common first (Nikon, Canon, Sony, Fuji as libgphoto2's ptp2 camlib names them).
+const std::vector<std::string> kProgramNames{"expprogram", "autoexposuremode", "exposuremode"};
+const std::vector<std::string> kApertureNames{"f-number", "aperture"};
+const std::vector<std::string> kShutterNames{"shutterspeed", "shutterspeed2"};
+const std::vector<std::string> kIsoNames{"iso", "isospeed"};
+const std::vector<std::string> kFormatNames{"imagequality", "imageformat"};
+const std::vector<std::string> kTargetNames{"capturetarget"};
+const std::vector<std::string> kFlashNames{"flashmode", "flashmode2", "canonflashmode"};
+const std::vector<std::string> kFocusModeNames{"focusmode", "focusmode2", "afmode"};
+const std::vector<std::string> kAutofocusNames{"autofocusdrive"};
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+bool is_disk_port(const std::string& port) {
+  return port.rfind("disk:", 0) == 0;
+}
+
+std::string join_path(const std::string& folder, const std::string& name) {
+  return folder == "/" ? "/" + name : folder + "/" + name;
+}
+
+std::pair<std::string, std::string> split_path(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return {"/", path};
+  return {slash == 0 ? "/" : path.substr(0, slash), path.substr(slash + 1)};
+}
+
+struct ListDeleter {
+  void operator()(CameraList* l) const { gp_list_unref(l); }
+};
+using ListPtr = std::unique_ptr<CameraList, ListDeleter>;
+ListPtr new_list() {
+  CameraList* l = nullptr;
+  gp_list_new(&l);
+  return ListPtr(l);
+}
+
+struct FileDeleter {
+  void operator()(CameraFile* f) const { gp_file_unref(f); }
+};
+using FilePtr = std::unique_ptr<CameraFile, FileDeleter>;
+FilePtr new_file() {
+  CameraFile* f = nullptr;
+  gp_file_new(&f);
+  return FilePtr(f);
+}
+
+struct WidgetDeleter {
+  void operator()(CameraWidget* w) const { gp_widget_free(w); }
+};
+using WidgetPtr = std::unique_ptr<CameraWidget, WidgetDeleter>;
+
+CameraSetting describe(CameraWidget* w) {
+  CameraSetting s;
+  const char* text = nullptr;
+  gp_widget_get_name(w, &text);
+  s.name = text ? text : "";
+  text = nullptr;
+  gp_widget_get_label(w, &text);
+  s.label = text ? text : "";
+  int ro = 0;
+  gp_widget_get_readonly(w, &ro);
+  s.read_only = ro != 0;
+  CameraWidgetType type;
+  gp_widget_get_type(w, &type);
+  switch (type) {
+    case GP_WIDGET_TEXT:
+    case GP_WIDGET_RADIO:
+    case GP_WIDGET_MENU: {
+      const char* value = nullptr;
+      if (gp_widget_get_value(w, &value) == GP_OK && value) s.value = value;
+      const int n = gp_widget_count_choices(w);
+      for (int i = 0; i < n; ++i) {
+        const char* choice = nullptr;
+        if (gp_widget_get_choice(w, i, &choice) == GP_OK && choice) s.choices.push_back(choice);
+      }
+      break;
+    }
+    case GP_WIDGET_RANGE: {
+      float value = 0;
+      if (gp_widget_get_value(w, &value) == GP_OK) s.value = std::to_string(value);
+      break;
+    }
+    case GP_WIDGET_TOGGLE:
+    case GP_WIDGET_DATE: {
+      int value = 0;
+      if (gp_widget_get_value(w, &value) == GP_OK) s.value = std::to_string(value);
+      break;
+    }
+    default:
+      break;
+  }
+  return s;
+}
+
+void collect_leaves(CameraWidget* w, std::vector<CameraSetting>& out) {
+  CameraWidgetType type;
+  gp_widget_get_type(w, &type);
+  if (type == GP_WIDGET_WINDOW || type == GP_WIDGET_SECTION) {
+    const int n = gp_widget_count_children(w);
+    for (int i = 0; i < n; ++i) {
+      CameraWidget* child = nullptr;
+      if (gp_widget_get_child(w, i, &child) == GP_OK) collect_leaves(child, out);
+    }
+    return;
+  }
+  if (type != GP_WIDGET_BUTTON) out.push_back(describe(w));
+}
+
+}  // namespace
+
+struct Gphoto2Camera::State {
+  Options options;
+  GPContext* context = nullptr;
+  ::Camera* camera = nullptr;  // null while disconnected
+  std::string model, port;
+  std::vector<std::string> pending;  // captured on the camera, not yet downloaded
+  bool reconnecting = false;         // the camera was lost: look it up again by model
+
+  ~State() {
+    disconnect();
+    if (context) gp_context_unref(context);
+  }
+
+  void disconnect() {
+    if (!camera) return;
+    gp_camera_exit(camera, context);
+    gp_camera_unref(camera);
+    camera = nullptr;
+  }
+
+  // Turns a libgphoto2 result into an exception; the camera is dropped when
+  // it is gone so the next command reconnects.
+  void check(int rc, const std::string& action) {
+    if (rc >= GP_OK) return;
+    CameraError e = gphoto2_error(rc, action);
+    // The directory camlib reports a file that cannot be read as an I/O
+    // error; while the folder is still there, the camera is not gone.
+    if (e.kind() == Kind::disconnected && is_disk_port(port) && fs::is_directory(port.substr(5))) {
+      throw CameraError(Kind::file_unreadable,
+                        action +
+                            ": the file cannot be read (damaged, or removed while reading) "
+                            "(libgphoto2: " +
+                            std::string(gp_result_as_string(rc)) + ", code " + std::to_string(rc) +
+                            ")");
+    }
+    if (e.kind() == Kind::disconnected) {
+      disconnect();
+      reconnecting = true;
+    }
+    throw e;
+  }
+
+  void connect() {
+    if (!context) context = gp_context_new();
+    std::string want_model = options.model;
+    std::string want_port = options.port;
+    const bool search =
+        want_model.empty() || want_port.empty() || (reconnecting && !is_disk_port(want_port));
+    if (search) {
+      // Find the camera on USB (again after a replug: the port number changes).
+      const auto found = detect_with(context);
+      auto it = std::find_if(found.begin(), found.end(), [&](const DetectedCamera& c) {
+        return want_model.empty() || c.model == want_model;
+      });
+      if (it == found.end())
+        throw CameraError(
+            Kind::no_camera,
+            want_model.empty()
+                ? "No camera found: plug the camera in, switch it on and set its "
+                  "USB mode to PTP (not mass storage)"
+                : "The camera " + want_model + " is not connected: plug it in and switch it on");
+      want_model = it->model;
+      want_port = it->port;
+    }
+    if (is_disk_port(want_port) && !fs::is_directory(want_port.substr(5)))
+      throw CameraError(Kind::disconnected, "The card folder " + want_port.substr(5) + " (port " +
+                                                want_port + ") does not exist or is not mounted");
+
+    CameraAbilitiesList* abilities_list = nullptr;
+    gp_abilities_list_new(&abilities_list);
+    std::unique_ptr<CameraAbilitiesList, int (*)(CameraAbilitiesList*)> al(abilities_list,
+                                                                           gp_abilities_list_free);
+    check(gp_abilities_list_load(abilities_list, context), "Loading the camera drivers");
+    const int m = gp_abilities_list_lookup_model(abilities_list, want_model.c_str());
+    if (m < GP_OK)
+      throw CameraError(Kind::no_camera,
+                        "The camera model \"" + want_model + "\" is not known to libgphoto2");
+    CameraAbilities abilities;
+    check(gp_abilities_list_get_abilities(abilities_list, m, &abilities),
+          "Reading the camera driver");
+
+    GPPortInfoList* port_list = nullptr;
+    gp_port_info_list_new(&port_list);
+    std::unique_ptr<GPPortInfoList, int (*)(GPPortInfoList*)> pl(port_list, gp_port_info_list_free);
+    check(gp_port_info_list_load(port_list), "Listing the camera ports");
+    const int p = gp_port_info_list_lookup_path(port_list, want_port.c_str());
+    if (p < GP_OK)
+      throw CameraError(Kind::no_camera,
+                        "There is no camera port \"" + want_port +
+                            "\" (ports look like usb:001,007 or disk:/media/card)");
+    GPPortInfo info;
+    check(gp_port_info_list_get_info(port_list, p, &info), "Reading the camera port");
+
+    ::Camera* cam = nullptr;
+    gp_camera_new(&cam);
+    int rc = gp_camera_set_abilities(cam, abilities);
+    if (rc >= GP_OK) rc = gp_camera_set_port_info(cam, info);
+    if (rc >= GP_OK) rc = gp_camera_init(cam, context);
+    if (rc < GP_OK) {
+      gp_camera_unref(cam);
+      CameraError e = gphoto2_error(rc, "Connecting to the " + want_model + " on " + want_port);
+      throw e;
+    }
+    camera = cam;
+    reconnecting = false;
+    model = want_model;
+    port = want_port;
+  }
+
+  static std::vector<DetectedCamera> detect_with(GPContext* context) {
+    ListPtr list = new_list();
+    const int n = gp_camera_autodetect(list.get(), context);
+    std::vector<DetectedCamera> found;
+    for (int i = 0; i < n; ++i) {
+      const char* name = nullptr;
+      const char* value = nullptr;
+      gp_list_get_name(list.get(), i, &name);
+      gp_list_get_value(list.get(), i, &value);
+      found.push_back({name ? name : "", value ? value : ""});
+    }
+    return found;
+  }
+
+  void ensure_connected() {
+    if (!camera) connect();
+  }
+
+  // Writes the bytes under the spool folder: a temporary name first, renamed
+  // when complete, so a half-written file never looks like a picture.
+  std::string spool(const std::string& name, const char* data, unsigned long size) {
+    fs::create_directories(options.spool_dir);
+    fs::path target = fs::path(options.spool_dir) / name;
+    for (int k = 1; fs::exists(target); ++k)
+      target =
+          fs::path(options.spool_dir) / (fs::path(name).stem().string() + "-" + std::to_string(k) +
+                                         fs::path(name).extension().string());
+    const fs::path part = target.string() + ".part";
+    {
+      std::ofstream out(part, std::ios::binary);
+      out.write(data, static_cast<std::streamsize>(size));
+      out.flush();
+      if (!out)
+        throw CameraError(Kind::other, "Saving " + name + " to " + options.spool_dir +
+                                           " failed: is the tablet's storage full?");
+    }
+    fs::rename(part, target);
+    return target.string();
+  }
+
+  CapturedFile download(const std::string& camera_path) {
+    ensure_connected();
+    const auto [folder, name] = split_path(camera_path);
+    FilePtr file = new_file();
+    check(gp_camera_file_get(camera, folder.c_str(), name.c_str(), GP_FILE_TYPE_NORMAL, file.get(),
+                             context),
+          "Downloading " + camera_path);
+    const char* data = nullptr;
+    unsigned long size = 0;
+    check(gp_file_get_data_and_size(file.get(), &data, &size), "Reading " + camera_path);
+    CapturedFile out;
+    out.camera_path = camera_path;
+    out.data.assign(reinterpret_cast<const uint8_t*>(data),
+                    reinterpret_cast<const uint8_t*>(data) + size);
+    if (!options.spool_dir.empty()) out.saved_path = spool(name, data, size);
+    pending.erase(std::remove(pending.begin(), pending.end(), camera_path), pending.end());
+    return out;
+  }
+
+  void list_recursive(const std::string& folder, std::vector<std::string>& out) {
+    ListPtr files = new_list();
+    check(gp_camera_folder_list_files(camera, folder.c_str(), files.get(), context),
+          "Listing the pictures in " + folder);
+    for (int i = 0; i < gp_list_count(files.get()); ++i) {
+      const char* name = nullptr;
+      gp_list_get_name(files.get(), i, &name);
+      if (name) out.push_back(join_path(folder, name));
+    }
+    ListPtr folders = new_list();
+    check(gp_camera_folder_list_folders(camera, folder.c_str(), folders.get(), context),
+          "Listing the folders in " + folder);
+    for (int i = 0; i < gp_list_count(folders.get()); ++i) {
+      const char* name = nullptr;
+      gp_list_get_name(folders.get(), i, &name);
+      if (name) list_recursive(join_path(folder, name), out);
+    }
+  }
+
+  WidgetPtr config_root() {
+    CameraWidget* root = nullptr;
+    check(gp_camera_get_config(camera, &root, context), "Reading the camera settings");
+    return WidgetPtr(root);
+  }
+
+  // The first of `names` that the camera has, or empty.
+  std::string find_setting(const std::vector<std::string>& names) {
+    WidgetPtr root = config_root();
+    for (const auto& n : names) {
+      CameraWidget* child = nullptr;
+      if (gp_widget_get_child_by_name(root.get(), n.c_str(), &child) == GP_OK) return n;
+    }
+    return {};
+  }
+
+  CameraSetting read_setting(const std::string& name) {
+    WidgetPtr root = config_root();
+    CameraWidget* child = nullptr;
+    if (gp_widget_get_child_by_name(root.get(), name.c_str(), &child) < GP_OK)
+      throw CameraError(Kind::not_supported, "The " + model + " has no setting \"" + name + "\"");
+    return describe(child);
+  }
+
+  void write_setting(const std::string& name, const std::string& value) {
+    WidgetPtr root = config_root();
+    CameraWidget* child = nullptr;
+    if (gp_widget_get_child_by_name(root.get(), name.c_str(), &child) < GP_OK)
+      throw CameraError(Kind::not_supported, "The " + model + " has no setting \"" + name + "\"");
+    const CameraSetting current = describe(child);
+    if (current.read_only)
+      throw CameraError(Kind::not_supported, "The " + model + "'s " + current.label +
+                                                 " cannot be changed over USB (set it on the "
+                                                 "camera)");
+    if (!current.choices.empty() &&
+        std::find(current.choices.begin(), current.choices.end(), value) == current.choices.end()) {
+      std::string offered;
+      for (const auto& c : current.choices) offered += (offered.empty() ? "" : ", ") + c;
+      throw CameraError(Kind::bad_value, "The " + model + " offers " + current.label + " " +
+                                             offered + "; \"" + value + "\" is not one of them");
+    }
+    CameraWidgetType type;
+    gp_widget_get_type(child, &type);
+    int rc;
+    if (type == GP_WIDGET_TOGGLE || type == GP_WIDGET_DATE) {
+      const int v = std::atoi(value.c_str());
+      rc = gp_widget_set_value(child, &v);
+    } else if (type == GP_WIDGET_RANGE) {
+      const float v = std::strtof(value.c_str(), nullptr);
+      rc = gp_widget_set_value(child, &v);
+    } else {
+      rc = gp_widget_set_value(child, value.c_str());
+    }
+    check(rc, "Setting " + current.label + " to " + value);
+    rc = gp_camera_set_single_config(camera, name.c_str(), child, context);
+    if (rc == GP_ERROR_NOT_SUPPORTED) rc = gp_camera_set_config(camera, root.get(), context);
+    check(rc, "Setting " + current.label + " to " + value);
+  }
+
+  std::vector<CameraEvent> wait_events(int timeout_ms) {
+    std::vector<CameraEvent> out;
+    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+    for (;;) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+                            end - std::chrono::steady_clock::now())
+                            .count();
+      CameraEventType type = GP_EVENT_UNKNOWN;
+      void* data = nullptr;
+      check(gp_camera_wait_for_event(camera, static_cast<int>(std::max<long long>(left, 0)), &type,
+                                     &data, context),
+            "Waiting for the camera");
+      CameraEvent e;
+      switch (type) {
+        case GP_EVENT_FILE_ADDED: {
+          const auto* path = static_cast<CameraFilePath*>(data);
+          e.kind = CameraEvent::Kind::file_added;
+          e.detail = join_path(path->folder, path->name);
+          break;
+        }
+        case GP_EVENT_CAPTURE_COMPLETE:
+          e.kind = CameraEvent::Kind::capture_complete;
+          break;
+        case GP_EVENT_TIMEOUT:
+          e.kind = CameraEvent::Kind::timeout;
+          break;
+        case GP_EVENT_UNKNOWN:
+          if (data) e.detail = static_cast<const char*>(data);
+          break;
+        default:
+          break;
+      }
+      free(data);
+      out.push_back(e);
+      if (e.kind == CameraEvent::Kind::timeout || left <= 0) break;
+    }
+    return out;
+  }
+};
+
+std::vector<DetectedCamera> Gphoto2Camera::detect() {
+  GPContext* context = gp_context_new();
+  auto found = State::detect_with(context);
+  gp_context_unref(context);
+  return found;
+}
+
+Gphoto2Camera::Gphoto2Camera(Options options)
+    : state_(std::make_unique<State>()), thread_(std::make_unique<CommandThread>()) {
+  state_->options = std::move(options);
+  thread_->call([this] { state_->connect(); });
+}
+
+Gphoto2Camera::~Gphoto2Camera() {
+  // The state is torn down on the thread that owns the camera.
+  thread_->call([this] { state_.reset(); });
+}
+
+std::string Gphoto2Camera::model() {
+  return thread_->call([this] { return state_->model; });
+}
+
+std::string Gphoto2Camera::port() {
+  return thread_->call([this] { return state_->port; });
+}
+
+std::vector<CameraSetting> Gphoto2Camera::settings() {
+  return thread_->call([this] {
+    state_->ensure_connected();
+    WidgetPtr root = state_->config_root();
+    std::vector<CameraSetting> out;
+    collect_leaves(root.get(), out);
+    return out;
+  });
+}
+
+CameraSetting Gphoto2Camera::setting(const std::string& name) {
+  return thread_->call([&] {
+    state_->ensure_connected();
+    return state_->read_setting(name);
+  });
+}
+
+void Gphoto2Camera::set_setting(const std::string& name, const std::string& value) {
+  thread_->call([&] {
+    state_->ensure_connected();
+    state_->write_setting(name, value);
+  });
+}
+
+void Gphoto2Camera::apply(const ExposureSettings& exposure) {
+  thread_->call([&] {
+    state_->ensure_connected();
+    auto set = [&](const std::optional<std::string>& value, const std::vector<std::string>& names,
+                   const char* what) {
+      if (!value) return;
+      const std::string name = state_->find_setting(names);
+      if (name.empty())
+        throw CameraError(Kind::not_supported, "The " + state_->model +
+                                                   " does not let rockface "
+                                                   "set the " +
+                                                   what +
+                                                   " over USB; set it on "
+                                                   "the camera");
+      state_->write_setting(name, *value);
+    };
+    set(exposure.program, kProgramNames, "exposure program");
+    set(exposure.aperture, kApertureNames, "aperture");
+    set(exposure.shutter, kShutterNames, "shutter speed");
+    set(exposure.iso, kIsoNames, "ISO");
+    set(exposure.image_format, kFormatNames, "image format");
+    set(exposure.capture_target, kTargetNames, "capture target");
+  });
+}
+
+FlashState Gphoto2Camera::flash() {
+  return thread_->call([this] {
+    state_->ensure_connected();
+    const std::string name = state_->find_setting(kFlashNames);
+    if (name.empty()) return FlashState::unknown;
+    const std::string v = lower(state_->read_setting(name).value);
+    if (v.find("off") != std::string::npos || v.find("no flash") != std::string::npos ||
+        v.find("suppress") != std::string::npos)
+      return FlashState::off;
+    return FlashState::on;
+  });
+}
+
+void Gphoto2Camera::lock_focus() {
+  thread_->call([this] {
+    state_->ensure_connected();
+    // Focus once on what the camera sees, then hold it: manual focus mode.
+    const std::string drive = state_->find_setting(kAutofocusNames);
+    if (!drive.empty()) state_->write_setting(drive, "1");
+    const std::string mode = state_->find_setting(kFocusModeNames);
+    if (mode.empty())
+      throw CameraError(Kind::not_supported, "The " + state_->model +
+                                                 " does not let rockface lock focus over USB: "
+                                                 "focus once on the face, then switch the lens "
+                                                 "to MF");
+    const CameraSetting s = state_->read_setting(mode);
+    for (const auto& choice : s.choices) {
+      const std::string c = lower(choice);
+      if (c == "mf" || c.find("manual") != std::string::npos || c == "mf (fixed)") {
+        state_->write_setting(mode, choice);
+        return;
+      }
+    }
+    throw CameraError(Kind::not_supported, "The " + state_->model +
+                                               " offers no manual focus mode over USB: focus "
+                                               "once on the face, then switch the lens to MF");
+  });
+}
+
+Capture Gphoto2Camera::capture() {
+  return thread_->call([this] {
+    State& s = *state_;
+    s.ensure_connected();
+    CameraFilePath path;
+    s.check(gp_camera_capture(s.camera, GP_CAPTURE_IMAGE, &path, s.context), "Taking a picture");
+    const std::string first = join_path(path.folder, path.name);
+    s.pending.push_back(first);
+    std::vector<std::string> files{first};
+    // The RAW of a RAW+JPEG shot arrives as a follow-up "file added" event.
+    for (const auto& e : s.wait_events(s.options.event_drain_ms))
+      if (e.kind == CameraEvent::Kind::file_added) {
+        s.pending.push_back(e.detail);
+        files.push_back(e.detail);
+      }
+    std::vector<CapturedFile> got;
+    for (const auto& f : files) got.push_back(s.download(f));
+    // The JPEG is the image; everything else is a companion.
+    auto is_jpeg = [](const CapturedFile& f) {
+      const std::string ext = lower(fs::path(f.camera_path).extension().string());
+      return ext == ".jpg" || ext == ".jpeg";
+    };
+    auto jpeg = std::find_if(got.begin(), got.end(), is_jpeg);
+    if (jpeg != got.end()) std::iter_swap(got.begin(), jpeg);
+    Capture c;
+    c.image = std::move(got.front());
+    c.companions.assign(std::make_move_iterator(got.begin() + 1),
+                        std::make_move_iterator(got.end()));
+    c.exif = read_exif(c.image.data);
+    return c;
+  });
+}
+
+cv::Mat Gphoto2Camera::live_view() {
+  return thread_->call([this] {
+    State& s = *state_;
+    s.ensure_connected();
+    FilePtr file = new_file();
+    s.check(gp_camera_capture_preview(s.camera, file.get(), s.context), "Reading live view");
+    const char* data = nullptr;
+    unsigned long size = 0;
+    s.check(gp_file_get_data_and_size(file.get(), &data, &size), "Reading live view");
+    const cv::Mat bytes(1, static_cast<int>(size), CV_8U, const_cast<char*>(data));
+    cv::Mat frame = cv::imdecode(bytes, cv::IMREAD_COLOR);
+    if (frame.empty())
+      throw CameraError(Kind::other, "The camera sent a live-view frame that is not an image");
+    return frame;
+  });
+}
+
+std::vector<CameraEvent> Gphoto2Camera::events(int timeout_ms) {
+  return thread_->call([&] {
+    state_->ensure_connected();
+    return state_->wait_events(timeout_ms);
+  });
+}
+
+void Gphoto2Camera::close() {
+  thread_->call([this] { state_->disconnect(); });
+}
+
+std::vector<std::string> Gphoto2Camera::list_files(const std::string& folder) {
+  return thread_->call([&] {
+    state_->ensure_connected();
+    std::vector<std::string> out;
+    state_->list_recursive(folder, out);
+    return out;
+  });
+}
+
+CapturedFile Gphoto2Camera::download(const std::string& camera_path) {
+  return thread_->call([&] { return state_->download(camera_path); });
+}
+
+std::vector<std::string> Gphoto2Camera::pending_downloads() {
+  return thread_->call([this] { return state_->pending; });
+}
+
+std::vector<CapturedFile> Gphoto2Camera::retry_pending() {
+  return thread_->call([this] {
+    std::vector<CapturedFile> got;
+    const auto pending = state_->pending;
+    for (const auto& path : pending) {
+      try {
+        got.push_back(state_->download(path));
+      } catch (const CameraError&) {
+        // Stays pending; the caller sees it in pending_downloads().
+      }
+    }
+    return got;
+  });
+}
+
+}  // namespace rockface::camera

@@ -1,0 +1,81 @@
+#pragma once
+// The DSLR over libgphoto2 2.5. One thread owns the camera and serves a
+// command queue (libgphoto2 is not thread-safe); every public member may be
+// called from any thread and blocks until its command has run.
+//
+// Nothing captured is lost: every file is written to the spool folder as
+// soon as it is downloaded (to a temporary name, renamed when complete), and
+// a shot taken but not yet downloaded when the camera fails stays in
+// pending_downloads() until retry_pending() fetches it after a reconnect.
+//
+// After a failure that means "unplugged", the next command reconnects: the
+// camera is looked up again by model (the USB port number changes on
+// replug).
+//
+// Any libgphoto2 camlib works, including the "Directory Browse" camlib on a
+// port "disk:/path", which serves the files of a folder (a card reader, or
+// a folder in tests) through the same code as a camera.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "camera/camera.h"
+#include "camera/camera_error.h"
+
+namespace rockface::camera {
+
+class CommandThread;
+
+struct DetectedCamera {
+  std::string model;  // e.g. "Nikon DSC D7500"
+  std::string port;   // e.g. "usb:001,007"
+};
+
+class Gphoto2Camera final : public Camera {
+ public:
+  struct Options {
+    std::string model;      // libgphoto2 model name; empty: the first camera detected
+    std::string port;       // e.g. "usb:001,007" or "disk:/media/card"; empty: that of the model
+    std::string spool_dir;  // where downloaded files are stored; must be writable
+    int event_drain_ms = 3000;  // how long to wait for follow-up files after a capture
+  };
+
+  // Cameras on USB, as libgphoto2 detects them.
+  static std::vector<DetectedCamera> detect();
+
+  // Opens the camera. Throws CameraError naming what is wrong.
+  explicit Gphoto2Camera(Options options);
+  ~Gphoto2Camera() override;
+
+  std::string model() override;
+  std::string port();
+  std::vector<CameraSetting> settings() override;
+  CameraSetting setting(const std::string& name) override;
+  void set_setting(const std::string& name, const std::string& value) override;
+  void apply(const ExposureSettings& exposure) override;
+  FlashState flash() override;
+  void lock_focus() override;
+  Capture capture() override;
+  cv::Mat live_view() override;
+  std::vector<CameraEvent> events(int timeout_ms) override;
+  void close() override;
+
+  // Files on the camera or card, as "folder/name" paths, folders walked
+  // recursively from `folder`.
+  std::vector<std::string> list_files(const std::string& folder = "/");
+  // Downloads one file into the spool folder.
+  CapturedFile download(const std::string& camera_path);
+
+  // Shots taken but not downloaded because the camera failed in between.
+  std::vector<std::string> pending_downloads();
+  // Downloads them now; those that fail stay pending. Throws nothing for a
+  // file that fails; returns what was fetched.
+  std::vector<CapturedFile> retry_pending();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;  // touched only on the camera thread
+  std::unique_ptr<CommandThread> thread_;
+};
+
+}  // namespace rockface::camera
