@@ -148,7 +148,8 @@ std::string fixed(double v, int decimals) {
 
 std::string fos_text(const std::optional<ReportMode>& mode, std::optional<double> fos) {
   if (!mode) return "-";
-  if (!fos) return mode->type == "none" ? "stable" : "-";
+  if (mode->type == "none") return "stable";
+  if (!fos) return "-";
   if (!std::isfinite(*fos)) return "inf";
   return fixed(*fos, 2);
 }
