@@ -1,0 +1,206 @@
+#include "core/faces/surface_loops.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+namespace rockface::faces {
+
+namespace {
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+// The unfolded angle swept counter-clockwise from `from` to `to` at a vertex.
+double sweep(double from, double to, double total) {
+  double d = std::fmod(to - from, total);
+  if (d < 0) d += total;
+  return d;
+}
+
+}  // namespace
+
+int winding_number(const std::vector<Eigen::Vector2d>& poly, const Eigen::Vector2d& p) {
+  int w = 0;
+  const size_t n = poly.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = poly[i], b = poly[(i + 1) % n];
+    const double side = (b.x() - a.x()) * (p.y() - a.y()) - (p.x() - a.x()) * (b.y() - a.y());
+    if (a.y() <= p.y()) {
+      if (b.y() > p.y() && side > 0) ++w;
+    } else if (b.y() <= p.y() && side < 0) {
+      --w;
+    }
+  }
+  return w;
+}
+
+SurfaceLoops SurfaceLoops::find(const TraceNetwork& net, const FreeSurface& surface) {
+  SurfaceLoops out;
+  const auto& edges = net.edges();
+  const size_t nh = 2 * edges.size();
+  out.half_edge_face_.assign(nh, -1);
+
+  // --- Faces by Lu's rule ------------------------------------------------------
+  for (size_t h0 = 0; h0 < nh; ++h0) {
+    if (out.half_edge_face_[h0] >= 0) continue;
+    const int f = static_cast<int>(out.faces_.size());
+    SurfaceFace face;
+    int h = static_cast<int>(h0);
+    // A face has at most every half-edge once; the bound only guards the loop.
+    for (size_t steps = 0; steps <= nh && out.half_edge_face_[h] < 0; ++steps) {
+      out.half_edge_face_[h] = f;
+      face.half_edges.push_back(h);
+      h = net.next(h);
+    }
+    // Which patch the face lies on: the sector swept from the outgoing
+    // stretch to the way back, at the first corner.
+    const int first = face.half_edges.front();
+    const int v = net.target(first);
+    const int nx = face.half_edges.size() > 1 ? face.half_edges[1] : net.next(first);
+    const AroundVertex& av = net.around()[v];
+    const double a_next = av.angle[net.slot(nx)], a_back = av.angle[net.slot(first ^ 1)];
+    double width = sweep(a_next, a_back, av.total);
+    if (width == 0) width = av.total;  // a dangling end: the face goes all the way round
+    const double mid = std::fmod(a_next + width / 2, av.total);
+    for (const auto& s : av.sectors)
+      if (mid > s.begin && mid < s.end) face.patch = s.patch;
+    if (face.patch >= 0) {
+      const SurfacePatch& P = surface.patches()[face.patch];
+      std::vector<Eigen::Vector2d> poly;
+      for (int g : face.half_edges) poly.push_back(P.to2d(net.vertices()[net.origin(g)]));
+      double a = 0;
+      for (size_t i = 0; i < poly.size(); ++i) {
+        const Eigen::Vector2d p = poly[i], q = poly[(i + 1) % poly.size()];
+        a += p.x() * q.y() - p.y() * q.x();
+      }
+      face.area = a / 2;
+    }
+    out.faces_.push_back(std::move(face));
+  }
+
+  // --- Regions: faces joined across patch edges that no trace follows ---------
+  const size_t nf = out.faces_.size();
+  UnionFind uf(nf + 1);
+  const int outside = static_cast<int>(nf);
+  for (size_t f = 0; f < nf; ++f)
+    if (out.faces_[f].patch < 0) uf.unite(static_cast<int>(f), outside);
+  for (size_t e = 0; e < edges.size(); ++e)
+    if (edges[e].group < 0) uf.unite(out.half_edge_face_[2 * e], out.half_edge_face_[2 * e + 1]);
+  // An island's outside (a face of no positive area) is a hole in the face around it.
+  auto polygon_of = [&](int f) {
+    const SurfacePatch& P = surface.patches()[out.faces_[f].patch];
+    std::vector<Eigen::Vector2d> poly;
+    for (int g : out.faces_[f].half_edges) poly.push_back(P.to2d(net.vertices()[net.origin(g)]));
+    return poly;
+  };
+  for (size_t f = 0; f < nf; ++f) {
+    const SurfaceFace& hole = out.faces_[f];
+    if (hole.patch < 0 || hole.area > 0) continue;
+    const SurfacePatch& P = surface.patches()[hole.patch];
+    const Eigen::Vector2d p = P.to2d(net.vertices()[net.origin(hole.half_edges.front())]);
+    std::vector<bool> on_island(net.vertices().size(), false);
+    for (int g : hole.half_edges) on_island[net.origin(g)] = true;
+    // The face around an island shares no corner with it (the island is a
+    // component of its own), so the island's corner lies strictly inside it;
+    // the island's own faces, which share corners, are not candidates.
+    int best = -1;
+    for (size_t g = 0; g < nf; ++g) {
+      const SurfaceFace& c = out.faces_[g];
+      if (c.patch != hole.patch || c.area <= 0) continue;
+      if (best >= 0 && c.area >= out.faces_[best].area) continue;
+      bool touches = false;
+      for (int k : c.half_edges) touches = touches || on_island[net.origin(k)];
+      if (touches) continue;
+      if (winding_number(polygon_of(static_cast<int>(g)), p) != 0) best = static_cast<int>(g);
+    }
+    uf.unite(static_cast<int>(f), best >= 0 ? best : outside);
+  }
+
+  std::vector<int> region_of_root(nf + 1, -1);
+  out.face_region_.assign(nf, -1);
+  for (size_t f = 0; f < nf; ++f) {
+    const int r = uf.find(static_cast<int>(f));
+    if (r == uf.find(outside)) continue;
+    if (region_of_root[r] < 0) {
+      region_of_root[r] = static_cast<int>(out.regions_.size());
+      out.regions_.push_back({});
+    }
+    const int reg = region_of_root[r];
+    out.face_region_[f] = reg;
+    SurfaceRegion& region = out.regions_[reg];
+    region.faces.push_back(static_cast<int>(f));
+    region.area += out.faces_[f].area;
+    if (out.faces_[f].area > 0) region.patches.push_back(out.faces_[f].patch);
+  }
+
+  // --- Loops: the trace stretches between a region and its neighbours ---------
+  auto region_of_half_edge = [&](int h) { return out.face_region_[out.half_edge_face_[h]]; };
+  for (size_t r = 0; r < out.regions_.size(); ++r) {
+    SurfaceRegion& region = out.regions_[r];
+    std::sort(region.patches.begin(), region.patches.end());
+    region.patches.erase(std::unique(region.patches.begin(), region.patches.end()),
+                         region.patches.end());
+    auto on_loop = [&](int h) {
+      return edges[h / 2].group >= 0 && region_of_half_edge(h) == static_cast<int>(r) &&
+             region_of_half_edge(h ^ 1) != static_cast<int>(r);
+    };
+    std::vector<bool> used(nh, false);
+    std::vector<std::pair<double, std::vector<int>>> cycles;
+    for (int f : region.faces)
+      for (int h0 : out.faces_[f].half_edges) {
+        if (!on_loop(h0) || used[h0]) continue;
+        std::vector<int> cycle;
+        double turning = 0;
+        int h = h0;
+        for (size_t steps = 0; steps <= nh && !used[h]; ++steps) {
+          used[h] = true;
+          cycle.push_back(h);
+          const int v = net.target(h);
+          const AroundVertex& av = net.around()[v];
+          const int deg = static_cast<int>(av.half_edges.size());
+          const int back = net.slot(h ^ 1);
+          int nxt = h ^ 1;
+          for (int k = 1; k <= deg; ++k) {
+            const int g = av.half_edges[(back - k + deg) % deg];
+            if (on_loop(g)) {
+              nxt = g;
+              break;
+            }
+          }
+          double corner = sweep(av.angle[net.slot(nxt)], av.angle[back], av.total);
+          if (corner == 0) corner = av.total;
+          turning += std::numbers::pi - corner;
+          h = nxt;
+        }
+        cycles.push_back({turning, std::move(cycle)});
+      }
+    std::sort(cycles.begin(), cycles.end(),
+              [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (auto& c : cycles) region.loops.push_back(std::move(c.second));
+    for (const auto& loop : region.loops)
+      for (int h : loop) {
+        const int g = edges[h / 2].group;
+        if (std::find(region.groups.begin(), region.groups.end(), g) == region.groups.end())
+          region.groups.push_back(g);
+        for (int t : net.groups()[g].traces)
+          if (std::find(region.traces.begin(), region.traces.end(), t) == region.traces.end())
+            region.traces.push_back(t);
+      }
+  }
+  return out;
+}
+
+}  // namespace rockface::faces
