@@ -37,10 +37,12 @@ struct Finiteness {
 
 // From the planes of a block: joints give JP, free faces give the EP. Free
 // faces meeting at a reflex edge of the block belong to different convex
-// parts of the free surface; EP is the union of the parts' pyramids, each
-// the intersection of its faces' rock-side half-spaces (Goodman & Shi's
+// parts of the free surface (each part: a maximal set of free planes with no
+// reflex edge between two of them); EP is the union of the parts' pyramids,
+// each the intersection of its faces' rock-side half-spaces (Goodman & Shi's
 // theorem for non-convex blocks). A block with no free face has EP = the
-// whole space (it cannot be removed unless JP is empty).
+// whole space: JP cap EP = JP, finite only when JP is empty, so it is never
+// removable (a block inside the rock mass).
 Finiteness block_finiteness(const blocks::Polyhedron& block, double uncertainty);
 
 // The same for half-spaces alone (a convex block that may be unbounded):
