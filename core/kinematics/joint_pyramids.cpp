@@ -37,7 +37,11 @@ PyramidVerdict analyse_joint_pyramid(const std::vector<JointSpec>& joints,
   // Removable needs both: JP open and JP cap EP shut; the verdict is as firm
   // as the weaker of the two.
   v.removable = geometry::decide(std::min(v.jp_margin, -v.jp_ep_margin), options.uncertainty);
-  if (v.removable.value && options.resultant.squaredNorm() > 0) {
+  // The mode is given for removable pyramids and for marginal ones (how the
+  // block would move if it can), so that rounding on a marginal verdict
+  // never decides whether a mode is reported.
+  if ((v.removable.value || v.removable.marginal) && !v.empty &&
+      options.resultant.squaredNorm() > 0) {
     std::vector<ContactPlane> contacts;
     for (size_t i = 0; i < joints.size(); ++i)
       if (code[i] != geometry::HalfSpace::NotInvolved)

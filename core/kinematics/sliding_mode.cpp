@@ -136,8 +136,12 @@ SlidingMode sliding_mode(const Eigen::Vector3d& resultant,
       const Eigen::Vector2d nn = g.ldlt().solve(rhs);
       // Normal reactions as sines of r's pressing angle on each plane; a
       // slightly negative one within tolerance is contact that just holds.
-      if (m < -geometry::kAngleEpsRad || nn.minCoeff() < -geometry::kAngleEpsRad) {
-        failed({-m, -angle_of(std::clamp(nn.minCoeff(), -1.0, 0.0))});
+      // The intersection must also carry r forward: r perpendicular to it
+      // (a horizontal line under gravity) drives nothing.
+      const double along = r.dot(s);
+      if (m < -geometry::kAngleEpsRad || nn.minCoeff() < -geometry::kAngleEpsRad ||
+          along <= geometry::kAngleEpsRad) {
+        failed({-m, -angle_of(std::clamp(nn.minCoeff(), -1.0, 0.0)), -angle_of(along)});
         continue;
       }
       out.type = ModeType::Sliding;
@@ -146,7 +150,7 @@ SlidingMode sliding_mode(const Eigen::Vector3d& resultant,
       out.normal_forces = {std::max(nn[0], 0.0) * r_len, std::max(nn[1], 0.0) * r_len};
       out.driving_force = r.dot(s) * r_len;
       const auto res = resisting(contacts, {i, j}, out.normal_forces);
-      if (res) out.fos = out.driving_force > 0 ? *res / out.driving_force : kInf;
+      if (res) out.fos = *res / out.driving_force;
       out.margin =
           std::min({std::max(m, 0.0), angle_of(std::max(nn.minCoeff(), 0.0)), angle_of(r.dot(s))});
       out.marginal = out.margin < tol;
