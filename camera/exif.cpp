@@ -187,12 +187,10 @@ std::vector<uint8_t> with_exif(const std::vector<uint8_t>& jpeg, const ExifInfo&
   if (!block || size + 2 > 0xFFFF) throw Error("cannot add EXIF: the EXIF block is too large");
 
   // Copy the JPEG, dropping any APP1 EXIF segment, with ours after SOI.
-  std::vector<uint8_t> out{0xFF,
-                           0xD8,
-                           0xFF,
-                           0xE1,
-                           static_cast<uint8_t>((size + 2) >> 8),
-                           static_cast<uint8_t>((size + 2) & 0xFF)};
+  std::vector<uint8_t> out;
+  out.reserve(jpeg.size() + size + 6);
+  for (const unsigned marker : {0xFFu, 0xD8u, 0xFFu, 0xE1u, (size + 2) >> 8, (size + 2) & 0xFFu})
+    out.push_back(static_cast<uint8_t>(marker));
   out.insert(out.end(), block, block + size);
   size_t pos = 2;
   while (pos + 4 <= jpeg.size() && jpeg[pos] == 0xFF && jpeg[pos + 1] != 0xDA) {
