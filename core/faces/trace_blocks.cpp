@@ -1,0 +1,411 @@
+#include "core/faces/trace_blocks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "core/blocks/construction.h"
+#include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/faces/tolerances.h"
+
+namespace rockface::faces {
+
+namespace {
+
+using geometry::HalfSpace;
+
+// A joint corner turning right by more than this (radians) is reflex: below
+// it the two joints are collinear to rounding and either construction gives
+// the same block.
+constexpr double kReflexCornerRad = 1e-6;
+
+HalfSpace opposite(HalfSpace h) {
+  return h == HalfSpace::Upper ? HalfSpace::Lower : HalfSpace::Upper;
+}
+
+double sweep(double from, double to, double total) {
+  double d = std::fmod(to - from, total);
+  if (d < 0) d += total;
+  return d;
+}
+
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+// The part of a convex polygon where n . x >= c (keep) or <= c.
+std::vector<Eigen::Vector2d> clip(const std::vector<Eigen::Vector2d>& poly,
+                                  const Eigen::Vector2d& n, double c, bool keep_upper) {
+  std::vector<Eigen::Vector2d> out;
+  const size_t m = poly.size();
+  auto f = [&](const Eigen::Vector2d& x) { return keep_upper ? n.dot(x) - c : c - n.dot(x); };
+  for (size_t i = 0; i < m; ++i) {
+    const Eigen::Vector2d a = poly[i], b = poly[(i + 1) % m];
+    const double fa = f(a), fb = f(b);
+    if (fa >= 0) out.push_back(a);
+    if ((fa >= 0) != (fb >= 0)) out.push_back(a + (b - a) * (fa / (fa - fb)));
+  }
+  return out;
+}
+
+double area_of(const std::vector<Eigen::Vector2d>& poly) {
+  double a = 0;
+  for (size_t i = 0; i < poly.size(); ++i) a += cross2(poly[i], poly[(i + 1) % poly.size()]);
+  return a / 2;
+}
+
+double perimeter_of(const std::vector<Eigen::Vector2d>& poly) {
+  double p = 0;
+  for (size_t i = 0; i < poly.size(); ++i) p += (poly[(i + 1) % poly.size()] - poly[i]).norm();
+  return p;
+}
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
+
+struct Piece {
+  std::vector<HalfSpace> sides;  // one per block plane
+  std::string code() const {
+    std::string c;
+    for (auto s : sides) c += geometry::code_digit(s);
+    return c;
+  }
+};
+
+// Assembles the union of convex cells that meet face to face: faces two
+// cells share (same plane, opposite sides, same corners) are inside it.
+blocks::Polyhedron union_of_cells(const std::string& id,
+                                  const std::vector<blocks::Polyhedron>& cells,
+                                  const std::vector<TraceBlockPlane>& planes) {
+  double size = 0;
+  for (const auto& c : cells) size = std::max(size, c.size());
+  // Cells computed separately repeat shared corners to ~1e-15 relative;
+  // 1e-7 of the size merges them and nothing else.
+  const double merge = 1e-7 * size;
+  std::vector<Eigen::Vector3d> vertices;
+  auto vertex_id = [&](const Eigen::Vector3d& x) {
+    for (size_t i = 0; i < vertices.size(); ++i)
+      if ((vertices[i] - x).norm() <= merge) return static_cast<int>(i);
+    vertices.push_back(x);
+    return static_cast<int>(vertices.size() - 1);
+  };
+  struct CellFace {
+    int plane;
+    HalfSpace side;
+    std::vector<int> loop;
+    std::vector<int> sorted;
+  };
+  std::vector<CellFace> faces;
+  for (const auto& c : cells)
+    for (const auto& f : c.faces()) {
+      CellFace cf;
+      const blocks::BlockPlane& bp = c.planes()[f.plane];
+      cf.plane = bp.index;
+      cf.side = bp.side;
+      for (int v : f.loop) cf.loop.push_back(vertex_id(c.vertices()[v]));
+      cf.sorted = cf.loop;
+      std::sort(cf.sorted.begin(), cf.sorted.end());
+      faces.push_back(std::move(cf));
+    }
+  std::vector<bool> inside(faces.size(), false);
+  for (size_t i = 0; i < faces.size(); ++i)
+    for (size_t j = i + 1; j < faces.size(); ++j)
+      if (faces[i].plane == faces[j].plane && faces[i].side != faces[j].side &&
+          faces[i].sorted == faces[j].sorted)
+        inside[i] = inside[j] = true;
+  std::vector<blocks::FaceInput> input;
+  std::vector<int> used(vertices.size(), -1);
+  std::vector<Eigen::Vector3d> kept;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    if (inside[i]) continue;
+    blocks::FaceInput fi;
+    fi.index = faces[i].plane;
+    fi.name = planes[faces[i].plane].name;
+    fi.kind = planes[faces[i].plane].kind;
+    fi.reference_normal = planes[faces[i].plane].plane.normal;
+    for (int v : faces[i].loop) {
+      if (used[v] < 0) {
+        used[v] = static_cast<int>(kept.size());
+        kept.push_back(vertices[v]);
+      }
+      fi.loop.push_back(used[v]);
+    }
+    input.push_back(std::move(fi));
+  }
+  return blocks::build_block_from_faces(id, std::move(kept), input);
+}
+
+}  // namespace
+
+std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetwork& net,
+                                     const SurfaceLoops& loops, const TraceBlockOptions& options,
+                                     Progress& progress) {
+  const double tol = options.snap_tolerance;
+  const auto& patches = surface.patches();
+  const auto& edges = net.edges();
+  std::vector<TraceBlock> out;
+
+  for (size_t r = 0; r < loops.regions().size(); ++r) {
+    progress.step("blocks from trace loops",
+                  static_cast<double>(r) / static_cast<double>(loops.regions().size()));
+    const SurfaceRegion& region = loops.regions()[r];
+    if (region.loops.empty()) continue;
+    TraceBlock block;
+    block.region = static_cast<int>(r);
+    block.traces = region.traces;
+    for (int h : region.loops.front())
+      block.surface_polygon.push_back(net.vertices()[net.origin(h)]);
+
+    // --- Planes: joints of the loop (by name), covered and neighbouring patches.
+    std::vector<int> groups = region.groups;
+    std::sort(groups.begin(), groups.end(),
+              [&](int a, int b) { return net.groups()[a].name < net.groups()[b].name; });
+    std::map<int, int> plane_of_group;
+    block.uncertainty = options.orientation_uncertainty;
+    for (int g : groups) {
+      const PlaneGroup& pg = net.groups()[g];
+      plane_of_group[g] = static_cast<int>(block.planes.size());
+      block.planes.push_back({pg.name, blocks::PlaneKind::Joint, pg.plane.plane, g, -1});
+      if (pg.plane.source == TracePlaneSource::Fitted) {
+        block.uncertainty = std::max(block.uncertainty, pg.plane.uncertainty);
+        block.notes.push_back("plane " + pg.name + " is fitted to its trace (uncertainty " +
+                              fmt(rad_to_deg(pg.plane.uncertainty)) + " degrees)");
+      }
+    }
+    const int n_joints = static_cast<int>(block.planes.size());
+    std::vector<Eigen::Vector3d> footprint;
+    for (int f : region.faces)
+      for (int h : loops.faces()[f].half_edges) footprint.push_back(net.vertices()[net.origin(h)]);
+    std::vector<int> covered = region.patches, extra;
+    auto shares_corner = [&](int a, int b) {
+      for (const auto& p : patches[a].polygon)
+        for (const auto& q : patches[b].polygon)
+          if ((p - q).norm() <= tol) return true;
+      return false;
+    };
+    for (size_t q = 0; q < patches.size(); ++q) {
+      const int qi = static_cast<int>(q);
+      if (std::find(covered.begin(), covered.end(), qi) != covered.end()) continue;
+      bool next_to = false, salient = true, behind = true;
+      for (int p : covered) {
+        next_to = next_to || shares_corner(p, qi);
+        salient = salient && !surface.rock_is_union(p, qi, tol);
+      }
+      for (const auto& x : footprint) behind = behind && patches[q].height(x) <= tol;
+      if (next_to && salient && behind) extra.push_back(qi);
+    }
+    std::map<int, int> plane_of_patch;
+    for (int p : covered) {
+      plane_of_patch[p] = static_cast<int>(block.planes.size());
+      block.planes.push_back({patches[p].id, blocks::PlaneKind::FreeFace, patches[p].plane, -1, p});
+    }
+    for (int p : extra) {
+      plane_of_patch[p] = static_cast<int>(block.planes.size());
+      block.planes.push_back({patches[p].id, blocks::PlaneKind::FreeFace, patches[p].plane, -1, p});
+    }
+    const int n_planes = static_cast<int>(block.planes.size());
+
+    // --- Sides of the joints along the loop, and reflex joint corners.
+    std::vector<std::set<HalfSpace>> joint_sides(n_joints);
+    bool reflex = region.loops.size() > 1;
+    for (const auto& loop : region.loops)
+      for (size_t i = 0; i < loop.size(); ++i) {
+        const int h = loop[i], nx = loop[(i + 1) % loop.size()];
+        const int g = edges[h / 2].group;
+        const int patch = loops.faces()[loops.half_edge_face()[h]].patch;
+        const Eigen::Vector3d d = net.vertices()[net.target(h)] - net.vertices()[net.origin(h)];
+        const Eigen::Vector3d left = patches[patch].outward.cross(d);
+        const double s = net.groups()[g].plane.plane.normal.dot(left);
+        joint_sides[plane_of_group[g]].insert(s > 0 ? HalfSpace::Upper : HalfSpace::Lower);
+        if (edges[nx / 2].group == g) continue;  // the same joint goes on: no corner
+        const AroundVertex& av = net.around()[net.target(h)];
+        const double corner = sweep(av.angle[net.slot(nx)], av.angle[net.slot(h ^ 1)], av.total);
+        if (corner > std::numbers::pi + kReflexCornerRad) reflex = true;
+      }
+    bool rock_convex = true;
+    for (size_t a = 0; a < covered.size(); ++a)
+      for (size_t b = 0; b < covered.size(); ++b)
+        if (a != b && surface.rock_is_union(covered[a], covered[b], tol)) rock_convex = false;
+    bool one_side = true;
+    for (const auto& s : joint_sides) one_side = one_side && s.size() == 1;
+
+    // --- Convex pieces.
+    std::vector<Piece> pieces;
+    if (!reflex && rock_convex && one_side) {
+      Piece p;
+      for (int j = 0; j < n_joints; ++j) p.sides.push_back(*joint_sides[j].begin());
+      for (int k = n_joints; k < n_planes; ++k)
+        p.sides.push_back(patches[block.planes[k].patch].rock_side);
+      pieces.push_back(p);
+    } else {
+      block.convex = false;
+      std::set<std::string> seen;
+      auto side_of = [&](const geometry::Plane& pl, const Eigen::Vector3d& x) {
+        return pl.signed_distance(x) > 0 ? HalfSpace::Upper : HalfSpace::Lower;
+      };
+      auto add_piece = [&](const Eigen::Vector3d& cell_centre, const Eigen::Vector3d& at,
+                           const std::vector<int>& containing) {
+        Piece p;
+        for (int j = 0; j < n_joints; ++j)
+          p.sides.push_back(side_of(block.planes[j].plane, cell_centre));
+        for (int k = n_joints; k < n_planes; ++k) {
+          const SurfacePatch& Q = patches[block.planes[k].patch];
+          const bool contains = std::find(containing.begin(), containing.end(),
+                                          block.planes[k].patch) != containing.end();
+          const bool rock = contains || Q.height(at) <= tol;
+          p.sides.push_back(rock ? Q.rock_side : opposite(Q.rock_side));
+        }
+        if (seen.insert(p.code()).second) pieces.push_back(p);
+      };
+      double thickest = -1;
+      Eigen::Vector3d thickest_centre = Eigen::Vector3d::Zero();
+      int thickest_patch = -1;
+      for (int pi : covered) {
+        const SurfacePatch& P = patches[pi];
+        std::vector<std::vector<Eigen::Vector2d>> cells{P.polygon2d};
+        for (int j = 0; j < n_joints; ++j) {
+          const geometry::Plane& pl = block.planes[j].plane;
+          const Eigen::Vector2d n2(pl.normal.dot(P.e1), pl.normal.dot(P.e2));
+          if (n2.norm() < kTraceOnPatchSine) continue;
+          const double c = pl.offset - pl.normal.dot(P.origin);
+          std::vector<std::vector<Eigen::Vector2d>> next;
+          for (const auto& cell : cells)
+            for (bool up : {true, false}) {
+              auto part = clip(cell, n2, c, up);
+              if (part.size() >= 3 && area_of(part) > 0) next.push_back(std::move(part));
+            }
+          cells = std::move(next);
+        }
+        std::vector<std::vector<Eigen::Vector2d>> region_polys;
+        for (int f : region.faces) {
+          if (loops.faces()[f].patch != pi) continue;
+          std::vector<Eigen::Vector2d> poly;
+          for (int h : loops.faces()[f].half_edges)
+            poly.push_back(P.to2d(net.vertices()[net.origin(h)]));
+          region_polys.push_back(std::move(poly));
+        }
+        for (const auto& cell : cells) {
+          Eigen::Vector2d c = Eigen::Vector2d::Zero();
+          for (const auto& x : cell) c += x;
+          c /= static_cast<double>(cell.size());
+          int w = 0;
+          for (const auto& poly : region_polys) w += winding_number(poly, c);
+          if (w == 0) continue;
+          const double thickness = 2 * area_of(cell) / perimeter_of(cell);
+          const Eigen::Vector3d c3 = P.to3d(c);
+          if (thickness > thickest) {
+            thickest = thickness;
+            thickest_centre = c3;
+            thickest_patch = pi;
+          }
+          if (thickness < kThinCellInTolerances * tol) continue;
+          add_piece(c3, c3, {pi});
+          // Behind edges and corners of the cell that lie on other covered patches too.
+          for (size_t k = 0; k < cell.size(); ++k) {
+            for (const Eigen::Vector3d& x :
+                 {P.to3d(cell[k]), P.to3d((cell[k] + cell[(k + 1) % cell.size()]) / 2)}) {
+              std::vector<int> containing;
+              for (int q : covered) {
+                const SurfacePatch& Q = patches[q];
+                if (std::abs(Q.height(x)) <= tol && Q.contains(Q.to2d(x), tol))
+                  containing.push_back(q);
+              }
+              if (containing.size() >= 2) add_piece(c3, x, containing);
+            }
+          }
+        }
+      }
+      if (pieces.empty() && thickest_patch >= 0)
+        add_piece(thickest_centre, thickest_centre, {thickest_patch});
+      block.notes.push_back("non-convex: the union of " + std::to_string(pieces.size()) +
+                            " convex pieces");
+    }
+    for (const auto& p : pieces) block.codes.push_back(p.code());
+
+    // --- Geometry and verdicts.
+    std::vector<blocks::Polyhedron> cells;
+    bool unbounded = false;
+    const std::string id = "loop " + std::to_string(r);
+    for (size_t k = 0; k < pieces.size() && !unbounded; ++k) {
+      std::vector<blocks::HalfSpaceInput> hs;
+      std::vector<Eigen::Vector3d> joint_in, free_in;
+      for (int j = 0; j < n_planes; ++j) {
+        const TraceBlockPlane& bp = block.planes[j];
+        hs.push_back({j, bp.name, bp.kind, bp.plane, pieces[k].sides[j]});
+        (bp.kind == blocks::PlaneKind::Joint ? joint_in : free_in)
+            .push_back(bp.plane.inward_normal(pieces[k].sides[j]));
+      }
+      std::optional<blocks::ConvexConstruction> cc;
+      if (hs.size() >= 4) cc = blocks::build_convex_block(id, hs);
+      if (!cc || cc->outcome == blocks::ConvexOutcome::Unbounded) {
+        unbounded = true;
+        block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
+        if (cc) {
+          std::ostringstream s;
+          s.precision(3);
+          s << "infinite: the block never ends in direction (" << cc->open_direction.x() << ", "
+            << cc->open_direction.y() << ", " << cc->open_direction.z() << ")";
+          block.notes.push_back(s.str());
+        }
+      } else if (cc->outcome == blocks::ConvexOutcome::Empty) {
+        block.notes.push_back("piece " + pieces[k].code() +
+                              " is empty: its joints leave no rock behind the loop");
+      } else {
+        if (block.convex)
+          for (int j : cc->redundant) block.codes[0][j] = '2';
+        cells.push_back(std::move(*cc->polyhedron));
+      }
+    }
+    if (!unbounded && !cells.empty()) {
+      try {
+        block.polyhedron =
+            cells.size() == 1 ? std::move(cells.front()) : union_of_cells(id, cells, block.planes);
+        kinematics::BlockAnalysisInput in;
+        in.density = options.density;
+        in.effects = options.effects;
+        in.uncertainty = block.uncertainty;
+        for (const auto& bp : block.polyhedron->planes()) {
+          kinematics::JointStrength s;
+          const TraceBlockPlane& tp = block.planes[bp.index];
+          if (tp.kind == blocks::PlaneKind::Joint && net.groups()[tp.group].joint) {
+            s.friction = net.groups()[tp.group].joint->friction;
+            s.cohesion = net.groups()[tp.group].joint->cohesion;
+          }
+          in.strengths.push_back(s);
+        }
+        block.analysis = kinematics::analyse_block(*block.polyhedron, in);
+        block.finiteness = block.analysis->finiteness;
+        block.finite = block.finiteness.finite.value;
+      } catch (const InputError& e) {
+        block.polyhedron.reset();
+        block.notes.push_back(std::string("block geometry not assembled: ") + e.what());
+      }
+    } else if (!unbounded) {
+      continue;  // every piece empty: no block behind this loop
+    }
+    if (unbounded) block.finite = false;
+    out.push_back(std::move(block));
+  }
+
+  // An order that does not depend on the order of the traces.
+  auto key = [](const TraceBlock& b) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (const auto& x : b.surface_polygon) c += x;
+    c /= static_cast<double>(std::max<size_t>(1, b.surface_polygon.size()));
+    return std::array<long long, 3>{std::llround(c.x() * 1000), std::llround(c.y() * 1000),
+                                    std::llround(c.z() * 1000)};
+  };
+  std::stable_sort(out.begin(), out.end(),
+                   [&](const TraceBlock& a, const TraceBlock& b) { return key(a) < key(b); });
+  return out;
+}
+
+}  // namespace rockface::faces
