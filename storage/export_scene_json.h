@@ -1,0 +1,33 @@
+#pragma once
+// The geometric model of a visit as a scene (SCENE.md, format
+// "rockface-scene/1") for desktop analysis: joints (with their points and
+// strengths), free faces and surface patches from the area measurements,
+// traces, and the preset and effects of the visit's latest block analysis.
+// Coordinates are absolute (datum added back) as the scene format requires.
+#include <filesystem>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "storage/project_records.h"
+
+namespace rockface::storage {
+
+class ProjectStore;
+
+struct SceneSource {
+  ProjectInfo project;
+  RecordId visit_id = 0;
+  std::vector<Joint> joints;
+  std::vector<Measurement> measurements;
+  std::optional<AnalysisRun> analysis;  // the latest one of the visit, if any
+};
+
+nlohmann::json make_scene_json(const SceneSource& source);
+
+// Visit `visit_id` (the latest visit when none) to `file`; logs the export
+// when the project is writable.
+void export_scene_json(ProjectStore& store, const std::filesystem::path& file,
+                       std::optional<RecordId> visit_id = {});
+
+}  // namespace rockface::storage

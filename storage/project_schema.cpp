@@ -1,0 +1,260 @@
+#include "storage/project_schema.h"
+
+#include <string>
+
+#include "core/common/error.h"
+
+namespace rockface::storage::schema {
+
+namespace {
+
+// Version 1, as first released. Coordinates are project-frame (datum
+// relative) metres; angles degrees; times UTC ISO 8601 text.
+constexpr const char* kVersion1 = R"sql(
+CREATE TABLE project (
+  id INTEGER PRIMARY KEY CHECK (id = 1),
+  name TEXT NOT NULL,
+  datum_x REAL NOT NULL, datum_y REAL NOT NULL, datum_z REAL NOT NULL,
+  datum_crs TEXT NOT NULL DEFAULT '',
+  created_at TEXT NOT NULL,
+  created_by TEXT NOT NULL
+);
+CREATE TABLE visit (
+  id INTEGER PRIMARY KEY,
+  started_at TEXT NOT NULL,
+  source TEXT NOT NULL,
+  note TEXT NOT NULL DEFAULT ''
+);
+CREATE TABLE camera_body (
+  id INTEGER PRIMARY KEY,
+  make TEXT NOT NULL, model TEXT NOT NULL, serial TEXT NOT NULL,
+  UNIQUE (make, model, serial)
+);
+CREATE TABLE calibration (
+  id INTEGER PRIMARY KEY,
+  body_id INTEGER REFERENCES camera_body(id),
+  created_at TEXT NOT NULL,
+  width INTEGER NOT NULL, height INTEGER NOT NULL,
+  fx REAL NOT NULL, fy REAL NOT NULL, cx REAL NOT NULL, cy REAL NOT NULL,
+  k1 REAL NOT NULL, k2 REAL NOT NULL, p1 REAL NOT NULL, p2 REAL NOT NULL, k3 REAL NOT NULL,
+  rms_px REAL NOT NULL,
+  body TEXT NOT NULL, lens TEXT NOT NULL, focus TEXT NOT NULL,
+  focal_setting_mm REAL NOT NULL,
+  method TEXT NOT NULL
+);
+CREATE TABLE capture (
+  id INTEGER PRIMARY KEY,
+  visit_id INTEGER NOT NULL REFERENCES visit(id),
+  calibration_id INTEGER REFERENCES calibration(id),
+  label TEXT NOT NULL,
+  taken_at TEXT NOT NULL,
+  created_at TEXT NOT NULL,
+  left_format TEXT NOT NULL, right_format TEXT NOT NULL,
+  left_image BLOB NOT NULL, right_image BLOB NOT NULL
+);
+CREATE INDEX capture_by_visit ON capture(visit_id);
+CREATE TABLE capture_setting (
+  capture_id INTEGER NOT NULL REFERENCES capture(id) ON DELETE CASCADE,
+  key TEXT NOT NULL, value TEXT NOT NULL,
+  PRIMARY KEY (capture_id, key)
+);
+CREATE TABLE capture_exif (
+  capture_id INTEGER NOT NULL REFERENCES capture(id) ON DELETE CASCADE,
+  side TEXT NOT NULL CHECK (side IN ('left', 'right')),
+  key TEXT NOT NULL, value TEXT NOT NULL,
+  PRIMARY KEY (capture_id, side, key)
+);
+CREATE TABLE model (
+  id INTEGER PRIMARY KEY,
+  capture_id INTEGER REFERENCES capture(id),
+  created_at TEXT NOT NULL,
+  preset TEXT NOT NULL,
+  vertex_count INTEGER NOT NULL, face_count INTEGER NOT NULL,
+  mesh BLOB NOT NULL,
+  texture_capture_id INTEGER REFERENCES capture(id),
+  texture_side TEXT NOT NULL CHECK (texture_side IN ('', 'left', 'right')),
+  registration_kind TEXT NOT NULL,
+  scale REAL NOT NULL,
+  qw REAL NOT NULL, qx REAL NOT NULL, qy REAL NOT NULL, qz REAL NOT NULL,
+  tx REAL NOT NULL, ty REAL NOT NULL, tz REAL NOT NULL,
+  registration_parameters TEXT NOT NULL,
+  registration_rms_m REAL NOT NULL
+);
+CREATE INDEX model_by_capture ON model(capture_id);
+CREATE TABLE registration_residual (
+  model_id INTEGER NOT NULL REFERENCES model(id) ON DELETE CASCADE,
+  idx INTEGER NOT NULL,
+  label TEXT NOT NULL,
+  dx REAL NOT NULL, dy REAL NOT NULL, dz REAL NOT NULL,
+  PRIMARY KEY (model_id, idx)
+);
+CREATE TABLE measurement (
+  id INTEGER PRIMARY KEY,
+  visit_id INTEGER NOT NULL REFERENCES visit(id),
+  model_id INTEGER REFERENCES model(id),
+  kind TEXT NOT NULL CHECK (kind IN ('trace', 'area', 'point_orientation')),
+  label TEXT NOT NULL,
+  joint_label TEXT NOT NULL,
+  points BLOB NOT NULL,
+  dip REAL, dipdir REAL,
+  fit_rms_m REAL NOT NULL,
+  rock_side TEXT NOT NULL CHECK (rock_side IN ('', 'upper', 'lower')),
+  created_at TEXT NOT NULL
+);
+CREATE INDEX measurement_by_visit ON measurement(visit_id);
+CREATE TABLE joint_set (
+  id INTEGER PRIMARY KEY,
+  visit_id INTEGER NOT NULL REFERENCES visit(id),
+  label TEXT NOT NULL,
+  dip REAL NOT NULL, dipdir REAL NOT NULL,
+  fisher_k REAL NOT NULL,
+  count INTEGER NOT NULL,
+  UNIQUE (visit_id, label)
+);
+CREATE TABLE joint (
+  id INTEGER PRIMARY KEY,
+  visit_id INTEGER NOT NULL REFERENCES visit(id),
+  set_id INTEGER REFERENCES joint_set(id),
+  measurement_id INTEGER REFERENCES measurement(id),
+  label TEXT NOT NULL,
+  dip REAL NOT NULL, dipdir REAL NOT NULL,
+  px REAL, py REAL, pz REAL,
+  friction_deg REAL, cohesion_pa REAL,
+  source TEXT NOT NULL,
+  UNIQUE (visit_id, label)
+);
+CREATE TABLE analysis (
+  id INTEGER PRIMARY KEY,
+  visit_id INTEGER NOT NULL REFERENCES visit(id),
+  model_id INTEGER REFERENCES model(id),
+  created_at TEXT NOT NULL,
+  preset TEXT NOT NULL,
+  effects TEXT NOT NULL,
+  effects_json TEXT NOT NULL
+);
+CREATE TABLE block (
+  id INTEGER PRIMARY KEY,
+  analysis_id INTEGER NOT NULL REFERENCES analysis(id) ON DELETE CASCADE,
+  label TEXT NOT NULL,
+  source TEXT NOT NULL,
+  code TEXT NOT NULL,
+  volume_m3 REAL NOT NULL,
+  finite INTEGER NOT NULL, removable INTEGER NOT NULL, marginal INTEGER NOT NULL,
+  mode TEXT NOT NULL,
+  fos REAL,
+  report_json TEXT NOT NULL
+);
+CREATE INDEX block_by_analysis ON block(analysis_id);
+CREATE TABLE action_log (
+  id INTEGER PRIMARY KEY,
+  at TEXT NOT NULL,
+  visit_id INTEGER REFERENCES visit(id),
+  action TEXT NOT NULL,
+  detail TEXT NOT NULL
+);
+)sql";
+
+// Version 2: the images move out of the capture row into `image`, one row per
+// distinct byte string. The capture table is rebuilt (SQLite cannot drop
+// NOT NULL blob columns in place) following SQLite's documented procedure for
+// general table changes: foreign keys off, new table, copy, drop, rename,
+// foreign_key_check, all in one transaction.
+constexpr const char* kVersion1To2 = R"sql(
+CREATE TABLE image (
+  id INTEGER PRIMARY KEY,
+  format TEXT NOT NULL CHECK (format IN ('jpeg', 'png')),
+  byte_size INTEGER NOT NULL,
+  bytes BLOB NOT NULL
+);
+CREATE INDEX image_by_size ON image(byte_size);
+INSERT INTO image (format, byte_size, bytes)
+  SELECT left_format, length(left_image), left_image FROM capture
+  UNION
+  SELECT right_format, length(right_image), right_image FROM capture;
+CREATE TABLE capture_v2 (
+  id INTEGER PRIMARY KEY,
+  visit_id INTEGER NOT NULL REFERENCES visit(id),
+  calibration_id INTEGER REFERENCES calibration(id),
+  label TEXT NOT NULL,
+  taken_at TEXT NOT NULL,
+  created_at TEXT NOT NULL,
+  left_image_id INTEGER NOT NULL REFERENCES image(id),
+  right_image_id INTEGER NOT NULL REFERENCES image(id)
+);
+INSERT INTO capture_v2 (id, visit_id, calibration_id, label, taken_at, created_at,
+                        left_image_id, right_image_id)
+  SELECT c.id, c.visit_id, c.calibration_id, c.label, c.taken_at, c.created_at,
+    (SELECT i.id FROM image i WHERE i.byte_size = length(c.left_image)
+       AND i.format = c.left_format AND i.bytes = c.left_image),
+    (SELECT i.id FROM image i WHERE i.byte_size = length(c.right_image)
+       AND i.format = c.right_format AND i.bytes = c.right_image)
+  FROM capture c;
+DROP TABLE capture;
+ALTER TABLE capture_v2 RENAME TO capture;
+CREATE INDEX capture_by_visit ON capture(visit_id);
+CREATE INDEX capture_by_left_image ON capture(left_image_id);
+CREATE INDEX capture_by_right_image ON capture(right_image_id);
+)sql";
+
+struct Step {
+  int to_version;
+  const char* sql;
+};
+constexpr Step kSteps[] = {{2, kVersion1To2}};
+
+}  // namespace
+
+int version_of(sqlite::Connection& db) {
+  return static_cast<int>(db.query_int("PRAGMA user_version", "reading the schema version"));
+}
+
+void create_version_1(sqlite::Connection& db) {
+  sqlite::WriteTransaction tx(db, "creating the project tables");
+  db.exec(kVersion1, "creating the project tables");
+  db.exec("PRAGMA application_id = " + std::to_string(kApplicationId), "marking the project file");
+  db.exec("PRAGMA user_version = 1", "marking the project file");
+  tx.commit();
+}
+
+void migrate_to_current(sqlite::Connection& db) {
+  if (version_of(db) == kCurrentVersion) return;
+  // foreign_keys cannot change inside a transaction; table rebuilds need it off.
+  db.exec("PRAGMA foreign_keys = OFF", "upgrading the project");
+  struct RestoreForeignKeys {
+    sqlite::Connection& db;
+    ~RestoreForeignKeys() {
+      try {
+        db.exec("PRAGMA foreign_keys = ON", "upgrading the project");
+      } catch (...) {
+      }
+    }
+  } restore{db};
+
+  sqlite::WriteTransaction tx(db, "upgrading the project");
+  // Read again under the write lock: another process may have upgraded it.
+  const int from = version_of(db);
+  if (from == kCurrentVersion) return;
+  if (from > kCurrentVersion)
+    throw Error(db.file().string() +
+                ": upgrading the project: it was written by a newer rockface "
+                "(project schema " +
+                std::to_string(from) + ", this program knows up to " +
+                std::to_string(kCurrentVersion) + ")");
+  if (from < 1)
+    throw InputError(db.file().string(),
+                     "not a rockface project (schema version " + std::to_string(from) + ")");
+  for (const Step& step : kSteps) {
+    if (step.to_version <= from) continue;
+    db.exec(step.sql, "upgrading the project to schema " + std::to_string(step.to_version));
+  }
+  sqlite::Statement check(db, "PRAGMA foreign_key_check", "upgrading the project");
+  if (check.step())
+    throw Error(db.file().string() + ": upgrading the project: table " + check.column_text(0) +
+                " row " + std::to_string(check.column_int(1)) +
+                " refers to a missing record; the project was left at schema " +
+                std::to_string(from));
+  db.exec("PRAGMA user_version = " + std::to_string(kCurrentVersion), "upgrading the project");
+  tx.commit();
+}
+
+}  // namespace rockface::storage::schema

@@ -1,0 +1,38 @@
+#pragma once
+// The layout of a project file and its history. A project file says what it
+// is by its SQLite application_id and which layout it has by its user_version;
+// every layout change is a numbered forward migration, kept forever, so that a
+// file from any earlier version of rockface opens (and is upgraded in one
+// transaction) in a later one.
+//
+// Versions:
+//   1  first layout: the two images of a capture stored inline in the capture row.
+//   2  images in their own table, shared by identical bytes: replaying the
+//      same capture folder into a project a second time (a second visit) adds
+//      capture rows, not a second copy of 20 MB of JPEGs.
+#include <cstdint>
+
+#include "storage/project_sqlite.h"
+
+namespace rockface::storage::schema {
+
+// "RocF": PRAGMA application_id of every rockface project file.
+constexpr std::int32_t kApplicationId = 0x526F6346;
+constexpr int kCurrentVersion = 2;
+
+// Creates the version-1 layout in an empty database, sets application_id and
+// user_version = 1, in one transaction. New projects start here and are then
+// migrated like any old file, so the migrations run on every new project.
+// Never change this function: it is what version 1 of rockface wrote.
+void create_version_1(sqlite::Connection& db);
+
+// Upgrades a project of an earlier version to kCurrentVersion in one
+// transaction (all steps or none). No-op when already current. Throws
+// rockface::Error when the file is newer than this program or a step fails;
+// the file then keeps its old version untouched.
+void migrate_to_current(sqlite::Connection& db);
+
+// user_version of the open database.
+int version_of(sqlite::Connection& db);
+
+}  // namespace rockface::storage::schema
