@@ -1,8 +1,195 @@
-// Blocks from the trace map: being built (issue 5). Until then a note says so.
+// Blocks from the trace map on the free surface (issue 5): the scene's
+// surface patches and traces become a trace network, its closed loops
+// become blocks, and each block gets the same analysis as an explicit one.
+// Reported in blocks[] with source "traces" and the loop's trace ids; what
+// was left out of the map (and why) goes to the report's notes.
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/faces/free_surface.h"
+#include "core/faces/surface_loops.h"
+#include "core/faces/trace_blocks.h"
+#include "core/faces/trace_network.h"
+#include "core/geometry/orientation.h"
+#include "core/kinematics/effect_bolt.h"
+#include "core/kinematics/effect_force.h"
+#include "core/kinematics/effect_gravity.h"
+#include "core/kinematics/effect_seismic.h"
+#include "core/kinematics/effect_water.h"
 #include "firmware-app/scene_analysis.h"
 
 namespace rockface::app {
-void analyse_trace_blocks(const storage::Scene&, storage::Report& report, Progress&) {
-  report.notes.push_back("blocks from traces are not analysed by this build");
+
+namespace {
+
+Eigen::Vector3d normal_of(double dip_deg, double dipdir_deg) {
+  return geometry::plane_normal({deg_to_rad(dip_deg), deg_to_rad(dipdir_deg)});
 }
+
+// The effects the scene lists that act on single blocks in limit equilibrium
+// (gravity always); the same composition as for explicit blocks.
+kinematics::Effects trace_block_effects(const storage::Scene& scene) {
+  kinematics::Effects effects;
+  effects.push_back(std::make_unique<kinematics::GravityEffect>(scene.gravity));
+  try {
+    if (const auto& w = scene.effects.water) {
+      std::vector<int> joints;
+      for (const auto& id : w->joints) joints.push_back(scene.plane_index(id));
+      effects.push_back(std::make_unique<kinematics::WaterEffect>(
+          w->unit_weight, w->phreatic_point, normal_of(w->phreatic_dip, w->phreatic_dipdir),
+          joints));
+    }
+    if (scene.effects.seismic)
+      effects.push_back(std::make_unique<kinematics::SeismicEffect>(*scene.effects.seismic));
+    for (size_t k = 0; k < scene.effects.forces.size(); ++k) {
+      const auto& f = scene.effects.forces[k];
+      effects.push_back(std::make_unique<kinematics::ForceEffect>(
+          "effects.forces[" + std::to_string(k) + "]", f.vector, f.point,
+          f.frame == "block" ? kinematics::ForceFrame::Block : kinematics::ForceFrame::Space));
+    }
+    for (size_t k = 0; k < scene.effects.bolts.size(); ++k) {
+      const auto& b = scene.effects.bolts[k];
+      effects.push_back(std::make_unique<kinematics::BoltEffect>(
+          "effects.bolts[" + std::to_string(k) + "]", b.point,
+          geometry::line_direction({deg_to_rad(b.trend), deg_to_rad(b.plunge)}), b.force));
+    }
+  } catch (const InputError& e) {
+    throw InputError(scene.source + ": " + e.where(), e.reason());
+  }
+  return effects;
+}
+
+std::string join(const std::vector<std::string>& parts, const std::string& sep) {
+  std::string s;
+  for (size_t i = 0; i < parts.size(); ++i) s += (i ? sep : "") + parts[i];
+  return s;
+}
+
+storage::ReportBlock report_block(const faces::TraceBlock& b, const storage::Scene& scene,
+                                  const faces::TraceNetwork& net, const Eigen::Vector3d& datum,
+                                  int number) {
+  storage::ReportBlock rb;
+  rb.id = "TB" + std::to_string(number);
+  rb.source = "traces";
+  for (int t : b.traces) rb.traces.push_back(scene.traces[t].id);
+  rb.code = join(b.codes, "+");
+  rb.convex = b.convex;
+  std::vector<std::string> names;
+  for (const auto& p : b.planes) {
+    std::string n = p.name;
+    if (p.kind == blocks::PlaneKind::FreeFace)
+      n += " (surface patch)";
+    else if (net.groups()[p.group].plane.source == faces::TracePlaneSource::Fitted)
+      n += " (fitted)";
+    else if (net.groups()[p.group].joint)
+      n += " (joint " + net.groups()[p.group].joint->id + ")";
+    names.push_back(n);
+  }
+  rb.notes.push_back("code digits: " + join(names, ", ") +
+                     (b.codes.size() > 1 ? "; one code per convex piece" : ""));
+  const auto& f = b.finiteness;
+  rb.finite = f.finite.value;
+  rb.removable = f.removable.value;
+  rb.margin_deg = rad_to_deg(b.finite ? f.removable.margin : f.finite.margin);
+  rb.marginal = f.removable.marginal || f.finite.marginal;
+  if (b.polyhedron && b.analysis) {
+    const blocks::Polyhedron& poly = *b.polyhedron;
+    const kinematics::BlockAnalysis& a = *b.analysis;
+    for (int v = 0; v < static_cast<int>(poly.vertices().size()); ++v)
+      rb.vertices.push_back(poly.absolute_vertex(v));
+    rb.volume = a.mass.volume;
+    rb.mass = a.mass.mass;
+    rb.centroid = a.mass.centroid + poly.datum();
+    rb.inertia = a.mass.inertia;
+    rb.principal_moments = a.mass.principal_moments;
+    for (int p = 0; p < static_cast<int>(poly.planes().size()); ++p)
+      rb.face_areas[poly.planes()[p].name] += a.mass.plane_areas[p];
+    if (a.mode) {
+      storage::ReportMode m;
+      m.type = kinematics::mode_name(a.mode->type);
+      for (int p : a.mode->planes) m.planes.push_back(poly.planes()[p].name);
+      if (a.mode->type != kinematics::ModeType::None) m.direction = a.mode->direction;
+      m.marginal = a.mode->marginal;
+      rb.mode = m;
+      rb.fos = a.fos;
+    }
+    rb.notes.insert(rb.notes.end(), a.notes.begin(), a.notes.end());
+  } else {
+    // An infinite block has no corners: its loop on the surface is what is known.
+    for (const auto& x : b.surface_polygon) rb.vertices.push_back(x + datum);
+    rb.notes.push_back("vertices: the loop on the free surface (the block has no finite corners)");
+  }
+  rb.notes.insert(rb.notes.end(), b.notes.begin(), b.notes.end());
+  return rb;
+}
+
+}  // namespace
+
+void analyse_trace_blocks(const storage::Scene& scene, storage::Report& report,
+                          Progress& progress) {
+  if (scene.patches.empty()) {
+    report.notes.push_back(
+        "traces: the scene has no surface.patches; blocks from traces need the free surface");
+    return;
+  }
+  // Without a scene datum, the first patch corner is the origin, so survey
+  // coordinates lose no precision either.
+  const Eigen::Vector3d datum = scene.has_datum ? scene.datum : scene.patches[0].polygon[0];
+  // A zero tolerance would merge nothing and divide the snapping grid by zero;
+  // a micrometre merges rounding only.
+  const double tol = std::max(scene.analysis.snap_tolerance, 1e-6);
+  const double uncertainty = deg_to_rad(scene.analysis.orientation_uncertainty_deg);
+
+  std::vector<faces::PatchInput> patches;
+  for (const auto& p : scene.patches) {
+    faces::PatchInput in{p.id, {}};
+    for (const auto& x : p.polygon) in.polygon.push_back(x - datum);
+    patches.push_back(std::move(in));
+  }
+  std::vector<faces::TraceInput> traces;
+  for (const auto& t : scene.traces) {
+    faces::TraceInput in;
+    in.id = t.id;
+    if (t.joint) {
+      const storage::SceneJoint* j = scene.joint(*t.joint);
+      faces::TraceJoint tj;
+      tj.index = scene.plane_index(j->id);
+      tj.id = j->id;
+      tj.orientation = {deg_to_rad(j->dip), deg_to_rad(j->dipdir)};
+      if (j->friction) tj.friction = deg_to_rad(*j->friction);
+      tj.cohesion = j->cohesion.value_or(0.0);
+      in.joint = tj;
+    }
+    for (const auto& x : t.points) in.points.push_back(x - datum);
+    traces.push_back(std::move(in));
+  }
+
+  const kinematics::Effects effects = trace_block_effects(scene);
+  faces::FreeSurface surface;
+  faces::TraceNetwork net;
+  try {
+    surface = faces::FreeSurface::build(patches, tol);
+    net = faces::TraceNetwork::build(surface, traces, {tol, uncertainty});
+  } catch (const InputError& e) {
+    throw InputError(scene.source + ": " + e.where(), e.reason());
+  }
+  for (const auto& n : net.notes()) report.notes.push_back("traces: " + n);
+  const faces::SurfaceLoops loops = faces::SurfaceLoops::find(net, surface);
+
+  faces::TraceBlockOptions options;
+  options.snap_tolerance = tol;
+  options.orientation_uncertainty = uncertainty;
+  options.density = scene.density;
+  options.effects = &effects;
+  options.datum = datum;
+  const auto blocks = faces::trace_blocks(surface, net, loops, options, progress);
+  for (size_t k = 0; k < blocks.size(); ++k)
+    report.blocks.push_back(report_block(blocks[k], scene, net, datum, static_cast<int>(k) + 1));
+  if (blocks.empty())
+    report.notes.push_back("traces: no closed loop of traces on the surface, so no block");
+}
+
 }  // namespace rockface::app

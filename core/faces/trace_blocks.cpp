@@ -80,11 +80,20 @@ struct Piece {
   }
 };
 
+// The block plane a polyhedron plane came from (names are unique within a
+// kind: trace ids, patch ids).
+int local_plane(const blocks::BlockPlane& bp, const std::vector<TraceBlockPlane>& planes) {
+  for (size_t i = 0; i < planes.size(); ++i)
+    if (planes[i].kind == bp.kind && planes[i].name == bp.name) return static_cast<int>(i);
+  throw Error("trace block: polyhedron plane " + bp.name + " is none of the loop's planes");
+}
+
 // Assembles the union of convex cells that meet face to face: faces two
 // cells share (same plane, opposite sides, same corners) are inside it.
 blocks::Polyhedron union_of_cells(const std::string& id,
                                   const std::vector<blocks::Polyhedron>& cells,
-                                  const std::vector<TraceBlockPlane>& planes) {
+                                  const std::vector<TraceBlockPlane>& planes,
+                                  const Eigen::Vector3d& datum) {
   double size = 0;
   for (const auto& c : cells) size = std::max(size, c.size());
   // Cells computed separately repeat shared corners to ~1e-15 relative;
@@ -108,7 +117,7 @@ blocks::Polyhedron union_of_cells(const std::string& id,
     for (const auto& f : c.faces()) {
       CellFace cf;
       const blocks::BlockPlane& bp = c.planes()[f.plane];
-      cf.plane = bp.index;
+      cf.plane = local_plane(bp, planes);
       cf.side = bp.side;
       for (int v : f.loop) cf.loop.push_back(vertex_id(c.vertices()[v]));
       cf.sorted = cf.loop;
@@ -127,7 +136,7 @@ blocks::Polyhedron union_of_cells(const std::string& id,
   for (size_t i = 0; i < faces.size(); ++i) {
     if (inside[i]) continue;
     blocks::FaceInput fi;
-    fi.index = faces[i].plane;
+    fi.index = planes[faces[i].plane].scene_index;
     fi.name = planes[faces[i].plane].name;
     fi.kind = planes[faces[i].plane].kind;
     fi.reference_normal = planes[faces[i].plane].plane.normal;
@@ -140,7 +149,7 @@ blocks::Polyhedron union_of_cells(const std::string& id,
     }
     input.push_back(std::move(fi));
   }
-  return blocks::build_block_from_faces(id, std::move(kept), input);
+  return blocks::build_block_from_faces(id, std::move(kept), input, datum);
 }
 
 }  // namespace
@@ -173,7 +182,9 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
     for (int g : groups) {
       const PlaneGroup& pg = net.groups()[g];
       plane_of_group[g] = static_cast<int>(block.planes.size());
-      block.planes.push_back({pg.name, blocks::PlaneKind::Joint, pg.plane.plane, g, -1});
+      block.planes.push_back(
+          {pg.name, blocks::PlaneKind::Joint, pg.plane.plane, g, -1,
+           pg.joint && pg.plane.source == TracePlaneSource::Joint ? pg.joint->index : -1});
       if (pg.plane.source == TracePlaneSource::Fitted) {
         block.uncertainty = std::max(block.uncertainty, pg.plane.uncertainty);
         block.notes.push_back("plane " + pg.name + " is fitted to its trace (uncertainty " +
@@ -339,12 +350,12 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
       std::vector<Eigen::Vector3d> joint_in, free_in;
       for (int j = 0; j < n_planes; ++j) {
         const TraceBlockPlane& bp = block.planes[j];
-        hs.push_back({j, bp.name, bp.kind, bp.plane, pieces[k].sides[j]});
+        hs.push_back({bp.scene_index, bp.name, bp.kind, bp.plane, pieces[k].sides[j]});
         (bp.kind == blocks::PlaneKind::Joint ? joint_in : free_in)
             .push_back(bp.plane.inward_normal(pieces[k].sides[j]));
       }
       std::optional<blocks::ConvexConstruction> cc;
-      if (hs.size() >= 4) cc = blocks::build_convex_block(id, hs);
+      if (hs.size() >= 4) cc = blocks::build_convex_block(id, hs, options.datum);
       if (!cc || cc->outcome == blocks::ConvexOutcome::Unbounded) {
         unbounded = true;
         block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
@@ -366,15 +377,16 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
     }
     if (!unbounded && !cells.empty()) {
       try {
-        block.polyhedron =
-            cells.size() == 1 ? std::move(cells.front()) : union_of_cells(id, cells, block.planes);
+        block.polyhedron = cells.size() == 1
+                               ? std::move(cells.front())
+                               : union_of_cells(id, cells, block.planes, options.datum);
         kinematics::BlockAnalysisInput in;
         in.density = options.density;
         in.effects = options.effects;
         in.uncertainty = block.uncertainty;
         for (const auto& bp : block.polyhedron->planes()) {
           kinematics::JointStrength s;
-          const TraceBlockPlane& tp = block.planes[bp.index];
+          const TraceBlockPlane& tp = block.planes[local_plane(bp, block.planes)];
           if (tp.kind == blocks::PlaneKind::Joint && net.groups()[tp.group].joint) {
             s.friction = net.groups()[tp.group].joint->friction;
             s.cohesion = net.groups()[tp.group].joint->cohesion;

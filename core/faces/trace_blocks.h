@@ -40,6 +40,9 @@ struct TraceBlockOptions {
   double orientation_uncertainty = 0;  // radians (fitted planes add their own)
   double density = 2700;               // kg/m^3
   const kinematics::Effects* effects = nullptr;
+  // Absolute position of the coordinates' origin: polyhedra carry it so that
+  // effects given at absolute points (water, forces, bolts) find the block.
+  Eigen::Vector3d datum = Eigen::Vector3d::Zero();
 };
 
 // A plane of a trace block: a joint (a plane group of the network) or a patch.
@@ -49,6 +52,10 @@ struct TraceBlockPlane {
   geometry::Plane plane;
   int group = -1;  // network plane group (joints)
   int patch = -1;  // surface patch (free faces)
+  // The plane's index for the analysis (BlockPlane::index): the caller's
+  // joint index for a joint plane (so that effects naming joints, such as
+  // water, find it), -1 for a patch or a fitted plane.
+  int scene_index = -1;
 };
 
 struct TraceBlock {
