@@ -106,6 +106,14 @@ SurfaceLoops SurfaceLoops::find(const TraceNetwork& net, const FreeSurface& surf
     for (int g : out.faces_[f].half_edges) poly.push_back(P.to2d(net.vertices()[net.origin(g)]));
     return poly;
   };
+  // A face all of whose stretches have the face on both sides is the walk
+  // around a tree of traces (its area is zero up to rounding): a hole too.
+  std::vector<bool> tree(nf, true);
+  for (size_t f = 0; f < nf; ++f)
+    for (int h : out.faces_[f].half_edges)
+      if (out.half_edge_face_[h ^ 1] != static_cast<int>(f)) tree[f] = false;
+  for (size_t f = 0; f < nf; ++f)
+    if (tree[f]) out.faces_[f].area = 0;
   for (size_t f = 0; f < nf; ++f) {
     const SurfaceFace& hole = out.faces_[f];
     if (hole.patch < 0 || hole.area > 0) continue;
