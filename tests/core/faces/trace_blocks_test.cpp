@@ -164,6 +164,48 @@ TEST(TraceBlocks, LShapedLoopIsTheUnionOfItsConvexPieces) {
   EXPECT_EQ(ids_of(b, t), (std::vector<std::string>{"high", "low", "mid", "y10", "y4", "y7"}));
 }
 
+TEST(TraceBlocks, BlockAtTheReentrantEdgeOfATunnelCrownAndWallWrapsTheCorner) {
+  // A tunnel along y: crown z = 5 (x 0..4, rock above), east wall x = 4
+  // (z 0..5, rock behind). The rock at their edge is the union of the two
+  // rock sides. Joints: y = 2 and y = 5 over crown and wall; on the crown at
+  // x = 2 a joint dipping 45 west (z = x + 3); on the wall at z = 2 one
+  // dipping atan 4 west (z = 4 x - 14). They meet behind the corner, at
+  // (17/3, 26/3): the block wraps round the edge.
+  using V = Eigen::Vector3d;
+  const std::vector<PatchInput> tunnel = {
+      {"crown", {V(0, 0, 5), V(0, 10, 5), V(4, 10, 5), V(4, 0, 5)}},
+      {"wall", {V(4, 0, 0), V(4, 0, 5), V(4, 10, 5), V(4, 10, 0)}},
+  };
+  std::vector<TraceInput> t;
+  t.push_back({"y2", joint("Jy", 90, 0, 0), {V(1, 2, 5), V(4, 2, 5), V(4, 2, 1)}});
+  t.push_back({"y5", joint("Jy", 90, 0, 0), {V(1, 5, 5), V(4, 5, 5), V(4, 5, 1)}});
+  t.push_back({"crown-j", joint("J45", 45, 270, 1), {V(2, 1, 5), V(2, 6, 5)}});
+  t.push_back(
+      {"wall-j", joint("J76", rad_to_deg(std::atan(4.0)), 270, 2), {V(4, 1, 2), V(4, 6, 2)}});
+  const FreeSurface surface = FreeSurface::build(tunnel, kSnap);
+  EXPECT_TRUE(surface.rock_is_union(0, 1, kSnap));
+  const TraceNetwork net = TraceNetwork::build(surface, t, {kSnap, 0.0});
+  const SurfaceLoops loops = SurfaceLoops::find(net, surface);
+  ASSERT_EQ(loops.regions().size(), 1u);
+  EXPECT_EQ(loops.regions()[0].patches, (std::vector<int>{0, 1}));
+  kinematics::Effects effects;
+  effects.push_back(std::make_unique<kinematics::GravityEffect>(Eigen::Vector3d(0, 0, -9.81)));
+  TraceBlockOptions options;
+  options.snap_tolerance = kSnap;
+  options.effects = &effects;
+  NoProgress progress;
+  const auto blocks = trace_blocks(surface, net, loops, options, progress);
+  ASSERT_EQ(blocks.size(), 1u);
+  const TraceBlock& b = blocks[0];
+  EXPECT_FALSE(b.convex);
+  // Behind the crown, behind the wall, and behind the edge itself.
+  EXPECT_EQ(b.codes.size(), 3u);
+  EXPECT_TRUE(b.finite);
+  ASSERT_TRUE(b.analysis) << (b.notes.empty() ? "" : b.notes.back());
+  const double area = shoelace({{2, 5}, {4, 5}, {4, 2}, {17.0 / 3, 26.0 / 3}});
+  EXPECT_NEAR(b.analysis->mass.volume, 3 * area, kVolumeRel * 30);
+}
+
 TEST(TraceBlocks, FittedPlaneAcrossTheCrestGivesTheSameBlock) {
   auto traces = benched_slope_traces();
   for (auto& t : traces)
