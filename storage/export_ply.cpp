@@ -27,7 +27,7 @@ std::string one_line(std::string text) {
 
 }  // namespace
 
-void write_ply(std::ostream& out, const Mesh& mesh, const Eigen::Vector3d& datum,
+void write_model_ply(std::ostream& out, const Mesh& mesh, const Eigen::Vector3d& datum,
                const PlyOptions& options) {
   const bool colours = !mesh.colours.empty() && mesh.colours.size() == mesh.vertices.size();
   const bool texcoords = !mesh.texcoords.empty() && mesh.texcoords.size() == mesh.vertices.size();
@@ -112,7 +112,7 @@ void export_model_ply(ProjectStore& store, RecordId model_id, const std::filesys
     options.texture_file = texture.filename().string();
   }
   write_file_atomically(
-      file, [&](std::ostream& out) { write_ply(out, model.mesh, project.datum, options); });
+      file, [&](std::ostream& out) { write_model_ply(out, model.mesh, project.datum, options); });
   if (!store.read_only())
     store.log_action(std::nullopt, "export model ply",
                      "model " + std::to_string(model_id) + " to " + file.string());

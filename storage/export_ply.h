@@ -24,7 +24,7 @@ struct PlyOptions {
   std::string comment;       // one line about where the model comes from
 };
 
-void write_ply(std::ostream& out, const Mesh& mesh, const Eigen::Vector3d& datum,
+void write_model_ply(std::ostream& out, const Mesh& mesh, const Eigen::Vector3d& datum,
                const PlyOptions& options);
 
 // Model `model_id` to `file`. When the model has texture coordinates and a

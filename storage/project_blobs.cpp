@@ -66,9 +66,8 @@ std::vector<std::uint8_t> encode_mesh(const Mesh& mesh) {
   if (!mesh.texcoords.empty()) flags |= kHasTexcoords;
   if (!mesh.colours.empty()) flags |= kHasColours;
 
-  std::vector<std::uint8_t> out;
+  std::vector<std::uint8_t> out(std::begin(kMeshMagic), std::end(kMeshMagic));
   out.reserve(8 + 4 + 16 + nv * (24 + 8 + 3) + mesh.faces.size() * 12);
-  out.insert(out.end(), std::begin(kMeshMagic), std::end(kMeshMagic));
   put(out, flags);
   put(out, static_cast<std::uint64_t>(nv));
   put(out, static_cast<std::uint64_t>(mesh.faces.size()));

@@ -2,6 +2,7 @@
 
 #include <sqlite3.h>
 
+#include <cstdio>
 #include <utility>
 
 #include "core/common/error.h"
@@ -81,6 +82,8 @@ int open_flags(Connection::Access access) {
       return flags | SQLITE_OPEN_READWRITE;
     case Connection::Access::read_write_create:
       return flags | SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+    case Connection::Access::immutable_media:
+      return flags | SQLITE_OPEN_READONLY | SQLITE_OPEN_URI;
   }
   return flags;
 }
@@ -88,8 +91,23 @@ int open_flags(Connection::Access access) {
 
 Connection::Connection(const std::filesystem::path& file, Access access, const std::string& vfs)
     : file_(file) {
+  std::string name = file.string();
+  if (access == Access::immutable_media) {
+    // A URI filename (https://sqlite.org/uri.html): escape what URIs reserve.
+    std::string uri = "file:";
+    for (char c : name) {
+      if (c == '%' || c == '?' || c == '#') {
+        char hex[4];
+        std::snprintf(hex, sizeof(hex), "%%%02X", static_cast<unsigned char>(c));
+        uri += hex;
+      } else {
+        uri += c;
+      }
+    }
+    name = uri + "?immutable=1";
+  }
   const int rc =
-      sqlite3_open_v2(file.c_str(), &db_, open_flags(access), vfs.empty() ? nullptr : vfs.c_str());
+      sqlite3_open_v2(name.c_str(), &db_, open_flags(access), vfs.empty() ? nullptr : vfs.c_str());
   if (rc != SQLITE_OK) {
     sqlite3* db = db_;
     db_ = nullptr;
@@ -103,6 +121,10 @@ Connection::Connection(const std::filesystem::path& file, Access access, const s
 
 Connection::~Connection() {
   close();
+}
+
+bool Connection::is_read_only() const {
+  return sqlite3_db_readonly(db_, "main") == 1;
 }
 
 Connection::Connection(Connection&& other) noexcept

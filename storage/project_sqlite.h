@@ -26,9 +26,14 @@ std::string explain(int extended_rc);
 
 class Connection {
  public:
-  enum class Access { read_only, read_write, read_write_create };
+  // immutable_media: read-only access to a file on write-protected media
+  // (SD card lock switch, read-only mount). SQLite then reads the file as
+  // it is, without the -shm/-wal side files it could not create there.
+  enum class Access { read_only, read_write, read_write_create, immutable_media };
   // vfs: name of a registered SQLite VFS, empty for the default one.
   Connection(const std::filesystem::path& file, Access access, const std::string& vfs = {});
+  // true when SQLite could open the file for reading only (write-protected).
+  bool is_read_only() const;
   ~Connection();
   Connection(Connection&& other) noexcept;
   Connection& operator=(Connection&& other) noexcept;

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <sqlite3.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -124,6 +125,10 @@ void configure_writer(Connection& db, const OpenOptions& options) {
     throw Error(db.file().string() +
                 ": opening the project: the file system does not support SQLite's write-ahead "
                 "log (WAL)");
+  // The write-ahead log grows to the largest save (a capture is ~20 MB) and
+  // would keep that size on the card; past 32 MiB it is cut back after each
+  // checkpoint.
+  db.exec("PRAGMA journal_size_limit = 33554432", "opening the project");
   if (options.max_file_bytes > 0) {
     const std::int64_t page = db.query_int("PRAGMA page_size", "opening the project");
     db.exec("PRAGMA max_page_count = " +
@@ -244,11 +249,21 @@ ProjectStore ProjectStore::create(const fs::path& file, const ProjectInfo& info,
   return open(file, options);
 }
 
+namespace {
+bool on_read_only_media(const fs::path& file) {
+  struct statvfs vfs {};
+  return ::statvfs(file.c_str(), &vfs) == 0 && (vfs.f_flag & ST_RDONLY) != 0;
+}
+}  // namespace
+
 ProjectStore ProjectStore::open(const fs::path& file, const OpenOptions& options) {
   check_header(file);
+  const bool media_read_only = on_read_only_media(file);
   int version = 0;
   {
-    Connection probe(file, Connection::Access::read_only, options.vfs);
+    Connection probe(
+        file, media_read_only ? Connection::Access::immutable_media : Connection::Access::read_only,
+        options.vfs);
     configure_reader(probe, options);
     IntegrityReport report;
     try {
@@ -263,24 +278,38 @@ ProjectStore ProjectStore::open(const fs::path& file, const OpenOptions& options
                        "the project file is damaged (integrity check: " + report.problems.front() +
                            (report.problems.size() > 1 ? ", ..." : "") + "); it was not changed");
     if (version < 1) throw InputError(file.string(), "not a rockface project (no schema version)");
-    const std::string newer = version > schema::kCurrentVersion
-                                  ? "written by a newer rockface (project schema " +
-                                        std::to_string(version) + ", this program knows up to " +
-                                        std::to_string(schema::kCurrentVersion) +
-                                        "): opened read-only, nothing can be saved to it"
-                                  : std::string();
-    if (options.read_only || !newer.empty()) {
+    std::string reason;
+    if (version > schema::kCurrentVersion)
+      reason = "written by a newer rockface (project schema " + std::to_string(version) +
+               ", this program knows up to " + std::to_string(schema::kCurrentVersion) +
+               "): opened read-only, nothing can be saved to it";
+    else if (media_read_only)
+      reason = "the card or folder is write-protected: opened read-only, nothing can be saved";
+    else if (options.read_only)
+      reason = "opened read-only on request";
+    if (!reason.empty()) {
       if (version < schema::kCurrentVersion)
         throw InputError(file.string(),
                          "written by an older rockface (project schema " + std::to_string(version) +
                              ") and must be upgraded before it can be read: open it writable "
                              "once (keep a copy of the file first if an older rockface still "
                              "needs it)");
-      return ProjectStore(file, std::move(probe), true,
-                          newer.empty() ? "opened read-only on request" : newer, version);
+      return ProjectStore(file, std::move(probe), true, reason, version);
     }
   }
   Connection db(file, Connection::Access::read_write, options.vfs);
+  if (db.is_read_only()) {
+    // SQLite fell back to reading: the file itself is write-protected.
+    configure_reader(db, options);
+    if (version < schema::kCurrentVersion)
+      throw InputError(file.string(), "written by an older rockface (project schema " +
+                                          std::to_string(version) +
+                                          ") and write-protected, so it cannot be upgraded");
+    return ProjectStore(file, std::move(db), true,
+                        "the project file is write-protected: opened read-only, nothing can be "
+                        "saved",
+                        version);
+  }
   configure_writer(db, options);
   if (version < schema::kCurrentVersion) schema::migrate_to_current(db);
   version = schema::version_of(db);

@@ -114,7 +114,10 @@ TEST(Export, BinaryPlyReadsBackExactlyWithTexture) {
 
 TEST(Export, AsciiPlyRelativeToDatum) {
   Project p;
-  export_model_ply(p.store, p.model, p.dir / "model.ply", {.binary = false, .absolute = false});
+  PlyOptions ascii_relative;
+  ascii_relative.binary = false;
+  ascii_relative.absolute = false;
+  export_model_ply(p.store, p.model, p.dir / "model.ply", ascii_relative);
   const auto lines = lines_of(p.dir / "model.ply");
   const auto end = std::find(lines.begin(), lines.end(), "end_header");
   ASSERT_NE(end, lines.end());
@@ -170,7 +173,9 @@ TEST(Export, ReadOnlyProjectExportsWithoutLogging) {
   fs::path file;
   Project p;
   file = p.store.file();
-  auto reader = ProjectStore::open(file, {.read_only = true});
+  OpenOptions reading;
+  reading.read_only = true;
+  auto reader = ProjectStore::open(file, reading);
   const auto actions = reader.list_actions().size();
   EXPECT_EQ(export_joints_csv(reader, p.dir / "ro.csv"), 3u);
   export_scene_json(reader, p.dir / "ro.scene.json");

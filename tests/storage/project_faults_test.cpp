@@ -53,7 +53,9 @@ TEST(ProjectFaults, SizeLimitReachedDuringASaveFailsCleanly) {
   {
     // SQLite's own limit (PRAGMA max_page_count): 64 KiB of room left, and a
     // capture of two 1600 x 1200 textured images (several hundred KiB).
-    auto store = ProjectStore::open(file, {.max_file_bytes = size + (64 << 10)});
+    OpenOptions limited;
+    limited.max_file_bytes = size + (64 << 10);
+    auto store = ProjectStore::open(file, limited);
     const Capture big = test::sample_capture(visit, 2, 1600, 1200);
     const std::string message = message_of([&] { store.save_capture(big); });
     EXPECT_NE(message.find(file.string()), std::string::npos) << message;
@@ -99,6 +101,40 @@ TEST(ProjectFaults, FullFileSystemFailsCleanly) {
   EXPECT_EQ(capture_labels(file), saved);
 }
 
+// The SD card's lock switch (a read-only mount): the project opens read-only
+// and says why; nothing is written. Needs mount permission like the test above.
+TEST(ProjectFaults, WriteProtectedCardOpensReadOnly) {
+  TempDir dir("locked-card");
+  const fs::path mount_point = dir / "card";
+  fs::create_directories(mount_point);
+  if (::mount("tmpfs", mount_point.c_str(), "tmpfs", 0, "size=4m") != 0)
+    GTEST_SKIP() << "cannot mount a tmpfs here: " << std::strerror(errno);
+  struct Unmount {
+    fs::path at;
+    ~Unmount() { ::umount2(at.c_str(), MNT_DETACH); }
+  } unmount{mount_point};
+  const auto file = mount_point / "site.rockface";
+  Capture saved;
+  {
+    auto store = ProjectStore::create(file, test::sample_project());
+    saved = test::sample_capture(store.begin_visit("tablet"), 1);
+    store.save_capture(saved);
+  }
+  ASSERT_EQ(::mount(nullptr, mount_point.c_str(), nullptr, MS_REMOUNT | MS_RDONLY, nullptr), 0)
+      << std::strerror(errno);
+  auto store = ProjectStore::open(file);
+  EXPECT_TRUE(store.read_only());
+  EXPECT_NE(store.read_only_reason().find("write-protected"), std::string::npos);
+  ASSERT_EQ(store.list_captures().size(), 1u);
+  EXPECT_EQ(store.load_capture(store.list_captures()[0].id).right.bytes, saved.right.bytes);
+  try {
+    store.begin_visit("tablet");
+    ADD_FAILURE() << "saved to a write-protected card";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("write-protected"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ProjectFaults, IoErrorAtEveryWriteOfASaveLeavesTheProjectWhole) {
   test::FaultyVfs::install();
   TempDir dir("io-error");
@@ -109,7 +145,8 @@ TEST(ProjectFaults, IoErrorAtEveryWriteOfASaveLeavesTheProjectWhole) {
     visit = store.begin_visit("tablet");
     store.save_capture(test::sample_capture(visit, 1));
   }
-  const OpenOptions faulty{.vfs = test::FaultyVfs::kName};
+  OpenOptions faulty;
+  faulty.vfs = test::FaultyVfs::kName;
   // How many write/sync/truncate calls one save makes.
   const Capture probe = test::sample_capture(visit, 2, 320, 240);
   int calls_per_save = 0;

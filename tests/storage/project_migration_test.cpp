@@ -81,7 +81,9 @@ TEST(ProjectMigration, Version1FileIsUpgradedWithEveryRecord) {
   {
     // Read-only opening cannot upgrade: it says so and leaves the file at v1.
     try {
-      ProjectStore::open(file, {.read_only = true});
+      OpenOptions reading;
+      reading.read_only = true;
+      ProjectStore::open(file, reading);
       FAIL() << "an old project was served read-only without its upgrade";
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("older rockface"), std::string::npos) << e.what();
