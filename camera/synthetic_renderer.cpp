@@ -421,6 +421,12 @@ SyntheticRender render_scene(const SyntheticScene& scene, Progress& progress) {
       target.visible[s] = in_image && !(t_patch < 1.0);
     }
 
+  if (scene.reference_line) {
+    const auto ends = project({scene.reference_line->first, scene.reference_line->second},
+                              r.poses[0], r.intrinsics);
+    r.reference_line_left = std::array<Vector2d, 2>{ends[0], ends[1]};
+  }
+
   for (const auto& joint : scene.joints) {
     const Vector3d nj = joint.normal.normalized();
     for (size_t k = 0; k < scene.patches.size(); ++k) {

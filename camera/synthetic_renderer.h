@@ -18,6 +18,7 @@
 // Deterministic: the same scene gives the same pixels bit for bit (integer
 // lattice hashes, fixed-seed cv::RNG for noise, rows rendered independently).
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,8 @@ struct SyntheticRender {
   photogrammetry::CameraIntrinsics intrinsics;
   std::vector<TargetTruth> targets;  // lower, upper (empty without a range pole)
   std::vector<TraceTruth> traces;
+  // The reference line's end points in the left image (distortion included).
+  std::optional<std::array<Eigen::Vector2d, 2>> reference_line_left;
 };
 
 // Both views and the ground truth. Throws InputError for a scene that cannot

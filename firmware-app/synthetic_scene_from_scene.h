@@ -1,0 +1,20 @@
+#pragma once
+// A parsed scene's imaging section, surface and joints, as the synthetic
+// renderer's input. Lives here because the camera part may not use storage.
+#include <Eigen/Core>
+
+#include "camera/synthetic_scene.h"
+#include "storage/scene.h"
+
+namespace rockface::app {
+
+struct SyntheticSceneInput {
+  camera::SyntheticScene scene;                      // datum-relative coordinates
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // add to get absolute coordinates
+};
+
+// Throws InputError naming the scene file when it has no imaging section
+// or no surface to photograph.
+SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& scene);
+
+}  // namespace rockface::app
