@@ -454,6 +454,31 @@ RecordId ProjectStore::save_calibration(const Calibration& calibration) {
   require_finite(calibration.focal_setting_mm, "calibration.focal_setting_mm");
 
   WriteTransaction tx(db_, doing);
+  {
+    // The same calibration saved again (a second replay, a re-sync) is the
+    // stored one, not a duplicate.
+    Statement same(db_,
+                   "SELECT id FROM calibration WHERE body_id IS ? AND width = ? AND height = ? "
+                   "AND fx = ? AND fy = ? AND cx = ? AND cy = ? AND k1 = ? AND k2 = ? AND p1 = ? "
+                   "AND p2 = ? AND k3 = ? AND rms_px = ? AND body = ? AND lens = ? AND focus = ? "
+                   "AND focal_setting_mm = ? AND method = ? LIMIT 1",
+                   doing);
+    same.bind(1, calibration.body_id)
+        .bind(2, k.width)
+        .bind(3, k.height)
+        .bind(4, k.fx)
+        .bind(5, k.fy)
+        .bind(6, k.cx)
+        .bind(7, k.cy);
+    for (int i = 0; i < 5; ++i) same.bind(8 + i, k.distortion[static_cast<std::size_t>(i)]);
+    same.bind(13, k.rms_px)
+        .bind(14, k.body)
+        .bind(15, k.lens)
+        .bind(16, k.focus)
+        .bind(17, calibration.focal_setting_mm)
+        .bind(18, calibration.method);
+    if (same.step()) return same.column_int(0);
+  }
   Statement st(db_,
                "INSERT INTO calibration (body_id, created_at, width, height, fx, fy, cx, cy, k1, "
                "k2, p1, p2, k3, rms_px, body, lens, focus, focal_setting_mm, method) VALUES "

@@ -80,6 +80,8 @@ class ProjectStore {
   // The body with the same (make, model, serial) if stored, else a new one.
   RecordId save_camera_body(const CameraBody& body);
   std::vector<CameraBody> list_camera_bodies();
+  // An identical calibration (same body, values, provenance) already stored
+  // is returned instead of a copy.
   RecordId save_calibration(const Calibration& calibration);
   Calibration load_calibration(RecordId id);
   std::vector<Calibration> list_calibrations();
