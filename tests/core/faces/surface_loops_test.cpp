@@ -178,6 +178,36 @@ TEST(SurfaceLoops, EndsShortOfEachOtherWithinTheToleranceAreSnapped) {
   EXPECT_EQ(map_of(ring(0.08)).loops.regions().size(), 0u);
 }
 
+TEST(SurfaceLoops, EndsShortOfAPatchEdgeAreExtendedToIt) {
+  // The joints y = 12 and y = 16 of block B marked in two pieces each, one on
+  // the face and one on the bench, each stopping `gap` before the crest.
+  auto with_gap = [](double gap) {
+    std::vector<TraceInput> t;
+    for (const auto& tr : benched_slope_traces()) {
+      if (tr.id != "B-y12" && tr.id != "B-y16") {
+        t.push_back(tr);
+        continue;
+      }
+      const double y = tr.points.front().y();
+      const Eigen::Vector3d up_face = Eigen::Vector3d(1, 0, 2).normalized();
+      TraceInput face = tr, bench = tr;
+      face.id += "/face";
+      bench.id += "/bench";
+      face.points = {testing::on_lower_face(y, 2), Eigen::Vector3d(3, y, 6) - gap * up_face};
+      bench.points = {Eigen::Vector3d(3 + gap, y, 6), Eigen::Vector3d(6, y, 6)};
+      t.push_back(face);
+      t.push_back(bench);
+    }
+    return t;
+  };
+  // 3 cm short: extended to the crest, where the pieces meet; block B is found.
+  const Map near = map_of(with_gap(0.03));
+  EXPECT_EQ(near.loops.regions().size(), 3u);
+  for (int c : matches(near, kExact)) EXPECT_EQ(c, 1);
+  // 8 cm short: beyond the tolerance, B stays open.
+  EXPECT_EQ(map_of(with_gap(0.08)).loops.regions().size(), 2u);
+}
+
 TEST(SurfaceLoops, SinglePointTraceIsRejectedByName) {
   auto traces = benched_slope_traces();
   traces.push_back({"lonely", testing::joint("Jy", 90, 0, 0), {Eigen::Vector3d(1, 1, 2)}});
