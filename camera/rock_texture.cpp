@@ -18,10 +18,12 @@ inline uint32_t hash(uint32_t x) {
   return x;
 }
 
+// One hash per lattice point: the coordinates are spread by large odd
+// multipliers before mixing, so neighbouring points share no low bits.
 inline float lattice(int64_t i, int64_t j, int64_t k, uint32_t salt) {
-  uint32_t h = hash(static_cast<uint32_t>(i) ^ salt);
-  h = hash(h ^ static_cast<uint32_t>(j) * 0x9E3779B1U);
-  h = hash(h ^ static_cast<uint32_t>(k) * 0x85EBCA77U);
+  const uint32_t h =
+      hash(static_cast<uint32_t>(i) * 0x8DA6B343U ^ static_cast<uint32_t>(j) * 0xD8163841U ^
+           static_cast<uint32_t>(k) * 0xCB1AB31FU ^ salt);
   return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);  // [0, 1)
 }
 
