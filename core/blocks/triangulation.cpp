@@ -36,6 +36,22 @@ std::vector<Triangle> triangulate_face(const Polyhedron& block, int f) {
   for (size_t k = 0; k < loop.size(); ++k) idx[k] = static_cast<int>(k);
   std::vector<Triangle> out;
   const double tol = kConvexityRel * block.size();
+  // A strictly convex loop (every corner turning left): a fan from its
+  // first corner, O(n). Ear clipping below is O(n^3) and only for the rest.
+  {
+    const int n = static_cast<int>(idx.size());
+    bool convex = true;
+    for (int k = 0; k < n && convex; ++k) {
+      const Eigen::Vector2d& a = fr.corners[(k + n - 1) % n];
+      const Eigen::Vector2d& b = fr.corners[k];
+      const Eigen::Vector2d& c = fr.corners[(k + 1) % n];
+      convex = cross2(b - a, c - b) > tol * (c - a).norm();
+    }
+    if (convex) {
+      for (int k = 1; k + 1 < n; ++k) out.push_back({loop[0], loop[k], loop[k + 1]});
+      return out;
+    }
+  }
   while (idx.size() > 3) {
     const int n = static_cast<int>(idx.size());
     // Best ear: a convex corner whose triangle holds no other corner; among
