@@ -13,7 +13,9 @@
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
 #include "core/kinematics/effect_bolt.h"
+#include "core/kinematics/effect_force.h"
 #include "core/kinematics/effect_gravity.h"
+#include "core/kinematics/effect_seismic.h"
 #include "core/kinematics/effect_water.h"
 
 namespace rockface::kinematics {
@@ -372,6 +374,55 @@ TEST(LimitEquilibrium, WaterOnOneWedgeFaceOpensItAndTheWedgeSlidesOnTheOther) {
   ASSERT_TRUE(r.fos);
   EXPECT_NEAR(*r.fos, (N2 * std::tan(phi) + c * r.mass.plane_areas[j2]) / S, kClosedForm);
   EXPECT_EQ(r.opened_planes, std::vector<int>{j1});
+}
+
+TEST(LimitEquilibrium, PseudoStaticSeismicLoadFollowsClosedForm) {
+  // Horizontal acceleration k g towards the dip direction (out of the
+  // slope): FoS = (cos psi - k sin psi) tan phi / (sin psi + k cos psi).
+  const double psi = deg_to_rad(25), phi = deg_to_rad(35), k = 0.15;
+  const blocks::Polyhedron p = block_on_plane(25, 90, 4, 3, 1.5);
+  Effects e;
+  e.push_back(std::make_unique<GravityEffect>(Eigen::Vector3d(0, 0, -kG)));
+  e.push_back(std::make_unique<SeismicEffect>(Eigen::Vector3d(k * kG, 0, 0)));  // east = dipdir 90
+  BlockAnalysisInput in;
+  in.density = kRho;
+  in.strengths = strengths(p, 35, 0);
+  in.effects = &e;
+  const BlockAnalysis r = analyse_block(p, in);
+  EXPECT_EQ(r.effects_used, (std::vector<std::string>{"gravity", "seismic"}));
+  ASSERT_TRUE(r.fos);
+  EXPECT_NEAR(
+      *r.fos,
+      (std::cos(psi) - k * std::sin(psi)) * std::tan(phi) / (std::sin(psi) + k * std::cos(psi)),
+      kClosedForm);
+}
+
+TEST(LimitEquilibrium, AppliedForceActsAtItsPointWithItsMoment) {
+  // A force pulling the slab up the dip, applied at a corner of its top:
+  // it enters the resultant and gives the moment r x F about the centroid.
+  const double psi = deg_to_rad(30), phi = deg_to_rad(30), F = 2e5;
+  const blocks::Polyhedron p = block_on_plane(30, 0, 4, 3, 1.5);
+  const Eigen::Vector3d up_dip = -geometry::line_direction({0, psi});
+  int corner = 0;  // the highest vertex, on the block's surface
+  for (int v = 0; v < static_cast<int>(p.vertices().size()); ++v)
+    if (p.vertices()[v].z() > p.vertices()[corner].z()) corner = v;
+  for (const ForceFrame frame : {ForceFrame::Space, ForceFrame::Block}) {
+    Effects e;
+    e.push_back(std::make_unique<GravityEffect>(Eigen::Vector3d(0, 0, -kG)));
+    e.push_back(
+        std::make_unique<ForceEffect>("forces[0]", F * up_dip, p.absolute_vertex(corner), frame));
+    BlockAnalysisInput in;
+    in.density = kRho;
+    in.strengths = strengths(p, 30, 0);
+    in.effects = &e;
+    const BlockAnalysis r = analyse_block(p, in);
+    const double W = r.mass.mass * kG;
+    EXPECT_LE((r.force - (Eigen::Vector3d(0, 0, -W) + F * up_dip)).norm(), W * kClosedForm);
+    const Eigen::Vector3d arm = p.vertices()[corner] - r.mass.centroid;
+    EXPECT_LE((r.moment - arm.cross(F * up_dip)).norm(), F * arm.norm() * kClosedForm);
+    ASSERT_TRUE(r.fos);
+    EXPECT_NEAR(*r.fos, W * std::cos(psi) * std::tan(phi) / (W * std::sin(psi) - F), kClosedForm);
+  }
 }
 
 TEST(LimitEquilibrium, BoltOutsideTheBlockDoesNotActAndSaysSo) {
