@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct Run {
+struct CliRun {
   int exit_code = -1;
   std::string out, err;
 };
@@ -40,7 +40,7 @@ fs::path work_dir() {
   return dir;
 }
 
-Run analyse(const json& scene, const std::string& name) {
+CliRun analyse(const json& scene, const std::string& name) {
   const fs::path dir = work_dir();
   const fs::path scene_path = dir / (name + ".scene.json");
   std::ofstream(scene_path) << scene.dump(2);
@@ -48,7 +48,7 @@ Run analyse(const json& scene, const std::string& name) {
                           scene_path.string() + " --out " + (dir / "report.json").string() + " >" +
                           (dir / "out.txt").string() + " 2>" + (dir / "err.txt").string();
   const int status = std::system(cmd.c_str());
-  Run r;
+  CliRun r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = r.exit_code == 0 ? slurp(dir / "report.json") : "";
   r.err = slurp(dir / "err.txt");
@@ -129,7 +129,7 @@ json plane_failure_scene() {
 constexpr double kReport = 1e-8;
 
 TEST(AnalyseBlocksCli, PlaneFailureMatchesHoekAndBray) {
-  const Run r = analyse(plane_failure_scene(), "plane-failure");
+  const CliRun r = analyse(plane_failure_scene(), "plane-failure");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json rep = json::parse(r.out);
   EXPECT_EQ(rep["effects_simulated"], json({"gravity", "water", "bolts"}));
@@ -190,7 +190,7 @@ TEST(AnalyseBlocksCli, NonConvexBlockByFacesIsReported) {
   for (int k = 0; k < 6; ++k)
     faces.push_back({{"plane", names[k + 1]}, {"loop", {k, (k + 1) % 6, 6 + (k + 1) % 6, 6 + k}}});
   s["blocks"] = json::array({{{"id", "L"}, {"vertices", verts}, {"faces", faces}}});
-  const Run r = analyse(s, "l-block");
+  const CliRun r = analyse(s, "l-block");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json b = json::parse(r.out)["blocks"][0];
   EXPECT_EQ(b["convex"], false);
@@ -206,7 +206,7 @@ TEST(AnalyseBlocksCli, NonConvexBlockByFacesIsReported) {
 TEST(AnalyseBlocksCli, HalfSpaceBlockNeedsPlanePoints) {
   json s = plane_failure_scene();
   s["joints"][1].erase("point");
-  const Run r = analyse(s, "no-point");
+  const CliRun r = analyse(s, "no-point");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("joints[1].point"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("B1"), std::string::npos) << r.err;
@@ -221,20 +221,21 @@ TEST(AnalyseBlocksCli, OpenBlockByFacesIsBadInput) {
                               {"faces", json::array({{{"plane", "P"}, {"loop", {0, 2, 1}}},
                                                      {{"plane", "C"}, {"loop", {0, 1, 3}}},
                                                      {{"plane", "F"}, {"loop", {0, 3, 2}}}})}}});
-  const Run r = analyse(s, "open");
+  const CliRun r = analyse(s, "open");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("blocks[0]"), std::string::npos) << r.err;
 }
 
 TEST(AnalyseBlocksCli, InfiniteHalfSpaceBlockIsReportedNotAnError) {
   json s = plane_failure_scene();
-  s["blocks"][0]["halfspaces"].erase("U");  // no upper surface: open upward
-  const Run r = analyse(s, "infinite");
+  s["blocks"][0]["halfspaces"].erase("P");  // no sliding plane: open downward into the rock
+  const CliRun r = analyse(s, "infinite");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json b = json::parse(r.out)["blocks"][0];
   EXPECT_EQ(b["finite"], false);
   EXPECT_EQ(b["removable"], false);
-  EXPECT_EQ(b["code"], "001201");  // U not involved
+  EXPECT_EQ(b["code"], "201101");  // P not involved
+  EXPECT_FALSE(b.contains("volume"));
 }
 
 }  // namespace
