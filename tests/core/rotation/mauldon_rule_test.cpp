@@ -136,3 +136,34 @@ TEST(MauldonRule, HoldsOnRandomConvexBlocks) {
 
 }  // namespace
 }  // namespace rockface::kinematics
+
+namespace rockface::kinematics {
+namespace {
+
+TEST(CornerRotation, ActiveSetMarginEqualsTheDirectConeSearchOnLargeBlocks) {
+  // Blocks with 12 to 16 faces have 40-80 limit planes per static point:
+  // the margin comes from the active-set search; it must equal
+  // geometry::Cone's direct search over all of them.
+  std::mt19937 gen(4242);
+  int compared = 0, shut = 0, open = 0;
+  for (int trial = 0; trial < 60 && compared < 40; ++trial) {
+    RotationInput in;
+    // Up to 8 free faces: corners with few joints, so some spaces open.
+    if (!random_block(gen, 12 + trial % 5, 2 + trial % 7, in)) continue;
+    const RotationAnalysis a = analyse_rotation(in, kUncertainty);
+    for (const auto& c : a.corners) {
+      if (c.limits.size() <= 12) continue;
+      ++compared;
+      (c.signed_margin > 0 ? open : shut) += 1;
+      // Both exact; they differ by rounding of dot products (~1e-15).
+      EXPECT_NEAR(c.signed_margin, c.space.margin().angle, 1e-12);
+      EXPECT_NEAR(c.space.margin_of(c.best_axis), c.signed_margin, 1e-12);
+    }
+  }
+  EXPECT_GE(compared, 40);
+  EXPECT_GT(open, 0);  // both kinds of verdict were compared
+  EXPECT_GT(shut, 0);
+}
+
+}  // namespace
+}  // namespace rockface::kinematics
