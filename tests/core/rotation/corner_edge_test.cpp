@@ -226,3 +226,38 @@ TEST(CornerRotation, PolyhedronAdapterGivesTheSameAnswers) {
 
 }  // namespace
 }  // namespace rockface::kinematics
+
+namespace rockface::kinematics {
+namespace {
+
+TEST(CornerRotation, SpinBetweenTwoParallelJointsSlidesOnBoth) {
+  // A unit cube between a joint floor z = 0 and a joint roof z = 1 (block
+  // below it), sides free. At R = (0,0,0) the floor corners give u_y <= 0,
+  // u_x >= 0, u_x - u_y >= 0 and the roof corners u_y >= 0, u_x <= 0,
+  // -u_x + u_y >= 0 (the roof corner straight above R is void): only the
+  // vertical line is left - no interior, so not corner-rotatable (margin 0,
+  // marginal) - but spinning about the floor's normal +z slides on the floor
+  // and keeps the roof in sliding contact too.
+  const std::vector<test_rotation::Side> cube = {
+      {"Jfloor", true, {0, 0, 1}, {0, 0, 0}}, {"Jroof", true, {0, 0, -1}, {0, 0, 1}},
+      {"F2", false, {1, 0, 0}, {0, 0, 0}},    {"F3", false, {-1, 0, 0}, {1, 0, 0}},
+      {"F4", false, {0, 1, 0}, {0, 0, 0}},    {"F5", false, {0, -1, 0}, {0, 1, 0}}};
+  const RotationInput in = test_rotation::convex_block("slab", cube);
+  const RotationTopology t = rotation_topology(in);
+  const int r = test_rotation::corner_at(in, {0, 0, 0});
+  const CornerRotation c = corner_rotation(in, t, r, kUncertainty);
+  EXPECT_EQ(c.void_limits, 1);  // the roof corner (0,0,1)
+  EXPECT_FALSE(c.rotatable.value);
+  EXPECT_TRUE(c.rotatable.marginal);
+  EXPECT_NEAR(c.signed_margin, 0, 1e-12);  // a line: margin zero to rounding
+  ASSERT_EQ(c.sliding.size(), 1u);         // only the floor passes through R
+  const SlidingRotation& s = c.sliding[0];
+  EXPECT_EQ(in.planes[s.plane].name, "Jfloor");
+  EXPECT_TRUE(s.feasible.value);
+  EXPECT_NEAR(s.signed_margin, kPi / 2, 1e-12);  // nothing else constrains the spin
+  ASSERT_EQ(s.also_sliding.size(), 1u);
+  EXPECT_EQ(in.planes[s.also_sliding[0]].name, "Jroof");
+}
+
+}  // namespace
+}  // namespace rockface::kinematics
