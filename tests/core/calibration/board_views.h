@@ -84,6 +84,48 @@ inline cv::Mat render_board_view(const BoardCamera& cam, int cols, int rows, dou
   return image;
 }
 
+// A symmetric grid of black circles (radius 0.3 of the spacing s) on a
+// white board, cols x rows centres at (c s, r s, 0), edges anti-aliased over
+// the pixel footprint (a radial ramp, symmetric, so centres are unbiased to
+// first order).
+inline cv::Mat render_circle_grid_view(const BoardCamera& cam, int cols, int rows, double s,
+                                       const cv::Matx33d& R, const cv::Vec3d& t) {
+  const int W = cam.size.width, H = cam.size.height;
+  std::vector<cv::Point2d> pixels;
+  pixels.reserve(static_cast<size_t>(W) * H);
+  for (int v = 0; v < H; ++v)
+    for (int u = 0; u < W; ++u) pixels.emplace_back(u, v);
+  std::vector<cv::Point2d> normalized;
+  cv::undistortPoints(pixels, normalized, cam.K, cam.dist, cv::noArray(), cv::noArray(),
+                      cv::TermCriteria(cv::TermCriteria::COUNT, 10, 0));
+  const cv::Vec3d n = R * cv::Vec3d(0, 0, 1);
+  const cv::Matx33d Rt = R.t();
+  const double radius = 0.3 * s;
+  cv::Mat image(H, W, CV_8U);
+  for (int v = 0; v < H; ++v)
+    for (int u = 0; u < W; ++u) {
+      const size_t i = static_cast<size_t>(v) * W + u;
+      const cv::Vec3d ray(normalized[i].x, normalized[i].y, 1.0);
+      const double lambda = n.dot(t) / n.dot(ray);
+      const cv::Vec3d b = Rt * (lambda * ray - t);
+      // Footprint of the pixel on the board: range over focal length,
+      // stretched by the incidence.
+      const double ray_norm = cv::norm(ray);
+      const double footprint =
+          lambda * ray_norm / cam.K(0, 0) / std::max(std::abs(n.dot(ray)) / ray_norm, 0.1);
+      double value = 90;  // beyond the board
+      if (lambda > 0 && b[0] > -s && b[0] < cols * s && b[1] > -s && b[1] < rows * s) {
+        const double cx = std::clamp(std::round(b[0] / s), 0.0, cols - 1.0) * s;
+        const double cy = std::clamp(std::round(b[1] / s), 0.0, rows - 1.0) * s;
+        const double d = std::hypot(b[0] - cx, b[1] - cy);
+        const double black = std::clamp((radius - d) / footprint + 0.5, 0.0, 1.0);
+        value = 220 - 190 * black;
+      }
+      image.at<uchar>(v, u) = cv::saturate_cast<uchar>(value);
+    }
+  return image;
+}
+
 // Board pose looking at the board centre from `distance`, tilted by
 // (ax, ay) about the board's x and y axes and turned by az in its plane.
 inline void board_pose(int cols, int rows, double s, double ax, double ay, double az,

@@ -198,6 +198,41 @@ TEST(CalibrationSynthetic, ReportsAndExcludesAnOutlierView) {
   EXPECT_LT(r.rms_px, 0.1);
 }
 
+TEST(CalibrationSynthetic, CircleGridRecoversFocalLength) {
+  const test::BoardCamera cam;
+  const int cols = 7, rows = 5;
+  const double s = 0.04;
+  const double tilts[][3] = {{0.0, 0.0, 0.0},   {0.4, 0.0, 0.1},   {-0.4, 0.1, -0.1},
+                             {0.0, 0.45, 0.0},  {0.1, -0.45, 0.2}, {0.3, 0.3, -0.2},
+                             {-0.3, -0.3, 0.2}, {0.25, -0.3, 0.1}};
+  const cv::Vec3d offsets[] = {{0, 0, 0},        {0.03, 0.02, 0}, {-0.03, -0.02, 0},
+                               {0.0, 0.03, 0},   {0.0, -0.03, 0}, {0.06, 0.04, 0},
+                               {-0.06, 0.04, 0}, {0.06, -0.04, 0}};
+  const CalibrationPattern pattern = parse_calibration_pattern("circles:7x5:0.04");
+  std::vector<CalibrationView> views;
+  for (int i = 0; i < 6; ++i) {
+    cv::Matx33d R;
+    cv::Vec3d t;
+    test::board_pose(cols, rows, s, tilts[i][0], tilts[i][1], tilts[i][2], 0.55, offsets[i], R, t);
+    const auto points = detect_calibration_pattern(
+        test::render_circle_grid_view(cam, cols, rows, s, R, t), pattern);
+    ASSERT_TRUE(points) << "view " << i;
+    views.push_back({"circles" + std::to_string(i), *points});
+  }
+  const auto r = calibrate_camera(views, pattern, cam.size);
+  // Blob centres are centroids of the imaged ellipses, off the projected
+  // circle centres by about a hundredth of a pixel under perspective and
+  // distortion (RMS 0.007 px seen); over 210 points that
+  // leaves focal lengths within a few hundredths of a percent (0.03 % seen)
+  // and the principal point within a tenth of a pixel. Bounds: 0.2 %, 1 px,
+  // 0.05 px.
+  EXPECT_NEAR(r.intrinsics.fx, 700.0, 0.002 * 700.0);
+  EXPECT_NEAR(r.intrinsics.fy, 702.0, 0.002 * 702.0);
+  EXPECT_NEAR(r.intrinsics.cx, 405.3, 1.0);
+  EXPECT_NEAR(r.intrinsics.cy, 296.8, 1.0);
+  EXPECT_LT(r.rms_px, 0.05);
+}
+
 TEST(CalibrationBadInput, CorruptImageNamesTheFile) {
   const fs::path dir = temp_dir("corrupt");
   auto paths = left_images();
