@@ -30,9 +30,10 @@ void write(const fs::path& path, const std::vector<uint8_t>& bytes) {
             static_cast<std::streamsize>(bytes.size()));
 }
 
-// A site visit of three shots, written out of order, one with its RAW.
-fs::path site_visit() {
-  const fs::path dir = fresh_dir("visit");
+// A site visit of three shots, written out of order, one with its RAW. Each
+// test names its own folder: ctest may run them in parallel.
+fs::path site_visit(const std::string& name) {
+  const fs::path dir = fresh_dir("visit-" + name);
   for (int i : {3, 1, 2}) {
     cv::Mat img(60, 80, CV_8UC3, cv::Scalar(10 * i, 50, 90));
     std::vector<uint8_t> jpeg;
@@ -53,7 +54,7 @@ fs::path site_visit() {
 
 TEST(MockCameraReplay, ServesCapturesInOrderWithTheirExifAndRaw) {
   const fs::path spool = fresh_dir("spool");
-  auto cam = MockCamera::replay(site_visit().string(), spool.string());
+  auto cam = MockCamera::replay(site_visit("order").string(), spool.string());
   EXPECT_EQ(cam->shots_left(), 3u);
   // The first shot's settings are shown before shooting.
   EXPECT_EQ(cam->setting("iso").value, "100");
@@ -96,7 +97,7 @@ TEST(MockCameraReplay, EmptyOrMissingFolderIsBadInput) {
 }
 
 TEST(MockCameraReplay, LiveViewShowsTheNextShot) {
-  auto cam = MockCamera::replay(site_visit().string());
+  auto cam = MockCamera::replay(site_visit("live").string());
   const cv::Mat frame = cam->live_view();
   EXPECT_EQ(frame.cols, 80);
   EXPECT_NEAR(frame.at<cv::Vec3b>(30, 40)[0], 10, 3);  // DSC_0001's blue level, JPEG-rounded
