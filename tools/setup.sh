@@ -7,7 +7,7 @@ packages=(
   # toolchain
   g++ cmake ninja-build pkg-config
   # libraries (DESIGN.md: Eigen, OpenCV, libgphoto2, SQLite; header-only helpers)
-  libeigen3-dev libopencv-dev libgphoto2-dev libsqlite3-dev nlohmann-json3-dev libcli11-dev
+  libeigen3-dev libopencv-dev libgphoto2-dev libexif-dev libsqlite3-dev nlohmann-json3-dev libcli11-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
 )
