@@ -259,11 +259,22 @@ bool on_read_only_media(const fs::path& file) {
 ProjectStore ProjectStore::open(const fs::path& file, const OpenOptions& options) {
   check_header(file);
   const bool media_read_only = on_read_only_media(file);
+  // A rollback journal with content next to the file is an interrupted
+  // change of a project in rollback mode (a file not written by this store:
+  // it always uses WAL). SQLite undoes it at the first read, which needs
+  // write access; the header above already showed the file is a project, so
+  // a writable opening may do that when writing is allowed at all.
+  std::error_code ec;
+  const fs::path journal = file.string() + "-journal";
+  const bool hot_journal = fs::exists(journal, ec) && fs::file_size(journal, ec) > 0;
+  const bool recover = hot_journal && !media_read_only && !options.read_only;
   int version = 0;
   {
-    Connection probe(
-        file, media_read_only ? Connection::Access::immutable_media : Connection::Access::read_only,
-        options.vfs);
+    Connection probe(file,
+                     media_read_only ? Connection::Access::immutable_media
+                     : recover       ? Connection::Access::read_write
+                                     : Connection::Access::read_only,
+                     options.vfs);
     configure_reader(probe, options);
     IntegrityReport report;
     try {

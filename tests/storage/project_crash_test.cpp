@@ -16,6 +16,7 @@
 #include <string_view>
 #include <thread>
 
+#include "storage/project_schema.h"
 #include "storage/project_store.h"
 #include "tests/storage/sample_records.h"
 
@@ -51,46 +52,58 @@ struct Expected {
   std::size_t left, right;
 };
 
-// Forks a child that opens the project and saves `capture`. Returns the time
-// from the child's "saving now" signal to its end; kills it with SIGKILL
-// after `kill_after` when given. Returns whether the child ended by itself.
-bool run_child_save(const std::filesystem::path& file, const Capture& capture,
-                    std::optional<std::chrono::microseconds> kill_after,
-                    Clock::duration* save_time) {
-  int ready[2];
-  if (::pipe(ready) != 0) throw std::runtime_error("pipe failed");
+// Forks a child that runs `work` (which opens the project itself) and
+// writes one byte to a pipe right before the part to be interrupted
+// (`ready()`). Measures the time from that byte to the child's end into
+// `duration`; kills the child with SIGKILL `kill_after` past the byte when
+// given. Returns whether the child ended by itself.
+bool run_child(const std::function<void(const std::function<void()>& ready)>& work,
+               std::optional<std::chrono::microseconds> kill_after, Clock::duration* duration) {
+  int pipe_fds[2];
+  if (::pipe(pipe_fds) != 0) throw std::runtime_error("pipe failed");
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
-    ::close(ready[0]);
+    ::close(pipe_fds[0]);
     int code = 0;
     try {
-      auto store = ProjectStore::open(file);
-      const char go = 's';
-      if (::write(ready[1], &go, 1) != 1) ::_exit(4);
-      store.save_capture(capture);
+      work([&] {
+        const char go = 's';
+        if (::write(pipe_fds[1], &go, 1) != 1) ::_exit(4);
+      });
     } catch (...) {
       code = 3;
     }
     ::_exit(code);
   }
-  ::close(ready[1]);
+  ::close(pipe_fds[1]);
   char go = 0;
-  const bool signalled = ::read(ready[0], &go, 1) == 1;
+  const bool signalled = ::read(pipe_fds[0], &go, 1) == 1;
   const auto start = Clock::now();
-  ::close(ready[0]);
+  ::close(pipe_fds[0]);
   if (signalled && kill_after) {
     std::this_thread::sleep_for(*kill_after);
     ::kill(pid, SIGKILL);
   }
   int status = 0;
   ::waitpid(pid, &status, 0);
-  if (save_time) *save_time = Clock::now() - start;
-  if (!signalled) throw std::runtime_error("the child could not open the project");
+  if (duration) *duration = Clock::now() - start;
+  if (!signalled) throw std::runtime_error("the child failed before its critical part");
   if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
-    throw std::runtime_error("the child's save failed with code " +
-                             std::to_string(WEXITSTATUS(status)));
+    throw std::runtime_error("the child failed with code " + std::to_string(WEXITSTATUS(status)));
   return WIFEXITED(status);
+}
+
+bool run_child_save(const std::filesystem::path& file, const Capture& capture,
+                    std::optional<std::chrono::microseconds> kill_after,
+                    Clock::duration* save_time) {
+  return run_child(
+      [&](const std::function<void()>& ready) {
+        auto store = ProjectStore::open(file);
+        ready();
+        store.save_capture(capture);
+      },
+      kill_after, save_time);
 }
 
 TEST(ProjectCrash, SigkillDuringCaptureSaveLosesOnlyThatSave) {
@@ -107,9 +120,9 @@ TEST(ProjectCrash, SigkillDuringCaptureSaveLosesOnlyThatSave) {
       committed[c.label] = {digest(c.left.bytes), digest(c.right.bytes)};
     }
   }
-  // Two 2 MB images: big enough that a save (image pages, WAL append, fsync)
+  // Two 1 MB images: big enough that a save (image pages, WAL append, fsync)
   // lasts long enough to be hit at 30 distinct moments.
-  constexpr std::size_t kImageBytes = 2 << 20;
+  constexpr std::size_t kImageBytes = 1 << 20;
   auto make_capture = [&](int n) {
     Capture c;
     c.visit_id = visit;
@@ -181,6 +194,107 @@ TEST(ProjectCrash, SigkillDuringCaptureSaveLosesOnlyThatSave) {
   // nothing.
   EXPECT_GE(interrupted, 1);
 }
+
+// The upgrade of a version-1 project (one transaction that rebuilds the
+// capture table around its images) killed at moments spread over its
+// duration: afterwards the file is either still version 1 or fully version
+// 2, and opening it (upgrading if needed) gives back every image.
+class UpgradeCrash : public ::testing::TestWithParam<bool> {};
+
+TEST_P(UpgradeCrash, SigkillDuringUpgradeLeavesOldOrNewNeverHalf) {
+  // true: the version-1 file is in WAL mode, as version 1 wrote it; false:
+  // in rollback-journal mode, as a copy made by other SQLite tools may be
+  // (the kill then can leave a hot journal that opening must undo).
+  const bool wal = GetParam();
+  test::TempDir dir(wal ? "crash-upgrade-wal" : "crash-upgrade-rollback");
+  const auto original = dir / "v1.rockface";
+  constexpr int kCaptures = 3;
+  constexpr std::size_t kImageBytes = 512 << 10;
+  std::vector<std::pair<std::size_t, std::size_t>> digests;
+  {
+    sqlite::Connection db(original, sqlite::Connection::Access::read_write_create);
+    schema::create_version_1(db);
+    if (wal) db.exec("PRAGMA journal_mode = WAL", "test");
+    sqlite::WriteTransaction tx(db, "test");
+    db.exec(
+        "INSERT INTO project VALUES (1, 'old', 0, 0, 0, '', '2025-01-01T00:00:00.000Z', 'v1');"
+        "INSERT INTO visit VALUES (1, '2025-01-01T00:00:00.000Z', 'tablet', '')",
+        "test");
+    sqlite::Statement st(db,
+                         "INSERT INTO capture (visit_id, label, taken_at, created_at, "
+                         "left_format, right_format, left_image, right_image) VALUES (1, ?, '', "
+                         "'', 'jpeg', 'jpeg', ?, ?)",
+                         "test");
+    for (int i = 0; i < kCaptures; ++i) {
+      const auto left = jpeg_sized_bytes(kImageBytes, 1000 + 2 * i);
+      const auto right = jpeg_sized_bytes(kImageBytes, 1001 + 2 * i);
+      st.reset();
+      st.bind(1, "pair " + std::to_string(i)).bind_blob(2, left).bind_blob(3, right);
+      st.run();
+      digests.emplace_back(digest(left), digest(right));
+    }
+    tx.commit();
+  }
+  const auto upgrade = [&](const std::filesystem::path& file) {
+    return [file](const std::function<void()>& ready) {
+      ready();
+      ProjectStore::open(file);
+    };
+  };
+  Clock::duration full{};
+  {
+    const auto copy = dir / "timing.rockface";
+    std::filesystem::copy_file(original, copy);
+    ASSERT_TRUE(run_child(upgrade(copy), std::nullopt, &full));
+  }
+  const auto full_us = std::chrono::duration_cast<std::chrono::microseconds>(full);
+  RecordProperty("uninterrupted_upgrade_us", static_cast<int>(full_us.count()));
+
+  constexpr int kKills = 10;
+  int still_old = 0;
+  for (int k = 0; k < kKills; ++k) {
+    SCOPED_TRACE("kill " + std::to_string(k));
+    const auto file = dir / ("v1-" + std::to_string(k) + ".rockface");
+    std::filesystem::copy_file(original, file);
+    run_child(upgrade(file), std::chrono::microseconds(full_us.count() * 12 * k / (10 * kKills)),
+              nullptr);
+    // The state the kill left (file and its log or journal), twice: one copy
+    // for a raw look at its version, one that ProjectStore::open must recover
+    // by itself.
+    const auto same = dir / ("as-left-" + std::to_string(k) + ".rockface");
+    for (const char* side : {"", "-wal", "-journal"}) {
+      const std::filesystem::path from = file.string() + side;
+      if (std::filesystem::exists(from))
+        std::filesystem::copy_file(from, same.string() + side,
+                                   std::filesystem::copy_options::overwrite_existing);
+    }
+    {
+      // A plain writable SQLite opening recovers (rolls back or replays the
+      // log) exactly as SQLite would for any program; then the version says
+      // which side of the upgrade's commit the kill fell on.
+      sqlite::Connection raw(file, sqlite::Connection::Access::read_write);
+      const int version = schema::version_of(raw);
+      EXPECT_TRUE(version == 1 || version == schema::kCurrentVersion) << version;
+      if (version == 1) ++still_old;
+    }
+    auto store = ProjectStore::open(same);
+    EXPECT_EQ(store.schema_version(), schema::kCurrentVersion);
+    ASSERT_TRUE(store.check_integrity(OpenOptions::Check::full).ok);
+    const auto captures = store.list_captures();
+    ASSERT_EQ(captures.size(), static_cast<std::size_t>(kCaptures));
+    for (int i = 0; i < kCaptures; ++i) {
+      const Capture c = store.load_capture(captures[static_cast<std::size_t>(i)].id);
+      EXPECT_EQ(digest(c.left.bytes), digests[static_cast<std::size_t>(i)].first);
+      EXPECT_EQ(digest(c.right.bytes), digests[static_cast<std::size_t>(i)].second);
+    }
+    std::filesystem::remove(file);
+  }
+  RecordProperty("kills_before_upgrade_commit", still_old);
+  EXPECT_GE(still_old, 1) << "no kill interrupted the upgrade";
+}
+
+INSTANTIATE_TEST_SUITE_P(JournalModes, UpgradeCrash, ::testing::Values(true, false),
+                         [](const auto& info) { return info.param ? "wal" : "rollback"; });
 
 }  // namespace
 }  // namespace rockface::storage
