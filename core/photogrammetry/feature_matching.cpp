@@ -1,0 +1,87 @@
+#include "core/photogrammetry/feature_matching.h"
+
+#include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+
+#include "core/common/error.h"
+
+namespace rockface::photogrammetry {
+
+cv::Mat to_grey(const cv::Mat& image) {
+  if (image.empty()) throw InputError("image", "empty image");
+  if (image.depth() != CV_8U) throw InputError("image", "expected 8-bit pixels");
+  cv::Mat grey;
+  if (image.channels() == 1)
+    grey = image;
+  else if (image.channels() == 3)
+    cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+  else if (image.channels() == 4)
+    cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
+  else
+    throw InputError("image", "expected 1, 3 or 4 channels");
+  return grey;
+}
+
+namespace {
+
+struct Detected {
+  std::vector<cv::KeyPoint> keypoints;
+  cv::Mat descriptors;
+};
+
+Detected detect(const cv::Mat& image, double scale, const ReconstructionPreset& preset) {
+  cv::Mat grey = to_grey(image);
+  if (scale != 1.0) cv::resize(grey, grey, cv::Size(), scale, scale, cv::INTER_AREA);
+  Detected d;
+  auto sift = cv::SIFT::create(preset.max_features, 3, preset.sift_contrast);
+  sift->detectAndCompute(grey, cv::noArray(), d.keypoints, d.descriptors);
+  return d;
+}
+
+// For each query descriptor: index of its best match that passes the ratio test, or -1.
+std::vector<int> ratio_matches(const cv::Mat& query, const cv::Mat& train, double ratio) {
+  std::vector<int> best(query.rows, -1);
+  if (query.rows == 0 || train.rows < 2) return best;
+  cv::BFMatcher matcher(cv::NORM_L2);
+  std::vector<std::vector<cv::DMatch>> knn;
+  matcher.knnMatch(query, train, knn, 2);
+  for (const auto& m : knn)
+    if (m.size() == 2 && m[0].distance < ratio * m[1].distance) best[m[0].queryIdx] = m[0].trainIdx;
+  return best;
+}
+
+}  // namespace
+
+FeatureMatches match_features(const cv::Mat& left, const cv::Mat& right,
+                              const ReconstructionPreset& preset, Progress& progress) {
+  progress.step("features: left image", 0.0);
+  const double scale = working_scale(std::max(left.cols, right.cols), preset.feature_max_width);
+  const Detected l = detect(left, scale, preset);
+  progress.step("features: right image", 0.3);
+  const Detected r = detect(right, scale, preset);
+  progress.step("features: matching", 0.6);
+  const std::vector<int> lr = ratio_matches(l.descriptors, r.descriptors, preset.ratio_test);
+  progress.step("features: mutual check", 0.9);
+  const std::vector<int> rl = ratio_matches(r.descriptors, l.descriptors, preset.ratio_test);
+
+  FeatureMatches out;
+  out.keypoints_left = static_cast<int>(l.keypoints.size());
+  out.keypoints_right = static_cast<int>(r.keypoints.size());
+  const double inv = 1.0 / scale;
+  // Pixel centres map as (x + 0.5) / s - 0.5 between scales (OpenCV's resize convention).
+  auto full = [inv](const cv::Point2f& p) {
+    return Eigen::Vector2d((p.x + 0.5) * inv - 0.5, (p.y + 0.5) * inv - 0.5);
+  };
+  for (std::size_t i = 0; i < lr.size(); ++i) {
+    const int j = lr[i];
+    if (j < 0 || rl[j] != static_cast<int>(i)) continue;  // mutual check
+    out.left.push_back(full(l.keypoints[i].pt));
+    out.right.push_back(full(r.keypoints[j].pt));
+  }
+  progress.step("features", 1.0);
+  return out;
+}
+
+}  // namespace rockface::photogrammetry

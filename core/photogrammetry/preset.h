@@ -1,0 +1,58 @@
+#pragma once
+// The knobs of two-view reconstruction that trade accuracy for time, bundled
+// into the named presets fast | standard | precise (DESIGN.md "Accuracy costs
+// time"). tools/bench/reconstruct_bench.cpp measures each of them.
+#include <string>
+#include <string_view>
+
+namespace rockface::photogrammetry {
+
+struct ReconstructionPreset {
+  std::string name;
+
+  // Features and relative orientation.
+  // Images wider than this are reduced (INTER_AREA) before SIFT; a 24 Mpx
+  // frame (6000 px) is thus matched at 2400 px. 0 = never reduce.
+  int feature_max_width = 2400;
+  int max_features = 8000;  // SIFT keypoints kept per image (strongest)
+  double ratio_test = 0.8;  // Lowe's ratio: best / second-best distance
+  double sift_contrast =
+      0.02;  // SIFT contrast threshold (OpenCV default 0.04): rock in shade is dull
+  double ransac_threshold_px = 1.0;  // MAGSAC++ inlier scale at full resolution
+  int refine_iterations = 100;       // Levenberg-Marquardt iterations, relative orientation
+
+  // Dense matching.
+  // Dense matching works on images reduced to at most this width: the image
+  // scale knob. It bounds time and memory (SGBM cost volume ~ width x disparities).
+  int dense_max_width = 1600;
+  int max_disparities = 256;       // upper bound of the search range (pixels at dense scale)
+  double disparity_margin = 0.15;  // widening of the sparse disparity range, fraction of it
+  int sgbm_block_size = 5;         // odd; matching window
+  int sgbm_p1_per_channel = 8;     // P1 = this * channels * block^2 (OpenCV's advice)
+  int sgbm_p2_per_channel = 32;    // P2 = this * channels * block^2
+  int uniqueness_ratio = 10;       // percent
+  int lr_max_difference_px = 1;    // left-right consistency, pixels at dense scale
+  int speckle_window = 100;        // connected region below this many pixels is removed
+  double speckle_range_px = 2.0;   // disparity jump that separates speckle regions
+  bool sgbm_three_way = true;      // MODE_SGBM_3WAY (faster, same memory) vs MODE_SGBM
+
+  // Expected disparity precision after sub-pixel interpolation (pixels at the
+  // dense scale), used for the predicted depth precision sigma_Z.
+  double disparity_sigma_px = 0.3;
+
+  // Mesh: one lattice vertex every `lattice_step` dense-scale pixels.
+  int lattice_step = 1;
+};
+
+// The scale (<= 1) at which an image `width` px wide is processed when at
+// most `max_width` px are wanted (0 = full size).
+double working_scale(int width, int max_width);
+
+ReconstructionPreset preset_fast();
+ReconstructionPreset preset_standard();
+ReconstructionPreset preset_precise();
+
+// Throws rockface::InputError naming `where` for an unknown name.
+ReconstructionPreset preset_by_name(std::string_view name, const std::string& where = "--preset");
+
+}  // namespace rockface::photogrammetry

@@ -1,0 +1,20 @@
+#pragma once
+// The reconstruction report (`rockface reconstruct --report`), format
+// rockface-reconstruction/1: what was reconstructed, how it was oriented and
+// registered, and how accurate it is predicted and measured to be.
+#include <string>
+
+#include "core/photogrammetry/reconstruction.h"
+
+namespace rockface::storage {
+
+struct ReconstructionReportContext {
+  std::string left_image, right_image, preset;
+  std::optional<double> range_pole_m, baseline_m;
+  std::optional<photogrammetry::NorthReference> north;
+};
+
+std::string reconstruction_report_json(const photogrammetry::ReconstructionResult& result,
+                                       const ReconstructionReportContext& context);
+
+}  // namespace rockface::storage

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# COLMAP's sparse two-view reconstruction (CPU) on the Middlebury temple
+# pairs that tests/realdata uses, for the table in docs/accuracy-cost.md:
+# wall time and rotation / base-direction error of the relative orientation
+# against templeSR_par.txt. COLMAP is not a build or test dependency: without
+# it this script says so and exits 0.
+#   tools/bench/colmap_compare.sh [PAIR ...]     e.g. 1-2 9-10 (default: 1-2 3-4 7-8 9-10)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+if ! command -v colmap >/dev/null; then
+  echo "colmap not installed (apt-get install colmap); nothing to compare"
+  exit 0
+fi
+data="${ROCKFACE_SHARED_DIR:-$(pwd)/../shared}/data/middlebury-temple"
+pairs=("$@")
+[ ${#pairs[@]} -eq 0 ] && pairs=(1-2 3-4 7-8 9-10)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+# The temple's intrinsics (all views share K).
+read -r fx cx fy cy < <(awk 'NR==2 {print $2, $4, $6, $7}' "$data/templeSR_par.txt")
+printf "%-6s %8s %14s %16s %8s\n" pair time_s rotation_deg base_dir_deg images
+for p in "${pairs[@]}"; do
+  a=$(printf "templeSR%04d.png" "${p%-*}"); b=$(printf "templeSR%04d.png" "${p#*-}")
+  d="$work/$p"; mkdir -p "$d/images" "$d/sparse"
+  cp "$data/$a" "$data/$b" "$d/images/"
+  start=$(date +%s.%N)
+  colmap feature_extractor --database_path "$d/db" --image_path "$d/images" \
+    --ImageReader.camera_model PINHOLE --ImageReader.single_camera 1 \
+    --ImageReader.camera_params "$fx,$fy,$cx,$cy" --SiftExtraction.use_gpu 0 >"$d/log" 2>&1
+  colmap exhaustive_matcher --database_path "$d/db" --SiftMatching.use_gpu 0 >>"$d/log" 2>&1
+  colmap mapper --database_path "$d/db" --image_path "$d/images" --output_path "$d/sparse" \
+    --Mapper.init_min_num_inliers 30 --Mapper.ba_refine_focal_length 0 \
+    --Mapper.ba_refine_principal_point 0 --Mapper.ba_refine_extra_params 0 >>"$d/log" 2>&1 || true
+  end=$(date +%s.%N)
+  if [ ! -d "$d/sparse/0" ]; then
+    printf "%-6s %8.2f %14s %16s %8s\n" "$p" "$(echo "$end - $start" | bc)" failed - 0
+    continue
+  fi
+  colmap model_converter --input_path "$d/sparse/0" --output_path "$d/sparse" --output_type TXT >>"$d/log" 2>&1
+  python3 - "$d/sparse/images.txt" "$data/templeSR_par.txt" "$a" "$b" "$(echo "$end - $start" | bc)" "$p" <<'PY'
+import sys, math
+images, par, a, b, secs, pair = sys.argv[1:]
+def quat_to_R(w, x, y, z):
+    return [[1-2*(y*y+z*z), 2*(x*y-w*z), 2*(x*z+w*y)],
+            [2*(x*y+w*z), 1-2*(x*x+z*z), 2*(y*z-w*x)],
+            [2*(x*z-w*y), 2*(y*z+w*x), 1-2*(x*x+y*y)]]
+def mul(A, B): return [[sum(A[i][k]*B[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+def T(A): return [list(r) for r in zip(*A)]
+def mv(A, v): return [sum(A[i][k]*v[k] for k in range(3)) for i in range(3)]
+def sub(u, v): return [u[i]-v[i] for i in range(3)]
+def norm(v): return math.sqrt(sum(x*x for x in v))
+def angle(u, v): return math.degrees(math.acos(max(-1, min(1, sum(x*y for x, y in zip(u, v))/(norm(u)*norm(v))))))
+def rot_angle(R): return math.degrees(math.acos(max(-1, min(1, (R[0][0]+R[1][1]+R[2][2]-1)/2))))
+est = {}
+lines = [l for l in open(images) if not l.startswith('#')]
+for l in lines[0::2]:
+    f = l.split()
+    if len(f) >= 10:
+        est[f[9]] = (quat_to_R(*map(float, f[1:5])), list(map(float, f[5:8])))
+truth = {}
+for l in open(par).readlines()[1:]:
+    f = l.split()
+    v = list(map(float, f[1:]))
+    truth[f[0]] = ([v[9:12], v[12:15], v[15:18]], v[18:21])
+def relative(P, Q):
+    R = mul(Q[0], T(P[0]))
+    return R, sub(Q[1], mv(R, P[1]))
+if a not in est or b not in est:
+    print(f"{pair:6s} {float(secs):8.2f} {'not registered':>14s} {'-':>16s} {len(est):8d}")
+    sys.exit(0)
+Re, te = relative(est[a], est[b])
+Rt, tt = relative(truth[a], truth[b])
+print(f"{pair:6s} {float(secs):8.2f} {rot_angle(mul(T(Re), Rt)):14.4f} {angle(te, tt):16.4f} {len(est):8d}")
+PY
+done
