@@ -24,7 +24,7 @@ namespace rp = rockface::photogrammetry;
 
 namespace {
 
-struct Run {
+struct VerbRun {
   int code = -1;
   std::string out, err;
 };
@@ -51,8 +51,8 @@ class ReconstructVerb : public ::testing::Test {
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
-  static Run rockface(const std::string& args) {
-    Run r;
+  static VerbRun rockface(const std::string& args) {
+    VerbRun r;
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
     const std::string cmd = std::string(ROCKFACE_BINARY_DIR) + "/rockface reconstruct " + args +
                             " >" + out.string() + " 2>" + err.string();
@@ -89,7 +89,7 @@ TEST_F(ReconstructVerb, RangePoleAndCompassGiveAScaledNorthOrientedModel) {
   args << pair() << " --preset fast --range-pole 2.0 --azimuth " << bearing - 3.0
        << " --declination 3.0 --reference-line " << a.x() << "," << a.y() << "," << b.x() << ","
        << b.y() << " --out " << path("model.ply") << " --report " << path("report.json");
-  const Run r = rockface(args.str());
+  const VerbRun r = rockface(args.str());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("scale: range pole, vertical: range pole, north: compass"),
             std::string::npos)
@@ -143,8 +143,8 @@ TEST_F(ReconstructVerb, ControlPointsGiveResidualsAndTheWorstPoint) {
         << (w + utm).y() << "," << (w + utm).z() << "\n";
   }
   csv.close();
-  const Run r = rockface(pair() + " --preset fast --gcp " + path("gcp.csv") + " --out " +
-                         path("gcp.obj") + " --report " + path("gcp.json"));
+  const VerbRun r = rockface(pair() + " --preset fast --gcp " + path("gcp.csv") + " --out " +
+                             path("gcp.obj") + " --report " + path("gcp.json"));
   ASSERT_EQ(r.code, 0) << r.err;
   const auto report = nlohmann::json::parse(slurp(path("gcp.json")));
   const auto& cp = report["registration"]["control_points"];
@@ -164,8 +164,8 @@ TEST_F(ReconstructVerb, ControlPointsGiveResidualsAndTheWorstPoint) {
 }
 
 TEST_F(ReconstructVerb, BadInputExitsWithTwoAndNamesTheCulprit) {
-  Run r = rockface(path("nope.png") + " " + path("right.png") + " --camera " + path("camera.json") +
-                   " --out " + path("m.ply"));
+  VerbRun r = rockface(path("nope.png") + " " + path("right.png") + " --camera " +
+                       path("camera.json") + " --out " + path("m.ply"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("nope.png: no such file"), std::string::npos) << r.err;
 
@@ -212,7 +212,7 @@ TEST_F(ReconstructVerb, MissingTargetsAreNamed) {
   const auto render = rockface::camera::render_scene(scene, progress);
   cv::imwrite(path("left-nopole.png"), render.images[0]);
   cv::imwrite(path("right-nopole.png"), render.images[1]);
-  const Run r =
+  const VerbRun r =
       rockface(path("left-nopole.png") + " " + path("right-nopole.png") + " --camera " +
                path("camera.json") + " --preset fast --range-pole 2 --out " + path("nopole.ply"));
   EXPECT_EQ(r.code, 2);
@@ -222,7 +222,7 @@ TEST_F(ReconstructVerb, MissingTargetsAreNamed) {
 }
 
 TEST_F(ReconstructVerb, HelpDescribesTheOptions) {
-  const Run r = rockface("--help");
+  const VerbRun r = rockface("--help");
   EXPECT_EQ(r.code, 0);
   for (const char* option :
        {"--camera", "--right-camera", "--preset", "--range-pole", "--azimuth", "--reference-line",
