@@ -409,6 +409,38 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
   return view;
 }
 
+std::vector<TraceSegment> true_trace_segments(const SyntheticScene& scene) {
+  std::vector<TraceSegment> segments;
+  for (const auto& joint : scene.joints) {
+    const Vector3d nj = joint.normal.normalized();
+    for (const auto& patch : scene.patches) {
+      const auto& poly = patch.polygon;
+      if (poly.size() < 3) continue;
+      Vector3d normal = Vector3d::Zero();
+      for (size_t i = 0; i < poly.size(); ++i) normal += poly[i].cross(poly[(i + 1) % poly.size()]);
+      const Vector3d direction = normal.normalized().cross(nj);
+      if (direction.norm() < 1e-6) continue;  // joint parallel to the patch: no trace line
+      // Crossings of the joint plane with the polygon's edges, ordered along
+      // the trace line and paired inside / outside (even-odd rule).
+      std::vector<std::pair<double, Vector3d>> crossings;
+      for (size_t i = 0; i < poly.size(); ++i) {
+        const Vector3d& a = poly[i];
+        const Vector3d& b = poly[(i + 1) % poly.size()];
+        const double da = nj.dot(a - joint.point), db = nj.dot(b - joint.point);
+        // Half-open test so a vertex on the plane is counted once.
+        if ((da < 0) == (db < 0)) continue;
+        const Vector3d x = a + (b - a) * (da / (da - db));
+        crossings.emplace_back(direction.dot(x), x);
+      }
+      std::sort(crossings.begin(), crossings.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (size_t i = 0; i + 1 < crossings.size(); i += 2)
+        segments.push_back({joint.id, patch.id, {crossings[i].second, crossings[i + 1].second}});
+    }
+  }
+  return segments;
+}
+
 SyntheticRender render_scene(const SyntheticScene& scene, Progress& progress) {
   SyntheticRender r;
   r.intrinsics = rendered_intrinsics(scene);
@@ -442,47 +474,24 @@ SyntheticRender render_scene(const SyntheticScene& scene, Progress& progress) {
     r.reference_line_left = std::array<Vector2d, 2>{ends[0], ends[1]};
   }
 
-  for (const auto& joint : scene.joints) {
-    const Vector3d nj = joint.normal.normalized();
-    for (size_t k = 0; k < scene.patches.size(); ++k) {
-      const auto& poly = scene.patches[k].polygon;
-      const PreparedPatch& patch = prepared.patches[k];
-      const Vector3d direction = patch.normal.cross(nj);
-      if (direction.norm() < 1e-6) continue;
-      // Crossings of the joint plane with the polygon's edges, ordered along
-      // the trace line and paired inside / outside (even-odd rule).
-      std::vector<std::pair<double, Vector3d>> crossings;
-      for (size_t i = 0; i < poly.size(); ++i) {
-        const Vector3d& a = poly[i];
-        const Vector3d& b = poly[(i + 1) % poly.size()];
-        const double da = nj.dot(a - joint.point), db = nj.dot(b - joint.point);
-        // Half-open test so a vertex on the plane is counted once.
-        if ((da < 0) == (db < 0)) continue;
-        const Vector3d x = a + (b - a) * (da / (da - db));
-        crossings.emplace_back(direction.dot(x), x);
-      }
-      std::sort(crossings.begin(), crossings.end(),
-                [](const auto& a, const auto& b) { return a.first < b.first; });
-      for (size_t i = 0; i + 1 < crossings.size(); i += 2) {
-        TraceTruth trace;
-        trace.joint = joint.id;
-        trace.patch = scene.patches[k].id;
-        trace.world = {crossings[i].second, crossings[i + 1].second};
-        // Sampled about every 4 px so the distorted image curve is followed.
-        const Vector3d c0 = r.poses[0].to_camera(trace.world[0]);
-        const Vector3d c1 = r.poses[0].to_camera(trace.world[1]);
-        const double zmin = std::max(std::min(c0.z(), c1.z()), 1e-3);
-        const double length_px = (trace.world[1] - trace.world[0]).norm() * r.intrinsics.fx / zmin;
-        const int n = std::clamp(static_cast<int>(length_px / 4.0) + 2, 2, 4000);
-        std::vector<Vector3d> samples;
-        for (int j = 0; j < n; ++j) {
-          const Vector3d x = trace.world[0] + (trace.world[1] - trace.world[0]) * (j / (n - 1.0));
-          if (r.poses[0].to_camera(x).z() > 1e-3) samples.push_back(x);
-        }
-        trace.left_image = project(samples, r.poses[0], r.intrinsics);
-        r.traces.push_back(std::move(trace));
-      }
+  for (const TraceSegment& segment : true_trace_segments(scene)) {
+    TraceTruth trace;
+    trace.joint = segment.joint;
+    trace.patch = segment.patch;
+    trace.world = segment.world;
+    // Sampled about every 4 px so the distorted image curve is followed.
+    const Vector3d c0 = r.poses[0].to_camera(trace.world[0]);
+    const Vector3d c1 = r.poses[0].to_camera(trace.world[1]);
+    const double zmin = std::max(std::min(c0.z(), c1.z()), 1e-3);
+    const double length_px = (trace.world[1] - trace.world[0]).norm() * r.intrinsics.fx / zmin;
+    const int n = std::clamp(static_cast<int>(length_px / 4.0) + 2, 2, 4000);
+    std::vector<Vector3d> samples;
+    for (int j = 0; j < n; ++j) {
+      const Vector3d x = trace.world[0] + (trace.world[1] - trace.world[0]) * (j / (n - 1.0));
+      if (r.poses[0].to_camera(x).z() > 1e-3) samples.push_back(x);
     }
+    trace.left_image = project(samples, r.poses[0], r.intrinsics);
+    r.traces.push_back(std::move(trace));
   }
   return r;
 }

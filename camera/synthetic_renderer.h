@@ -72,6 +72,14 @@ struct TraceTruth {
                                             // not clipped to the image, not occlusion-culled
 };
 
+// Where each joint (with a point) cuts each surface patch: the true traces,
+// as straight world segments (datum-relative like the scene).
+struct TraceSegment {
+  std::string joint, patch;
+  std::array<Eigen::Vector3d, 2> world;
+};
+std::vector<TraceSegment> true_trace_segments(const SyntheticScene& scene);
+
 struct SyntheticRender {
   std::array<cv::Mat, 2> images;  // left, right; CV_8UC3
   cv::Mat depth_left;             // CV_32F, metres along the optical axis, 0 = nothing hit

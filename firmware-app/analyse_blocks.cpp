@@ -16,6 +16,7 @@
 #include "core/kinematics/effect_gravity.h"
 #include "core/kinematics/effect_seismic.h"
 #include "core/kinematics/effect_water.h"
+#include "firmware-app/block_report.h"
 #include "firmware-app/scene_analysis.h"
 
 namespace rockface::app {
@@ -218,26 +219,8 @@ void analyse_scene_blocks(const storage::Scene& scene, storage::Report& report,
     const kinematics::BlockAnalysis a = kinematics::analyse_block(*poly, in);
 
     rb.convex = blocks::is_convex(*poly);
-    for (int v = 0; v < static_cast<int>(poly->vertices().size()); ++v)
-      rb.vertices.push_back(poly->absolute_vertex(v));
-    rb.volume = a.mass.volume;
-    rb.mass = a.mass.mass;
-    rb.centroid = a.mass.centroid + poly->datum();
-    rb.inertia = a.mass.inertia;
-    rb.principal_moments = a.mass.principal_moments;
-    for (int p = 0; p < static_cast<int>(poly->planes().size()); ++p)
-      rb.face_areas[poly->planes()[p].name] += a.mass.plane_areas[p];
     fill_verdicts(a.finiteness, rb);
-    if (a.mode) {
-      storage::ReportMode m;
-      m.type = kinematics::mode_name(a.mode->type);
-      for (int p : a.mode->planes) m.planes.push_back(poly->planes()[p].name);
-      if (a.mode->type != kinematics::ModeType::None) m.direction = a.mode->direction;
-      m.marginal = a.mode->marginal;
-      rb.mode = m;
-      rb.fos = a.fos;
-    }
-    rb.notes.insert(rb.notes.end(), a.notes.begin(), a.notes.end());
+    fill_block_report(*poly, a, scene.analysis, rb);
     report.blocks.push_back(std::move(rb));
   }
 }

@@ -19,6 +19,7 @@
 #include "core/kinematics/effect_gravity.h"
 #include "core/kinematics/effect_seismic.h"
 #include "core/kinematics/effect_water.h"
+#include "firmware-app/block_report.h"
 #include "firmware-app/scene_analysis.h"
 
 namespace rockface::app {
@@ -96,27 +97,7 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const storage::Sce
   rb.margin_deg = rad_to_deg(b.finite ? f.removable.margin : f.finite.margin);
   rb.marginal = f.removable.marginal || f.finite.marginal;
   if (b.polyhedron && b.analysis) {
-    const blocks::Polyhedron& poly = *b.polyhedron;
-    const kinematics::BlockAnalysis& a = *b.analysis;
-    for (int v = 0; v < static_cast<int>(poly.vertices().size()); ++v)
-      rb.vertices.push_back(poly.absolute_vertex(v));
-    rb.volume = a.mass.volume;
-    rb.mass = a.mass.mass;
-    rb.centroid = a.mass.centroid + poly.datum();
-    rb.inertia = a.mass.inertia;
-    rb.principal_moments = a.mass.principal_moments;
-    for (int p = 0; p < static_cast<int>(poly.planes().size()); ++p)
-      rb.face_areas[poly.planes()[p].name] += a.mass.plane_areas[p];
-    if (a.mode) {
-      storage::ReportMode m;
-      m.type = kinematics::mode_name(a.mode->type);
-      for (int p : a.mode->planes) m.planes.push_back(poly.planes()[p].name);
-      if (a.mode->type != kinematics::ModeType::None) m.direction = a.mode->direction;
-      m.marginal = a.mode->marginal;
-      rb.mode = m;
-      rb.fos = a.fos;
-    }
-    rb.notes.insert(rb.notes.end(), a.notes.begin(), a.notes.end());
+    fill_block_report(*b.polyhedron, *b.analysis, scene.analysis, rb);
   } else {
     // An infinite block has no corners: its loop on the surface is what is known.
     for (const auto& x : b.surface_polygon) rb.vertices.push_back(x + datum);

@@ -344,6 +344,7 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
     // --- Geometry and verdicts.
     std::vector<blocks::Polyhedron> cells;
     bool unbounded = false;
+    bool geometry_failed = false;
     const std::string id = "loop " + std::to_string(r);
     for (size_t k = 0; k < pieces.size() && !unbounded; ++k) {
       std::vector<blocks::HalfSpaceInput> hs;
@@ -355,7 +356,18 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
             .push_back(bp.plane.inward_normal(pieces[k].sides[j]));
       }
       std::optional<blocks::ConvexConstruction> cc;
-      if (hs.size() >= 4) cc = blocks::build_convex_block(id, hs, options.datum);
+      try {
+        if (hs.size() >= 4) cc = blocks::build_convex_block(id, hs, options.datum);
+      } catch (const Error& e) {
+        // One loop whose geometry cannot be assembled must not stop the map:
+        // its finiteness still follows from the cones alone, and the note
+        // says what is missing.
+        geometry_failed = true;
+        block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
+        block.finite = block.finiteness.finite.value;
+        block.notes.push_back(std::string("block geometry not assembled: ") + e.what());
+        break;
+      }
       if (!cc || cc->outcome == blocks::ConvexOutcome::Unbounded) {
         unbounded = true;
         block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
@@ -374,6 +386,10 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
           for (int j : cc->redundant) block.codes[0][j] = '2';
         cells.push_back(std::move(*cc->polyhedron));
       }
+    }
+    if (geometry_failed) {
+      out.push_back(std::move(block));
+      continue;
     }
     if (!unbounded && !cells.empty()) {
       try {

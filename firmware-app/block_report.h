@@ -1,0 +1,15 @@
+#pragma once
+// The report entry of one analysed block, the same for explicit scene blocks
+// and blocks found from traces: corners, mass properties, face areas, mode,
+// factor of safety, notes, and — for finite blocks — rotatability.
+#include "core/blocks/polyhedron.h"
+#include "core/kinematics/block_analysis.h"
+#include "storage/report.h"
+#include "storage/scene.h"
+
+namespace rockface::app {
+
+void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAnalysis& analysis,
+                       const storage::SceneAnalysis& options, storage::ReportBlock& rb);
+
+}  // namespace rockface::app

@@ -1,0 +1,270 @@
+#include "firmware-app/field_replay.h"
+
+#include <filesystem>
+#include <sstream>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "camera/capture_guidance.h"
+#include "camera/mock_camera.h"
+#include "camera/synthetic_renderer.h"
+#include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/photogrammetry/preset.h"
+#include "core/photogrammetry/reconstruction.h"
+#include "firmware-app/scene_analysis.h"
+#include "firmware-app/synthetic_scene_from_scene.h"
+#include "storage/camera_json.h"
+#include "storage/project_store.h"
+#include "storage/scene.h"
+
+namespace rockface::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+cv::Mat decode(const camera::CapturedFile& file, const std::string& label) {
+  cv::Mat image;
+  try {
+    image = cv::imdecode(file.data, cv::IMREAD_COLOR);
+  } catch (const cv::Exception&) {
+  }
+  if (image.empty())
+    throw InputError(file.saved_path.empty() ? file.camera_path : file.saved_path,
+                     label + " image cannot be decoded (corrupt or not an image)");
+  return image;
+}
+
+std::map<std::string, std::string> exif_map(const camera::ExifInfo& e) {
+  std::map<std::string, std::string> m;
+  auto put = [&](const char* k, const auto& v) {
+    if (v) {
+      std::ostringstream s;
+      s << *v;
+      m[k] = s.str();
+    }
+  };
+  if (!e.make.empty()) m["make"] = e.make;
+  if (!e.model.empty()) m["model"] = e.model;
+  if (!e.lens.empty()) m["lens"] = e.lens;
+  if (!e.datetime.empty()) m["datetime"] = e.datetime;
+  put("focal_length_mm", e.focal_length_mm);
+  put("f_number", e.f_number);
+  put("exposure_time_s", e.exposure_time_s);
+  put("iso", e.iso);
+  put("flash_fired", e.flash_fired);
+  put("focus_distance_m", e.focus_distance_m);
+  return m;
+}
+
+storage::Mesh project_mesh(const photogrammetry::SurfaceMesh& m) {
+  storage::Mesh out;
+  out.vertices = m.vertices;
+  out.faces.reserve(m.triangles.size());
+  for (const auto& t : m.triangles) out.faces.push_back({t[0], t[1], t[2]});
+  out.texcoords.reserve(m.texcoords.size());
+  for (const auto& t : m.texcoords) out.texcoords.push_back({t.x(), t.y()});
+  out.colours = m.colours;
+  return out;
+}
+
+// Compass bearing (degrees clockwise from north) of the horizontal
+// projection of a line, and its end points in the left image.
+std::optional<photogrammetry::NorthReference> compass_reading(
+    const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k) {
+  if (!scene.reference_line) return std::nullopt;
+  const auto& [from, to] = *scene.reference_line;
+  const photogrammetry::CameraPose pose =
+      camera::station_pose(scene.stations[0], "imaging.stations[0]");
+  std::vector<cv::Point3d> world{{from.x(), from.y(), from.z()}, {to.x(), to.y(), to.z()}};
+  cv::Mat R(3, 3, CV_64F), rvec, tvec;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) R.at<double>(i, j) = pose.R(i, j);
+  cv::Rodrigues(R, rvec);
+  const Eigen::Vector3d t = pose.translation();
+  tvec = (cv::Mat_<double>(3, 1) << t.x(), t.y(), t.z());
+  const cv::Mat K = (cv::Mat_<double>(3, 3) << k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1);
+  const cv::Mat dist(1, 5, CV_64F, const_cast<double*>(k.distortion.data()));
+  std::vector<cv::Point2d> px;
+  cv::projectPoints(world, rvec, tvec, K, dist, px);
+  photogrammetry::NorthReference north;
+  north.from_px = {px[0].x, px[0].y};
+  north.to_px = {px[1].x, px[1].y};
+  north.azimuth_deg = rad_to_deg(std::atan2(to.x() - from.x(), to.y() - from.y()));
+  if (north.azimuth_deg < 0) north.azimuth_deg += 360;
+  return north;
+}
+
+}  // namespace
+
+ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& progress) {
+  ReplayOutcome out;
+  const bool from_scene = fs::is_regular_file(request.source);
+  if (!from_scene && !fs::is_directory(request.source))
+    throw InputError(request.source, "neither a scene file nor a folder of captures");
+
+  std::optional<storage::Scene> scene;
+  std::optional<SyntheticSceneInput> synthetic;
+  std::unique_ptr<camera::MockCamera> cam;
+  photogrammetry::CameraIntrinsics intrinsics;
+  photogrammetry::RegistrationSources sources;
+  const fs::path spool = fs::path(request.project).parent_path() /
+                         (fs::path(request.project).filename().string() + ".spool");
+  if (from_scene) {
+    scene = storage::load_scene(request.source);
+    synthetic = synthetic_scene_from_scene(*scene);
+    cam = camera::MockCamera::synthetic(synthetic->scene, spool.string());
+    intrinsics = camera::rendered_intrinsics(synthetic->scene);
+    intrinsics.body = "rockface synthetic camera";
+    if (synthetic->scene.range_pole) sources.range_pole_m = synthetic->scene.range_pole->length;
+    sources.north = compass_reading(synthetic->scene, intrinsics);
+  } else {
+    const fs::path cam_file = fs::path(request.source) / "camera.json";
+    if (!fs::exists(cam_file))
+      throw InputError(cam_file.string(),
+                       "a capture folder needs the calibration of its camera (camera.json)");
+    intrinsics = storage::load_camera_json(cam_file.string());
+    cam = camera::MockCamera::replay(request.source, spool.string());
+  }
+  const std::string preset_name = !request.preset.empty()
+                                      ? request.preset
+                                      : (scene ? scene->analysis.preset : std::string("standard"));
+  const photogrammetry::ReconstructionPreset preset =
+      photogrammetry::preset_by_name(preset_name, "--preset");
+
+  // Capture the pair: focus locked after the first shot, optics checked.
+  progress.step("capture", 0.0);
+  cam->lock_focus();
+  const camera::Capture left = cam->capture();
+  const camera::Capture right = cam->capture();
+  camera::require_same_optics(left.exif, right.exif);
+  for (const auto& note : camera::check_pair(left.exif, right.exif))
+    out.guidance.push_back(note.text);
+
+  storage::ProjectInfo info;
+  info.name =
+      scene && !scene->name.empty() ? scene->name : fs::path(request.source).filename().string();
+  if (scene) info.datum = scene->datum;
+  storage::ProjectStore store = storage::ProjectStore::open_or_create(request.project, info);
+  if (store.read_only())
+    throw InputError(request.project, "cannot replay into it: " + store.read_only_reason());
+  out.visit_id = store.begin_visit("replay " + request.source);
+
+  storage::CameraBody body;
+  body.make = left.exif.make.empty() ? "unknown" : left.exif.make;
+  body.model = left.exif.model.empty() ? cam->model() : left.exif.model;
+  storage::Calibration calibration;
+  calibration.body_id = store.save_camera_body(body);
+  calibration.intrinsics = intrinsics;
+  calibration.focal_setting_mm = left.exif.focal_length_mm.value_or(0);
+  calibration.method =
+      from_scene ? "synthetic (rendering camera)" : "camera.json of " + request.source;
+  const storage::RecordId calibration_id = store.save_calibration(calibration);
+
+  storage::Capture capture;
+  capture.visit_id = out.visit_id;
+  capture.calibration_id = calibration_id;
+  capture.label = "replay pair";
+  capture.left.bytes = left.image.data;
+  capture.right.bytes = right.image.data;
+  capture.left_exif = exif_map(left.exif);
+  capture.right_exif = exif_map(right.exif);
+  capture.settings["preset"] = preset_name;
+  out.capture_id = store.save_capture(capture);
+
+  // Reconstruct and register.
+  const cv::Mat left_image = decode(left.image, "left");
+  const cv::Mat right_image = decode(right.image, "right");
+  const photogrammetry::ReconstructionResult rec = photogrammetry::reconstruct(
+      left_image, right_image, intrinsics, intrinsics, preset, sources, progress);
+  storage::Model model;
+  model.capture_id = out.capture_id;
+  model.preset = preset_name;
+  model.mesh = project_mesh(rec.mesh);
+  model.texture_capture_id = out.capture_id;
+  model.texture_side = "left";
+  model.registration.kind =
+      rec.scale_source == "range pole" ? "range_pole_compass" : rec.scale_source;
+  model.registration.scale = rec.model_to_world.scale;
+  const Eigen::Quaterniond q(rec.model_to_world.R);
+  model.registration.rotation_wxyz = {q.w(), q.x(), q.y(), q.z()};
+  model.registration.translation = rec.model_to_world.t;
+  out.model_id = store.save_model(model);
+  out.model_points = rec.mesh.size();
+  out.registration = "scale: " + rec.scale_source + ", vertical: " + rec.vertical_source +
+                     ", north: " + rec.north_source;
+  out.predicted_depth_sigma_m = rec.accuracy.sigma_z;
+  for (const auto& w : rec.accuracy.warnings) out.guidance.push_back(w);
+
+  if (!scene) return out;  // a capture folder has no traces to analyse
+
+  // Traces: those of the scene, or the synthetic scene's true traces (what
+  // the geologist would mark on the model).
+  storage::Scene analysed = *scene;
+  if (analysed.traces.empty()) {
+    int n = 0;
+    for (const auto& seg : camera::true_trace_segments(synthetic->scene))
+      analysed.traces.push_back(
+          {"T" + std::to_string(++n),
+           seg.joint,
+           {seg.world[0] + synthetic->origin, seg.world[1] + synthetic->origin}});
+  }
+  if (analysed.patches.empty())
+    throw InputError(request.source, "surface.patches: the scene has no free surface");
+  std::vector<storage::Measurement> traces;
+  for (const auto& t : analysed.traces) {
+    storage::Measurement m;
+    m.visit_id = out.visit_id;
+    m.model_id = out.model_id;
+    m.kind = storage::Measurement::Kind::trace;
+    m.label = t.id;
+    m.joint_label = t.joint.value_or("");
+    for (const auto& p : t.points) m.points.push_back(p - scene->datum);
+    traces.push_back(std::move(m));
+  }
+  store.save_measurements(out.visit_id, traces);
+  std::vector<storage::Joint> joints;
+  for (const auto& j : analysed.joints) {
+    storage::Joint joint;
+    joint.visit_id = out.visit_id;
+    joint.label = j.id;
+    joint.dip_deg = j.dip;
+    joint.dipdir_deg = j.dipdir;
+    if (j.point) joint.point = *j.point - scene->datum;
+    joint.friction_deg = j.friction;
+    joint.cohesion_pa = j.cohesion;
+    joint.source = "scene";
+    joints.push_back(joint);
+  }
+  store.save_joints(out.visit_id, {}, joints);
+
+  progress.step("blocks", 0.8);
+  storage::Report report = analyse_scene(analysed, progress);
+  storage::AnalysisRun run;
+  run.visit_id = out.visit_id;
+  run.model_id = out.model_id;
+  run.preset = preset_name;
+  run.effects = report.effects_simulated;
+  for (const auto& b : report.blocks) {
+    storage::BlockResult r;
+    r.label = b.id;
+    r.source = b.source;
+    r.code = b.code;
+    r.volume_m3 = b.volume.value_or(0);
+    r.finite = b.finite;
+    r.removable = b.removable;
+    r.marginal = b.marginal;
+    r.mode = b.mode ? b.mode->type : "none";
+    r.fos = b.fos;
+    r.report_json = storage::block_to_json(b);
+    run.blocks.push_back(std::move(r));
+  }
+  out.analysis_id = store.save_analysis(run);
+  out.report = std::move(report);
+  progress.step("done", 1.0);
+  return out;
+}
+
+}  // namespace rockface::app
