@@ -81,7 +81,21 @@ TEST(AnalyseCli, ReportHasTheFieldsOfSceneMd) {
   }
   EXPECT_GT(removable, 0);
   EXPECT_TRUE(report.at("timings_ms").contains("pyramids"));
-  EXPECT_TRUE(report.at("blocks").is_array());
+  // The wedge B1 between J1, J2 and the cut: a finite polyhedron with its
+  // mass properties, the same sliding mode as its pyramid, and rotation.
+  const auto& blocks = report.at("blocks");
+  ASSERT_EQ(blocks.size(), 1u);
+  const auto& b = blocks[0];
+  for (const char* key :
+       {"id", "source", "code", "convex", "vertices", "volume", "mass", "centroid", "inertia",
+        "principal_moments", "face_areas", "finite", "removable", "margin_deg", "marginal", "mode",
+        "fos", "rotation", "remote_axis"})
+    EXPECT_TRUE(b.contains(key)) << key;
+  EXPECT_EQ(b.at("code"), "00211");
+  EXPECT_TRUE(b.at("removable").get<bool>());
+  EXPECT_EQ(b.at("mode").at("planes"), nlohmann::json::array({"J1", "J2"}));
+  EXPECT_FALSE(b.at("rotation").at("corners").empty());
+  EXPECT_EQ(b.at("remote_axis").at("starts"), 16);
 }
 
 TEST(AnalyseCli, OutWritesTheFileAndSummaryPrintsATable) {
