@@ -18,6 +18,7 @@
 #include "core/kinematics/effect_water.h"
 #include "firmware-app/block_report.h"
 #include "firmware-app/scene_analysis.h"
+#include "firmware-app/scene_effects.h"
 
 namespace rockface::app {
 
@@ -53,39 +54,6 @@ std::vector<ScenePlane> scene_planes(const storage::Scene& scene) {
                       "free_faces[" + std::to_string(k) + "]"});
   }
   return planes;
-}
-
-// Exactly the effects the scene lists that act on single blocks in limit
-// equilibrium (gravity always).
-kinematics::Effects scene_effects(const storage::Scene& scene) {
-  kinematics::Effects effects;
-  effects.push_back(std::make_unique<kinematics::GravityEffect>(scene.gravity));
-  try {
-    if (const auto& w = scene.effects.water) {
-      std::vector<int> joints;
-      for (const auto& id : w->joints) joints.push_back(scene.plane_index(id));
-      effects.push_back(std::make_unique<kinematics::WaterEffect>(
-          w->unit_weight, w->phreatic_point, normal_of(w->phreatic_dip, w->phreatic_dipdir),
-          joints));
-    }
-    if (scene.effects.seismic)
-      effects.push_back(std::make_unique<kinematics::SeismicEffect>(*scene.effects.seismic));
-    for (size_t k = 0; k < scene.effects.forces.size(); ++k) {
-      const auto& f = scene.effects.forces[k];
-      effects.push_back(std::make_unique<kinematics::ForceEffect>(
-          "effects.forces[" + std::to_string(k) + "]", f.vector, f.point,
-          f.frame == "block" ? kinematics::ForceFrame::Block : kinematics::ForceFrame::Space));
-    }
-    for (size_t k = 0; k < scene.effects.bolts.size(); ++k) {
-      const auto& b = scene.effects.bolts[k];
-      effects.push_back(std::make_unique<kinematics::BoltEffect>(
-          "effects.bolts[" + std::to_string(k) + "]", b.point,
-          geometry::line_direction({deg_to_rad(b.trend), deg_to_rad(b.plunge)}), b.force));
-    }
-  } catch (const InputError& e) {
-    throw InputError(scene.source + ": " + e.where(), e.reason());
-  }
-  return effects;
 }
 
 std::string vec_text(const Eigen::Vector3d& v) {
