@@ -1,5 +1,7 @@
 #include "core/faces/surface_loops.h"
 
+#include "core/faces/union_find.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -8,20 +10,6 @@
 namespace rockface::faces {
 
 namespace {
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 // The unfolded angle swept counter-clockwise from `from` to `to` at a vertex.
 double sweep(double from, double to, double total) {

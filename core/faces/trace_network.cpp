@@ -1,5 +1,7 @@
 #include "core/faces/trace_network.h"
 
+#include "core/faces/union_find.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -74,20 +76,6 @@ struct Hit {
 struct Candidate {
   Eigen::Vector3d x;
   int rank = 0;  // 3 patch corner, 2 on a patch edge, 1 crossing, 0 marked end
-};
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
 };
 
 // Parameter interval of the line p + t u inside a convex counter-clockwise polygon.

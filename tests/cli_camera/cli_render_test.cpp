@@ -9,7 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "storage/camera_json.h"
-#include "tests/cli_camera/cli_run.h"
+#include "tests/support/cli_run.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 #pragma once
-// Runs the real rockface binary with arguments, capturing exit code,
-// stdout and stderr.
+// Shared by the command-line suites: runs the real rockface binary with arguments, capturing exit
+// code, stdout and stderr.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,8 +19,7 @@ struct CliRun {
 
 inline CliRun run_rockface(const std::string& args) {
   namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::temp_directory_path() / ("rockface-cli-camera-" + std::to_string(::getpid()));
+  const fs::path dir = fs::temp_directory_path() / ("rockface-cli-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string out = (dir / "out.txt").string(), err = (dir / "err.txt").string();
   const std::string cmd =
