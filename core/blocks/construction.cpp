@@ -190,12 +190,22 @@ ConvexConstruction build_convex_block(const std::string& block_id,
   std::vector<FaceLoop> loops;
   std::vector<int> used_corner(corners.size(), -1);
   std::vector<std::vector<int>> face_corners;
+  std::vector<std::vector<int>> face_corner_sets;  // ascending corner indices
   std::vector<int> face_input;
   for (int i = 0; i < m; ++i) {
     std::vector<int> on;
     for (int c = 0; c < static_cast<int>(corners.size()); ++c)
       if (std::abs(n[i].dot(corners[c]) - b[i]) <= kOnPlaneRel * size) on.push_back(c);
     if (on.size() < 3) {
+      out.redundant.push_back(i);
+      continue;
+    }
+    // The same plane listed twice (or two planes within rounding of each
+    // other) has the same corners: one face, the later listing redundant.
+    bool repeated = false;
+    for (size_t f = 0; f < face_corner_sets.size() && !repeated; ++f)
+      repeated = face_corner_sets[f] == on && n[face_input[f]].dot(n[i]) > 0;
+    if (repeated) {
       out.redundant.push_back(i);
       continue;
     }
@@ -219,6 +229,7 @@ ConvexConstruction build_convex_block(const std::string& block_id,
       continue;
     }
     face_corners.push_back(loop);
+    face_corner_sets.push_back(on);
     face_input.push_back(i);
   }
   if (face_corners.size() < 4) {

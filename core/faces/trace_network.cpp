@@ -133,6 +133,8 @@ TraceNetwork TraceNetwork::build(const FreeSurface& surface, const std::vector<T
   const double tol = options.snap_tolerance;
   const auto& patches = surface.patches();
   net.mapped_.assign(traces.size(), false);
+  for (const TraceInput& t : traces) net.trace_points_.push_back(t.points);
+  net.snap_tolerance_ = options.snap_tolerance;
 
   double scale = 0;
   for (const auto& p : patches)
@@ -262,6 +264,20 @@ TraceNetwork TraceNetwork::build(const FreeSurface& surface, const std::vector<T
 
   // --- Stretches that run together are one (a trace marked in pieces) ---------
   UnionFind group_uf(groups.size());
+  // Traces of one scene joint whose planes coincide (located within the snap
+  // tolerance) are one discontinuity, typically the pieces of a joint's trace
+  // on neighbouring patches. Kept apart they would bound a block twice by one
+  // plane.
+  for (size_t a = 0; a < groups.size(); ++a)
+    for (size_t b = a + 1; b < groups.size(); ++b) {
+      const PlaneGroup& ga = groups[a];
+      const PlaneGroup& gb = groups[b];
+      if (!ga.joint || !gb.joint || ga.joint->index != gb.joint->index ||
+          ga.plane.source != TracePlaneSource::Joint || gb.plane.source != TracePlaneSource::Joint)
+        continue;
+      if (std::abs(ga.plane.plane.offset - gb.plane.plane.offset) <= tol)
+        group_uf.unite(static_cast<int>(a), static_cast<int>(b));
+    }
   std::vector<std::vector<int>> by_patch(patches.size());
   for (size_t i = 0; i < segs.size(); ++i) by_patch[segs[i].patch].push_back(static_cast<int>(i));
   for (auto& list : by_patch) {

@@ -85,6 +85,10 @@ class TraceNetwork {
   const std::vector<std::string>& notes() const { return notes_; }
   // Input traces that made it into the map (with a plane and a stretch).
   const std::vector<bool>& mapped() const { return mapped_; }
+  // The marked points of each input trace (datum-relative), to tell which
+  // traces of a merged discontinuity run along a given stretch.
+  const std::vector<std::vector<Eigen::Vector3d>>& trace_points() const { return trace_points_; }
+  double snap_tolerance() const { return snap_tolerance_; }  // m
 
   // Half-edge h = 2 e + d runs v0 -> v1 (d = 0) or v1 -> v0 (d = 1).
   int origin(int h) const { return h % 2 == 0 ? edges_[h / 2].v0 : edges_[h / 2].v1; }
@@ -104,6 +108,8 @@ class TraceNetwork {
   std::vector<int> slot_;
   std::vector<std::string> notes_;
   std::vector<bool> mapped_;
+  std::vector<std::vector<Eigen::Vector3d>> trace_points_;
+  double snap_tolerance_ = 0;
 };
 
 }  // namespace rockface::faces

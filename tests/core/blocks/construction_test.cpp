@@ -94,6 +94,33 @@ TEST(ConvexConstruction, PlaneTouchingAlongAnEdgeIsRedundant) {
   EXPECT_EQ(c.polyhedron->faces().size(), 6u);
 }
 
+TEST(ConvexConstruction, SamePlaneListedTwiceIsOneFace) {
+  // Two traces of one joint give its half-space twice (once exactly, once
+  // shifted by rounding): one face, the later listing redundant.
+  auto h = test::box_halfspaces(3, 2, 1);
+  auto twin = h[1];
+  twin.index = 6;
+  twin.name = "x1-again";
+  h.push_back(twin);
+  auto near = h[3];
+  near.index = 7;
+  near.plane.offset += 1e-14;  // below the corner tolerance (1e-9 of the size)
+  h.push_back(near);
+  const auto c = build_convex_block("B", h);
+  ASSERT_EQ(c.outcome, ConvexOutcome::Bounded);
+  EXPECT_EQ(c.polyhedron->faces().size(), 6u);
+  EXPECT_EQ(c.redundant, (std::vector<int>{6, 7}));
+  EXPECT_NEAR(mass_properties(*c.polyhedron, 1).volume, 6, 6 * kRel);
+}
+
+TEST(ConvexConstruction, SamePlaneWithOppositeSidesIsEmpty) {
+  auto h = test::box_halfspaces(3, 2, 1);
+  auto flipped = h[0];
+  flipped.side = flipped.side == HalfSpace::Upper ? HalfSpace::Lower : HalfSpace::Upper;
+  h.push_back(flipped);  // the block squeezed to the plane: no volume
+  EXPECT_EQ(build_convex_block("B", h).outcome, ConvexOutcome::Empty);
+}
+
 TEST(ConvexConstruction, ZeroNormalIsAnInputError) {
   auto h = test::box_halfspaces(1, 1, 1);
   h[2].plane.normal = Eigen::Vector3d::Zero();
