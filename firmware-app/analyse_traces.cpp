@@ -4,7 +4,9 @@
 // Reported in blocks[] with source "traces" and the loop's trace ids; what
 // was left out of the map (and why) goes to the report's notes.
 #include <cmath>
+#include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include "core/common/error.h"
@@ -27,18 +29,47 @@ namespace rockface::app {
 
 namespace {
 
-
 std::string join(const std::vector<std::string>& parts, const std::string& sep) {
   std::string s;
   for (size_t i = 0; i < parts.size(); ++i) s += (i ? sep : "") + parts[i];
   return s;
 }
 
+// A joint plane of a trace block is known inside the map by its first trace
+// (T7); the geologist knows it by its joint (J2). Where one joint gives the
+// block a single plane, the report names the plane by the joint; two parallel
+// discontinuities of one joint set keep their trace names to stay apart.
+void rename_joint_planes(const faces::TraceBlock& b, const faces::TraceNetwork& net,
+                         storage::ReportBlock& rb) {
+  std::map<std::string, std::string> display;
+  std::map<std::string, int> planes_of_joint;
+  for (const auto& p : b.planes)
+    if (p.kind == blocks::PlaneKind::Joint && net.groups()[p.group].joint)
+      ++planes_of_joint[net.groups()[p.group].joint->id];
+  for (const auto& p : b.planes)
+    if (p.kind == blocks::PlaneKind::Joint && net.groups()[p.group].joint) {
+      const std::string& joint = net.groups()[p.group].joint->id;
+      if (planes_of_joint[joint] == 1) display[p.name] = joint;
+    }
+  auto name = [&](const std::string& n) {
+    const auto it = display.find(n);
+    return it == display.end() ? n : it->second;
+  };
+  if (rb.mode)
+    for (auto& n : rb.mode->planes) n = name(n);
+  std::map<std::string, double> areas;
+  for (const auto& [n, a] : rb.face_areas) areas[name(n)] += a;
+  rb.face_areas = std::move(areas);
+  if (rb.rotation)
+    for (auto& c : rb.rotation->corners)
+      for (auto& n : c.sliding_on) n = name(n);
+}
+
 storage::ReportBlock report_block(const faces::TraceBlock& b, const storage::Scene& scene,
                                   const faces::TraceNetwork& net, const Eigen::Vector3d& datum,
-                                  int number) {
+                                  const std::string& id) {
   storage::ReportBlock rb;
-  rb.id = "TB" + std::to_string(number);
+  rb.id = id;
   rb.source = "traces";
   for (int t : b.traces) rb.traces.push_back(scene.traces[t].id);
   rb.code = join(b.codes, "+");
@@ -63,6 +94,7 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const storage::Sce
   rb.marginal = f.removable.marginal || f.finite.marginal;
   if (b.polyhedron && b.analysis) {
     fill_block_report(*b.polyhedron, *b.analysis, scene.analysis, rb);
+    rename_joint_planes(b, net, rb);
   } else {
     // An infinite block has no corners: its loop on the surface is what is known.
     for (const auto& x : b.surface_polygon) rb.vertices.push_back(x + datum);
@@ -132,8 +164,18 @@ void analyse_trace_blocks(const storage::Scene& scene, storage::Report& report,
   options.effects = &effects;
   options.datum = datum;
   const auto blocks = faces::trace_blocks(surface, net, loops, options, progress);
+  // TB1, TB2, ... skipping ids the scene already gives its own blocks.
+  std::set<std::string> taken;
+  for (const auto& b : scene.blocks) taken.insert(b.id);
+  int number = 0;
+  auto next_id = [&] {
+    std::string id;
+    do id = "TB" + std::to_string(++number);
+    while (taken.count(id));
+    return id;
+  };
   for (size_t k = 0; k < blocks.size(); ++k)
-    report.blocks.push_back(report_block(blocks[k], scene, net, datum, static_cast<int>(k) + 1));
+    report.blocks.push_back(report_block(blocks[k], scene, net, datum, next_id()));
   if (blocks.empty())
     report.notes.push_back("traces: no closed loop of traces on the surface, so no block");
 }

@@ -1,5 +1,6 @@
 // Writer of the analysis report (SCENE.md, rockface-report/1) and of its
 // readable summary table.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -216,8 +217,19 @@ std::string report_summary(const Report& r) {
     out << "(not listed: pyramids that are firmly not removable; '?' = marginal)\n";
   }
   if (!r.blocks.empty()) {
+    // A non-convex trace block has one code per convex piece ("a+b+c" in
+    // the report); the table shows the first and how many more.
+    bool pieces = false;
+    auto code_text = [&](const std::string& code) {
+      const size_t n = static_cast<size_t>(std::count(code.begin(), code.end(), '+'));
+      if (n == 0) return code;
+      pieces = true;
+      return code.substr(0, code.find('+')) + " +" + std::to_string(n);
+    };
+    size_t code_width = 8;
+    for (const auto& b : r.blocks) code_width = std::max(code_width, code_text(b.code).size() + 2);
     out << "\nblocks: " << r.blocks.size() << "\n";
-    out << pad("block", 10) << pad("source", 8) << pad("code", 8) << pad("volume m3", 11)
+    out << pad("block", 10) << pad("source", 8) << pad("code", code_width) << pad("volume m3", 11)
         << pad("verdict", 16) << pad("margin", 10) << pad("mode", 22) << pad("FoS", 8)
         << "rotation\n";
     for (const auto& b : r.blocks) {
@@ -232,11 +244,14 @@ std::string report_summary(const Report& r) {
         rotation = std::to_string(corners) + " corner, " + std::to_string(edges) + " edge";
       }
       if (b.remote_axis) rotation += b.remote_axis->found ? "; remote axis" : "; no remote axis";
-      out << pad(b.id, 10) << pad(b.source, 8) << pad(b.code, 8)
+      out << pad(b.id, 10) << pad(b.source, 8) << pad(code_text(b.code), code_width)
           << pad(b.volume ? fixed(*b.volume, 3) : "-", 11) << pad(verdict, 16)
           << pad(fixed(b.margin_deg, 2) + " deg", 10) << pad(mode_text(b.mode), 22)
           << pad(fos_text(b.mode, b.fos), 8) << rotation << "\n";
     }
+    if (pieces)
+      out << "(code +N: a non-convex block, the code of its first convex piece and N more; all "
+             "in the report)\n";
   }
   for (const auto& n : r.notes) out << "note: " << n << "\n";
   return out.str();

@@ -18,6 +18,17 @@ double sweep(double from, double to, double total) {
   return d;
 }
 
+double distance_to_polyline(const std::vector<Eigen::Vector3d>& line, const Eigen::Vector3d& x) {
+  double best = line.empty() ? INFINITY : (line[0] - x).norm();
+  for (size_t i = 0; i + 1 < line.size(); ++i) {
+    const Eigen::Vector3d d = line[i + 1] - line[i];
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((x - line[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (line[i] + t * d - x).norm());
+  }
+  return best;
+}
+
 }  // namespace
 
 int winding_number(const std::vector<Eigen::Vector2d>& poly, const Eigen::Vector2d& p) {
@@ -191,7 +202,17 @@ SurfaceLoops SurfaceLoops::find(const TraceNetwork& net, const FreeSurface& surf
         const int g = edges[h / 2].group;
         if (std::find(region.groups.begin(), region.groups.end(), g) == region.groups.end())
           region.groups.push_back(g);
+        // The traces of the discontinuity that run along this stretch (its
+        // midpoint on their marked polyline); a stretch that only snapping
+        // or extension made is credited to all of them.
+        const Eigen::Vector3d mid =
+            (net.vertices()[net.origin(h)] + net.vertices()[net.target(h)]) / 2;
+        std::vector<int> along;
         for (int t : net.groups()[g].traces)
+          if (distance_to_polyline(net.trace_points()[t], mid) <= net.snap_tolerance())
+            along.push_back(t);
+        if (along.empty()) along = net.groups()[g].traces;
+        for (int t : along)
           if (std::find(region.traces.begin(), region.traces.end(), t) == region.traces.end())
             region.traces.push_back(t);
       }

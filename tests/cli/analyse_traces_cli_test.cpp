@@ -1,0 +1,66 @@
+// `rockface analyse` on a trace map: the demo tunnel face rendered by
+// `rockface render`, its true traces (one per joint and patch) put back into
+// the scene, and a scene block that takes the first trace-block id.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/cli_run.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rockface::test::run_rockface;
+
+TEST(AnalyseTracesCli, KeyblockNamedByJointsWithIdsApartFromSceneBlocks) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("rockface-traces-cli-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string demo =
+      std::string(ROCKFACE_SOURCE_DIR) + "/tools/samples/tunnel-face-demo.scene.json";
+  ASSERT_EQ(run_rockface("render " + demo + " --out " + (dir / "render").string()).exit_code, 0);
+
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(demo));
+  const nlohmann::json truth = nlohmann::json::parse(std::ifstream(dir / "render" / "truth.json"));
+  scene["traces"] = nlohmann::json::array();
+  int n = 0;
+  for (const auto& t : truth["traces"])
+    scene["traces"].push_back(
+        {{"id", "T" + std::to_string(++n)}, {"joint", t["joint"]}, {"points", t["world"]}});
+  scene["blocks"] = {
+      {{"id", "TB1"},
+       {"halfspaces", {{"J1", "upper"}, {"J2", "upper"}, {"J3", "lower"}, {"F1", "lower"}}}}};
+  scene.erase("imaging");
+  const fs::path file = dir / "traces.scene.json";
+  std::ofstream(file) << scene.dump(2);
+
+  const auto r = run_rockface("analyse " + file.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  int tb1 = 0, keyblocks = 0;
+  for (const auto& b : report["blocks"]) {
+    if (b["id"] == "TB1") ++tb1;
+    if (b["source"] != "traces" || !b["finite"].get<bool>()) continue;
+    ++keyblocks;
+    EXPECT_NE(b["id"], "TB1");  // the scene's block keeps its id
+    // One plane per joint: the mode names the joints, not their first traces.
+    EXPECT_EQ(b["mode"]["type"], "sliding");
+    EXPECT_EQ(b["mode"]["planes"], nlohmann::json::array({"J1", "J2"}));
+    // The loop's traces are those along it, not every piece of its joints.
+    EXPECT_LT(b["traces"].size(), scene["traces"].size());
+  }
+  EXPECT_EQ(tb1, 1);
+  EXPECT_EQ(keyblocks, 1);
+
+  // The table shows a non-convex code shortened, with the legend.
+  const auto table = run_rockface("analyse " + file.string() + " --summary");
+  ASSERT_EQ(table.exit_code, 0);
+  EXPECT_NE(table.out.find("(code +N:"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+}  // namespace
