@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <numeric>
 
 namespace rockface::kinematics {
 
@@ -25,10 +26,50 @@ Finiteness decide_finiteness(geometry::Cone jp, std::vector<geometry::Cone> eps,
   return f;
 }
 
-// Enumerating the convex parts of the free surface visits every subset of
-// the free planes; beyond this many (never seen on a real block) the free
-// faces are taken as one convex part.
-constexpr int kMaxFreePlanesForParts = 16;
+// The convex parts are the maximal sets of free planes with no reflex edge
+// between two of them: maximal independent sets of the "reflex edge" graph,
+// found by Bron-Kerbosch with pivoting on its complement. Their number can
+// grow exponentially only on contrived surfaces; beyond this many the free
+// faces are taken as one convex part, which gives a smaller EP and so errs
+// towards "finite" (a block flagged for a closer look, never one missed).
+constexpr size_t kMaxConvexParts = 4096;
+
+// Bron-Kerbosch with pivoting: every maximal clique of `adjacent` that
+// extends r by vertices of p and none of x. Stops once `out` is full.
+void maximal_cliques(const std::vector<std::vector<bool>>& adjacent, std::vector<int>& r,
+                     std::vector<int> p, std::vector<int> x, std::vector<std::vector<int>>& out) {
+  if (out.size() > kMaxConvexParts) return;
+  if (p.empty()) {
+    if (x.empty()) out.push_back(r);
+    return;
+  }
+  // Pivot: the vertex of p or x with most neighbours in p.
+  int pivot = p.front();
+  size_t best = 0;
+  for (const auto* set : {&p, &x})
+    for (int u : *set) {
+      size_t n = 0;
+      for (int v : p) n += adjacent[u][v] ? 1 : 0;
+      if (n >= best) {
+        best = n;
+        pivot = u;
+      }
+    }
+  const std::vector<int> candidates = p;
+  for (int v : candidates) {
+    if (adjacent[pivot][v]) continue;
+    std::vector<int> p2, x2;
+    for (int u : p)
+      if (adjacent[v][u]) p2.push_back(u);
+    for (int u : x)
+      if (adjacent[v][u]) x2.push_back(u);
+    r.push_back(v);
+    maximal_cliques(adjacent, r, std::move(p2), std::move(x2), out);
+    r.pop_back();
+    p.erase(std::find(p.begin(), p.end(), v));
+    x.push_back(v);
+  }
+}
 
 }  // namespace
 
@@ -56,7 +97,9 @@ Finiteness block_finiteness(const blocks::Polyhedron& block, double uncertainty)
   for (int p = 0; p < np; ++p)
     if (planes[p].kind == blocks::PlaneKind::FreeFace) free.push_back(p);
   const int nf = static_cast<int>(free.size());
-  std::vector<unsigned> conflict(nf, 0);  // bit k: conflicts with free[k]
+  // Compatible: no reflex edge between the two free planes.
+  std::vector<std::vector<bool>> compatible(nf, std::vector<bool>(nf, true));
+  bool any_conflict = false;
   for (int e = 0; e < static_cast<int>(block.edges().size()); ++e) {
     if (!block.edge_is_reflex(e)) continue;
     const int a = block.faces()[block.edges()[e].left].plane;
@@ -64,36 +107,28 @@ Finiteness block_finiteness(const blocks::Polyhedron& block, double uncertainty)
     const auto ia = std::find(free.begin(), free.end(), a) - free.begin();
     const auto ib = std::find(free.begin(), free.end(), b) - free.begin();
     if (ia == nf || ib == nf || ia == ib) continue;
-    conflict[ia] |= 1u << ib;
-    conflict[ib] |= 1u << ia;
+    compatible[ia][ib] = compatible[ib][ia] = false;
+    any_conflict = true;
   }
+  for (int k = 0; k < nf; ++k) compatible[k][k] = false;  // no self-loops for the clique search
+  std::vector<std::vector<int>> parts;
+  if (any_conflict) {
+    std::vector<int> r, all(nf);
+    std::iota(all.begin(), all.end(), 0);
+    maximal_cliques(compatible, r, all, {}, parts);
+  }
+  if (!any_conflict || parts.size() > kMaxConvexParts) parts.assign(1, {});
   std::vector<geometry::Cone> eps;
-  const bool any_conflict =
-      std::any_of(conflict.begin(), conflict.end(), [](unsigned c) { return c; });
-  if (!any_conflict || nf > kMaxFreePlanesForParts) {
-    if (nf > 0) {
+  if (nf > 0)
+    for (const auto& part : parts) {
       geometry::Cone ep;
-      for (int p : free) ep.add(planes[p].inward_normal());
+      if (part.empty()) {
+        for (int p : free) ep.add(planes[p].inward_normal());
+      } else {
+        for (int k : part) ep.add(planes[free[k]].inward_normal());
+      }
       eps.push_back(std::move(ep));
     }
-  } else {
-    auto independent = [&](unsigned set) {
-      for (int k = 0; k < nf; ++k)
-        if ((set >> k & 1u) && (conflict[k] & set)) return false;
-      return true;
-    };
-    for (unsigned set = 1; set < (1u << nf); ++set) {
-      if (!independent(set)) continue;
-      bool maximal = true;
-      for (int k = 0; k < nf && maximal; ++k)
-        if (!(set >> k & 1u) && independent(set | 1u << k)) maximal = false;
-      if (!maximal) continue;
-      geometry::Cone ep;
-      for (int k = 0; k < nf; ++k)
-        if (set >> k & 1u) ep.add(planes[free[k]].inward_normal());
-      eps.push_back(std::move(ep));
-    }
-  }
   return decide_finiteness(std::move(jp), std::move(eps), uncertainty);
 }
 

@@ -1,6 +1,7 @@
 // Finiteness and removability of whole blocks (Goodman & Shi), with the
 // excavation pyramid of a non-convex free surface as a union.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -61,6 +62,41 @@ TEST(BlockFiniteness, NonConvexFreeSurfaceGivesUnionOfExcavationPyramids) {
   // Same cone computations on the same normals: equal to rounding.
   EXPECT_NEAR(-f.jp_ep_margin, std::min(floor_shut, wall_shut), 1e-12);
   EXPECT_LT(-f.jp_ep_margin, all_shut - 0.05);  // differs by far more than rounding
+}
+
+TEST(BlockFiniteness, ManyFreeFacesSplitIntoEveryConvexPart) {
+  // A prism over a nine-pointed star (18 sides, all free faces) sitting on a
+  // joint, top free: 19 free planes. Each inner corner of the star is a
+  // reflex edge between two sides, so a convex part takes one side of each
+  // of the 9 pairs, plus the top and the other sides: 2^9 parts of 10 planes.
+  std::vector<Eigen::Vector2d> star;
+  for (int k = 0; k < 18; ++k) {
+    const double a = k * std::numbers::pi / 9, r = k % 2 == 0 ? 2.0 : 1.0;
+    star.emplace_back(r * std::cos(a), r * std::sin(a));
+  }
+  const int n = 18;
+  std::vector<Eigen::Vector3d> v;
+  for (const auto& p : star) v.emplace_back(p.x(), p.y(), 0);
+  for (const auto& p : star) v.emplace_back(p.x(), p.y(), 1);
+  std::vector<FaceInput> f;
+  FaceInput bottom{0, "J", PlaneKind::Joint, std::nullopt, {}};
+  for (int k = n - 1; k >= 0; --k) bottom.loop.push_back(k);
+  FaceInput top{1, "top", PlaneKind::FreeFace, std::nullopt, {}};
+  for (int k = 0; k < n; ++k) top.loop.push_back(n + k);
+  f = {bottom, top};
+  for (int k = 0; k < n; ++k)
+    f.push_back({2 + k,
+                 "side" + std::to_string(k),
+                 PlaneKind::FreeFace,
+                 std::nullopt,
+                 {k, (k + 1) % n, n + (k + 1) % n, n + k}});
+  const blocks::Polyhedron b = blocks::build_block_from_faces("star", v, f);
+  const Finiteness fin = block_finiteness(b, 0);
+  ASSERT_EQ(fin.excavation_pyramids.size(), 512u);
+  for (const auto& ep : fin.excavation_pyramids) EXPECT_EQ(ep.normals().size(), 10u);
+  // It lifts off its joint: finite and removable, whatever the EP split.
+  EXPECT_TRUE(fin.finite.value);
+  EXPECT_TRUE(fin.removable.value);
 }
 
 TEST(BlockFiniteness, BlockInsideTheRockIsNotRemovable) {
