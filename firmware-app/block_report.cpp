@@ -16,6 +16,8 @@ void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAn
   rb.principal_moments = a.mass.principal_moments;
   for (int p = 0; p < static_cast<int>(poly.planes().size()); ++p)
     rb.face_areas[poly.planes()[p].name] += a.mass.plane_areas[p];
+  rb.resultant_force = a.force;
+  rb.resultant_moment = a.moment;
   if (a.mode) {
     storage::ReportMode m;
     m.type = kinematics::mode_name(a.mode->type);

@@ -90,6 +90,10 @@ struct ReportBlock {
   bool marginal = false;
   std::optional<ReportMode> mode;
   std::optional<double> fos;
+  // Active resultant of gravity and the scene's effects (N), and its moment
+  // about the centroid (N m): what a toppling or rotation check starts from;
+  // the limit equilibrium above is translational.
+  std::optional<Eigen::Vector3d> resultant_force, resultant_moment;
   std::optional<ReportRotation> rotation;
   std::optional<ReportRemoteAxis> remote_axis;
   std::optional<ReportStability> stability;

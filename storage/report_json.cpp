@@ -88,6 +88,12 @@ ordered block_json(const ReportBlock& b) {
   j["marginal"] = b.marginal;
   if (b.mode) j["mode"] = mode_json(*b.mode);
   if (b.mode) j["fos"] = number_or_null(b.fos);
+  if (b.resultant_force && b.resultant_moment) {
+    ordered r;
+    r["force"] = vec(*b.resultant_force);
+    r["moment"] = vec(*b.resultant_moment);
+    j["resultant"] = r;
+  }
   if (b.rotation) {
     ordered rot;
     ordered corners = ordered::array();

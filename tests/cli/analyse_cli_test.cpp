@@ -76,6 +76,15 @@ TEST(AnalyseCli, ReportHasTheFieldsOfSceneMd) {
   EXPECT_EQ(b.at("mode").at("planes"), nlohmann::json::array({"J1", "J2"}));
   EXPECT_FALSE(b.at("rotation").at("corners").empty());
   EXPECT_EQ(b.at("remote_axis").at("starts"), 16);
+  // Weight plus the scene's seismic load (0, -0.98, 0) m/s^2, both acting
+  // at the centroid: force = mass x (0, -0.98, -9.81), no moment. The report
+  // rounds to 9 significant digits (tidy), so 1e-8 relative.
+  const double m = b.at("mass").get<double>();
+  const auto& force = b.at("resultant").at("force");
+  const double expected[3] = {0, -0.98 * m, -9.81 * m};
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(force[k].get<double>(), expected[k], 1e-8 * 9.81 * m);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(b.at("resultant").at("moment")[k].get<double>(), 0, 1e-8 * 9.81 * m);
 }
 
 TEST(AnalyseCli, OutWritesTheFileAndSummaryPrintsATable) {
