@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/common/error.h"
 
@@ -31,12 +32,62 @@ struct Detected {
   cv::Mat descriptors;
 };
 
+// OpenCV's SIFT doubles its input and keeps about a dozen float images of
+// that size: ~45 bytes per input pixel, 1.9 GB for the precise preset's
+// 4000 px working width. Larger images are detected tile by tile, which
+// bounds that to ~90 MB per million tile pixels whatever the image size.
+constexpr double kMaxSiftTilePixels = 2.0e6;
+// Context around a tile's core: keypoints are kept only in the core, at
+// least this far from the tile's cut edges, so their descriptors (radius
+// ~10.6 sigma) see the same pixels as in one piece up to sigma ~9 px.
+constexpr int kSiftTileMargin = 96;
+
 Detected detect(const cv::Mat& image, double scale, const ReconstructionPreset& preset) {
   cv::Mat grey = to_grey(image);
   if (scale != 1.0) cv::resize(grey, grey, cv::Size(), scale, scale, cv::INTER_AREA);
   Detected d;
-  auto sift = cv::SIFT::create(preset.max_features, 3, preset.sift_contrast);
-  sift->detectAndCompute(grey, cv::noArray(), d.keypoints, d.descriptors);
+  const double pixels = static_cast<double>(grey.total());
+  const int tiles = static_cast<int>(std::ceil(std::sqrt(pixels / kMaxSiftTilePixels)));
+  if (tiles <= 1) {
+    auto sift = cv::SIFT::create(preset.max_features, 3, preset.sift_contrast);
+    sift->detectAndCompute(grey, cv::noArray(), d.keypoints, d.descriptors);
+    return d;
+  }
+  // A tiles x tiles grid; each tile's share of the feature budget follows
+  // its area (0 = no limit stays no limit).
+  std::vector<cv::Mat> descriptors;
+  for (int ty = 0; ty < tiles; ++ty)
+    for (int tx = 0; tx < tiles; ++tx) {
+      const cv::Rect core(tx * grey.cols / tiles, ty * grey.rows / tiles,
+                          (tx + 1) * grey.cols / tiles - tx * grey.cols / tiles,
+                          (ty + 1) * grey.rows / tiles - ty * grey.rows / tiles);
+      const cv::Rect outer =
+          cv::Rect(core.x - kSiftTileMargin, core.y - kSiftTileMargin,
+                   core.width + 2 * kSiftTileMargin, core.height + 2 * kSiftTileMargin) &
+          cv::Rect(0, 0, grey.cols, grey.rows);
+      const double share = static_cast<double>(core.area()) / pixels;
+      const int budget =
+          preset.max_features > 0 ? static_cast<int>(std::ceil(preset.max_features * share)) : 0;
+      // Detect with a larger budget in the context, then keep the core's.
+      const int detect_budget =
+          budget > 0 ? static_cast<int>(std::ceil(budget * static_cast<double>(outer.area()) /
+                                                  static_cast<double>(core.area())))
+                     : 0;
+      auto sift = cv::SIFT::create(detect_budget, 3, preset.sift_contrast);
+      std::vector<cv::KeyPoint> kp;
+      cv::Mat desc;
+      sift->detectAndCompute(grey(outer), cv::noArray(), kp, desc);
+      for (int i = 0; i < static_cast<int>(kp.size()); ++i) {
+        cv::KeyPoint k = kp[i];
+        k.pt += cv::Point2f(static_cast<float>(outer.x), static_cast<float>(outer.y));
+        if (!core.contains(cv::Point(static_cast<int>(std::floor(k.pt.x)),
+                                     static_cast<int>(std::floor(k.pt.y)))))
+          continue;
+        d.keypoints.push_back(k);
+        descriptors.push_back(desc.row(i));
+      }
+    }
+  if (!descriptors.empty()) cv::vconcat(descriptors, d.descriptors);
   return d;
 }
 
