@@ -71,8 +71,13 @@ std::string fmt(double v) {
   return s.str();
 }
 
+// Cutting the block around an island into the cells of the island's planes
+// takes 2^n of them per piece: enough for any island a geologist marks.
+constexpr size_t kMaxIslandPlanes = 10;
+
 struct Piece {
   std::vector<HalfSpace> sides;  // one per block plane
+  bool may_be_empty = false;     // a cell of island planes: empty ones are expected
   std::string code() const {
     std::string c;
     for (auto s : sides) c += geometry::code_digit(s);
@@ -248,6 +253,25 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
     bool one_side = true;
     for (const auto& s : joint_sides) one_side = one_side && s.size() == 1;
 
+    // --- Islands: joints whose traces lie only on loops inside the outer one.
+    // Their joints persist behind the island and bound the island's own
+    // block; the block around it is the outer loop's block without that one
+    // (cut by the island's planes into cells, all kept but the island's), so
+    // that it stays one solid without the pinch two crossing island joints
+    // would otherwise leave where they meet inside the rock.
+    std::vector<bool> island(n_joints, false);
+    std::vector<int> island_planes;
+    if (region.loops.size() > 1) {
+      std::set<int> outer_groups;
+      for (int h : region.loops.front()) outer_groups.insert(edges[h / 2].group);
+      for (int j = 0; j < n_joints; ++j)
+        if (!outer_groups.count(block.planes[j].group)) {
+          island[j] = true;
+          island_planes.push_back(j);
+        }
+    }
+    std::set<std::vector<HalfSpace>> island_cells;  // sides of island planes behind an island
+
     // --- Convex pieces.
     std::vector<Piece> pieces;
     if (!reflex && rock_convex && one_side) {
@@ -283,6 +307,7 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
         const SurfacePatch& P = patches[pi];
         std::vector<std::vector<Eigen::Vector2d>> cells{P.polygon2d};
         for (int j = 0; j < n_joints; ++j) {
+          if (island[j]) continue;  // the outer block's cells first
           const geometry::Plane& pl = block.planes[j].plane;
           const Eigen::Vector2d n2(pl.normal.dot(P.e1), pl.normal.dot(P.e2));
           if (n2.norm() < kTraceOnPatchSine) continue;
@@ -295,13 +320,51 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
             }
           cells = std::move(next);
         }
-        std::vector<std::vector<Eigen::Vector2d>> region_polys;
+        std::vector<std::vector<Eigen::Vector2d>> region_polys, hole_polys;
         for (int f : region.faces) {
           if (loops.faces()[f].patch != pi) continue;
+          if (!island_planes.empty() && loops.faces()[f].area <= 0) {
+            // The outside of an island: what it encloses is the island's block.
+            std::vector<Eigen::Vector2d> poly;
+            for (int h : loops.faces()[f].half_edges)
+              poly.push_back(P.to2d(net.vertices()[net.origin(h)]));
+            hole_polys.push_back(std::move(poly));
+            continue;
+          }
           std::vector<Eigen::Vector2d> poly;
           for (int h : loops.faces()[f].half_edges)
             poly.push_back(P.to2d(net.vertices()[net.origin(h)]));
           region_polys.push_back(std::move(poly));
+        }
+        if (!hole_polys.empty()) {
+          // The island planes' sides behind each hole: the patch cut by the
+          // island joints; a hole's edges are such cuts, so each cell lies
+          // wholly inside or outside a hole.
+          std::vector<std::vector<Eigen::Vector2d>> icells{P.polygon2d};
+          for (int j : island_planes) {
+            const geometry::Plane& pl = block.planes[j].plane;
+            const Eigen::Vector2d n2(pl.normal.dot(P.e1), pl.normal.dot(P.e2));
+            if (n2.norm() < kTraceOnPatchSine) continue;
+            const double c = pl.offset - pl.normal.dot(P.origin);
+            std::vector<std::vector<Eigen::Vector2d>> next;
+            for (const auto& cell : icells)
+              for (bool up : {true, false}) {
+                auto part = clip(cell, n2, c, up);
+                if (part.size() >= 3 && area_of(part) > 0) next.push_back(std::move(part));
+              }
+            icells = std::move(next);
+          }
+          for (const auto& cell : icells) {
+            Eigen::Vector2d c = Eigen::Vector2d::Zero();
+            for (const auto& x : cell) c += x;
+            c /= static_cast<double>(cell.size());
+            int w = 0;
+            for (const auto& poly : hole_polys) w += winding_number(poly, c);
+            if (w == 0) continue;
+            std::vector<HalfSpace> sides;
+            for (int j : island_planes) sides.push_back(side_of(block.planes[j].plane, P.to3d(c)));
+            island_cells.insert(sides);
+          }
         }
         for (const auto& cell : cells) {
           Eigen::Vector2d c = Eigen::Vector2d::Zero();
@@ -336,6 +399,33 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
       }
       if (pieces.empty() && thickest_patch >= 0)
         add_piece(thickest_centre, thickest_centre, {thickest_patch});
+      if (!island_planes.empty() && island_planes.size() <= kMaxIslandPlanes) {
+        // Every cell of the island planes in each outer piece, but those
+        // behind an island (empty cells drop out in the construction).
+        std::vector<Piece> cut;
+        seen.clear();
+        const unsigned combos = 1u << island_planes.size();
+        for (const Piece& outer : pieces)
+          for (unsigned m = 0; m < combos; ++m) {
+            std::vector<HalfSpace> sides;
+            for (size_t i = 0; i < island_planes.size(); ++i)
+              sides.push_back(m >> i & 1u ? HalfSpace::Lower : HalfSpace::Upper);
+            if (island_cells.count(sides)) continue;
+            Piece p = outer;
+            for (size_t i = 0; i < island_planes.size(); ++i) p.sides[island_planes[i]] = sides[i];
+            p.may_be_empty = true;
+            if (seen.insert(p.code()).second) cut.push_back(std::move(p));
+          }
+        pieces = std::move(cut);
+        block.notes.push_back(
+            "the traces inside the loop bound a block of their own, cut out of this one");
+      } else if (!island_planes.empty()) {
+        pieces.clear();
+        block.notes.push_back(
+            "block geometry not assembled: the islands of traces inside the loop have " +
+            std::to_string(island_planes.size()) + " joints (at most " +
+            std::to_string(kMaxIslandPlanes) + " are cut out)");
+      }
       block.notes.push_back("non-convex: the union of " + std::to_string(pieces.size()) +
                             " convex pieces");
     }
@@ -379,8 +469,9 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
           block.notes.push_back(s.str());
         }
       } else if (cc->outcome == blocks::ConvexOutcome::Empty) {
-        block.notes.push_back("piece " + pieces[k].code() +
-                              " is empty: its joints leave no rock behind the loop");
+        if (!pieces[k].may_be_empty)
+          block.notes.push_back("piece " + pieces[k].code() +
+                                " is empty: its joints leave no rock behind the loop");
       } else {
         if (block.convex)
           for (int j : cc->redundant) block.codes[0][j] = '2';

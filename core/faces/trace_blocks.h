@@ -17,6 +17,10 @@
 //     the faces two cells share. This is Goodman & Shi's non-convex block as
 //     a union of convex blocks; the joints of a reflex corner meet along
 //     their line of intersection inside the rock.
+//   - An island of traces inside the loop bounds its own block (its region
+//     is a loop of its own); the block around it is the outer block cut by
+//     the island's joint planes into cells, all kept but those behind the
+//     island: the outer block without the island's block, one solid.
 // Each block then gets the same analysis as an explicit block: mass
 // properties, finiteness (theorem for non-convex blocks), removability with
 // margins, mode and factor of safety.

@@ -164,6 +164,44 @@ TEST(TraceBlocks, LShapedLoopIsTheUnionOfItsConvexPieces) {
   EXPECT_EQ(ids_of(b, t), (std::vector<std::string>{"high", "low", "mid", "y10", "y4", "y7"}));
 }
 
+TEST(TraceBlocks, AnIslandOfTracesCutsItsOwnBlockOutOfTheOneAroundIt) {
+  // Block A of the benched slope (y 4..8, z 1..4) with a rectangle of
+  // traces inside it that touches none of A's: y = 5 and 7, the 30 degree
+  // joint at z = 2 and the 80 degree one at z = 3. The island's joints
+  // persist behind it: the inner block is a prism like A between z = 2 and
+  // 3 over y 5..7, and the block behind the ring around it is A without it.
+  std::vector<TraceInput> t;
+  for (const auto& a : testing::benched_slope_traces())
+    if (a.id.rfind("A-", 0) == 0) t.push_back(a);
+  t.push_back({"i-y5", joint("Jy", 90, 0, 0), {on_lower_face(5, 1.8), on_lower_face(5, 3.2)}});
+  t.push_back({"i-y7", joint("Jy", 90, 0, 0), {on_lower_face(7, 1.8), on_lower_face(7, 3.2)}});
+  t.push_back({"i-low", joint("J30", 30, 270, 1), {on_lower_face(4.8, 2), on_lower_face(7.2, 2)}});
+  t.push_back({"i-high", joint("J80", 80, 270, 2), {on_lower_face(4.8, 3), on_lower_face(7.2, 3)}});
+  const auto blocks = blocks_of(t);
+  ASSERT_EQ(blocks.size(), 2u);
+  const double t30 = std::tan(deg_to_rad(30)), t80 = std::tan(deg_to_rad(80));
+  const double inner_profile = shoelace(
+      {{1, 2}, {1.5, 3}, meet(1, 2, t30, 1.5, 3, t80)});  // the face point at z is (z / 2, z)
+  const TraceBlock* inner = nullptr;
+  const TraceBlock* ring = nullptr;
+  for (const auto& b : blocks)
+    (b.traces.size() == 4 && ids_of(b, t)[0] == "i-high" ? inner : ring) = &b;
+  ASSERT_TRUE(inner && ring);
+  ASSERT_TRUE(inner->analysis && ring->analysis) << (ring->notes.empty() ? "" : ring->notes.back());
+  EXPECT_TRUE(inner->finite);
+  EXPECT_TRUE(ring->finite);
+  EXPECT_FALSE(ring->convex);
+  EXPECT_NEAR(inner->analysis->mass.volume, 2 * inner_profile, kVolumeRel * 20);
+  EXPECT_NEAR(ring->analysis->mass.volume, 4 * profile_a(4) - 2 * inner_profile, kVolumeRel * 20);
+  // The ring's loop includes the island's traces.
+  EXPECT_EQ(ring->traces.size(), 8u);
+  // Its faces toward the island's block are faces on the island's joints.
+  int island_faces = 0;
+  for (const auto& bp : ring->polyhedron->planes())
+    island_faces += bp.kind == blocks::PlaneKind::Joint && bp.name.rfind("i-", 0) == 0 ? 1 : 0;
+  EXPECT_EQ(island_faces, 4);
+}
+
 TEST(TraceBlocks, BlockAtTheReentrantEdgeOfATunnelCrownAndWallWrapsTheCorner) {
   // A tunnel along y: crown z = 5 (x 0..4, rock above), east wall x = 4
   // (z 0..5, rock behind). The rock at their edge is the union of the two
