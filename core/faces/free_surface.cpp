@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "core/common/error.h"
+#include "core/faces/convex_partition.h"
 #include "core/faces/tolerances.h"
 
 namespace rockface::faces {
@@ -14,6 +15,21 @@ namespace {
 
 double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
+}
+
+// Whether closed segments ab and cd share a point.
+bool segments_meet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                   const Eigen::Vector2d& d) {
+  const double d1 = cross2(b - a, c - a), d2 = cross2(b - a, d - a);
+  const double d3 = cross2(d - c, a - c), d4 = cross2(d - c, b - c);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+    return true;
+  auto on = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& x,
+               double side) {
+    return side == 0 && x.x() >= std::min(p.x(), q.x()) && x.x() <= std::max(p.x(), q.x()) &&
+           x.y() >= std::min(p.y(), q.y()) && x.y() <= std::max(p.y(), q.y());
+  };
+  return on(a, b, c, d1) || on(a, b, d, d2) || on(c, d, a, d3) || on(c, d, b, d4);
 }
 
 }  // namespace
@@ -32,7 +48,8 @@ bool SurfacePatch::contains(const Eigen::Vector2d& p, double slack) const {
 }
 
 std::string FreeSurface::where(int patch) const {
-  return "surface.patches[" + std::to_string(patch) + "] (" + patches_[patch].id + ")";
+  return "surface.patches[" + std::to_string(patches_[patch].input) + "] (" + patches_[patch].id +
+         ")";
 }
 
 FreeSurface FreeSurface::build(const std::vector<PatchInput>& inputs, double tolerance) {
@@ -75,6 +92,7 @@ FreeSurface FreeSurface::build(const std::vector<PatchInput>& inputs, double tol
 
     SurfacePatch patch;
     patch.id = in.id;
+    patch.input = static_cast<int>(k);
     patch.outward = normal;
     patch.origin = centroid;
     // e1 along the longest edge keeps the frame well defined for slivers.
@@ -91,22 +109,44 @@ FreeSurface FreeSurface::build(const std::vector<PatchInput>& inputs, double tol
       patch.polygon.push_back(p - normal * normal.dot(p - centroid));
       patch.polygon2d.push_back(patch.to2d(p));
     }
+    // A simple outline: no two edges that are not neighbours meet.
     const size_t n = patch.polygon2d.size();
-    for (size_t i = 0; i < n; ++i) {
-      const Eigen::Vector2d a = patch.polygon2d[(i + n - 1) % n], b = patch.polygon2d[i],
-                            c = patch.polygon2d[(i + 1) % n];
-      const double s = cross2((b - a).normalized(), (c - b).normalized());
-      if (s < -kConvexCornerSine)
-        throw InputError(
-            where, "not convex at corner " + std::to_string(i) + ": split it into convex patches");
-    }
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = i + 2; j < n; ++j) {
+        if (i == 0 && j == n - 1) continue;  // neighbours across the closing corner
+        if (segments_meet(patch.polygon2d[i], patch.polygon2d[(i + 1) % n], patch.polygon2d[j],
+                          patch.polygon2d[(j + 1) % n]))
+          throw InputError(where, "its outline crosses itself (edges " + std::to_string(i) +
+                                      " and " + std::to_string(j) +
+                                      "): list the corners in order round it");
+      }
+    const std::vector<std::vector<int>> pieces =
+        convex_partition(patch.polygon2d, kConvexCornerSine);
+    if (pieces.empty())
+      throw InputError(where, "its outline crosses itself: list the corners in order round it");
     // Upward-normal plane and the rock's half-space code.
     Eigen::Vector3d up = normal;
     if (up.z() < 0 || (up.z() == 0 && (up.y() < 0 || (up.y() == 0 && up.x() < 0)))) up = -up;
     patch.plane.normal = up;
     patch.plane.offset = up.dot(centroid);
     patch.rock_side = up.dot(normal) > 0 ? geometry::HalfSpace::Lower : geometry::HalfSpace::Upper;
-    surface.patches_.push_back(std::move(patch));
+    if (pieces.size() == 1) {
+      surface.patches_.push_back(std::move(patch));
+      continue;
+    }
+    // A non-convex patch becomes convex patches on its plane, named ID.1,
+    // ID.2, ...: the edges between them are flat, so loops cross them freely.
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      SurfacePatch piece = patch;
+      piece.id = in.id + "." + std::to_string(k + 1);
+      piece.polygon.clear();
+      piece.polygon2d.clear();
+      for (int i : pieces[k]) {
+        piece.polygon.push_back(patch.polygon[i]);
+        piece.polygon2d.push_back(patch.polygon2d[i]);
+      }
+      surface.patches_.push_back(std::move(piece));
+    }
   }
   return surface;
 }

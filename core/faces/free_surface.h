@@ -23,8 +23,9 @@ struct PatchInput {
 };
 
 struct SurfacePatch {
-  std::string id;
-  std::vector<Eigen::Vector3d> polygon;                // projected onto the plane
+  std::string id;                        // the input's id; "ID.k" for piece k of a non-convex input
+  int input = -1;                        // index of the input patch (surface.patches[input])
+  std::vector<Eigen::Vector3d> polygon;  // projected onto the plane
   Eigen::Vector3d outward = Eigen::Vector3d::UnitZ();  // unit, out of the rock
   geometry::Plane plane;                               // upward normal convention
   geometry::HalfSpace rock_side = geometry::HalfSpace::Lower;
@@ -50,8 +51,10 @@ class FreeSurface {
  public:
   FreeSurface() = default;
   // Fits each patch's plane and checks it: planar within `tolerance` (m),
-  // at least three distinct corners, convex, counter-clockwise seen from the
-  // open side as given. Throws rockface::InputError naming the patch
+  // at least three distinct corners, counter-clockwise seen from the open
+  // side as given, an outline that does not cross itself. A non-convex patch
+  // is split into convex pieces on its plane (ids "ID.1", "ID.2", ...).
+  // Throws rockface::InputError naming the patch
   // ("surface.patches[2] (S3)") and what is wrong.
   static FreeSurface build(const std::vector<PatchInput>& patches, double tolerance);
 

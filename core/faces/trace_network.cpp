@@ -159,6 +159,26 @@ TraceNetwork TraceNetwork::build(const FreeSurface& surface, const std::vector<T
       off += o.empty() ? 1 : 0;
       touched.insert(touched.end(), o.begin(), o.end());
     }
+    // A patch the marking crosses between two of its points (a narrow piece
+    // of a patch split into convex ones) is touched too: the part of each
+    // marked segment lying in the patch's plane and polygon.
+    auto crossing = [&](size_t k, size_t j, double& lo, double& hi) {
+      const SurfacePatch& P = patches[k];
+      const Eigen::Vector3d& a = tr.points[j];
+      const Eigen::Vector3d& b = tr.points[j + 1];
+      if (std::abs(P.height(a)) > tol || std::abs(P.height(b)) > tol) return false;
+      const Eigen::Vector2d a2 = P.to2d(a), d2 = P.to2d(b) - a2;
+      if (d2.norm() <= tol) return false;
+      if (!clip_line(P.polygon2d, a2, d2, lo, hi)) return false;
+      lo = std::max(lo, 0.0);
+      hi = std::min(hi, 1.0);
+      return lo < hi;
+    };
+    for (size_t k = 0; k < patches.size(); ++k)
+      for (size_t j = 0; j + 1 < tr.points.size(); ++j) {
+        double lo = 0, hi = 0;
+        if (crossing(k, j, lo, hi)) touched.push_back(static_cast<int>(k));
+      }
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     if (off > 0 && !touched.empty())
@@ -198,6 +218,16 @@ TraceNetwork TraceNetwork::build(const FreeSurface& surface, const std::vector<T
           tmin = std::min(tmin, t);
           tmax = std::max(tmax, t);
         }
+      for (size_t j = 0; j + 1 < tr.points.size(); ++j) {
+        double lo = 0, hi = 0;
+        if (!crossing(k, j, lo, hi)) continue;
+        const Eigen::Vector2d a2 = P.to2d(tr.points[j]), d2 = P.to2d(tr.points[j + 1]) - a2;
+        for (double f : {lo, hi}) {
+          const double t = u.dot(a2 + f * d2 - p0);
+          tmin = std::min(tmin, t);
+          tmax = std::max(tmax, t);
+        }
+      }
       // Where the marking goes on to another patch, the stretch reaches the patch edge.
       for (size_t j = 0; j + 1 < tr.points.size(); ++j) {
         const bool a = on_k(j), b = on_k(j + 1);

@@ -55,13 +55,51 @@ TEST(FreeSurface, BadPatchesAreRejectedByName) {
   EXPECT_NE(error_of({{"W", {V(0, 0, 0), V(1, 0, 0), V(1, 1, 0.3), V(0, 1, 0)}}})
                 .find("surface.patches[0] (W): not planar"),
             std::string::npos);
-  // An L-shaped patch.
-  EXPECT_NE(
-      error_of({{"L", {V(0, 0, 0), V(2, 0, 0), V(2, 1, 0), V(1, 1, 0), V(1, 2, 0), V(0, 2, 0)}}})
-          .find("not convex"),
-      std::string::npos);
+  // An outline that crosses itself: a square with two corners swapped.
+  EXPECT_NE(error_of({{"X", {V(0, 0, 0), V(3, 0, 0), V(3, 3, 0), V(1, -1, 0), V(0, 3, 0)}}})
+                .find("surface.patches[0] (X): its outline crosses itself"),
+            std::string::npos);
   EXPECT_NE(error_of({{"P", {V(0, 0, 0), V(1, 0, 0), V(2, 0, 0)}}}).find("collinear"),
             std::string::npos);
+}
+
+TEST(FreeSurface, NonConvexPatchIsSplitIntoConvexPiecesOnItsPlane) {
+  // An L-shaped bench (area 3) and a comb with two notches (area 8).
+  const auto surface = FreeSurface::build(
+      {{"L", {V(0, 0, 0), V(2, 0, 0), V(2, 1, 0), V(1, 1, 0), V(1, 2, 0), V(0, 2, 0)}},
+       {"COMB",
+        {V(0, 0, 5), V(5, 0, 5), V(5, 2, 5), V(4, 2, 5), V(4, 1, 5), V(3, 1, 5), V(3, 2, 5),
+         V(2, 2, 5), V(2, 1, 5), V(1, 1, 5), V(1, 2, 5), V(0, 2, 5)}}},
+      0.05);
+  double area_l = 0, area_comb = 0;
+  int pieces_l = 0, pieces_comb = 0;
+  for (int k = 0; k < static_cast<int>(surface.patches().size()); ++k) {
+    const SurfacePatch& P = surface.patches()[k];
+    // Every piece convex and counter-clockwise, on the input's plane.
+    const size_t n = P.polygon2d.size();
+    double a = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const Eigen::Vector2d u = P.polygon2d[(i + 1) % n] - P.polygon2d[i];
+      const Eigen::Vector2d w = P.polygon2d[(i + 2) % n] - P.polygon2d[(i + 1) % n];
+      EXPECT_GE(u.x() * w.y() - u.y() * w.x(), -1e-12) << P.id;  // exact corners: rounding only
+      a += P.polygon2d[i].x() * P.polygon2d[(i + 1) % n].y() -
+           P.polygon2d[(i + 1) % n].x() * P.polygon2d[i].y();
+    }
+    EXPECT_NEAR(P.outward.z(), 1, 1e-12);
+    (P.input == 0 ? area_l : area_comb) += a / 2;
+    ++(P.input == 0 ? pieces_l : pieces_comb);
+    EXPECT_EQ(P.id.substr(0, P.id.find('.')), P.input == 0 ? "L" : "COMB");
+    EXPECT_NE(surface.where(k).find(P.input == 0 ? "surface.patches[0]" : "surface.patches[1]"),
+              std::string::npos);
+  }
+  // Areas add up exactly (same corners), with few pieces (Hertel-Mehlhorn:
+  // an L needs 2, the comb 3 or 4; at most 4x the fewest).
+  EXPECT_NEAR(area_l, 3, 1e-12);
+  EXPECT_NEAR(area_comb, 8, 1e-12);
+  EXPECT_GE(pieces_l, 2);
+  EXPECT_LE(pieces_l, 3);
+  EXPECT_GE(pieces_comb, 3);
+  EXPECT_LE(pieces_comb, 8);
 }
 
 TEST(FreeSurface, PatchListedClockwiseIsCaughtAtItsSharedEdge) {

@@ -202,6 +202,46 @@ TEST(TraceBlocks, AnIslandOfTracesCutsItsOwnBlockOutOfTheOneAroundIt) {
   EXPECT_EQ(island_faces, 4);
 }
 
+TEST(TraceBlocks, NonConvexPatchGivesTheSameBlocksAsItsConvexOriginal) {
+  // The lower face with a notch out of its crest at y 9..10, away from every
+  // trace: it is split into convex pieces, at least one of whose seams runs
+  // under a block. Every block must come out as on the whole face.
+  using V = Eigen::Vector3d;
+  auto notched = testing::benched_slope_patches();
+  notched[1].polygon = {V(0, 0, 0),          V(3, 0, 6),           on_lower_face(9, 6),
+                        on_lower_face(9, 5), on_lower_face(10, 5), on_lower_face(10, 6),
+                        V(3, 20, 6),         V(0, 20, 0)};
+  const auto traces = testing::benched_slope_traces();
+  const std::vector<TraceBlock> ref = blocks_of(traces);
+  const FreeSurface surface = FreeSurface::build(notched, kSnap);
+  ASSERT_GT(surface.patches().size(), 5u);
+  const TraceNetwork net = TraceNetwork::build(surface, traces, {kSnap, 0.0});
+  const SurfaceLoops loops = SurfaceLoops::find(net, surface);
+  kinematics::Effects effects;
+  effects.push_back(std::make_unique<kinematics::GravityEffect>(Eigen::Vector3d(0, 0, -9.81)));
+  TraceBlockOptions options;
+  options.snap_tolerance = kSnap;
+  options.orientation_uncertainty = deg_to_rad(1.0);
+  options.effects = &effects;
+  NoProgress progress;
+  const auto got = trace_blocks(surface, net, loops, options, progress);
+  ASSERT_EQ(got.size(), ref.size());
+  int over_a_seam = 0;
+  for (size_t k = 0; k < ref.size(); ++k) {
+    EXPECT_EQ(ids_of(got[k], traces), ids_of(ref[k], traces));
+    EXPECT_EQ(got[k].finite, ref[k].finite);
+    ASSERT_EQ(bool(got[k].analysis), bool(ref[k].analysis));
+    if (ref[k].analysis) {
+      // Same planes and corners; the pieces only add coplanar seams.
+      EXPECT_NEAR(got[k].analysis->mass.volume, ref[k].analysis->mass.volume, kVolumeRel * 40);
+    }
+    int pieces = 0;
+    for (const auto& p : got[k].planes) pieces += p.name.rfind("S2.", 0) == 0 ? 1 : 0;
+    over_a_seam += pieces >= 2 ? 1 : 0;
+  }
+  EXPECT_GE(over_a_seam, 1);
+}
+
 TEST(TraceBlocks, BlockAtTheReentrantEdgeOfATunnelCrownAndWallWrapsTheCorner) {
   // A tunnel along y: crown z = 5 (x 0..4, rock above), east wall x = 4
   // (z 0..5, rock behind). The rock at their edge is the union of the two
