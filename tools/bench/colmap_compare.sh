@@ -5,6 +5,10 @@
 # against templeSR_par.txt. COLMAP is not a build or test dependency: without
 # it this script says so and exits 0.
 #   tools/bench/colmap_compare.sh [PAIR ...]     e.g. 1-2 9-10 (default: 1-2 3-4 7-8 9-10)
+#   tools/bench/colmap_compare.sh synthetic      the synthetic tunnel face (24 Mpx, Brown
+#                                                distortion) rendered by `rockface render`,
+#                                                COLMAP and `rockface reconstruct` on the
+#                                                same pair, errors against the render's poses
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 if ! command -v colmap >/dev/null; then
@@ -16,6 +20,74 @@ pairs=("$@")
 [ ${#pairs[@]} -eq 0 ] && pairs=(1-2 3-4 7-8 9-10)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+
+if [ "${pairs[0]}" = synthetic ]; then
+  rockface=build/release/rockface
+  d="$work/synthetic"; mkdir -p "$d/images" "$d/sparse"
+  "$rockface" render tools/samples/tunnel-face.scene.json --out "$d/render" >/dev/null
+  cp "$d/render/left.png" "$d/render/right.png" "$d/images/"
+  # OpenCV's Brown model is COLMAP's OPENCV model: fx fy cx cy k1 k2 p1 p2 (k3 = 0).
+  params=$(python3 -c "import json; c = json.load(open('$d/render/camera.json')); k = c['distortion']
+print(','.join(str(v) for v in [c['fx'], c['fy'], c['cx'], c['cy'], k[0], k[1], k[2], k[3]]))")
+  start=$(date +%s.%N)
+  colmap feature_extractor --database_path "$d/db" --image_path "$d/images" \
+    --ImageReader.camera_model OPENCV --ImageReader.single_camera 1 \
+    --ImageReader.camera_params "$params" --SiftExtraction.use_gpu 0 >"$d/log" 2>&1
+  colmap exhaustive_matcher --database_path "$d/db" --SiftMatching.use_gpu 0 >>"$d/log" 2>&1
+  colmap mapper --database_path "$d/db" --image_path "$d/images" --output_path "$d/sparse" \
+    --Mapper.init_min_num_inliers 30 --Mapper.ba_refine_focal_length 0 \
+    --Mapper.ba_refine_principal_point 0 --Mapper.ba_refine_extra_params 0 >>"$d/log" 2>&1 || true
+  end=$(date +%s.%N)
+  colmap_secs=$(echo "$end - $start" | bc)
+  [ -d "$d/sparse/0" ] && colmap model_converter --input_path "$d/sparse/0" \
+    --output_path "$d/sparse" --output_type TXT >>"$d/log" 2>&1
+  line=$(python3 -c "import json; t = json.load(open('$d/render/truth.json'))['reference_line']
+print(','.join(str(v) for p in t['left'] for v in p), t['azimuth_deg'])")
+  start=$(date +%s.%N)
+  "$rockface" reconstruct "$d/render/left.png" "$d/render/right.png" --camera "$d/render/camera.json" \
+    --preset standard --range-pole 2.0 --reference-line "${line% *}" --azimuth "${line#* }" \
+    --out "$d/model.ply" --report "$d/report.json" >>"$d/log" 2>&1
+  end=$(date +%s.%N)
+  rockface_secs=$(echo "$end - $start" | bc)
+  python3 - "$d" "$colmap_secs" "$rockface_secs" <<'PY'
+import sys, json, math
+d, colmap_secs, rockface_secs = sys.argv[1:]
+def quat_to_R(w, x, y, z):
+    return [[1-2*(y*y+z*z), 2*(x*y-w*z), 2*(x*z+w*y)],
+            [2*(x*y+w*z), 1-2*(x*x+z*z), 2*(y*z-w*x)],
+            [2*(x*z-w*y), 2*(y*z+w*x), 1-2*(x*x+y*y)]]
+def mul(A, B): return [[sum(A[i][k]*B[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+def T(A): return [list(r) for r in zip(*A)]
+def mv(A, v): return [sum(A[i][k]*v[k] for k in range(3)) for i in range(3)]
+def sub(u, v): return [u[i]-v[i] for i in range(3)]
+def norm(v): return math.sqrt(sum(x*x for x in v))
+def angle(u, v): return math.degrees(math.acos(max(-1, min(1, sum(x*y for x, y in zip(u, v))/(norm(u)*norm(v))))))
+def rot_angle(R): return math.degrees(math.acos(max(-1, min(1, (R[0][0]+R[1][1]+R[2][2]-1)/2))))
+cams = {c['station']: c for c in json.load(open(d + '/render/truth.json'))['cameras']}
+R1, R2 = cams['left']['rotation_world_to_camera'], cams['right']['rotation_world_to_camera']
+C1, C2 = cams['left']['position'], cams['right']['position']
+Rt = mul(R2, T(R1))                 # x_right = Rt x_left + tt
+tt = mv(R2, sub(C1, C2))
+def errors(R, t): return rot_angle(mul(T(R), Rt)), angle(t, tt)
+print(f"{'who':10s} {'time_s':>8s} {'rotation_deg':>14s} {'base_dir_deg':>14s}")
+try:
+    est = {}
+    lines = [l for l in open(d + '/sparse/images.txt') if not l.startswith('#')]
+    for l in lines[0::2]:
+        f = l.split()
+        if len(f) >= 10: est[f[9]] = (quat_to_R(*map(float, f[1:5])), list(map(float, f[5:8])))
+    (Ra, ta), (Rb, tb) = est['left.png'], est['right.png']
+    R = mul(Rb, T(Ra))
+    r, b = errors(R, sub(tb, mv(R, ta)))
+    print(f"{'COLMAP':10s} {float(colmap_secs):8.2f} {r:14.4f} {b:14.4f}")
+except (OSError, KeyError):
+    print(f"{'COLMAP':10s} {float(colmap_secs):8.2f} {'failed':>14s} {'-':>14s}")
+o = json.load(open(d + '/report.json'))['orientation']
+r, b = errors(o['R'], o['t'])
+print(f"{'rockface':10s} {float(rockface_secs):8.2f} {r:14.4f} {b:14.4f}   (whole reconstruction, standard preset)")
+PY
+  exit 0
+fi
 # The temple's intrinsics (all views share K).
 read -r fx cx fy cy < <(awk 'NR==2 {print $2, $4, $6, $7}' "$data/templeSR_par.txt")
 printf "%-6s %8s %14s %16s %8s\n" pair time_s rotation_deg base_dir_deg images
