@@ -294,10 +294,19 @@ TraceNetwork TraceNetwork::build(const FreeSurface& surface, const std::vector<T
 
   // --- Stretches that run together are one (a trace marked in pieces) ---------
   UnionFind group_uf(groups.size());
-  // Traces of one scene joint whose planes coincide (located within the snap
-  // tolerance) are one discontinuity, typically the pieces of a joint's trace
-  // on neighbouring patches. Kept apart they would bound a block twice by one
-  // plane.
+  // Traces of one scene joint that meet (a point of one within the snap
+  // tolerance of the other) and whose planes coincide (located within the
+  // tolerance) are one discontinuity: typically the pieces of a joint's
+  // trace marked patch by patch. Kept apart they would bound a block twice
+  // by one plane. Parallel traces of the set that do not meet stay apart,
+  // however close their planes: they are other joints of the set.
+  auto meet = [&](const std::vector<Eigen::Vector3d>& p, const std::vector<Eigen::Vector3d>& q) {
+    double param = 0;
+    for (const auto& x : p)
+      for (size_t j = 0; j + 1 < q.size(); ++j)
+        if (distance_to_segment(x, q[j], q[j + 1], param) <= tol) return true;
+    return false;
+  };
   for (size_t a = 0; a < groups.size(); ++a)
     for (size_t b = a + 1; b < groups.size(); ++b) {
       const PlaneGroup& ga = groups[a];
@@ -305,8 +314,10 @@ TraceNetwork TraceNetwork::build(const FreeSurface& surface, const std::vector<T
       if (!ga.joint || !gb.joint || ga.joint->index != gb.joint->index ||
           ga.plane.source != TracePlaneSource::Joint || gb.plane.source != TracePlaneSource::Joint)
         continue;
-      if (std::abs(ga.plane.plane.offset - gb.plane.plane.offset) <= tol)
-        group_uf.unite(static_cast<int>(a), static_cast<int>(b));
+      if (std::abs(ga.plane.plane.offset - gb.plane.plane.offset) > tol) continue;
+      const auto& pa = traces[ga.traces.front()].points;
+      const auto& pb = traces[gb.traces.front()].points;
+      if (meet(pa, pb) || meet(pb, pa)) group_uf.unite(static_cast<int>(a), static_cast<int>(b));
     }
   std::vector<std::vector<int>> by_patch(patches.size());
   for (size_t i = 0; i < segs.size(); ++i) by_patch[segs[i].patch].push_back(static_cast<int>(i));

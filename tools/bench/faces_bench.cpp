@@ -87,7 +87,7 @@ void BM_TraceMapToBlocks(benchmark::State& state) {
   options.orientation_uncertainty = deg_to_rad(1.0);
   options.effects = &effects;
   NoProgress progress;
-  size_t loops = 0, finite = 0, removable = 0, vertices = 0;
+  size_t loops = 0, finite = 0, removable = 0, vertices = 0, islands = 0, unassembled = 0;
   for (auto _ : state) {
     const auto surface = faces::FreeSurface::build(patches, kSnap);
     const auto net = faces::TraceNetwork::build(surface, traces, {kSnap, deg_to_rad(1.0)});
@@ -96,16 +96,20 @@ void BM_TraceMapToBlocks(benchmark::State& state) {
     benchmark::DoNotOptimize(blocks.data());
     loops = found.regions().size();
     vertices = net.vertices().size();
-    finite = removable = 0;
+    finite = removable = islands = unassembled = 0;
+    for (const auto& r : found.regions()) islands += r.loops.size() > 1 ? 1 : 0;
     for (const auto& b : blocks) {
       finite += b.finite ? 1 : 0;
       removable += b.finiteness.removable.value ? 1 : 0;
+      for (const auto& n : b.notes) unassembled += n.find("not assembled") != std::string::npos;
     }
   }
   state.counters["vertices"] = static_cast<double>(vertices);
   state.counters["loops"] = static_cast<double>(loops);
   state.counters["finite"] = static_cast<double>(finite);
   state.counters["removable"] = static_cast<double>(removable);
+  state.counters["with_islands"] = static_cast<double>(islands);
+  state.counters["not_assembled"] = static_cast<double>(unassembled);
 }
 BENCHMARK(BM_TraceMapToBlocks)->Arg(50)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond);
 

@@ -225,5 +225,23 @@ TEST(TunnelFaceKeyblock, OneTracePerJointAcrossThePatchesGivesTheSameBlocks) {
   }
 }
 
+TEST(TunnelFaceKeyblock, PiecesOfAJointMergeOnlyWhereTheyMeet) {
+  // On the benched slope's lower face, three traces of the vertical set Jy
+  // whose planes lie within 3 cm (inside the 5 cm tolerance): "a" and "c"
+  // meet end to end (one joint marked in two pieces), "b" runs parallel
+  // further up and meets neither - another joint of the set.
+  using testing::on_lower_face;
+  const std::vector<TraceInput> t = {
+      {"a", joint("Jy", 90, 0, 0), {on_lower_face(4, 0.5), on_lower_face(4, 2)}},
+      {"c", joint("Jy", 90, 0, 0), {on_lower_face(4.03, 2), on_lower_face(4.03, 2.8)}},
+      {"b", joint("Jy", 90, 0, 0), {on_lower_face(4.02, 3.5), on_lower_face(4.02, 4.5)}},
+  };
+  const FreeSurface surface = FreeSurface::build(testing::benched_slope_patches(), kSnap);
+  const TraceNetwork net = TraceNetwork::build(surface, t, {kSnap, 0.0});
+  ASSERT_EQ(net.groups().size(), 2u);
+  EXPECT_EQ(net.groups()[0].traces, (std::vector<int>{0, 1}));
+  EXPECT_EQ(net.groups()[1].traces, (std::vector<int>{2}));
+}
+
 }  // namespace
 }  // namespace rockface::faces
