@@ -18,7 +18,14 @@ void write_file_atomically(const std::filesystem::path& file,
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out) throw Error(file.string() + ": cannot write the export: " + std::strerror(errno));
-    write(out);
+    try {
+      write(out);
+    } catch (...) {
+      out.close();
+      std::error_code ec;
+      std::filesystem::remove(temp, ec);
+      throw;
+    }
     out.flush();
     if (!out) {
       std::error_code ec;

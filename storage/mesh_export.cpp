@@ -1,93 +1,36 @@
 #include "storage/mesh_export.h"
 
-#include <bit>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 
 #include "core/common/error.h"
+#include "storage/export_file.h"
+#include "storage/ply_writer.h"
 
 namespace rockface::storage {
 
-namespace {
-
-static_assert(std::endian::native == std::endian::little, "PLY is written as binary_little_endian");
-
-template <typename T>
-void put(std::ofstream& out, T value) {
-  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-void check(const std::ofstream& out, const std::filesystem::path& path) {
-  if (!out) throw Error(path.string() + ": cannot write the file (disk full or no permission?)");
-}
-
-// Writes through `path.part` and renames, so a failed write never leaves a
-// truncated model in place of a good one.
-template <typename Write>
-void write_atomically(const std::filesystem::path& path, bool binary, Write write) {
-  std::filesystem::path tmp = path;
-  tmp += ".part";
-  try {
-    {
-      std::ofstream out(tmp, (binary ? std::ios::binary : std::ios::openmode{}) | std::ios::trunc);
-      check(out, path);
-      write(out);
-      out.flush();
-      check(out, path);
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) throw Error(path.string() + ": cannot write the file (" + ec.message() + ")");
-  } catch (...) {
-    std::error_code ignore;
-    std::filesystem::remove(tmp, ignore);
-    throw;
-  }
-}
-
-}  // namespace
-
 void write_ply(const std::filesystem::path& path, const photogrammetry::SurfaceMesh& mesh,
                const MeshExportOptions& o) {
-  write_atomically(path, true, [&](std::ofstream& out) {
-    const bool uv = mesh.texcoords.size() == mesh.size();
-    const std::size_t faces = o.with_faces ? mesh.triangles.size() : 0;
-    out << "ply\nformat binary_little_endian 1.0\n"
-        << "comment rockface 3D image: x East, y North, z Up\n";
-    if (!o.texture_file.empty()) out << "comment TextureFile " << o.texture_file << "\n";
-    out << "element vertex " << mesh.size() << "\n"
-        << "property double x\nproperty double y\nproperty double z\n"
-        << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-    if (uv) out << "property float texture_u\nproperty float texture_v\n";
-    out << "element face " << faces << "\n"
-        << "property list uchar int vertex_indices\n"
-        << "end_header\n";
-    for (std::size_t i = 0; i < mesh.size(); ++i) {
-      const Eigen::Vector3d p = mesh.vertices[i] + o.datum;
-      put(out, p.x());
-      put(out, p.y());
-      put(out, p.z());
-      const auto& c =
-          i < mesh.colours.size() ? mesh.colours[i] : std::array<std::uint8_t, 3>{128, 128, 128};
-      put(out, c[0]);
-      put(out, c[1]);
-      put(out, c[2]);
-      if (uv) {
-        put(out, mesh.texcoords[i].x());
-        put(out, mesh.texcoords[i].y());
-      }
-    }
-    for (std::size_t f = 0; f < faces; ++f) {
-      put(out, static_cast<std::uint8_t>(3));
-      for (int k = 0; k < 3; ++k) put(out, static_cast<std::int32_t>(mesh.triangles[f][k]));
-    }
-  });
+  PlyMeshView view;
+  view.vertices = mesh.size();
+  view.position = [&](std::size_t i) { return mesh.vertices[i]; };
+  if (mesh.colours.size() == mesh.size())
+    view.colour = [&](std::size_t i) { return mesh.colours[i]; };
+  if (mesh.texcoords.size() == mesh.size())
+    view.texcoord = [&](std::size_t i) { return mesh.texcoords[i]; };  // already v up
+  view.triangles = o.with_faces ? mesh.triangles.size() : 0;
+  view.triangle = [&](std::size_t f) { return mesh.triangles[f]; };
+  PlyOptions options;
+  options.texture_file = o.texture_file;
+  options.comment = "rockface 3D image";
+  write_file_atomically(path,
+                        [&](std::ostream& out) { write_ply_mesh(out, view, o.datum, options); });
 }
 
 void write_obj(const std::filesystem::path& path, const photogrammetry::SurfaceMesh& mesh,
                const MeshExportOptions& o) {
-  write_atomically(path, false, [&](std::ofstream& out) {
+  write_file_atomically(path, [&](std::ostream& out) {
     const bool uv = mesh.texcoords.size() == mesh.size();
     out << "# rockface 3D image: x East, y North, z Up\n";
     if (!o.texture_file.empty()) {
@@ -96,7 +39,7 @@ void write_obj(const std::filesystem::path& path, const photogrammetry::SurfaceM
       std::ofstream m(mtl, std::ios::trunc);
       m << "newmtl photo\nKa 1 1 1\nKd 1 1 1\nmap_Kd " << o.texture_file << "\n";
       m.flush();
-      check(m, mtl);
+      if (!m) throw Error(mtl.string() + ": cannot write the file (disk full or no permission?)");
       out << "mtllib " << mtl.filename().string() << "\nusemtl photo\n";
     }
     char line[160];
