@@ -75,6 +75,28 @@ std::string fmt(double v) {
 // takes 2^n of them per piece: enough for any island a geologist marks.
 constexpr size_t kMaxIslandPlanes = 10;
 
+// The patch polygon cut by the trace lines of the given joint planes: the
+// cells of their arrangement on the patch (2D, patch frame).
+std::vector<std::vector<Eigen::Vector2d>> cut_by_planes(const SurfacePatch& P,
+                                                        const std::vector<TraceBlockPlane>& planes,
+                                                        const std::vector<int>& which) {
+  std::vector<std::vector<Eigen::Vector2d>> cells{P.polygon2d};
+  for (int j : which) {
+    const geometry::Plane& pl = planes[j].plane;
+    const Eigen::Vector2d n2(pl.normal.dot(P.e1), pl.normal.dot(P.e2));
+    if (n2.norm() < kTraceOnPatchSine) continue;  // parallel to the patch: no line on it
+    const double c = pl.offset - pl.normal.dot(P.origin);
+    std::vector<std::vector<Eigen::Vector2d>> next;
+    for (const auto& cell : cells)
+      for (bool up : {true, false}) {
+        auto part = clip(cell, n2, c, up);
+        if (part.size() >= 3 && area_of(part) > 0) next.push_back(std::move(part));
+      }
+    cells = std::move(next);
+  }
+  return cells;
+}
+
 struct Piece {
   std::vector<HalfSpace> sides;  // one per block plane
   bool may_be_empty = false;     // a cell of island planes: empty ones are expected
@@ -305,56 +327,25 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
       int thickest_patch = -1;
       for (int pi : covered) {
         const SurfacePatch& P = patches[pi];
-        std::vector<std::vector<Eigen::Vector2d>> cells{P.polygon2d};
-        for (int j = 0; j < n_joints; ++j) {
-          if (island[j]) continue;  // the outer block's cells first
-          const geometry::Plane& pl = block.planes[j].plane;
-          const Eigen::Vector2d n2(pl.normal.dot(P.e1), pl.normal.dot(P.e2));
-          if (n2.norm() < kTraceOnPatchSine) continue;
-          const double c = pl.offset - pl.normal.dot(P.origin);
-          std::vector<std::vector<Eigen::Vector2d>> next;
-          for (const auto& cell : cells)
-            for (bool up : {true, false}) {
-              auto part = clip(cell, n2, c, up);
-              if (part.size() >= 3 && area_of(part) > 0) next.push_back(std::move(part));
-            }
-          cells = std::move(next);
-        }
+        std::vector<int> outer_planes;  // the outer block's cells first
+        for (int j = 0; j < n_joints; ++j)
+          if (!island[j]) outer_planes.push_back(j);
+        const auto cells = cut_by_planes(P, block.planes, outer_planes);
         std::vector<std::vector<Eigen::Vector2d>> region_polys, hole_polys;
         for (int f : region.faces) {
           if (loops.faces()[f].patch != pi) continue;
-          if (!island_planes.empty() && loops.faces()[f].area <= 0) {
-            // The outside of an island: what it encloses is the island's block.
-            std::vector<Eigen::Vector2d> poly;
-            for (int h : loops.faces()[f].half_edges)
-              poly.push_back(P.to2d(net.vertices()[net.origin(h)]));
-            hole_polys.push_back(std::move(poly));
-            continue;
-          }
           std::vector<Eigen::Vector2d> poly;
           for (int h : loops.faces()[f].half_edges)
             poly.push_back(P.to2d(net.vertices()[net.origin(h)]));
-          region_polys.push_back(std::move(poly));
+          // The outside of an island: what it encloses is the island's block.
+          const bool hole = !island_planes.empty() && loops.faces()[f].area <= 0;
+          (hole ? hole_polys : region_polys).push_back(std::move(poly));
         }
         if (!hole_polys.empty()) {
           // The island planes' sides behind each hole: the patch cut by the
           // island joints; a hole's edges are such cuts, so each cell lies
           // wholly inside or outside a hole.
-          std::vector<std::vector<Eigen::Vector2d>> icells{P.polygon2d};
-          for (int j : island_planes) {
-            const geometry::Plane& pl = block.planes[j].plane;
-            const Eigen::Vector2d n2(pl.normal.dot(P.e1), pl.normal.dot(P.e2));
-            if (n2.norm() < kTraceOnPatchSine) continue;
-            const double c = pl.offset - pl.normal.dot(P.origin);
-            std::vector<std::vector<Eigen::Vector2d>> next;
-            for (const auto& cell : icells)
-              for (bool up : {true, false}) {
-                auto part = clip(cell, n2, c, up);
-                if (part.size() >= 3 && area_of(part) > 0) next.push_back(std::move(part));
-              }
-            icells = std::move(next);
-          }
-          for (const auto& cell : icells) {
+          for (const auto& cell : cut_by_planes(P, block.planes, island_planes)) {
             Eigen::Vector2d c = Eigen::Vector2d::Zero();
             for (const auto& x : cell) c += x;
             c /= static_cast<double>(cell.size());
