@@ -55,11 +55,13 @@ void analyse_block_rotation(const blocks::Polyhedron& block, const storage::Scen
   if (analysis.rotation)
     out.rotation = rotation_report(in, kinematics::analyse_rotation(in, uncertainty));
   if (analysis.remote_axis) {
-    if (analysis.remote_axis->starts < 1)
+    const int starts =
+        analysis.remote_axis->starts.value_or(kinematics::remote_axis_starts(analysis.preset));
+    if (starts < 1)
       throw InputError("analysis.remote_axis.starts",
-                       std::to_string(analysis.remote_axis->starts) + " is not a positive number");
-    const kinematics::RemoteAxisResult r = kinematics::search_remote_axis(
-        in, {analysis.remote_axis->starts, analysis.remote_axis->seed});
+                       std::to_string(starts) + " is not a positive number");
+    const kinematics::RemoteAxisResult r =
+        kinematics::search_remote_axis(in, {starts, analysis.remote_axis->seed});
     storage::ReportRemoteAxis ra;
     ra.found = r.found;
     ra.point = r.point + block.datum();

@@ -57,7 +57,7 @@ struct SceneTrace {
 };
 
 struct SceneRemoteAxis {
-  int starts = 64;
+  std::optional<int> starts;  // none: the preset's (fast 16, standard 64, precise 256)
   unsigned seed = 1;
 };
 

@@ -232,7 +232,7 @@ SceneAnalysis read_analysis(const Reader& r, const json& doc) {
     if (!v->is_boolean()) {
       if (auto* s = r.optional(*v, p + ".remote_axis", "starts")) {
         ra.starts = r.integer(*s, p + ".remote_axis.starts");
-        if (ra.starts < 1 || ra.starts > 100000)
+        if (*ra.starts < 1 || *ra.starts > 100000)
           r.fail(p + ".remote_axis.starts", "must be between 1 and 100000");
       }
       if (auto* s = r.optional(*v, p + ".remote_axis", "seed")) {

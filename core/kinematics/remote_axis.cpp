@@ -180,6 +180,12 @@ double remote_axis_penalty(const RotationInput& in, const Eigen::Vector3d& point
   return remote_axis_feasibility(in, point, direction).penalty;
 }
 
+int remote_axis_starts(std::string_view preset) {
+  if (preset == "fast") return 16;
+  if (preset == "precise") return 256;
+  return 64;
+}
+
 RemoteAxisResult search_remote_axis(const RotationInput& in, const RemoteAxisOptions& options) {
   if (options.starts < 1)
     throw InputError("block " + in.block + ": remote_axis.starts",

@@ -2,6 +2,10 @@
 // writes into a ReportBlock, in the report's units and frame.
 #include <cmath>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
@@ -67,6 +71,28 @@ TEST(AnalyseRotationReport, OptionsOffLeaveTheReportAlone) {
   analyse_block_rotation(block, options, out);
   EXPECT_FALSE(out.rotation.has_value());
   EXPECT_FALSE(out.remote_axis.has_value());
+}
+
+TEST(AnalyseRotationReport, StartsFollowThePresetUnlessTheSceneGivesThem) {
+  const blocks::Polyhedron block = lined_block();
+  for (const auto& [preset, starts] :
+       std::vector<std::pair<std::string, int>>{{"fast", 16}, {"standard", 64}, {"precise", 256}}) {
+    storage::SceneAnalysis options;
+    options.rotation = false;
+    options.preset = preset;
+    options.remote_axis = storage::SceneRemoteAxis{};
+    storage::ReportBlock out;
+    analyse_block_rotation(block, options, out);
+    ASSERT_TRUE(out.remote_axis.has_value());
+    EXPECT_EQ(out.remote_axis->starts, starts) << preset;
+  }
+  storage::SceneAnalysis options;
+  options.rotation = false;
+  options.preset = "precise";
+  options.remote_axis = storage::SceneRemoteAxis{8, 1};  // the scene's own count wins
+  storage::ReportBlock out;
+  analyse_block_rotation(block, options, out);
+  EXPECT_EQ(out.remote_axis->starts, 8);
 }
 
 TEST(AnalyseRotationReport, BadStartCountNamesTheField) {
