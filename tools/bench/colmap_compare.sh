@@ -11,6 +11,7 @@
 #                                                same pair, errors against the render's poses
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+export BENCH_DIR="$(pwd)/tools/bench"  # pose_math.py for the Python parts
 if ! command -v colmap >/dev/null; then
   echo "colmap not installed (apt-get install colmap); nothing to compare"
   exit 0
@@ -50,19 +51,10 @@ print(','.join(str(v) for p in t['left'] for v in p), t['azimuth_deg'])")
   end=$(date +%s.%N)
   rockface_secs=$(echo "$end - $start" | bc)
   python3 - "$d" "$colmap_secs" "$rockface_secs" <<'PY'
-import sys, json, math
+import sys, json, os
+sys.path.insert(0, os.environ['BENCH_DIR'])
+from pose_math import *
 d, colmap_secs, rockface_secs = sys.argv[1:]
-def quat_to_R(w, x, y, z):
-    return [[1-2*(y*y+z*z), 2*(x*y-w*z), 2*(x*z+w*y)],
-            [2*(x*y+w*z), 1-2*(x*x+z*z), 2*(y*z-w*x)],
-            [2*(x*z-w*y), 2*(y*z+w*x), 1-2*(x*x+y*y)]]
-def mul(A, B): return [[sum(A[i][k]*B[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
-def T(A): return [list(r) for r in zip(*A)]
-def mv(A, v): return [sum(A[i][k]*v[k] for k in range(3)) for i in range(3)]
-def sub(u, v): return [u[i]-v[i] for i in range(3)]
-def norm(v): return math.sqrt(sum(x*x for x in v))
-def angle(u, v): return math.degrees(math.acos(max(-1, min(1, sum(x*y for x, y in zip(u, v))/(norm(u)*norm(v))))))
-def rot_angle(R): return math.degrees(math.acos(max(-1, min(1, (R[0][0]+R[1][1]+R[2][2]-1)/2))))
 cams = {c['station']: c for c in json.load(open(d + '/render/truth.json'))['cameras']}
 R1, R2 = cams['left']['rotation_world_to_camera'], cams['right']['rotation_world_to_camera']
 C1, C2 = cams['left']['position'], cams['right']['position']
@@ -71,11 +63,7 @@ tt = mv(R2, sub(C1, C2))
 def errors(R, t): return rot_angle(mul(T(R), Rt)), angle(t, tt)
 print(f"{'who':10s} {'time_s':>8s} {'rotation_deg':>14s} {'base_dir_deg':>14s}")
 try:
-    est = {}
-    lines = [l for l in open(d + '/sparse/images.txt') if not l.startswith('#')]
-    for l in lines[0::2]:
-        f = l.split()
-        if len(f) >= 10: est[f[9]] = (quat_to_R(*map(float, f[1:5])), list(map(float, f[5:8])))
+    est = colmap_poses(d + '/sparse/images.txt')
     (Ra, ta), (Rb, tb) = est['left.png'], est['right.png']
     R = mul(Rb, T(Ra))
     r, b = errors(R, sub(tb, mv(R, ta)))
@@ -110,33 +98,16 @@ for p in "${pairs[@]}"; do
   fi
   colmap model_converter --input_path "$d/sparse/0" --output_path "$d/sparse" --output_type TXT >>"$d/log" 2>&1
   python3 - "$d/sparse/images.txt" "$data/templeSR_par.txt" "$a" "$b" "$(echo "$end - $start" | bc)" "$p" <<'PY'
-import sys, math
+import sys, os
+sys.path.insert(0, os.environ['BENCH_DIR'])
+from pose_math import *
 images, par, a, b, secs, pair = sys.argv[1:]
-def quat_to_R(w, x, y, z):
-    return [[1-2*(y*y+z*z), 2*(x*y-w*z), 2*(x*z+w*y)],
-            [2*(x*y+w*z), 1-2*(x*x+z*z), 2*(y*z-w*x)],
-            [2*(x*z-w*y), 2*(y*z+w*x), 1-2*(x*x+y*y)]]
-def mul(A, B): return [[sum(A[i][k]*B[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
-def T(A): return [list(r) for r in zip(*A)]
-def mv(A, v): return [sum(A[i][k]*v[k] for k in range(3)) for i in range(3)]
-def sub(u, v): return [u[i]-v[i] for i in range(3)]
-def norm(v): return math.sqrt(sum(x*x for x in v))
-def angle(u, v): return math.degrees(math.acos(max(-1, min(1, sum(x*y for x, y in zip(u, v))/(norm(u)*norm(v))))))
-def rot_angle(R): return math.degrees(math.acos(max(-1, min(1, (R[0][0]+R[1][1]+R[2][2]-1)/2))))
-est = {}
-lines = [l for l in open(images) if not l.startswith('#')]
-for l in lines[0::2]:
-    f = l.split()
-    if len(f) >= 10:
-        est[f[9]] = (quat_to_R(*map(float, f[1:5])), list(map(float, f[5:8])))
+est = colmap_poses(images)
 truth = {}
 for l in open(par).readlines()[1:]:
     f = l.split()
     v = list(map(float, f[1:]))
     truth[f[0]] = ([v[9:12], v[12:15], v[15:18]], v[18:21])
-def relative(P, Q):
-    R = mul(Q[0], T(P[0]))
-    return R, sub(Q[1], mv(R, P[1]))
 if a not in est or b not in est:
     print(f"{pair:6s} {float(secs):8.2f} {'not registered':>14s} {'-':>16s} {len(est):8d}")
     sys.exit(0)
