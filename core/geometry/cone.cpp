@@ -24,7 +24,9 @@ double min_dot(const std::vector<Eigen::Vector3d>& normals, const Eigen::Vector3
   return m;
 }
 
-double safe_asin(double s) { return std::asin(std::clamp(s, -1.0, 1.0)); }
+double safe_asin(double s) {
+  return std::asin(std::clamp(s, -1.0, 1.0));
+}
 
 }  // namespace
 
@@ -35,7 +37,8 @@ Cone::Cone(const std::vector<Eigen::Vector3d>& inward_normals) {
 
 void Cone::add(const Eigen::Vector3d& inward_normal) {
   const double len = inward_normal.norm();
-  if (!(len > 0) || !std::isfinite(len)) throw std::invalid_argument("cone half-space with a zero or non-finite normal");
+  if (!(len > 0) || !std::isfinite(len))
+    throw std::invalid_argument("cone half-space with a zero or non-finite normal");
   normals_.push_back(inward_normal / len);
 }
 
@@ -112,8 +115,12 @@ double Cone::margin_of(const Eigen::Vector3d& d) const {
 }
 
 std::vector<Eigen::Vector3d> Cone::edges() const {
+  return normals_.size() < 2 ? std::vector<Eigen::Vector3d>{} : edges(margin().angle);
+}
+
+std::vector<Eigen::Vector3d> Cone::edges(double known_margin) const {
   std::vector<Eigen::Vector3d> rays;
-  if (normals_.size() < 2 || margin().angle < -kAngleEpsRad) return rays;
+  if (normals_.size() < 2 || known_margin < -kAngleEpsRad) return rays;
   const size_t m = normals_.size();
   for (size_t i = 0; i < m; ++i)
     for (size_t j = i + 1; j < m; ++j) {

@@ -141,7 +141,7 @@ CornerRotation corner_rotation(const RotationInput& in, const RotationTopology& 
                              ? exact_margin(limit_cone(r.limits, uncertainty_rad, true)).angle
                              : r.signed_margin;
   r.rotatable = decide_with_ill_posed(r.signed_margin, without, uncertainty_rad);
-  if (r.signed_margin >= -geometry::kAngleEpsRad) r.extreme_rays = r.space.edges();
+  if (r.signed_margin >= -geometry::kAngleEpsRad) r.extreme_rays = r.space.edges(m.angle);
 
   // Sliding rotation about the block-side normal of each joint through R.
   for (int j : topology.vertex_planes[vertex]) {
