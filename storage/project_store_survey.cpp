@@ -1,0 +1,359 @@
+// ProjectStore: what the geologist measured and what was analysed
+// (measurements, joints, analysis runs).
+#include "storage/project_store.h"
+
+#include <map>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/error.h"
+#include "storage/project_blobs.h"
+#include "storage/project_store_rows.h"
+
+namespace rockface::storage {
+
+using sqlite::Connection;
+using sqlite::ReadTransaction;
+using sqlite::Statement;
+using sqlite::WriteTransaction;
+using namespace rows;
+
+// ---------------------------------------------------------------- measurements
+
+std::vector<RecordId> ProjectStore::save_measurements(
+    RecordId visit_id, const std::vector<Measurement>& measurements) {
+  const std::string doing = "saving measurements";
+  require_writable(doing);
+  for (std::size_t i = 0; i < measurements.size(); ++i) {
+    const auto& m = measurements[i];
+    const std::string where = "measurements[" + std::to_string(i) + "] (" + m.label + ")";
+    if (m.points.empty()) throw InputError(where, "has no points");
+    for (const auto& p : m.points) require_finite(p, where + ".points");
+    if (m.dip_deg.has_value() != m.dipdir_deg.has_value())
+      throw InputError(where, "dip and dip direction must be given together");
+    if (m.dip_deg) require_orientation(*m.dip_deg, *m.dipdir_deg, where);
+    if (m.kind == Measurement::Kind::point_orientation && !m.dip_deg)
+      throw InputError(where, "a point orientation needs its dip and dip direction");
+    if (!m.rock_side.empty() && m.rock_side != "upper" && m.rock_side != "lower")
+      throw InputError(where + ".rock_side", "must be 'upper' or 'lower'");
+    if (!m.rock_side.empty() && m.kind != Measurement::Kind::area)
+      throw InputError(where + ".rock_side", "only an area (a free face) has a rock side");
+    require_finite(m.fit_rms_m, where + ".fit_rms_m");
+  }
+  WriteTransaction tx(db_, doing);
+  Statement st(db_,
+               "INSERT INTO measurement (visit_id, model_id, kind, label, joint_label, points, "
+               "dip, dipdir, fit_rms_m, rock_side, created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, "
+               "?, ?, ?)",
+               doing);
+  std::vector<RecordId> ids;
+  std::string labels;
+  for (const auto& m : measurements) {
+    const auto points = blobs::encode_points(m.points);
+    st.reset();
+    st.bind(1, visit_id)
+        .bind(2, m.model_id)
+        .bind(3, kind_text(m.kind))
+        .bind(4, m.label)
+        .bind(5, m.joint_label)
+        .bind_blob(6, points)
+        .bind(7, m.dip_deg)
+        .bind(8, m.dipdir_deg)
+        .bind(9, m.fit_rms_m)
+        .bind(10, m.rock_side)
+        .bind(11, or_now(m.created_at));
+    st.run();
+    ids.push_back(db_.last_insert_id());
+    labels += (labels.empty() ? "" : " ") + m.label;
+  }
+  insert_log(visit_id, "measurements saved",
+             std::to_string(measurements.size()) + " measurements: " + labels);
+  tx.commit();
+  return ids;
+}
+
+std::vector<Measurement> ProjectStore::list_measurements(std::optional<RecordId> visit_id) {
+  Statement st(db_,
+               "SELECT id, visit_id, model_id, kind, label, joint_label, points, dip, dipdir, "
+               "fit_rms_m, rock_side, created_at FROM measurement WHERE (?1 IS NULL OR "
+               "visit_id = ?1) ORDER BY id",
+               "listing measurements");
+  st.bind(1, visit_id);
+  std::vector<Measurement> out;
+  while (st.step()) {
+    Measurement m;
+    m.id = st.column_int(0);
+    const std::string where = file_.string() + ": measurement " + std::to_string(m.id);
+    m.visit_id = st.column_int(1);
+    m.model_id = optional_id(st, 2);
+    m.kind = kind_of(st.column_text(3), where);
+    m.label = st.column_text(4);
+    m.joint_label = st.column_text(5);
+    m.points = blobs::decode_points(st.column_blob(6), where);
+    m.dip_deg = st.column_optional_double(7);
+    m.dipdir_deg = st.column_optional_double(8);
+    m.fit_rms_m = st.column_double(9);
+    m.rock_side = st.column_text(10);
+    m.created_at = st.column_text(11);
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------- joints
+
+std::vector<RecordId> ProjectStore::save_joints(RecordId visit_id,
+                                                const std::vector<JointSet>& sets,
+                                                const std::vector<Joint>& joints) {
+  const std::string doing = "saving joints";
+  require_writable(doing);
+  std::set<std::string> set_labels, joint_labels;
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    const std::string where = "joint_sets[" + std::to_string(i) + "] (" + sets[i].label + ")";
+    if (sets[i].label.empty()) throw InputError(where, "has no label");
+    if (!set_labels.insert(sets[i].label).second) throw InputError(where, "label is repeated");
+    require_orientation(sets[i].dip_deg, sets[i].dipdir_deg, where);
+    require_finite(sets[i].fisher_k, where + ".fisher_k");
+  }
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    const auto& j = joints[i];
+    const std::string where = "joints[" + std::to_string(i) + "] (" + j.label + ")";
+    if (j.label.empty()) throw InputError(where, "has no label");
+    if (!joint_labels.insert(j.label).second) throw InputError(where, "label is repeated");
+    require_orientation(j.dip_deg, j.dipdir_deg, where);
+    if (j.point) require_finite(*j.point, where + ".point");
+    if (j.friction_deg) require_finite(*j.friction_deg, where + ".friction");
+    if (j.cohesion_pa) require_finite(*j.cohesion_pa, where + ".cohesion");
+  }
+
+  WriteTransaction tx(db_, doing);
+  std::map<std::string, RecordId> set_ids;
+  Statement set_st(db_,
+                   "INSERT INTO joint_set (visit_id, label, dip, dipdir, fisher_k, count) "
+                   "VALUES (?, ?, ?, ?, ?, ?)",
+                   doing);
+  for (const auto& s : sets) {
+    set_st.reset();
+    set_st.bind(1, visit_id)
+        .bind(2, s.label)
+        .bind(3, s.dip_deg)
+        .bind(4, s.dipdir_deg)
+        .bind(5, s.fisher_k)
+        .bind(6, s.count);
+    set_st.run();
+    set_ids[s.label] = db_.last_insert_id();
+  }
+  Statement find_set(db_, "SELECT id FROM joint_set WHERE visit_id = ? AND label = ?", doing);
+  Statement find_joint(db_, "SELECT 1 FROM joint WHERE visit_id = ? AND label = ?", doing);
+  Statement st(db_,
+               "INSERT INTO joint (visit_id, set_id, measurement_id, label, dip, dipdir, px, py, "
+               "pz, friction_deg, cohesion_pa, source) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+               "?)",
+               doing);
+  std::vector<RecordId> ids;
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    const auto& j = joints[i];
+    const std::string where = "joints[" + std::to_string(i) + "] (" + j.label + ")";
+    find_joint.reset();
+    find_joint.bind(1, visit_id).bind(2, j.label);
+    if (find_joint.step())
+      throw InputError(where, "visit " + std::to_string(visit_id) + " already has a joint " +
+                                  j.label + "; nothing was saved");
+    std::optional<RecordId> set_id;
+    if (!j.set_label.empty()) {
+      if (auto it = set_ids.find(j.set_label); it != set_ids.end()) {
+        set_id = it->second;
+      } else {
+        find_set.reset();
+        find_set.bind(1, visit_id).bind(2, j.set_label);
+        if (!find_set.step())
+          throw InputError(where + ".set", "no joint set '" + j.set_label + "' in visit " +
+                                               std::to_string(visit_id) + "; nothing was saved");
+        set_id = find_set.column_int(0);
+      }
+    }
+    st.reset();
+    st.bind(1, visit_id).bind(2, set_id).bind(3, j.measurement_id).bind(4, j.label);
+    st.bind(5, j.dip_deg).bind(6, j.dipdir_deg);
+    if (j.point) {
+      st.bind(7, j.point->x()).bind(8, j.point->y()).bind(9, j.point->z());
+    } else {
+      st.bind_null(7).bind_null(8).bind_null(9);
+    }
+    st.bind(10, j.friction_deg).bind(11, j.cohesion_pa).bind(12, j.source);
+    st.run();
+    ids.push_back(db_.last_insert_id());
+  }
+  insert_log(visit_id, "joints saved",
+             std::to_string(joints.size()) + " joints, " + std::to_string(sets.size()) + " sets");
+  tx.commit();
+  return ids;
+}
+
+std::vector<JointSet> ProjectStore::list_joint_sets(RecordId visit_id) {
+  Statement st(db_,
+               "SELECT id, label, dip, dipdir, fisher_k, count FROM joint_set WHERE visit_id = ? "
+               "ORDER BY id",
+               "listing joint sets");
+  st.bind(1, visit_id);
+  std::vector<JointSet> out;
+  while (st.step()) {
+    JointSet s;
+    s.id = st.column_int(0);
+    s.label = st.column_text(1);
+    s.dip_deg = st.column_double(2);
+    s.dipdir_deg = st.column_double(3);
+    s.fisher_k = st.column_double(4);
+    s.count = static_cast<int>(st.column_int(5));
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<Joint> ProjectStore::list_joints(std::optional<RecordId> visit_id) {
+  Statement st(db_,
+               "SELECT j.id, j.visit_id, j.label, s.label, j.dip, j.dipdir, j.px, j.py, j.pz, "
+               "j.friction_deg, j.cohesion_pa, j.measurement_id, j.source FROM joint j LEFT "
+               "JOIN joint_set s ON s.id = j.set_id WHERE (?1 IS NULL OR j.visit_id = ?1) "
+               "ORDER BY j.id",
+               "listing joints");
+  st.bind(1, visit_id);
+  std::vector<Joint> out;
+  while (st.step()) {
+    Joint j;
+    j.id = st.column_int(0);
+    j.visit_id = st.column_int(1);
+    j.label = st.column_text(2);
+    j.set_label = st.column_text(3);
+    j.dip_deg = st.column_double(4);
+    j.dipdir_deg = st.column_double(5);
+    if (!st.is_null(6))
+      j.point = Eigen::Vector3d(st.column_double(6), st.column_double(7), st.column_double(8));
+    j.friction_deg = st.column_optional_double(9);
+    j.cohesion_pa = st.column_optional_double(10);
+    j.measurement_id = optional_id(st, 11);
+    j.source = st.column_text(12);
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------- analyses
+
+RecordId ProjectStore::save_analysis(const AnalysisRun& run) {
+  const std::string doing = "saving a block analysis";
+  require_writable(doing);
+  for (std::size_t i = 0; i < run.blocks.size(); ++i) {
+    const auto& b = run.blocks[i];
+    const std::string where = "blocks[" + std::to_string(i) + "] (" + b.label + ")";
+    require_finite(b.volume_m3, where + ".volume");
+    if (b.fos && std::isnan(*b.fos)) throw InputError(where + ".fos", "is not a number");
+  }
+  WriteTransaction tx(db_, doing);
+  Statement st(db_,
+               "INSERT INTO analysis (visit_id, model_id, created_at, preset, effects, "
+               "effects_json) VALUES (?, ?, ?, ?, ?, ?)",
+               doing);
+  st.bind(1, run.visit_id)
+      .bind(2, run.model_id)
+      .bind(3, or_now(run.created_at))
+      .bind(4, run.preset)
+      .bind(5, nlohmann::json(run.effects).dump())
+      .bind(6, run.effects_json);
+  st.run();
+  const RecordId id = db_.last_insert_id();
+  Statement block(db_,
+                  "INSERT INTO block (analysis_id, label, source, code, volume_m3, finite, "
+                  "removable, marginal, mode, fos, report_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, "
+                  "?, ?, ?)",
+                  doing);
+  int removable = 0;
+  for (const auto& b : run.blocks) {
+    block.reset();
+    block.bind(1, id)
+        .bind(2, b.label)
+        .bind(3, b.source)
+        .bind(4, b.code)
+        .bind(5, b.volume_m3)
+        .bind(6, b.finite)
+        .bind(7, b.removable)
+        .bind(8, b.marginal)
+        .bind(9, b.mode)
+        .bind(10, b.fos)
+        .bind(11, b.report_json);
+    block.run();
+    removable += b.removable ? 1 : 0;
+  }
+  insert_log(run.visit_id, "blocks analysed",
+             "analysis " + std::to_string(id) + " (" + run.preset +
+                 "): " + std::to_string(run.blocks.size()) + " blocks, " +
+                 std::to_string(removable) + " removable");
+  tx.commit();
+  return id;
+}
+
+namespace {
+AnalysisRun read_analysis(const Statement& st, const std::string& file) {
+  AnalysisRun a;
+  a.id = st.column_int(0);
+  a.visit_id = st.column_int(1);
+  a.model_id = optional_id(st, 2);
+  a.created_at = st.column_text(3);
+  a.preset = st.column_text(4);
+  const std::string effects = st.column_text(5);
+  auto parsed = nlohmann::json::parse(effects, nullptr, false);
+  if (parsed.is_discarded() || !parsed.is_array())
+    throw Error(file + ": analysis " + std::to_string(a.id) + ": stored effects are damaged");
+  for (const auto& e : parsed) a.effects.push_back(e.is_string() ? e.get<std::string>() : e.dump());
+  a.effects_json = st.column_text(6);
+  return a;
+}
+constexpr const char* kAnalysisColumns =
+    "id, visit_id, model_id, created_at, preset, effects, effects_json";
+}  // namespace
+
+AnalysisRun ProjectStore::load_analysis(RecordId id) {
+  const std::string doing = "loading analysis " + std::to_string(id);
+  ReadTransaction snapshot(db_);
+  Statement st(db_, std::string("SELECT ") + kAnalysisColumns + " FROM analysis WHERE id = ?",
+               doing);
+  st.bind(1, id);
+  if (!st.step())
+    throw InputError(file_.string(), "no analysis " + std::to_string(id) + " in this project");
+  AnalysisRun a = read_analysis(st, file_.string());
+  Statement blocks(db_,
+                   "SELECT id, label, source, code, volume_m3, finite, removable, marginal, mode, "
+                   "fos, report_json FROM block WHERE analysis_id = ? ORDER BY id",
+                   doing);
+  blocks.bind(1, id);
+  while (blocks.step()) {
+    BlockResult b;
+    b.id = blocks.column_int(0);
+    b.label = blocks.column_text(1);
+    b.source = blocks.column_text(2);
+    b.code = blocks.column_text(3);
+    b.volume_m3 = blocks.column_double(4);
+    b.finite = blocks.column_int(5) != 0;
+    b.removable = blocks.column_int(6) != 0;
+    b.marginal = blocks.column_int(7) != 0;
+    b.mode = blocks.column_text(8);
+    b.fos = blocks.column_optional_double(9);
+    b.report_json = blocks.column_text(10);
+    a.blocks.push_back(std::move(b));
+  }
+  return a;
+}
+
+std::vector<AnalysisRun> ProjectStore::list_analyses(std::optional<RecordId> visit_id) {
+  Statement st(db_,
+               std::string("SELECT ") + kAnalysisColumns +
+                   " FROM analysis WHERE (?1 IS NULL OR visit_id = ?1) ORDER BY id",
+               "listing analyses");
+  st.bind(1, visit_id);
+  std::vector<AnalysisRun> out;
+  while (st.step()) out.push_back(read_analysis(st, file_.string()));
+  return out;
+}
+
+}  // namespace rockface::storage
