@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/blocks/construction.h"
+#include "core/blocks/mass_properties.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/faces/tolerances.h"
@@ -117,10 +118,13 @@ int local_plane(const blocks::BlockPlane& bp, const std::vector<TraceBlockPlane>
 
 // Assembles the union of convex cells that meet face to face: faces two
 // cells share (same plane, opposite sides, same corners) are inside it.
-blocks::Polyhedron union_of_cells(const std::string& id,
-                                  const std::vector<blocks::Polyhedron>& cells,
-                                  const std::vector<TraceBlockPlane>& planes,
-                                  const Eigen::Vector3d& datum) {
+struct CellUnion {
+  std::vector<Eigen::Vector3d> vertices;  // datum-relative
+  std::vector<blocks::FaceInput> faces;   // the boundary of the union
+};
+
+CellUnion union_faces(const std::vector<blocks::Polyhedron>& cells,
+                      const std::vector<TraceBlockPlane>& planes) {
   double size = 0;
   for (const auto& c : cells) size = std::max(size, c.size());
   // Cells computed separately repeat shared corners to ~1e-15 relative;
@@ -176,7 +180,44 @@ blocks::Polyhedron union_of_cells(const std::string& id,
     }
     input.push_back(std::move(fi));
   }
-  return blocks::build_block_from_faces(id, std::move(kept), input, datum);
+  return {std::move(kept), std::move(input)};
+}
+
+// Where the union is not one manifold solid without holes - cells that only
+// touch along an edge or at a corner where joints cross behind the loop, or
+// a ring of cells round a column of rock outside the block - it cannot be
+// one Polyhedron. The verdicts still follow from its pieces: it is finite
+// because every piece is bounded (with the least shut margin of the
+// pieces), and it can move only along directions that leave every joint
+// face of its boundary.
+kinematics::Finiteness union_finiteness(const CellUnion& u, double shut_margin,
+                                        double uncertainty) {
+  kinematics::Finiteness f;
+  for (const auto& face : u.faces) {
+    if (face.kind != blocks::PlaneKind::Joint) continue;
+    Eigen::Vector3d area2 = Eigen::Vector3d::Zero();  // along the outward normal
+    for (size_t k = 0; k < face.loop.size(); ++k)
+      area2 += u.vertices[face.loop[k]].cross(u.vertices[face.loop[(k + 1) % face.loop.size()]]);
+    if (!(area2.norm() > 0)) continue;
+    // Faces of one plane give one constraint (the margin search is O(m^4)).
+    const Eigen::Vector3d inward = -area2.normalized();
+    bool seen = false;
+    for (const auto& n : f.joint_pyramid.normals()) seen = seen || (n - inward).norm() < 1e-9;
+    if (!seen) f.joint_pyramid.add(inward);
+  }
+  f.jp_margin = f.joint_pyramid.margin().angle;
+  f.jp_ep_margin = -shut_margin;
+  f.finite = geometry::decide(shut_margin, uncertainty);
+  f.removable = geometry::decide(std::min(f.jp_margin, shut_margin), uncertainty);
+  return f;
+}
+
+blocks::Polyhedron union_of_cells(const std::string& id,
+                                  const std::vector<blocks::Polyhedron>& cells,
+                                  const std::vector<TraceBlockPlane>& planes,
+                                  const Eigen::Vector3d& datum) {
+  CellUnion u = union_faces(cells, planes);
+  return blocks::build_block_from_faces(id, std::move(u.vertices), u.faces, datum);
 }
 
 }  // namespace
@@ -424,6 +465,7 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
 
     // --- Geometry and verdicts.
     std::vector<blocks::Polyhedron> cells;
+    double shut_margin = std::numbers::pi / 2;  // least recession margin of the pieces
     bool unbounded = false;
     bool geometry_failed = false;
     const std::string id = "loop " + std::to_string(r);
@@ -467,6 +509,7 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
         if (block.convex)
           for (int j : cc->redundant) block.codes[0][j] = '2';
         cells.push_back(std::move(*cc->polyhedron));
+        shut_margin = std::min(shut_margin, -cc->recession_margin);
       }
     }
     if (geometry_failed) {
@@ -496,7 +539,19 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
         block.finite = block.finiteness.finite.value;
       } catch (const InputError& e) {
         block.polyhedron.reset();
+        block.analysis.reset();
         block.notes.push_back(std::string("block geometry not assembled: ") + e.what());
+        if (cells.size() > 1) {
+          block.finiteness =
+              union_finiteness(union_faces(cells, block.planes), shut_margin, block.uncertainty);
+          block.finite = block.finiteness.finite.value;
+          double volume = 0;
+          for (const auto& c : cells) volume += blocks::mass_properties(c, options.density).volume;
+          block.notes.push_back("finite as the union of " + std::to_string(cells.size()) +
+                                " bounded convex pieces (" + fmt(volume) +
+                                " m^3); removability from the joint faces of its boundary; "
+                                "no mode or factor of safety without one polyhedron");
+        }
       }
     } else if (!unbounded) {
       continue;  // every piece empty: no block behind this loop
