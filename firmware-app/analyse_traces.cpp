@@ -96,9 +96,14 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const storage::Sce
     fill_block_report(*b.polyhedron, *b.analysis, scene.analysis, rb);
     rename_joint_planes(b, net, rb);
   } else {
-    // An infinite block has no corners: its loop on the surface is what is known.
+    // An infinite block has no corners, and a finite one that is not one
+    // polyhedron has no single list of them: its loop on the surface is what
+    // is known.
     for (const auto& x : b.surface_polygon) rb.vertices.push_back(x + datum);
-    rb.notes.push_back("vertices: the loop on the free surface (the block has no finite corners)");
+    rb.notes.push_back(b.finite ? "vertices: the loop on the free surface (the block is not one "
+                                  "polyhedron)"
+                                : "vertices: the loop on the free surface (the block has no "
+                                  "finite corners)");
   }
   rb.notes.insert(rb.notes.end(), b.notes.begin(), b.notes.end());
   return rb;
