@@ -19,11 +19,7 @@
 namespace rockface::storage {
 
 namespace fs = std::filesystem;
-using sqlite::Connection;
-using sqlite::ReadTransaction;
-using sqlite::Statement;
-using sqlite::WriteTransaction;
-using namespace rows;
+using namespace rows;  // row helpers and the SQLite wrappers
 
 std::string utc_now_iso8601() {
   const auto now = std::chrono::system_clock::now();

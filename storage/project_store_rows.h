@@ -18,7 +18,11 @@ std::string utc_now_iso8601();
 
 namespace rows {
 
+// The SQLite wrappers every ProjectStore file uses.
+using sqlite::Connection;
+using sqlite::ReadTransaction;
 using sqlite::Statement;
+using sqlite::WriteTransaction;
 
 inline std::string or_now(const std::string& stamp) {
   return stamp.empty() ? utc_now_iso8601() : stamp;

@@ -13,11 +13,7 @@
 
 namespace rockface::storage {
 
-using sqlite::Connection;
-using sqlite::ReadTransaction;
-using sqlite::Statement;
-using sqlite::WriteTransaction;
-using namespace rows;
+using namespace rows;  // row helpers and the SQLite wrappers
 
 // ---------------------------------------------------------------- measurements
 

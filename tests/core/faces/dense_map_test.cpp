@@ -13,24 +13,18 @@
 #include "core/faces/trace_network.h"
 #include "core/kinematics/effect_gravity.h"
 #include "tests/core/faces/random_slope.h"
+#include "tests/core/faces/trace_map_run.h"
 
 namespace rockface::faces {
 namespace {
 
 TEST(DenseMap, EveryLoopGetsAVerdictEvenWhereItsBlockIsNotOneSolid) {
   using testing::kSnap;
-  const FreeSurface surface = FreeSurface::build(testing::random_slope(), kSnap);
-  const auto traces = testing::random_traces(surface, 1000, 11);
-  const TraceNetwork net = TraceNetwork::build(surface, traces, {kSnap, deg_to_rad(1.0)});
-  const SurfaceLoops loops = SurfaceLoops::find(net, surface);
-  kinematics::Effects effects;
-  effects.push_back(std::make_unique<kinematics::GravityEffect>(Eigen::Vector3d(0, 0, -9.81)));
-  TraceBlockOptions options;
-  options.snap_tolerance = kSnap;
-  options.orientation_uncertainty = deg_to_rad(1.0);
-  options.effects = &effects;
-  NoProgress progress;
-  const auto blocks = trace_blocks(surface, net, loops, options, progress);
+  const FreeSurface probe = FreeSurface::build(testing::random_slope(), kSnap);
+  const auto traces = testing::random_traces(probe, 1000, 11);
+  const auto blocks = testing::run_trace_map(testing::random_slope(), traces, kSnap,
+                                             deg_to_rad(1.0), deg_to_rad(1.0))
+                          .blocks;
   ASSERT_GT(blocks.size(), 1000u);
   int not_one_solid = 0;
   for (const auto& b : blocks) {

@@ -10,6 +10,7 @@
 #include "core/faces/trace_network.h"
 #include "core/kinematics/effect_gravity.h"
 #include "tests/core/faces/benched_slope.h"
+#include "tests/core/faces/trace_map_run.h"
 
 namespace rockface::faces {
 namespace {
@@ -23,21 +24,9 @@ constexpr double kSnap = 0.05;
 
 std::vector<TraceBlock> blocks_of(const std::vector<TraceInput>& traces,
                                   std::vector<std::string>* notes = nullptr) {
-  const FreeSurface surface = FreeSurface::build(benched_slope_patches(), kSnap);
-  const TraceNetwork net = TraceNetwork::build(surface, traces, {kSnap, 0.0});
-  const SurfaceLoops loops = SurfaceLoops::find(net, surface);
-  static kinematics::Effects effects = [] {
-    kinematics::Effects e;
-    e.push_back(std::make_unique<kinematics::GravityEffect>(Eigen::Vector3d(0, 0, -9.81)));
-    return e;
-  }();
-  TraceBlockOptions options;
-  options.snap_tolerance = kSnap;
-  options.orientation_uncertainty = deg_to_rad(1.0);
-  options.effects = &effects;
-  NoProgress progress;
-  if (notes) *notes = net.notes();
-  return trace_blocks(surface, net, loops, options, progress);
+  auto run = testing::run_trace_map(benched_slope_patches(), traces, kSnap, 0.0, deg_to_rad(1.0));
+  if (notes) *notes = run.notes;
+  return std::move(run.blocks);
 }
 
 std::vector<std::string> ids_of(const TraceBlock& b, const std::vector<TraceInput>& traces) {
@@ -213,18 +202,9 @@ TEST(TraceBlocks, NonConvexPatchGivesTheSameBlocksAsItsConvexOriginal) {
                         V(3, 20, 6),         V(0, 20, 0)};
   const auto traces = testing::benched_slope_traces();
   const std::vector<TraceBlock> ref = blocks_of(traces);
-  const FreeSurface surface = FreeSurface::build(notched, kSnap);
-  ASSERT_GT(surface.patches().size(), 5u);
-  const TraceNetwork net = TraceNetwork::build(surface, traces, {kSnap, 0.0});
-  const SurfaceLoops loops = SurfaceLoops::find(net, surface);
-  kinematics::Effects effects;
-  effects.push_back(std::make_unique<kinematics::GravityEffect>(Eigen::Vector3d(0, 0, -9.81)));
-  TraceBlockOptions options;
-  options.snap_tolerance = kSnap;
-  options.orientation_uncertainty = deg_to_rad(1.0);
-  options.effects = &effects;
-  NoProgress progress;
-  const auto got = trace_blocks(surface, net, loops, options, progress);
+  const auto run = testing::run_trace_map(notched, traces, kSnap, 0.0, deg_to_rad(1.0));
+  ASSERT_GT(run.surface_patches, 5u);
+  const auto& got = run.blocks;
   ASSERT_EQ(got.size(), ref.size());
   int over_a_seam = 0;
   for (size_t k = 0; k < ref.size(); ++k) {

@@ -18,6 +18,7 @@
 #include "core/faces/trace_network.h"
 #include "core/kinematics/effect_gravity.h"
 #include "tests/core/faces/benched_slope.h"
+#include "tests/core/faces/trace_map_run.h"
 
 namespace rockface::faces {
 namespace {
@@ -70,26 +71,8 @@ std::vector<TraceInput> traces_patch_by_patch() {
   return out;
 }
 
-struct Result {
-  std::vector<TraceBlock> blocks;
-  std::vector<std::string> notes;
-};
-
-Result analyse(const std::vector<TraceInput>& traces) {
-  static kinematics::Effects effects = [] {
-    kinematics::Effects e;
-    e.push_back(std::make_unique<kinematics::GravityEffect>(V(0, 0, -9.81)));
-    return e;
-  }();
-  const FreeSurface surface = FreeSurface::build(heading(), kSnap);
-  const TraceNetwork net = TraceNetwork::build(surface, traces, {kSnap, deg_to_rad(1.0)});
-  const SurfaceLoops loops = SurfaceLoops::find(net, surface);
-  TraceBlockOptions options;
-  options.snap_tolerance = kSnap;
-  options.orientation_uncertainty = deg_to_rad(1.0);
-  options.effects = &effects;
-  NoProgress progress;
-  return {trace_blocks(surface, net, loops, options, progress), net.notes()};
+testing::TraceMapRun analyse(const std::vector<TraceInput>& traces) {
+  return testing::run_trace_map(heading(), traces, kSnap, deg_to_rad(1.0), deg_to_rad(1.0));
 }
 
 // Where the face patch's plane meets two joints.
@@ -107,7 +90,7 @@ geometry::Plane patch_plane(const PatchInput& p) {
 TEST(TunnelFaceKeyblock, OneFiniteBlockWithItsApexWhereTheJointsMeet) {
   const auto traces = traces_patch_by_patch();
   ASSERT_GE(traces.size(), 9u);  // each joint crosses at least three patches
-  const Result r = analyse(traces);
+  const auto r = analyse(traces);
   std::vector<const TraceBlock*> finite;
   for (const auto& b : r.blocks) {
     // The pieces of one joint are one plane: three joint digits at most.
@@ -180,7 +163,7 @@ TEST(TunnelFaceKeyblock, OneTracePerJointAcrossThePatchesGivesTheSameBlocks) {
   // The same joints marked as one polyline each, running over the patch
   // edges, instead of one trace per patch.
   const auto pieces = traces_patch_by_patch();
-  const Result ref = analyse(pieces);
+  const auto ref = analyse(pieces);
   std::vector<TraceInput> joined;
   for (const TraceJoint& j : joints()) {
     TraceInput t{j.id, j, {}};
@@ -212,7 +195,7 @@ TEST(TunnelFaceKeyblock, OneTracePerJointAcrossThePatchesGivesTheSameBlocks) {
     }
     joined.push_back(t);
   }
-  const Result got = analyse(joined);
+  const auto got = analyse(joined);
   ASSERT_EQ(got.blocks.size(), ref.blocks.size());
   for (size_t k = 0; k < ref.blocks.size(); ++k) {
     EXPECT_EQ(got.blocks[k].finite, ref.blocks[k].finite);
