@@ -7,6 +7,7 @@
 #include "core/common/error.h"
 #include "core/photogrammetry/camera_cv.h"
 #include "core/photogrammetry/reconstruction.h"
+#include "tests/core/photogrammetry/noise_texture.h"
 
 namespace rp = rockface::photogrammetry;
 
@@ -24,17 +25,8 @@ rp::CameraIntrinsics camera() {
 
 // A rock-like texture: noise blurred at two scales.
 cv::Mat texture(int seed) {
-  cv::Mat a(480, 640, CV_8UC1), b(480, 640, CV_8UC1);
-  cv::RNG rng(seed);
-  rng.fill(a, cv::RNG::UNIFORM, 0, 256);
-  rng.fill(b, cv::RNG::UNIFORM, 0, 256);
-  cv::GaussianBlur(a, a, cv::Size(0, 0), 1.2);
-  cv::GaussianBlur(b, b, cv::Size(0, 0), 6.0);
-  cv::Mat t;
-  cv::addWeighted(a, 0.6, b, 0.4, 0, t);
-  cv::normalize(t, t, 0, 255, cv::NORM_MINMAX);
   cv::Mat bgr;
-  cv::cvtColor(t, bgr, cv::COLOR_GRAY2BGR);
+  cv::cvtColor(rockface::test::noise_texture(640, 480, seed, 1.2, 6.0), bgr, cv::COLOR_GRAY2BGR);
   return bgr;
 }
 

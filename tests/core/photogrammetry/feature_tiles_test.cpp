@@ -11,29 +11,16 @@
 
 #include "core/photogrammetry/feature_matching.h"
 #include "core/photogrammetry/preset.h"
+#include "tests/core/photogrammetry/noise_texture.h"
 
 namespace rp = rockface::photogrammetry;
 
 namespace {
 
-// Rock-like texture at two blur scales, 2400 x 1000 (2.4 Mpx: a 2 x 2 grid of
-// tiles), cut twice with a known shift.
-cv::Mat texture(int width, int height, int seed) {
-  cv::Mat a(height, width, CV_8UC1), b(height, width, CV_8UC1);
-  cv::RNG rng(seed);
-  rng.fill(a, cv::RNG::UNIFORM, 0, 256);
-  rng.fill(b, cv::RNG::UNIFORM, 0, 256);
-  cv::GaussianBlur(a, a, cv::Size(0, 0), 1.5);
-  cv::GaussianBlur(b, b, cv::Size(0, 0), 8.0);
-  cv::Mat t;
-  cv::addWeighted(a, 0.6, b, 0.4, 0, t);
-  cv::normalize(t, t, 0, 255, cv::NORM_MINMAX);
-  return t;
-}
-
 TEST(FeatureTiles, TiledDetectionMatchesAKnownShiftOverTheWholeImage) {
   const int w = 2400, h = 1000, dx = 37, dy = 11;
-  const cv::Mat big = texture(w + dx, h + dy, 5);
+  // 2400 x 1000 (2.4 Mpx: a 2 x 2 grid of tiles), cut twice with a known shift.
+  const cv::Mat big = rockface::test::noise_texture(w + dx, h + dy, 5, 1.5, 8.0);
   const cv::Mat left = big(cv::Rect(dx, dy, w, h)).clone();
   const cv::Mat right =
       big(cv::Rect(0, 0, w, h)).clone();  // left pixel (x, y) is right (x+dx, y+dy)
