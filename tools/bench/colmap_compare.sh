@@ -22,6 +22,20 @@ pairs=("$@")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
+# COLMAP's sparse two-view reconstruction of DIR/images with the camera
+# fixed: run_colmap DIR MODEL PARAMS. Leaves DIR/sparse/0 when it registers
+# the pair, and its log in DIR/log.
+run_colmap() {
+  local d="$1" model="$2" params="$3"
+  colmap feature_extractor --database_path "$d/db" --image_path "$d/images" \
+    --ImageReader.camera_model "$model" --ImageReader.single_camera 1 \
+    --ImageReader.camera_params "$params" --SiftExtraction.use_gpu 0 >"$d/log" 2>&1
+  colmap exhaustive_matcher --database_path "$d/db" --SiftMatching.use_gpu 0 >>"$d/log" 2>&1
+  colmap mapper --database_path "$d/db" --image_path "$d/images" --output_path "$d/sparse" \
+    --Mapper.init_min_num_inliers 30 --Mapper.ba_refine_focal_length 0 \
+    --Mapper.ba_refine_principal_point 0 --Mapper.ba_refine_extra_params 0 >>"$d/log" 2>&1 || true
+}
+
 if [ "${pairs[0]}" = synthetic ]; then
   rockface=build/release/rockface
   d="$work/synthetic"; mkdir -p "$d/images" "$d/sparse"
@@ -31,13 +45,7 @@ if [ "${pairs[0]}" = synthetic ]; then
   params=$(python3 -c "import json; c = json.load(open('$d/render/camera.json')); k = c['distortion']
 print(','.join(str(v) for v in [c['fx'], c['fy'], c['cx'], c['cy'], k[0], k[1], k[2], k[3]]))")
   start=$(date +%s.%N)
-  colmap feature_extractor --database_path "$d/db" --image_path "$d/images" \
-    --ImageReader.camera_model OPENCV --ImageReader.single_camera 1 \
-    --ImageReader.camera_params "$params" --SiftExtraction.use_gpu 0 >"$d/log" 2>&1
-  colmap exhaustive_matcher --database_path "$d/db" --SiftMatching.use_gpu 0 >>"$d/log" 2>&1
-  colmap mapper --database_path "$d/db" --image_path "$d/images" --output_path "$d/sparse" \
-    --Mapper.init_min_num_inliers 30 --Mapper.ba_refine_focal_length 0 \
-    --Mapper.ba_refine_principal_point 0 --Mapper.ba_refine_extra_params 0 >>"$d/log" 2>&1 || true
+  run_colmap "$d" OPENCV "$params"
   end=$(date +%s.%N)
   colmap_secs=$(echo "$end - $start" | bc)
   [ -d "$d/sparse/0" ] && colmap model_converter --input_path "$d/sparse/0" \
@@ -84,13 +92,7 @@ for p in "${pairs[@]}"; do
   d="$work/$p"; mkdir -p "$d/images" "$d/sparse"
   cp "$data/$a" "$data/$b" "$d/images/"
   start=$(date +%s.%N)
-  colmap feature_extractor --database_path "$d/db" --image_path "$d/images" \
-    --ImageReader.camera_model PINHOLE --ImageReader.single_camera 1 \
-    --ImageReader.camera_params "$fx,$fy,$cx,$cy" --SiftExtraction.use_gpu 0 >"$d/log" 2>&1
-  colmap exhaustive_matcher --database_path "$d/db" --SiftMatching.use_gpu 0 >>"$d/log" 2>&1
-  colmap mapper --database_path "$d/db" --image_path "$d/images" --output_path "$d/sparse" \
-    --Mapper.init_min_num_inliers 30 --Mapper.ba_refine_focal_length 0 \
-    --Mapper.ba_refine_principal_point 0 --Mapper.ba_refine_extra_params 0 >>"$d/log" 2>&1 || true
+  run_colmap "$d" PINHOLE "$fx,$fy,$cx,$cy"
   end=$(date +%s.%N)
   if [ ! -d "$d/sparse/0" ]; then
     printf "%-6s %8.2f %14s %16s %8s\n" "$p" "$(echo "$end - $start" | bc)" failed - 0
