@@ -212,14 +212,6 @@ kinematics::Finiteness union_finiteness(const CellUnion& u, double shut_margin,
   return f;
 }
 
-blocks::Polyhedron union_of_cells(const std::string& id,
-                                  const std::vector<blocks::Polyhedron>& cells,
-                                  const std::vector<TraceBlockPlane>& planes,
-                                  const Eigen::Vector3d& datum) {
-  CellUnion u = union_faces(cells, planes);
-  return blocks::build_block_from_faces(id, std::move(u.vertices), u.faces, datum);
-}
-
 }  // namespace
 
 std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetwork& net,
@@ -517,10 +509,14 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
       continue;
     }
     if (!unbounded && !cells.empty()) {
+      // The boundary of a union of pieces, kept for the verdicts should it
+      // not make one polyhedron.
+      std::optional<CellUnion> united;
+      if (cells.size() > 1) united = union_faces(cells, block.planes);
       try {
-        block.polyhedron = cells.size() == 1
-                               ? std::move(cells.front())
-                               : union_of_cells(id, cells, block.planes, options.datum);
+        block.polyhedron = united ? blocks::build_block_from_faces(id, united->vertices,
+                                                                   united->faces, options.datum)
+                                  : std::move(cells.front());
         kinematics::BlockAnalysisInput in;
         in.density = options.density;
         in.effects = options.effects;
@@ -541,9 +537,8 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
         block.polyhedron.reset();
         block.analysis.reset();
         block.notes.push_back(std::string("block geometry not assembled: ") + e.what());
-        if (cells.size() > 1) {
-          block.finiteness =
-              union_finiteness(union_faces(cells, block.planes), shut_margin, block.uncertainty);
+        if (united) {
+          block.finiteness = union_finiteness(*united, shut_margin, block.uncertainty);
           block.finite = block.finiteness.finite.value;
           double volume = 0;
           for (const auto& c : cells) volume += blocks::mass_properties(c, options.density).volume;
