@@ -5,6 +5,7 @@
 #include <limits>
 #include <queue>
 
+#include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.h"
