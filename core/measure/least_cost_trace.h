@@ -2,9 +2,10 @@
 // Semi-automatic tracing: the user taps the two ends of a trace and the path
 // between them follows the discontinuity, as the least-cost 8-connected path
 // (Dijkstra) through the photograph within a corridor around the straight
-// line. The cost is chosen per trace: darkness (a joint trace is a dark
-// shadow line), image gradient (an edge: a step in brightness), or surface
-// curvature (a sharp fold of the 3D image, from the mesh).
+// line. The cost is chosen per trace: darkness (a joint trace is a thin line
+// darker than its surroundings), image gradient (an edge: a step in
+// brightness), or surface curvature (a sharp fold of the 3D image, from the
+// mesh).
 #include <string>
 #include <vector>
 

@@ -40,10 +40,37 @@ double independent_points(const geometry::PlaneFit& fit, double correlation_leng
   return std::clamp(std::sqrt(12.0) * fit.spread(2) / correlation_length, 3.0, n);
 }
 
+// Least squares with outliers dropped (tolerances.h: kOutlierInSigmas);
+// `kept` marks the points used.
 PlaneEstimate plane_of_points(const std::vector<Eigen::Vector3d>& points,
-                              const MeasureSettings& settings) {
+                              const MeasureSettings& settings, std::vector<char>* kept = nullptr) {
   PlaneEstimate e;
-  e.fit = geometry::fit_plane(points);
+  std::vector<char> in(points.size(), 1);
+  std::vector<Eigen::Vector3d> used = points;
+  e.fit = geometry::fit_plane(used);
+  for (int round = 0; round < 3 && used.size() > 3; ++round) {
+    std::vector<double> residual;
+    for (const auto& p : points) residual.push_back(std::abs(e.fit.plane().signed_distance(p)));
+    std::vector<double> sorted;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (in[i]) sorted.push_back(residual[i]);
+    auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
+    std::nth_element(sorted.begin(), mid, sorted.end());
+    // 1.4826 x the median absolute residual: the sigma of normal residuals.
+    const double scale = std::max(settings.point_sigma, 1.4826 * *mid);
+    used.clear();
+    bool changed = false;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const char keep = residual[i] <= kOutlierInSigmas * scale;
+      changed = changed || keep != in[i];
+      in[i] = keep;
+      if (keep) used.push_back(points[i]);
+    }
+    if (!changed || used.size() < 3) break;
+    e.fit = geometry::fit_plane(used);
+  }
+  e.outliers = points.size() - e.fit.count;
+  if (kept) *kept = in;
   e.orientation = e.fit.orientation();
   const double n = independent_points(e.fit, settings.correlation_length);
   // The scatter seen off the plane, if larger than the predicted noise, is
@@ -87,21 +114,31 @@ Eigen::Vector3d local_normal(const MeshPicker& picker, const Eigen::Vector3d& p,
 PlaneEstimate fit_trace_plane(const std::vector<Eigen::Vector3d>& points,
                               const std::vector<Eigen::Vector3d>& surface_normals,
                               const MeasureSettings& settings) {
-  PlaneEstimate e = plane_of_points(points, settings);
+  std::vector<char> kept;
+  PlaneEstimate e = plane_of_points(points, settings, &kept);
   const double sigma = settings.point_sigma;
   if (e.fit.count < 3) {
     e.problem = "orientation unknown: fewer than three points on the surface";
     return e;
   }
+  if (static_cast<double>(e.outliers) > kMaxOutlierFraction * static_cast<double>(points.size())) {
+    e.problem = "orientation unknown: the trace is not planar (" + std::to_string(e.outliers) +
+                " of " + std::to_string(points.size()) + " points far off its best-fit plane)";
+    return e;
+  }
   // The face the trace was drawn on: the mean of its surface normals.
   Eigen::Vector3d face = Eigen::Vector3d::Zero();
-  for (const auto& n : surface_normals)
-    if (n.allFinite() && n.squaredNorm() > 0) face += face.dot(n) < 0 ? -n : n;
+  for (std::size_t i = 0; i < surface_normals.size(); ++i) {
+    const Eigen::Vector3d& n = surface_normals[i];
+    if (i < kept.size() && kept[i] && n.allFinite() && n.squaredNorm() > 0)
+      face += face.dot(n) < 0 ? -n : n;
+  }
   if (face.squaredNorm() > 0) {
     face.normalize();
     double sum = 0;
-    for (const auto& p : points) sum += std::pow((p - e.fit.centroid).dot(face), 2);
-    e.relief_off_face = std::sqrt(sum / static_cast<double>(points.size()));
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (kept[i]) sum += std::pow((points[i] - e.fit.centroid).dot(face), 2);
+    e.relief_off_face = std::sqrt(sum / static_cast<double>(e.fit.count));
   } else {
     e.relief_off_face = e.fit.relief();
   }
@@ -134,6 +171,10 @@ PlaneEstimate fit_trace_plane(const std::vector<Eigen::Vector3d>& points,
     return e;
   }
   e.known = true;
+  if (e.outliers > 0)
+    e.problem = std::to_string(e.outliers) + " of " + std::to_string(points.size()) +
+                " points left out of the fit (off the plane: a step of the face or something in "
+                "front of it)";
   return e;
 }
 

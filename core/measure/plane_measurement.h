@@ -38,7 +38,8 @@ struct MeasureSettings {
 // The plane behind a measurement, or why there is none.
 struct PlaneEstimate {
   bool known = false;
-  geometry::PlaneFit fit;                  // always filled (centroid, spreads)
+  geometry::PlaneFit fit;                  // of the points kept (centroid, spreads); always filled
+  std::size_t outliers = 0;                // points dropped by the robust fit (tolerances.h)
   geometry::PlaneOrientation orientation;  // radians; meaningful when known
   double sigma = 0;  // radians: one standard deviation of the normal (when known)
   // Trace only: RMS spread of the points along the local surface normal (m),

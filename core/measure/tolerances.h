@@ -21,6 +21,14 @@ inline constexpr double kMinReliefInSigmas = 3.0;
 // jumped to another surface).
 inline constexpr double kMaxPlanarityInSigmas = 4.0;
 
+// Robust fit: points farther from the plane than this many sigmas (the
+// larger of the point precision and the residuals' robust spread) are
+// dropped and the plane refitted: picks across a step of the face, or onto
+// something in front of it. When more than kMaxOutlierFraction of the
+// points go, the trace is not one plane.
+inline constexpr double kOutlierInSigmas = 3.0;
+inline constexpr double kMaxOutlierFraction = 0.25;
+
 // Densification of a picked polyline: one pick every this many pixels of
 // the photograph, so that a trace of a few taps still gives the fit its
 // hundreds of points.
