@@ -156,6 +156,17 @@ struct Measurement {
   // lies relative to its plane ("upper" or "lower", SCENE.md); empty otherwise.
   std::string rock_side;
   std::string created_at;
+  // Where it was measured, so that it can be shown again: the photograph
+  // ("left" | "right" of capture photo_capture_id, or a view name) and the
+  // pixels picked in it (the taps, or the traced path); empty when the
+  // points were given, not picked.
+  std::string photo;
+  std::optional<RecordId> photo_capture_id;
+  std::vector<Eigen::Vector2d> pixels;
+  std::optional<double> sigma_deg;       // one sigma of the plane's normal, when fitted
+  std::optional<double> trace_length_m;  // trace: length along its points
+  bool censored = false;  // trace: an end leaves the mapped area (the length is a lower bound)
+  std::string note;       // why the orientation is unknown, or a warning about the fit
 };
 
 struct JointSet {
@@ -164,6 +175,12 @@ struct JointSet {
   double dip_deg = 0, dipdir_deg = 0;
   double fisher_k = 0;  // Fisher concentration, 0 if not computed
   int count = 0;
+  std::optional<double> alpha95_deg;  // 95 % cone of confidence of the mean pole
+  std::optional<double> spacing_m;    // mean spacing normal to the set
+  std::optional<double> mean_trace_length_m;
+  int censored_traces = 0;              // traces leaving the mapped area
+  std::optional<double> persistence_m;  // where it can be estimated
+  std::string note;                     // the censoring stated in words
 };
 
 struct Joint {
@@ -176,6 +193,10 @@ struct Joint {
   std::optional<double> friction_deg, cohesion_pa;
   std::optional<RecordId> measurement_id;  // the trace or point it was fitted from
   std::string source;                      // "trace T3", "manual", "scene"
+  // What was measured (the "type" column of Dips): "trace", "area", "point"
+  // or empty (given, not measured).
+  std::string type;
+  std::optional<double> persistence_m;  // its trace length, when measured
 };
 
 // One analysed block: the key columns for lists and queries plus the block's

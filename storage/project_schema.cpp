@@ -196,11 +196,31 @@ CREATE INDEX capture_by_left_image ON capture(left_image_id);
 CREATE INDEX capture_by_right_image ON capture(right_image_id);
 )sql";
 
+// Version 3: what measuring on the 3D image adds (core/measure). Columns
+// only, so ALTER TABLE suffices; old rows get "not measured" defaults.
+constexpr const char* kVersion2To3 = R"sql(
+ALTER TABLE measurement ADD COLUMN photo TEXT NOT NULL DEFAULT '';
+ALTER TABLE measurement ADD COLUMN photo_capture_id INTEGER REFERENCES capture(id);
+ALTER TABLE measurement ADD COLUMN pixels TEXT NOT NULL DEFAULT '[]';
+ALTER TABLE measurement ADD COLUMN sigma_deg REAL;
+ALTER TABLE measurement ADD COLUMN trace_length_m REAL;
+ALTER TABLE measurement ADD COLUMN censored INTEGER NOT NULL DEFAULT 0;
+ALTER TABLE measurement ADD COLUMN note TEXT NOT NULL DEFAULT '';
+ALTER TABLE joint_set ADD COLUMN alpha95_deg REAL;
+ALTER TABLE joint_set ADD COLUMN spacing_m REAL;
+ALTER TABLE joint_set ADD COLUMN mean_trace_length_m REAL;
+ALTER TABLE joint_set ADD COLUMN censored_traces INTEGER NOT NULL DEFAULT 0;
+ALTER TABLE joint_set ADD COLUMN persistence_m REAL;
+ALTER TABLE joint_set ADD COLUMN note TEXT NOT NULL DEFAULT '';
+ALTER TABLE joint ADD COLUMN type TEXT NOT NULL DEFAULT '';
+ALTER TABLE joint ADD COLUMN persistence_m REAL;
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
-constexpr Step kSteps[] = {{2, kVersion1To2}};
+constexpr Step kSteps[] = {{2, kVersion1To2}, {3, kVersion2To3}};
 
 }  // namespace
 

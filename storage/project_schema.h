@@ -10,6 +10,9 @@
 //   2  images in their own table, shared by identical bytes: replaying the
 //      same capture folder into a project a second time (a second visit) adds
 //      capture rows, not a second copy of 20 MB of JPEGs.
+//   3  measurements keep their photo and pixels, the plane's sigma, the trace
+//      length and its censoring; joint sets their alpha95, spacing, trace
+//      length and persistence; joints their type and persistence (issue 12).
 #include <cstdint>
 
 #include "storage/project_sqlite.h"
@@ -18,7 +21,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 2;
+constexpr int kCurrentVersion = 3;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then

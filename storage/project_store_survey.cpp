@@ -15,6 +15,30 @@ namespace rockface::storage {
 
 using namespace rows;  // row helpers and the SQLite wrappers
 
+namespace {
+
+// Picked pixels as JSON text ([[u, v], ...]): a few hundred at most per
+// measurement, readable with any SQLite tool.
+std::string pixels_text(const std::vector<Eigen::Vector2d>& pixels) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& p : pixels) a.push_back({p.x(), p.y()});
+  return a.dump();
+}
+
+std::vector<Eigen::Vector2d> pixels_of(const std::string& text, const std::string& where) {
+  const auto a = nlohmann::json::parse(text, nullptr, false);
+  std::vector<Eigen::Vector2d> out;
+  bool ok = a.is_array();
+  for (std::size_t i = 0; ok && i < a.size(); ++i) {
+    ok = a[i].is_array() && a[i].size() == 2 && a[i][0].is_number() && a[i][1].is_number();
+    if (ok) out.emplace_back(a[i][0].get<double>(), a[i][1].get<double>());
+  }
+  if (!ok) throw Error(where + ": stored pixels are damaged");
+  return out;
+}
+
+}  // namespace
+
 // ---------------------------------------------------------------- measurements
 
 std::vector<RecordId> ProjectStore::save_measurements(
@@ -36,12 +60,19 @@ std::vector<RecordId> ProjectStore::save_measurements(
     if (!m.rock_side.empty() && m.kind != Measurement::Kind::area)
       throw InputError(where + ".rock_side", "only an area (a free face) has a rock side");
     require_finite(m.fit_rms_m, where + ".fit_rms_m");
+    for (const auto& px : m.pixels)
+      if (!px.allFinite()) throw InputError(where + ".pixels", "a pixel is not a number");
+    if (!m.pixels.empty() && m.photo.empty())
+      throw InputError(where + ".photo", "pixels need the photo they were picked in");
+    if (m.sigma_deg) require_finite(*m.sigma_deg, where + ".sigma_deg");
+    if (m.trace_length_m) require_finite(*m.trace_length_m, where + ".trace_length_m");
   }
   WriteTransaction tx(db_, doing);
   Statement st(db_,
                "INSERT INTO measurement (visit_id, model_id, kind, label, joint_label, points, "
-               "dip, dipdir, fit_rms_m, rock_side, created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, "
-               "?, ?, ?)",
+               "dip, dipdir, fit_rms_m, rock_side, created_at, photo, photo_capture_id, pixels, "
+               "sigma_deg, trace_length_m, censored, note) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+               "?, ?, ?, ?, ?, ?, ?, ?)",
                doing);
   std::vector<RecordId> ids;
   std::string labels;
@@ -58,7 +89,14 @@ std::vector<RecordId> ProjectStore::save_measurements(
         .bind(8, m.dipdir_deg)
         .bind(9, m.fit_rms_m)
         .bind(10, m.rock_side)
-        .bind(11, or_now(m.created_at));
+        .bind(11, or_now(m.created_at))
+        .bind(12, m.photo)
+        .bind(13, m.photo_capture_id)
+        .bind(14, pixels_text(m.pixels))
+        .bind(15, m.sigma_deg)
+        .bind(16, m.trace_length_m)
+        .bind(17, m.censored)
+        .bind(18, m.note);
     st.run();
     ids.push_back(db_.last_insert_id());
     labels += (labels.empty() ? "" : " ") + m.label;
@@ -72,7 +110,8 @@ std::vector<RecordId> ProjectStore::save_measurements(
 std::vector<Measurement> ProjectStore::list_measurements(std::optional<RecordId> visit_id) {
   Statement st(db_,
                "SELECT id, visit_id, model_id, kind, label, joint_label, points, dip, dipdir, "
-               "fit_rms_m, rock_side, created_at FROM measurement WHERE (?1 IS NULL OR "
+               "fit_rms_m, rock_side, created_at, photo, photo_capture_id, pixels, sigma_deg, "
+               "trace_length_m, censored, note FROM measurement WHERE (?1 IS NULL OR "
                "visit_id = ?1) ORDER BY id",
                "listing measurements");
   st.bind(1, visit_id);
@@ -92,6 +131,13 @@ std::vector<Measurement> ProjectStore::list_measurements(std::optional<RecordId>
     m.fit_rms_m = st.column_double(9);
     m.rock_side = st.column_text(10);
     m.created_at = st.column_text(11);
+    m.photo = st.column_text(12);
+    m.photo_capture_id = optional_id(st, 13);
+    m.pixels = pixels_of(st.column_text(14), where);
+    m.sigma_deg = st.column_optional_double(15);
+    m.trace_length_m = st.column_optional_double(16);
+    m.censored = st.column_int(17) != 0;
+    m.note = st.column_text(18);
     out.push_back(std::move(m));
   }
   return out;
@@ -111,6 +157,11 @@ std::vector<RecordId> ProjectStore::save_joints(RecordId visit_id,
     if (!set_labels.insert(sets[i].label).second) throw InputError(where, "label is repeated");
     require_orientation(sets[i].dip_deg, sets[i].dipdir_deg, where);
     require_finite(sets[i].fisher_k, where + ".fisher_k");
+    for (const auto& [value, field] : {std::pair{sets[i].alpha95_deg, ".alpha95"},
+                                       {sets[i].spacing_m, ".spacing"},
+                                       {sets[i].mean_trace_length_m, ".mean_trace_length"},
+                                       {sets[i].persistence_m, ".persistence"}})
+      if (value) require_finite(*value, where + field);
   }
   for (std::size_t i = 0; i < joints.size(); ++i) {
     const auto& j = joints[i];
@@ -121,13 +172,15 @@ std::vector<RecordId> ProjectStore::save_joints(RecordId visit_id,
     if (j.point) require_finite(*j.point, where + ".point");
     if (j.friction_deg) require_finite(*j.friction_deg, where + ".friction");
     if (j.cohesion_pa) require_finite(*j.cohesion_pa, where + ".cohesion");
+    if (j.persistence_m) require_finite(*j.persistence_m, where + ".persistence");
   }
 
   WriteTransaction tx(db_, doing);
   std::map<std::string, RecordId> set_ids;
   Statement set_st(db_,
-                   "INSERT INTO joint_set (visit_id, label, dip, dipdir, fisher_k, count) "
-                   "VALUES (?, ?, ?, ?, ?, ?)",
+                   "INSERT INTO joint_set (visit_id, label, dip, dipdir, fisher_k, count, "
+                   "alpha95_deg, spacing_m, mean_trace_length_m, censored_traces, persistence_m, "
+                   "note) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                    doing);
   for (const auto& s : sets) {
     set_st.reset();
@@ -136,7 +189,13 @@ std::vector<RecordId> ProjectStore::save_joints(RecordId visit_id,
         .bind(3, s.dip_deg)
         .bind(4, s.dipdir_deg)
         .bind(5, s.fisher_k)
-        .bind(6, s.count);
+        .bind(6, s.count)
+        .bind(7, s.alpha95_deg)
+        .bind(8, s.spacing_m)
+        .bind(9, s.mean_trace_length_m)
+        .bind(10, s.censored_traces)
+        .bind(11, s.persistence_m)
+        .bind(12, s.note);
     set_st.run();
     set_ids[s.label] = db_.last_insert_id();
   }
@@ -144,8 +203,8 @@ std::vector<RecordId> ProjectStore::save_joints(RecordId visit_id,
   Statement find_joint(db_, "SELECT 1 FROM joint WHERE visit_id = ? AND label = ?", doing);
   Statement st(db_,
                "INSERT INTO joint (visit_id, set_id, measurement_id, label, dip, dipdir, px, py, "
-               "pz, friction_deg, cohesion_pa, source) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-               "?)",
+               "pz, friction_deg, cohesion_pa, source, type, persistence_m) VALUES (?, ?, ?, ?, "
+               "?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                doing);
   std::vector<RecordId> ids;
   for (std::size_t i = 0; i < joints.size(); ++i) {
@@ -178,6 +237,7 @@ std::vector<RecordId> ProjectStore::save_joints(RecordId visit_id,
       st.bind_null(7).bind_null(8).bind_null(9);
     }
     st.bind(10, j.friction_deg).bind(11, j.cohesion_pa).bind(12, j.source);
+    st.bind(13, j.type).bind(14, j.persistence_m);
     st.run();
     ids.push_back(db_.last_insert_id());
   }
@@ -189,8 +249,9 @@ std::vector<RecordId> ProjectStore::save_joints(RecordId visit_id,
 
 std::vector<JointSet> ProjectStore::list_joint_sets(RecordId visit_id) {
   Statement st(db_,
-               "SELECT id, label, dip, dipdir, fisher_k, count FROM joint_set WHERE visit_id = ? "
-               "ORDER BY id",
+               "SELECT id, label, dip, dipdir, fisher_k, count, alpha95_deg, spacing_m, "
+               "mean_trace_length_m, censored_traces, persistence_m, note FROM joint_set WHERE "
+               "visit_id = ? ORDER BY id",
                "listing joint sets");
   st.bind(1, visit_id);
   std::vector<JointSet> out;
@@ -202,6 +263,12 @@ std::vector<JointSet> ProjectStore::list_joint_sets(RecordId visit_id) {
     s.dipdir_deg = st.column_double(3);
     s.fisher_k = st.column_double(4);
     s.count = static_cast<int>(st.column_int(5));
+    s.alpha95_deg = st.column_optional_double(6);
+    s.spacing_m = st.column_optional_double(7);
+    s.mean_trace_length_m = st.column_optional_double(8);
+    s.censored_traces = static_cast<int>(st.column_int(9));
+    s.persistence_m = st.column_optional_double(10);
+    s.note = st.column_text(11);
     out.push_back(std::move(s));
   }
   return out;
@@ -210,7 +277,8 @@ std::vector<JointSet> ProjectStore::list_joint_sets(RecordId visit_id) {
 std::vector<Joint> ProjectStore::list_joints(std::optional<RecordId> visit_id) {
   Statement st(db_,
                "SELECT j.id, j.visit_id, j.label, s.label, j.dip, j.dipdir, j.px, j.py, j.pz, "
-               "j.friction_deg, j.cohesion_pa, j.measurement_id, j.source FROM joint j LEFT "
+               "j.friction_deg, j.cohesion_pa, j.measurement_id, j.source, j.type, "
+               "j.persistence_m FROM joint j LEFT "
                "JOIN joint_set s ON s.id = j.set_id WHERE (?1 IS NULL OR j.visit_id = ?1) "
                "ORDER BY j.id",
                "listing joints");
@@ -230,6 +298,8 @@ std::vector<Joint> ProjectStore::list_joints(std::optional<RecordId> visit_id) {
     j.cohesion_pa = st.column_optional_double(10);
     j.measurement_id = optional_id(st, 11);
     j.source = st.column_text(12);
+    j.type = st.column_text(13);
+    j.persistence_m = st.column_optional_double(14);
     out.push_back(std::move(j));
   }
   return out;

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/error.h"
 #include "storage/export_joints_csv.h"
 #include "storage/export_ply.h"
 #include "storage/export_scene_json.h"
@@ -48,12 +49,12 @@ TEST(Export, JointsCsvHasAbsolutePositionsAndSets) {
   EXPECT_EQ(export_joints_csv(p.store, p.dir / "joints.csv", p.visit), 3u);
   const auto lines = lines_of(p.dir / "joints.csv");
   ASSERT_EQ(lines.size(), 4u);
-  EXPECT_EQ(lines[0], "id,dip,dip_direction,set,x,y,z,visit,source");
+  EXPECT_EQ(lines[0], "id,dip,dip_direction,set,x,y,z,visit,source,type,persistence");
   // J1 at (0.5, 4.01, 0.6) relative to the datum (2690123.25, 1170456.5, 1105.125).
   EXPECT_EQ(lines[1], "J1,63.500,271.250,S1,2690123.7500,1170460.5100,1105.7250," +
-                          std::to_string(p.visit) + ",trace T1");
+                          std::to_string(p.visit) + ",trace T1,trace,2.750");
   EXPECT_EQ(lines[2].substr(0, 19), "J2,20.000,359.990,S");
-  EXPECT_EQ(lines[3], "J3,0.000,0.000,,,,," + std::to_string(p.visit) + ",manual");
+  EXPECT_EQ(lines[3], "J3,0.000,0.000,,,,," + std::to_string(p.visit) + ",manual,,");
   EXPECT_EQ(p.store.list_actions().back().action, "export joints csv");
 
   // A label with a comma is quoted, so the columns stay where they are.
@@ -64,6 +65,54 @@ TEST(Export, JointsCsvHasAbsolutePositionsAndSets) {
   write_joints_csv(out, {j}, Eigen::Vector3d::Zero());
   EXPECT_NE(out.str().find("\"J1, crown\",0.000"), std::string::npos) << out.str();
   EXPECT_NE(out.str().find("\"said \"\"maybe\"\"\""), std::string::npos) << out.str();
+}
+
+TEST(Export, JointsCsvRoundTrip) {
+  // What a stereonet program reads is what rockface wrote: measured joints
+  // with type and persistence, a quoted label, an orientation-only joint.
+  const Eigen::Vector3d datum(2690123.25, 1170456.5, 1105.125);
+  std::vector<Joint> joints(3);
+  joints[0].label = "T1";
+  joints[0].dip_deg = 63.5;
+  joints[0].dipdir_deg = 271.25;
+  joints[0].set_label = "S1";
+  joints[0].point = Eigen::Vector3d(0.5, 4.01, 0.6);
+  joints[0].type = "trace";
+  joints[0].persistence_m = 3.25;
+  joints[0].source = "trace T1";
+  joints[1].label = "A1, \"crown\"";
+  joints[1].dip_deg = 20;
+  joints[1].dipdir_deg = 359.99;
+  joints[1].type = "area";
+  joints[2].label = "J3";
+  std::stringstream csv;
+  write_joints_csv(csv, joints, datum);
+  const auto back = read_joints_csv(csv, datum, "joints.csv");
+  ASSERT_EQ(back.size(), joints.size());
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    EXPECT_EQ(back[i].label, joints[i].label);
+    EXPECT_EQ(back[i].set_label, joints[i].set_label);
+    EXPECT_EQ(back[i].type, joints[i].type);
+    EXPECT_EQ(back[i].source, joints[i].source);
+    // Written to 1e-3 degree and 0.1 mm (write_joints_csv).
+    EXPECT_NEAR(back[i].dip_deg, joints[i].dip_deg, 5e-4);
+    EXPECT_NEAR(back[i].dipdir_deg, joints[i].dipdir_deg, 5e-4);
+    ASSERT_EQ(back[i].point.has_value(), joints[i].point.has_value());
+    if (joints[i].point) {
+      EXPECT_LT((*back[i].point - *joints[i].point).norm(), 1e-4);
+    }
+    ASSERT_EQ(back[i].persistence_m.has_value(), joints[i].persistence_m.has_value());
+    if (joints[i].persistence_m) {
+      EXPECT_NEAR(*back[i].persistence_m, *joints[i].persistence_m, 5e-4);
+    }
+  }
+  std::stringstream bad("id,dip,dip_direction\nJ1,sixty,10\n");
+  try {
+    read_joints_csv(bad, datum, "joints.csv");
+    FAIL() << "accepted";
+  } catch (const rockface::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("joints.csv: line 2, dip"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Export, BinaryPlyReadsBackExactlyWithTexture) {

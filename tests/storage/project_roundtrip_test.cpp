@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
+#include "storage/project_schema.h"
 #include "storage/project_store.h"
 #include "tests/storage/sample_records.h"
 
@@ -62,7 +63,7 @@ TEST(ProjectRoundTrip, EveryKindOfRecordSurvivesReopening) {
   }
 
   auto store = ProjectStore::open(file);
-  EXPECT_EQ(store.schema_version(), 2);
+  EXPECT_EQ(store.schema_version(), schema::kCurrentVersion);
   const ProjectInfo p = store.project();
   EXPECT_EQ(p.name, info.name);
   expect_same(p.datum, info.datum);
@@ -156,6 +157,15 @@ TEST(ProjectRoundTrip, EveryKindOfRecordSurvivesReopening) {
     EXPECT_EQ(ms[i].dipdir_deg, measurements[i].dipdir_deg);
     EXPECT_EQ(ms[i].fit_rms_m, measurements[i].fit_rms_m);
     EXPECT_EQ(ms[i].rock_side, measurements[i].rock_side);
+    EXPECT_EQ(ms[i].photo, measurements[i].photo);
+    EXPECT_EQ(ms[i].photo_capture_id, measurements[i].photo_capture_id);
+    ASSERT_EQ(ms[i].pixels.size(), measurements[i].pixels.size());
+    for (std::size_t k = 0; k < ms[i].pixels.size(); ++k)
+      EXPECT_EQ(ms[i].pixels[k], measurements[i].pixels[k]);  // JSON keeps doubles exactly
+    EXPECT_EQ(ms[i].sigma_deg, measurements[i].sigma_deg);
+    EXPECT_EQ(ms[i].trace_length_m, measurements[i].trace_length_m);
+    EXPECT_EQ(ms[i].censored, measurements[i].censored);
+    EXPECT_EQ(ms[i].note, measurements[i].note);
   }
   EXPECT_FALSE(ms[1].dip_deg.has_value()) << "a collinear trace keeps 'no plane'";
 
@@ -164,6 +174,13 @@ TEST(ProjectRoundTrip, EveryKindOfRecordSurvivesReopening) {
   EXPECT_EQ(sets[0].label, "S1");
   EXPECT_EQ(sets[0].fisher_k, 45.0);
   EXPECT_EQ(sets[0].count, 12);
+  EXPECT_EQ(sets[0].alpha95_deg, 4.25);
+  EXPECT_EQ(sets[0].spacing_m, 0.8);
+  EXPECT_EQ(sets[0].mean_trace_length_m, 2.5);
+  EXPECT_EQ(sets[0].censored_traces, 3);
+  EXPECT_FALSE(sets[0].persistence_m.has_value());
+  EXPECT_EQ(sets[0].note, "3 of 12 traces leave the mapped area");
+  EXPECT_FALSE(sets[1].alpha95_deg.has_value());
   const auto joints = store.list_joints(visit);
   const auto expected_joints = test::sample_joints();
   ASSERT_EQ(joints.size(), 3u);
@@ -172,6 +189,9 @@ TEST(ProjectRoundTrip, EveryKindOfRecordSurvivesReopening) {
   EXPECT_EQ(joints[0].measurement_id, measurement_ids[0]);
   EXPECT_EQ(joints[0].friction_deg, 32);
   EXPECT_EQ(joints[0].cohesion_pa, 15000);
+  EXPECT_EQ(joints[0].type, "trace");
+  EXPECT_EQ(joints[0].persistence_m, 2.75);
+  EXPECT_EQ(joints[1].type, "");
   ASSERT_TRUE(joints[0].point.has_value());
   expect_same(*joints[0].point, *expected_joints[0].point);
   EXPECT_EQ(joints[1].set_label, "S2");

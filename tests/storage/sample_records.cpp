@@ -116,6 +116,12 @@ std::vector<Measurement> sample_measurements(std::optional<RecordId> model_id) {
   out[0].dip_deg = 63.5;
   out[0].dipdir_deg = 271.25;
   out[0].fit_rms_m = 0.003;
+  out[0].photo = "left";
+  out[0].pixels = {{1203.25, 884.5}, {1410.125, 902.0625}, {1650.0, 955.75}};
+  out[0].sigma_deg = 0.35;
+  out[0].trace_length_m = 1.21;
+  out[0].censored = true;
+  out[0].note = "2 of 300 points left out of the fit";
   out[1].model_id = model_id;
   out[1].kind = Measurement::Kind::trace;
   out[1].label = "T2";  // collinear: no plane, no joint yet
@@ -137,7 +143,23 @@ std::vector<Measurement> sample_measurements(std::optional<RecordId> model_id) {
 }
 
 std::vector<JointSet> sample_joint_sets() {
-  return {{0, "S1", 63.0, 270.5, 45.0, 12}, {0, "S2", 20.0, 95.0, 80.0, 7}};
+  std::vector<JointSet> sets(2);
+  sets[0].label = "S1";
+  sets[0].dip_deg = 63.0;
+  sets[0].dipdir_deg = 270.5;
+  sets[0].fisher_k = 45.0;
+  sets[0].count = 12;
+  sets[0].alpha95_deg = 4.25;
+  sets[0].spacing_m = 0.8;
+  sets[0].mean_trace_length_m = 2.5;
+  sets[0].censored_traces = 3;
+  sets[0].note = "3 of 12 traces leave the mapped area";
+  sets[1].label = "S2";
+  sets[1].dip_deg = 20.0;
+  sets[1].dipdir_deg = 95.0;
+  sets[1].fisher_k = 80.0;
+  sets[1].count = 7;
+  return sets;
 }
 
 std::vector<Joint> sample_joints() {
@@ -150,6 +172,8 @@ std::vector<Joint> sample_joints() {
   out[0].friction_deg = 32;
   out[0].cohesion_pa = 15000;
   out[0].source = "trace T1";
+  out[0].type = "trace";
+  out[0].persistence_m = 2.75;
   out[1].label = "J2";
   out[1].set_label = "S2";
   out[1].dip_deg = 20;
