@@ -7,12 +7,12 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
 #include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/reference_line.h"
 #include "firmware-app/verb_registry.h"
 #include "storage/camera_json.h"
 #include "storage/mesh_export.h"
@@ -50,26 +50,9 @@ cv::Mat read_image(const std::string& path) {
 
 photogrammetry::NorthReference parse_north(const ReconstructOptions& o) {
   photogrammetry::NorthReference n;
-  std::stringstream ss(o.reference_line);
-  std::string field;
-  std::vector<double> v;
-  while (std::getline(ss, field, ',')) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stod(field, &used));
-      if (used != field.size()) throw std::invalid_argument(field);
-    } catch (const std::exception&) {
-      throw InputError("--reference-line",
-                       "'" + field + "' is not a number (expected U1,V1,U2,V2)");
-    }
-  }
-  if (v.size() != 4)
-    throw InputError("--reference-line",
-                     "expected four numbers U1,V1,U2,V2 (pixels of the left image)");
-  n.from_px = {v[0], v[1]};
-  n.to_px = {v[2], v[3]};
-  if ((n.to_px - n.from_px).norm() < 10)
-    throw InputError("--reference-line", "the two points are less than 10 px apart");
+  const auto line = photogrammetry::parse_reference_line(o.reference_line, "--reference-line");
+  n.from_px = line[0];
+  n.to_px = line[1];
   n.azimuth_deg = *o.azimuth;
   n.declination_deg = o.declination.value_or(0.0);
   return n;

@@ -63,8 +63,9 @@ CameraIntrinsics parse_camera_json(const std::string& text, const std::string& s
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // nlohmann's message carries the byte position of the fault.
+  } catch (const json::exception& e) {
+    // nlohmann's message carries the byte position of the fault. Also a
+    // number beyond double's range (1e309), found by tests/fuzz.
     throw InputError(source, std::string("not valid JSON: ") + e.what());
   }
   if (!doc.is_object()) throw InputError(source, "must hold a JSON object");

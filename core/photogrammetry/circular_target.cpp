@@ -99,41 +99,127 @@ cv::Point2d on_ellipse(const cv::RotatedRect& e, double f, double u) {
           e.center.y + x * std::sin(th) + y * std::cos(th)};
 }
 
+// The dark ring around a white-disk candidate, measured along rays from its
+// centre. Printed targets differ in the ring's width (outer diameter 1.3 to
+// 3 times the disk's and more) and stand in front of light or dark rock, so
+// no ring width is assumed: on each ray the ring's black is the darkest
+// sample within kRingSearch white radii (where every ring has its ink), and
+// the ring's outer edge is looked for further out, where the profile rises
+// again (not at all in front of dark rock). A ray is "printed-like" when its
+// white is even, its contrast sufficient and its black a small fraction of
+// its white: printed black reflects a few percent of what printed white
+// does, under sun and in shadow alike, whereas rock texture, however
+// contrasty, does not get near that ratio on (nearly) every side of a blob.
+constexpr int kRingRays = 48;
+constexpr double kRingSearch = 1.35;   // white radii searched for the ring's black
+constexpr double kMaxRingRatio = 4.0;  // outer edge looked for up to here
+constexpr double kMinPrintedRays = 0.9;
+constexpr double kPlateauRise = 0.03;    // of the ray's range, per pixel: the disk's white is flat
+constexpr double kPlateauRiseMin = 3.0;  // grey levels per pixel: sensor noise  // fraction of
+                                         // printed-like rays (dirt, a pole in front)
+
 struct RingStats {
-  double white = 0, black = 0, black_max = 0, white_min = 255;
+  double white = 0, black = 0;  // medians over the rays
+  double printed_rays = 0;      // fraction of printed-like rays
+  double ring_ratio = 0;        // outer / white diameter; 0 where the outer edge is not seen
   bool inside_image = true;
 };
 
-RingStats ring_stats(const cv::Mat& g, const cv::RotatedRect& e) {
-  RingStats s;
-  int nw = 0, nb = 0;
-  for (int k = 0; k < 48; ++k) {
-    const double u = 2 * kPi * k / 48;
-    for (double f : {0.0, 0.3, 0.6}) {
-      const cv::Point2d p = on_ellipse(e, f, u);
-      const double v = bilinear(g, p.x, p.y);
-      if (v < 0) {
-        s.inside_image = false;
-        return s;
-      }
-      s.white += v;
-      s.white_min = std::min(s.white_min, v);
-      ++nw;
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  auto m = v.begin() + v.size() / 2;
+  std::nth_element(v.begin(), m, v.end());
+  return *m;
+}
+
+// Outer edge of the ring along one ray, as a fraction of the white radius
+// (0 when not found): beyond the darkest point, the first rise of the
+// profile by `rise` grey levels, then the mid-level between the black and
+// the level reached a few pixels further.
+double ring_outer_edge(const cv::Mat& g, const cv::RotatedRect& e, double u, double f_black,
+                       double black, double rise, double step, double ray_radius) {
+  const double plateau_px = 3.0;  // past the rise, where the background level is read
+  auto sample = [&](double f) {
+    const cv::Point2d p = on_ellipse(e, f, u);
+    return bilinear(g, p.x, p.y);
+  };
+  for (double f = f_black + step; f <= kMaxRingRatio; f += step) {
+    const double v = sample(f);
+    if (v < 0) return 0;
+    if (v < black + rise) continue;
+    const double plateau = std::max(v, sample(f + plateau_px / ray_radius));
+    const double mid = 0.5 * (black + plateau);
+    double prev_f = f_black, prev_v = black;
+    for (double h = f_black + step; h <= f + plateau_px / ray_radius; h += step) {
+      const double hv = sample(h);
+      if (hv < 0) return 0;
+      if (hv >= mid) return prev_f + (mid - prev_v) / (hv - prev_v) * (h - prev_f);
+      prev_f = h;
+      prev_v = hv;
     }
-    for (double f : {1.35, 1.55, 1.75}) {  // the black ring spans 1 .. 2 white radii
-      const cv::Point2d p = on_ellipse(e, f, u);
-      const double v = bilinear(g, p.x, p.y);
-      if (v < 0) {
-        s.inside_image = false;
-        return s;
-      }
-      s.black += v;
-      s.black_max = std::max(s.black_max, v);
-      ++nb;
-    }
+    return f;
   }
-  s.white /= nw;
-  s.black /= nb;
+  return 0;
+}
+
+RingStats ring_stats(const cv::Mat& g, const cv::RotatedRect& e, const TargetDetectorOptions& o) {
+  RingStats s;
+  struct Ray {
+    double u, white, black, f_black, step, radius;
+  };
+  std::vector<Ray> rays;
+  int printed = 0;
+  for (int k = 0; k < kRingRays; ++k) {
+    Ray r{2 * kPi * k / kRingRays, 0, 255, 1.0, 0, 0};
+    double w_min = 255;
+    for (double f : {0.2, 0.45, 0.7}) {
+      const cv::Point2d p = on_ellipse(e, f, r.u);
+      const double v = bilinear(g, p.x, p.y);
+      if (v < 0) {
+        s.inside_image = false;
+        return s;
+      }
+      r.white += v / 3;
+      w_min = std::min(w_min, v);
+    }
+    // Half-pixel steps along the ray (the ray's own radius sets the step in f).
+    const cv::Point2d edge = on_ellipse(e, 1.0, r.u);
+    r.radius = std::max(1.0, std::hypot(edge.x - e.center.x, edge.y - e.center.y));
+    r.step = std::min(0.05, 0.5 / r.radius);
+    for (double f = 1.0; f <= kRingSearch; f += r.step) {
+      const cv::Point2d p = on_ellipse(e, f, r.u);
+      const double v = bilinear(g, p.x, p.y);
+      if (v < 0) {
+        s.inside_image = false;
+        return s;
+      }
+      if (v < r.black) {
+        r.black = v;
+        r.f_black = f;
+      }
+    }
+    // Judged by the ray's darkest white: a shadow edge across the disk
+    // leaves both sides printed-like, an uneven bright blob of rock does not.
+    if (w_min - r.black >= o.min_contrast && r.black <= o.max_black_to_white * w_min) ++printed;
+    rays.push_back(r);
+  }
+  std::vector<double> whites, blacks;
+  for (const Ray& r : rays) {
+    whites.push_back(r.white);
+    blacks.push_back(r.black);
+  }
+  s.white = median(whites);
+  s.black = median(blacks);
+  s.printed_rays = static_cast<double>(printed) / kRingRays;
+  if (s.printed_rays < kMinPrintedRays) return s;  // no target: its ring's width is moot
+  std::vector<double> outers;
+  for (const Ray& r : rays) {
+    const double contrast = r.white - r.black;
+    const double rise = std::max(0.5 * o.min_contrast, 0.25 * contrast);
+    const double outer = ring_outer_edge(g, e, r.u, r.f_black, r.black, rise, r.step, r.radius);
+    if (outer > 0) outers.push_back(outer);
+  }
+  if (outers.size() >= kRingRays / 2) s.ring_ratio = median(outers);
   return s;
 }
 
@@ -143,40 +229,67 @@ struct Candidate {
 };
 
 // Sub-pixel edge points of the white disk: along rays from the centre, the
-// crossing of the mid grey level between white and black, interpolated.
-// Also the width of the edge (from 75 % to 25 % of the contrast) along each
-// ray: a printed target has a step edge a pixel or two wide, a bright blob of
-// rock texture a gradual one.
+// crossing of the mid grey level between this ray's white (inside the disk)
+// and black (the darkest point of the ring), interpolated. Levels per ray,
+// because a shadow across the target changes both. Also the width of the
+// edge (from 75 % to 25 % of the contrast) along each ray: a printed target
+// has a step edge a pixel or two wide, a bright blob of rock texture a
+// gradual one.
 struct Edge {
   std::vector<cv::Point2d> points;
   double median_width_px = 0;
 };
 
-Edge subpixel_edge(const cv::Mat& g, const Candidate& c) {
-  const double contrast = c.ring.white - c.ring.black;
-  const double mid = 0.5 * (c.ring.white + c.ring.black);
-  const double high = c.ring.black + 0.75 * contrast, low = c.ring.black + 0.25 * contrast;
+Edge subpixel_edge(const cv::Mat& g, const Candidate& c, const TargetDetectorOptions& o) {
   const double perimeter = kPi * 0.5 * (c.ellipse.size.width + c.ellipse.size.height);
   const int rays = std::clamp(static_cast<int>(perimeter * 2), 48, 720);
   Edge edge;
   std::vector<double> widths;
+  std::vector<double> profile;
   for (int k = 0; k < rays; ++k) {
     const double u = 2 * kPi * k / rays;
-    const cv::Point2d inner = on_ellipse(c.ellipse, 0.5, u), outer = on_ellipse(c.ellipse, 1.6, u);
+    const double f_inner = 0.6;
+    const cv::Point2d inner = on_ellipse(c.ellipse, f_inner, u),
+                      outer = on_ellipse(c.ellipse, kRingSearch, u);
     const double len = std::hypot(outer.x - inner.x, outer.y - inner.y);
     const int steps = std::max(8, static_cast<int>(len / 0.1));
-    double prev = bilinear(g, inner.x, inner.y);
+    profile.clear();
+    for (int i = 0; i <= steps; ++i) {
+      const double f = static_cast<double>(i) / steps;
+      const double v =
+          bilinear(g, inner.x + f * (outer.x - inner.x), inner.y + f * (outer.y - inner.y));
+      if (v < 0) break;
+      profile.push_back(v);
+    }
+    if (profile.size() < static_cast<std::size_t>(steps) + 1) continue;
+    // Black: the darkest of the ring (or of dark rock beyond it). White: the
+    // plateau reached walking inward from there, past the dark (ring, rock)
+    // and up the edge until the profile flattens (rises by less than
+    // kPlateauRise of the ray's range over a pixel): so on the edge's side of
+    // a shadow line that crosses the disk.
+    const auto darkest = std::min_element(profile.begin(), profile.end());
+    const double black = *darkest;
+    const double range = *std::max_element(profile.begin(), darkest + 1) - black;
+    const double rise = std::max(kPlateauRiseMin, kPlateauRise * range);
+    const auto per_px = std::max<std::ptrdiff_t>(1, static_cast<std::ptrdiff_t>(steps / len));
+    auto white_end = darkest - profile.begin();
+    while (white_end > 0 && profile[white_end] < black + 0.25 * range) --white_end;
+    while (white_end - per_px >= 0 && profile[white_end - per_px] > profile[white_end] + rise)
+      --white_end;
+    const double white = profile[std::max<std::ptrdiff_t>(0, white_end - per_px)];
+    const double contrast = white - black;
+    if (contrast < 0.5 * o.min_contrast) continue;  // a dirty or occluded ray
+    const double mid = black + 0.5 * contrast;
+    const double high = black + 0.75 * contrast, low = black + 0.25 * contrast;
     double at_high = -1, at_low = -1;
     bool found_mid = false;
-    for (int i = 1; i <= steps; ++i) {
+    for (auto i = white_end + 1; i <= steps; ++i) {
+      const double prev = profile[i - 1], v = profile[i];
       const double f = static_cast<double>(i) / steps;
-      const double x = inner.x + f * (outer.x - inner.x), y = inner.y + f * (outer.y - inner.y);
-      const double v = bilinear(g, x, y);
-      if (v < 0) break;
       if (at_high < 0 && prev >= high && v < high) at_high = f * len;
       if (!found_mid && prev >= mid && v < mid) {
         const double w = (prev - mid) / (prev - v);  // linear interpolation between samples
-        const double f0 = static_cast<double>(i - 1) / steps, fe = f0 + w / steps;
+        const double fe = (i - 1 + w) / steps;
         edge.points.emplace_back(inner.x + fe * (outer.x - inner.x),
                                  inner.y + fe * (outer.y - inner.y));
         found_mid = true;
@@ -185,32 +298,54 @@ Edge subpixel_edge(const cv::Mat& g, const Candidate& c) {
         at_low = f * len;
         break;
       }
-      prev = v;
     }
     if (found_mid && at_high >= 0 && at_low >= 0) widths.push_back(at_low - at_high);
   }
-  if (!widths.empty()) {
-    auto m = widths.begin() + widths.size() / 2;
-    std::nth_element(widths.begin(), m, widths.end());
-    edge.median_width_px = *m;
-  } else {
-    edge.median_width_px = 1e9;
-  }
+  edge.median_width_px = widths.empty() ? 1e9 : median(widths);
   return edge;
 }
 
-double ellipse_fit_rms(const std::vector<cv::Point2f>& pts, const cv::RotatedRect& e) {
+// Distance (about) of a point from the ellipse, pixels.
+double ellipse_residual(const cv::Point2f& p, const cv::RotatedRect& e) {
   const double a = 0.5 * e.size.width, b = 0.5 * e.size.height, th = deg_to_rad(e.angle);
-  const double r = std::sqrt(a * b);
+  const double dx = p.x - e.center.x, dy = p.y - e.center.y;
+  const double x = dx * std::cos(th) + dy * std::sin(th),
+               y = -dx * std::sin(th) + dy * std::cos(th);
+  return std::abs(std::hypot(x / a, y / b) - 1) * std::sqrt(a * b);
+}
+
+struct EllipseFit {
+  cv::RotatedRect ellipse;
+  double rms_px = 1e9;  // over the inliers
+  double inlier_fraction = 0;
+};
+
+// Ellipse through the edge points, once more without the points far off the
+// first fit: where a shadow line or dirt crosses the disk's edge, a few rays
+// find their mid-level crossing elsewhere.
+EllipseFit robust_ellipse_fit(const std::vector<cv::Point2f>& points) {
+  constexpr double kOutlierPx = 0.5;      // at least: sub-pixel edges scatter a tenth of it
+  constexpr double kOutlierFactor = 3.0;  // times the median residual
+  EllipseFit fit;
+  fit.ellipse = cv::fitEllipse(points);
+  std::vector<double> residuals;
+  for (const auto& p : points) residuals.push_back(ellipse_residual(p, fit.ellipse));
+  const double limit = std::max(kOutlierPx, kOutlierFactor * median(residuals));
+  std::vector<cv::Point2f> inliers;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (residuals[i] <= limit) inliers.push_back(points[i]);
+  if (inliers.size() < 6) return fit;
+  fit.ellipse = cv::fitEllipse(inliers);
   double sum2 = 0;
-  for (const auto& p : pts) {
-    const double dx = p.x - e.center.x, dy = p.y - e.center.y;
-    const double x = dx * std::cos(th) + dy * std::sin(th),
-                 y = -dx * std::sin(th) + dy * std::cos(th);
-    const double q = std::hypot(x / a, y / b);
-    sum2 += (q - 1) * (q - 1) * r * r;
-  }
-  return pts.empty() ? 1e9 : std::sqrt(sum2 / pts.size());
+  for (const auto& p : inliers) sum2 += std::pow(ellipse_residual(p, fit.ellipse), 2);
+  fit.rms_px = std::sqrt(sum2 / inliers.size());
+  fit.inlier_fraction = static_cast<double>(inliers.size()) / points.size();
+  return fit;
+}
+
+bool is_printed_target(const RingStats& ring, const TargetDetectorOptions& o) {
+  return ring.inside_image && ring.white - ring.black >= o.min_contrast &&
+         ring.printed_rays >= kMinPrintedRays;
 }
 
 Eigen::Vector2d to_pixel(const Eigen::Vector2d& normalised, const CameraIntrinsics& camera) {
@@ -255,15 +390,8 @@ std::vector<TargetObservation> detect_targets(const cv::Mat& image, const Camera
       // Pixelated small disks fill their ellipse less exactly.
       const double fill = area / (kPi * 0.25 * e.size.width * e.size.height);
       if (std::abs(fill - 1) > (major < 12 ? 0.35 : 0.12)) continue;
-      const RingStats ring = ring_stats(small, e);
-      const double contrast = ring.white - ring.black;
-      if (!ring.inside_image || contrast < o.min_contrast) continue;
-      // Printed black reflects a few percent of what printed white does;
-      // rock texture, however contrasty, does not get near that ratio.
-      if (ring.black > o.max_black_to_white * ring.white) continue;
-      // A printed target: the white disk evenly white, the ring evenly black.
-      if (ring.black_max > ring.black + 0.35 * contrast) continue;
-      if (ring.white_min < ring.white - 0.35 * contrast) continue;
+      const RingStats ring = ring_stats(small, e, o);
+      if (!is_printed_target(ring, o)) continue;
       bool duplicate = false;
       for (auto& k : candidates)
         if (std::hypot(k.ellipse.center.x - e.center.x, k.ellipse.center.y - e.center.y) <
@@ -280,16 +408,15 @@ std::vector<TargetObservation> detect_targets(const cv::Mat& image, const Camera
       c.ellipse.center.y = static_cast<float>((c.ellipse.center.y + 0.5) / scale - 0.5);
       c.ellipse.size.width = static_cast<float>(c.ellipse.size.width / scale);
       c.ellipse.size.height = static_cast<float>(c.ellipse.size.height / scale);
-      c.ring = ring_stats(g, c.ellipse);
-      if (!c.ring.inside_image) c.ring.white = c.ring.black = 0;
+      c.ring = ring_stats(g, c.ellipse, o);
     }
 
   std::vector<TargetObservation> out;
   const cv::Matx33d K = camera_matrix(camera);
   const cv::Mat D = distortion_vector(camera);
   for (const auto& c : candidates) {
-    if (c.ring.white - c.ring.black < o.min_contrast) continue;
-    const Edge found = subpixel_edge(g, c);
+    if (!is_printed_target(c.ring, o)) continue;
+    const Edge found = subpixel_edge(g, c, o);
     const std::vector<cv::Point2d>& edge = found.points;
     if (edge.size() < 24) continue;
     // Step edge: at most the blur (~2 px) plus a little, or a small fraction
@@ -300,10 +427,11 @@ std::vector<TargetObservation> detect_targets(const cv::Mat& image, const Camera
     std::vector<cv::Point2d> ideal;
     cv::undistortPoints(edge, ideal, K, D, cv::noArray(), K);
     std::vector<cv::Point2f> ideal_f(ideal.begin(), ideal.end());
-    const cv::RotatedRect e = cv::fitEllipse(ideal_f);
+    const EllipseFit fit = robust_ellipse_fit(ideal_f);
+    if (fit.rms_px > o.max_fit_rms_px || fit.inlier_fraction < kMinPrintedRays) continue;
+    const cv::RotatedRect& e = fit.ellipse;
     TargetObservation obs;
-    obs.fit_rms_px = ellipse_fit_rms(ideal_f, e);
-    if (obs.fit_rms_px > o.max_fit_rms_px) continue;
+    obs.fit_rms_px = fit.rms_px;
     const Eigen::Matrix3d Kinv = camera.K().inverse();
     const Eigen::Matrix3d C = ellipse_conic(e);
     const Eigen::Matrix3d Kd = camera.K();
@@ -313,7 +441,9 @@ std::vector<TargetObservation> detect_targets(const cv::Mat& image, const Camera
     const Eigen::Vector3d ec = Kinv * Eigen::Vector3d(e.center.x, e.center.y, 1.0);
     obs.ellipse_centre = to_pixel(ec.head<2>(), camera);
     obs.centre_px = to_pixel(0.5 * (circle.centre[0] + circle.centre[1]), camera);
-    obs.diameter_px = 2.0 * std::max(e.size.width, e.size.height);
+    obs.white_diameter_px = std::max(e.size.width, e.size.height);
+    obs.ring_ratio = c.ring.ring_ratio;
+    obs.diameter_px = obs.white_diameter_px * std::max(1.0, obs.ring_ratio);
     obs.contrast = c.ring.white - c.ring.black;
     out.push_back(obs);
   }
@@ -329,8 +459,9 @@ std::string where_looked(const cv::Mat& image, const TargetDetectorOptions& o) {
   s << "searched the whole " << image.cols << "x" << image.rows << " px image for a white disk "
     << o.min_white_diameter_px << " to "
     << static_cast<int>(o.max_white_diameter_fraction * image.rows)
-    << " px across inside a black ring (contrast >= " << o.min_contrast
-    << " grey levels) at thresholds 80, 120, 160, 200";
+    << " px across inside a black ring of any width (contrast >= " << o.min_contrast
+    << " grey levels, ring darker than " << o.max_black_to_white
+    << " of the disk's white on nine rays in ten) at thresholds 80, 120, 160, 200";
   return s.str();
 }
 
@@ -383,7 +514,7 @@ RangePoleTargets find_range_pole(const cv::Mat& left_image, const cv::Mat& right
     int best = -1;
     err = max_epipolar_px;
     for (std::size_t j = 0; j < tr.size(); ++j) {
-      const double ratio = tr[j].diameter_px / a.diameter_px;
+      const double ratio = tr[j].white_diameter_px / a.white_diameter_px;
       if (ratio < 0.5 || ratio > 2.0) continue;
       const double e = epipolar_px(a, tr[j]);
       const Eigen::Vector3d X =
@@ -408,7 +539,7 @@ RangePoleTargets find_range_pole(const cv::Mat& left_image, const cv::Mat& right
       if (d.y() >= 0) continue;  // upper must be higher in the image
       if (std::abs(d.x()) > 0.5 * std::abs(d.y()))
         continue;  // a vertical pole, camera without roll
-      const double ratio = up.diameter_px / lo.diameter_px;
+      const double ratio = up.white_diameter_px / lo.white_diameter_px;
       if (ratio < 0.5 || ratio > 2.0) continue;
       double e_lo = 0, e_up = 0;
       const int rl = best_partner(lo, e_lo), ru = best_partner(up, e_up);

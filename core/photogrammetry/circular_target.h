@@ -1,10 +1,13 @@
 #pragma once
-// Circular targets of the range pole: a black disk with a white disk of half
-// its diameter at the centre (camera/synthetic_renderer.h draws the same).
+// Circular targets of the range pole: a white disk inside a black ring. The
+// ring's width differs between makers (outer diameter 1.3 to 3 times the
+// disk's and more; camera/synthetic_renderer.h draws 2); it is not assumed
+// but measured along rays, and the ring may merge into dark rock around it.
 // Detection is by contours of the white disk at several thresholds, checked
 // for a dark surrounding ring; the edge is then located to sub-pixel
-// precision along rays from the centre (mid-level crossing), the edge points
-// are undistorted and an ellipse is fitted to them.
+// precision along rays from the centre (mid-level crossing, levels per ray,
+// so a shadow across the target does not shift it), the edge points are
+// undistorted and an ellipse is fitted to them.
 //
 // Under perspective the centre of the imaged ellipse is not the image of the
 // circle's centre. The ellipse (a cone through the camera centre) admits two
@@ -29,20 +32,23 @@ struct TargetObservation {
   // two possible plane normals (equal for a face-on target).
   std::array<Eigen::Vector2d, 2> centre_normalised;
   std::array<Eigen::Vector3d, 2> normal_camera;  // unit, toward the camera
-  Eigen::Vector2d centre_px;  // the chosen corrected centre, pixels (distorted image)
-  double diameter_px = 0;     // the target (black disk) across, major axis
-  double contrast = 0;        // white minus black grey level
-  double fit_rms_px = 0;      // sub-pixel edge points against the ellipse
+  Eigen::Vector2d centre_px;     // the chosen corrected centre, pixels (distorted image)
+  double white_diameter_px = 0;  // the white disk across, major axis (ideal pixels)
+  double ring_ratio = 0;   // the ring's outer diameter / the disk's; 0 where not seen (dark rock)
+  double diameter_px = 0;  // the target across: white disk x ring ratio where seen, major axis
+  double contrast = 0;     // white minus black grey level
+  double fit_rms_px = 0;   // sub-pixel edge points against the ellipse
 };
 
 struct TargetDetectorOptions {
   double min_white_diameter_px = 3.0;         // below: not resolvable
   double max_white_diameter_fraction = 0.25;  // of the image height
   double min_contrast = 40;                   // grey levels between the white and black disks
-  double max_black_to_white = 0.4;            // grey level of the black ring / the white disk
-  double max_axis_ratio = 4.0;                // more oblique than 75 deg: not a usable target
-  double max_fit_rms_px = 0.6;                // edge points against the ellipse
-  double max_edge_width_px = 2.5;             // 75 % -> 25 % of the contrast across the edge
+  double max_black_to_white = 0.4;  // grey level of the black ring / the white disk, per ray
+  double max_axis_ratio = 4.0;      // more oblique than 75 deg: not a usable target
+  double max_fit_rms_px = 0.6;      // edge points against the ellipse
+  double max_edge_width_px =
+      3.2;  // 75 % -> 25 % of the contrast across the edge: a 2 px (sigma) blur
 };
 
 // All targets in one image (8-bit grey or BGR), best contrast first.

@@ -129,6 +129,7 @@ std::vector<ControlPoint> parse_control_points(std::istream& in, const std::stri
   std::vector<ControlPoint> out;
   std::string line;
   int number = 0;
+  bool first_line = true;  // of those not blank or comments: may be a header
   while (std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -159,9 +160,13 @@ std::vector<ControlPoint> parse_control_points(std::istream& in, const std::stri
       if (!std::isfinite(v[i])) numeric = false;
     }
     if (!numeric) {
-      if (out.empty() && number == 1) continue;  // a header line
+      if (first_line) {  // a header line, after comments or not
+        first_line = false;
+        continue;
+      }
       throw InputError(at, "u, v, X, Y, Z must be numbers");
     }
+    first_line = false;
     p.pixel = {v[0], v[1]};
     p.world = {v[2], v[3], v[4]};
     for (const auto& q : out)

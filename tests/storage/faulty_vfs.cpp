@@ -1,5 +1,6 @@
 #include "tests/storage/faulty_vfs.h"
 
+#include <signal.h>
 #include <sqlite3.h>
 
 #include <atomic>
@@ -11,11 +12,13 @@ namespace {
 
 std::atomic<int> g_fail_from{0};
 std::atomic<int> g_calls{0};
+std::atomic<int> g_kill_at{0};
 sqlite3_vfs* g_real = nullptr;
 
 // true when this write-like call must fail.
 bool fault() {
   const int n = ++g_calls;
+  if (n == g_kill_at.load()) ::raise(SIGKILL);
   const int from = g_fail_from.load();
   return from > 0 && n >= from;
 }
@@ -154,7 +157,14 @@ void FaultyVfs::install() {
 
 void FaultyVfs::arm(int fail_from_call) {
   g_calls = 0;
+  g_kill_at = 0;
   g_fail_from = fail_from_call;
+}
+
+void FaultyVfs::arm_kill(int at_call) {
+  g_calls = 0;
+  g_fail_from = 0;
+  g_kill_at = at_call;
 }
 
 int FaultyVfs::calls() {

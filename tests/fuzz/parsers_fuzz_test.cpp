@@ -1,0 +1,272 @@
+// Every parser a user feeds, fed mutated files (tests/fuzz/mutator.h): scene
+// JSON, camera JSON, control-point CSV, the reference line, a capture's EXIF
+// and a project file. A parser may accept an input or refuse it with a
+// rockface::Error (InputError naming the file and field); it may not crash,
+// hang or let another exception out (a raw nlohmann or std:: message is not
+// what the user should read). Failing inputs are written to
+// ROCKFACE_BINARY_DIR/fuzz-failures; each one found becomes a file in
+// tests/fuzz/corpus/regressions, run on every pass.
+//
+// The inputs tried per parser are bounded (CI); ROCKFACE_FUZZ_ITERATIONS
+// multiplies them and ROCKFACE_FUZZ_SEED changes them (docs/fuzzing.md).
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "camera/exif.h"
+#include "core/common/error.h"
+#include "core/photogrammetry/reference_line.h"
+#include "core/photogrammetry/registration.h"
+#include "storage/camera_json.h"
+#include "storage/project_store.h"
+#include "storage/scene.h"
+#include "tests/fuzz/mutator.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kCorpus = fs::path(ROCKFACE_SOURCE_DIR) / "tests/fuzz/corpus";
+
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_bytes(const fs::path& p, const std::string& bytes) {
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out << bytes;
+}
+
+std::vector<std::string> files_in(const fs::path& dir, const std::string& prefix = "") {
+  std::vector<fs::path> paths;
+  if (fs::exists(dir))
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.is_regular_file() && e.path().filename().string().rfind(prefix, 0) == 0)
+        paths.push_back(e.path());
+  std::sort(paths.begin(), paths.end());  // a fixed order: the same inputs every run
+  std::vector<std::string> out;
+  for (const auto& p : paths) out.push_back(read_bytes(p));
+  return out;
+}
+
+std::uint64_t fuzz_seed() {
+  const char* s = std::getenv("ROCKFACE_FUZZ_SEED");
+  return s ? std::strtoull(s, nullptr, 10) : 1;
+}
+
+long iterations(long ci_default) {
+  const char* s = std::getenv("ROCKFACE_FUZZ_ITERATIONS");
+  return s ? std::max(1L, std::atol(s)) : ci_default;
+}
+
+// What became of one input: accepted, refused with a rockface::Error, or
+// something else escaped (described).
+struct Outcome {
+  bool accepted = false;
+  std::string escaped;
+};
+
+Outcome run_one(const std::function<void(const std::string&)>& parse, const std::string& in) {
+  try {
+    parse(in);
+    return {true, ""};
+  } catch (const rockface::Error&) {
+    return {false, ""};
+  } catch (const std::exception& e) {
+    return {false, std::string("std::exception: ") + e.what()};
+  } catch (...) {
+    return {false, "an exception of unknown type"};
+  }
+}
+
+// The fuzz loop shared by every parser: the seeds must parse, the
+// regressions and `count` mutated inputs must not escape.
+void fuzz(const std::string& name, const std::vector<std::string>& seeds, bool text, long count,
+          const std::function<void(const std::string&)>& parse, std::size_t page_size = 0) {
+  ASSERT_FALSE(seeds.empty());
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    // A seed that does not parse explores only the error paths.
+    try {
+      parse(seeds[i]);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << name << " seed " << i << " is refused: " << e.what();
+    }
+  }
+  const fs::path failures = fs::path(ROCKFACE_BINARY_DIR) / "fuzz-failures";
+  for (const std::string& r : files_in(kCorpus / "regressions", name + "-"))
+    EXPECT_EQ(run_one(parse, r).escaped, "") << name << " regression";
+  rockface::fuzz::Mutator mutator(seeds, fuzz_seed(), text, page_size);
+  const auto start = std::chrono::steady_clock::now();
+  int failed = 0, accepted = 0;
+  for (long n = 0; n < count; ++n) {
+    const std::string input = mutator.next();
+    const Outcome outcome = run_one(parse, input);
+    accepted += outcome.accepted;
+    const std::string& what = outcome.escaped;
+    if (what.empty()) continue;
+    fs::create_directories(failures);
+    const fs::path saved = failures / (name + "-" + std::to_string(n));
+    write_bytes(saved, input);
+    ADD_FAILURE() << name << " input " << n << " (saved as " << saved << "): " << what;
+    if (++failed >= 10) break;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ::testing::Test::RecordProperty("inputs", static_cast<int>(count));
+  ::testing::Test::RecordProperty("accepted", accepted);
+  ::testing::Test::RecordProperty("seconds", std::to_string(seconds));
+}
+
+}  // namespace
+
+TEST(Fuzz, SceneJson) {
+  std::vector<std::string> seeds = files_in(kCorpus / "scene");
+  for (const auto& s : files_in(fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples"))
+    seeds.push_back(s);
+  fuzz("scene", seeds, true, iterations(200000),
+       [](const std::string& in) { rockface::storage::parse_scene(in, "fuzz.scene.json"); });
+}
+
+TEST(Fuzz, CameraJson) {
+  fuzz("camera", files_in(kCorpus / "camera"), true, iterations(100000),
+       [](const std::string& in) { rockface::storage::parse_camera_json(in, "fuzz.camera.json"); });
+}
+
+TEST(Fuzz, ControlPointCsv) {
+  fuzz("gcp", files_in(kCorpus / "gcp"), true, iterations(100000), [](const std::string& in) {
+    std::istringstream s(in);
+    rockface::photogrammetry::parse_control_points(s, "fuzz.csv");
+  });
+}
+
+TEST(Fuzz, ReferenceLine) {
+  fuzz("reference_line", files_in(kCorpus / "reference_line"), true, iterations(100000),
+       [](const std::string& in) {
+         rockface::photogrammetry::parse_reference_line(in, "--reference-line");
+       });
+}
+
+namespace {
+
+// A small JPEG of the kind a capture folder holds, with every EXIF field
+// rockface reads.
+std::string jpeg_with_exif(int seed) {
+  cv::Mat image(48, 64, CV_8UC3);
+  cv::RNG rng(seed);
+  rng.fill(image, cv::RNG::UNIFORM, 0, 256);
+  std::vector<uchar> jpeg;
+  cv::imencode(".jpg", image, jpeg);
+  rockface::camera::ExifInfo info;
+  info.make = "Nikon";
+  info.model = "D7500";
+  info.lens = "18-55 @ 24 mm";
+  info.datetime = "2026:11:20 09:10:0" + std::to_string(seed % 10);
+  info.focal_length_mm = 24;
+  info.f_number = 8;
+  info.exposure_time_s = 1.0 / 125;
+  info.iso = 200 * (seed + 1);
+  info.flash_fired = seed % 2 == 0;
+  info.focus_distance_m = 6.5;
+  info.width = 64;
+  info.height = 48;
+  const auto bytes = rockface::camera::with_exif(jpeg, info);
+  return std::string(bytes.begin(), bytes.end());
+}
+
+}  // namespace
+
+TEST(Fuzz, CaptureExif) {
+  std::vector<std::string> seeds{jpeg_with_exif(0), jpeg_with_exif(1)};
+  fuzz("exif", seeds, false, iterations(100000), [](const std::string& in) {
+    rockface::camera::read_exif(std::vector<uint8_t>(in.begin(), in.end()));
+  });
+}
+
+namespace {
+
+// A small project with a record of each kind, as one file (checkpointed).
+std::string sample_project_file(const fs::path& dir) {
+  namespace st = rockface::storage;
+  const fs::path file = dir / "seed.rockface";
+  {
+    st::ProjectInfo info;
+    info.name = "fuzz seed";
+    auto store = st::ProjectStore::create(file, info);
+    const auto visit = store.begin_visit("tablet", "a note");
+    st::Capture c;
+    c.visit_id = visit;
+    c.label = "pair 1";
+    const std::string jpeg = jpeg_with_exif(3);
+    c.left.bytes.assign(jpeg.begin(), jpeg.end());
+    c.right.bytes.assign(jpeg.begin(), jpeg.end());
+    c.right.bytes[c.right.bytes.size() / 2] ^= 1;
+    c.settings = {{"iso", "200"}};
+    const auto capture = store.save_capture(c);
+    st::Model m;
+    m.capture_id = capture;
+    m.preset = "fast";
+    m.mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    m.mesh.faces = {{0, 1, 2}};
+    m.mesh.colours = {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}};
+    store.save_model(m);
+    st::AnalysisRun a;
+    a.visit_id = visit;
+    a.preset = "fast";
+    a.effects = {"gravity"};
+    st::BlockResult b;
+    b.label = "B1";
+    b.source = "scene";
+    b.code = "012";
+    b.volume_m3 = 1.5;
+    a.blocks.push_back(b);
+    store.save_analysis(a);
+    store.checkpoint();
+  }
+  const std::string bytes = read_bytes(file);
+  fs::remove(file);
+  return bytes;
+}
+
+}  // namespace
+
+TEST(Fuzz, ProjectFile) {
+  constexpr std::size_t kSqlitePageSize = 4096;  // SQLite's default, which the store keeps
+  const fs::path dir = fs::temp_directory_path() / ("rockface-fuzz-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::vector<std::string> seeds{sample_project_file(dir)};
+  const fs::path file = dir / "fuzzed.rockface";
+  // Opening (quick check), then reading every record back: a damaged file is
+  // refused or read, never a crash.
+  fuzz(
+      "project", seeds, false, iterations(10000),
+      [&](const std::string& in) {
+        for (const char* side : {"", "-wal", "-shm", "-journal"}) fs::remove(file.string() + side);
+        write_bytes(file, in);
+        rockface::storage::OpenOptions read_only;
+        read_only.read_only = true;  // a damaged file must not be written to
+        auto store = rockface::storage::ProjectStore::open(file, read_only);
+        store.project();
+        for (const auto& v : store.list_visits()) (void)v;
+        for (const auto& c : store.list_captures()) store.load_capture(c.id);
+        for (const auto& m : store.list_models()) store.load_model(m.id);
+        for (const auto& a : store.list_analyses()) store.load_analysis(a.id);
+        store.list_actions();
+        store.check_integrity(rockface::storage::OpenOptions::Check::full);
+      },
+      kSqlitePageSize);
+  fs::remove_all(dir);
+}
