@@ -1,0 +1,61 @@
+#pragma once
+// The staged joint law: stage A elastic, stage B pre-peak hardening with
+// growing dilation, stage C post-peak softening in the dissipated shear
+// energy; peak from Barton-Bandis or Grasselli (peak_strength.h).
+//
+// Under a normal stress sigma_n, with tau_A = sigma_n tan(phi_r) and
+// tau_p = sigma_n tan(phi_peak(sigma_n)), the monotone curve tau(u) is:
+//   A: tau = ks u up to u_A = tau_A / ks (the joint slips once its basic
+//      friction is overcome: Barton's mobilised JRC is zero there);
+//   B: the quadratic Bezier curve from (u_A, tau_A) through the control
+//      point (tau_p / ks, tau_p) (where the elastic line meets the peak
+//      level, so the curve leaves A with slope ks) to the peak
+//      (u_p, tau_p), u_p = max(delta_p, tau_p / ks), arriving with slope 0.
+//      Its plastic slip u - tau / ks is t^2 kappa_p (kappa_p = u_p - tau_p /
+//      ks), so the strength in terms of the slip kappa is closed-form:
+//      tau_B(kappa) = tau_p - (1 - sqrt(kappa / kappa_p))^2 (tau_p - tau_A);
+//   C: the roughness softens with the energy W dissipated after the peak
+//      (Plesha's rule): i = i_p exp(-W / W_c), tau = sigma_n tan(phi_r + i).
+//      W_c defaults to 9 / ln 2 x delta_p x tau_p, which halves the
+//      roughness after 9 delta_p of slip at the peak stress (Barton's table
+//      of mobilised JRC: half the peak at ten times the peak displacement).
+// Dilation (rate dv = tan(d) |d kappa|, d = mobilised roughness / M):
+// none in A, a rate growing linearly with the slip in B (so v(kappa) is the
+// quadratic Bezier from (0, 0) via (kappa_p / 2, 0) to (kappa_p,
+// tan(d_p) kappa_p / 2)), tan(i / M) in C. Slip back towards the origin
+// rides down the asperities: dilation decreases, never below zero.
+// Hardening is isotropic in the accumulated slip; slip is a radial return.
+#include <memory>
+
+#include "core/mechanics/joint_law.h"
+#include "core/mechanics/peak_strength.h"
+
+namespace rockface::mechanics {
+
+class StagedJointLaw final : public JointLaw {
+ public:
+  StagedJointLaw(const JointLawParameters& p, std::unique_ptr<PeakStrength> peak);
+  std::string name() const override;
+  double normal_stiffness() const override { return kn_; }
+  double shear_stiffness() const override { return ks_; }
+  double strength(double sigma_n, const JointState& state) const override;
+  JointResponse respond(const JointState& committed, double closure, const Eigen::Vector2d& shear,
+                        double strength_divisor) const override;
+
+  const PeakStrength& peak() const { return *peak_; }
+  // Plastic slip at the peak under sigma_n (kappa_p above), m.
+  double peak_slip(double sigma_n) const;
+  // Dilation rate tan(d) at the slip and history of `state`.
+  double dilation_rate(double sigma_n, const JointState& state) const;
+  // Roughness angle i (radians) mobilised after the peak, at energy W.
+  double softened_roughness(double sigma_n, const JointState& state) const;
+
+ private:
+  JointStage stage_of(double sigma_n, const JointState& s) const;
+
+  JointLawParameters p_;
+  std::unique_ptr<PeakStrength> peak_;
+  double kn_, ks_;
+};
+
+}  // namespace rockface::mechanics
