@@ -16,6 +16,7 @@
 #include "ui/model_view.h"
 #include "ui/project_session.h"
 #include "ui/touch_input.h"
+#include "ui/trace_marker.h"
 #include "ui/widgets.h"
 
 namespace rockface::ui {
@@ -46,10 +47,8 @@ struct CaptureState {
 };
 
 struct MappingState {
-  std::vector<Eigen::Vector3d> points;  // of the trace being marked
-  bool semi_automatic = false;          // two taps: the path between them follows the trace
-  std::string joint_set;                // set the next trace is assigned to
-  std::string last_fit;                 // dip / dip direction and uncertainty, as shown
+  TraceMarker marker;       // the trace being marked
+  std::string joint_label;  // joint (set) the next trace is assigned to; empty: none
 };
 
 struct AppState {

@@ -5,6 +5,8 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include <Eigen/Geometry>
+
 #include "storage/project_store.h"
 
 namespace rockface::ui {
@@ -13,6 +15,21 @@ namespace {
 // A touch that moves less than this (pixels at scale 1) between down and
 // up is a tap, not a drag: a fingertip wobbles by a few pixels.
 constexpr float kTapSlopPx = 12;
+}  // namespace
+
+namespace {
+
+photogrammetry::SurfaceMesh surface_of(storage::Mesh&& mesh) {
+  photogrammetry::SurfaceMesh s;
+  s.vertices = std::move(mesh.vertices);
+  s.triangles.reserve(mesh.faces.size());
+  for (const auto& f : mesh.faces) s.triangles.push_back({f[0], f[1], f[2]});
+  s.texcoords.reserve(mesh.texcoords.size());
+  for (const auto& t : mesh.texcoords) s.texcoords.emplace_back(t[0], t[1]);
+  s.colours = std::move(mesh.colours);
+  return s;
+}
+
 }  // namespace
 
 PreparedModel prepare_model(const std::filesystem::path& project, storage::RecordId model_id,
@@ -27,22 +44,47 @@ PreparedModel prepare_model(const std::filesystem::path& project, storage::Recor
   if (model->texture_capture_id) {
     const storage::ImageBlob blob =
         store.load_capture_image(*model->texture_capture_id, model->texture_side);
-    out.texture_bgr = cv::imdecode(blob.bytes, cv::IMREAD_COLOR);
+    out.photo_bgr = cv::imdecode(blob.bytes, cv::IMREAD_COLOR);
+    const storage::Capture capture = store.load_capture(*model->texture_capture_id);
+    if (capture.calibration_id && model->texture_side == "left") {
+      const storage::Registration& r = model->registration;
+      photogrammetry::Similarity model_to_world;
+      model_to_world.scale = r.scale;
+      model_to_world.R = Eigen::Quaterniond(r.rotation_wxyz[0], r.rotation_wxyz[1],
+                                            r.rotation_wxyz[2], r.rotation_wxyz[3])
+                             .normalized()
+                             .toRotationMatrix();
+      model_to_world.t = r.translation;
+      out.left_view = measure::left_view(
+          model_to_world, store.load_calibration(*capture.calibration_id).intrinsics);
+    }
   }
+  auto surface = std::make_shared<photogrammetry::SurfaceMesh>(surface_of(std::move(model->mesh)));
+  model->mesh = {};
+  out.picker = std::make_shared<measure::MeshPicker>(*surface);
+  out.surface = std::move(surface);
   out.model = std::move(model);
   return out;
 }
 
 void ModelView::install(PreparedModel prepared) {
   if (!renderer_) renderer_ = std::make_unique<ModelRenderer>();
-  renderer_->upload(prepared.mesh, prepared.texture_bgr);
+  renderer_->upload(prepared.mesh, prepared.photo_bgr);
   id_ = prepared.id;
   model_ = std::move(prepared.model);
+  picker_ = std::move(prepared.picker);  // before the surface it points into
+  surface_ = std::move(prepared.surface);
+  left_view_ = std::move(prepared.left_view);
+  photo_ = std::move(prepared.photo_bgr);
   mesh_ = std::move(prepared.mesh);
   camera_.frame(mesh_.centre, mesh_.radius, mesh_.mean_normal);
 }
 
 void ModelView::clear() {
+  picker_.reset();
+  surface_.reset();
+  left_view_.reset();
+  photo_ = cv::Mat();
   model_.reset();
   mesh_ = {};
   id_ = 0;

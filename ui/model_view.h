@@ -9,6 +9,8 @@
 
 #include <imgui.h>
 
+#include "core/measure/mesh_picker.h"
+#include "core/measure/photo_view.h"
 #include "storage/project_records.h"
 #include "ui/display_mesh.h"
 #include "ui/model_renderer.h"
@@ -18,11 +20,16 @@
 namespace rockface::ui {
 
 // A model read and prepared on a worker, ready to upload on the UI thread.
+// Measuring works on the stored mesh at full resolution (picker); only the
+// display is decimated.
 struct PreparedModel {
   storage::RecordId id = 0;
-  std::shared_ptr<const storage::Model> model;  // as stored (picking measures on it)
+  std::shared_ptr<const storage::Model> model;  // the record; its mesh moved to `surface`
+  std::shared_ptr<const photogrammetry::SurfaceMesh> surface;
+  std::shared_ptr<const measure::MeshPicker> picker;  // on `surface`
+  std::optional<measure::PhotoView> left_view;        // when the capture's calibration is stored
   DisplayMesh mesh;
-  cv::Mat texture_bgr;  // empty when the model has no texture
+  cv::Mat photo_bgr;  // the texture photograph (full size); empty when none
 };
 
 // Worker side: opens its own store on `project`.
@@ -37,6 +44,10 @@ class ModelView {
   bool has_model() const { return model_ != nullptr; }
   storage::RecordId model_id() const { return id_; }
   const storage::Model* model() const { return model_.get(); }
+  const photogrammetry::SurfaceMesh* surface() const { return surface_.get(); }
+  const measure::MeshPicker* picker() const { return picker_.get(); }
+  const std::optional<measure::PhotoView>& left_view() const { return left_view_; }
+  const cv::Mat& photo() const { return photo_; }
   const DisplayMesh& display_mesh() const { return mesh_; }
 
   struct Interaction {
@@ -58,6 +69,10 @@ class ModelView {
  private:
   std::unique_ptr<ModelRenderer> renderer_;
   std::shared_ptr<const storage::Model> model_;
+  std::shared_ptr<const photogrammetry::SurfaceMesh> surface_;
+  std::shared_ptr<const measure::MeshPicker> picker_;
+  std::optional<measure::PhotoView> left_view_;
+  cv::Mat photo_;
   DisplayMesh mesh_;
   storage::RecordId id_ = 0;
   OrbitCamera camera_;

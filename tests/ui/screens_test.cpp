@@ -13,6 +13,7 @@
 #include "storage/project_store.h"
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
+#include "ui/trace_marker.h"
 
 namespace {
 
@@ -103,6 +104,47 @@ TEST(UiScreens, EachScreenRendersWithTheDemoProjectLoaded) {
   EXPECT_GT(drawn, 0.2 * (b.x - a.x) * (b.y - a.y));
 }
 
+TEST(UiScreens, TheModelIsDrawnWhereTheOverlaysProjectIt) {
+  // The GLES renderer and the overlays (targets, traces, blocks) use the
+  // same camera: the rendered silhouette's bounding box is the box of the
+  // projected vertices.
+  auto s = open_session(demo_project());
+  s->tap("Model");
+  const ModelView& view = s->state().model_view;
+  const cv::Mat shot = s->screenshot();
+  const cv::Vec3b clear(51, 46, 46);
+  cv::Rect2f rendered;
+  bool first = true;
+  for (int y = static_cast<int>(view.panel_min().y) + 1;
+       y < static_cast<int>(view.panel_max().y) - 1; ++y)
+    for (int x = static_cast<int>(view.panel_min().x) + 1;
+         x < static_cast<int>(view.panel_max().x) - 1; ++x) {
+      const cv::Vec3b p = shot.at<cv::Vec3b>(y, x);
+      if (cv::norm(cv::Vec3i(p) - cv::Vec3i(clear), cv::NORM_L1) <= 6) continue;
+      const cv::Rect2f px(static_cast<float>(x), static_cast<float>(y), 1, 1);
+      rendered = first ? px : (rendered | px);
+      first = false;
+    }
+  ASSERT_FALSE(first);
+  const DisplayMesh& mesh = view.display_mesh();
+  float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
+  for (std::size_t i = 0; i < mesh.positions.size(); i += 3) {
+    const Eigen::Vector3d p =
+        mesh.centre +
+        Eigen::Vector3d(mesh.positions[i], mesh.positions[i + 1], mesh.positions[i + 2]);
+    const auto q = view.to_screen(p);
+    ASSERT_TRUE(q);
+    x0 = std::min(x0, q->x), y0 = std::min(y0, q->y), x1 = std::max(x1, q->x),
+    y1 = std::max(y1, q->y);
+  }
+  // Within 2 px: pixel centres vs. vertex positions, and the float shader
+  // against the double projection.
+  EXPECT_NEAR(rendered.x, x0, 2);
+  EXPECT_NEAR(rendered.y, y0, 2);
+  EXPECT_NEAR(rendered.x + rendered.width, x1, 2);
+  EXPECT_NEAR(rendered.y + rendered.height, y1, 2);
+}
+
 TEST(UiScreens, BlocksOnTheModelAreTheStoredAnalysisColouredByVerdict) {
   auto s = open_session(demo_project());
   s->tap("Blocks");
@@ -171,6 +213,46 @@ TEST(UiScreens, PinchZoomsAndDragOrbitsTheModel) {
   cv::Mat diff;
   cv::absdiff(before, turned, diff);
   EXPECT_GT(cv::countNonZero(diff.reshape(1)), 1000);  // the view turned
+}
+
+TEST(UiScreens, TappedTraceAppearsWhereTappedAndIsStoredThere) {
+  const fs::path project = copy_of_demo("mapping");
+  auto s = open_session(project);
+  s->tap("Mapping");
+  const ModelView& view = s->state().model_view;
+  const auto centre = view.to_screen(view.display_mesh().centre);
+  ASSERT_TRUE(centre);
+  // Four taps across the middle of the face.
+  std::vector<ImVec2> taps;
+  for (int i = 0; i < 4; ++i) taps.emplace_back(centre->x - 60 + 40 * i, centre->y - 30 + 20 * i);
+  for (const auto& t : taps) s->tap(t.x, t.y);
+  const TraceMarker& marker = s->state().mapping.marker;
+  ASSERT_EQ(marker.taps().size(), 4u) << marker.problem();
+  // Four points give a plane or say why not; either way the screen says it.
+  ASSERT_TRUE(marker.plane());
+  const cv::Mat shot = s->screenshot();
+  for (const auto& t : taps)
+    EXPECT_TRUE(solid_disc(shot, t, 7 * kScale, bgr(kPendingTraceColour)))
+        << "no trace mark at " << t.x << ", " << t.y;
+  s->tap("Undo");
+  EXPECT_EQ(marker.taps().size(), 3u);
+  s->tap(taps[3].x, taps[3].y);
+  s->tap("Save trace");
+  s->settle();
+  EXPECT_TRUE(marker.taps().empty());  // saved: the next trace starts
+  auto store = rockface::storage::ProjectStore::open(project);
+  const auto measurements = store.list_measurements(store.latest_visit());
+  const auto& saved = measurements.back();
+  EXPECT_EQ(saved.kind, rockface::storage::Measurement::Kind::trace);
+  ASSERT_EQ(saved.points.size(), taps.size());
+  for (std::size_t i = 0; i < taps.size(); ++i) {
+    const auto at = view.to_screen(saved.points[i]);
+    ASSERT_TRUE(at);
+    // A pick lies on the tap's ray: it projects back onto the tap within
+    // float rounding of the ray (well under a pixel).
+    EXPECT_NEAR(at->x, taps[i].x, 0.5);
+    EXPECT_NEAR(at->y, taps[i].y, 0.5);
+  }
 }
 
 TEST(UiScreens, ReadOnlyProjectSaysWhy) {

@@ -1,5 +1,5 @@
 // A whole session through `rockface ui --headless --script`: open the demo
-// project, run the analysis, take a stereo pair with the mock camera, start
+// project, mark a trace by taps, run the analysis, take a stereo pair with the mock camera, start
 // its reconstruction and cancel it, close; then reopen. What finished is in
 // the store; what was cancelled left nothing half-written.
 #include <fstream>
@@ -31,14 +31,19 @@ int run_script(const fs::path& project, const std::string& steps, const std::str
 
 TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
   const fs::path project = copy_of_demo("session");
-  std::size_t analyses = 0, captures = 0, models = 0;
+  std::size_t analyses = 0, captures = 0, models = 0, measurements = 0;
   {
     auto store = rockface::storage::ProjectStore::open(project);
+    measurements = store.list_measurements().size();
     analyses = store.list_analyses().size();
     captures = store.list_captures().size();
     models = store.list_models().size();
   }
+  // The taps lie on the face in the 800 x 500 layout at scale 0.6 (the
+  // model panel's middle).
   ASSERT_EQ(run_script(project, R"([
+      {"tap": "Mapping"}, {"tap": [250, 230]}, {"tap": [280, 250]}, {"tap": [310, 270]},
+      {"screenshot": "mapping"}, {"tap": "Save trace"}, {"wait": "task"},
       {"tap": "Blocks"}, {"tap": "Run analysis"}, {"wait": "task"}, {"screenshot": "blocks"},
       {"tap": "Capture"}, {"tap": "Connect camera"}, {"wait": "task"},
       {"tap": "Shoot left"}, {"wait": "task"}, {"tap": "Shoot right"}, {"wait": "task"},
@@ -54,6 +59,9 @@ TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
   {
     auto store = rockface::storage::ProjectStore::open(project);
     EXPECT_TRUE(store.check_integrity().ok);
+    const auto traces = store.list_measurements();
+    ASSERT_EQ(traces.size(), measurements + 1);  // the trace marked by taps
+    EXPECT_EQ(traces.back().points.size(), 3u);
     const auto runs = store.list_analyses();
     ASSERT_EQ(runs.size(), analyses + 1);  // the analysis run in the UI
     EXPECT_FALSE(store.load_analysis(runs.back().id).blocks.empty());

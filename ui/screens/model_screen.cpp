@@ -92,7 +92,8 @@ void draw_model_screen(AppState& app) {
   const DisplayMesh& mesh = app.model_view.display_mesh();
   const storage::Model& model = *app.model_view.model();
   ImGui::Text("Model %lld (%s)", static_cast<long long>(model.id), model.preset.c_str());
-  ImGui::Text("%zu vertices, %zu triangles", model.mesh.vertices.size(), model.mesh.faces.size());
+  const photogrammetry::SurfaceMesh& surface = *app.model_view.surface();
+  ImGui::Text("%zu vertices, %zu triangles", surface.vertices.size(), surface.triangles.size());
   ImGui::Text("shown: %zu triangles", mesh.triangle_count());
   if (app.targets.button("Reset view", -1))
     app.model_view.camera().frame(mesh.centre, mesh.radius, mesh.mean_normal);
