@@ -170,29 +170,26 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   }
   if (analysed.patches.empty())
     throw InputError(request.source, "surface.patches: the scene has no free surface");
+  // The traces, and the free surface as areas: with the joints below, the
+  // visit holds all the analysis needs, so it can be analysed again from
+  // the project alone (the tablet UI does).
   std::vector<storage::Measurement> measurements;
+  auto measured = [&](storage::Measurement::Kind kind, const std::string& label,
+                      const std::vector<Eigen::Vector3d>& absolute) {
+    storage::Measurement m;
+    m.visit_id = out.visit_id;
+    m.model_id = out.model_id;
+    m.kind = kind;
+    m.label = label;
+    for (const auto& p : absolute) m.points.push_back(p - scene->datum);
+    return m;
+  };
   for (const auto& t : analysed.traces) {
-    storage::Measurement m;
-    m.visit_id = out.visit_id;
-    m.model_id = out.model_id;
-    m.kind = storage::Measurement::Kind::trace;
-    m.label = t.id;
-    m.joint_label = t.joint.value_or("");
-    for (const auto& p : t.points) m.points.push_back(p - scene->datum);
-    measurements.push_back(std::move(m));
+    measurements.push_back(measured(storage::Measurement::Kind::trace, t.id, t.points));
+    measurements.back().joint_label = t.joint.value_or("");
   }
-  // The free surface as areas: with the traces and joints below, the visit
-  // holds all the analysis needs, so it can be analysed again from the
-  // project alone (the tablet UI does).
-  for (const auto& patch : analysed.patches) {
-    storage::Measurement m;
-    m.visit_id = out.visit_id;
-    m.model_id = out.model_id;
-    m.kind = storage::Measurement::Kind::area;
-    m.label = patch.id;
-    for (const auto& p : patch.polygon) m.points.push_back(p - scene->datum);
-    measurements.push_back(std::move(m));
-  }
+  for (const auto& patch : analysed.patches)
+    measurements.push_back(measured(storage::Measurement::Kind::area, patch.id, patch.polygon));
   store.save_measurements(out.visit_id, measurements);
   std::vector<storage::Joint> joints;
   for (const auto& j : analysed.joints) {

@@ -32,7 +32,6 @@ std::vector<std::int32_t> cluster(const storage::Mesh& mesh, double cell,
 
 DisplayMesh make_display_mesh(const storage::Mesh& mesh, std::size_t max_triangles) {
   DisplayMesh out;
-  out.source_triangles = mesh.faces.size();
   if (mesh.vertices.empty()) return out;
   Eigen::AlignedBox3d box;
   for (const auto& v : mesh.vertices) box.extend(v);

@@ -22,7 +22,6 @@ struct DisplayMesh {
   std::vector<float> texcoords;                            // uv (empty: none)
   std::vector<std::uint8_t> colours;                       // rgb (empty: none)
   std::vector<std::uint32_t> indices;                      // three per triangle
-  std::size_t source_triangles = 0;                        // before decimation
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };

@@ -21,7 +21,6 @@ class ModelRenderer {
 
   // Uploads a mesh and its texture (BGR; empty: vertex colours).
   void upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr);
-  bool has_mesh() const { return index_count_ > 0; }
   // Renders into a framebuffer of the camera's viewport size (made or
   // resized as needed) and returns its colour texture.
   unsigned render(const OrbitCamera& camera);

@@ -26,16 +26,14 @@ class OrbitCamera {
   // Pinch: factor > 1 brings the camera closer.
   void zoom(float factor);
 
-  Eigen::Matrix4f view_projection() const;  // for the shader (relative to `origin()`)
+  // For the shader, whose positions are relative to the centre given to
+  // frame(): float then keeps millimetres on a site of hundreds of metres.
+  Eigen::Matrix4f view_projection() const;
   // Where a project point appears; z > 1 or behind the camera: not visible.
   Eigen::Vector3d project(const Eigen::Vector3d& point) const;
   bool in_front(const Eigen::Vector3d& point) const;
   ScreenRay ray(float x_px, float y_px) const;
   Eigen::Vector3d eye() const;
-  const Eigen::Vector3d& target() const { return target_; }
-  // Shader positions are relative to this point so that float keeps
-  // millimetres on a site of hundreds of metres.
-  const Eigen::Vector3d& origin() const { return origin_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
