@@ -1,4 +1,5 @@
-// `rockface ui [--project P] [--camera SOURCE] [--headless --script STEPS.json --screenshots DIR]`
+// `rockface ui [--project P] [--camera SOURCE] [[--headless] --script STEPS.json --screenshots
+// DIR]`
 #include "firmware-app/verb_ui.h"
 
 #include <iostream>
@@ -28,13 +29,19 @@ int run_ui(const UiRequest& req) {
   StoreAnalysisRunner analysis;
   FieldCameraConnector camera(req.camera);
   const ui::FieldServices services{&reconstruction, &analysis, &camera};
-  if (!req.headless) {
+  if (req.script.empty()) {
     ui::run_in_window(options, services);
     return 0;
   }
   const ui::UiScript script = ui::load_ui_script(req.script);
-  const ui::ScriptRun run = ui::run_ui_script(options, services, script, req.screenshots);
-  std::cout << "renderer: " << run.renderer << "\n";
+  ui::ScriptRun run;
+  if (req.headless) {
+    ui::HeadlessSession session(options, services, script.width, script.height);
+    std::cout << "renderer: " << session.renderer() << "\n";
+    run = ui::run_ui_script(session, script, req.screenshots);
+  } else {
+    run = ui::run_script_in_window(options, services, script, req.screenshots);
+  }
   for (const auto& s : run.screenshots) std::cout << "screenshot " << s.string() << "\n";
   std::cout << "status: " << run.status << "\n";
   return 0;
@@ -55,20 +62,21 @@ VerbRun setup_ui(CLI::App& sub) {
                  "triangles the model view draws at most (the model is decimated for display)");
   auto* headless = sub.add_flag("--headless", req->headless,
                                 "no window: surfaceless EGL (Mesa), replays --script");
-  sub.add_option("--script", req->script, "STEPS.json: taps and screenshots to replay")
-      ->needs(headless)
-      ->check(CLI::ExistingFile);
+  auto* script = sub.add_option("--script", req->script,
+                                "STEPS.json: taps and screenshots to replay (in the window "
+                                "unless --headless), then exit")
+                     ->check(CLI::ExistingFile);
   sub.add_option("--screenshots", req->screenshots, "folder for the script's screenshots")
-      ->needs(headless);
-  headless->needs(sub.get_option("--script"));
+      ->needs(script);
+  headless->needs(script);
   return [req] {
-    if (req->headless && req->screenshots.empty()) req->screenshots = ".";
+    if (req->screenshots.empty()) req->screenshots = ".";
     return run_ui(*req);
   };
 }
 
-const VerbRegistrar reg{"ui", "the tablet UI (a window, or headless with a script of taps)",
-                        setup_ui};
+const VerbRegistrar reg{
+    "ui", "the tablet UI (a window; a script of taps replayed in it or headless)", setup_ui};
 
 }  // namespace
 

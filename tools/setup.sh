@@ -13,6 +13,8 @@ packages=(
   # software renderer for headless runs, Xlib for the window, a TTF font
   libimgui-dev libstb-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libx11-dev
   fonts-dejavu-core
+  # the UI's window test: a virtual X server
+  xvfb xauth
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
 )

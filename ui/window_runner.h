@@ -1,14 +1,23 @@
 #pragma once
 // The tablet UI on a screen: a full-screen X11 window with a GLES 3 context
 // (EGL), the pointer (which the X server drives from the touch screen, with
-// touch emulation) as the primary finger and the wheel as pinch. Runs until
-// the window is closed.
+// touch emulation) as the primary finger and the wheel as pinch.
+#include <filesystem>
+
 #include "ui/app_state.h"
+#include "ui/ui_driver.h"
 
 namespace rockface::ui {
 
-// Throws rockface::Error when there is no display to open (DISPLAY unset,
-// or a build without X11) with what to do instead.
+// Runs until the window is closed. Throws rockface::Error when there is no
+// display to open (DISPLAY unset, or a build without X11), saying what to
+// do instead.
 void run_in_window(const UiOptions& options, const FieldServices& services);
+
+// Replays a script in the window (a demonstration on the device, or a test
+// of the window platform) and returns at its end.
+ScriptRun run_script_in_window(const UiOptions& options, const FieldServices& services,
+                               const UiScript& script,
+                               const std::filesystem::path& screenshots_dir);
 
 }  // namespace rockface::ui

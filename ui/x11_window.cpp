@@ -1,12 +1,12 @@
 // The window platform (built when libx11 is found, see ui/CMakeLists.txt).
 #include <chrono>
 #include <cstdlib>
+#include <memory>
 
 #include "core/common/error.h"
 #include "ui/platform/egl_context.h"
 #include "ui/platform/framebuffer.h"
 #include "ui/tablet_app.h"
-#include "ui/touch_input.h"
 #include "ui/window_runner.h"
 
 // Last: Xlib defines macros (None, Success, Status) that clash with Eigen.
@@ -24,78 +24,118 @@ struct X11Window {
   Display* display = nullptr;
   Window window = 0;
   Atom wm_delete = 0;
+
+  X11Window(int width, int height) {
+    const char* name = std::getenv("DISPLAY");
+    display = name ? XOpenDisplay(name) : nullptr;
+    if (!display)
+      throw Error(
+          std::string("no display to show the UI on (DISPLAY ") +
+          (name ? std::string("is ") + name + " but cannot be opened)" : "is not set)") +
+          "; run it headless: rockface ui --headless --script STEPS.json --screenshots DIR");
+    const int screen = DefaultScreen(display);
+    window = XCreateSimpleWindow(display, RootWindow(display, screen), 0, 0, width, height, 0,
+                                 BlackPixel(display, screen), WhitePixel(display, screen));
+    XStoreName(display, window, "rockface");
+    XSelectInput(display, window,
+                 ButtonPressMask | ButtonReleaseMask | PointerMotionMask | StructureNotifyMask);
+    wm_delete = XInternAtom(display, "WM_DELETE_WINDOW", False);
+    XSetWMProtocols(display, window, &wm_delete, 1);
+    XMapWindow(display, window);
+  }
+  X11Window(const X11Window&) = delete;
+  X11Window& operator=(const X11Window&) = delete;
   ~X11Window() {
-    if (window) XDestroyWindow(display, window);
-    if (display) XCloseDisplay(display);
+    XDestroyWindow(display, window);
+    XCloseDisplay(display);
   }
 };
 
-}  // namespace
+// Frames go into a framebuffer of the window's size and are copied to the
+// window, so that a screenshot reads what was shown.
+class WindowSession final : public UiDriver {
+ public:
+  WindowSession(const UiOptions& options, const FieldServices& services, int width, int height)
+      : x_(width, height),
+        egl_(EglContext::on_x11_window(x_.display, x_.window)),
+        target_(std::make_unique<Framebuffer>(width, height)),
+        app_(std::make_unique<TabletApp>(options, services)),
+        width_(width),
+        height_(height),
+        last_(std::chrono::steady_clock::now()) {}
+  ~WindowSession() override { app_.reset(); }  // before the GL context goes
 
-void run_in_window(const UiOptions& options, const FieldServices& services) {
-  const char* name = std::getenv("DISPLAY");
-  X11Window x;
-  x.display = name ? XOpenDisplay(name) : nullptr;
-  if (!x.display)
-    throw Error(std::string("no display to show the UI on (DISPLAY ") +
-                (name ? std::string("is ") + name + " but cannot be opened)" : "is not set)") +
-                "; run it headless: rockface ui --headless --script STEPS.json --screenshots DIR");
-  const int screen = DefaultScreen(x.display);
-  x.window = XCreateSimpleWindow(x.display, RootWindow(x.display, screen), 0, 0, kDefaultWidth,
-                                 kDefaultHeight, 0, BlackPixel(x.display, screen),
-                                 WhitePixel(x.display, screen));
-  XStoreName(x.display, x.window, "rockface");
-  XSelectInput(
-      x.display, x.window,
-      ButtonPressMask | ButtonReleaseMask | PointerMotionMask | StructureNotifyMask | KeyPressMask);
-  x.wm_delete = XInternAtom(x.display, "WM_DELETE_WINDOW", False);
-  XSetWMProtocols(x.display, x.window, &x.wm_delete, 1);
-  XMapWindow(x.display, x.window);
+  bool open() const { return open_; }
 
-  EglContext egl = EglContext::on_x11_window(x.display, x.window);
-  TabletApp app(options, services);
-  TouchInput input;
-  int width = kDefaultWidth, height = kDefaultHeight;
-  auto last = std::chrono::steady_clock::now();
-  for (bool open = true; open;) {
-    while (XPending(x.display)) {
+  void frame() override {
+    pump_events();
+    if (target_->width() != width_ || target_->height() != height_)
+      target_ = std::make_unique<Framebuffer>(width_, height_);
+    const auto now = std::chrono::steady_clock::now();
+    const float dt = std::chrono::duration<float>(now - last_).count();
+    last_ = now;
+    app_->build_frame(input_, width_, height_, dt);
+    target_->bind();
+    app_->draw();
+    target_->blit_to_window();
+    egl_.swap_buffers();  // paced by the display (swap interval 1)
+  }
+  cv::Mat screenshot() const override { return target_->read_bgr(); }
+  AppState& state() override { return app_->state(); }
+
+ private:
+  void pump_events() {
+    while (XPending(x_.display)) {
       XEvent e;
-      XNextEvent(x.display, &e);
+      XNextEvent(x_.display, &e);
+      const auto x = static_cast<float>(e.xbutton.x), y = static_cast<float>(e.xbutton.y);
       switch (e.type) {
         case ButtonPress:
-          if (e.xbutton.button == Button1)
-            input.push({TouchEvent::Kind::down, 0, float(e.xbutton.x), float(e.xbutton.y)});
-          else if (e.xbutton.button == Button4)
-            input.push_wheel(1);
-          else if (e.xbutton.button == Button5)
-            input.push_wheel(-1);
+          if (e.xbutton.button == Button1) input_.push({TouchEvent::Kind::down, 0, x, y});
+          if (e.xbutton.button == Button4) input_.push_wheel(1);
+          if (e.xbutton.button == Button5) input_.push_wheel(-1);
           break;
         case ButtonRelease:
-          if (e.xbutton.button == Button1)
-            input.push({TouchEvent::Kind::up, 0, float(e.xbutton.x), float(e.xbutton.y)});
+          if (e.xbutton.button == Button1) input_.push({TouchEvent::Kind::up, 0, x, y});
           break;
         case MotionNotify:
-          input.push({TouchEvent::Kind::move, 0, float(e.xmotion.x), float(e.xmotion.y)});
+          input_.push({TouchEvent::Kind::move, 0, static_cast<float>(e.xmotion.x),
+                       static_cast<float>(e.xmotion.y)});
           break;
         case ConfigureNotify:
-          width = e.xconfigure.width;
-          height = e.xconfigure.height;
+          width_ = e.xconfigure.width;
+          height_ = e.xconfigure.height;
           break;
         case ClientMessage:
-          if (static_cast<Atom>(e.xclient.data.l[0]) == x.wm_delete) open = false;
+          if (static_cast<Atom>(e.xclient.data.l[0]) == x_.wm_delete) open_ = false;
           break;
         default:
           break;
       }
     }
-    const auto now = std::chrono::steady_clock::now();
-    const float dt = std::chrono::duration<float>(now - last).count();
-    last = now;
-    app.build_frame(input, width, height, dt);
-    Framebuffer::unbind();
-    app.draw();
-    egl.swap_buffers();  // paced by the display (swap interval 1)
   }
+
+  X11Window x_;
+  EglContext egl_;
+  std::unique_ptr<Framebuffer> target_;
+  std::unique_ptr<TabletApp> app_;
+  int width_, height_;
+  bool open_ = true;
+  std::chrono::steady_clock::time_point last_;
+};
+
+}  // namespace
+
+void run_in_window(const UiOptions& options, const FieldServices& services) {
+  WindowSession session(options, services, kDefaultWidth, kDefaultHeight);
+  while (session.open()) session.frame();
+}
+
+ScriptRun run_script_in_window(const UiOptions& options, const FieldServices& services,
+                               const UiScript& script,
+                               const std::filesystem::path& screenshots_dir) {
+  WindowSession session(options, services, script.width, script.height);
+  return run_ui_script(session, script, screenshots_dir);
 }
 
 }  // namespace rockface::ui

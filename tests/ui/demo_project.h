@@ -22,9 +22,11 @@ inline std::filesystem::path ui_test_dir() {
   return dir;
 }
 
-inline int run_rockface_logged(const std::string& args, const std::filesystem::path& log) {
-  const std::string cmd =
-      std::string(ROCKFACE_BINARY_DIR) + "/rockface " + args + " >" + log.string() + " 2>&1";
+// `prefix` goes before the binary (e.g. "env -u DISPLAY ").
+inline int run_rockface_logged(const std::string& args, const std::filesystem::path& log,
+                               const std::string& prefix = "") {
+  const std::string cmd = prefix + std::string(ROCKFACE_BINARY_DIR) + "/rockface " + args + " >" +
+                          log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }

@@ -80,3 +80,28 @@ TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(UiCommandLine, WithoutAVerbTheUiStartsAndSaysWhenThereIsNoDisplay) {
+  const fs::path log = ui_test_dir() / "no-display.txt";
+  EXPECT_EQ(run_rockface_logged("", log, "env -u DISPLAY "), 1);
+  EXPECT_NE(slurp(log).find("no display to show the UI on"), std::string::npos) << slurp(log);
+  EXPECT_NE(slurp(log).find("--headless"), std::string::npos);
+}
+
+TEST(UiCommandLine, ABadScriptStepIsBadInputNamingTheStep) {
+  const fs::path script = ui_test_dir() / "bad.json";
+  std::ofstream(script) << R"({"steps": [{"tap": "Blocks"}, {"tap": "No such button"}]})";
+  const fs::path log = ui_test_dir() / "bad.txt";
+  EXPECT_EQ(run_rockface_logged("ui --project " + demo_project().string() +
+                                    " --scale 0.6 --max-triangles 20000 --headless --script " +
+                                    script.string() + " --screenshots " +
+                                    (ui_test_dir() / "bad").string(),
+                                log),
+            2);
+  EXPECT_NE(slurp(log).find("steps[1]: nothing labelled \"No such button\""), std::string::npos)
+      << slurp(log);
+}
+
+}  // namespace

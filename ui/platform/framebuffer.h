@@ -24,6 +24,8 @@ class Framebuffer {
   void bind() const;
   // Back to the window's default framebuffer.
   static void unbind();
+  // Copies the pixels to the window's default framebuffer (same size).
+  void blit_to_window() const;
   // The pixels as an 8-bit BGR image, top row first (OpenCV's order).
   cv::Mat read_bgr() const;
 
