@@ -1,7 +1,8 @@
 #pragma once
-// The tablet UI on a screen: a full-screen X11 window with a GLES 3 context
-// (EGL), the pointer (which the X server drives from the touch screen, with
-// touch emulation) as the primary finger and the wheel as pinch.
+// The tablet UI on a screen: an X11 window with a GLES 3 context (EGL).
+// Fingers come as XInput 2.2 touch sequences where the server offers them
+// (pinch and two-finger pan); otherwise the pointer is the one finger and
+// the mouse wheel pinches.
 #include <filesystem>
 
 #include "ui/app_state.h"

@@ -12,6 +12,7 @@
 // Last: Xlib defines macros (None, Success, Status) that clash with Eigen.
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
+#include <X11/extensions/XInput2.h>
 
 namespace rockface::ui {
 
@@ -24,6 +25,8 @@ struct X11Window {
   Display* display = nullptr;
   Window window = 0;
   Atom wm_delete = 0;
+  int xi_opcode = -1;
+  bool touch = false;  // XInput 2.2 touch events selected
 
   X11Window(int width, int height) {
     const char* name = std::getenv("DISPLAY");
@@ -41,7 +44,24 @@ struct X11Window {
                  ButtonPressMask | ButtonReleaseMask | PointerMotionMask | StructureNotifyMask);
     wm_delete = XInternAtom(display, "WM_DELETE_WINDOW", False);
     XSetWMProtocols(display, window, &wm_delete, 1);
+    select_touch();
     XMapWindow(display, window);
+  }
+
+  // Multi-touch through XInput 2.2 where the server has it (the tablet's
+  // touch screen): every finger is its own touch sequence. Without it the
+  // server still emulates the pointer from the first finger.
+  void select_touch() {
+    int event = 0, error = 0;
+    if (!XQueryExtension(display, "XInputExtension", &xi_opcode, &event, &error)) return;
+    int major = 2, minor = 2;
+    if (XIQueryVersion(display, &major, &minor) != 0 || major * 100 + minor < 202) return;
+    unsigned char bits[XIMaskLen(XI_LASTEVENT)] = {};
+    XISetMask(bits, XI_TouchBegin);
+    XISetMask(bits, XI_TouchUpdate);
+    XISetMask(bits, XI_TouchEnd);
+    XIEventMask mask{XIAllMasterDevices, static_cast<int>(sizeof bits), bits};
+    touch = XISelectEvents(display, window, &mask, 1) == 0;
   }
   X11Window(const X11Window&) = delete;
   X11Window& operator=(const X11Window&) = delete;
@@ -88,6 +108,10 @@ class WindowSession final : public UiDriver {
     while (XPending(x_.display)) {
       XEvent e;
       XNextEvent(x_.display, &e);
+      if (x_.touch && e.type == GenericEvent && e.xcookie.extension == x_.xi_opcode) {
+        touch_event(e);
+        continue;
+      }
       const auto x = static_cast<float>(e.xbutton.x), y = static_cast<float>(e.xbutton.y);
       switch (e.type) {
         case ButtonPress:
@@ -113,6 +137,27 @@ class WindowSession final : public UiDriver {
           break;
       }
     }
+  }
+
+  void touch_event(XEvent& e) {
+    if (!XGetEventData(x_.display, &e.xcookie)) return;
+    const auto* d = static_cast<const XIDeviceEvent*>(e.xcookie.data);
+    const auto x = static_cast<float>(d->event_x), y = static_cast<float>(d->event_y);
+    const int finger = d->detail;  // the touch id, the same from begin to end
+    switch (e.xcookie.evtype) {
+      case XI_TouchBegin:
+        input_.push({TouchEvent::Kind::down, finger, x, y});
+        break;
+      case XI_TouchUpdate:
+        input_.push({TouchEvent::Kind::move, finger, x, y});
+        break;
+      case XI_TouchEnd:
+        input_.push({TouchEvent::Kind::up, finger, x, y});
+        break;
+      default:
+        break;
+    }
+    XFreeEventData(x_.display, &e.xcookie);
   }
 
   X11Window x_;
