@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <sstream>
 
 #include <libexif/exif-data.h>
 #include <libexif/exif-format.h>
@@ -203,6 +204,28 @@ std::vector<uint8_t> with_exif(const std::vector<uint8_t>& jpeg, const ExifInfo&
   }
   out.insert(out.end(), jpeg.begin() + pos, jpeg.end());
   return out;
+}
+
+std::map<std::string, std::string> exif_fields(const ExifInfo& e) {
+  std::map<std::string, std::string> m;
+  auto put = [&](const char* k, const auto& v) {
+    if (v) {
+      std::ostringstream s;
+      s << *v;
+      m[k] = s.str();
+    }
+  };
+  if (!e.make.empty()) m["make"] = e.make;
+  if (!e.model.empty()) m["model"] = e.model;
+  if (!e.lens.empty()) m["lens"] = e.lens;
+  if (!e.datetime.empty()) m["datetime"] = e.datetime;
+  put("focal_length_mm", e.focal_length_mm);
+  put("f_number", e.f_number);
+  put("exposure_time_s", e.exposure_time_s);
+  put("iso", e.iso);
+  put("flash_fired", e.flash_fired);
+  put("focus_distance_m", e.focus_distance_m);
+  return m;
 }
 
 }  // namespace rockface::camera

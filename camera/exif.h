@@ -7,6 +7,7 @@
 // Focus distance comes from the standard SubjectDistance tag; bodies that
 // keep it only in their maker note report none.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,10 @@ ExifInfo read_exif(const std::vector<uint8_t>& jpeg);
 
 // Reads a file's EXIF. Throws InputError(path, ...) when the file cannot be read.
 ExifInfo read_exif_file(const std::string& path);
+
+// The fields that are set, as name -> text ("focal_length_mm" -> "24"), the
+// form a project stores with a capture.
+std::map<std::string, std::string> exif_fields(const ExifInfo& info);
 
 // Returns the JPEG with an APP1 EXIF block holding `info` inserted after the
 // start-of-image marker (any EXIF block already there is replaced). Throws

@@ -13,6 +13,7 @@
 #include "core/common/units.h"
 #include "core/photogrammetry/preset.h"
 #include "core/photogrammetry/reconstruction.h"
+#include "firmware-app/field_records.h"
 #include "firmware-app/scene_analysis.h"
 #include "firmware-app/synthetic_scene_from_scene.h"
 #include "storage/camera_json.h"
@@ -35,39 +36,6 @@ cv::Mat decode(const camera::CapturedFile& file, const std::string& label) {
     throw InputError(file.saved_path.empty() ? file.camera_path : file.saved_path,
                      label + " image cannot be decoded (corrupt or not an image)");
   return image;
-}
-
-std::map<std::string, std::string> exif_map(const camera::ExifInfo& e) {
-  std::map<std::string, std::string> m;
-  auto put = [&](const char* k, const auto& v) {
-    if (v) {
-      std::ostringstream s;
-      s << *v;
-      m[k] = s.str();
-    }
-  };
-  if (!e.make.empty()) m["make"] = e.make;
-  if (!e.model.empty()) m["model"] = e.model;
-  if (!e.lens.empty()) m["lens"] = e.lens;
-  if (!e.datetime.empty()) m["datetime"] = e.datetime;
-  put("focal_length_mm", e.focal_length_mm);
-  put("f_number", e.f_number);
-  put("exposure_time_s", e.exposure_time_s);
-  put("iso", e.iso);
-  put("flash_fired", e.flash_fired);
-  put("focus_distance_m", e.focus_distance_m);
-  return m;
-}
-
-storage::Mesh project_mesh(const photogrammetry::SurfaceMesh& m) {
-  storage::Mesh out;
-  out.vertices = m.vertices;
-  out.faces.reserve(m.triangles.size());
-  for (const auto& t : m.triangles) out.faces.push_back({t[0], t[1], t[2]});
-  out.texcoords.reserve(m.texcoords.size());
-  for (const auto& t : m.texcoords) out.texcoords.push_back({t.x(), t.y()});
-  out.colours = m.colours;
-  return out;
 }
 
 // Compass bearing (degrees clockwise from north) of the horizontal
@@ -169,8 +137,8 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   capture.label = "replay pair";
   capture.left.bytes = left.image.data;
   capture.right.bytes = right.image.data;
-  capture.left_exif = exif_map(left.exif);
-  capture.right_exif = exif_map(right.exif);
+  capture.left_exif = camera::exif_fields(left.exif);
+  capture.right_exif = camera::exif_fields(right.exif);
   capture.settings["preset"] = preset_name;
   out.capture_id = store.save_capture(capture);
 
@@ -179,18 +147,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   const cv::Mat right_image = decode(right.image, "right");
   const photogrammetry::ReconstructionResult rec = photogrammetry::reconstruct(
       left_image, right_image, intrinsics, intrinsics, preset, sources, progress);
-  storage::Model model;
-  model.capture_id = out.capture_id;
-  model.preset = preset_name;
-  model.mesh = project_mesh(rec.mesh);
-  model.texture_capture_id = out.capture_id;
-  model.texture_side = "left";
-  model.registration.kind =
-      rec.scale_source == "range pole" ? "range_pole_compass" : rec.scale_source;
-  model.registration.scale = rec.model_to_world.scale;
-  const Eigen::Quaterniond q(rec.model_to_world.R);
-  model.registration.rotation_wxyz = {q.w(), q.x(), q.y(), q.z()};
-  model.registration.translation = rec.model_to_world.t;
+  const storage::Model model = model_record(rec, out.capture_id, preset_name);
   out.model_id = store.save_model(model);
   out.model_points = rec.mesh.size();
   out.registration = "scale: " + rec.scale_source + ", vertical: " + rec.vertical_source +
@@ -213,18 +170,27 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   }
   if (analysed.patches.empty())
     throw InputError(request.source, "surface.patches: the scene has no free surface");
-  std::vector<storage::Measurement> traces;
-  for (const auto& t : analysed.traces) {
+  // The traces, and the free surface as areas: with the joints below, the
+  // visit holds all the analysis needs, so it can be analysed again from
+  // the project alone (the tablet UI does).
+  std::vector<storage::Measurement> measurements;
+  auto measured = [&](storage::Measurement::Kind kind, const std::string& label,
+                      const std::vector<Eigen::Vector3d>& absolute) {
     storage::Measurement m;
     m.visit_id = out.visit_id;
     m.model_id = out.model_id;
-    m.kind = storage::Measurement::Kind::trace;
-    m.label = t.id;
-    m.joint_label = t.joint.value_or("");
-    for (const auto& p : t.points) m.points.push_back(p - scene->datum);
-    traces.push_back(std::move(m));
+    m.kind = kind;
+    m.label = label;
+    for (const auto& p : absolute) m.points.push_back(p - scene->datum);
+    return m;
+  };
+  for (const auto& t : analysed.traces) {
+    measurements.push_back(measured(storage::Measurement::Kind::trace, t.id, t.points));
+    measurements.back().joint_label = t.joint.value_or("");
   }
-  store.save_measurements(out.visit_id, traces);
+  for (const auto& patch : analysed.patches)
+    measurements.push_back(measured(storage::Measurement::Kind::area, patch.id, patch.polygon));
+  store.save_measurements(out.visit_id, measurements);
   std::vector<storage::Joint> joints;
   for (const auto& j : analysed.joints) {
     storage::Joint joint;
@@ -242,25 +208,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
 
   progress.step("blocks", 0.8);
   storage::Report report = analyse_scene(analysed, progress);
-  storage::AnalysisRun run;
-  run.visit_id = out.visit_id;
-  run.model_id = out.model_id;
-  run.preset = preset_name;
-  run.effects = report.effects_simulated;
-  for (const auto& b : report.blocks) {
-    storage::BlockResult r;
-    r.label = b.id;
-    r.source = b.source;
-    r.code = b.code;
-    r.volume_m3 = b.volume.value_or(0);
-    r.finite = b.finite;
-    r.removable = b.removable;
-    r.marginal = b.marginal;
-    r.mode = b.mode ? b.mode->type : "none";
-    r.fos = b.fos;
-    r.report_json = storage::block_to_json(b);
-    run.blocks.push_back(std::move(r));
-  }
+  const storage::AnalysisRun run = analysis_record(report, out.visit_id, out.model_id, preset_name);
   out.analysis_id = store.save_analysis(run);
   out.report = std::move(report);
   progress.step("done", 1.0);

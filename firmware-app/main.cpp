@@ -1,5 +1,5 @@
 // rockface: the composition root. Parses the command line and runs one verb;
-// without a verb it would start the tablet UI (not built yet: see README).
+// without a verb it starts the tablet UI.
 #include <algorithm>
 #include <exception>
 #include <iostream>
@@ -7,6 +7,7 @@
 
 #include "core/common/error.h"
 #include "firmware-app/verb_registry.h"
+#include "firmware-app/verb_ui.h"
 
 namespace rockface::app {
 std::vector<Verb>& verbs() {
@@ -37,9 +38,7 @@ int main(int argc, char** argv) {
   try {
     for (auto& [sub, run] : runs)
       if (sub->parsed()) return run();
-    std::cerr
-        << "rockface: the tablet UI is not part of this build; use a verb (rockface --help)\n";
-    return 1;
+    return app::start_tablet_ui();
   } catch (const InputError& e) {
     std::cerr << "rockface: " << e.what() << "\n";
     return 2;

@@ -82,20 +82,25 @@ nlohmann::json make_scene_json(const SceneSource& source) {
   return scene;
 }
 
-void export_scene_json(ProjectStore& store, const std::filesystem::path& file,
-                       std::optional<RecordId> visit_id) {
+SceneSource load_scene_source(ProjectStore& store, std::optional<RecordId> visit_id) {
   SceneSource source;
   source.project = store.project();
   if (!visit_id) visit_id = store.latest_visit();
-  if (!visit_id) throw InputError(store.file().string(), "the project has no visit to export");
+  if (!visit_id) throw InputError(store.file().string(), "the project has no visit");
   source.visit_id = *visit_id;
   source.joints = store.list_joints(visit_id);
   source.measurements = store.list_measurements(visit_id);
   const auto analyses = store.list_analyses(visit_id);
   if (!analyses.empty()) source.analysis = analyses.back();
+  return source;
+}
+
+void export_scene_json(ProjectStore& store, const std::filesystem::path& file,
+                       std::optional<RecordId> visit_id) {
+  const SceneSource source = load_scene_source(store, visit_id);
   const nlohmann::json scene = make_scene_json(source);
   write_file_atomically(file, [&](std::ostream& out) { out << scene.dump(2) << '\n'; });
-  if (!store.read_only()) store.log_action(visit_id, "export scene json", file.string());
+  if (!store.read_only()) store.log_action(source.visit_id, "export scene json", file.string());
 }
 
 }  // namespace rockface::storage

@@ -25,6 +25,10 @@ struct SceneSource {
 
 nlohmann::json make_scene_json(const SceneSource& source);
 
+// What a visit (the latest when none) holds for its scene. Throws InputError
+// when the project has no visit.
+SceneSource load_scene_source(ProjectStore& store, std::optional<RecordId> visit_id = {});
+
 // Visit `visit_id` (the latest visit when none) to `file`; logs the export
 // when the project is writable.
 void export_scene_json(ProjectStore& store, const std::filesystem::path& file,

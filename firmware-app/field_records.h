@@ -1,0 +1,24 @@
+#pragma once
+// What the field workflow stores after each step, made from the step's
+// result: the model of a reconstruction (mesh, registration and its
+// accuracy figures) and the record of a block analysis. Shared by
+// `rockface replay` and the tablet UI's runners, so both store the same.
+#include <string>
+
+#include "core/photogrammetry/reconstruction.h"
+#include "storage/project_records.h"
+#include "storage/report.h"
+
+namespace rockface::app {
+
+// The model of `capture_id`, textured with its left image. The registration's
+// parameters_json holds how it was scaled and oriented, the predicted depth
+// precision and the range pole targets (project frame).
+storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
+                            storage::RecordId capture_id, const std::string& preset);
+
+storage::AnalysisRun analysis_record(const storage::Report& report, storage::RecordId visit_id,
+                                     std::optional<storage::RecordId> model_id,
+                                     const std::string& preset);
+
+}  // namespace rockface::app

@@ -1,0 +1,37 @@
+#pragma once
+// The tablet UI's runners (ui/field_services.h) composed from the parts the
+// UI layer must not include: reconstruction with registration, the scene
+// analysis, and the cameras (the DSLR, or the mock camera of a scene or a
+// capture folder).
+#include <optional>
+#include <string>
+
+#include "ui/field_services.h"
+
+namespace rockface::app {
+
+class StoreReconstructionRunner final : public ui::ReconstructionRunner {
+ public:
+  storage::RecordId reconstruct(const std::filesystem::path& project, storage::RecordId capture_id,
+                                const std::string& preset, Progress& progress) override;
+};
+
+class StoreAnalysisRunner final : public ui::AnalysisRunner {
+ public:
+  storage::RecordId analyse(const std::filesystem::path& project, storage::RecordId visit_id,
+                            Progress& progress) override;
+};
+
+// source: a scene with an imaging section, a folder of captures, or empty
+// (the first DSLR libgphoto2 finds).
+class FieldCameraConnector final : public ui::CameraConnector {
+ public:
+  explicit FieldCameraConnector(std::string source) : source_(std::move(source)) {}
+  std::unique_ptr<camera::Camera> connect() override;
+  std::string describe() const override;
+
+ private:
+  std::string source_;
+};
+
+}  // namespace rockface::app

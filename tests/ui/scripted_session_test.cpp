@@ -1,0 +1,107 @@
+// A whole session through `rockface ui --headless --script`: open the demo
+// project, mark a trace by taps, run the analysis, take a stereo pair with the mock camera, start
+// its reconstruction and cancel it, close; then reopen. What finished is in
+// the store; what was cancelled left nothing half-written.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "storage/project_store.h"
+#include "tests/ui/demo_project.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rockface::test;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p);
+  return {std::istreambuf_iterator<char>(f), {}};
+}
+
+int run_script(const fs::path& project, const std::string& steps, const std::string& name) {
+  const fs::path script = ui_test_dir() / (name + ".json");
+  std::ofstream(script) << R"({"viewport": [800, 500], "steps": )" << steps << "}";
+  return run_rockface_logged("ui --project " + project.string() + " --camera " + demo_scene() +
+                                 " --scale 0.6 --max-triangles 20000 --headless --script " +
+                                 script.string() + " --screenshots " +
+                                 (ui_test_dir() / name).string(),
+                             ui_test_dir() / (name + ".txt"));
+}
+
+TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
+  const fs::path project = copy_of_demo("session");
+  std::size_t analyses = 0, captures = 0, models = 0, measurements = 0;
+  {
+    auto store = rockface::storage::ProjectStore::open(project);
+    measurements = store.list_measurements().size();
+    analyses = store.list_analyses().size();
+    captures = store.list_captures().size();
+    models = store.list_models().size();
+  }
+  // The taps lie on the face in the 800 x 500 layout at scale 0.6 (the
+  // model panel's middle).
+  ASSERT_EQ(run_script(project, R"([
+      {"tap": "Mapping"}, {"tap": [250, 230]}, {"tap": [280, 250]}, {"tap": [310, 270]},
+      {"screenshot": "mapping"}, {"tap": "Save trace"}, {"wait": "task"},
+      {"tap": "Blocks"}, {"tap": "Run analysis"}, {"wait": "task"}, {"screenshot": "blocks"},
+      {"tap": "Capture"}, {"tap": "Connect camera"}, {"wait": "task"},
+      {"tap": "Shoot left"}, {"wait": "task"}, {"tap": "Shoot right"}, {"wait": "task"},
+      {"tap": "Store pair and reconstruct"}, {"frames": 2}, {"tap": "Cancel"}, {"wait": "task"},
+      {"screenshot": "capture"}, {"tap": "Project"}, {"tap": "Close project"}])",
+                       "first"),
+            0)
+      << slurp(ui_test_dir() / "first.txt");
+  const std::string out = slurp(ui_test_dir() / "first.txt");
+  EXPECT_NE(out.find("screenshot"), std::string::npos) << out;
+  EXPECT_TRUE(fs::exists(ui_test_dir() / "first" / "capture.png"));
+
+  {
+    auto store = rockface::storage::ProjectStore::open(project);
+    EXPECT_TRUE(store.check_integrity().ok);
+    const auto traces = store.list_measurements();
+    ASSERT_EQ(traces.size(), measurements + 1);  // the trace marked by taps
+    EXPECT_EQ(traces.back().points.size(), 3u);
+    const auto runs = store.list_analyses();
+    ASSERT_EQ(runs.size(), analyses + 1);  // the analysis run in the UI
+    EXPECT_FALSE(store.load_analysis(runs.back().id).blocks.empty());
+    EXPECT_EQ(store.list_captures().size(),
+              captures + 1);                        // the pair, stored before reconstructing
+    EXPECT_EQ(store.list_models().size(), models);  // the cancelled reconstruction
+  }
+
+  // Reopen: the Blocks table holds the stored analysis (a row can be tapped).
+  ASSERT_EQ(
+      run_script(project, R"([{"tap": "Blocks"}, {"tap": "row TB3"}, {"screenshot": "reopened"}])",
+                 "second"),
+      0)
+      << slurp(ui_test_dir() / "second.txt");
+  EXPECT_TRUE(fs::exists(ui_test_dir() / "second" / "reopened.png"));
+}
+
+}  // namespace
+
+namespace {
+
+TEST(UiCommandLine, WithoutAVerbTheUiStartsAndSaysWhenThereIsNoDisplay) {
+  const fs::path log = ui_test_dir() / "no-display.txt";
+  EXPECT_EQ(run_rockface_logged("", log, "env -u DISPLAY "), 1);
+  EXPECT_NE(slurp(log).find("no display to show the UI on"), std::string::npos) << slurp(log);
+  EXPECT_NE(slurp(log).find("--headless"), std::string::npos);
+}
+
+TEST(UiCommandLine, ABadScriptStepIsBadInputNamingTheStep) {
+  const fs::path script = ui_test_dir() / "bad.json";
+  std::ofstream(script) << R"({"steps": [{"tap": "Blocks"}, {"tap": "No such button"}]})";
+  const fs::path log = ui_test_dir() / "bad.txt";
+  EXPECT_EQ(run_rockface_logged("ui --project " + demo_project().string() +
+                                    " --scale 0.6 --max-triangles 20000 --headless --script " +
+                                    script.string() + " --screenshots " +
+                                    (ui_test_dir() / "bad").string(),
+                                log),
+            2);
+  EXPECT_NE(slurp(log).find("steps[1]: nothing labelled \"No such button\""), std::string::npos)
+      << slurp(log);
+}
+
+}  // namespace

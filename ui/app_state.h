@@ -1,0 +1,73 @@
+#pragma once
+// What the screens of the tablet UI share: the open project, the worker,
+// the model view, the camera and the touch targets. The screens are free
+// functions over this state (screens.h); TabletApp owns it and runs frames.
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "ui/background_task.h"
+#include "ui/field_services.h"
+#include "ui/model_view.h"
+#include "ui/project_session.h"
+#include "ui/touch_input.h"
+#include "ui/trace_marker.h"
+#include "ui/widgets.h"
+
+namespace rockface::ui {
+
+enum class Screen { project, capture, model, mapping, blocks };
+const char* screen_name(Screen screen);  // "Project", "Capture", ...
+
+struct UiOptions {
+  std::filesystem::path project;                // opened at start; empty: the Project screen
+  std::filesystem::path projects_folder = ".";  // where "New project" creates files
+  float scale = 1;                              // 1 = a 1280x800 tablet
+  // Triangles the model view draws at most (the stored model is decimated
+  // for display; picking and measuring use the stored model).
+  std::size_t max_display_triangles = 400000;
+};
+
+// The camera of the Capture screen and the shots of the pair being taken.
+struct CaptureState {
+  std::shared_ptr<camera::Camera> camera;  // used on the worker only while a task runs
+  std::string connection = "not connected";
+  std::optional<camera::Capture> left, right;
+  bool stored = false;  // the pair is saved in the project
+  std::vector<std::string> guidance;
+  float distance_m = 10;      // to the face, for the base length hint
+  float range_pole_m = 2.0f;  // distance between the pole's target centres
+  cv::Mat live_view;
+  unsigned live_view_texture = 0;
+};
+
+struct MappingState {
+  TraceMarker marker;       // the trace being marked
+  std::string joint_label;  // joint (set) the next trace is assigned to; empty: none
+};
+
+struct AppState {
+  UiOptions options;
+  FieldServices services;
+  Screen screen = Screen::project;
+  std::unique_ptr<ProjectSession> session;
+  BackgroundTask task;
+  TouchTargets targets;
+  ModelView model_view;
+  CaptureState capture;
+  MappingState mapping;
+  std::optional<std::size_t> selected_block;  // index into session->blocks()
+  std::string status;                         // last message for the status bar
+  std::string new_project_name = "site";
+  TouchGesture gesture;  // this frame's two-finger gesture
+
+  // Opens a project and loads its model on the worker; errors go to status.
+  void open_project(const std::filesystem::path& file);
+};
+
+}  // namespace rockface::ui

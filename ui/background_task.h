@@ -1,0 +1,70 @@
+#pragma once
+// Long work (reconstruction, analysis, a camera shot) on a worker thread, so
+// the UI thread never blocks: the screens start a task, draw its progress
+// bar and cancel button every frame, and take its outcome when it is done.
+// One task at a time; the worker reports through rockface::Progress and
+// stops at its next step() after cancel().
+#include <atomic>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "core/common/progress.h"
+
+namespace rockface::ui {
+
+struct TaskStatus {
+  bool running = false;
+  bool cancelling = false;
+  std::string title;  // "Analysis"
+  std::string stage;  // last stage the work reported
+  double fraction = 0;
+};
+
+struct TaskOutcome {
+  enum class Kind { done, cancelled, failed };
+  Kind kind = Kind::done;
+  std::string title;
+  std::string message;  // what failed, or a short summary of what was done
+};
+
+class BackgroundTask {
+ public:
+  // The work returns a short summary for the status line.
+  using Work = std::function<std::string(Progress&)>;
+  // Runs on the thread that takes the outcome (the UI thread), so it may
+  // touch UI state and GL: install a loaded model, re-read the project.
+  using Then = std::function<void(const TaskOutcome&)>;
+
+  BackgroundTask() = default;
+  BackgroundTask(const BackgroundTask&) = delete;
+  BackgroundTask& operator=(const BackgroundTask&) = delete;
+  ~BackgroundTask();  // cancels and joins a running task
+
+  // False (and nothing started) while another task runs.
+  bool start(std::string title, Work work, Then then = {});
+  void cancel();
+  TaskStatus status() const;
+  bool running() const { return running_.load(); }
+  // The outcome of the last task, once, after running its `then`.
+  std::optional<TaskOutcome> take_outcome();
+  // Blocks until the running task (if any) has finished: headless scripts
+  // and shutdown only, never a frame.
+  void wait();
+
+ private:
+  class Reporter;
+  void join_finished();
+
+  mutable std::mutex mutex_;
+  std::thread thread_;
+  std::atomic<bool> running_{false};
+  std::atomic<bool> cancel_{false};
+  TaskStatus status_;
+  std::optional<TaskOutcome> outcome_;
+  Then then_;
+};
+
+}  // namespace rockface::ui

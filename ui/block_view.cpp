@@ -1,0 +1,72 @@
+#include "ui/block_view.h"
+
+#include <nlohmann/json.hpp>
+
+namespace rockface::ui {
+
+const char* verdict_name(BlockVerdict verdict) {
+  switch (verdict) {
+    case BlockVerdict::moves:
+      return "moves";
+    case BlockVerdict::marginal:
+      return "marginal";
+    case BlockVerdict::holds:
+      return "holds";
+    case BlockVerdict::keyed:
+      return "keyed";
+    case BlockVerdict::infinite:
+      return "not finite";
+  }
+  return "?";
+}
+
+namespace {
+
+BlockVerdict verdict_of(const BlockView& b) {
+  if (b.marginal) return BlockVerdict::marginal;
+  if (!b.finite) return BlockVerdict::infinite;
+  if (!b.removable) return BlockVerdict::keyed;
+  if (b.mode == "none") return BlockVerdict::holds;
+  if (b.mode == "falling" || b.mode == "lifting" || !b.fos || *b.fos < 1)
+    return BlockVerdict::moves;
+  return BlockVerdict::holds;
+}
+
+}  // namespace
+
+BlockView make_block_view(const storage::BlockResult& block, const Eigen::Vector3d& datum) {
+  BlockView v;
+  v.label = block.label;
+  v.source = block.source;
+  v.code = block.code;
+  v.mode = block.mode;
+  v.finite = block.finite;
+  v.removable = block.removable;
+  v.marginal = block.marginal;
+  v.fos = block.fos;
+  const auto json = nlohmann::json::parse(block.report_json, nullptr, false);
+  if (json.is_object()) {
+    v.report_text = json.dump(2);
+    if (json.contains("margin_deg") && json["margin_deg"].is_number())
+      v.margin_deg = json["margin_deg"].get<double>();
+    if (json.contains("vertices") && json["vertices"].is_array())
+      for (const auto& p : json["vertices"])
+        if (p.is_array() && p.size() == 3)
+          v.vertices.push_back(
+              Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>()) - datum);
+    if (json.contains("rotation") && json["rotation"].is_object()) {
+      bool any = false;
+      for (const char* part : {"corners", "edges"})
+        if (json["rotation"].contains(part))
+          for (const auto& item : json["rotation"][part])
+            any = any || item.value("rotatable", false);
+      v.rotatable = any;
+    }
+  } else {
+    v.report_text = block.report_json;
+  }
+  v.verdict = verdict_of(v);
+  return v;
+}
+
+}  // namespace rockface::ui

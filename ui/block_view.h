@@ -1,0 +1,40 @@
+#pragma once
+// One analysed block as the Blocks screen and the model view show it: the
+// stored key columns, what the table needs from the block's report JSON
+// (margin, rotatability, vertices) and one verdict that picks its colour.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "storage/project_records.h"
+
+namespace rockface::ui {
+
+// Ordered from most to least alarming.
+enum class BlockVerdict {
+  moves,     // finite, removable and the factor of safety is below 1 (or a free fall)
+  marginal,  // a verdict within its tolerance or the measurements' uncertainty
+  holds,     // finite and removable, but friction holds it (FoS >= 1)
+  keyed,     // finite, not removable
+  infinite,  // not finite: no block
+};
+
+const char* verdict_name(BlockVerdict verdict);
+
+struct BlockView {
+  std::string label, source, code, mode;
+  bool finite = false, removable = false, marginal = false;
+  std::optional<double> fos;
+  std::optional<double> margin_deg;
+  std::optional<bool> rotatable;          // a corner or edge can rotate; absent: not analysed
+  std::vector<Eigen::Vector3d> vertices;  // project frame (datum-relative)
+  std::string report_text;                // the block's report JSON, indented
+  BlockVerdict verdict = BlockVerdict::infinite;
+};
+
+// datum: the project's, subtracted from the report's absolute coordinates.
+BlockView make_block_view(const storage::BlockResult& block, const Eigen::Vector3d& datum);
+
+}  // namespace rockface::ui

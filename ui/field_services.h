@@ -1,0 +1,56 @@
+#pragma once
+// What the screens need from above the UI layer. The analysis and the
+// reconstruction are composed in firmware-app (the composition root), which
+// the UI must not include; the screens call these interfaces on a worker
+// thread (BackgroundTask) and firmware-app passes the implementations in.
+//
+// Every runner opens its own ProjectStore on the project file (one SQLite
+// connection per thread), saves what it made as soon as it is made, and
+// returns the id of the record.
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "camera/camera.h"
+#include "core/common/progress.h"
+#include "storage/project_records.h"
+
+namespace rockface::ui {
+
+class ReconstructionRunner {
+ public:
+  virtual ~ReconstructionRunner() = default;
+  // A textured, registered model of a stored capture. preset: fast |
+  // standard | precise. Returns the model's id.
+  virtual storage::RecordId reconstruct(const std::filesystem::path& project,
+                                        storage::RecordId capture_id, const std::string& preset,
+                                        Progress& progress) = 0;
+};
+
+class AnalysisRunner {
+ public:
+  virtual ~AnalysisRunner() = default;
+  // The block analysis of a visit's joints, traces and surface as stored.
+  // Returns the analysis id.
+  virtual storage::RecordId analyse(const std::filesystem::path& project,
+                                    storage::RecordId visit_id, Progress& progress) = 0;
+};
+
+// The camera of the Capture screen: the DSLR when one is attached, else a
+// mock camera (a replay folder or a synthetic scene).
+class CameraConnector {
+ public:
+  virtual ~CameraConnector() = default;
+  // Throws rockface::Error saying why no camera could be connected.
+  virtual std::unique_ptr<camera::Camera> connect() = 0;
+  // What connect() will try, e.g. "mock camera: synthetic scene tunnel-face".
+  virtual std::string describe() const = 0;
+};
+
+struct FieldServices {
+  ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
+  AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
+  CameraConnector* camera = nullptr;               // null: no camera
+};
+
+}  // namespace rockface::ui

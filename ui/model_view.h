@@ -1,0 +1,82 @@
+#pragma once
+// The 3D image in a panel: the stored model, decimated for display and
+// textured with its photograph, seen through an orbit camera that one
+// finger turns, two fingers pan and pinch zoom. Screens draw their overlays
+// (targets, traces, blocks) on top with to_screen().
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include <imgui.h>
+
+#include "core/measure/mesh_picker.h"
+#include "core/measure/photo_view.h"
+#include "storage/project_records.h"
+#include "ui/display_mesh.h"
+#include "ui/model_renderer.h"
+#include "ui/orbit_camera.h"
+#include "ui/touch_input.h"
+
+namespace rockface::ui {
+
+// A model read and prepared on a worker, ready to upload on the UI thread.
+// Measuring works on the stored mesh at full resolution (picker); only the
+// display is decimated.
+struct PreparedModel {
+  storage::RecordId id = 0;
+  std::shared_ptr<const storage::Model> model;  // the record; its mesh moved to `surface`
+  std::shared_ptr<const photogrammetry::SurfaceMesh> surface;
+  std::shared_ptr<const measure::MeshPicker> picker;  // on `surface`
+  std::optional<measure::PhotoView> left_view;        // when the capture's calibration is stored
+  DisplayMesh mesh;
+  cv::Mat photo_bgr;  // the texture photograph (full size); empty when none
+};
+
+// Worker side: opens its own store on `project`.
+PreparedModel prepare_model(const std::filesystem::path& project, storage::RecordId model_id,
+                            std::size_t max_triangles);
+
+class ModelView {
+ public:
+  // UI thread (GL context current).
+  void install(PreparedModel prepared);
+  void clear();
+  bool has_model() const { return model_ != nullptr; }
+  storage::RecordId model_id() const { return id_; }
+  const storage::Model* model() const { return model_.get(); }
+  const photogrammetry::SurfaceMesh* surface() const { return surface_.get(); }
+  const measure::MeshPicker* picker() const { return picker_.get(); }
+  const std::optional<measure::PhotoView>& left_view() const { return left_view_; }
+  const cv::Mat& photo() const { return photo_; }
+  const DisplayMesh& display_mesh() const { return mesh_; }
+
+  struct Interaction {
+    std::optional<ImVec2> tap;  // a touch that went up where it went down (screen px)
+  };
+  // Draws the panel of `size` at the cursor and applies this frame's
+  // gestures.
+  Interaction draw(ImVec2 size, const TouchGesture& gesture);
+
+  // Screen pixel (this frame's panel) of a project point; nothing when it
+  // is behind the camera.
+  std::optional<ImVec2> to_screen(const Eigen::Vector3d& point) const;
+  ScreenRay ray_at(ImVec2 screen) const;
+  ImVec2 panel_min() const { return panel_min_; }
+  ImVec2 panel_max() const { return panel_max_; }
+  OrbitCamera& camera() { return camera_; }
+  const OrbitCamera& camera() const { return camera_; }
+
+ private:
+  std::unique_ptr<ModelRenderer> renderer_;
+  std::shared_ptr<const storage::Model> model_;
+  std::shared_ptr<const photogrammetry::SurfaceMesh> surface_;
+  std::shared_ptr<const measure::MeshPicker> picker_;
+  std::optional<measure::PhotoView> left_view_;
+  cv::Mat photo_;
+  DisplayMesh mesh_;
+  storage::RecordId id_ = 0;
+  OrbitCamera camera_;
+  ImVec2 panel_min_{0, 0}, panel_max_{0, 0};
+};
+
+}  // namespace rockface::ui

@@ -1,0 +1,182 @@
+// Mapping: tap points on the 3D image to mark a trace, or tap its two ends
+// for a semi-automatic trace; undo; assign it to a joint; the dip / dip
+// direction and its uncertainty update with every tap, and the stereonet
+// beside the model shows it with the visit's joints and stored traces.
+// Saving a trace stores it at once (on the worker).
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/units.h"
+#include "storage/project_store.h"
+#include "ui/screens/screens.h"
+#include "ui/stereonet_view.h"
+
+namespace rockface::ui {
+
+namespace {
+
+constexpr ImU32 kJointColour = IM_COL32(0, 90, 200, 255);
+
+TraceContext trace_context(const AppState& app) {
+  TraceContext c;
+  c.picker = app.model_view.picker();
+  if (app.model_view.left_view()) c.photo_view = &*app.model_view.left_view();
+  c.photo = &app.model_view.photo();
+  // The precision of a picked point is the model's predicted depth
+  // precision (stored with the registration by the reconstruction).
+  if (const auto* m = app.model_view.model()) {
+    const auto p = nlohmann::json::parse(
+        m->registration.parameters_json.empty() ? "{}" : m->registration.parameters_json, nullptr,
+        false);
+    if (p.is_object() && p.contains("predicted_depth_sigma_mm") &&
+        p["predicted_depth_sigma_mm"].is_number())
+      c.settings.point_sigma = p["predicted_depth_sigma_mm"].get<double>() / 1000;
+  }
+  return c;
+}
+
+void draw_polyline(const AppState& app, const std::vector<Eigen::Vector3d>& points, ImU32 colour,
+                   float width) {
+  std::vector<ImVec2> line;
+  for (const auto& p : points)
+    if (const auto q = app.model_view.to_screen(p)) line.push_back(*q);
+  ImGui::GetWindowDrawList()->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0,
+                                          width);
+}
+
+void draw_traces(AppState& app) {
+  const float s = app.targets.scale();
+  for (const auto& m : app.session->measurements())
+    if (m.kind == storage::Measurement::Kind::trace)
+      draw_polyline(app, m.points, kTraceColour, 4 * s);
+  const TraceMarker& marker = app.mapping.marker;
+  draw_polyline(app, marker.points(), kPendingTraceColour, 4 * s);
+  for (const auto& t : marker.taps())
+    if (const auto q = app.model_view.to_screen(t))
+      ImGui::GetWindowDrawList()->AddCircleFilled(*q, 7 * s, kPendingTraceColour, 16);
+}
+
+std::string next_trace_label(const ProjectSession& session) {
+  int n = 0;
+  for (const auto& m : session.measurements())
+    if (m.kind == storage::Measurement::Kind::trace && m.label.size() > 1 && m.label[0] == 'T')
+      n = std::max(n, std::atoi(m.label.c_str() + 1));
+  return "T" + std::to_string(n + 1);
+}
+
+void save_trace(AppState& app) {
+  const TraceMarker& marker = app.mapping.marker;
+  storage::Measurement m;
+  m.visit_id = *app.session->visit();
+  m.model_id = app.model_view.model_id();
+  m.kind = storage::Measurement::Kind::trace;
+  m.label = next_trace_label(*app.session);
+  m.joint_label = app.mapping.joint_label;
+  m.points = marker.points();
+  if (marker.plane() && marker.plane()->known) {
+    m.dip_deg = rad_to_deg(marker.plane()->orientation.dip);
+    m.dipdir_deg = rad_to_deg(marker.plane()->orientation.dipdir);
+    m.fit_rms_m = marker.plane()->fit.rms_off_plane();
+  }
+  const auto file = app.session->file();
+  app.task.start(
+      "Saving trace",
+      [file, m](Progress&) {
+        storage::ProjectStore store = storage::ProjectStore::open(file);
+        store.save_measurements(m.visit_id, {m});
+        return "trace " + m.label + " saved";
+      },
+      [&app](const TaskOutcome& outcome) {
+        if (outcome.kind != TaskOutcome::Kind::done) return;
+        app.mapping.marker.clear();
+        if (app.session) app.session->refresh();
+      });
+}
+
+void draw_fit(const TraceMarker& marker) {
+  if (const auto& plane = marker.plane(); plane && plane->known) {
+    ImGui::Text("dip %.1f°  dip direction %05.1f°", rad_to_deg(plane->orientation.dip),
+                rad_to_deg(plane->orientation.dipdir));
+    ImGui::Text("uncertainty ± %.1f° (1 sigma), %zu points", rad_to_deg(plane->sigma),
+                marker.points().size());
+    if (!plane->problem.empty()) ImGui::TextWrapped("%s", plane->problem.c_str());
+  } else if (plane) {
+    ImGui::TextWrapped("%s", plane->problem.c_str());
+  } else if (!marker.problem().empty()) {
+    ImGui::TextWrapped("%s", marker.problem().c_str());
+  } else {
+    ImGui::TextWrapped(marker.mode() == TraceMarker::Mode::points
+                           ? "Tap points along a trace (3 or more)."
+                           : "Tap the two ends of a trace.");
+  }
+}
+
+void draw_controls(AppState& app) {
+  TraceMarker& marker = app.mapping.marker;
+  const TraceContext context = trace_context(app);
+  const bool idle = !app.task.running();
+  auto toggle = [&](const char* label, bool on) {
+    if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    const bool pressed = app.targets.button(label);
+    if (on) ImGui::PopStyleColor();
+    return pressed;
+  };
+  if (toggle("Tap points", marker.mode() == TraceMarker::Mode::points))
+    marker.set_mode(TraceMarker::Mode::points);
+  ImGui::SameLine();
+  if (toggle("Two taps", marker.mode() == TraceMarker::Mode::two_taps))
+    marker.set_mode(TraceMarker::Mode::two_taps);
+  if (app.targets.button("Undo", 0, !marker.taps().empty())) marker.undo(context);
+  ImGui::SameLine();
+  if (app.targets.button("Clear", 0, !marker.taps().empty())) marker.clear();
+  ImGui::SameLine();
+  const bool can_save =
+      idle && marker.points().size() >= 2 && app.session->visit() && !app.session->read_only();
+  if (app.targets.button("Save trace", 0, can_save)) save_trace(app);
+  ImGui::TextUnformatted("Joint:");
+  std::vector<std::string> labels{""};
+  for (const auto& j : app.session->joints()) labels.push_back(j.label);
+  for (const auto& label : labels) {
+    ImGui::SameLine();
+    if (toggle((label.empty() ? std::string("none") : label).c_str(),
+               app.mapping.joint_label == label))
+      app.mapping.joint_label = label;
+  }
+  draw_fit(marker);
+}
+
+}  // namespace
+
+void draw_mapping_screen(AppState& app) {
+  if (!require_model(app)) return;
+  const float side = 400 * app.targets.scale();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  ImGui::BeginGroup();
+  const auto interaction = app.model_view.draw(ImVec2(avail.x - side, avail.y), app.gesture);
+  if (interaction.tap) {
+    const ScreenRay r = app.model_view.ray_at(*interaction.tap);
+    app.mapping.marker.tap({r.origin, r.direction}, trace_context(app));
+  }
+  ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
+  draw_traces(app);
+  ImGui::PopClipRect();
+  ImGui::EndGroup();
+  ImGui::SameLine();
+  ImGui::BeginChild("mapping side", ImVec2(0, 0));
+  draw_controls(app);
+  std::vector<StereonetPlane> planes;
+  for (const auto& j : app.session->joints())
+    planes.push_back({j.dip_deg, j.dipdir_deg, kJointColour, true});
+  for (const auto& m : app.session->measurements())
+    if (m.kind == storage::Measurement::Kind::trace && m.dip_deg)
+      planes.push_back({*m.dip_deg, *m.dipdir_deg, kTraceColour, false});
+  if (const auto& plane = app.mapping.marker.plane(); plane && plane->known)
+    planes.push_back({rad_to_deg(plane->orientation.dip), rad_to_deg(plane->orientation.dipdir),
+                      kPendingTraceColour, true});
+  draw_stereonet(planes,
+                 std::min(ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y));
+  ImGui::EndChild();
+}
+
+}  // namespace rockface::ui

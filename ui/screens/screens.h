@@ -1,0 +1,17 @@
+#pragma once
+// The five screens of the field workflow, one file each; each draws the
+// main area of one frame from the shared AppState.
+#include "ui/app_state.h"
+
+namespace rockface::ui {
+
+void draw_project_screen(AppState& app);
+void draw_capture_screen(AppState& app);
+void draw_model_screen(AppState& app);
+void draw_mapping_screen(AppState& app);
+void draw_blocks_screen(AppState& app);
+
+// Shared by the screens that need a model: a note where it is missing.
+bool require_model(AppState& app);
+
+}  // namespace rockface::ui

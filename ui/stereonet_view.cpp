@@ -1,0 +1,40 @@
+#include "ui/stereonet_view.h"
+
+#include "core/common/units.h"
+#include "core/geometry/stereonet.h"
+
+namespace rockface::ui {
+
+void draw_stereonet(const std::vector<StereonetPlane>& planes, float size) {
+  using namespace geometry;
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  const float radius = size / 2 - 16;
+  const ImVec2 centre(corner.x + size / 2, corner.y + size / 2);
+  // Unit-circle coordinates (x east, y north) to screen (y down).
+  auto at = [&](const Eigen::Vector2d& p) {
+    return ImVec2(centre.x + static_cast<float>(p.x()) * radius,
+                  centre.y - static_cast<float>(p.y()) * radius);
+  };
+  draw->AddCircleFilled(centre, radius, IM_COL32(255, 255, 255, 255), 96);
+  draw->AddCircle(centre, radius, IM_COL32(0, 0, 0, 255), 96, 2);
+  draw->AddLine(ImVec2(centre.x - 6, centre.y), ImVec2(centre.x + 6, centre.y),
+                IM_COL32(0, 0, 0, 255));
+  draw->AddLine(ImVec2(centre.x, centre.y - 6), ImVec2(centre.x, centre.y + 6),
+                IM_COL32(0, 0, 0, 255));
+  draw->AddText(ImVec2(centre.x - 5, corner.y), IM_COL32(0, 0, 0, 255), "N");
+  for (const auto& plane : planes) {
+    const PlaneOrientation o{deg_to_rad(plane.dip_deg), deg_to_rad(plane.dipdir_deg)};
+    if (plane.great_circle) {
+      std::vector<ImVec2> line;
+      for (const auto& p : project_great_circle(o, Projection::EqualArea, Hemisphere::Lower))
+        line.push_back(at(p));
+      draw->AddPolyline(line.data(), static_cast<int>(line.size()), plane.colour, 0, 2);
+    }
+    draw->AddCircleFilled(at(project_pole(o, Projection::EqualArea, Hemisphere::Lower)), 5,
+                          plane.colour, 12);
+  }
+  ImGui::Dummy(ImVec2(size, size));
+}
+
+}  // namespace rockface::ui

@@ -1,0 +1,111 @@
+#include "ui/ui_driver.h"
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/common/error.h"
+
+namespace rockface::ui {
+
+void UiDriver::settle() {
+  // The outcome is taken inside a frame; a `then` may start another task.
+  for (;;) {
+    state().task.wait();
+    frame();
+    if (!state().task.running()) break;
+  }
+  frame();
+}
+
+void UiDriver::frames_until_input_consumed() {
+  while (!input_.idle()) frame();
+  frame();
+}
+
+void UiDriver::tap(float x, float y) {
+  input_.push({TouchEvent::Kind::down, 0, x, y});
+  input_.push({TouchEvent::Kind::up, 0, x, y});
+  frames_until_input_consumed();
+}
+
+void UiDriver::tap(const std::string& label, const std::string& where) {
+  const auto target = state().targets.find(label);
+  if (!target) throw InputError(where, "nothing labelled \"" + label + "\" on the screen");
+  if (!target->enabled) throw InputError(where, "\"" + label + "\" is disabled on the screen");
+  const ImVec2 c = target->centre();
+  tap(c.x, c.y);
+}
+
+void UiDriver::drag(Eigen::Vector2f from, Eigen::Vector2f to, int frames) {
+  input_.push({TouchEvent::Kind::down, 0, from.x(), from.y()});
+  frames_until_input_consumed();
+  for (int i = 1; i <= frames; ++i) {
+    const Eigen::Vector2f p = from + (to - from) * (static_cast<float>(i) / frames);
+    input_.push({TouchEvent::Kind::move, 0, p.x(), p.y()});
+    frame();
+  }
+  input_.push({TouchEvent::Kind::up, 0, to.x(), to.y()});
+  frames_until_input_consumed();
+}
+
+void UiDriver::pinch(Eigen::Vector2f centre, float from, float to, int frames) {
+  auto fingers = [&](float spread, TouchEvent::Kind kind) {
+    input_.push({kind, 0, centre.x() - spread / 2, centre.y()});
+    input_.push({kind, 1, centre.x() + spread / 2, centre.y()});
+  };
+  fingers(from, TouchEvent::Kind::down);
+  frames_until_input_consumed();
+  for (int i = 1; i <= frames; ++i) {
+    fingers(from + (to - from) * (static_cast<float>(i) / frames), TouchEvent::Kind::move);
+    frames_until_input_consumed();
+  }
+  fingers(to, TouchEvent::Kind::up);
+  frames_until_input_consumed();
+}
+
+void UiDriver::run(const ScriptStep& step, const std::filesystem::path& dir,
+                   const std::string& where) {
+  switch (step.kind) {
+    case ScriptStep::Kind::tap:
+      if (step.label.empty())
+        tap(step.points[0].x(), step.points[0].y());
+      else
+        tap(step.label, where);
+      break;
+    case ScriptStep::Kind::drag:
+      drag(step.points[0], step.points[1], step.frames);
+      break;
+    case ScriptStep::Kind::pinch:
+      pinch(step.points[0], step.pinch_from, step.pinch_to, step.frames);
+      break;
+    case ScriptStep::Kind::wait_task:
+      settle();
+      break;
+    case ScriptStep::Kind::frames:
+      for (int i = 0; i < step.frames; ++i) frame();
+      break;
+    case ScriptStep::Kind::screenshot: {
+      std::filesystem::create_directories(dir);
+      const auto file = dir / (step.label + ".png");
+      if (!cv::imwrite(file.string(), screenshot()))
+        throw Error(file.string() + ": cannot write the screenshot");
+      break;
+    }
+  }
+}
+
+ScriptRun run_ui_script(UiDriver& driver, const UiScript& script,
+                        const std::filesystem::path& screenshots_dir) {
+  ScriptRun out;
+  driver.settle();  // the project given on the command line loads first
+  for (std::size_t i = 0; i < script.steps.size(); ++i) {
+    const ScriptStep& step = script.steps[i];
+    driver.run(step, screenshots_dir, "steps[" + std::to_string(i) + "]");
+    if (step.kind == ScriptStep::Kind::screenshot)
+      out.screenshots.push_back(screenshots_dir / (step.label + ".png"));
+  }
+  driver.settle();
+  out.status = driver.state().status;
+  return out;
+}
+
+}  // namespace rockface::ui
