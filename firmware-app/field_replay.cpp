@@ -13,10 +13,14 @@
 #include "core/common/units.h"
 #include "core/photogrammetry/preset.h"
 #include "core/photogrammetry/reconstruction.h"
+#include "firmware-app/project_mesh.h"
+#include "firmware-app/replay_capture.h"
+#include "firmware-app/replay_more_pairs.h"
 #include "firmware-app/scene_analysis.h"
 #include "firmware-app/synthetic_scene_from_scene.h"
 #include "storage/camera_json.h"
 #include "storage/project_store.h"
+#include "storage/reconstruction_report.h"
 #include "storage/scene.h"
 
 namespace rockface::app {
@@ -24,51 +28,6 @@ namespace rockface::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-cv::Mat decode(const camera::CapturedFile& file, const std::string& label) {
-  cv::Mat image;
-  try {
-    image = cv::imdecode(file.data, cv::IMREAD_COLOR);
-  } catch (const cv::Exception&) {
-  }
-  if (image.empty())
-    throw InputError(file.saved_path.empty() ? file.camera_path : file.saved_path,
-                     label + " image cannot be decoded (corrupt or not an image)");
-  return image;
-}
-
-std::map<std::string, std::string> exif_map(const camera::ExifInfo& e) {
-  std::map<std::string, std::string> m;
-  auto put = [&](const char* k, const auto& v) {
-    if (v) {
-      std::ostringstream s;
-      s << *v;
-      m[k] = s.str();
-    }
-  };
-  if (!e.make.empty()) m["make"] = e.make;
-  if (!e.model.empty()) m["model"] = e.model;
-  if (!e.lens.empty()) m["lens"] = e.lens;
-  if (!e.datetime.empty()) m["datetime"] = e.datetime;
-  put("focal_length_mm", e.focal_length_mm);
-  put("f_number", e.f_number);
-  put("exposure_time_s", e.exposure_time_s);
-  put("iso", e.iso);
-  put("flash_fired", e.flash_fired);
-  put("focus_distance_m", e.focus_distance_m);
-  return m;
-}
-
-storage::Mesh project_mesh(const photogrammetry::SurfaceMesh& m) {
-  storage::Mesh out;
-  out.vertices = m.vertices;
-  out.faces.reserve(m.triangles.size());
-  for (const auto& t : m.triangles) out.faces.push_back({t[0], t[1], t[2]});
-  out.texcoords.reserve(m.texcoords.size());
-  for (const auto& t : m.texcoords) out.texcoords.push_back({t.x(), t.y()});
-  out.colours = m.colours;
-  return out;
-}
 
 // Compass bearing (degrees clockwise from north) of the horizontal
 // projection of a line, and its end points in the left image.
@@ -175,8 +134,8 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   out.capture_id = store.save_capture(capture);
 
   // Reconstruct and register.
-  const cv::Mat left_image = decode(left.image, "left");
-  const cv::Mat right_image = decode(right.image, "right");
+  const cv::Mat left_image = decode_shot(left.image, "left");
+  const cv::Mat right_image = decode_shot(right.image, "right");
   const photogrammetry::ReconstructionResult rec = photogrammetry::reconstruct(
       left_image, right_image, intrinsics, intrinsics, preset, sources, progress);
   storage::Model model;
@@ -191,7 +150,22 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   const Eigen::Quaterniond q(rec.model_to_world.R);
   model.registration.rotation_wxyz = {q.w(), q.x(), q.y(), q.z()};
   model.registration.translation = rec.model_to_world.t;
+  storage::ReconstructionReportContext accuracy{left.image.saved_path, right.image.saved_path,
+                                                preset_name,           sources.range_pole_m,
+                                                sources.baseline_m,    sources.north};
+  model.registration.parameters_json = storage::reconstruction_report_json(rec, accuracy);
   out.model_id = store.save_model(model);
+  if (synthetic && synthetic->pairs.size() > 1) {
+    const MorePairsOutcome more = replay_more_pairs(
+        store, {out.visit_id, calibration_id, &*synthetic, intrinsics, preset_name, preset, spool},
+        left_image, rec, progress);
+    out.more_model_ids = more.model_ids;
+    for (const auto& r : more.face.images)
+      if (r.reference >= 0)
+        out.guidance.push_back(r.name + " registered to " + more.face.images[r.reference].name +
+                               ": " + std::to_string(r.tie_points) + " tie points, surface rms " +
+                               std::to_string(r.surface_rms_m * 1000) + " mm");
+  }
   out.model_points = rec.mesh.size();
   out.registration = "scale: " + rec.scale_source + ", vertical: " + rec.vertical_source +
                      ", north: " + rec.north_source;

@@ -149,12 +149,12 @@ TEST_F(MultiImage, MergedSurfaceMatchesTheTruth) {
         r.name.c_str(), r.reference, r.tie_points, r.tie_rms_m, r.overlap, r.surface_rms_m,
         r.surface_rms_before_icp_m, r.to_face.scale, rms, n, west, east);
     EXPECT_LT(static_cast<double>(far), 0.1 * static_cast<double>(n));
-    // The stated error: each image's own depth noise (sigma_Z ~ 7 mm per
-    // point) plus the master's registration error, which moves every image
-    // alike (north ~0.3 deg over the +-4 m to the pivot ~ 2 cm, scale ~0.3 %
-    // over 3 m to the pole ~ 1 cm). A slave misplaced by its tie points by
-    // even 0.1 deg or 0.5 % would add 2-3 cm at the far end.
-    EXPECT_LT(rms, 3 * sigma_z + 0.02) << r.name;
+    // The stated error: each point's depth noise (sigma_Z ~ 7 mm, the
+    // prediction is conservative) plus the master's pole and compass
+    // registration, which moves every image alike (~5 mm over the face). A
+    // slave turned by 0.3 deg or scaled 0.5 % by its tie points would add
+    // 1.5 cm at its far end.
+    EXPECT_LT(rms, 1.5 * sigma_z + 0.005) << r.name;
     if (i > 0) {
       EXPECT_EQ(r.reference, 0);
       EXPECT_GE(r.tie_points, 100);
