@@ -5,10 +5,9 @@
 #include <set>
 #include <sstream>
 
-#include <Eigen/Eigenvalues>
-
 #include "core/common/units.h"
 #include "core/faces/tolerances.h"
+#include "core/geometry/plane_fit.h"
 
 namespace rockface::faces {
 
@@ -82,12 +81,9 @@ TracePlaneResult resolve_trace_plane(const TraceInput& trace, const FreeSurface&
         "surface, so its dip cannot be fitted";
     return result;
   }
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const auto& p : pts) cov += (p - centroid) * (p - centroid).transpose();
-  cov /= static_cast<double>(pts.size());
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  const double rms_off = std::sqrt(std::max(0.0, eig.eigenvalues()(0)));
-  const double relief = std::sqrt(std::max(0.0, eig.eigenvalues()(1)));
+  const geometry::PlaneFit fit = geometry::fit_plane(pts);
+  const double rms_off = fit.rms_off_plane();
+  const double relief = fit.relief();
   const double needed = tolerance / std::tan(deg_to_rad(kMaxFitUncertaintyDeg));
   if (relief < needed) {
     result.problem = "orientation unknown: relief " + metres(relief) +
@@ -102,8 +98,7 @@ TracePlaneResult resolve_trace_plane(const TraceInput& trace, const FreeSurface&
     return result;
   }
   TracePlane tp;
-  tp.plane = upward_plane(eig.eigenvectors().col(0), 0);
-  tp.plane.offset = tp.plane.normal.dot(centroid);
+  tp.plane = fit.plane();
   for (const auto& p : pts)
     tp.max_residual = std::max(tp.max_residual, std::abs(tp.plane.signed_distance(p)));
   tp.source = TracePlaneSource::Fitted;

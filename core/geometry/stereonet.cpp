@@ -45,4 +45,21 @@ std::vector<Eigen::Vector2d> project_great_circle(const PlaneOrientation& plane,
   return pts;
 }
 
+std::optional<Eigen::Vector3d> direction_at(const Eigen::Vector2d& point, Projection p,
+                                            Hemisphere h) {
+  const double r = point.norm();
+  if (!(r <= 1.0)) return std::nullopt;  // also NaN
+  // Invert r(theta) of project_direction.
+  const double theta =
+      p == Projection::EqualAngle ? 2 * std::atan(r) : 2 * std::asin(r / std::sqrt(2.0));
+  const double z = std::cos(theta);
+  const double horizontal = std::sin(theta);
+  Eigen::Vector3d d(0, 0, h == Hemisphere::Lower ? -z : z);
+  if (r > 0) {
+    d.x() = horizontal * point.x() / r;
+    d.y() = horizontal * point.y() / r;
+  }
+  return d;
+}
+
 }  // namespace rockface::geometry

@@ -2,6 +2,7 @@
 // Stereonet projections of directions, plane poles and great circles, as
 // data for plotting: points in the unit circle with x to the East and y to
 // the North (the primitive circle is radius 1).
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -21,5 +22,9 @@ Eigen::Vector2d project_pole(const PlaneOrientation& plane, Projection p, Hemisp
 // primitive circle to the other (a horizontal plane gives the primitive).
 std::vector<Eigen::Vector2d> project_great_circle(const PlaneOrientation& plane, Projection p,
                                                   Hemisphere h, int samples = 91);
+// The inverse of project_direction: the unit direction (in the hemisphere
+// looked at) plotted at `point`; nothing outside the primitive circle.
+std::optional<Eigen::Vector3d> direction_at(const Eigen::Vector2d& point, Projection p,
+                                            Hemisphere h);
 
 }  // namespace rockface::geometry

@@ -64,3 +64,19 @@ TEST(Stereonet, GreatCircleRunsFromStrikeToStrikeThroughTheDip) {
 
 }  // namespace
 }  // namespace rockface::geometry
+
+TEST(Stereonet, DirectionAtInvertsTheProjection) {
+  using namespace rockface::geometry;
+  for (Projection p : {Projection::EqualArea, Projection::EqualAngle})
+    for (Hemisphere h : {Hemisphere::Lower, Hemisphere::Upper})
+      for (double plunge : {0.0, 0.3, 1.0, 1.5707963267948966})
+        for (double trend : {0.0, 1.0, 3.0, 5.5}) {
+          Eigen::Vector3d d = line_direction({trend, plunge});
+          if (h == Hemisphere::Upper) d = -d;
+          const auto back = direction_at(project_direction(d, p, h), p, h);
+          ASSERT_TRUE(back.has_value());
+          // On the primitive (plunge 0) both senses plot at the same place.
+          EXPECT_LT(std::min((*back - d).norm(), plunge == 0 ? (*back + d).norm() : 1.0), 1e-12);
+        }
+  EXPECT_FALSE(direction_at({0.8, 0.8}, Projection::EqualArea, Hemisphere::Lower).has_value());
+}

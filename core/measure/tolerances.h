@@ -1,0 +1,54 @@
+#pragma once
+// Named tolerances and defaults of core/measure. Each says what error it
+// absorbs or what it trades.
+
+namespace rockface::measure {
+
+// A plane fitted to a trace is reported only when its normal is known to
+// this angle (one standard deviation, degrees); otherwise "orientation
+// unknown". A compass reading is good to 1-2 degrees: a fit much worse than
+// that would be a confident wrong dip.
+inline constexpr double kMaxPlaneSigmaDeg = 5.0;
+
+// Relief (RMS spread across the trace line, and off the local face) must
+// exceed this many point sigmas to come from the rock and not from the
+// noise of the 3D image: a straight trace on a flat face has ~1 sigma of
+// both and defines no plane.
+inline constexpr double kMinReliefInSigmas = 3.0;
+
+// A trace whose points scatter off their best-fit plane by more than this
+// many point sigmas (RMS) is not one plane (two joints, or a pick that
+// jumped to another surface).
+inline constexpr double kMaxPlanarityInSigmas = 4.0;
+
+// Densification of a picked polyline: one pick every this many pixels of
+// the photograph, so that a trace of a few taps still gives the fit its
+// hundreds of points.
+inline constexpr double kTraceSampleStepPx = 2.0;
+
+// A trace end within this many pixels of the image border or of a pixel
+// with no surface under it is at the edge of the mapped area: its trace
+// length is censored.
+inline constexpr double kCensoringMarginPx = 6.0;
+
+// Ray-triangle intersection: barycentric slack absorbing rounding, so a ray
+// through a shared edge or vertex hits one of the triangles.
+inline constexpr double kBarycentricSlack = 1e-9;
+
+// Least-cost tracing: the search corridor around the straight line between
+// the two taps, as a fraction of their distance (at least kMinCorridorPx).
+inline constexpr double kCorridorFraction = 0.25;
+inline constexpr double kMinCorridorPx = 24.0;
+
+// Clustering: poles farther than this from every set mean (degrees) are
+// left unassigned (scattered joints), and automatic clustering does not
+// split sets whose means are closer than kMinSetSeparationDeg.
+inline constexpr double kMaxSetMemberDeg = 35.0;
+inline constexpr double kMinSetSeparationDeg = 20.0;
+
+// Two located discontinuities of a set closer than this (m, along the set
+// normal) are taken as one (the same joint mapped on two facets) when
+// measuring spacing.
+inline constexpr double kSameDiscontinuityM = 0.05;
+
+}  // namespace rockface::measure
