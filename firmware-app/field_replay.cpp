@@ -136,8 +136,17 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   // Reconstruct and register.
   const cv::Mat left_image = decode_shot(left.image, "left");
   const cv::Mat right_image = decode_shot(right.image, "right");
-  const photogrammetry::ReconstructionResult rec = photogrammetry::reconstruct(
+  photogrammetry::ReconstructionResult rec = photogrammetry::reconstruct(
       left_image, right_image, intrinsics, intrinsics, preset, sources, progress);
+  // The registered frame has its origin at the pole (heading turned about
+  // the reference line); the scene surveys where the pole stood, so the
+  // model moves into the project frame (datum-relative) of the traces and joints.
+  if (synthetic && synthetic->scene.range_pole && rec.targets) {
+    const Eigen::Vector3d shift =
+        synthetic->scene.range_pole->base - rec.model_to_world.apply(rec.targets->model[0]);
+    rec.mesh.transform(1.0, Eigen::Matrix3d::Identity(), shift);
+    rec.model_to_world.t += shift;
+  }
   storage::Model model;
   model.capture_id = out.capture_id;
   model.preset = preset_name;

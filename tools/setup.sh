@@ -8,8 +8,12 @@ packages=(
   g++ cmake ninja-build pkg-config
   # libraries (DESIGN.md: Eigen, OpenCV, libgphoto2, SQLite; header-only helpers)
   libeigen3-dev libopencv-dev libgphoto2-dev libexif-dev libsqlite3-dev nlohmann-json3-dev libcli11-dev
+  # the field report's PDF (cairo's PDF surface)
+  libcairo2-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the report tests read the PDF back (pdftotext, pdftoppm)
+  poppler-utils
 )
 
 missing=()
