@@ -3,20 +3,11 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
+#include "firmware-app/project_mesh.h"
+
 namespace rockface::app {
 
 namespace {
-
-storage::Mesh project_mesh(const photogrammetry::SurfaceMesh& m) {
-  storage::Mesh out;
-  out.vertices = m.vertices;
-  out.faces.reserve(m.triangles.size());
-  for (const auto& t : m.triangles) out.faces.push_back({t[0], t[1], t[2]});
-  out.texcoords.reserve(m.texcoords.size());
-  for (const auto& t : m.texcoords) out.texcoords.push_back({t.x(), t.y()});
-  out.colours = m.colours;
-  return out;
-}
 
 nlohmann::json vec(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
@@ -25,10 +16,11 @@ nlohmann::json vec(const Eigen::Vector3d& v) {
 }  // namespace
 
 storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
-                            storage::RecordId capture_id, const std::string& preset) {
+                            storage::RecordId capture_id,
+                            const storage::ReconstructionReportContext& accuracy) {
   storage::Model model;
   model.capture_id = capture_id;
-  model.preset = preset;
+  model.preset = accuracy.preset;
   model.mesh = project_mesh(rec.mesh);
   model.texture_capture_id = capture_id;
   model.texture_side = "left";
@@ -38,18 +30,16 @@ storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
   const Eigen::Quaterniond q(rec.model_to_world.R);
   r.rotation_wxyz = {q.w(), q.x(), q.y(), q.z()};
   r.translation = rec.model_to_world.t;
-  nlohmann::json p = {{"scale", rec.scale_source},
-                      {"vertical", rec.vertical_source},
-                      {"north", rec.north_source},
-                      {"predicted_depth_sigma_mm", rec.accuracy.sigma_z * 1000},
-                      {"point_spacing_mm", rec.point_spacing * 1000}};
-  if (rec.north_rotation_deg) p["north_rotation_deg"] = *rec.north_rotation_deg;
+  // The whole reconstruction report (what the field report prints), plus the
+  // two figures the tablet reads without walking it: the targets in the
+  // project frame and the predicted depth precision of a picked point.
+  nlohmann::json p = nlohmann::json::parse(storage::reconstruction_report_json(rec, accuracy));
+  p["predicted_depth_sigma_mm"] = rec.accuracy.sigma_z * 1000;
   if (rec.targets) {
     p["targets"] = nlohmann::json::array();
     for (const auto& t : rec.targets->model)
       p["targets"].push_back(vec(rec.model_to_world.apply(t)));
   }
-  for (const auto& c : rec.scale_checks) p["scale_check " + c.source] = c.ratio;
   if (rec.control_points) {
     r.rms_m = rec.control_points->rms_m;
     for (const auto& res : rec.control_points->residuals)

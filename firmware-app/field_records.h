@@ -7,15 +7,18 @@
 
 #include "core/photogrammetry/reconstruction.h"
 #include "storage/project_records.h"
+#include "storage/reconstruction_report.h"
 #include "storage/report.h"
 
 namespace rockface::app {
 
 // The model of `capture_id`, textured with its left image. The registration's
-// parameters_json holds how it was scaled and oriented, the predicted depth
-// precision and the range pole targets (project frame).
+// parameters_json holds the reconstruction report (how it was scaled and
+// oriented, its accuracy), the predicted depth precision and the range pole
+// targets (project frame).
 storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
-                            storage::RecordId capture_id, const std::string& preset);
+                            storage::RecordId capture_id,
+                            const storage::ReconstructionReportContext& accuracy);
 
 storage::AnalysisRun analysis_record(const storage::Report& report, storage::RecordId visit_id,
                                      std::optional<storage::RecordId> model_id,

@@ -14,10 +14,13 @@
 #include "core/photogrammetry/preset.h"
 #include "core/photogrammetry/reconstruction.h"
 #include "firmware-app/field_records.h"
+#include "firmware-app/replay_capture.h"
+#include "firmware-app/replay_more_pairs.h"
 #include "firmware-app/scene_analysis.h"
 #include "firmware-app/synthetic_scene_from_scene.h"
 #include "storage/camera_json.h"
 #include "storage/project_store.h"
+#include "storage/reconstruction_report.h"
 #include "storage/scene.h"
 
 namespace rockface::app {
@@ -25,18 +28,6 @@ namespace rockface::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-cv::Mat decode(const camera::CapturedFile& file, const std::string& label) {
-  cv::Mat image;
-  try {
-    image = cv::imdecode(file.data, cv::IMREAD_COLOR);
-  } catch (const cv::Exception&) {
-  }
-  if (image.empty())
-    throw InputError(file.saved_path.empty() ? file.camera_path : file.saved_path,
-                     label + " image cannot be decoded (corrupt or not an image)");
-  return image;
-}
 
 // Compass bearing (degrees clockwise from north) of the horizontal
 // projection of a line, and its end points in the left image.
@@ -143,12 +134,35 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   out.capture_id = store.save_capture(capture);
 
   // Reconstruct and register.
-  const cv::Mat left_image = decode(left.image, "left");
-  const cv::Mat right_image = decode(right.image, "right");
-  const photogrammetry::ReconstructionResult rec = photogrammetry::reconstruct(
+  const cv::Mat left_image = decode_shot(left.image, "left");
+  const cv::Mat right_image = decode_shot(right.image, "right");
+  photogrammetry::ReconstructionResult rec = photogrammetry::reconstruct(
       left_image, right_image, intrinsics, intrinsics, preset, sources, progress);
-  const storage::Model model = model_record(rec, out.capture_id, preset_name);
+  // The registered frame has its origin at the pole (heading turned about
+  // the reference line); the scene surveys where the pole stood, so the
+  // model moves into the project frame (datum-relative) of the traces and joints.
+  if (synthetic && synthetic->scene.range_pole && rec.targets) {
+    const Eigen::Vector3d shift =
+        synthetic->scene.range_pole->base - rec.model_to_world.apply(rec.targets->model[0]);
+    rec.mesh.transform(1.0, Eigen::Matrix3d::Identity(), shift);
+    rec.model_to_world.t += shift;
+  }
+  const storage::Model model =
+      model_record(rec, out.capture_id,
+                   {left.image.saved_path, right.image.saved_path, preset_name,
+                    sources.range_pole_m, sources.baseline_m, sources.north});
   out.model_id = store.save_model(model);
+  if (synthetic && synthetic->pairs.size() > 1) {
+    const MorePairsOutcome more = replay_more_pairs(
+        store, {out.visit_id, calibration_id, &*synthetic, intrinsics, preset_name, preset, spool},
+        left_image, rec, progress);
+    out.more_model_ids = more.model_ids;
+    for (const auto& r : more.face.images)
+      if (r.reference >= 0)
+        out.guidance.push_back(r.name + " registered to " + more.face.images[r.reference].name +
+                               ": " + std::to_string(r.tie_points) + " tie points, surface rms " +
+                               std::to_string(r.surface_rms_m * 1000) + " mm");
+  }
   out.model_points = rec.mesh.size();
   out.registration = "scale: " + rec.scale_source + ", vertical: " + rec.vertical_source +
                      ", north: " + rec.north_source;

@@ -20,6 +20,7 @@ struct ReplayOutcome {
   storage::RecordId visit_id = 0;
   storage::RecordId capture_id = 0;
   storage::RecordId model_id = 0;
+  std::vector<storage::RecordId> more_model_ids;  // further pairs of the visit, in the face frame
   std::optional<storage::RecordId> analysis_id;
   std::size_t model_points = 0;
   std::string registration;            // how the model was scaled and oriented

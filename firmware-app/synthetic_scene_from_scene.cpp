@@ -37,8 +37,14 @@ SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& s) {
   c.cx = im.camera.cx;
   c.cy = im.camera.cy;
   c.distortion = im.camera.distortion;
-  for (int k = 0; k < 2; ++k)
-    out.stations[k] = {im.stations[k].position - in.origin, im.stations[k].look_at - in.origin};
+  for (std::size_t k = 0; k + 1 < im.stations.size(); k += 2) {
+    std::array<camera::SyntheticStation, 2> pair;
+    for (std::size_t side = 0; side < 2; ++side)
+      pair[side] = {im.stations[k + side].position - in.origin,
+                    im.stations[k + side].look_at - in.origin};
+    in.pairs.push_back(pair);
+  }
+  out.stations = in.pairs.front();
   if (im.range_pole)
     out.range_pole = camera::SyntheticRangePole{
         im.range_pole->base - in.origin, im.range_pole->length, im.range_pole->target_diameter};

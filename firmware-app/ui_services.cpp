@@ -50,7 +50,9 @@ storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project
   const auto preset = photogrammetry::preset_by_name(preset_name, "preset");
   const auto rec = photogrammetry::reconstruct(left, right, k, k, preset, sources, progress);
   progress.step("saving the model", 0.99);
-  return store.save_model(model_record(rec, capture_id, preset_name));
+  return store.save_model(model_record(
+      rec, capture_id, {where + " left", where + " right", preset_name, sources.range_pole_m,
+                        sources.baseline_m, sources.north}));
 }
 
 storage::RecordId StoreAnalysisRunner::analyse(const fs::path& project, storage::RecordId visit_id,

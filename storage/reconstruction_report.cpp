@@ -97,4 +97,36 @@ std::string reconstruction_report_json(const photogrammetry::ReconstructionResul
   return j.dump(2) + "\n";
 }
 
+std::string face_registration_json(const photogrammetry::FaceRegistration& face) {
+  using nlohmann::json;
+  json images = json::array();
+  for (const auto& r : face.images) {
+    json i = {{"name", r.name}, {"scale", r.to_face.scale}};
+    if (r.reference < 0) {
+      i["role"] = "master";
+    } else {
+      i["role"] = "registered";
+      i["reference"] = face.images[r.reference].name;
+      i["tie_points"] = r.tie_points;
+      i["tie_point_rms_m"] = r.tie_rms_m;
+      i["overlap"] = r.overlap;
+      i["surface_rms_m"] = r.surface_rms_m;
+      i["surface_rms_before_icp_m"] = r.surface_rms_before_icp_m;
+    }
+    images.push_back(i);
+  }
+  json j = {{"format", "rockface-face-registration/1"}, {"images", images}};
+  if (face.control_points) {
+    json res = json::array();
+    for (const auto& p : face.control_points->residuals)
+      res.push_back({{"id", p.id}, {"residual_m", vec(p.residual)}, {"distance_m", p.distance}});
+    j["control_points"] = {{"rms_m", face.control_points->rms_m},
+                           {"worst", face.control_points->worst_id},
+                           {"worst_m", face.control_points->worst_m},
+                           {"residuals", res}};
+    j["datum"] = vec(face.datum);
+  }
+  return j.dump(2) + "\n";
+}
+
 }  // namespace rockface::storage

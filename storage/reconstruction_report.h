@@ -4,6 +4,7 @@
 // registered, and how accurate it is predicted and measured to be.
 #include <string>
 
+#include "core/photogrammetry/multi_image_registration.h"
 #include "core/photogrammetry/reconstruction.h"
 
 namespace rockface::storage {
@@ -16,5 +17,10 @@ struct ReconstructionReportContext {
 
 std::string reconstruction_report_json(const photogrammetry::ReconstructionResult& result,
                                        const ReconstructionReportContext& context);
+
+// Several 3D images of one face (format rockface-face-registration/1): per
+// image how it was registered and its residuals (tie points, surface
+// overlap), and per ground control point its residual.
+std::string face_registration_json(const photogrammetry::FaceRegistration& face);
 
 }  // namespace rockface::storage

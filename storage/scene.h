@@ -135,7 +135,9 @@ struct SceneImagingEffects {
 
 struct SceneImaging {
   SceneImagingCamera camera;
-  std::array<SceneStation, 2> stations;
+  // Left, right of the first pair, then left, right of each further pair of
+  // the same visit (several 3D images of one face; docs/scene-extensions.md).
+  std::vector<SceneStation> stations;
   std::optional<SceneRangePole> range_pole;
   std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> reference_line;
   SceneImagingEffects effects;

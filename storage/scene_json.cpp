@@ -371,8 +371,13 @@ SceneImaging read_imaging(const Reader& r, const json& im) {
       img.camera.distortion[k] = r.number((*d)[k], Reader::index(cp + ".distortion", k));
   }
   const json& st = r.array(r.require(im, p, "stations"), p + ".stations");
-  if (st.size() != 2) r.fail(p + ".stations", "must hold exactly two stations (left, right)");
-  for (size_t k = 0; k < 2; ++k) {
+  if (st.size() < 2 || st.size() % 2 != 0)
+    r.fail(p + ".stations",
+           "must hold stations in pairs (left, right; then left, right of each further pair), "
+           "got " +
+               std::to_string(st.size()));
+  img.stations.resize(st.size());
+  for (size_t k = 0; k < st.size(); ++k) {
     const std::string sp = Reader::index(p + ".stations", k);
     img.stations[k].position = r.vec3(r.require(st[k], sp, "position"), sp + ".position");
     img.stations[k].look_at = r.vec3(r.require(st[k], sp, "look_at"), sp + ".look_at");

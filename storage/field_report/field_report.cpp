@@ -1,0 +1,275 @@
+#include "storage/field_report/field_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/geometry/orientation.h"
+#include "core/measure/joint_sets.h"
+
+namespace rockface::storage {
+
+namespace {
+
+using nlohmann::json;
+
+std::optional<double> number_at(const json& j, const char* key) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) return std::nullopt;
+  return j[key].get<double>();
+}
+
+Eigen::Vector3d vec3(const json& j) {
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
+
+ReportedBlock block_from(const BlockResult& stored, const Eigen::Vector3d& datum) {
+  ReportedBlock b;
+  b.label = stored.label;
+  b.source = stored.source;
+  b.code = stored.code;
+  b.finite = stored.finite;
+  b.removable = stored.removable;
+  b.marginal = stored.marginal;
+  b.mode = stored.mode;
+  b.fos = stored.fos;
+  const json j = json::parse(stored.report_json, nullptr, false);
+  if (j.is_discarded()) return b;
+  b.volume_m3 = number_at(j, "volume");
+  b.mass_kg = number_at(j, "mass");
+  b.margin_deg = number_at(j, "margin_deg").value_or(0.0);
+  if (j.contains("mode") && j["mode"].contains("planes"))
+    for (const auto& p : j["mode"]["planes"]) b.mode_planes.push_back(p.get<std::string>());
+  if (j.contains("vertices"))
+    for (const auto& v : j["vertices"]) b.vertices.push_back(vec3(v) - datum);
+  if (j.contains("rotation")) {
+    ReportedRotation r;
+    for (const auto& c : j["rotation"].value("corners", json::array())) {
+      ++r.corners;
+      r.rotatable_corners += c.value("rotatable", false);
+    }
+    for (const auto& e : j["rotation"].value("edges", json::array())) {
+      ++r.edges;
+      r.rotatable_edges += e.value("rotatable", false);
+    }
+    if (j.contains("remote_axis")) r.remote_axis_found = j["remote_axis"].value("found", false);
+    b.rotation = r;
+  }
+  return b;
+}
+
+// The reconstruction report stored with the first model (rockface-reconstruction/1).
+void read_accuracy(const std::string& text, ReportedAccuracy& a) {
+  const json j = json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) return;
+  a.sigma_z_m = number_at(j, "sigma_z").value_or(0.0);
+  a.distance_m = number_at(j, "distance").value_or(0.0);
+  a.point_spacing_m = number_at(j, "point_spacing").value_or(0.0);
+  if (j.contains("orientation")) {
+    a.reprojection_rms_px = number_at(j["orientation"], "rms_reprojection_px").value_or(0.0);
+    a.tie_points = j["orientation"].value("inliers", 0);
+  }
+  if (j.contains("registration")) {
+    const json& r = j["registration"];
+    a.scale_source = r.value("scale_source", "");
+    a.vertical_source = r.value("vertical_source", "");
+    a.north_source = r.value("north_source", "");
+    a.scale = number_at(r, "scale").value_or(1.0);
+    if (r.contains("range_pole")) a.range_pole_m = number_at(r["range_pole"], "length_m");
+    if (r.contains("north")) {
+      a.compass_azimuth_deg = number_at(r["north"], "azimuth_deg");
+      a.declination_deg = number_at(r["north"], "declination_deg");
+      a.north_rotation_deg = number_at(r["north"], "rotation_about_vertical_deg");
+    }
+    if (r.contains("control_points")) {
+      a.control_rms_m = number_at(r["control_points"], "rms_m");
+      for (const auto& p : r["control_points"]["residuals"])
+        a.control_points.push_back({p.value("id", ""), p.value("distance_m", 0.0)});
+    }
+  }
+  for (const auto& w : j.value("warnings", json::array()))
+    a.warnings.push_back(w.get<std::string>());
+}
+
+// The face registration stored with a further model (rockface-face-registration/1).
+void read_face_registration(const std::string& text, ReportedAccuracy& a) {
+  const json j = json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || j.value("format", "") != "rockface-face-registration/1")
+    return;
+  for (const auto& i : j["images"]) {
+    ReportedImage r;
+    r.name = i.value("name", "");
+    r.role = i.value("role", "");
+    r.reference = i.value("reference", "");
+    r.tie_points = i.value("tie_points", 0);
+    r.overlap = i.value("overlap", 0.0);
+    r.surface_rms_m = i.value("surface_rms_m", 0.0);
+    r.scale = i.value("scale", 1.0);
+    a.images.push_back(r);
+  }
+  if (j.contains("control_points")) {
+    a.control_rms_m = number_at(j["control_points"], "rms_m");
+    a.control_points.clear();
+    for (const auto& p : j["control_points"]["residuals"])
+      a.control_points.push_back({p.value("id", ""), p.value("distance_m", 0.0)});
+  }
+}
+
+void joints_and_sets(ProjectStore& store, FieldReport& r) {
+  for (const auto& j : store.list_joints(r.visit_id)) {
+    r.joints.push_back(
+        {j.label, j.set_label, j.source, j.dip_deg, j.dipdir_deg, j.friction_deg, j.cohesion_pa});
+    r.poles.push_back(geometry::plane_normal({deg_to_rad(j.dip_deg), deg_to_rad(j.dipdir_deg)}));
+  }
+  r.pole_sets.assign(r.poles.size(), -1);
+  const auto stored = store.list_joint_sets(r.visit_id);
+  if (!stored.empty()) {
+    for (const auto& s : stored) {
+      ReportedJointSet set{s.label, s.count, s.dip_deg, s.dipdir_deg, s.fisher_k, {}, "stored"};
+      r.sets.push_back(set);
+    }
+    for (std::size_t i = 0; i < r.joints.size(); ++i)
+      for (std::size_t k = 0; k < r.sets.size(); ++k)
+        if (r.joints[i].set_label == r.sets[k].label) r.pole_sets[i] = static_cast<int>(k);
+    return;
+  }
+  // No sets stored: they are clustered here (core/measure), as the tablet
+  // would offer: from the planes measured on the face when there are two or
+  // more, else from the joints.
+  std::vector<Eigen::Vector3d> measured;
+  for (const auto& m : store.list_measurements(r.visit_id))
+    if (m.dip_deg && m.dipdir_deg)
+      measured.push_back(
+          geometry::plane_normal({deg_to_rad(*m.dip_deg), deg_to_rad(*m.dipdir_deg)}));
+  const bool from_measured = measured.size() >= 2;
+  if (from_measured) r.poles = measured;
+  if (r.poles.size() < 2) return;
+  const measure::PoleClusters clusters = measure::cluster_poles(r.poles, {});
+  const std::string origin =
+      from_measured ? "clustered from " + std::to_string(measured.size()) + " measured planes"
+                    : "clustered from the joints";
+  for (std::size_t k = 0; k < clusters.sets.size(); ++k) {
+    const auto& f = clusters.sets[k];
+    const geometry::PlaneOrientation o = f.plane();
+    ReportedJointSet set{"S" + std::to_string(k + 1),
+                         static_cast<int>(f.count),
+                         rad_to_deg(o.dip),
+                         rad_to_deg(o.dipdir),
+                         f.kappa,
+                         {},
+                         origin};
+    if (f.count >= 2 && f.alpha95 < M_PI) set.alpha95_deg = rad_to_deg(f.alpha95);
+    r.sets.push_back(set);
+  }
+  r.pole_sets = clusters.set_of;
+  if (!from_measured)
+    for (std::size_t i = 0; i < r.joints.size(); ++i)
+      if (r.pole_sets[i] >= 0) r.joints[i].set_label = r.sets[r.pole_sets[i]].label;
+}
+
+}  // namespace
+
+FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
+  FieldReport r;
+  const ProjectInfo info = store.project();
+  r.project_name = info.name;
+  r.project_file = store.file().string();
+  r.datum = info.datum;
+  r.visit_id = visit_id;
+  bool found = false;
+  for (const auto& v : store.list_visits())
+    if (v.id == visit_id) {
+      found = true;
+      r.visit_started_at = v.started_at;
+      r.visit_source = v.source;
+    }
+  if (!found)
+    throw InputError("--visit",
+                     "the project " + r.project_file + " has no visit " + std::to_string(visit_id));
+
+  const auto captures = store.list_captures(visit_id);
+  bool first_model = true;
+  for (const auto& c : captures) {
+    for (const auto& summary : store.list_models(c.id)) {
+      const Model m = store.load_model(summary.id);
+      if (first_model) {
+        first_model = false;
+        r.preset = m.preset;
+        r.model_scale = m.registration.scale;
+        const auto& q = m.registration.rotation_wxyz;
+        r.model_rotation =
+            Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+        r.model_translation = m.registration.translation;
+        read_accuracy(m.registration.parameters_json, r.accuracy);
+        const ImageBlob left = store.load_capture_image(c.id, "left");
+        r.photograph = cv::imdecode(left.bytes, cv::IMREAD_COLOR);
+        if (c.calibration_id) {
+          const Calibration cal = store.load_calibration(*c.calibration_id);
+          r.intrinsics = cal.intrinsics;
+          r.calibration_method = cal.method;
+          r.lens = cal.intrinsics.lens;
+          for (const auto& b : store.list_camera_bodies())
+            if (cal.body_id && b.id == *cal.body_id) r.camera_body = b.make + " " + b.model;
+        }
+      } else {
+        read_face_registration(m.registration.parameters_json, r.accuracy);
+      }
+    }
+  }
+  for (const auto& m : store.list_measurements(visit_id))
+    if (m.kind == Measurement::Kind::trace) r.traces.emplace_back(m.label, m.points);
+  joints_and_sets(store, r);
+
+  const auto runs = store.list_analyses(visit_id);
+  if (!runs.empty()) {
+    const AnalysisRun run = store.load_analysis(runs.back().id);
+    r.analysis_id = run.id;
+    r.effects = run.effects;
+    if (r.preset.empty()) r.preset = run.preset;
+    for (const auto& b : run.blocks) r.blocks.push_back(block_from(b, r.datum));
+  }
+  return r;
+}
+
+std::string report_number(double value, int decimals) {
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  if (!std::isfinite(value)) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+  std::string s = buf;
+  if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);  // no "-0.00"
+  return s;
+}
+
+std::string report_number(const std::optional<double>& value, int decimals) {
+  return value ? report_number(*value, decimals) : "-";
+}
+
+std::string report_verdict(const ReportedBlock& b) {
+  return std::string(!b.finite ? "infinite" : (b.removable ? "removable" : "finite, keyed")) +
+         (b.marginal ? "?" : "");
+}
+
+std::string report_mode(const ReportedBlock& b) {
+  if (b.mode != "sliding" || b.mode_planes.empty()) return b.mode;
+  std::string s = "sliding on ";
+  for (std::size_t i = 0; i < b.mode_planes.size(); ++i) s += (i ? "+" : "") + b.mode_planes[i];
+  return s;
+}
+
+std::string report_rotation(const ReportedBlock& b) {
+  if (!b.rotation) return "-";
+  const auto& r = *b.rotation;
+  std::string s = std::to_string(r.rotatable_corners) + "/" + std::to_string(r.corners) +
+                  " corners, " + std::to_string(r.rotatable_edges) + "/" + std::to_string(r.edges) +
+                  " edges";
+  if (r.remote_axis_found) s += *r.remote_axis_found ? "; remote axis" : "; no remote axis";
+  return s;
+}
+
+}  // namespace rockface::storage

@@ -1,0 +1,122 @@
+#pragma once
+// The field report of one visit: what a geologist prints or sends before the
+// next excavation round, gathered from the project file. Values only; the
+// pictures and the PDF are made from this (field_report_pictures.h,
+// field_report_pdf.h). Every number printed comes from here, formatted by
+// the functions below, so a test can compare the PDF's text with the store.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include "core/photogrammetry/camera_model.h"
+#include "storage/project_store.h"
+
+namespace rockface::storage {
+
+struct ReportedJoint {
+  std::string label, set_label, source;
+  double dip_deg = 0, dipdir_deg = 0;
+  std::optional<double> friction_deg, cohesion_pa;
+};
+
+struct ReportedJointSet {
+  std::string label;
+  int count = 0;
+  double dip_deg = 0, dipdir_deg = 0;
+  double fisher_k = 0;                // +inf when every pole coincides
+  std::optional<double> alpha95_deg;  // absent when undefined (fewer than two poles)
+  std::string origin;                 // "stored" | "clustered from the joints"
+};
+
+struct ReportedRotation {
+  int corners = 0, rotatable_corners = 0, edges = 0, rotatable_edges = 0;
+  std::optional<bool> remote_axis_found;
+};
+
+struct ReportedBlock {
+  std::string label, source, code;
+  std::optional<double> volume_m3, mass_kg;
+  bool finite = false, removable = false, marginal = false;
+  double margin_deg = 0;
+  std::string mode = "none";
+  std::vector<std::string> mode_planes;
+  std::optional<double> fos;
+  std::optional<ReportedRotation> rotation;
+  std::vector<Eigen::Vector3d> vertices;  // datum-relative
+};
+
+// One 3D image of the visit and how it was registered to the face.
+struct ReportedImage {
+  std::string name, role;  // "master" | "registered"
+  std::string reference;
+  int tie_points = 0;
+  double overlap = 0, surface_rms_m = 0, scale = 1;
+};
+
+struct ReportedControlPoint {
+  std::string id;
+  double residual_m = 0;
+};
+
+struct ReportedAccuracy {
+  std::string scale_source, vertical_source, north_source;
+  double scale = 1;
+  std::optional<double> range_pole_m, compass_azimuth_deg, declination_deg, north_rotation_deg;
+  double sigma_z_m = 0, distance_m = 0, point_spacing_m = 0, reprojection_rms_px = 0;
+  int tie_points = 0;
+  std::optional<double> control_rms_m;
+  std::vector<ReportedControlPoint> control_points;
+  std::vector<ReportedImage> images;  // several 3D images; empty for one pair
+  std::vector<std::string> warnings;
+};
+
+struct FieldReport {
+  std::string project_name, project_file;
+  Eigen::Vector3d datum = Eigen::Vector3d::Zero();
+  RecordId visit_id = 0;
+  std::string visit_started_at, visit_source;
+
+  // Camera and preset.
+  std::string camera_body, lens, calibration_method;
+  photogrammetry::CameraIntrinsics intrinsics;
+  std::string preset;
+
+  // The face: the first pair's left photograph and the registration of its
+  // model (model = left camera frame; x_project = s R x_model + t).
+  cv::Mat photograph;  // BGR; empty when the visit has no capture
+  double model_scale = 1;
+  Eigen::Matrix3d model_rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d model_translation = Eigen::Vector3d::Zero();
+  std::vector<std::pair<std::string, std::vector<Eigen::Vector3d>>> traces;  // label, points
+
+  ReportedAccuracy accuracy;
+  std::vector<ReportedJoint> joints;
+  std::vector<ReportedJointSet> sets;
+  // The poles on the stereonet: of the planes measured on the face when two
+  // or more were, else of the joints (in their order).
+  std::vector<Eigen::Vector3d> poles;
+  std::vector<int> pole_sets;  // per pole: index into `sets`, or -1
+
+  std::optional<RecordId> analysis_id;
+  std::vector<std::string> effects;
+  std::vector<ReportedBlock> blocks;
+};
+
+// Reads everything the report shows for `visit_id` (InputError naming the
+// visit when the project has no such visit).
+FieldReport collect_field_report(ProjectStore& store, RecordId visit_id);
+
+// How numbers are printed (fixed decimals; "-" for none).
+std::string report_number(double value, int decimals);
+std::string report_number(const std::optional<double>& value, int decimals);
+// A block's verdict in words: "removable", "finite, keyed", "infinite"; "?" appended when marginal.
+std::string report_verdict(const ReportedBlock& block);
+// "sliding on J1+J2", "falling", "none".
+std::string report_mode(const ReportedBlock& block);
+// "2/8 corners, 1/12 edges" (+ "; remote axis" / "; no remote axis"), "-" when not analysed.
+std::string report_rotation(const ReportedBlock& block);
+
+}  // namespace rockface::storage

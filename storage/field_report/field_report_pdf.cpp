@@ -1,0 +1,317 @@
+#include "storage/field_report/field_report_pdf.h"
+
+#include <algorithm>
+#include <memory>
+
+#include <cairo-pdf.h>
+#include <cairo.h>
+#include <opencv2/imgproc.hpp>
+
+#include "core/common/error.h"
+#include "storage/field_report/field_report_pictures.h"
+
+namespace rockface::storage {
+
+namespace {
+
+// A4 in PostScript points; margins and type sizes of a printed page.
+constexpr double kPageW = 595.28, kPageH = 841.89, kMargin = 48;
+constexpr double kBody = 9, kSmall = 7.5, kHeading = 13, kTitle = 18;
+
+struct Column {
+  std::string title;
+  double width;  // points
+};
+
+// Writes text top to bottom, starting a new page when the next item does not fit.
+class PdfPages {
+ public:
+  explicit PdfPages(const std::filesystem::path& file)
+      : file_(file),
+        surface_(cairo_pdf_surface_create(file.c_str(), kPageW, kPageH), cairo_surface_destroy),
+        cr_(cairo_create(surface_.get()), cairo_destroy) {
+    check();
+  }
+
+  void title(const std::string& text) {
+    line(text, kTitle, true);
+    y_ += kTitle * 0.6;
+  }
+  // `keep` points of what follows stay on the heading's page.
+  void heading(const std::string& text, double keep = 2 * kBody) {
+    space(kHeading * 2.2 + keep);  // never a heading alone at a page foot
+    y_ += kHeading * 0.6;
+    font(kHeading, true);
+    show(kMargin, text);
+    y_ += kHeading * 0.5;
+  }
+  // A paragraph, wrapped at spaces to the text width.
+  void line(const std::string& text, double size = kBody, bool bold = false) {
+    font(size, bold);
+    std::string rest = text;
+    while (!rest.empty()) {
+      std::size_t cut = rest.size();
+      while (width(rest.substr(0, cut)) > text_width()) {
+        const std::size_t space_at = rest.rfind(' ', cut - 1);
+        if (space_at == std::string::npos || space_at == 0) break;
+        cut = space_at;
+      }
+      space(size * 1.45);
+      font(size, bold);
+      show(kMargin, rest.substr(0, cut));
+      rest = cut < rest.size() ? rest.substr(cut + 1) : std::string();
+    }
+  }
+  void table(const std::vector<Column>& columns, const std::vector<std::vector<std::string>>& rows,
+             double size = kBody) {
+    auto row = [&](const std::vector<std::string>& cells, bool bold) {
+      space(size * 1.45);
+      font(size, bold);
+      double x = kMargin;
+      for (std::size_t c = 0; c < columns.size() && c < cells.size(); ++c) {
+        show(x, cells[c], false);
+        x += columns[c].width;
+      }
+      y_ += size * 1.45;
+    };
+    std::vector<std::string> header;
+    for (const auto& c : columns) header.push_back(c.title);
+    row(header, true);
+    for (const auto& r : rows) row(r, false);
+  }
+  // An image scaled to fit `max_w` x `max_h` points, keeping its aspect.
+  void image(const cv::Mat& bgr, double max_w, double max_h) {
+    if (bgr.empty()) return;
+    const double s = std::min(max_w / bgr.cols, max_h / bgr.rows);
+    const double h = bgr.rows * s;
+    space(h + 6);
+    cv::Mat bgra;
+    cv::cvtColor(bgr, bgra,
+                 cv::COLOR_BGR2BGRA);  // cairo RGB24 is B, G, R, x in memory (little endian)
+    std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> img(
+        cairo_image_surface_create(CAIRO_FORMAT_RGB24, bgra.cols, bgra.rows),
+        cairo_surface_destroy);
+    cairo_surface_flush(img.get());
+    unsigned char* data = cairo_image_surface_get_data(img.get());
+    const int stride = cairo_image_surface_get_stride(img.get());
+    for (int r = 0; r < bgra.rows; ++r)
+      std::copy_n(bgra.ptr<unsigned char>(r), 4 * bgra.cols, data + r * stride);
+    cairo_surface_mark_dirty(img.get());
+    cairo_save(cr_.get());
+    cairo_translate(cr_.get(), kMargin, y_);
+    cairo_scale(cr_.get(), s, s);
+    cairo_set_source_surface(cr_.get(), img.get(), 0, 0);
+    cairo_paint(cr_.get());
+    cairo_restore(cr_.get());
+    y_ += h + 6;
+  }
+  void gap(double points) { y_ += points; }
+
+  void finish() {
+    cairo_show_page(cr_.get());
+    cr_.reset();
+    cairo_surface_finish(surface_.get());
+    check();
+  }
+  static double text_width() { return kPageW - 2 * kMargin; }
+
+ private:
+  void check() {
+    const cairo_status_t st = cairo_surface_status(surface_.get());
+    if (st != CAIRO_STATUS_SUCCESS)
+      throw Error(file_.string() + ": cannot write the PDF: " + cairo_status_to_string(st));
+  }
+  void space(double needed) {
+    if (y_ + needed > kPageH - kMargin) {
+      cairo_show_page(cr_.get());
+      y_ = kMargin;
+    }
+  }
+  double width(const std::string& text) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr_.get(), text.c_str(), &e);
+    return e.x_advance;
+  }
+  void font(double size, bool bold) {
+    cairo_select_font_face(cr_.get(), "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr_.get(), size);
+    size_ = size;
+  }
+  // Shows text with its baseline one line below the cursor; advances the
+  // cursor unless `advance` is false (a table cell: the row advances).
+  void show(double x, const std::string& text, bool advance = true) {
+    cairo_set_source_rgb(cr_.get(), 0, 0, 0);
+    cairo_move_to(cr_.get(), x, y_ + size_);
+    cairo_show_text(cr_.get(), text.c_str());
+    if (advance) y_ += size_ * 1.45;
+  }
+
+  std::filesystem::path file_;
+  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface_;
+  std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr_;
+  double y_ = kMargin, size_ = kBody;
+};
+
+std::string code_text(const std::string& code) {
+  const auto n = std::count(code.begin(), code.end(), '+');
+  return n == 0 ? code : code.substr(0, code.find('+')) + " +" + std::to_string(n);
+}
+
+void camera_section(PdfPages& pdf, const FieldReport& r) {
+  pdf.heading("Camera and preset");
+  const auto& k = r.intrinsics;
+  pdf.line("camera: " + (r.camera_body.empty() ? std::string("unknown") : r.camera_body) +
+           (r.lens.empty() ? "" : ", lens " + r.lens));
+  pdf.line("calibration: " + (r.calibration_method.empty() ? "-" : r.calibration_method) + "; " +
+           std::to_string(k.width) + " x " + std::to_string(k.height) + " px, fx " +
+           report_number(k.fx, 1) + ", fy " + report_number(k.fy, 1) + ", cx " +
+           report_number(k.cx, 1) + ", cy " + report_number(k.cy, 1) + " px, rms " +
+           report_number(k.rms_px, 2) + " px");
+  pdf.line("preset: " + (r.preset.empty() ? "-" : r.preset));
+}
+
+void accuracy_section(PdfPages& pdf, const FieldReport& r) {
+  const auto& a = r.accuracy;
+  pdf.heading("Accuracy");
+  pdf.line("scale: " + (a.scale_source.empty() ? "-" : a.scale_source) +
+           (a.range_pole_m ? " (" + report_number(*a.range_pole_m, 3) + " m)" : "") +
+           ", model scale " + report_number(a.scale, 4));
+  pdf.line("vertical: " + (a.vertical_source.empty() ? "-" : a.vertical_source));
+  std::string north = "north: " + (a.north_source.empty() ? "-" : a.north_source);
+  if (a.compass_azimuth_deg)
+    north += ", reference line bearing " + report_number(*a.compass_azimuth_deg, 1) +
+             " deg, declination " + report_number(a.declination_deg, 1) + " deg, turned " +
+             report_number(a.north_rotation_deg, 2) + " deg about the vertical";
+  pdf.line(north);
+  pdf.line("predicted depth precision " + report_number(a.sigma_z_m * 1000, 1) + " mm at " +
+           report_number(a.distance_m, 2) + " m; point spacing " +
+           report_number(a.point_spacing_m * 1000, 1) + " mm; " + std::to_string(a.tie_points) +
+           " tie points, reprojection rms " + report_number(a.reprojection_rms_px, 3) + " px");
+  if (a.control_rms_m) {
+    pdf.line("ground control: rms " + report_number(*a.control_rms_m * 1000, 1) + " mm");
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& p : a.control_points)
+      rows.push_back({p.id, report_number(p.residual_m * 1000, 1)});
+    pdf.table({{"point", 80}, {"residual mm", 80}}, rows);
+  } else {
+    pdf.line("ground control: none");
+  }
+  if (!a.images.empty()) {
+    pdf.line("3D images of the face: " + std::to_string(a.images.size()));
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& i : a.images)
+      rows.push_back({i.name, i.role, i.reference.empty() ? "-" : i.reference,
+                      i.role == "master" ? "-" : std::to_string(i.tie_points),
+                      i.role == "master" ? "-" : report_number(i.overlap * 100, 0),
+                      i.role == "master" ? "-" : report_number(i.surface_rms_m * 1000, 1),
+                      report_number(i.scale, 4)});
+    pdf.table({{"image", 70},
+               {"role", 65},
+               {"tied to", 60},
+               {"tie points", 60},
+               {"overlap %", 60},
+               {"surface rms mm", 85},
+               {"scale", 60}},
+              rows);
+  }
+  for (const auto& w : a.warnings) pdf.line("warning: " + w, kSmall);
+}
+
+void joint_section(PdfPages& pdf, const FieldReport& r) {
+  pdf.heading("Joints");
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& j : r.joints)
+    rows.push_back({j.label, report_number(j.dip_deg, 1), report_number(j.dipdir_deg, 1),
+                    report_number(j.friction_deg, 1), report_number(j.cohesion_pa, 0),
+                    j.set_label.empty() ? "-" : j.set_label, j.source});
+  pdf.table({{"joint", 50},
+             {"dip deg", 55},
+             {"dip dir deg", 65},
+             {"friction deg", 70},
+             {"cohesion Pa", 70},
+             {"set", 40},
+             {"source", 120}},
+            rows);
+  pdf.heading("Joint sets");
+  if (r.sets.empty()) {
+    pdf.line("no set: fewer than two joints, or none close enough to form one");
+    return;
+  }
+  rows.clear();
+  for (const auto& s : r.sets)
+    rows.push_back({s.label, std::to_string(s.count), report_number(s.dip_deg, 1),
+                    report_number(s.dipdir_deg, 1), report_number(s.fisher_k, 1),
+                    report_number(s.alpha95_deg, 1), s.origin});
+  pdf.table({{"set", 40},
+             {"joints", 45},
+             {"dip deg", 55},
+             {"dip dir deg", 65},
+             {"Fisher K", 60},
+             {"alpha95 deg", 70},
+             {"from", 150}},
+            rows);
+}
+
+void block_section(PdfPages& pdf, const FieldReport& r) {
+  pdf.heading("Blocks");
+  if (!r.analysis_id) {
+    pdf.line("no block analysis stored for this visit");
+    return;
+  }
+  std::string effects;
+  for (std::size_t i = 0; i < r.effects.size(); ++i) effects += (i ? ", " : "") + r.effects[i];
+  pdf.line("effects simulated: " + (effects.empty() ? std::string("-") : effects));
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& b : r.blocks)
+    rows.push_back({b.label, b.source, code_text(b.code), report_number(b.volume_m3, 3),
+                    report_number(b.mass_kg, 0), report_verdict(b), report_number(b.margin_deg, 2),
+                    report_mode(b), report_number(b.fos, 2), report_rotation(b)});
+  pdf.table({{"block", 30},
+             {"source", 32},
+             {"code", 52},
+             {"volume m3", 45},
+             {"mass kg", 42},
+             {"verdict", 58},
+             {"margin deg", 45},
+             {"mode", 62},
+             {"FoS", 28},
+             {"rotation", 105}},
+            rows, kSmall);
+  pdf.line(
+      "verdict '?': marginal (the margin is within the orientation uncertainty); FoS '-': "
+      "the block does not slide under the resultant or has no friction given",
+      kSmall);
+}
+
+}  // namespace
+
+void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& file) {
+  PdfPages pdf(file);
+  pdf.title("Field report: " + r.project_name);
+  pdf.line("visit " + std::to_string(r.visit_id) + ", started " + r.visit_started_at + " (" +
+           r.visit_source + ")");
+  pdf.line("project " + r.project_file + "; datum E " + report_number(r.datum.x(), 3) + ", N " +
+           report_number(r.datum.y(), 3) + ", Z " + report_number(r.datum.z(), 3));
+  camera_section(pdf, r);
+  accuracy_section(pdf, r);
+
+  pdf.heading("The face", 0.3 * kPageH);
+  if (r.photograph.empty()) {
+    pdf.line("no photograph stored for this visit");
+  } else {
+    pdf.image(face_picture(r), PdfPages::text_width(), 0.55 * kPageH);
+    pdf.line("traces yellow; blocks: removable red, marginal orange, keyed green", kSmall);
+  }
+  pdf.heading("Stereonet (lower hemisphere, equal area)", 0.6 * PdfPages::text_width());
+  const cv::Mat net = stereonet_picture(r);
+  if (net.empty())
+    pdf.line("no joints");
+  else
+    pdf.image(net, 0.6 * PdfPages::text_width(), 0.6 * PdfPages::text_width());
+  joint_section(pdf, r);
+  block_section(pdf, r);
+  pdf.finish();
+}
+
+}  // namespace rockface::storage

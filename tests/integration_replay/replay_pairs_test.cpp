@@ -1,0 +1,116 @@
+// `rockface replay` of a visit photographed as several stereo pairs: the demo
+// tunnel face with two more pairs (imaging.stations lists six stations). Every
+// pair is captured and stored; the further pairs' models are registered to
+// the first and stored in its frame with their residuals.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "storage/project_store.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int run(const std::string& args, const fs::path& log) {
+  const std::string cmd =
+      std::string(ROCKFACE_BINARY_DIR) + "/rockface " + args + " >" + log.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// The demo scene with `extra` more pairs, each 1.2 m further east or west.
+nlohmann::json demo_with_pairs(const std::vector<double>& offsets_m) {
+  std::ifstream in(std::string(ROCKFACE_SOURCE_DIR) + "/tools/samples/tunnel-face-demo.scene.json");
+  nlohmann::json scene = nlohmann::json::parse(in);
+  const nlohmann::json first = scene["imaging"]["stations"];
+  for (double dx : offsets_m)
+    for (auto st : first) {
+      st["position"][0] = st["position"][0].get<double>() + dx;
+      st["look_at"][0] = st["look_at"][0].get<double>() + dx;
+      scene["imaging"]["stations"].push_back(st);
+    }
+  return scene;
+}
+
+class ReplayPairs : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("rockface-replay-pairs-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(ReplayPairs, ThreePairsAreStoredInOneFaceFrame) {
+  const fs::path scene = dir_ / "three-pairs.scene.json";
+  std::ofstream(scene) << demo_with_pairs({-1.2, 1.2}).dump(2);
+  const fs::path project = dir_ / "site.rockface";
+  ASSERT_EQ(run("replay " + scene.string() + " --project " + project.string() + " --preset fast",
+                dir_ / "run.txt"),
+            0)
+      << slurp(dir_ / "run.txt");
+
+  auto store = rockface::storage::ProjectStore::open(project);
+  const auto visit = store.latest_visit();
+  ASSERT_TRUE(visit);
+  const auto captures = store.list_captures(*visit);
+  ASSERT_EQ(captures.size(), 3u);
+  std::vector<rockface::storage::Model> models;
+  for (const auto& c : captures)
+    for (const auto& m : store.list_models(c.id)) models.push_back(store.load_model(m.id));
+  ASSERT_EQ(models.size(), 3u);
+  EXPECT_EQ(models[0].registration.kind, "range_pole_compass");
+  // The first model's accuracy report is stored with it.
+  const auto accuracy = nlohmann::json::parse(models[0].registration.parameters_json);
+  EXPECT_EQ(accuracy["format"], "rockface-reconstruction/1");
+  EXPECT_EQ(accuracy["registration"]["north_source"], "compass");
+  for (std::size_t k = 1; k < 3; ++k) {
+    EXPECT_EQ(models[k].registration.kind, "face_images");
+    const auto face = nlohmann::json::parse(models[k].registration.parameters_json);
+    ASSERT_EQ(face["images"].size(), 3u);
+    const auto& image = face["images"][k];
+    EXPECT_EQ(image["reference"], "pair 1");
+    EXPECT_GE(image["tie_points"].get<int>(), 20);
+    // The further pairs' surfaces lie on the first one's to about the depth
+    // noise (the demo's sigma_Z is ~1.5 cm at the fast preset's scale).
+    EXPECT_LT(image["surface_rms_m"].get<double>(), 0.03);
+    EXPECT_NEAR(models[k].registration.rms_m, image["surface_rms_m"].get<double>(), 1e-12);
+    // Its vertices are in the first model's frame: the same face, so the
+    // same depth range (the face is ~10 m in front of the stations).
+    double y_first = 0, y_this = 0;
+    for (const auto& v : models[0].mesh.vertices) y_first += v.y();
+    for (const auto& v : models[k].mesh.vertices) y_this += v.y();
+    y_first /= static_cast<double>(models[0].mesh.vertices.size());
+    y_this /= static_cast<double>(models[k].mesh.vertices.size());
+    EXPECT_NEAR(y_this, y_first, 1.0);
+  }
+  EXPECT_EQ(store.list_analyses(*visit).size(), 1u);
+}
+
+TEST_F(ReplayPairs, AnOddNumberOfStationsIsBadInput) {
+  nlohmann::json scene = demo_with_pairs({});
+  scene["imaging"]["stations"].push_back(scene["imaging"]["stations"][0]);
+  const fs::path file = dir_ / "odd.scene.json";
+  std::ofstream(file) << scene.dump(2);
+  EXPECT_EQ(run("replay " + file.string() + " --project " + (dir_ / "p.rockface").string(),
+                dir_ / "run.txt"),
+            2);
+  EXPECT_NE(slurp(dir_ / "run.txt").find("imaging.stations"), std::string::npos);
+}
