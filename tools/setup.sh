@@ -10,9 +10,12 @@ packages=(
   libeigen3-dev libopencv-dev libgphoto2-dev libexif-dev libsqlite3-dev nlohmann-json3-dev libcli11-dev
   # tablet UI: Dear ImGui 1.86 (with its OpenGL 3 backend source and stb),
   # EGL + GLES 3 headers and libraries, Mesa's EGL (surfaceless platform) and
-  # software renderer for headless runs, Xlib for the window, a TTF font
-  libimgui-dev libstb-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libx11-dev
+  # software renderer for headless runs, Xlib and XInput 2 (multi-touch) for
+  # the window, a TTF font
+  libimgui-dev libstb-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libx11-dev libxi-dev
   fonts-dejavu-core
+  # the UI's window test: a virtual X server
+  xvfb xauth
   # the field report's PDF (cairo's PDF surface)
   libcairo2-dev
   # tests and benchmarks
