@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ui/block_summary.h"
+
 namespace rockface::ui {
 
 const char* verdict_name(BlockVerdict verdict) {
@@ -66,6 +68,7 @@ BlockView make_block_view(const storage::BlockResult& block, const Eigen::Vector
     v.report_text = block.report_json;
   }
   v.verdict = verdict_of(v);
+  v.summary = block_summary(v, json.is_object() ? json : nlohmann::json::object());
   return v;
 }
 

@@ -31,6 +31,7 @@ struct BlockView {
   std::optional<bool> rotatable;          // a corner or edge can rotate; absent: not analysed
   std::vector<Eigen::Vector3d> vertices;  // project frame (datum-relative)
   std::string report_text;                // the block's report JSON, indented
+  std::vector<std::string> summary;       // ui/block_summary.h: the report in words
   BlockVerdict verdict = BlockVerdict::infinite;
 };
 

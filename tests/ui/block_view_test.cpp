@@ -49,4 +49,39 @@ TEST(BlockView, ReportGivesMarginRotatabilityAndDatumRelativeVertices) {
   EXPECT_NE(v.report_text.find("margin_deg"), std::string::npos);
 }
 
+TEST(BlockView, SummaryStatesVerdictModeDirectionSizeAndRotationInWords) {
+  BlockResult b = block(true, true, "sliding", 0.49);
+  b.label = "TB3";
+  b.report_json = R"({"margin_deg": 4.5, "volume": 1.25, "mass": 3400,
+      "mode": {"type": "sliding", "planes": ["J1", "J2"], "direction": [0, -0.5, -0.5]},
+      "rotation": {"corners": [{"vertex": 0, "rotatable": true, "margin_deg": 4.1},
+                               {"vertex": 1, "rotatable": false, "margin_deg": 9}],
+                   "edges": [{"vertices": [0, 1], "rotatable": false}]},
+      "remote_axis": {"found": true, "starts": 64, "hits": 9},
+      "face_areas": {"J1": 2.5}})";
+  const auto lines = make_block_view(b, Eigen::Vector3d::Zero()).summary;
+  std::string text;
+  for (const auto& l : lines) text += l + "\n";
+  EXPECT_NE(text.find("Block TB3: moves"), std::string::npos) << text;
+  EXPECT_NE(text.find("Margin 4.5 deg"), std::string::npos) << text;
+  // Direction (0, -1, -1)/sqrt 2: due south (trend 180), plunging 45 degrees.
+  EXPECT_NE(text.find("Mode: sliding on J1, J2, towards 180 / 45"), std::string::npos) << text;
+  EXPECT_NE(text.find("Factor of safety 0.49"), std::string::npos) << text;
+  EXPECT_NE(text.find("Volume 1.250 m3, mass 3.40 t"), std::string::npos) << text;
+  EXPECT_NE(text.find("1 of 2 corners and 0 of 1 edges can rotate (least corner margin 4.1"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("Remote axis: found (9 of 64 starts)"), std::string::npos) << text;
+  EXPECT_NE(text.find("J1 2.50"), std::string::npos) << text;
+}
+
+TEST(BlockView, SummaryOfAMalformedReportKeepsWhatTheColumnsSay) {
+  BlockResult b = block(false, false, "none", {});
+  b.report_json = "not json";
+  const auto lines = make_block_view(b, Eigen::Vector3d::Zero()).summary;
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "Block B: not finite");
+  EXPECT_EQ(lines[1], "not finite, not removable");
+}
+
 }  // namespace

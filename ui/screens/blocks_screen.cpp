@@ -188,8 +188,9 @@ void draw_blocks_screen(AppState& app) {
   const auto& blocks = app.session->blocks();
   if (app.selected_block && *app.selected_block < blocks.size()) {
     const BlockView& b = blocks[*app.selected_block];
-    ImGui::Text("Block %s: %s", b.label.c_str(), verdict_name(b.verdict));
-    ImGui::TextWrapped("%s", b.report_text.c_str());
+    for (const auto& line : b.summary) ImGui::TextWrapped("%s", line.c_str());
+    if (ImGui::CollapsingHeader("Full report (JSON)"))
+      ImGui::TextWrapped("%s", b.report_text.c_str());
   } else {
     ImGui::TextWrapped("Tap a block on the model or in the table to see its report.");
   }

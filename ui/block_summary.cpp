@@ -1,0 +1,150 @@
+#include "ui/block_summary.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <optional>
+
+#include <Eigen/Core>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/units.h"
+#include "core/geometry/orientation.h"
+#include "ui/block_view.h"
+
+namespace rockface::ui {
+
+namespace {
+
+std::string format(const char* fmt, double a, double b = 0, double c = 0) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, fmt, a, b, c);
+  return buf;
+}
+
+const nlohmann::json* field(const nlohmann::json& obj, const char* key) {
+  if (!obj.is_object()) return nullptr;
+  const auto it = obj.find(key);
+  return it == obj.end() || it->is_null() ? nullptr : &*it;
+}
+
+std::optional<double> number(const nlohmann::json& obj, const char* key) {
+  const auto* v = field(obj, key);
+  if (!v || !v->is_number()) return std::nullopt;
+  return v->get<double>();
+}
+
+std::optional<Eigen::Vector3d> vector3(const nlohmann::json& obj, const char* key) {
+  const auto* v = field(obj, key);
+  if (!v || !v->is_array() || v->size() != 3) return std::nullopt;
+  for (const auto& x : *v)
+    if (!x.is_number()) return std::nullopt;
+  return Eigen::Vector3d((*v)[0].get<double>(), (*v)[1].get<double>(), (*v)[2].get<double>());
+}
+
+std::string joined_planes(const nlohmann::json& mode) {
+  std::string out;
+  if (const auto* planes = field(mode, "planes"); planes && planes->is_array())
+    for (const auto& p : *planes)
+      if (p.is_string()) out += (out.empty() ? "" : ", ") + p.get<std::string>();
+  return out;
+}
+
+void add_mode(std::vector<std::string>& lines, const BlockView& b, const nlohmann::json& report) {
+  if (!b.finite || !b.removable) return;
+  const auto* mode = field(report, "mode");
+  std::string line = "Mode: " + b.mode;
+  if (mode) {
+    const std::string planes = joined_planes(*mode);
+    if (!planes.empty()) line += " on " + planes;
+    if (const auto d = vector3(*mode, "direction"); d && d->norm() > 0) {
+      const auto o = geometry::line_orientation(*d);
+      line += format(", towards %03.0f / %.0f (trend / plunge)", rad_to_deg(o.trend),
+                     rad_to_deg(o.plunge));
+    }
+  }
+  lines.push_back(line);
+  if (b.fos) {
+    std::string fos = format("Factor of safety %.2f (limit equilibrium", *b.fos);
+    fos += *b.fos < 1 ? "): it slides" : ")";
+    lines.push_back(fos);
+  }
+}
+
+void add_rotation(std::vector<std::string>& lines, const nlohmann::json& report) {
+  const auto* rotation = field(report, "rotation");
+  if (!rotation) return;
+  int corners = 0, corners_free = 0, edges = 0, edges_free = 0;
+  std::optional<double> least_margin;
+  if (const auto* cs = field(*rotation, "corners"); cs && cs->is_array())
+    for (const auto& c : *cs) {
+      ++corners;
+      if (c.value("rotatable", false)) ++corners_free;
+      if (const auto m = number(c, "margin_deg"))
+        least_margin = least_margin ? std::min(*least_margin, *m) : *m;
+    }
+  if (const auto* es = field(*rotation, "edges"); es && es->is_array())
+    for (const auto& e : *es) {
+      ++edges;
+      if (e.value("rotatable", false)) ++edges_free;
+    }
+  std::string line = "Rotation: " + std::to_string(corners_free) + " of " +
+                     std::to_string(corners) + " corners and " + std::to_string(edges_free) +
+                     " of " + std::to_string(edges) + " edges can rotate";
+  if (least_margin) line += format(" (least corner margin %.1f deg)", *least_margin);
+  lines.push_back(line);
+}
+
+void add_remote_axis(std::vector<std::string>& lines, const nlohmann::json& report) {
+  const auto* axis = field(report, "remote_axis");
+  if (!axis) return;
+  const auto starts = number(*axis, "starts"), hits = number(*axis, "hits");
+  std::string line = axis->value("found", false) ? "Remote axis: found" : "Remote axis: none found";
+  if (starts && hits) line += format(" (%.0f of %.0f starts)", *hits, *starts);
+  lines.push_back(line);
+}
+
+void add_mechanics(std::vector<std::string>& lines, const nlohmann::json& report) {
+  const auto* m = field(report, "mechanics");
+  if (!m) return;
+  std::string line = "Equilibrium path: ";
+  if (const auto fos = number(*m, "fos_limit_point"))
+    line += format("limit point at load factor %.2f", *fos);
+  else
+    line += "no limit point reached";
+  if (const auto* s = field(*m, "stability"); s && s->is_string())
+    line += ", " + s->get<std::string>();
+  lines.push_back(line);
+}
+
+}  // namespace
+
+std::vector<std::string> block_summary(const BlockView& b, const nlohmann::json& report) {
+  std::vector<std::string> lines;
+  std::string head = "Block " + b.label + ": " + verdict_name(b.verdict);
+  if (b.marginal) head += " (a verdict within its margin: check on site)";
+  lines.push_back(head);
+  std::string what = std::string(b.finite ? "finite" : "not finite") + ", " +
+                     (b.removable ? "removable" : "not removable");
+  if (!b.source.empty()) what += ", from " + b.source;
+  lines.push_back(what);
+  if (b.margin_deg) lines.push_back(format("Margin %.1f deg", *b.margin_deg));
+  add_mode(lines, b, report);
+  const auto volume = number(report, "volume"), mass = number(report, "mass");
+  if (volume && mass)
+    lines.push_back(format("Volume %.3f m3, mass %.2f t", *volume, *mass / 1000.0));
+  else if (volume)
+    lines.push_back(format("Volume %.3f m3", *volume));
+  add_rotation(lines, report);
+  add_remote_axis(lines, report);
+  add_mechanics(lines, report);
+  if (const auto* areas = field(report, "face_areas"); areas && areas->is_object()) {
+    std::string line = "Faces (m2):";
+    for (const auto& [name, area] : areas->items())
+      if (area.is_number()) line += " " + name + format(" %.2f", area.get<double>());
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+}  // namespace rockface::ui
