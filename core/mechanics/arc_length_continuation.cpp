@@ -205,7 +205,7 @@ ContinuationResult continue_path(ContinuationProblem& problem, const Eigen::Vect
   Corrector corrector(problem);
   const int n = static_cast<int>(x0.size());
   const double min_step = options.min_step > 0 ? options.min_step : options.step / 64;
-  const double max_step = options.max_step > 0 ? options.max_step : options.step * 32;
+  const double max_step = options.max_step > 0 ? options.max_step : options.step * 1e6;
   out.path.push_back({x0, p0, 0});
 
   // The start: converged by the caller; its tangent from the Jacobian there.

@@ -42,7 +42,7 @@ class ContinuationProblem {
 struct ContinuationOptions {
   double step = 0.05;   // initial arc-length step (scaled units)
   double min_step = 0;  // 0: step / 64
-  double max_step = 0;  // 0: step x 32
+  double max_step = 0;  // 0: step x 1e6
   int max_steps = 400;  // accepted steps
   double p_max = 20;    // the path stops here: no limit point below it
   // dp/ds below this (scaled) counts as a flat path: a mechanism. The

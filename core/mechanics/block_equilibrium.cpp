@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/common/error.h"
+#include "core/mechanics/tolerances.h"
 
 namespace rockface::mechanics {
 
@@ -46,7 +47,7 @@ BlockEquilibrium::BlockEquilibrium(const blocks::Polyhedron& block,
       inertia_(mass.inertia) {
   for (const auto& v : block.vertices()) vertex_arms_.push_back(v - centroid_);
   length_ = std::max(block.size(), 1e-300);
-  double normal_stiffness = 0, joint_area = 0, insitu = 0;
+  double normal_stiffness = 0, joint_area = 0, insitu = 0, slip_scale = 0;
   for (const ContactPoint& c : contacts_) {
     if (c.plane < 0 || c.plane >= static_cast<int>(plane_laws_.size()) || !plane_laws_[c.plane])
       throw InputError("joints." + block.planes()[c.plane].name,
@@ -67,6 +68,7 @@ BlockEquilibrium::BlockEquilibrium(const blocks::Polyhedron& block,
     closure0_.push_back(c0);
     shear0_.push_back(s0);
     normal_stiffness += law->normal_stiffness() * c.area;
+    slip_scale = std::max(slip_scale, law->slip_scale());
     joint_area += c.area;
   }
   committed_.assign(contacts_.size(), JointState{});
@@ -78,6 +80,11 @@ BlockEquilibrium::BlockEquilibrium(const blocks::Polyhedron& block,
   load = std::max(load, insitu * joint_area);
   load_scale_ = load > 0 ? load : 1.0;
   displacement_scale_ = normal_stiffness > 0 ? load_scale_ / normal_stiffness : length_ * 1e-6;
+  // A law whose strength develops over a slip far beyond the elastic
+  // displacement (a stiff rough joint: 1e-8 m elastic, 1e-3 m to the peak)
+  // would take 1e5 elastic units of path: steps are scaled to a hundredth
+  // of that slip instead.
+  displacement_scale_ = std::max(displacement_scale_, slip_scale * kSlipScaleFraction);
 }
 
 Vector6 BlockEquilibrium::unbalance(const Vector6& x, double load_factor, double divisor,

@@ -60,10 +60,11 @@ class BlockEquilibrium {
 
   double load_scale() const { return load_scale_; }                  // N
   double length() const { return length_; }                          // m
-  double displacement_scale() const { return displacement_scale_; }  // m
+  double displacement_scale() const { return displacement_scale_; }  // m, the path's unit
   const std::vector<ContactPoint>& contacts() const { return contacts_; }
   const std::vector<JointState>& committed() const { return committed_; }
   const BlockLoads& loads() const { return loads_; }
+  const Eigen::Vector3d& centroid() const { return centroid_; }  // datum-relative
   // Vertices relative to the centroid (initial position).
   const std::vector<Eigen::Vector3d>& vertex_arms() const { return vertex_arms_; }
 

@@ -80,7 +80,10 @@ class PathProblem final : public ContinuationProblem {
 };
 
 std::vector<Eigen::Vector3d> mode_points(const BlockEquilibrium& eq) {
+  // Vertices and contact points: a pivot or a centre of rotation on a
+  // joint face shows at the contacts near it.
   std::vector<Eigen::Vector3d> pts = eq.vertex_arms();
+  for (const ContactPoint& c : eq.contacts()) pts.push_back(c.position - eq.centroid());
   return pts;
 }
 

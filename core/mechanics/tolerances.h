@@ -50,6 +50,13 @@ inline constexpr double kSharpTurnCos = 0.5;
 // tangent turned by less than acos(kSmoothTurnCos) = 18 degrees.
 inline constexpr double kSmoothTurnCos = 0.95;
 
+// The displacement unit of path following is at least this fraction of
+// the joints' slip scale (peak displacement): the differences of the
+// tangent (kTangentStepRel of it) stay below the elastic displacement of a
+// 1e12 Pa/m joint under a few metres of rock (1e-8 m) for peak
+// displacements up to 1e-2 m.
+inline constexpr double kSlipScaleFraction = 1e-2;
+
 // Loads are applied in kLoadIncrements increments at first, halved on
 // failure down to 1 / kLoadIncrementsMax of the load.
 inline constexpr int kLoadIncrements = 4;
