@@ -12,6 +12,7 @@
 #include "core/blocks/mass_properties.h"
 #include "core/common/error.h"
 #include "core/kinematics/block_analysis.h"
+#include "core/kinematics/effect_water.h"
 #include "core/mechanics/contact_points.h"
 #include "core/mechanics/equilibrium_path.h"
 #include "tests/core/mechanics/mechanics_blocks.h"
@@ -293,6 +294,23 @@ TEST(EquilibriumPath, StiffRoughJointIsSolved) {
   EXPECT_GT(stiff.path.back().lambda, basic);
   // Below Barton's 70-degree cap.
   EXPECT_LT(stiff.path.back().lambda, std::tan(deg_to_rad(70)) / std::tan(deg_to_rad(slab.psi)));
+}
+
+TEST(EquilibriumPath, WaterUpliftAsFollowerLoadMatchesLimitEquilibrium) {
+  // A phreatic surface 1 m above the slab's base centre: uplift on the
+  // joint face, carried as a follower load (it turns with the face).
+  Slab slab;
+  const blocks::Polyhedron p = slab.block();
+  kinematics::Effects e = gravity();
+  e.push_back(std::make_unique<kinematics::WaterEffect>(
+      9810, slab.at(0.5, 0.5, 0) + Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitZ()));
+  const double le = le_fos(p, e, 40);
+  const double dry = le_fos(p, gravity(), 40);
+  ASSERT_LT(le, 0.95 * dry);  // the water matters
+  const EquilibriumPath r = run(p, e, coulomb(40));
+  ASSERT_TRUE(r.fos_limit_point);
+  EXPECT_NEAR(*r.fos_limit_point, le, 2 * kLimitStep);
+  EXPECT_EQ(r.effects_used, (std::vector<std::string>{"gravity", "water"}));
 }
 
 TEST(EquilibriumPath, InsituStressClampsAWedge) {
