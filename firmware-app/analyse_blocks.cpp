@@ -191,7 +191,7 @@ void analyse_scene_blocks(const storage::Scene& scene, storage::Report& report,
     fill_verdicts(a.finiteness, rb);
     fill_block_report(*poly, a, scene.analysis, rb);
     if (scene_wants_mechanics(scene) && a.finiteness.finite.value)
-      analyse_block_mechanics(*poly, scene, effects, rb);
+      analyse_block_mechanics(*poly, scene, effects, rb, &progress);
     report.blocks.push_back(std::move(rb));
   }
 }

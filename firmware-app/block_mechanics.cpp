@@ -55,12 +55,14 @@ bool scene_wants_mechanics(const storage::Scene& scene) {
 }
 
 void analyse_block_mechanics(const blocks::Polyhedron& poly, const storage::Scene& scene,
-                             const kinematics::Effects& effects, storage::ReportBlock& rb) {
+                             const kinematics::Effects& effects, storage::ReportBlock& rb,
+                             Progress* progress) {
   mechanics::MechanicsOptions o = mechanics::mechanics_preset(scene.analysis.preset);
   if (scene.analysis.contact_density) o.contact_density = *scene.analysis.contact_density;
   if (scene.analysis.continuation_step) o.step = *scene.analysis.continuation_step;
   if (scene.analysis.max_steps) o.max_steps = *scene.analysis.max_steps;
   if (scene.analysis.lambda_max) o.lambda_max = *scene.analysis.lambda_max;
+  o.progress = progress;
   std::vector<std::shared_ptr<const mechanics::JointLaw>> laws(poly.planes().size());
   std::string law_name;
   try {

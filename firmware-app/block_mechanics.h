@@ -6,6 +6,7 @@
 // the result as the block's report `mechanics`.
 #include "core/blocks/mass_properties.h"
 #include "core/blocks/polyhedron.h"
+#include "core/common/progress.h"
 #include "core/kinematics/effect.h"
 #include "storage/report.h"
 #include "storage/scene.h"
@@ -15,8 +16,10 @@ namespace rockface::app {
 bool scene_wants_mechanics(const storage::Scene& scene);
 
 // Runs the equilibrium path of a finite block and fills rb.mechanics.
-// Throws InputError naming the scene file and field for bad parameters.
+// Throws InputError naming the scene file and field for bad parameters;
+// progress (optional) sees each continuation step and may cancel.
 void analyse_block_mechanics(const blocks::Polyhedron& poly, const storage::Scene& scene,
-                             const kinematics::Effects& effects, storage::ReportBlock& rb);
+                             const kinematics::Effects& effects, storage::ReportBlock& rb,
+                             Progress* progress = nullptr);
 
 }  // namespace rockface::app

@@ -287,6 +287,21 @@ std::string report_summary(const Report& r) {
       out << "(code +N: a non-convex block, the code of its first convex piece and N more; all "
              "in the report)\n";
   }
+  // The equilibrium path, only where the scene asked for it.
+  bool mechanics = false;
+  for (const auto& b : r.blocks) mechanics = mechanics || b.mechanics.has_value();
+  if (mechanics) {
+    out << "\nequilibrium path (strength reduction to the first limit point):\n";
+    out << pad("block", 10) << pad("FoS", 8) << pad("failure mode", 14) << pad("stability", 12)
+        << "outcome\n";
+    for (const auto& b : r.blocks) {
+      if (!b.mechanics) continue;
+      const ReportMechanics& m = *b.mechanics;
+      out << pad(b.id, 10)
+          << pad(m.fos_limit_point ? fixed(*m.fos_limit_point, 2) : std::string("-"), 8)
+          << pad(m.failure_mode.kind, 14) << pad(m.stability, 12) << m.outcome << "\n";
+    }
+  }
   for (const auto& n : r.notes) out << "note: " << n << "\n";
   return out.str();
 }
