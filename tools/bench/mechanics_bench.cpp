@@ -147,8 +147,30 @@ void BM_Prism12Preset(benchmark::State& state) {
   report(state, r, kPlaneFos);
 }
 
+// The staged Barton-Bandis law (JRC 10, JCS 100 MPa, phi_b 30) on the
+// plane slab: arg 0 the normal stiffness exponent (10: 1e10 Pa/m), arg 1
+// the contact density.
+void BM_BartonSlab(benchmark::State& state) {
+  const Case c = plane_case();
+  mech::MechanicsOptions o;
+  o.contact_density = static_cast<int>(state.range(1));
+  const auto m = rockface::blocks::mass_properties(c.block, kRho);
+  const auto laws = mech::testing::laws(
+      c.block, mech::testing::barton(10, std::pow(10.0, static_cast<double>(state.range(0)))));
+  mech::EquilibriumPath r;
+  for (auto _ : state) r = mech::equilibrium_path(c.block, m, c.effects, laws, std::nullopt, o);
+  report(state, r, r.fos_limit_point.value_or(NAN));
+  state.counters["lambda_end"] = r.path.back().lambda;
+}
+
 }  // namespace
 
+BENCHMARK(BM_BartonSlab)
+    ->Args({10, 2})
+    ->Args({10, 3})
+    ->Args({12, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK(BM_PlaneDensity)->Arg(1)->Arg(2)->Arg(3)->Arg(6)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CoupleDensity)->Arg(2)->Arg(3)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CoupleStep)
