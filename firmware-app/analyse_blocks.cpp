@@ -16,6 +16,7 @@
 #include "core/kinematics/effect_gravity.h"
 #include "core/kinematics/effect_seismic.h"
 #include "core/kinematics/effect_water.h"
+#include "firmware-app/block_mechanics.h"
 #include "firmware-app/block_report.h"
 #include "firmware-app/scene_analysis.h"
 #include "firmware-app/scene_effects.h"
@@ -79,7 +80,7 @@ void analyse_scene_blocks(const storage::Scene& scene, storage::Report& report,
   const kinematics::Effects effects = scene_effects(scene);
   for (const char* name : {"insitu_stress", "joint_law"})
     for (const auto& listed : scene.effects.listed())
-      if (listed == name)
+      if (listed == name && !scene_wants_mechanics(scene))
         report.notes.push_back(std::string("blocks: ") + name +
                                " is not part of limit equilibrium (the equilibrium-path analysis "
                                "uses it)");
@@ -189,6 +190,8 @@ void analyse_scene_blocks(const storage::Scene& scene, storage::Report& report,
     rb.convex = blocks::is_convex(*poly);
     fill_verdicts(a.finiteness, rb);
     fill_block_report(*poly, a, scene.analysis, rb);
+    if (scene_wants_mechanics(scene) && a.finiteness.finite.value)
+      analyse_block_mechanics(*poly, scene, effects, rb, &progress);
     report.blocks.push_back(std::move(rb));
   }
 }

@@ -21,6 +21,7 @@
 #include "core/kinematics/effect_gravity.h"
 #include "core/kinematics/effect_seismic.h"
 #include "core/kinematics/effect_water.h"
+#include "firmware-app/block_mechanics.h"
 #include "firmware-app/block_report.h"
 #include "firmware-app/scene_analysis.h"
 #include "firmware-app/scene_effects.h"
@@ -67,7 +68,7 @@ void rename_joint_planes(const faces::TraceBlock& b, const faces::TraceNetwork& 
 
 storage::ReportBlock report_block(const faces::TraceBlock& b, const storage::Scene& scene,
                                   const faces::TraceNetwork& net, const Eigen::Vector3d& datum,
-                                  const std::string& id) {
+                                  const std::string& id, const kinematics::Effects& effects) {
   storage::ReportBlock rb;
   rb.id = id;
   rb.source = "traces";
@@ -94,6 +95,8 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const storage::Sce
   rb.marginal = f.removable.marginal || f.finite.marginal;
   if (b.polyhedron && b.analysis) {
     fill_block_report(*b.polyhedron, *b.analysis, scene.analysis, rb);
+    if (scene_wants_mechanics(scene) && b.finite)
+      analyse_block_mechanics(*b.polyhedron, scene, effects, rb);
     rename_joint_planes(b, net, rb);
   } else {
     // An infinite block has no corners, and a finite one that is not one
@@ -180,7 +183,7 @@ void analyse_trace_blocks(const storage::Scene& scene, storage::Report& report,
     return id;
   };
   for (size_t k = 0; k < blocks.size(); ++k)
-    report.blocks.push_back(report_block(blocks[k], scene, net, datum, next_id()));
+    report.blocks.push_back(report_block(blocks[k], scene, net, datum, next_id(), effects));
   if (blocks.empty())
     report.notes.push_back("traces: no closed loop of traces on the surface, so no block");
 }

@@ -18,6 +18,10 @@ double timed_ms(F&& f) {
 storage::Report analyse_scene(const storage::Scene& scene, Progress& progress) {
   storage::Report report;
   report.effects_simulated = scene.effects.listed();
+  // Which analyses run: geometry always; limit equilibrium unless the
+  // scene says "none"; the equilibrium path only when asked for.
+  if (scene.analysis.stability != "none") report.analyses.push_back("limit_equilibrium");
+  if (scene.analysis.stability == "equilibrium_path") report.analyses.push_back("equilibrium_path");
   // Geometric checks are cheap and always run when the scene has the input.
   if (scene.analysis.pyramids && !scene.joints.empty() && !scene.free_faces.empty()) {
     progress.step("joint pyramids", 0.0);

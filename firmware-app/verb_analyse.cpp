@@ -3,6 +3,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "firmware-app/mechanics_plot.h"
 #include "firmware-app/scene_analysis.h"
 #include "firmware-app/verb_registry.h"
 #include "storage/scene.h"
@@ -26,7 +27,9 @@ VerbRun setup_analyse(CLI::App& sub) {
   return [opts] {
     const storage::Scene scene = storage::load_scene(opts->scene);
     NoProgress progress;
-    const storage::Report report = analyse_scene(scene, progress);
+    storage::Report report = analyse_scene(scene, progress);
+    // The path of each block's equilibrium-path analysis as a PNG beside the report.
+    if (!opts->out.empty()) write_mechanics_plots(report, opts->out);
     const std::string json = storage::report_to_json(report);
     if (!opts->out.empty()) {
       // Write beside the target and rename, so a full disk never leaves a

@@ -73,6 +73,27 @@ struct ReportStability {
   std::vector<ReportStabilityStep> path;
 };
 
+// The equilibrium-path analysis of one block (analysis.stability =
+// "equilibrium_path"; docs/scene-extensions.md, "Report additions").
+struct ReportRigidMode {
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();  // of the centroid
+  Eigen::Vector3d rotation = Eigen::Vector3d::Zero();     // rad, rotation vector
+  std::string kind = "translation";                       // "translation" | "rotation"
+};
+
+struct ReportMechanics {
+  std::optional<double> fos_limit_point;    // lambda at the first limit point
+  std::string outcome;                      // "limit point", "no limit point reached", ...
+  ReportRigidMode failure_mode;             // static: null vector of the tangent stiffness
+  ReportRigidMode dynamic_mode;             // from M z'' + K z = 0
+  std::string stability;                    // "divergence" | "flutter" | "stable"
+  std::optional<double> flutter_lambda;     // first lambda with a complex eigenpair
+  std::vector<std::array<double, 2>> path;  // [lambda, largest vertex displacement (m)]
+  int contacts = 0, steps = 0;
+  std::string joint_law;            // model name
+  std::optional<std::string> plot;  // PNG of the path, beside the report
+};
+
 struct ReportBlock {
   std::string id;
   std::string source = "scene";     // "scene" or "traces"
@@ -97,11 +118,15 @@ struct ReportBlock {
   std::optional<ReportRotation> rotation;
   std::optional<ReportRemoteAxis> remote_axis;
   std::optional<ReportStability> stability;
+  std::optional<ReportMechanics> mechanics;
   std::vector<std::string> notes;  // e.g. "face J3 opens under water pressure"
 };
 
 struct Report {
   std::vector<std::string> effects_simulated{"gravity"};
+  // The analyses that ran: "geometry" always, then "limit_equilibrium" or
+  // "equilibrium_path" (with its own "mechanics" per block).
+  std::vector<std::string> analyses{"geometry"};
   std::vector<ReportPyramid> pyramids;
   std::vector<ReportBlock> blocks;
   std::vector<std::string> notes;  // scene-level notes (traces left out, effects not applicable)

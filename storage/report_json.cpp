@@ -33,6 +33,32 @@ ordered number_or_null(std::optional<double> v) {
   return tidy(*v);
 }
 
+ordered rigid_mode_json(const ReportRigidMode& m) {
+  ordered j;
+  j["translation"] = vec(m.translation);
+  j["rotation"] = vec(m.rotation);
+  j["kind"] = m.kind;
+  return j;
+}
+
+ordered mechanics_json(const ReportMechanics& m) {
+  ordered j;
+  j["fos_limit_point"] = number_or_null(m.fos_limit_point);
+  j["outcome"] = m.outcome;
+  j["failure_mode"] = rigid_mode_json(m.failure_mode);
+  j["dynamic_mode"] = rigid_mode_json(m.dynamic_mode);
+  j["stability"] = m.stability;
+  if (m.flutter_lambda) j["flutter_lambda"] = tidy(*m.flutter_lambda);
+  ordered path = ordered::array();
+  for (const auto& p : m.path) path.push_back(ordered::array({tidy(p[0]), tidy(p[1])}));
+  j["path"] = path;
+  j["contacts"] = m.contacts;
+  j["steps"] = m.steps;
+  j["joint_law"] = m.joint_law;
+  if (m.plot) j["plot"] = *m.plot;
+  return j;
+}
+
 ordered mode_json(const ReportMode& m) {
   ordered j;
   j["type"] = m.type;
@@ -143,6 +169,7 @@ ordered block_json(const ReportBlock& b) {
     st["path"] = path;
     j["stability"] = st;
   }
+  if (b.mechanics) j["mechanics"] = mechanics_json(*b.mechanics);
   if (!b.notes.empty()) j["notes"] = b.notes;
   return j;
 }
@@ -185,6 +212,7 @@ std::string report_to_json(const Report& r) {
   ordered j;
   j["format"] = "rockface-report/1";
   j["effects_simulated"] = r.effects_simulated;
+  j["analyses"] = r.analyses;
   ordered pyramids = ordered::array();
   for (const auto& p : r.pyramids) pyramids.push_back(pyramid_json(p));
   j["pyramids"] = pyramids;
@@ -258,6 +286,21 @@ std::string report_summary(const Report& r) {
     if (pieces)
       out << "(code +N: a non-convex block, the code of its first convex piece and N more; all "
              "in the report)\n";
+  }
+  // The equilibrium path, only where the scene asked for it.
+  bool mechanics = false;
+  for (const auto& b : r.blocks) mechanics = mechanics || b.mechanics.has_value();
+  if (mechanics) {
+    out << "\nequilibrium path (strength reduction to the first limit point):\n";
+    out << pad("block", 10) << pad("FoS", 8) << pad("failure mode", 14) << pad("stability", 12)
+        << "outcome\n";
+    for (const auto& b : r.blocks) {
+      if (!b.mechanics) continue;
+      const ReportMechanics& m = *b.mechanics;
+      out << pad(b.id, 10)
+          << pad(m.fos_limit_point ? fixed(*m.fos_limit_point, 2) : std::string("-"), 8)
+          << pad(m.failure_mode.kind, 14) << pad(m.stability, 12) << m.outcome << "\n";
+    }
   }
   for (const auto& n : r.notes) out << "note: " << n << "\n";
   return out.str();

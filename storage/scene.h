@@ -72,6 +72,11 @@ struct SceneAnalysis {
   double orientation_uncertainty_deg = 1.0;  // verdicts inside it are marginal
   std::optional<double> reference_mass;      // kg, scales `forces` for pyramids
   double snap_tolerance = 0.05;              // m, trace snapping
+  // Equilibrium path (stability "equilibrium_path"); none: the preset's.
+  std::optional<int> contact_density;       // sub-divisions per triangle edge
+  std::optional<double> continuation_step;  // initial arc-length step (lambda units)
+  std::optional<int> max_steps;             // continuation steps before "no limit point"
+  std::optional<double> lambda_max;         // largest load factor tried
 };
 
 struct SceneWater {
@@ -94,8 +99,15 @@ struct SceneBolt {
 };
 
 struct SceneJointLaw {
-  std::string model = "barton_bandis";
+  std::string model = "barton_bandis";  // barton_bandis | grasselli | coulomb
   double jrc = 10, jcs = 1e8, phi_b = 30;
+  // Added fields (docs/scene-extensions.md):
+  double normal_stiffness = 1e10;      // Pa/m
+  double poisson_ratio = 0.25;         // shear stiffness = kn / (2 (1 + nu))
+  std::optional<double> phi_r;         // degrees; default phi_b
+  double lab_length = 0.1;             // m, L0 of JRC and JCS
+  std::optional<double> field_length;  // m, Ln: scale corrections when given
+  bool dilation = true;
 };
 
 struct SceneEffects {

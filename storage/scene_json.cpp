@@ -261,6 +261,20 @@ SceneAnalysis read_analysis(const Reader& r, const json& doc) {
     a.reference_mass = r.positive(*v, p + ".reference_mass");
   if (auto* v = r.optional(*an, p, "snap_tolerance"))
     a.snap_tolerance = r.non_negative(*v, p + ".snap_tolerance");
+  if (auto* v = r.optional(*an, p, "contact_density")) {
+    a.contact_density = r.integer(*v, p + ".contact_density");
+    if (*a.contact_density < 1 || *a.contact_density > 64)
+      r.fail(p + ".contact_density", "must be between 1 and 64 sub-divisions per edge");
+  }
+  if (auto* v = r.optional(*an, p, "continuation_step"))
+    a.continuation_step = r.number_in(*v, p + ".continuation_step", 1e-6, 10);
+  if (auto* v = r.optional(*an, p, "max_steps")) {
+    a.max_steps = r.integer(*v, p + ".max_steps");
+    if (*a.max_steps < 1 || *a.max_steps > 100000)
+      r.fail(p + ".max_steps", "must be between 1 and 100000");
+  }
+  if (auto* v = r.optional(*an, p, "lambda_max"))
+    a.lambda_max = r.number_in(*v, p + ".lambda_max", 0.1, 1e6);
   return a;
 }
 
@@ -337,13 +351,24 @@ SceneEffects read_effects(const Reader& r, const json& doc) {
     SceneJointLaw law;
     if (auto* m = r.optional(*jl, lp, "model")) {
       law.model = r.string(*m, lp + ".model");
-      if (law.model != "barton_bandis" && law.model != "coulomb")
-        r.fail(lp + ".model", "\"" + law.model + "\" is not barton_bandis or coulomb");
+      if (law.model != "barton_bandis" && law.model != "grasselli" && law.model != "coulomb")
+        r.fail(lp + ".model", "\"" + law.model + "\" is not barton_bandis, grasselli or coulomb");
     }
     if (auto* v = r.optional(*jl, lp, "jrc")) law.jrc = r.number_in(*v, lp + ".jrc", 0, 20);
     if (auto* v = r.optional(*jl, lp, "jcs")) law.jcs = r.positive(*v, lp + ".jcs");
     if (auto* v = r.optional(*jl, lp, "phi_b"))
       law.phi_b = r.number_in(*v, lp + ".phi_b", 0, 90, true);
+    if (auto* v = r.optional(*jl, lp, "normal_stiffness"))
+      law.normal_stiffness = r.positive(*v, lp + ".normal_stiffness");
+    if (auto* v = r.optional(*jl, lp, "poisson_ratio"))
+      law.poisson_ratio = r.number_in(*v, lp + ".poisson_ratio", -0.99, 0.49);
+    if (auto* v = r.optional(*jl, lp, "phi_r"))
+      law.phi_r = r.number_in(*v, lp + ".phi_r", 0, 90, true);
+    if (auto* v = r.optional(*jl, lp, "lab_length"))
+      law.lab_length = r.positive(*v, lp + ".lab_length");
+    if (auto* v = r.optional(*jl, lp, "field_length"))
+      law.field_length = r.positive(*v, lp + ".field_length");
+    if (auto* v = r.optional(*jl, lp, "dilation")) law.dilation = r.boolean(*v, lp + ".dilation");
     e.joint_law = law;
   }
   return e;

@@ -18,6 +18,8 @@ class ForceEffect final : public Effect {
   std::string name() const override { return "forces"; }
   EffectLoad load(const blocks::Polyhedron& block,
                   const blocks::MassProperties& mass) const override;
+  // Whether the force follows the block's rotation (the equilibrium path).
+  ForceFrame frame() const { return frame_; }
 
  private:
   std::string label_;

@@ -55,6 +55,10 @@ class JointLaw {
   virtual std::string name() const = 0;
   virtual double normal_stiffness() const = 0;  // Pa/m
   virtual double shear_stiffness() const = 0;   // Pa/m
+  // The shear displacement over which the strength develops (m): the peak
+  // displacement of a staged law, 0 for a law that is elastic-perfectly
+  // plastic. Path following scales its steps to it.
+  virtual double slip_scale() const { return 0; }
   // Shear strength (Pa) at normal stress sigma_n in the history `state`,
   // before any reduction.
   virtual double strength(double sigma_n, const JointState& state) const = 0;

@@ -138,16 +138,43 @@ JointResponse StagedJointLaw::respond(const JointState& committed, double closur
     return s;
   };
   // g(dg) = |trial| - ks dg - strength(dg) / divisor: positive at 0, not
-  // positive at the full trial slip; bisect.
-  double lo = 0, hi = trial_norm / ks_;
-  for (int it = 0;
-       it < kReturnMappingIterations && hi - lo > kReturnMappingRel * (trial_norm / ks_); ++it) {
-    const double mid = 0.5 * (lo + hi);
+  // positive at the full trial slip. Regula falsi with the Illinois
+  // modification keeps the bracket and converges superlinearly (a handful
+  // of evaluations where bisection takes ~40); it stops when the bracket or
+  // |g| is below kReturnMappingRel of the trial.
+  auto g_of = [&](double dg) {
     double sigma = 0;
-    const JointState s = advance(mid, sigma);
-    const double g = trial_norm - ks_ * mid - strength(sigma, s) / strength_divisor;
-    (g > 0 ? lo : hi) = mid;
+    const JointState st = advance(dg, sigma);
+    return trial_norm - ks_ * dg - strength(sigma, st) / strength_divisor;
+  };
+  double lo = 0, hi = trial_norm / ks_;
+  double g_lo = g_of(lo), g_hi = g_of(hi);
+  double root = hi;
+  int side = 0;
+  for (int it = 0; it < kReturnMappingIterations; ++it) {
+    if (hi - lo <= kReturnMappingRel * (trial_norm / ks_)) break;
+    double mid = g_lo != g_hi ? (lo * g_hi - hi * g_lo) / (g_hi - g_lo) : 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+    const double g = g_of(mid);
+    if (std::abs(g) <= kReturnMappingRel * trial_norm) {
+      root = mid;
+      hi = lo = mid;
+      break;
+    }
+    if (g > 0) {
+      lo = mid;
+      g_lo = g;
+      if (side == 1) g_hi *= 0.5;
+      side = 1;
+    } else {
+      hi = mid;
+      g_hi = g;
+      if (side == -1) g_lo *= 0.5;
+      side = -1;
+    }
+    root = hi;
   }
+  hi = root;
   double sigma = 0;
   r.state = advance(hi, sigma);
   r.normal_stress = sigma;

@@ -38,6 +38,7 @@ class StagedJointLaw final : public JointLaw {
   std::string name() const override;
   double normal_stiffness() const override { return kn_; }
   double shear_stiffness() const override { return ks_; }
+  double slip_scale() const override { return peak_->peak_displacement(); }
   double strength(double sigma_n, const JointState& state) const override;
   JointResponse respond(const JointState& committed, double closure, const Eigen::Vector2d& shear,
                         double strength_divisor) const override;

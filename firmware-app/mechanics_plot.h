@@ -1,0 +1,23 @@
+#pragma once
+// The equilibrium path of each block as a small PNG plot (load factor
+// lambda against the largest vertex displacement), written beside the
+// report: REPORT.<block id>.path.png. The report's mechanics.plot names it.
+#include <string>
+#include <vector>
+
+#include "storage/report.h"
+
+namespace rockface::app {
+
+// Writes one plot per block with a path; throws Error when a file cannot
+// be written.
+void write_mechanics_plots(storage::Report& report, const std::string& report_path);
+
+// The plot of one path as an 8-bit BGR image (exposed for tests).
+struct PlotImage {
+  int width = 0, height = 0;
+  std::vector<unsigned char> bgr;
+};
+PlotImage plot_path(const storage::ReportMechanics& m, int width = 360, int height = 240);
+
+}  // namespace rockface::app
