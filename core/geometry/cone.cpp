@@ -87,13 +87,20 @@ ConeMargin Cone::margin() const {
   // Three equally tight: d is normal to (n_i - n_j) and (n_j - n_k); the
   // cyclic sum of cross products is that normal without the cancellation of
   // subtracting nearly equal normals first.
+  // The two senses share the length and the tight value t = n_i . d (and
+  // -t): a sense whose t cannot beat the best so far has a min below it too
+  // and is skipped, with the result of considering it.
   for (size_t i = 0; i < m; ++i)
     for (size_t j = i + 1; j < m; ++j)
       for (size_t k = j + 1; k < m; ++k) {
         const Eigen::Vector3d c = normals_[i].cross(normals_[j]) + normals_[j].cross(normals_[k]) +
                                   normals_[k].cross(normals_[i]);
-        consider(c);
-        consider(-c);
+        const double len = c.norm();
+        if (!(len > kParallelCross)) continue;
+        const Eigen::Vector3d d = c / len;
+        const double t = normals_[i].dot(d);
+        if (t > best_dot) consider(c);
+        if (-t > best_dot) consider(-c);
       }
   // Every candidate degenerate (e.g. two opposite half-spaces only): the cone
   // is a plane, any direction in it has margin zero.
@@ -137,6 +144,98 @@ std::vector<Eigen::Vector3d> Cone::edges(double known_margin) const {
       }
     }
   return rays;
+}
+
+namespace {
+
+// A candidate cut below its own tight value by more than this (a sine) is
+// not the optimum: the dot products carry ~1e-16 of rounding (more for the
+// directions of nearly parallel planes, still far below this), so only real
+// cuts drop a candidate; a candidate kept needlessly costs time, not
+// accuracy.
+constexpr double kCutSine = 1e-12;
+
+}  // namespace
+
+void IncrementalMargin::consider(const Eigen::Vector3d& raw, double tight_of_maker,
+                                 const Eigen::Vector3d* maker) {
+  const double len = raw.norm();
+  if (!(len > kParallelCross)) return;
+  const Eigen::Vector3d d = raw / len;
+  const double tight = maker ? maker->dot(d) : tight_of_maker;
+  double value = tight;
+  if (maker) {
+    // Most new candidates are cut by one of the first normals: stop there.
+    for (const auto& n : normals_) {
+      value = std::min(value, n.dot(d));
+      if (value < tight - kCutSine) return;
+    }
+  } else {
+    value = min_dot(normals_, d, -2.0);
+  }
+  live_.push_back({d, value, tight});
+}
+
+void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
+  const double len = inward_normal.norm();
+  if (!(len > 0) || !std::isfinite(len))
+    throw std::invalid_argument("cone half-space with a zero or non-finite normal");
+  const Eigen::Vector3d w = inward_normal / len;
+  // The live candidates see the new half-space; those it cuts go.
+  std::erase_if(live_, [&](Candidate& c) {
+    c.value = std::min(c.value, w.dot(c.d));
+    return c.value < c.tight - kCutSine;
+  });
+  const size_t m = normals_.size();  // index of w
+  normals_.push_back(w);
+  constexpr double kNever = -std::numeric_limits<double>::infinity();
+  // The candidates Cone::margin() makes with w among the normals: w alone,
+  // w with each earlier normal (bisector, or the circle of an opposite
+  // pair), w with each earlier pair - in the same arithmetic. The circle
+  // candidates of opposite pairs are rare and never dropped.
+  consider(w, 0, &w);
+  for (const auto& u : opposite_axes_) consider(w - w.dot(u) * u, kNever, nullptr);
+  for (size_t i = 0; i < m; ++i) {
+    const Eigen::Vector3d sum = normals_[i] + w;
+    consider(sum, 0, &w);
+    consider(-sum, 0, &w);
+    if (sum.norm() < kOppositeNormals) {
+      const Eigen::Vector3d u = (normals_[i] - w).normalized();
+      consider(u.unitOrthogonal(), kNever, nullptr);
+      for (size_t k = 0; k < m; ++k)
+        if (k != i) consider(normals_[k] - normals_[k].dot(u) * u, kNever, nullptr);
+      opposite_axes_.push_back(u);
+    }
+  }
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = i + 1; j < m; ++j) {
+      const Eigen::Vector3d c =
+          normals_[i].cross(normals_[j]) + normals_[j].cross(w) + w.cross(normals_[i]);
+      consider(c, 0, &w);
+      consider(-c, 0, &w);
+    }
+}
+
+ConeMargin IncrementalMargin::margin() const {
+  ConeMargin best;
+  if (normals_.empty()) {
+    best.angle = std::numbers::pi / 2;
+    return best;
+  }
+  double best_dot = -std::numeric_limits<double>::infinity();
+  for (const auto& c : live_)
+    if (c.value > best_dot) {
+      best_dot = c.value;
+      best.direction = c.d;
+    }
+  // Every candidate degenerate: the cone is a plane (see Cone::margin()).
+  if (!std::isfinite(best_dot)) {
+    const Eigen::Vector3d any = normals_[0].unitOrthogonal();
+    best.direction = any;
+    best_dot = min_dot(normals_, any, -2.0);
+  }
+  best.angle = safe_asin(best_dot);
+  return best;
 }
 
 UnionEmptiness intersection_with_union_empty(const Cone& a, const std::vector<Cone>& b) {

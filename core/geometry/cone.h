@@ -56,6 +56,38 @@ class Cone {
   std::vector<Eigen::Vector3d> normals_;
 };
 
+// The margin of Cone::margin() for half-spaces added one at a time, for
+// searches that grow a set of half-spaces (rotation spaces with many limit
+// planes). The optimum lies where one, two or three half-spaces are equally
+// tight (the candidates of Cone::margin()), and at the optimum no other
+// half-space is tighter than they are. A candidate that some half-space cuts
+// below its own tight value by more than rounding can therefore never be the
+// optimum, now or after more half-spaces join (they only cut more): it is
+// dropped for good. The live candidates are few (about the facets of the
+// normals' convex hull), and a new candidate is usually cut by the first few
+// half-spaces it meets, so adding the k-th half-space costs about O(k^2)
+// instead of the O(k^4) of a fresh search. The margin is Cone::margin()'s
+// for the same half-spaces to rounding; where candidates tie, the direction
+// may be another one of equal margin.
+class IncrementalMargin {
+ public:
+  void add(const Eigen::Vector3d& inward_normal);  // normalised here; zero throws
+  ConeMargin margin() const;
+  size_t size() const { return normals_.size(); }
+
+ private:
+  struct Candidate {
+    Eigen::Vector3d d;
+    double value;  // min over the normals of n . d
+    double tight;  // the dot product with the normals that made it (-inf: never dropped)
+  };
+  // Evaluates raw against all normals; keeps it unless it is cut.
+  void consider(const Eigen::Vector3d& raw, double tight_of_maker, const Eigen::Vector3d* maker);
+  std::vector<Eigen::Vector3d> normals_;
+  std::vector<Candidate> live_;
+  std::vector<Eigen::Vector3d> opposite_axes_;  // u of each pair of opposite normals
+};
+
 // Whether A intersected with the union of the cones B_k is empty (that is,
 // A cap B_k is empty for every k). margin > 0: shut by that angle (the least
 // shut intersection); margin < 0: open by -margin, through B[open_index].
