@@ -148,32 +148,36 @@ std::vector<Eigen::Vector3d> Cone::edges(double known_margin) const {
 
 namespace {
 
-// A candidate cut below its own tight value by more than this (a sine) is
-// not the optimum: the dot products carry ~1e-16 of rounding (more for the
-// directions of nearly parallel planes, still far below this), so only real
-// cuts drop a candidate; a candidate kept needlessly costs time, not
-// accuracy.
+// A candidate is cut when another half-space is below its tight value by
+// more than the rounding of its direction: a direction made from a vector
+// of length len (sums and cross products of unit normals, terms of size
+// <= 3) is off by ~3e-16 / len, so kCutRounding / len bounds that with a
+// wide factor, and kCutSine covers the dot products themselves (~1e-16). A
+// candidate kept needlessly costs time, never accuracy.
 constexpr double kCutSine = 1e-12;
+constexpr double kCutRounding = 1e-14;
 
 }  // namespace
 
-void IncrementalMargin::consider(const Eigen::Vector3d& raw, double tight_of_maker,
-                                 const Eigen::Vector3d* maker) {
+void IncrementalMargin::consider(const Eigen::Vector3d& raw,
+                                 std::initializer_list<const Eigen::Vector3d*> makers) {
   const double len = raw.norm();
   if (!(len > kParallelCross)) return;
   const Eigen::Vector3d d = raw / len;
-  const double tight = maker ? maker->dot(d) : tight_of_maker;
-  double value = tight;
-  if (maker) {
-    // Most new candidates are cut by one of the first normals: stop there.
-    for (const auto& n : normals_) {
-      value = std::min(value, n.dot(d));
-      if (value < tight - kCutSine) return;
-    }
-  } else {
-    value = min_dot(normals_, d, -2.0);
+  if (makers.size() == 0) {
+    live_.push_back({d, min_dot(normals_, d, -2.0), -std::numeric_limits<double>::infinity()});
+    return;
   }
-  live_.push_back({d, value, tight});
+  double tight = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d* n : makers) tight = std::min(tight, n->dot(d));
+  const double cut = tight - kCutSine - kCutRounding / len;
+  double value = tight;
+  // Most new candidates are cut by one of the first normals: stop there.
+  for (const auto& n : normals_) {
+    value = std::min(value, n.dot(d));
+    if (value < cut) return;
+  }
+  live_.push_back({d, value, cut});
 }
 
 void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
@@ -184,35 +188,35 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   // The live candidates see the new half-space; those it cuts go.
   std::erase_if(live_, [&](Candidate& c) {
     c.value = std::min(c.value, w.dot(c.d));
-    return c.value < c.tight - kCutSine;
+    return c.value < c.cut;
   });
   const size_t m = normals_.size();  // index of w
   normals_.push_back(w);
-  constexpr double kNever = -std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d& nw = normals_.back();
   // The candidates Cone::margin() makes with w among the normals: w alone,
   // w with each earlier normal (bisector, or the circle of an opposite
   // pair), w with each earlier pair - in the same arithmetic. The circle
   // candidates of opposite pairs are rare and never dropped.
-  consider(w, 0, &w);
-  for (const auto& u : opposite_axes_) consider(w - w.dot(u) * u, kNever, nullptr);
+  consider(nw, {&nw});
+  for (const auto& u : opposite_axes_) consider(nw - nw.dot(u) * u, {});
   for (size_t i = 0; i < m; ++i) {
-    const Eigen::Vector3d sum = normals_[i] + w;
-    consider(sum, 0, &w);
-    consider(-sum, 0, &w);
+    const Eigen::Vector3d sum = normals_[i] + nw;
+    consider(sum, {&normals_[i], &nw});
+    consider(-sum, {&normals_[i], &nw});
     if (sum.norm() < kOppositeNormals) {
-      const Eigen::Vector3d u = (normals_[i] - w).normalized();
-      consider(u.unitOrthogonal(), kNever, nullptr);
+      const Eigen::Vector3d u = (normals_[i] - nw).normalized();
+      consider(u.unitOrthogonal(), {});
       for (size_t k = 0; k < m; ++k)
-        if (k != i) consider(normals_[k] - normals_[k].dot(u) * u, kNever, nullptr);
+        if (k != i) consider(normals_[k] - normals_[k].dot(u) * u, {});
       opposite_axes_.push_back(u);
     }
   }
   for (size_t i = 0; i < m; ++i)
     for (size_t j = i + 1; j < m; ++j) {
       const Eigen::Vector3d c =
-          normals_[i].cross(normals_[j]) + normals_[j].cross(w) + w.cross(normals_[i]);
-      consider(c, 0, &w);
-      consider(-c, 0, &w);
+          normals_[i].cross(normals_[j]) + normals_[j].cross(nw) + nw.cross(normals_[i]);
+      consider(c, {&normals_[i], &normals_[j], &nw});
+      consider(-c, {&normals_[i], &normals_[j], &nw});
     }
 }
 

@@ -10,6 +10,7 @@
 // only the origin by a hair, and negative by the angle every half-space would
 // have to open for the cone to get an interior. It is continuous in the
 // normals, so nearly parallel planes give a small margin, not a flip.
+#include <initializer_list>
 #include <vector>
 
 #include <Eigen/Core>
@@ -60,8 +61,9 @@ class Cone {
 // searches that grow a set of half-spaces (rotation spaces with many limit
 // planes). The optimum lies where one, two or three half-spaces are equally
 // tight (the candidates of Cone::margin()), and at the optimum no other
-// half-space is tighter than they are. A candidate that some half-space cuts
-// below its own tight value by more than rounding can therefore never be the
+// half-space is tighter than they are. A candidate that another half-space
+// cuts below its own tight value (the least of its makers' dot products) by
+// more than the rounding of its direction can therefore never be the
 // optimum, now or after more half-spaces join (they only cut more): it is
 // dropped for good. The live candidates are few (about the facets of the
 // normals' convex hull), and a new candidate is usually cut by the first few
@@ -79,10 +81,11 @@ class IncrementalMargin {
   struct Candidate {
     Eigen::Vector3d d;
     double value;  // min over the normals of n . d
-    double tight;  // the dot product with the normals that made it (-inf: never dropped)
+    double cut;    // dropped when value < cut (-inf: never)
   };
-  // Evaluates raw against all normals; keeps it unless it is cut.
-  void consider(const Eigen::Vector3d& raw, double tight_of_maker, const Eigen::Vector3d* maker);
+  // Evaluates raw against all normals; keeps it unless it is cut. makers:
+  // the normals that made it (none: a rare candidate, never dropped).
+  void consider(const Eigen::Vector3d& raw, std::initializer_list<const Eigen::Vector3d*> makers);
   std::vector<Eigen::Vector3d> normals_;
   std::vector<Candidate> live_;
   std::vector<Eigen::Vector3d> opposite_axes_;  // u of each pair of opposite normals
