@@ -159,14 +159,14 @@ constexpr double kCutRounding = 1e-14;
 
 }  // namespace
 
-void IncrementalMargin::consider(const Eigen::Vector3d& raw,
+bool IncrementalMargin::consider(const Eigen::Vector3d& raw,
                                  std::initializer_list<const Eigen::Vector3d*> makers) {
   const double len = raw.norm();
-  if (!(len > kParallelCross)) return;
+  if (!(len > kParallelCross)) return false;
   const Eigen::Vector3d d = raw / len;
   if (makers.size() == 0) {
     live_.push_back({d, min_dot(normals_, d, -2.0), -std::numeric_limits<double>::infinity()});
-    return;
+    return true;
   }
   double tight = std::numeric_limits<double>::infinity();
   for (const Eigen::Vector3d* n : makers) tight = std::min(tight, n->dot(d));
@@ -175,9 +175,10 @@ void IncrementalMargin::consider(const Eigen::Vector3d& raw,
   // Most new candidates are cut by one of the first normals: stop there.
   for (const auto& n : normals_) {
     value = std::min(value, n.dot(d));
-    if (value < cut) return;
+    if (value < cut) return true;
   }
   live_.push_back({d, value, cut});
+  return true;
 }
 
 void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
@@ -185,12 +186,27 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   if (!(len > 0) || !std::isfinite(len))
     throw std::invalid_argument("cone half-space with a zero or non-finite normal");
   const Eigen::Vector3d w = inward_normal / len;
-  // The live candidates see the new half-space; those it cuts go.
+  const size_t m = normals_.size();  // index of w
+  // The live candidates see the new half-space; those it cuts go. The
+  // triples it lowers or lies on (the facets it sees, those in whose plane
+  // it lies, and some more) give the pairs that make new triples with it.
+  bool all_pairs = all_pairs_;
+  bool any_triple = false;
+  std::vector<char> edge(all_pairs ? 0 : m * m, 0);
   std::erase_if(live_, [&](Candidate& c) {
-    c.value = std::min(c.value, w.dot(c.d));
+    const double x = w.dot(c.d);
+    if (c.k >= 0) {
+      any_triple = true;
+      // Seen, or in its plane to within its rounding (coplanar normals: the
+      // facet grows by w, as in an incremental hull).
+      if (x < c.value + (c.value - c.cut) && !all_pairs)
+        edge[c.i * m + c.j] = edge[c.i * m + c.k] = edge[c.j * m + c.k] = 1;
+    }
+    c.value = std::min(c.value, x);
     return c.value < c.cut;
   });
-  const size_t m = normals_.size();  // index of w
+  // No facet yet (fewer than three normals, or all on one line): every pair.
+  if (!any_triple) all_pairs = true;
   normals_.push_back(w);
   const Eigen::Vector3d& nw = normals_.back();
   // The candidates Cone::margin() makes with w among the normals: w alone,
@@ -213,10 +229,20 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   }
   for (size_t i = 0; i < m; ++i)
     for (size_t j = i + 1; j < m; ++j) {
+      if (!all_pairs && !edge[i * m + j]) continue;
       const Eigen::Vector3d c =
           normals_[i].cross(normals_[j]) + normals_[j].cross(nw) + nw.cross(normals_[i]);
-      consider(c, {&normals_[i], &normals_[j], &nw});
+      const size_t before = live_.size();
+      if (!consider(c, {&normals_[i], &normals_[j], &nw})) {
+        all_pairs_ = true;
+        continue;
+      }
       consider(-c, {&normals_[i], &normals_[j], &nw});
+      for (size_t n = before; n < live_.size(); ++n) {
+        live_[n].i = static_cast<int>(i);
+        live_[n].j = static_cast<int>(j);
+        live_[n].k = static_cast<int>(m);
+      }
     }
 }
 

@@ -68,7 +68,10 @@ class Cone {
 // dropped for good. The live candidates are few (about the facets of the
 // normals' convex hull), and a new candidate is usually cut by the first few
 // half-spaces it meets, so adding the k-th half-space costs about O(k^2)
-// instead of the O(k^4) of a fresh search. The margin is Cone::margin()'s
+// instead of the O(k^4) of a fresh search. The live triples are (about)
+// the facets of the convex hull of the normals; a new normal makes new
+// facets only with the edges of the facets it sees (the horizon, as in an
+// incremental convex hull), so only those pairs make new triples. The margin is Cone::margin()'s
 // for the same half-spaces to rounding; where candidates tie, the direction
 // may be another one of equal margin.
 class IncrementalMargin {
@@ -80,15 +83,20 @@ class IncrementalMargin {
  private:
   struct Candidate {
     Eigen::Vector3d d;
-    double value;  // min over the normals of n . d
-    double cut;    // dropped when value < cut (-inf: never)
+    double value;                // min over the normals of n . d
+    double cut;                  // dropped when value < cut (-inf: never)
+    int i = -1, j = -1, k = -1;  // the three normals of a triple candidate
   };
   // Evaluates raw against all normals; keeps it unless it is cut. makers:
   // the normals that made it (none: a rare candidate, never dropped).
-  void consider(const Eigen::Vector3d& raw, std::initializer_list<const Eigen::Vector3d*> makers);
+  // Returns whether it was a candidate at all (not degenerate).
+  bool consider(const Eigen::Vector3d& raw, std::initializer_list<const Eigen::Vector3d*> makers);
   std::vector<Eigen::Vector3d> normals_;
   std::vector<Candidate> live_;
   std::vector<Eigen::Vector3d> opposite_axes_;  // u of each pair of opposite normals
+  // A triple was degenerate (too short a cross product): its face of the
+  // hull is not among the candidates, so every pair makes triples from then on.
+  bool all_pairs_ = false;
 };
 
 // Whether A intersected with the union of the cones B_k is empty (that is,

@@ -172,6 +172,21 @@ TEST(Cone, IncrementalMarginIsTheDirectMargin) {
     }
     expect_incremental_as_direct(ns, "random " + std::to_string(trial));
   }
+  // Many normals (rotation spaces have up to ~60), and normals on one great
+  // circle (limit planes through one line) before others join.
+  for (int trial = 0; trial < 12; ++trial) {
+    std::vector<Eigen::Vector3d> ns;
+    for (int i = 0; i < 6 + trial % 3; ++i) {
+      const double a = g(rng);
+      ns.emplace_back(0, std::cos(a), std::sin(a));
+    }
+    for (int i = 0; i < 4 + 3 * trial; ++i) {
+      Eigen::Vector3d n(g(rng), g(rng), g(rng));
+      if (trial % 2 == 0) n.z() = std::abs(n.z()) + 0.5;
+      ns.push_back(n);
+    }
+    expect_incremental_as_direct(ns, "great circle, then more " + std::to_string(trial));
+  }
   const Eigen::Vector3d side1(-1, 1, 0), side2(-1, -1, 0), back(-1, 0, 0);
   for (double eps : {1e-3, 1e-6, 1e-9}) {
     const Eigen::Vector3d a = Eigen::Vector3d::UnitZ();
