@@ -110,6 +110,7 @@ ConeMargin Cone::margin() const {
     best.direction = any;
     best_dot = min_dot(normals_, any, -2.0);
   }
+  best.sine = best_dot;
   best.angle = safe_asin(best_dot);
   return best;
 }
@@ -192,7 +193,8 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   // it lies, and some more) give the pairs that make new triples with it.
   bool all_pairs = all_pairs_;
   bool any_triple = false;
-  std::vector<char> edge(all_pairs ? 0 : m * m, 0);
+  std::vector<char>& edge = edge_;
+  edge.assign(all_pairs ? 0 : m * m, 0);
   std::erase_if(live_, [&](Candidate& c) {
     const double x = w.dot(c.d);
     if (c.k >= 0) {
@@ -264,6 +266,7 @@ ConeMargin IncrementalMargin::margin() const {
     best.direction = any;
     best_dot = min_dot(normals_, any, -2.0);
   }
+  best.sine = best_dot;
   best.angle = safe_asin(best_dot);
   return best;
 }

@@ -21,6 +21,7 @@ namespace rockface::geometry {
 struct ConeMargin {
   double angle = 0;                                      // radians, see above
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // a unit direction achieving it
+  double sine = 1;  // min over the half-spaces of n . direction (angle = its asin)
 };
 
 class Cone {
@@ -97,6 +98,7 @@ class IncrementalMargin {
   // A triple was degenerate (too short a cross product): its face of the
   // hull is not among the candidates, so every pair makes triples from then on.
   bool all_pairs_ = false;
+  std::vector<char> edge_;  // scratch: pairs that make new triples
 };
 
 // Whether A intersected with the union of the cones B_k is empty (that is,

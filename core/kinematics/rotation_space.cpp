@@ -29,15 +29,21 @@ bool ill_posed(const LimitPlane& l, double uncertainty_rad) {
 geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, double uncertainty_rad,
                           bool drop_ill_posed) {
   std::vector<Eigen::Vector3d> normals;
+  std::vector<double> xs;  // their x, contiguous for the cheap test
+  normals.reserve(limits.size());
+  xs.reserve(limits.size());
   for (const auto& l : limits) {
     if (drop_ill_posed && ill_posed(l, uncertainty_rad)) continue;
     // |dx| >= kSameRayRad already decides "not the same" (the norm is at
     // least |dx|): the cheap test first.
-    const bool seen = std::any_of(normals.begin(), normals.end(), [&](const Eigen::Vector3d& n) {
-      return std::abs(n.x() - l.normal.x()) < geometry::kSameRayRad &&
-             (n - l.normal).norm() < geometry::kSameRayRad;
-    });
-    if (!seen) normals.push_back(l.normal);
+    bool seen = false;
+    for (size_t k = 0; k < xs.size() && !seen; ++k)
+      seen = std::abs(xs[k] - l.normal.x()) < geometry::kSameRayRad &&
+             (normals[k] - l.normal).norm() < geometry::kSameRayRad;
+    if (!seen) {
+      normals.push_back(l.normal);
+      xs.push_back(l.normal.x());
+    }
   }
   return geometry::Cone(normals);
 }
@@ -89,13 +95,14 @@ geometry::ConeMargin exact_margin(const geometry::Cone& cone) {
   auto certified = [&](const geometry::ConeMargin& m, double worst_dot) {
     geometry::ConeMargin result = m;
     result.angle = std::min(m.angle, safe_asin(worst_dot));
+    result.sine = std::min(m.sine, worst_dot);
     return result;
   };
   std::vector<Eigen::Vector3d> basis = {all.front()};
   double previous = std::numeric_limits<double>::infinity();
   for (size_t step = 0; step < 4 * all.size(); ++step) {
     const geometry::ConeMargin m = geometry::Cone(basis).margin();
-    const double level = std::sin(m.angle);
+    const double level = m.sine;
     const auto [worst, worst_dot] = least_inside(all, m.direction);
     const bool in_basis = std::any_of(basis.begin(), basis.end(),
                                       [&](const Eigen::Vector3d& n) { return n == all[worst]; });
@@ -114,7 +121,7 @@ geometry::ConeMargin exact_margin(const geometry::Cone& cone) {
   used[0] = 1;
   for (;;) {
     const geometry::ConeMargin m = active.margin();
-    const double level = std::sin(m.angle);
+    const double level = m.sine;
     const auto [worst, worst_dot] = least_inside(all, m.direction);
     if (worst_dot >= level - kLevelRounding || used[worst]) return certified(m, worst_dot);
     used[worst] = 1;
