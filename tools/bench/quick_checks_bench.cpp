@@ -52,6 +52,22 @@ void BM_QuickChecksMix(benchmark::State& state) {
 }
 BENCHMARK(BM_QuickChecksMix)->Unit(benchmark::kMicrosecond);
 
+// The mix on range(0) threads (kinematics::quick_checks_all), wall time:
+// blocks per second of the machine, not of one core.
+void BM_QuickChecksMixThreads(benchmark::State& state) {
+  const auto blocks = tr::quick_check_mix(20);
+  size_t done = 0;
+  for (auto _ : state) {
+    const auto q = rockface::kinematics::quick_checks_all(blocks, deg_to_rad(1.0),
+                                                          static_cast<unsigned>(state.range(0)));
+    benchmark::DoNotOptimize(q.data());
+    done += blocks.size();
+  }
+  state.counters["blocks_per_s"] =
+      benchmark::Counter(static_cast<double>(done), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_QuickChecksMixThreads)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -82,6 +82,20 @@ TEST(QuickChecks, VerdictsAndMarginsAsBeforeTheSpeedUps) {
   EXPECT_GT(compared, 10000);
 }
 
+TEST(QuickChecks, AllCoresGiveTheSingleThreadedResults) {
+  // Every number of every block, in order: the dumps are equal as text (17
+  // digits), so any difference in any bit of a margin or ray shows.
+  const auto mix = quick_check_mix(kPerSize);
+  const auto one = kinematics::quick_checks_all(mix, deg_to_rad(1.0), 1);
+  const auto four = kinematics::quick_checks_all(mix, deg_to_rad(1.0), 4);
+  ASSERT_EQ(one.size(), mix.size());
+  ASSERT_EQ(four.size(), mix.size());
+  for (size_t i = 0; i < mix.size(); ++i)
+    ASSERT_EQ(quick_checks_dump(mix[i], one[i].finiteness, one[i].rotation),
+              quick_checks_dump(mix[i], four[i].finiteness, four[i].rotation))
+        << mix[i].id();
+}
+
 TEST(QuickChecks, MixHasEverySize) {
   const auto mix = quick_check_mix(2);
   ASSERT_EQ(mix.size(), 18u);
