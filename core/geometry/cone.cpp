@@ -218,9 +218,14 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   consider(nw, {&nw});
   for (const auto& u : opposite_axes_) consider(nw - nw.dot(u) * u, {});
   for (size_t i = 0; i < m; ++i) {
+    // Only the bisector +sum: where just two half-spaces are tight, the
+    // optimum is the maximum of the smaller of their two dot products,
+    // which is there; at -sum that smaller one is least along the circle
+    // of equal dot products, never a maximum (Cone::margin() considers it
+    // too, and it never wins there either, unless a third half-space is
+    // as tight - a triple, made below, or an opposite pair's circle).
     const Eigen::Vector3d sum = normals_[i] + nw;
     consider(sum, {&normals_[i], &nw});
-    consider(-sum, {&normals_[i], &nw});
     if (sum.norm() < kOppositeNormals) {
       const Eigen::Vector3d u = (normals_[i] - nw).normalized();
       consider(u.unitOrthogonal(), {});

@@ -29,20 +29,26 @@ bool ill_posed(const LimitPlane& l, double uncertainty_rad) {
 geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, double uncertainty_rad,
                           bool drop_ill_posed) {
   std::vector<Eigen::Vector3d> normals;
-  std::vector<double> xs;  // their x, contiguous for the cheap test
+  // The kept normals by x: |dx| >= kSameRayRad already decides "not the
+  // same" (the norm is at least |dx|), so only those within that of x need
+  // the full test.
+  std::vector<std::pair<double, int>> by_x;
   normals.reserve(limits.size());
-  xs.reserve(limits.size());
+  by_x.reserve(limits.size());
   for (const auto& l : limits) {
     if (drop_ill_posed && ill_posed(l, uncertainty_rad)) continue;
-    // |dx| >= kSameRayRad already decides "not the same" (the norm is at
-    // least |dx|): the cheap test first.
+    const double x = l.normal.x();
+    auto it =
+        std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(x - geometry::kSameRayRad, -1));
     bool seen = false;
-    for (size_t k = 0; k < xs.size() && !seen; ++k)
-      seen = std::abs(xs[k] - l.normal.x()) < geometry::kSameRayRad &&
-             (normals[k] - l.normal).norm() < geometry::kSameRayRad;
+    for (auto k = it; k != by_x.end() && k->first < x + geometry::kSameRayRad && !seen; ++k)
+      seen = std::abs(k->first - x) < geometry::kSameRayRad &&
+             (normals[k->second] - l.normal).norm() < geometry::kSameRayRad;
     if (!seen) {
+      by_x.insert(std::upper_bound(by_x.begin(), by_x.end(),
+                                   std::make_pair(x, static_cast<int>(normals.size()))),
+                  std::make_pair(x, static_cast<int>(normals.size())));
       normals.push_back(l.normal);
-      xs.push_back(l.normal.x());
     }
   }
   return geometry::Cone(normals);

@@ -16,6 +16,7 @@
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
 #include "core/kinematics/effect_gravity.h"
+#include "core/kinematics/quick_checks.h"
 #include "tests/core/faces/random_slope.h"
 
 namespace {
@@ -62,6 +63,41 @@ void BM_TraceMapToBlocks(benchmark::State& state) {
   state.counters["not_assembled"] = static_cast<double>(unassembled);
 }
 BENCHMARK(BM_TraceMapToBlocks)->Arg(50)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// Issue 17: the quick checks (finiteness, removability, corner / edge
+// rotatability) of every finite block of the map that is one polyhedron,
+// after the map is built (outside the timed loop), on range(1) threads;
+// wall time.
+void BM_TraceMapQuickChecks(benchmark::State& state) {
+  const auto patches = faces::testing::random_slope();
+  const faces::FreeSurface surface = faces::FreeSurface::build(patches, kSnap);
+  const auto traces = random_traces(surface, static_cast<int>(state.range(0)), 11);
+  faces::TraceBlockOptions options;
+  options.snap_tolerance = kSnap;
+  options.orientation_uncertainty = deg_to_rad(1.0);
+  NoProgress progress;
+  const auto net = faces::TraceNetwork::build(surface, traces, {kSnap, deg_to_rad(1.0)});
+  const auto found = faces::SurfaceLoops::find(net, surface);
+  const auto blocks = faces::trace_blocks(surface, net, found, options, progress);
+  std::vector<blocks::Polyhedron> polyhedra;
+  for (const auto& b : blocks)
+    if (b.finite && b.polyhedron) polyhedra.push_back(*b.polyhedron);
+  size_t corners = 0;
+  for (auto _ : state) {
+    const auto q = kinematics::quick_checks_all(polyhedra, deg_to_rad(1.0),
+                                                static_cast<unsigned>(state.range(1)));
+    corners = 0;
+    for (const auto& x : q) corners += x.rotation.corners.size();
+    benchmark::DoNotOptimize(q.data());
+  }
+  state.counters["blocks"] = static_cast<double>(polyhedra.size());
+  state.counters["static_points"] = static_cast<double>(corners);
+}
+BENCHMARK(BM_TraceMapQuickChecks)
+    ->Args({1000, 1})
+    ->Args({1000, 2})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
