@@ -130,6 +130,7 @@ std::vector<Eigen::Vector3d> Cone::edges(double known_margin) const {
   std::vector<Eigen::Vector3d> rays;
   if (normals_.size() < 2 || known_margin < -kAngleEpsRad) return rays;
   const size_t m = normals_.size();
+  const double outside = std::nextafter(-kAngleEpsRad, -std::numeric_limits<double>::infinity());
   for (size_t i = 0; i < m; ++i)
     for (size_t j = i + 1; j < m; ++j) {
       const Eigen::Vector3d c = normals_[i].cross(normals_[j]);
@@ -137,7 +138,9 @@ std::vector<Eigen::Vector3d> Cone::edges(double known_margin) const {
       if (!(len > kParallelCross)) continue;
       for (double sense : {1.0, -1.0}) {
         const Eigen::Vector3d d = sense * c / len;
-        if (min_dot(normals_, d, -2.0) < -kAngleEpsRad) continue;
+        // Early exit at the first half-space below -kAngleEpsRad (the
+        // returned value is then below it; otherwise it is the exact min).
+        if (min_dot(normals_, d, outside) < -kAngleEpsRad) continue;
         const bool seen = std::any_of(rays.begin(), rays.end(), [&](const Eigen::Vector3d& r) {
           return r.cross(d).norm() < kSameRayRad && r.dot(d) > 0;
         });
