@@ -121,10 +121,15 @@ geometry::ConeMargin exact_margin(const geometry::Cone& cone) {
     next.push_back(all[worst]);
     basis = std::move(next);
   }
+  // The growing subset starts from the last basis (for a shut cone: the
+  // half-spaces that shut it), not from one half-space.
   geometry::IncrementalMargin active;  // its candidates are kept from step to step
-  active.add(all.front());
   std::vector<char> used(all.size(), 0);
-  used[0] = 1;
+  for (size_t i = 0; i < all.size(); ++i)
+    if (std::find(basis.begin(), basis.end(), all[i]) != basis.end() && !used[i]) {
+      used[i] = 1;
+      active.add(all[i]);
+    }
   for (;;) {
     const geometry::ConeMargin m = active.margin();
     const double level = m.sine;
