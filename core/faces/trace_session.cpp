@@ -1,16 +1,17 @@
 #include "core/faces/trace_session.h"
 
-#include <cstdio>
+#include <cstring>
 #include <unordered_map>
 
 namespace rockface::faces {
 
 namespace {
 
+// The bits of the double: exact, and far cheaper than text.
 void put(std::string& key, double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%a,", x);
-  key += text;
+  char bytes[sizeof x];
+  std::memcpy(bytes, &x, sizeof x);
+  key.append(bytes, sizeof x);
 }
 
 void put(std::string& key, const Eigen::Vector3d& x) {

@@ -9,7 +9,7 @@
 // of their stretches with strengths and uncertainties, the patches under
 // them and the angles at their corners), its faces and the patches it
 // covers, given the surface and the options, which a session keeps fixed.
-// Those inputs, written exactly (hexadecimal floats), are the region's key:
+// Those inputs, written exactly (the bits of every number), are the region's key:
 // a region whose key the last update had reuses that block (with the
 // region index, trace indices and plane groups of the new map), all others
 // are computed. So update() returns exactly what trace_blocks() returns for
