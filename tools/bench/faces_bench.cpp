@@ -28,16 +28,23 @@ using V = Eigen::Vector3d;
 using faces::testing::kSnap;
 using faces::testing::random_traces;
 
-void BM_TraceMapToBlocks(benchmark::State& state) {
-  const auto patches = faces::testing::random_slope();
-  const faces::FreeSurface probe = faces::FreeSurface::build(patches, kSnap);
-  const auto traces = random_traces(probe, static_cast<int>(state.range(0)), 11);
-  kinematics::Effects effects;
+// The options of every run here: the scene default tolerance, 1 degree,
+// gravity (effects: the caller's, to outlive the options).
+faces::TraceBlockOptions map_options(kinematics::Effects& effects) {
   effects.push_back(std::make_unique<kinematics::GravityEffect>(V(0, 0, -9.81)));
   faces::TraceBlockOptions options;
   options.snap_tolerance = kSnap;
   options.orientation_uncertainty = deg_to_rad(1.0);
   options.effects = &effects;
+  return options;
+}
+
+void BM_TraceMapToBlocks(benchmark::State& state) {
+  const auto patches = faces::testing::random_slope();
+  const faces::FreeSurface probe = faces::FreeSurface::build(patches, kSnap);
+  const auto traces = random_traces(probe, static_cast<int>(state.range(0)), 11);
+  kinematics::Effects effects;
+  const faces::TraceBlockOptions options = map_options(effects);
   NoProgress progress;
   size_t loops = 0, finite = 0, removable = 0, vertices = 0, islands = 0, unassembled = 0;
   for (auto _ : state) {
@@ -103,11 +110,7 @@ void BM_TraceEditToVerdicts(benchmark::State& state) {
   const faces::FreeSurface surface = faces::FreeSurface::build(patches, kSnap);
   auto traces = random_traces(surface, static_cast<int>(state.range(0)), 11);
   kinematics::Effects effects;
-  effects.push_back(std::make_unique<kinematics::GravityEffect>(V(0, 0, -9.81)));
-  faces::TraceBlockOptions options;
-  options.snap_tolerance = kSnap;
-  options.orientation_uncertainty = deg_to_rad(1.0);
-  options.effects = &effects;
+  const faces::TraceBlockOptions options = map_options(effects);
   NoProgress progress;
   faces::TraceSession session(patches, {kSnap, deg_to_rad(1.0)}, options);
   session.update(traces, progress);
