@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/parallel.h"
 #include "core/common/units.h"
 #include "core/faces/free_surface.h"
 #include "core/faces/surface_loops.h"
@@ -182,8 +183,16 @@ void analyse_trace_blocks(const storage::Scene& scene, storage::Report& report,
     while (taken.count(id));
     return id;
   };
-  for (size_t k = 0; k < blocks.size(); ++k)
-    report.blocks.push_back(report_block(blocks[k], scene, net, datum, next_id(), effects));
+  // The blocks' reports (rotation and the remote-axis search are the costly
+  // part) on all cores: each from its own block, in the blocks' order, the
+  // same numbers as one after the other (core/common/parallel.h).
+  std::vector<std::string> ids;
+  for (size_t k = 0; k < blocks.size(); ++k) ids.push_back(next_id());
+  std::vector<storage::ReportBlock> reported(blocks.size());
+  parallel_for(blocks.size(), [&](size_t k) {
+    reported[k] = report_block(blocks[k], scene, net, datum, ids[k], effects);
+  });
+  for (auto& rb : reported) report.blocks.push_back(std::move(rb));
   if (blocks.empty())
     report.notes.push_back("traces: no closed loop of traces on the surface, so no block");
 }

@@ -214,19 +214,15 @@ kinematics::Finiteness union_finiteness(const CellUnion& u, double shut_margin,
 
 }  // namespace
 
-std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetwork& net,
-                                     const SurfaceLoops& loops, const TraceBlockOptions& options,
-                                     Progress& progress) {
+std::optional<TraceBlock> trace_block(const FreeSurface& surface, const TraceNetwork& net,
+                                      const SurfaceLoops& loops, int r,
+                                      const TraceBlockOptions& options) {
   const double tol = options.snap_tolerance;
   const auto& patches = surface.patches();
   const auto& edges = net.edges();
-  std::vector<TraceBlock> out;
-
-  for (size_t r = 0; r < loops.regions().size(); ++r) {
-    progress.step("blocks from trace loops",
-                  static_cast<double>(r) / static_cast<double>(loops.regions().size()));
+  {
     const SurfaceRegion& region = loops.regions()[r];
-    if (region.loops.empty()) continue;
+    if (region.loops.empty()) return std::nullopt;
     TraceBlock block;
     block.region = static_cast<int>(r);
     block.traces = region.traces;
@@ -460,7 +456,12 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
     double shut_margin = std::numbers::pi / 2;  // least recession margin of the pieces
     bool unbounded = false;
     bool geometry_failed = false;
-    const std::string id = "loop " + std::to_string(r);
+    // Named by its first joint, not by the region index, so that the same
+    // loop gives the same block whatever the other traces (incremental
+    // analysis, trace_session.h).
+    const int first_group = edges[region.loops.front().front() / 2].group;
+    const std::string id =
+        "loop along " + (first_group >= 0 ? net.groups()[first_group].name : std::string("?"));
     for (size_t k = 0; k < pieces.size() && !unbounded; ++k) {
       std::vector<blocks::HalfSpaceInput> hs;
       std::vector<Eigen::Vector3d> joint_in, free_in;
@@ -505,8 +506,7 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
       }
     }
     if (geometry_failed) {
-      out.push_back(std::move(block));
-      continue;
+      return block;
     }
     if (!unbounded && !cells.empty()) {
       // The boundary of a union of pieces, kept for the verdicts should it
@@ -549,12 +549,14 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
         }
       }
     } else if (!unbounded) {
-      continue;  // every piece empty: no block behind this loop
+      return std::nullopt;  // every piece empty: no block behind this loop
     }
     if (unbounded) block.finite = false;
-    out.push_back(std::move(block));
+    return block;
   }
+}
 
+void order_trace_blocks(std::vector<TraceBlock>& out) {
   // An order that does not depend on the order of the traces.
   auto key = [](const TraceBlock& b) {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
@@ -565,6 +567,19 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
   };
   std::stable_sort(out.begin(), out.end(),
                    [&](const TraceBlock& a, const TraceBlock& b) { return key(a) < key(b); });
+}
+
+std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetwork& net,
+                                     const SurfaceLoops& loops, const TraceBlockOptions& options,
+                                     Progress& progress) {
+  std::vector<TraceBlock> out;
+  for (size_t r = 0; r < loops.regions().size(); ++r) {
+    progress.step("blocks from trace loops",
+                  static_cast<double>(r) / static_cast<double>(loops.regions().size()));
+    if (auto block = trace_block(surface, net, loops, static_cast<int>(r), options))
+      out.push_back(std::move(*block));
+  }
+  order_trace_blocks(out);
   return out;
 }
 

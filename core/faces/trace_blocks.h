@@ -86,4 +86,13 @@ std::vector<TraceBlock> trace_blocks(const FreeSurface& surface, const TraceNetw
                                      const SurfaceLoops& loops, const TraceBlockOptions& options,
                                      Progress& progress);
 
+// The block of one region (loops.regions()[r]), as trace_blocks() makes it;
+// none when the region has no loop or every piece behind it is empty.
+std::optional<TraceBlock> trace_block(const FreeSurface& surface, const TraceNetwork& network,
+                                      const SurfaceLoops& loops, int r,
+                                      const TraceBlockOptions& options);
+
+// The order of trace_blocks() (by the position of the surface polygon).
+void order_trace_blocks(std::vector<TraceBlock>& blocks);
+
 }  // namespace rockface::faces

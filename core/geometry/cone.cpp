@@ -87,13 +87,20 @@ ConeMargin Cone::margin() const {
   // Three equally tight: d is normal to (n_i - n_j) and (n_j - n_k); the
   // cyclic sum of cross products is that normal without the cancellation of
   // subtracting nearly equal normals first.
+  // The two senses share the length and the tight value t = n_i . d (and
+  // -t): a sense whose t cannot beat the best so far has a min below it too
+  // and is skipped, with the result of considering it.
   for (size_t i = 0; i < m; ++i)
     for (size_t j = i + 1; j < m; ++j)
       for (size_t k = j + 1; k < m; ++k) {
         const Eigen::Vector3d c = normals_[i].cross(normals_[j]) + normals_[j].cross(normals_[k]) +
                                   normals_[k].cross(normals_[i]);
-        consider(c);
-        consider(-c);
+        const double len = c.norm();
+        if (!(len > kParallelCross)) continue;
+        const Eigen::Vector3d d = c / len;
+        const double t = normals_[i].dot(d);
+        if (t > best_dot) consider(c);
+        if (-t > best_dot) consider(-c);
       }
   // Every candidate degenerate (e.g. two opposite half-spaces only): the cone
   // is a plane, any direction in it has margin zero.
@@ -103,6 +110,7 @@ ConeMargin Cone::margin() const {
     best.direction = any;
     best_dot = min_dot(normals_, any, -2.0);
   }
+  best.sine = best_dot;
   best.angle = safe_asin(best_dot);
   return best;
 }
@@ -122,6 +130,7 @@ std::vector<Eigen::Vector3d> Cone::edges(double known_margin) const {
   std::vector<Eigen::Vector3d> rays;
   if (normals_.size() < 2 || known_margin < -kAngleEpsRad) return rays;
   const size_t m = normals_.size();
+  const double outside = std::nextafter(-kAngleEpsRad, -std::numeric_limits<double>::infinity());
   for (size_t i = 0; i < m; ++i)
     for (size_t j = i + 1; j < m; ++j) {
       const Eigen::Vector3d c = normals_[i].cross(normals_[j]);
@@ -129,7 +138,9 @@ std::vector<Eigen::Vector3d> Cone::edges(double known_margin) const {
       if (!(len > kParallelCross)) continue;
       for (double sense : {1.0, -1.0}) {
         const Eigen::Vector3d d = sense * c / len;
-        if (min_dot(normals_, d, -2.0) < -kAngleEpsRad) continue;
+        // Early exit at the first half-space below -kAngleEpsRad (the
+        // returned value is then below it; otherwise it is the exact min).
+        if (min_dot(normals_, d, outside) < -kAngleEpsRad) continue;
         const bool seen = std::any_of(rays.begin(), rays.end(), [&](const Eigen::Vector3d& r) {
           return r.cross(d).norm() < kSameRayRad && r.dot(d) > 0;
         });
@@ -137,6 +148,135 @@ std::vector<Eigen::Vector3d> Cone::edges(double known_margin) const {
       }
     }
   return rays;
+}
+
+namespace {
+
+// A candidate is cut when another half-space is below its tight value by
+// more than the rounding of its direction: a direction made from a vector
+// of length len (sums and cross products of unit normals, terms of size
+// <= 3) is off by ~3e-16 / len, so kCutRounding / len bounds that with a
+// wide factor, and kCutSine covers the dot products themselves (~1e-16). A
+// candidate kept needlessly costs time, never accuracy.
+constexpr double kCutSine = 1e-12;
+constexpr double kCutRounding = 1e-14;
+
+}  // namespace
+
+bool IncrementalMargin::consider(const Eigen::Vector3d& raw,
+                                 std::initializer_list<const Eigen::Vector3d*> makers) {
+  const double len = raw.norm();
+  if (!(len > kParallelCross)) return false;
+  const Eigen::Vector3d d = raw / len;
+  if (makers.size() == 0) {
+    live_.push_back({d, min_dot(normals_, d, -2.0), -std::numeric_limits<double>::infinity()});
+    return true;
+  }
+  double tight = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d* n : makers) tight = std::min(tight, n->dot(d));
+  const double cut = tight - kCutSine - kCutRounding / len;
+  double value = tight;
+  // Most new candidates are cut by one of the first normals: stop there.
+  for (const auto& n : normals_) {
+    value = std::min(value, n.dot(d));
+    if (value < cut) return true;
+  }
+  live_.push_back({d, value, cut});
+  return true;
+}
+
+void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
+  const double len = inward_normal.norm();
+  if (!(len > 0) || !std::isfinite(len))
+    throw std::invalid_argument("cone half-space with a zero or non-finite normal");
+  const Eigen::Vector3d w = inward_normal / len;
+  const size_t m = normals_.size();  // index of w
+  // The live candidates see the new half-space; those it cuts go. The
+  // triples it lowers or lies on (the facets it sees, those in whose plane
+  // it lies, and some more) give the pairs that make new triples with it.
+  bool all_pairs = all_pairs_;
+  bool any_triple = false;
+  std::vector<char>& edge = edge_;
+  edge.assign(all_pairs ? 0 : m * m, 0);
+  std::erase_if(live_, [&](Candidate& c) {
+    const double x = w.dot(c.d);
+    if (c.k >= 0) {
+      any_triple = true;
+      // Seen, or in its plane to within its rounding (coplanar normals: the
+      // facet grows by w, as in an incremental hull).
+      if (x < c.value + (c.value - c.cut) && !all_pairs)
+        edge[c.i * m + c.j] = edge[c.i * m + c.k] = edge[c.j * m + c.k] = 1;
+    }
+    c.value = std::min(c.value, x);
+    return c.value < c.cut;
+  });
+  // No facet yet (fewer than three normals, or all on one line): every pair.
+  if (!any_triple) all_pairs = true;
+  normals_.push_back(w);
+  const Eigen::Vector3d& nw = normals_.back();
+  // The candidates Cone::margin() makes with w among the normals: w alone,
+  // w with each earlier normal (bisector, or the circle of an opposite
+  // pair), w with each earlier pair - in the same arithmetic. The circle
+  // candidates of opposite pairs are rare and never dropped.
+  consider(nw, {&nw});
+  for (const auto& u : opposite_axes_) consider(nw - nw.dot(u) * u, {});
+  for (size_t i = 0; i < m; ++i) {
+    // Only the bisector +sum: where just two half-spaces are tight, the
+    // optimum is the maximum of the smaller of their two dot products,
+    // which is there; at -sum that smaller one is least along the circle
+    // of equal dot products, never a maximum (Cone::margin() considers it
+    // too, and it never wins there either, unless a third half-space is
+    // as tight - a triple, made below, or an opposite pair's circle).
+    const Eigen::Vector3d sum = normals_[i] + nw;
+    consider(sum, {&normals_[i], &nw});
+    if (sum.norm() < kOppositeNormals) {
+      const Eigen::Vector3d u = (normals_[i] - nw).normalized();
+      consider(u.unitOrthogonal(), {});
+      for (size_t k = 0; k < m; ++k)
+        if (k != i) consider(normals_[k] - normals_[k].dot(u) * u, {});
+      opposite_axes_.push_back(u);
+    }
+  }
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = i + 1; j < m; ++j) {
+      if (!all_pairs && !edge[i * m + j]) continue;
+      const Eigen::Vector3d c =
+          normals_[i].cross(normals_[j]) + normals_[j].cross(nw) + nw.cross(normals_[i]);
+      const size_t before = live_.size();
+      if (!consider(c, {&normals_[i], &normals_[j], &nw})) {
+        all_pairs_ = true;
+        continue;
+      }
+      consider(-c, {&normals_[i], &normals_[j], &nw});
+      for (size_t n = before; n < live_.size(); ++n) {
+        live_[n].i = static_cast<int>(i);
+        live_[n].j = static_cast<int>(j);
+        live_[n].k = static_cast<int>(m);
+      }
+    }
+}
+
+ConeMargin IncrementalMargin::margin() const {
+  ConeMargin best;
+  if (normals_.empty()) {
+    best.angle = std::numbers::pi / 2;
+    return best;
+  }
+  double best_dot = -std::numeric_limits<double>::infinity();
+  for (const auto& c : live_)
+    if (c.value > best_dot) {
+      best_dot = c.value;
+      best.direction = c.d;
+    }
+  // Every candidate degenerate: the cone is a plane (see Cone::margin()).
+  if (!std::isfinite(best_dot)) {
+    const Eigen::Vector3d any = normals_[0].unitOrthogonal();
+    best.direction = any;
+    best_dot = min_dot(normals_, any, -2.0);
+  }
+  best.sine = best_dot;
+  best.angle = safe_asin(best_dot);
+  return best;
 }
 
 UnionEmptiness intersection_with_union_empty(const Cone& a, const std::vector<Cone>& b) {

@@ -10,6 +10,7 @@
 // only the origin by a hair, and negative by the angle every half-space would
 // have to open for the cone to get an interior. It is continuous in the
 // normals, so nearly parallel planes give a small margin, not a flip.
+#include <initializer_list>
 #include <vector>
 
 #include <Eigen/Core>
@@ -20,6 +21,7 @@ namespace rockface::geometry {
 struct ConeMargin {
   double angle = 0;                                      // radians, see above
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // a unit direction achieving it
+  double sine = 1;  // min over the half-spaces of n . direction (angle = its asin)
 };
 
 class Cone {
@@ -54,6 +56,49 @@ class Cone {
 
  private:
   std::vector<Eigen::Vector3d> normals_;
+};
+
+// The margin of Cone::margin() for half-spaces added one at a time, for
+// searches that grow a set of half-spaces (rotation spaces with many limit
+// planes). The optimum lies where one, two or three half-spaces are equally
+// tight (the candidates of Cone::margin()), and at the optimum no other
+// half-space is tighter than they are. A candidate that another half-space
+// cuts below its own tight value (the least of its makers' dot products) by
+// more than the rounding of its direction can therefore never be the
+// optimum, now or after more half-spaces join (they only cut more): it is
+// dropped for good. The live candidates are few (about the facets of the
+// normals' convex hull), and a new candidate is usually cut by the first few
+// half-spaces it meets, so adding the k-th half-space costs about O(k^2)
+// instead of the O(k^4) of a fresh search. The live triples are (about)
+// the facets of the convex hull of the normals; a new normal makes new
+// facets only with the edges of the facets it sees (the horizon, as in an
+// incremental convex hull), so only those pairs make new triples. The margin is Cone::margin()'s
+// for the same half-spaces to rounding; where candidates tie, the direction
+// may be another one of equal margin.
+class IncrementalMargin {
+ public:
+  void add(const Eigen::Vector3d& inward_normal);  // normalised here; zero throws
+  ConeMargin margin() const;
+  size_t size() const { return normals_.size(); }
+
+ private:
+  struct Candidate {
+    Eigen::Vector3d d;
+    double value;                // min over the normals of n . d
+    double cut;                  // dropped when value < cut (-inf: never)
+    int i = -1, j = -1, k = -1;  // the three normals of a triple candidate
+  };
+  // Evaluates raw against all normals; keeps it unless it is cut. makers:
+  // the normals that made it (none: a rare candidate, never dropped).
+  // Returns whether it was a candidate at all (not degenerate).
+  bool consider(const Eigen::Vector3d& raw, std::initializer_list<const Eigen::Vector3d*> makers);
+  std::vector<Eigen::Vector3d> normals_;
+  std::vector<Candidate> live_;
+  std::vector<Eigen::Vector3d> opposite_axes_;  // u of each pair of opposite normals
+  // A triple was degenerate (too short a cross product): its face of the
+  // hull is not among the candidates, so every pair makes triples from then on.
+  bool all_pairs_ = false;
+  std::vector<char> edge_;  // scratch: pairs that make new triples
 };
 
 // Whether A intersected with the union of the cones B_k is empty (that is,

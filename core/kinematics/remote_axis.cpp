@@ -167,6 +167,15 @@ LocalAxis minimise_from(const AxisProblem& p, Eigen::Vector3d u, Eigen::Vector3d
   return best;
 }
 
+// Half-width of the 95 % Wilson score interval of a hit rate k / n within
+// kRemoteAxisHitRateError.
+bool hit_rate_settled(int k, int n) {
+  constexpr double z = 1.959963984540054;  // 97.5 % quantile of the normal distribution
+  const double p = static_cast<double>(k) / n;
+  const double half = z / (1 + z * z / n) * std::sqrt(p * (1 - p) / n + z * z / (4.0 * n * n));
+  return half <= kRemoteAxisHitRateError;
+}
+
 }  // namespace
 
 AxisFeasibility remote_axis_feasibility(const RotationInput& in, const Eigen::Vector3d& point,
@@ -216,6 +225,12 @@ RemoteAxisResult search_remote_axis(const RotationInput& in, const RemoteAxisOpt
     if (better) {
       best = local;
       have = true;
+    }
+    result.starts = s + 1;
+    if (options.early_stop && result.hits > 0 && result.starts >= kRemoteAxisMinStarts &&
+        result.starts < options.starts && hit_rate_settled(result.hits, result.starts)) {
+      result.stopped_early = true;
+      break;
     }
   }
   result.found = result.hits > 0;

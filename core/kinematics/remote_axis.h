@@ -48,6 +48,12 @@ namespace rockface::kinematics {
 struct RemoteAxisOptions {
   int starts = 64;
   unsigned seed = 1;
+  // Stop once an axis is found and the hit rate has settled (the rule and
+  // its error: rotation_tolerances.h, kRemoteAxisHitRateError). The starts
+  // run are the first ones of the full search (same seed, same order), so
+  // found / not found is the full search's, and hits / starts estimates
+  // the same hit rate.
+  bool early_stop = false;
 };
 
 // Starts of the named preset (docs/accuracy-cost.md, remote-axis table):
@@ -62,8 +68,9 @@ struct RemoteAxisResult {
   // centroid (datum-relative, like the input).
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
-  double distance = 0;  // m, from the centroid to the axis
-  int starts = 0, hits = 0;
+  double distance = 0;       // m, from the centroid to the axis
+  int starts = 0, hits = 0;  // starts run (fewer than asked when stopped early)
+  bool stopped_early = false;
   double penalty = 0;        // objective at the best axis
   double max_violation = 0;  // radians, largest delta at the best axis
   // radians: min over the constraints of the angle by which d points to

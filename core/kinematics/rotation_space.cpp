@@ -29,51 +29,114 @@ bool ill_posed(const LimitPlane& l, double uncertainty_rad) {
 geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, double uncertainty_rad,
                           bool drop_ill_posed) {
   std::vector<Eigen::Vector3d> normals;
+  // The kept normals by x: |dx| >= kSameRayRad already decides "not the
+  // same" (the norm is at least |dx|), so only those within that of x need
+  // the full test.
+  std::vector<std::pair<double, int>> by_x;
+  normals.reserve(limits.size());
+  by_x.reserve(limits.size());
   for (const auto& l : limits) {
     if (drop_ill_posed && ill_posed(l, uncertainty_rad)) continue;
-    const bool seen = std::any_of(normals.begin(), normals.end(), [&](const Eigen::Vector3d& n) {
-      return (n - l.normal).norm() < geometry::kSameRayRad;
-    });
-    if (!seen) normals.push_back(l.normal);
+    const double x = l.normal.x();
+    auto it =
+        std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(x - geometry::kSameRayRad, -1));
+    bool seen = false;
+    for (auto k = it; k != by_x.end() && k->first < x + geometry::kSameRayRad && !seen; ++k)
+      seen = std::abs(k->first - x) < geometry::kSameRayRad &&
+             (normals[k->second] - l.normal).norm() < geometry::kSameRayRad;
+    if (!seen) {
+      by_x.insert(std::upper_bound(by_x.begin(), by_x.end(),
+                                   std::make_pair(x, static_cast<int>(normals.size()))),
+                  std::make_pair(x, static_cast<int>(normals.size())));
+      normals.push_back(l.normal);
+    }
   }
   return geometry::Cone(normals);
 }
+
+// The half-space of `all` that the unit direction d is least inside.
+std::pair<size_t, double> least_inside(const std::vector<Eigen::Vector3d>& all,
+                                       const Eigen::Vector3d& d) {
+  size_t worst = 0;
+  double worst_dot = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < all.size(); ++i) {
+    const double x = all[i].dot(d);
+    if (x < worst_dot) {
+      worst_dot = x;
+      worst = i;
+    }
+  }
+  return {worst, worst_dot};
+}
+
+// Rounding of the dot products (~1e-16) is all that may separate a
+// half-space the subset's optimum keeps at the level from one it violates.
+constexpr double kLevelRounding = 1e-15;
+
+// A half-space this close (sine) to the level at the subset's optimum is
+// kept in the basis: rounding of the optimal direction is ~1e-15, so this
+// keeps every half-space that fixes it, and a few more do no harm.
+constexpr double kTightSine = 1e-9;
 
 // The exact margin of a cone with many half-spaces, by active sets: the
 // margin of a subset is never below the margin of the whole (more
 // half-spaces can only lower the max-min), so when the subset's optimal
 // direction keeps every other half-space at least as far, it is the
 // optimum of the whole. Otherwise the half-space it violates most joins the
-// subset. Each step is geometry::Cone's exact O(k^4) search on k half-spaces,
-// k staying small (the optimum is fixed by at most three of them), instead
-// of O(m^4) on all m limit planes.
+// subset.
+//
+// First with a basis: the subset is only the half-spaces tight at its
+// optimum (at most three, more where planes meet in one line) and the one
+// joining, so each step is geometry::Cone's exact search on about four
+// half-spaces. For a cone with an interior the optimum is unique and each
+// step lowers the margin strictly, so no basis comes back. Where a step
+// does not lower it (a shut cone, whose max-min on the sphere is not a
+// convex problem), the basis is abandoned for the growing subset, which
+// ends because every half-space joins it at most once. Either way the
+// answer is certified by the same test against all half-spaces.
 geometry::ConeMargin exact_margin(const geometry::Cone& cone) {
   const auto& all = cone.normals();
   constexpr size_t kDirect = 12;  // below this the direct search is as cheap
   if (all.size() <= kDirect) return cone.margin();
-  std::vector<Eigen::Vector3d> active = {all.front()};
+  auto certified = [&](const geometry::ConeMargin& m, double worst_dot) {
+    geometry::ConeMargin result = m;
+    result.angle = std::min(m.angle, safe_asin(worst_dot));
+    result.sine = std::min(m.sine, worst_dot);
+    return result;
+  };
+  std::vector<Eigen::Vector3d> basis = {all.front()};
+  double previous = std::numeric_limits<double>::infinity();
+  for (size_t step = 0; step < 4 * all.size(); ++step) {
+    const geometry::ConeMargin m = geometry::Cone(basis).margin();
+    const double level = m.sine;
+    const auto [worst, worst_dot] = least_inside(all, m.direction);
+    const bool in_basis = std::any_of(basis.begin(), basis.end(),
+                                      [&](const Eigen::Vector3d& n) { return n == all[worst]; });
+    if (worst_dot >= level - kLevelRounding || in_basis) return certified(m, worst_dot);
+    if (!(m.angle < previous)) break;
+    previous = m.angle;
+    std::vector<Eigen::Vector3d> next;
+    for (const auto& n : basis)
+      if (n.dot(m.direction) <= level + kTightSine) next.push_back(n);
+    next.push_back(all[worst]);
+    basis = std::move(next);
+  }
+  // The growing subset starts from the last basis (for a shut cone: the
+  // half-spaces that shut it), not from one half-space.
+  geometry::IncrementalMargin active;  // its candidates are kept from step to step
   std::vector<char> used(all.size(), 0);
-  used[0] = 1;
+  for (size_t i = 0; i < all.size(); ++i)
+    if (std::find(basis.begin(), basis.end(), all[i]) != basis.end() && !used[i]) {
+      used[i] = 1;
+      active.add(all[i]);
+    }
   for (;;) {
-    const geometry::ConeMargin m = geometry::Cone(active).margin();
-    const double level = std::sin(m.angle);
-    size_t worst = 0;
-    double worst_dot = std::numeric_limits<double>::infinity();
-    for (size_t i = 0; i < all.size(); ++i) {
-      const double d = all[i].dot(m.direction);
-      if (d < worst_dot) {
-        worst_dot = d;
-        worst = i;
-      }
-    }
-    // Rounding of the dot products (~1e-16) is all that may separate the two.
-    if (worst_dot >= level - 1e-15 || used[worst]) {
-      geometry::ConeMargin result = m;
-      result.angle = std::min(m.angle, safe_asin(worst_dot));
-      return result;
-    }
+    const geometry::ConeMargin m = active.margin();
+    const double level = m.sine;
+    const auto [worst, worst_dot] = least_inside(all, m.direction);
+    if (worst_dot >= level - kLevelRounding || used[worst]) return certified(m, worst_dot);
     used[worst] = 1;
-    active.push_back(all[worst]);
+    active.add(all[worst]);
   }
 }
 
@@ -81,10 +144,11 @@ geometry::ConeMargin exact_margin(const geometry::Cone& cone) {
 // the unit direction u is inside all of them; pi/2 when none constrains it.
 template <class Keep>
 double margin_of_axis(const std::vector<LimitPlane>& limits, const Eigen::Vector3d& u, Keep keep) {
-  double m = std::numbers::pi / 2;
+  // asin is monotone: the min of the sines, then one asin (1: pi/2).
+  double m = 1;
   for (const auto& l : limits)
-    if (keep(l)) m = std::min(m, safe_asin(l.normal.dot(u)));
-  return m;
+    if (keep(l)) m = std::min(m, l.normal.dot(u));
+  return safe_asin(m);
 }
 
 // A verdict that also turns marginal when the limit planes inside the
@@ -149,9 +213,10 @@ CornerRotation corner_rotation(const RotationInput& in, const RotationTopology& 
     SlidingRotation s;
     s.plane = j;
     const Eigen::Vector3d& nj = in.planes[j].inward_normal;
-    auto parallel_to_j = [&](int k) {
-      return in.planes[k].inward_normal.cross(nj).norm() < kParallelJointsSin;
-    };
+    std::vector<char> parallel(in.planes.size());
+    for (size_t k = 0; k < in.planes.size(); ++k)
+      parallel[k] = in.planes[k].inward_normal.cross(nj).norm() < kParallelJointsSin;
+    auto parallel_to_j = [&](int k) { return parallel[k] != 0; };
     for (const auto& l : r.limits)
       if (l.plane != j && parallel_to_j(l.plane) &&
           std::find(s.also_sliding.begin(), s.also_sliding.end(), l.plane) == s.also_sliding.end())
@@ -167,13 +232,16 @@ CornerRotation corner_rotation(const RotationInput& in, const RotationTopology& 
   return r;
 }
 
-EdgeRotation edge_rotation(const RotationInput& in, const RotationTopology& topology, int a, int b,
-                           double uncertainty_rad) {
+namespace {
+
+// Edge rotation with the limit planes about pivot a (corners a and b left
+// out) already known.
+EdgeRotation edge_rotation_with(const RotationInput& in, const RotationTopology& topology, int a,
+                                int b, std::vector<LimitPlane> limits, double uncertainty_rad) {
   EdgeRotation e;
   e.vertices = {std::min(a, b), std::max(a, b)};
   const Eigen::Vector3d pivot = in.vertices[a];
   const Eigen::Vector3d dir = (in.vertices[b] - pivot).normalized();
-  std::vector<LimitPlane> limits = limit_planes(in, topology, pivot, {a, b});
   // Corners on the axis line (not only its end corners) stay where they are.
   const double on_axis = kOnAxisRel * topology.size;
   std::erase_if(limits, [&](const LimitPlane& l) {
@@ -192,16 +260,39 @@ EdgeRotation edge_rotation(const RotationInput& in, const RotationTopology& topo
   return e;
 }
 
+}  // namespace
+
+EdgeRotation edge_rotation(const RotationInput& in, const RotationTopology& topology, int a, int b,
+                           double uncertainty_rad) {
+  return edge_rotation_with(in, topology, a, b, limit_planes(in, topology, in.vertices[a], {a, b}),
+                            uncertainty_rad);
+}
+
 RotationAnalysis analyse_rotation(const RotationInput& in, double uncertainty_rad) {
   const RotationTopology topology = rotation_topology(in);
   RotationAnalysis result;
   for (int v = 0; v < static_cast<int>(in.vertices.size()); ++v)
     if (topology.is_static_point(in, v))
       result.corners.push_back(corner_rotation(in, topology, v, uncertainty_rad));
-  for (const auto& edge : topology.edges)
-    if (topology.is_boundary_edge(in, edge))
-      result.edges.push_back(
-          edge_rotation(in, topology, edge.vertices[0], edge.vertices[1], uncertainty_rad));
+  // An edge's limit planes about its first corner are that corner's (both
+  // ends of a boundary edge are static points) without those of the other
+  // corner: the same planes in the same order, not computed again.
+  std::vector<int> corner_of(in.vertices.size(), -1);
+  for (size_t c = 0; c < result.corners.size(); ++c)
+    corner_of[result.corners[c].vertex] = static_cast<int>(c);
+  for (const auto& edge : topology.edges) {
+    if (!topology.is_boundary_edge(in, edge)) continue;
+    const int a = edge.vertices[0], b = edge.vertices[1];
+    if (corner_of[a] < 0) {
+      result.edges.push_back(edge_rotation(in, topology, a, b, uncertainty_rad));
+      continue;
+    }
+    std::vector<LimitPlane> limits;
+    for (const auto& l : result.corners[corner_of[a]].limits)
+      if (l.corner != b) limits.push_back(l);
+    result.edges.push_back(
+        edge_rotation_with(in, topology, a, b, std::move(limits), uncertainty_rad));
+  }
   return result;
 }
 

@@ -44,4 +44,16 @@ inline constexpr double kRemoteAxisHitRad = 1e-6;
 // outside it. The minimiser moves the axis anywhere from there.
 inline constexpr double kRemoteAxisStartRadius = 2.0;
 
+// Early stop of the remote-axis search (RemoteAxisOptions::early_stop). The
+// verdict "an axis exists" is settled by the first hit (a hit is an axis
+// checked to kRemoteAxisHitRad); what more starts add is the hit rate (how
+// easily the axis is found) and maybe an axis with more clearance. So once
+// an axis is found and at least kRemoteAxisMinStarts starts have run, the
+// search stops when the hit rate is known to +-kRemoteAxisHitRateError at
+// 95 % (the half-width of the Wilson score interval of hits / starts). A
+// search without a hit never stops early: "no axis" rests on every start,
+// as before.
+inline constexpr int kRemoteAxisMinStarts = 8;
+inline constexpr double kRemoteAxisHitRateError = 0.15;
+
 }  // namespace rockface::kinematics

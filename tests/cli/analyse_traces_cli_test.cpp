@@ -15,15 +15,15 @@ namespace {
 namespace fs = std::filesystem;
 using rockface::test::run_rockface;
 
-TEST(AnalyseTracesCli, KeyblockNamedByJointsWithIdsApartFromSceneBlocks) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("rockface-traces-cli-" + std::to_string(::getpid()));
+// The demo tunnel face rendered into `dir`, its scene with the true traces
+// put back (one per joint and patch) and no imaging; empty on failure.
+nlohmann::json demo_with_traces(const fs::path& dir) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string demo =
       std::string(ROCKFACE_SOURCE_DIR) + "/tools/samples/tunnel-face-demo.scene.json";
-  ASSERT_EQ(run_rockface("render " + demo + " --out " + (dir / "render").string()).exit_code, 0);
-
+  if (run_rockface("render " + demo + " --out " + (dir / "render").string()).exit_code != 0)
+    return {};
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(demo));
   const nlohmann::json truth = nlohmann::json::parse(std::ifstream(dir / "render" / "truth.json"));
   scene["traces"] = nlohmann::json::array();
@@ -31,10 +31,18 @@ TEST(AnalyseTracesCli, KeyblockNamedByJointsWithIdsApartFromSceneBlocks) {
   for (const auto& t : truth["traces"])
     scene["traces"].push_back(
         {{"id", "T" + std::to_string(++n)}, {"joint", t["joint"]}, {"points", t["world"]}});
+  scene.erase("imaging");
+  return scene;
+}
+
+TEST(AnalyseTracesCli, KeyblockNamedByJointsWithIdsApartFromSceneBlocks) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("rockface-traces-cli-" + std::to_string(::getpid()));
+  nlohmann::json scene = demo_with_traces(dir);
+  ASSERT_FALSE(scene.is_null()) << "render failed";
   scene["blocks"] = {
       {{"id", "TB1"},
        {"halfspaces", {{"J1", "upper"}, {"J2", "upper"}, {"J3", "lower"}, {"F1", "lower"}}}}};
-  scene.erase("imaging");
   const fs::path file = dir / "traces.scene.json";
   std::ofstream(file) << scene.dump(2);
 
@@ -60,6 +68,36 @@ TEST(AnalyseTracesCli, KeyblockNamedByJointsWithIdsApartFromSceneBlocks) {
   const auto table = run_rockface("analyse " + file.string() + " --summary");
   ASSERT_EQ(table.exit_code, 0);
   EXPECT_NE(table.out.find("(code +N:"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// Trace blocks are reported on all cores (issue 17): the report is the one
+// of a single thread, block for block and number for number (only the
+// timings differ).
+TEST(AnalyseTracesCli, ReportOnAllCoresIsTheSingleThreadedOne) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("rockface-traces-threads-" + std::to_string(::getpid()));
+  nlohmann::json scene = demo_with_traces(dir);
+  ASSERT_FALSE(scene.is_null()) << "render failed";
+  scene["analysis"]["rotation"] = true;
+  scene["analysis"]["remote_axis"] = {{"starts", 8}, {"seed", 3}};
+  const fs::path file = dir / "traces.scene.json";
+  std::ofstream(file) << scene.dump(2);
+
+  auto run = [&](const char* threads) {
+    ::setenv("ROCKFACE_THREADS", threads, 1);
+    const auto r = run_rockface("analyse " + file.string());
+    ::unsetenv("ROCKFACE_THREADS");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    nlohmann::json report = nlohmann::json::parse(r.out);
+    report.erase("timings_ms");
+    return report;
+  };
+  const nlohmann::json one = run("1"), three = run("3");
+  int finite = 0;
+  for (const auto& b : one["blocks"]) finite += b.value("finite", false) ? 1 : 0;
+  ASSERT_GE(finite, 1);  // there is rotation to compare
+  EXPECT_EQ(one.dump(), three.dump());
   fs::remove_all(dir);
 }
 

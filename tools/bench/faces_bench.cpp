@@ -15,7 +15,9 @@
 #include "core/faces/surface_loops.h"
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
+#include "core/faces/trace_session.h"
 #include "core/kinematics/effect_gravity.h"
+#include "core/kinematics/quick_checks.h"
 #include "tests/core/faces/random_slope.h"
 
 namespace {
@@ -26,16 +28,23 @@ using V = Eigen::Vector3d;
 using faces::testing::kSnap;
 using faces::testing::random_traces;
 
-void BM_TraceMapToBlocks(benchmark::State& state) {
-  const auto patches = faces::testing::random_slope();
-  const faces::FreeSurface probe = faces::FreeSurface::build(patches, kSnap);
-  const auto traces = random_traces(probe, static_cast<int>(state.range(0)), 11);
-  kinematics::Effects effects;
+// The options of every run here: the scene default tolerance, 1 degree,
+// gravity (effects: the caller's, to outlive the options).
+faces::TraceBlockOptions map_options(kinematics::Effects& effects) {
   effects.push_back(std::make_unique<kinematics::GravityEffect>(V(0, 0, -9.81)));
   faces::TraceBlockOptions options;
   options.snap_tolerance = kSnap;
   options.orientation_uncertainty = deg_to_rad(1.0);
   options.effects = &effects;
+  return options;
+}
+
+void BM_TraceMapToBlocks(benchmark::State& state) {
+  const auto patches = faces::testing::random_slope();
+  const faces::FreeSurface probe = faces::FreeSurface::build(patches, kSnap);
+  const auto traces = random_traces(probe, static_cast<int>(state.range(0)), 11);
+  kinematics::Effects effects;
+  const faces::TraceBlockOptions options = map_options(effects);
   NoProgress progress;
   size_t loops = 0, finite = 0, removable = 0, vertices = 0, islands = 0, unassembled = 0;
   for (auto _ : state) {
@@ -62,6 +71,86 @@ void BM_TraceMapToBlocks(benchmark::State& state) {
   state.counters["not_assembled"] = static_cast<double>(unassembled);
 }
 BENCHMARK(BM_TraceMapToBlocks)->Arg(50)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// Issue 17: the quick checks (finiteness, removability, corner / edge
+// rotatability) of every finite block of the map that is one polyhedron,
+// after the map is built (outside the timed loop), on range(1) threads;
+// wall time.
+void BM_TraceMapQuickChecks(benchmark::State& state) {
+  const auto patches = faces::testing::random_slope();
+  const faces::FreeSurface surface = faces::FreeSurface::build(patches, kSnap);
+  const auto traces = random_traces(surface, static_cast<int>(state.range(0)), 11);
+  faces::TraceBlockOptions options;
+  options.snap_tolerance = kSnap;
+  options.orientation_uncertainty = deg_to_rad(1.0);
+  NoProgress progress;
+  const auto net = faces::TraceNetwork::build(surface, traces, {kSnap, deg_to_rad(1.0)});
+  const auto found = faces::SurfaceLoops::find(net, surface);
+  const auto blocks = faces::trace_blocks(surface, net, found, options, progress);
+  std::vector<blocks::Polyhedron> polyhedra;
+  for (const auto& b : blocks)
+    if (b.finite && b.polyhedron) polyhedra.push_back(*b.polyhedron);
+  size_t corners = 0;
+  for (auto _ : state) {
+    const auto q = kinematics::quick_checks_all(polyhedra, deg_to_rad(1.0),
+                                                static_cast<unsigned>(state.range(1)));
+    corners = 0;
+    for (const auto& x : q) corners += x.rotation.corners.size();
+    benchmark::DoNotOptimize(q.data());
+  }
+  state.counters["blocks"] = static_cast<double>(polyhedra.size());
+  state.counters["static_points"] = static_cast<double>(corners);
+}
+// Issue 17: from one edited trace to updated verdicts (faces::TraceSession):
+// a trace of a finite block moved 0.2 m sideways and back, alternately, on
+// the map of range(0) traces; each update rebuilds the network and loops and
+// recomputes the regions that changed (wall time per update).
+void BM_TraceEditToVerdicts(benchmark::State& state) {
+  const auto patches = faces::testing::random_slope();
+  const faces::FreeSurface surface = faces::FreeSurface::build(patches, kSnap);
+  auto traces = random_traces(surface, static_cast<int>(state.range(0)), 11);
+  kinematics::Effects effects;
+  const faces::TraceBlockOptions options = map_options(effects);
+  NoProgress progress;
+  faces::TraceSession session(patches, {kSnap, deg_to_rad(1.0)}, options);
+  session.update(traces, progress);
+  const int regions = session.recomputed();
+  int k = -1;
+  for (const auto& b : session.blocks())
+    if (b.finite) k = b.traces.front();
+  if (k < 0) {
+    state.SkipWithError("no finite block");
+    return;
+  }
+  const V p0 = traces[k].points.front();
+  V side = V::UnitX();
+  for (const auto& P : surface.patches())
+    if (std::abs(P.height(p0)) < 0.01 && P.contains(P.to2d(p0), 0.01))
+      side = P.outward.cross(traces[k].points.back() - p0).normalized();
+  const auto original = traces[k].points;
+  long recomputed = 0, updates = 0;
+  for (auto _ : state) {
+    const bool out = updates % 2 == 0;
+    for (size_t i = 0; i < original.size(); ++i)
+      traces[k].points[i] = original[i] + (out ? 0.2 : 0.0) * side;
+    benchmark::DoNotOptimize(session.update(traces, progress).data());
+    recomputed += session.recomputed();
+    ++updates;
+  }
+  state.counters["regions"] = regions;
+  state.counters["recomputed"] = static_cast<double>(recomputed) / static_cast<double>(updates);
+}
+BENCHMARK(BM_TraceEditToVerdicts)
+    ->Arg(200)
+    ->Arg(1000)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+BENCHMARK(BM_TraceMapQuickChecks)
+    ->Args({1000, 1})
+    ->Args({1000, 2})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

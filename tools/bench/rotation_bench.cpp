@@ -115,6 +115,30 @@ BENCHMARK(BM_RemoteAxis)
     ->ArgsProduct({{8, 16, 32, 64, 128, 256, 512}, {150, 280, 600}})
     ->Unit(benchmark::kMillisecond);
 
+// The same with the early stop (issue 17): starts actually run, and how
+// often the verdict is the full search's (over 20 seeds).
+void BM_RemoteAxisEarlyStop(benchmark::State& state) {
+  const int starts = static_cast<int>(state.range(0));
+  const RotationInput in = lined_block(state.range(1) / 1000.0);
+  constexpr int kSeeds = 20;
+  long run = 0, agree = 0;
+  for (unsigned seed = 1; seed <= kSeeds; ++seed) {
+    const auto early = rockface::kinematics::search_remote_axis(in, {starts, seed, true});
+    const auto full = rockface::kinematics::search_remote_axis(in, {starts, seed});
+    run += early.starts;
+    agree += early.found == full.found;
+  }
+  for (auto _ : state) {
+    const auto r = rockface::kinematics::search_remote_axis(in, {starts, 1, true});
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["starts_run"] = static_cast<double>(run) / kSeeds;
+  state.counters["same_verdict"] = static_cast<double>(agree) / kSeeds;
+}
+BENCHMARK(BM_RemoteAxisEarlyStop)
+    ->ArgsProduct({{16, 64, 256}, {150, 280, 600}})
+    ->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -9,7 +9,11 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
+#include "core/kinematics/remote_axis.h"
+#include "core/kinematics/rotation_input.h"
+#include "core/kinematics/rotation_tolerances.h"
 #include "firmware-app/analyse_rotation.h"
+#include "tests/core/rotation/quick_check_blocks.h"
 #include "tests/core/rotation/rotation_blocks.h"
 
 namespace rockface::app {
@@ -54,13 +58,47 @@ TEST(AnalyseRotationReport, FillsCornersEdgesAndRemoteAxisInAbsoluteCoordinates)
   }
   ASSERT_TRUE(out.remote_axis.has_value());
   EXPECT_TRUE(out.remote_axis->found);
-  EXPECT_EQ(out.remote_axis->starts, 64);
+  // The search stops once the axis is found and the hit rate has settled
+  // (issue 17): the starts run are those of the same search in the core.
+  const auto core =
+      kinematics::search_remote_axis(kinematics::rotation_input(block), {64, 1, true});
+  EXPECT_EQ(out.remote_axis->starts, core.starts);
+  EXPECT_EQ(out.remote_axis->hits, core.hits);
+  EXPECT_LE(out.remote_axis->starts, 64);
   EXPECT_GT(out.remote_axis->hits, 0);
   EXPECT_NEAR(out.remote_axis->direction.y(), -1, 1e-6);  // slumping axis, to the hit tolerance
   // Absolute: within a few metres of the block's survey position (the axis
   // passes in front of the block, above the lining).
   EXPECT_LT((out.remote_axis->point - kDatum).norm(), 5);
   EXPECT_GT(out.remote_axis->point.x(), 5e5);
+}
+
+// A block that rotates about a corner or an edge has an axis: the search
+// cannot change "found" and is skipped (issue 17); the axis reported is a
+// feasible one.
+TEST(AnalyseRotationReport, RotatableBlocksSkipTheSearchWithAFeasibleAxis) {
+  int skipped = 0;
+  for (const auto& block : test_rotation::quick_check_mix(3)) {
+    storage::SceneAnalysis options;
+    options.rotation = true;
+    options.remote_axis = storage::SceneRemoteAxis{16, 1};
+    storage::ReportBlock out;
+    analyse_block_rotation(block, options, out);
+    ASSERT_TRUE(out.remote_axis.has_value());
+    if (out.remote_axis->starts > 0) continue;
+    ++skipped;
+    EXPECT_TRUE(out.remote_axis->found) << block.id();
+    EXPECT_EQ(out.remote_axis->hits, 0);
+    ASSERT_FALSE(out.notes.empty());
+    EXPECT_NE(out.notes.back().find("not searched"), std::string::npos);
+    // The axis moves no corner into the rock (to the search's own hit
+    // tolerance).
+    const auto f = kinematics::remote_axis_feasibility(kinematics::rotation_input(block),
+                                                       out.remote_axis->point - block.datum(),
+                                                       out.remote_axis->direction);
+    EXPECT_LE(f.max_violation, kinematics::kRemoteAxisHitRad) << block.id();
+  }
+  EXPECT_GT(skipped, 0);  // the mix has corner- or edge-rotatable blocks
 }
 
 TEST(AnalyseRotationReport, OptionsOffLeaveTheReportAlone) {
@@ -84,7 +122,12 @@ TEST(AnalyseRotationReport, StartsFollowThePresetUnlessTheSceneGivesThem) {
     storage::ReportBlock out;
     analyse_block_rotation(block, options, out);
     ASSERT_TRUE(out.remote_axis.has_value());
-    EXPECT_EQ(out.remote_axis->starts, starts) << preset;
+    // The preset's starts, of which the early stop (issue 17) runs those
+    // the same search in the core runs.
+    const auto core =
+        kinematics::search_remote_axis(kinematics::rotation_input(block), {starts, 1, true});
+    EXPECT_EQ(out.remote_axis->starts, core.starts) << preset;
+    EXPECT_LE(out.remote_axis->starts, starts) << preset;
   }
   storage::SceneAnalysis options;
   options.rotation = false;

@@ -110,6 +110,41 @@ TEST(RemoteAxis, ShortLiningLeavesAnAxisLongLiningNone) {
   }
 }
 
+// Early stop (issue 17) on the hard cases of the remote axis: linings
+// around the critical length, where the axis is hard to find or absent.
+// The early-stopped search gives the full search's verdict: it runs the
+// same first starts, stops only after a hit, and never stops without one.
+TEST(RemoteAxis, EarlyStopGivesTheFullSearchVerdict) {
+  const double l_star = critical_lining();
+  for (double lining : {0.15, 0.9 * l_star, 0.99 * l_star, 1.01 * l_star, 1.1 * l_star, 0.6}) {
+    const RotationInput in = test_rotation::convex_block("lined", lined_sides(lining, true));
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+      SCOPED_TRACE("lining " + std::to_string(lining) + ", seed " + std::to_string(seed));
+      const RemoteAxisResult full = search_remote_axis(in, {64, seed});
+      const RemoteAxisResult early = search_remote_axis(in, {64, seed, true});
+      EXPECT_EQ(early.found, full.found);
+      EXPECT_LE(early.starts, full.starts);
+      EXPECT_LE(early.hits, full.hits);
+      if (!full.found) {
+        EXPECT_EQ(early.starts, 64);
+        EXPECT_FALSE(early.stopped_early);
+      }
+      if (early.stopped_early) {
+        EXPECT_GE(early.starts, kRemoteAxisMinStarts);
+        EXPECT_GT(early.hits, 0);
+        EXPECT_LE(early.max_violation, kRemoteAxisHitRad);
+      }
+    }
+  }
+  // The free block of the next test is found by almost every start: the
+  // rule stops it long before 64.
+  const RotationInput free_block = test_rotation::convex_block("free", lined_sides(0.15, false));
+  const RemoteAxisResult r = search_remote_axis(free_block, {64, 1, true});
+  EXPECT_TRUE(r.found);
+  EXPECT_TRUE(r.stopped_early);
+  EXPECT_LT(r.starts, 64);
+}
+
 TEST(RemoteAxis, WithoutTheLiningTheBlockMovesAnyway) {
   // The lining plane turned into a free face: the block is removable (it
   // slides out on the base), so some axis - far away, nearly a translation,
