@@ -29,9 +29,8 @@ void require_in_image(const measure::PhotoView& view, const std::vector<Eigen::V
   for (std::size_t i = 0; i < pixels.size(); ++i)
     if (!measure::pixel_in_image(view, pixels[i])) {
       std::ostringstream s;
-      s << "pixel (" << pixels[i].x() << ", " << pixels[i].y() << ") is outside the "
-        << view.name << " photograph (" << view.camera.width << " x " << view.camera.height
-        << ")";
+      s << "pixel (" << pixels[i].x() << ", " << pixels[i].y() << ") is outside the " << view.name
+        << " photograph (" << view.camera.width << " x " << view.camera.height << ")";
       throw InputError(where + "[" + std::to_string(i) + "]", s.str());
     }
 }
@@ -122,12 +121,22 @@ MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& c
       if (request.cost == measure::TraceCost::Curvature && t.photo != "left")
         throw InputError(where + ".cost",
                          "the curvature cost follows the 3D image on the left photograph only");
+      for (std::size_t k = 0; k < 2; ++k)
+        if (!c.picker->pick(view, ends[k], where))
+          throw InputError(where + ".ends[" + std::to_string(k) + "]",
+                           "no surface of the 3D image under this pick");
       const measure::TracedPath path =
           measure::trace_between(photo->second, &c.picker->mesh(), request, where + ".ends");
+      // The path may cross small holes of the 3D image (a dark trace is
+      // where dense matching fails first): the fit uses the pixels with
+      // surface under them.
+      std::vector<Eigen::Vector2d> on_surface;
+      for (const auto& px : path.pixels)
+        if (c.picker->pick(view, px, where)) on_surface.push_back(px);
       mt.taps = ends;
       mt.cost = t.cost;
       mt.mean_cost = path.mean_cost;
-      mt.m = measure::measure_trace(*c.picker, view, t.id, path.pixels, c.settings, where);
+      mt.m = measure::measure_trace(*c.picker, view, t.id, on_surface, c.settings, where);
     }
     out.traces.push_back(std::move(mt));
   }
@@ -202,7 +211,8 @@ MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& c
   return out;
 }
 
-std::string measures_json(const MeasuredPicks& r, const MeasureContext& c, const std::string& model) {
+std::string measures_json(const MeasuredPicks& r, const MeasureContext& c,
+                          const std::string& model) {
   json j;
   j["format"] = "rockface-measures/1";
   j["model"] = model;
@@ -345,6 +355,9 @@ std::vector<storage::Measurement> measurement_records(const MeasuredPicks& r,
     out.push_back(std::move(m));
   }
   for (const auto& p : r.points) {
+    // The store keeps a point orientation only with its plane (a point
+    // without one says nothing); MEASURES.json still lists it.
+    if (!p.plane.known) continue;
     storage::Measurement m = base(storage::Measurement::Kind::point_orientation, p.id, p.plane);
     m.points = {p.point};
     photo(m, {p.pick});
@@ -363,8 +376,8 @@ std::vector<storage::JointSet> joint_set_records(const MeasuredPicks& r) {
     js.dipdir_deg = rad_to_deg(o.dipdir);
     // The store keeps a finite K; all poles identical (K infinite) is kept
     // as the largest double, which no real set reaches.
-    js.fisher_k = std::isfinite(s.fisher.kappa) ? s.fisher.kappa
-                                                : std::numeric_limits<double>::max();
+    js.fisher_k =
+        std::isfinite(s.fisher.kappa) ? s.fisher.kappa : std::numeric_limits<double>::max();
     js.count = static_cast<int>(s.fisher.count);
     if (std::isfinite(s.fisher.alpha95) && s.fisher.alpha95 < M_PI)
       js.alpha95_deg = rad_to_deg(s.fisher.alpha95);

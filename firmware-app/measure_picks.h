@@ -20,7 +20,7 @@
 namespace rockface::app {
 
 struct MeasureContext {
-  const measure::MeshPicker* picker = nullptr;  // on the mesh, datum-relative
+  const measure::MeshPicker* picker = nullptr;      // on the mesh, datum-relative
   std::map<std::string, measure::PhotoView> views;  // "left", "right" where known
   std::map<std::string, cv::Mat> photos;            // the photographs, for semi-automatic tracing
   measure::MeasureSettings settings;
@@ -30,9 +30,9 @@ struct MeasureContext {
 
 struct MeasuredTrace {
   measure::TraceMeasurement m;
-  std::string joint;                // as picked; empty when unassigned
-  std::string cost;                 // semi-automatic: the cost used; empty otherwise
-  double mean_cost = 0;             // semi-automatic: per pixel step, [0, 1]
+  std::string joint;                  // as picked; empty when unassigned
+  std::string cost;                   // semi-automatic: the cost used; empty otherwise
+  double mean_cost = 0;               // semi-automatic: per pixel step, [0, 1]
   std::vector<Eigen::Vector2d> taps;  // what was picked (the ends for semi-automatic)
 };
 
@@ -78,13 +78,14 @@ std::string measures_json(const MeasuredPicks& measured, const MeasureContext& c
                           const std::string& model);
 
 // The measurements as project records (datum-relative points, the photo and
-// pixels they came from) and the joint table: one joint per known plane of a
-// trace, area or point, with its set, and the sets.
+// pixels they came from; points only with a known plane) and the joint table: one joint per known
+// plane of a trace, area or point, with its set, and the sets.
 std::vector<storage::Measurement> measurement_records(const MeasuredPicks& measured,
                                                       storage::RecordId visit_id,
                                                       std::optional<storage::RecordId> model_id,
                                                       std::optional<storage::RecordId> capture_id);
 std::vector<storage::JointSet> joint_set_records(const MeasuredPicks& measured);
-std::vector<storage::Joint> joint_records(const MeasuredPicks& measured, storage::RecordId visit_id);
+std::vector<storage::Joint> joint_records(const MeasuredPicks& measured,
+                                          storage::RecordId visit_id);
 
 }  // namespace rockface::app

@@ -13,8 +13,7 @@ storage::Mesh project_mesh(const photogrammetry::SurfaceMesh& m) {
   return out;
 }
 
-photogrammetry::SurfaceMesh surface_mesh(storage::Mesh&& m, int texture_width,
-                                         int texture_height) {
+photogrammetry::SurfaceMesh surface_mesh(storage::Mesh&& m, int texture_width, int texture_height) {
   photogrammetry::SurfaceMesh s;
   s.vertices = std::move(m.vertices);
   s.triangles.reserve(m.faces.size());

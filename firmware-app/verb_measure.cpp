@@ -62,8 +62,9 @@ cv::Mat decode(const std::vector<unsigned char>& bytes) {
 
 LoadedModel load_ply_model(const MeasureOptions& o) {
   if (o.camera.empty())
-    throw InputError("--camera", "a model file needs the calibration of the camera it was "
-                                 "reconstructed with (the --camera of `rockface reconstruct`)");
+    throw InputError("--camera",
+                     "a model file needs the calibration of the camera it was "
+                     "reconstructed with (the --camera of `rockface reconstruct`)");
   const photogrammetry::CameraIntrinsics camera = storage::load_camera_json(o.camera);
   storage::PlyModel ply = storage::read_ply_mesh(o.source);
   LoadedModel m;
@@ -72,8 +73,9 @@ LoadedModel load_ply_model(const MeasureOptions& o) {
   m.mesh = surface_mesh(std::move(ply.mesh), camera.width, camera.height);
   if (m.mesh.triangles.empty()) throw InputError(o.source, "the model has no triangles");
   if (m.mesh.pixels.empty())
-    throw InputError(o.source, "the model has no texture coordinates: its vertices cannot be "
-                               "placed in the left photograph");
+    throw InputError(o.source,
+                     "the model has no texture coordinates: its vertices cannot be "
+                     "placed in the left photograph");
   m.views.emplace("left", measure::left_view_from_lattice(m.mesh, camera));
   const std::string photo = !o.photo.empty() ? o.photo : ply.texture_file;
   if (!photo.empty()) {
@@ -85,7 +87,8 @@ LoadedModel load_ply_model(const MeasureOptions& o) {
   // of the distance to the face (sigma_Z of a 1/5 base at 0.2 px).
   const double distance = (m.views["left"].pose.centre - m.mesh.vertices[m.mesh.size() / 2]).norm();
   m.point_sigma = o.point_sigma.value_or(1e-3 * distance);
-  m.correlation_length = m.mesh.median_edge_length() * photogrammetry::preset_standard().sgbm_block_size;
+  m.correlation_length =
+      m.mesh.median_edge_length() * photogrammetry::preset_standard().sgbm_block_size;
   return m;
 }
 
@@ -117,13 +120,14 @@ LoadedModel load_project_model(storage::ProjectStore& store, const MeasureOption
   m.capture_id = model.texture_capture_id;
   const storage::Capture capture = store.load_capture(*model.texture_capture_id);
   if (!capture.calibration_id)
-    throw InputError(o.source, "the capture of model " + std::to_string(id) + " has no calibration");
+    throw InputError(o.source,
+                     "the capture of model " + std::to_string(id) + " has no calibration");
   const auto intrinsics = store.load_calibration(*capture.calibration_id).intrinsics;
   const storage::Registration& r = model.registration;
   photogrammetry::Similarity model_to_world;
   model_to_world.scale = r.scale;
-  model_to_world.R = Eigen::Quaterniond(r.rotation_wxyz[0], r.rotation_wxyz[1],
-                                        r.rotation_wxyz[2], r.rotation_wxyz[3])
+  model_to_world.R = Eigen::Quaterniond(r.rotation_wxyz[0], r.rotation_wxyz[1], r.rotation_wxyz[2],
+                                        r.rotation_wxyz[3])
                          .normalized()
                          .toRotationMatrix();
   model_to_world.t = r.translation;
@@ -131,8 +135,8 @@ LoadedModel load_project_model(storage::ProjectStore& store, const MeasureOption
   m.photos["left"] = decode(capture.left.bytes);
   // The report of the reconstruction: the right camera's relative
   // orientation and the predicted precision of a point.
-  const auto p = nlohmann::json::parse(r.parameters_json.empty() ? "{}" : r.parameters_json,
-                                       nullptr, false);
+  const auto p =
+      nlohmann::json::parse(r.parameters_json.empty() ? "{}" : r.parameters_json, nullptr, false);
   if (p.is_object() && p.contains("orientation") && p["orientation"].contains("R") &&
       p["orientation"].contains("t")) {
     Eigen::Matrix3d R;
@@ -145,13 +149,13 @@ LoadedModel load_project_model(storage::ProjectStore& store, const MeasureOption
     m.photos["right"] = decode(capture.right.bytes);
   }
   m.mesh = surface_mesh(std::move(model.mesh), intrinsics.width, intrinsics.height);
-  if (m.mesh.triangles.empty()) throw InputError(o.source, "model " + std::to_string(id) + " has no triangles");
-  m.point_sigma = o.point_sigma.value_or(
-      p.is_object() && p.contains("predicted_depth_sigma_mm")
-          ? p["predicted_depth_sigma_mm"].get<double>() / 1000
-          : 0.01);
-  const auto preset = photogrammetry::preset_by_name(model.preset.empty() ? "standard" : model.preset,
-                                                     "model preset");
+  if (m.mesh.triangles.empty())
+    throw InputError(o.source, "model " + std::to_string(id) + " has no triangles");
+  m.point_sigma = o.point_sigma.value_or(p.is_object() && p.contains("predicted_depth_sigma_mm")
+                                             ? p["predicted_depth_sigma_mm"].get<double>() / 1000
+                                             : 0.01);
+  const auto preset = photogrammetry::preset_by_name(
+      model.preset.empty() ? "standard" : model.preset, "model preset");
   m.correlation_length = m.mesh.median_edge_length() * preset.sgbm_block_size;
   return m;
 }
@@ -184,7 +188,8 @@ cv::Mat stereonet(const MeasuredPicks& r, const std::string& title, double frict
     pic.poles.push_back(plane.fit.normal);
     pic.pole_sets.push_back(r.clusters.set_of.empty() ? -1 : r.clusters.set_of[k]);
   }
-  for (const auto& s : r.sets) pic.sets.push_back({s.label, s.fisher.plane(), s.fisher.alpha95 < M_PI ? s.fisher.alpha95 : 0});
+  for (const auto& s : r.sets)
+    pic.sets.push_back({s.label, s.fisher.plane(), s.fisher.alpha95 < M_PI ? s.fisher.alpha95 : 0});
   for (const auto& a : r.areas)
     if (!a.rock_side.empty() && a.m.plane.known) {
       pic.faces.push_back({a.m.id, a.m.plane.orientation});
@@ -217,6 +222,8 @@ int run(const MeasureOptions& o) {
     model = load_ply_model(o);
   } else {
     store.emplace(storage::ProjectStore::open(o.source));
+    if (store->read_only())
+      throw InputError(o.source, "cannot store measurements in it: " + store->read_only_reason());
     model = load_project_model(*store, o);
   }
   const measure::MeshPicker picker(model.mesh);
@@ -230,11 +237,28 @@ int run(const MeasureOptions& o) {
   context.source = o.picks;
   const MeasuredPicks measured = measure_picks(picks, context, sets);
 
-  // Everything measured: now the outputs and the store.
-  const cv::Mat png = o.png.empty() ? cv::Mat() : stereonet(measured, fs::path(o.picks).filename().string(), o.friction);
+  // Everything measured: now the store (one visit, each save one
+  // transaction) and the outputs.
+  std::vector<storage::Joint> joints = joint_records(measured, 0);
+  if (store) {
+    const storage::RecordId visit = store->begin_visit(
+        "measure " + o.picks, "picks measured on model " + std::to_string(*model.model_id));
+    const auto ids = store->save_measurements(
+        visit, measurement_records(measured, visit, model.model_id, model.capture_id));
+    const auto records = measurement_records(measured, visit, model.model_id, model.capture_id);
+    for (auto& j : joints) {
+      j.visit_id = visit;
+      for (std::size_t k = 0; k < records.size(); ++k)
+        if (records[k].label == j.label) j.measurement_id = ids[k];
+    }
+    store->save_joints(visit, joint_set_records(measured), joints);
+    std::cout << "stored in " << o.source << ", visit " << visit << "\n";
+  }
+  const cv::Mat png = o.png.empty()
+                          ? cv::Mat()
+                          : stereonet(measured, fs::path(o.picks).filename().string(), o.friction);
   write_file(o.out, measures_json(measured, context, model.name));
   if (!png.empty() && !cv::imwrite(o.png, png)) throw Error(o.png + ": cannot write the picture");
-  std::vector<storage::Joint> joints = joint_records(measured, 0);
   if (!o.csv.empty()) {
     std::ostringstream csv;
     storage::write_joints_csv(csv, joints, model.datum);
@@ -251,22 +275,6 @@ int run(const MeasureOptions& o) {
                 s.fisher.count, rad_to_deg(pl.dip), rad_to_deg(pl.dipdir), s.fisher.kappa,
                 rad_to_deg(s.fisher.alpha95));
   }
-  if (store) {
-    if (store->read_only())
-      throw InputError(o.source, "measured, but cannot store in it: " + store->read_only_reason());
-    const storage::RecordId visit =
-        store->begin_visit("measure " + o.picks, "picks measured on model " + std::to_string(*model.model_id));
-    const auto ids = store->save_measurements(
-        visit, measurement_records(measured, visit, model.model_id, model.capture_id));
-    const auto records = measurement_records(measured, visit, model.model_id, model.capture_id);
-    for (auto& j : joints) {
-      j.visit_id = visit;
-      for (std::size_t k = 0; k < records.size(); ++k)
-        if (records[k].label == j.label) j.measurement_id = ids[k];
-    }
-    store->save_joints(visit, joint_set_records(measured), joints);
-    std::cout << "stored in " << o.source << ", visit " << visit << "\n";
-  }
   return 0;
 }
 
@@ -280,7 +288,8 @@ VerbRun setup_measure(CLI::App& sub) {
   sub.add_option("--out", o->out, "the measurements (rockface-measures/1)")->required();
   sub.add_option("--png", o->png, "stereonet picture (lower hemisphere, equal area)");
   sub.add_option("--csv", o->csv, "Dips-style CSV of the measured planes");
-  sub.add_option("--sets", o->sets, "number of joint sets, or auto (default: the picks', else auto)");
+  sub.add_option("--sets", o->sets,
+                 "number of joint sets, or auto (default: the picks', else auto)");
   sub.add_option("--model", o->model, "project: the model id (default: the latest)");
   sub.add_option("--camera", o->camera, "model file: the camera it was reconstructed with");
   sub.add_option("--photo", o->photo,

@@ -27,13 +27,15 @@ class Reader {
     throw InputError(source_ + ": " + path, reason);
   }
 
-  const nlohmann::json& require(const nlohmann::json& obj, const std::string& path, const char* key) const {
+  const nlohmann::json& require(const nlohmann::json& obj, const std::string& path,
+                                const char* key) const {
     if (!obj.is_object()) fail(path, "must be an object");
     auto it = obj.find(key);
     if (it == obj.end()) fail(join(path, key), "missing");
     return *it;
   }
-  const nlohmann::json* optional(const nlohmann::json& obj, const std::string& path, const char* key) const {
+  const nlohmann::json* optional(const nlohmann::json& obj, const std::string& path,
+                                 const char* key) const {
     if (!obj.is_object()) fail(path, "must be an object");
     auto it = obj.find(key);
     return (it == obj.end() || it->is_null()) ? nullptr : &*it;

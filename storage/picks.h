@@ -19,11 +19,11 @@ struct TracePick {
   std::string joint;  // the joint it belongs to; empty when unassigned
   std::string where;  // its field path, for messages ("traces[2]")
   // Exactly one of the three forms:
-  std::string photo;                     // "left" | "right" for pixels and ends
-  std::vector<Eigen::Vector2d> pixels;   // taps along the trace
-  std::vector<Eigen::Vector3d> points;   // 3D points (absolute coordinates)
+  std::string photo;                                   // "left" | "right" for pixels and ends
+  std::vector<Eigen::Vector2d> pixels;                 // taps along the trace
+  std::vector<Eigen::Vector3d> points;                 // 3D points (absolute coordinates)
   std::optional<std::array<Eigen::Vector2d, 2>> ends;  // semi-automatic: trace between them
-  std::string cost = "darkness";         // semi-automatic: darkness | gradient | curvature
+  std::string cost = "darkness";  // semi-automatic: darkness | gradient | curvature
 };
 
 struct AreaPick {

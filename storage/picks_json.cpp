@@ -69,8 +69,9 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
       const int forms = (t.contains("pixels") ? 1 : 0) + (t.contains("points") ? 1 : 0) +
                         (t.contains("ends") ? 1 : 0);
       if (forms != 1)
-        r.fail(path, "give exactly one of \"pixels\" (taps), \"points\" (3D) or \"ends\" "
-                     "(semi-automatic)");
+        r.fail(path,
+               "give exactly one of \"pixels\" (taps), \"points\" (3D) or \"ends\" "
+               "(semi-automatic)");
       if (auto* px = r.optional(t, path, "pixels")) {
         pick.photo = photo(r, t, path);
         pick.pixels = pixels(r, *px, path + ".pixels");
@@ -90,8 +91,7 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
         if (auto* c = r.optional(t, path, "cost")) {
           pick.cost = r.string(*c, path + ".cost");
           if (pick.cost != "darkness" && pick.cost != "gradient" && pick.cost != "curvature")
-            r.fail(path + ".cost",
-                   "\"" + pick.cost + "\" is not darkness, gradient or curvature");
+            r.fail(path + ".cost", "\"" + pick.cost + "\" is not darkness, gradient or curvature");
         }
       }
       picks.traces.push_back(std::move(pick));
@@ -130,7 +130,8 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
       unique(pick.id, path + ".id");
       pick.photo = photo(r, p, path);
       pick.pixel = pixel(r, r.require(p, path, "pixel"), path + ".pixel");
-      if (auto* rad = r.optional(p, path, "radius")) pick.radius = r.positive(*rad, path + ".radius");
+      if (auto* rad = r.optional(p, path, "radius"))
+        pick.radius = r.positive(*rad, path + ".radius");
       picks.points.push_back(std::move(pick));
     }
   }

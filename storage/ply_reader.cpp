@@ -20,8 +20,7 @@ struct Property {
 int type_size(const std::string& t) {
   if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
   if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-  if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" ||
-      t == "float32")
+  if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32")
     return 4;
   if (t == "double" || t == "float64") return 8;
   return 0;
@@ -166,17 +165,24 @@ PlyModel read_ply_mesh(const std::filesystem::path& file) {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (const auto& prop : vertex_props) {
       const double v = body.next(prop.type, "the vertices");
-      if (prop.name == "x") p.x() = v;
-      else if (prop.name == "y") p.y() = v;
-      else if (prop.name == "z") p.z() = v;
-      else if (prop.name == "red") m.colours[i][0] = static_cast<std::uint8_t>(v);
-      else if (prop.name == "green") m.colours[i][1] = static_cast<std::uint8_t>(v);
-      else if (prop.name == "blue") m.colours[i][2] = static_cast<std::uint8_t>(v);
-      else if (prop.name == "texture_u") m.texcoords[i][0] = static_cast<float>(v);
-      else if (prop.name == "texture_v") m.texcoords[i][1] = static_cast<float>(v);
+      if (prop.name == "x")
+        p.x() = v;
+      else if (prop.name == "y")
+        p.y() = v;
+      else if (prop.name == "z")
+        p.z() = v;
+      else if (prop.name == "red")
+        m.colours[i][0] = static_cast<std::uint8_t>(v);
+      else if (prop.name == "green")
+        m.colours[i][1] = static_cast<std::uint8_t>(v);
+      else if (prop.name == "blue")
+        m.colours[i][2] = static_cast<std::uint8_t>(v);
+      else if (prop.name == "texture_u")
+        m.texcoords[i][0] = static_cast<float>(v);
+      else if (prop.name == "texture_v")
+        m.texcoords[i][1] = static_cast<float>(v);
     }
-    if (!p.allFinite())
-      throw InputError(where, "vertex " + std::to_string(i) + " is not finite");
+    if (!p.allFinite()) throw InputError(where, "vertex " + std::to_string(i) + " is not finite");
     m.vertices[i] = absolute ? Eigen::Vector3d(p - out.datum) : p;
   }
   m.faces.resize(faces);
