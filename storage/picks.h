@@ -56,7 +56,8 @@ struct Picks {
 // with at least two distinct picks; finite numbers.
 Picks read_picks(const nlohmann::json& object, const std::string& source, const std::string& path);
 
-// A PICKS file.
+// PICKS text (`source` names it in messages), and a PICKS file.
+Picks parse_picks(const std::string& text, const std::string& source);
 Picks load_picks(const std::string& file);
 
 }  // namespace rockface::storage

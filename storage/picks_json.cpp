@@ -149,18 +149,23 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
   return picks;
 }
 
+Picks parse_picks(const std::string& text, const std::string& source) {
+  const json doc = parse_json_naming_nan(text, source);
+  const Reader r(source);
+  if (!doc.is_object()) r.fail("(top level)", "must be a JSON object");
+  const std::string format = r.string(r.require(doc, "", "format"), "format");
+  if (format != "rockface-picks/1")
+    r.fail("format", "\"" + format + "\" is not \"rockface-picks/1\"");
+  return read_picks(doc, source, "");
+}
+
 Picks load_picks(const std::string& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "cannot open the picks file");
   std::ostringstream text;
   text << in.rdbuf();
-  const json doc = parse_json_naming_nan(text.str(), file);
-  const Reader r(file);
-  if (!doc.is_object()) r.fail("(top level)", "must be a JSON object");
-  const std::string format = r.string(r.require(doc, "", "format"), "format");
-  if (format != "rockface-picks/1")
-    r.fail("format", "\"" + format + "\" is not \"rockface-picks/1\"");
-  return read_picks(doc, file, "");
+  if (in.bad()) throw InputError(file, "cannot read the picks file");
+  return parse_picks(text.str(), file);
 }
 
 }  // namespace rockface::storage
