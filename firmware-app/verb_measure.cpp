@@ -18,6 +18,7 @@
 #include "core/common/units.h"
 #include "core/measure/stereonet_image.h"
 #include "core/photogrammetry/preset.h"
+#include "firmware-app/atomic_file.h"
 #include "firmware-app/measure_picks.h"
 #include "firmware-app/project_mesh.h"
 #include "firmware-app/verb_registry.h"
@@ -160,23 +161,6 @@ LoadedModel load_project_model(storage::ProjectStore& store, const MeasureOption
   return m;
 }
 
-void write_file(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".part";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    f << text;
-    f.flush();
-    if (!f) {
-      std::remove(tmp.c_str());
-      throw Error(path + ": cannot write the file (disk full or no permission?)");
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error(path + ": cannot write the file");
-  }
-}
-
 cv::Mat stereonet(const MeasuredPicks& r, const std::string& title, double friction_deg) {
   measure::StereonetPicture pic;
   pic.title = title;
@@ -257,12 +241,12 @@ int run(const MeasureOptions& o) {
   const cv::Mat png = o.png.empty()
                           ? cv::Mat()
                           : stereonet(measured, fs::path(o.picks).filename().string(), o.friction);
-  write_file(o.out, measures_json(measured, context, model.name));
+  write_atomically(o.out, measures_json(measured, context, model.name));
   if (!png.empty() && !cv::imwrite(o.png, png)) throw Error(o.png + ": cannot write the picture");
   if (!o.csv.empty()) {
     std::ostringstream csv;
     storage::write_joints_csv(csv, joints, model.datum);
-    write_file(o.csv, csv.str());
+    write_atomically(o.csv, csv.str());
   }
   std::size_t known = 0;
   for (const auto& t : measured.traces) known += t.m.plane.known ? 1 : 0;

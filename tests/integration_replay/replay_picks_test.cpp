@@ -16,23 +16,15 @@
 #include <nlohmann/json.hpp>
 
 #include "storage/project_store.h"
+#include "tests/support/cli_run.h"
 #include "tests/support/truth_picks.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& args, const fs::path& log) {
-  const std::string cmd =
-      std::string(ROCKFACE_BINARY_DIR) + "/rockface " + args + " >" + log.string() + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
+using rockface::test::CliRun;
+using rockface::test::run_rockface;
 
 Eigen::Vector3d normal(double dip_deg, double dipdir_deg) {
   const double a = dip_deg * M_PI / 180, b = dipdir_deg * M_PI / 180;
@@ -50,20 +42,17 @@ TEST(ReplayPicks, TracesMeasuredOnTheImageGiveThePlanesAndTheKeyblock) {
   fs::create_directories(dir);
   nlohmann::json scene = rockface::test::demo_scene();
   std::ofstream(dir / "face.scene.json") << scene.dump(2);
-  ASSERT_EQ(
-      run("render " + (dir / "face.scene.json").string() + " --out " + (dir / "render").string(),
-          dir / "render.txt"),
-      0)
-      << slurp(dir / "render.txt");
+  CliRun r = run_rockface("render " + (dir / "face.scene.json").string() + " --out " +
+                          (dir / "render").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto traces = rockface::test::face_traces(dir / "render" / "truth.json");
   ASSERT_GE(traces.size(), 5u);  // J1 and J3 on both facets, J2 on the west one
   scene["picks"] = {{"traces", rockface::test::face_picks(traces)}};
   std::ofstream(dir / "picked.scene.json") << scene.dump(2);
   const fs::path project = dir / "site.rockface";
-  ASSERT_EQ(run("replay " + (dir / "picked.scene.json").string() + " --project " + project.string(),
-                dir / "replay.txt"),
-            0)
-      << slurp(dir / "replay.txt");
+  r = run_rockface("replay " + (dir / "picked.scene.json").string() + " --project " +
+                   project.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
 
   auto store = rockface::storage::ProjectStore::open(project);
   const auto visits = store.list_visits();
@@ -105,7 +94,7 @@ TEST(ReplayPicks, TracesMeasuredOnTheImageGiveThePlanesAndTheKeyblock) {
     EXPECT_GT(error, 0.0) << j.label << ": the scene's plane, not a measured one";
   }
   EXPECT_EQ(measured, 2);
-  EXPECT_NE(slurp(dir / "replay.txt").find("J2: orientation unknown"), std::string::npos);
+  EXPECT_NE(r.out.find("J2: orientation unknown"), std::string::npos) << r.out;
 
   // The blocks come from the measured traces: the keyblock is found, its
   // loop made of the picked traces. Its volume with the true traces is
@@ -144,10 +133,10 @@ TEST(ReplayPicks, APickOffTheImageNamesItAndAnalysesNothing) {
                        {"pixels", {{700, 500}, {760, 540}, {1600, 560}}}}}}};
   std::ofstream(dir / "bad.scene.json") << scene.dump(2);
   const fs::path project = dir / "site.rockface";
-  EXPECT_EQ(run("replay " + (dir / "bad.scene.json").string() + " --project " + project.string(),
-                dir / "replay.txt"),
-            2);
-  const std::string log = slurp(dir / "replay.txt");
+  const CliRun r = run_rockface("replay " + (dir / "bad.scene.json").string() + " --project " +
+                                project.string());
+  EXPECT_EQ(r.exit_code, 2);
+  const std::string& log = r.err;
   EXPECT_NE(log.find("picks.traces[0].pixels[2]"), std::string::npos) << log;
   EXPECT_NE(log.find("outside the left photograph"), std::string::npos) << log;
   // What was captured before stays stored (field_replay.h); no traces and
@@ -169,10 +158,10 @@ TEST(ReplayPicks, SceneParserNamesTheBadPick) {
       {"traces",
        {{{"id", "T1"}, {"joint", "J9"}, {"photo", "left"}, {"pixels", {{700, 500}, {760, 540}}}}}}};
   std::ofstream(dir / "bad.scene.json") << scene.dump(2);
-  EXPECT_EQ(run("analyse " + (dir / "bad.scene.json").string(), dir / "log.txt"), 2);
-  EXPECT_NE(slurp(dir / "log.txt").find("picks.traces[0].joint: unknown joint id \"J9\""),
-            std::string::npos)
-      << slurp(dir / "log.txt");
+  const CliRun r = run_rockface("analyse " + (dir / "bad.scene.json").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("picks.traces[0].joint: unknown joint id \"J9\""), std::string::npos)
+      << r.err;
   fs::remove_all(dir);
 }
 
