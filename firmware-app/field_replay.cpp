@@ -16,6 +16,7 @@
 #include "firmware-app/field_records.h"
 #include "firmware-app/replay_capture.h"
 #include "firmware-app/replay_more_pairs.h"
+#include "firmware-app/replay_picks.h"
 #include "firmware-app/scene_analysis.h"
 #include "firmware-app/synthetic_scene_from_scene.h"
 #include "storage/camera_json.h"
@@ -171,9 +172,16 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
 
   if (!scene) return out;  // a capture folder has no traces to analyse
 
-  // Traces: those of the scene, or the synthetic scene's true traces (what
-  // the geologist would mark on the model).
-  storage::Scene analysed = *scene;
+  // Traces: measured on the reconstructed image where the scene gives picks
+  // (replay_picks.h); else those of the scene, or the synthetic scene's true
+  // traces (what the geologist would mark on the model).
+  std::optional<ReplayPicks> picked;
+  if (scene->picks) {
+    progress.step("measure", 0.75);
+    picked = measure_replay_picks(*scene, rec, intrinsics, preset, left_image, right_image);
+    for (const auto& note : picked->notes) out.guidance.push_back(note);
+  }
+  storage::Scene analysed = picked ? picked->analysed : *scene;
   if (analysed.traces.empty()) {
     int n = 0;
     for (const auto& seg : camera::true_trace_segments(synthetic->scene))
@@ -198,10 +206,14 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     for (const auto& p : absolute) m.points.push_back(p - scene->datum);
     return m;
   };
-  for (const auto& t : analysed.traces) {
-    measurements.push_back(measured(storage::Measurement::Kind::trace, t.id, t.points));
-    measurements.back().joint_label = t.joint.value_or("");
-  }
+  if (picked)
+    measurements =
+        measurement_records(picked->measured, out.visit_id, out.model_id, out.capture_id);
+  else
+    for (const auto& t : analysed.traces) {
+      measurements.push_back(measured(storage::Measurement::Kind::trace, t.id, t.points));
+      measurements.back().joint_label = t.joint.value_or("");
+    }
   for (const auto& patch : analysed.patches)
     measurements.push_back(measured(storage::Measurement::Kind::area, patch.id, patch.polygon));
   store.save_measurements(out.visit_id, measurements);
@@ -216,6 +228,13 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     joint.friction_deg = j.friction;
     joint.cohesion_pa = j.cohesion;
     joint.source = "scene";
+    if (picked)
+      for (const auto& m : picked->measured.joints)
+        if (m.label == j.id && m.plane.known) {
+          joint.source = "traces";
+          for (const auto& t : m.traces) joint.source += " " + t;
+          joint.type = "trace";
+        }
     joints.push_back(joint);
   }
   store.save_joints(out.visit_id, {}, joints);

@@ -13,6 +13,7 @@
 #include "core/common/error.h"
 #include "core/photogrammetry/reconstruction.h"
 #include "core/photogrammetry/reference_line.h"
+#include "firmware-app/atomic_file.h"
 #include "firmware-app/verb_registry.h"
 #include "storage/camera_json.h"
 #include "storage/mesh_export.h"
@@ -56,23 +57,6 @@ photogrammetry::NorthReference parse_north(const ReconstructOptions& o) {
   n.azimuth_deg = *o.azimuth;
   n.declination_deg = o.declination.value_or(0.0);
   return n;
-}
-
-void write_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".part";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    f << text;
-    f.flush();
-    if (!f) {
-      std::remove(tmp.c_str());
-      throw Error(path + ": cannot write the file (disk full or no permission?)");
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error(path + ": cannot write the file");
-  }
 }
 
 int run(const ReconstructOptions& o) {

@@ -14,6 +14,8 @@
 
 #include <Eigen/Core>
 
+#include "storage/picks.h"
+
 namespace rockface::storage {
 
 struct SceneJoint {
@@ -171,6 +173,9 @@ struct Scene {
   SceneAnalysis analysis;
   SceneEffects effects;
   std::optional<SceneImaging> imaging;
+  // Picks on the reconstructed image (docs/scene-extensions.md): the replay
+  // measures its traces from them instead of taking the synthetic truth.
+  std::optional<Picks> picks;
 
   const SceneJoint* joint(const std::string& id) const;
   const SceneFreeFace* free_face(const std::string& id) const;

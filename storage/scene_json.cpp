@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "storage/json_reader.h"
+#include "storage/picks.h"
 #include "storage/scene.h"
 
 namespace rockface::storage {
@@ -15,89 +17,6 @@ namespace rockface::storage {
 namespace {
 
 using nlohmann::json;
-
-// Walks a JSON document keeping the field path for messages.
-class Reader {
- public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
-    throw InputError(source_ + ": " + path, reason);
-  }
-
-  const json& require(const json& obj, const std::string& path, const char* key) const {
-    if (!obj.is_object()) fail(path, "must be an object");
-    auto it = obj.find(key);
-    if (it == obj.end()) fail(join(path, key), "missing");
-    return *it;
-  }
-  const json* optional(const json& obj, const std::string& path, const char* key) const {
-    if (!obj.is_object()) fail(path, "must be an object");
-    auto it = obj.find(key);
-    return (it == obj.end() || it->is_null()) ? nullptr : &*it;
-  }
-
-  double number(const json& v, const std::string& path) const {
-    if (!v.is_number()) fail(path, "must be a number");
-    const double d = v.get<double>();
-    if (!std::isfinite(d)) fail(path, "must be finite");
-    return d;
-  }
-  double number_in(const json& v, const std::string& path, double lo, double hi,
-                   bool hi_open = false) const {
-    const double d = number(v, path);
-    if (d < lo || d > hi || (hi_open && d == hi)) {
-      std::ostringstream msg;
-      msg << v.dump() << " is outside [" << lo << ", " << hi << (hi_open ? ")" : "]");
-      fail(path, msg.str());
-    }
-    return d;
-  }
-  double positive(const json& v, const std::string& path) const {
-    const double d = number(v, path);
-    if (!(d > 0)) fail(path, v.dump() + " must be positive");
-    return d;
-  }
-  double non_negative(const json& v, const std::string& path) const {
-    const double d = number(v, path);
-    if (d < 0) fail(path, v.dump() + " must not be negative");
-    return d;
-  }
-  int integer(const json& v, const std::string& path) const {
-    if (!v.is_number_integer()) fail(path, "must be a whole number");
-    return v.get<int>();
-  }
-  bool boolean(const json& v, const std::string& path) const {
-    if (!v.is_boolean()) fail(path, "must be true or false");
-    return v.get<bool>();
-  }
-  std::string string(const json& v, const std::string& path) const {
-    if (!v.is_string()) fail(path, "must be a string");
-    return v.get<std::string>();
-  }
-  std::string id(const json& v, const std::string& path) const {
-    std::string s = string(v, path);
-    if (s.empty()) fail(path, "must not be empty");
-    return s;
-  }
-  Eigen::Vector3d vec3(const json& v, const std::string& path) const {
-    if (!v.is_array() || v.size() != 3) fail(path, "must be an array of 3 numbers");
-    return {number(v[0], path + "[0]"), number(v[1], path + "[1]"), number(v[2], path + "[2]")};
-  }
-  const json& array(const json& v, const std::string& path) const {
-    if (!v.is_array()) fail(path, "must be an array");
-    return v;
-  }
-  static std::string join(const std::string& path, const char* key) {
-    return path.empty() ? std::string(key) : path + "." + key;
-  }
-  static std::string index(const std::string& path, size_t i) {
-    return path + "[" + std::to_string(i) + "]";
-  }
-
- private:
-  std::string source_;
-};
 
 void read_orientation(const Reader& r, const json& o, const std::string& path, double& dip,
                       double& dipdir) {
@@ -568,6 +487,12 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   s.analysis = read_analysis(r, doc);
   s.effects = read_effects(r, doc);
   if (auto* im = r.optional(doc, "", "imaging")) s.imaging = read_imaging(r, *im);
+  if (auto* p = r.optional(doc, "", "picks")) {
+    s.picks = read_picks(*p, source, "picks");
+    for (const auto& t : s.picks->traces)
+      if (!t.joint.empty() && !s.joint(t.joint))
+        r.fail(t.where + ".joint", "unknown joint id \"" + t.joint + "\"");
+  }
   check_references(r, s);
   return s;
 }

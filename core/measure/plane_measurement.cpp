@@ -250,8 +250,8 @@ AreaMeasurement measure_area(const MeshPicker& picker, const PhotoView& view, st
   }
   const std::vector<int> inside = picker.vertices_inside(view, polygon);
   if (inside.size() < 3)
-    throw InputError(where + ".pixels", "no surface of the 3D image under the polygon (" +
-                                            std::to_string(inside.size()) + " points)");
+    throw InputError(where + ".polygon", "no surface of the 3D image under the polygon (" +
+                                             std::to_string(inside.size()) + " points)");
   const auto& mesh = picker.mesh();
   std::vector<Eigen::Vector3d> points;
   std::vector<char> in(mesh.size(), 0);

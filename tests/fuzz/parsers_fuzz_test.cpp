@@ -1,5 +1,5 @@
 // Every parser a user feeds, fed mutated files (tests/fuzz/mutator.h): scene
-// JSON, camera JSON, control-point CSV, the reference line, a capture's EXIF
+// JSON, picks JSON, camera JSON, control-point CSV, the reference line, a capture's EXIF
 // and a project file. A parser may accept an input or refuse it with a
 // rockface::Error (InputError naming the file and field); it may not crash,
 // hang or let another exception out (a raw nlohmann or std:: message is not
@@ -29,6 +29,7 @@
 #include "core/photogrammetry/reference_line.h"
 #include "core/photogrammetry/registration.h"
 #include "storage/camera_json.h"
+#include "storage/picks.h"
 #include "storage/project_store.h"
 #include "storage/scene.h"
 #include "tests/fuzz/mutator.h"
@@ -139,6 +140,11 @@ TEST(Fuzz, SceneJson) {
     seeds.push_back(s);
   fuzz("scene", seeds, true, iterations(200000),
        [](const std::string& in) { rockface::storage::parse_scene(in, "fuzz.scene.json"); });
+}
+
+TEST(Fuzz, PicksJson) {
+  fuzz("picks", files_in(kCorpus / "picks"), true, iterations(100000),
+       [](const std::string& in) { rockface::storage::parse_picks(in, "fuzz.picks.json"); });
 }
 
 TEST(Fuzz, CameraJson) {

@@ -1,0 +1,91 @@
+#pragma once
+// Picks (storage/picks.h) measured on a 3D image with core/measure: traces
+// (taps, 3D points, or semi-automatic between two end pixels), areas and
+// points, the joint planes of the traces grouped by joint, and the joint
+// sets. Shared by `rockface measure` and `rockface replay`; the output format
+// (rockface-measures/1) is in docs/scene-extensions.md.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "core/measure/joint_sets.h"
+#include "core/measure/mesh_picker.h"
+#include "core/measure/plane_measurement.h"
+#include "storage/picks.h"
+#include "storage/project_records.h"
+
+namespace rockface::app {
+
+struct MeasureContext {
+  const measure::MeshPicker* picker = nullptr;      // on the mesh, datum-relative
+  std::map<std::string, measure::PhotoView> views;  // "left", "right" where known
+  std::map<std::string, cv::Mat> photos;            // the photographs, for semi-automatic tracing
+  measure::MeasureSettings settings;
+  Eigen::Vector3d datum = Eigen::Vector3d::Zero();  // the picks' 3D points are absolute
+  std::string source;                               // the picks' file, for messages
+};
+
+struct MeasuredTrace {
+  measure::TraceMeasurement m;
+  std::string joint;                  // as picked; empty when unassigned
+  std::string cost;                   // semi-automatic: the cost used; empty otherwise
+  double mean_cost = 0;               // semi-automatic: per pixel step, [0, 1]
+  std::vector<Eigen::Vector2d> taps;  // what was picked (the ends for semi-automatic)
+};
+
+struct MeasuredArea {
+  measure::AreaMeasurement m;
+  std::string rock_side;
+};
+
+// The traces of one joint fitted together (a joint marked piece by piece).
+struct MeasuredJoint {
+  std::string label;
+  std::vector<std::string> traces;
+  measure::PlaneEstimate plane;
+};
+
+// One pole in the set statistics: a known plane of a trace, an area that is
+// not a free face, or a point.
+struct PoleSource {
+  char kind = 't';  // 't' trace, 'a' area, 'p' point
+  std::size_t index = 0;
+};
+
+struct MeasuredPicks {
+  std::vector<MeasuredTrace> traces;
+  std::vector<MeasuredArea> areas;
+  std::vector<measure::PointMeasurement> points;
+  std::vector<MeasuredJoint> joints;
+  std::vector<PoleSource> poles;
+  measure::PoleClusters clusters;  // set_of per entry of `poles`
+  std::vector<measure::JointSetSummary> sets;
+  // The set label of a measurement id; empty when it is in no set.
+  std::string set_of(const std::string& id) const;
+};
+
+// Measures every pick; nothing is partial: the first bad pick throws
+// InputError naming context.source and its field path. `sets`: the number
+// of joint sets wanted, 0 or none for automatic.
+MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& context,
+                            std::optional<int> sets);
+
+// rockface-measures/1 (docs/scene-extensions.md); coordinates absolute.
+std::string measures_json(const MeasuredPicks& measured, const MeasureContext& context,
+                          const std::string& model);
+
+// The measurements as project records (datum-relative points, the photo and
+// pixels they came from; points only with a known plane) and the joint table: one joint per known
+// plane of a trace, area or point, with its set, and the sets.
+std::vector<storage::Measurement> measurement_records(const MeasuredPicks& measured,
+                                                      storage::RecordId visit_id,
+                                                      std::optional<storage::RecordId> model_id,
+                                                      std::optional<storage::RecordId> capture_id);
+std::vector<storage::JointSet> joint_set_records(const MeasuredPicks& measured);
+std::vector<storage::Joint> joint_records(const MeasuredPicks& measured,
+                                          storage::RecordId visit_id);
+
+}  // namespace rockface::app

@@ -1,0 +1,146 @@
+#pragma once
+// Walks a JSON document keeping the field path for messages: every rejection
+// names the file and the field ("traces[2].pixels[1][0]: must be finite").
+// Shared by the scene and the picks parsers.
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "core/common/error.h"
+
+namespace rockface::storage {
+
+// The bare tokens some writers put for non-finite numbers (Python's json:
+// NaN, Infinity, -Infinity).
+inline bool is_non_finite_token(const std::string& s) {
+  return s == "NaN" || s == "-NaN" || s == "Infinity" || s == "-Infinity";
+}
+
+class Reader {
+ public:
+  explicit Reader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
+    throw InputError(source_ + ": " + path, reason);
+  }
+
+  const nlohmann::json& require(const nlohmann::json& obj, const std::string& path,
+                                const char* key) const {
+    if (!obj.is_object()) fail(path, "must be an object");
+    auto it = obj.find(key);
+    if (it == obj.end()) fail(join(path, key), "missing");
+    return *it;
+  }
+  const nlohmann::json* optional(const nlohmann::json& obj, const std::string& path,
+                                 const char* key) const {
+    if (!obj.is_object()) fail(path, "must be an object");
+    auto it = obj.find(key);
+    return (it == obj.end() || it->is_null()) ? nullptr : &*it;
+  }
+
+  double number(const nlohmann::json& v, const std::string& path) const {
+    if (v.is_string() && is_non_finite_token(v.get<std::string>()))
+      fail(path, "must be finite, not " + v.get<std::string>());
+    if (v.is_null()) fail(path, "must be a number, not null (a NaN written by a JSON writer?)");
+    if (!v.is_number()) fail(path, "must be a number");
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) fail(path, "must be finite");
+    return d;
+  }
+  double number_in(const nlohmann::json& v, const std::string& path, double lo, double hi,
+                   bool hi_open = false) const {
+    const double d = number(v, path);
+    if (d < lo || d > hi || (hi_open && d == hi)) {
+      std::ostringstream msg;
+      msg << v.dump() << " is outside [" << lo << ", " << hi << (hi_open ? ")" : "]");
+      fail(path, msg.str());
+    }
+    return d;
+  }
+  double positive(const nlohmann::json& v, const std::string& path) const {
+    const double d = number(v, path);
+    if (!(d > 0)) fail(path, v.dump() + " must be positive");
+    return d;
+  }
+  double non_negative(const nlohmann::json& v, const std::string& path) const {
+    const double d = number(v, path);
+    if (d < 0) fail(path, v.dump() + " must not be negative");
+    return d;
+  }
+  int integer(const nlohmann::json& v, const std::string& path) const {
+    if (!v.is_number_integer()) fail(path, "must be a whole number");
+    return v.get<int>();
+  }
+  bool boolean(const nlohmann::json& v, const std::string& path) const {
+    if (!v.is_boolean()) fail(path, "must be true or false");
+    return v.get<bool>();
+  }
+  std::string string(const nlohmann::json& v, const std::string& path) const {
+    if (!v.is_string()) fail(path, "must be a string");
+    return v.get<std::string>();
+  }
+  std::string id(const nlohmann::json& v, const std::string& path) const {
+    std::string s = string(v, path);
+    if (s.empty()) fail(path, "must not be empty");
+    return s;
+  }
+  Eigen::Vector3d vec3(const nlohmann::json& v, const std::string& path) const {
+    if (!v.is_array() || v.size() != 3) fail(path, "must be an array of 3 numbers");
+    return {number(v[0], path + "[0]"), number(v[1], path + "[1]"), number(v[2], path + "[2]")};
+  }
+  const nlohmann::json& array(const nlohmann::json& v, const std::string& path) const {
+    if (!v.is_array()) fail(path, "must be an array");
+    return v;
+  }
+  static std::string join(const std::string& path, const char* key) {
+    return path.empty() ? std::string(key) : path + "." + key;
+  }
+  static std::string index(const std::string& path, size_t i) {
+    return path + "[" + std::to_string(i) + "]";
+  }
+
+ private:
+  std::string source_;
+};
+
+// Parses JSON text, reading bare NaN / Infinity tokens as strings so that
+// Reader::number rejects them naming the field, not as a syntax error at a
+// byte offset. Throws InputError(source, ...) for text that is not JSON.
+inline nlohmann::json parse_json_naming_nan(const std::string& text, const std::string& source) {
+  std::string quoted;
+  quoted.reserve(text.size() + 16);
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      quoted += c;
+      if (c == '\\' && i + 1 < text.size())
+        quoted += text[++i];
+      else if (c == '"')
+        in_string = false;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    bool replaced = false;
+    for (const char* token : {"-Infinity", "Infinity", "-NaN", "NaN"}) {
+      const std::string t(token);
+      if (text.compare(i, t.size(), t) == 0) {
+        quoted += '"' + t + '"';
+        i += t.size() - 1;
+        replaced = true;
+        break;
+      }
+    }
+    if (!replaced) quoted += c;
+  }
+  try {
+    return nlohmann::json::parse(quoted);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(source, std::string("not valid JSON (") + e.what() + ")");
+  }
+}
+
+}  // namespace rockface::storage

@@ -1,0 +1,63 @@
+#pragma once
+// What a geologist picked on the 3D image (`rockface measure --traces
+// PICKS.json`, and a scene's `picks` for `rockface replay`): traces as taps
+// in a photograph, as 3D points, or as two end pixels to trace between;
+// areas as polygons; points. Format rockface-picks/1, described in
+// docs/scene-extensions.md.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+namespace rockface::storage {
+
+struct TracePick {
+  std::string id;
+  std::string joint;  // the joint it belongs to; empty when unassigned
+  std::string where;  // its field path, for messages ("traces[2]")
+  // Exactly one of the three forms:
+  std::string photo;                                   // "left" | "right" for pixels and ends
+  std::vector<Eigen::Vector2d> pixels;                 // taps along the trace
+  std::vector<Eigen::Vector3d> points;                 // 3D points (absolute coordinates)
+  std::optional<std::array<Eigen::Vector2d, 2>> ends;  // semi-automatic: trace between them
+  std::string cost = "darkness";  // semi-automatic: darkness | gradient | curvature
+};
+
+struct AreaPick {
+  std::string id;
+  std::string where;
+  std::string photo;
+  std::vector<Eigen::Vector2d> polygon;
+  std::string rock_side;  // "upper" | "lower" when the area is a free face; empty otherwise
+};
+
+struct PointPick {
+  std::string id;
+  std::string where;
+  std::string photo;
+  Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
+  double radius = 0.1;  // m: the surface within it gives the local plane
+};
+
+struct Picks {
+  std::vector<TracePick> traces;
+  std::vector<AreaPick> areas;
+  std::vector<PointPick> points;
+  std::optional<int> sets;  // joint sets wanted; none or 0: automatic
+};
+
+// Reads the picks object at `path` of a document ("" for a PICKS file, whose
+// `format` must be rockface-picks/1; "picks" inside a scene). Every rejection
+// is an InputError naming `source`, the field path and the reason: ids
+// unique over traces, areas and points; photo "left" or "right"; a trace
+// with at least two distinct picks; finite numbers.
+Picks read_picks(const nlohmann::json& object, const std::string& source, const std::string& path);
+
+// PICKS text (`source` names it in messages), and a PICKS file.
+Picks parse_picks(const std::string& text, const std::string& source);
+Picks load_picks(const std::string& file);
+
+}  // namespace rockface::storage
