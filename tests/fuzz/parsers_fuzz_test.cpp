@@ -1,6 +1,6 @@
 // Every parser a user feeds, fed mutated files (tests/fuzz/mutator.h): scene
-// JSON, camera JSON, control-point CSV, the reference line, a capture's EXIF
-// and a project file. A parser may accept an input or refuse it with a
+// JSON, camera JSON, control-point CSV, the reference line, a PLY model, a
+// capture's EXIF and a project file. A parser may accept an input or refuse it with a
 // rockface::Error (InputError naming the file and field); it may not crash,
 // hang or let another exception out (a raw nlohmann or std:: message is not
 // what the user should read). Failing inputs are written to
@@ -29,6 +29,7 @@
 #include "core/photogrammetry/reference_line.h"
 #include "core/photogrammetry/registration.h"
 #include "storage/camera_json.h"
+#include "storage/ply_reader.h"
 #include "storage/project_store.h"
 #include "storage/scene.h"
 #include "tests/fuzz/mutator.h"
@@ -158,6 +159,13 @@ TEST(Fuzz, ReferenceLine) {
        [](const std::string& in) {
          rockface::photogrammetry::parse_reference_line(in, "--reference-line");
        });
+}
+
+TEST(Fuzz, PlyModel) {
+  // The header is text (counts, types, names), the body ascii or binary:
+  // the text mutations (extreme numbers) reach the element counts.
+  fuzz("ply", files_in(kCorpus / "ply"), true, iterations(100000),
+       [](const std::string& in) { rockface::storage::parse_ply(in, "fuzz.ply"); });
 }
 
 namespace {
