@@ -2,7 +2,8 @@
 # Line and branch coverage of the parsers under the fuzz harness
 # (docs/fuzzing.md): builds tests/fuzz with gcc's --coverage in its own
 # build directory (build/coverage), runs it (ROCKFACE_FUZZ_ITERATIONS and
-# ROCKFACE_FUZZ_SEED as set in the environment), and prints gcov's summary
+# ROCKFACE_FUZZ_SEED as set in the environment: a factor on the CI counts
+# and the mutator's seed), and prints gcov's summary
 # for each parser's source file. Needs only gcc's gcov.
 #   tools/fuzz_coverage.sh            # the CI-sized run
 #   ROCKFACE_FUZZ_ITERATIONS=10 tools/fuzz_coverage.sh   # ten times the inputs

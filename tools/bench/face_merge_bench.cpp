@@ -54,8 +54,14 @@ const rt::FacePair& pair_at(double offset) {
 
 void merge(benchmark::State& state, const std::vector<double>& offsets) {
   std::vector<rp::FaceImage> images;
-  for (double o : offsets)
-    images.push_back(rt::face_image(pair_at(o), "station " + std::to_string(o) + " m"));
+  try {
+    for (double o : offsets)
+      images.push_back(rt::face_image(pair_at(o), "station " + std::to_string(o) + " m"));
+  } catch (const std::exception& e) {
+    // A pair that sees too little of the 8.4 m face has no 3D image.
+    state.SkipWithError(e.what());
+    return;
+  }
   const Eigen::Vector3d origin = rt::face_origin(pair_at(0.0));
   rp::FaceRegistration face;
   for (auto _ : state) {
@@ -113,7 +119,8 @@ BENCHMARK(BM_MergeImages)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
 
-// Overlap: two images, the second station `range(0)` cm West of the master.
+// Overlap: two images, the second station `range(0)` cm West of the master
+// (beyond 3 m its photographs show too little of the 8.4 m face for a 3D image).
 void BM_MergeOverlap(benchmark::State& state) {
   merge(state, {0.0, -static_cast<double>(state.range(0)) / 100.0});
 }
@@ -121,8 +128,8 @@ BENCHMARK(BM_MergeOverlap)
     ->ArgName("spacing_cm")
     ->Arg(100)
     ->Arg(200)
+    ->Arg(250)
     ->Arg(300)
-    ->Arg(350)
     ->Iterations(2)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
