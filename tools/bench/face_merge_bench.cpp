@@ -144,7 +144,7 @@ const fs::path& demo_project() {
     const fs::path file = dir / "demo.rockface";
     const std::string cmd = std::string(ROCKFACE_BINARY_DIR) + "/rockface replay " +
                             ROCKFACE_SOURCE_DIR + "/tools/samples/tunnel-face-demo.scene.json" +
-                            " --project " + file.string() + " >/dev/null";
+                            " --project " + file.string() + " >/dev/null 2>&1";
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("failed: " + cmd);
     return file;
   }();
