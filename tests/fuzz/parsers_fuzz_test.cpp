@@ -208,7 +208,9 @@ TEST(Fuzz, CaptureExif) {
 
 namespace {
 
-// A small project with a record of each kind, as one file (checkpointed).
+// A small project with a record of each kind (camera body, calibration,
+// capture, model, measurements, joint set and joint, analysis), as one file
+// (checkpointed).
 std::string sample_project_file(const fs::path& dir) {
   namespace st = rockface::storage;
   const fs::path file = dir / "seed.rockface";
@@ -217,7 +219,22 @@ std::string sample_project_file(const fs::path& dir) {
     info.name = "fuzz seed";
     auto store = st::ProjectStore::create(file, info);
     const auto visit = store.begin_visit("tablet", "a note");
+    st::CameraBody body;
+    body.make = "Nikon";
+    body.model = "D7500";
+    body.serial = "3012345";
+    st::Calibration cal;
+    cal.body_id = store.save_camera_body(body);
+    cal.intrinsics.width = 64;
+    cal.intrinsics.height = 48;
+    cal.intrinsics.fx = cal.intrinsics.fy = 80;
+    cal.intrinsics.cx = 31.5;
+    cal.intrinsics.cy = 23.5;
+    cal.intrinsics.distortion = {-0.1, 0.01, 0, 0, 0};
+    cal.focal_setting_mm = 24;
+    cal.method = "chessboard:9x6:0.025";
     st::Capture c;
+    c.calibration_id = store.save_calibration(cal);
     c.visit_id = visit;
     c.label = "pair 1";
     const std::string jpeg = jpeg_with_exif(3);
@@ -232,7 +249,42 @@ std::string sample_project_file(const fs::path& dir) {
     m.mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     m.mesh.faces = {{0, 1, 2}};
     m.mesh.colours = {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}};
-    store.save_model(m);
+    m.id = store.save_model(m);
+    st::Measurement trace;
+    trace.visit_id = visit;
+    trace.model_id = m.id;
+    trace.label = "T1";
+    trace.joint_label = "J1";
+    trace.points = {{0, 0, 0}, {0.5, 0.1, 0.2}, {1, 0.2, 0.5}};
+    trace.dip_deg = 60;
+    trace.dipdir_deg = 120;
+    trace.fit_rms_m = 0.002;
+    st::Measurement area = trace;
+    area.kind = st::Measurement::Kind::area;
+    area.label = "A1";
+    area.rock_side = "lower";
+    const auto measured = store.save_measurements(visit, {trace, area});
+    st::JointSet set;
+    set.label = "S1";
+    set.dip_deg = 60;
+    set.dipdir_deg = 120;
+    set.fisher_k = 40;
+    set.count = 1;
+    set.alpha95_deg = 5;
+    set.spacing_m = 0.4;
+    set.note = "one trace leaves the mapped area";
+    st::Joint joint;
+    joint.label = "J1";
+    joint.set_label = "S1";
+    joint.dip_deg = 60;
+    joint.dipdir_deg = 120;
+    joint.point = Eigen::Vector3d(0.5, 0.1, 0.2);
+    joint.friction_deg = 30;
+    joint.measurement_id = measured.front();
+    joint.source = "trace T1";
+    joint.type = "trace";
+    joint.persistence_m = 1.2;
+    store.save_joints(visit, {set}, {joint});
     st::AnalysisRun a;
     a.visit_id = visit;
     a.preset = "fast";
@@ -270,8 +322,15 @@ TEST(Fuzz, ProjectFile) {
         read_only.read_only = true;  // a damaged file must not be written to
         auto store = rockface::storage::ProjectStore::open(file, read_only);
         store.project();
-        for (const auto& v : store.list_visits()) (void)v;
-        for (const auto& c : store.list_captures()) store.load_capture(c.id);
+        for (const auto& v : store.list_visits()) store.list_joint_sets(v.id);
+        store.list_camera_bodies();
+        for (const auto& c : store.list_calibrations()) store.load_calibration(c.id);
+        for (const auto& c : store.list_captures()) {
+          store.load_capture(c.id);
+          store.load_capture_image(c.id, "left");
+        }
+        store.list_measurements();
+        store.list_joints();
         for (const auto& m : store.list_models()) store.load_model(m.id);
         for (const auto& a : store.list_analyses()) store.load_analysis(a.id);
         store.list_actions();
