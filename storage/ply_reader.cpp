@@ -422,8 +422,9 @@ PlyModel parse_ply(std::string_view bytes, const std::string& source) {
           mesh.colours.push_back(c);
         }
         if (texcoords) {
-          const Eigen::Vector2f t(static_cast<float>(values[*u]), static_cast<float>(values[*v]));
-          if (!t.allFinite())
+          const std::array<float, 2> t{static_cast<float>(values[*u]),
+                                       static_cast<float>(values[*v])};
+          if (!std::isfinite(t[0]) || !std::isfinite(t[1]))
             throw InputError(source, record + ": a texture coordinate is not finite");
           mesh.texcoords.push_back(t);
         }
@@ -432,7 +433,7 @@ PlyModel parse_ply(std::string_view bytes, const std::string& source) {
         for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
           const std::array<int, 3> tri{polygon[0], polygon[k], polygon[k + 1]};
           if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;  // no area
-          mesh.triangles.push_back(tri);
+          mesh.faces.push_back(tri);
         }
     }
   }
@@ -454,7 +455,7 @@ PlyModel parse_ply(std::string_view bytes, const std::string& source) {
   return out;
 }
 
-PlyModel load_ply(const std::filesystem::path& file) {
+PlyModel read_ply_mesh(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string(), "cannot open the file");
   std::ostringstream s;

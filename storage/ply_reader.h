@@ -21,18 +21,18 @@
 
 #include <Eigen/Core>
 
-#include "core/photogrammetry/surface_mesh.h"
+#include "storage/project_records.h"
 
 namespace rockface::storage {
 
 struct PlyModel {
-  photogrammetry::SurfaceMesh mesh;                 // datum-relative; pixels left empty
+  Mesh mesh;  // vertices relative to `datum`; faces are triangles
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();  // absolute = mesh vertex + datum
   std::string texture_file;                         // "comment TextureFile ..." when present
 };
 
 // `bytes` is the whole file; `source` names it in errors.
 PlyModel parse_ply(std::string_view bytes, const std::string& source);
-PlyModel load_ply(const std::filesystem::path& file);
+PlyModel read_ply_mesh(const std::filesystem::path& file);
 
 }  // namespace rockface::storage
