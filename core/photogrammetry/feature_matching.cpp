@@ -27,11 +27,6 @@ cv::Mat to_grey(const cv::Mat& image) {
 
 namespace {
 
-struct Detected {
-  std::vector<cv::KeyPoint> keypoints;
-  cv::Mat descriptors;
-};
-
 // OpenCV's SIFT doubles its input and keeps about a dozen float images of
 // that size: ~45 bytes per input pixel, 1.9 GB for the precise preset's
 // 4000 px working width. Larger images are detected tile by tile, which
@@ -42,10 +37,11 @@ constexpr double kMaxSiftTilePixels = 2.0e6;
 // ~10.6 sigma) see the same pixels as in one piece up to sigma ~9 px.
 constexpr int kSiftTileMargin = 96;
 
-Detected detect(const cv::Mat& image, double scale, const ReconstructionPreset& preset) {
+ImageFeatures detect(const cv::Mat& image, double scale, const ReconstructionPreset& preset) {
   cv::Mat grey = to_grey(image);
   if (scale != 1.0) cv::resize(grey, grey, cv::Size(), scale, scale, cv::INTER_AREA);
-  Detected d;
+  ImageFeatures d;
+  d.scale = scale;
   const double pixels = static_cast<double>(grey.total());
   const int tiles = static_cast<int>(std::ceil(std::sqrt(pixels / kMaxSiftTilePixels)));
   if (tiles <= 1) {
@@ -105,13 +101,15 @@ std::vector<int> ratio_matches(const cv::Mat& query, const cv::Mat& train, doubl
 
 }  // namespace
 
-FeatureMatches match_features(const cv::Mat& left, const cv::Mat& right,
-                              const ReconstructionPreset& preset, Progress& progress) {
-  progress.step("features: left image", 0.0);
-  const double scale = working_scale(std::max(left.cols, right.cols), preset.feature_max_width);
-  const Detected l = detect(left, scale, preset);
-  progress.step("features: right image", 0.3);
-  const Detected r = detect(right, scale, preset);
+ImageFeatures detect_features(const cv::Mat& image, double scale,
+                              const ReconstructionPreset& preset) {
+  return detect(image, scale, preset);
+}
+
+namespace {
+
+FeatureMatches match(const ImageFeatures& l, const ImageFeatures& r,
+                     const ReconstructionPreset& preset, Progress& progress) {
   progress.step("features: matching", 0.6);
   const std::vector<int> lr = ratio_matches(l.descriptors, r.descriptors, preset.ratio_test);
   progress.step("features: mutual check", 0.9);
@@ -120,19 +118,37 @@ FeatureMatches match_features(const cv::Mat& left, const cv::Mat& right,
   FeatureMatches out;
   out.keypoints_left = static_cast<int>(l.keypoints.size());
   out.keypoints_right = static_cast<int>(r.keypoints.size());
-  const double inv = 1.0 / scale;
   // Pixel centres map as (x + 0.5) / s - 0.5 between scales (OpenCV's resize convention).
-  auto full = [inv](const cv::Point2f& p) {
+  auto full = [](const cv::Point2f& p, double scale) {
+    const double inv = 1.0 / scale;
     return Eigen::Vector2d((p.x + 0.5) * inv - 0.5, (p.y + 0.5) * inv - 0.5);
   };
   for (std::size_t i = 0; i < lr.size(); ++i) {
     const int j = lr[i];
     if (j < 0 || rl[j] != static_cast<int>(i)) continue;  // mutual check
-    out.left.push_back(full(l.keypoints[i].pt));
-    out.right.push_back(full(r.keypoints[j].pt));
+    out.left.push_back(full(l.keypoints[i].pt, l.scale));
+    out.right.push_back(full(r.keypoints[j].pt, r.scale));
   }
   progress.step("features", 1.0);
   return out;
+}
+
+}  // namespace
+
+FeatureMatches match_detected(const ImageFeatures& left, const ImageFeatures& right,
+                              const ReconstructionPreset& preset) {
+  NoProgress quiet;
+  return match(left, right, preset, quiet);
+}
+
+FeatureMatches match_features(const cv::Mat& left, const cv::Mat& right,
+                              const ReconstructionPreset& preset, Progress& progress) {
+  progress.step("features: left image", 0.0);
+  const double scale = working_scale(std::max(left.cols, right.cols), preset.feature_max_width);
+  const ImageFeatures l = detect(left, scale, preset);
+  progress.step("features: right image", 0.3);
+  const ImageFeatures r = detect(right, scale, preset);
+  return match(l, r, preset, progress);
 }
 
 }  // namespace rockface::photogrammetry

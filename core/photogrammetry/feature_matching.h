@@ -24,6 +24,23 @@ struct FeatureMatches {
 FeatureMatches match_features(const cv::Mat& left, const cv::Mat& right,
                               const ReconstructionPreset& preset, Progress& progress);
 
+// The SIFT keypoints and descriptors of one photograph, detected once and
+// matched against several others (multi-image registration) without
+// detecting again. Keypoints are in the pixels of the image scaled by `scale`.
+struct ImageFeatures {
+  std::vector<cv::KeyPoint> keypoints;
+  cv::Mat descriptors;
+  double scale = 1;
+};
+
+// Detects at `scale` (working_scale(width, preset.feature_max_width) for one
+// image on its own); match_features detects both images at the scale of the
+// wider one and then matches as match_detected does.
+ImageFeatures detect_features(const cv::Mat& image, double scale,
+                              const ReconstructionPreset& preset);
+FeatureMatches match_detected(const ImageFeatures& left, const ImageFeatures& right,
+                              const ReconstructionPreset& preset);
+
 // 8-bit single-channel version of an 8-bit grey/BGR/BGRA image.
 cv::Mat to_grey(const cv::Mat& image);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <random>
 
 #include <Eigen/Geometry>
@@ -234,14 +235,21 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
   out.images[0].to_face = identity();
   placed[0] = true;
 
-  // Tie points of every (placed, slave) pair are matched once.
+  // SIFT is detected once per photograph (each at its own working scale);
+  // tie points of every (placed, slave) pair are matched once.
+  std::vector<std::optional<ImageFeatures>> features(n);
+  auto features_of = [&](std::size_t i) -> const ImageFeatures& {
+    if (!features[i])
+      features[i] = detect_features(
+          images[i].photograph, working_scale(images[i].photograph.cols, preset.feature_max_width),
+          preset);
+    return *features[i];
+  };
   std::map<std::pair<std::size_t, std::size_t>, RawTiePoints> matched;
   auto tie_points = [&](std::size_t ref, std::size_t slave) -> TiePoints {
     auto [it, fresh] = matched.try_emplace({ref, slave});
     if (fresh) {
-      NoProgress quiet;
-      const FeatureMatches m =
-          match_features(images[ref].photograph, images[slave].photograph, preset, quiet);
+      const FeatureMatches m = match_detected(features_of(ref), features_of(slave), preset);
       for (std::size_t k = 0; k < m.size(); ++k) {
         const int a = grids[ref].nearest(m.left[k]);
         const int b = grids[slave].nearest(m.right[k]);

@@ -1,6 +1,7 @@
 // Every parser a user feeds, fed mutated files (tests/fuzz/mutator.h): scene
-// JSON, picks JSON, camera JSON, control-point CSV, the reference line, a capture's EXIF
-// and a project file. A parser may accept an input or refuse it with a
+// JSON, picks JSON, camera JSON, control-point CSV, the reference line, a PLY
+// model, a capture's EXIF and a project file. A parser may accept an input or
+// refuse it with a
 // rockface::Error (InputError naming the file and field); it may not crash,
 // hang or let another exception out (a raw nlohmann or std:: message is not
 // what the user should read). Failing inputs are written to
@@ -30,6 +31,7 @@
 #include "core/photogrammetry/registration.h"
 #include "storage/camera_json.h"
 #include "storage/picks.h"
+#include "storage/ply_reader.h"
 #include "storage/project_store.h"
 #include "storage/scene.h"
 #include "tests/fuzz/mutator.h"
@@ -69,9 +71,11 @@ std::uint64_t fuzz_seed() {
   return s ? std::strtoull(s, nullptr, 10) : 1;
 }
 
+// The CI count of a parser, times ROCKFACE_FUZZ_ITERATIONS (a factor, 1
+// when unset) for a longer run by hand.
 long iterations(long ci_default) {
   const char* s = std::getenv("ROCKFACE_FUZZ_ITERATIONS");
-  return s ? std::max(1L, std::atol(s)) : ci_default;
+  return s ? ci_default * std::max(1L, std::atol(s)) : ci_default;
 }
 
 // What became of one input: accepted, refused with a rockface::Error, or
@@ -166,6 +170,13 @@ TEST(Fuzz, ReferenceLine) {
        });
 }
 
+TEST(Fuzz, PlyModel) {
+  // The header is text (counts, types, names), the body ascii or binary:
+  // the text mutations (extreme numbers) reach the element counts.
+  fuzz("ply", files_in(kCorpus / "ply"), true, iterations(100000),
+       [](const std::string& in) { rockface::storage::parse_ply(in, "fuzz.ply"); });
+}
+
 namespace {
 
 // A small JPEG of the kind a capture folder holds, with every EXIF field
@@ -204,7 +215,9 @@ TEST(Fuzz, CaptureExif) {
 
 namespace {
 
-// A small project with a record of each kind, as one file (checkpointed).
+// A small project with a record of each kind (camera body, calibration,
+// capture, model, measurements, joint set and joint, analysis), as one file
+// (checkpointed).
 std::string sample_project_file(const fs::path& dir) {
   namespace st = rockface::storage;
   const fs::path file = dir / "seed.rockface";
@@ -213,7 +226,22 @@ std::string sample_project_file(const fs::path& dir) {
     info.name = "fuzz seed";
     auto store = st::ProjectStore::create(file, info);
     const auto visit = store.begin_visit("tablet", "a note");
+    st::CameraBody body;
+    body.make = "Nikon";
+    body.model = "D7500";
+    body.serial = "3012345";
+    st::Calibration cal;
+    cal.body_id = store.save_camera_body(body);
+    cal.intrinsics.width = 64;
+    cal.intrinsics.height = 48;
+    cal.intrinsics.fx = cal.intrinsics.fy = 80;
+    cal.intrinsics.cx = 31.5;
+    cal.intrinsics.cy = 23.5;
+    cal.intrinsics.distortion = {-0.1, 0.01, 0, 0, 0};
+    cal.focal_setting_mm = 24;
+    cal.method = "chessboard:9x6:0.025";
     st::Capture c;
+    c.calibration_id = store.save_calibration(cal);
     c.visit_id = visit;
     c.label = "pair 1";
     const std::string jpeg = jpeg_with_exif(3);
@@ -228,7 +256,42 @@ std::string sample_project_file(const fs::path& dir) {
     m.mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     m.mesh.faces = {{0, 1, 2}};
     m.mesh.colours = {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}};
-    store.save_model(m);
+    m.id = store.save_model(m);
+    st::Measurement trace;
+    trace.visit_id = visit;
+    trace.model_id = m.id;
+    trace.label = "T1";
+    trace.joint_label = "J1";
+    trace.points = {{0, 0, 0}, {0.5, 0.1, 0.2}, {1, 0.2, 0.5}};
+    trace.dip_deg = 60;
+    trace.dipdir_deg = 120;
+    trace.fit_rms_m = 0.002;
+    st::Measurement area = trace;
+    area.kind = st::Measurement::Kind::area;
+    area.label = "A1";
+    area.rock_side = "lower";
+    const auto measured = store.save_measurements(visit, {trace, area});
+    st::JointSet set;
+    set.label = "S1";
+    set.dip_deg = 60;
+    set.dipdir_deg = 120;
+    set.fisher_k = 40;
+    set.count = 1;
+    set.alpha95_deg = 5;
+    set.spacing_m = 0.4;
+    set.note = "one trace leaves the mapped area";
+    st::Joint joint;
+    joint.label = "J1";
+    joint.set_label = "S1";
+    joint.dip_deg = 60;
+    joint.dipdir_deg = 120;
+    joint.point = Eigen::Vector3d(0.5, 0.1, 0.2);
+    joint.friction_deg = 30;
+    joint.measurement_id = measured.front();
+    joint.source = "trace T1";
+    joint.type = "trace";
+    joint.persistence_m = 1.2;
+    store.save_joints(visit, {set}, {joint});
     st::AnalysisRun a;
     a.visit_id = visit;
     a.preset = "fast";
@@ -266,8 +329,15 @@ TEST(Fuzz, ProjectFile) {
         read_only.read_only = true;  // a damaged file must not be written to
         auto store = rockface::storage::ProjectStore::open(file, read_only);
         store.project();
-        for (const auto& v : store.list_visits()) (void)v;
-        for (const auto& c : store.list_captures()) store.load_capture(c.id);
+        for (const auto& v : store.list_visits()) store.list_joint_sets(v.id);
+        store.list_camera_bodies();
+        for (const auto& c : store.list_calibrations()) store.load_calibration(c.id);
+        for (const auto& c : store.list_captures()) {
+          store.load_capture(c.id);
+          store.load_capture_image(c.id, "left");
+        }
+        store.list_measurements();
+        store.list_joints();
         for (const auto& m : store.list_models()) store.load_model(m.id);
         for (const auto& a : store.list_analyses()) store.load_analysis(a.id);
         store.list_actions();

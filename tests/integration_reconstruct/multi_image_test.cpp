@@ -15,7 +15,7 @@
 #include "core/photogrammetry/face_traces.h"
 #include "core/photogrammetry/multi_image_registration.h"
 #include "core/photogrammetry/pixel_lookup.h"
-#include "tests/integration_reconstruct/synthetic_truth.h"
+#include "tests/integration_reconstruct/multi_image_face.h"
 
 namespace rp = rockface::photogrammetry;
 namespace cam = rockface::camera;
@@ -27,63 +27,13 @@ namespace {
 
 constexpr double kStationOffsets[3] = {0.0, -2.0, 2.0};  // master first
 
-// The face with two joints: J1 nearly horizontal at ~1.6 m, across all three
-// pairs' photographs and above the pole; J2 steep at x ~ -2, in the master's
-// and the western pair's.
+using Pair = rockface::testing::FacePair;
+using rockface::testing::distance_to_face;
+using rockface::testing::face_image;
+using rockface::testing::photograph_and_reconstruct;
+
 cam::SyntheticScene face_from(double x_offset) {
-  cam::SyntheticScene s = rockface::testing::synthetic_face(1200, 800);
-  // A longer focal length: each pair sees only part of the face.
-  s.camera.fx = s.camera.fy = 2200;
-  // A shorter pole, so both targets are in the narrower view, below J1.
-  s.range_pole = cam::SyntheticRangePole{{0.6, 7.0, -0.3}, 1.0, 0.25};
-  const auto& mid = synthetic_facets()[1];
-  s.reference_line = {{Eigen::Vector3d(-1.2, facet_y(mid, -1.2, -0.1), -0.1),
-                       Eigen::Vector3d(0.3, facet_y(mid, 0.3, 0.1), 0.1)}};
-  for (auto& st : s.stations) {
-    st.position.x() += x_offset;
-    st.look_at.x() += x_offset;
-  }
-  const auto normal = [](double dip, double dipdir) {
-    return rockface::geometry::plane_normal(
-        {rockface::deg_to_rad(dip), rockface::deg_to_rad(dipdir)});
-  };
-  s.joints.push_back({"J1", normal(8, 180), {0.0, 10.0, 1.6}});
-  s.joints.push_back({"J2", normal(80, 100), {-2.0, 10.0, 0.0}});
-  return s;
-}
-
-struct Pair {
-  cam::SyntheticScene scene;
-  cam::SyntheticRender render;
-  rp::ReconstructionResult result;
-};
-
-Pair photograph_and_reconstruct(const cam::SyntheticScene& scene, bool master) {
-  rockface::NoProgress progress;
-  Pair p{scene, cam::render_scene(scene, progress), {}};
-  const rp::RegistrationSources sources =
-      master ? rockface::testing::pole_and_compass(scene, p.render, 0.0)
-             : rp::RegistrationSources{};
-  p.result = rp::reconstruct(p.render.images[0], p.render.images[1], p.render.intrinsics,
-                             p.render.intrinsics, rp::preset_standard(), sources, progress);
-  return p;
-}
-
-rp::FaceImage face_image(const Pair& p, const std::string& name) {
-  return {name, p.render.images[0], p.result.mesh, p.result.accuracy.sigma_z};
-}
-
-// Distance of a scene-frame point to the true face: the facet whose East
-// extent holds it (points within 0.1 m of a facet edge are left out: there
-// the nearest facet is ambiguous).
-std::optional<double> distance_to_face(const Eigen::Vector3d& w) {
-  for (const auto& f : synthetic_facets()) {
-    if (w.x() < f.x_from + 0.1 || w.x() > f.x_to - 0.1) continue;
-    const Eigen::Vector3d n = rockface::testing::facet_normal(f);
-    const Eigen::Vector3d on(w.x(), facet_y(f, w.x(), w.z()), w.z());
-    return std::abs(n.dot(w - on));
-  }
-  return std::nullopt;
+  return rockface::testing::multi_image_face(x_offset);
 }
 
 class MultiImage : public ::testing::Test {
@@ -103,13 +53,8 @@ class MultiImage : public ::testing::Test {
     for (int k = 0; k < 3; ++k) out.push_back(face_image((*pairs_)[k], names[k]));
     return out;
   }
-  // Face frame -> scene frame: the master's registration is a pure shift
-  // from the scene frame when it is right (pole vertical, compass north), so
-  // the shift is the lower target's true centre minus its registered one.
-  static Eigen::Vector3d origin() {
-    const Pair& m = (*pairs_)[0];
-    return m.render.targets[0].centre - m.result.model_to_world.apply(m.result.targets->model[0]);
-  }
+  // Face frame -> scene frame (multi_image_face.h).
+  static Eigen::Vector3d origin() { return rockface::testing::face_origin((*pairs_)[0]); }
   static std::vector<Pair>* pairs_;
 };
 std::vector<Pair>* MultiImage::pairs_ = nullptr;
