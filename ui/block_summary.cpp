@@ -100,7 +100,10 @@ void add_remote_axis(std::vector<std::string>& lines, const nlohmann::json& repo
   if (!axis) return;
   const auto starts = number(*axis, "starts"), hits = number(*axis, "hits");
   std::string line = axis->value("found", false) ? "Remote axis: found" : "Remote axis: none found";
-  if (starts && hits) line += format(" (%.0f of %.0f starts)", *hits, *starts);
+  if (starts && *starts == 0)
+    line = "Remote axis: not searched, the block already rotates about a corner or an edge";
+  else if (starts && hits)
+    line += format(" (%.0f of %.0f starts)", *hits, *starts);
   lines.push_back(line);
 }
 

@@ -73,6 +73,11 @@ TEST(BlockView, SummaryStatesVerdictModeDirectionSizeAndRotationInWords) {
       << text;
   EXPECT_NE(text.find("Remote axis: found (9 of 64 starts)"), std::string::npos) << text;
   EXPECT_NE(text.find("J1 2.50"), std::string::npos) << text;
+  // A block that already rotates about a corner is not searched for a remote axis.
+  b.report_json = R"({"remote_axis": {"found": true, "starts": 0, "hits": 0}})";
+  const auto skipped = make_block_view(b, Eigen::Vector3d::Zero()).summary;
+  EXPECT_EQ(skipped.back(),
+            "Remote axis: not searched, the block already rotates about a corner or an edge");
 }
 
 TEST(BlockView, SummaryOfAMalformedReportKeepsWhatTheColumnsSay) {
