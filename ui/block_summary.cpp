@@ -113,6 +113,8 @@ void add_mechanics(std::vector<std::string>& lines, const nlohmann::json& report
   std::string line = "Equilibrium path: ";
   if (const auto fos = number(*m, "fos_limit_point"))
     line += format("limit point at load factor %.2f", *fos);
+  else if (const auto* outcome = field(*m, "outcome"); outcome && outcome->is_string())
+    line += outcome->get<std::string>();  // e.g. "no limit point within the step budget"
   else
     line += "no limit point reached";
   if (const auto* s = field(*m, "stability"); s && s->is_string())

@@ -73,6 +73,13 @@ TEST(BlockView, SummaryStatesVerdictModeDirectionSizeAndRotationInWords) {
       << text;
   EXPECT_NE(text.find("Remote axis: found (9 of 64 starts)"), std::string::npos) << text;
   EXPECT_NE(text.find("J1 2.50"), std::string::npos) << text;
+  // The equilibrium path, when the scene asked for it: its limit point, or why there is none.
+  b.report_json = R"({"mechanics": {"fos_limit_point": 0.71, "stability": "divergence"}})";
+  EXPECT_EQ(make_block_view(b, Eigen::Vector3d::Zero()).summary.back(),
+            "Equilibrium path: limit point at load factor 0.71, divergence");
+  b.report_json = R"({"mechanics": {"fos_limit_point": null, "outcome": "fails under its loads"}})";
+  EXPECT_EQ(make_block_view(b, Eigen::Vector3d::Zero()).summary.back(),
+            "Equilibrium path: fails under its loads");
   // A block that already rotates about a corner is not searched for a remote axis.
   b.report_json = R"({"remote_axis": {"found": true, "starts": 0, "hits": 0}})";
   const auto skipped = make_block_view(b, Eigen::Vector3d::Zero()).summary;
