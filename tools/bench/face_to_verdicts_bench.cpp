@@ -28,11 +28,14 @@
 //   rotation_ms   corner and edge rotatability of the finite blocks
 //   remote_ms     remote-axis search (the preset's starts, early stop) of the
 //                 finite blocks that cannot rotate about a corner or an edge
+//   remote_all_ms the same search on every finite block (no skip)
+// Each the fastest of 10 runs (the machine is shared).
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -156,46 +159,18 @@ std::string stage_of(const std::string& line, const std::string& current) {
 
 struct VerdictTimes {
   double trace_map_ms = 0, blocks_ms = 0, rotation_ms = 0, remote_ms = 0;
-  int blocks = 0, finite = 0, searched = 0, remote_starts = 0;
+  double remote_all_ms = 0;
+  int blocks = 0, finite = 0, searched = 0, remote_starts = 0, remote_all_starts = 0;
 };
 
-// The visit's trace map analysed stage by stage, on one core.
-VerdictTimes verdict_stages(const fs::path& project, const std::string& preset) {
-  namespace rs = rockface::storage;
+// One timed run of the verdict stages on the visit's inputs.
+VerdictTimes verdict_stages_once(const std::vector<rockface::faces::PatchInput>& patches,
+                                 const std::vector<rockface::faces::TraceInput>& traces,
+                                 const rockface::storage::Scene& scene, double tol,
+                                 double uncertainty, const Eigen::Vector3d& datum,
+                                 const std::string& preset) {
   namespace rf = rockface::faces;
   namespace rk = rockface::kinematics;
-  rs::OpenOptions open;
-  open.read_only = true;
-  rs::ProjectStore store = rs::ProjectStore::open(project, open);
-  const rs::Scene scene =
-      rs::parse_scene(rs::make_scene_json(rs::load_scene_source(store)).dump(), project.string());
-  const Eigen::Vector3d datum = scene.has_datum ? scene.datum : scene.patches.at(0).polygon.at(0);
-  const double tol = std::max(scene.analysis.snap_tolerance, 1e-6);
-  const double uncertainty = rockface::deg_to_rad(scene.analysis.orientation_uncertainty_deg);
-  std::vector<rf::PatchInput> patches;
-  for (const auto& p : scene.patches) {
-    rf::PatchInput in{p.id, {}};
-    for (const auto& x : p.polygon) in.polygon.push_back(x - datum);
-    patches.push_back(std::move(in));
-  }
-  std::vector<rf::TraceInput> traces;
-  for (const auto& t : scene.traces) {
-    rf::TraceInput in;
-    in.id = t.id;
-    if (t.joint) {
-      const rs::SceneJoint* j = scene.joint(*t.joint);
-      rf::TraceJoint tj;
-      tj.index = scene.plane_index(j->id);
-      tj.id = j->id;
-      tj.orientation = {rockface::deg_to_rad(j->dip), rockface::deg_to_rad(j->dipdir)};
-      if (j->friction) tj.friction = rockface::deg_to_rad(*j->friction);
-      tj.cohesion = j->cohesion.value_or(0.0);
-      in.joint = tj;
-    }
-    for (const auto& x : t.points) in.points.push_back(x - datum);
-    traces.push_back(std::move(in));
-  }
-
   VerdictTimes out;
   auto t0 = Clock::now();
   const rf::FreeSurface surface = rf::FreeSurface::build(patches, tol);
@@ -242,7 +217,71 @@ VerdictTimes verdict_stages(const fs::path& project, const std::string& preset) 
     out.remote_starts += r.starts;
   }
   out.remote_ms = 1000 * seconds_since(t0);
+
+  // What the search would cost without the skip: every finite block searched
+  // (the preset's starts, early stop as in the report).
+  t0 = Clock::now();
+  for (const auto& in : inputs) {
+    const rk::RemoteAxisResult r = rk::search_remote_axis(in, {starts, 1, true});
+    benchmark::DoNotOptimize(r.found);
+    out.remote_all_starts += r.starts;
+  }
+  out.remote_all_ms = 1000 * seconds_since(t0);
   return out;
+}
+
+// The visit's trace map analysed stage by stage, on one core.
+VerdictTimes verdict_stages(const fs::path& project, const std::string& preset) {
+  namespace rs = rockface::storage;
+  namespace rf = rockface::faces;
+  namespace rk = rockface::kinematics;
+  rs::OpenOptions open;
+  open.read_only = true;
+  rs::ProjectStore store = rs::ProjectStore::open(project, open);
+  const rs::Scene scene =
+      rs::parse_scene(rs::make_scene_json(rs::load_scene_source(store)).dump(), project.string());
+  const Eigen::Vector3d datum = scene.has_datum ? scene.datum : scene.patches.at(0).polygon.at(0);
+  const double tol = std::max(scene.analysis.snap_tolerance, 1e-6);
+  const double uncertainty = rockface::deg_to_rad(scene.analysis.orientation_uncertainty_deg);
+  std::vector<rf::PatchInput> patches;
+  for (const auto& p : scene.patches) {
+    rf::PatchInput in{p.id, {}};
+    for (const auto& x : p.polygon) in.polygon.push_back(x - datum);
+    patches.push_back(std::move(in));
+  }
+  std::vector<rf::TraceInput> traces;
+  for (const auto& t : scene.traces) {
+    rf::TraceInput in;
+    in.id = t.id;
+    if (t.joint) {
+      const rs::SceneJoint* j = scene.joint(*t.joint);
+      rf::TraceJoint tj;
+      tj.index = scene.plane_index(j->id);
+      tj.id = j->id;
+      tj.orientation = {rockface::deg_to_rad(j->dip), rockface::deg_to_rad(j->dipdir)};
+      if (j->friction) tj.friction = rockface::deg_to_rad(*j->friction);
+      tj.cohesion = j->cohesion.value_or(0.0);
+      in.joint = tj;
+    }
+    for (const auto& x : t.points) in.points.push_back(x - datum);
+    traces.push_back(std::move(in));
+  }
+
+  // The fastest of kRepeats runs of each stage: the machine is shared, and
+  // the least disturbed run is the closest to the stage's own cost.
+  constexpr int kRepeats = 10;
+  VerdictTimes best;
+  for (int rep = 0; rep < kRepeats; ++rep) {
+    const VerdictTimes t =
+        verdict_stages_once(patches, traces, scene, tol, uncertainty, datum, preset);
+    if (rep == 0) best = t;
+    best.trace_map_ms = std::min(best.trace_map_ms, t.trace_map_ms);
+    best.blocks_ms = std::min(best.blocks_ms, t.blocks_ms);
+    best.rotation_ms = std::min(best.rotation_ms, t.rotation_ms);
+    best.remote_ms = std::min(best.remote_ms, t.remote_ms);
+    best.remote_all_ms = std::min(best.remote_all_ms, t.remote_all_ms);
+  }
+  return best;
 }
 
 void face_to_verdicts(benchmark::State& state, const std::string& preset) {
@@ -288,21 +327,22 @@ void face_to_verdicts(benchmark::State& state, const std::string& preset) {
   state.counters["finite"] = v.finite;
   state.counters["searched"] = v.searched;
   state.counters["remote_starts"] = v.remote_starts;
+  state.counters["remote_all_ms"] = v.remote_all_ms;
+  state.counters["remote_all_starts"] = v.remote_all_starts;
 }
 
 }  // namespace
 
-BENCHMARK_CAPTURE(face_to_verdicts, fast, "fast")
-    ->Iterations(1)
-    ->Unit(benchmark::kSecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(face_to_verdicts, standard, "standard")
-    ->Iterations(1)
-    ->Unit(benchmark::kSecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(face_to_verdicts, precise, "precise")
-    ->Iterations(1)
-    ->Unit(benchmark::kSecond)
-    ->UseRealTime();
-
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  for (const char* preset : {"fast", "standard", "precise"})
+    benchmark::RegisterBenchmark(
+        (std::string("face_to_verdicts/") + preset).c_str(),
+        [preset](benchmark::State& state) { face_to_verdicts(state, preset); })
+        ->Iterations(1)
+        ->Unit(benchmark::kSecond)
+        ->UseRealTime();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
