@@ -114,6 +114,11 @@ ReplayRun run_replay(const std::string& preset, const fs::path& project) {
   if (::pipe(fds) != 0) return run;
   const auto t0 = Clock::now();
   const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return run;
+  }
   if (pid == 0) {
     ::dup2(fds[1], 2);
     const int null = ::open("/dev/null", O_WRONLY);
@@ -344,5 +349,6 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
+  fs::remove_all(work_dir());  // the projects (the precise one holds a 4 M-point model)
   return 0;
 }
