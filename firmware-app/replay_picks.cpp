@@ -82,8 +82,15 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
     std::map<std::string, std::size_t> index;
     for (std::size_t i = 0; i < out.measured.traces.size(); ++i)
       index[out.measured.traces[i].m.id] = i;
+    std::map<std::string, int> image_of;
+    for (const auto& p : pieces) image_of[p.label] = p.image;
     for (auto& face : photogrammetry::traces_in_face_frame(more->images, more->face, pieces)) {
-      if (face.pieces.size() < 2) continue;
+      // Pieces in one photograph are traces the geologist drew apart (as
+      // for a visit of one pair); pieces in different pairs' photographs
+      // are the one trace crossing from one image to the next.
+      std::set<int> images;
+      for (const auto& id : face.pieces) images.insert(image_of.at(id));
+      if (images.size() < 2) continue;
       JoinedTrace j;
       std::vector<Eigen::Vector3d> points, normals;
       for (const auto& id : face.pieces) {
@@ -173,6 +180,7 @@ void join_trace_records(const ReplayPicks& picks, std::vector<storage::Measureme
       m.note = "joined from";
       for (const auto& id : j.face.pieces) m.note += " " + id;
       m.note += " (the pixels are the first piece's)";
+      if (!j.plane.problem.empty()) m.note += "; " + j.plane.problem;
       kept.push_back(std::move(m));
     }
     records = std::move(kept);

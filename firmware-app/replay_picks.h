@@ -8,9 +8,9 @@
 
 #include <opencv2/core.hpp>
 
+#include "core/photogrammetry/face_traces.h"
 #include "core/photogrammetry/preset.h"
 #include "core/photogrammetry/reconstruction.h"
-#include "core/photogrammetry/face_traces.h"
 #include "firmware-app/measure_picks.h"
 #include "firmware-app/replay_more_pairs.h"
 #include "storage/project_records.h"
