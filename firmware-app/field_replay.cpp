@@ -1,5 +1,6 @@
 #include "firmware-app/field_replay.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -75,6 +76,9 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   if (from_scene) {
     scene = storage::load_scene(request.source);
     synthetic = synthetic_scene_from_scene(*scene);
+    // A pick naming a pair the scene does not photograph: bad input before
+    // anything is captured or stored.
+    check_pick_pairs(*scene, std::max<std::size_t>(1, synthetic->pairs.size()));
     cam = camera::MockCamera::synthetic(synthetic->scene, spool.string());
     intrinsics = camera::rendered_intrinsics(synthetic->scene);
     intrinsics.body = "rockface synthetic camera";
@@ -153,14 +157,15 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
                    {left.image.saved_path, right.image.saved_path, preset_name,
                     sources.range_pole_m, sources.baseline_m, sources.north});
   out.model_id = store.save_model(model);
+  std::optional<MorePairsOutcome> more;
   if (synthetic && synthetic->pairs.size() > 1) {
-    const MorePairsOutcome more = replay_more_pairs(
+    more = replay_more_pairs(
         store, {out.visit_id, calibration_id, &*synthetic, intrinsics, preset_name, preset, spool},
         left_image, rec, progress);
-    out.more_model_ids = more.model_ids;
-    for (const auto& r : more.face.images)
+    out.more_model_ids = more->model_ids;
+    for (const auto& r : more->face.images)
       if (r.reference >= 0)
-        out.guidance.push_back(r.name + " registered to " + more.face.images[r.reference].name +
+        out.guidance.push_back(r.name + " registered to " + more->face.images[r.reference].name +
                                ": " + std::to_string(r.tie_points) + " tie points, surface rms " +
                                std::to_string(r.surface_rms_m * 1000) + " mm");
   }
@@ -178,7 +183,8 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   std::optional<ReplayPicks> picked;
   if (scene->picks) {
     progress.step("measure", 0.75);
-    picked = measure_replay_picks(*scene, rec, intrinsics, preset, left_image, right_image);
+    picked = measure_replay_picks(*scene, rec, intrinsics, preset, left_image, right_image,
+                                  more ? &*more : nullptr);
     for (const auto& note : picked->notes) out.guidance.push_back(note);
   }
   storage::Scene analysed = picked ? picked->analysed : *scene;
@@ -206,10 +212,11 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     for (const auto& p : absolute) m.points.push_back(p - scene->datum);
     return m;
   };
-  if (picked)
+  if (picked) {
     measurements =
         measurement_records(picked->measured, out.visit_id, out.model_id, out.capture_id);
-  else
+    join_trace_records(*picked, measurements);
+  } else
     for (const auto& t : analysed.traces) {
       measurements.push_back(measured(storage::Measurement::Kind::trace, t.id, t.points));
       measurements.back().joint_label = t.joint.value_or("");

@@ -105,7 +105,9 @@ MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& c
       const measure::PhotoView& view = view_of(c, t.photo, where);
       require_in_image(view, t.pixels, where + ".pixels");
       mt.taps = t.pixels;
-      mt.m = measure::measure_trace(*c.picker, view, t.id, t.pixels, c.settings, where);
+      const auto own = c.pickers.find(t.photo);
+      const measure::MeshPicker& picker = own != c.pickers.end() ? *own->second : *c.picker;
+      mt.m = measure::measure_trace(picker, view, t.id, t.pixels, c.settings, where);
     } else {
       const measure::PhotoView& view = view_of(c, t.photo, where);
       const std::vector<Eigen::Vector2d> ends{(*t.ends)[0], (*t.ends)[1]};

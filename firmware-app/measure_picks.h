@@ -22,7 +22,10 @@ namespace rockface::app {
 struct MeasureContext {
   const measure::MeshPicker* picker = nullptr;      // on the mesh, datum-relative
   std::map<std::string, measure::PhotoView> views;  // "left", "right" where known
-  std::map<std::string, cv::Mat> photos;            // the photographs, for semi-automatic tracing
+  // Taps in a photograph named here are lifted onto this 3D image instead
+  // (a further stereo pair of the visit, registered into the same frame).
+  std::map<std::string, const measure::MeshPicker*> pickers;
+  std::map<std::string, cv::Mat> photos;  // the photographs, for semi-automatic tracing
   measure::MeasureSettings settings;
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();  // the picks' 3D points are absolute
   std::string source;                               // the picks' file, for messages

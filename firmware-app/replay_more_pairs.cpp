@@ -43,6 +43,7 @@ MorePairsOutcome replay_more_pairs(storage::ProjectStore& store, const MorePairs
   MorePairsOutcome out;
   std::vector<photogrammetry::FaceImage> images;
   images.push_back({pair_name(0), master_left, master.mesh, master.accuracy.sigma_z});
+  out.model_to_image.push_back(master.model_to_world);
 
   for (std::size_t k = 1; k < synthetic.pairs.size(); ++k) {
     PairProgress p(progress, pair_name(k));
@@ -74,6 +75,7 @@ MorePairsOutcome replay_more_pairs(storage::ProjectStore& store, const MorePairs
     const photogrammetry::ReconstructionResult rec = photogrammetry::reconstruct(
         left_image, right_image, request.intrinsics, request.intrinsics, request.preset, {}, p);
     images.push_back({pair_name(k), left_image, rec.mesh, rec.accuracy.sigma_z});
+    out.model_to_image.push_back(rec.model_to_world);
   }
 
   progress.step("registering the pairs to pair 1", 0.75);
@@ -98,6 +100,7 @@ MorePairsOutcome replay_more_pairs(storage::ProjectStore& store, const MorePairs
     model.registration.rms_m = r.surface_rms_m;
     out.model_ids.push_back(store.save_model(model));
   }
+  out.images = std::move(images);
   return out;
 }
 

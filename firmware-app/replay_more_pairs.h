@@ -30,6 +30,11 @@ struct MorePairsRequest {
 struct MorePairsOutcome {
   std::vector<storage::RecordId> capture_ids, model_ids;  // of the further pairs
   photogrammetry::FaceRegistration face;                  // every pair, the first included
+  // Every pair's 3D image in its own frame (the first's is the face frame)
+  // and the map from its camera model frame to that frame, for the views of
+  // its photographs (the face frame is then reached with face.images[k].to_face).
+  std::vector<photogrammetry::FaceImage> images;
+  std::vector<photogrammetry::Similarity> model_to_image;
 };
 
 // `master` is the first pair's reconstruction (its frame is the face frame)

@@ -1,15 +1,39 @@
 #include "firmware-app/replay_picks.h"
 
+#include <deque>
+#include <map>
+#include <set>
+
+#include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/measure/mesh_picker.h"
 
 namespace rockface::app {
 
+namespace {
+
+std::string further_photo(int pair) {
+  return "pair " + std::to_string(pair) + " left";
+}
+
+}  // namespace
+
+void check_pick_pairs(const storage::Scene& scene, std::size_t pairs) {
+  if (!scene.picks) return;
+  for (const auto& t : scene.picks->traces)
+    if (static_cast<std::size_t>(t.pair) > pairs)
+      throw InputError(scene.source + ": " + t.where + ".pair",
+                       "pair " + std::to_string(t.pair) + ", but imaging.stations gives " +
+                           std::to_string(pairs) + (pairs == 1 ? " pair" : " pairs"));
+}
+
 ReplayPicks measure_replay_picks(const storage::Scene& scene,
                                  const photogrammetry::ReconstructionResult& rec,
                                  const photogrammetry::CameraIntrinsics& intrinsics,
                                  const photogrammetry::ReconstructionPreset& preset,
-                                 const cv::Mat& left_image, const cv::Mat& right_image) {
+                                 const cv::Mat& left_image, const cv::Mat& right_image,
+                                 const MorePairsOutcome* more) {
+  check_pick_pairs(scene, more ? more->images.size() : 1);
   const measure::MeshPicker picker(rec.mesh);
   MeasureContext c;
   c.picker = &picker;
@@ -25,25 +49,93 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
   c.datum = scene.datum;
   c.source = scene.source;
 
+  // A further pair's taps: its left photograph, its 3D image moved into the
+  // face frame (the first pair's), so every measurement lands in that frame.
+  storage::Picks picks = *scene.picks;
+  std::deque<photogrammetry::SurfaceMesh> face_meshes;  // the pickers refer to them
+  std::deque<measure::MeshPicker> further_pickers;
+  for (auto& t : picks.traces) {
+    if (t.pair == 1) continue;
+    const std::string photo = further_photo(t.pair);
+    t.photo = photo;
+    if (c.views.count(photo)) continue;
+    const std::size_t k = static_cast<std::size_t>(t.pair - 1);
+    const photogrammetry::Similarity& to_face = more->face.images[k].to_face;
+    face_meshes.push_back(more->images[k].mesh);
+    face_meshes.back().transform(to_face.scale, to_face.R, to_face.t);
+    further_pickers.emplace_back(face_meshes.back());
+    c.pickers[photo] = &further_pickers.back();
+    c.views.emplace(photo, measure::left_view(more->model_to_image[k].then(to_face), intrinsics));
+    c.photos[photo] = more->images[k].photograph;
+  }
+
   ReplayPicks out;
-  out.measured = measure_picks(*scene.picks, c, scene.picks->sets);
+  out.measured = measure_picks(picks, c, scene.picks->sets);
+
+  // Pieces of one trace in different pairs' photographs become one trace.
+  if (more) {
+    std::vector<photogrammetry::ImageTrace> pieces;
+    for (const auto& t : picks.traces) {
+      if (t.pixels.empty() || t.photo == "right") continue;
+      pieces.push_back({t.id, t.joint, t.pair - 1, t.pixels});
+    }
+    std::map<std::string, std::size_t> index;
+    for (std::size_t i = 0; i < out.measured.traces.size(); ++i)
+      index[out.measured.traces[i].m.id] = i;
+    std::map<std::string, int> image_of;
+    for (const auto& p : pieces) image_of[p.label] = p.image;
+    for (auto& face : photogrammetry::traces_in_face_frame(more->images, more->face, pieces)) {
+      // Pieces in one photograph are traces the geologist drew apart (as
+      // for a visit of one pair); pieces in different pairs' photographs
+      // are the one trace crossing from one image to the next.
+      std::set<int> images;
+      for (const auto& id : face.pieces) images.insert(image_of.at(id));
+      if (images.size() < 2) continue;
+      JoinedTrace j;
+      std::vector<Eigen::Vector3d> points, normals;
+      for (const auto& id : face.pieces) {
+        const measure::TraceMeasurement& m = out.measured.traces[index.at(id)].m;
+        points.insert(points.end(), m.points.begin(), m.points.end());
+        normals.insert(normals.end(), m.surface_normals.begin(), m.surface_normals.end());
+      }
+      j.plane = measure::fit_trace_plane(points, normals, c.settings);
+      for (std::size_t k = 1; k < face.points.size(); ++k)
+        j.length += (face.points[k] - face.points[k - 1]).norm();
+      j.face = std::move(face);
+      std::string list;
+      for (const auto& id : j.face.pieces) list += (list.empty() ? "" : ", ") + id;
+      out.notes.push_back(j.face.label + ": one trace across the pairs' photographs (" + list +
+                          ")");
+      out.joined.push_back(std::move(j));
+    }
+  }
+  std::map<std::string, const JoinedTrace*> joined_by_piece;
+  for (const auto& j : out.joined)
+    for (const auto& id : j.face.pieces) joined_by_piece[id] = &j;
+
   out.analysed = scene;
   out.analysed.traces.clear();
   // The trace as the analysis sees it: the picks lifted onto the 3D image
   // (the taps, or the ends of a semi-automatic trace), a polyline with
   // few vertices, not the hundreds of noisy samples the plane was fitted to.
+  // A joined trace once, as its first piece, with the points of all pieces.
   for (std::size_t i = 0; i < out.measured.traces.size(); ++i) {
     const MeasuredTrace& t = out.measured.traces[i];
-    const storage::TracePick& pick = scene.picks->traces[i];
+    const storage::TracePick& pick = picks.traces[i];
     storage::SceneTrace st;
     st.id = t.m.id;
     if (!t.joint.empty()) st.joint = t.joint;
-    if (!pick.points.empty()) {
+    if (const auto j = joined_by_piece.find(st.id); j != joined_by_piece.end()) {
+      if (j->second->face.label != st.id) continue;
+      for (const auto& p : j->second->face.points) st.points.push_back(p + scene.datum);
+    } else if (!pick.points.empty()) {
       st.points = pick.points;
     } else {
       const measure::PhotoView& view = c.views.at(pick.photo);
+      const auto own = c.pickers.find(pick.photo);
+      const measure::MeshPicker& on = own != c.pickers.end() ? *own->second : picker;
       for (std::size_t k = 0; k < t.taps.size(); ++k)
-        if (const auto hit = picker.pick(view, t.taps[k], pick.where))
+        if (const auto hit = on.pick(view, t.taps[k], pick.where))
           st.points.push_back(hit->point + scene.datum);
     }
     out.analysed.traces.push_back(std::move(st));
@@ -62,6 +154,37 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
     }
   }
   return out;
+}
+
+void join_trace_records(const ReplayPicks& picks, std::vector<storage::Measurement>& records) {
+  for (const auto& j : picks.joined) {
+    const std::set<std::string> pieces(j.face.pieces.begin(), j.face.pieces.end());
+    std::vector<storage::Measurement> kept;
+    for (auto& m : records) {
+      if (m.kind != storage::Measurement::Kind::trace || !pieces.count(m.label)) {
+        kept.push_back(std::move(m));
+        continue;
+      }
+      if (m.label != j.face.label) continue;  // a further piece: in the first one now
+      m.points = j.face.points;
+      m.trace_length_m = j.length;
+      m.dip_deg.reset();
+      m.dipdir_deg.reset();
+      m.sigma_deg.reset();
+      if (j.plane.known) {
+        m.dip_deg = rad_to_deg(j.plane.orientation.dip);
+        m.dipdir_deg = rad_to_deg(j.plane.orientation.dipdir);
+        m.sigma_deg = rad_to_deg(j.plane.sigma);
+        m.fit_rms_m = j.plane.fit.rms_off_plane();
+      }
+      m.note = "joined from";
+      for (const auto& id : j.face.pieces) m.note += " " + id;
+      m.note += " (the pixels are the first piece's)";
+      if (!j.plane.problem.empty()) m.note += "; " + j.plane.problem;
+      kept.push_back(std::move(m));
+    }
+    records = std::move(kept);
+  }
 }
 
 }  // namespace rockface::app

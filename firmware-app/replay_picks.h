@@ -8,26 +8,52 @@
 
 #include <opencv2/core.hpp>
 
+#include "core/photogrammetry/face_traces.h"
 #include "core/photogrammetry/preset.h"
 #include "core/photogrammetry/reconstruction.h"
 #include "firmware-app/measure_picks.h"
+#include "firmware-app/replay_more_pairs.h"
+#include "storage/project_records.h"
 #include "storage/scene.h"
 
 namespace rockface::app {
 
+// Pieces of one joint trace tapped in the left photographs of different
+// pairs, joined into one trace (photogrammetry::traces_in_face_frame).
+struct JoinedTrace {
+  photogrammetry::FaceTrace face;  // its points (face frame) and pieces (pick ids)
+  measure::PlaneEstimate plane;    // fitted to the measured samples of all pieces
+  double length = 0;               // m, along the joined points
+};
+
 struct ReplayPicks {
-  MeasuredPicks measured;
+  MeasuredPicks measured;  // each pick, on its own pair's 3D image in the face frame
+  std::vector<JoinedTrace> joined;
   // The scene to analyse: its traces are the measured ones (the picks lifted
   // onto the 3D image), each joint that has traces gets their common plane.
   storage::Scene analysed;
   std::vector<std::string> notes;  // joints whose plane stays unknown, and why
 };
 
-// Throws InputError naming the scene file and the pick (picks.traces[2]...).
+// `more`: the visit's further pairs, registered (replay_more_pairs.h); null
+// for a visit of one pair. A pick naming pair k > 1 (picks.h) is measured on
+// that pair's 3D image moved into the face frame, through its left camera;
+// the analysed traces are the joined ones where pieces were joined.
+// Throws InputError naming the scene file and the pick (picks.traces[2]...),
+// also for a pick naming a pair the visit does not have.
 ReplayPicks measure_replay_picks(const storage::Scene& scene,
                                  const photogrammetry::ReconstructionResult& rec,
                                  const photogrammetry::CameraIntrinsics& intrinsics,
                                  const photogrammetry::ReconstructionPreset& preset,
-                                 const cv::Mat& left_image, const cv::Mat& right_image);
+                                 const cv::Mat& left_image, const cv::Mat& right_image,
+                                 const MorePairsOutcome* more = nullptr);
+
+// The pair named by every trace pick exists: `pairs` stereo pairs. Throws
+// InputError naming the scene file and the pick's `pair` field.
+void check_pick_pairs(const storage::Scene& scene, std::size_t pairs);
+
+// The measurement records with each joined trace's pieces replaced by one
+// trace record (the first piece's, with the joined points and plane).
+void join_trace_records(const ReplayPicks& picks, std::vector<storage::Measurement>& records);
 
 }  // namespace rockface::app

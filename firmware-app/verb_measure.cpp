@@ -197,6 +197,13 @@ int run(const MeasureOptions& o) {
   }
   if (!fs::exists(o.source)) throw InputError(o.source, "no such file");
   const storage::Picks picks = storage::load_picks(o.picks);
+  // One model, one pair: picks in a further pair's photograph belong to a
+  // replayed visit of several pairs (docs/scene-extensions.md).
+  for (const auto& t : picks.traces)
+    if (t.pair != 1)
+      throw InputError(o.picks + ": " + t.where + ".pair",
+                       "pair " + std::to_string(t.pair) +
+                           ", but `rockface measure` measures one 3D image (pair 1)");
   if (!sets) sets = o.sets == "auto" ? std::nullopt : picks.sets;
 
   const bool ply = fs::path(o.source).extension() == ".ply";

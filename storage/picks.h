@@ -19,7 +19,12 @@ struct TracePick {
   std::string joint;  // the joint it belongs to; empty when unassigned
   std::string where;  // its field path, for messages ("traces[2]")
   // Exactly one of the three forms:
-  std::string photo;                                   // "left" | "right" for pixels and ends
+  std::string photo;  // "left" | "right" for pixels and ends
+  // The stereo pair of the visit whose photograph `photo` is, counted from
+  // 1 (imaging.stations in pairs); only the first pair's right photograph
+  // and semi-automatic tracing are offered, a further pair takes taps in
+  // its left photograph.
+  int pair = 1;
   std::vector<Eigen::Vector2d> pixels;                 // taps along the trace
   std::vector<Eigen::Vector3d> points;                 // 3D points (absolute coordinates)
   std::optional<std::array<Eigen::Vector2d, 2>> ends;  // semi-automatic: trace between them

@@ -72,8 +72,16 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
         r.fail(path,
                "give exactly one of \"pixels\" (taps), \"points\" (3D) or \"ends\" "
                "(semi-automatic)");
+      if (auto* n = r.optional(t, path, "pair")) {
+        pick.pair = r.integer(*n, path + ".pair");
+        if (pick.pair < 1) r.fail(path + ".pair", "pairs are counted from 1");
+        if (pick.pair > 1 && !t.contains("pixels"))
+          r.fail(path + ".pair", "a further pair's trace is given as taps (\"pixels\")");
+      }
       if (auto* px = r.optional(t, path, "pixels")) {
         pick.photo = photo(r, t, path);
+        if (pick.pair > 1 && pick.photo != "left")
+          r.fail(path + ".photo", "a further pair's trace is tapped in its left photograph");
         pick.pixels = pixels(r, *px, path + ".pixels");
         require_two_distinct(r, pick.pixels, path + ".pixels");
       } else if (auto* pts = r.optional(t, path, "points")) {
