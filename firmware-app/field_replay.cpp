@@ -213,8 +213,14 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     return m;
   };
   if (picked) {
-    measurements =
-        measurement_records(picked->measured, out.visit_id, out.model_id, out.capture_id);
+    // Each measurement with its own pair's model and capture.
+    std::map<std::string, PairRecords> further;
+    if (more)
+      for (std::size_t k = 0; k < more->model_ids.size(); ++k)
+        further[pair_photo(static_cast<int>(k) + 2, "left")] = {more->model_ids[k],
+                                                                more->capture_ids[k]};
+    measurements = measurement_records(picked->measured, out.visit_id,
+                                       {out.model_id, out.capture_id}, further);
     join_trace_records(*picked, measurements);
   } else
     for (const auto& t : analysed.traces) {

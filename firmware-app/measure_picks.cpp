@@ -24,6 +24,12 @@ const measure::PhotoView& view_of(const MeasureContext& c, const std::string& ph
   return it->second;
 }
 
+// The 3D image a photograph's picks land on: its pair's.
+const measure::MeshPicker& picker_of(const MeasureContext& c, const std::string& photo) {
+  const auto own = c.pickers.find(photo);
+  return own != c.pickers.end() ? *own->second : *c.picker;
+}
+
 void require_in_image(const measure::PhotoView& view, const std::vector<Eigen::Vector2d>& pixels,
                       const std::string& where) {
   for (std::size_t i = 0; i < pixels.size(); ++i)
@@ -74,6 +80,18 @@ std::optional<double> opt(double v, bool when) {
 
 }  // namespace
 
+std::string pair_photo(int pair, const std::string& side) {
+  return pair == 1 ? side : "pair " + std::to_string(pair) + " " + side;
+}
+
+storage::Picks picks_by_pair_photo(storage::Picks picks) {
+  for (auto& t : picks.traces)
+    if (!t.photo.empty()) t.photo = pair_photo(t.pair, t.photo);
+  for (auto& a : picks.areas) a.photo = pair_photo(a.pair, a.photo);
+  for (auto& p : picks.points) p.photo = pair_photo(p.pair, p.photo);
+  return picks;
+}
+
 std::string MeasuredPicks::set_of(const std::string& id) const {
   for (std::size_t k = 0; k < poles.size(); ++k) {
     const PoleSource& s = poles[k];
@@ -105,9 +123,7 @@ MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& c
       const measure::PhotoView& view = view_of(c, t.photo, where);
       require_in_image(view, t.pixels, where + ".pixels");
       mt.taps = t.pixels;
-      const auto own = c.pickers.find(t.photo);
-      const measure::MeshPicker& picker = own != c.pickers.end() ? *own->second : *c.picker;
-      mt.m = measure::measure_trace(picker, view, t.id, t.pixels, c.settings, where);
+      mt.m = measure::measure_trace(picker_of(c, t.photo), view, t.id, t.pixels, c.settings, where);
     } else {
       const measure::PhotoView& view = view_of(c, t.photo, where);
       const std::vector<Eigen::Vector2d> ends{(*t.ends)[0], (*t.ends)[1]};
@@ -147,14 +163,15 @@ MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& c
     const measure::PhotoView& view = view_of(c, a.photo, where);
     require_in_image(view, a.polygon, where + ".polygon");
     out.areas.push_back(
-        {measure::measure_area(*c.picker, view, a.id, a.polygon, c.settings, where), a.rock_side});
+        {measure::measure_area(picker_of(c, a.photo), view, a.id, a.polygon, c.settings, where),
+         a.rock_side});
   }
   for (const auto& p : picks.points) {
     const std::string where = prefix + p.where;
     const measure::PhotoView& view = view_of(c, p.photo, where);
     require_in_image(view, {p.pixel}, where + ".pixel");
-    out.points.push_back(
-        measure::measure_point(*c.picker, view, p.id, p.pixel, p.radius, c.settings, where));
+    out.points.push_back(measure::measure_point(picker_of(c, p.photo), view, p.id, p.pixel,
+                                                p.radius, c.settings, where));
   }
 
   // Joints marked piece by piece: their traces' points fitted together.
@@ -313,16 +330,15 @@ std::string measures_json(const MeasuredPicks& r, const MeasureContext& c,
   return j.dump(2) + "\n";
 }
 
-std::vector<storage::Measurement> measurement_records(const MeasuredPicks& r,
-                                                      storage::RecordId visit_id,
-                                                      std::optional<storage::RecordId> model_id,
-                                                      std::optional<storage::RecordId> capture_id) {
+std::vector<storage::Measurement> measurement_records(
+    const MeasuredPicks& r, storage::RecordId visit_id, const PairRecords& first,
+    const std::map<std::string, PairRecords>& further) {
   std::vector<storage::Measurement> out;
   auto base = [&](storage::Measurement::Kind kind, const std::string& id,
                   const measure::PlaneEstimate& plane) {
     storage::Measurement m;
     m.visit_id = visit_id;
-    m.model_id = model_id;
+    m.model_id = first.model_id;
     m.kind = kind;
     m.label = id;
     if (plane.known) {
@@ -337,7 +353,12 @@ std::vector<storage::Measurement> measurement_records(const MeasuredPicks& r,
   auto photo = [&](storage::Measurement& m, const std::vector<measure::PhotoPixel>& px) {
     if (px.empty()) return;
     m.photo = px.front().photo;
-    if (m.photo == "left" || m.photo == "right") m.photo_capture_id = capture_id;
+    if (const auto pair = further.find(m.photo); pair != further.end()) {
+      m.model_id = pair->second.model_id;
+      m.photo_capture_id = pair->second.capture_id;
+    } else if (m.photo == "left" || m.photo == "right") {
+      m.photo_capture_id = first.capture_id;
+    }
     for (const auto& p : px) m.pixels.push_back(p.pixel);
   };
   for (const auto& t : r.traces) {

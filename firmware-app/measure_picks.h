@@ -31,6 +31,15 @@ struct MeasureContext {
   std::string source;                               // the picks' file, for messages
 };
 
+// The name of a pair's photograph in MeasureContext (views, pickers,
+// photos) and in the stored measurements: "left" / "right" for the first
+// pair, "pair 2 left" for a further one.
+std::string pair_photo(int pair, const std::string& side);
+
+// The picks with each further pair's photograph named by pair_photo, so
+// that they are measured through that pair's view and on its 3D image.
+storage::Picks picks_by_pair_photo(storage::Picks picks);
+
 struct MeasuredTrace {
   measure::TraceMeasurement m;
   std::string joint;                  // as picked; empty when unassigned
@@ -80,13 +89,21 @@ MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& c
 std::string measures_json(const MeasuredPicks& measured, const MeasureContext& context,
                           const std::string& model);
 
+// The model and capture of one pair of the visit: what a measurement taken
+// in its photograph is stored with.
+struct PairRecords {
+  std::optional<storage::RecordId> model_id, capture_id;
+};
+
 // The measurements as project records (datum-relative points, the photo and
 // pixels they came from; points only with a known plane) and the joint table: one joint per known
-// plane of a trace, area or point, with its set, and the sets.
-std::vector<storage::Measurement> measurement_records(const MeasuredPicks& measured,
-                                                      storage::RecordId visit_id,
-                                                      std::optional<storage::RecordId> model_id,
-                                                      std::optional<storage::RecordId> capture_id);
+// plane of a trace, area or point, with its set, and the sets. Each
+// measurement carries the model and capture of its photograph's pair:
+// `first` for "left" / "right" and for 3D points, `further` by photograph
+// name (pair_photo) for a further pair's.
+std::vector<storage::Measurement> measurement_records(
+    const MeasuredPicks& measured, storage::RecordId visit_id, const PairRecords& first,
+    const std::map<std::string, PairRecords>& further = {});
 std::vector<storage::JointSet> joint_set_records(const MeasuredPicks& measured);
 std::vector<storage::Joint> joint_records(const MeasuredPicks& measured,
                                           storage::RecordId visit_id);

@@ -98,6 +98,9 @@ MorePairsOutcome replay_more_pairs(storage::ProjectStore& store, const MorePairs
     model.registration.translation = r.to_face.t;
     model.registration.parameters_json = face_json;
     model.registration.rms_m = r.surface_rms_m;
+    // Its photographs' views: the pair's camera frame onto its 3D image,
+    // then onto the face.
+    model.camera_to_mesh = out.model_to_image[k].then(r.to_face);
     out.model_ids.push_back(store.save_model(model));
   }
   out.images = std::move(images);

@@ -12,19 +12,21 @@ namespace rockface::app {
 
 namespace {
 
-std::string further_photo(int pair) {
-  return "pair " + std::to_string(pair) + " left";
+void check_pair(const storage::Scene& scene, const std::string& where, int pair,
+                std::size_t pairs) {
+  if (static_cast<std::size_t>(pair) > pairs)
+    throw InputError(scene.source + ": " + where + ".pair",
+                     "pair " + std::to_string(pair) + ", but imaging.stations gives " +
+                         std::to_string(pairs) + (pairs == 1 ? " pair" : " pairs"));
 }
 
 }  // namespace
 
 void check_pick_pairs(const storage::Scene& scene, std::size_t pairs) {
   if (!scene.picks) return;
-  for (const auto& t : scene.picks->traces)
-    if (static_cast<std::size_t>(t.pair) > pairs)
-      throw InputError(scene.source + ": " + t.where + ".pair",
-                       "pair " + std::to_string(t.pair) + ", but imaging.stations gives " +
-                           std::to_string(pairs) + (pairs == 1 ? " pair" : " pairs"));
+  for (const auto& t : scene.picks->traces) check_pair(scene, t.where, t.pair, pairs);
+  for (const auto& a : scene.picks->areas) check_pair(scene, a.where, a.pair, pairs);
+  for (const auto& p : scene.picks->points) check_pair(scene, p.where, p.pair, pairs);
 }
 
 ReplayPicks measure_replay_picks(const storage::Scene& scene,
@@ -51,21 +53,25 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
 
   // A further pair's taps: its left photograph, its 3D image moved into the
   // face frame (the first pair's), so every measurement lands in that frame.
-  storage::Picks picks = *scene.picks;
+  const storage::Picks picks = picks_by_pair_photo(*scene.picks);
   std::deque<photogrammetry::SurfaceMesh> face_meshes;  // the pickers refer to them
   std::deque<measure::MeshPicker> further_pickers;
-  for (auto& t : picks.traces) {
-    if (t.pair == 1) continue;
-    const std::string photo = further_photo(t.pair);
-    t.photo = photo;
-    if (c.views.count(photo)) continue;
-    const std::size_t k = static_cast<std::size_t>(t.pair - 1);
+  std::set<int> pairs;
+  for (const auto& t : picks.traces) pairs.insert(t.pair);
+  for (const auto& a : picks.areas) pairs.insert(a.pair);
+  for (const auto& p : picks.points) pairs.insert(p.pair);
+  for (const int pair : pairs) {
+    if (pair == 1) continue;
+    const std::string photo = pair_photo(pair, "left");
+    const std::size_t k = static_cast<std::size_t>(pair - 1);
     const photogrammetry::Similarity& to_face = more->face.images[k].to_face;
     face_meshes.push_back(more->images[k].mesh);
     face_meshes.back().transform(to_face.scale, to_face.R, to_face.t);
     further_pickers.emplace_back(face_meshes.back());
     c.pickers[photo] = &further_pickers.back();
-    c.views.emplace(photo, measure::left_view(more->model_to_image[k].then(to_face), intrinsics));
+    measure::PhotoView view = measure::left_view(more->model_to_image[k].then(to_face), intrinsics);
+    view.name = photo;  // the measurements name the pair's photograph
+    c.views.emplace(photo, std::move(view));
     c.photos[photo] = more->images[k].photograph;
   }
 

@@ -1,14 +1,18 @@
 // `rockface measure MODEL.ply|PROJECT --traces PICKS.json --out MEASURES.json
-//  [--png STEREONET.png] [--csv DIPS.csv] [--sets N|auto]`
+//  [--png STEREONET.png] [--csv DIPS.csv] [--sets N|auto] [--visit N | --model ID]`
 //
 // Measures the picks on a 3D image: a model file (with the camera it was
-// reconstructed with) or a project's model. Everything is measured before
-// anything is written: a bad pick stops the verb (exit 2) naming it, with
-// nothing stored and no output file.
+// reconstructed with) or a project's visit, each pick on the 3D image of its
+// pair (picks.h `pair`), all in the face frame (the first pair's). Everything
+// is measured before anything is written: a bad pick stops the verb (exit 2)
+// naming it, with nothing stored and no output file.
+#include <algorithm>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <set>
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
@@ -34,7 +38,7 @@ namespace fs = std::filesystem;
 
 struct MeasureOptions {
   std::string source, picks, out, png, csv, sets, camera, photo;
-  std::optional<storage::RecordId> model;
+  std::optional<storage::RecordId> model, visit;
   std::optional<double> point_sigma;
   double friction = 30;
 };
@@ -93,15 +97,9 @@ LoadedModel load_ply_model(const MeasureOptions& o) {
   return m;
 }
 
-LoadedModel load_project_model(storage::ProjectStore& store, const MeasureOptions& o) {
-  storage::RecordId id = 0;
-  if (o.model) {
-    id = *o.model;
-  } else {
-    const auto models = store.list_models();
-    if (models.empty()) throw InputError(o.source, "the project has no model to measure on");
-    for (const auto& s : models) id = std::max(id, s.id);
-  }
+// One stored model, its photographs named for its pair (pair_photo).
+LoadedModel load_stored_model(storage::ProjectStore& store, const MeasureOptions& o,
+                              storage::RecordId id, int pair) {
   storage::Model model;
   try {
     model = store.load_model(id);
@@ -118,24 +116,27 @@ LoadedModel load_project_model(storage::ProjectStore& store, const MeasureOption
     throw InputError(o.source, "model " + std::to_string(id) +
                                    " has no left photograph as texture: picks in a photograph "
                                    "cannot be placed on it");
+  if (!model.camera_to_mesh)
+    throw InputError(o.source, "model " + std::to_string(id) +
+                                   " keeps no pose of its camera (a further pair stored before "
+                                   "schema 4): replay the visit again to measure on it");
   m.capture_id = model.texture_capture_id;
   const storage::Capture capture = store.load_capture(*model.texture_capture_id);
   if (!capture.calibration_id)
     throw InputError(o.source,
                      "the capture of model " + std::to_string(id) + " has no calibration");
   const auto intrinsics = store.load_calibration(*capture.calibration_id).intrinsics;
-  const storage::Registration& r = model.registration;
-  photogrammetry::Similarity model_to_world;
-  model_to_world.scale = r.scale;
-  model_to_world.R = Eigen::Quaterniond(r.rotation_wxyz[0], r.rotation_wxyz[1], r.rotation_wxyz[2],
-                                        r.rotation_wxyz[3])
-                         .normalized()
-                         .toRotationMatrix();
-  model_to_world.t = r.translation;
-  m.views.emplace("left", measure::left_view(model_to_world, intrinsics));
-  m.photos["left"] = decode(capture.left.bytes);
+  const photogrammetry::Similarity& camera_to_mesh = *model.camera_to_mesh;
+  auto add_view = [&](measure::PhotoView view, const std::vector<unsigned char>& bytes) {
+    const std::string name = pair_photo(pair, view.name);
+    view.name = name;
+    m.views.emplace(name, std::move(view));
+    m.photos[name] = decode(bytes);
+  };
+  add_view(measure::left_view(camera_to_mesh, intrinsics), capture.left.bytes);
   // The report of the reconstruction: the right camera's relative
   // orientation and the predicted precision of a point.
+  const storage::Registration& r = model.registration;
   const auto p =
       nlohmann::json::parse(r.parameters_json.empty() ? "{}" : r.parameters_json, nullptr, false);
   if (p.is_object() && p.contains("orientation") && p["orientation"].contains("R") &&
@@ -146,8 +147,7 @@ LoadedModel load_project_model(storage::ProjectStore& store, const MeasureOption
       for (int k = 0; k < 3; ++k) R(i, k) = p["orientation"]["R"][i][k].get<double>();
       t[i] = p["orientation"]["t"][i].get<double>();
     }
-    m.views.emplace("right", measure::right_view(model_to_world, R, t, intrinsics));
-    m.photos["right"] = decode(capture.right.bytes);
+    add_view(measure::right_view(camera_to_mesh, R, t, intrinsics), capture.right.bytes);
   }
   m.mesh = surface_mesh(std::move(model.mesh), intrinsics.width, intrinsics.height);
   if (m.mesh.triangles.empty())
@@ -159,6 +159,54 @@ LoadedModel load_project_model(storage::ProjectStore& store, const MeasureOption
       model.preset.empty() ? "standard" : model.preset, "model preset");
   m.correlation_length = m.mesh.median_edge_length() * preset.sgbm_block_size;
   return m;
+}
+
+// The 3D images of the project to measure on, one per pair: --model alone,
+// else the pairs of --visit or of the newest visit with a model.
+struct ProjectPairs {
+  std::vector<storage::RecordId> models;
+  std::string what;  // "model 3", "visit 2", for messages
+};
+
+ProjectPairs project_pairs(storage::ProjectStore& store, const MeasureOptions& o) {
+  if (o.model && o.visit)
+    throw InputError("--model", "give --model (one 3D image) or --visit (its pairs), not both");
+  if (o.model) return {{*o.model}, "model " + std::to_string(*o.model)};
+  const auto visits = store.list_visits();
+  if (o.visit) {
+    if (std::none_of(visits.begin(), visits.end(),
+                     [&](const storage::Visit& v) { return v.id == *o.visit; }))
+      throw InputError("--visit", "no visit " + std::to_string(*o.visit) + " in " + o.source);
+    ProjectPairs out{{}, "visit " + std::to_string(*o.visit)};
+    for (const auto& m : store.list_visit_models(*o.visit)) out.models.push_back(m.id);
+    if (out.models.empty())
+      throw InputError("--visit", "visit " + std::to_string(*o.visit) + " of " + o.source +
+                                      " has no model to measure on");
+    return out;
+  }
+  for (auto v = visits.rbegin(); v != visits.rend(); ++v) {
+    ProjectPairs out{{}, "visit " + std::to_string(v->id)};
+    for (const auto& m : store.list_visit_models(v->id)) out.models.push_back(m.id);
+    if (!out.models.empty()) return out;
+  }
+  throw InputError(o.source, "the project has no model to measure on");
+}
+
+// Every pick names a pair the 3D images have.
+void check_pairs(const storage::Picks& picks, const MeasureOptions& o, const ProjectPairs& pairs) {
+  const std::size_t n = pairs.models.size();
+  auto check = [&](const std::string& where, int pair) {
+    if (static_cast<std::size_t>(pair) <= n) return;
+    throw InputError(o.picks + ": " + where + ".pair",
+                     "pair " + std::to_string(pair) + ", but " + pairs.what + " of " + o.source +
+                         " has " + std::to_string(n) + (n == 1 ? " pair" : " pairs") +
+                         (o.model ? " (--model measures one 3D image; --visit measures a visit's "
+                                    "pairs)"
+                                  : ""));
+  };
+  for (const auto& t : picks.traces) check(t.where, t.pair);
+  for (const auto& a : picks.areas) check(a.where, a.pair);
+  for (const auto& p : picks.points) check(p.where, p.pair);
 }
 
 cv::Mat stereonet(const MeasuredPicks& r, const std::string& title, double friction_deg) {
@@ -197,46 +245,68 @@ int run(const MeasureOptions& o) {
   }
   if (!fs::exists(o.source)) throw InputError(o.source, "no such file");
   const storage::Picks picks = storage::load_picks(o.picks);
-  // One model, one pair: picks in a further pair's photograph belong to a
-  // replayed visit of several pairs (docs/scene-extensions.md).
-  for (const auto& t : picks.traces)
-    if (t.pair != 1)
-      throw InputError(o.picks + ": " + t.where + ".pair",
-                       "pair " + std::to_string(t.pair) +
-                           ", but `rockface measure` measures one 3D image (pair 1)");
   if (!sets) sets = o.sets == "auto" ? std::nullopt : picks.sets;
 
   const bool ply = fs::path(o.source).extension() == ".ply";
   std::optional<storage::ProjectStore> store;
-  LoadedModel model;
+  LoadedModel model;                 // pair 1: its mesh frame is the face frame
+  std::vector<LoadedModel> further;  // the further pairs the picks use (pair 2, 3, ...)
+  std::string on;                    // what was measured on, for the visit's note
   if (ply) {
+    // A model file is one 3D image: pair 1 only.
+    check_pairs(picks, o, {{0}, "the model file"});
     model = load_ply_model(o);
   } else {
     store.emplace(storage::ProjectStore::open(o.source));
     if (store->read_only())
       throw InputError(o.source, "cannot store measurements in it: " + store->read_only_reason());
-    model = load_project_model(*store, o);
+    const ProjectPairs pairs = project_pairs(*store, o);
+    check_pairs(picks, o, pairs);
+    std::set<int> used;
+    for (const auto& t : picks.traces) used.insert(t.pair);
+    for (const auto& a : picks.areas) used.insert(a.pair);
+    for (const auto& p : picks.points) used.insert(p.pair);
+    model = load_stored_model(*store, o, pairs.models[0], 1);
+    on = pairs.what + ": model " + std::to_string(pairs.models[0]);
+    for (const int pair : used)
+      if (pair > 1) {
+        further.push_back(load_stored_model(*store, o, pairs.models[pair - 1], pair));
+        on += ", model " + std::to_string(pairs.models[pair - 1]) + " (pair " +
+              std::to_string(pair) + ")";
+      }
   }
   const measure::MeshPicker picker(model.mesh);
+  std::deque<measure::MeshPicker> further_pickers;  // the context refers to them
   MeasureContext context;
   context.picker = &picker;
   context.views = model.views;
   context.photos = model.photos;
+  for (const auto& f : further) {
+    further_pickers.emplace_back(f.mesh);
+    for (const auto& [name, view] : f.views) {
+      context.views.emplace(name, view);
+      context.pickers[name] = &further_pickers.back();
+    }
+    for (const auto& [name, photo] : f.photos) context.photos[name] = photo;
+  }
   context.settings.point_sigma = model.point_sigma;
   context.settings.correlation_length = model.correlation_length;
   context.datum = model.datum;
   context.source = o.picks;
-  const MeasuredPicks measured = measure_picks(picks, context, sets);
+  const MeasuredPicks measured = measure_picks(picks_by_pair_photo(picks), context, sets);
 
   // Everything measured: now the store (one visit, each save one
   // transaction) and the outputs.
   std::vector<storage::Joint> joints = joint_records(measured, 0);
   if (store) {
-    const storage::RecordId visit = store->begin_visit(
-        "measure " + o.picks, "picks measured on model " + std::to_string(*model.model_id));
-    const auto ids = store->save_measurements(
-        visit, measurement_records(measured, visit, model.model_id, model.capture_id));
-    const auto records = measurement_records(measured, visit, model.model_id, model.capture_id);
+    const storage::RecordId visit =
+        store->begin_visit("measure " + o.picks, "picks measured on " + on);
+    std::map<std::string, PairRecords> further_records;
+    for (const auto& f : further)
+      for (const auto& [name, view] : f.views) further_records[name] = {f.model_id, f.capture_id};
+    const auto records =
+        measurement_records(measured, visit, {model.model_id, model.capture_id}, further_records);
+    const auto ids = store->save_measurements(visit, records);
     for (auto& j : joints) {
       j.visit_id = visit;
       for (std::size_t k = 0; k < records.size(); ++k)
@@ -281,7 +351,10 @@ VerbRun setup_measure(CLI::App& sub) {
   sub.add_option("--csv", o->csv, "Dips-style CSV of the measured planes");
   sub.add_option("--sets", o->sets,
                  "number of joint sets, or auto (default: the picks', else auto)");
-  sub.add_option("--model", o->model, "project: the model id (default: the latest)");
+  sub.add_option("--visit", o->visit,
+                 "project: the visit whose 3D images (one per pair; picks name theirs with "
+                 "\"pair\") are measured on (default: the newest visit with a model)");
+  sub.add_option("--model", o->model, "project: measure on this one model instead (pair 1 only)");
   sub.add_option("--camera", o->camera, "model file: the camera it was reconstructed with");
   sub.add_option("--photo", o->photo,
                  "model file: the left photograph (default: the model's TextureFile)");

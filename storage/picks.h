@@ -35,6 +35,7 @@ struct AreaPick {
   std::string id;
   std::string where;
   std::string photo;
+  int pair = 1;  // as for a trace: a further pair's area is outlined in its left photograph
   std::vector<Eigen::Vector2d> polygon;
   std::string rock_side;  // "upper" | "lower" when the area is a free face; empty otherwise
 };
@@ -43,6 +44,7 @@ struct PointPick {
   std::string id;
   std::string where;
   std::string photo;
+  int pair = 1;  // as for a trace: a further pair's point is tapped in its left photograph
   Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
   double radius = 0.1;  // m: the surface within it gives the local plane
 };
@@ -57,8 +59,9 @@ struct Picks {
 // Reads the picks object at `path` of a document ("" for a PICKS file, whose
 // `format` must be rockface-picks/1; "picks" inside a scene). Every rejection
 // is an InputError naming `source`, the field path and the reason: ids
-// unique over traces, areas and points; photo "left" or "right"; a trace
-// with at least two distinct picks; finite numbers.
+// unique over traces, areas and points; photo "left" or "right"; pair a
+// count from 1, a further pair's photograph its left one; a trace with at
+// least two distinct picks; finite numbers.
 Picks read_picks(const nlohmann::json& object, const std::string& source, const std::string& path);
 
 // PICKS text (`source` names it in messages), and a PICKS file.

@@ -32,6 +32,17 @@ std::string photo(const Reader& r, const json& o, const std::string& path) {
   return p;
 }
 
+// The pair of an area or a point picked in `photo`.
+int pair_of(const Reader& r, const json& o, const std::string& path, const std::string& photo) {
+  const json* n = r.optional(o, path, "pair");
+  if (!n) return 1;
+  const int pair = r.integer(*n, path + ".pair");
+  if (pair < 1) r.fail(path + ".pair", "pairs are counted from 1");
+  if (pair > 1 && photo != "left")
+    r.fail(path + ".photo", "a further pair's pick is made in its left photograph");
+  return pair;
+}
+
 // A trace needs two distinct picks: one point (or one pixel tapped twice)
 // is no line, let alone a plane.
 template <typename V>
@@ -115,6 +126,7 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
       pick.id = r.id(r.require(a, path, "id"), path + ".id");
       unique(pick.id, path + ".id");
       pick.photo = photo(r, a, path);
+      pick.pair = pair_of(r, a, path, pick.photo);
       pick.polygon = pixels(r, r.require(a, path, "polygon"), path + ".polygon");
       if (pick.polygon.size() < 3)
         r.fail(path + ".polygon",
@@ -137,6 +149,7 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
       pick.id = r.id(r.require(p, path, "id"), path + ".id");
       unique(pick.id, path + ".id");
       pick.photo = photo(r, p, path);
+      pick.pair = pair_of(r, p, path, pick.photo);
       pick.pixel = pixel(r, r.require(p, path, "pixel"), path + ".pixel");
       if (auto* rad = r.optional(p, path, "radius"))
         pick.radius = r.positive(*rad, path + ".radius");

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "core/photogrammetry/camera_model.h"
+#include "core/photogrammetry/registration.h"
 
 namespace rockface::storage {
 
@@ -126,7 +127,19 @@ struct Model {
   std::string texture_side;  // "left" | "right" when texture_capture_id is set
   Registration registration;
   std::vector<RegistrationResidual> residuals;
+  // The map from the reconstruction's camera frame (the left camera's, of
+  // core/photogrammetry/relative_orientation.h) to the frame of `mesh`: what
+  // a view of the model's photographs needs (measure::left_view). A model
+  // registered on its own (range pole, control points, none) has its
+  // registration here, and save_model takes that when this is not given. A
+  // further pair of a visit (registration kind "face_images", whose
+  // registration is its 3D image's map onto the face) has its camera's map
+  // followed by that one. Nothing for a further pair stored before schema 4.
+  std::optional<photogrammetry::Similarity> camera_to_mesh;
 };
+
+// The similarity a registration record holds (x_mesh = scale R x + t).
+photogrammetry::Similarity similarity_of(const Registration& r);
 
 struct ModelSummary {
   RecordId id = 0;

@@ -216,11 +216,30 @@ ALTER TABLE joint ADD COLUMN type TEXT NOT NULL DEFAULT '';
 ALTER TABLE joint ADD COLUMN persistence_m REAL;
 )sql";
 
+// Version 4: the map from a model's camera frame to its mesh's frame, for
+// the views of its photographs (Model::camera_to_mesh). Until now that was
+// the registration for every model but a further pair's of a visit
+// ("face_images"), whose registration maps its 3D image onto the face and
+// whose camera's map was not kept: those rows stay without one.
+constexpr const char* kVersion3To4 = R"sql(
+ALTER TABLE model ADD COLUMN camera_scale REAL;
+ALTER TABLE model ADD COLUMN camera_qw REAL;
+ALTER TABLE model ADD COLUMN camera_qx REAL;
+ALTER TABLE model ADD COLUMN camera_qy REAL;
+ALTER TABLE model ADD COLUMN camera_qz REAL;
+ALTER TABLE model ADD COLUMN camera_tx REAL;
+ALTER TABLE model ADD COLUMN camera_ty REAL;
+ALTER TABLE model ADD COLUMN camera_tz REAL;
+UPDATE model SET camera_scale = scale, camera_qw = qw, camera_qx = qx, camera_qy = qy,
+  camera_qz = qz, camera_tx = tx, camera_ty = ty, camera_tz = tz
+  WHERE registration_kind <> 'face_images';
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
-constexpr Step kSteps[] = {{2, kVersion1To2}, {3, kVersion2To3}};
+constexpr Step kSteps[] = {{2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4}};
 
 }  // namespace
 

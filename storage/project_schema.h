@@ -13,6 +13,9 @@
 //   3  measurements keep their photo and pixels, the plane's sigma, the trace
 //      length and its censoring; joint sets their alpha95, spacing, trace
 //      length and persistence; joints their type and persistence (issue 12).
+//   4  models keep the map from their camera frame to their mesh's frame
+//      (the views of their photographs), apart from the registration: a
+//      further pair of a visit is registered onto the face (issue 15).
 #include <cstdint>
 
 #include "storage/project_sqlite.h"
@@ -21,7 +24,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 3;
+constexpr int kCurrentVersion = 4;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then

@@ -97,6 +97,11 @@ class ProjectStore {
   RecordId save_model(const Model& model);
   Model load_model(RecordId id);
   std::vector<ModelSummary> list_models(std::optional<RecordId> capture_id = {});
+  // The 3D images of one visit, one per stereo pair in the order the pairs
+  // were taken (capture order; a capture with several models gives its
+  // latest): the first pair's mesh frame is the face frame, a further pair's
+  // model is registered onto it (`rockface replay` of several pairs).
+  std::vector<ModelSummary> list_visit_models(RecordId visit_id);
 
   // Saves traces, areas and point orientations of one visit in one
   // transaction; returns their ids in order.

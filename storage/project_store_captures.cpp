@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "core/common/error.h"
 #include "storage/project_blobs.h"
 #include "storage/project_store_rows.h"
@@ -163,6 +165,17 @@ std::vector<CaptureSummary> ProjectStore::list_captures(std::optional<RecordId> 
 
 // ---------------------------------------------------------------- models
 
+photogrammetry::Similarity similarity_of(const Registration& r) {
+  photogrammetry::Similarity s;
+  s.scale = r.scale;
+  s.R = Eigen::Quaterniond(r.rotation_wxyz[0], r.rotation_wxyz[1], r.rotation_wxyz[2],
+                           r.rotation_wxyz[3])
+            .normalized()
+            .toRotationMatrix();
+  s.t = r.translation;
+  return s;
+}
+
 RecordId ProjectStore::save_model(const Model& model) {
   const std::string doing = "saving a model";
   require_writable(doing);
@@ -178,6 +191,19 @@ RecordId ProjectStore::save_model(const Model& model) {
     // anything further off was not normalised at all.
     throw InputError("model.registration.rotation", "must be a unit quaternion");
   require_finite(r.translation, "model.registration.translation");
+  std::optional<photogrammetry::Similarity> camera = model.camera_to_mesh;
+  if (!camera && r.kind != "face_images") camera = similarity_of(r);
+  if (camera) {
+    if (!std::isfinite(camera->scale) || camera->scale <= 0)
+      throw InputError("model.camera_to_mesh.scale", "must be a positive number");
+    // 1e-6: a rotation matrix from a quaternion or a product of rotations
+    // is orthonormal to ~1e-15; anything further off is no rotation.
+    if (!camera->R.allFinite() ||
+        (camera->R.transpose() * camera->R - Eigen::Matrix3d::Identity()).norm() > 1e-6 ||
+        camera->R.determinant() < 0)
+      throw InputError("model.camera_to_mesh.R", "must be a rotation");
+    require_finite(camera->t, "model.camera_to_mesh.t");
+  }
   for (std::size_t i = 0; i < model.mesh.vertices.size(); ++i)
     if (!model.mesh.vertices[i].allFinite())
       throw InputError("model.mesh.vertices[" + std::to_string(i) + "]", "not finite");
@@ -187,8 +213,10 @@ RecordId ProjectStore::save_model(const Model& model) {
   Statement st(db_,
                "INSERT INTO model (capture_id, created_at, preset, vertex_count, face_count, "
                "mesh, texture_capture_id, texture_side, registration_kind, scale, qw, qx, qy, "
-               "qz, tx, ty, tz, registration_parameters, registration_rms_m) VALUES (?, ?, ?, "
-               "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+               "qz, tx, ty, tz, registration_parameters, registration_rms_m, camera_scale, "
+               "camera_qw, camera_qx, camera_qy, camera_qz, camera_tx, camera_ty, camera_tz) "
+               "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+               "?, ?, ?)",
                doing);
   st.bind(1, model.capture_id)
       .bind(2, or_now(model.created_at))
@@ -203,6 +231,11 @@ RecordId ProjectStore::save_model(const Model& model) {
   for (int i = 0; i < 4; ++i) st.bind(11 + i, r.rotation_wxyz[i]);
   for (int i = 0; i < 3; ++i) st.bind(15 + i, r.translation[i]);
   st.bind(18, r.parameters_json).bind(19, r.rms_m);
+  if (camera) {
+    const Eigen::Quaterniond q(camera->R);
+    st.bind(20, camera->scale).bind(21, q.w()).bind(22, q.x()).bind(23, q.y()).bind(24, q.z());
+    for (int i = 0; i < 3; ++i) st.bind(25 + i, camera->t[i]);
+  }  // else the columns stay NULL: no camera pose
   st.run();
   const RecordId id = db_.last_insert_id();
   Statement res(db_,
@@ -235,7 +268,9 @@ Model ProjectStore::load_model(RecordId id) {
   Statement st(db_,
                "SELECT id, capture_id, created_at, preset, mesh, texture_capture_id, "
                "texture_side, registration_kind, scale, qw, qx, qy, qz, tx, ty, tz, "
-               "registration_parameters, registration_rms_m FROM model WHERE id = ?",
+               "registration_parameters, registration_rms_m, camera_scale, camera_qw, "
+               "camera_qx, camera_qy, camera_qz, camera_tx, camera_ty, camera_tz FROM model "
+               "WHERE id = ?",
                "loading model " + std::to_string(id));
   st.bind(1, id);
   if (!st.step())
@@ -255,6 +290,16 @@ Model ProjectStore::load_model(RecordId id) {
   for (int i = 0; i < 3; ++i) r.translation[i] = st.column_double(13 + i);
   r.parameters_json = st.column_text(16);
   r.rms_m = st.column_double(17);
+  if (!st.is_null(18)) {
+    photogrammetry::Similarity camera;
+    camera.scale = st.column_double(18);
+    camera.R = Eigen::Quaterniond(st.column_double(19), st.column_double(20), st.column_double(21),
+                                  st.column_double(22))
+                   .normalized()
+                   .toRotationMatrix();
+    for (int i = 0; i < 3; ++i) camera.t[i] = st.column_double(23 + i);
+    m.camera_to_mesh = camera;
+  }
   Statement res(db_,
                 "SELECT label, dx, dy, dz FROM registration_residual WHERE model_id = ? ORDER "
                 "BY idx",
@@ -285,6 +330,15 @@ std::vector<ModelSummary> ProjectStore::list_models(std::optional<RecordId> capt
     s.face_count = st.column_int(6);
     s.registration_rms_m = st.column_double(7);
     out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<ModelSummary> ProjectStore::list_visit_models(RecordId visit_id) {
+  std::vector<ModelSummary> out;
+  for (const auto& c : list_captures(visit_id)) {
+    auto models = list_models(c.id);
+    if (!models.empty()) out.push_back(std::move(models.back()));
   }
   return out;
 }

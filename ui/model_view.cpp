@@ -5,8 +5,6 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include <Eigen/Geometry>
-
 #include "storage/project_store.h"
 
 namespace rockface::ui {
@@ -46,18 +44,10 @@ PreparedModel prepare_model(const std::filesystem::path& project, storage::Recor
         store.load_capture_image(*model->texture_capture_id, model->texture_side);
     out.photo_bgr = cv::imdecode(blob.bytes, cv::IMREAD_COLOR);
     const storage::Capture capture = store.load_capture(*model->texture_capture_id);
-    if (capture.calibration_id && model->texture_side == "left") {
-      const storage::Registration& r = model->registration;
-      photogrammetry::Similarity model_to_world;
-      model_to_world.scale = r.scale;
-      model_to_world.R = Eigen::Quaterniond(r.rotation_wxyz[0], r.rotation_wxyz[1],
-                                            r.rotation_wxyz[2], r.rotation_wxyz[3])
-                             .normalized()
-                             .toRotationMatrix();
-      model_to_world.t = r.translation;
+    // A further pair stored before schema 4 keeps no camera pose: no view.
+    if (capture.calibration_id && model->texture_side == "left" && model->camera_to_mesh)
       out.left_view = measure::left_view(
-          model_to_world, store.load_calibration(*capture.calibration_id).intrinsics);
-    }
+          *model->camera_to_mesh, store.load_calibration(*capture.calibration_id).intrinsics);
   }
   auto surface = std::make_shared<photogrammetry::SurfaceMesh>(surface_of(std::move(model->mesh)));
   model->mesh = {};

@@ -200,11 +200,10 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
       if (first_model) {
         first_model = false;
         r.preset = m.preset;
-        r.model_scale = m.registration.scale;
-        const auto& q = m.registration.rotation_wxyz;
-        r.model_rotation =
-            Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
-        r.model_translation = m.registration.translation;
+        const photogrammetry::Similarity s = similarity_of(m.registration);
+        r.model_scale = s.scale;
+        r.model_rotation = s.R;
+        r.model_translation = s.t;
         read_accuracy(m.registration.parameters_json, r.accuracy);
         const ImageBlob left = store.load_capture_image(c.id, "left");
         r.photograph = cv::imdecode(left.bytes, cv::IMREAD_COLOR);

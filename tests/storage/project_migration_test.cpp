@@ -4,6 +4,8 @@
 
 #include <sqlite3.h>
 
+#include <Eigen/Geometry>
+
 #include "core/common/error.h"
 #include "storage/project_blobs.h"
 #include "storage/project_schema.h"
@@ -59,15 +61,26 @@ Version1File write_version_1(const std::filesystem::path& file) {
       "INSERT INTO capture_exif VALUES (2, 'left', 'Make', 'Canon');"
       "INSERT INTO action_log VALUES (1, '2025-01-02T08:00:00.000Z', 1, 'capture saved', '');",
       "test");
+  // Model 7 registered by its range pole; model 8 a further pair of the
+  // visit registered onto the face (its registration the map onto the
+  // face, its camera's map not kept).
   sqlite::Statement model(db,
                           "INSERT INTO model VALUES (7, 2, '2025-01-03T09:00:00.000Z', 'fast', 1, "
-                          "0, ?, 2, 'right', 'none', 1, 1, 0, 0, 0, 0, 0, 0, '{}', 0)",
+                          "0, ?, 2, 'right', 'range_pole_compass', 2.5, 0.6, 0.8, 0, 0, 10, 20, "
+                          "30, '{}', 0)",
                           "test");
   Mesh mesh;
   mesh.vertices = {{1, 2, 3}};
   const auto blob = blobs::encode_mesh(mesh);
   model.bind_blob(1, blob);
   model.run();
+  sqlite::Statement further(db,
+                            "INSERT INTO model VALUES (8, 1, '2025-01-03T09:00:00.000Z', 'fast', "
+                            "1, 0, ?, 1, 'left', 'face_images', 0.5, 1, 0, 0, 0, 1, 2, 3, "
+                            "'{\"format\": \"rockface-face-registration/1\"}', 0.01)",
+                            "test");
+  further.bind_blob(1, blob);
+  further.run();
   v1.model_id = 7;
   tx.commit();
   return v1;
@@ -116,6 +129,22 @@ TEST(ProjectMigration, Version1FileIsUpgradedWithEveryRecord) {
   const Model model = store.load_model(v1.model_id);
   EXPECT_EQ(model.capture_id, 2);
   EXPECT_EQ(model.texture_capture_id, 2);
+  // Schema 4: a model registered on its own has its registration as the
+  // map from its camera frame (exactly: the same numbers are copied).
+  ASSERT_TRUE(model.camera_to_mesh);
+  EXPECT_EQ(model.camera_to_mesh->scale, 2.5);
+  const Eigen::Matrix3d R = Eigen::Quaterniond(0.6, 0.8, 0, 0).toRotationMatrix();
+  // 1e-12: the quaternion is unit in the file; normalising and turning it
+  // into a matrix costs a few ulps.
+  EXPECT_LT((model.camera_to_mesh->R - R).norm(), 1e-12);
+  EXPECT_EQ(model.camera_to_mesh->t, Eigen::Vector3d(10, 20, 30));
+  // A further pair's registration maps its 3D image onto the face, not its
+  // camera: its camera's map stays unknown, its registration as it was.
+  const Model further = store.load_model(8);
+  EXPECT_FALSE(further.camera_to_mesh);
+  EXPECT_EQ(further.registration.kind, "face_images");
+  EXPECT_EQ(further.registration.scale, 0.5);
+  EXPECT_EQ(further.registration.translation, Eigen::Vector3d(1, 2, 3));
 
   // Four images in v1 rows, three distinct byte strings: the shared right
   // image is stored once after the upgrade.

@@ -2,6 +2,8 @@
 // after the store is closed and the file reopened.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include "core/common/error.h"
 #include "storage/project_schema.h"
 #include "storage/project_store.h"
@@ -317,6 +319,57 @@ TEST(ProjectRoundTrip, BadRecordsAreRefusedWithTheirFieldAndNothingIsSaved) {
 
   // Only the joints save (and nothing of the refused ones) reached the log.
   EXPECT_EQ(store.list_actions().size(), actions_before + 1);
+}
+
+// A further pair of a visit (registration kind "face_images") keeps the map
+// from its camera frame apart from its registration; a model registered on
+// its own has its registration there. The visit's 3D images come in pair
+// order.
+TEST(ProjectRoundTrip, AModelKeepsItsCameraMapAndAVisitListsItsPairs) {
+  TempDir dir("camera-map");
+  auto store = ProjectStore::create(dir / "p.rockface", test::sample_project());
+  const RecordId visit = store.begin_visit("replay");
+  const RecordId c1 = store.save_capture(test::sample_capture(visit, 1));
+  const RecordId c2 = store.save_capture(test::sample_capture(visit, 2));
+  const RecordId other = store.save_capture(test::sample_capture(store.begin_visit("x"), 3));
+  const Model first = test::sample_model(c1);
+  const RecordId m1 = store.save_model(first);
+  Model further = test::sample_model(c2);
+  further.registration.kind = "face_images";
+  photogrammetry::Similarity camera;
+  camera.scale = 3.5;
+  camera.R = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  camera.t = {4, -5, 6};
+  further.camera_to_mesh = camera;
+  const RecordId m2 = store.save_model(further);
+  Model old_further = test::sample_model(c2);
+  old_further.registration.kind = "face_images";
+  const RecordId m3 = store.save_model(old_further);
+  store.save_model(test::sample_model(other));
+
+  const Model a = store.load_model(m1);
+  ASSERT_TRUE(a.camera_to_mesh);
+  const photogrammetry::Similarity r = similarity_of(first.registration);
+  EXPECT_EQ(a.camera_to_mesh->scale, r.scale);
+  expect_same(a.camera_to_mesh->t, r.t);
+  // 1e-12: the rotation goes through a quaternion and back (a few ulps).
+  EXPECT_LT((a.camera_to_mesh->R - r.R).norm(), 1e-12);
+  const Model b = store.load_model(m2);
+  ASSERT_TRUE(b.camera_to_mesh);
+  EXPECT_EQ(b.camera_to_mesh->scale, 3.5);
+  expect_same(b.camera_to_mesh->t, camera.t);
+  EXPECT_LT((b.camera_to_mesh->R - camera.R).norm(), 1e-12);
+  EXPECT_FALSE(store.load_model(m3).camera_to_mesh) << "a face_images model without one";
+
+  Model bad = further;
+  bad.camera_to_mesh->R(0, 0) = 2;
+  EXPECT_THROW(store.save_model(bad), InputError);
+
+  // One 3D image per pair, in capture order; a pair's latest model.
+  const auto pairs = store.list_visit_models(visit);
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(pairs[0].id, m1);
+  EXPECT_EQ(pairs[1].id, m3);
 }
 
 }  // namespace
