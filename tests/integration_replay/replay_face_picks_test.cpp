@@ -128,7 +128,16 @@ TEST_F(ReplayFacePicks, ATracePickedInTwoPairsIsOneTraceAndTheBlocksComeFromIt) 
                    {"pair", 2},
                    {"photo", "left"},
                    {"pixels", rockface::test::taps_along(part(in_second, 0.4, 1.0), 8)}});
-  scene["picks"] = {{"traces", picks}};
+  // An area and a point in pair 2's left photograph, on FACE_W (west of the
+  // fold, which pair 2, 1.2 m west, sees at u ~ 1030; away from the range
+  // pole): measured on pair 2's 3D image in the face frame.
+  const nlohmann::json area2 = {{"id", "A2"},
+                                {"pair", 2},
+                                {"photo", "left"},
+                                {"polygon", {{400, 600}, {600, 600}, {600, 800}, {400, 800}}}};
+  const nlohmann::json point2 = {
+      {"id", "Q2"}, {"pair", 2}, {"photo", "left"}, {"pixel", {500, 700}}, {"radius", 0.3}};
+  scene["picks"] = {{"traces", picks}, {"areas", {area2}}, {"points", {point2}}};
   const fs::path file = dir_ / "three-pairs.scene.json";
   std::ofstream(file) << scene.dump(2);
   const fs::path project = dir_ / "site.rockface";
@@ -205,6 +214,121 @@ TEST_F(ReplayFacePicks, ATracePickedInTwoPairsIsOneTraceAndTheBlocksComeFromIt) 
   }
   EXPECT_GE(finite, 1);
   EXPECT_TRUE(uses_joined);
+
+  // The area and the point of pair 2: on pair 2's 3D image, stored with
+  // pair 2's model and capture, in the face frame. FACE_W: y = 5211880 +
+  // 0.1 (x - 512337) + 0.04 (z - 410) (truth_picks.h). Expected error as
+  // for an area of pair 1 (measure_cli_test.cpp: the fit's own error is
+  // hundredths of a degree, the registration's ~0.1 deg and dense
+  // matching's smoothing dominate, < 0.5 deg), plus pair 2's registration
+  // onto pair 1 (< 0.1 deg, above); a point's local plane (0.3 m radius) as
+  // there, < 2 deg.
+  const auto captures = store.list_captures(*visit);
+  const auto pairs = store.list_visit_models(*visit);
+  ASSERT_EQ(pairs.size(), 3u);
+  const Eigen::Vector3d face_w(-0.1, 1.0, -0.04);
+  std::map<std::string, rockface::storage::Measurement> by_label;
+  for (const auto& m : store.list_measurements(*visit)) by_label[m.label] = m;
+  for (const auto& [id, bound] : std::map<std::string, double>{{"A2", 0.6}, {"Q2", 2.0}}) {
+    ASSERT_EQ(by_label.count(id), 1u) << id;
+    const auto& m = by_label.at(id);
+    EXPECT_EQ(m.photo, "pair 2 left") << id;
+    EXPECT_EQ(m.model_id, pairs[1].id) << id;
+    EXPECT_EQ(m.photo_capture_id, captures[1].id) << id;
+    ASSERT_TRUE(m.dip_deg) << id << ": " << m.note;
+    const double e = angle_deg(normal(*m.dip_deg, *m.dipdir_deg), face_w.normalized());
+    std::printf("%s (pair 2) measured %.2f/%.2f, error %.2f deg\n", id.c_str(), *m.dip_deg,
+                *m.dipdir_deg, e);
+    EXPECT_LT(e, bound) << id;
+  }
+  // A trace of pair 1 keeps pair 1's model and capture.
+  EXPECT_EQ(by_label.at(joined_first).model_id, pairs[0].id);
+  EXPECT_EQ(by_label.at(joined_first).photo_capture_id, captures[0].id);
+
+  // `rockface measure` on the project: the same picks of pair 2 on the
+  // visit's pair 2 (the newest visit with a model), in the face frame.
+  const nlohmann::json pick_file = {
+      {"format", "rockface-picks/1"},
+      {"traces",
+       {{{"id", "P2"},
+         {"pair", 2},
+         {"photo", "left"},
+         {"pixels", rockface::test::taps_along(part(in_second, 0.4, 1.0), 8)}}}},
+      {"areas", {area2}},
+      {"points", {point2}}};
+  std::ofstream(dir_ / "picks.json") << pick_file.dump(2);
+  const std::size_t visits_before = store.list_visits().size();
+  const CliRun m =
+      run_rockface("measure " + project.string() + " --traces " + (dir_ / "picks.json").string() +
+                   " --out " + (dir_ / "measures.json").string());
+  ASSERT_EQ(m.exit_code, 0) << m.err << m.out;
+  const auto measured_visit = store.latest_visit();
+  ASSERT_NE(measured_visit, visit);
+  std::map<std::string, rockface::storage::Measurement> measured;
+  for (const auto& x : store.list_measurements(*measured_visit)) measured[x.label] = x;
+  ASSERT_EQ(measured.size(), 3u);
+  for (const auto& [id, x] : measured) {
+    EXPECT_EQ(x.photo, "pair 2 left") << id;
+    EXPECT_EQ(x.model_id, pairs[1].id) << id;
+    EXPECT_EQ(x.photo_capture_id, captures[1].id) << id;
+  }
+  // The same 3D image and the same view as the replay's (the stored mesh in
+  // double precision, the camera's map through a quaternion): the same
+  // plane, up to the outlier test's threshold, which the verb takes from
+  // the stored report's precision rather than the reconstruction's.
+  for (const std::string id : {"A2", "Q2"}) {
+    ASSERT_TRUE(measured.at(id).dip_deg) << id << ": " << measured.at(id).note;
+    const double d = angle_deg(normal(*measured.at(id).dip_deg, *measured.at(id).dipdir_deg),
+                               normal(*by_label.at(id).dip_deg, *by_label.at(id).dipdir_deg));
+    std::printf("%s: rockface measure vs replay %.4f deg\n", id.c_str(), d);
+    EXPECT_LT(d, 0.05) << id;
+  }
+  // P2 alone lies on the flat west facet: a straight line, no plane. Its
+  // points are in the face frame where the true J1 trace is: on J1's plane
+  // and on FACE_W's. A view of pair 2 built from anything but its camera's
+  // map onto the face would put them elsewhere or miss the surface.
+  EXPECT_FALSE(measured.at("P2").dip_deg);
+  ASSERT_FALSE(measured.at("P2").points.empty());
+  const Eigen::Vector3d datum = store.project().datum;
+  Eigen::Vector3d j1_point = Eigen::Vector3d::Zero();
+  for (const auto& j : scene["joints"])
+    if (j["id"] == "J1")
+      j1_point = {j["point"][0].get<double>(), j["point"][1].get<double>(),
+                  j["point"][2].get<double>()};
+  const Eigen::Vector3d face_w_point(512337, 5211880, 410);
+  double off_j1 = 0, off_face = 0;
+  for (const auto& p : measured.at("P2").points) {
+    off_j1 = std::max(off_j1, std::abs((p + datum - j1_point).dot(j1)));
+    off_face = std::max(off_face, std::abs((p + datum - face_w_point).dot(face_w.normalized())));
+  }
+  std::printf("P2: farthest of its points from J1's plane %.4f m, from FACE_W's %.4f m\n", off_j1,
+              off_face);
+  // The taps are the true trace's pixels (sub-pixel, ~4 mm at 10 m), the
+  // surface under them is dense matching's (sigma_Z ~7 mm, smoothed across
+  // the dark trace), and the face frame is the registration's (~0.1 deg,
+  // ~1.5 cm at 10 m from the pole): a few centimetres.
+  EXPECT_LT(off_j1, 0.05);
+  EXPECT_LT(off_face, 0.05);
+
+  // A pick naming a pair the visit lacks, or a further pair with --model
+  // (one 3D image): bad input naming the field, nothing stored.
+  nlohmann::json bad = pick_file;
+  bad["areas"][0]["pair"] = 4;
+  std::ofstream(dir_ / "bad.json") << bad.dump(2);
+  CliRun b =
+      run_rockface("measure " + project.string() + " --traces " + (dir_ / "bad.json").string() +
+                   " --out " + (dir_ / "bad-out.json").string());
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("bad.json: areas[0].pair: pair 4, but visit"), std::string::npos) << b.err;
+  EXPECT_NE(b.err.find("has 3 pairs"), std::string::npos) << b.err;
+  b = run_rockface("measure " + project.string() + " --model " + std::to_string(pairs[0].id) +
+                   " --traces " + (dir_ / "picks.json").string() + " --out " +
+                   (dir_ / "bad-out.json").string());
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("picks.json: traces[0].pair: pair 2, but model"), std::string::npos)
+      << b.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad-out.json"));
+  EXPECT_EQ(store.list_visits().size(), visits_before + 1);
 }
 
 TEST_F(ReplayFacePicks, APickNamingAPairTheSceneDoesNotHaveIsBadInput) {
@@ -225,6 +349,20 @@ TEST_F(ReplayFacePicks, APickNamingAPairTheSceneDoesNotHaveIsBadInput) {
   EXPECT_NE(r.err.find("picks.traces[0].pair"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("3 pairs"), std::string::npos) << r.err;
   // Refused before anything is captured: nothing stored.
+  EXPECT_FALSE(fs::exists(project));
+
+  // An area or a point naming it likewise.
+  scene["picks"] = {
+      {"areas",
+       {{{"id", "A1"}, {"pair", 2}, {"photo", "left"}, {"polygon", {{1, 2}, {3, 4}, {5, 1}}}}}},
+      {"points", {{{"id", "Q1"}, {"pair", 5}, {"photo", "left"}, {"pixel", {1, 2}}}}}};
+  std::ofstream(file) << scene.dump(2);
+  const CliRun p =
+      run_rockface("replay " + file.string() + " --project " + project.string() + " --preset fast");
+  EXPECT_EQ(p.exit_code, 2);
+  EXPECT_NE(p.err.find("picks.points[0].pair: pair 5, but imaging.stations gives 3 pairs"),
+            std::string::npos)
+      << p.err;
   EXPECT_FALSE(fs::exists(project));
 }
 
@@ -257,6 +395,36 @@ TEST(PicksPair, TheParserNamesABadPair) {
   t["photo"] = "right";
   EXPECT_NE(error_of(t).find("traces[0].photo: a further pair's trace is tapped in its left"),
             std::string::npos);
+  // Areas and points take a pair too, a further one in its left photograph.
+  auto error_of_doc = [](const nlohmann::json& doc) {
+    try {
+      rockface::storage::parse_picks(doc.dump(), "PICKS.json");
+    } catch (const rockface::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  nlohmann::json area = {
+      {"id", "A1"}, {"pair", 3}, {"photo", "left"}, {"polygon", {{1, 2}, {3, 4}, {5, 1}}}};
+  nlohmann::json point = {{"id", "Q1"}, {"pair", 2}, {"photo", "left"}, {"pixel", {1, 2}}};
+  const auto parsed = rockface::storage::parse_picks(
+      nlohmann::json({{"format", "rockface-picks/1"}, {"areas", {area}}, {"points", {point}}})
+          .dump(),
+      "P");
+  EXPECT_EQ(parsed.areas[0].pair, 3);
+  EXPECT_EQ(parsed.points[0].pair, 2);
+  area["pair"] = 0;
+  EXPECT_EQ(error_of_doc({{"format", "rockface-picks/1"}, {"areas", {area}}}),
+            "PICKS.json: areas[0].pair: pairs are counted from 1");
+  point["photo"] = "right";
+  EXPECT_EQ(error_of_doc({{"format", "rockface-picks/1"}, {"points", {point}}}),
+            "PICKS.json: points[0].photo: a further pair's pick is made in its left photograph");
+  point.erase("pair");
+  EXPECT_EQ(rockface::storage::parse_picks(
+                nlohmann::json({{"format", "rockface-picks/1"}, {"points", {point}}}).dump(), "P")
+                .points[0]
+                .pair,
+            1);
   const nlohmann::json ends = {
       {"id", "T1"}, {"pair", 2}, {"photo", "left"}, {"ends", {{1, 2}, {3, 4}}}};
   EXPECT_NE(error_of(ends).find("traces[0].pair: a further pair's trace is given as taps"),
