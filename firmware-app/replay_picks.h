@@ -36,8 +36,9 @@ struct ReplayPicks {
 };
 
 // `more`: the visit's further pairs, registered (replay_more_pairs.h); null
-// for a visit of one pair. A pick naming pair k > 1 (picks.h) is measured on
-// that pair's 3D image moved into the face frame, through its left camera;
+// for a visit of one pair. A pick (trace, area or point) naming pair k > 1
+// (picks.h) is measured on that pair's 3D image moved into the face frame,
+// through its left camera (its photograph named pair_photo(k, "left"));
 // the analysed traces are the joined ones where pieces were joined.
 // Throws InputError naming the scene file and the pick (picks.traces[2]...),
 // also for a pick naming a pair the visit does not have.
@@ -48,8 +49,8 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
                                  const cv::Mat& left_image, const cv::Mat& right_image,
                                  const MorePairsOutcome* more = nullptr);
 
-// The pair named by every trace pick exists: `pairs` stereo pairs. Throws
-// InputError naming the scene file and the pick's `pair` field.
+// The pair named by every pick (trace, area, point) exists: `pairs` stereo
+// pairs. Throws InputError naming the scene file and the pick's `pair` field.
 void check_pick_pairs(const storage::Scene& scene, std::size_t pairs);
 
 // The measurement records with each joined trace's pieces replaced by one

@@ -1,5 +1,7 @@
 #include "ui/project_session.h"
 
+#include <algorithm>
+
 #include "core/common/error.h"
 
 namespace rockface::ui {
@@ -25,7 +27,15 @@ std::unique_ptr<ProjectSession> ProjectSession::create(const std::filesystem::pa
 
 void ProjectSession::choose_visit(storage::RecordId id) {
   visit_ = id;
+  pair_ = 0;
+  pairs_.clear();
   refresh();
+}
+
+void ProjectSession::choose_pair(std::size_t index) {
+  if (index >= pairs_.size()) return;
+  pair_ = index;
+  model_ = pairs_[index];
 }
 
 storage::RecordId ProjectSession::begin_visit() {
@@ -43,8 +53,11 @@ void ProjectSession::refresh() {
   analysis_.reset();
   blocks_.clear();
   model_.reset();
+  const std::size_t pairs_before = pairs_.size();
+  pairs_.clear();
   if (visit_) {
     captures_ = store_.list_captures(*visit_);
+    pairs_ = store_.list_visit_models(*visit_);
     measurements_ = store_.list_measurements(*visit_);
     joints_ = store_.list_joints(*visit_);
     const auto analyses = store_.list_analyses(*visit_);
@@ -53,13 +66,19 @@ void ProjectSession::refresh() {
       for (const auto& b : analysis_->blocks) blocks_.push_back(make_block_view(b, info_.datum));
     }
   }
-  // Models belong to captures; the visit's own model wins, else the
-  // project's latest (a new visit maps on the model of an earlier one).
+  // Models belong to captures; the visit's own (its chosen pair's) wins,
+  // else the project's latest (a new visit maps on the model of an earlier
+  // one).
+  if (!pairs_.empty()) {
+    // A pair reconstructed since (Capture) is the one to work on next.
+    if (pairs_before > 0 && pairs_.size() > pairs_before) pair_ = pairs_.size() - 1;
+    pair_ = std::min(pair_, pairs_.size() - 1);
+    model_ = pairs_[pair_];
+    return;
+  }
+  pair_ = 0;
   const auto models = store_.list_models();  // oldest first
-  for (const auto& m : models)
-    for (const auto& c : captures_)
-      if (m.capture_id && *m.capture_id == c.id) model_ = m;
-  if (!model_ && !models.empty()) model_ = models.back();
+  if (!models.empty()) model_ = models.back();
 }
 
 }  // namespace rockface::ui

@@ -37,7 +37,14 @@ class ProjectSession {
   void refresh();
 
   const std::vector<storage::CaptureSummary>& captures() const { return captures_; }
-  // The model to work on: the visit's latest, else the project's latest.
+  // The visit's 3D images, one per stereo pair (ProjectStore::list_visit_models):
+  // all in the face frame, the first pair's.
+  const std::vector<storage::ModelSummary>& pairs() const { return pairs_; }
+  // The pair worked on (0-based); the first when the visit is chosen.
+  std::size_t pair() const { return pair_; }
+  void choose_pair(std::size_t index);
+  // The model to work on: the chosen pair's of the visit, else the
+  // project's latest (a new visit maps on the model of an earlier one).
   const std::optional<storage::ModelSummary>& model() const { return model_; }
   const std::vector<storage::Measurement>& measurements() const { return measurements_; }
   const std::vector<storage::Joint>& joints() const { return joints_; }
@@ -52,6 +59,8 @@ class ProjectSession {
   std::vector<storage::Visit> visits_;
   std::optional<storage::RecordId> visit_;
   std::vector<storage::CaptureSummary> captures_;
+  std::vector<storage::ModelSummary> pairs_;
+  std::size_t pair_ = 0;
   std::optional<storage::ModelSummary> model_;
   std::vector<storage::Measurement> measurements_;
   std::vector<storage::Joint> joints_;

@@ -6,8 +6,11 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 namespace rockface::test {
 
@@ -42,6 +45,32 @@ inline const std::filesystem::path& demo_project() {
                             ui_test_dir() / "replay.txt") != 0)
       throw std::runtime_error("rockface replay of the demo failed: see " +
                                (ui_test_dir() / "replay.txt").string());
+    return p;
+  }();
+  return project;
+}
+
+// The demo face photographed as two stereo pairs (the second 1.2 m west of
+// the first, as in replay_face_picks_test.cpp), replayed at the fast
+// preset: a visit with two 3D images in one face frame. Made once per test
+// binary, only by the tests that ask for it.
+inline const std::filesystem::path& two_pair_project() {
+  static const std::filesystem::path project = [] {
+    std::ifstream in(demo_scene());
+    nlohmann::json scene = nlohmann::json::parse(in);
+    const nlohmann::json first = scene["imaging"]["stations"];
+    for (auto st : first) {
+      st["position"][0] = st["position"][0].get<double>() - 1.2;
+      st["look_at"][0] = st["look_at"][0].get<double>() - 1.2;
+      scene["imaging"]["stations"].push_back(st);
+    }
+    const auto file = ui_test_dir() / "two-pairs.scene.json";
+    std::ofstream(file) << scene.dump(2);
+    const auto p = ui_test_dir() / "two-pairs.rockface";
+    if (run_rockface_logged("replay " + file.string() + " --preset fast --project " + p.string(),
+                            ui_test_dir() / "replay-two-pairs.txt") != 0)
+      throw std::runtime_error("rockface replay of the two-pair demo failed: see " +
+                               (ui_test_dir() / "replay-two-pairs.txt").string());
     return p;
   }();
   return project;

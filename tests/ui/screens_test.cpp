@@ -14,6 +14,7 @@
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
 #include "ui/trace_marker.h"
+#include "ui/ui_script.h"
 
 namespace {
 
@@ -252,6 +253,66 @@ TEST(UiScreens, TappedTraceAppearsWhereTappedAndIsStoredThere) {
     // float rounding of the ray (well under a pixel).
     EXPECT_NEAR(at->x, taps[i].x, 0.5);
     EXPECT_NEAR(at->y, taps[i].y, 0.5);
+  }
+}
+
+// A visit photographed as two pairs: the Mapping screen offers each pair's
+// 3D image; a trace mapped on pair 2's is stored with pair 2's model and
+// capture, its points in the face frame (on pair 1's surface).
+TEST(UiScreens, MappingOnAFurtherPairLandsInTheFaceFrameWithThatPair) {
+  const fs::path project = rockface::test::ui_test_dir() / "mapping-two-pairs.rockface";
+  fs::copy_file(rockface::test::two_pair_project(), project, fs::copy_options::overwrite_existing);
+  auto s = open_session(project);
+  const auto& pairs = s->state().session->pairs();
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(s->state().model_view.model_id(), pairs[0].id) << "pair 1 first";
+  // The pair chosen as a script would (`rockface ui --script`): its button
+  // by label, then the worker loads pair 2's model.
+  const UiScript script = parse_ui_script(
+      R"({"steps": [{"tap": "Mapping"}, {"tap": "Pair 2"}, {"wait": "task"}]})", "steps.json");
+  for (std::size_t k = 0; k < script.steps.size(); ++k)
+    s->run(script.steps[k], rockface::test::ui_test_dir(), "steps[" + std::to_string(k) + "]");
+  const ModelView& view = s->state().model_view;
+  ASSERT_EQ(view.model_id(), pairs[1].id);
+  const auto centre = view.to_screen(view.display_mesh().centre);
+  ASSERT_TRUE(centre);
+  for (int i = 0; i < 4; ++i) s->tap(centre->x - 60 + 40 * i, centre->y - 30 + 20 * i);
+  const TraceMarker& marker = s->state().mapping.marker;
+  ASSERT_EQ(marker.taps().size(), 4u) << marker.problem();
+  s->tap("Save trace");
+  s->settle();
+  EXPECT_TRUE(marker.taps().empty());
+
+  auto store = rockface::storage::ProjectStore::open(project);
+  const auto visit = store.latest_visit();
+  const auto captures = store.list_captures(visit);
+  ASSERT_EQ(captures.size(), 2u);
+  const auto saved = store.list_measurements(visit).back();
+  EXPECT_EQ(saved.kind, rockface::storage::Measurement::Kind::trace);
+  EXPECT_EQ(saved.model_id, pairs[1].id);
+  EXPECT_EQ(saved.photo_capture_id, captures[1].id);
+  EXPECT_EQ(saved.photo, "left");
+  ASSERT_EQ(saved.pixels.size(), 4u);
+  // Pair 2's left photograph (1500 x 1000) sees the taps.
+  for (const auto& px : saved.pixels) {
+    EXPECT_GT(px.x(), 0);
+    EXPECT_LT(px.x(), 1500);
+    EXPECT_GT(px.y(), 0);
+    EXPECT_LT(px.y(), 1000);
+  }
+  // The face frame: each point lies on pair 1's 3D image too. Expected:
+  // pair 2's registration onto pair 1 (surface rms ~1 cm at the fast
+  // preset) plus the spacing of pair 1's vertices (~2-3 cm at the fast
+  // preset's half-scale matching, a nearest vertex is within ~2 cm):
+  // under 5 cm. Pair 2's own camera frame is metres away (unscaled,
+  // levelled at its camera).
+  const auto first = store.load_model(pairs[0].id);
+  ASSERT_EQ(saved.points.size(), 4u);
+  for (const auto& p : saved.points) {
+    double nearest = 1e9;
+    for (const auto& v : first.mesh.vertices) nearest = std::min(nearest, (v - p).norm());
+    std::printf("trace point on pair 2: %.3f m from pair 1's surface\n", nearest);
+    EXPECT_LT(nearest, 0.05);
   }
 }
 

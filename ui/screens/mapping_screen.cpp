@@ -3,6 +3,7 @@
 // direction and its uncertainty update with every tap, and the stereonet
 // beside the model shows it with the visit's joints and stored traces.
 // Saving a trace stores it at once (on the worker).
+#include <algorithm>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
@@ -74,6 +75,19 @@ void save_trace(AppState& app) {
   m.label = next_trace_label(*app.session);
   m.joint_label = app.mapping.joint_label;
   m.points = marker.points();
+  // Where the taps are in the left photograph of the pair it was mapped on
+  // (its model's texture), so that the record names that pair's capture.
+  const storage::Model* model = app.model_view.model();
+  if (model && model->texture_capture_id && model->texture_side == "left" &&
+      app.model_view.left_view() && !marker.taps().empty()) {
+    const auto pixels = measure::project_to_view(*app.model_view.left_view(), marker.taps());
+    if (std::all_of(pixels.begin(), pixels.end(),
+                    [](const Eigen::Vector2d& p) { return p.allFinite(); })) {
+      m.photo = "left";
+      m.photo_capture_id = model->texture_capture_id;
+      m.pixels = pixels;
+    }
+  }
   if (marker.plane() && marker.plane()->known) {
     m.dip_deg = rad_to_deg(marker.plane()->orientation.dip);
     m.dipdir_deg = rad_to_deg(marker.plane()->orientation.dipdir);
@@ -116,12 +130,26 @@ void draw_controls(AppState& app) {
   TraceMarker& marker = app.mapping.marker;
   const TraceContext context = trace_context(app);
   const bool idle = !app.task.running();
-  auto toggle = [&](const char* label, bool on) {
+  auto toggle = [&](const char* label, bool on, bool enabled = true) {
     if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    const bool pressed = app.targets.button(label);
+    const bool pressed = app.targets.button(label, 0, enabled);
     if (on) ImGui::PopStyleColor();
     return pressed;
   };
+  // A visit photographed as several pairs: its 3D images, all in the face
+  // frame; traces mapped on any of them land in that frame.
+  const auto& pairs = app.session->pairs();
+  if (pairs.size() > 1) {
+    ImGui::TextUnformatted("3D image:");
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      ImGui::SameLine();
+      const std::string label = "Pair " + std::to_string(k + 1);
+      if (toggle(label.c_str(), app.session->pair() == k, idle) && app.session->pair() != k) {
+        marker.clear();  // its taps were on the other pair's 3D image
+        app.session->choose_pair(k);
+      }
+    }
+  }
   if (toggle("Tap points", marker.mode() == TraceMarker::Mode::points))
     marker.set_mode(TraceMarker::Mode::points);
   ImGui::SameLine();
