@@ -1,6 +1,5 @@
 #include "firmware-app/field_records.h"
 
-#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "firmware-app/project_mesh.h"
@@ -26,10 +25,7 @@ storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
   model.texture_side = "left";
   storage::Registration& r = model.registration;
   r.kind = rec.scale_source == "range pole" ? "range_pole_compass" : rec.scale_source;
-  r.scale = rec.model_to_world.scale;
-  const Eigen::Quaterniond q(rec.model_to_world.R);
-  r.rotation_wxyz = {q.w(), q.x(), q.y(), q.z()};
-  r.translation = rec.model_to_world.t;
+  storage::set_similarity(r, rec.model_to_world);
   // The whole reconstruction report (what the field report prints), plus the
   // two figures the tablet reads without walking it: the targets in the
   // project frame and the predicted depth precision of a picked point.

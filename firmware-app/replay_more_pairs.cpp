@@ -2,8 +2,6 @@
 
 #include <filesystem>
 
-#include <Eigen/Geometry>
-
 #include "camera/capture_guidance.h"
 #include "camera/mock_camera.h"
 #include "firmware-app/project_mesh.h"
@@ -92,10 +90,7 @@ MorePairsOutcome replay_more_pairs(storage::ProjectStore& store, const MorePairs
     model.texture_capture_id = model.capture_id;
     model.texture_side = "left";
     model.registration.kind = "face_images";
-    model.registration.scale = r.to_face.scale;
-    const Eigen::Quaterniond q(r.to_face.R);
-    model.registration.rotation_wxyz = {q.w(), q.x(), q.y(), q.z()};
-    model.registration.translation = r.to_face.t;
+    storage::set_similarity(model.registration, r.to_face);
     model.registration.parameters_json = face_json;
     model.registration.rms_m = r.surface_rms_m;
     // Its photographs' views: the pair's camera frame onto its 3D image,

@@ -138,8 +138,10 @@ struct Model {
   std::optional<photogrammetry::Similarity> camera_to_mesh;
 };
 
-// The similarity a registration record holds (x_mesh = scale R x + t).
+// The similarity a registration record holds (x_mesh = scale R x + t), and
+// the record's scale, rotation and translation of one.
 photogrammetry::Similarity similarity_of(const Registration& r);
+void set_similarity(Registration& r, const photogrammetry::Similarity& s);
 
 struct ModelSummary {
   RecordId id = 0;

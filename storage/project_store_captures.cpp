@@ -176,6 +176,13 @@ photogrammetry::Similarity similarity_of(const Registration& r) {
   return s;
 }
 
+void set_similarity(Registration& r, const photogrammetry::Similarity& s) {
+  r.scale = s.scale;
+  const Eigen::Quaterniond q(s.R);
+  r.rotation_wxyz = {q.w(), q.x(), q.y(), q.z()};
+  r.translation = s.t;
+}
+
 RecordId ProjectStore::save_model(const Model& model) {
   const std::string doing = "saving a model";
   require_writable(doing);

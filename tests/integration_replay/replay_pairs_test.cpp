@@ -5,6 +5,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -100,6 +103,43 @@ TEST_F(ReplayPairs, ThreePairsAreStoredInOneFaceFrame) {
     y_first /= static_cast<double>(models[0].mesh.vertices.size());
     y_this /= static_cast<double>(models[k].mesh.vertices.size());
     EXPECT_NEAR(y_this, y_first, 1.0);
+  }
+  // Every model keeps its camera's map to the face frame (the views of its
+  // photographs). The face frame itself is off the truth by the demo
+  // sample's compass line (~1.7 deg of north, truth_picks.h; ~0.23 m at the
+  // stations, seen), so the further pairs' cameras are checked against
+  // pair 1's: offset as the stations are (1.2 m west, east) and looking the
+  // same way (the stations look parallel). Expected error: pair k's
+  // registration onto pair 1 (surface rms ~1.5 cm, tie points over metres:
+  // ~0.1 deg, ~1-2 cm at the cameras) plus the frame's 1.7 deg turn of the
+  // 1.2 m offset (3.6 cm): under 6 cm and 0.5 deg. A further pair's
+  // registration (its map onto the face, from its levelled frame: camera y
+  // down turned to up) is not its camera's map: that axis is ~90 deg off.
+  const nlohmann::json stations = demo_with_pairs({-1.2, 1.2})["imaging"]["stations"];
+  auto station = [&](std::size_t k) {
+    const nlohmann::json& p = stations[2 * k]["position"];
+    return Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+  };
+  auto angle = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180 / M_PI;
+  };
+  ASSERT_TRUE(models[0].camera_to_mesh);
+  const auto& first_camera = *models[0].camera_to_mesh;
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  for (std::size_t k = 1; k < 3; ++k) {
+    ASSERT_TRUE(models[k].camera_to_mesh) << "model of pair " << k + 1;
+    const auto& c = *models[k].camera_to_mesh;
+    const double off = ((c.t - first_camera.t) - (station(k) - station(0))).norm();
+    const double axis = angle(c.R * z, first_camera.R * z);
+    const double registration_axis =
+        angle(rockface::storage::similarity_of(models[k].registration).R * z, first_camera.R * z);
+    std::printf(
+        "pair %zu: camera %.3f m, axis %.2f deg from where pair 1 puts it; its "
+        "registration's axis %.1f deg\n",
+        k + 1, off, axis, registration_axis);
+    EXPECT_LT(off, 0.06);
+    EXPECT_LT(axis, 0.5);
+    EXPECT_GT(registration_axis, 45.0);
   }
   EXPECT_EQ(store.list_analyses(*visit).size(), 1u);
 }
