@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "camera/capture_guidance.h"
 #include "camera/mock_camera.h"
 #include "firmware-app/project_mesh.h"
@@ -91,7 +93,11 @@ MorePairsOutcome replay_more_pairs(storage::ProjectStore& store, const MorePairs
     model.texture_side = "left";
     model.registration.kind = "face_images";
     storage::set_similarity(model.registration, r.to_face);
-    model.registration.parameters_json = face_json;
+    // The face registration report, with this pair's predicted precision
+    // of a picked point (metres in the face frame), as a first model has.
+    nlohmann::json parameters = nlohmann::json::parse(face_json);
+    parameters["predicted_depth_sigma_mm"] = images[k].sigma_z * r.to_face.scale * 1000;
+    model.registration.parameters_json = parameters.dump();
     model.registration.rms_m = r.surface_rms_m;
     // Its photographs' views: the pair's camera frame onto its 3D image,
     // then onto the face.

@@ -95,6 +95,12 @@ TEST_F(ReplayPairs, ThreePairsAreStoredInOneFaceFrame) {
     // noise (the demo's sigma_Z is ~1.5 cm at the fast preset's scale).
     EXPECT_LT(image["surface_rms_m"].get<double>(), 0.03);
     EXPECT_NEAR(models[k].registration.rms_m, image["surface_rms_m"].get<double>(), 1e-12);
+    // Its predicted precision of a picked point, as pair 1's report gives
+    // its own: the same camera at the same distance, so within a factor 2.
+    EXPECT_GT(face["predicted_depth_sigma_mm"].get<double>(),
+              0.5 * accuracy["predicted_depth_sigma_mm"].get<double>());
+    EXPECT_LT(face["predicted_depth_sigma_mm"].get<double>(),
+              2.0 * accuracy["predicted_depth_sigma_mm"].get<double>());
     // Its vertices are in the first model's frame: the same face, so the
     // same depth range (the face is ~10 m in front of the stations).
     double y_first = 0, y_this = 0;
