@@ -17,39 +17,35 @@ double safe_asin(double s) {
 }
 
 // Limit planes whose orientation is inside the measurement uncertainty: C - R
-// within `uncertainty` of the joint normal (see rotation_space.h).
-bool ill_posed(const LimitPlane& l, double uncertainty_rad) {
-  return uncertainty_rad > 0 &&
-         l.conditioning < std::sin(std::min(uncertainty_rad, std::numbers::pi / 2));
-}
+// within `uncertainty` of the joint normal (see rotation_space.h). The sine
+// of the uncertainty is taken once per rotation space (IllPosed), not once
+// per limit plane.
+struct IllPosed {
+  explicit IllPosed(double uncertainty_rad)
+      : active(uncertainty_rad > 0),
+        below(active ? std::sin(std::min(uncertainty_rad, std::numbers::pi / 2)) : 0) {}
+  bool operator()(const LimitPlane& l) const { return active && l.conditioning < below; }
+  bool active;
+  double below;
+};
 
 // The cone of the limit half-spaces, numerically repeated normals (faces
 // sharing a plane, corners on one line from R) entered once: the margin
 // search is O(m^4) in their number.
-geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, double uncertainty_rad,
+geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, const IllPosed& ill_posed,
                           bool drop_ill_posed) {
   std::vector<Eigen::Vector3d> normals;
-  // The kept normals by x: |dx| >= kSameRayRad already decides "not the
-  // same" (the norm is at least |dx|), so only those within that of x need
-  // the full test.
-  std::vector<std::pair<double, int>> by_x;
   normals.reserve(limits.size());
-  by_x.reserve(limits.size());
   for (const auto& l : limits) {
-    if (drop_ill_posed && ill_posed(l, uncertainty_rad)) continue;
+    if (drop_ill_posed && ill_posed(l)) continue;
+    // |dx| >= kSameRayRad already decides "not the same" (the norm is at
+    // least |dx|), so only those within that of x need the full test.
     const double x = l.normal.x();
-    auto it =
-        std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(x - geometry::kSameRayRad, -1));
-    bool seen = false;
-    for (auto k = it; k != by_x.end() && k->first < x + geometry::kSameRayRad && !seen; ++k)
-      seen = std::abs(k->first - x) < geometry::kSameRayRad &&
-             (normals[k->second] - l.normal).norm() < geometry::kSameRayRad;
-    if (!seen) {
-      by_x.insert(std::upper_bound(by_x.begin(), by_x.end(),
-                                   std::make_pair(x, static_cast<int>(normals.size()))),
-                  std::make_pair(x, static_cast<int>(normals.size())));
-      normals.push_back(l.normal);
-    }
+    const bool seen = std::any_of(normals.begin(), normals.end(), [&](const Eigen::Vector3d& n) {
+      return std::abs(n.x() - x) < geometry::kSameRayRad &&
+             (n - l.normal).norm() < geometry::kSameRayRad;
+    });
+    if (!seen) normals.push_back(l.normal);
   }
   return geometry::Cone(normals);
 }
@@ -140,17 +136,6 @@ geometry::ConeMargin exact_margin(const geometry::Cone& cone) {
   }
 }
 
-// min over the limit planes (those `keep` accepts) of asin(normal . u): how far
-// the unit direction u is inside all of them; pi/2 when none constrains it.
-template <class Keep>
-double margin_of_axis(const std::vector<LimitPlane>& limits, const Eigen::Vector3d& u, Keep keep) {
-  // asin is monotone: the min of the sines, then one asin (1: pi/2).
-  double m = 1;
-  for (const auto& l : limits)
-    if (keep(l)) m = std::min(m, l.normal.dot(u));
-  return safe_asin(m);
-}
-
 // A verdict that also turns marginal when the limit planes inside the
 // orientation uncertainty decide it: with and without them the sign differs.
 geometry::Verdict decide_with_ill_posed(double with_all, double without_ill_posed,
@@ -194,39 +179,43 @@ CornerRotation corner_rotation(const RotationInput& in, const RotationTopology& 
   r.vertex = vertex;
   const Eigen::Vector3d pivot = in.vertices[vertex];
   r.limits = limit_planes(in, topology, pivot, {vertex}, &r.void_limits);
-  r.space = limit_cone(r.limits, uncertainty_rad, false);
+  const IllPosed ill_posed(uncertainty_rad);
+  r.space = limit_cone(r.limits, ill_posed, false);
   const geometry::ConeMargin m = exact_margin(r.space);
   r.signed_margin = m.angle;
   r.best_axis = m.direction;
-  const bool any_ill_posed =
-      std::any_of(r.limits.begin(), r.limits.end(),
-                  [&](const LimitPlane& l) { return ill_posed(l, uncertainty_rad); });
-  const double without = any_ill_posed
-                             ? exact_margin(limit_cone(r.limits, uncertainty_rad, true)).angle
-                             : r.signed_margin;
+  const bool any_ill_posed = std::any_of(r.limits.begin(), r.limits.end(),
+                                         [&](const LimitPlane& l) { return ill_posed(l); });
+  const double without =
+      any_ill_posed ? exact_margin(limit_cone(r.limits, ill_posed, true)).angle : r.signed_margin;
   r.rotatable = decide_with_ill_posed(r.signed_margin, without, uncertainty_rad);
   if (r.signed_margin >= -geometry::kAngleEpsRad) r.extreme_rays = r.space.edges(m.angle);
 
   // Sliding rotation about the block-side normal of each joint through R.
+  // One pass over the limit planes gives the margin with and without the
+  // ill-posed ones (the min of the sines, then one asin: asin is monotone).
+  std::vector<char> parallel(in.planes.size());
   for (int j : topology.vertex_planes[vertex]) {
     if (!in.planes[j].joint) continue;
     SlidingRotation s;
     s.plane = j;
     const Eigen::Vector3d& nj = in.planes[j].inward_normal;
-    std::vector<char> parallel(in.planes.size());
     for (size_t k = 0; k < in.planes.size(); ++k)
       parallel[k] = in.planes[k].inward_normal.cross(nj).norm() < kParallelJointsSin;
-    auto parallel_to_j = [&](int k) { return parallel[k] != 0; };
-    for (const auto& l : r.limits)
-      if (l.plane != j && parallel_to_j(l.plane) &&
-          std::find(s.also_sliding.begin(), s.also_sliding.end(), l.plane) == s.also_sliding.end())
-        s.also_sliding.push_back(l.plane);
-    s.signed_margin =
-        margin_of_axis(r.limits, nj, [&](const LimitPlane& l) { return !parallel_to_j(l.plane); });
-    const double s_without = margin_of_axis(r.limits, nj, [&](const LimitPlane& l) {
-      return !parallel_to_j(l.plane) && !ill_posed(l, uncertainty_rad);
-    });
-    s.feasible = decide_with_ill_posed(s.signed_margin, s_without, uncertainty_rad);
+    double with_all = 1, well_posed = 1;
+    for (const auto& l : r.limits) {
+      if (parallel[l.plane]) {
+        if (l.plane != j && std::find(s.also_sliding.begin(), s.also_sliding.end(), l.plane) ==
+                                s.also_sliding.end())
+          s.also_sliding.push_back(l.plane);
+        continue;
+      }
+      const double x = l.normal.dot(nj);
+      with_all = std::min(with_all, x);
+      if (!ill_posed(l)) well_posed = std::min(well_posed, x);
+    }
+    s.signed_margin = safe_asin(with_all);
+    s.feasible = decide_with_ill_posed(s.signed_margin, safe_asin(well_posed), uncertainty_rad);
     r.sliding.push_back(std::move(s));
   }
   return r;
@@ -234,28 +223,44 @@ CornerRotation corner_rotation(const RotationInput& in, const RotationTopology& 
 
 namespace {
 
-// Edge rotation with the limit planes about pivot a (corners a and b left
-// out) already known.
+// Edge rotation with the limit planes about pivot a already known: those of
+// `limits` not on corner b (the other end corner).
 EdgeRotation edge_rotation_with(const RotationInput& in, const RotationTopology& topology, int a,
-                                int b, std::vector<LimitPlane> limits, double uncertainty_rad) {
+                                int b, const std::vector<LimitPlane>& limits,
+                                double uncertainty_rad) {
   EdgeRotation e;
   e.vertices = {std::min(a, b), std::max(a, b)};
   const Eigen::Vector3d pivot = in.vertices[a];
   const Eigen::Vector3d dir = (in.vertices[b] - pivot).normalized();
   // Corners on the axis line (not only its end corners) stay where they are.
   const double on_axis = kOnAxisRel * topology.size;
-  std::erase_if(limits, [&](const LimitPlane& l) {
-    const Eigen::Vector3d arm = in.vertices[l.corner] - pivot;
-    return !((arm - arm.dot(dir) * dir).norm() > on_axis);
-  });
-  auto all = [](const LimitPlane&) { return true; };
-  auto well_posed = [&](const LimitPlane& l) { return !ill_posed(l, uncertainty_rad); };
-  const double plus = margin_of_axis(limits, dir, all);
-  const double minus = margin_of_axis(limits, -dir, all);
+  const IllPosed ill_posed(uncertainty_rad);
+  // One pass: the least sine about +dir is the min of n . dir, about -dir
+  // minus its max (negating a vector negates its dot products exactly);
+  // with all limit planes and without the ill-posed ones.
+  double lo = 1, hi = -1, lo_well = 1, hi_well = -1;
+  int last_corner = -1;
+  bool on_line = false;
+  for (const auto& l : limits) {
+    if (l.corner == b) continue;
+    if (l.corner != last_corner) {  // a corner's limit planes are consecutive
+      last_corner = l.corner;
+      const Eigen::Vector3d arm = in.vertices[l.corner] - pivot;
+      on_line = !((arm - arm.dot(dir) * dir).norm() > on_axis);
+    }
+    if (on_line) continue;
+    const double x = l.normal.dot(dir);
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+    if (!ill_posed(l)) {
+      lo_well = std::min(lo_well, x);
+      hi_well = std::max(hi_well, x);
+    }
+  }
+  const double plus = safe_asin(lo), minus = safe_asin(-hi);
   e.axis = plus >= minus ? dir : Eigen::Vector3d(-dir);
   e.signed_margin = std::max(plus, minus);
-  const double without =
-      std::max(margin_of_axis(limits, dir, well_posed), margin_of_axis(limits, -dir, well_posed));
+  const double without = std::max(safe_asin(lo_well), safe_asin(-hi_well));
   e.rotatable = decide_with_ill_posed(e.signed_margin, without, uncertainty_rad);
   return e;
 }
@@ -287,11 +292,8 @@ RotationAnalysis analyse_rotation(const RotationInput& in, double uncertainty_ra
       result.edges.push_back(edge_rotation(in, topology, a, b, uncertainty_rad));
       continue;
     }
-    std::vector<LimitPlane> limits;
-    for (const auto& l : result.corners[corner_of[a]].limits)
-      if (l.corner != b) limits.push_back(l);
-    result.edges.push_back(
-        edge_rotation_with(in, topology, a, b, std::move(limits), uncertainty_rad));
+    result.edges.push_back(edge_rotation_with(
+        in, topology, a, b, result.corners[corner_of[a]].limits, uncertainty_rad));
   }
   return result;
 }
