@@ -160,6 +160,10 @@ namespace {
 // candidate kept needlessly costs time, never accuracy.
 constexpr double kCutSine = 1e-12;
 constexpr double kCutRounding = 1e-14;
+// How far above the margin before a half-space joins a new candidate is
+// still evaluated: the margin is the best candidate's value, within the
+// rounding of its direction (~1e-15) of the max-min; 1e-9 is far wider.
+constexpr double kCeilingSlack = 1e-9;
 
 }  // namespace
 
@@ -175,6 +179,9 @@ bool IncrementalMargin::consider(const Eigen::Vector3d& raw,
   double tight = std::numeric_limits<double>::infinity();
   for (const Eigen::Vector3d* n : makers) tight = std::min(tight, n->dot(d));
   const double cut = tight - kCutSine - kCutRounding / len;
+  // Its value cannot exceed the margin before the new half-space joined
+  // (ceiling_): above that it is cut without looking at the normals.
+  if (cut > ceiling_) return true;
   double value = tight;
   // Most new candidates are cut by one of the first normals: stop there.
   for (const auto& n : normals_) {
@@ -198,18 +205,35 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   bool any_triple = false;
   std::vector<char>& edge = edge_;
   edge.assign(all_pairs ? 0 : m * m, 0);
+  pairs_.clear();
+  auto mark = [&](int i, int j) {
+    if (!edge[i * m + j]) {
+      edge[i * m + j] = 1;
+      pairs_.push_back({i, j});
+    }
+  };
+  // The margin before w joins: the best live value. With w it can only be
+  // lower, so no new candidate's value is above it (to the rounding of the
+  // candidates' directions, ~1e-15; kCeilingSlack covers it widely).
+  double before = live_.empty() ? std::numeric_limits<double>::infinity()
+                                : -std::numeric_limits<double>::infinity();
   std::erase_if(live_, [&](Candidate& c) {
+    before = std::max(before, c.value);
     const double x = w.dot(c.d);
     if (c.k >= 0) {
       any_triple = true;
       // Seen, or in its plane to within its rounding (coplanar normals: the
       // facet grows by w, as in an incremental hull).
-      if (x < c.value + (c.value - c.cut) && !all_pairs)
-        edge[c.i * m + c.j] = edge[c.i * m + c.k] = edge[c.j * m + c.k] = 1;
+      if (x < c.value + (c.value - c.cut) && !all_pairs) {
+        mark(c.i, c.j);
+        mark(c.i, c.k);
+        mark(c.j, c.k);
+      }
     }
     c.value = std::min(c.value, x);
     return c.value < c.cut;
   });
+  ceiling_ = before + kCeilingSlack;
   // No facet yet (fewer than three normals, or all on one line): every pair.
   if (!any_triple) all_pairs = true;
   normals_.push_back(w);
@@ -237,23 +261,30 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
       opposite_axes_.push_back(u);
     }
   }
-  for (size_t i = 0; i < m; ++i)
-    for (size_t j = i + 1; j < m; ++j) {
-      if (!all_pairs && !edge[i * m + j]) continue;
-      const Eigen::Vector3d c =
-          normals_[i].cross(normals_[j]) + normals_[j].cross(nw) + nw.cross(normals_[i]);
-      const size_t before = live_.size();
-      if (!consider(c, {&normals_[i], &normals_[j], &nw})) {
-        all_pairs_ = true;
-        continue;
-      }
-      consider(-c, {&normals_[i], &normals_[j], &nw});
-      for (size_t n = before; n < live_.size(); ++n) {
-        live_[n].i = static_cast<int>(i);
-        live_[n].j = static_cast<int>(j);
-        live_[n].k = static_cast<int>(m);
-      }
+  auto triple = [&](size_t i, size_t j) {
+    const Eigen::Vector3d c =
+        normals_[i].cross(normals_[j]) + normals_[j].cross(nw) + nw.cross(normals_[i]);
+    const size_t first = live_.size();
+    if (!consider(c, {&normals_[i], &normals_[j], &nw})) {
+      all_pairs_ = true;
+      return;
     }
+    consider(-c, {&normals_[i], &normals_[j], &nw});
+    for (size_t n = first; n < live_.size(); ++n) {
+      live_[n].i = static_cast<int>(i);
+      live_[n].j = static_cast<int>(j);
+      live_[n].k = static_cast<int>(m);
+    }
+  };
+  if (all_pairs) {
+    for (size_t i = 0; i < m; ++i)
+      for (size_t j = i + 1; j < m; ++j) triple(i, j);
+  } else {
+    // The marked pairs in the order of the loop over all pairs.
+    std::sort(pairs_.begin(), pairs_.end());
+    for (const auto& [i, j] : pairs_) triple(i, j);
+  }
+  ceiling_ = std::numeric_limits<double>::infinity();
 }
 
 ConeMargin IncrementalMargin::margin() const {

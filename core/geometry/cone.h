@@ -11,6 +11,8 @@
 // have to open for the cone to get an interior. It is continuous in the
 // normals, so nearly parallel planes give a small margin, not a flip.
 #include <initializer_list>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -98,7 +100,11 @@ class IncrementalMargin {
   // A triple was degenerate (too short a cross product): its face of the
   // hull is not among the candidates, so every pair makes triples from then on.
   bool all_pairs_ = false;
-  std::vector<char> edge_;  // scratch: pairs that make new triples
+  std::vector<char> edge_;                  // scratch: pairs that make new triples
+  std::vector<std::pair<int, int>> pairs_;  // scratch: those pairs, listed
+  // While a half-space is added: the margin before it (+ slack); new
+  // candidates cut above it are skipped.
+  double ceiling_ = std::numeric_limits<double>::infinity();
 };
 
 // Whether A intersected with the union of the cones B_k is empty (that is,
