@@ -197,6 +197,10 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   if (!(len > 0) || !std::isfinite(len))
     throw std::invalid_argument("cone half-space with a zero or non-finite normal");
   const Eigen::Vector3d w = inward_normal / len;
+  if (normals_.empty()) {  // rotation spaces grow to ~15 normals, ~40 candidates
+    normals_.reserve(16);
+    live_.reserve(64);
+  }
   const size_t m = normals_.size();  // index of w
   // The live candidates see the new half-space; those it cuts go. The
   // triples it lowers or lies on (the facets it sees, those in whose plane
@@ -252,8 +256,13 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
     // too, and it never wins there either, unless a third half-space is
     // as tight - a triple, made below, or an opposite pair's circle).
     const Eigen::Vector3d sum = normals_[i] + nw;
-    consider(sum, {&normals_[i], &nw});
-    if (sum.norm() < kOppositeNormals) {
+    const double len = sum.norm();
+    // Both makers' dot products with sum / len are len / 2 (unit normals),
+    // to ~1e-16: when even that lower bound of its tight value is cut above
+    // the ceiling, consider() would skip it; this skips the division.
+    if (0.5 * len - 1e-15 - kCutSine - kCutRounding / len <= ceiling_)
+      consider(sum, {&normals_[i], &nw});
+    if (len < kOppositeNormals) {
       const Eigen::Vector3d u = (normals_[i] - nw).normalized();
       consider(u.unitOrthogonal(), {});
       for (size_t k = 0; k < m; ++k)

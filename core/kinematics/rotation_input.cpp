@@ -49,19 +49,20 @@ RotationTopology rotation_topology(const RotationInput& in) {
   std::map<std::pair<int, int>, int> directed;
   for (size_t f = 0; f < in.faces.size(); ++f) {
     const auto& face = in.faces[f];
-    const std::string face_name = "face " + std::to_string(f);
+    // Named only when an error is thrown (the names cost more than the checks).
+    auto face_name = [f] { return "face " + std::to_string(f); };
     if (face.plane < 0 || face.plane >= np)
-      throw InputError(where(in, face_name), "plane index out of range");
+      throw InputError(where(in, face_name()), "plane index out of range");
     if (face.loop.size() < 3)
-      throw InputError(where(in, face_name), "loop has fewer than 3 corners");
+      throw InputError(where(in, face_name()), "loop has fewer than 3 corners");
     for (size_t k = 0; k < face.loop.size(); ++k) {
       const int a = face.loop[k];
       const int b = face.loop[(k + 1) % face.loop.size()];
       if (a < 0 || a >= nv || b < 0 || b >= nv)
-        throw InputError(where(in, face_name), "vertex index out of range");
-      if (a == b) throw InputError(where(in, face_name), "loop repeats a corner");
+        throw InputError(where(in, face_name()), "vertex index out of range");
+      if (a == b) throw InputError(where(in, face_name()), "loop repeats a corner");
       if (!directed.emplace(std::make_pair(a, b), face.plane).second)
-        throw InputError(where(in, face_name), "edge " + std::to_string(a) + "-" +
+        throw InputError(where(in, face_name()), "edge " + std::to_string(a) + "-" +
                                                    std::to_string(b) +
                                                    " is used twice in the same direction");
       auto& vp = t.vertex_planes[a];

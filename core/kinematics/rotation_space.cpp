@@ -34,18 +34,42 @@ struct IllPosed {
 // search is O(m^4) in their number.
 geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, const IllPosed& ill_posed,
                           bool drop_ill_posed) {
+  // The limit planes taken, by x of their normals: |dx| >= kSameRayRad
+  // already decides "not the same" (the norm is at least |dx|), so only
+  // neighbours in that order within kSameRayRad of x need the full test,
+  // and only those already kept (earlier in the list).
+  std::vector<int> taken;
+  taken.reserve(limits.size());
+  for (int i = 0; i < static_cast<int>(limits.size()); ++i)
+    if (!drop_ill_posed || !ill_posed(limits[i])) taken.push_back(i);
+  std::vector<int> by_x = taken;
+  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) {
+    return std::make_pair(limits[a].normal.x(), a) < std::make_pair(limits[b].normal.x(), b);
+  });
+  std::vector<int> rank(limits.size(), -1);
+  for (int r = 0; r < static_cast<int>(by_x.size()); ++r) rank[by_x[r]] = r;
+  std::vector<char> kept(limits.size(), 0);
   std::vector<Eigen::Vector3d> normals;
-  normals.reserve(limits.size());
-  for (const auto& l : limits) {
-    if (drop_ill_posed && ill_posed(l)) continue;
-    // |dx| >= kSameRayRad already decides "not the same" (the norm is at
-    // least |dx|), so only those within that of x need the full test.
-    const double x = l.normal.x();
-    const bool seen = std::any_of(normals.begin(), normals.end(), [&](const Eigen::Vector3d& n) {
-      return std::abs(n.x() - x) < geometry::kSameRayRad &&
-             (n - l.normal).norm() < geometry::kSameRayRad;
-    });
-    if (!seen) normals.push_back(l.normal);
+  normals.reserve(taken.size());
+  for (int i : taken) {
+    const Eigen::Vector3d& n = limits[i].normal;
+    const double x = n.x();
+    auto same = [&](int k) {
+      return k < i && kept[k] && std::abs(limits[k].normal.x() - x) < geometry::kSameRayRad &&
+             (limits[k].normal - n).norm() < geometry::kSameRayRad;
+    };
+    bool seen = false;
+    for (int r = rank[i] - 1;
+         !seen && r >= 0 && limits[by_x[r]].normal.x() > x - geometry::kSameRayRad; --r)
+      seen = same(by_x[r]);
+    for (int r = rank[i] + 1; !seen && r < static_cast<int>(by_x.size()) &&
+                              limits[by_x[r]].normal.x() < x + geometry::kSameRayRad;
+         ++r)
+      seen = same(by_x[r]);
+    if (!seen) {
+      kept[i] = 1;
+      normals.push_back(n);
+    }
   }
   return geometry::Cone(normals);
 }
@@ -109,7 +133,9 @@ geometry::ConeMargin exact_margin(const geometry::Cone& cone) {
     const bool in_basis = std::any_of(basis.begin(), basis.end(),
                                       [&](const Eigen::Vector3d& n) { return n == all[worst]; });
     if (worst_dot >= level - kLevelRounding || in_basis) return certified(m, worst_dot);
-    if (!(m.angle < previous)) break;
+    // Not lower, or shut already (a cone with an interior never has a
+    // subset below zero): the growing subset from here.
+    if (!(m.angle < previous) || m.angle < 0) break;
     previous = m.angle;
     std::vector<Eigen::Vector3d> next;
     for (const auto& n : basis)
@@ -151,6 +177,9 @@ std::vector<LimitPlane> limit_planes(const RotationInput& in, const RotationTopo
                                      const Eigen::Vector3d& pivot, const std::vector<int>& exclude,
                                      int* void_count) {
   std::vector<LimitPlane> limits;
+  size_t most = 0;
+  for (const auto& planes : topology.vertex_planes) most += planes.size();
+  limits.reserve(most);
   int voids = 0;
   const double on_axis = kOnAxisRel * topology.size;
   for (int c = 0; c < static_cast<int>(in.vertices.size()); ++c) {
