@@ -107,6 +107,13 @@ class IncrementalMargin {
   double ceiling_ = std::numeric_limits<double>::infinity();
 };
 
+// The margin of Cone::margin() (the same value to rounding), by active sets:
+// the exact search on a growing subset of the half-spaces, certified against
+// all of them (see cone.cpp). For cones with many half-spaces (rotation
+// spaces: ~50) it is far cheaper than the O(m^4) search; up to
+// `direct_up_to` half-spaces the direct search is used.
+ConeMargin active_set_margin(const Cone& cone, size_t direct_up_to = 12);
+
 // Whether A intersected with the union of the cones B_k is empty (that is,
 // A cap B_k is empty for every k). margin > 0: shut by that angle (the least
 // shut intersection); margin < 0: open by -margin, through B[open_index].

@@ -63,8 +63,8 @@ RotationTopology rotation_topology(const RotationInput& in) {
       if (a == b) throw InputError(where(in, face_name()), "loop repeats a corner");
       if (!directed.emplace(std::make_pair(a, b), face.plane).second)
         throw InputError(where(in, face_name()), "edge " + std::to_string(a) + "-" +
-                                                   std::to_string(b) +
-                                                   " is used twice in the same direction");
+                                                     std::to_string(b) +
+                                                     " is used twice in the same direction");
       auto& vp = t.vertex_planes[a];
       if (std::find(vp.begin(), vp.end(), face.plane) == vp.end()) vp.push_back(face.plane);
     }

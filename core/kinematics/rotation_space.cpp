@@ -74,94 +74,6 @@ geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, const IllPosed&
   return geometry::Cone(normals);
 }
 
-// The half-space of `all` that the unit direction d is least inside.
-std::pair<size_t, double> least_inside(const std::vector<Eigen::Vector3d>& all,
-                                       const Eigen::Vector3d& d) {
-  size_t worst = 0;
-  double worst_dot = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < all.size(); ++i) {
-    const double x = all[i].dot(d);
-    if (x < worst_dot) {
-      worst_dot = x;
-      worst = i;
-    }
-  }
-  return {worst, worst_dot};
-}
-
-// Rounding of the dot products (~1e-16) is all that may separate a
-// half-space the subset's optimum keeps at the level from one it violates.
-constexpr double kLevelRounding = 1e-15;
-
-// A half-space this close (sine) to the level at the subset's optimum is
-// kept in the basis: rounding of the optimal direction is ~1e-15, so this
-// keeps every half-space that fixes it, and a few more do no harm.
-constexpr double kTightSine = 1e-9;
-
-// The exact margin of a cone with many half-spaces, by active sets: the
-// margin of a subset is never below the margin of the whole (more
-// half-spaces can only lower the max-min), so when the subset's optimal
-// direction keeps every other half-space at least as far, it is the
-// optimum of the whole. Otherwise the half-space it violates most joins the
-// subset.
-//
-// First with a basis: the subset is only the half-spaces tight at its
-// optimum (at most three, more where planes meet in one line) and the one
-// joining, so each step is geometry::Cone's exact search on about four
-// half-spaces. For a cone with an interior the optimum is unique and each
-// step lowers the margin strictly, so no basis comes back. Where a step
-// does not lower it (a shut cone, whose max-min on the sphere is not a
-// convex problem), the basis is abandoned for the growing subset, which
-// ends because every half-space joins it at most once. Either way the
-// answer is certified by the same test against all half-spaces.
-geometry::ConeMargin exact_margin(const geometry::Cone& cone) {
-  const auto& all = cone.normals();
-  constexpr size_t kDirect = 12;  // below this the direct search is as cheap
-  if (all.size() <= kDirect) return cone.margin();
-  auto certified = [&](const geometry::ConeMargin& m, double worst_dot) {
-    geometry::ConeMargin result = m;
-    result.angle = std::min(m.angle, safe_asin(worst_dot));
-    result.sine = std::min(m.sine, worst_dot);
-    return result;
-  };
-  std::vector<Eigen::Vector3d> basis = {all.front()};
-  double previous = std::numeric_limits<double>::infinity();
-  for (size_t step = 0; step < 4 * all.size(); ++step) {
-    const geometry::ConeMargin m = geometry::Cone(basis).margin();
-    const double level = m.sine;
-    const auto [worst, worst_dot] = least_inside(all, m.direction);
-    const bool in_basis = std::any_of(basis.begin(), basis.end(),
-                                      [&](const Eigen::Vector3d& n) { return n == all[worst]; });
-    if (worst_dot >= level - kLevelRounding || in_basis) return certified(m, worst_dot);
-    // Not lower, or shut already (a cone with an interior never has a
-    // subset below zero): the growing subset from here.
-    if (!(m.angle < previous) || m.angle < 0) break;
-    previous = m.angle;
-    std::vector<Eigen::Vector3d> next;
-    for (const auto& n : basis)
-      if (n.dot(m.direction) <= level + kTightSine) next.push_back(n);
-    next.push_back(all[worst]);
-    basis = std::move(next);
-  }
-  // The growing subset starts from the last basis (for a shut cone: the
-  // half-spaces that shut it), not from one half-space.
-  geometry::IncrementalMargin active;  // its candidates are kept from step to step
-  std::vector<char> used(all.size(), 0);
-  for (size_t i = 0; i < all.size(); ++i)
-    if (std::find(basis.begin(), basis.end(), all[i]) != basis.end() && !used[i]) {
-      used[i] = 1;
-      active.add(all[i]);
-    }
-  for (;;) {
-    const geometry::ConeMargin m = active.margin();
-    const double level = m.sine;
-    const auto [worst, worst_dot] = least_inside(all, m.direction);
-    if (worst_dot >= level - kLevelRounding || used[worst]) return certified(m, worst_dot);
-    used[worst] = 1;
-    active.add(all[worst]);
-  }
-}
-
 // A verdict that also turns marginal when the limit planes inside the
 // orientation uncertainty decide it: with and without them the sign differs.
 geometry::Verdict decide_with_ill_posed(double with_all, double without_ill_posed,
@@ -210,13 +122,14 @@ CornerRotation corner_rotation(const RotationInput& in, const RotationTopology& 
   r.limits = limit_planes(in, topology, pivot, {vertex}, &r.void_limits);
   const IllPosed ill_posed(uncertainty_rad);
   r.space = limit_cone(r.limits, ill_posed, false);
-  const geometry::ConeMargin m = exact_margin(r.space);
+  const geometry::ConeMargin m = geometry::active_set_margin(r.space, 6);
   r.signed_margin = m.angle;
   r.best_axis = m.direction;
   const bool any_ill_posed = std::any_of(r.limits.begin(), r.limits.end(),
                                          [&](const LimitPlane& l) { return ill_posed(l); });
   const double without =
-      any_ill_posed ? exact_margin(limit_cone(r.limits, ill_posed, true)).angle : r.signed_margin;
+      any_ill_posed ? geometry::active_set_margin(limit_cone(r.limits, ill_posed, true), 6).angle
+                    : r.signed_margin;
   r.rotatable = decide_with_ill_posed(r.signed_margin, without, uncertainty_rad);
   if (r.signed_margin >= -geometry::kAngleEpsRad) r.extreme_rays = r.space.edges(m.angle);
 
