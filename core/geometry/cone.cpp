@@ -192,6 +192,32 @@ bool IncrementalMargin::consider(const Eigen::Vector3d& raw,
   return true;
 }
 
+bool IncrementalMargin::consider_triple(const Eigen::Vector3d& raw, int i, int j, int k) {
+  // consider(raw, makers i, j, k) and then consider(-raw, the same), sharing
+  // the length, the direction and the makers' dot products: negating a
+  // vector negates them exactly.
+  const double len = raw.norm();
+  if (!(len > kParallelCross)) return false;
+  const Eigen::Vector3d d = raw / len;
+  const double a = normals_[i].dot(d), b = normals_[j].dot(d), c = normals_[k].dot(d);
+  for (const double sense : {1.0, -1.0}) {
+    const double tight = sense > 0 ? std::min(std::min(a, b), c) : -std::max(std::max(a, b), c);
+    const double cut = tight - kCutSine - kCutRounding / len;
+    if (cut > ceiling_) continue;  // see consider()
+    double value = tight;
+    bool is_cut = false;
+    for (const auto& n : normals_) {
+      value = std::min(value, sense * n.dot(d));
+      if (value < cut) {
+        is_cut = true;
+        break;
+      }
+    }
+    if (!is_cut) live_.push_back({sense > 0 ? d : Eigen::Vector3d(-d), value, cut, i, j, k});
+  }
+  return true;
+}
+
 void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   const double len = inward_normal.norm();
   if (!(len > 0) || !std::isfinite(len))
@@ -273,17 +299,8 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   auto triple = [&](size_t i, size_t j) {
     const Eigen::Vector3d c =
         normals_[i].cross(normals_[j]) + normals_[j].cross(nw) + nw.cross(normals_[i]);
-    const size_t first = live_.size();
-    if (!consider(c, {&normals_[i], &normals_[j], &nw})) {
+    if (!consider_triple(c, static_cast<int>(i), static_cast<int>(j), static_cast<int>(m)))
       all_pairs_ = true;
-      return;
-    }
-    consider(-c, {&normals_[i], &normals_[j], &nw});
-    for (size_t n = first; n < live_.size(); ++n) {
-      live_[n].i = static_cast<int>(i);
-      live_[n].j = static_cast<int>(j);
-      live_[n].k = static_cast<int>(m);
-    }
   };
   if (all_pairs) {
     for (size_t i = 0; i < m; ++i)

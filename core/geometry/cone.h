@@ -94,6 +94,9 @@ class IncrementalMargin {
   // the normals that made it (none: a rare candidate, never dropped).
   // Returns whether it was a candidate at all (not degenerate).
   bool consider(const Eigen::Vector3d& raw, std::initializer_list<const Eigen::Vector3d*> makers);
+  // Both senses of the triple candidate of normals i, j, k (in the
+  // direction raw and its opposite).
+  bool consider_triple(const Eigen::Vector3d& raw, int i, int j, int k);
   std::vector<Eigen::Vector3d> normals_;
   std::vector<Candidate> live_;
   std::vector<Eigen::Vector3d> opposite_axes_;  // u of each pair of opposite normals
