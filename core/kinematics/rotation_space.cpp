@@ -34,43 +34,41 @@ struct IllPosed {
 // search is O(m^4) in their number.
 geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, const IllPosed& ill_posed,
                           bool drop_ill_posed) {
-  // The limit planes taken, by x of their normals: |dx| >= kSameRayRad
-  // already decides "not the same" (the norm is at least |dx|), so only
-  // neighbours in that order within kSameRayRad of x need the full test,
-  // and only those already kept (earlier in the list).
-  std::vector<int> taken;
-  taken.reserve(limits.size());
+  // A normal is left out when it is within kSameRayRad of one kept earlier
+  // in the list. |dx| >= kSameRayRad already decides "not the same" (the
+  // norm is at least |dx|), so in the order by x only runs of neighbours
+  // closer than that in x can hold repeats (rare): only those are checked,
+  // in list order.
+  std::vector<std::pair<double, int>> by_x;
+  by_x.reserve(limits.size());
   for (int i = 0; i < static_cast<int>(limits.size()); ++i)
-    if (!drop_ill_posed || !ill_posed(limits[i])) taken.push_back(i);
-  std::vector<int> by_x = taken;
-  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) {
-    return std::make_pair(limits[a].normal.x(), a) < std::make_pair(limits[b].normal.x(), b);
-  });
-  std::vector<int> rank(limits.size(), -1);
-  for (int r = 0; r < static_cast<int>(by_x.size()); ++r) rank[by_x[r]] = r;
-  std::vector<char> kept(limits.size(), 0);
-  std::vector<Eigen::Vector3d> normals;
-  normals.reserve(taken.size());
-  for (int i : taken) {
-    const Eigen::Vector3d& n = limits[i].normal;
-    const double x = n.x();
-    auto same = [&](int k) {
-      return k < i && kept[k] && std::abs(limits[k].normal.x() - x) < geometry::kSameRayRad &&
-             (limits[k].normal - n).norm() < geometry::kSameRayRad;
-    };
-    bool seen = false;
-    for (int r = rank[i] - 1;
-         !seen && r >= 0 && limits[by_x[r]].normal.x() > x - geometry::kSameRayRad; --r)
-      seen = same(by_x[r]);
-    for (int r = rank[i] + 1; !seen && r < static_cast<int>(by_x.size()) &&
-                              limits[by_x[r]].normal.x() < x + geometry::kSameRayRad;
-         ++r)
-      seen = same(by_x[r]);
-    if (!seen) {
-      kept[i] = 1;
-      normals.push_back(n);
+    if (!drop_ill_posed || !ill_posed(limits[i])) by_x.emplace_back(limits[i].normal.x(), i);
+  std::sort(by_x.begin(), by_x.end());
+  std::vector<char> out(limits.size(), 1);  // 1: left out (not taken or a repeat)
+  for (const auto& [x, i] : by_x) out[i] = 0;
+  for (size_t r = 0; r + 1 < by_x.size();) {
+    size_t end = r + 1;
+    while (end < by_x.size() && by_x[end].first - by_x[end - 1].first < geometry::kSameRayRad)
+      ++end;
+    if (end - r > 1) {
+      std::vector<int> run;
+      for (size_t k = r; k < end; ++k) run.push_back(by_x[k].second);
+      std::sort(run.begin(), run.end());
+      for (size_t k = 1; k < run.size(); ++k) {
+        const LimitPlane& l = limits[run[k]];
+        for (size_t e = 0; e < k && !out[run[k]]; ++e)
+          out[run[k]] =
+              !out[run[e]] &&
+              std::abs(limits[run[e]].normal.x() - l.normal.x()) < geometry::kSameRayRad &&
+              (limits[run[e]].normal - l.normal).norm() < geometry::kSameRayRad;
+      }
     }
+    r = end;
   }
+  std::vector<Eigen::Vector3d> normals;
+  normals.reserve(by_x.size());
+  for (size_t i = 0; i < limits.size(); ++i)
+    if (!out[i]) normals.push_back(limits[i].normal);
   return geometry::Cone(normals);
 }
 
