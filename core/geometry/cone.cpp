@@ -226,6 +226,8 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   if (normals_.empty()) {  // rotation spaces grow to ~15 normals, ~40 candidates
     normals_.reserve(16);
     live_.reserve(64);
+    edge_.reserve(16 * 16);
+    pairs_.reserve(32);
   }
   const size_t m = normals_.size();  // index of w
   // The live candidates see the new half-space; those it cuts go. The
