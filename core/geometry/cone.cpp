@@ -316,11 +316,19 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
 }
 
 ConeMargin IncrementalMargin::margin() const {
-  ConeMargin best;
   if (normals_.empty()) {
+    ConeMargin best;
     best.angle = std::numbers::pi / 2;
     return best;
   }
+  ConeMargin best = margin_sine();
+  best.angle = safe_asin(best.sine);
+  return best;
+}
+
+ConeMargin IncrementalMargin::margin_sine() const {
+  ConeMargin best;
+  if (normals_.empty()) return best;
   double best_dot = -std::numeric_limits<double>::infinity();
   for (const auto& c : live_)
     if (c.value > best_dot) {
@@ -334,7 +342,6 @@ ConeMargin IncrementalMargin::margin() const {
     best_dot = min_dot(normals_, any, -2.0);
   }
   best.sine = best_dot;
-  best.angle = safe_asin(best_dot);
   return best;
 }
 
@@ -384,11 +391,11 @@ ConeMargin active_set_margin(const Cone& cone, size_t direct_up_to) {
   used[0] = 1;
   active.add(all[0]);
   for (;;) {
-    const ConeMargin m = active.margin();
+    const ConeMargin m = active.margin_sine();
     const auto [worst, worst_dot] = least_inside(all, m.direction);
     if (worst_dot >= m.sine - kLevelRounding || used[worst]) {
       ConeMargin result = m;
-      result.angle = std::min(m.angle, safe_asin(worst_dot));
+      result.angle = std::min(safe_asin(m.sine), safe_asin(worst_dot));
       result.sine = std::min(m.sine, worst_dot);
       return result;
     }

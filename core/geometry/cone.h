@@ -81,6 +81,9 @@ class IncrementalMargin {
  public:
   void add(const Eigen::Vector3d& inward_normal);  // normalised here; zero throws
   ConeMargin margin() const;
+  // margin() without its angle (left 0) for searches that need only the
+  // sine and the direction at each step.
+  ConeMargin margin_sine() const;
   size_t size() const { return normals_.size(); }
 
  private:
