@@ -35,6 +35,17 @@ Cone::Cone(const std::vector<Eigen::Vector3d>& inward_normals) {
   for (const auto& n : inward_normals) add(n);
 }
 
+Cone Cone::from_unit_normals(std::vector<Eigen::Vector3d> unit_inward_normals) {
+  for (const auto& n : unit_inward_normals)
+    // Rounding leaves |n|^2 within a few 1e-16 of 1; 1e-12 only catches
+    // normals that were never normalised.
+    if (!(std::abs(n.squaredNorm() - 1) < 1e-12))
+      throw std::invalid_argument("cone half-space normal is not a unit vector");
+  Cone c;
+  c.normals_ = std::move(unit_inward_normals);
+  return c;
+}
+
 void Cone::add(const Eigen::Vector3d& inward_normal) {
   const double len = inward_normal.norm();
   if (!(len > 0) || !std::isfinite(len))

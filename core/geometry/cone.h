@@ -32,6 +32,10 @@ class Cone {
   // Each normal points into its half-space; it is normalised here. A zero
   // normal has no half-space and throws std::invalid_argument.
   explicit Cone(const std::vector<Eigen::Vector3d>& inward_normals);
+  // Normals that are unit already (to rounding, as from v / v.norm()) are
+  // taken as they are, without normalising them again; non-finite ones or
+  // ones off unit length by more than 1e-12 throw std::invalid_argument.
+  static Cone from_unit_normals(std::vector<Eigen::Vector3d> unit_inward_normals);
 
   void add(const Eigen::Vector3d& inward_normal);
   const std::vector<Eigen::Vector3d>& normals() const { return normals_; }

@@ -69,7 +69,8 @@ geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, const IllPosed&
   normals.reserve(by_x.size());
   for (size_t i = 0; i < limits.size(); ++i)
     if (!out[i]) normals.push_back(limits[i].normal);
-  return geometry::Cone(normals);
+  // The limit planes' normals are unit (w / |w|, limit_planes()).
+  return geometry::Cone::from_unit_normals(std::move(normals));
 }
 
 // A verdict that also turns marginal when the limit planes inside the
