@@ -285,7 +285,9 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   // w with each earlier normal (bisector, or the circle of an opposite
   // pair), w with each earlier pair - in the same arithmetic. The circle
   // candidates of opposite pairs are rare and never dropped.
-  consider(nw, {&nw});
+  // w alone: its tight value is 1 (to ~1e-16, |w| = 1); skipped when even
+  // that cut is above the ceiling, as consider() would.
+  if (1 - 1e-15 - kCutSine - kCutRounding / (1 - 1e-15) <= ceiling_) consider(nw, {&nw});
   for (const auto& u : opposite_axes_) consider(nw - nw.dot(u) * u, {});
   for (size_t i = 0; i < m; ++i) {
     // Only the bisector +sum: where just two half-spaces are tight, the

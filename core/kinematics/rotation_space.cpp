@@ -101,12 +101,13 @@ std::vector<LimitPlane> limit_planes(const RotationInput& in, const RotationTopo
     for (int p : topology.vertex_planes[c]) {
       if (!in.planes[p].joint) continue;
       const Eigen::Vector3d w = arm.cross(in.planes[p].inward_normal);  // (C - R) x n = n x (R - C)
-      const double conditioning = w.norm() / arm_len;
+      const double w_len = w.norm();
+      const double conditioning = w_len / arm_len;
       if (!(conditioning > kVoidLimitPlaneSin)) {
         ++voids;
         continue;
       }
-      limits.push_back({c, p, w / w.norm(), conditioning});
+      limits.push_back({c, p, w / w_len, conditioning});
     }
   }
   if (void_count) *void_count = voids;
