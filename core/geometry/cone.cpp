@@ -229,6 +229,14 @@ bool IncrementalMargin::consider_triple(const Eigen::Vector3d& raw, int i, int j
   return true;
 }
 
+void IncrementalMargin::clear() {
+  normals_.clear();
+  live_.clear();
+  opposite_axes_.clear();
+  all_pairs_ = false;
+  ceiling_ = std::numeric_limits<double>::infinity();
+}
+
 void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
   const double len = inward_normal.norm();
   if (!(len > 0) || !std::isfinite(len))
@@ -399,8 +407,13 @@ constexpr double kLevelRounding = 1e-15;
 ConeMargin active_set_margin(const Cone& cone, size_t direct_up_to) {
   const auto& all = cone.normals();
   if (all.size() <= direct_up_to) return cone.margin();
-  IncrementalMargin active;
-  std::vector<char> used(all.size(), 0);
+  // One search object and one list per thread, reused: a block's quick
+  // checks run ~10 of these searches, and their memory is most of the
+  // allocations otherwise.
+  thread_local IncrementalMargin active;
+  thread_local std::vector<char> used;
+  active.clear();
+  used.assign(all.size(), 0);
   used[0] = 1;
   active.add(all[0]);
   for (;;) {

@@ -84,6 +84,8 @@ class Cone {
 class IncrementalMargin {
  public:
   void add(const Eigen::Vector3d& inward_normal);  // normalised here; zero throws
+  // Back to no half-spaces, keeping the memory (for searches run many times).
+  void clear();
   ConeMargin margin() const;
   // margin() without its angle (left 0) for searches that need only the
   // sine and the direction at each step.

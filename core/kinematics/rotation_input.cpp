@@ -43,6 +43,7 @@ RotationTopology rotation_topology(const RotationInput& in) {
 
   RotationTopology t;
   t.vertex_planes.resize(nv);
+  for (auto& planes : t.vertex_planes) planes.reserve(4);  // most corners: 3 planes
   // Directed edges (a, b, plane of the face it belongs to); each undirected
   // edge must appear once in each direction (closed, consistently oriented).
   // A sorted list, not a map: a block has a few dozen edges.

@@ -39,12 +39,13 @@ geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, const IllPosed&
   // norm is at least |dx|), so in the order by x only runs of neighbours
   // closer than that in x can hold repeats (rare): only those are checked,
   // in list order.
-  std::vector<std::pair<double, int>> by_x;
-  by_x.reserve(limits.size());
+  thread_local std::vector<std::pair<double, int>> by_x;  // scratch, reused
+  thread_local std::vector<char> out;
+  by_x.clear();
   for (int i = 0; i < static_cast<int>(limits.size()); ++i)
     if (!drop_ill_posed || !ill_posed(limits[i])) by_x.emplace_back(limits[i].normal.x(), i);
   std::sort(by_x.begin(), by_x.end());
-  std::vector<char> out(limits.size(), 1);  // 1: left out (not taken or a repeat)
+  out.assign(limits.size(), 1);  // 1: left out (not taken or a repeat)
   for (const auto& [x, i] : by_x) out[i] = 0;
   for (size_t r = 0; r + 1 < by_x.size();) {
     size_t end = r + 1;
