@@ -211,9 +211,10 @@ bool IncrementalMargin::consider_triple(const Eigen::Vector3d& raw, int i, int j
   if (!(len > kParallelCross)) return false;
   const Eigen::Vector3d d = raw / len;
   const double a = normals_[i].dot(d), b = normals_[j].dot(d), c = normals_[k].dot(d);
+  const double rounding = kCutRounding / len;
   for (const double sense : {1.0, -1.0}) {
     const double tight = sense > 0 ? std::min(std::min(a, b), c) : -std::max(std::max(a, b), c);
-    const double cut = tight - kCutSine - kCutRounding / len;
+    const double cut = tight - kCutSine - rounding;
     if (cut > ceiling_) continue;  // see consider()
     double value = tight;
     bool is_cut = false;
@@ -305,6 +306,11 @@ void IncrementalMargin::add(const Eigen::Vector3d& inward_normal) {
     // too, and it never wins there either, unless a third half-space is
     // as tight - a triple, made below, or an opposite pair's circle).
     const Eigen::Vector3d sum = normals_[i] + nw;
+    // Shut (the ceiling below zero): a bisector of a pair far from opposite
+    // (|sum| >= kOppositeNormals, squared with a margin for rounding) is
+    // skipped by the test below whatever its length (its cut is above
+    // 0.5e-3 - 2e-11 > 0), and there is no circle: no square root needed.
+    if (ceiling_ < 0 && sum.squaredNorm() > 1.001 * kOppositeNormals * kOppositeNormals) continue;
     const double len = sum.norm();
     // Both makers' dot products with sum / len are len / 2 (unit normals),
     // to ~1e-16: when even that lower bound of its tight value is cut above
