@@ -11,6 +11,8 @@
 // have to open for the cone to get an interior. It is continuous in the
 // normals, so nearly parallel planes give a small margin, not a flip.
 #include <initializer_list>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -30,6 +32,10 @@ class Cone {
   // Each normal points into its half-space; it is normalised here. A zero
   // normal has no half-space and throws std::invalid_argument.
   explicit Cone(const std::vector<Eigen::Vector3d>& inward_normals);
+  // Normals that are unit already (to rounding, as from v / v.norm()) are
+  // taken as they are, without normalising them again; non-finite ones or
+  // ones off unit length by more than 1e-12 throw std::invalid_argument.
+  static Cone from_unit_normals(std::vector<Eigen::Vector3d> unit_inward_normals);
 
   void add(const Eigen::Vector3d& inward_normal);
   const std::vector<Eigen::Vector3d>& normals() const { return normals_; }
@@ -78,7 +84,12 @@ class Cone {
 class IncrementalMargin {
  public:
   void add(const Eigen::Vector3d& inward_normal);  // normalised here; zero throws
+  // Back to no half-spaces, keeping the memory (for searches run many times).
+  void clear();
   ConeMargin margin() const;
+  // margin() without its angle (left 0) for searches that need only the
+  // sine and the direction at each step.
+  ConeMargin margin_sine() const;
   size_t size() const { return normals_.size(); }
 
  private:
@@ -92,14 +103,28 @@ class IncrementalMargin {
   // the normals that made it (none: a rare candidate, never dropped).
   // Returns whether it was a candidate at all (not degenerate).
   bool consider(const Eigen::Vector3d& raw, std::initializer_list<const Eigen::Vector3d*> makers);
+  // Both senses of the triple candidate of normals i, j, k (in the
+  // direction raw and its opposite).
+  bool consider_triple(const Eigen::Vector3d& raw, int i, int j, int k);
   std::vector<Eigen::Vector3d> normals_;
   std::vector<Candidate> live_;
   std::vector<Eigen::Vector3d> opposite_axes_;  // u of each pair of opposite normals
   // A triple was degenerate (too short a cross product): its face of the
   // hull is not among the candidates, so every pair makes triples from then on.
   bool all_pairs_ = false;
-  std::vector<char> edge_;  // scratch: pairs that make new triples
+  std::vector<char> edge_;                  // scratch: pairs that make new triples
+  std::vector<std::pair<int, int>> pairs_;  // scratch: those pairs, listed
+  // While a half-space is added: the margin before it (+ slack); new
+  // candidates cut above it are skipped.
+  double ceiling_ = std::numeric_limits<double>::infinity();
 };
+
+// The margin of Cone::margin() (the same value to rounding), by active sets:
+// the exact search on a growing subset of the half-spaces, certified against
+// all of them (see cone.cpp). For cones with many half-spaces (rotation
+// spaces: ~50) it is far cheaper than the O(m^4) search; up to
+// `direct_up_to` half-spaces the direct search is used.
+ConeMargin active_set_margin(const Cone& cone, size_t direct_up_to = 12);
 
 // Whether A intersected with the union of the cones B_k is empty (that is,
 // A cap B_k is empty for every k). margin > 0: shut by that angle (the least

@@ -17,7 +17,8 @@ Finiteness decide_finiteness(geometry::Cone jp, std::vector<geometry::Cone> eps,
   // No free face: the excavation pyramid is the whole space.
   if (eps.empty()) eps.emplace_back();
   f.excavation_pyramids = std::move(eps);
-  f.jp_margin = f.joint_pyramid.margin().angle;
+  // Up to ~20 joints: the active sets are cheaper from 7 on (see cone.h).
+  f.jp_margin = geometry::active_set_margin(f.joint_pyramid, 6).angle;
   const geometry::UnionEmptiness u =
       geometry::intersection_with_union_empty(f.joint_pyramid, f.excavation_pyramids);
   f.jp_ep_margin = -u.margin;

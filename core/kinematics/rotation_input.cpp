@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 
 #include "core/blocks/polyhedron.h"
@@ -44,37 +43,53 @@ RotationTopology rotation_topology(const RotationInput& in) {
 
   RotationTopology t;
   t.vertex_planes.resize(nv);
-  // Directed edge (a, b) -> plane of the face it belongs to; each undirected
+  for (auto& planes : t.vertex_planes) planes.reserve(4);  // most corners: 3 planes
+  // Directed edges (a, b, plane of the face it belongs to); each undirected
   // edge must appear once in each direction (closed, consistently oriented).
-  std::map<std::pair<int, int>, int> directed;
+  // A sorted list, not a map: a block has a few dozen edges.
+  struct Directed {
+    int a, b, plane, face;
+  };
+  std::vector<Directed> directed;
+  size_t corners = 0;
+  for (const auto& face : in.faces) corners += face.loop.size();
+  directed.reserve(corners);
   for (size_t f = 0; f < in.faces.size(); ++f) {
     const auto& face = in.faces[f];
-    const std::string face_name = "face " + std::to_string(f);
+    // Named only when an error is thrown (the names cost more than the checks).
+    auto face_name = [](size_t k) { return "face " + std::to_string(k); };
     if (face.plane < 0 || face.plane >= np)
-      throw InputError(where(in, face_name), "plane index out of range");
+      throw InputError(where(in, face_name(f)), "plane index out of range");
     if (face.loop.size() < 3)
-      throw InputError(where(in, face_name), "loop has fewer than 3 corners");
+      throw InputError(where(in, face_name(f)), "loop has fewer than 3 corners");
     for (size_t k = 0; k < face.loop.size(); ++k) {
       const int a = face.loop[k];
       const int b = face.loop[(k + 1) % face.loop.size()];
       if (a < 0 || a >= nv || b < 0 || b >= nv)
-        throw InputError(where(in, face_name), "vertex index out of range");
-      if (a == b) throw InputError(where(in, face_name), "loop repeats a corner");
-      if (!directed.emplace(std::make_pair(a, b), face.plane).second)
-        throw InputError(where(in, face_name), "edge " + std::to_string(a) + "-" +
-                                                   std::to_string(b) +
-                                                   " is used twice in the same direction");
+        throw InputError(where(in, face_name(f)), "vertex index out of range");
+      if (a == b) throw InputError(where(in, face_name(f)), "loop repeats a corner");
+      directed.push_back({a, b, face.plane, static_cast<int>(f)});
       auto& vp = t.vertex_planes[a];
       if (std::find(vp.begin(), vp.end(), face.plane) == vp.end()) vp.push_back(face.plane);
     }
   }
-  for (const auto& [ab, plane] : directed) {
-    const auto [a, b] = ab;
-    const auto twin = directed.find({b, a});
-    if (twin == directed.end())
-      throw InputError(where(in, "edge " + std::to_string(a) + "-" + std::to_string(b)),
+  auto key = [](const Directed& d) { return std::make_pair(d.a, d.b); };
+  // Stable: of two uses of one directed edge, the later face is named.
+  std::stable_sort(directed.begin(), directed.end(),
+                   [&](const Directed& x, const Directed& y) { return key(x) < key(y); });
+  for (size_t k = 1; k < directed.size(); ++k)
+    if (key(directed[k]) == key(directed[k - 1]))
+      throw InputError(where(in, "face " + std::to_string(directed[k].face)),
+                       "edge " + std::to_string(directed[k].a) + "-" +
+                           std::to_string(directed[k].b) + " is used twice in the same direction");
+  for (const auto& d : directed) {
+    const auto twin = std::lower_bound(
+        directed.begin(), directed.end(), std::make_pair(d.b, d.a),
+        [&](const Directed& x, const std::pair<int, int>& k) { return key(x) < k; });
+    if (twin == directed.end() || key(*twin) != std::make_pair(d.b, d.a))
+      throw InputError(where(in, "edge " + std::to_string(d.a) + "-" + std::to_string(d.b)),
                        "has a face on one side only (the block is not closed)");
-    if (a < b) t.edges.push_back(RotationEdge{{a, b}, {plane, twin->second}});
+    if (d.a < d.b) t.edges.push_back(RotationEdge{{d.a, d.b}, {d.plane, twin->plane}});
   }
   for (int v = 0; v < nv; ++v) {
     if (t.vertex_planes[v].empty())

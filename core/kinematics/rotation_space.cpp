@@ -17,138 +17,61 @@ double safe_asin(double s) {
 }
 
 // Limit planes whose orientation is inside the measurement uncertainty: C - R
-// within `uncertainty` of the joint normal (see rotation_space.h).
-bool ill_posed(const LimitPlane& l, double uncertainty_rad) {
-  return uncertainty_rad > 0 &&
-         l.conditioning < std::sin(std::min(uncertainty_rad, std::numbers::pi / 2));
-}
+// within `uncertainty` of the joint normal (see rotation_space.h). The sine
+// of the uncertainty is taken once per rotation space (IllPosed), not once
+// per limit plane.
+struct IllPosed {
+  explicit IllPosed(double uncertainty_rad)
+      : active(uncertainty_rad > 0),
+        below(active ? std::sin(std::min(uncertainty_rad, std::numbers::pi / 2)) : 0) {}
+  bool operator()(const LimitPlane& l) const { return active && l.conditioning < below; }
+  bool active;
+  double below;
+};
 
 // The cone of the limit half-spaces, numerically repeated normals (faces
 // sharing a plane, corners on one line from R) entered once: the margin
 // search is O(m^4) in their number.
-geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, double uncertainty_rad,
+geometry::Cone limit_cone(const std::vector<LimitPlane>& limits, const IllPosed& ill_posed,
                           bool drop_ill_posed) {
+  // A normal is left out when it is within kSameRayRad of one kept earlier
+  // in the list. |dx| >= kSameRayRad already decides "not the same" (the
+  // norm is at least |dx|), so in the order by x only runs of neighbours
+  // closer than that in x can hold repeats (rare): only those are checked,
+  // in list order.
+  thread_local std::vector<std::pair<double, int>> by_x;  // scratch, reused
+  thread_local std::vector<char> out;
+  by_x.clear();
+  for (int i = 0; i < static_cast<int>(limits.size()); ++i)
+    if (!drop_ill_posed || !ill_posed(limits[i])) by_x.emplace_back(limits[i].normal.x(), i);
+  std::sort(by_x.begin(), by_x.end());
+  out.assign(limits.size(), 1);  // 1: left out (not taken or a repeat)
+  for (const auto& [x, i] : by_x) out[i] = 0;
+  for (size_t r = 0; r + 1 < by_x.size();) {
+    size_t end = r + 1;
+    while (end < by_x.size() && by_x[end].first - by_x[end - 1].first < geometry::kSameRayRad)
+      ++end;
+    if (end - r > 1) {
+      std::vector<int> run;
+      for (size_t k = r; k < end; ++k) run.push_back(by_x[k].second);
+      std::sort(run.begin(), run.end());
+      for (size_t k = 1; k < run.size(); ++k) {
+        const LimitPlane& l = limits[run[k]];
+        for (size_t e = 0; e < k && !out[run[k]]; ++e)
+          out[run[k]] =
+              !out[run[e]] &&
+              std::abs(limits[run[e]].normal.x() - l.normal.x()) < geometry::kSameRayRad &&
+              (limits[run[e]].normal - l.normal).norm() < geometry::kSameRayRad;
+      }
+    }
+    r = end;
+  }
   std::vector<Eigen::Vector3d> normals;
-  // The kept normals by x: |dx| >= kSameRayRad already decides "not the
-  // same" (the norm is at least |dx|), so only those within that of x need
-  // the full test.
-  std::vector<std::pair<double, int>> by_x;
-  normals.reserve(limits.size());
-  by_x.reserve(limits.size());
-  for (const auto& l : limits) {
-    if (drop_ill_posed && ill_posed(l, uncertainty_rad)) continue;
-    const double x = l.normal.x();
-    auto it =
-        std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(x - geometry::kSameRayRad, -1));
-    bool seen = false;
-    for (auto k = it; k != by_x.end() && k->first < x + geometry::kSameRayRad && !seen; ++k)
-      seen = std::abs(k->first - x) < geometry::kSameRayRad &&
-             (normals[k->second] - l.normal).norm() < geometry::kSameRayRad;
-    if (!seen) {
-      by_x.insert(std::upper_bound(by_x.begin(), by_x.end(),
-                                   std::make_pair(x, static_cast<int>(normals.size()))),
-                  std::make_pair(x, static_cast<int>(normals.size())));
-      normals.push_back(l.normal);
-    }
-  }
-  return geometry::Cone(normals);
-}
-
-// The half-space of `all` that the unit direction d is least inside.
-std::pair<size_t, double> least_inside(const std::vector<Eigen::Vector3d>& all,
-                                       const Eigen::Vector3d& d) {
-  size_t worst = 0;
-  double worst_dot = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < all.size(); ++i) {
-    const double x = all[i].dot(d);
-    if (x < worst_dot) {
-      worst_dot = x;
-      worst = i;
-    }
-  }
-  return {worst, worst_dot};
-}
-
-// Rounding of the dot products (~1e-16) is all that may separate a
-// half-space the subset's optimum keeps at the level from one it violates.
-constexpr double kLevelRounding = 1e-15;
-
-// A half-space this close (sine) to the level at the subset's optimum is
-// kept in the basis: rounding of the optimal direction is ~1e-15, so this
-// keeps every half-space that fixes it, and a few more do no harm.
-constexpr double kTightSine = 1e-9;
-
-// The exact margin of a cone with many half-spaces, by active sets: the
-// margin of a subset is never below the margin of the whole (more
-// half-spaces can only lower the max-min), so when the subset's optimal
-// direction keeps every other half-space at least as far, it is the
-// optimum of the whole. Otherwise the half-space it violates most joins the
-// subset.
-//
-// First with a basis: the subset is only the half-spaces tight at its
-// optimum (at most three, more where planes meet in one line) and the one
-// joining, so each step is geometry::Cone's exact search on about four
-// half-spaces. For a cone with an interior the optimum is unique and each
-// step lowers the margin strictly, so no basis comes back. Where a step
-// does not lower it (a shut cone, whose max-min on the sphere is not a
-// convex problem), the basis is abandoned for the growing subset, which
-// ends because every half-space joins it at most once. Either way the
-// answer is certified by the same test against all half-spaces.
-geometry::ConeMargin exact_margin(const geometry::Cone& cone) {
-  const auto& all = cone.normals();
-  constexpr size_t kDirect = 12;  // below this the direct search is as cheap
-  if (all.size() <= kDirect) return cone.margin();
-  auto certified = [&](const geometry::ConeMargin& m, double worst_dot) {
-    geometry::ConeMargin result = m;
-    result.angle = std::min(m.angle, safe_asin(worst_dot));
-    result.sine = std::min(m.sine, worst_dot);
-    return result;
-  };
-  std::vector<Eigen::Vector3d> basis = {all.front()};
-  double previous = std::numeric_limits<double>::infinity();
-  for (size_t step = 0; step < 4 * all.size(); ++step) {
-    const geometry::ConeMargin m = geometry::Cone(basis).margin();
-    const double level = m.sine;
-    const auto [worst, worst_dot] = least_inside(all, m.direction);
-    const bool in_basis = std::any_of(basis.begin(), basis.end(),
-                                      [&](const Eigen::Vector3d& n) { return n == all[worst]; });
-    if (worst_dot >= level - kLevelRounding || in_basis) return certified(m, worst_dot);
-    if (!(m.angle < previous)) break;
-    previous = m.angle;
-    std::vector<Eigen::Vector3d> next;
-    for (const auto& n : basis)
-      if (n.dot(m.direction) <= level + kTightSine) next.push_back(n);
-    next.push_back(all[worst]);
-    basis = std::move(next);
-  }
-  // The growing subset starts from the last basis (for a shut cone: the
-  // half-spaces that shut it), not from one half-space.
-  geometry::IncrementalMargin active;  // its candidates are kept from step to step
-  std::vector<char> used(all.size(), 0);
-  for (size_t i = 0; i < all.size(); ++i)
-    if (std::find(basis.begin(), basis.end(), all[i]) != basis.end() && !used[i]) {
-      used[i] = 1;
-      active.add(all[i]);
-    }
-  for (;;) {
-    const geometry::ConeMargin m = active.margin();
-    const double level = m.sine;
-    const auto [worst, worst_dot] = least_inside(all, m.direction);
-    if (worst_dot >= level - kLevelRounding || used[worst]) return certified(m, worst_dot);
-    used[worst] = 1;
-    active.add(all[worst]);
-  }
-}
-
-// min over the limit planes (those `keep` accepts) of asin(normal . u): how far
-// the unit direction u is inside all of them; pi/2 when none constrains it.
-template <class Keep>
-double margin_of_axis(const std::vector<LimitPlane>& limits, const Eigen::Vector3d& u, Keep keep) {
-  // asin is monotone: the min of the sines, then one asin (1: pi/2).
-  double m = 1;
-  for (const auto& l : limits)
-    if (keep(l)) m = std::min(m, l.normal.dot(u));
-  return safe_asin(m);
+  normals.reserve(by_x.size());
+  for (size_t i = 0; i < limits.size(); ++i)
+    if (!out[i]) normals.push_back(limits[i].normal);
+  // The limit planes' normals are unit (w / |w|, limit_planes()).
+  return geometry::Cone::from_unit_normals(std::move(normals));
 }
 
 // A verdict that also turns marginal when the limit planes inside the
@@ -166,6 +89,9 @@ std::vector<LimitPlane> limit_planes(const RotationInput& in, const RotationTopo
                                      const Eigen::Vector3d& pivot, const std::vector<int>& exclude,
                                      int* void_count) {
   std::vector<LimitPlane> limits;
+  size_t most = 0;
+  for (const auto& planes : topology.vertex_planes) most += planes.size();
+  limits.reserve(most);
   int voids = 0;
   const double on_axis = kOnAxisRel * topology.size;
   for (int c = 0; c < static_cast<int>(in.vertices.size()); ++c) {
@@ -176,12 +102,13 @@ std::vector<LimitPlane> limit_planes(const RotationInput& in, const RotationTopo
     for (int p : topology.vertex_planes[c]) {
       if (!in.planes[p].joint) continue;
       const Eigen::Vector3d w = arm.cross(in.planes[p].inward_normal);  // (C - R) x n = n x (R - C)
-      const double conditioning = w.norm() / arm_len;
+      const double w_len = w.norm();
+      const double conditioning = w_len / arm_len;
       if (!(conditioning > kVoidLimitPlaneSin)) {
         ++voids;
         continue;
       }
-      limits.push_back({c, p, w / w.norm(), conditioning});
+      limits.push_back({c, p, w / w_len, conditioning});
     }
   }
   if (void_count) *void_count = voids;
@@ -194,39 +121,44 @@ CornerRotation corner_rotation(const RotationInput& in, const RotationTopology& 
   r.vertex = vertex;
   const Eigen::Vector3d pivot = in.vertices[vertex];
   r.limits = limit_planes(in, topology, pivot, {vertex}, &r.void_limits);
-  r.space = limit_cone(r.limits, uncertainty_rad, false);
-  const geometry::ConeMargin m = exact_margin(r.space);
+  const IllPosed ill_posed(uncertainty_rad);
+  r.space = limit_cone(r.limits, ill_posed, false);
+  const geometry::ConeMargin m = geometry::active_set_margin(r.space, 6);
   r.signed_margin = m.angle;
   r.best_axis = m.direction;
-  const bool any_ill_posed =
-      std::any_of(r.limits.begin(), r.limits.end(),
-                  [&](const LimitPlane& l) { return ill_posed(l, uncertainty_rad); });
-  const double without = any_ill_posed
-                             ? exact_margin(limit_cone(r.limits, uncertainty_rad, true)).angle
-                             : r.signed_margin;
+  const bool any_ill_posed = std::any_of(r.limits.begin(), r.limits.end(),
+                                         [&](const LimitPlane& l) { return ill_posed(l); });
+  const double without =
+      any_ill_posed ? geometry::active_set_margin(limit_cone(r.limits, ill_posed, true), 6).angle
+                    : r.signed_margin;
   r.rotatable = decide_with_ill_posed(r.signed_margin, without, uncertainty_rad);
   if (r.signed_margin >= -geometry::kAngleEpsRad) r.extreme_rays = r.space.edges(m.angle);
 
   // Sliding rotation about the block-side normal of each joint through R.
+  // One pass over the limit planes gives the margin with and without the
+  // ill-posed ones (the min of the sines, then one asin: asin is monotone).
+  std::vector<char> parallel(in.planes.size());
   for (int j : topology.vertex_planes[vertex]) {
     if (!in.planes[j].joint) continue;
     SlidingRotation s;
     s.plane = j;
     const Eigen::Vector3d& nj = in.planes[j].inward_normal;
-    std::vector<char> parallel(in.planes.size());
     for (size_t k = 0; k < in.planes.size(); ++k)
       parallel[k] = in.planes[k].inward_normal.cross(nj).norm() < kParallelJointsSin;
-    auto parallel_to_j = [&](int k) { return parallel[k] != 0; };
-    for (const auto& l : r.limits)
-      if (l.plane != j && parallel_to_j(l.plane) &&
-          std::find(s.also_sliding.begin(), s.also_sliding.end(), l.plane) == s.also_sliding.end())
-        s.also_sliding.push_back(l.plane);
-    s.signed_margin =
-        margin_of_axis(r.limits, nj, [&](const LimitPlane& l) { return !parallel_to_j(l.plane); });
-    const double s_without = margin_of_axis(r.limits, nj, [&](const LimitPlane& l) {
-      return !parallel_to_j(l.plane) && !ill_posed(l, uncertainty_rad);
-    });
-    s.feasible = decide_with_ill_posed(s.signed_margin, s_without, uncertainty_rad);
+    double with_all = 1, well_posed = 1;
+    for (const auto& l : r.limits) {
+      if (parallel[l.plane]) {
+        if (l.plane != j && std::find(s.also_sliding.begin(), s.also_sliding.end(), l.plane) ==
+                                s.also_sliding.end())
+          s.also_sliding.push_back(l.plane);
+        continue;
+      }
+      const double x = l.normal.dot(nj);
+      with_all = std::min(with_all, x);
+      if (!ill_posed(l)) well_posed = std::min(well_posed, x);
+    }
+    s.signed_margin = safe_asin(with_all);
+    s.feasible = decide_with_ill_posed(s.signed_margin, safe_asin(well_posed), uncertainty_rad);
     r.sliding.push_back(std::move(s));
   }
   return r;
@@ -234,28 +166,44 @@ CornerRotation corner_rotation(const RotationInput& in, const RotationTopology& 
 
 namespace {
 
-// Edge rotation with the limit planes about pivot a (corners a and b left
-// out) already known.
+// Edge rotation with the limit planes about pivot a already known: those of
+// `limits` not on corner b (the other end corner).
 EdgeRotation edge_rotation_with(const RotationInput& in, const RotationTopology& topology, int a,
-                                int b, std::vector<LimitPlane> limits, double uncertainty_rad) {
+                                int b, const std::vector<LimitPlane>& limits,
+                                double uncertainty_rad) {
   EdgeRotation e;
   e.vertices = {std::min(a, b), std::max(a, b)};
   const Eigen::Vector3d pivot = in.vertices[a];
   const Eigen::Vector3d dir = (in.vertices[b] - pivot).normalized();
   // Corners on the axis line (not only its end corners) stay where they are.
   const double on_axis = kOnAxisRel * topology.size;
-  std::erase_if(limits, [&](const LimitPlane& l) {
-    const Eigen::Vector3d arm = in.vertices[l.corner] - pivot;
-    return !((arm - arm.dot(dir) * dir).norm() > on_axis);
-  });
-  auto all = [](const LimitPlane&) { return true; };
-  auto well_posed = [&](const LimitPlane& l) { return !ill_posed(l, uncertainty_rad); };
-  const double plus = margin_of_axis(limits, dir, all);
-  const double minus = margin_of_axis(limits, -dir, all);
+  const IllPosed ill_posed(uncertainty_rad);
+  // One pass: the least sine about +dir is the min of n . dir, about -dir
+  // minus its max (negating a vector negates its dot products exactly);
+  // with all limit planes and without the ill-posed ones.
+  double lo = 1, hi = -1, lo_well = 1, hi_well = -1;
+  int last_corner = -1;
+  bool on_line = false;
+  for (const auto& l : limits) {
+    if (l.corner == b) continue;
+    if (l.corner != last_corner) {  // a corner's limit planes are consecutive
+      last_corner = l.corner;
+      const Eigen::Vector3d arm = in.vertices[l.corner] - pivot;
+      on_line = !((arm - arm.dot(dir) * dir).norm() > on_axis);
+    }
+    if (on_line) continue;
+    const double x = l.normal.dot(dir);
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+    if (!ill_posed(l)) {
+      lo_well = std::min(lo_well, x);
+      hi_well = std::max(hi_well, x);
+    }
+  }
+  const double plus = safe_asin(lo), minus = safe_asin(-hi);
   e.axis = plus >= minus ? dir : Eigen::Vector3d(-dir);
   e.signed_margin = std::max(plus, minus);
-  const double without =
-      std::max(margin_of_axis(limits, dir, well_posed), margin_of_axis(limits, -dir, well_posed));
+  const double without = std::max(safe_asin(lo_well), safe_asin(-hi_well));
   e.rotatable = decide_with_ill_posed(e.signed_margin, without, uncertainty_rad);
   return e;
 }
@@ -287,11 +235,8 @@ RotationAnalysis analyse_rotation(const RotationInput& in, double uncertainty_ra
       result.edges.push_back(edge_rotation(in, topology, a, b, uncertainty_rad));
       continue;
     }
-    std::vector<LimitPlane> limits;
-    for (const auto& l : result.corners[corner_of[a]].limits)
-      if (l.corner != b) limits.push_back(l);
-    result.edges.push_back(
-        edge_rotation_with(in, topology, a, b, std::move(limits), uncertainty_rad));
+    result.edges.push_back(edge_rotation_with(
+        in, topology, a, b, result.corners[corner_of[a]].limits, uncertainty_rad));
   }
   return result;
 }

@@ -7,8 +7,15 @@
 //
 //   quick_checks_bench --dump=FILE   writes the verdicts and margins of the
 //                                    mix (the test's reference format) first
+//   quick_checks_bench --once=FACES  runs the quick checks once on each of
+//                                    the 20 blocks of FACES faces (0: the
+//                                    mix of 180) and exits: a fixed workload
+//                                    for callgrind's instruction counts
+//                                    (--toggle-collect on quick_checks)
 #include <benchmark/benchmark.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -78,6 +85,17 @@ int main(int argc, char** argv) {
         const auto q = rockface::kinematics::quick_checks(block, deg_to_rad(1.0));
         out << tr::quick_checks_dump(block, q.finiteness, q.rotation);
       }
+    }
+  for (int k = 1; k < argc; ++k)
+    if (std::strncmp(argv[k], "--once=", 7) == 0) {
+      const int faces = std::atoi(argv[k] + 7);
+      const auto blocks = faces > 0 ? tr::quick_check_blocks(faces, 20) : tr::quick_check_mix(20);
+      size_t corners = 0;
+      for (const auto& block : blocks)
+        corners +=
+            rockface::kinematics::quick_checks(block, deg_to_rad(1.0)).rotation.corners.size();
+      std::printf("%zu blocks, %zu static points\n", blocks.size(), corners);
+      return 0;
     }
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
