@@ -66,28 +66,20 @@ void analyse_block_rotation(const blocks::Polyhedron& block, const storage::Scen
     // not marginal) has an axis, so the search cannot change "found": it is
     // skipped and the axis reported is that one (through the corner, or
     // along the edge), with no starts and no hits.
-    for (const auto& c : rotation.corners)
-      if (c.rotatable.value && !c.rotatable.marginal) {
-        storage::ReportRemoteAxis ra;
-        ra.found = true;
-        ra.point = block.absolute_vertex(c.vertex);
-        ra.direction = c.best_axis;
-        out.remote_axis = ra;
-        out.notes.push_back("remote axis: not searched, the block rotates about corner " +
-                            std::to_string(c.vertex));
-        return;
-      }
-    for (const auto& e : rotation.edges)
-      if (e.rotatable.value && !e.rotatable.marginal) {
-        storage::ReportRemoteAxis ra;
-        ra.found = true;
-        ra.point = block.absolute_vertex(e.vertices[0]);
-        ra.direction = e.axis;
-        out.remote_axis = ra;
-        out.notes.push_back("remote axis: not searched, the block rotates about edge " +
-                            std::to_string(e.vertices[0]) + "-" + std::to_string(e.vertices[1]));
-        return;
-      }
+    if (const auto firm = kinematics::firm_corner_or_edge_axis(rotation)) {
+      storage::ReportRemoteAxis ra;
+      ra.found = true;
+      ra.point = block.absolute_vertex(firm->vertex);
+      ra.direction = firm->direction;
+      out.remote_axis = ra;
+      out.notes.push_back(firm->about_corner
+                              ? "remote axis: not searched, the block rotates about corner " +
+                                    std::to_string(firm->vertex)
+                              : "remote axis: not searched, the block rotates about edge " +
+                                    std::to_string(firm->edge[0]) + "-" +
+                                    std::to_string(firm->edge[1]));
+      return;
+    }
     // Otherwise the search stops once an axis is found and the hit rate
     // has settled (kinematics/rotation_tolerances.h: +-0.15 at 95 %); a
     // search that finds nothing runs every start.

@@ -241,4 +241,14 @@ RotationAnalysis analyse_rotation(const RotationInput& in, double uncertainty_ra
   return result;
 }
 
+std::optional<FirmAxis> firm_corner_or_edge_axis(const RotationAnalysis& rotation) {
+  for (const auto& c : rotation.corners)
+    if (c.rotatable.value && !c.rotatable.marginal)
+      return FirmAxis{true, c.vertex, {c.vertex, -1}, c.best_axis};
+  for (const auto& e : rotation.edges)
+    if (e.rotatable.value && !e.rotatable.marginal)
+      return FirmAxis{false, e.vertices[0], e.vertices, e.axis};
+  return std::nullopt;
+}
+
 }  // namespace rockface::kinematics

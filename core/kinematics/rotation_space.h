@@ -45,6 +45,7 @@
 // feasible (> 0) or how far every limit half-space would have to open (< 0).
 // Verdicts come from geometry::decide with the orientation uncertainty.
 #include <array>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -119,5 +120,17 @@ EdgeRotation edge_rotation(const RotationInput& in, const RotationTopology& topo
 // joint / free-face edges. uncertainty_rad: orientation uncertainty of the
 // planes (verdicts inside it are marginal).
 RotationAnalysis analyse_rotation(const RotationInput& in, double uncertainty_rad);
+
+// A block that rotates firmly (verdict true and not marginal) about a corner
+// or an edge has a rotation axis, so a remote-axis search could not change
+// "found" and is skipped (issue 17): the first such corner, else the first
+// such edge. `vertex` lies on the axis; for a corner `edge` is {vertex, -1}.
+struct FirmAxis {
+  bool about_corner = true;
+  int vertex = -1;
+  std::array<int, 2> edge{-1, -1};
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // unit
+};
+std::optional<FirmAxis> firm_corner_or_edge_axis(const RotationAnalysis& rotation);
 
 }  // namespace rockface::kinematics

@@ -18,6 +18,8 @@
 #include "core/faces/trace_session.h"
 #include "core/kinematics/effect_gravity.h"
 #include "core/kinematics/quick_checks.h"
+#include "core/kinematics/remote_axis.h"
+#include "core/kinematics/rotation_input.h"
 #include "tests/core/faces/random_slope.h"
 
 namespace {
@@ -101,6 +103,56 @@ void BM_TraceMapQuickChecks(benchmark::State& state) {
   state.counters["blocks"] = static_cast<double>(polyhedra.size());
   state.counters["static_points"] = static_cast<double>(corners);
 }
+// Issue 17: the remote-axis search over every finite block of the map at the
+// standard preset's 64 starts, one thread (the map is built outside the
+// timed loop; rotation is timed too, as the report needs it to decide).
+// range(1) = 0: every block searched with all its starts (as before issue
+// 17); 1: as the report does it - a block that rotates firmly about a
+// corner or an edge is not searched (kinematics::firm_corner_or_edge_axis),
+// the others stop early once the hit rate has settled.
+void BM_TraceMapRemoteAxis(benchmark::State& state) {
+  const auto patches = faces::testing::random_slope();
+  const faces::FreeSurface surface = faces::FreeSurface::build(patches, kSnap);
+  const auto traces = random_traces(surface, static_cast<int>(state.range(0)), 11);
+  faces::TraceBlockOptions options;
+  options.snap_tolerance = kSnap;
+  options.orientation_uncertainty = deg_to_rad(1.0);
+  NoProgress progress;
+  const auto net = faces::TraceNetwork::build(surface, traces, {kSnap, deg_to_rad(1.0)});
+  const auto found = faces::SurfaceLoops::find(net, surface);
+  const auto blocks = faces::trace_blocks(surface, net, found, options, progress);
+  std::vector<kinematics::RotationInput> inputs;
+  for (const auto& b : blocks)
+    if (b.finite && b.polyhedron) inputs.push_back(kinematics::rotation_input(*b.polyhedron));
+  const bool as_reported = state.range(1) != 0;
+  long searched = 0, starts = 0, with_axis = 0;
+  for (auto _ : state) {
+    searched = starts = with_axis = 0;
+    for (const auto& in : inputs) {
+      if (as_reported) {
+        const auto rotation = kinematics::analyse_rotation(in, deg_to_rad(1.0));
+        if (kinematics::firm_corner_or_edge_axis(rotation)) {
+          ++with_axis;
+          continue;
+        }
+      }
+      const auto r = kinematics::search_remote_axis(in, {64, 1, as_reported});
+      ++searched;
+      starts += r.starts;
+      with_axis += r.found ? 1 : 0;
+    }
+  }
+  state.counters["blocks"] = static_cast<double>(inputs.size());
+  state.counters["searched"] = static_cast<double>(searched);
+  state.counters["starts_run"] = static_cast<double>(starts);
+  state.counters["with_axis"] = static_cast<double>(with_axis);
+}
+BENCHMARK(BM_TraceMapRemoteAxis)
+    ->Args({1000, 0})
+    ->Args({1000, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
 // Issue 17: from one edited trace to updated verdicts (faces::TraceSession):
 // a trace of a finite block moved 0.2 m sideways and back, alternately, on
 // the map of range(0) traces; each update rebuilds the network and loops and

@@ -7,6 +7,7 @@
 // inside every limit half-space (non-empty), or non-negative weights that
 // sum the limit normals to zero (empty, by Gordan's theorem).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -257,6 +258,54 @@ TEST(CornerRotation, SpinBetweenTwoParallelJointsSlidesOnBoth) {
   EXPECT_NEAR(s.signed_margin, kPi / 2, 1e-12);  // nothing else constrains the spin
   ASSERT_EQ(s.also_sliding.size(), 1u);
   EXPECT_EQ(in.planes[s.also_sliding[0]].name, "Jroof");
+}
+
+}  // namespace
+}  // namespace rockface::kinematics
+
+namespace rockface::kinematics {
+namespace {
+
+// The remote-axis skip rule (issue 17): only a firm verdict (true and not
+// marginal) gives an axis; a corner is preferred to an edge.
+TEST(FirmAxis, OnlyFirmVerdictsGiveAnAxisAndCornersComeFirst) {
+  kinematics::RotationAnalysis a;
+  EXPECT_FALSE(kinematics::firm_corner_or_edge_axis(a).has_value());
+
+  kinematics::CornerRotation marginal_corner;
+  marginal_corner.vertex = 2;
+  marginal_corner.rotatable.value = true;
+  marginal_corner.rotatable.marginal = true;
+  kinematics::CornerRotation shut_corner;
+  shut_corner.vertex = 3;
+  shut_corner.rotatable.value = false;
+  a.corners = {marginal_corner, shut_corner};
+  kinematics::EdgeRotation edge;
+  edge.vertices = {1, 4};
+  edge.axis = Eigen::Vector3d::UnitX();
+  edge.rotatable.value = true;
+  a.edges = {edge};
+  auto firm = kinematics::firm_corner_or_edge_axis(a);
+  ASSERT_TRUE(firm.has_value());
+  EXPECT_FALSE(firm->about_corner);
+  EXPECT_EQ(firm->edge, (std::array<int, 2>{1, 4}));
+  EXPECT_EQ(firm->vertex, 1);
+  EXPECT_EQ(firm->direction, Eigen::Vector3d::UnitX());
+
+  kinematics::CornerRotation firm_corner;
+  firm_corner.vertex = 5;
+  firm_corner.rotatable.value = true;
+  firm_corner.best_axis = Eigen::Vector3d::UnitY();
+  a.corners.push_back(firm_corner);
+  firm = kinematics::firm_corner_or_edge_axis(a);
+  ASSERT_TRUE(firm.has_value());
+  EXPECT_TRUE(firm->about_corner);
+  EXPECT_EQ(firm->vertex, 5);
+  EXPECT_EQ(firm->direction, Eigen::Vector3d::UnitY());
+
+  a.edges[0].rotatable.marginal = true;
+  a.corners.pop_back();
+  EXPECT_FALSE(kinematics::firm_corner_or_edge_axis(a).has_value());
 }
 
 }  // namespace
