@@ -518,14 +518,14 @@ void join_trace_joints(const std::vector<JoinedTrace>& joined,
       const bool piece =
           joint.type == "trace" &&
           std::find(j.face.pieces.begin(), j.face.pieces.end(), joint.label) != j.face.pieces.end();
-      if (piece && joint.label != j.face.label) continue;  // a further piece
+      // A further piece goes; so does the first when the joined trace's
+      // plane is unknown (its record says why).
+      if (piece && (joint.label != j.face.label || !j.plane.known)) continue;
       if (piece) {
         joint.persistence_m = j.length;
-        if (j.plane.known) {
-          joint.dip_deg = rad_to_deg(j.plane.orientation.dip);
-          joint.dipdir_deg = rad_to_deg(j.plane.orientation.dipdir);
-          joint.point = j.plane.fit.centroid;
-        }
+        joint.dip_deg = rad_to_deg(j.plane.orientation.dip);
+        joint.dipdir_deg = rad_to_deg(j.plane.orientation.dipdir);
+        joint.point = j.plane.fit.centroid;
       }
       kept.push_back(std::move(joint));
     }
@@ -562,8 +562,18 @@ std::vector<JoinedTrace> joined_traces(std::vector<photogrammetry::FaceTrace> fa
     }
     if (normals.size() != points.size()) normals.clear();
     j.plane = measure::fit_trace_plane(points, normals, settings);
+    // Along the points in steps of the join distance: where the pieces
+    // overlap their points interleave, differing across the run by the
+    // registration residual (~1 cm), and summed point to point that
+    // zigzag would lengthen the trace.
+    const double step = photogrammetry::FaceTraceOptions{}.join_distance;
+    Eigen::Vector3d last = face.points.front();
     for (std::size_t k = 1; k < face.points.size(); ++k)
-      j.length += (face.points[k] - face.points[k - 1]).norm();
+      if (const double d = (face.points[k] - last).norm();
+          d >= step || k + 1 == face.points.size()) {
+        j.length += d;
+        last = face.points[k];
+      }
     j.face = std::move(face);
     out.push_back(std::move(j));
   }

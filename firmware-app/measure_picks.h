@@ -144,7 +144,8 @@ std::vector<storage::Joint> joint_records(const MeasuredPicks& measured,
 void join_trace_records(const std::vector<JoinedTrace>& joined,
                         std::vector<storage::Measurement>& records);
 // The joint table likewise: a further piece's joint goes, the first piece's
-// takes the joined plane (persistence: the joined length).
+// takes the joined plane (persistence: the joined length), or goes when
+// that plane is unknown.
 void join_trace_joints(const std::vector<JoinedTrace>& joined, std::vector<storage::Joint>& joints);
 
 }  // namespace rockface::app

@@ -372,6 +372,14 @@ TEST_F(ReplayFacePicks, ATracePickedInTwoPairsIsOneTraceAndTheBlocksComeFromIt) 
   EXPECT_GT(wx_max - wx_min, 1.5);
   EXPECT_NEAR(wx_min, x_min, 0.02);
   EXPECT_NEAR(wx_max, x_max, 0.02);
+  // Its length as the replay's: the same ends, a straight trace on the
+  // flat west facet (taps or samples along it alike); the ends' 2 mm, and
+  // the samples' wander across the run (dense matching, ~1 cm) counted
+  // over 5 cm steps: < 2 cm.
+  ASSERT_TRUE(both[0].trace_length_m);
+  std::printf("measure's joined trace length %.3f m (replay's %.3f m)\n", *both[0].trace_length_m,
+              *joined.trace_length_m);
+  EXPECT_NEAR(*both[0].trace_length_m, *joined.trace_length_m, 0.02);
 
   // A pick naming a pair the visit lacks, or a further pair with --model
   // (one 3D image): bad input naming the field, nothing stored.
