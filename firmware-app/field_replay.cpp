@@ -221,7 +221,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
                                                                 more->capture_ids[k]};
     measurements = measurement_records(picked->measured, out.visit_id,
                                        {out.model_id, out.capture_id}, further);
-    join_trace_records(*picked, measurements);
+    join_trace_records(picked->joined, measurements);
   } else
     for (const auto& t : analysed.traces) {
       measurements.push_back(measured(storage::Measurement::Kind::trace, t.id, t.points));

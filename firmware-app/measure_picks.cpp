@@ -1,6 +1,9 @@
 #include "firmware-app/measure_picks.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -82,6 +85,11 @@ std::optional<double> opt(double v, bool when) {
 
 std::string pair_photo(int pair, const std::string& side) {
   return pair == 1 ? side : "pair " + std::to_string(pair) + " " + side;
+}
+
+int pair_of_photo(const std::string& photo) {
+  if (photo.rfind("pair ", 0) != 0) return 1;
+  return std::stoi(photo.substr(5));
 }
 
 storage::Picks picks_by_pair_photo(storage::Picks picks) {
@@ -230,11 +238,21 @@ MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& c
   return out;
 }
 
-std::string measures_json(const MeasuredPicks& r, const MeasureContext& c,
-                          const std::string& model) {
+std::string measures_json(const MeasuredPicks& r, const MeasureContext& c, const std::string& model,
+                          const std::map<std::string, std::string>& further_models,
+                          const std::vector<JoinedTrace>& joined) {
   json j;
   j["format"] = "rockface-measures/1";
   j["model"] = model;
+  // Each measurement names its pair and that pair's 3D image.
+  auto put_pair = [&](json& m, const std::string& photo) {
+    m["pair"] = pair_of_photo(photo);
+    const auto f = further_models.find(photo);
+    m["model"] = f != further_models.end() ? f->second : model;
+  };
+  std::map<std::string, std::string> joined_into;
+  for (const auto& jt : joined)
+    for (const auto& id : jt.face.pieces) joined_into[id] = jt.face.label;
   j["point_sigma_m"] = c.settings.point_sigma;
   j["datum"] = vec(c.datum);
   json ms = json::array();
@@ -246,6 +264,9 @@ std::string measures_json(const MeasuredPicks& r, const MeasureContext& c,
     m["joint"] = t.joint;
     m["set"] = r.set_of(t.m.id);
     m["photo"] = t.m.picks.empty() ? json("") : json(t.m.picks.front().photo);
+    put_pair(m, m["photo"].get<std::string>());
+    if (const auto into = joined_into.find(t.m.id); into != joined_into.end())
+      m["joined_into"] = into->second;
     m["pixels"] = pixels_json(t.taps);
     if (!t.cost.empty()) {
       std::vector<Eigen::Vector2d> path;
@@ -267,6 +288,7 @@ std::string measures_json(const MeasuredPicks& r, const MeasureContext& c,
     m["set"] = r.set_of(a.m.id);
     m["rock_side"] = a.rock_side;
     m["photo"] = a.m.outline.empty() ? json("") : json(a.m.outline.front().photo);
+    put_pair(m, m["photo"].get<std::string>());
     std::vector<Eigen::Vector2d> px;
     for (const auto& p : a.m.outline) px.push_back(p.pixel);
     m["pixels"] = pixels_json(px);
@@ -281,12 +303,31 @@ std::string measures_json(const MeasuredPicks& r, const MeasureContext& c,
     m["type"] = "point";
     m["set"] = r.set_of(p.id);
     m["photo"] = p.pick.photo;
+    put_pair(m, p.pick.photo);
     m["pixels"] = pixels_json({p.pick.pixel});
     put_plane(m, p.plane, c.datum);
     m["point"] = vec(p.point + c.datum);
     ms.push_back(m);
   }
   j["measurements"] = ms;
+  // Pieces of one joint trace measured on different pairs: one trace.
+  json traces = json::array();
+  for (const auto& jt : joined) {
+    json m;
+    m["id"] = jt.face.label;
+    m["joint"] = jt.face.joint;
+    m["pieces"] = jt.face.pieces;
+    json pairs = json::array();
+    for (const int image : jt.face.images) pairs.push_back(image);
+    m["pairs"] = pairs;
+    put_plane(m, jt.plane, c.datum);
+    m["length_m"] = jt.length;
+    json points = json::array();
+    for (const auto& p : jt.face.points) points.push_back(vec(p + c.datum));
+    m["points"] = points;
+    traces.push_back(m);
+  }
+  j["joined_traces"] = traces;
   json joints = json::array();
   for (const auto& jt : r.joints) {
     json m;
@@ -435,6 +476,114 @@ std::vector<storage::Joint> joint_records(const MeasuredPicks& r, storage::Recor
     if (a.rock_side.empty()) add(a.m.id, "area", a.m.plane, std::nullopt);
   for (const auto& p : r.points) add(p.id, "point", p.plane, std::nullopt);
   return out;
+}
+
+void join_trace_records(const std::vector<JoinedTrace>& joined,
+                        std::vector<storage::Measurement>& records) {
+  for (const auto& j : joined) {
+    const std::set<std::string> pieces(j.face.pieces.begin(), j.face.pieces.end());
+    std::vector<storage::Measurement> kept;
+    for (auto& m : records) {
+      if (m.kind != storage::Measurement::Kind::trace || !pieces.count(m.label)) {
+        kept.push_back(std::move(m));
+        continue;
+      }
+      if (m.label != j.face.label) continue;  // a further piece: in the first one now
+      m.points = j.face.points;
+      m.trace_length_m = j.length;
+      m.dip_deg.reset();
+      m.dipdir_deg.reset();
+      m.sigma_deg.reset();
+      if (j.plane.known) {
+        m.dip_deg = rad_to_deg(j.plane.orientation.dip);
+        m.dipdir_deg = rad_to_deg(j.plane.orientation.dipdir);
+        m.sigma_deg = rad_to_deg(j.plane.sigma);
+        m.fit_rms_m = j.plane.fit.rms_off_plane();
+      }
+      m.note = "joined from";
+      for (const auto& id : j.face.pieces) m.note += " " + id;
+      m.note += " (the pixels are the first piece's)";
+      if (!j.plane.problem.empty()) m.note += "; " + j.plane.problem;
+      kept.push_back(std::move(m));
+    }
+    records = std::move(kept);
+  }
+}
+
+void join_trace_joints(const std::vector<JoinedTrace>& joined,
+                       std::vector<storage::Joint>& joints) {
+  for (const auto& j : joined) {
+    std::vector<storage::Joint> kept;
+    for (auto& joint : joints) {
+      const bool piece =
+          joint.type == "trace" &&
+          std::find(j.face.pieces.begin(), j.face.pieces.end(), joint.label) != j.face.pieces.end();
+      // A further piece goes; so does the first when the joined trace's
+      // plane is unknown (its record says why).
+      if (piece && (joint.label != j.face.label || !j.plane.known)) continue;
+      if (piece) {
+        joint.persistence_m = j.length;
+        joint.dip_deg = rad_to_deg(j.plane.orientation.dip);
+        joint.dipdir_deg = rad_to_deg(j.plane.orientation.dipdir);
+        joint.point = j.plane.fit.centroid;
+      }
+      kept.push_back(std::move(joint));
+    }
+    joints = std::move(kept);
+  }
+}
+
+std::vector<photogrammetry::TracePiece> trace_pieces(const MeasuredPicks& measured) {
+  std::vector<photogrammetry::TracePiece> out;
+  for (const auto& t : measured.traces)
+    out.push_back({t.m.id, t.joint,
+                   pair_of_photo(t.m.picks.empty() ? std::string() : t.m.picks.front().photo),
+                   t.m.points});
+  return out;
+}
+
+std::vector<JoinedTrace> joined_traces(std::vector<photogrammetry::FaceTrace> faces,
+                                       const MeasuredPicks& measured,
+                                       const measure::MeasureSettings& settings) {
+  std::map<std::string, const MeasuredTrace*> by_id;
+  for (const auto& t : measured.traces) by_id[t.m.id] = &t;
+  std::vector<JoinedTrace> out;
+  for (auto& face : faces) {
+    // Pieces in one photograph are traces the geologist drew apart (as for
+    // a visit of one pair); pieces in different pairs' photographs are the
+    // one trace crossing from one image to the next.
+    if (std::set<int>(face.images.begin(), face.images.end()).size() < 2) continue;
+    JoinedTrace j;
+    std::vector<Eigen::Vector3d> points, normals;
+    for (const auto& id : face.pieces) {
+      const measure::TraceMeasurement& m = by_id.at(id)->m;
+      points.insert(points.end(), m.points.begin(), m.points.end());
+      normals.insert(normals.end(), m.surface_normals.begin(), m.surface_normals.end());
+    }
+    if (normals.size() != points.size()) normals.clear();
+    j.plane = measure::fit_trace_plane(points, normals, settings);
+    // Along the points in steps of the join distance: where the pieces
+    // overlap their points interleave, differing across the run by the
+    // registration residual (~1 cm), and summed point to point that
+    // zigzag would lengthen the trace.
+    const double step = photogrammetry::FaceTraceOptions{}.join_distance;
+    Eigen::Vector3d last = face.points.front();
+    for (std::size_t k = 1; k < face.points.size(); ++k)
+      if (const double d = (face.points[k] - last).norm();
+          d >= step || k + 1 == face.points.size()) {
+        j.length += d;
+        last = face.points[k];
+      }
+    j.face = std::move(face);
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+std::string joined_note(const JoinedTrace& joined) {
+  std::string list;
+  for (const auto& id : joined.face.pieces) list += (list.empty() ? "" : ", ") + id;
+  return joined.face.label + ": one trace across the pairs' photographs (" + list + ")";
 }
 
 }  // namespace rockface::app

@@ -14,6 +14,7 @@
 #include "core/measure/joint_sets.h"
 #include "core/measure/mesh_picker.h"
 #include "core/measure/plane_measurement.h"
+#include "core/photogrammetry/trace_pieces.h"
 #include "storage/picks.h"
 #include "storage/project_records.h"
 
@@ -35,6 +36,10 @@ struct MeasureContext {
 // photos) and in the stored measurements: "left" / "right" for the first
 // pair, "pair 2 left" for a further one.
 std::string pair_photo(int pair, const std::string& side);
+
+// The pair of a photograph named by pair_photo (1 for "left", "right" and
+// for none).
+int pair_of_photo(const std::string& photo);
 
 // The picks with each further pair's photograph named by pair_photo, so
 // that they are measured through that pair's view and on its 3D image.
@@ -85,9 +90,35 @@ struct MeasuredPicks {
 MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& context,
                             std::optional<int> sets);
 
+// Pieces of one joint trace measured on different pairs' 3D images (in the
+// face frame), joined into one trace (photogrammetry::join_trace_pieces).
+struct JoinedTrace {
+  photogrammetry::FaceTrace face;  // its points (face frame) and pieces (trace ids)
+  measure::PlaneEstimate plane;    // fitted to the measured samples of all pieces
+  double length = 0;               // m, along the joined points
+};
+
+// The measured traces as pieces in the face frame: their measured points,
+// each on the pair of its photograph (the first pair for 3D points).
+std::vector<photogrammetry::TracePiece> trace_pieces(const MeasuredPicks& measured);
+
+// Of `faces` (join_trace_pieces of pieces named by the traces of
+// `measured`), the ones whose pieces lie on different pairs, each with the
+// plane fitted to all its pieces' measured samples and its length.
+std::vector<JoinedTrace> joined_traces(std::vector<photogrammetry::FaceTrace> faces,
+                                       const MeasuredPicks& measured,
+                                       const measure::MeasureSettings& settings);
+
+// "T1: one trace across the pairs' photographs (T1, T4)".
+std::string joined_note(const JoinedTrace& joined);
+
 // rockface-measures/1 (docs/scene-extensions.md); coordinates absolute.
+// `model`: the first pair's 3D image; `further_models` a further pair's by
+// its photographs' names (pair_photo): each measurement names its own.
 std::string measures_json(const MeasuredPicks& measured, const MeasureContext& context,
-                          const std::string& model);
+                          const std::string& model,
+                          const std::map<std::string, std::string>& further_models = {},
+                          const std::vector<JoinedTrace>& joined = {});
 
 // The model and capture of one pair of the visit: what a measurement taken
 // in its photograph is stored with.
@@ -107,5 +138,14 @@ std::vector<storage::Measurement> measurement_records(
 std::vector<storage::JointSet> joint_set_records(const MeasuredPicks& measured);
 std::vector<storage::Joint> joint_records(const MeasuredPicks& measured,
                                           storage::RecordId visit_id);
+
+// The measurement records with each joined trace's pieces replaced by one
+// trace record (the first piece's, with the joined points and plane).
+void join_trace_records(const std::vector<JoinedTrace>& joined,
+                        std::vector<storage::Measurement>& records);
+// The joint table likewise: a further piece's joint goes, the first piece's
+// takes the joined plane (persistence: the joined length), or goes when
+// that plane is unknown.
+void join_trace_joints(const std::vector<JoinedTrace>& joined, std::vector<storage::Joint>& joints);
 
 }  // namespace rockface::app

@@ -85,35 +85,10 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
       if (t.pixels.empty() || t.photo == "right") continue;
       pieces.push_back({t.id, t.joint, t.pair - 1, t.pixels});
     }
-    std::map<std::string, std::size_t> index;
-    for (std::size_t i = 0; i < out.measured.traces.size(); ++i)
-      index[out.measured.traces[i].m.id] = i;
-    std::map<std::string, int> image_of;
-    for (const auto& p : pieces) image_of[p.label] = p.image;
-    for (auto& face : photogrammetry::traces_in_face_frame(more->images, more->face, pieces)) {
-      // Pieces in one photograph are traces the geologist drew apart (as
-      // for a visit of one pair); pieces in different pairs' photographs
-      // are the one trace crossing from one image to the next.
-      std::set<int> images;
-      for (const auto& id : face.pieces) images.insert(image_of.at(id));
-      if (images.size() < 2) continue;
-      JoinedTrace j;
-      std::vector<Eigen::Vector3d> points, normals;
-      for (const auto& id : face.pieces) {
-        const measure::TraceMeasurement& m = out.measured.traces[index.at(id)].m;
-        points.insert(points.end(), m.points.begin(), m.points.end());
-        normals.insert(normals.end(), m.surface_normals.begin(), m.surface_normals.end());
-      }
-      j.plane = measure::fit_trace_plane(points, normals, c.settings);
-      for (std::size_t k = 1; k < face.points.size(); ++k)
-        j.length += (face.points[k] - face.points[k - 1]).norm();
-      j.face = std::move(face);
-      std::string list;
-      for (const auto& id : j.face.pieces) list += (list.empty() ? "" : ", ") + id;
-      out.notes.push_back(j.face.label + ": one trace across the pairs' photographs (" + list +
-                          ")");
-      out.joined.push_back(std::move(j));
-    }
+    out.joined =
+        joined_traces(photogrammetry::traces_in_face_frame(more->images, more->face, pieces),
+                      out.measured, c.settings);
+    for (const auto& j : out.joined) out.notes.push_back(joined_note(j));
   }
   std::map<std::string, const JoinedTrace*> joined_by_piece;
   for (const auto& j : out.joined)
@@ -160,37 +135,6 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
     }
   }
   return out;
-}
-
-void join_trace_records(const ReplayPicks& picks, std::vector<storage::Measurement>& records) {
-  for (const auto& j : picks.joined) {
-    const std::set<std::string> pieces(j.face.pieces.begin(), j.face.pieces.end());
-    std::vector<storage::Measurement> kept;
-    for (auto& m : records) {
-      if (m.kind != storage::Measurement::Kind::trace || !pieces.count(m.label)) {
-        kept.push_back(std::move(m));
-        continue;
-      }
-      if (m.label != j.face.label) continue;  // a further piece: in the first one now
-      m.points = j.face.points;
-      m.trace_length_m = j.length;
-      m.dip_deg.reset();
-      m.dipdir_deg.reset();
-      m.sigma_deg.reset();
-      if (j.plane.known) {
-        m.dip_deg = rad_to_deg(j.plane.orientation.dip);
-        m.dipdir_deg = rad_to_deg(j.plane.orientation.dipdir);
-        m.sigma_deg = rad_to_deg(j.plane.sigma);
-        m.fit_rms_m = j.plane.fit.rms_off_plane();
-      }
-      m.note = "joined from";
-      for (const auto& id : j.face.pieces) m.note += " " + id;
-      m.note += " (the pixels are the first piece's)";
-      if (!j.plane.problem.empty()) m.note += "; " + j.plane.problem;
-      kept.push_back(std::move(m));
-    }
-    records = std::move(kept);
-  }
 }
 
 }  // namespace rockface::app

@@ -18,17 +18,9 @@
 
 namespace rockface::app {
 
-// Pieces of one joint trace tapped in the left photographs of different
-// pairs, joined into one trace (photogrammetry::traces_in_face_frame).
-struct JoinedTrace {
-  photogrammetry::FaceTrace face;  // its points (face frame) and pieces (pick ids)
-  measure::PlaneEstimate plane;    // fitted to the measured samples of all pieces
-  double length = 0;               // m, along the joined points
-};
-
 struct ReplayPicks {
-  MeasuredPicks measured;  // each pick, on its own pair's 3D image in the face frame
-  std::vector<JoinedTrace> joined;
+  MeasuredPicks measured;           // each pick, on its own pair's 3D image in the face frame
+  std::vector<JoinedTrace> joined;  // pieces tapped in different pairs' photographs
   // The scene to analyse: its traces are the measured ones (the picks lifted
   // onto the 3D image), each joint that has traces gets their common plane.
   storage::Scene analysed;
@@ -52,9 +44,5 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
 // The pair named by every pick (trace, area, point) exists: `pairs` stereo
 // pairs. Throws InputError naming the scene file and the pick's `pair` field.
 void check_pick_pairs(const storage::Scene& scene, std::size_t pairs);
-
-// The measurement records with each joined trace's pieces replaced by one
-// trace record (the first piece's, with the joined points and plane).
-void join_trace_records(const ReplayPicks& picks, std::vector<storage::Measurement>& records);
 
 }  // namespace rockface::app

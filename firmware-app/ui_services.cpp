@@ -50,9 +50,9 @@ storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project
   const auto preset = photogrammetry::preset_by_name(preset_name, "preset");
   const auto rec = photogrammetry::reconstruct(left, right, k, k, preset, sources, progress);
   progress.step("saving the model", 0.99);
-  return store.save_model(model_record(
-      rec, capture_id, {where + " left", where + " right", preset_name, sources.range_pole_m,
-                        sources.baseline_m, sources.north}));
+  return store.save_model(model_record(rec, capture_id,
+                                       {where + " left", where + " right", preset_name,
+                                        sources.range_pole_m, sources.baseline_m, sources.north}));
 }
 
 storage::RecordId StoreAnalysisRunner::analyse(const fs::path& project, storage::RecordId visit_id,
@@ -68,7 +68,19 @@ storage::RecordId StoreAnalysisRunner::analyse(const fs::path& project, storage:
   const auto models = store.list_models();
   if (!models.empty()) model_id = models.back().id;
   progress.step("saving the analysis", 0.99);
-  return store.save_analysis(analysis_record(report, visit_id, model_id, scene.analysis.preset));
+  const storage::RecordId id =
+      store.save_analysis(analysis_record(report, visit_id, model_id, scene.analysis.preset));
+  // Which stored traces it took as one (pieces of a joint marked on different pairs).
+  std::string joined;
+  for (const auto& t : storage::scene_traces(source.measurements)) {
+    if (t.pieces.size() < 2) continue;
+    joined += joined.empty() ? "" : "; ";
+    joined += t.label + " =";
+    for (const auto& piece : t.pieces) joined += " " + piece;
+  }
+  if (!joined.empty())
+    store.log_action(visit_id, "analysis " + std::to_string(id) + " joined traces", joined);
+  return id;
 }
 
 std::unique_ptr<camera::Camera> FieldCameraConnector::connect() {

@@ -297,15 +297,21 @@ int run(const MeasureOptions& o) {
 
   // Everything measured: now the store (one visit, each save one
   // transaction) and the outputs.
+  // Pieces of one joint trace measured on different pairs are one trace,
+  // joined as the replay joins them.
+  const std::vector<JoinedTrace> joined = joined_traces(
+      photogrammetry::join_trace_pieces(trace_pieces(measured)), measured, context.settings);
   std::vector<storage::Joint> joints = joint_records(measured, 0);
+  join_trace_joints(joined, joints);
   if (store) {
     const storage::RecordId visit =
         store->begin_visit("measure " + o.picks, "picks measured on " + on);
     std::map<std::string, PairRecords> further_records;
     for (const auto& f : further)
       for (const auto& [name, view] : f.views) further_records[name] = {f.model_id, f.capture_id};
-    const auto records =
+    auto records =
         measurement_records(measured, visit, {model.model_id, model.capture_id}, further_records);
+    join_trace_records(joined, records);
     const auto ids = store->save_measurements(visit, records);
     for (auto& j : joints) {
       j.visit_id = visit;
@@ -318,7 +324,10 @@ int run(const MeasureOptions& o) {
   const cv::Mat png = o.png.empty()
                           ? cv::Mat()
                           : stereonet(measured, fs::path(o.picks).filename().string(), o.friction);
-  write_atomically(o.out, measures_json(measured, context, model.name));
+  std::map<std::string, std::string> further_models;
+  for (const auto& f : further)
+    for (const auto& [name, view] : f.views) further_models[name] = f.name;
+  write_atomically(o.out, measures_json(measured, context, model.name, further_models, joined));
   if (!png.empty() && !cv::imwrite(o.png, png)) throw Error(o.png + ": cannot write the picture");
   if (!o.csv.empty()) {
     std::ostringstream csv;
@@ -330,6 +339,7 @@ int run(const MeasureOptions& o) {
   std::cout << measured.traces.size() << " traces (" << known << " with a known plane), "
             << measured.areas.size() << " areas, " << measured.points.size() << " points; "
             << measured.sets.size() << " joint sets\n";
+  for (const auto& j : joined) std::cout << joined_note(j) << "\n";
   for (const auto& s : measured.sets) {
     const auto pl = s.fisher.plane();
     std::printf("set %s: %zu planes, mean %.1f/%.1f, K %.1f, alpha95 %.1f deg\n", s.label.c_str(),

@@ -1,5 +1,7 @@
 #include "storage/export_scene_json.h"
 
+#include <map>
+
 #include "core/common/error.h"
 #include "storage/export_file.h"
 #include "storage/project_store.h"
@@ -26,6 +28,22 @@ Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d>& ps) {
 }
 
 }  // namespace
+
+std::vector<photogrammetry::FaceTrace> scene_traces(const std::vector<Measurement>& measurements) {
+  // One image per model; a trace stored without a model is an image of its
+  // own kind (-1): such traces were measured on one 3D image.
+  std::map<RecordId, int> image_of_model;
+  std::vector<photogrammetry::TracePiece> pieces;
+  for (const auto& m : measurements) {
+    if (m.kind != Measurement::Kind::trace) continue;
+    int image = -1;
+    if (m.model_id)
+      image = image_of_model.emplace(*m.model_id, static_cast<int>(image_of_model.size()))
+                  .first->second;
+    pieces.push_back({m.label, m.joint_label, image, m.points});
+  }
+  return photogrammetry::join_trace_pieces(pieces);
+}
 
 nlohmann::json make_scene_json(const SceneSource& source) {
   const Eigen::Vector3d& datum = source.project.datum;
@@ -60,11 +78,13 @@ nlohmann::json make_scene_json(const SceneSource& source) {
                               {"dipdir", *m.dipdir_deg},
                               {"point", point(datum, centroid(m.points))},
                               {"rock_side", m.rock_side}});
-    } else if (m.kind == Measurement::Kind::trace) {
-      nlohmann::json t = {{"id", m.label}, {"points", points(datum, m.points)}};
-      if (!m.joint_label.empty()) t["joint"] = m.joint_label;
-      traces.push_back(std::move(t));
     }
+  }
+  for (const auto& ft : scene_traces(source.measurements)) {
+    nlohmann::json t = {{"id", ft.label}, {"points", points(datum, ft.points)}};
+    if (!ft.joint.empty()) t["joint"] = ft.joint;
+    if (ft.pieces.size() > 1) t["pieces"] = ft.pieces;
+    traces.push_back(std::move(t));
   }
   scene["free_faces"] = std::move(free_faces);
   scene["surface"] = {{"patches", std::move(patches)}};

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/photogrammetry/trace_pieces.h"
 #include "storage/project_records.h"
 
 namespace rockface::storage {
@@ -23,6 +24,14 @@ struct SceneSource {
   std::optional<AnalysisRun> analysis;  // the latest one of the visit, if any
 };
 
+// The visit's traces as the analysis takes them: the stored trace
+// measurements in order, where pieces of one joint stored from different
+// pairs (models) of the visit are joined into one trace, as the replay joins
+// them (photogrammetry::join_trace_pieces): its label is the first piece's,
+// `pieces` the labels of the stored traces in it. Points datum-relative.
+std::vector<photogrammetry::FaceTrace> scene_traces(const std::vector<Measurement>& measurements);
+
+// The scene; a joined trace lists its stored traces in "pieces".
 nlohmann::json make_scene_json(const SceneSource& source);
 
 // What a visit (the latest when none) holds for its scene. Throws InputError

@@ -2,13 +2,15 @@
 // Traces marked on the photographs of several 3D images, in the one face
 // frame: each picked pixel is lifted to its image's surface and moved by that
 // image's registration; pieces of one joint trace marked on overlapping
-// images (they cross from one photograph to the next) become one trace.
+// images (they cross from one photograph to the next) become one trace
+// (trace_pieces.h).
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "core/photogrammetry/multi_image_registration.h"
+#include "core/photogrammetry/trace_pieces.h"
 
 namespace rockface::photogrammetry {
 
@@ -20,23 +22,9 @@ struct ImageTrace {
   std::vector<Eigen::Vector2d> pixels;
 };
 
-struct FaceTrace {
-  std::string label;  // of its first piece
-  std::string joint;
-  std::vector<Eigen::Vector3d> points;  // face frame, ordered along the trace
-  std::vector<std::string> pieces;      // labels of the image traces joined into it
-};
-
-struct FaceTraceOptions {
-  // Pieces come within this distance (face units) of each other: candidates
-  // to join. Pieces of one trace overlap on the common area of two images and
-  // differ there by the registration residual; distinct parallel traces of a
-  // joint set lie decimetres apart or more.
-  double join_distance = 0.05;
-  // ... and run in directions this close (degrees).
-  double max_angle_deg = 10.0;
-};
-
+// Each trace's pixels lifted to its image's surface (a pixel off the surface
+// is skipped, a trace with fewer than two on it left out) and moved into the
+// face frame, then joined (join_trace_pieces).
 // Throws InputError naming a trace whose image index is out of range.
 std::vector<FaceTrace> traces_in_face_frame(const std::vector<FaceImage>& images,
                                             const FaceRegistration& face,

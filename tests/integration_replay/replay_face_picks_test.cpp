@@ -310,6 +310,77 @@ TEST_F(ReplayFacePicks, ATracePickedInTwoPairsIsOneTraceAndTheBlocksComeFromIt) 
   EXPECT_LT(off_j1, 0.05);
   EXPECT_LT(off_face, 0.05);
 
+  // `rockface measure` with J1's piece of pair 1 (as the replay's) and P2:
+  // as in the replay, one trace (named in the output and stdout), stored
+  // as one record; each measurement names its own pair's model.
+  const nlohmann::json both_file = {
+      {"format", "rockface-picks/1"},
+      {"traces",
+       {{{"id", "W1"},
+         {"joint", "J1"},
+         {"photo", "left"},
+         {"pixels", rockface::test::taps_along(part(in_first, 0.0, 0.6), 8)}},
+        {{"id", "P2"},
+         {"joint", "J1"},
+         {"pair", 2},
+         {"photo", "left"},
+         {"pixels", rockface::test::taps_along(part(in_second, 0.4, 1.0), 8)}}}}};
+  std::ofstream(dir_ / "both.json") << both_file.dump(2);
+  const CliRun w =
+      run_rockface("measure " + project.string() + " --traces " + (dir_ / "both.json").string() +
+                   " --out " + (dir_ / "both-measures.json").string());
+  ASSERT_EQ(w.exit_code, 0) << w.err << w.out;
+  EXPECT_NE(w.out.find("W1: one trace across the pairs' photographs (W1, P2)"), std::string::npos)
+      << w.out;
+  nlohmann::json out;
+  std::ifstream(dir_ / "both-measures.json") >> out;
+  const std::string model_name = project.string() + " model ";
+  EXPECT_EQ(out["model"], model_name + std::to_string(pairs[0].id));
+  ASSERT_EQ(out["measurements"].size(), 2u);
+  for (const auto& x : out["measurements"]) {
+    const bool second_pair = x["id"] == "P2";
+    EXPECT_EQ(x["pair"], second_pair ? 2 : 1) << x["id"];
+    EXPECT_EQ(x["model"], model_name + std::to_string(pairs[second_pair ? 1 : 0].id)) << x["id"];
+    EXPECT_EQ(x["joined_into"], "W1") << x["id"];
+  }
+  ASSERT_EQ(out["joined_traces"].size(), 1u);
+  const auto& jw = out["joined_traces"][0];
+  EXPECT_EQ(jw["id"], "W1");
+  EXPECT_EQ(jw["joint"], "J1");
+  EXPECT_EQ(jw["pieces"], nlohmann::json::array({"W1", "P2"}));
+  EXPECT_EQ(jw["pairs"], nlohmann::json::array({1, 2}));
+  const auto both_visit = store.latest_visit();
+  ASSERT_NE(both_visit, measured_visit);
+  std::vector<rockface::storage::Measurement> both;
+  for (const auto& x : store.list_measurements(*both_visit))
+    if (x.kind == rockface::storage::Measurement::Kind::trace) both.push_back(x);
+  ASSERT_EQ(both.size(), 1u) << "P2 is in W1";
+  EXPECT_EQ(both[0].label, "W1");
+  EXPECT_NE(both[0].note.find("joined from W1 P2"), std::string::npos) << both[0].note;
+  EXPECT_EQ(both[0].model_id, pairs[0].id);
+  // It spans both pieces as the replay's joined trace does: the same taps
+  // on the same 3D images; the replay's points are the taps' nearest
+  // vertices, measure's the samples between the taps (their ends the same
+  // taps), so the ends agree to a mesh cell or two (~1 cm each; seen 2 mm).
+  double wx_min = 1e9, wx_max = -1e9;
+  for (const auto& p : both[0].points) {
+    wx_min = std::min(wx_min, p.x());
+    wx_max = std::max(wx_max, p.x());
+  }
+  std::printf("measure's joined trace: %zu points, x %.3f..%.3f (replay's %.3f..%.3f)\n",
+              both[0].points.size(), wx_min, wx_max, x_min, x_max);
+  EXPECT_GT(wx_max - wx_min, 1.5);
+  EXPECT_NEAR(wx_min, x_min, 0.02);
+  EXPECT_NEAR(wx_max, x_max, 0.02);
+  // Its length as the replay's: the same ends, a straight trace on the
+  // flat west facet (taps or samples along it alike); the ends' 2 mm, and
+  // the samples' wander across the run (dense matching, ~1 cm) counted
+  // over 5 cm steps: < 2 cm.
+  ASSERT_TRUE(both[0].trace_length_m);
+  std::printf("measure's joined trace length %.3f m (replay's %.3f m)\n", *both[0].trace_length_m,
+              *joined.trace_length_m);
+  EXPECT_NEAR(*both[0].trace_length_m, *joined.trace_length_m, 0.02);
+
   // A pick naming a pair the visit lacks, or a further pair with --model
   // (one 3D image): bad input naming the field, nothing stored.
   nlohmann::json bad = pick_file;
@@ -328,7 +399,7 @@ TEST_F(ReplayFacePicks, ATracePickedInTwoPairsIsOneTraceAndTheBlocksComeFromIt) 
   EXPECT_NE(b.err.find("picks.json: traces[0].pair: pair 2, but model"), std::string::npos)
       << b.err;
   EXPECT_FALSE(fs::exists(dir_ / "bad-out.json"));
-  EXPECT_EQ(store.list_visits().size(), visits_before + 1);
+  EXPECT_EQ(store.list_visits().size(), visits_before + 2);
 }
 
 TEST_F(ReplayFacePicks, APickNamingAPairTheSceneDoesNotHaveIsBadInput) {

@@ -13,6 +13,7 @@
 #include "storage/export_ply.h"
 #include "storage/export_scene_json.h"
 #include "storage/project_store.h"
+#include "storage/scene.h"
 #include "tests/storage/sample_records.h"
 
 namespace rockface::storage {
@@ -216,6 +217,63 @@ TEST(Export, SceneJsonHoldsTheVisitsGeometry) {
   EXPECT_EQ(scene["analysis"]["preset"], "precise");
   EXPECT_EQ(scene["effects"]["water"]["unit_weight"], 9810);
   EXPECT_EQ(p.store.list_actions().back().action, "export scene json");
+}
+
+// A joint's trace marked partly on a visit's pair 1 and partly on its pair 2
+// (the Mapping screen stores each piece with its pair's model): the scene
+// the tablet's analysis runs on (load_scene_source, make_scene_json, as
+// StoreAnalysisRunner) has one trace spanning both pieces, naming them. A
+// trace of the same joint 20 cm away, and two pieces on one pair, stay
+// traces of their own.
+TEST(Export, PiecesOfOneJointStoredFromTwoPairsAreOneTraceInTheScene) {
+  test::TempDir dir("export-pieces");
+  ProjectStore store = ProjectStore::create(dir / "site.rockface", test::sample_project());
+  const RecordId visit = store.begin_visit("tablet");
+  const RecordId m1 =
+      store.save_model(test::sample_model(store.save_capture(test::sample_capture(visit, 1))));
+  const RecordId m2 =
+      store.save_model(test::sample_model(store.save_capture(test::sample_capture(visit, 2))));
+  // On the face (y = 4 m), running down to the east; pair 2's piece differs
+  // from pair 1's by a 1 cm registration residual where they overlap.
+  const Eigen::Vector3d run = Eigen::Vector3d(1, 0, -0.3).normalized();
+  const Eigen::Vector3d across = Eigen::Vector3d(0.3, 0, 1).normalized();
+  const Eigen::Vector3d start(0, 4, 2);
+  auto trace = [&](const std::string& label, RecordId model, double from, double to,
+                   double offset) {
+    Measurement m;
+    m.kind = Measurement::Kind::trace;
+    m.model_id = model;
+    m.label = label;
+    m.joint_label = "J1";
+    for (double s = from; s <= to + 1e-9; s += 0.1)
+      m.points.push_back(start + s * run + offset * across);
+    return m;
+  };
+  store.save_measurements(visit, {trace("T1", m1, 0.0, 1.2, 0), trace("T2", m2, 0.9, 2.0, 0.01),
+                                  trace("T3", m1, 0.0, 1.2, 0.2), trace("T4", m1, 1.3, 2.0, 0.2)});
+  auto joints = test::sample_joints();
+  store.save_joints(visit, test::sample_joint_sets(), joints);
+
+  const nlohmann::json json = make_scene_json(load_scene_source(store, visit));
+  const Scene scene = parse_scene(json.dump(), "scene of visit");
+  ASSERT_EQ(scene.traces.size(), 3u);
+  EXPECT_EQ(scene.traces[0].id, "T1");
+  EXPECT_EQ(json["traces"][0]["pieces"], nlohmann::json::array({"T1", "T2"}));
+  EXPECT_EQ(scene.traces[0].joint, std::optional<std::string>("J1"));
+  // T3 and T4, 20 cm off and on one pair (T4 continues T3): apart.
+  EXPECT_EQ(scene.traces[1].id, "T3");
+  EXPECT_EQ(scene.traces[2].id, "T4");
+  EXPECT_FALSE(json["traces"][1].contains("pieces"));
+  // The joined trace spans both pieces, 0 to 2.0 m along the run, points
+  // ordered along it. 1e-9 m: the datum (10^6 m) added and taken back
+  // rounds at 1e-10 m; the 1 cm offset is across the run.
+  const auto& pts = scene.traces[0].points;
+  ASSERT_EQ(pts.size(), 13u + 12u);
+  const Eigen::Vector3d origin = scene.datum + start;
+  double first = (pts.front() - origin).dot(run), last = (pts.back() - origin).dot(run);
+  if (first > last) std::swap(first, last);
+  EXPECT_NEAR(first, 0.0, 1e-9);
+  EXPECT_NEAR(last, 2.0, 1e-9);
 }
 
 TEST(Export, ReadOnlyProjectExportsWithoutLogging) {

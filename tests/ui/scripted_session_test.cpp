@@ -2,7 +2,9 @@
 // project, mark a trace by taps, run the analysis, take a stereo pair with the mock camera, start
 // its reconstruction and cancel it, close; then reopen. What finished is in
 // the store; what was cancelled left nothing half-written.
+#include <algorithm>
 #include <fstream>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -77,6 +79,78 @@ TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
       0)
       << slurp(ui_test_dir() / "second.txt");
   EXPECT_TRUE(fs::exists(ui_test_dir() / "second" / "reopened.png"));
+}
+
+// The points every `step` metres along a polyline, between fractions
+// [from, to] of its length.
+std::vector<Eigen::Vector3d> along(const std::vector<Eigen::Vector3d>& line, double from, double to,
+                                   double step) {
+  std::vector<double> at{0};
+  for (std::size_t k = 1; k < line.size(); ++k)
+    at.push_back(at.back() + (line[k] - line[k - 1]).norm());
+  std::vector<Eigen::Vector3d> out;
+  for (double s = from * at.back(); s <= to * at.back() + 1e-9; s += step) {
+    std::size_t k = 1;
+    while (k + 1 < line.size() && at[k] < s) ++k;
+    const double f = (s - at[k - 1]) / std::max(at[k] - at[k - 1], 1e-12);
+    out.push_back(line[k - 1] + std::clamp(f, 0.0, 1.0) * (line[k] - line[k - 1]));
+  }
+  return out;
+}
+
+// The tablet's analysis of a visit whose joint trace was marked in two
+// pieces on two pairs (stored with different models, as the Mapping screen
+// stores a trace on its chosen pair): the analysis takes them as one trace
+// and logs which stored traces it joined.
+TEST(UiSession, TheAnalysisJoinsPiecesOfATraceStoredFromTwoPairs) {
+  const fs::path project = copy_of_demo("pieces");
+  std::size_t analyses = 0;
+  std::string label;  // of the stored trace the pieces are cut from
+  {
+    auto store = rockface::storage::ProjectStore::open(project);
+    const auto visit = store.latest_visit();
+    ASSERT_TRUE(visit);
+    analyses = store.list_analyses().size();
+    // A second 3D image to store the second piece with: the visit's model
+    // stored again (what is checked is that the pieces' models differ).
+    const auto models = store.list_models();
+    ASSERT_FALSE(models.empty());
+    const rockface::storage::RecordId second = store.save_model(store.load_model(models[0].id));
+    // A joint's stored trace, marked again as two pieces overlapping on 20 %
+    // of it: the first 60 % on pair 1, the last 60 % on pair 2.
+    std::optional<rockface::storage::Measurement> whole;
+    for (const auto& m : store.list_measurements(*visit))
+      if (m.kind == rockface::storage::Measurement::Kind::trace && !m.joint_label.empty() &&
+          m.model_id && m.points.size() >= 2) {
+        whole = m;
+        break;
+      }
+    ASSERT_TRUE(whole);
+    label = whole->label;
+    rockface::storage::Measurement a = *whole, b = *whole;
+    a.id = b.id = 0;
+    a.label = "X1";
+    a.points = along(whole->points, 0.0, 0.6, 0.05);
+    b.label = "X2";
+    b.model_id = second;
+    b.points = along(whole->points, 0.4, 1.0, 0.05);
+    store.save_measurements(*visit, {a, b});
+  }
+  ASSERT_EQ(run_script(project, R"([{"tap": "Blocks"}, {"tap": "Run analysis"}, {"wait": "task"}])",
+                       "pieces"),
+            0)
+      << slurp(ui_test_dir() / "pieces.txt");
+  auto store = rockface::storage::ProjectStore::open(project);
+  const auto runs = store.list_analyses();
+  ASSERT_EQ(runs.size(), analyses + 1);
+  const std::string action = "analysis " + std::to_string(runs.back().id) + " joined traces";
+  std::string detail;
+  for (const auto& e : store.list_actions(store.latest_visit()))
+    if (e.action == action) detail = e.detail;
+  // X2 (pair 2) continues both X1 and the stored trace it was cut from
+  // (pair 1); those two, on one pair, are joined only through it: one
+  // trace, named after the first stored piece.
+  EXPECT_EQ(detail, label + " = " + label + " X1 X2");
 }
 
 }  // namespace
