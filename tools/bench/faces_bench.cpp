@@ -74,24 +74,31 @@ void BM_TraceMapToBlocks(benchmark::State& state) {
 }
 BENCHMARK(BM_TraceMapToBlocks)->Arg(50)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond);
 
-// Issue 17: the quick checks (finiteness, removability, corner / edge
-// rotatability) of every finite block of the map that is one polyhedron,
-// after the map is built (outside the timed loop), on range(1) threads;
-// wall time.
-void BM_TraceMapQuickChecks(benchmark::State& state) {
+// The finite blocks of the map of `count` traces that are one polyhedron
+// each (the map built once, for the benchmarks that time what follows).
+std::vector<blocks::Polyhedron> finite_polyhedra(int count) {
   const auto patches = faces::testing::random_slope();
   const faces::FreeSurface surface = faces::FreeSurface::build(patches, kSnap);
-  const auto traces = random_traces(surface, static_cast<int>(state.range(0)), 11);
+  const auto traces = random_traces(surface, count, 11);
   faces::TraceBlockOptions options;
   options.snap_tolerance = kSnap;
   options.orientation_uncertainty = deg_to_rad(1.0);
   NoProgress progress;
   const auto net = faces::TraceNetwork::build(surface, traces, {kSnap, deg_to_rad(1.0)});
   const auto found = faces::SurfaceLoops::find(net, surface);
-  const auto blocks = faces::trace_blocks(surface, net, found, options, progress);
-  std::vector<blocks::Polyhedron> polyhedra;
-  for (const auto& b : blocks)
-    if (b.finite && b.polyhedron) polyhedra.push_back(*b.polyhedron);
+  std::vector<blocks::Polyhedron> out;
+  for (const auto& b : faces::trace_blocks(surface, net, found, options, progress))
+    if (b.finite && b.polyhedron) out.push_back(*b.polyhedron);
+  return out;
+}
+
+// Issue 17: the quick checks (finiteness, removability, corner / edge
+// rotatability) of every finite block of the map that is one polyhedron,
+// after the map is built (outside the timed loop), on range(1) threads;
+// wall time.
+void BM_TraceMapQuickChecks(benchmark::State& state) {
+  const std::vector<blocks::Polyhedron> polyhedra =
+      finite_polyhedra(static_cast<int>(state.range(0)));
   size_t corners = 0;
   for (auto _ : state) {
     const auto q = kinematics::quick_checks_all(polyhedra, deg_to_rad(1.0),
@@ -111,19 +118,9 @@ void BM_TraceMapQuickChecks(benchmark::State& state) {
 // corner or an edge is not searched (kinematics::firm_corner_or_edge_axis),
 // the others stop early once the hit rate has settled.
 void BM_TraceMapRemoteAxis(benchmark::State& state) {
-  const auto patches = faces::testing::random_slope();
-  const faces::FreeSurface surface = faces::FreeSurface::build(patches, kSnap);
-  const auto traces = random_traces(surface, static_cast<int>(state.range(0)), 11);
-  faces::TraceBlockOptions options;
-  options.snap_tolerance = kSnap;
-  options.orientation_uncertainty = deg_to_rad(1.0);
-  NoProgress progress;
-  const auto net = faces::TraceNetwork::build(surface, traces, {kSnap, deg_to_rad(1.0)});
-  const auto found = faces::SurfaceLoops::find(net, surface);
-  const auto blocks = faces::trace_blocks(surface, net, found, options, progress);
   std::vector<kinematics::RotationInput> inputs;
-  for (const auto& b : blocks)
-    if (b.finite && b.polyhedron) inputs.push_back(kinematics::rotation_input(*b.polyhedron));
+  for (const auto& p : finite_polyhedra(static_cast<int>(state.range(0))))
+    inputs.push_back(kinematics::rotation_input(p));
   const bool as_reported = state.range(1) != 0;
   long searched = 0, starts = 0, with_axis = 0;
   for (auto _ : state) {
