@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -100,17 +101,40 @@ storage::Picks picks_by_pair_photo(storage::Picks picks) {
   return picks;
 }
 
+const std::string& MeasuredPicks::pole_id(std::size_t k) const {
+  const PoleSource& s = poles[k];
+  switch (s.kind) {
+    case 't':
+      return traces[s.index].m.id;
+    case 'a':
+      return areas[s.index].m.id;
+    case 'j':
+      return joined[s.index].face.label;
+    default:
+      return points[s.index].id;
+  }
+}
+
+const measure::PlaneEstimate& MeasuredPicks::pole_plane(std::size_t k) const {
+  const PoleSource& s = poles[k];
+  switch (s.kind) {
+    case 't':
+      return traces[s.index].m.plane;
+    case 'a':
+      return areas[s.index].m.plane;
+    case 'j':
+      return joined[s.index].plane;
+    default:
+      return points[s.index].plane;
+  }
+}
+
 std::string MeasuredPicks::set_of(const std::string& id) const {
-  for (std::size_t k = 0; k < poles.size(); ++k) {
-    const PoleSource& s = poles[k];
-    const std::string& pid = s.kind == 't'   ? traces[s.index].m.id
-                             : s.kind == 'a' ? areas[s.index].m.id
-                                             : points[s.index].id;
-    if (pid == id) {
+  for (std::size_t k = 0; k < poles.size(); ++k)
+    if (pole_id(k) == id) {
       const int set = clusters.set_of.empty() ? -1 : clusters.set_of[k];
       return set >= 0 && set < static_cast<int>(sets.size()) ? sets[set].label : std::string();
     }
-  }
   return {};
 }
 
@@ -201,15 +225,29 @@ MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& c
     j.plane = measure::fit_trace_plane(points, normals, c.settings);
   }
 
+  // Pieces of one trace tapped in different pairs' photographs are one
+  // trace (the same rule as the replay's and the tablet's): one pole, one
+  // trace length, in the statistics below.
+  out.joined = joined_traces(photogrammetry::join_trace_pieces(trace_pieces(out)), out, c.settings);
+  std::set<std::string> in_joined;
+  for (const auto& j : out.joined) in_joined.insert(j.face.pieces.begin(), j.face.pieces.end());
+
   // Joint sets over the discontinuities whose plane is known.
   std::vector<Eigen::Vector3d> poles;
   std::vector<measure::SetMember> members;
   for (std::size_t i = 0; i < out.traces.size(); ++i) {
     const auto& m = out.traces[i].m;
-    if (!m.plane.known) continue;
+    if (!m.plane.known || in_joined.count(m.id)) continue;
     out.poles.push_back({'t', i});
     poles.push_back(m.plane.fit.normal);
     members.push_back({m.plane.fit.normal, m.plane.fit.centroid, m.length, m.censored});
+  }
+  for (std::size_t i = 0; i < out.joined.size(); ++i) {
+    const auto& j = out.joined[i];
+    if (!j.plane.known) continue;
+    out.poles.push_back({'j', i});
+    poles.push_back(j.plane.fit.normal);
+    members.push_back({j.plane.fit.normal, j.plane.fit.centroid, j.length, j.censored});
   }
   for (std::size_t i = 0; i < out.areas.size(); ++i) {
     const auto& a = out.areas[i];
@@ -239,8 +277,7 @@ MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& c
 }
 
 std::string measures_json(const MeasuredPicks& r, const MeasureContext& c, const std::string& model,
-                          const std::map<std::string, std::string>& further_models,
-                          const std::vector<JoinedTrace>& joined) {
+                          const std::map<std::string, std::string>& further_models) {
   json j;
   j["format"] = "rockface-measures/1";
   j["model"] = model;
@@ -251,7 +288,7 @@ std::string measures_json(const MeasuredPicks& r, const MeasureContext& c, const
     m["model"] = f != further_models.end() ? f->second : model;
   };
   std::map<std::string, std::string> joined_into;
-  for (const auto& jt : joined)
+  for (const auto& jt : r.joined)
     for (const auto& id : jt.face.pieces) joined_into[id] = jt.face.label;
   j["point_sigma_m"] = c.settings.point_sigma;
   j["datum"] = vec(c.datum);
@@ -312,7 +349,7 @@ std::string measures_json(const MeasuredPicks& r, const MeasureContext& c, const
   j["measurements"] = ms;
   // Pieces of one joint trace measured on different pairs: one trace.
   json traces = json::array();
-  for (const auto& jt : joined) {
+  for (const auto& jt : r.joined) {
     json m;
     m["id"] = jt.face.label;
     m["joint"] = jt.face.joint;
@@ -322,6 +359,7 @@ std::string measures_json(const MeasuredPicks& r, const MeasureContext& c, const
     m["pairs"] = pairs;
     put_plane(m, jt.plane, c.datum);
     m["length_m"] = jt.length;
+    m["censored"] = jt.censored;
     json points = json::array();
     for (const auto& p : jt.face.points) points.push_back(vec(p + c.datum));
     m["points"] = points;
@@ -358,12 +396,7 @@ std::string measures_json(const MeasuredPicks& r, const MeasureContext& c, const
     m["censoring"] = s.censoring;
     json members = json::array();
     for (std::size_t i = 0; i < r.poles.size(); ++i)
-      if (r.clusters.set_of[i] == static_cast<int>(k)) {
-        const PoleSource& p = r.poles[i];
-        members.push_back(p.kind == 't'   ? r.traces[p.index].m.id
-                          : p.kind == 'a' ? r.areas[p.index].m.id
-                                          : r.points[p.index].id);
-      }
+      if (r.clusters.set_of[i] == static_cast<int>(k)) members.push_back(r.pole_id(i));
     m["members"] = members;
     sets.push_back(m);
   }
@@ -491,6 +524,7 @@ void join_trace_records(const std::vector<JoinedTrace>& joined,
       if (m.label != j.face.label) continue;  // a further piece: in the first one now
       m.points = j.face.points;
       m.trace_length_m = j.length;
+      m.censored = j.censored;
       m.dip_deg.reset();
       m.dipdir_deg.reset();
       m.sigma_deg.reset();
@@ -574,6 +608,23 @@ std::vector<JoinedTrace> joined_traces(std::vector<photogrammetry::FaceTrace> fa
         j.length += d;
         last = face.points[k];
       }
+    // Each end of the joined trace is some piece's end: censored as that
+    // end is (the piece ends where pieces meet are inside the trace).
+    for (const Eigen::Vector3d& end : {face.points.front(), face.points.back()}) {
+      double nearest = std::numeric_limits<double>::infinity();
+      bool censored = false;
+      for (const auto& id : face.pieces) {
+        const measure::TraceMeasurement& m = by_id.at(id)->m;
+        if (m.points.empty()) continue;
+        for (const int e : {0, 1})
+          if (const double d = ((e == 0 ? m.points.front() : m.points.back()) - end).norm();
+              d < nearest) {
+            nearest = d;
+            censored = m.censored_ends[e];
+          }
+      }
+      j.censored = j.censored || censored;
+    }
     j.face = std::move(face);
     out.push_back(std::move(j));
   }

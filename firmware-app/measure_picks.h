@@ -65,10 +65,21 @@ struct MeasuredJoint {
   measure::PlaneEstimate plane;
 };
 
+// Pieces of one joint trace measured on different pairs' 3D images (in the
+// face frame), joined into one trace (photogrammetry::join_trace_pieces).
+struct JoinedTrace {
+  photogrammetry::FaceTrace face;  // its points (face frame) and pieces (trace ids)
+  measure::PlaneEstimate plane;    // fitted to the measured samples of all pieces
+  double length = 0;               // m, along the joined points
+  // An end of the joined trace (the piece end it is) lies at the edge of
+  // the mapped area; the ends where pieces meet are not ends of the trace.
+  bool censored = false;
+};
+
 // One pole in the set statistics: a known plane of a trace, an area that is
 // not a free face, or a point.
 struct PoleSource {
-  char kind = 't';  // 't' trace, 'a' area, 'p' point
+  char kind = 't';  // 't' trace, 'a' area, 'p' point, 'j' joined trace
   std::size_t index = 0;
 };
 
@@ -77,11 +88,19 @@ struct MeasuredPicks {
   std::vector<MeasuredArea> areas;
   std::vector<measure::PointMeasurement> points;
   std::vector<MeasuredJoint> joints;
+  // Pieces of one trace in different pairs' photographs, joined: in the set
+  // statistics (and the stereonet) a joined trace is one pole, with its
+  // whole length, in place of its pieces.
+  std::vector<JoinedTrace> joined;
   std::vector<PoleSource> poles;
   measure::PoleClusters clusters;  // set_of per entry of `poles`
   std::vector<measure::JointSetSummary> sets;
-  // The set label of a measurement id; empty when it is in no set.
+  // The set label of a measurement id; empty when it is in no set (a
+  // joined trace is named by its first piece).
   std::string set_of(const std::string& id) const;
+  // The id and the plane of pole k.
+  const std::string& pole_id(std::size_t k) const;
+  const measure::PlaneEstimate& pole_plane(std::size_t k) const;
 };
 
 // Measures every pick; nothing is partial: the first bad pick throws
@@ -89,14 +108,6 @@ struct MeasuredPicks {
 // of joint sets wanted, 0 or none for automatic.
 MeasuredPicks measure_picks(const storage::Picks& picks, const MeasureContext& context,
                             std::optional<int> sets);
-
-// Pieces of one joint trace measured on different pairs' 3D images (in the
-// face frame), joined into one trace (photogrammetry::join_trace_pieces).
-struct JoinedTrace {
-  photogrammetry::FaceTrace face;  // its points (face frame) and pieces (trace ids)
-  measure::PlaneEstimate plane;    // fitted to the measured samples of all pieces
-  double length = 0;               // m, along the joined points
-};
 
 // The measured traces as pieces in the face frame: their measured points,
 // each on the pair of its photograph (the first pair for 3D points).
@@ -117,8 +128,7 @@ std::string joined_note(const JoinedTrace& joined);
 // its photographs' names (pair_photo): each measurement names its own.
 std::string measures_json(const MeasuredPicks& measured, const MeasureContext& context,
                           const std::string& model,
-                          const std::map<std::string, std::string>& further_models = {},
-                          const std::vector<JoinedTrace>& joined = {});
+                          const std::map<std::string, std::string>& further_models = {});
 
 // The model and capture of one pair of the visit: what a measurement taken
 // in its photograph is stored with.

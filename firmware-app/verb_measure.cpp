@@ -213,11 +213,7 @@ cv::Mat stereonet(const MeasuredPicks& r, const std::string& title, double frict
   measure::StereonetPicture pic;
   pic.title = title;
   for (std::size_t k = 0; k < r.poles.size(); ++k) {
-    const PoleSource& s = r.poles[k];
-    const auto& plane = s.kind == 't'   ? r.traces[s.index].m.plane
-                        : s.kind == 'a' ? r.areas[s.index].m.plane
-                                        : r.points[s.index].plane;
-    pic.poles.push_back(plane.fit.normal);
+    pic.poles.push_back(r.pole_plane(k).fit.normal);
     pic.pole_sets.push_back(r.clusters.set_of.empty() ? -1 : r.clusters.set_of[k]);
   }
   for (const auto& s : r.sets)
@@ -297,10 +293,9 @@ int run(const MeasureOptions& o) {
 
   // Everything measured: now the store (one visit, each save one
   // transaction) and the outputs.
-  // Pieces of one joint trace measured on different pairs are one trace,
-  // joined as the replay joins them.
-  const std::vector<JoinedTrace> joined = joined_traces(
-      photogrammetry::join_trace_pieces(trace_pieces(measured)), measured, context.settings);
+  // Pieces of one joint trace measured on different pairs are one trace
+  // (joined by measure_picks, as the replay joins them).
+  const std::vector<JoinedTrace>& joined = measured.joined;
   std::vector<storage::Joint> joints = joint_records(measured, 0);
   join_trace_joints(joined, joints);
   if (store) {
@@ -327,7 +322,7 @@ int run(const MeasureOptions& o) {
   std::map<std::string, std::string> further_models;
   for (const auto& f : further)
     for (const auto& [name, view] : f.views) further_models[name] = f.name;
-  write_atomically(o.out, measures_json(measured, context, model.name, further_models, joined));
+  write_atomically(o.out, measures_json(measured, context, model.name, further_models));
   if (!png.empty() && !cv::imwrite(o.png, png)) throw Error(o.png + ": cannot write the picture");
   if (!o.csv.empty()) {
     std::ostringstream csv;

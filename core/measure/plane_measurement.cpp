@@ -212,8 +212,9 @@ TraceMeasurement measure_trace(const MeshPicker& picker, const PhotoView& view, 
     const Eigen::Vector2d inner = at_start ? pixels[1] : pixels[pixels.size() - 2];
     const Eigen::Vector2d beyond = end + kCensoringMarginPx * (end - inner).normalized();
     if (!pixel_in_image(view, beyond) || !picker.pick(ray_through_pixel(view, beyond, where)))
-      t.censored = true;
+      t.censored_ends[at_start ? 0 : 1] = true;
   }
+  t.censored = t.censored_ends[0] || t.censored_ends[1];
   t.plane = fit_trace_plane(t.points, t.surface_normals, settings);
   return t;
 }

@@ -9,6 +9,7 @@
 // is a line, and a trace wandering within one flat face lies in the face's
 // plane, not the joint's. Both are reported as "orientation unknown",
 // never as a confident wrong dip (tolerances.h).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,8 +57,10 @@ struct TraceMeasurement {
   PlaneEstimate plane;
   double length = 0;  // m, along the points
   // An end lies at the edge of the mapped area (image border or no surface
-  // beyond it): the true trace is longer than measured.
+  // beyond it): the true trace is longer than measured. censored_ends: the
+  // start (first pick) and the end (last pick) each; censored: either.
   bool censored = false;
+  std::array<bool, 2> censored_ends{false, false};
 };
 
 struct AreaMeasurement {

@@ -380,6 +380,10 @@ TEST_F(ReplayFacePicks, ATracePickedInTwoPairsIsOneTraceAndTheBlocksComeFromIt) 
   std::printf("measure's joined trace length %.3f m (replay's %.3f m)\n", *both[0].trace_length_m,
               *joined.trace_length_m);
   EXPECT_NEAR(*both[0].trace_length_m, *joined.trace_length_m, 0.02);
+  // Censored as the joined trace's own ends are (W1's end where P2 takes
+  // over is inside the trace), in the output and in the stored record.
+  ASSERT_TRUE(jw["censored"].is_boolean());
+  EXPECT_EQ(both[0].censored, jw["censored"].get<bool>());
 
   // A pick naming a pair the visit lacks, or a further pair with --model
   // (one 3D image): bad input naming the field, nothing stored.
