@@ -15,6 +15,7 @@
 #include "storage/export_joints_csv.h"
 #include "storage/project_store.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/plane_angle.h"
 #include "tests/support/truth_picks.h"
 
 namespace {
@@ -22,16 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using rockface::test::CliRun;
+using rockface::test::plane_angle_deg;
+using rockface::test::pole_of;
 using rockface::test::run_rockface;
-
-Eigen::Vector3d normal(double dip_deg, double dipdir_deg) {
-  const double a = dip_deg * M_PI / 180, b = dipdir_deg * M_PI / 180;
-  return {std::sin(a) * std::sin(b), std::sin(a) * std::cos(b), std::cos(a)};
-}
-
-double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized())))) * 180 / M_PI;
-}
 
 json read_json(const fs::path& p) {
   std::ifstream in(p);
@@ -149,7 +143,7 @@ TEST(MeasureCli, OnAProjectMeasuresStoresAndRefusesBadPicksByName) {
   // Expected error: the fit's sigma (0.2-0.5 deg, sigma_Z over ~0.1 m of
   // relief) and the registration's (~0.1 deg). Seen: 0.27 and 0.09 deg.
   const std::map<std::string, Eigen::Vector3d> truth{
-      {"J1", normal(60, 200)}, {"J2", normal(75, 110)}, {"J3", normal(20, 350)}};
+      {"J1", pole_of(60, 200)}, {"J2", pole_of(75, 110)}, {"J3", pole_of(20, 350)}};
   for (const auto& j : m.at("joints")) {
     const std::string label = j.at("label");
     if (label == "J2") {  // one piece on one facet
@@ -157,7 +151,7 @@ TEST(MeasureCli, OnAProjectMeasuresStoresAndRefusesBadPicksByName) {
       continue;
     }
     ASSERT_TRUE(j.at("orientation_known").get<bool>()) << label << ": " << j.at("note");
-    EXPECT_LT(angle_deg(normal(j.at("dip"), j.at("dipdir")), truth.at(label)), 1.0) << label;
+    EXPECT_LT(plane_angle_deg(pole_of(j.at("dip"), j.at("dipdir")), truth.at(label)), 1.0) << label;
     EXPECT_LT(j.at("sigma_deg").get<double>(), 1.0);
   }
   // The true 3D points (west end, fold, east end) give the plane to within
@@ -165,7 +159,7 @@ TEST(MeasureCli, OnAProjectMeasuresStoresAndRefusesBadPicksByName) {
   for (const char* id : {"P-J1", "P-J3"}) {
     const json& x = by_id.at(id);
     ASSERT_TRUE(x.at("orientation_known").get<bool>()) << id << ": " << x.at("note");
-    EXPECT_LT(angle_deg(normal(x.at("dip"), x.at("dipdir")), truth.at(id + 2)), 0.01) << id;
+    EXPECT_LT(plane_angle_deg(pole_of(x.at("dip"), x.at("dipdir")), truth.at(id + 2)), 0.01) << id;
   }
   // FACE_E: y = 5211880.3 - (x - 512340) / 15 + 0.04 (z - 410). The area
   // fits ~10^4 points of sigma 7 mm: its own error is hundredths of a
@@ -174,11 +168,11 @@ TEST(MeasureCli, OnAProjectMeasuresStoresAndRefusesBadPicksByName) {
   const Eigen::Vector3d face_e(1.0 / 15, 1.0, -0.04);
   const json& a = by_id.at("A1");
   ASSERT_TRUE(a.at("orientation_known").get<bool>()) << a.at("note");
-  EXPECT_LT(angle_deg(normal(a.at("dip"), a.at("dipdir")), face_e), 0.5);
+  EXPECT_LT(plane_angle_deg(pole_of(a.at("dip"), a.at("dipdir")), face_e), 0.5);
   EXPECT_GT(a.at("area_m2").get<double>(), 0.3);  // 200 x 200 px at ~230 px/m: ~0.75 m^2
   const json& p = by_id.at("P1");
   ASSERT_TRUE(p.at("orientation_known").get<bool>()) << p.at("note");
-  EXPECT_LT(angle_deg(normal(p.at("dip"), p.at("dipdir")), face_e), 2.0);
+  EXPECT_LT(plane_angle_deg(pole_of(p.at("dip"), p.at("dipdir")), face_e), 2.0);
 
   // Sets over the known planes that are not free faces: P-J1, P-J3, P1.
   // Automatic clustering keeps a set only with two or more poles, and

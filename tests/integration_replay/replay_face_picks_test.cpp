@@ -19,6 +19,7 @@
 #include "storage/picks.h"
 #include "storage/project_store.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/plane_angle.h"
 #include "tests/support/truth_picks.h"
 
 namespace {
@@ -26,17 +27,10 @@ namespace {
 namespace fs = std::filesystem;
 
 using rockface::test::CliRun;
+using rockface::test::plane_angle_deg;
+using rockface::test::pole_of;
 using rockface::test::run_rockface;
 using rockface::test::TruthTrace;
-
-Eigen::Vector3d normal(double dip_deg, double dipdir_deg) {
-  const double a = dip_deg * M_PI / 180, b = dipdir_deg * M_PI / 180;
-  return {std::sin(a) * std::sin(b), std::sin(a) * std::cos(b), std::cos(a)};
-}
-
-double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::acos(std::min(1.0, std::abs(a.dot(b)))) * 180 / M_PI;
-}
 
 // The picks' demo scene (truth_picks.h) with a second and third pair, the
 // stations moved 1.2 m west (pair 2) and east (pair 3).
@@ -184,13 +178,13 @@ TEST_F(ReplayFacePicks, ATracePickedInTwoPairsIsOneTraceAndTheBlocksComeFromIt) 
   // (0.2-0.5 deg) plus the registration's vertical and north (~0.1 deg);
   // pair 2's samples add its registration to pair 1 (surface rms ~1 cm,
   // tie points over metres: < 0.1 deg). Seen: 0.29 deg.
-  const Eigen::Vector3d j1 = normal(60, 200);
+  const Eigen::Vector3d j1 = pole_of(60, 200);
   bool found = false;
   for (const auto& j : store.list_joints(*visit)) {
     if (j.label != "J1") continue;
     found = true;
     EXPECT_NE(j.source.find("P2"), std::string::npos) << j.source;
-    const double e = angle_deg(normal(j.dip_deg, j.dipdir_deg), j1);
+    const double e = plane_angle_deg(pole_of(j.dip_deg, j.dipdir_deg), j1);
     std::printf("J1 measured %.2f/%.2f, error %.2f deg\n", j.dip_deg, j.dipdir_deg, e);
     EXPECT_LT(e, 1.0);
   }
@@ -236,7 +230,7 @@ TEST_F(ReplayFacePicks, ATracePickedInTwoPairsIsOneTraceAndTheBlocksComeFromIt) 
     EXPECT_EQ(m.model_id, pairs[1].id) << id;
     EXPECT_EQ(m.photo_capture_id, captures[1].id) << id;
     ASSERT_TRUE(m.dip_deg) << id << ": " << m.note;
-    const double e = angle_deg(normal(*m.dip_deg, *m.dipdir_deg), face_w.normalized());
+    const double e = plane_angle_deg(pole_of(*m.dip_deg, *m.dipdir_deg), face_w.normalized());
     std::printf("%s (pair 2) measured %.2f/%.2f, error %.2f deg\n", id.c_str(), *m.dip_deg,
                 *m.dipdir_deg, e);
     EXPECT_LT(e, bound) << id;
@@ -278,8 +272,9 @@ TEST_F(ReplayFacePicks, ATracePickedInTwoPairsIsOneTraceAndTheBlocksComeFromIt) 
   // the stored report's precision rather than the reconstruction's.
   for (const std::string id : {"A2", "Q2"}) {
     ASSERT_TRUE(measured.at(id).dip_deg) << id << ": " << measured.at(id).note;
-    const double d = angle_deg(normal(*measured.at(id).dip_deg, *measured.at(id).dipdir_deg),
-                               normal(*by_label.at(id).dip_deg, *by_label.at(id).dipdir_deg));
+    const double d =
+        plane_angle_deg(pole_of(*measured.at(id).dip_deg, *measured.at(id).dipdir_deg),
+                        pole_of(*by_label.at(id).dip_deg, *by_label.at(id).dipdir_deg));
     std::printf("%s: rockface measure vs replay %.4f deg\n", id.c_str(), d);
     EXPECT_LT(d, 0.05) << id;
   }

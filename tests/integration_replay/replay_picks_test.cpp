@@ -17,6 +17,7 @@
 
 #include "storage/project_store.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/plane_angle.h"
 #include "tests/support/truth_picks.h"
 
 namespace {
@@ -24,16 +25,9 @@ namespace {
 namespace fs = std::filesystem;
 
 using rockface::test::CliRun;
+using rockface::test::plane_angle_deg;
+using rockface::test::pole_of;
 using rockface::test::run_rockface;
-
-Eigen::Vector3d normal(double dip_deg, double dipdir_deg) {
-  const double a = dip_deg * M_PI / 180, b = dipdir_deg * M_PI / 180;
-  return {std::sin(a) * std::sin(b), std::sin(a) * std::cos(b), std::cos(a)};
-}
-
-double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::acos(std::min(1.0, std::abs(a.dot(b)))) * 180 / M_PI;
-}
 
 TEST(ReplayPicks, TracesMeasuredOnTheImageGiveThePlanesAndTheKeyblock) {
   const fs::path dir =
@@ -77,7 +71,7 @@ TEST(ReplayPicks, TracesMeasuredOnTheImageGiveThePlanesAndTheKeyblock) {
   // (a straight trace), so the analysis keeps the scene's, and the replay
   // says so.
   const std::map<std::string, Eigen::Vector3d> truth{
-      {"J1", normal(60, 200)}, {"J2", normal(75, 110)}, {"J3", normal(20, 350)}};
+      {"J1", pole_of(60, 200)}, {"J2", pole_of(75, 110)}, {"J3", pole_of(20, 350)}};
   int measured = 0;
   for (const auto& j : store.list_joints(visits[0].id)) {
     if (j.label == "J2") {
@@ -87,7 +81,7 @@ TEST(ReplayPicks, TracesMeasuredOnTheImageGiveThePlanesAndTheKeyblock) {
     ++measured;
     EXPECT_EQ(j.source.rfind("traces T", 0), 0u) << j.label << ": " << j.source;
     EXPECT_EQ(j.type, "trace");
-    const double error = angle_deg(normal(j.dip_deg, j.dipdir_deg), truth.at(j.label));
+    const double error = plane_angle_deg(pole_of(j.dip_deg, j.dipdir_deg), truth.at(j.label));
     std::printf("%s measured %.2f/%.2f, error %.2f deg\n", j.label.c_str(), j.dip_deg, j.dipdir_deg,
                 error);
     EXPECT_LT(error, 1.0) << j.label;
