@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   # toolchain
   g++ cmake ninja-build pkg-config
+  # compiler cache: CI runs on the session's machine, which keeps ~/.cache
+  ccache
   # libraries (DESIGN.md: Eigen, OpenCV, libgphoto2, SQLite; header-only helpers)
   libeigen3-dev libopencv-dev libgphoto2-dev libexif-dev libsqlite3-dev nlohmann-json3-dev libcli11-dev
   # tablet UI: Dear ImGui 1.86 (with its OpenGL 3 backend source and stb),
