@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/common/units.h"
+
 namespace rockface::geometry {
 
 double wrap_azimuth(double azimuth) {
@@ -19,6 +21,11 @@ double wrap_azimuth(double azimuth) {
 Eigen::Vector3d plane_normal(const PlaneOrientation& o) {
   const double sa = std::sin(o.dip), ca = std::cos(o.dip);
   return {sa * std::sin(o.dipdir), sa * std::cos(o.dipdir), ca};
+}
+
+Eigen::Vector3d plane_normal_deg(double dip_deg, double dipdir_deg) {
+  // The same conversion as every caller made by hand before, to the bit.
+  return plane_normal({deg_to_rad(dip_deg), deg_to_rad(dipdir_deg)});
 }
 
 PlaneOrientation plane_orientation(const Eigen::Vector3d& n_in) {

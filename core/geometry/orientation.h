@@ -24,6 +24,10 @@ double wrap_azimuth(double azimuth);
 // normal points to its dip direction.
 Eigen::Vector3d plane_normal(const PlaneOrientation& o);
 
+// The same from degrees, as orientations arrive at the program's boundary
+// (scene files, picks, tests): dip and dip direction in degrees.
+Eigen::Vector3d plane_normal_deg(double dip_deg, double dipdir_deg);
+
 // Dip / dip direction of the plane with normal n (either sense; n need not be
 // unit). For a vertical plane the dip direction is the azimuth n points to.
 PlaneOrientation plane_orientation(const Eigen::Vector3d& n);
