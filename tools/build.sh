@@ -17,3 +17,4 @@ if [ "${CI:-}" = "true" ]; then
 fi
 cmake --preset "$preset" "${extra[@]}" >/dev/null
 cmake --build --preset "$preset" -j "$(nproc)"
+echo "build.sh: $preset built in $SECONDS s"
