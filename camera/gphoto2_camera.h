@@ -47,25 +47,35 @@ class Gphoto2Camera final : public Camera {
   explicit Gphoto2Camera(Options options);
   ~Gphoto2Camera() override;
 
+  // The connection.
   std::string model() override;
   std::string port();
+  void close() override;
+
+  // Settings, named as libgphoto2 names the camera's widgets.
   std::vector<CameraSetting> settings() override;
   CameraSetting setting(const std::string& name) override;
   void set_setting(const std::string& name, const std::string& value) override;
+  // Each field under the first of its libgphoto2 names (they differ from
+  // maker to maker) that this camera has; refuses one it cannot set over USB.
   void apply(const ExposureSettings& exposure) override;
+  // unknown when the camera has no flash setting.
   FlashState flash() override;
-  void lock_focus() override;
-  Capture capture() override;
-  cv::Mat live_view() override;
-  std::vector<CameraEvent> events(int timeout_ms) override;
-  void close() override;
 
+  // Shooting, in the order of the workflow: aim, focus, shoot, download.
+  cv::Mat live_view() override;
+  // Autofocuses once, then switches to the camera's manual focus mode.
+  void lock_focus() override;
+  // Waits event_drain_ms for the shot's follow-up files (the RAW of a
+  // RAW+JPEG pair) and spools every file as it is downloaded.
+  Capture capture() override;
+  // Waits up to timeout_ms on the camera.
+  std::vector<CameraEvent> events(int timeout_ms) override;
   // Files on the camera or card, as "folder/name" paths, folders walked
   // recursively from `folder`.
   std::vector<std::string> list_files(const std::string& folder = "/");
   // Downloads one file into the spool folder.
   CapturedFile download(const std::string& camera_path);
-
   // Shots taken but not downloaded because the camera failed in between.
   std::vector<std::string> pending_downloads();
   // Downloads them now; those that fail stay pending. Throws nothing for a

@@ -7,7 +7,7 @@
 #include "firmware-app/ui_services.h"
 #include "firmware-app/verb_registry.h"
 #include "ui/headless_session.h"
-#include "ui/window_runner.h"
+#include "ui/platform/window_runner.h"
 
 namespace rockface::app {
 namespace {

@@ -1,12 +1,34 @@
 #include "storage/project_schema.h"
 
 #include <string>
+#include <string_view>
 
 #include "core/common/error.h"
 
 namespace rockface::storage::schema {
 
 namespace {
+
+// The columns of a capture row but its images, in version 1 and in the table
+// version 2 rebuilds. They stand once here and take the place of
+// kCaptureColumnsMark in both texts (with_capture_columns): SQLite keeps the
+// text of each CREATE TABLE in the file, so the splice must give back, byte
+// for byte, the text that version 1 of rockface wrote.
+constexpr std::string_view kCaptureColumns = R"sql(  id INTEGER PRIMARY KEY,
+  visit_id INTEGER NOT NULL REFERENCES visit(id),
+  calibration_id INTEGER REFERENCES calibration(id),
+  label TEXT NOT NULL,
+  taken_at TEXT NOT NULL,
+  created_at TEXT NOT NULL,
+)sql";
+constexpr std::string_view kCaptureColumnsMark = "  <capture columns>\n";
+
+std::string with_capture_columns(std::string_view sql) {
+  std::string out(sql);
+  const std::size_t at = out.find(kCaptureColumnsMark);
+  if (at != std::string::npos) out.replace(at, kCaptureColumnsMark.size(), kCaptureColumns);
+  return out;
+}
 
 // Version 1, as first released. Coordinates are project-frame (datum
 // relative) metres; angles degrees; times UTC ISO 8601 text.
@@ -43,12 +65,7 @@ CREATE TABLE calibration (
   method TEXT NOT NULL
 );
 CREATE TABLE capture (
-  id INTEGER PRIMARY KEY,
-  visit_id INTEGER NOT NULL REFERENCES visit(id),
-  calibration_id INTEGER REFERENCES calibration(id),
-  label TEXT NOT NULL,
-  taken_at TEXT NOT NULL,
-  created_at TEXT NOT NULL,
+  <capture columns>
   left_format TEXT NOT NULL, right_format TEXT NOT NULL,
   left_image BLOB NOT NULL, right_image BLOB NOT NULL
 );
@@ -172,12 +189,7 @@ INSERT INTO image (format, byte_size, bytes)
   UNION
   SELECT right_format, length(right_image), right_image FROM capture;
 CREATE TABLE capture_v2 (
-  id INTEGER PRIMARY KEY,
-  visit_id INTEGER NOT NULL REFERENCES visit(id),
-  calibration_id INTEGER REFERENCES calibration(id),
-  label TEXT NOT NULL,
-  taken_at TEXT NOT NULL,
-  created_at TEXT NOT NULL,
+  <capture columns>
   left_image_id INTEGER NOT NULL REFERENCES image(id),
   right_image_id INTEGER NOT NULL REFERENCES image(id)
 );
@@ -249,7 +261,7 @@ int version_of(sqlite::Connection& db) {
 
 void create_version_1(sqlite::Connection& db) {
   sqlite::WriteTransaction tx(db, "creating the project tables");
-  db.exec(kVersion1, "creating the project tables");
+  db.exec(with_capture_columns(kVersion1), "creating the project tables");
   db.exec("PRAGMA application_id = " + std::to_string(kApplicationId), "marking the project file");
   db.exec("PRAGMA user_version = 1", "marking the project file");
   tx.commit();
@@ -284,7 +296,8 @@ void migrate_to_current(sqlite::Connection& db) {
                      "not a rockface project (schema version " + std::to_string(from) + ")");
   for (const Step& step : kSteps) {
     if (step.to_version <= from) continue;
-    db.exec(step.sql, "upgrading the project to schema " + std::to_string(step.to_version));
+    db.exec(with_capture_columns(step.sql),
+            "upgrading the project to schema " + std::to_string(step.to_version));
   }
   sqlite::Statement check(db, "PRAGMA foreign_key_check", "upgrading the project");
   if (check.step())

@@ -103,6 +103,30 @@ class Statement {
   std::string doing_;
 };
 
+// The columns of a statement's current row, read left to right: a record's
+// mapping then lists its fields in the order of its SELECT, with no column
+// numbers to keep in step with it. One reader per row.
+class RowReader {
+ public:
+  explicit RowReader(const Statement& st) : st_(st) {}
+
+  std::int64_t next_int64() { return st_.column_int(next_++); }
+  int next_int() { return static_cast<int>(st_.column_int(next_++)); }
+  bool next_bool() { return st_.column_int(next_++) != 0; }
+  double next_double() { return st_.column_double(next_++); }
+  std::string next_text() { return st_.column_text(next_++); }
+  std::vector<std::uint8_t> next_blob() { return st_.column_blob(next_++); }
+  std::optional<std::int64_t> next_optional_int64() { return st_.column_optional_int(next_++); }
+  std::optional<double> next_optional_double() { return st_.column_optional_double(next_++); }
+  // Whether the next column is NULL, without reading it.
+  bool next_is_null() const { return st_.is_null(next_); }
+  void skip(int columns) { next_ += columns; }
+
+ private:
+  const Statement& st_;
+  int next_ = 0;
+};
+
 // BEGIN IMMEDIATE ... COMMIT. Taking the write lock at BEGIN (not at the first
 // write) means a busy project is waited for by the busy timeout instead of
 // failing half-way with SQLITE_BUSY. Rolls back when destroyed uncommitted.

@@ -305,12 +305,13 @@ ProjectInfo ProjectStore::project() {
                "project WHERE id = 1",
                "reading the project");
   if (!st.step()) throw InputError(file_.string(), "the project record is missing");
+  RowReader row(st);
   ProjectInfo info;
-  info.name = st.column_text(0);
-  info.datum = {st.column_double(1), st.column_double(2), st.column_double(3)};
-  info.datum_crs = st.column_text(4);
-  info.created_at = st.column_text(5);
-  info.created_by = st.column_text(6);
+  info.name = row.next_text();
+  info.datum = next_vector3(row);
+  info.datum_crs = row.next_text();
+  info.created_at = row.next_text();
+  info.created_by = row.next_text();
   return info;
 }
 
@@ -354,8 +355,14 @@ RecordId ProjectStore::begin_visit(const std::string& source, const std::string&
 std::vector<Visit> ProjectStore::list_visits() {
   Statement st(db_, "SELECT id, started_at, source, note FROM visit ORDER BY id", "listing visits");
   std::vector<Visit> out;
-  while (st.step())
-    out.push_back({st.column_int(0), st.column_text(1), st.column_text(2), st.column_text(3)});
+  while (st.step()) {
+    RowReader row(st);
+    Visit& v = out.emplace_back();
+    v.id = row.next_int64();
+    v.started_at = row.next_text();
+    v.source = row.next_text();
+    v.note = row.next_text();
+  }
   return out;
 }
 
@@ -385,9 +392,15 @@ std::vector<ActionLogEntry> ProjectStore::list_actions(std::optional<RecordId> v
                "listing the action log");
   st.bind(1, visit_id);
   std::vector<ActionLogEntry> out;
-  while (st.step())
-    out.push_back({st.column_int(0), st.column_text(1), optional_id(st, 2), st.column_text(3),
-                   st.column_text(4)});
+  while (st.step()) {
+    RowReader row(st);
+    ActionLogEntry& e = out.emplace_back();
+    e.id = row.next_int64();
+    e.at = row.next_text();
+    e.visit_id = row.next_optional_int64();
+    e.action = row.next_text();
+    e.detail = row.next_text();
+  }
   return out;
 }
 

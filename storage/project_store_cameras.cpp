@@ -33,8 +33,14 @@ std::vector<CameraBody> ProjectStore::list_camera_bodies() {
   Statement st(db_, "SELECT id, make, model, serial FROM camera_body ORDER BY id",
                "listing camera bodies");
   std::vector<CameraBody> out;
-  while (st.step())
-    out.push_back({st.column_int(0), st.column_text(1), st.column_text(2), st.column_text(3)});
+  while (st.step()) {
+    RowReader row(st);
+    CameraBody& b = out.emplace_back();
+    b.id = row.next_int64();
+    b.make = row.next_text();
+    b.model = row.next_text();
+    b.serial = row.next_text();
+  }
   return out;
 }
 
@@ -116,24 +122,25 @@ constexpr const char* kCalibrationColumns =
     "lens, focus, focal_setting_mm, method";
 
 Calibration read_calibration(const Statement& st) {
+  RowReader row(st);
   Calibration c;
-  c.id = st.column_int(0);
-  c.body_id = optional_id(st, 1);
-  c.created_at = st.column_text(2);
+  c.id = row.next_int64();
+  c.body_id = row.next_optional_int64();
+  c.created_at = row.next_text();
   auto& k = c.intrinsics;
-  k.width = static_cast<int>(st.column_int(3));
-  k.height = static_cast<int>(st.column_int(4));
-  k.fx = st.column_double(5);
-  k.fy = st.column_double(6);
-  k.cx = st.column_double(7);
-  k.cy = st.column_double(8);
-  for (int i = 0; i < 5; ++i) k.distortion[static_cast<std::size_t>(i)] = st.column_double(9 + i);
-  k.rms_px = st.column_double(14);
-  k.body = st.column_text(15);
-  k.lens = st.column_text(16);
-  k.focus = st.column_text(17);
-  c.focal_setting_mm = st.column_double(18);
-  c.method = st.column_text(19);
+  k.width = row.next_int();
+  k.height = row.next_int();
+  k.fx = row.next_double();
+  k.fy = row.next_double();
+  k.cx = row.next_double();
+  k.cy = row.next_double();
+  for (double& coefficient : k.distortion) coefficient = row.next_double();  // k1 k2 p1 p2 k3
+  k.rms_px = row.next_double();
+  k.body = row.next_text();
+  k.lens = row.next_text();
+  k.focus = row.next_text();
+  c.focal_setting_mm = row.next_double();
+  c.method = row.next_text();
   return c;
 }
 }  // namespace

@@ -92,16 +92,17 @@ constexpr const char* kCaptureSummarySelect =
     "JOIN image r ON r.id = c.right_image_id";
 
 CaptureSummary read_capture_summary(const Statement& st) {
+  RowReader row(st);
   CaptureSummary s;
-  s.id = st.column_int(0);
-  s.visit_id = st.column_int(1);
-  s.calibration_id = optional_id(st, 2);
-  s.label = st.column_text(3);
-  s.taken_at = st.column_text(4);
-  s.left_format = st.column_text(5);
-  s.left_bytes = st.column_int(6);
-  s.right_format = st.column_text(7);
-  s.right_bytes = st.column_int(8);
+  s.id = row.next_int64();
+  s.visit_id = row.next_int64();
+  s.calibration_id = row.next_optional_int64();
+  s.label = row.next_text();
+  s.taken_at = row.next_text();
+  s.left_format = row.next_text();
+  s.left_bytes = row.next_int64();
+  s.right_format = row.next_text();
+  s.right_bytes = row.next_int64();
   return s;
 }
 }  // namespace
@@ -117,24 +118,32 @@ Capture ProjectStore::load_capture(RecordId id) {
   st.bind(1, id);
   if (!st.step())
     throw InputError(file_.string(), "no capture " + std::to_string(id) + " in this project");
+  RowReader row(st);
   Capture c;
-  c.id = st.column_int(0);
-  c.visit_id = st.column_int(1);
-  c.calibration_id = optional_id(st, 2);
-  c.label = st.column_text(3);
-  c.taken_at = st.column_text(4);
-  c.left.format = st.column_text(5);
-  c.left.bytes = st.column_blob(6);
-  c.right.format = st.column_text(7);
-  c.right.bytes = st.column_blob(8);
+  c.id = row.next_int64();
+  c.visit_id = row.next_int64();
+  c.calibration_id = row.next_optional_int64();
+  c.label = row.next_text();
+  c.taken_at = row.next_text();
+  c.left.format = row.next_text();
+  c.left.bytes = row.next_blob();
+  c.right.format = row.next_text();
+  c.right.bytes = row.next_blob();
   Statement settings(db_, "SELECT key, value FROM capture_setting WHERE capture_id = ?", doing);
   settings.bind(1, id);
-  while (settings.step()) c.settings[settings.column_text(0)] = settings.column_text(1);
+  while (settings.step()) {
+    RowReader setting(settings);
+    const std::string key = setting.next_text();
+    c.settings[key] = setting.next_text();
+  }
   Statement exif(db_, "SELECT side, key, value FROM capture_exif WHERE capture_id = ?", doing);
   exif.bind(1, id);
-  while (exif.step())
-    (exif.column_text(0) == "left" ? c.left_exif : c.right_exif)[exif.column_text(1)] =
-        exif.column_text(2);
+  while (exif.step()) {
+    RowReader entry(exif);
+    const std::string side = entry.next_text();
+    const std::string key = entry.next_text();
+    (side == "left" ? c.left_exif : c.right_exif)[key] = entry.next_text();
+  }
   return c;
 }
 
@@ -149,7 +158,9 @@ ImageBlob ProjectStore::load_capture_image(RecordId capture_id, const std::strin
   if (!st.step())
     throw InputError(file_.string(),
                      "no capture " + std::to_string(capture_id) + " in this project");
-  return {st.column_blob(1), st.column_text(0)};
+  RowReader row(st);
+  const std::string format = row.next_text();
+  return {row.next_blob(), format};
 }
 
 std::vector<CaptureSummary> ProjectStore::list_captures(std::optional<RecordId> visit_id) {
@@ -282,29 +293,29 @@ Model ProjectStore::load_model(RecordId id) {
   st.bind(1, id);
   if (!st.step())
     throw InputError(file_.string(), "no model " + std::to_string(id) + " in this project");
+  RowReader row(st);
   Model m;
-  m.id = st.column_int(0);
-  m.capture_id = optional_id(st, 1);
-  m.created_at = st.column_text(2);
-  m.preset = st.column_text(3);
-  m.mesh = blobs::decode_mesh(st.column_blob(4), where);
-  m.texture_capture_id = optional_id(st, 5);
-  m.texture_side = st.column_text(6);
+  m.id = row.next_int64();
+  m.capture_id = row.next_optional_int64();
+  m.created_at = row.next_text();
+  m.preset = row.next_text();
+  m.mesh = blobs::decode_mesh(row.next_blob(), where);
+  m.texture_capture_id = row.next_optional_int64();
+  m.texture_side = row.next_text();
   auto& r = m.registration;
-  r.kind = st.column_text(7);
-  r.scale = st.column_double(8);
-  for (int i = 0; i < 4; ++i) r.rotation_wxyz[i] = st.column_double(9 + i);
-  for (int i = 0; i < 3; ++i) r.translation[i] = st.column_double(13 + i);
-  r.parameters_json = st.column_text(16);
-  r.rms_m = st.column_double(17);
-  if (!st.is_null(18)) {
+  r.kind = row.next_text();
+  r.scale = row.next_double();
+  r.rotation_wxyz = next_vector4(row);
+  r.translation = next_vector3(row);
+  r.parameters_json = row.next_text();
+  r.rms_m = row.next_double();
+  if (!row.next_is_null()) {  // NULL: no camera map was kept (project_schema.cpp, version 4)
     photogrammetry::Similarity camera;
-    camera.scale = st.column_double(18);
-    camera.R = Eigen::Quaterniond(st.column_double(19), st.column_double(20), st.column_double(21),
-                                  st.column_double(22))
-                   .normalized()
-                   .toRotationMatrix();
-    for (int i = 0; i < 3; ++i) camera.t[i] = st.column_double(23 + i);
+    camera.scale = row.next_double();
+    const Eigen::Vector4d wxyz = next_vector4(row);
+    camera.R =
+        Eigen::Quaterniond(wxyz[0], wxyz[1], wxyz[2], wxyz[3]).normalized().toRotationMatrix();
+    camera.t = next_vector3(row);
     m.camera_to_mesh = camera;
   }
   Statement res(db_,
@@ -312,9 +323,11 @@ Model ProjectStore::load_model(RecordId id) {
                 "BY idx",
                 "loading model " + std::to_string(id));
   res.bind(1, id);
-  while (res.step())
-    m.residuals.push_back(
-        {res.column_text(0), {res.column_double(1), res.column_double(2), res.column_double(3)}});
+  while (res.step()) {
+    RowReader residual(res);
+    const std::string label = residual.next_text();
+    m.residuals.push_back({label, next_vector3(residual)});
+  }
   return m;
 }
 
@@ -327,15 +340,16 @@ std::vector<ModelSummary> ProjectStore::list_models(std::optional<RecordId> capt
   st.bind(1, capture_id);
   std::vector<ModelSummary> out;
   while (st.step()) {
+    RowReader row(st);
     ModelSummary s;
-    s.id = st.column_int(0);
-    s.capture_id = optional_id(st, 1);
-    s.preset = st.column_text(2);
-    s.created_at = st.column_text(3);
-    s.registration_kind = st.column_text(4);
-    s.vertex_count = st.column_int(5);
-    s.face_count = st.column_int(6);
-    s.registration_rms_m = st.column_double(7);
+    s.id = row.next_int64();
+    s.capture_id = row.next_optional_int64();
+    s.preset = row.next_text();
+    s.created_at = row.next_text();
+    s.registration_kind = row.next_text();
+    s.vertex_count = row.next_int64();
+    s.face_count = row.next_int64();
+    s.registration_rms_m = row.next_double();
     out.push_back(std::move(s));
   }
   return out;

@@ -21,6 +21,7 @@ namespace rows {
 // The SQLite wrappers every ProjectStore file uses.
 using sqlite::Connection;
 using sqlite::ReadTransaction;
+using sqlite::RowReader;
 using sqlite::Statement;
 using sqlite::WriteTransaction;
 
@@ -65,8 +66,28 @@ inline Measurement::Kind kind_of(const std::string& text, const std::string& whe
   throw Error(where + ": unknown measurement kind '" + text + "'");
 }
 
-inline std::optional<RecordId> optional_id(const Statement& st, int column) {
-  return st.column_optional_int(column);
+// Three REAL columns (x, y, z) as a point or a vector.
+inline Eigen::Vector3d next_vector3(RowReader& row) {
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) v[i] = row.next_double();
+  return v;
+}
+
+// Four REAL columns (w, x, y, z) of a quaternion.
+inline Eigen::Vector4d next_vector4(RowReader& row) {
+  Eigen::Vector4d v;
+  for (int i = 0; i < 4; ++i) v[i] = row.next_double();
+  return v;
+}
+
+// Three nullable REAL columns as a point that may be absent: absent when the
+// first is NULL (the three columns are then passed over).
+inline std::optional<Eigen::Vector3d> next_optional_vector3(RowReader& row) {
+  if (row.next_is_null()) {
+    row.skip(3);
+    return std::nullopt;
+  }
+  return next_vector3(row);
 }
 
 }  // namespace rows

@@ -117,27 +117,28 @@ std::vector<Measurement> ProjectStore::list_measurements(std::optional<RecordId>
   st.bind(1, visit_id);
   std::vector<Measurement> out;
   while (st.step()) {
+    RowReader row(st);
     Measurement m;
-    m.id = st.column_int(0);
+    m.id = row.next_int64();
     const std::string where = file_.string() + ": measurement " + std::to_string(m.id);
-    m.visit_id = st.column_int(1);
-    m.model_id = optional_id(st, 2);
-    m.kind = kind_of(st.column_text(3), where);
-    m.label = st.column_text(4);
-    m.joint_label = st.column_text(5);
-    m.points = blobs::decode_points(st.column_blob(6), where);
-    m.dip_deg = st.column_optional_double(7);
-    m.dipdir_deg = st.column_optional_double(8);
-    m.fit_rms_m = st.column_double(9);
-    m.rock_side = st.column_text(10);
-    m.created_at = st.column_text(11);
-    m.photo = st.column_text(12);
-    m.photo_capture_id = optional_id(st, 13);
-    m.pixels = pixels_of(st.column_text(14), where);
-    m.sigma_deg = st.column_optional_double(15);
-    m.trace_length_m = st.column_optional_double(16);
-    m.censored = st.column_int(17) != 0;
-    m.note = st.column_text(18);
+    m.visit_id = row.next_int64();
+    m.model_id = row.next_optional_int64();
+    m.kind = kind_of(row.next_text(), where);
+    m.label = row.next_text();
+    m.joint_label = row.next_text();
+    m.points = blobs::decode_points(row.next_blob(), where);
+    m.dip_deg = row.next_optional_double();
+    m.dipdir_deg = row.next_optional_double();
+    m.fit_rms_m = row.next_double();
+    m.rock_side = row.next_text();
+    m.created_at = row.next_text();
+    m.photo = row.next_text();
+    m.photo_capture_id = row.next_optional_int64();
+    m.pixels = pixels_of(row.next_text(), where);
+    m.sigma_deg = row.next_optional_double();
+    m.trace_length_m = row.next_optional_double();
+    m.censored = row.next_bool();
+    m.note = row.next_text();
     out.push_back(std::move(m));
   }
   return out;
@@ -256,19 +257,20 @@ std::vector<JointSet> ProjectStore::list_joint_sets(RecordId visit_id) {
   st.bind(1, visit_id);
   std::vector<JointSet> out;
   while (st.step()) {
+    RowReader row(st);
     JointSet s;
-    s.id = st.column_int(0);
-    s.label = st.column_text(1);
-    s.dip_deg = st.column_double(2);
-    s.dipdir_deg = st.column_double(3);
-    s.fisher_k = st.column_double(4);
-    s.count = static_cast<int>(st.column_int(5));
-    s.alpha95_deg = st.column_optional_double(6);
-    s.spacing_m = st.column_optional_double(7);
-    s.mean_trace_length_m = st.column_optional_double(8);
-    s.censored_traces = static_cast<int>(st.column_int(9));
-    s.persistence_m = st.column_optional_double(10);
-    s.note = st.column_text(11);
+    s.id = row.next_int64();
+    s.label = row.next_text();
+    s.dip_deg = row.next_double();
+    s.dipdir_deg = row.next_double();
+    s.fisher_k = row.next_double();
+    s.count = row.next_int();
+    s.alpha95_deg = row.next_optional_double();
+    s.spacing_m = row.next_optional_double();
+    s.mean_trace_length_m = row.next_optional_double();
+    s.censored_traces = row.next_int();
+    s.persistence_m = row.next_optional_double();
+    s.note = row.next_text();
     out.push_back(std::move(s));
   }
   return out;
@@ -285,21 +287,21 @@ std::vector<Joint> ProjectStore::list_joints(std::optional<RecordId> visit_id) {
   st.bind(1, visit_id);
   std::vector<Joint> out;
   while (st.step()) {
+    RowReader row(st);
     Joint j;
-    j.id = st.column_int(0);
-    j.visit_id = st.column_int(1);
-    j.label = st.column_text(2);
-    j.set_label = st.column_text(3);
-    j.dip_deg = st.column_double(4);
-    j.dipdir_deg = st.column_double(5);
-    if (!st.is_null(6))
-      j.point = Eigen::Vector3d(st.column_double(6), st.column_double(7), st.column_double(8));
-    j.friction_deg = st.column_optional_double(9);
-    j.cohesion_pa = st.column_optional_double(10);
-    j.measurement_id = optional_id(st, 11);
-    j.source = st.column_text(12);
-    j.type = st.column_text(13);
-    j.persistence_m = st.column_optional_double(14);
+    j.id = row.next_int64();
+    j.visit_id = row.next_int64();
+    j.label = row.next_text();
+    j.set_label = row.next_text();
+    j.dip_deg = row.next_double();
+    j.dipdir_deg = row.next_double();
+    j.point = next_optional_vector3(row);
+    j.friction_deg = row.next_optional_double();
+    j.cohesion_pa = row.next_optional_double();
+    j.measurement_id = row.next_optional_int64();
+    j.source = row.next_text();
+    j.type = row.next_text();
+    j.persistence_m = row.next_optional_double();
     out.push_back(std::move(j));
   }
   return out;
@@ -361,18 +363,19 @@ RecordId ProjectStore::save_analysis(const AnalysisRun& run) {
 
 namespace {
 AnalysisRun read_analysis(const Statement& st, const std::string& file) {
+  RowReader row(st);
   AnalysisRun a;
-  a.id = st.column_int(0);
-  a.visit_id = st.column_int(1);
-  a.model_id = optional_id(st, 2);
-  a.created_at = st.column_text(3);
-  a.preset = st.column_text(4);
-  const std::string effects = st.column_text(5);
+  a.id = row.next_int64();
+  a.visit_id = row.next_int64();
+  a.model_id = row.next_optional_int64();
+  a.created_at = row.next_text();
+  a.preset = row.next_text();
+  const std::string effects = row.next_text();
   auto parsed = nlohmann::json::parse(effects, nullptr, false);
   if (parsed.is_discarded() || !parsed.is_array())
     throw Error(file + ": analysis " + std::to_string(a.id) + ": stored effects are damaged");
   for (const auto& e : parsed) a.effects.push_back(e.is_string() ? e.get<std::string>() : e.dump());
-  a.effects_json = st.column_text(6);
+  a.effects_json = row.next_text();
   return a;
 }
 constexpr const char* kAnalysisColumns =
@@ -394,18 +397,19 @@ AnalysisRun ProjectStore::load_analysis(RecordId id) {
                    doing);
   blocks.bind(1, id);
   while (blocks.step()) {
+    RowReader row(blocks);
     BlockResult b;
-    b.id = blocks.column_int(0);
-    b.label = blocks.column_text(1);
-    b.source = blocks.column_text(2);
-    b.code = blocks.column_text(3);
-    b.volume_m3 = blocks.column_double(4);
-    b.finite = blocks.column_int(5) != 0;
-    b.removable = blocks.column_int(6) != 0;
-    b.marginal = blocks.column_int(7) != 0;
-    b.mode = blocks.column_text(8);
-    b.fos = blocks.column_optional_double(9);
-    b.report_json = blocks.column_text(10);
+    b.id = row.next_int64();
+    b.label = row.next_text();
+    b.source = row.next_text();
+    b.code = row.next_text();
+    b.volume_m3 = row.next_double();
+    b.finite = row.next_bool();
+    b.removable = row.next_bool();
+    b.marginal = row.next_bool();
+    b.mode = row.next_text();
+    b.fos = row.next_optional_double();
+    b.report_json = row.next_text();
     a.blocks.push_back(std::move(b));
   }
   return a;

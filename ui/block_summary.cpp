@@ -10,7 +10,7 @@
 
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
-#include "ui/block_view.h"
+#include "ui/block_verdict.h"
 
 namespace rockface::ui {
 
@@ -50,7 +50,8 @@ std::string joined_planes(const nlohmann::json& mode) {
   return out;
 }
 
-void add_mode(std::vector<std::string>& lines, const BlockView& b, const nlohmann::json& report) {
+void add_mode(std::vector<std::string>& lines, const storage::BlockResult& b,
+              const nlohmann::json& report) {
   if (!b.finite || !b.removable) return;
   const auto* mode = field(report, "mode");
   std::string line = "Mode: " + b.mode;
@@ -124,16 +125,18 @@ void add_mechanics(std::vector<std::string>& lines, const nlohmann::json& report
 
 }  // namespace
 
-std::vector<std::string> block_summary(const BlockView& b, const nlohmann::json& report) {
+std::vector<std::string> block_summary(const storage::BlockResult& b,
+                                       const nlohmann::json& report) {
   std::vector<std::string> lines;
-  std::string head = "Block " + b.label + ": " + verdict_name(b.verdict);
+  std::string head = "Block " + b.label + ": " + verdict_name(verdict_of(b));
   if (b.marginal) head += " (a verdict within its margin: check on site)";
   lines.push_back(head);
   std::string what = std::string(b.finite ? "finite" : "not finite") + ", " +
                      (b.removable ? "removable" : "not removable");
   if (!b.source.empty()) what += ", from " + b.source;
   lines.push_back(what);
-  if (b.margin_deg) lines.push_back(format("Margin %.1f deg", *b.margin_deg));
+  if (const auto margin = number(report, "margin_deg"))
+    lines.push_back(format("Margin %.1f deg", *margin));
   add_mode(lines, b, report);
   const auto volume = number(report, "volume"), mass = number(report, "mass");
   if (volume && mass)

@@ -9,12 +9,14 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "storage/project_records.h"
+
 namespace rockface::ui {
 
-struct BlockView;
-
-// report: the block's report JSON (a "blocks" entry of rockface-report/1);
-// absent or malformed fields are left out, never guessed.
-std::vector<std::string> block_summary(const BlockView& block, const nlohmann::json& report);
+// block: the stored columns (label, verdict, mode, factor of safety);
+// report: the block's report JSON (a "blocks" entry of rockface-report/1),
+// for the rest. Absent or malformed fields are left out, never guessed.
+std::vector<std::string> block_summary(const storage::BlockResult& block,
+                                       const nlohmann::json& report);
 
 }  // namespace rockface::ui

@@ -6,36 +6,6 @@
 
 namespace rockface::ui {
 
-const char* verdict_name(BlockVerdict verdict) {
-  switch (verdict) {
-    case BlockVerdict::moves:
-      return "moves";
-    case BlockVerdict::marginal:
-      return "marginal";
-    case BlockVerdict::holds:
-      return "holds";
-    case BlockVerdict::keyed:
-      return "keyed";
-    case BlockVerdict::infinite:
-      return "not finite";
-  }
-  return "?";
-}
-
-namespace {
-
-BlockVerdict verdict_of(const BlockView& b) {
-  if (b.marginal) return BlockVerdict::marginal;
-  if (!b.finite) return BlockVerdict::infinite;
-  if (!b.removable) return BlockVerdict::keyed;
-  if (b.mode == "none") return BlockVerdict::holds;
-  if (b.mode == "falling" || b.mode == "lifting" || !b.fos || *b.fos < 1)
-    return BlockVerdict::moves;
-  return BlockVerdict::holds;
-}
-
-}  // namespace
-
 BlockView make_block_view(const storage::BlockResult& block, const Eigen::Vector3d& datum) {
   BlockView v;
   v.label = block.label;
@@ -67,8 +37,8 @@ BlockView make_block_view(const storage::BlockResult& block, const Eigen::Vector
   } else {
     v.report_text = block.report_json;
   }
-  v.verdict = verdict_of(v);
-  v.summary = block_summary(v, json.is_object() ? json : nlohmann::json::object());
+  v.verdict = verdict_of(block);
+  v.summary = block_summary(block, json.is_object() ? json : nlohmann::json::object());
   return v;
 }
 

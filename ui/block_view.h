@@ -9,19 +9,9 @@
 #include <Eigen/Core>
 
 #include "storage/project_records.h"
+#include "ui/block_verdict.h"
 
 namespace rockface::ui {
-
-// Ordered from most to least alarming.
-enum class BlockVerdict {
-  moves,     // finite, removable and the factor of safety is below 1 (or a free fall)
-  marginal,  // a verdict within its tolerance or the measurements' uncertainty
-  holds,     // finite and removable, but friction holds it (FoS >= 1)
-  keyed,     // finite, not removable
-  infinite,  // not finite: no block
-};
-
-const char* verdict_name(BlockVerdict verdict);
 
 struct BlockView {
   std::string label, source, code, mode;

@@ -1,7 +1,7 @@
 // The window platform of a build without X11 (see ui/CMakeLists.txt).
 #ifndef ROCKFACE_UI_X11
 #include "core/common/error.h"
-#include "ui/window_runner.h"
+#include "ui/platform/window_runner.h"
 
 namespace rockface::ui {
 
