@@ -74,6 +74,26 @@ void BM_TraceMapToBlocks(benchmark::State& state) {
 }
 BENCHMARK(BM_TraceMapToBlocks)->Arg(50)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond);
 
+// Issue 26: TraceNetwork::build alone (planes and stretches, laying on
+// patch edges, merging, crossings and extensions, vertices, edges, the order
+// around each vertex) on the surface built once, to time its phases apart
+// from the loop search and the block analysis that dilute them above.
+void BM_TraceNetworkBuild(benchmark::State& state) {
+  const auto patches = faces::testing::random_slope();
+  const faces::FreeSurface surface = faces::FreeSurface::build(patches, kSnap);
+  const auto traces = random_traces(surface, static_cast<int>(state.range(0)), 11);
+  size_t vertices = 0, edges = 0;
+  for (auto _ : state) {
+    const auto net = faces::TraceNetwork::build(surface, traces, {kSnap, deg_to_rad(1.0)});
+    benchmark::DoNotOptimize(net.vertices().data());
+    vertices = net.vertices().size();
+    edges = net.edges().size();
+  }
+  state.counters["vertices"] = static_cast<double>(vertices);
+  state.counters["edges"] = static_cast<double>(edges);
+}
+BENCHMARK(BM_TraceNetworkBuild)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond);
+
 // The finite blocks of the map of `count` traces that are one polyhedron
 // each (the map built once, for the benchmarks that time what follows).
 std::vector<blocks::Polyhedron> finite_polyhedra(int count) {
