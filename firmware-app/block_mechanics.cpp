@@ -57,7 +57,7 @@ bool scene_wants_mechanics(const storage::Scene& scene) {
 void analyse_block_mechanics(const blocks::Polyhedron& poly, const storage::Scene& scene,
                              const kinematics::Effects& effects, storage::ReportBlock& rb,
                              Progress* progress) {
-  mechanics::MechanicsOptions o = mechanics::mechanics_preset(scene.analysis.preset);
+  mechanics::MechanicsOptions o = mechanics::mechanics_options(scene.analysis.preset);
   if (scene.analysis.contact_density) o.contact_density = *scene.analysis.contact_density;
   if (scene.analysis.continuation_step) o.step = *scene.analysis.continuation_step;
   if (scene.analysis.max_steps) o.max_steps = *scene.analysis.max_steps;

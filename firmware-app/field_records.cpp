@@ -46,12 +46,11 @@ storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
 }
 
 storage::AnalysisRun analysis_record(const storage::Report& report, storage::RecordId visit_id,
-                                     std::optional<storage::RecordId> model_id,
-                                     const std::string& preset) {
+                                     std::optional<storage::RecordId> model_id, Preset preset) {
   storage::AnalysisRun run;
   run.visit_id = visit_id;
   run.model_id = model_id;
-  run.preset = preset;
+  run.preset = preset_name(preset);
   run.effects = report.effects_simulated;
   for (const auto& b : report.blocks) {
     storage::BlockResult r;

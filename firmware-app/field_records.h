@@ -5,6 +5,7 @@
 // `rockface replay` and the tablet UI's runners, so both store the same.
 #include <string>
 
+#include "core/common/preset.h"
 #include "core/photogrammetry/reconstruction.h"
 #include "storage/project_records.h"
 #include "storage/reconstruction_report.h"
@@ -21,7 +22,6 @@ storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
                             const storage::ReconstructionReportContext& accuracy);
 
 storage::AnalysisRun analysis_record(const storage::Report& report, storage::RecordId visit_id,
-                                     std::optional<storage::RecordId> model_id,
-                                     const std::string& preset);
+                                     std::optional<storage::RecordId> model_id, Preset preset);
 
 }  // namespace rockface::app

@@ -92,11 +92,10 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     intrinsics = storage::load_camera_json(cam_file.string());
     cam = camera::MockCamera::replay(request.source, spool.string());
   }
-  const std::string preset_name = !request.preset.empty()
-                                      ? request.preset
-                                      : (scene ? scene->analysis.preset : std::string("standard"));
-  const photogrammetry::ReconstructionPreset preset =
-      photogrammetry::preset_by_name(preset_name, "--preset");
+  // --preset, else the scene's analysis.preset; a capture folder has no
+  // scene, so its default is the scene's default (standard).
+  const Preset chosen = request.preset.value_or(scene ? scene->analysis.preset : Preset::standard);
+  const photogrammetry::ReconstructionPreset preset = photogrammetry::reconstruction_preset(chosen);
 
   // Capture the pair: focus locked after the first shot, optics checked.
   progress.step("capture", 0.0);
@@ -135,7 +134,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   capture.right.bytes = right.image.data;
   capture.left_exif = camera::exif_fields(left.exif);
   capture.right_exif = camera::exif_fields(right.exif);
-  capture.settings["preset"] = preset_name;
+  capture.settings["preset"] = preset.name;
   out.capture_id = store.save_capture(capture);
 
   // Reconstruct and register.
@@ -154,13 +153,13 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   }
   const storage::Model model =
       model_record(rec, out.capture_id,
-                   {left.image.saved_path, right.image.saved_path, preset_name,
+                   {left.image.saved_path, right.image.saved_path, preset.name,
                     sources.range_pole_m, sources.baseline_m, sources.north});
   out.model_id = store.save_model(model);
   std::optional<MorePairsOutcome> more;
   if (synthetic && synthetic->pairs.size() > 1) {
     more = replay_more_pairs(
-        store, {out.visit_id, calibration_id, &*synthetic, intrinsics, preset_name, preset, spool},
+        store, {out.visit_id, calibration_id, &*synthetic, intrinsics, preset.name, preset, spool},
         left_image, rec, progress);
     out.more_model_ids = more->model_ids;
     for (const auto& r : more->face.images)
@@ -254,7 +253,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
 
   progress.step("blocks", 0.8);
   storage::Report report = analyse_scene(analysed, progress);
-  const storage::AnalysisRun run = analysis_record(report, out.visit_id, out.model_id, preset_name);
+  const storage::AnalysisRun run = analysis_record(report, out.visit_id, out.model_id, chosen);
   out.analysis_id = store.save_analysis(run);
   out.report = std::move(report);
   progress.step("done", 1.0);

@@ -2,8 +2,10 @@
 // The field workflow, headless, through the mock camera (`rockface replay`):
 // capture (or load) the pair, reconstruct and register it, take the traces,
 // find and analyse the blocks, and store every step in the project file.
+#include <optional>
 #include <string>
 
+#include "core/common/preset.h"
 #include "core/common/progress.h"
 #include "storage/project_records.h"
 #include "storage/report.h"
@@ -11,9 +13,9 @@
 namespace rockface::app {
 
 struct ReplayRequest {
-  std::string source;   // a scene file (synthetic capture) or a folder of earlier captures
-  std::string project;  // *.rockface; created when missing
-  std::string preset;   // empty: the scene's analysis.preset, else "standard"
+  std::string source;            // a scene file (synthetic capture) or a folder of earlier captures
+  std::string project;           // *.rockface; created when missing
+  std::optional<Preset> preset;  // none: the scene's analysis.preset (standard for a folder)
 };
 
 struct ReplayOutcome {

@@ -32,8 +32,7 @@ cv::Mat decode(const storage::ImageBlob& blob, const std::string& where) {
 
 storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project,
                                                          storage::RecordId capture_id,
-                                                         const std::string& preset_name,
-                                                         Progress& progress) {
+                                                         Preset chosen, Progress& progress) {
   progress.step("reading the pair", 0.01);
   storage::ProjectStore store = storage::ProjectStore::open(project);
   const storage::Capture capture = store.load_capture(capture_id);
@@ -47,11 +46,11 @@ storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project
   photogrammetry::RegistrationSources sources;
   if (const auto it = capture.settings.find("range_pole_m"); it != capture.settings.end())
     sources.range_pole_m = std::stod(it->second);
-  const auto preset = photogrammetry::preset_by_name(preset_name, "preset");
+  const auto preset = photogrammetry::reconstruction_preset(chosen);
   const auto rec = photogrammetry::reconstruct(left, right, k, k, preset, sources, progress);
   progress.step("saving the model", 0.99);
   return store.save_model(model_record(rec, capture_id,
-                                       {where + " left", where + " right", preset_name,
+                                       {where + " left", where + " right", preset.name,
                                         sources.range_pole_m, sources.baseline_m, sources.north}));
 }
 

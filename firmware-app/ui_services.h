@@ -13,7 +13,7 @@ namespace rockface::app {
 class StoreReconstructionRunner final : public ui::ReconstructionRunner {
  public:
   storage::RecordId reconstruct(const std::filesystem::path& project, storage::RecordId capture_id,
-                                const std::string& preset, Progress& progress) override;
+                                Preset preset, Progress& progress) override;
 };
 
 class StoreAnalysisRunner final : public ui::AnalysisRunner {

@@ -19,6 +19,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
+#include "core/common/preset.h"
 #include "core/common/units.h"
 #include "core/measure/stereonet_image.h"
 #include "core/photogrammetry/preset.h"
@@ -155,8 +156,14 @@ LoadedModel load_stored_model(storage::ProjectStore& store, const MeasureOptions
   m.point_sigma = o.point_sigma.value_or(p.is_object() && p.contains("predicted_depth_sigma_mm")
                                              ? p["predicted_depth_sigma_mm"].get<double>() / 1000
                                              : 0.01);
-  const auto preset = photogrammetry::preset_by_name(
-      model.preset.empty() ? "standard" : model.preset, "model preset");
+  // A stored name is decoded like any other; an empty one (the column is NOT
+  // NULL and every writer names the preset, but a project written by another
+  // tool may leave it blank) keeps the behaviour the measure verb had since
+  // it came: the standard preset's window, since refusing would make a
+  // stored model unmeasurable for a label that only sizes a correlation length.
+  const auto preset = photogrammetry::reconstruction_preset(
+      model.preset.empty() ? Preset::standard
+                           : parse_preset(model.preset, "model " + std::to_string(id) + " preset"));
   m.correlation_length = m.mesh.median_edge_length() * preset.sgbm_block_size;
   return m;
 }

@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
+#include "core/common/preset.h"
 #include "core/photogrammetry/reconstruction.h"
 #include "core/photogrammetry/reference_line.h"
 #include "firmware-app/atomic_file.h"
@@ -61,7 +62,7 @@ photogrammetry::NorthReference parse_north(const ReconstructOptions& o) {
 
 int run(const ReconstructOptions& o) {
   // Check every argument before the long work starts.
-  const auto preset = photogrammetry::preset_by_name(o.preset);
+  const auto preset = photogrammetry::reconstruction_preset(parse_preset(o.preset, "--preset"));
   const std::string ext = std::filesystem::path(o.out).extension().string();
   if (ext != ".ply" && ext != ".obj")
     throw InputError("--out", "the model file must end in .ply or .obj, not '" + ext + "'");

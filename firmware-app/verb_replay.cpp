@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "core/common/preset.h"
 #include "firmware-app/field_replay.h"
 #include "firmware-app/verb_registry.h"
 
@@ -23,14 +24,16 @@ class StderrProgress final : public Progress {
 
 VerbRun setup_replay(CLI::App& sub) {
   auto req = std::make_shared<ReplayRequest>();
+  auto preset = std::make_shared<std::string>();
   sub.add_option("SOURCE", req->source,
                  "a scene with an imaging section, or a folder of captures with camera.json")
       ->required();
   sub.add_option("--project", req->project, "project file (*.rockface); created when missing")
       ->required();
-  sub.add_option("--preset", req->preset,
-                 "fast | standard | precise (default: the scene's analysis.preset)");
-  return [req] {
+  CLI::Option* preset_option = sub.add_option(
+      "--preset", *preset, "fast | standard | precise (default: the scene's analysis.preset)");
+  return [req, preset, preset_option] {
+    if (preset_option->count() > 0) req->preset = parse_preset(*preset, "--preset");
     StderrProgress progress;
     const ReplayOutcome out = replay_field_workflow(*req, progress);
     std::cout << "project " << req->project << ": visit " << out.visit_id << ", capture "

@@ -24,8 +24,10 @@ class Reader {
   explicit Reader(std::string source) : source_(std::move(source)) {}
 
   [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
-    throw InputError(source_ + ": " + path, reason);
+    throw InputError(where(path), reason);
   }
+  // How a rejection names the field: the file, then the field path.
+  std::string where(const std::string& path) const { return source_ + ": " + path; }
 
   const nlohmann::json& require(const nlohmann::json& obj, const std::string& path,
                                 const char* key) const {

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "core/common/preset.h"
 #include "storage/picks.h"
 
 namespace rockface::storage {
@@ -69,7 +70,7 @@ struct SceneAnalysis {
   bool rotation = true;
   std::optional<SceneRemoteAxis> remote_axis;
   std::string stability = "limit_equilibrium";  // or "equilibrium_path"
-  std::string preset = "standard";              // fast | standard | precise
+  Preset preset = Preset::standard;             // analysis.preset; missing: standard
   // Added fields (documented in docs/scene-extensions.md):
   double orientation_uncertainty_deg = 1.0;  // verdicts inside it are marginal
   std::optional<double> reference_mass;      // kg, scales `forces` for pyramids

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/common/preset.h"
 #include "storage/json_reader.h"
 #include "storage/picks.h"
 #include "storage/scene.h"
@@ -170,9 +171,7 @@ SceneAnalysis read_analysis(const Reader& r, const json& doc) {
              "\"" + a.stability + "\" is not limit_equilibrium, equilibrium_path or none");
   }
   if (auto* v = r.optional(*an, p, "preset")) {
-    a.preset = r.string(*v, p + ".preset");
-    if (a.preset != "fast" && a.preset != "standard" && a.preset != "precise")
-      r.fail(p + ".preset", "\"" + a.preset + "\" is not fast, standard or precise");
+    a.preset = parse_preset(r.string(*v, p + ".preset"), r.where(p + ".preset"));
   }
   if (auto* v = r.optional(*an, p, "orientation_uncertainty_deg"))
     a.orientation_uncertainty_deg = r.number_in(*v, p + ".orientation_uncertainty_deg", 0, 45);

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "camera/camera.h"
+#include "core/common/preset.h"
 #include "core/common/progress.h"
 #include "storage/project_records.h"
 
@@ -20,10 +21,10 @@ namespace rockface::ui {
 class ReconstructionRunner {
  public:
   virtual ~ReconstructionRunner() = default;
-  // A textured, registered model of a stored capture. preset: fast |
-  // standard | precise. Returns the model's id.
+  // A textured, registered model of a stored capture at `preset`. Returns
+  // the model's id.
   virtual storage::RecordId reconstruct(const std::filesystem::path& project,
-                                        storage::RecordId capture_id, const std::string& preset,
+                                        storage::RecordId capture_id, Preset preset,
                                         Progress& progress) = 0;
 };
 

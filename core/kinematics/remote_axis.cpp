@@ -189,10 +189,16 @@ double remote_axis_penalty(const RotationInput& in, const Eigen::Vector3d& point
   return remote_axis_feasibility(in, point, direction).penalty;
 }
 
-int remote_axis_starts(std::string_view preset) {
-  if (preset == "fast") return 16;
-  if (preset == "precise") return 256;
-  return 64;
+int remote_axis_starts(Preset preset) {
+  switch (preset) {
+    case Preset::fast:
+      return 16;
+    case Preset::standard:
+      return 64;
+    case Preset::precise:
+      return 256;
+  }
+  return 64;  // not reached: every enumerator is handled above
 }
 
 RemoteAxisResult search_remote_axis(const RotationInput& in, const RemoteAxisOptions& options) {

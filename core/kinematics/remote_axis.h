@@ -37,10 +37,10 @@
 // centroid), each minimised by Eigen's Levenberg-Marquardt on the residuals
 // r = 2 sin(delta / 2) (so that the objective is r.r / 2). A start hits when
 // it ends with every violation below kRemoteAxisHitRad.
-#include <string_view>
 
 #include <Eigen/Core>
 
+#include "core/common/preset.h"
 #include "core/kinematics/rotation_input.h"
 
 namespace rockface::kinematics {
@@ -58,8 +58,8 @@ struct RemoteAxisOptions {
 
 // Starts of the named preset (docs/accuracy-cost.md, remote-axis table):
 // fast 16, standard 64, precise 256. The search costs ~0.35 ms per start;
-// more starts buy confidence in a "no axis" answer. Unknown names: standard.
-int remote_axis_starts(std::string_view preset);
+// more starts buy confidence in a "no axis" answer.
+int remote_axis_starts(Preset preset);
 
 struct RemoteAxisResult {
   bool found = false;  // some start reached a feasible axis

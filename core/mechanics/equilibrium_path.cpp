@@ -26,17 +26,21 @@ const char* outcome_name(PathOutcome o) {
   return "?";
 }
 
-MechanicsOptions mechanics_preset(const std::string& preset) {
+MechanicsOptions mechanics_options(Preset preset) {
   MechanicsOptions o;
-  if (preset == "fast") {
-    o.contact_density = 2;
-    o.step = 0.1;
-  } else if (preset == "precise") {
-    o.contact_density = 6;
-    o.step = 0.02;
-  } else {
-    o.contact_density = 3;
-    o.step = 0.05;
+  switch (preset) {
+    case Preset::fast:
+      o.contact_density = 2;
+      o.step = 0.1;
+      break;
+    case Preset::standard:
+      o.contact_density = 3;
+      o.step = 0.05;
+      break;
+    case Preset::precise:
+      o.contact_density = 6;
+      o.step = 0.02;
+      break;
   }
   return o;
 }

@@ -32,6 +32,7 @@
 
 #include "core/blocks/mass_properties.h"
 #include "core/blocks/polyhedron.h"
+#include "core/common/preset.h"
 #include "core/common/progress.h"
 #include "core/kinematics/effect.h"
 #include "core/mechanics/joint_law.h"
@@ -48,8 +49,8 @@ struct MechanicsOptions {
   Progress* progress = nullptr;
 };
 
-// The named presets (DESIGN.md): contact density and continuation step.
-MechanicsOptions mechanics_preset(const std::string& preset);
+// The options of `preset` (DESIGN.md): contact density and continuation step.
+MechanicsOptions mechanics_options(Preset preset);
 
 struct PathPoint {
   double lambda = 0;

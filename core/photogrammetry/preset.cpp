@@ -1,7 +1,5 @@
 #include "core/photogrammetry/preset.h"
 
-#include "core/common/error.h"
-
 namespace rockface::photogrammetry {
 
 double working_scale(int width, int max_width) {
@@ -11,7 +9,7 @@ double working_scale(int width, int max_width) {
 
 ReconstructionPreset preset_fast() {
   ReconstructionPreset p;
-  p.name = "fast";
+  p.name = preset_name(Preset::fast);
   p.feature_max_width = 1600;
   p.max_features = 4000;
   p.refine_iterations = 50;
@@ -26,13 +24,13 @@ ReconstructionPreset preset_fast() {
 
 ReconstructionPreset preset_standard() {
   ReconstructionPreset p;
-  p.name = "standard";
+  p.name = preset_name(Preset::standard);
   return p;  // the defaults of the struct are the standard preset
 }
 
 ReconstructionPreset preset_precise() {
   ReconstructionPreset p;
-  p.name = "precise";
+  p.name = preset_name(Preset::precise);
   p.feature_max_width = 4000;
   p.max_features = 16000;
   p.ratio_test = 0.75;
@@ -45,11 +43,16 @@ ReconstructionPreset preset_precise() {
   return p;
 }
 
-ReconstructionPreset preset_by_name(std::string_view name, const std::string& where) {
-  if (name == "fast") return preset_fast();
-  if (name == "standard") return preset_standard();
-  if (name == "precise") return preset_precise();
-  throw InputError(where, "unknown preset '" + std::string(name) + "' (fast | standard | precise)");
+ReconstructionPreset reconstruction_preset(Preset preset) {
+  switch (preset) {
+    case Preset::fast:
+      return preset_fast();
+    case Preset::standard:
+      return preset_standard();
+    case Preset::precise:
+      return preset_precise();
+  }
+  return preset_standard();  // not reached: every enumerator is handled above
 }
 
 }  // namespace rockface::photogrammetry

@@ -3,7 +3,8 @@
 // into the named presets fast | standard | precise (DESIGN.md "Accuracy costs
 // time"). tools/bench/reconstruct_bench.cpp measures each of them.
 #include <string>
-#include <string_view>
+
+#include "core/common/preset.h"
 
 namespace rockface::photogrammetry {
 
@@ -52,7 +53,7 @@ ReconstructionPreset preset_fast();
 ReconstructionPreset preset_standard();
 ReconstructionPreset preset_precise();
 
-// Throws rockface::InputError naming `where` for an unknown name.
-ReconstructionPreset preset_by_name(std::string_view name, const std::string& where = "--preset");
+// The knobs of `preset` (its name decoded by rockface::parse_preset).
+ReconstructionPreset reconstruction_preset(Preset preset);
 
 }  // namespace rockface::photogrammetry

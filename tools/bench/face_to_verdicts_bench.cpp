@@ -47,6 +47,7 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
+#include "core/common/preset.h"
 #include "core/common/units.h"
 #include "core/faces/free_surface.h"
 #include "core/faces/surface_loops.h"
@@ -207,7 +208,7 @@ VerdictTimes verdict_stages_once(const std::vector<rockface::faces::PatchInput>&
 
   // As analyse_rotation.cpp: a block that firmly rotates about a corner or an
   // edge is not searched.
-  const int starts = rk::remote_axis_starts(preset);
+  const int starts = rk::remote_axis_starts(rockface::parse_preset(preset, "bench preset"));
   t0 = Clock::now();
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     bool has_axis = false;

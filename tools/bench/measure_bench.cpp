@@ -26,6 +26,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "camera/synthetic_renderer.h"
+#include "core/common/preset.h"
 #include "core/common/units.h"
 #include "core/measure/least_cost_trace.h"
 #include "core/measure/mesh_picker.h"
@@ -288,7 +289,8 @@ const Rendered& rendered_with_joints() {
 
 void BM_TracePlaneVsPreset(benchmark::State& state, const std::string& preset_name) {
   const Rendered& r = rendered_with_joints();
-  const rp::ReconstructionPreset preset = rp::preset_by_name(preset_name);
+  const rp::ReconstructionPreset preset =
+      rp::reconstruction_preset(rockface::parse_preset(preset_name, "bench preset"));
   rp::ReconstructionResult rec;
   for (auto _ : state) {
     rockface::NoProgress progress;

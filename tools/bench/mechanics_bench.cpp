@@ -18,6 +18,7 @@
 
 #include "core/blocks/construction.h"
 #include "core/blocks/mass_properties.h"
+#include "core/common/preset.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/effect_force.h"
 #include "core/kinematics/effect_gravity.h"
@@ -139,7 +140,8 @@ void BM_CoupleStep(benchmark::State& state) {
 void BM_Prism12Preset(benchmark::State& state) {
   const Case c = prism12_case();
   const char* names[] = {"fast", "standard", "precise"};
-  const mech::MechanicsOptions o = mech::mechanics_preset(names[state.range(0)]);
+  const mech::MechanicsOptions o =
+      mech::mechanics_options(rockface::parse_preset(names[state.range(0)], "bench preset"));
   mech::EquilibriumPath r;
   for (auto _ : state) r = run(c, o);
   state.SetLabel(names[state.range(0)]);

@@ -17,6 +17,7 @@
 #include <benchmark/benchmark.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/common/preset.h"
 #include "core/photogrammetry/dense_matching.h"
 #include "tests/integration_reconstruct/synthetic_truth.h"
 
@@ -51,7 +52,8 @@ const Rendered& rendered(int width) {
 void reconstruct_face(benchmark::State& state, const std::string& preset_name, int width,
                       int dense_max_width, int max_disparities) {
   const Rendered& r = rendered(width);
-  rp::ReconstructionPreset preset = rp::preset_by_name(preset_name);
+  rp::ReconstructionPreset preset =
+      rp::reconstruction_preset(rockface::parse_preset(preset_name, "bench preset"));
   if (dense_max_width > 0) preset.dense_max_width = dense_max_width;
   if (max_disparities > 0) preset.max_disparities = max_disparities;
   const auto sources = rockface::testing::pole_and_compass(r.scene, r.render, 4.0);
@@ -84,7 +86,8 @@ void middlebury(benchmark::State& state, const std::string& preset_name, const s
   double max_true = 0;
   cv::minMaxLoc(truth, nullptr, &max_true);
   const rp::DisparityRange range{0, ((static_cast<int>(max_true / 3.0) + 8 + 15) / 16) * 16};
-  const rp::ReconstructionPreset preset = rp::preset_by_name(preset_name);
+  const rp::ReconstructionPreset preset =
+      rp::reconstruction_preset(rockface::parse_preset(preset_name, "bench preset"));
   rp::DisparityMap map;
   for (auto _ : state) {
     rockface::NoProgress progress;

@@ -122,7 +122,7 @@ void store_and_reconstruct(AppState& app) {
         if (!calibrations.empty()) capture.calibration_id = calibrations.back().id;
         const storage::RecordId id = store.save_capture(capture);
         if (!runner) return "pair stored as capture " + std::to_string(id);
-        const storage::RecordId model = runner->reconstruct(file, id, "fast", progress);
+        const storage::RecordId model = runner->reconstruct(file, id, Preset::fast, progress);
         return "pair stored, model " + std::to_string(model) + " saved";
       },
       [&app](const TaskOutcome&) {

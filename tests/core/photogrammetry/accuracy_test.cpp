@@ -47,14 +47,16 @@ TEST(Accuracy, WarnsAboutTheCapture) {
 }
 
 TEST(Presets, KnobsGrowFromFastToPrecise) {
-  const auto f = rp::preset_by_name("fast"), s = rp::preset_by_name("standard"),
-             p = rp::preset_by_name("precise");
+  const auto f = rp::reconstruction_preset(rockface::Preset::fast),
+             s = rp::reconstruction_preset(rockface::Preset::standard),
+             p = rp::reconstruction_preset(rockface::Preset::precise);
   EXPECT_LT(f.dense_max_width, s.dense_max_width);
   EXPECT_LT(s.dense_max_width, p.dense_max_width);
   EXPECT_LT(f.max_features, s.max_features);
   EXPECT_LE(s.max_disparities, p.max_disparities);
   EXPECT_EQ(s.name, "standard");
-  EXPECT_THROW(rp::preset_by_name("best"), rockface::InputError);
+  EXPECT_THROW(rp::reconstruction_preset(rockface::parse_preset("best", "--preset")),
+               rockface::InputError);
   EXPECT_DOUBLE_EQ(rp::working_scale(6000, 1500), 0.25);
   EXPECT_DOUBLE_EQ(rp::working_scale(1200, 1600), 1.0);
   EXPECT_DOUBLE_EQ(rp::working_scale(6000, 0), 1.0);

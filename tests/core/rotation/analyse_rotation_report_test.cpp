@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
+#include "core/common/preset.h"
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"
 #include "core/kinematics/rotation_tolerances.h"
@@ -117,7 +118,7 @@ TEST(AnalyseRotationReport, StartsFollowThePresetUnlessTheSceneGivesThem) {
        std::vector<std::pair<std::string, int>>{{"fast", 16}, {"standard", 64}, {"precise", 256}}) {
     storage::SceneAnalysis options;
     options.rotation = false;
-    options.preset = preset;
+    options.preset = rockface::parse_preset(preset, "preset");
     options.remote_axis = storage::SceneRemoteAxis{};
     storage::ReportBlock out;
     analyse_block_rotation(block, options, out);
@@ -131,7 +132,7 @@ TEST(AnalyseRotationReport, StartsFollowThePresetUnlessTheSceneGivesThem) {
   }
   storage::SceneAnalysis options;
   options.rotation = false;
-  options.preset = "precise";
+  options.preset = rockface::Preset::precise;
   options.remote_axis = storage::SceneRemoteAxis{8, 1};  // the scene's own count wins
   storage::ReportBlock out;
   analyse_block_rotation(block, options, out);
