@@ -9,7 +9,7 @@
 
 #include "core/common/error.h"
 #include "storage/json_reader.h"
-#include "storage/picks.h"
+#include "storage/picks_json.h"
 #include "storage/scene.h"
 
 namespace rockface::storage {
