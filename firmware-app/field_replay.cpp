@@ -12,9 +12,11 @@
 #include "camera/synthetic_renderer.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
+#include "core/measure/pair_photo.h"
 #include "core/photogrammetry/preset.h"
 #include "core/photogrammetry/reconstruction.h"
 #include "firmware-app/field_records.h"
+#include "firmware-app/measure/measure_records.h"
 #include "firmware-app/replay_capture.h"
 #include "firmware-app/replay_more_pairs.h"
 #include "firmware-app/replay_picks.h"
@@ -216,8 +218,8 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     std::map<std::string, PairRecords> further;
     if (more)
       for (std::size_t k = 0; k < more->model_ids.size(); ++k)
-        further[pair_photo(static_cast<int>(k) + 2, "left")] = {more->model_ids[k],
-                                                                more->capture_ids[k]};
+        further[measure::pair_photo(static_cast<int>(k) + 2, "left")] = {more->model_ids[k],
+                                                                         more->capture_ids[k]};
     measurements = measurement_records(picked->measured, out.visit_id,
                                        {out.model_id, out.capture_id}, further);
     join_trace_records(picked->joined, measurements);

@@ -6,7 +6,9 @@
 
 #include "core/common/error.h"
 #include "core/common/units.h"
+#include "core/measure/joined_traces.h"
 #include "core/measure/mesh_picker.h"
+#include "core/measure/pair_photo.h"
 
 namespace rockface::app {
 
@@ -37,7 +39,7 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
                                  const MorePairsOutcome* more) {
   check_pick_pairs(scene, more ? more->images.size() : 1);
   const measure::MeshPicker picker(rec.mesh);
-  MeasureContext c;
+  measure::MeasureContext c;
   c.picker = &picker;
   c.views.emplace("left", measure::left_view(rec.model_to_world, intrinsics));
   c.views.emplace("right", measure::right_view(rec.model_to_world, rec.orientation.R,
@@ -53,7 +55,7 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
 
   // A further pair's taps: its left photograph, its 3D image moved into the
   // face frame (the first pair's), so every measurement lands in that frame.
-  const storage::Picks picks = picks_by_pair_photo(*scene.picks);
+  const measure::Picks picks = measure::picks_by_pair_photo(*scene.picks);
   std::deque<photogrammetry::SurfaceMesh> face_meshes;  // the pickers refer to them
   std::deque<measure::MeshPicker> further_pickers;
   std::set<int> pairs;
@@ -62,7 +64,7 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
   for (const auto& p : picks.points) pairs.insert(p.pair);
   for (const int pair : pairs) {
     if (pair == 1) continue;
-    const std::string photo = pair_photo(pair, "left");
+    const std::string photo = measure::pair_photo(pair, "left");
     const std::size_t k = static_cast<std::size_t>(pair - 1);
     const photogrammetry::Similarity& to_face = more->face.images[k].to_face;
     face_meshes.push_back(more->images[k].mesh);
@@ -76,7 +78,7 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
   }
 
   ReplayPicks out;
-  out.measured = measure_picks(picks, c, scene.picks->sets);
+  out.measured = measure::measure_picks(picks, c, scene.picks->sets);
 
   // Pieces of one trace in different pairs' photographs become one trace.
   if (more) {
@@ -85,12 +87,12 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
       if (t.pixels.empty() || t.photo == "right") continue;
       pieces.push_back({t.id, t.joint, t.pair - 1, t.pixels});
     }
-    out.joined =
-        joined_traces(photogrammetry::traces_in_face_frame(more->images, more->face, pieces),
-                      out.measured, c.settings);
-    for (const auto& j : out.joined) out.notes.push_back(joined_note(j));
+    out.joined = measure::joined_traces(
+        photogrammetry::traces_in_face_frame(more->images, more->face, pieces), out.measured,
+        c.settings);
+    for (const auto& j : out.joined) out.notes.push_back(measure::joined_note(j));
   }
-  std::map<std::string, const JoinedTrace*> joined_by_piece;
+  std::map<std::string, const measure::JoinedTrace*> joined_by_piece;
   for (const auto& j : out.joined)
     for (const auto& id : j.face.pieces) joined_by_piece[id] = &j;
 
@@ -101,8 +103,8 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
   // few vertices, not the hundreds of noisy samples the plane was fitted to.
   // A joined trace once, as its first piece, with the points of all pieces.
   for (std::size_t i = 0; i < out.measured.traces.size(); ++i) {
-    const MeasuredTrace& t = out.measured.traces[i];
-    const storage::TracePick& pick = picks.traces[i];
+    const measure::MeasuredTrace& t = out.measured.traces[i];
+    const measure::TracePick& pick = picks.traces[i];
     storage::SceneTrace st;
     st.id = t.m.id;
     if (!t.joint.empty()) st.joint = t.joint;
@@ -121,7 +123,7 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
     }
     out.analysed.traces.push_back(std::move(st));
   }
-  for (const MeasuredJoint& j : out.measured.joints) {
+  for (const measure::MeasuredJoint& j : out.measured.joints) {
     for (auto& sj : out.analysed.joints) {
       if (sj.id != j.label) continue;
       if (!j.plane.known) {

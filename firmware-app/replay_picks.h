@@ -8,10 +8,10 @@
 
 #include <opencv2/core.hpp>
 
+#include "core/measure/pick_measurement.h"
 #include "core/photogrammetry/face_traces.h"
 #include "core/photogrammetry/preset.h"
 #include "core/photogrammetry/reconstruction.h"
-#include "firmware-app/measure_picks.h"
 #include "firmware-app/replay_more_pairs.h"
 #include "storage/project_records.h"
 #include "storage/scene.h"
@@ -19,8 +19,8 @@
 namespace rockface::app {
 
 struct ReplayPicks {
-  MeasuredPicks measured;           // each pick, on its own pair's 3D image in the face frame
-  std::vector<JoinedTrace> joined;  // pieces tapped in different pairs' photographs
+  measure::MeasuredPicks measured;  // each pick, on its own pair's 3D image in the face frame
+  std::vector<measure::JoinedTrace> joined;  // pieces tapped in different pairs' photographs
   // The scene to analyse: its traces are the measured ones (the picks lifted
   // onto the 3D image), each joint that has traces gets their common plane.
   storage::Scene analysed;

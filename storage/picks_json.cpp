@@ -1,13 +1,19 @@
-// Parser of the picks (storage/picks.h, docs/scene-extensions.md).
+// Parser of the picks (core/measure/picks.h, docs/scene-extensions.md).
+#include "storage/picks_json.h"
+
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "core/common/error.h"
 #include "storage/json_reader.h"
-#include "storage/picks.h"
 
 namespace rockface::storage {
+
+using measure::AreaPick;
+using measure::Picks;
+using measure::PointPick;
+using measure::TracePick;
 
 namespace {
 

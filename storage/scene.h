@@ -15,7 +15,7 @@
 #include <Eigen/Core>
 
 #include "core/common/preset.h"
-#include "storage/picks.h"
+#include "core/measure/picks.h"
 
 namespace rockface::storage {
 
@@ -176,7 +176,7 @@ struct Scene {
   std::optional<SceneImaging> imaging;
   // Picks on the reconstructed image (docs/scene-extensions.md): the replay
   // measures its traces from them instead of taking the synthetic truth.
-  std::optional<Picks> picks;
+  std::optional<measure::Picks> picks;
 
   const SceneJoint* joint(const std::string& id) const;
   const SceneFreeFace* free_face(const std::string& id) const;

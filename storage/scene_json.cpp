@@ -10,7 +10,7 @@
 #include "core/common/error.h"
 #include "core/common/preset.h"
 #include "storage/json_reader.h"
-#include "storage/picks.h"
+#include "storage/picks_json.h"
 #include "storage/scene.h"
 
 namespace rockface::storage {

@@ -30,7 +30,7 @@
 #include "core/photogrammetry/reference_line.h"
 #include "core/photogrammetry/registration.h"
 #include "storage/camera_json.h"
-#include "storage/picks.h"
+#include "storage/picks_json.h"
 #include "storage/ply_reader.h"
 #include "storage/project_store.h"
 #include "storage/scene.h"

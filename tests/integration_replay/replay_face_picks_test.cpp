@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
-#include "storage/picks.h"
+#include "storage/picks_json.h"
 #include "storage/project_store.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/plane_angle.h"

@@ -1,5 +1,5 @@
 // Pieces of one trace measured on two pairs' 3D images, joined into one
-// trace (firmware-app/measure_picks.h): its length over both, and its
+// trace (core/measure/joined_traces.h): its length over both, and its
 // censoring from its own ends, not from where one piece hands over to the
 // next at the edge of its photograph.
 #include <array>
@@ -7,10 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include "core/measure/joined_traces.h"
+#include "core/measure/pair_photo.h"
 #include "core/photogrammetry/trace_pieces.h"
-#include "firmware-app/measure_picks.h"
 
-namespace rockface::app {
+namespace rockface::measure {
 namespace {
 
 using Eigen::Vector3d;
@@ -69,4 +70,4 @@ TEST(JoinedTraces, PiecesInOnePhotographStayApart) {
 }
 
 }  // namespace
-}  // namespace rockface::app
+}  // namespace rockface::measure

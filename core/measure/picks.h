@@ -3,16 +3,14 @@
 // PICKS.json`, and a scene's `picks` for `rockface replay`): traces as taps
 // in a photograph, as 3D points, or as two end pixels to trace between;
 // areas as polygons; points. Format rockface-picks/1, described in
-// docs/scene-extensions.md.
+// docs/scene-extensions.md, read by storage/picks_json.h.
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
-#include <nlohmann/json.hpp>
-
-namespace rockface::storage {
+namespace rockface::measure {
 
 struct TracePick {
   std::string id;
@@ -56,16 +54,4 @@ struct Picks {
   std::optional<int> sets;  // joint sets wanted; none or 0: automatic
 };
 
-// Reads the picks object at `path` of a document ("" for a PICKS file, whose
-// `format` must be rockface-picks/1; "picks" inside a scene). Every rejection
-// is an InputError naming `source`, the field path and the reason: ids
-// unique over traces, areas and points; photo "left" or "right"; pair a
-// count from 1, a further pair's photograph its left one; a trace with at
-// least two distinct picks; finite numbers.
-Picks read_picks(const nlohmann::json& object, const std::string& source, const std::string& path);
-
-// PICKS text (`source` names it in messages), and a PICKS file.
-Picks parse_picks(const std::string& text, const std::string& source);
-Picks load_picks(const std::string& file);
-
-}  // namespace rockface::storage
+}  // namespace rockface::measure

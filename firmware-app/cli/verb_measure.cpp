@@ -1,0 +1,97 @@
+// `rockface measure MODEL.ply|PROJECT --traces PICKS.json --out MEASURES.json
+//  [--png STEREONET.png] [--csv DIPS.csv] [--sets N|auto] [--visit N | --model ID]`
+//
+// Measures the picks on a 3D image: a model file (with the camera it was
+// reconstructed with) or a project's visit, each pick on the 3D image of its
+// pair (core/measure/picks.h `pair`), all in the face frame (the first pair's). Everything
+// is measured before anything is written: a bad pick stops the verb (exit 2)
+// naming it, with nothing stored and no output file
+// (firmware-app/measure/measure_workflow.h).
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/measure/joined_traces.h"
+#include "firmware-app/measure/measure_workflow.h"
+#include "firmware-app/verb_registry.h"
+
+namespace rockface::app {
+namespace {
+
+struct MeasureOptions {
+  MeasureRequest request;
+  std::string sets;  // a count or "auto"; empty: the picks'
+};
+
+// --sets: a count in [1, 12], or "auto".
+void parse_sets(const std::string& text, MeasureRequest& request) {
+  request.automatic_sets = text == "auto";
+  if (text.empty() || text == "auto") return;
+  try {
+    std::size_t used = 0;
+    request.sets = std::stoi(text, &used);
+    if (used != text.size()) throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    throw InputError("--sets", "\"" + text + "\" is not a count or \"auto\"");
+  }
+  if (*request.sets < 1 || *request.sets > 12)
+    throw InputError("--sets", text + " is outside [1, 12]");
+}
+
+int run(MeasureOptions& o) {
+  parse_sets(o.sets, o.request);
+  const std::string project = o.request.on.source;
+  o.request.stored = [&](storage::RecordId visit) {
+    std::cout << "stored in " << project << ", visit " << visit << "\n";
+  };
+  const measure::MeasuredPicks measured = measure_picks_file(o.request).measured;
+  std::size_t known = 0;
+  for (const auto& t : measured.traces) known += t.m.plane.known ? 1 : 0;
+  std::cout << measured.traces.size() << " traces (" << known << " with a known plane), "
+            << measured.areas.size() << " areas, " << measured.points.size() << " points; "
+            << measured.sets.size() << " joint sets\n";
+  for (const auto& j : measured.joined) std::cout << measure::joined_note(j) << "\n";
+  for (const auto& s : measured.sets) {
+    const auto pl = s.fisher.plane();
+    std::printf("set %s: %zu planes, mean %.1f/%.1f, K %.1f, alpha95 %.1f deg\n", s.label.c_str(),
+                s.fisher.count, rad_to_deg(pl.dip), rad_to_deg(pl.dipdir), s.fisher.kappa,
+                rad_to_deg(s.fisher.alpha95));
+  }
+  return 0;
+}
+
+VerbRun setup_measure(CLI::App& sub) {
+  auto o = std::make_shared<MeasureOptions>();
+  MeasureRequest& r = o->request;
+  sub.add_option("MODEL", r.on.source,
+                 "a model file (MODEL.ply of `rockface reconstruct`) or a project (*.rockface)")
+      ->required();
+  sub.add_option("--traces", r.picks, "the picks (rockface-picks/1, docs/scene-extensions.md)")
+      ->required();
+  sub.add_option("--out", r.out, "the measurements (rockface-measures/1)")->required();
+  sub.add_option("--png", r.png, "stereonet picture (lower hemisphere, equal area)");
+  sub.add_option("--csv", r.csv, "Dips-style CSV of the measured planes");
+  sub.add_option("--sets", o->sets,
+                 "number of joint sets, or auto (default: the picks', else auto)");
+  sub.add_option("--visit", r.on.visit,
+                 "project: the visit whose 3D images (one per pair; picks name theirs with "
+                 "\"pair\") are measured on (default: the newest visit with a model)");
+  sub.add_option("--model", r.on.model, "project: measure on this one model instead (pair 1 only)");
+  sub.add_option("--camera", r.on.camera, "model file: the camera it was reconstructed with");
+  sub.add_option("--photo", r.on.photo,
+                 "model file: the left photograph (default: the model's TextureFile)");
+  sub.add_option("--point-sigma", r.on.point_sigma,
+                 "precision of a picked point, m (default: the reconstruction's sigma_Z)");
+  sub.add_option("--friction", r.friction_deg,
+                 "friction angle for the stereonet's sliding overlay, degrees (default 30)");
+  return [o] { return run(*o); };
+}
+
+const VerbRegistrar reg{"measure", "measure traces, areas and points picked on a 3D image",
+                        setup_measure};
+
+}  // namespace
+}  // namespace rockface::app

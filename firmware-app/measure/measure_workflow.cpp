@@ -1,0 +1,166 @@
+#include "firmware-app/measure/measure_workflow.h"
+
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/measure/pair_photo.h"
+#include "core/measure/stereonet_image.h"
+#include "firmware-app/atomic_file.h"
+#include "firmware-app/measure/measure_records.h"
+#include "firmware-app/measure/measures_json.h"
+#include "storage/export_joints_csv.h"
+#include "storage/picks_json.h"
+#include "storage/project_store.h"
+
+namespace rockface::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every pick names a pair the 3D images have.
+void check_pairs(const measure::Picks& picks, const MeasureRequest& r, const ProjectPairs& pairs) {
+  const std::size_t n = pairs.models.size();
+  auto check = [&](const std::string& where, int pair) {
+    if (static_cast<std::size_t>(pair) <= n) return;
+    throw InputError(
+        r.picks + ": " + where + ".pair",
+        "pair " + std::to_string(pair) + ", but " + pairs.what + " of " + r.on.source + " has " +
+            std::to_string(n) + (n == 1 ? " pair" : " pairs") +
+            (r.on.model ? " (--model measures one 3D image; --visit measures a visit's "
+                          "pairs)"
+                        : ""));
+  };
+  for (const auto& t : picks.traces) check(t.where, t.pair);
+  for (const auto& a : picks.areas) check(a.where, a.pair);
+  for (const auto& p : picks.points) check(p.where, p.pair);
+}
+
+cv::Mat stereonet(const measure::MeasuredPicks& r, const std::string& title, double friction_deg) {
+  measure::StereonetPicture pic;
+  pic.title = title;
+  for (std::size_t k = 0; k < r.poles.size(); ++k) {
+    pic.poles.push_back(r.pole_plane(k).fit.normal);
+    pic.pole_sets.push_back(r.clusters.set_of.empty() ? -1 : r.clusters.set_of[k]);
+  }
+  for (const auto& s : r.sets)
+    pic.sets.push_back({s.label, s.fisher.plane(), s.fisher.alpha95 < M_PI ? s.fisher.alpha95 : 0});
+  for (const auto& a : r.areas)
+    if (!a.rock_side.empty() && a.m.plane.known) {
+      pic.faces.push_back({a.m.id, a.m.plane.orientation});
+      if (!pic.kinematics)
+        pic.kinematics = measure::KinematicOverlay{a.m.plane.orientation, deg_to_rad(friction_deg)};
+    }
+  return measure::render_stereonet(pic);
+}
+
+}  // namespace
+
+MeasureOutcome measure_picks_file(const MeasureRequest& r) {
+  if (!fs::exists(r.on.source)) throw InputError(r.on.source, "no such file");
+  const measure::Picks picks = storage::load_picks(r.picks);
+  std::optional<int> sets = r.sets;
+  if (!sets) sets = r.automatic_sets ? std::nullopt : picks.sets;
+
+  const bool ply = fs::path(r.on.source).extension() == ".ply";
+  std::optional<storage::ProjectStore> store;
+  LoadedModel model;                 // pair 1: its mesh frame is the face frame
+  std::vector<LoadedModel> further;  // the further pairs the picks use (pair 2, 3, ...)
+  std::string on;                    // what was measured on, for the visit's note
+  if (ply) {
+    // A model file is one 3D image: pair 1 only.
+    check_pairs(picks, r, {{0}, "the model file"});
+    model = load_ply_model(r.on);
+  } else {
+    store.emplace(storage::ProjectStore::open(r.on.source));
+    if (store->read_only())
+      throw InputError(r.on.source,
+                       "cannot store measurements in it: " + store->read_only_reason());
+    const ProjectPairs pairs = project_pairs(*store, r.on);
+    check_pairs(picks, r, pairs);
+    std::set<int> used;
+    for (const auto& t : picks.traces) used.insert(t.pair);
+    for (const auto& a : picks.areas) used.insert(a.pair);
+    for (const auto& p : picks.points) used.insert(p.pair);
+    model = load_stored_model(*store, r.on, pairs.models[0], 1);
+    on = pairs.what + ": model " + std::to_string(pairs.models[0]);
+    for (const int pair : used)
+      if (pair > 1) {
+        further.push_back(load_stored_model(*store, r.on, pairs.models[pair - 1], pair));
+        on += ", model " + std::to_string(pairs.models[pair - 1]) + " (pair " +
+              std::to_string(pair) + ")";
+      }
+  }
+  const measure::MeshPicker picker(model.mesh);
+  std::deque<measure::MeshPicker> further_pickers;  // the context refers to them
+  measure::MeasureContext context;
+  context.picker = &picker;
+  context.views = model.views;
+  context.photos = model.photos;
+  for (const auto& f : further) {
+    further_pickers.emplace_back(f.mesh);
+    for (const auto& [name, view] : f.views) {
+      context.views.emplace(name, view);
+      context.pickers[name] = &further_pickers.back();
+    }
+    for (const auto& [name, photo] : f.photos) context.photos[name] = photo;
+  }
+  context.settings.point_sigma = model.point_sigma;
+  context.settings.correlation_length = model.correlation_length;
+  context.datum = model.datum;
+  context.source = r.picks;
+  MeasureOutcome outcome;
+  outcome.measured = measure::measure_picks(measure::picks_by_pair_photo(picks), context, sets);
+  const measure::MeasuredPicks& measured = outcome.measured;
+
+  // Everything measured: now the store (one visit, each save one
+  // transaction) and the outputs.
+  // Pieces of one joint trace measured on different pairs are one trace
+  // (joined by measure_picks, as the replay joins them).
+  const std::vector<measure::JoinedTrace>& joined = measured.joined;
+  std::vector<storage::Joint> joints = joint_records(measured, 0);
+  join_trace_joints(joined, joints);
+  if (store) {
+    const storage::RecordId visit =
+        store->begin_visit("measure " + r.picks, "picks measured on " + on);
+    std::map<std::string, PairRecords> further_records;
+    for (const auto& f : further)
+      for (const auto& [name, view] : f.views) further_records[name] = {f.model_id, f.capture_id};
+    auto records =
+        measurement_records(measured, visit, {model.model_id, model.capture_id}, further_records);
+    join_trace_records(joined, records);
+    const auto ids = store->save_measurements(visit, records);
+    for (auto& j : joints) {
+      j.visit_id = visit;
+      for (std::size_t k = 0; k < records.size(); ++k)
+        if (records[k].label == j.label) j.measurement_id = ids[k];
+    }
+    store->save_joints(visit, joint_set_records(measured), joints);
+    outcome.visit = visit;
+    if (r.stored) r.stored(visit);
+  }
+  const cv::Mat png =
+      r.png.empty() ? cv::Mat()
+                    : stereonet(measured, fs::path(r.picks).filename().string(), r.friction_deg);
+  std::map<std::string, std::string> further_models;
+  for (const auto& f : further)
+    for (const auto& [name, view] : f.views) further_models[name] = f.name;
+  write_atomically(r.out, measures_json(measured, context, model.name, further_models));
+  if (!png.empty() && !cv::imwrite(r.png, png)) throw Error(r.png + ": cannot write the picture");
+  if (!r.csv.empty()) {
+    std::ostringstream csv;
+    storage::write_joints_csv(csv, joints, model.datum);
+    write_atomically(r.csv, csv.str());
+  }
+  return outcome;
+}
+
+}  // namespace rockface::app
