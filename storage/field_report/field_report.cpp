@@ -124,7 +124,7 @@ void joints_and_sets(ProjectStore& store, FieldReport& r) {
   for (const auto& j : store.list_joints(r.visit_id)) {
     r.joints.push_back(
         {j.label, j.set_label, j.source, j.dip_deg, j.dipdir_deg, j.friction_deg, j.cohesion_pa});
-    r.poles.push_back(geometry::plane_normal({deg_to_rad(j.dip_deg), deg_to_rad(j.dipdir_deg)}));
+    r.poles.push_back(geometry::plane_normal_deg(j.dip_deg, j.dipdir_deg));
   }
   r.pole_sets.assign(r.poles.size(), -1);
   const auto stored = store.list_joint_sets(r.visit_id);
@@ -144,8 +144,7 @@ void joints_and_sets(ProjectStore& store, FieldReport& r) {
   std::vector<Eigen::Vector3d> measured;
   for (const auto& m : store.list_measurements(r.visit_id))
     if (m.dip_deg && m.dipdir_deg)
-      measured.push_back(
-          geometry::plane_normal({deg_to_rad(*m.dip_deg), deg_to_rad(*m.dipdir_deg)}));
+      measured.push_back(geometry::plane_normal_deg(*m.dip_deg, *m.dipdir_deg));
   const bool from_measured = measured.size() >= 2;
   if (from_measured) r.poles = measured;
   if (r.poles.size() < 2) return;

@@ -43,8 +43,7 @@ const Fixture& fixture() {
     Fixture f;
     f.scene = rockface::testing::synthetic_face();
     for (const auto& j : kJoints)
-      f.scene.joints.push_back(
-          {j.id, rg::plane_normal({deg_to_rad(j.dip), deg_to_rad(j.dipdir)}), j.point});
+      f.scene.joints.push_back({j.id, rg::plane_normal_deg(j.dip, j.dipdir), j.point});
     rockface::NoProgress progress;
     f.render = rockface::camera::render_scene(f.scene, progress);
     f.rec = rp::reconstruct(f.render.images[0], f.render.images[1], f.render.intrinsics,

@@ -30,7 +30,7 @@ inline camera::SyntheticScene multi_image_face(double x_offset) {
     st.look_at.x() += x_offset;
   }
   const auto normal = [](double dip, double dipdir) {
-    return geometry::plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)});
+    return geometry::plane_normal_deg(dip, dipdir);
   };
   s.joints.push_back({"J1", normal(8, 180), {0.0, 10.0, 1.6}});
   s.joints.push_back({"J2", normal(80, 100), {-2.0, 10.0, 0.0}});

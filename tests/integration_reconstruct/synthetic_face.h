@@ -27,7 +27,7 @@ inline const std::array<FacetTruth, 3>& synthetic_facets() {
 }
 
 inline Eigen::Vector3d facet_normal(const FacetTruth& f) {
-  return geometry::plane_normal({deg_to_rad(f.dip_deg), deg_to_rad(f.dipdir_deg)});
+  return geometry::plane_normal_deg(f.dip_deg, f.dipdir_deg);
 }
 
 // All facets pass through the line y = 10, z = 0.5 at their x-centre.

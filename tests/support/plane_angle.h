@@ -13,7 +13,7 @@
 namespace rockface::test {
 
 inline Eigen::Vector3d pole_of(double dip_deg, double dipdir_deg) {
-  return geometry::plane_normal({deg_to_rad(dip_deg), deg_to_rad(dipdir_deg)});
+  return geometry::plane_normal_deg(dip_deg, dipdir_deg);
 }
 
 inline double plane_angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {

@@ -221,9 +221,8 @@ BENCHMARK(BM_LeastCostTrace)
 void BM_PlaneFitVsPoints(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const double sigma = 0.007;
-  const Eigen::Vector3d joint = rg::plane_normal({deg_to_rad(55), deg_to_rad(120)});
-  const Eigen::Vector3d facet[2] = {rg::plane_normal({deg_to_rad(80), deg_to_rad(160)}),
-                                    rg::plane_normal({deg_to_rad(80), deg_to_rad(200)})};
+  const Eigen::Vector3d joint = rg::plane_normal_deg(55, 120);
+  const Eigen::Vector3d facet[2] = {rg::plane_normal_deg(80, 160), rg::plane_normal_deg(80, 200)};
   // The trace on each facet: the line joint x facet through the fold point.
   std::vector<Eigen::Vector3d> dir(2);
   for (int k = 0; k < 2; ++k) {
@@ -279,8 +278,7 @@ const Rendered& rendered_with_joints() {
   static const Rendered r = [] {
     Rendered r;
     r.scene = rockface::testing::synthetic_face(3000, 2000, true, 2.0);
-    r.scene.joints.push_back(
-        {"J1", rg::plane_normal({deg_to_rad(25), deg_to_rad(30)}), {0.0, 10.0, 2.0}});
+    r.scene.joints.push_back({"J1", rg::plane_normal_deg(25, 30), {0.0, 10.0, 2.0}});
     rockface::NoProgress progress;
     r.render = rockface::camera::render_scene(r.scene, progress);
     return r;

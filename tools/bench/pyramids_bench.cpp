@@ -17,8 +17,13 @@ std::vector<kinematics::JointSpec> random_joints(int n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> dip(5, 89), dipdir(0, 360);
   std::vector<kinematics::JointSpec> js;
-  for (int i = 0; i < n; ++i)
-    js.push_back({geometry::plane_normal({deg_to_rad(dip(rng)), deg_to_rad(dipdir(rng))}), deg_to_rad(30)});
+  for (int i = 0; i < n; ++i) {
+    // Drawn in this order (dip, then dip direction): the order of a function's
+    // arguments is unspecified.
+    const double dip_deg = dip(rng);
+    const double dipdir_deg = dipdir(rng);
+    js.push_back({geometry::plane_normal_deg(dip_deg, dipdir_deg), deg_to_rad(30)});
+  }
   return js;
 }
 
@@ -27,7 +32,7 @@ void BM_PyramidsAndModes(benchmark::State& state) {
   const auto joints = random_joints(n, 42);
   // A cut 70/180 with flat ground above it: one excavation pyramid of two faces.
   const geometry::Cone ep = kinematics::excavation_pyramid(
-      {{geometry::plane_normal({deg_to_rad(70), deg_to_rad(180)}), geometry::HalfSpace::Lower},
+      {{geometry::plane_normal_deg(70, 180), geometry::HalfSpace::Lower},
        {Eigen::Vector3d::UnitZ(), geometry::HalfSpace::Lower}});
   kinematics::PyramidOptions opt;
   opt.uncertainty = deg_to_rad(1);
@@ -41,9 +46,9 @@ void BM_PyramidsAndModes(benchmark::State& state) {
   }
   state.counters["codes"] = static_cast<double>(size_t{1} << n);
   state.counters["removable"] = static_cast<double>(removable);
-  state.counters["us_per_code"] = benchmark::Counter(static_cast<double>(size_t{1} << n),
-                                                     benchmark::Counter::kIsIterationInvariantRate |
-                                                         benchmark::Counter::kInvert);
+  state.counters["us_per_code"] = benchmark::Counter(
+      static_cast<double>(size_t{1} << n),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_PyramidsAndModes)->DenseRange(3, 12)->Unit(benchmark::kMillisecond);
 

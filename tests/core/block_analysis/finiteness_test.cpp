@@ -111,8 +111,8 @@ TEST(BlockFiniteness, BlockInsideTheRockIsNotRemovable) {
 TEST(BlockFiniteness, OpenHalfSpacesAreInfiniteWithTheirMargin) {
   // Two joints and a horizontal free face whose rock lies below: a wedge
   // open downward into the rock, infinite.
-  const Eigen::Vector3d n1 = geometry::plane_normal({deg_to_rad(50), deg_to_rad(90)});
-  const Eigen::Vector3d n2 = geometry::plane_normal({deg_to_rad(50), deg_to_rad(270)});
+  const Eigen::Vector3d n1 = geometry::plane_normal_deg(50, 90);
+  const Eigen::Vector3d n2 = geometry::plane_normal_deg(50, 270);
   const Finiteness f = halfspace_finiteness({-n1, -n2}, {-Eigen::Vector3d::UnitZ()}, 0);
   EXPECT_FALSE(f.finite.value);
   EXPECT_FALSE(f.removable.value);
@@ -124,8 +124,8 @@ TEST(BlockFiniteness, OpenHalfSpacesAreInfiniteWithTheirMargin) {
 TEST(BlockFiniteness, MarginInsideUncertaintyIsMarginal) {
   // The same wedge with joints dipping 89.5: JP cap EP open by 0.5 degrees,
   // inside a 1-degree orientation uncertainty.
-  const Eigen::Vector3d n1 = geometry::plane_normal({deg_to_rad(89.5), deg_to_rad(90)});
-  const Eigen::Vector3d n2 = geometry::plane_normal({deg_to_rad(89.5), deg_to_rad(270)});
+  const Eigen::Vector3d n1 = geometry::plane_normal_deg(89.5, 90);
+  const Eigen::Vector3d n2 = geometry::plane_normal_deg(89.5, 270);
   const Finiteness f = halfspace_finiteness({-n1, -n2}, {-Eigen::Vector3d::UnitZ()}, deg_to_rad(1));
   EXPECT_FALSE(f.finite.value);
   EXPECT_TRUE(f.finite.marginal);

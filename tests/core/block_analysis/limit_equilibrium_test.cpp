@@ -30,7 +30,7 @@ constexpr double kRho = 2600;
 constexpr double kGammaW = 9810;
 
 Eigen::Vector3d normal_deg(double dip, double dipdir) {
-  return geometry::plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)});
+  return geometry::plane_normal_deg(dip, dipdir);
 }
 
 // A half-space of a scene plane (dip, dip direction through a point), with

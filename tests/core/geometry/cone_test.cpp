@@ -13,7 +13,7 @@ namespace rockface::geometry {
 namespace {
 
 Eigen::Vector3d n_deg(double dip, double dipdir) {
-  return plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)});
+  return plane_normal_deg(dip, dipdir);
 }
 
 bool has_ray(const std::vector<Eigen::Vector3d>& rays, const Eigen::Vector3d& d, double tol) {

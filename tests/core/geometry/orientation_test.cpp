@@ -1,6 +1,8 @@
 #include "core/geometry/orientation.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include <gtest/gtest.h>
 
@@ -10,7 +12,7 @@ namespace rockface::geometry {
 namespace {
 
 Eigen::Vector3d normal_deg(double dip, double dipdir) {
-  return plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)});
+  return plane_normal_deg(dip, dipdir);
 }
 
 // Closed-form trigonometry in double precision: components agree to a few ulp
@@ -26,6 +28,30 @@ TEST(Orientation, NormalFollowsDesignFormula) {
   const Eigen::Vector3d v = normal_deg(90, 180);
   EXPECT_NEAR(v.y(), -1.0, kTrig);
   EXPECT_NEAR(v.z(), 0.0, kTrig);
+}
+
+// plane_normal_deg is the conversion every caller used to write by hand, to
+// the bit: any difference, even of one ulp or of the sign of a zero, could
+// move a verdict's margin in its last digit.
+TEST(Orientation, NormalFromDegreesIsBitEqualToNormalFromRadians) {
+  for (double dip : {0.0, 1e-9, 0.5, 20.0, 30.0, 45.0, 60.0, 89.5, 90.0})
+    for (double dipdir = 0; dipdir <= 360; dipdir += 7.5) {
+      const Eigen::Vector3d from_deg = plane_normal_deg(dip, dipdir);
+      const Eigen::Vector3d from_rad = plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)});
+      for (int i = 0; i < 3; ++i)
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(from_deg[i]),
+                  std::bit_cast<std::uint64_t>(from_rad[i]))
+            << "dip " << dip << ", dip direction " << dipdir << ", component " << i;
+    }
+}
+
+TEST(Orientation, VerticalPlaneNormalFromDegreesPointsToItsDipDirection) {
+  for (double dipdir : {0.0, 30.0, 90.0, 135.0, 180.0, 270.0, 330.0, 360.0}) {
+    const Eigen::Vector3d n = plane_normal_deg(90, dipdir);
+    const Eigen::Vector3d toward(std::sin(deg_to_rad(dipdir)), std::cos(deg_to_rad(dipdir)), 0);
+    EXPECT_NEAR(n.z(), 0.0, kTrig) << dipdir;
+    EXPECT_NEAR(n.dot(toward), 1.0, kTrig) << dipdir;
+  }
 }
 
 TEST(Orientation, RoundTripsOverTheWholeRange) {

@@ -15,12 +15,12 @@ namespace {
 using geometry::HalfSpace;
 
 JointSpec joint(double dip, double dipdir, std::optional<double> phi_deg = std::nullopt) {
-  JointSpec j{geometry::plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)}), std::nullopt};
+  JointSpec j{geometry::plane_normal_deg(dip, dipdir), std::nullopt};
   if (phi_deg) j.friction = deg_to_rad(*phi_deg);
   return j;
 }
 FreeFaceSpec face(double dip, double dipdir, HalfSpace rock) {
-  return {geometry::plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)}), rock};
+  return {geometry::plane_normal_deg(dip, dipdir), rock};
 }
 
 std::vector<std::string> removable_codes(const std::vector<PyramidVerdict>& vs) {

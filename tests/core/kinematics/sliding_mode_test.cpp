@@ -12,7 +12,7 @@ namespace rockface::kinematics {
 namespace {
 
 Eigen::Vector3d n_deg(double dip, double dipdir) {
-  return geometry::plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)});
+  return geometry::plane_normal_deg(dip, dipdir);
 }
 
 // Closed-form expressions evaluated in double precision: 1e-12 relative.

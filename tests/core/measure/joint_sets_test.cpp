@@ -34,7 +34,7 @@ std::vector<Eigen::Vector3d> fisher_sample(const Eigen::Vector3d& mean, double k
 }
 
 Eigen::Vector3d pole(double dip, double dipdir) {
-  return rg::plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)});
+  return rg::plane_normal_deg(dip, dipdir);
 }
 
 double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {

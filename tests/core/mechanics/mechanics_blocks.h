@@ -30,7 +30,7 @@ struct Placement {
 };
 
 inline Eigen::Vector3d normal_deg(double dip, double dipdir) {
-  return geometry::plane_normal({deg_to_rad(dip), deg_to_rad(dipdir)});
+  return geometry::plane_normal_deg(dip, dipdir);
 }
 
 // A half-space from its inward normal and a point (absolute), placed.

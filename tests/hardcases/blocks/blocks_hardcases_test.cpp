@@ -151,7 +151,7 @@ TEST(BlockHardCases, VerdictsSurviveRigidMotionAndReordering) {
   // margins, mode planes and factor of safety.
   auto wedge = [](double turn, const Eigen::Vector3d& at, bool reverse) {
     auto n = [&](double dip, double dipdir) {
-      return geometry::plane_normal({deg_to_rad(dip), deg_to_rad(dipdir + turn)});
+      return geometry::plane_normal_deg(dip, dipdir + turn);
     };
     std::vector<HalfSpaceInput> h{
         halfspace(0, "J1", PlaneKind::Joint, n(55, 140), at, HalfSpace::Upper),

@@ -25,16 +25,14 @@ struct Orient {
 std::vector<JointSpec> joints_of(const std::vector<Orient>& os, double turn_deg = 0) {
   std::vector<JointSpec> js;
   for (const auto& o : os)
-    js.push_back({geometry::plane_normal({deg_to_rad(o.dip), deg_to_rad(o.dipdir + turn_deg)}),
-                  deg_to_rad(30)});
+    js.push_back({geometry::plane_normal_deg(o.dip, o.dipdir + turn_deg), deg_to_rad(30)});
   return js;
 }
 
 geometry::Cone ep_of(const std::vector<Orient>& faces, HalfSpace rock, double turn_deg = 0) {
   std::vector<FreeFaceSpec> fs;
   for (const auto& f : faces)
-    fs.push_back(
-        {geometry::plane_normal({deg_to_rad(f.dip), deg_to_rad(f.dipdir + turn_deg)}), rock});
+    fs.push_back({geometry::plane_normal_deg(f.dip, f.dipdir + turn_deg), rock});
   return excavation_pyramid(fs);
 }
 
