@@ -12,7 +12,7 @@
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"
 #include "core/kinematics/rotation_tolerances.h"
-#include "firmware-app/analyse_rotation.h"
+#include "firmware-app/analysis/analyse_rotation.h"
 #include "tests/core/rotation/quick_check_blocks.h"
 #include "tests/core/rotation/rotation_blocks.h"
 
