@@ -22,11 +22,11 @@
 #include "core/common/units.h"
 #include "core/measure/stereonet_image.h"
 #include "core/photogrammetry/preset.h"
-#include "firmware-app/atomic_file.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/measure_picks.h"
 #include "firmware-app/records/project_mesh.h"
 #include "storage/camera_json.h"
+#include "storage/export_file.h"
 #include "storage/export_joints_csv.h"
 #include "storage/ply_reader.h"
 #include "storage/project_store.h"
@@ -322,12 +322,13 @@ int run(const MeasureOptions& o) {
   std::map<std::string, std::string> further_models;
   for (const auto& f : further)
     for (const auto& [name, view] : f.views) further_models[name] = f.name;
-  write_atomically(o.out, measures_json(measured, context, model.name, further_models));
+  storage::write_text_atomically(o.out,
+                                 measures_json(measured, context, model.name, further_models));
   if (!png.empty() && !cv::imwrite(o.png, png)) throw Error(o.png + ": cannot write the picture");
   if (!o.csv.empty()) {
     std::ostringstream csv;
     storage::write_joints_csv(csv, joints, model.datum);
-    write_atomically(o.csv, csv.str());
+    storage::write_text_atomically(o.csv, csv.str());
   }
   std::size_t known = 0;
   for (const auto& t : measured.traces) known += t.m.plane.known ? 1 : 0;

@@ -11,11 +11,6 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
-#include "core/kinematics/effect_bolt.h"
-#include "core/kinematics/effect_force.h"
-#include "core/kinematics/effect_gravity.h"
-#include "core/kinematics/effect_seismic.h"
-#include "core/kinematics/effect_water.h"
 #include "firmware-app/analysis/block_mechanics.h"
 #include "firmware-app/analysis/block_report.h"
 #include "firmware-app/analysis/scene_analysis.h"
@@ -25,11 +20,7 @@ namespace rockface::app {
 
 namespace {
 
-Eigen::Vector3d normal_of(double dip_deg, double dipdir_deg) {
-  return geometry::plane_normal({deg_to_rad(dip_deg), deg_to_rad(dipdir_deg)});
-}
-
-std::string block_where(const storage::Scene& scene, size_t i) {
+std::string block_where(const AnalysisInput& scene, size_t i) {
   return scene.source + ": blocks[" + std::to_string(i) + "]";
 }
 
@@ -42,16 +33,17 @@ struct ScenePlane {
   std::string field;  // "joints[2]"
 };
 
-std::vector<ScenePlane> scene_planes(const storage::Scene& scene) {
+std::vector<ScenePlane> scene_planes(const AnalysisInput& scene) {
   std::vector<ScenePlane> planes;
   for (size_t k = 0; k < scene.joints.size(); ++k) {
     const auto& j = scene.joints[k];
-    planes.push_back({j.id, blocks::PlaneKind::Joint, normal_of(j.dip, j.dipdir), &j.point,
-                      "joints[" + std::to_string(k) + "]"});
+    planes.push_back({j.id, blocks::PlaneKind::Joint, geometry::plane_normal_deg(j.dip, j.dipdir),
+                      &j.point, "joints[" + std::to_string(k) + "]"});
   }
   for (size_t k = 0; k < scene.free_faces.size(); ++k) {
     const auto& f = scene.free_faces[k];
-    planes.push_back({f.id, blocks::PlaneKind::FreeFace, normal_of(f.dip, f.dipdir), &f.point,
+    planes.push_back({f.id, blocks::PlaneKind::FreeFace,
+                      geometry::plane_normal_deg(f.dip, f.dipdir), &f.point,
                       "free_faces[" + std::to_string(k) + "]"});
   }
   return planes;
@@ -73,8 +65,7 @@ void fill_verdicts(const kinematics::Finiteness& f, storage::ReportBlock& rb) {
 
 }  // namespace
 
-void analyse_scene_blocks(const storage::Scene& scene, storage::Report& report,
-                          Progress& progress) {
+void analyse_scene_blocks(const AnalysisInput& scene, storage::Report& report, Progress& progress) {
   const double uncertainty = deg_to_rad(scene.analysis.orientation_uncertainty_deg);
   const std::vector<ScenePlane> planes = scene_planes(scene);
   const kinematics::Effects effects = scene_effects(scene);

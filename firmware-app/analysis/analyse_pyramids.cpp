@@ -11,11 +11,7 @@ namespace rockface::app {
 
 namespace {
 
-Eigen::Vector3d normal_of(double dip_deg, double dipdir_deg) {
-  return geometry::plane_normal({deg_to_rad(dip_deg), deg_to_rad(dipdir_deg)});
-}
-
-storage::ReportMode report_mode(const kinematics::SlidingMode& m, const storage::Scene& scene) {
+storage::ReportMode report_mode(const kinematics::SlidingMode& m, const AnalysisInput& scene) {
   storage::ReportMode r;
   r.type = kinematics::mode_name(m.type);
   for (int p : m.planes) r.planes.push_back(scene.joints[p].id);
@@ -26,10 +22,10 @@ storage::ReportMode report_mode(const kinematics::SlidingMode& m, const storage:
 
 }  // namespace
 
-void analyse_pyramids(const storage::Scene& scene, storage::Report& report) {
+void analyse_pyramids(const AnalysisInput& scene, storage::Report& report) {
   std::vector<kinematics::JointSpec> joints;
   for (const auto& j : scene.joints) {
-    kinematics::JointSpec spec{normal_of(j.dip, j.dipdir), std::nullopt};
+    kinematics::JointSpec spec{geometry::plane_normal_deg(j.dip, j.dipdir), std::nullopt};
     if (j.friction) spec.friction = deg_to_rad(*j.friction);
     joints.push_back(spec);
   }
@@ -39,7 +35,7 @@ void analyse_pyramids(const storage::Scene& scene, storage::Report& report) {
   std::map<std::string, size_t> group_index;
   for (const auto& f : scene.free_faces) {
     const kinematics::FreeFaceSpec spec{
-        normal_of(f.dip, f.dipdir),
+        geometry::plane_normal_deg(f.dip, f.dipdir),
         f.rock_side == 0 ? geometry::HalfSpace::Upper : geometry::HalfSpace::Lower};
     if (f.group.empty()) {
       pyramids.push_back({f.id, {spec}});

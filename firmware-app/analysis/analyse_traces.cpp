@@ -17,15 +17,11 @@
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
 #include "core/geometry/orientation.h"
-#include "core/kinematics/effect_bolt.h"
-#include "core/kinematics/effect_force.h"
-#include "core/kinematics/effect_gravity.h"
-#include "core/kinematics/effect_seismic.h"
-#include "core/kinematics/effect_water.h"
 #include "firmware-app/analysis/block_mechanics.h"
 #include "firmware-app/analysis/block_report.h"
 #include "firmware-app/analysis/scene_analysis.h"
 #include "firmware-app/analysis/scene_effects.h"
+#include "firmware-app/analysis/trace_map_input.h"
 
 namespace rockface::app {
 
@@ -67,7 +63,7 @@ void rename_joint_planes(const faces::TraceBlock& b, const faces::TraceNetwork& 
       for (auto& n : c.sliding_on) n = name(n);
 }
 
-storage::ReportBlock report_block(const faces::TraceBlock& b, const storage::Scene& scene,
+storage::ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInput& scene,
                                   const faces::TraceNetwork& net, const Eigen::Vector3d& datum,
                                   const std::string& id, const kinematics::Effects& effects) {
   storage::ReportBlock rb;
@@ -115,51 +111,23 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const storage::Sce
 
 }  // namespace
 
-void analyse_trace_blocks(const storage::Scene& scene, storage::Report& report,
-                          Progress& progress) {
+void analyse_trace_blocks(const AnalysisInput& scene, storage::Report& report, Progress& progress) {
   if (scene.patches.empty()) {
     report.notes.push_back(
         "traces: the scene has no surface.patches; blocks from traces need the free surface");
     return;
   }
-  // Without a scene datum, the first patch corner is the origin, so survey
-  // coordinates lose no precision either.
-  const Eigen::Vector3d datum = scene.has_datum ? scene.datum : scene.patches[0].polygon[0];
-  // A zero tolerance would merge nothing and divide the snapping grid by zero;
-  // a micrometre merges rounding only.
-  const double tol = std::max(scene.analysis.snap_tolerance, 1e-6);
-  const double uncertainty = deg_to_rad(scene.analysis.orientation_uncertainty_deg);
-
-  std::vector<faces::PatchInput> patches;
-  for (const auto& p : scene.patches) {
-    faces::PatchInput in{p.id, {}};
-    for (const auto& x : p.polygon) in.polygon.push_back(x - datum);
-    patches.push_back(std::move(in));
-  }
-  std::vector<faces::TraceInput> traces;
-  for (const auto& t : scene.traces) {
-    faces::TraceInput in;
-    in.id = t.id;
-    if (t.joint) {
-      const storage::SceneJoint* j = scene.joint(*t.joint);
-      faces::TraceJoint tj;
-      tj.index = scene.plane_index(j->id);
-      tj.id = j->id;
-      tj.orientation = {deg_to_rad(j->dip), deg_to_rad(j->dipdir)};
-      if (j->friction) tj.friction = deg_to_rad(*j->friction);
-      tj.cohesion = j->cohesion.value_or(0.0);
-      in.joint = tj;
-    }
-    for (const auto& x : t.points) in.points.push_back(x - datum);
-    traces.push_back(std::move(in));
-  }
+  const TraceMapInput map = trace_map_input(scene);
+  const Eigen::Vector3d& datum = map.datum;
+  const double tol = map.snap_tolerance;
+  const double uncertainty = map.orientation_uncertainty;
 
   const kinematics::Effects effects = scene_effects(scene);
   faces::FreeSurface surface;
   faces::TraceNetwork net;
   try {
-    surface = faces::FreeSurface::build(patches, tol);
-    net = faces::TraceNetwork::build(surface, traces, {tol, uncertainty});
+    surface = faces::FreeSurface::build(map.patches, tol);
+    net = faces::TraceNetwork::build(surface, map.traces, {tol, uncertainty});
   } catch (const InputError& e) {
     throw InputError(scene.source + ": " + e.where(), e.reason());
   }

@@ -11,7 +11,7 @@ namespace rockface::app {
 
 namespace {
 
-mechanics::JointLawParameters law_parameters(const storage::Scene& scene,
+mechanics::JointLawParameters law_parameters(const AnalysisInput& scene,
                                              const blocks::BlockPlane& plane) {
   const storage::SceneJointLaw law = scene.effects.joint_law.value_or(storage::SceneJointLaw{});
   mechanics::JointLawParameters p;
@@ -50,11 +50,11 @@ storage::ReportRigidMode rigid_mode(const mechanics::RigidMode& m) {
 
 }  // namespace
 
-bool scene_wants_mechanics(const storage::Scene& scene) {
+bool scene_wants_mechanics(const AnalysisInput& scene) {
   return scene.analysis.stability == "equilibrium_path";
 }
 
-void analyse_block_mechanics(const blocks::Polyhedron& poly, const storage::Scene& scene,
+void analyse_block_mechanics(const blocks::Polyhedron& poly, const AnalysisInput& scene,
                              const kinematics::Effects& effects, storage::ReportBlock& rb,
                              Progress* progress) {
   mechanics::MechanicsOptions o = mechanics::mechanics_preset(scene.analysis.preset);

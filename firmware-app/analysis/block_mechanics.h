@@ -8,17 +8,17 @@
 #include "core/blocks/polyhedron.h"
 #include "core/common/progress.h"
 #include "core/kinematics/effect.h"
+#include "firmware-app/analysis/analysis_input.h"
 #include "storage/report.h"
-#include "storage/scene.h"
 
 namespace rockface::app {
 
-bool scene_wants_mechanics(const storage::Scene& scene);
+bool scene_wants_mechanics(const AnalysisInput& scene);
 
 // Runs the equilibrium path of a finite block and fills rb.mechanics.
 // Throws InputError naming the scene file and field for bad parameters;
 // progress (optional) sees each continuation step and may cancel.
-void analyse_block_mechanics(const blocks::Polyhedron& poly, const storage::Scene& scene,
+void analyse_block_mechanics(const blocks::Polyhedron& poly, const AnalysisInput& scene,
                              const kinematics::Effects& effects, storage::ReportBlock& rb,
                              Progress* progress = nullptr);
 

@@ -15,7 +15,7 @@ double timed_ms(F&& f) {
 
 }  // namespace
 
-storage::Report analyse_scene(const storage::Scene& scene, Progress& progress) {
+storage::Report analyse(const AnalysisInput& scene, Progress& progress) {
   storage::Report report;
   report.effects_simulated = scene.effects.listed();
   // Which analyses run: geometry always; limit equilibrium unless the

@@ -11,13 +11,7 @@
 
 namespace rockface::app {
 
-namespace {
-Eigen::Vector3d normal_of(double dip_deg, double dipdir_deg) {
-  return geometry::plane_normal({deg_to_rad(dip_deg), deg_to_rad(dipdir_deg)});
-}
-}  // namespace
-
-kinematics::Effects scene_effects(const storage::Scene& scene) {
+kinematics::Effects scene_effects(const AnalysisInput& scene) {
   kinematics::Effects effects;
   effects.push_back(std::make_unique<kinematics::GravityEffect>(scene.gravity));
   try {
@@ -25,8 +19,8 @@ kinematics::Effects scene_effects(const storage::Scene& scene) {
       std::vector<int> joints;
       for (const auto& id : w->joints) joints.push_back(scene.plane_index(id));
       effects.push_back(std::make_unique<kinematics::WaterEffect>(
-          w->unit_weight, w->phreatic_point, normal_of(w->phreatic_dip, w->phreatic_dipdir),
-          joints));
+          w->unit_weight, w->phreatic_point,
+          geometry::plane_normal_deg(w->phreatic_dip, w->phreatic_dipdir), joints));
     }
     if (scene.effects.seismic)
       effects.push_back(std::make_unique<kinematics::SeismicEffect>(*scene.effects.seismic));

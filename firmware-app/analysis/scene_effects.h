@@ -3,11 +3,11 @@
 // limit equilibrium (gravity always): one composition for explicit blocks
 // and blocks from traces.
 #include "core/kinematics/effect.h"
-#include "storage/scene.h"
+#include "firmware-app/analysis/analysis_input.h"
 
 namespace rockface::app {
 
 // Throws InputError naming the scene file and the effect's field.
-kinematics::Effects scene_effects(const storage::Scene& scene);
+kinematics::Effects scene_effects(const AnalysisInput& scene);
 
 }  // namespace rockface::app

@@ -26,7 +26,7 @@ VerbRun setup_analyse(CLI::App& sub) {
   return [opts] {
     const storage::Scene scene = storage::load_scene(opts->scene);
     NoProgress progress;
-    storage::Report report = analyse_scene(scene, progress);
+    storage::Report report = analyse(analysis_input(scene), progress);
     // The path of each block's equilibrium-path analysis as a PNG beside the report.
     if (!opts->out.empty()) write_report_files(report, opts->out);
     if (opts->summary) {

@@ -7,8 +7,8 @@
 
 #include "core/common/error.h"
 #include "core/photogrammetry/reference_line.h"
-#include "firmware-app/atomic_file.h"
 #include "storage/camera_json.h"
+#include "storage/export_file.h"
 #include "storage/mesh_export.h"
 #include "storage/reconstruction_report.h"
 
@@ -85,7 +85,7 @@ photogrammetry::ReconstructionResult reconstruct_pair_files(const PairReconstruc
   if (!o.report.empty()) {
     storage::ReconstructionReportContext context{o.left,       o.right,    preset.name,
                                                  o.range_pole, o.baseline, sources.north};
-    write_atomically(o.report, storage::reconstruction_report_json(result, context));
+    storage::write_text_atomically(o.report, storage::reconstruction_report_json(result, context));
   }
   return result;
 }

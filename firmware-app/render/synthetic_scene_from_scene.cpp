@@ -25,8 +25,7 @@ SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& s) {
   }
   for (const auto& j : s.joints) {
     if (!j.point) continue;  // orientation-only joints cut no trace
-    const geometry::PlaneOrientation o{deg_to_rad(j.dip), deg_to_rad(j.dipdir)};
-    out.joints.push_back({j.id, geometry::plane_normal(o), *j.point - in.origin});
+    out.joints.push_back({j.id, geometry::plane_normal_deg(j.dip, j.dipdir), *j.point - in.origin});
   }
   const auto& im = *s.imaging;
   auto& c = out.camera;

@@ -187,7 +187,13 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
                                   more ? &*more : nullptr);
     for (const auto& note : picked->notes) out.guidance.push_back(note);
   }
-  storage::Scene analysed = picked ? picked->analysed : *scene;
+  // The analysis input, filled once from the scene and then with what was
+  // measured: the measured traces and joint planes.
+  AnalysisInput analysed = analysis_input(*scene);
+  if (picked) {
+    analysed.traces = picked->traces;
+    analysed.joints = picked->joints;
+  }
   if (analysed.traces.empty()) {
     int n = 0;
     for (const auto& seg : camera::true_trace_segments(synthetic->scene))
@@ -253,7 +259,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   store.save_joints(out.visit_id, {}, joints);
 
   progress.step("blocks", 0.8);
-  storage::Report report = analyse_scene(analysed, progress);
+  storage::Report report = analyse(analysed, progress);
   const storage::AnalysisRun run = analysis_record(report, out.visit_id, out.model_id, preset_name);
   out.analysis_id = store.save_analysis(run);
   out.report = std::move(report);

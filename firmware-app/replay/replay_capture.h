@@ -1,7 +1,6 @@
 #pragma once
-// What `rockface replay` does with each shot of the mock camera: decode it,
-// and keep its EXIF as the project's key/value settings.
-#include <map>
+// What `rockface replay` does with each shot of the mock camera: decode it.
+// (Its EXIF goes to the project as camera::exif_fields.)
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -12,7 +11,5 @@ namespace rockface::app {
 
 // BGR image; throws InputError naming the file when it cannot be decoded.
 cv::Mat decode_shot(const camera::CapturedFile& file, const std::string& label);
-
-std::map<std::string, std::string> exif_map(const camera::ExifInfo& exif);
 
 }  // namespace rockface::app

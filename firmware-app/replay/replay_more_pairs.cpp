@@ -63,8 +63,8 @@ MorePairsOutcome replay_more_pairs(storage::ProjectStore& store, const MorePairs
     capture.label = "replay " + pair_name(k);
     capture.left.bytes = left.image.data;
     capture.right.bytes = right.image.data;
-    capture.left_exif = exif_map(left.exif);
-    capture.right_exif = exif_map(right.exif);
+    capture.left_exif = camera::exif_fields(left.exif);
+    capture.right_exif = camera::exif_fields(right.exif);
     capture.settings["preset"] = request.preset_name;
     out.capture_ids.push_back(store.save_capture(capture));
 

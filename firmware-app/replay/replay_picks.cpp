@@ -94,8 +94,7 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
   for (const auto& j : out.joined)
     for (const auto& id : j.face.pieces) joined_by_piece[id] = &j;
 
-  out.analysed = scene;
-  out.analysed.traces.clear();
+  out.joints = scene.joints;
   // The trace as the analysis sees it: the picks lifted onto the 3D image
   // (the taps, or the ends of a semi-automatic trace), a polyline with
   // few vertices, not the hundreds of noisy samples the plane was fitted to.
@@ -119,10 +118,10 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
         if (const auto hit = on.pick(view, t.taps[k], pick.where))
           st.points.push_back(hit->point + scene.datum);
     }
-    out.analysed.traces.push_back(std::move(st));
+    out.traces.push_back(std::move(st));
   }
   for (const MeasuredJoint& j : out.measured.joints) {
-    for (auto& sj : out.analysed.joints) {
+    for (auto& sj : out.joints) {
       if (sj.id != j.label) continue;
       if (!j.plane.known) {
         out.notes.push_back(j.label + ": " + j.plane.problem +

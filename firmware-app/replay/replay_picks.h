@@ -21,9 +21,11 @@ namespace rockface::app {
 struct ReplayPicks {
   MeasuredPicks measured;           // each pick, on its own pair's 3D image in the face frame
   std::vector<JoinedTrace> joined;  // pieces tapped in different pairs' photographs
-  // The scene to analyse: its traces are the measured ones (the picks lifted
-  // onto the 3D image), each joint that has traces gets their common plane.
-  storage::Scene analysed;
+  // What the analysis takes from the picks, as values: the measured traces
+  // (the picks lifted onto the 3D image, absolute), and the scene's joints,
+  // each with its traces' common plane where they give one.
+  std::vector<storage::SceneTrace> traces;
+  std::vector<storage::SceneJoint> joints;
   std::vector<std::string> notes;  // joints whose plane stays unknown, and why
 };
 
