@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "core/common/error.h"
-#include "firmware-app/verb_registry.h"
-#include "firmware-app/verb_ui.h"
+#include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/cli/verb_ui.h"
 
 namespace rockface::app {
 std::vector<Verb>& verbs() {

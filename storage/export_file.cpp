@@ -11,13 +11,28 @@
 
 namespace rockface::storage {
 
+namespace {
+
+// Puts what is written to a file (or a folder's entries) on the card: 0, or
+// the errno of a failed sync. A path that cannot be opened for it (some file
+// systems refuse folders) is left as it is.
+int sync_path(const std::filesystem::path& path, int flags) {
+  const int fd = ::open(path.c_str(), flags);
+  if (fd < 0) return 0;
+  const int rc = ::fsync(fd) == 0 ? 0 : errno;
+  ::close(fd);
+  return rc;
+}
+
+}  // namespace
+
 void write_file_atomically(const std::filesystem::path& file,
                            const std::function<void(std::ostream&)>& write) {
   std::filesystem::path temp = file;
   temp += ".writing-" + std::to_string(::getpid());
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error(file.string() + ": cannot write the export: " + std::strerror(errno));
+    if (!out) throw Error(file.string() + ": cannot write the file: " + std::strerror(errno));
     try {
       write(out);
     } catch (...) {
@@ -30,25 +45,28 @@ void write_file_atomically(const std::filesystem::path& file,
     if (!out) {
       std::error_code ec;
       std::filesystem::remove(temp, ec);
-      throw Error(file.string() + ": writing the export failed (card full or removed?)");
+      throw Error(file.string() + ": writing the file failed (card full or removed?)");
     }
   }
   // The data must be on the card before the rename makes it visible.
-  if (const int fd = ::open(temp.c_str(), O_RDONLY); fd >= 0) {
-    const int rc = ::fsync(fd);
-    ::close(fd);
-    if (rc != 0) {
-      std::error_code ec;
-      std::filesystem::remove(temp, ec);
-      throw Error(file.string() + ": writing the export failed: " + std::strerror(errno));
-    }
+  if (const int err = sync_path(temp, O_RDONLY); err != 0) {
+    std::error_code ec;
+    std::filesystem::remove(temp, ec);
+    throw Error(file.string() + ": writing the file failed: " + std::strerror(err));
   }
   std::error_code ec;
   std::filesystem::rename(temp, file, ec);
   if (ec) {
     std::filesystem::remove(temp, ec);
-    throw Error(file.string() + ": cannot put the export in place: " + ec.message());
+    throw Error(file.string() + ": cannot put the file in place: " + ec.message());
   }
+  // The rename is an entry of the folder: on the card once the folder is.
+  const std::filesystem::path folder = file.parent_path();
+  sync_path(folder.empty() ? std::filesystem::path(".") : folder, O_RDONLY | O_DIRECTORY);
+}
+
+void write_text_atomically(const std::filesystem::path& file, std::string_view text) {
+  write_file_atomically(file, [&](std::ostream& out) { out << text; });
 }
 
 }  // namespace rockface::storage

@@ -16,7 +16,7 @@
 #include "core/common/units.h"
 #include "core/measure/joined_traces.h"
 #include "firmware-app/measure/measure_workflow.h"
-#include "firmware-app/verb_registry.h"
+#include "firmware-app/cli/verb_registry.h"
 
 namespace rockface::app {
 namespace {

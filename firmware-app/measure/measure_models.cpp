@@ -10,7 +10,7 @@
 #include "core/measure/pair_photo.h"
 #include "core/common/preset.h"
 #include "core/photogrammetry/preset.h"
-#include "firmware-app/project_mesh.h"
+#include "firmware-app/records/project_mesh.h"
 #include "storage/camera_json.h"
 #include "storage/ply_reader.h"
 

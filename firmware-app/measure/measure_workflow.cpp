@@ -13,9 +13,9 @@
 #include "core/common/units.h"
 #include "core/measure/pair_photo.h"
 #include "core/measure/stereonet_image.h"
-#include "firmware-app/atomic_file.h"
 #include "firmware-app/measure/measure_records.h"
 #include "firmware-app/measure/measures_json.h"
+#include "storage/export_file.h"
 #include "storage/export_joints_csv.h"
 #include "storage/picks_json.h"
 #include "storage/project_store.h"
@@ -153,12 +153,12 @@ MeasureOutcome measure_picks_file(const MeasureRequest& r) {
   std::map<std::string, std::string> further_models;
   for (const auto& f : further)
     for (const auto& [name, view] : f.views) further_models[name] = f.name;
-  write_atomically(r.out, measures_json(measured, context, model.name, further_models));
+  storage::write_text_atomically(r.out, measures_json(measured, context, model.name, further_models));
   if (!png.empty() && !cv::imwrite(r.png, png)) throw Error(r.png + ": cannot write the picture");
   if (!r.csv.empty()) {
     std::ostringstream csv;
     storage::write_joints_csv(csv, joints, model.datum);
-    write_atomically(r.csv, csv.str());
+    storage::write_text_atomically(r.csv, csv.str());
   }
   return outcome;
 }

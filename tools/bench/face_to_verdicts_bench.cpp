@@ -4,11 +4,10 @@
 // preset, with peak memory.
 //
 // Part 1, the field workflow: `rockface replay SCENE --preset P` in a child
-// process (benches do not link firmware-app; face_merge_bench runs the binary
-// the same way). The replay prints one stderr line per progress step
-// (core/common/progress.h); each line is timestamped on arrival and the
-// child's peak resident set so far (VmHWM of /proc/PID/status) is read with
-// it, so a stage's memory is the process peak up to the stage's end. Stages:
+// process (face_merge_bench runs the binary the same way). The replay prints one stderr line per
+// progress step (core/common/progress.h); each line is timestamped on arrival and the child's peak
+// resident set so far (VmHWM of /proc/PID/status) is read with it, so a stage's memory is the
+// process peak up to the stage's end. Stages:
 //   capture       rendering and spooling the pair (MockCamera), project records
 //   features      SIFT on both images, matching, mutual check
 //   orientation   relative orientation (essential matrix, pose, refinement,
@@ -22,7 +21,8 @@
 //
 // Part 2, the verdict stages alone, in this process and on one core: the
 // visit the replay stored (its traces, areas and joints, read back through
-// storage::load_scene_source) analysed as analyse_traces does, timed apart:
+// storage::load_scene_source) made into the trace map's input by the
+// analysis workflow (firmware-app/analysis/trace_map_input.h), timed apart:
 //   trace_map_ms  free surface, trace network, surface loops
 //   blocks_ms     faces::trace_blocks: blocks, finiteness, removability
 //   rotation_ms   corner and edge rotatability of the finite blocks
@@ -56,6 +56,7 @@
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"
 #include "core/kinematics/rotation_space.h"
+#include "firmware-app/analysis/trace_map_input.h"
 #include "storage/export_scene_json.h"
 #include "storage/project_store.h"
 #include "storage/scene.h"
@@ -246,40 +247,17 @@ VerdictTimes verdict_stages(const fs::path& project, const std::string& preset) 
   rs::ProjectStore store = rs::ProjectStore::open(project, open);
   const rs::Scene scene =
       rs::parse_scene(rs::make_scene_json(rs::load_scene_source(store)).dump(), project.string());
-  const Eigen::Vector3d datum = scene.has_datum ? scene.datum : scene.patches.at(0).polygon.at(0);
-  const double tol = std::max(scene.analysis.snap_tolerance, 1e-6);
-  const double uncertainty = rockface::deg_to_rad(scene.analysis.orientation_uncertainty_deg);
-  std::vector<rf::PatchInput> patches;
-  for (const auto& p : scene.patches) {
-    rf::PatchInput in{p.id, {}};
-    for (const auto& x : p.polygon) in.polygon.push_back(x - datum);
-    patches.push_back(std::move(in));
-  }
-  std::vector<rf::TraceInput> traces;
-  for (const auto& t : scene.traces) {
-    rf::TraceInput in;
-    in.id = t.id;
-    if (t.joint) {
-      const rs::SceneJoint* j = scene.joint(*t.joint);
-      rf::TraceJoint tj;
-      tj.index = scene.plane_index(j->id);
-      tj.id = j->id;
-      tj.orientation = {rockface::deg_to_rad(j->dip), rockface::deg_to_rad(j->dipdir)};
-      if (j->friction) tj.friction = rockface::deg_to_rad(*j->friction);
-      tj.cohesion = j->cohesion.value_or(0.0);
-      in.joint = tj;
-    }
-    for (const auto& x : t.points) in.points.push_back(x - datum);
-    traces.push_back(std::move(in));
-  }
+  // The trace map's input as the analysis makes it (firmware-app/analysis).
+  const rockface::app::TraceMapInput map =
+      rockface::app::trace_map_input(rockface::app::analysis_input(scene));
 
   // The fastest of kRepeats runs of each stage: the machine is shared, and
   // the least disturbed run is the closest to the stage's own cost.
   constexpr int kRepeats = 10;
   VerdictTimes best;
   for (int rep = 0; rep < kRepeats; ++rep) {
-    const VerdictTimes t =
-        verdict_stages_once(patches, traces, scene, tol, uncertainty, datum, preset);
+    const VerdictTimes t = verdict_stages_once(map.patches, map.traces, scene, map.snap_tolerance,
+                                               map.orientation_uncertainty, map.datum, preset);
     if (rep == 0) best = t;
     best.trace_map_ms = std::min(best.trace_map_ms, t.trace_map_ms);
     best.blocks_ms = std::min(best.blocks_ms, t.blocks_ms);

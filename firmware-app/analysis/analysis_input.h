@@ -1,0 +1,40 @@
+#pragma once
+// What the block analysis takes, as values: the planes (joints, then free
+// faces: a block code has one digit per plane in this order), the scene's
+// explicit blocks, the free surface and the traces on it, the rock, the
+// effects and the analysis options. Angles in degrees and points absolute,
+// as in the scene file. The replay fills it with the measured joint planes
+// and traces; a scene file becomes one once, at the boundary
+// (analysis_input).
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "storage/scene.h"
+
+namespace rockface::app {
+
+struct AnalysisInput {
+  std::string source;  // names the input in messages (a scene file, a project's visit)
+  Eigen::Vector3d datum = Eigen::Vector3d::Zero();
+  bool has_datum = false;
+  double density = 2700;  // kg/m^3
+  Eigen::Vector3d gravity{0, 0, -9.81};
+  std::vector<storage::SceneJoint> joints;
+  std::vector<storage::SceneFreeFace> free_faces;
+  std::vector<storage::SceneBlock> blocks;
+  std::vector<storage::ScenePatch> patches;
+  std::vector<storage::SceneTrace> traces;
+  storage::SceneAnalysis analysis;
+  storage::SceneEffects effects;
+
+  const storage::SceneJoint* joint(const std::string& id) const;
+  // Index of a plane id among joints followed by free faces, -1 if unknown.
+  int plane_index(const std::string& id) const;
+};
+
+// The analysis input of a parsed scene (its imaging and picks left aside).
+AnalysisInput analysis_input(const storage::Scene& scene);
+
+}  // namespace rockface::app

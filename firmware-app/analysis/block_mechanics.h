@@ -1,0 +1,25 @@
+#pragma once
+// The equilibrium-path analysis of one block, when the scene asks for it
+// (analysis.stability = "equilibrium_path"): joint laws from
+// effects.joint_law (and, for the Coulomb model, each joint's friction and
+// cohesion), options from the preset and the scene's analysis fields, and
+// the result as the block's report `mechanics`.
+#include "core/blocks/mass_properties.h"
+#include "core/blocks/polyhedron.h"
+#include "core/common/progress.h"
+#include "core/kinematics/effect.h"
+#include "firmware-app/analysis/analysis_input.h"
+#include "storage/report.h"
+
+namespace rockface::app {
+
+bool scene_wants_mechanics(const AnalysisInput& scene);
+
+// Runs the equilibrium path of a finite block and fills rb.mechanics.
+// Throws InputError naming the scene file and field for bad parameters;
+// progress (optional) sees each continuation step and may cancel.
+void analyse_block_mechanics(const blocks::Polyhedron& poly, const AnalysisInput& scene,
+                             const kinematics::Effects& effects, storage::ReportBlock& rb,
+                             Progress* progress = nullptr);
+
+}  // namespace rockface::app

@@ -1,0 +1,14 @@
+#include "firmware-app/analysis/report_files.h"
+
+#include "firmware-app/analysis/mechanics_plot.h"
+#include "storage/export_file.h"
+
+namespace rockface::app {
+
+void write_report_files(storage::Report& report, const std::string& report_file) {
+  // The plots first: the report names them.
+  write_mechanics_plots(report, report_file);
+  storage::write_text_atomically(report_file, storage::report_to_json(report));
+}
+
+}  // namespace rockface::app

@@ -1,0 +1,42 @@
+#include "firmware-app/analysis/scene_analysis.h"
+
+#include <chrono>
+
+namespace rockface::app {
+
+namespace {
+
+template <class F>
+double timed_ms(F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  f();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+storage::Report analyse(const AnalysisInput& scene, Progress& progress) {
+  storage::Report report;
+  report.effects_simulated = scene.effects.listed();
+  // Which analyses run: geometry always; limit equilibrium unless the
+  // scene says "none"; the equilibrium path only when asked for.
+  if (scene.analysis.stability != "none") report.analyses.push_back("limit_equilibrium");
+  if (scene.analysis.stability == "equilibrium_path") report.analyses.push_back("equilibrium_path");
+  // Geometric checks are cheap and always run when the scene has the input.
+  if (scene.analysis.pyramids && !scene.joints.empty() && !scene.free_faces.empty()) {
+    progress.step("joint pyramids", 0.0);
+    report.timings_ms["pyramids"] = timed_ms([&] { analyse_pyramids(scene, report); });
+  }
+  if (scene.analysis.blocks && !scene.blocks.empty()) {
+    progress.step("blocks", 0.3);
+    report.timings_ms["blocks"] = timed_ms([&] { analyse_scene_blocks(scene, report, progress); });
+  }
+  if (scene.analysis.blocks && !scene.traces.empty()) {
+    progress.step("trace map", 0.6);
+    report.timings_ms["traces"] = timed_ms([&] { analyse_trace_blocks(scene, report, progress); });
+  }
+  progress.step("done", 1.0);
+  return report;
+}
+
+}  // namespace rockface::app

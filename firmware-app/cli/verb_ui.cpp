@@ -1,0 +1,87 @@
+// `rockface ui [--project P] [--camera SOURCE] [[--headless] --script STEPS.json --screenshots
+// DIR]`
+#include "firmware-app/cli/verb_ui.h"
+
+#include <iostream>
+
+#include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/services/ui_services.h"
+#include "ui/headless_session.h"
+#include "ui/platform/window_runner.h"
+
+namespace rockface::app {
+namespace {
+
+struct UiRequest {
+  std::string project, camera, projects_folder = ".", script, screenshots;
+  bool headless = false;
+  float scale = 1;
+  std::size_t max_triangles = ui::UiOptions{}.max_display_triangles;
+};
+
+int run_ui(const UiRequest& req) {
+  ui::UiOptions options;
+  options.project = req.project;
+  options.projects_folder = req.projects_folder;
+  options.scale = req.scale;
+  options.max_display_triangles = req.max_triangles;
+  StoreReconstructionRunner reconstruction;
+  StoreAnalysisRunner analysis;
+  FieldCameraConnector camera(req.camera);
+  const ui::FieldServices services{&reconstruction, &analysis, &camera};
+  if (req.script.empty()) {
+    ui::run_in_window(options, services);
+    return 0;
+  }
+  const ui::UiScript script = ui::load_ui_script(req.script);
+  ui::ScriptRun run;
+  if (req.headless) {
+    ui::HeadlessSession session(options, services, script.width, script.height);
+    std::cout << "renderer: " << session.renderer() << "\n";
+    run = ui::run_ui_script(session, script, req.screenshots);
+  } else {
+    run = ui::run_script_in_window(options, services, script, req.screenshots);
+  }
+  for (const auto& s : run.screenshots) std::cout << "screenshot " << s.string() << "\n";
+  std::cout << "status: " << run.status << "\n";
+  return 0;
+}
+
+VerbRun setup_ui(CLI::App& sub) {
+  auto req = std::make_shared<UiRequest>();
+  sub.add_option("--project", req->project, "project to open (*.rockface)")
+      ->check(CLI::ExistingFile);
+  sub.add_option("--camera", req->camera,
+                 "mock camera: a scene with an imaging section or a folder of captures "
+                 "(default: the DSLR over USB)");
+  sub.add_option("--projects-folder", req->projects_folder,
+                 "where the Project screen lists and creates projects (default: .)");
+  sub.add_option("--scale", req->scale, "UI scale, 1 = a 1280x800 tablet")
+      ->check(CLI::Range(0.3, 4.0));
+  sub.add_option("--max-triangles", req->max_triangles,
+                 "triangles the model view draws at most (the model is decimated for display)");
+  auto* headless = sub.add_flag("--headless", req->headless,
+                                "no window: surfaceless EGL (Mesa), replays --script");
+  auto* script = sub.add_option("--script", req->script,
+                                "STEPS.json: taps and screenshots to replay (in the window "
+                                "unless --headless), then exit")
+                     ->check(CLI::ExistingFile);
+  sub.add_option("--screenshots", req->screenshots, "folder for the script's screenshots")
+      ->needs(script);
+  headless->needs(script);
+  return [req] {
+    if (req->screenshots.empty()) req->screenshots = ".";
+    return run_ui(*req);
+  };
+}
+
+const VerbRegistrar reg{
+    "ui", "the tablet UI (a window; a script of taps replayed in it or headless)", setup_ui};
+
+}  // namespace
+
+int start_tablet_ui() {
+  return run_ui(UiRequest{});
+}
+
+}  // namespace rockface::app

@@ -1,0 +1,59 @@
+#include "firmware-app/render/synthetic_scene_from_scene.h"
+
+#include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/geometry/orientation.h"
+
+namespace rockface::app {
+
+SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& s) {
+  if (!s.imaging)
+    throw InputError(s.source + ": imaging",
+                     "missing: only a scene with an imaging section can be rendered");
+  if (s.patches.empty())
+    throw InputError(s.source + ": surface.patches",
+                     "missing: the scene has no surface for the cameras to see");
+  SyntheticSceneInput in;
+  // Render in datum-relative coordinates: survey coordinates of 10^6 m would
+  // lose millimetres in single-precision depth.
+  in.origin = s.has_datum ? s.datum : Eigen::Vector3d::Zero();
+  camera::SyntheticScene& out = in.scene;
+  for (const auto& p : s.patches) {
+    camera::SyntheticPatch patch{p.id, {}};
+    for (const auto& x : p.polygon) patch.polygon.push_back(x - in.origin);
+    out.patches.push_back(std::move(patch));
+  }
+  for (const auto& j : s.joints) {
+    if (!j.point) continue;  // orientation-only joints cut no trace
+    out.joints.push_back({j.id, geometry::plane_normal_deg(j.dip, j.dipdir), *j.point - in.origin});
+  }
+  const auto& im = *s.imaging;
+  auto& c = out.camera;
+  c.width = im.camera.width;
+  c.height = im.camera.height;
+  c.fx = im.camera.fx;
+  c.fy = im.camera.fy;
+  c.cx = im.camera.cx;
+  c.cy = im.camera.cy;
+  c.distortion = im.camera.distortion;
+  for (std::size_t k = 0; k + 1 < im.stations.size(); k += 2) {
+    std::array<camera::SyntheticStation, 2> pair;
+    for (std::size_t side = 0; side < 2; ++side)
+      pair[side] = {im.stations[k + side].position - in.origin,
+                    im.stations[k + side].look_at - in.origin};
+    in.pairs.push_back(pair);
+  }
+  out.stations = in.pairs.front();
+  if (im.range_pole)
+    out.range_pole = camera::SyntheticRangePole{
+        im.range_pole->base - in.origin, im.range_pole->length, im.range_pole->target_diameter};
+  if (im.reference_line)
+    out.reference_line =
+        std::make_pair(im.reference_line->first - in.origin, im.reference_line->second - in.origin);
+  out.effects = {im.effects.distortion, im.effects.noise_sigma, im.effects.blur_px,
+                 im.effects.exposure};
+  out.texture_seed = im.texture_seed;
+  return in;
+}
+
+}  // namespace rockface::app

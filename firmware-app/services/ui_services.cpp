@@ -1,0 +1,104 @@
+#include "firmware-app/services/ui_services.h"
+
+#include <filesystem>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "camera/gphoto2_camera.h"
+#include "camera/mock_camera.h"
+#include "camera/synthetic_renderer.h"
+#include "core/common/error.h"
+#include "core/photogrammetry/preset.h"
+#include "firmware-app/analysis/scene_analysis.h"
+#include "firmware-app/records/field_records.h"
+#include "firmware-app/render/synthetic_scene_from_scene.h"
+#include "storage/export_scene_json.h"
+#include "storage/project_store.h"
+#include "storage/scene.h"
+
+namespace rockface::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+cv::Mat decode(const storage::ImageBlob& blob, const std::string& where) {
+  cv::Mat image = cv::imdecode(blob.bytes, cv::IMREAD_COLOR);
+  if (image.empty()) throw InputError(where, "the stored image cannot be decoded");
+  return image;
+}
+
+}  // namespace
+
+storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project,
+                                                         storage::RecordId capture_id,
+                                                         Preset chosen, Progress& progress) {
+  progress.step("reading the pair", 0.01);
+  storage::ProjectStore store = storage::ProjectStore::open(project);
+  const storage::Capture capture = store.load_capture(capture_id);
+  const std::string where = "capture " + std::to_string(capture_id);
+  if (!capture.calibration_id)
+    throw InputError(where, "no calibration of the camera in the project (calibrate first)");
+  const photogrammetry::CameraIntrinsics k =
+      store.load_calibration(*capture.calibration_id).intrinsics;
+  const cv::Mat left = decode(capture.left, where + " left");
+  const cv::Mat right = decode(capture.right, where + " right");
+  photogrammetry::RegistrationSources sources;
+  if (const auto it = capture.settings.find("range_pole_m"); it != capture.settings.end())
+    sources.range_pole_m = std::stod(it->second);
+  const auto preset = photogrammetry::reconstruction_preset(chosen);
+  const auto rec = photogrammetry::reconstruct(left, right, k, k, preset, sources, progress);
+  progress.step("saving the model", 0.99);
+  return store.save_model(model_record(rec, capture_id,
+                                       {where + " left", where + " right", preset.name,
+                                        sources.range_pole_m, sources.baseline_m, sources.north}));
+}
+
+storage::RecordId StoreAnalysisRunner::analyse(const fs::path& project, storage::RecordId visit_id,
+                                               Progress& progress) {
+  progress.step("reading the visit", 0.01);
+  storage::ProjectStore store = storage::ProjectStore::open(project);
+  const storage::SceneSource source = storage::load_scene_source(store, visit_id);
+  const storage::Scene scene =
+      storage::parse_scene(storage::make_scene_json(source).dump(),
+                           project.string() + " visit " + std::to_string(visit_id));
+  const storage::Report report = app::analyse(analysis_input(scene), progress);
+  std::optional<storage::RecordId> model_id;
+  const auto models = store.list_models();
+  if (!models.empty()) model_id = models.back().id;
+  progress.step("saving the analysis", 0.99);
+  const storage::RecordId id =
+      store.save_analysis(analysis_record(report, visit_id, model_id, scene.analysis.preset));
+  // Which stored traces it took as one (pieces of a joint marked on different pairs).
+  std::string joined;
+  for (const auto& t : storage::scene_traces(source.measurements)) {
+    if (t.pieces.size() < 2) continue;
+    joined += joined.empty() ? "" : "; ";
+    joined += t.label + " =";
+    for (const auto& piece : t.pieces) joined += " " + piece;
+  }
+  if (!joined.empty())
+    store.log_action(visit_id, "analysis " + std::to_string(id) + " joined traces", joined);
+  return id;
+}
+
+std::unique_ptr<camera::Camera> FieldCameraConnector::connect() {
+  const fs::path spool = fs::temp_directory_path() / "rockface-ui-spool";
+  if (source_.empty()) {
+    camera::Gphoto2Camera::Options options;
+    options.spool_dir = spool.string();
+    fs::create_directories(spool);
+    return std::make_unique<camera::Gphoto2Camera>(options);
+  }
+  if (fs::is_directory(source_)) return camera::MockCamera::replay(source_, spool.string());
+  const storage::Scene scene = storage::load_scene(source_);
+  return camera::MockCamera::synthetic(synthetic_scene_from_scene(scene).scene, spool.string());
+}
+
+std::string FieldCameraConnector::describe() const {
+  if (source_.empty()) return "DSLR over USB (libgphoto2)";
+  if (fs::is_directory(source_)) return "mock camera: captures in " + source_;
+  return "mock camera: synthetic scene " + fs::path(source_).filename().string();
+}
+
+}  // namespace rockface::app
