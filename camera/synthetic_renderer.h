@@ -27,7 +27,7 @@
 
 #include "camera/synthetic_scene.h"
 #include "core/common/progress.h"
-#include "core/photogrammetry/camera_model.h"
+#include "core/photogrammetry/camera/camera_model.h"
 
 namespace rockface::camera {
 

@@ -15,7 +15,7 @@
 
 #include <Eigen/Core>
 
-#include "core/photogrammetry/camera_model.h"
+#include "core/photogrammetry/camera/camera_model.h"
 
 namespace rockface::camera {
 

@@ -11,7 +11,7 @@
 // field ("site.camera.json: fx: must be positive").
 #include <string>
 
-#include "core/photogrammetry/camera_model.h"
+#include "core/photogrammetry/camera/camera_model.h"
 
 namespace rockface::storage {
 

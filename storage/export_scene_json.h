@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/photogrammetry/trace_pieces.h"
+#include "core/photogrammetry/surface/trace_pieces.h"
 #include "storage/project_records.h"
 
 namespace rockface::storage {

@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "core/photogrammetry/surface_mesh.h"
+#include "core/photogrammetry/surface/surface_mesh.h"
 
 namespace rockface::storage {
 

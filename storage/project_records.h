@@ -18,8 +18,8 @@
 
 #include <Eigen/Core>
 
-#include "core/photogrammetry/camera_model.h"
-#include "core/photogrammetry/registration.h"
+#include "core/photogrammetry/camera/camera_model.h"
+#include "core/photogrammetry/estimators/registration.h"
 
 namespace rockface::storage {
 
@@ -128,7 +128,7 @@ struct Model {
   Registration registration;
   std::vector<RegistrationResidual> residuals;
   // The map from the reconstruction's camera frame (the left camera's, of
-  // core/photogrammetry/relative_orientation.h) to the frame of `mesh`: what
+  // core/photogrammetry/estimators/relative_orientation.h) to the frame of `mesh`: what
   // a view of the model's photographs needs (measure::left_view). A model
   // registered on its own (range pole, control points, none) has its
   // registration here, and save_model takes that when this is not given. A

@@ -4,8 +4,8 @@
 // registered, and how accurate it is predicted and measured to be.
 #include <string>
 
-#include "core/photogrammetry/multi_image_registration.h"
-#include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/estimators/multi_image_registration.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
 
 namespace rockface::storage {
 

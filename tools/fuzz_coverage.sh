@@ -19,15 +19,17 @@ find "$build" -name '*.gcda' -delete
 "$build/tests/fuzz/fuzz_tests" --gtest_brief=1
 # The parsers: a file per input kind (the project file: the store's sources).
 parsers=(
-  storage/scene_json.cpp storage/camera_json.cpp core/photogrammetry/registration.cpp
-  core/photogrammetry/reference_line.cpp storage/ply_reader.cpp camera/exif.cpp
+  storage/scene_json.cpp storage/camera_json.cpp core/photogrammetry/estimators/registration.cpp
+  core/photogrammetry/targets/reference_line.cpp storage/ply_reader.cpp camera/exif.cpp
   storage/project_store.cpp storage/project_store_captures.cpp storage/project_store_survey.cpp
   storage/project_store_cameras.cpp storage/project_sqlite.cpp storage/project_schema.cpp
   storage/project_blobs.cpp
 )
 root=$PWD
 for src in "${parsers[@]}"; do
-  obj=$(find "$root/$build/$(dirname "$src")" -name "$(basename "$src").o" | head -1)
+  dir=$(dirname "$src")
+  while [ ! -d "$root/$build/$dir" ] && [ "$dir" != . ]; do dir=$(dirname "$dir"); done
+  obj=$(find "$root/$build/$dir" -name "$(basename "$src").o" | head -1)
   [ -n "$obj" ] || { echo "$src: no object file"; continue; }
   gcov -b -n -o "$obj" "$root/$src" 2>/dev/null |
     awk -v f="$src" '

@@ -13,7 +13,7 @@
 #include "core/blocks/polyhedron.h"
 #include "core/geometry/cone.h"
 #include "core/geometry/verdict.h"
-#include "core/kinematics/effect.h"
+#include "core/kinematics/effects/effect.h"
 #include "core/kinematics/sliding_mode.h"
 
 namespace rockface::kinematics {

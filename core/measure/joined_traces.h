@@ -8,7 +8,7 @@
 
 #include "core/measure/pick_measurement.h"
 #include "core/measure/plane_measurement.h"
-#include "core/photogrammetry/trace_pieces.h"
+#include "core/photogrammetry/surface/trace_pieces.h"
 
 namespace rockface::measure {
 

@@ -12,7 +12,7 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
-#include "core/photogrammetry/surface_mesh.h"
+#include "core/photogrammetry/surface/surface_mesh.h"
 
 namespace rockface::measure {
 

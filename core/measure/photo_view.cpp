@@ -6,7 +6,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "core/common/error.h"
-#include "core/photogrammetry/camera_cv.h"
+#include "core/photogrammetry/camera/camera_cv.h"
 
 namespace rockface::measure {
 

@@ -9,9 +9,9 @@
 
 #include <Eigen/Core>
 
-#include "core/photogrammetry/camera_model.h"
-#include "core/photogrammetry/registration.h"
-#include "core/photogrammetry/surface_mesh.h"
+#include "core/photogrammetry/camera/camera_model.h"
+#include "core/photogrammetry/estimators/registration.h"
+#include "core/photogrammetry/surface/surface_mesh.h"
 
 namespace rockface::measure {
 
@@ -49,7 +49,7 @@ std::vector<Eigen::Vector2d> project_to_view(const PhotoView& view,
                                              const std::vector<Eigen::Vector3d>& points);
 
 // The views of a registered two-view model. The model frame is the left
-// camera's (core/photogrammetry/relative_orientation.h) and model_to_world
+// camera's (core/photogrammetry/estimators/relative_orientation.h) and model_to_world
 // maps it onto the mesh's frame; the right camera sits at R_rel, t_rel from
 // the left (x_right = R_rel x_left + t_rel). A stored project keeps
 // model_to_world as its registration.

@@ -16,7 +16,7 @@
 #include "core/measure/photo_view.h"
 #include "core/measure/picks.h"
 #include "core/measure/plane_measurement.h"
-#include "core/photogrammetry/trace_pieces.h"
+#include "core/photogrammetry/surface/trace_pieces.h"
 
 namespace rockface::measure {
 

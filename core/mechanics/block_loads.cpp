@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/kinematics/effect_force.h"
+#include "core/kinematics/effects/effect_force.h"
 
 namespace rockface::mechanics {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The scene's effects (core/kinematics/effect_*.h) as loads on a rigid
+// The scene's effects (core/kinematics/effects/effect_*.h) as loads on a rigid
 // block that moves and turns: each load is a force at a point fixed in the
 // block, either fixed in direction (gravity, seismic, bolts, "space"
 // forces) or following the block's rotation (water pressure on a joint
@@ -20,7 +20,7 @@
 
 #include "core/blocks/mass_properties.h"
 #include "core/blocks/polyhedron.h"
-#include "core/kinematics/effect.h"
+#include "core/kinematics/effects/effect.h"
 
 namespace rockface::mechanics {
 

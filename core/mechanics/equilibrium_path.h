@@ -34,7 +34,7 @@
 #include "core/blocks/polyhedron.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
-#include "core/kinematics/effect.h"
+#include "core/kinematics/effects/effect.h"
 #include "core/mechanics/joint_law.h"
 #include "core/mechanics/stability_analysis.h"
 

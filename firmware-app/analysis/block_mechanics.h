@@ -7,7 +7,7 @@
 #include "core/blocks/mass_properties.h"
 #include "core/blocks/polyhedron.h"
 #include "core/common/progress.h"
-#include "core/kinematics/effect.h"
+#include "core/kinematics/effects/effect.h"
 #include "firmware-app/analysis/analysis_input.h"
 #include "storage/report.h"
 

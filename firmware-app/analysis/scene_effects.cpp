@@ -3,11 +3,11 @@
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
-#include "core/kinematics/effect_bolt.h"
-#include "core/kinematics/effect_force.h"
-#include "core/kinematics/effect_gravity.h"
-#include "core/kinematics/effect_seismic.h"
-#include "core/kinematics/effect_water.h"
+#include "core/kinematics/effects/effect_bolt.h"
+#include "core/kinematics/effects/effect_force.h"
+#include "core/kinematics/effects/effect_gravity.h"
+#include "core/kinematics/effects/effect_seismic.h"
+#include "core/kinematics/effects/effect_water.h"
 
 namespace rockface::app {
 

@@ -2,7 +2,7 @@
 // The effects a scene lists, as the modules that act on single blocks in
 // limit equilibrium (gravity always): one composition for explicit blocks
 // and blocks from traces.
-#include "core/kinematics/effect.h"
+#include "core/kinematics/effects/effect.h"
 #include "firmware-app/analysis/analysis_input.h"
 
 namespace rockface::app {

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "core/photogrammetry/calibration.h"
+#include "core/photogrammetry/camera/calibration.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "storage/camera_json.h"
 

@@ -7,9 +7,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
-#include "core/measure/pair_photo.h"
 #include "core/common/preset.h"
-#include "core/photogrammetry/preset.h"
+#include "core/measure/pair_photo.h"
+#include "core/photogrammetry/reconstruction/preset.h"
 #include "firmware-app/records/project_mesh.h"
 #include "storage/camera_json.h"
 #include "storage/ply_reader.h"

@@ -13,7 +13,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/measure/photo_view.h"
-#include "core/photogrammetry/surface_mesh.h"
+#include "core/photogrammetry/surface/surface_mesh.h"
 #include "storage/project_records.h"
 #include "storage/project_store.h"
 

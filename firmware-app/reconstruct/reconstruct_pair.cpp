@@ -7,7 +7,7 @@
 
 #include "core/common/error.h"
 #include "core/common/preset.h"
-#include "core/photogrammetry/reference_line.h"
+#include "core/photogrammetry/targets/reference_line.h"
 #include "storage/camera_json.h"
 #include "storage/export_file.h"
 #include "storage/mesh_export.h"

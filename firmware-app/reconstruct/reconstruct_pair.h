@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/common/progress.h"
-#include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
 
 namespace rockface::app {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/common/preset.h"
-#include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "storage/project_records.h"
 #include "storage/reconstruction_report.h"
 #include "storage/report.h"

@@ -24,7 +24,7 @@ photogrammetry::SurfaceMesh surface_mesh(storage::Mesh&& m, int texture_width, i
   if (m.texcoords.size() == s.vertices.size() && texture_width > 0 && texture_height > 0) {
     s.texcoords.reserve(m.texcoords.size());
     s.pixels.reserve(m.texcoords.size());
-    // The inverse of core/photogrammetry/triangulation.cpp: u = (x + 0.5) / W,
+    // The inverse of core/photogrammetry/estimators/triangulation.cpp: u = (x + 0.5) / W,
     // v = 1 - (y + 0.5) / H.
     for (const auto& t : m.texcoords) {
       s.texcoords.emplace_back(t[0], t[1]);

@@ -1,6 +1,6 @@
 #pragma once
 // The reconstructed surface as the project stores it (storage::Mesh).
-#include "core/photogrammetry/surface_mesh.h"
+#include "core/photogrammetry/surface/surface_mesh.h"
 #include "storage/project_records.h"
 
 namespace rockface::app {

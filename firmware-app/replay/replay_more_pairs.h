@@ -11,8 +11,8 @@
 #include <opencv2/core.hpp>
 
 #include "core/common/progress.h"
-#include "core/photogrammetry/multi_image_registration.h"
-#include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/estimators/multi_image_registration.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
 #include "storage/project_store.h"
 

@@ -9,9 +9,9 @@
 #include <opencv2/core.hpp>
 
 #include "core/measure/pick_measurement.h"
-#include "core/photogrammetry/face_traces.h"
-#include "core/photogrammetry/preset.h"
-#include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/reconstruction/preset.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
+#include "core/photogrammetry/surface/face_traces.h"
 #include "firmware-app/replay/replay_more_pairs.h"
 #include "storage/project_records.h"
 #include "storage/scene.h"

@@ -8,7 +8,7 @@
 #include "camera/mock_camera.h"
 #include "camera/synthetic_renderer.h"
 #include "core/common/error.h"
-#include "core/photogrammetry/preset.h"
+#include "core/photogrammetry/reconstruction/preset.h"
 #include "firmware-app/analysis/scene_analysis.h"
 #include "firmware-app/records/field_records.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"

@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
-#include "core/photogrammetry/camera_model.h"
+#include "core/photogrammetry/camera/camera_model.h"
 #include "storage/project_store.h"
 
 namespace rockface::storage {

@@ -6,7 +6,7 @@
 
 #include "core/common/units.h"
 #include "core/measure/stereonet_image.h"
-#include "core/photogrammetry/camera_cv.h"
+#include "core/photogrammetry/camera/camera_cv.h"
 
 namespace rockface::storage {
 

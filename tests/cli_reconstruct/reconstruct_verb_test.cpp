@@ -15,7 +15,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "camera/synthetic_renderer.h"
-#include "core/photogrammetry/camera_cv.h"
+#include "core/photogrammetry/camera/camera_cv.h"
 #include "storage/camera_json.h"
 #include "tests/integration_reconstruct/synthetic_face.h"
 

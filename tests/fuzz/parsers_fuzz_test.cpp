@@ -27,8 +27,8 @@
 
 #include "camera/exif.h"
 #include "core/common/error.h"
-#include "core/photogrammetry/reference_line.h"
-#include "core/photogrammetry/registration.h"
+#include "core/photogrammetry/estimators/registration.h"
+#include "core/photogrammetry/targets/reference_line.h"
 #include "storage/camera_json.h"
 #include "storage/picks_json.h"
 #include "storage/ply_reader.h"

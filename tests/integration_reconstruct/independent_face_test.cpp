@@ -15,7 +15,7 @@
 
 #include "core/common/progress.h"
 #include "core/common/units.h"
-#include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "tests/core/photogrammetry/noise_texture.h"
 
 namespace rp = rockface::photogrammetry;

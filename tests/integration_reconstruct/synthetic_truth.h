@@ -14,8 +14,8 @@
 
 #include "camera/synthetic_renderer.h"
 #include "core/common/units.h"
-#include "core/photogrammetry/camera_cv.h"
-#include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/camera/camera_cv.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "tests/integration_reconstruct/synthetic_face.h"
 
 namespace rockface::testing {

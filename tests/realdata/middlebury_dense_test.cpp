@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/photogrammetry/dense_matching.h"
+#include "core/photogrammetry/matching/dense_matching.h"
 
 namespace rp = rockface::photogrammetry;
 

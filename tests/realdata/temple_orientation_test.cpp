@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/photogrammetry/feature_matching.h"
-#include "core/photogrammetry/relative_orientation.h"
-#include "core/photogrammetry/tie_point_refinement.h"
+#include "core/photogrammetry/estimators/relative_orientation.h"
+#include "core/photogrammetry/matching/feature_matching.h"
+#include "core/photogrammetry/matching/tie_point_refinement.h"
 
 namespace rp = rockface::photogrammetry;
 

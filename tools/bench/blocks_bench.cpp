@@ -13,8 +13,8 @@
 #include "core/blocks/mass_properties.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
-#include "core/kinematics/effect_gravity.h"
-#include "core/kinematics/effect_water.h"
+#include "core/kinematics/effects/effect_gravity.h"
+#include "core/kinematics/effects/effect_water.h"
 
 namespace {
 

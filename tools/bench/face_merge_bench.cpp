@@ -28,7 +28,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "core/photogrammetry/multi_image_registration.h"
+#include "core/photogrammetry/estimators/multi_image_registration.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
 #include "storage/project_store.h"

@@ -16,7 +16,7 @@
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
 #include "core/faces/trace_session.h"
-#include "core/kinematics/effect_gravity.h"
+#include "core/kinematics/effects/effect_gravity.h"
 #include "core/kinematics/quick_checks.h"
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"

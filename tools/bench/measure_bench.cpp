@@ -31,8 +31,8 @@
 #include "core/measure/least_cost_trace.h"
 #include "core/measure/mesh_picker.h"
 #include "core/measure/plane_measurement.h"
-#include "core/photogrammetry/preset.h"
-#include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/reconstruction/preset.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "tests/integration_reconstruct/synthetic_truth.h"
 
 namespace rm = rockface::measure;

@@ -20,8 +20,8 @@
 #include "core/blocks/mass_properties.h"
 #include "core/common/preset.h"
 #include "core/geometry/orientation.h"
-#include "core/kinematics/effect_force.h"
-#include "core/kinematics/effect_gravity.h"
+#include "core/kinematics/effects/effect_force.h"
+#include "core/kinematics/effects/effect_gravity.h"
 #include "core/mechanics/equilibrium_path.h"
 #include "tests/core/mechanics/mechanics_blocks.h"
 

@@ -18,7 +18,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/preset.h"
-#include "core/photogrammetry/dense_matching.h"
+#include "core/photogrammetry/matching/dense_matching.h"
 #include "tests/integration_reconstruct/synthetic_truth.h"
 
 namespace rp = rockface::photogrammetry;

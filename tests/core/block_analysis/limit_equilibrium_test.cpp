@@ -12,11 +12,11 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
-#include "core/kinematics/effect_bolt.h"
-#include "core/kinematics/effect_force.h"
-#include "core/kinematics/effect_gravity.h"
-#include "core/kinematics/effect_seismic.h"
-#include "core/kinematics/effect_water.h"
+#include "core/kinematics/effects/effect_bolt.h"
+#include "core/kinematics/effects/effect_force.h"
+#include "core/kinematics/effects/effect_gravity.h"
+#include "core/kinematics/effects/effect_seismic.h"
+#include "core/kinematics/effects/effect_water.h"
 
 namespace rockface::kinematics {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/photogrammetry/calibration.h"
+#include "core/photogrammetry/camera/calibration.h"
 
 #include <cmath>
 #include <filesystem>

@@ -16,7 +16,7 @@
 #include "core/faces/surface_loops.h"
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
-#include "core/kinematics/effect_gravity.h"
+#include "core/kinematics/effects/effect_gravity.h"
 #include "tests/core/faces/benched_slope.h"
 #include "tests/core/faces/trace_map_run.h"
 

@@ -15,7 +15,7 @@
 #include "core/geometry/orientation.h"
 #include "core/geometry/plane.h"
 #include "core/measure/photo_view.h"
-#include "core/photogrammetry/surface_mesh.h"
+#include "core/photogrammetry/surface/surface_mesh.h"
 
 namespace rockface::test {
 

@@ -9,7 +9,7 @@
 
 #include "core/measure/joined_traces.h"
 #include "core/measure/pair_photo.h"
-#include "core/photogrammetry/trace_pieces.h"
+#include "core/photogrammetry/surface/trace_pieces.h"
 
 namespace rockface::measure {
 namespace {

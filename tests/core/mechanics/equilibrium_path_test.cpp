@@ -12,7 +12,7 @@
 #include "core/blocks/mass_properties.h"
 #include "core/common/error.h"
 #include "core/kinematics/block_analysis.h"
-#include "core/kinematics/effect_water.h"
+#include "core/kinematics/effects/effect_water.h"
 #include "core/mechanics/contact_points.h"
 #include "core/mechanics/equilibrium_path.h"
 #include "tests/core/mechanics/mechanics_blocks.h"

@@ -13,8 +13,8 @@
 #include "core/blocks/construction.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
-#include "core/kinematics/effect_force.h"
-#include "core/kinematics/effect_gravity.h"
+#include "core/kinematics/effects/effect_force.h"
+#include "core/kinematics/effects/effect_gravity.h"
 #include "core/mechanics/joint_law.h"
 
 namespace rockface::mechanics::testing {

@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
-#include "core/photogrammetry/accuracy.h"
-#include "core/photogrammetry/preset.h"
+#include "core/photogrammetry/reconstruction/accuracy.h"
+#include "core/photogrammetry/reconstruction/preset.h"
 
 namespace rp = rockface::photogrammetry;
 

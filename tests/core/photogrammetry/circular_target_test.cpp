@@ -8,8 +8,8 @@
 
 #include "core/common/error.h"
 #include "core/common/units.h"
-#include "core/photogrammetry/camera_cv.h"
-#include "core/photogrammetry/circular_target.h"
+#include "core/photogrammetry/camera/camera_cv.h"
+#include "core/photogrammetry/targets/circular_target.h"
 
 namespace rp = rockface::photogrammetry;
 

@@ -5,8 +5,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.h"
-#include "core/photogrammetry/camera_cv.h"
-#include "core/photogrammetry/reconstruction.h"
+#include "core/photogrammetry/camera/camera_cv.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "tests/core/photogrammetry/noise_texture.h"
 
 namespace rp = rockface::photogrammetry;

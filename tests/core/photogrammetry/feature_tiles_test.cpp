@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
-#include "core/photogrammetry/feature_matching.h"
-#include "core/photogrammetry/preset.h"
+#include "core/photogrammetry/matching/feature_matching.h"
+#include "core/photogrammetry/reconstruction/preset.h"
 #include "tests/core/photogrammetry/noise_texture.h"
 
 namespace rp = rockface::photogrammetry;

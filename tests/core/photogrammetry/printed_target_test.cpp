@@ -13,7 +13,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/units.h"
-#include "core/photogrammetry/circular_target.h"
+#include "core/photogrammetry/targets/circular_target.h"
 #include "tests/core/photogrammetry/noise_texture.h"
 #include "tests/core/photogrammetry/printed_target.h"
 

@@ -8,7 +8,7 @@
 
 #include "core/common/error.h"
 #include "core/common/units.h"
-#include "core/photogrammetry/registration.h"
+#include "core/photogrammetry/estimators/registration.h"
 
 namespace rp = rockface::photogrammetry;
 using rockface::deg_to_rad;

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
-#include "core/photogrammetry/trace_pieces.h"
+#include "core/photogrammetry/surface/trace_pieces.h"
 
 namespace rp = rockface::photogrammetry;
 

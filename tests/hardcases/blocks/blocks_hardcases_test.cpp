@@ -15,7 +15,7 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
-#include "core/kinematics/effect_gravity.h"
+#include "core/kinematics/effects/effect_gravity.h"
 #include "tests/core/blocks/block_shapes.h"
 
 namespace rockface::blocks {

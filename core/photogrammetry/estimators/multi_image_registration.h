@@ -1,0 +1,101 @@
+#pragma once
+// Several 3D images of one face (one visit): registers the second, third, ...
+// stereo reconstruction to the first, master-slave as in the field workflow.
+// For each slave:
+//   1. tie points: SIFT matches (feature_matching) between its left photograph
+//      and that of an image already in the face frame, lifted to both surfaces
+//      through the pixels of the lattice vertices;
+//   2. a similarity transform (Eigen::umeyama) estimated robustly (RANSAC over
+//      3-point samples, then all inliers), so a slave may be unscaled and
+//      unoriented (model units of its own base);
+//   3. refined on the overlapping surface by point-to-plane ICP
+//      (cv::ppf_match_3d::ICP, OpenCV's surface_matching module);
+// then, when ground control points are given (three or more, on any image),
+// the whole block is moved onto them (registration.h's Umeyama fit) and each
+// point's residual is kept. A slave that shares too few tie points with every
+// image already placed is refused, by name: it does not overlap, or shows
+// another face.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include "core/common/progress.h"
+#include "core/photogrammetry/estimators/registration.h"
+#include "core/photogrammetry/reconstruction/preset.h"
+#include "core/photogrammetry/surface/surface_mesh.h"
+
+namespace rockface::photogrammetry {
+
+// One 3D image: a reconstructed surface and the photograph its vertices'
+// pixels refer to. The first image's frame is the face frame.
+struct FaceImage {
+  std::string name;    // how errors and reports name it ("pair 2", a capture label)
+  cv::Mat photograph;  // the left image of the pair, 8-bit grey or BGR
+  SurfaceMesh mesh;    // in the image's own frame (registered or model units)
+  double sigma_z = 0;  // predicted depth precision at the face, in the mesh's units
+};
+
+// A control point seen in one image.
+struct FaceControlPoint {
+  std::string id;
+  int image = 0;                                    // index into the images
+  Eigen::Vector2d pixel = Eigen::Vector2d::Zero();  // in that image's photograph
+  Eigen::Vector3d world = Eigen::Vector3d::Zero();  // surveyed, absolute coordinates
+};
+
+struct MultiImageOptions {
+  // Fewer 3D tie points (RANSAC inliers) than this with every placed image:
+  // the pair does not overlap (SIFT on unrelated rock still gives a few
+  // chance matches that agree with some similarity; 20 is well above that).
+  int min_tie_points = 20;
+  int ransac_iterations = 400;
+  // Tie-point inlier distance, in units of the reference image's predicted
+  // depth precision sigma_z plus one point spacing (the vertex picked at a
+  // pixel is up to one lattice cell off the true point): two independent
+  // depth errors at 3 sigma each.
+  double inlier_sigmas = 4.0;
+  // Surface points of a slave closer to the reference surface than this
+  // many inlier distances count as overlap (used for ICP and the residual).
+  double overlap_distance_factor = 1.0;
+  int icp_iterations = 40;
+  int icp_levels = 4;
+  std::size_t icp_max_points = 20000;  // surface points per cloud fed to ICP
+  std::uint64_t seed = 1;
+};
+
+// How well one image fits the face.
+struct ImageResidual {
+  std::string name;
+  int reference = -1;                   // the image it was registered to; -1 for the master
+  int tie_points = 0;                   // RANSAC inliers (3D tie points)
+  double tie_rms_m = 0;                 // their RMS distance after the final transform, face units
+  double overlap = 0;                   // fraction of its surface lying on the reference surface
+  double surface_rms_m = 0;             // RMS point-to-plane distance there, after ICP
+  double surface_rms_before_icp_m = 0;  // the same after the tie-point similarity alone
+  Similarity to_face;                   // its frame -> face frame (after ground control, if any)
+};
+
+struct FaceRegistration {
+  std::vector<ImageResidual> images;  // one per input image, same order
+  // Ground control: the face frame is then datum-relative world, absolute =
+  // face + datum; without ground control the datum is zero.
+  std::optional<ControlPointRegistration> control_points;
+  Eigen::Vector3d datum = Eigen::Vector3d::Zero();
+};
+
+// Registers images[1..] to images[0] (each to the placed image it shares most
+// tie points with). Throws InputError naming the image that overlaps no
+// placed image, or a control point whose pixel has no surface.
+FaceRegistration register_face_images(const std::vector<FaceImage>& images,
+                                      const std::vector<FaceControlPoint>& control_points,
+                                      const ReconstructionPreset& preset,
+                                      const MultiImageOptions& options, Progress& progress);
+
+// All surfaces in the face frame, one mesh (triangles re-indexed; pixels and
+// texture coordinates keep referring to each image's own photograph).
+SurfaceMesh merged_surface(const std::vector<FaceImage>& images, const FaceRegistration& face);
+
+}  // namespace rockface::photogrammetry

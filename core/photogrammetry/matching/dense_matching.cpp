@@ -1,0 +1,168 @@
+#include "core/photogrammetry/matching/dense_matching.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/common/error.h"
+#include "core/photogrammetry/camera/camera_cv.h"
+
+namespace rockface::photogrammetry {
+
+namespace {
+
+cv::Mat sgbm_disparity(const cv::Mat& left, const cv::Mat& right, const DisparityRange& range,
+                       const ReconstructionPreset& p) {
+  const int channels = left.channels();
+  const int block = p.sgbm_block_size | 1;
+  auto sgbm = cv::StereoSGBM::create(
+      range.min_disparity, range.num_disparities, block,
+      p.sgbm_p1_per_channel * channels * block * block,
+      p.sgbm_p2_per_channel * channels * block * block,
+      /*disp12MaxDiff=*/-1, /*preFilterCap=*/63, p.uniqueness_ratio,
+      /*speckleWindowSize=*/0, /*speckleRange=*/0,
+      p.sgbm_three_way ? cv::StereoSGBM::MODE_SGBM_3WAY : cv::StereoSGBM::MODE_SGBM);
+  cv::Mat disparity;  // CV_16S, 1/16 px
+  sgbm->compute(left, right, disparity);
+  return disparity;
+}
+
+}  // namespace
+
+DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const DisparityRange& range,
+                             const ReconstructionPreset& preset, Progress& progress) {
+  if (left.size() != right.size() || left.type() != right.type())
+    throw InputError("rectified pair", "left and right differ in size or type");
+  if (range.num_disparities <= 0 || range.num_disparities % 16 != 0)
+    throw InputError("disparity range",
+                     "the number of disparities must be a positive multiple of 16");
+
+  progress.step("dense matching: left", 0.0);
+  const cv::Mat disp_left = sgbm_disparity(left, right, range, preset);
+  progress.step("dense matching: right", 0.45);
+  // The right image's disparity: SGBM on the mirrored pair with the roles
+  // swapped has the same disparity range (x'_r - d = x'_l in mirrored columns).
+  cv::Mat left_flip, right_flip, disp_right;
+  cv::flip(left, left_flip, 1);
+  cv::flip(right, right_flip, 1);
+  const cv::Mat disp_right_flip = sgbm_disparity(right_flip, left_flip, range, preset);
+  left_flip.release();
+  right_flip.release();
+  cv::flip(disp_right_flip, disp_right, 1);
+  progress.step("dense matching: consistency", 0.9);
+
+  const short invalid = static_cast<short>((range.min_disparity - 1) * 16);
+  const int max_diff16 = preset.lr_max_difference_px * 16;
+  cv::Mat checked = disp_left.clone();
+  std::size_t matched = 0, rejected = 0;
+  for (int y = 0; y < checked.rows; ++y) {
+    short* d = checked.ptr<short>(y);
+    const short* dr = disp_right.ptr<short>(y);
+    for (int x = 0; x < checked.cols; ++x) {
+      if (d[x] <= invalid) continue;
+      ++matched;
+      const int xr = x - static_cast<int>(std::lround(d[x] / 16.0));
+      if (xr < 0 || xr >= checked.cols || dr[xr] <= invalid ||
+          std::abs(d[x] - dr[xr]) > max_diff16) {
+        d[x] = invalid;
+        ++rejected;
+      }
+    }
+  }
+  cv::filterSpeckles(checked, invalid, preset.speckle_window,
+                     static_cast<int>(std::lround(preset.speckle_range_px * 16)));
+
+  DisparityMap out;
+  out.range = range;
+  out.disparity.create(checked.size(), CV_32F);
+  std::size_t valid = 0;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int y = 0; y < checked.rows; ++y) {
+    const short* d = checked.ptr<short>(y);
+    float* o = out.disparity.ptr<float>(y);
+    for (int x = 0; x < checked.cols; ++x) {
+      if (d[x] <= invalid) {
+        o[x] = nan;
+      } else {
+        o[x] = d[x] / 16.0f;
+        ++valid;
+      }
+    }
+  }
+  out.valid_fraction = static_cast<double>(valid) / static_cast<double>(checked.total());
+  out.lr_rejected_fraction =
+      matched ? static_cast<double>(rejected) / static_cast<double>(matched) : 0;
+  progress.step("dense matching", 1.0);
+  return out;
+}
+
+Rectification rectify(const CameraIntrinsics& left, const CameraIntrinsics& right,
+                      const RelativeOrientation& ro, double scale) {
+  Rectification r;
+  r.scale = scale;
+  const CameraIntrinsics l = scaled(left, scale), rt = scaled(right, scale);
+  r.size = cv::Size(l.width, l.height);
+  cv::Matx33d R;
+  cv::Vec3d T;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) R(i, j) = ro.R(i, j);
+    T[i] = ro.t(i);
+  }
+  cv::Mat R1, R2, P1, P2, Q;
+  // alpha = 0: the rectified images show only valid pixels, so SGBM never
+  // matches the black border of the warp.
+  cv::stereoRectify(camera_matrix(l), distortion_vector(l), camera_matrix(rt),
+                    distortion_vector(rt), r.size, R, T, R1, R2, P1, P2, Q, 0, 0.0, r.size);
+  R1.copyTo(r.R1);
+  R2.copyTo(r.R2);
+  P1.copyTo(r.P1);
+  P2.copyTo(r.P2);
+  Q.copyTo(r.Q);
+  if (std::abs(r.P2(1, 3)) > std::abs(r.P2(0, 3)))
+    throw InputError("left/right images",
+                     "the base between the two stations is mostly vertical; take the second "
+                     "photograph beside the first, not above or below it");
+  cv::initUndistortRectifyMap(camera_matrix(l), distortion_vector(l), R1, P1, r.size, CV_32FC1,
+                              r.map1x, r.map1y);
+  cv::initUndistortRectifyMap(camera_matrix(rt), distortion_vector(rt), R2, P2, r.size, CV_32FC1,
+                              r.map2x, r.map2y);
+  return r;
+}
+
+DisparityRange disparity_range_from_inliers(const RelativeOrientation& ro,
+                                            const Rectification& rect, const CameraIntrinsics& left,
+                                            const CameraIntrinsics& right,
+                                            const ReconstructionPreset& preset) {
+  const CameraIntrinsics l = scaled(left, rect.scale), r = scaled(right, rect.scale);
+  std::vector<cv::Point2d> pl, pr, ql, qr;
+  const double s = rect.scale;
+  for (std::size_t i = 0; i < ro.left.size(); ++i) {
+    pl.emplace_back((ro.left[i].x() + 0.5) * s - 0.5, (ro.left[i].y() + 0.5) * s - 0.5);
+    pr.emplace_back((ro.right[i].x() + 0.5) * s - 0.5, (ro.right[i].y() + 0.5) * s - 0.5);
+  }
+  cv::undistortPoints(pl, ql, camera_matrix(l), distortion_vector(l), rect.R1, rect.P1);
+  cv::undistortPoints(pr, qr, camera_matrix(r), distortion_vector(r), rect.R2, rect.P2);
+  std::vector<double> d;
+  for (std::size_t i = 0; i < ql.size(); ++i) d.push_back(ql[i].x - qr[i].x);
+  if (d.empty())
+    throw InputError("left/right images", "no tie points to bound the disparity search");
+  std::sort(d.begin(), d.end());
+  // 1st and 99th percentile: a stray inlier must not blow up the search.
+  const double lo = d[d.size() / 100], hi = d[d.size() - 1 - d.size() / 100];
+  const double pad = preset.disparity_margin * (hi - lo) + 8.0;
+  int min_d = static_cast<int>(std::floor(lo - pad));
+  int num = static_cast<int>(std::ceil(hi + pad)) - min_d;
+  num = (num + 15) / 16 * 16;
+  if (num > preset.max_disparities) {
+    // Keep the window centred on the median tie point.
+    const double med = d[d.size() / 2];
+    num = preset.max_disparities / 16 * 16;
+    min_d = static_cast<int>(std::lround(med)) - num / 2;
+  }
+  return {min_d, std::max(num, 16)};
+}
+
+}  // namespace rockface::photogrammetry

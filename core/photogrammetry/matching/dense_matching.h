@@ -1,0 +1,56 @@
+#pragma once
+// Rectification and dense matching: the oriented pair is rectified
+// (cv::stereoRectify), matched by semi-global matching (cv::StereoSGBM) at the
+// preset's image scale with sub-pixel disparities, checked left against right
+// (a second SGBM on the mirrored pair gives the right disparity), and cleaned
+// of speckles (cv::filterSpeckles).
+#include <opencv2/core.hpp>
+
+#include "core/common/progress.h"
+#include "core/photogrammetry/camera/camera_model.h"
+#include "core/photogrammetry/estimators/relative_orientation.h"
+#include "core/photogrammetry/reconstruction/preset.h"
+
+namespace rockface::photogrammetry {
+
+// Disparities of a rectified pair: float, pixels, NaN where unknown.
+// x_right = x_left - d.
+struct DisparityRange {
+  int min_disparity = 0;
+  int num_disparities = 64;  // a multiple of 16
+};
+
+struct DisparityMap {
+  cv::Mat disparity;  // CV_32F, NaN = no valid match
+  DisparityRange range;
+  double valid_fraction = 0;        // of all pixels
+  double lr_rejected_fraction = 0;  // of the pixels SGBM matched, removed by the left-right check
+};
+
+// Matches a rectified pair (8-bit grey or BGR, same size) over `range`.
+DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const DisparityRange& range,
+                             const ReconstructionPreset& preset, Progress& progress);
+
+// The rectification of an oriented pair at a working scale.
+struct Rectification {
+  double scale = 1;    // of the rectified images relative to the originals
+  cv::Size size;       // rectified image size
+  cv::Matx33d R1, R2;  // rotation from each original camera into its rectified frame
+  cv::Matx34d P1, P2;  // rectified projections
+  cv::Matx44d Q;       // disparity to depth (OpenCV's convention)
+  cv::Mat map1x, map1y, map2x, map2y;  // remap tables (CV_32F), originals -> rectified
+  double focal_px() const { return P1(0, 0); }
+  double base() const { return -P2(0, 3) / P2(0, 0); }  // model units (|t| = 1 model)
+};
+
+Rectification rectify(const CameraIntrinsics& left, const CameraIntrinsics& right,
+                      const RelativeOrientation& ro, double scale);
+
+// The disparity search range from the sparse inliers, widened by the preset's
+// margin and capped at preset.max_disparities around the median.
+DisparityRange disparity_range_from_inliers(const RelativeOrientation& ro,
+                                            const Rectification& rect, const CameraIntrinsics& left,
+                                            const CameraIntrinsics& right,
+                                            const ReconstructionPreset& preset);
+
+}  // namespace rockface::photogrammetry
