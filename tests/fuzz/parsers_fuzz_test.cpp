@@ -54,12 +54,16 @@ void write_bytes(const fs::path& p, const std::string& bytes) {
   out << bytes;
 }
 
-std::vector<std::string> files_in(const fs::path& dir, const std::string& prefix = "") {
+std::vector<std::string> files_in(const fs::path& dir, const std::string& prefix = "",
+                                  const std::string& suffix = "") {
   std::vector<fs::path> paths;
   if (fs::exists(dir))
-    for (const auto& e : fs::directory_iterator(dir))
-      if (e.is_regular_file() && e.path().filename().string().rfind(prefix, 0) == 0)
+    for (const auto& e : fs::directory_iterator(dir)) {
+      const std::string name = e.path().filename().string();
+      if (e.is_regular_file() && name.rfind(prefix, 0) == 0 && name.size() >= suffix.size() &&
+          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
         paths.push_back(e.path());
+    }
   std::sort(paths.begin(), paths.end());  // a fixed order: the same inputs every run
   std::vector<std::string> out;
   for (const auto& p : paths) out.push_back(read_bytes(p));
@@ -140,14 +144,18 @@ void fuzz(const std::string& name, const std::vector<std::string>& seeds, bool t
 
 TEST(Fuzz, SceneJson) {
   std::vector<std::string> seeds = files_in(kCorpus / "scene");
-  for (const auto& s : files_in(fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples"))
+  // The sample scenes (tools/samples also holds sample picks and a README).
+  for (const auto& s : files_in(fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples", "", ".scene.json"))
     seeds.push_back(s);
   fuzz("scene", seeds, true, iterations(200000),
        [](const std::string& in) { rockface::storage::parse_scene(in, "fuzz.scene.json"); });
 }
 
 TEST(Fuzz, PicksJson) {
-  fuzz("picks", files_in(kCorpus / "picks"), true, iterations(100000),
+  std::vector<std::string> seeds = files_in(kCorpus / "picks");
+  for (const auto& s : files_in(fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples", "", ".picks.json"))
+    seeds.push_back(s);
+  fuzz("picks", seeds, true, iterations(100000),
        [](const std::string& in) { rockface::storage::parse_picks(in, "fuzz.picks.json"); });
 }
 
