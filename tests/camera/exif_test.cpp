@@ -1,4 +1,5 @@
 #include "camera/exif.h"
+#include "tests/support/test_paths.h"
 
 #include <filesystem>
 #include <fstream>
@@ -71,7 +72,8 @@ TEST(Exif, NoExifGivesAnEmptyRecord) {
   EXPECT_TRUE(read_exif(small_jpeg()).empty());
   // The OpenCV sample images carry no EXIF either.
   EXPECT_TRUE(
-      read_exif_file(ROCKFACE_SHARED_DIR "/data/calib-opencv-chessboard/left01.jpg").empty());
+      read_exif_file(std::string(ROCKFACE_SHARED_DIR) + "/data/calib-opencv-chessboard/left01.jpg")
+          .empty());
 }
 
 TEST(Exif, DamagedBlockIsNotTrusted) {

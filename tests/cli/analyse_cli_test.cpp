@@ -1,6 +1,7 @@
 // `rockface analyse` as a user runs it: the real binary, real files.
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/test_paths.h"
 
 #include <algorithm>
 #include <cstdio>

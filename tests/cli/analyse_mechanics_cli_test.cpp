@@ -6,6 +6,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include "tests/support/test_paths.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

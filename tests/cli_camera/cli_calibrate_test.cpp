@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include "tests/support/test_paths.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -14,7 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using rockface::test::run_rockface;
-const std::string kDir = ROCKFACE_SHARED_DIR "/data/calib-opencv-chessboard";
+const std::string kDir = std::string(ROCKFACE_SHARED_DIR) + "/data/calib-opencv-chessboard";
 
 std::string left_images(int count) {
   std::vector<std::string> names;

@@ -3,6 +3,7 @@
 // code, its files and its one-line errors.
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/test_paths.h"
 
 #include <cstdlib>
 #include <filesystem>

@@ -11,6 +11,7 @@
 // The inputs tried per parser are bounded (CI); ROCKFACE_FUZZ_ITERATIONS
 // multiplies them and ROCKFACE_FUZZ_SEED changes them (docs/fuzzing.md).
 #include <unistd.h>
+#include "tests/support/test_paths.h"
 
 #include <algorithm>
 #include <chrono>

@@ -4,6 +4,7 @@
 // the first and stored in its frame with their residuals.
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/test_paths.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,6 +4,7 @@
 // visit, not a duplicate.
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/test_paths.h"
 
 #include <cstdlib>
 #include <filesystem>

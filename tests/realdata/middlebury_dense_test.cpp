@@ -2,6 +2,7 @@
 // Pal, CVPR 2007): real stone texture, rectified, with true disparities.
 #include <cmath>
 #include <string>
+#include "tests/support/test_paths.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>

@@ -4,6 +4,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include "tests/support/test_paths.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>

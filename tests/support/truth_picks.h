@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 #include <vector>
+#include "tests/support/test_paths.h"
 
 #include <nlohmann/json.hpp>
 

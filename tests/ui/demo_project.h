@@ -3,6 +3,7 @@
 // face (fast preset), made once per test binary; tests that write get a copy.
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/test_paths.h"
 
 #include <cstdlib>
 #include <filesystem>

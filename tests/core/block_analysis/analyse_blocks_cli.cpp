@@ -4,6 +4,7 @@
 // input.
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/test_paths.h"
 
 #include <cmath>
 #include <cstdlib>

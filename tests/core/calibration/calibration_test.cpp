@@ -1,4 +1,5 @@
 #include "core/photogrammetry/camera/calibration.h"
+#include "tests/support/test_paths.h"
 
 #include <cmath>
 #include <filesystem>
@@ -16,7 +17,8 @@ namespace rockface::photogrammetry {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kChessboardDir = ROCKFACE_SHARED_DIR "/data/calib-opencv-chessboard";
+const std::string kChessboardDir =
+    std::string(ROCKFACE_SHARED_DIR) + "/data/calib-opencv-chessboard";
 
 std::vector<std::string> left_images() {
   std::vector<std::string> paths;

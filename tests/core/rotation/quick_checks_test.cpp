@@ -5,6 +5,7 @@
 //   ROCKFACE_WRITE_QUICK_CHECKS=tests/core/rotation/data/quick_checks_reference.txt
 //   build/release/tests/core/rotation/rotation_tests --gtest_filter='QuickChecks.*'
 #include "core/kinematics/quick_checks.h"
+#include "tests/support/test_paths.h"
 
 #include <cstdlib>
 #include <fstream>
