@@ -8,6 +8,7 @@
 #include <opencv2/core/eigen.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "camera/ray_patch_bins.h"
 #include "camera/rock_texture.h"
 #include "core/common/error.h"
 
@@ -165,10 +166,15 @@ struct Tracer {
   RockTexture texture;
   double inv_focal;  // 1 / fx: pixel footprint per metre of depth
 
-  double nearest_patch(const Vector3d& C, const Vector3d& d, int& which) const {
+  // `candidates`: the patches the ray can hit (RayPatchBins), in patch
+  // order; nullptr tests every patch.
+  double nearest_patch(const Vector3d& C, const Vector3d& d, int& which,
+                       const std::vector<int>* candidates = nullptr) const {
     double best = kInf;
     which = -1;
-    for (size_t k = 0; k < scene.patches.size(); ++k) {
+    const size_t count = candidates ? candidates->size() : scene.patches.size();
+    for (size_t i = 0; i < count; ++i) {
+      const size_t k = candidates ? static_cast<size_t>((*candidates)[i]) : i;
       const PreparedPatch& p = scene.patches[k];
       const double denom = p.normal.dot(d);
       if (std::abs(denom) < 1e-12) continue;
@@ -204,11 +210,12 @@ struct Tracer {
     return t;
   }
 
-  Hit trace(const Vector3d& C, const Vector3d& d) const {
+  Hit trace(const Vector3d& C, const Vector3d& d,
+            const std::vector<int>* candidates = nullptr) const {
     Hit hit;
     const double dn = d.norm();
     int which = -1;
-    const double t_patch = nearest_patch(C, d, which);
+    const double t_patch = nearest_patch(C, d, which, candidates);
     // Targets are plates mounted on the pole: they win over the pole inside
     // their disk, and over a patch only when nearer.
     for (const auto& target : scene.targets) {
@@ -351,6 +358,15 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
   const int iterations = undistort_iterations(cam);
   const Eigen::Matrix3d Rt = view.pose.R.transpose();
   const Vector3d C = view.pose.centre;
+  // The rays' window in normalised coordinates: the image corners, widened
+  // by a quarter for distortion (a ray outside it tests every patch).
+  const Eigen::Vector2d corner_lo(-cam.cx / cam.fx, -cam.cy / cam.fy);
+  const Eigen::Vector2d corner_hi((cam.width - cam.cx) / cam.fx, (cam.height - cam.cy) / cam.fy);
+  const Eigen::Vector2d widen = 0.25 * (corner_hi - corner_lo);
+  std::vector<std::vector<Vector3d>> polygons;
+  polygons.reserve(scene.patches.size());
+  for (const auto& p : scene.patches) polygons.push_back(p.polygon);
+  const RayPatchBins bins(polygons, view.pose, corner_lo - widen, corner_hi + widen);
 
   cv::Mat luminance(cam.height, cam.width, CV_32F);
   cv::Mat material(cam.height, cam.width, CV_8U);
@@ -369,7 +385,7 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
         float* depth = with_depth ? view.depth.ptr<float>(v) : nullptr;
         for (int u = 0; u < cam.width; ++u) {
           const Vector3d d = Rt * Vector3d(normalised[u].x, normalised[u].y, 1.0);
-          const Hit hit = tracer.trace(C, d);
+          const Hit hit = tracer.trace(C, d, bins.candidates(normalised[u].x, normalised[u].y));
           lum[u] = hit.luminance;
           mat[u] = hit.material;
           if (depth) depth[u] = hit.material == kBackground ? 0.f : static_cast<float>(hit.t);
