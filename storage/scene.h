@@ -16,6 +16,7 @@
 
 #include "core/common/preset.h"
 #include "core/measure/picks.h"
+#include "storage/scene_tunnel.h"
 
 namespace rockface::storage {
 
@@ -177,6 +178,8 @@ struct Scene {
   // Picks on the reconstructed image (docs/scene-extensions.md): the replay
   // measures its traces from them instead of taking the synthetic truth.
   std::optional<measure::Picks> picks;
+  // The tunnel the face lies in (docs/scene-extensions.md, "tunnel").
+  std::optional<SceneTunnel> tunnel;
 
   const SceneJoint* joint(const std::string& id) const;
   const SceneFreeFace* free_face(const std::string& id) const;

@@ -12,6 +12,7 @@
 #include "storage/json_reader.h"
 #include "storage/picks_json.h"
 #include "storage/scene.h"
+#include "storage/scene_tunnel.h"
 
 namespace rockface::storage {
 
@@ -492,6 +493,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       if (!t.joint.empty() && !s.joint(t.joint))
         r.fail(t.where + ".joint", "unknown joint id \"" + t.joint + "\"");
   }
+  if (auto* t = r.optional(doc, "", "tunnel")) s.tunnel = read_scene_tunnel(r, *t, source);
   check_references(r, s);
   return s;
 }

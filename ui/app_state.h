@@ -17,6 +17,7 @@
 #include "ui/project_session.h"
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
+#include "ui/tunnel_panel.h"
 #include "ui/widgets.h"
 
 namespace rockface::ui {
@@ -61,6 +62,7 @@ struct AppState {
   ModelView model_view;
   CaptureState capture;
   MappingState mapping;
+  TunnelState tunnel;                         // the Project screen's tunnel panel
   std::optional<std::size_t> selected_block;  // index into session->blocks()
   std::string status;                         // last message for the status bar
   std::string new_project_name = "site";

@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
 
 #include "camera/camera.h"
 #include "core/common/preset.h"
@@ -48,10 +51,28 @@ class CameraConnector {
   virtual std::string describe() const = 0;
 };
 
+// A picture with the lines that go with it (the tunnel's views).
+struct TunnelPicture {
+  cv::Mat bgr;
+  std::vector<std::string> lines;
+};
+
+// The tunnel around the visits: the excavation of a visit's round against
+// the design profile, and the joint sets along the drive.
+class TunnelRunner {
+ public:
+  virtual ~TunnelRunner() = default;
+  // Throw rockface::Error / InputError saying why (no tunnel, visit not placed).
+  virtual TunnelPicture profile(const std::filesystem::path& project, storage::RecordId visit_id,
+                                Progress& progress) = 0;
+  virtual TunnelPicture drive(const std::filesystem::path& project, Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
   CameraConnector* camera = nullptr;               // null: no camera
+  TunnelRunner* tunnel = nullptr;                  // null: the Project screen shows no tunnel views
 };
 
 }  // namespace rockface::ui

@@ -28,7 +28,8 @@ int run_ui(const UiRequest& req) {
   StoreReconstructionRunner reconstruction;
   StoreAnalysisRunner analysis;
   FieldCameraConnector camera(req.camera);
-  const ui::FieldServices services{&reconstruction, &analysis, &camera};
+  StoreTunnelRunner tunnel;
+  const ui::FieldServices services{&reconstruction, &analysis, &camera, &tunnel};
   if (req.script.empty()) {
     ui::run_in_window(options, services);
     return 0;

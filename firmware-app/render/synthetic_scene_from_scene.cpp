@@ -3,6 +3,7 @@
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
+#include "firmware-app/tunnel/rendered_tunnel.h"
 
 namespace rockface::app {
 
@@ -10,7 +11,8 @@ SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& s) {
   if (!s.imaging)
     throw InputError(s.source + ": imaging",
                      "missing: only a scene with an imaging section can be rendered");
-  if (s.patches.empty())
+  const bool tunnel = s.tunnel && s.tunnel->render;
+  if (s.patches.empty() && !tunnel)
     throw InputError(s.source + ": surface.patches",
                      "missing: the scene has no surface for the cameras to see");
   SyntheticSceneInput in;
@@ -18,11 +20,18 @@ SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& s) {
   // lose millimetres in single-precision depth.
   in.origin = s.has_datum ? s.datum : Eigen::Vector3d::Zero();
   camera::SyntheticScene& out = in.scene;
-  for (const auto& p : s.patches) {
-    camera::SyntheticPatch patch{p.id, {}};
-    for (const auto& x : p.polygon) patch.polygon.push_back(x - in.origin);
-    out.patches.push_back(std::move(patch));
-  }
+  if (tunnel) {
+    // The round as excavated replaces the scene's patches: walls, roof,
+    // invert and face of the design profile with the known breaks.
+    out.patches = rendered_tunnel_patches(rendered_tunnel_spec(*s.tunnel->render),
+                                          s.tunnel->record.alignment(in.origin),
+                                          s.tunnel->record.profile, s.source + ": tunnel.render");
+  } else
+    for (const auto& p : s.patches) {
+      camera::SyntheticPatch patch{p.id, {}};
+      for (const auto& x : p.polygon) patch.polygon.push_back(x - in.origin);
+      out.patches.push_back(std::move(patch));
+    }
   for (const auto& j : s.joints) {
     if (!j.point) continue;  // orientation-only joints cut no trace
     out.joints.push_back({j.id, geometry::plane_normal_deg(j.dip, j.dipdir), *j.point - in.origin});

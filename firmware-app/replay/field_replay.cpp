@@ -22,6 +22,7 @@
 #include "firmware-app/replay/replay_capture.h"
 #include "firmware-app/replay/replay_more_pairs.h"
 #include "firmware-app/replay/replay_picks.h"
+#include "firmware-app/tunnel/replay_tunnel.h"
 #include "storage/camera_json.h"
 #include "storage/project_store.h"
 #include "storage/reconstruction_report.h"
@@ -147,9 +148,12 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   // The registered frame has its origin at the pole (heading turned about
   // the reference line); the scene surveys where the pole stood, so the
   // model moves into the project frame (datum-relative) of the traces and joints.
+  // In a tunnel the geologist may type where the pole stood (chainage,
+  // offset, height) instead of surveying it.
   if (synthetic && synthetic->scene.range_pole && rec.targets) {
-    const Eigen::Vector3d shift =
-        synthetic->scene.range_pole->base - rec.model_to_world.apply(rec.targets->model[0]);
+    const Eigen::Vector3d pole =
+        typed_range_pole(*scene).value_or(synthetic->scene.range_pole->base);
+    const Eigen::Vector3d shift = pole - rec.model_to_world.apply(rec.targets->model[0]);
     rec.mesh.transform(1.0, Eigen::Matrix3d::Identity(), shift);
     rec.model_to_world.t += shift;
   }
@@ -177,6 +181,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   for (const auto& w : rec.accuracy.warnings) out.guidance.push_back(w);
 
   if (!scene) return out;  // a capture folder has no traces to analyse
+  if (scene->tunnel) out.guidance.push_back(place_replayed_visit(store, *scene, out.visit_id));
 
   // Traces: measured on the reconstructed image where the scene gives picks
   // (replay_picks.h); else those of the scene, or the synthetic scene's true
@@ -197,11 +202,24 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   }
   if (analysed.traces.empty()) {
     int n = 0;
-    for (const auto& seg : camera::true_trace_segments(synthetic->scene))
+    for (const auto& seg : camera::true_trace_segments(synthetic->scene)) {
+      // A rendered tunnel's walls are thousands of facets: the geologist maps
+      // the face, so only the face's traces are taken.
+      if (scene->tunnel && scene->tunnel->render && seg.patch != "FACE") continue;
       analysed.traces.push_back(
           {"T" + std::to_string(++n),
            seg.joint,
            {seg.world[0] + synthetic->origin, seg.world[1] + synthetic->origin}});
+    }
+  }
+  if (analysed.patches.empty() && scene->tunnel && scene->tunnel->render) {
+    // A rendered tunnel's free surface is its face.
+    for (const auto& p : synthetic->scene.patches)
+      if (p.id == "FACE") {
+        analysed.patches.push_back({p.id, {}});
+        for (const auto& x : p.polygon)
+          analysed.patches.back().polygon.push_back(x + synthetic->origin);
+      }
   }
   if (analysed.patches.empty())
     throw InputError(request.source, "surface.patches: the scene has no free surface");

@@ -22,6 +22,13 @@ class StoreAnalysisRunner final : public ui::AnalysisRunner {
                             Progress& progress) override;
 };
 
+class StoreTunnelRunner final : public ui::TunnelRunner {
+ public:
+  ui::TunnelPicture profile(const std::filesystem::path& project, storage::RecordId visit_id,
+                            Progress& progress) override;
+  ui::TunnelPicture drive(const std::filesystem::path& project, Progress& progress) override;
+};
+
 // source: a scene with an imaging section, a folder of captures, or empty
 // (the first DSLR libgphoto2 finds).
 class FieldCameraConnector final : public ui::CameraConnector {

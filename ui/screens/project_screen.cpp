@@ -7,6 +7,7 @@
 #include <imgui_stdlib.h>
 
 #include "ui/screens/screens.h"
+#include "ui/tunnel_panel.h"
 
 namespace rockface::ui {
 
@@ -100,6 +101,7 @@ void draw_project_screen(AppState& app) {
           static_cast<long long>(s.model()->vertex_count),
           static_cast<long long>(s.model()->face_count), s.model()->registration_kind.c_str());
   }
+  draw_tunnel_panel(app);
 }
 
 }  // namespace rockface::ui

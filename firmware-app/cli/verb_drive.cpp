@@ -1,0 +1,49 @@
+// `rockface drive PROJECT --out DRIVE.png [--csv DRIVE.csv]`: each joint
+// set's orientation along the tunnel's chainage over all visits, with the
+// sets that appear, vanish or turn flagged.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "core/common/error.h"
+#include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/tunnel/png_file.h"
+#include "firmware-app/tunnel/project_drive.h"
+#include "storage/export_file.h"
+#include "storage/field_report/tunnel_pictures.h"
+#include "storage/project_store.h"
+
+namespace rockface::app {
+namespace {
+
+struct DriveOptions {
+  std::string project, out, csv;
+};
+
+VerbRun setup_drive(CLI::App& sub) {
+  auto o = std::make_shared<DriveOptions>();
+  sub.add_option("PROJECT", o->project, "project file (*.rockface) with a tunnel")->required();
+  sub.add_option("--out", o->out, "the sets against chainage, a PNG file")->required();
+  sub.add_option("--csv", o->csv, "one row per set and visit, a CSV file");
+  return [o] {
+    if (!std::filesystem::exists(o->project)) throw InputError(o->project, "no such project file");
+    storage::OpenOptions read;
+    read.read_only = true;
+    storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
+    const tunnel::DriveSets drive = project_drive(store);
+    write_png(o->out, storage::drive_picture(drive));
+    if (!o->csv.empty()) storage::write_text_atomically(o->csv, drive_csv(drive));
+    for (const auto& line : drive_summary(drive)) std::cout << line << "\n";
+    std::cout << "drive: " << o->out << "\n";
+    return 0;
+  };
+}
+
+const VerbRegistrar registrar{
+    "drive",
+    "the joint sets along the tunnel's drive: each set's orientation and Fisher K per visit "
+    "against chainage, sets that appear, vanish or turn flagged",
+    setup_drive};
+
+}  // namespace
+}  // namespace rockface::app

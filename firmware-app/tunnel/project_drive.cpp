@@ -1,0 +1,97 @@
+#include "firmware-app/tunnel/project_drive.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/geometry/orientation.h"
+#include "core/measure/joint_sets.h"
+
+namespace rockface::app {
+
+namespace {
+
+std::string fixed(double v, int decimals) {
+  if (!std::isfinite(v)) return v > 0 ? "inf" : "";
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  return text;
+}
+
+}  // namespace
+
+std::vector<tunnel::SetObservation> visit_set_observations(storage::ProjectStore& store,
+                                                           storage::RecordId visit_id) {
+  std::vector<tunnel::SetObservation> out;
+  for (const auto& s : store.list_joint_sets(visit_id))
+    out.push_back(
+        {s.label, geometry::plane_normal_deg(s.dip_deg, s.dipdir_deg), s.fisher_k, s.count});
+  if (!out.empty()) return out;
+  std::vector<Eigen::Vector3d> poles;
+  for (const auto& m : store.list_measurements(visit_id))
+    if (m.dip_deg && m.dipdir_deg)
+      poles.push_back(geometry::plane_normal_deg(*m.dip_deg, *m.dipdir_deg));
+  if (poles.size() < 2) return out;
+  const measure::PoleClusters clusters = measure::cluster_poles(poles, {});
+  for (std::size_t k = 0; k < clusters.sets.size(); ++k) {
+    const auto& f = clusters.sets[k];
+    out.push_back({"S" + std::to_string(k + 1), f.mean, f.kappa, static_cast<int>(f.count)});
+  }
+  return out;
+}
+
+tunnel::DriveSets project_drive(storage::ProjectStore& store) {
+  const auto tunnel = store.load_tunnel();
+  if (!tunnel)
+    throw InputError(store.file().string(),
+                     "the project has no tunnel: add its alignment and design profile first");
+  std::vector<tunnel::VisitSets> visits;
+  for (const auto& p : store.list_visit_placements())
+    visits.push_back({p.visit_id, p.chainage, visit_set_observations(store, p.visit_id)});
+  tunnel::DriveSetOptions options;
+  options.drive = tunnel->drive;
+  return tunnel::track_sets_along_drive(std::move(visits), options);
+}
+
+std::string drive_csv(const tunnel::DriveSets& drive) {
+  std::ostringstream out;
+  out << "set,visit,chainage,name,dip_deg,dipdir_deg,fisher_k,count,alpha95_deg,"
+         "angle_to_running_mean_deg,turn_cone_deg,event\n";
+  for (const auto& t : drive.tracks) {
+    for (const auto& p : t.points) {
+      std::string event = p.turned ? "turns" : "";
+      for (const auto& e : t.events)
+        if (e.visit_id == p.visit_id && e.kind == tunnel::TrackEvent::Kind::appears)
+          event = event.empty() ? "appears" : event + " appears";
+      out << t.id << "," << p.visit_id << "," << fixed(p.chainage, 3) << "," << p.name << ","
+          << fixed(p.dip_deg, 1) << "," << fixed(p.dipdir_deg, 1) << "," << fixed(p.fisher_k, 1)
+          << "," << p.count << "," << (p.alpha95_deg < 180 ? fixed(p.alpha95_deg, 1) : "") << ","
+          << fixed(p.angle_to_running_mean_deg, 1) << "," << fixed(p.turn_cone_deg, 1) << ","
+          << event << "\n";
+    }
+    for (const auto& e : t.events)
+      if (e.kind == tunnel::TrackEvent::Kind::vanishes)
+        out << t.id << "," << e.visit_id << "," << fixed(e.chainage, 3) << ",,,,,,,,,vanishes\n";
+  }
+  return out.str();
+}
+
+std::vector<std::string> drive_summary(const tunnel::DriveSets& drive) {
+  std::vector<std::string> lines;
+  lines.push_back(std::to_string(drive.visits.size()) + " visits placed in the tunnel, " +
+                  std::to_string(drive.tracks.size()) + " joint sets along the drive");
+  for (const auto& t : drive.tracks) {
+    const auto& a = t.points.front();
+    const auto& b = t.points.back();
+    lines.push_back("set " + std::to_string(t.id) + ": " + std::to_string(t.points.size()) +
+                    " visits, chainage " + fixed(a.chainage, 2) + " to " + fixed(b.chainage, 2) +
+                    ", " + fixed(a.dip_deg, 0) + "/" + fixed(a.dipdir_deg, 0) + " to " +
+                    fixed(b.dip_deg, 0) + "/" + fixed(b.dipdir_deg, 0));
+    for (const auto& e : t.events) lines.push_back("  " + e.message);
+  }
+  return lines;
+}
+
+}  // namespace rockface::app

@@ -1,0 +1,28 @@
+#pragma once
+// The joint sets along the drive of a project (`rockface drive`, the
+// tablet's Project screen): every visit placed in the tunnel gives its sets
+// (those stored with its joints, else its measured planes clustered as the
+// field report clusters them), and core/tunnel matches them across visits
+// by orientation and flags a set that appears, vanishes or turns.
+#include <string>
+#include <vector>
+
+#include "core/tunnel/drive_sets.h"
+#include "storage/project_store.h"
+
+namespace rockface::app {
+
+// One visit's sets; empty when it has fewer than two measured planes.
+std::vector<tunnel::SetObservation> visit_set_observations(storage::ProjectStore& store,
+                                                           storage::RecordId visit_id);
+
+// Throws InputError naming the project when it has no tunnel.
+tunnel::DriveSets project_drive(storage::ProjectStore& store);
+
+// One row per set and visit (and one per event), for a spreadsheet.
+std::string drive_csv(const tunnel::DriveSets& drive);
+
+// The lines the verb prints: each set's track and its events.
+std::vector<std::string> drive_summary(const tunnel::DriveSets& drive);
+
+}  // namespace rockface::app

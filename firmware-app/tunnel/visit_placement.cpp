@@ -1,0 +1,90 @@
+#include "firmware-app/tunnel/visit_placement.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/error.h"
+
+namespace rockface::app {
+
+namespace {
+
+// Every k-th vertex: 20,000 places give the face's chainage to well under
+// the millimetres the percentile moves by.
+constexpr std::size_t kSamples = 20000;
+// The face is the surface within this band (m of chainage) of the farthest
+// 1 % of the vertices: a face leans and is rough by a few decimetres.
+constexpr double kFaceBandM = 0.3;
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+Eigen::Vector3d typed_pole_position(const tunnel::Alignment& alignment, double chainage,
+                                    double offset, double height) {
+  if (!alignment.contains(chainage)) {
+    char range[96];
+    std::snprintf(range, sizeof range, "%.2f is off the alignment (%.2f to %.2f)", chainage,
+                  alignment.first_chainage(), alignment.last_chainage());
+    throw InputError("tunnel.placement.chainage", range);
+  }
+  return alignment.frame_at(chainage).to_local(offset, height);
+}
+
+storage::VisitPlacement place_visit(const tunnel::Alignment& alignment, const VisitSurface& surface,
+                                    storage::RecordId visit_id, const std::string& typed) {
+  const std::string where = "visit " + std::to_string(visit_id);
+  const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
+  const std::size_t step = std::max<std::size_t>(1, surface.vertices.size() / kSamples);
+  std::vector<tunnel::AlignmentPlace> places;
+  for (std::size_t i = 0; i < surface.vertices.size(); i += step)
+    if (!surface.not_rock[i]) places.push_back(alignment.place(surface.vertices[i]));
+  if (places.empty()) throw InputError(where, "its 3D image has no rock to place");
+  std::vector<double> ahead;
+  for (const auto& p : places) ahead.push_back(sense * p.chainage);
+  std::sort(ahead.begin(), ahead.end());
+  const double face_ahead = ahead[static_cast<std::size_t>(0.99 * (ahead.size() - 1))];
+  std::vector<double> offsets, heights;
+  for (const auto& p : places)
+    if (sense * p.chainage >= face_ahead - kFaceBandM) {
+      offsets.push_back(p.offset);
+      heights.push_back(p.height);
+    }
+  storage::VisitPlacement out;
+  out.visit_id = visit_id;
+  out.chainage = sense * face_ahead;
+  out.offset_m = median(offsets);
+  out.height_m = median(heights);
+  if (!alignment.contains(out.chainage)) {
+    char text[128];
+    std::snprintf(text, sizeof text,
+                  "its face lies at chainage %.2f, off the alignment (%.2f to %.2f)", out.chainage,
+                  alignment.first_chainage(), alignment.last_chainage());
+    throw InputError(where, text);
+  }
+  const storage::Model& m = surface.first;
+  if (m.registration.kind == "ground_control") {
+    out.method = storage::VisitPlacement::Method::ground_control;
+    out.residuals = m.residuals;
+    out.rms_m = m.registration.rms_m;
+    out.note = std::to_string(m.residuals.size()) + " monitoring targets with survey coordinates";
+  } else {
+    out.method = storage::VisitPlacement::Method::chainage_compass;
+    const nlohmann::json p = nlohmann::json::parse(m.registration.parameters_json, nullptr, false);
+    const nlohmann::json::json_pointer at("/registration/north/azimuth_deg");
+    if (!p.is_discarded() && p.contains(at) && p[at].is_number())
+      out.compass_azimuth_deg = p[at].get<double>();
+    out.note = typed.empty() ? "range pole at its surveyed position, north from the compass line"
+                             : "range pole at " + typed + ", north from the compass line";
+  }
+  return out;
+}
+
+}  // namespace rockface::app

@@ -1,0 +1,97 @@
+#include "firmware-app/tunnel/visit_profile.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/error.h"
+#include "firmware-app/tunnel/visit_surface.h"
+
+namespace rockface::app {
+
+namespace {
+
+// The rear of the 3D image: its 2nd percentile of chainage behind the face
+// (the walls the cameras saw), ignoring a few stray points.
+double surface_start(const tunnel::Alignment& alignment, const VisitSurface& surface) {
+  const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
+  std::vector<double> ahead;
+  const std::size_t step = std::max<std::size_t>(1, surface.vertices.size() / 20000);
+  for (std::size_t i = 0; i < surface.vertices.size(); i += step)
+    if (!surface.not_rock[i])
+      ahead.push_back(sense * alignment.place(surface.vertices[i]).chainage);
+  if (ahead.empty()) return 0;
+  std::sort(ahead.begin(), ahead.end());
+  return sense * ahead[static_cast<std::size_t>(0.02 * (ahead.size() - 1))];
+}
+
+}  // namespace
+
+tunnel::DeviationOptions deviation_options(Preset preset) {
+  tunnel::DeviationOptions o;
+  switch (preset) {
+    case Preset::fast:
+      o.section_spacing_m = 0.5;
+      o.ray_spacing_m = 0.1;
+      break;
+    case Preset::standard:
+      o.section_spacing_m = 0.25;
+      o.ray_spacing_m = 0.05;
+      break;
+    case Preset::precise:
+      o.section_spacing_m = 0.1;
+      o.ray_spacing_m = 0.02;
+      break;
+  }
+  return o;
+}
+
+VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit_id,
+                           Preset preset) {
+  VisitProfile out;
+  auto tunnel = store.load_tunnel();
+  if (!tunnel)
+    throw InputError(store.file().string(),
+                     "the project has no tunnel: add its alignment and design profile first");
+  out.tunnel = std::move(*tunnel);
+  auto placement = store.load_visit_placement(visit_id);
+  if (!placement)
+    throw InputError("visit " + std::to_string(visit_id),
+                     "is not placed in the tunnel: type the chainage of its range pole, or "
+                     "register it to monitoring targets");
+  out.placement = *placement;
+  const tunnel::Alignment alignment = out.tunnel.alignment(store.project().datum);
+  const VisitSurface surface = visit_surface(store, visit_id);
+  out.pole_vertices = surface.pole_vertices;
+
+  // The round: back to the nearest face of an earlier visit behind this one.
+  const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
+  out.round_to = out.placement.chainage;
+  std::optional<double> previous;
+  for (const auto& p : store.list_visit_placements())
+    if (p.visit_id != visit_id && sense * p.chainage < sense * out.round_to &&
+        (!previous || sense * p.chainage > sense * *previous)) {
+      previous = p.chainage;
+      out.round_from_source = "face of visit " + std::to_string(p.visit_id);
+    }
+  const double start = surface_start(alignment, surface);
+  if (previous && sense * *previous >= sense * start) {
+    out.round_from = *previous;
+  } else {
+    // No earlier face, or it lies behind what the cameras saw: the round is
+    // measured where there is surface to measure.
+    out.round_from = start;
+    out.round_from_source = "start of the 3D image";
+  }
+  tunnel::DeviationOptions options = deviation_options(preset);
+  options.chainage_from = out.round_from;
+  options.chainage_to = out.round_to;
+  options.underbreak_tolerance_m = out.tunnel.underbreak_tolerance_m;
+  tunnel::SurfaceInput input;
+  input.vertices = surface.vertices;
+  input.triangles = surface.triangles;
+  input.not_rock_vertex = surface.not_rock;
+  out.deviation = tunnel::profile_deviation(input, alignment, out.tunnel.profile, options);
+  return out;
+}
+
+}  // namespace rockface::app

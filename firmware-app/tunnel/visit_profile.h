@@ -1,0 +1,37 @@
+#pragma once
+// The excavation of a visit's round against the design profile
+// (`rockface profile`, the field report, the tablet's Tunnel view): the
+// visit's surface cut by cross-sections from the previous round's face to
+// this one, with the over- and underbreak in numbers and as a developed view.
+#include <optional>
+#include <string>
+
+#include "core/common/preset.h"
+#include "core/tunnel/profile_deviation.h"
+#include "storage/project_store.h"
+#include "storage/tunnel_records.h"
+
+namespace rockface::app {
+
+struct VisitProfile {
+  storage::TunnelRecord tunnel;
+  storage::VisitPlacement placement;
+  // The round evaluated: from the previous visit's face (in drive order) to
+  // this face; the first visit's round starts where its surface starts.
+  double round_from = 0, round_to = 0;
+  std::string round_from_source;  // "face of visit 3" | "start of the 3D image"
+  tunnel::ProfileDeviation deviation;
+  std::size_t pole_vertices = 0;  // surface vertices not counted: the range pole
+};
+
+// Section spacing and ray spacing per preset: fast 0.5 m / 0.1 m, standard
+// 0.25 m / 0.05 m, precise 0.1 m / 0.02 m (their cost and accuracy are in
+// docs/accuracy-cost.md, "The tunnel drive").
+tunnel::DeviationOptions deviation_options(Preset preset);
+
+// Throws InputError naming the project or visit when the project has no
+// tunnel, the visit is not placed in it, or it has no 3D image.
+VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit_id,
+                           Preset preset = Preset::standard);
+
+}  // namespace rockface::app

@@ -1,0 +1,122 @@
+#include "firmware-app/tunnel/visit_profile_json.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+namespace rockface::app {
+
+namespace {
+
+using nlohmann::json;
+
+// Millimetres for lengths, cm^2-level for areas: what survey of a profile
+// resolves; more digits would claim what the mesh does not give.
+double round_to(double v, double step) {
+  return std::round(v / step) * step;
+}
+
+std::string fixed(double v, int decimals) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  return text;
+}
+
+json position(const tunnel::ProfilePosition& p) {
+  return {{"chainage", round_to(p.chainage, 0.001)},
+          {"s_m", round_to(p.s, 0.001)},
+          {"angle_deg", round_to(p.angle * 180 / M_PI, 0.1)},
+          {"survey",
+           {round_to(p.survey.x(), 0.001), round_to(p.survey.y(), 0.001),
+            round_to(p.survey.z(), 0.001)}}};
+}
+
+}  // namespace
+
+std::string visit_profile_json(const VisitProfile& v) {
+  const auto& d = v.deviation;
+  json j;
+  j["tunnel"] = {{"name", v.tunnel.name},
+                 {"drive", tunnel::drive_name(v.tunnel.drive)},
+                 {"underbreak_tolerance_m", v.tunnel.underbreak_tolerance_m},
+                 {"profile_perimeter_m", round_to(v.tunnel.profile.perimeter(), 0.001)},
+                 {"profile_area_m2", round_to(v.tunnel.profile.area(), 0.001)}};
+  json placement = {{"visit", v.placement.visit_id},
+                    {"method", storage::placement_method_name(v.placement.method)},
+                    {"face_chainage", round_to(v.placement.chainage, 0.001)},
+                    {"face_offset_m", round_to(v.placement.offset_m, 0.001)},
+                    {"note", v.placement.note}};
+  if (v.placement.rms_m) placement["residual_rms_m"] = *v.placement.rms_m;
+  if (v.placement.compass_azimuth_deg)
+    placement["compass_azimuth_deg"] = round_to(*v.placement.compass_azimuth_deg, 0.01);
+  j["placement"] = placement;
+  j["round"] = {{"from_chainage", round_to(v.round_from, 0.001)},
+                {"to_chainage", round_to(v.round_to, 0.001)},
+                {"from", v.round_from_source}};
+  j["status"] = tunnel::deviation_status_name(d.status);
+  j["message"] = d.message;
+  j["overbreak_volume_m3"] = round_to(d.overbreak_volume_m3, 0.001);
+  j["underbreak_volume_m3"] = round_to(d.underbreak_volume_m3, 0.001);
+  j["seen_fraction"] = round_to(d.seen_fraction, 0.001);
+  j["excluded_fraction"] = round_to(d.excluded_fraction, 0.001);
+  j["excluded_vertices_range_pole"] = v.pole_vertices;
+  j["max_overbreak_m"] = round_to(d.max_overbreak_m, 0.001);
+  if (d.has_underbreak) {
+    j["max_underbreak_m"] = round_to(d.max_underbreak_m, 0.001);
+    j["max_underbreak_at"] = position(d.max_underbreak);
+  }
+  json beyond = json::array();
+  for (const auto& p : d.beyond_tolerance)
+    beyond.push_back({{"chainage_from", round_to(p.chainage_from, 0.001)},
+                      {"chainage_to", round_to(p.chainage_to, 0.001)},
+                      {"s_from_m", round_to(p.s_from, 0.001)},
+                      {"s_to_m", round_to(p.s_to, 0.001)},
+                      {"area_m2", round_to(p.area_m2, 0.0001)},
+                      {"max_depth_m", round_to(p.max_depth_m, 0.001)},
+                      {"deepest", position(p.deepest)}});
+  j["underbreak_beyond_tolerance"] = beyond;
+  json sections = json::array();
+  for (const auto& s : d.sections)
+    sections.push_back({{"chainage", round_to(s.chainage, 0.001)},
+                        {"overbreak_area_m2", round_to(s.overbreak_area_m2, 0.0001)},
+                        {"underbreak_area_m2", round_to(s.underbreak_area_m2, 0.0001)},
+                        {"seen_fraction", round_to(s.seen_fraction, 0.001)},
+                        {"roof_seen", round_to(s.roof_seen, 0.001)},
+                        {"walls_seen", round_to(s.walls_seen, 0.001)},
+                        {"floor_seen", round_to(s.floor_seen, 0.001)},
+                        {"max_overbreak_m", round_to(s.max_overbreak_m, 0.001)},
+                        {"max_underbreak_m", round_to(s.max_underbreak_m, 0.001)}});
+  j["sections"] = sections;
+  return j.dump(2) + "\n";
+}
+
+std::vector<std::string> visit_profile_summary(const VisitProfile& v) {
+  const auto& d = v.deviation;
+  std::vector<std::string> lines;
+  lines.push_back("tunnel " + v.tunnel.name + ", visit " + std::to_string(v.placement.visit_id) +
+                  ": face at chainage " + fixed(v.placement.chainage, 2) + ", offset " +
+                  fixed(v.placement.offset_m, 2) + " m (" + v.placement.note + ")");
+  lines.push_back("round from chainage " + fixed(v.round_from, 2) + " (" + v.round_from_source +
+                  ") to " + fixed(v.round_to, 2));
+  if (d.status == tunnel::DeviationStatus::no_walls_in_view ||
+      d.status == tunnel::DeviationStatus::outside_alignment) {
+    lines.push_back(d.message);
+    return lines;
+  }
+  lines.push_back("overbreak " + fixed(d.overbreak_volume_m3, 2) + " m3, underbreak " +
+                  fixed(d.underbreak_volume_m3, 2) + " m3 over the round; " +
+                  fixed(d.seen_fraction * 100, 0) + " % of the outline seen");
+  if (d.has_underbreak)
+    lines.push_back("deepest underbreak " + fixed(d.max_underbreak_m * 100, 1) +
+                    " cm at chainage " + fixed(d.max_underbreak.chainage, 2) + ", " +
+                    fixed(d.max_underbreak.s, 2) + " m along the design line");
+  lines.push_back(std::to_string(d.beyond_tolerance.size()) +
+                  (d.beyond_tolerance.size() == 1 ? " patch" : " patches") +
+                  " of underbreak beyond the tolerance of " +
+                  fixed(v.tunnel.underbreak_tolerance_m * 100, 0) + " cm");
+  if (!d.message.empty()) lines.push_back(d.message);
+  return lines;
+}
+
+}  // namespace rockface::app
