@@ -27,6 +27,7 @@
 
 #include "storage/project_records.h"
 #include "storage/project_sqlite.h"
+#include "storage/tunnel_records.h"
 
 namespace rockface::storage {
 
@@ -127,6 +128,17 @@ class ProjectStore {
   RecordId log_action(std::optional<RecordId> visit_id, const std::string& action,
                       const std::string& detail = {});
   std::vector<ActionLogEntry> list_actions(std::optional<RecordId> visit_id = {});
+
+  // ---- the tunnel (issue 22; storage/project_store_tunnel.cpp) ----
+  // The project's tunnel: saving replaces the one stored (alignment table,
+  // profile and all), in one transaction; the profile must validate and the
+  // alignment build with the project's datum (InputError naming the field).
+  void save_tunnel(const TunnelRecord& tunnel);
+  std::optional<TunnelRecord> load_tunnel();
+  // A visit's place in the tunnel; saving again replaces it.
+  void save_visit_placement(const VisitPlacement& placement);
+  std::optional<VisitPlacement> load_visit_placement(RecordId visit_id);
+  std::vector<VisitPlacement> list_visit_placements();  // by chainage
 
   IntegrityReport check_integrity(OpenOptions::Check depth = OpenOptions::Check::full);
   // Moves the write-ahead log into the main file (done on close anyway); a

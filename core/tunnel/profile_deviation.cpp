@@ -1,0 +1,335 @@
+#include "core/tunnel/profile_deviation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/common/parallel.h"
+#include "core/tunnel/mesh_raycast.h"
+
+namespace rockface::tunnel {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr std::uint8_t kSeen = 0, kNotSeen = 1, kExcluded = 2;
+
+enum class Region : std::uint8_t { roof, wall, floor };
+
+// One ray of the cross-section, the same in every section.
+struct Ray {
+  double s = 0;              // arc length of the design point it aims at
+  double angle = 0;          // radians, counter-clockwise from right
+  double design = 0;         // distance from the ray centre to the design outline
+  double cos_incidence = 1;  // between the ray and the outline's outward normal
+  double dtheta = 0;         // the angle this ray stands for (sums to 2 pi)
+  Region region = Region::wall;
+};
+
+std::string fmt(double v, int precision = 3) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(precision);
+  s << v;
+  return s.str();
+}
+
+void require_positive(double v, const char* name) {
+  if (!std::isfinite(v) || !(v > 0))
+    throw InputError(std::string("options.") + name, "must be a positive number, got " + fmt(v, 6));
+}
+
+std::vector<Ray> rays_of(const DesignProfile& profile, double ray_spacing) {
+  const double P = profile.perimeter();
+  const std::size_t m =
+      std::max<std::size_t>(16, static_cast<std::size_t>(std::ceil(P / ray_spacing)));
+  const Eigen::Vector2d c = profile.ray_centre();
+  std::vector<double> boundary(m + 1);
+  for (std::size_t k = 0; k <= m; ++k) boundary[k] = profile.angle_at_length(P * k / m);
+  std::vector<Ray> rays(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    Ray& r = rays[j];
+    r.s = P * (j + 0.5) / m;
+    const Eigen::Vector2d q = profile.point_at_length(r.s);
+    const Eigen::Vector2d d = q - c;
+    r.design = d.norm();
+    r.angle = std::atan2(d.y(), d.x());
+    const Eigen::Vector2d n = profile.outward_normal_at_length(r.s);
+    r.cos_incidence = std::max(0.0, n.dot(d / r.design));
+    // The outline turns counter-clockwise about the centre (validated star
+    // shape), so each step of angle is in (0, 2 pi).
+    double dt = boundary[j + 1] - boundary[j];
+    while (dt < 0) dt += 2 * kPi;
+    while (dt >= 2 * kPi) dt -= 2 * kPi;
+    r.dtheta = dt;
+    if (n.y() < -std::sqrt(0.5))
+      r.region = Region::floor;  // facing down within 45 degrees: the invert
+    else if (q.y() >= c.y())
+      r.region = Region::roof;
+    else
+      r.region = Region::wall;
+  }
+  return rays;
+}
+
+// Connected cells of underbreak beyond tolerance on the developed view
+// (4-neighbours; the arc-length direction wraps round the profile).
+std::vector<UnderbreakPatch> patches_of(const ProfileDeviation& d, double tolerance, double cell_s,
+                                        double cell_c,
+                                        const std::vector<ProfilePosition>& position_of_cell) {
+  const auto& v = d.view;
+  const std::size_t rows = v.chainage.size(), cols = v.s.size();
+  auto beyond = [&](std::size_t k) { return v.state[k] == kSeen && -v.deviation_m[k] > tolerance; };
+  std::vector<char> done(rows * cols, 0);
+  std::vector<UnderbreakPatch> out;
+  std::vector<std::size_t> stack;
+  for (std::size_t start = 0; start < rows * cols; ++start) {
+    if (done[start] || !beyond(start)) continue;
+    UnderbreakPatch p;
+    p.chainage_from = std::numeric_limits<double>::infinity();
+    p.chainage_to = -p.chainage_from;
+    std::vector<std::size_t> col_list;
+    stack.assign(1, start);
+    done[start] = 1;
+    while (!stack.empty()) {
+      const std::size_t k = stack.back();
+      stack.pop_back();
+      const std::size_t r = k / cols, c = k % cols;
+      ++p.cells;
+      p.chainage_from = std::min(p.chainage_from, v.chainage[r]);
+      p.chainage_to = std::max(p.chainage_to, v.chainage[r]);
+      col_list.push_back(c);
+      const double depth = -v.deviation_m[k];
+      if (depth > p.max_depth_m) {
+        p.max_depth_m = depth;
+        p.deepest = position_of_cell[k];
+      }
+      const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
+                                 r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
+      for (std::size_t n : nb)
+        if (!done[n] && beyond(n)) {
+          done[n] = 1;
+          stack.push_back(n);
+        }
+    }
+    p.area_m2 = static_cast<double>(p.cells) * cell_s * cell_c;
+    // Its arc-length span; a patch across s = 0 is unwrapped there, so
+    // s_from > s_to says it wraps.
+    std::sort(col_list.begin(), col_list.end());
+    col_list.erase(std::unique(col_list.begin(), col_list.end()), col_list.end());
+    std::size_t gap_at = 0, gap = 0;
+    for (std::size_t i = 0; i < col_list.size(); ++i) {
+      const std::size_t next = i + 1 < col_list.size() ? col_list[i + 1] : col_list[0] + cols;
+      if (next - col_list[i] > gap) {
+        gap = next - col_list[i];
+        gap_at = i;
+      }
+    }
+    const std::size_t first = col_list[(gap_at + 1) % col_list.size()], last = col_list[gap_at];
+    p.s_from = v.s[first] - cell_s / 2;
+    p.s_to = v.s[last] + cell_s / 2;
+    out.push_back(p);
+  }
+  std::sort(out.begin(), out.end(), [](const UnderbreakPatch& a, const UnderbreakPatch& b) {
+    return a.max_depth_m > b.max_depth_m;
+  });
+  return out;
+}
+
+}  // namespace
+
+const char* deviation_status_name(DeviationStatus status) {
+  switch (status) {
+    case DeviationStatus::ok:
+      return "ok";
+    case DeviationStatus::partly_seen:
+      return "partly_seen";
+    case DeviationStatus::no_walls_in_view:
+      return "no_walls_in_view";
+    case DeviationStatus::outside_alignment:
+      return "outside_alignment";
+  }
+  return "ok";
+}
+
+ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment& alignment,
+                                   const DesignProfile& profile, const DeviationOptions& options) {
+  require_positive(options.section_spacing_m, "section_spacing_m");
+  require_positive(options.ray_spacing_m, "ray_spacing_m");
+  require_positive(options.max_overbreak_m, "max_overbreak_m");
+  if (!std::isfinite(options.underbreak_tolerance_m) || options.underbreak_tolerance_m < 0)
+    throw InputError("options.underbreak_tolerance_m", "must be a number >= 0");
+  if (!std::isfinite(options.chainage_from) || !std::isfinite(options.chainage_to))
+    throw InputError("options.chainage_from", "the chainage range must be finite");
+  if (!surface.not_rock_vertex.empty() && surface.not_rock_vertex.size() != surface.vertices.size())
+    throw InputError("surface.not_rock_vertex",
+                     "one flag per vertex (" + std::to_string(surface.vertices.size()) + "), got " +
+                         std::to_string(surface.not_rock_vertex.size()));
+  if (!surface.not_rock_triangle.empty() &&
+      surface.not_rock_triangle.size() != surface.triangles.size())
+    throw InputError("surface.not_rock_triangle",
+                     "one flag per triangle (" + std::to_string(surface.triangles.size()) +
+                         "), got " + std::to_string(surface.not_rock_triangle.size()));
+  profile.require_valid("profile");
+
+  ProfileDeviation out;
+  out.underbreak_tolerance_m = options.underbreak_tolerance_m;
+  double lo = std::min(options.chainage_from, options.chainage_to);
+  double hi = std::max(options.chainage_from, options.chainage_to);
+  std::string clipped;
+  if (hi < alignment.first_chainage() || lo > alignment.last_chainage()) {
+    out.status = DeviationStatus::outside_alignment;
+    out.message = "chainage " + fmt(lo) + " to " + fmt(hi) + " lies outside the alignment (" +
+                  fmt(alignment.first_chainage()) + " to " + fmt(alignment.last_chainage()) + ")";
+    return out;
+  }
+  if (lo < alignment.first_chainage() || hi > alignment.last_chainage()) {
+    clipped = "; the range was cut to the alignment's " + fmt(alignment.first_chainage()) + " to " +
+              fmt(alignment.last_chainage());
+    lo = std::max(lo, alignment.first_chainage());
+    hi = std::min(hi, alignment.last_chainage());
+  }
+
+  const MeshRaycaster caster(surface.vertices, surface.triangles);
+  out.triangles = caster.triangle_count();
+  std::vector<std::uint8_t> masked(surface.triangles.size(), 0);
+  for (std::size_t i = 0; i < surface.triangles.size(); ++i) {
+    bool m = !surface.not_rock_triangle.empty() && surface.not_rock_triangle[i] != 0;
+    if (!surface.not_rock_vertex.empty())
+      for (int k : surface.triangles[i])
+        m = m || surface.not_rock_vertex[static_cast<std::size_t>(k)] != 0;
+    masked[i] = m ? 1 : 0;
+  }
+
+  const std::vector<Ray> rays = rays_of(profile, options.ray_spacing_m);
+  const std::size_t cols = rays.size();
+  const std::size_t rows =
+      hi > lo
+          ? static_cast<std::size_t>(std::ceil((hi - lo) / options.section_spacing_m - 1e-9)) + 1
+          : 1;
+  const double dc = rows > 1 ? (hi - lo) / static_cast<double>(rows - 1) : 0;
+  const double cell_s = profile.perimeter() / static_cast<double>(cols);
+  const Eigen::Vector2d centre = profile.ray_centre();
+
+  DevelopedView& view = out.view;
+  view.chainage.resize(rows);
+  view.s.resize(cols);
+  for (std::size_t j = 0; j < cols; ++j) view.s[j] = rays[j].s;
+  view.deviation_m.assign(rows * cols, std::numeric_limits<float>::quiet_NaN());
+  view.state.assign(rows * cols, kNotSeen);
+  std::vector<double> normal_dev(rows * cols, 0.0);
+  std::vector<ProfilePosition> position(rows * cols);
+  out.sections.resize(rows);
+
+  // Weight of each region in the outline, to turn seen lengths into fractions.
+  double region_len[3] = {0, 0, 0};
+  for (const Ray& r : rays) region_len[static_cast<int>(r.region)] += cell_s;
+
+  parallel_for(rows, [&](std::size_t i) {
+    const double c = rows > 1 ? lo + dc * static_cast<double>(i) : lo;
+    view.chainage[i] = c;
+    const TunnelFrame f = alignment.frame_at(c);
+    const Eigen::Vector3d origin = f.to_local(centre.x(), centre.y());
+    SectionDeviation& sec = out.sections[i];
+    sec.chainage = c;
+    double seen_len = 0, excluded_len = 0, region_seen[3] = {0, 0, 0};
+    for (std::size_t j = 0; j < cols; ++j) {
+      const Ray& r = rays[j];
+      const std::size_t k = i * cols + j;
+      const Eigen::Vector3d dir = std::cos(r.angle) * f.right + std::sin(r.angle) * f.up;
+      const auto hit = caster.first_hit(origin, dir, 0.0, r.design + options.max_overbreak_m);
+      if (!hit) continue;
+      if (masked[hit->triangle]) {
+        view.state[k] = kExcluded;
+        excluded_len += cell_s;
+        continue;
+      }
+      const double t = hit->t;
+      const double ray_dev = t - r.design;
+      const double nd = ray_dev * r.cos_incidence;
+      view.state[k] = kSeen;
+      view.deviation_m[k] = static_cast<float>(nd);
+      normal_dev[k] = nd;
+      ProfilePosition& pos = position[k];
+      pos.chainage = c;
+      pos.s = r.s;
+      pos.angle = r.angle;
+      pos.local = origin + t * dir;
+      pos.survey = alignment.to_survey(pos.local);
+      seen_len += cell_s;
+      region_seen[static_cast<int>(r.region)] += cell_s;
+      // Polar area between the design line and the surface, exact for the
+      // sampled radii (A = 1/2 r^2 dtheta).
+      const double a = 0.5 * (t * t - r.design * r.design) * r.dtheta;
+      if (a > 0)
+        sec.overbreak_area_m2 += a;
+      else
+        sec.underbreak_area_m2 -= a;
+      sec.max_overbreak_m = std::max(sec.max_overbreak_m, nd);
+      sec.max_underbreak_m = std::max(sec.max_underbreak_m, -nd);
+    }
+    const double P = profile.perimeter();
+    sec.seen_fraction = seen_len / P;
+    sec.excluded_fraction = excluded_len / P;
+    sec.roof_seen = region_len[0] > 0 ? region_seen[0] / region_len[0] : 0;
+    sec.walls_seen = region_len[1] > 0 ? region_seen[1] / region_len[1] : 0;
+    sec.floor_seen = region_len[2] > 0 ? region_seen[2] / region_len[2] : 0;
+  });
+  out.rays_cast = rows * cols;
+
+  // Volumes (trapezoidal along the chainage), the extremes, the fractions.
+  std::size_t seen = 0, excluded = 0;
+  for (std::size_t k = 0; k < rows * cols; ++k) {
+    if (view.state[k] == kSeen) ++seen;
+    if (view.state[k] == kExcluded) ++excluded;
+    if (view.state[k] != kSeen) continue;
+    if (-normal_dev[k] > out.max_underbreak_m) {
+      out.max_underbreak_m = -normal_dev[k];
+      out.max_underbreak = position[k];
+      out.has_underbreak = true;
+    }
+    out.max_overbreak_m = std::max(out.max_overbreak_m, normal_dev[k]);
+  }
+  for (std::size_t i = 0; i + 1 < rows; ++i) {
+    out.overbreak_volume_m3 +=
+        0.5 * (out.sections[i].overbreak_area_m2 + out.sections[i + 1].overbreak_area_m2) * dc;
+    out.underbreak_volume_m3 +=
+        0.5 * (out.sections[i].underbreak_area_m2 + out.sections[i + 1].underbreak_area_m2) * dc;
+  }
+  out.seen_fraction = static_cast<double>(seen) / static_cast<double>(rows * cols);
+  out.excluded_fraction = static_cast<double>(excluded) / static_cast<double>(rows * cols);
+  out.beyond_tolerance =
+      patches_of(out, options.underbreak_tolerance_m, cell_s, rows > 1 ? dc : 0, position);
+
+  // What the geologist is told.
+  bool walls_or_roof = false;
+  std::size_t thin = 0;
+  for (const auto& s : out.sections) {
+    walls_or_roof = walls_or_roof || s.walls_seen > 0 || s.roof_seen > 0;
+    if (s.seen_fraction < options.min_seen_fraction) ++thin;
+  }
+  const std::string range = "chainage " + fmt(lo) + " to " + fmt(hi) + clipped;
+  if (!walls_or_roof) {
+    out.status = DeviationStatus::no_walls_in_view;
+    out.message = (seen == 0 ? std::string("nothing of the profile was in view")
+                             : std::string("only the floor was in view")) +
+                  " (" + range + ", " + std::to_string(out.rays_cast) + " rays cast, " +
+                  std::to_string(excluded) +
+                  " stopped by what is not rock): no over- or underbreak can be given, not zero";
+  } else if (thin > 0) {
+    out.status = DeviationStatus::partly_seen;
+    out.message = std::to_string(thin) + " of " + std::to_string(rows) +
+                  " cross-sections saw less than " + fmt(100 * options.min_seen_fraction, 0) +
+                  " % of the profile; areas and volumes cover only what was seen (" +
+                  fmt(100 * out.seen_fraction, 1) + " % of the outline over " + range + ")";
+  } else {
+    out.status = DeviationStatus::ok;
+    out.message = fmt(100 * out.seen_fraction, 1) + " % of the outline seen over " + range;
+  }
+  return out;
+}
+
+}  // namespace rockface::tunnel

@@ -1,0 +1,143 @@
+#pragma once
+// The excavated surface against the design profile: over- and underbreak.
+//
+// A visit's 3D image (face, walls, roof; several pairs concatenated into one
+// mesh) is cut by cross-sections every `section_spacing_m` of chainage. In
+// each section, rays leave the profile's ray centre (design_profile.h) in the
+// cross-section plane, one every `ray_spacing_m` of design outline, and are
+// cast against the mesh (a bounding-volume hierarchy over its triangles).
+// The first triangle a ray meets is the excavated surface there; a ray that
+// meets a "not rock" triangle first (range pole, the camera's shadow) is
+// excluded, and one that meets nothing within reach is "not seen".
+//
+// Deviation is measured ALONG THE RAY from the ray centre, not along the
+// outline's normal: one ray gives one unambiguous surface point per
+// direction (normals of a polygonal outline cross inside concave corners and
+// leave gaps outside convex ones), and the area between design and surface
+// is then exact in polar form, A = 1/2 integral (r_surface^2 - r_design^2)
+// dtheta, with no error from the outline's curvature. For a circle about its
+// centre the two measures coincide. Because specifications give the
+// underbreak tolerance as a thickness normal to the design line, the
+// tolerance is checked against the NORMAL depth, the ray deviation times the
+// cosine of the angle between the ray and the outline's normal (exact on
+// straight segments; on arcs to second order in deviation / radius).
+//
+// Positive deviation = overbreak (the surface lies outside the design line),
+// negative = underbreak (rock inside it).
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/tunnel/alignment.h"
+#include "core/tunnel/design_profile.h"
+
+namespace rockface::tunnel {
+
+struct DeviationOptions {
+  double chainage_from = 0, chainage_to = 0;  // the round: ascending or not, both included
+  double section_spacing_m = 0.25;            // between cross-sections
+  // Between rays along the design outline (the angular resolution expressed
+  // at the outline: angle = spacing / distance from the ray centre). The
+  // area error of a section is of the order of the deviation's variation
+  // between two rays; a patch edge is placed within half a spacing.
+  double ray_spacing_m = 0.05;
+  double underbreak_tolerance_m = 0.05;  // normal depth of rock allowed inside the line
+  // A ray meeting the surface more than this beyond the design line (a
+  // cross passage, a hole in the mesh to something far) counts as not seen.
+  double max_overbreak_m = 3.0;
+  // A section seeing less than this fraction of its outline is "partly seen";
+  // a visit whose sections see nothing of walls / roof is "no walls in view".
+  double min_seen_fraction = 0.5;
+};
+
+// The visit's surface: datum-relative vertices (the alignment's local frame)
+// and triangles. Optional masks of what is not rock: one flag per vertex (a
+// triangle with any flagged vertex is excluded) and/or one per triangle;
+// empty = all rock.
+struct SurfaceInput {
+  std::span<const Eigen::Vector3d> vertices;
+  std::span<const std::array<int, 3>> triangles;
+  std::span<const std::uint8_t> not_rock_vertex;
+  std::span<const std::uint8_t> not_rock_triangle;
+};
+
+// Where on the tunnel a sample lies.
+struct ProfilePosition {
+  double chainage = 0;
+  double s = 0;      // arc length along the design outline (design_profile.h)
+  double angle = 0;  // radians, of the ray, counter-clockwise from right
+  Eigen::Vector3d local = Eigen::Vector3d::Zero();   // the surface point, datum-relative
+  Eigen::Vector3d survey = Eigen::Vector3d::Zero();  // the same in survey coordinates
+};
+
+struct SectionDeviation {
+  double chainage = 0;
+  double overbreak_area_m2 = 0;   // of the seen part of the outline
+  double underbreak_area_m2 = 0;  // of the seen part
+  double seen_fraction = 0;       // of the outline's length, in [0, 1]
+  double excluded_fraction = 0;   // rays stopped by "not rock"
+  // Seen fraction of the roof (v above the ray centre), walls (between) and
+  // floor (below the lowest third): what the camera saw of each.
+  double roof_seen = 0, walls_seen = 0, floor_seen = 0;
+  double max_overbreak_m = 0, max_underbreak_m = 0;  // normal depths, >= 0
+};
+
+// A connected stretch of underbreak beyond tolerance on the developed view.
+struct UnderbreakPatch {
+  double chainage_from = 0, chainage_to = 0;
+  double s_from = 0, s_to = 0;  // on the developed view (may wrap past 0)
+  std::size_t cells = 0;
+  double area_m2 = 0;      // of excavated surface (developed cells)
+  double max_depth_m = 0;  // normal depth at its deepest
+  ProfilePosition deepest;
+};
+
+// The developed view: rows = chainage (row i at chainage[i]), columns = arc
+// length (column j at s[j]); value = normal deviation (m, + over), NaN where
+// not seen, excluded or out of reach. `state` says which (0 seen, 1 not seen,
+// 2 excluded as not rock).
+struct DevelopedView {
+  std::vector<double> chainage, s;
+  std::vector<float> deviation_m;  // row-major, chainage.size() x s.size()
+  std::vector<std::uint8_t> state;
+  float at(std::size_t row, std::size_t col) const { return deviation_m[row * s.size() + col]; }
+};
+
+enum class DeviationStatus {
+  ok,                // every section saw at least min_seen_fraction
+  partly_seen,       // some sections saw less (their areas cover only what was seen)
+  no_walls_in_view,  // no section saw walls or roof: nothing to compare, not zero
+  outside_alignment  // the chainage range is not on the alignment
+};
+const char* deviation_status_name(DeviationStatus status);
+
+struct ProfileDeviation {
+  DeviationStatus status = DeviationStatus::no_walls_in_view;
+  std::string message;  // for the geologist: what was seen, what was not
+  std::vector<SectionDeviation> sections;
+  // Over the round, trapezoidal in chainage over the sections (the unseen
+  // parts contribute nothing: read with seen_fraction).
+  double overbreak_volume_m3 = 0, underbreak_volume_m3 = 0;
+  double seen_fraction = 0;      // of the developed view's cells
+  double excluded_fraction = 0;  // cells excluded as not rock
+  bool has_underbreak = false;
+  ProfilePosition max_underbreak;  // deepest normal underbreak (valid if has_underbreak)
+  double max_underbreak_m = 0;
+  double max_overbreak_m = 0;
+  std::vector<UnderbreakPatch> beyond_tolerance;  // deepest first
+  double underbreak_tolerance_m = 0;
+  DevelopedView view;
+  std::size_t rays_cast = 0, triangles = 0;
+};
+
+// Throws InputError naming the option or input ("options.ray_spacing_m",
+// "surface.triangles[12]") when it is unusable; an empty mesh is not an
+// error: it is reported as no_walls_in_view.
+ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment& alignment,
+                                   const DesignProfile& profile, const DeviationOptions& options);
+
+}  // namespace rockface::tunnel

@@ -1,0 +1,42 @@
+#pragma once
+// Named tolerances of core/tunnel. Each says what error it absorbs.
+
+namespace rockface::tunnel {
+
+// Two stations closer than this (horizontally, m) are one point: an element
+// between them has no length and no direction. Survey tables are given to
+// the millimetre; 1e-6 m is far below that and far above the ~1e-10 m
+// rounding of datum-relative doubles at 10^6 m.
+inline constexpr double kSamePointM = 1e-6;
+
+// The chainage difference of an element (a line or an arc between two
+// stations of a surveyor's table) and the horizontal length of that element
+// agree within this many metres plus kChainageMismatchRelative times the
+// length: tables are rounded to the millimetre or centimetre and some give
+// slope rather than horizontal lengths (1 per mille at a 4.5 % grade).
+// Beyond it the table has a typo (a wrong chainage, a wrong radius).
+inline constexpr double kChainageMismatchM = 0.01;
+inline constexpr double kChainageMismatchRelative = 1e-3;
+
+// A dense polyline's chainages are authoritative (the chord of a curve is
+// shorter than its arc); only a gross mismatch between a segment's chord
+// and its chainage difference (a typo) is refused.
+inline constexpr double kPolylineMismatchRelative = 0.05;
+
+// Profile segments whose ends are closer than this (m) join: design profiles
+// are drawn to the millimetre.
+inline constexpr double kProfileJoinM = 1e-4;
+
+// Arcs are drawn as chords whose sagitta stays below this (m) when the
+// profile is checked for self-intersection and star shape.
+inline constexpr double kProfileSagittaM = 1e-4;
+
+// Newton iterations of the foot point on a graded arc stop when the chainage
+// step is below this (m): far below survey accuracy.
+inline constexpr double kFootChainageM = 1e-9;
+
+// A ray parallel to a triangle's plane to this (|cos| of the angle between
+// the ray and the plane's normal) does not hit it.
+inline constexpr double kRayParallel = 1e-12;
+
+}  // namespace rockface::tunnel
