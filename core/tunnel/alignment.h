@@ -12,7 +12,12 @@
 //   frame of the project's meshes), so nothing loses precision.
 // - Chainage is the horizontal length along the axis, ascending in the
 //   table's order. Elevation runs linearly in chainage between two stations
-//   (a constant grade per element).
+//   (a constant grade per element). Cross-sections are normal to the axis,
+//   so where the grade or the direction changes at a station (no vertical
+//   or transition curve in the table) the sections of the two elements
+//   overlap on one side of the axis and leave a wedge on the other, as wide
+//   as the change in angle times the distance from the axis: place() takes
+//   the nearer foot there, and the station's chainage in the wedge.
 // - An arc's radius has a sign: + turns right (clockwise seen from above)
 //   walking toward ascending chainage, - turns left. Of the two arcs of that
 //   radius through two stations, the shorter (less than half a circle) is
@@ -25,6 +30,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace rockface::tunnel {
 

@@ -224,9 +224,9 @@ ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment&
   std::vector<ProfilePosition> position(rows * cols);
   out.sections.resize(rows);
 
-  // Weight of each region in the outline, to turn seen lengths into fractions.
-  double region_len[3] = {0, 0, 0};
-  for (const Ray& r : rays) region_len[static_cast<int>(r.region)] += cell_s;
+  // Rays of each region, to turn what was seen into fractions.
+  std::size_t region_rays[3] = {0, 0, 0};
+  for (const Ray& r : rays) ++region_rays[static_cast<int>(r.region)];
 
   parallel_for(rows, [&](std::size_t i) {
     const double c = rows > 1 ? lo + dc * static_cast<double>(i) : lo;
@@ -235,7 +235,7 @@ ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment&
     const Eigen::Vector3d origin = f.to_local(centre.x(), centre.y());
     SectionDeviation& sec = out.sections[i];
     sec.chainage = c;
-    double seen_len = 0, excluded_len = 0, region_seen[3] = {0, 0, 0};
+    std::size_t seen_rays = 0, excluded_rays = 0, region_seen[3] = {0, 0, 0};
     for (std::size_t j = 0; j < cols; ++j) {
       const Ray& r = rays[j];
       const std::size_t k = i * cols + j;
@@ -244,7 +244,7 @@ ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment&
       if (!hit) continue;
       if (masked[hit->triangle]) {
         view.state[k] = kExcluded;
-        excluded_len += cell_s;
+        ++excluded_rays;
         continue;
       }
       const double t = hit->t;
@@ -259,8 +259,8 @@ ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment&
       pos.angle = r.angle;
       pos.local = origin + t * dir;
       pos.survey = alignment.to_survey(pos.local);
-      seen_len += cell_s;
-      region_seen[static_cast<int>(r.region)] += cell_s;
+      ++seen_rays;
+      ++region_seen[static_cast<int>(r.region)];
       // Polar area between the design line and the surface, exact for the
       // sampled radii (A = 1/2 r^2 dtheta).
       const double a = 0.5 * (t * t - r.design * r.design) * r.dtheta;
@@ -271,12 +271,15 @@ ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment&
       sec.max_overbreak_m = std::max(sec.max_overbreak_m, nd);
       sec.max_underbreak_m = std::max(sec.max_underbreak_m, -nd);
     }
-    const double P = profile.perimeter();
-    sec.seen_fraction = seen_len / P;
-    sec.excluded_fraction = excluded_len / P;
-    sec.roof_seen = region_len[0] > 0 ? region_seen[0] / region_len[0] : 0;
-    sec.walls_seen = region_len[1] > 0 ? region_seen[1] / region_len[1] : 0;
-    sec.floor_seen = region_len[2] > 0 ? region_seen[2] / region_len[2] : 0;
+    // Every ray stands for the same length of outline: fractions are counts.
+    auto part = [](std::size_t n, std::size_t of) {
+      return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 0.0;
+    };
+    sec.seen_fraction = part(seen_rays, cols);
+    sec.excluded_fraction = part(excluded_rays, cols);
+    sec.roof_seen = part(region_seen[0], region_rays[0]);
+    sec.walls_seen = part(region_seen[1], region_rays[1]);
+    sec.floor_seen = part(region_seen[2], region_rays[2]);
   });
   out.rays_cast = rows * cols;
 

@@ -135,7 +135,7 @@ StrikeVsDrive strike_vs_drive(const geometry::PlaneOrientation& plane, double dr
       text = "dip 0-20, irrespective of strike";
       break;
     case StrikeRelation::perpendicular:
-      text = "strike perpendicular to the axis, " + sense + " " + band(d);
+      text = "strike perpendicular to the axis, " + sense + ", " + band(d);
       break;
     case StrikeRelation::parallel:
       text = "strike parallel to the axis, " + band(d);

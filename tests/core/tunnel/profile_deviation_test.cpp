@@ -1,0 +1,365 @@
+// Over- and underbreak against closed forms. The meshes are tubes about the
+// alignment, faceted with one vertex every 0.5 degrees; the rays are set one
+// per facet, through the facet's middle, so every ray meets a facet at
+// distance R cos(0.25 deg) (the chord's middle) instead of R: the tests
+// compare with that exact faceted value (to rounding) and with the smooth
+// closed form (to the facets' sagitta, R (1 - cos 0.25 deg) = 9.5e-6 R).
+#include "core/tunnel/profile_deviation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+#include "core/common/error.h"
+
+namespace rockface::tunnel {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kFacets = 720;
+const double kHalfFacet = kPi / kFacets;  // 0.25 deg
+// Sums of ~10^4 products of metre-sized doubles: 1e-9 is thousands of ulps.
+constexpr double kRounding = 1e-9;
+
+// Chord-middle radius of a facet of a tube of radius R.
+double faceted(double R) {
+  return R * std::cos(kHalfFacet);
+}
+
+const Eigen::Vector3d kDatum(2690000, 1250000, 500);
+
+// A straight tunnel heading north, chainage 0..20, on survey coordinates
+// of 10^6 m.
+Alignment north_tunnel() {
+  return Alignment::from_elements(
+      {{0, kDatum + Eigen::Vector3d(5, 7, 1)}, {20, kDatum + Eigen::Vector3d(5, 27, 1)}}, {0},
+      kDatum);
+}
+
+struct Mesh {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::uint8_t> not_rock;  // per triangle
+  SurfaceInput input() const { return {vertices, triangles, {}, not_rock}; }
+};
+
+// A tube about the ray centre `centre` (u, v): vertex columns at
+// theta_i = -90 deg + i * 0.5 deg, rows at `chainages`; the quad of column
+// i and row j is kept when keep(theta of its middle, chainage of its
+// middle) and lies at radius(theta mid, chainage mid).
+void add_tube(Mesh& m, const Alignment& al, const Eigen::Vector2d& centre,
+              const std::vector<double>& chainages,
+              const std::function<double(double, double)>& radius,
+              const std::function<bool(double, double)>& keep, bool not_rock = false) {
+  for (std::size_t j = 0; j + 1 < chainages.size(); ++j) {
+    for (int i = 0; i < kFacets; ++i) {
+      const double t0 = -kPi / 2 + 2 * kPi * i / kFacets, t1 = t0 + 2 * kPi / kFacets;
+      const double tm = (t0 + t1) / 2, cm = (chainages[j] + chainages[j + 1]) / 2;
+      if (!keep(tm, cm)) continue;
+      const double r = radius(tm, cm);
+      const int base = static_cast<int>(m.vertices.size());
+      for (double c : {chainages[j], chainages[j + 1]}) {
+        const TunnelFrame f = al.frame_at(c);
+        for (double t : {t0, t1})
+          m.vertices.push_back(
+              f.to_local(centre.x() + r * std::cos(t), centre.y() + r * std::sin(t)));
+      }
+      m.triangles.push_back({base, base + 1, base + 3});
+      m.triangles.push_back({base, base + 3, base + 2});
+      m.not_rock.push_back(not_rock);
+      m.not_rock.push_back(not_rock);
+    }
+  }
+}
+
+std::vector<double> steps(double from, double to, double step) {
+  std::vector<double> out;
+  const int n = static_cast<int>(std::lround((to - from) / step));
+  for (int k = 0; k <= n; ++k) out.push_back(from + (to - from) * k / n);
+  return out;
+}
+
+// One ray per facet for a circle of radius r: P / 720 (a hair more, so the
+// ceiling in the ray count does not add a ray).
+DeviationOptions one_ray_per_facet(double r, double from, double to, double spacing) {
+  DeviationOptions o;
+  o.chainage_from = from;
+  o.chainage_to = to;
+  o.section_spacing_m = spacing;
+  o.ray_spacing_m = 2 * kPi * r / kFacets * (1 + 1e-12);
+  o.underbreak_tolerance_m = 0.05;
+  return o;
+}
+
+const auto kEverywhere = [](double, double) { return true; };
+
+TEST(ProfileDeviation, FullRingOfOverbreakIsPiTimesTheDifferenceOfSquares) {
+  const Alignment al = north_tunnel();
+  const DesignProfile design = circle_profile(3.0, 0.0);
+  Mesh m;
+  const double R = 3.25;
+  add_tube(
+      m, al, {0, 0}, steps(0, 12, 0.1), [&](double, double) { return R; }, kEverywhere);
+  const ProfileDeviation d =
+      profile_deviation(m.input(), al, design, one_ray_per_facet(3.0, 2, 10, 0.5));
+  EXPECT_EQ(d.status, DeviationStatus::ok) << d.message;
+  ASSERT_EQ(d.sections.size(), 17u);
+  const double exact = kPi * (faceted(R) * faceted(R) - 9);
+  for (const auto& s : d.sections) {
+    EXPECT_NEAR(s.overbreak_area_m2, exact, kRounding) << s.chainage;
+    // The smooth closed form pi (R^2 - r^2), within the facets' sagitta
+    // (3.1e-5 m) times the perimeter (20.4 m): 6.3e-4 m^2.
+    EXPECT_NEAR(s.overbreak_area_m2, kPi * (R * R - 9), 7e-4);
+    EXPECT_EQ(s.underbreak_area_m2, 0);
+    EXPECT_DOUBLE_EQ(s.seen_fraction, 1.0);
+    EXPECT_NEAR(s.max_overbreak_m, faceted(R) - 3, kRounding);
+  }
+  EXPECT_NEAR(d.overbreak_volume_m3, exact * 8, 1e-8);
+  EXPECT_EQ(d.underbreak_volume_m3, 0);
+  EXPECT_FALSE(d.has_underbreak);
+  EXPECT_TRUE(d.beyond_tolerance.empty());
+  ASSERT_EQ(d.view.s.size(), 720u);
+  for (float v : d.view.deviation_m) EXPECT_NEAR(v, faceted(R) - 3, 1e-6);  // float storage
+}
+
+// A rectangular pocket on the developed view: columns 150..269 (60 deg) and
+// chainage 3.05..5.05, the surface there at radius `pocket` instead of 3 m.
+// Sections every 0.1 m from 1.0 put the pocket's ends halfway between two
+// sections, where the trapezoidal rule is exact for a step; the facets'
+// edges are the rays' cell edges, so the angular sum is exact too.
+Mesh pocket_mesh(const Alignment& al, double pocket) {
+  Mesh m;
+  const double t_from = -kPi / 2 + 2 * kPi * 150 / kFacets;
+  const double t_to = -kPi / 2 + 2 * kPi * 270 / kFacets;
+  auto in_pocket = [=](double t, double c) {
+    return t > t_from && t < t_to && c > 3.05 && c < 5.05;
+  };
+  add_tube(
+      m, al, {0, 0}, steps(0, 10, 0.05), [](double, double) { return 3.0; },
+      [&](double t, double c) { return !in_pocket(t, c); });
+  add_tube(
+      m, al, {0, 0}, steps(0, 10, 0.05), [&](double, double) { return pocket; }, in_pocket);
+  return m;
+}
+
+TEST(ProfileDeviation, PocketOfKnownOverbreakVolume) {
+  const Alignment al = north_tunnel();
+  const Mesh m = pocket_mesh(al, 3.2);
+  const ProfileDeviation d =
+      profile_deviation(m.input(), al, circle_profile(3.0), one_ray_per_facet(3.0, 1, 8, 0.1));
+  EXPECT_EQ(d.status, DeviationStatus::ok) << d.message;
+  const double sector = kPi / 3;  // 120 facets of 0.5 deg
+  const double area = 0.5 * (faceted(3.2) * faceted(3.2) - 9) * sector;
+  EXPECT_NEAR(d.overbreak_volume_m3, area * 2.0, kRounding);
+  // Against the smooth pocket: 1/2 (3.2^2 - 3^2) pi/3 * 2 m = 1.2985 m^3,
+  // within the sagitta (3.0e-5 m) over the pocket's 6.7 m^2: 2e-4 m^3.
+  EXPECT_NEAR(d.overbreak_volume_m3, 0.5 * (3.2 * 3.2 - 9) * sector * 2.0, 3e-4);
+  EXPECT_NEAR(d.max_overbreak_m, faceted(3.2) - 3, kRounding);
+  // The rest of the ring is the faceted 3 m tube: 2.9e-5 m of "underbreak",
+  // well inside the 5 cm tolerance.
+  EXPECT_TRUE(d.beyond_tolerance.empty());
+  EXPECT_NEAR(d.max_underbreak_m, 3 - faceted(3.0), kRounding);
+}
+
+TEST(ProfileDeviation, UnderbreakBeyondToleranceIsListedWithItsPosition) {
+  const Alignment al = north_tunnel();
+  const Mesh m = pocket_mesh(al, 2.9);
+  const DeviationOptions o = one_ray_per_facet(3.0, 1, 8, 0.1);
+  const ProfileDeviation d = profile_deviation(m.input(), al, circle_profile(3.0), o);
+  ASSERT_EQ(d.beyond_tolerance.size(), 1u);
+  const UnderbreakPatch& p = d.beyond_tolerance[0];
+  EXPECT_NEAR(p.max_depth_m, 3 - faceted(2.9), kRounding);
+  EXPECT_NEAR(p.chainage_from, 3.1, kRounding);
+  EXPECT_NEAR(p.chainage_to, 5.0, kRounding);
+  const double P = 2 * kPi * 3;
+  EXPECT_NEAR(p.s_from, P * 150 / 720, 1e-9);
+  EXPECT_NEAR(p.s_to, P * 270 / 720, 1e-9);
+  EXPECT_EQ(p.cells, 120u * 20u);
+  EXPECT_TRUE(d.has_underbreak);
+  EXPECT_NEAR(d.max_underbreak_m, 3 - faceted(2.9), kRounding);
+  const ProfilePosition& at = d.max_underbreak;
+  EXPECT_GE(at.chainage, 3.1 - kRounding);
+  EXPECT_LE(at.chainage, 5.0 + kRounding);
+  EXPECT_NEAR((at.survey - at.local - kDatum).norm(), 0, 1e-6);  // 2.7e6 m carry ~5e-10 m ulps
+  EXPECT_NEAR(al.place(at.local).distance(), faceted(2.9), 1e-9);
+  // Underbreak volume: the pocket plus the faceting of the rest of the ring
+  // over the 7 m evaluated.
+  const double pocket = 0.5 * (9 - faceted(2.9) * faceted(2.9)) * (kPi / 3) * 2.0;
+  const double facets = 0.5 * (9 - faceted(3.0) * faceted(3.0)) * (2 * kPi * 7 - (kPi / 3) * 2.0);
+  EXPECT_NEAR(d.underbreak_volume_m3, pocket + facets, kRounding);
+  EXPECT_EQ(d.overbreak_volume_m3, 0);
+}
+
+TEST(ProfileDeviation, AnUnseenWallIsReportedUnseenNotZero) {
+  const Alignment al = north_tunnel();
+  Mesh m;  // only the right half: floor middle, right wall, crown middle
+  add_tube(
+      m, al, {0, 0}, steps(0, 10, 0.1), [](double, double) { return 3.25; },
+      [](double t, double) { return t < kPi / 2; });
+  DeviationOptions o = one_ray_per_facet(3.0, 2, 8, 0.5);
+  o.min_seen_fraction = 0.6;
+  const ProfileDeviation d = profile_deviation(m.input(), al, circle_profile(3.0), o);
+  EXPECT_EQ(d.status, DeviationStatus::partly_seen);
+  EXPECT_NE(d.message.find("saw less than 60 %"), std::string::npos) << d.message;
+  EXPECT_NEAR(d.seen_fraction, 0.5, 1e-12);
+  for (const auto& s : d.sections) {
+    EXPECT_NEAR(s.seen_fraction, 0.5, 1e-12);
+    // Only the seen half counts: half the ring's area.
+    EXPECT_NEAR(s.overbreak_area_m2, 0.5 * kPi * (faceted(3.25) * faceted(3.25) - 9), kRounding);
+    EXPECT_NEAR(s.roof_seen, 0.5, 1e-12);
+    EXPECT_GT(s.walls_seen, 0.4);
+  }
+  // The left half is NaN ("not seen") in the developed view, never 0.
+  const std::size_t cols = d.view.s.size();
+  for (std::size_t j = 0; j < cols; ++j) {
+    const bool left = d.view.s[j] > 3 * kPi;
+    EXPECT_EQ(std::isnan(d.view.at(0, j)), left) << j;
+    EXPECT_EQ(d.view.state[j], left ? 1 : 0) << j;
+  }
+  o.min_seen_fraction = 0.4;
+  EXPECT_EQ(profile_deviation(m.input(), al, circle_profile(3.0), o).status, DeviationStatus::ok);
+}
+
+TEST(ProfileDeviation, NoWallsInViewIsSaidSo) {
+  const Alignment al = north_tunnel();
+  const DeviationOptions o = one_ray_per_facet(3.0, 2, 8, 0.5);
+  // An empty mesh.
+  const ProfileDeviation empty = profile_deviation(Mesh{}.input(), al, circle_profile(3.0), o);
+  EXPECT_EQ(empty.status, DeviationStatus::no_walls_in_view);
+  EXPECT_NE(empty.message.find("nothing of the profile"), std::string::npos) << empty.message;
+  EXPECT_NE(empty.message.find("not zero"), std::string::npos) << empty.message;
+  // Only the face, a disc across the tunnel at chainage 10, ahead of the
+  // evaluated range.
+  Mesh face;
+  const TunnelFrame f = al.frame_at(10);
+  face.vertices.push_back(f.origin);
+  for (int i = 0; i <= 36; ++i)
+    face.vertices.push_back(f.to_local(3 * std::cos(i * kPi / 18), 3 * std::sin(i * kPi / 18)));
+  for (int i = 1; i <= 36; ++i) face.triangles.push_back({0, i, i + 1});
+  EXPECT_EQ(profile_deviation(face.input(), al, circle_profile(3.0), o).status,
+            DeviationStatus::no_walls_in_view);
+  // Only the floor (within 45 deg of straight down).
+  Mesh floor;
+  add_tube(
+      floor, al, {0, 0}, steps(0, 10, 0.1), [](double, double) { return 3.1; },
+      // Within 30 deg of straight down (the columns run from -90 to 270 deg).
+      [](double t, double) { return std::abs(std::remainder(t + kPi / 2, 2 * kPi)) < kPi / 6; });
+  const ProfileDeviation fl = profile_deviation(floor.input(), al, circle_profile(3.0), o);
+  EXPECT_EQ(fl.status, DeviationStatus::no_walls_in_view);
+  EXPECT_NE(fl.message.find("only the floor"), std::string::npos) << fl.message;
+  EXPECT_NEAR(fl.sections[0].floor_seen, 120.0 / 180, 1e-12);  // 60 of the floor's 90 deg
+}
+
+TEST(ProfileDeviation, NotRockIsExcludedAndCounted) {
+  const Alignment al = north_tunnel();
+  Mesh m;
+  const double R = 3.25;
+  // The range pole's strip: 20 facets (10 deg) flagged not rock.
+  auto pole = [](double t, double) { return t > 0.1745 && t < 0.1745 + 20 * 2 * kPi / kFacets; };
+  add_tube(
+      m, al, {0, 0}, steps(0, 10, 0.1), [&](double, double) { return R; },
+      [&](double t, double c) { return !pole(t, c); });
+  add_tube(
+      m, al, {0, 0}, steps(0, 10, 0.1), [&](double, double) { return R; }, pole, true);
+  const ProfileDeviation d =
+      profile_deviation(m.input(), al, circle_profile(3.0), one_ray_per_facet(3.0, 2, 8, 0.5));
+  EXPECT_NEAR(d.excluded_fraction, 20.0 / 720, 1e-12);
+  EXPECT_NEAR(d.seen_fraction, 700.0 / 720, 1e-12);
+  const double seen_angle = 2 * kPi * 700 / 720;
+  EXPECT_NEAR(d.sections[0].overbreak_area_m2, 0.5 * (faceted(R) * faceted(R) - 9) * seen_angle,
+              kRounding);
+  EXPECT_NEAR(d.sections[0].excluded_fraction, 20.0 / 720, 1e-12);
+  // Per-vertex flags: a triangle with any flagged vertex is excluded.
+  std::vector<std::uint8_t> by_vertex(m.vertices.size(), 0);
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    if (m.not_rock[t])
+      for (int k : m.triangles[t]) by_vertex[static_cast<std::size_t>(k)] = 1;
+  const SurfaceInput vertex_masked{m.vertices, m.triangles, by_vertex, {}};
+  const ProfileDeviation dv =
+      profile_deviation(vertex_masked, al, circle_profile(3.0), one_ray_per_facet(3.0, 2, 8, 0.5));
+  EXPECT_NEAR(dv.excluded_fraction, 20.0 / 720, 1e-12);  // the strip's own vertices only
+}
+
+TEST(ProfileDeviation, HorseshoeFloorDepthIsMeasuredNormalToTheInvert) {
+  // The invert excavated 0.3 m deeper than designed; walls and crown on
+  // the design line. Rays leave the crown's centre, 4 m above the invert,
+  // and meet the floor obliquely: along the ray the deviation is 0.3 /
+  // cos(incidence), normal to the invert it is 0.3 m everywhere.
+  const Alignment al = north_tunnel();
+  const DesignProfile design = horseshoe_profile(5, 1.5, 10, -2.5);
+  const double P = design.perimeter();
+  const int n = static_cast<int>(std::ceil(P / 0.01));
+  std::vector<Eigen::Vector2d> outline;
+  for (int k = 0; k < n; ++k) {
+    Eigen::Vector2d q = design.point_at_length(P * k / n);
+    if (q.y() < -2.5 + 1e-9) q.y() -= 0.3;
+    outline.push_back(q);
+  }
+  Mesh m;
+  const auto cs = steps(0, 10, 0.5);
+  for (std::size_t j = 0; j < cs.size(); ++j) {
+    const TunnelFrame f = al.frame_at(cs[j]);
+    for (const auto& q : outline) m.vertices.push_back(f.to_local(q.x(), q.y()));
+  }
+  for (std::size_t j = 0; j + 1 < cs.size(); ++j)
+    for (int k = 0; k < n; ++k) {
+      const int a = static_cast<int>(j) * n + k, b = static_cast<int>(j) * n + (k + 1) % n;
+      m.triangles.push_back({a, b, b + n});
+      m.triangles.push_back({a, b + n, a + n});
+    }
+  DeviationOptions o;
+  o.chainage_from = 2;
+  o.chainage_to = 8;
+  o.section_spacing_m = 1;
+  o.ray_spacing_m = 0.05;
+  const ProfileDeviation d = profile_deviation(m.input(), al, design, o);
+  EXPECT_EQ(d.status, DeviationStatus::ok) << d.message;
+  const double half = design.segments()[0].length();
+  int floor_rays = 0;
+  for (std::size_t j = 0; j < d.view.s.size(); ++j) {
+    const Eigen::Vector2d q = design.point_at_length(d.view.s[j]);
+    if (q.y() < -2.5 + 1e-9 && std::abs(q.x()) < half - 0.6) {
+      // The floor is flat in the mesh and in the design: exact but for
+      // float storage of the view (1e-7 relative).
+      EXPECT_NEAR(d.view.at(3, j), 0.3, 1e-6) << q.transpose();
+      ++floor_rays;
+    } else if (q.y() > -2.0) {
+      // Walls and crown on the line but for the mesh's 1 cm chords
+      // (sagitta 0.01^2 / (8 * 5 m) = 2.5e-6 m).
+      EXPECT_NEAR(d.view.at(3, j), 0.0, 1e-5) << q.transpose();
+    }
+  }
+  EXPECT_GT(floor_rays, 50);
+  EXPECT_TRUE(d.beyond_tolerance.empty());
+  EXPECT_GT(d.sections[0].overbreak_area_m2, 0.3 * 2 * (half - 0.3));
+}
+
+TEST(ProfileDeviation, BadInputIsRefusedByName) {
+  const Alignment al = north_tunnel();
+  DeviationOptions o = one_ray_per_facet(3.0, 2, 8, 0.5);
+  o.ray_spacing_m = 0;
+  try {
+    profile_deviation(Mesh{}.input(), al, circle_profile(3.0), o);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("options.ray_spacing_m"), std::string::npos);
+  }
+  Mesh bad;
+  bad.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  bad.triangles = {{0, 1, 7}};
+  try {
+    profile_deviation(bad.input(), al, circle_profile(3.0), one_ray_per_facet(3.0, 2, 8, 0.5));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("triangles[0]"), std::string::npos) << e.what();
+  }
+  const ProfileDeviation out = profile_deviation(Mesh{}.input(), al, circle_profile(3.0),
+                                                 one_ray_per_facet(3.0, 30, 40, 0.5));
+  EXPECT_EQ(out.status, DeviationStatus::outside_alignment);
+  EXPECT_NE(out.message.find("outside the alignment"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rockface::tunnel
