@@ -10,6 +10,8 @@ namespace rockface::app {
 
 namespace {
 
+constexpr double kFaceClearM = 0.25;
+
 // The rear of the 3D image: its 2nd percentile of chainage behind the face
 // (the walls the cameras saw), ignoring a few stray points.
 double surface_start(const tunnel::Alignment& alignment, const VisitSurface& surface) {
@@ -65,7 +67,11 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
 
   // The round: back to the nearest face of an earlier visit behind this one.
   const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
-  out.round_to = out.placement.chainage;
+  // The round is measured up to kFaceClearM short of the face: a
+  // cross-section through the face's own corner cuts the face (its lean,
+  // its roughness, the reconstruction's smear into the corner), which would
+  // read as metres of underbreak.
+  out.round_to = out.placement.chainage - sense * kFaceClearM;
   std::optional<double> previous;
   for (const auto& p : store.list_visit_placements())
     if (p.visit_id != visit_id && sense * p.chainage < sense * out.round_to &&

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
 
@@ -46,7 +47,7 @@ cv::Scalar deviation_colour(double t) {
 cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
                                const tunnel::DesignProfile& profile, int width_px) {
   const auto& view = dev.view;
-  const int left = 90, right = 30, top = 56, bottom = 120;
+  const int left = 90, right = 30, top = 74, bottom = 140;
   const int w = std::max(200, width_px - left - right);
   const std::size_t rows = view.chainage.size(), cols = view.s.size();
   if (rows == 0 || cols == 0) {
@@ -64,8 +65,19 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
 
   // The scale: the deviation's extent rounded up to 5 cm, at least twice the
   // tolerance, so a tolerance-deep underbreak is a clear mid blue.
-  double extent =
-      std::max({0.1, 2 * dev.underbreak_tolerance_m, dev.max_overbreak_m, dev.max_underbreak_m});
+  // (The 98th percentile of the seen deviations, so one stray spike does not
+  // wash the view out.)
+  std::vector<float> seen;
+  for (std::size_t k = 0; k < view.deviation_m.size(); ++k)
+    if (view.state[k] == 0 && std::isfinite(view.deviation_m[k]))
+      seen.push_back(std::abs(view.deviation_m[k]));
+  double typical = 0;
+  if (!seen.empty()) {
+    const auto at = seen.begin() + static_cast<std::ptrdiff_t>(0.98 * (seen.size() - 1));
+    std::nth_element(seen.begin(), at, seen.end());
+    typical = *at;
+  }
+  double extent = std::max({0.1, 2 * dev.underbreak_tolerance_m, typical});
   extent = std::ceil(extent / 0.05 - 1e-9) * 0.05;
 
   // Cells: column j spans s[j] +- half a spacing, row i chainage[i]; the
@@ -138,7 +150,7 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
     cv::line(img, {left - 5, y}, {left, y}, kInk, 1);
     text(img, fixed(view.chainage[i], 2), {6, y + 5}, 0.42);
   }
-  text(img, "chainage (m)", {6, top - 8}, 0.42);
+  text(img, "chainage (m), face at the top", {6, top - 8}, 0.42);
 
   // Colour scale, cm.
   const int bar_y = top + h + 66, bar_w = std::min(w, 420), bar_x = left;
@@ -157,13 +169,13 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
   const std::string legend = "black outline: underbreak beyond " +
                              fixed(dev.underbreak_tolerance_m * 100, 0) +
                              " cm;  hatched: not seen;  dark: range pole";
-  text(img, legend, {bar_x + bar_w + 16, bar_y + 12}, 0.38);
+  text(img, legend, {bar_x, bar_y + 54}, 0.4);
 
   const std::string title =
       "Round ch " + fixed(view.chainage.front(), 2) + " to " + fixed(view.chainage.back(), 2) +
       ": overbreak " + fixed(dev.overbreak_volume_m3, 2) + " m3, underbreak " +
       fixed(dev.underbreak_volume_m3, 2) + " m3, seen " + fixed(dev.seen_fraction * 100, 0) + " %";
-  text(img, title, {6, 22}, 0.5);
+  text(img, title, {6, 20}, 0.5);
   if (dev.has_underbreak)
     text(img,
          "deepest underbreak " + fixed(dev.max_underbreak_m * 100, 1) + " cm at ch " +

@@ -1,0 +1,88 @@
+#include "firmware-app/tunnel/rendered_tunnel.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/common/error.h"
+
+namespace rockface::app {
+namespace {
+
+using Eigen::Vector3d;
+
+tunnel::Alignment straight_north() {
+  return tunnel::Alignment::from_elements({{0, {1000, 2000, 300}}, {100, {1000, 2100, 300}}}, {0},
+                                          Vector3d(1000, 2000, 300));
+}
+
+TEST(RenderedTunnel, SectionTruthOfABumpOnACircleIsTheClosedForm) {
+  const double radius = 3, depth = 0.3, a = 4.0, b = 6.5;
+  const tunnel::DesignProfile circle = tunnel::circle_profile(radius);
+  RenderedTunnelSpec spec;
+  spec.breaks.push_back({10, 14, a, b, depth});
+  // At the middle of the break's chainage the bump is d sin^2 over [a, b]:
+  // area = integral d w (1 + d w / (2 R)) ds = d L / 2 + 3 d^2 L / (16 R).
+  const double L = b - a;
+  const double expected = depth * L / 2 + 3 * depth * depth * L / (16 * radius);
+  const SectionTruth t = rendered_section_truth(spec, circle, 12.0);
+  // Midpoint rule at 1 mm on a smooth integrand: error ~ (1e-3)^2 relative.
+  EXPECT_NEAR(t.overbreak_m2, expected, 1e-5);
+  EXPECT_EQ(t.underbreak_m2, 0);
+  // Outside the break's chainage nothing.
+  EXPECT_EQ(rendered_section_truth(spec, circle, 9.0).overbreak_m2, 0);
+  // An underbreak of the same shape: d < 0 shrinks the area term.
+  spec.breaks[0].depth_m = -depth;
+  const SectionTruth u = rendered_section_truth(spec, circle, 12.0);
+  EXPECT_NEAR(u.underbreak_m2, depth * L / 2 - 3 * depth * depth * L / (16 * radius), 1e-5);
+}
+
+TEST(RenderedTunnel, WallsLieOnTheDesignLineAwayFromTheBreaks) {
+  const double radius = 3;
+  const tunnel::Alignment alignment = straight_north();
+  const tunnel::DesignProfile circle = tunnel::circle_profile(radius);
+  RenderedTunnelSpec spec;
+  spec.chainage_from = 10;
+  spec.face_chainage = 14;
+  spec.section_m = 0.5;
+  spec.facet_m = 0.1;
+  spec.breaks.push_back({11, 13, 4.0, 6.5, 0.3});
+  const auto patches = rendered_tunnel_patches(spec, alignment, circle, "test");
+  ASSERT_FALSE(patches.empty());
+  EXPECT_EQ(patches.back().id, "FACE");
+  int cols = 0;  // a facet every 0.1 m along each segment, its ends kept
+  for (const auto& seg : circle.segments()) cols += static_cast<int>(std::ceil(seg.length() / 0.1));
+  const int rows = 8;
+  EXPECT_EQ(patches.size(), static_cast<std::size_t>(rows * cols * 2 + 1));
+  double farthest = 0;
+  for (std::size_t k = 0; k + 1 < patches.size(); ++k)
+    for (const auto& v : patches[k].polygon) {
+      // The axis runs north through the datum: distance in the (x, z) plane.
+      const double r = std::hypot(v.x(), v.z());
+      EXPECT_GE(r, radius - 1e-9);
+      farthest = std::max(farthest, r);
+    }
+  // The break's crest (chainage 12, s 5.25) lies within half a facet
+  // (0.05 m) of a vertex: sin^2 there is at least cos^2(pi 0.05 / 2.5) = 0.996.
+  EXPECT_LE(farthest, radius + 0.3 + 1e-9);
+  EXPECT_GT(farthest, radius + 0.3 * 0.996);
+  // The face is the outline at chainage 14 (y = 14 in the datum frame).
+  for (const auto& v : patches.back().polygon) EXPECT_NEAR(v.y(), 14.0, 1e-9);
+}
+
+TEST(RenderedTunnel, ARangeOffTheAlignmentIsRefusedByName) {
+  RenderedTunnelSpec spec;
+  spec.chainage_from = 95;
+  spec.face_chainage = 105;
+  try {
+    rendered_tunnel_patches(spec, straight_north(), tunnel::circle_profile(3),
+                            "scene: tunnel.render");
+    FAIL() << "a range beyond chainage 100 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("tunnel.render"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("off the alignment"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rockface::app
