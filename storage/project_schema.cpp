@@ -247,11 +247,65 @@ UPDATE model SET camera_scale = scale, camera_qw = qw, camera_qx = qx, camera_qy
   WHERE registration_kind <> 'face_images';
 )sql";
 
+// Version 5: the tunnel (core/tunnel). New tables only; an earlier project
+// simply has no tunnel and no placed visits. Stations keep the surveyor's
+// survey coordinates as typed (REAL holds 10^6 m to 1e-10 m); the profile
+// keeps its segments in the cross-section frame (u right, v up, metres).
+constexpr const char* kVersion4To5 = R"sql(
+CREATE TABLE tunnel (
+  id INTEGER PRIMARY KEY CHECK (id = 1),
+  name TEXT NOT NULL,
+  alignment_kind TEXT NOT NULL CHECK (alignment_kind IN ('elements', 'polyline')),
+  drive TEXT NOT NULL CHECK (drive IN ('ascending', 'descending')),
+  underbreak_tolerance_m REAL NOT NULL,
+  profile_name TEXT NOT NULL DEFAULT '',
+  ray_centre_u REAL, ray_centre_v REAL,
+  alignment_source TEXT NOT NULL DEFAULT '',
+  profile_source TEXT NOT NULL DEFAULT '',
+  created_at TEXT NOT NULL
+);
+CREATE TABLE tunnel_station (
+  tunnel_id INTEGER NOT NULL REFERENCES tunnel(id) ON DELETE CASCADE,
+  idx INTEGER NOT NULL,
+  chainage REAL NOT NULL,
+  easting REAL NOT NULL, northing REAL NOT NULL, elevation REAL NOT NULL,
+  radius_m REAL,
+  PRIMARY KEY (tunnel_id, idx)
+);
+CREATE TABLE tunnel_profile_segment (
+  tunnel_id INTEGER NOT NULL REFERENCES tunnel(id) ON DELETE CASCADE,
+  idx INTEGER NOT NULL,
+  kind TEXT NOT NULL CHECK (kind IN ('line', 'arc')),
+  from_u REAL NOT NULL, from_v REAL NOT NULL, to_u REAL NOT NULL, to_v REAL NOT NULL,
+  centre_u REAL, centre_v REAL, ccw INTEGER,
+  PRIMARY KEY (tunnel_id, idx)
+);
+CREATE TABLE visit_placement (
+  visit_id INTEGER PRIMARY KEY REFERENCES visit(id),
+  method TEXT NOT NULL CHECK (method IN ('ground_control', 'chainage_compass')),
+  chainage REAL NOT NULL,
+  offset_m REAL NOT NULL,
+  height_m REAL,
+  rms_m REAL,
+  compass_azimuth_deg REAL,
+  note TEXT NOT NULL DEFAULT '',
+  created_at TEXT NOT NULL
+);
+CREATE TABLE visit_placement_residual (
+  visit_id INTEGER NOT NULL REFERENCES visit_placement(visit_id) ON DELETE CASCADE,
+  idx INTEGER NOT NULL,
+  label TEXT NOT NULL,
+  dx REAL NOT NULL, dy REAL NOT NULL, dz REAL NOT NULL,
+  PRIMARY KEY (visit_id, idx)
+);
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
-constexpr Step kSteps[] = {{2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4}};
+constexpr Step kSteps[] = {
+    {2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4}, {5, kVersion4To5}};
 
 }  // namespace
 
@@ -267,8 +321,10 @@ void create_version_1(sqlite::Connection& db) {
   tx.commit();
 }
 
-void migrate_to_current(sqlite::Connection& db) {
-  if (version_of(db) == kCurrentVersion) return;
+void migrate_to(sqlite::Connection& db, int target) {
+  if (target < 1 || target > kCurrentVersion)
+    throw Error("upgrading the project: no schema " + std::to_string(target));
+  if (version_of(db) == target) return;
   // foreign_keys cannot change inside a transaction; table rebuilds need it off.
   db.exec("PRAGMA foreign_keys = OFF", "upgrading the project");
   struct RestoreForeignKeys {
@@ -284,7 +340,7 @@ void migrate_to_current(sqlite::Connection& db) {
   sqlite::WriteTransaction tx(db, "upgrading the project");
   // Read again under the write lock: another process may have upgraded it.
   const int from = version_of(db);
-  if (from == kCurrentVersion) return;
+  if (from == target) return;
   if (from > kCurrentVersion)
     throw Error(db.file().string() +
                 ": upgrading the project: it was written by a newer rockface "
@@ -294,8 +350,11 @@ void migrate_to_current(sqlite::Connection& db) {
   if (from < 1)
     throw InputError(db.file().string(),
                      "not a rockface project (schema version " + std::to_string(from) + ")");
+  if (from > target)
+    throw Error(db.file().string() + ": upgrading the project: it is at schema " +
+                std::to_string(from) + ", past " + std::to_string(target));
   for (const Step& step : kSteps) {
-    if (step.to_version <= from) continue;
+    if (step.to_version <= from || step.to_version > target) continue;
     db.exec(with_capture_columns(step.sql),
             "upgrading the project to schema " + std::to_string(step.to_version));
   }
@@ -305,8 +364,12 @@ void migrate_to_current(sqlite::Connection& db) {
                 " row " + std::to_string(check.column_int(1)) +
                 " refers to a missing record; the project was left at schema " +
                 std::to_string(from));
-  db.exec("PRAGMA user_version = " + std::to_string(kCurrentVersion), "upgrading the project");
+  db.exec("PRAGMA user_version = " + std::to_string(target), "upgrading the project");
   tx.commit();
+}
+
+void migrate_to_current(sqlite::Connection& db) {
+  migrate_to(db, kCurrentVersion);
 }
 
 }  // namespace rockface::storage::schema

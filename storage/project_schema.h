@@ -24,7 +24,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 4;
+constexpr int kCurrentVersion = 5;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then
@@ -37,6 +37,9 @@ void create_version_1(sqlite::Connection& db);
 // rockface::Error when the file is newer than this program or a step fails;
 // the file then keeps its old version untouched.
 void migrate_to_current(sqlite::Connection& db);
+// The same up to schema `target` only: what an earlier rockface left, for
+// the migration tests of each step.
+void migrate_to(sqlite::Connection& db, int target);
 
 // user_version of the open database.
 int version_of(sqlite::Connection& db);
