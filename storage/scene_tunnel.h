@@ -37,6 +37,7 @@ struct SceneTunnelRender {
   double face_chainage = 0;  // the face
   double section_m = 0.25;
   double facet_m = 0.1;
+  double face_relief_m = 0;  // the face's centre bulges this far toward the cameras
   std::vector<SceneTunnelBreak> breaks;
 };
 

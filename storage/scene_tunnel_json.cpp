@@ -101,6 +101,8 @@ SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string&
       render.section_m = r.number_in(*s, rp + ".section_m", 0.01, 5);
     if (auto* s = r.optional(*v, rp, "facet_m"))
       render.facet_m = r.number_in(*s, rp + ".facet_m", 0.01, 5);
+    if (auto* f = r.optional(*v, rp, "face_relief_m"))
+      render.face_relief_m = r.number_in(*f, rp + ".face_relief_m", 0, 2);
     if (auto* bs = r.optional(*v, rp, "breaks")) {
       r.array(*bs, rp + ".breaks");
       for (std::size_t i = 0; i < bs->size(); ++i) {

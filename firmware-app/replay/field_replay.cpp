@@ -205,7 +205,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     for (const auto& seg : camera::true_trace_segments(synthetic->scene)) {
       // A rendered tunnel's walls are thousands of facets: the geologist maps
       // the face, so only the face's traces are taken.
-      if (scene->tunnel && scene->tunnel->render && seg.patch != "FACE") continue;
+      if (scene->tunnel && scene->tunnel->render && seg.patch.rfind("FACE", 0) != 0) continue;
       analysed.traces.push_back(
           {"T" + std::to_string(++n),
            seg.joint,
@@ -215,7 +215,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   if (analysed.patches.empty() && scene->tunnel && scene->tunnel->render) {
     // A rendered tunnel's free surface is its face.
     for (const auto& p : synthetic->scene.patches)
-      if (p.id == "FACE") {
+      if (p.id.rfind("FACE", 0) == 0) {
         analysed.patches.push_back({p.id, {}});
         for (const auto& x : p.polygon)
           analysed.patches.back().polygon.push_back(x + synthetic->origin);

@@ -41,6 +41,7 @@ RenderedTunnelSpec rendered_tunnel_spec(const storage::SceneTunnelRender& render
   spec.face_chainage = render.face_chainage;
   spec.section_m = render.section_m;
   spec.facet_m = render.facet_m;
+  spec.face_relief_m = render.face_relief_m;
   for (const auto& b : render.breaks)
     spec.breaks.push_back({b.chainage_from, b.chainage_to, b.s_from, b.s_to, b.depth_m});
   return spec;
@@ -97,20 +98,44 @@ std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnel
   const int cols = static_cast<int>(s_values.size());
   const double length = std::abs(spec.face_chainage - spec.chainage_from);
   const int rows = std::max(1, static_cast<int>(std::ceil(length / spec.section_m)));
-  auto point = [&](double chainage, double s) {
-    const Eigen::Vector2d p = profile.point_at_length(s);
-    const Eigen::Vector2d n = profile.outward_normal_at_length(s);
-    const Eigen::Vector2d q = p + rendered_deviation(spec, chainage, s) * n;
-    return alignment.frame_at(chainage).to_local(q.x(), q.y());
+  // The face bulges toward the cameras as a shallow four-sided pyramid
+  // (apex on the ray centre): each quarter is planar, so a joint's trace
+  // bends where it crosses from one to the next, as it does on a real face,
+  // and its plane can be measured from the trace alone.
+  const double toward = spec.face_chainage > spec.chainage_from ? -1.0 : 1.0;
+  const tunnel::TunnelFrame face_frame = alignment.frame_at(spec.face_chainage);
+  const Eigen::Vector2d apex = profile.ray_centre();
+  double reach_u = 1e-9, reach_v = 1e-9;
+  for (double s : s_values) {
+    const Eigen::Vector2d p = profile.point_at_length(s) - apex;
+    reach_u = std::max(reach_u, std::abs(p.x()));
+    reach_v = std::max(reach_v, std::abs(p.y()));
+  }
+  auto relief = [&](const Eigen::Vector2d& q) {
+    const Eigen::Vector2d p = q - apex;
+    return spec.face_relief_m * (1 - (std::abs(p.x()) / reach_u + std::abs(p.y()) / reach_v) / 2);
+  };
+  auto face_point = [&](const Eigen::Vector2d& q) -> Eigen::Vector3d {
+    return face_frame.to_local(q.x(), q.y()) + toward * relief(q) * face_frame.along;
+  };
+  auto section_uv = [&](double chainage, double s) -> Eigen::Vector2d {
+    return profile.point_at_length(s) +
+           rendered_deviation(spec, chainage, s) * profile.outward_normal_at_length(s);
   };
   std::vector<std::vector<Eigen::Vector3d>> grid(rows + 1);
-  std::vector<double> chainages(rows + 1);
   for (int i = 0; i <= rows; ++i) {
-    chainages[i] = spec.chainage_from + (spec.face_chainage - spec.chainage_from) * i / rows;
-    for (double s : s_values) grid[i].push_back(point(chainages[i], s));
+    const double chainage =
+        spec.chainage_from + (spec.face_chainage - spec.chainage_from) * i / rows;
+    for (double s : s_values) {
+      const Eigen::Vector2d q = section_uv(chainage, s);
+      // The walls' last row is the face's outline, where the face meets them.
+      grid[i].push_back(i == rows
+                            ? face_point(q)
+                            : Eigen::Vector3d(alignment.frame_at(chainage).to_local(q.x(), q.y())));
+    }
   }
   std::vector<camera::SyntheticPatch> patches;
-  patches.reserve(static_cast<std::size_t>(rows) * cols * 2 + 1);
+  patches.reserve(static_cast<std::size_t>(rows) * cols * 2 + 4);
   for (int i = 0; i < rows; ++i)
     for (int j = 0; j < cols; ++j) {
       const int jn = (j + 1) % cols;
@@ -118,7 +143,43 @@ std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnel
       patches.push_back({id + "0", {grid[i][j], grid[i + 1][j], grid[i + 1][jn]}});
       patches.push_back({id + "1", {grid[i][j], grid[i + 1][jn], grid[i][jn]}});
     }
-  patches.push_back({"FACE", grid[rows]});
+  // The face's quarters: the outline split where it crosses the lines
+  // through the apex (u = apex u, v = apex v), each run closed at the apex.
+  std::vector<Eigen::Vector2d> outline;
+  for (double s : s_values) outline.push_back(section_uv(spec.face_chainage, s));
+  auto quarter = [&](const Eigen::Vector2d& q) {
+    return (q.x() >= apex.x() ? 1 : 0) + (q.y() >= apex.y() ? 2 : 0);
+  };
+  std::vector<std::pair<int, std::vector<Eigen::Vector2d>>> runs;
+  for (int j = 0; j < cols; ++j) {
+    const Eigen::Vector2d a = outline[j], b = outline[(j + 1) % cols];
+    if (runs.empty() || runs.back().first != quarter(a)) runs.push_back({quarter(a), {}});
+    runs.back().second.push_back(a);
+    // Crossings of the two lines between a and b, in order along a -> b.
+    std::vector<double> ts;
+    for (int axis = 0; axis < 2; ++axis) {
+      const double da = a[axis] - apex[axis], db = b[axis] - apex[axis];
+      if ((da >= 0) != (db >= 0)) ts.push_back(da / (da - db));
+    }
+    std::sort(ts.begin(), ts.end());
+    for (double t : ts) {
+      const Eigen::Vector2d x = a + t * (b - a);
+      runs.back().second.push_back(x);
+      runs.push_back({quarter(b), {x}});
+    }
+  }
+  // The last run continues the first (the outline is closed).
+  if (runs.size() > 1 && runs.back().first == runs.front().first) {
+    runs.back().second.insert(runs.back().second.end(), runs.front().second.begin(),
+                              runs.front().second.end());
+    runs.erase(runs.begin());
+  }
+  int n = 0;
+  for (const auto& [q, run] : runs) {
+    camera::SyntheticPatch face{"FACE-" + std::to_string(++n), {face_point(apex)}};
+    for (const auto& x : run) face.polygon.push_back(face_point(x));
+    patches.push_back(std::move(face));
+  }
   return patches;
 }
 

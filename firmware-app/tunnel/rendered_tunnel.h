@@ -32,6 +32,9 @@ struct RenderedTunnelSpec {
   double face_chainage = 0;  // the face: walls end here, the face closes the section
   double section_m = 0.25;   // facets along the chainage
   double facet_m = 0.1;      // facets along the outline (chord sag on a 3 m arc: 0.4 mm)
+  // How far the face's centre bulges toward the cameras (m): the face is a
+  // shallow four-sided pyramid, its corners on the walls; 0 = flat.
+  double face_relief_m = 0;
   std::vector<RenderedBreak> breaks;
 };
 
@@ -55,8 +58,9 @@ SectionTruth rendered_section_truth(const RenderedTunnelSpec& spec,
                                     double s_from = 0, double s_to = -1);
 
 // The patches: triangles of walls, roof and invert from chainage_from to the
-// face, ids "TUNNEL-<row>-<col>-<k>", and the face "FACE" (the outline at
-// face_chainage, planar in the cross-section). Datum-relative like the
+// face, ids "TUNNEL-<row>-<col>-<k>", and the face (the outline at
+// face_chainage: four planar quarters "FACE-1".. "FACE-4", see
+// face_relief_m). Datum-relative like the
 // alignment's local frame. Throws InputError naming `where` when the range is
 // empty or off the alignment.
 std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnelSpec& spec,

@@ -1,8 +1,10 @@
 #include "firmware-app/tunnel/rendered_tunnel.h"
 
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "core/common/error.h"
 
@@ -49,13 +51,13 @@ TEST(RenderedTunnel, WallsLieOnTheDesignLineAwayFromTheBreaks) {
   spec.breaks.push_back({11, 13, 4.0, 6.5, 0.3});
   const auto patches = rendered_tunnel_patches(spec, alignment, circle, "test");
   ASSERT_FALSE(patches.empty());
-  EXPECT_EQ(patches.back().id, "FACE");
+  EXPECT_EQ(patches.back().id, "FACE-4");
   int cols = 0;  // a facet every 0.1 m along each segment, its ends kept
   for (const auto& seg : circle.segments()) cols += static_cast<int>(std::ceil(seg.length() / 0.1));
   const int rows = 8;
-  EXPECT_EQ(patches.size(), static_cast<std::size_t>(rows * cols * 2 + 1));
+  EXPECT_EQ(patches.size(), static_cast<std::size_t>(rows * cols * 2 + 4));
   double farthest = 0;
-  for (std::size_t k = 0; k + 1 < patches.size(); ++k)
+  for (std::size_t k = 0; k + 4 < patches.size(); ++k)
     for (const auto& v : patches[k].polygon) {
       // The axis runs north through the datum: distance in the (x, z) plane.
       const double r = std::hypot(v.x(), v.z());
@@ -66,8 +68,36 @@ TEST(RenderedTunnel, WallsLieOnTheDesignLineAwayFromTheBreaks) {
   // (0.05 m) of a vertex: sin^2 there is at least cos^2(pi 0.05 / 2.5) = 0.996.
   EXPECT_LE(farthest, radius + 0.3 + 1e-9);
   EXPECT_GT(farthest, radius + 0.3 * 0.996);
-  // The face is the outline at chainage 14 (y = 14 in the datum frame).
-  for (const auto& v : patches.back().polygon) EXPECT_NEAR(v.y(), 14.0, 1e-9);
+  // Without relief the face's four quarters lie in the section at chainage
+  // 14 (y = 14 in the datum frame).
+  for (std::size_t k = patches.size() - 4; k < patches.size(); ++k)
+    for (const auto& v : patches[k].polygon) EXPECT_NEAR(v.y(), 14.0, 1e-9);
+}
+
+TEST(RenderedTunnel, AFaceWithReliefIsFourPlanarQuartersMeetingTheWalls) {
+  const tunnel::DesignProfile horseshoe = tunnel::horseshoe_profile(3.0, 1.0, 5.0, -1.5);
+  RenderedTunnelSpec spec;
+  spec.chainage_from = 10;
+  spec.face_chainage = 14;
+  spec.face_relief_m = 0.4;
+  const auto patches = rendered_tunnel_patches(spec, straight_north(), horseshoe, "test");
+  std::vector<const camera::SyntheticPatch*> faces;
+  for (const auto& p : patches)
+    if (p.id.rfind("FACE", 0) == 0) faces.push_back(&p);
+  ASSERT_EQ(faces.size(), 4u);
+  for (const auto* f : faces) {
+    // The apex bulges 0.4 m toward the cameras (toward smaller chainage).
+    EXPECT_NEAR(f->polygon.front().y(), 14.0 - 0.4, 1e-9);
+    // Planar: every vertex on the plane of the first three (1e-9 m: the
+    // quarter is linear in u and v, so only rounding is left).
+    const Vector3d n =
+        (f->polygon[1] - f->polygon[0]).cross(f->polygon.back() - f->polygon[0]).normalized();
+    for (const auto& v : f->polygon) EXPECT_NEAR(n.dot(v - f->polygon[0]), 0.0, 1e-9) << f->id;
+  }
+  // The walls' last row is the face's outline: every wall vertex nearest the
+  // face is a vertex of a face quarter.
+  for (std::size_t k = 0; k + 4 < patches.size(); ++k)
+    for (const auto& v : patches[k].polygon) EXPECT_LE(v.y(), 14.0 + 1e-9);
 }
 
 TEST(RenderedTunnel, ARangeOffTheAlignmentIsRefusedByName) {
