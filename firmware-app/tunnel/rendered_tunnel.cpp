@@ -96,8 +96,7 @@ std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnel
     start += len;
   }
   const int cols = static_cast<int>(s_values.size());
-  const double length = std::abs(spec.face_chainage - spec.chainage_from);
-  const int rows = std::max(1, static_cast<int>(std::ceil(length / spec.section_m)));
+
   // The face bulges toward the cameras as a shallow four-sided pyramid
   // (apex on the ray centre): each quarter is planar, so a joint's trace
   // bends where it crosses from one to the next, as it does on a real face,
@@ -122,10 +121,18 @@ std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnel
     return profile.point_at_length(s) +
            rendered_deviation(spec, chainage, s) * profile.outward_normal_at_length(s);
   };
+  // The walls run in rows to half a section short of the face's deepest
+  // outline point; the last row is the face's outline (which the relief
+  // pulls up to face_relief_m toward the cameras).
+  const double wall_end =
+      spec.face_chainage + toward * (spec.face_relief_m + 0.5 * spec.section_m);
+  const double length = std::abs(wall_end - spec.chainage_from);
+  const int rows = 1 + std::max(1, static_cast<int>(std::ceil(length / spec.section_m)));
   std::vector<std::vector<Eigen::Vector3d>> grid(rows + 1);
   for (int i = 0; i <= rows; ++i) {
     const double chainage =
-        spec.chainage_from + (spec.face_chainage - spec.chainage_from) * i / rows;
+        i == rows ? spec.face_chainage
+                  : spec.chainage_from + (wall_end - spec.chainage_from) * i / (rows - 1);
     for (double s : s_values) {
       const Eigen::Vector2d q = section_uv(chainage, s);
       // The walls' last row is the face's outline, where the face meets them.
@@ -176,6 +183,14 @@ std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnel
   }
   int n = 0;
   for (const auto& [q, run] : runs) {
+    // A run of one point (the outline touching a line through the apex at
+    // a vertex) encloses nothing.
+    Eigen::Vector2d twice_area = Eigen::Vector2d::Zero();
+    for (std::size_t k = 0; k + 1 < run.size(); ++k) {
+      const Eigen::Vector2d a = run[k] - apex, b = run[k + 1] - apex;
+      twice_area.x() += a.x() * b.y() - a.y() * b.x();
+    }
+    if (std::abs(twice_area.x()) < 1e-6) continue;
     camera::SyntheticPatch face{"FACE-" + std::to_string(++n), {face_point(apex)}};
     for (const auto& x : run) face.polygon.push_back(face_point(x));
     patches.push_back(std::move(face));

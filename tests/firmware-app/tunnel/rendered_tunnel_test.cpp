@@ -45,7 +45,7 @@ TEST(RenderedTunnel, WallsLieOnTheDesignLineAwayFromTheBreaks) {
   const tunnel::DesignProfile circle = tunnel::circle_profile(radius);
   RenderedTunnelSpec spec;
   spec.chainage_from = 10;
-  spec.face_chainage = 14;
+  spec.face_chainage = 14.25;
   spec.section_m = 0.5;
   spec.facet_m = 0.1;
   spec.breaks.push_back({11, 13, 4.0, 6.5, 0.3});
@@ -54,7 +54,9 @@ TEST(RenderedTunnel, WallsLieOnTheDesignLineAwayFromTheBreaks) {
   EXPECT_EQ(patches.back().id, "FACE-4");
   int cols = 0;  // a facet every 0.1 m along each segment, its ends kept
   for (const auto& seg : circle.segments()) cols += static_cast<int>(std::ceil(seg.length() / 0.1));
-  const int rows = 8;
+  // Rows of 0.5 m to 14.0 m (half a section short of the face), then the
+  // face's outline: 8 + 1; chainage 12 is a row.
+  const int rows = 9;
   EXPECT_EQ(patches.size(), static_cast<std::size_t>(rows * cols * 2 + 4));
   double farthest = 0;
   for (std::size_t k = 0; k + 4 < patches.size(); ++k)
@@ -69,9 +71,9 @@ TEST(RenderedTunnel, WallsLieOnTheDesignLineAwayFromTheBreaks) {
   EXPECT_LE(farthest, radius + 0.3 + 1e-9);
   EXPECT_GT(farthest, radius + 0.3 * 0.996);
   // Without relief the face's four quarters lie in the section at chainage
-  // 14 (y = 14 in the datum frame).
+  // 14.25 (y = 14.25 in the datum frame).
   for (std::size_t k = patches.size() - 4; k < patches.size(); ++k)
-    for (const auto& v : patches[k].polygon) EXPECT_NEAR(v.y(), 14.0, 1e-9);
+    for (const auto& v : patches[k].polygon) EXPECT_NEAR(v.y(), 14.25, 1e-9);
 }
 
 TEST(RenderedTunnel, AFaceWithReliefIsFourPlanarQuartersMeetingTheWalls) {
