@@ -124,8 +124,7 @@ std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnel
   // The walls run in rows to half a section short of the face's deepest
   // outline point; the last row is the face's outline (which the relief
   // pulls up to face_relief_m toward the cameras).
-  const double wall_end =
-      spec.face_chainage + toward * (spec.face_relief_m + 0.5 * spec.section_m);
+  const double wall_end = spec.face_chainage + toward * (spec.face_relief_m + 0.5 * spec.section_m);
   const double length = std::abs(wall_end - spec.chainage_from);
   const int rows = 1 + std::max(1, static_cast<int>(std::ceil(length / spec.section_m)));
   std::vector<std::vector<Eigen::Vector3d>> grid(rows + 1);

@@ -34,7 +34,8 @@ std::string place_replayed_visit(storage::ProjectStore& store, const storage::Sc
                   scene.tunnel->placement->chainage, scene.tunnel->placement->offset);
     typed = text;
   }
-  const storage::VisitPlacement placement = place_visit(alignment, surface, visit_id, typed);
+  const storage::VisitPlacement placement =
+      place_visit(alignment, tunnel->profile, surface, visit_id, typed);
   store.save_visit_placement(placement);
   char text[160];
   std::snprintf(text, sizeof text,

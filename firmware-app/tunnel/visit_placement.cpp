@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "firmware-app/tunnel/face_front.h"
 
 namespace rockface::app {
 
@@ -38,8 +39,10 @@ Eigen::Vector3d typed_pole_position(const tunnel::Alignment& alignment, double c
   return alignment.frame_at(chainage).to_local(offset, height);
 }
 
-storage::VisitPlacement place_visit(const tunnel::Alignment& alignment, const VisitSurface& surface,
-                                    storage::RecordId visit_id, const std::string& typed) {
+storage::VisitPlacement place_visit(const tunnel::Alignment& alignment,
+                                    const tunnel::DesignProfile& profile,
+                                    const VisitSurface& surface, storage::RecordId visit_id,
+                                    const std::string& typed) {
   const std::string where = "visit " + std::to_string(visit_id);
   const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
   const std::size_t step = std::max<std::size_t>(1, surface.vertices.size() / kSamples);
@@ -50,7 +53,10 @@ storage::VisitPlacement place_visit(const tunnel::Alignment& alignment, const Vi
   std::vector<double> ahead;
   for (const auto& p : places) ahead.push_back(sense * p.chainage);
   std::sort(ahead.begin(), ahead.end());
-  const double face_ahead = ahead[static_cast<std::size_t>(0.99 * (ahead.size() - 1))];
+  double face_ahead = ahead[static_cast<std::size_t>(0.99 * (ahead.size() - 1))];
+  const double rear = sense * ahead[static_cast<std::size_t>(0.02 * (ahead.size() - 1))];
+  if (const auto front = face_front(alignment, profile, surface, rear))
+    face_ahead = sense * front->median_chainage;
   std::vector<double> offsets, heights;
   for (const auto& p : places)
     if (sense * p.chainage >= face_ahead - kFaceBandM) {

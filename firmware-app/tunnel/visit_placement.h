@@ -1,8 +1,9 @@
 #pragma once
 // A visit's place in the tunnel, found from its 3D image once the image lies
-// in the project frame: the face is the part of the surface farthest in the
-// drive direction, so its chainage is read off the alignment there, with the
-// offset and height of its centre. How the image came into the project frame
+// in the project frame: the face's chainage is where rays along the axis
+// meet it (face_front.h; the median of their hits), else the part of the
+// surface farthest in the drive direction; the offset and height are of the
+// surface within 0.3 m of the face. How the image came into the project frame
 // says how the visit was placed: monitoring targets with survey coordinates
 // (ground control, with their residuals) or the chainage the geologist typed
 // for the range pole plus the compass line.
@@ -24,7 +25,9 @@ Eigen::Vector3d typed_pole_position(const tunnel::Alignment& alignment, double c
 // `typed`: a note saying how the pole's place was given ("chainage 112.00
 // typed"); empty when the pole's position was surveyed. Throws InputError
 // naming the visit when its surface lies off the alignment.
-storage::VisitPlacement place_visit(const tunnel::Alignment& alignment, const VisitSurface& surface,
-                                    storage::RecordId visit_id, const std::string& typed = {});
+storage::VisitPlacement place_visit(const tunnel::Alignment& alignment,
+                                    const tunnel::DesignProfile& profile,
+                                    const VisitSurface& surface, storage::RecordId visit_id,
+                                    const std::string& typed = {});
 
 }  // namespace rockface::app

@@ -4,13 +4,14 @@
 #include <cmath>
 
 #include "core/common/error.h"
+#include "firmware-app/tunnel/face_front.h"
 #include "firmware-app/tunnel/visit_surface.h"
 
 namespace rockface::app {
 
 namespace {
 
-constexpr double kFaceClearM = 0.25;
+constexpr double kFaceClearM = 0.15;
 
 // The rear of the 3D image: its 2nd percentile of chainage behind the face
 // (the walls the cameras saw), ignoring a few stray points.
@@ -67,11 +68,13 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
 
   // The round: back to the nearest face of an earlier visit behind this one.
   const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
-  // The round is measured up to kFaceClearM short of the face: a
-  // cross-section through the face's own corner cuts the face (its lean,
-  // its roughness, the reconstruction's smear into the corner), which would
-  // read as metres of underbreak.
-  out.round_to = out.placement.chainage - sense * kFaceClearM;
+  // The round is measured up to kFaceClearM short of where the face reaches
+  // farthest back (face_front.h): a cross-section through the face cuts the
+  // face (its bulge, its roughness, the reconstruction's smear into the
+  // corner), which would read as metres of underbreak.
+  const double start = surface_start(alignment, surface);
+  const auto front = face_front(alignment, out.tunnel.profile, surface, start);
+  out.round_to = (front ? front->nearest_chainage : out.placement.chainage) - sense * kFaceClearM;
   std::optional<double> previous;
   for (const auto& p : store.list_visit_placements())
     if (p.visit_id != visit_id && sense * p.chainage < sense * out.round_to &&
@@ -79,7 +82,6 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
       previous = p.chainage;
       out.round_from_source = "face of visit " + std::to_string(p.visit_id);
     }
-  const double start = surface_start(alignment, surface);
   if (previous && sense * *previous >= sense * start) {
     out.round_from = *previous;
   } else {

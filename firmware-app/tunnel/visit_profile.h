@@ -17,9 +17,9 @@ struct VisitProfile {
   storage::TunnelRecord tunnel;
   storage::VisitPlacement placement;
   // The round evaluated: from the previous visit's face (in drive order) to
-  // 0.25 m short of this face (a section through the face's own corner
-  // would cut the face); the first visit's round starts where its surface
-  // starts.
+  // 0.15 m short of where this face reaches farthest back (a section through
+  // the face would cut it); the first visit's round starts where its
+  // surface starts.
   double round_from = 0, round_to = 0;
   std::string round_from_source;  // "face of visit 3" | "start of the 3D image"
   tunnel::ProfileDeviation deviation;
