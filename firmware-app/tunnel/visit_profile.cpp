@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/common/error.h"
 #include "firmware-app/tunnel/face_front.h"
@@ -91,6 +92,21 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
     out.round_from_source = "start of the 3D image";
   }
   tunnel::DeviationOptions options = deviation_options(preset);
+  if (sense * (out.round_to - out.round_from) < options.section_spacing_m) {
+    // The 3D image holds the face and nothing behind it: no wall, roof or
+    // invert to hold against the design. Said so, never zero over- and
+    // underbreak.
+    out.deviation.status = tunnel::DeviationStatus::no_walls_in_view;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the 3D image holds only the face (its surface starts at chainage %.2f, the "
+                  "face reaches back to %.2f): no walls, roof or invert in view to compare with "
+                  "the design profile",
+                  out.round_from, out.round_to + sense * kFaceClearM);
+    out.deviation.message = text;
+    out.deviation.underbreak_tolerance_m = out.tunnel.underbreak_tolerance_m;
+    return out;
+  }
   options.chainage_from = out.round_from;
   options.chainage_to = out.round_to;
   options.underbreak_tolerance_m = out.tunnel.underbreak_tolerance_m;
