@@ -25,6 +25,7 @@
 #include "core/tunnel/alignment.h"
 #include "core/tunnel/design_profile.h"
 #include "core/tunnel/drive_sets.h"
+#include "core/tunnel/mesh_raycast.h"
 #include "core/tunnel/profile_deviation.h"
 
 namespace rt = rockface::tunnel;
@@ -98,6 +99,23 @@ void BM_ProfileDeviationMeshSize(benchmark::State& state) {
   state.counters["vol_err_pct"] = 100 * (d.overbreak_volume_m3 - truth) / truth;
 }
 BENCHMARK(BM_ProfileDeviationMeshSize)
+    ->Args({360, 14})
+    ->Args({720, 70})
+    ->Args({1440, 350})
+    ->Unit(benchmark::kMillisecond);
+
+// The BVH alone, on the same meshes: how much of the above is its build.
+void BM_RaycasterBuild(benchmark::State& state) {
+  const int columns = static_cast<int>(state.range(0));
+  const double step = 10.0 / static_cast<double>(state.range(1));
+  const Mesh m = tube(north_tunnel(), columns, rows(step), [](double, double) { return 3.25; });
+  for (auto _ : state) {
+    const rt::MeshRaycaster caster(m.vertices, m.triangles);
+    benchmark::DoNotOptimize(&caster);
+  }
+  state.counters["triangles"] = static_cast<double>(m.triangles.size());
+}
+BENCHMARK(BM_RaycasterBuild)
     ->Args({360, 14})
     ->Args({720, 70})
     ->Args({1440, 350})
