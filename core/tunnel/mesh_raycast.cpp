@@ -57,6 +57,12 @@ int MeshRaycaster::build(int first, int count, int depth) {
     clo = clo.cwiseMin(c);
     chi = chi.cwiseMax(c);
   }
+  // Pad the box: a ray through a vertex or along an edge on the box's
+  // boundary must not be lost to the rounding of the slab test.
+  const double pad = kBarycentricSlack * std::max(1.0, (node.hi - node.lo).maxCoeff() +
+                                                           node.lo.cwiseAbs().maxCoeff());
+  node.lo.array() -= pad;
+  node.hi.array() += pad;
   const int id = static_cast<int>(nodes_.size());
   nodes_.push_back(node);
   if (count <= kLeafSize || depth > 60) {
@@ -119,10 +125,10 @@ std::optional<RayHit> MeshRaycaster::first_hit(const Eigen::Vector3d& origin,
         const double inv_det = 1 / det;
         const Eigen::Vector3d s = origin - t.a;
         const double u = s.dot(p) * inv_det;
-        if (u < 0 || u > 1) continue;
+        if (u < -kBarycentricSlack || u > 1 + kBarycentricSlack) continue;
         const Eigen::Vector3d q = s.cross(t.e1);
         const double v = direction.dot(q) * inv_det;
-        if (v < 0 || u + v > 1) continue;
+        if (v < -kBarycentricSlack || u + v > 1 + kBarycentricSlack) continue;
         const double dist = t.e2.dot(q) * inv_det;
         if (dist > t_min && dist <= limit) {
           limit = dist;

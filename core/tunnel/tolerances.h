@@ -39,4 +39,10 @@ inline constexpr double kFootChainageM = 1e-9;
 // the ray and the plane's normal) does not hit it.
 inline constexpr double kRayParallel = 1e-12;
 
+// A ray through a shared edge or vertex of two triangles must hit one of
+// them: barycentric coordinates are accepted this far outside [0, 1]
+// (rounding of u, v is ~1e-16 relative; a hit this far outside a triangle
+// lies within 1e-9 of its size from it, far below any mesh's accuracy).
+inline constexpr double kBarycentricSlack = 1e-9;
+
 }  // namespace rockface::tunnel

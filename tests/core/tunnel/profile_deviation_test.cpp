@@ -124,6 +124,25 @@ TEST(ProfileDeviation, FullRingOfOverbreakIsPiTimesTheDifferenceOfSquares) {
   for (float v : d.view.deviation_m) EXPECT_NEAR(v, faceted(R) - 3, 1e-6);  // float storage
 }
 
+TEST(ProfileDeviation, RaysThroughVerticesAndSeamsStillHitTheSurface) {
+  // 360 rays on a 720-facet tube: every ray meets a vertex column, and the
+  // sections (every 0.5 m) lie on the mesh's row seams (every 0.1 m): each
+  // ray passes exactly through a vertex shared by six triangles. It must
+  // hit (there it meets the tube at exactly R), never slip between them.
+  const Alignment al = north_tunnel();
+  Mesh m;
+  const double R = 3.25;
+  add_tube(
+      m, al, {0, 0}, steps(0, 12, 0.1), [&](double, double) { return R; }, kEverywhere);
+  DeviationOptions o = one_ray_per_facet(3.0, 2, 10, 0.5);
+  o.ray_spacing_m *= 2;
+  const ProfileDeviation d = profile_deviation(m.input(), al, circle_profile(3.0), o);
+  EXPECT_EQ(d.status, DeviationStatus::ok) << d.message;
+  EXPECT_EQ(d.seen_fraction, 1.0);
+  // Through vertices at radius R: the smooth closed form, to rounding.
+  for (const auto& s : d.sections) EXPECT_NEAR(s.overbreak_area_m2, kPi * (R * R - 9), 1e-8);
+}
+
 // A rectangular pocket on the developed view: columns 150..269 (60 deg) and
 // chainage 3.05..5.05, the surface there at radius `pocket` instead of 3 m.
 // Sections every 0.1 m from 1.0 put the pocket's ends halfway between two
