@@ -7,6 +7,7 @@
 
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/tunnel/report_tunnel.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
 #include "storage/project_store.h"
@@ -31,7 +32,8 @@ VerbRun setup_report(CLI::App& sub) {
     storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
     const auto visit = o->visit ? o->visit : store.latest_visit();
     if (!visit) throw InputError(o->project, "the project has no visit to report");
-    const storage::FieldReport report = storage::collect_field_report(store, *visit);
+    storage::FieldReport report = storage::collect_field_report(store, *visit);
+    add_tunnel_to_report(store, report);
     storage::write_field_report_pdf(report, o->out);
     std::cout << "field report of visit " << *visit << ": " << o->out << " ("
               << report.blocks.size() << " blocks, " << report.joints.size() << " joints)\n";

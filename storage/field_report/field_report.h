@@ -13,6 +13,7 @@
 
 #include "core/photogrammetry/camera/camera_model.h"
 #include "storage/project_store.h"
+#include "storage/tunnel_records.h"
 
 namespace rockface::storage {
 
@@ -73,6 +74,35 @@ struct ReportedAccuracy {
   std::vector<std::string> warnings;
 };
 
+// The visit in the tunnel (issue 22): filled by the application (the
+// profile is a computation on the visit's 3D image), absent without a tunnel.
+struct ReportedTunnelPlane {
+  std::string label;  // a joint or a set
+  double dip_deg = 0, dipdir_deg = 0;
+  std::optional<double> chainage, offset_m;  // of its point, when it has one
+  std::string strike_class;                  // Bieniawski's words
+  int rmr_adjustment = 0;
+  double margin_deg = 0;
+  bool marginal = false;
+};
+
+struct ReportedTunnelBlock {
+  std::string label;
+  Eigen::Vector3d survey = Eigen::Vector3d::Zero();  // centroid, survey coordinates
+  double chainage = 0, offset_m = 0, height_m = 0;
+};
+
+struct ReportedTunnel {
+  std::string name, drive, profile_name;
+  double first_chainage = 0, last_chainage = 0;
+  double perimeter_m = 0, area_m2 = 0, underbreak_tolerance_m = 0;
+  std::optional<VisitPlacement> placement;
+  std::vector<std::string> profile_lines;  // the round against the design, in words
+  cv::Mat developed_view;                  // BGR; empty when not placed
+  std::vector<ReportedTunnelPlane> planes;
+  std::vector<ReportedTunnelBlock> blocks;
+};
+
 struct FieldReport {
   std::string project_name, project_file;
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();
@@ -103,6 +133,8 @@ struct FieldReport {
   std::optional<RecordId> analysis_id;
   std::vector<std::string> effects;
   std::vector<ReportedBlock> blocks;
+
+  std::optional<ReportedTunnel> tunnel;
 };
 
 // Reads everything the report shows for `visit_id` (InputError naming the

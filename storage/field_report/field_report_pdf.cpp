@@ -218,6 +218,71 @@ void accuracy_section(PdfPages& pdf, const FieldReport& r) {
   for (const auto& w : a.warnings) pdf.line("warning: " + w, kSmall);
 }
 
+void tunnel_section(PdfPages& pdf, const FieldReport& r) {
+  if (!r.tunnel) return;
+  const ReportedTunnel& t = *r.tunnel;
+  pdf.heading("The tunnel", 0.35 * kPageH);
+  pdf.line("tunnel " + t.name + ": chainage " + report_number(t.first_chainage, 2) + " to " +
+           report_number(t.last_chainage, 2) + " m, drive " + t.drive);
+  pdf.line("design profile " + (t.profile_name.empty() ? std::string("-") : t.profile_name) + ": " +
+           report_number(t.perimeter_m, 2) + " m around, " + report_number(t.area_m2, 2) +
+           " m2; underbreak tolerance " + report_number(t.underbreak_tolerance_m * 100, 0) + " cm");
+  if (!t.placement) {
+    pdf.line("this visit is not placed in the tunnel");
+  } else {
+    const auto& p = *t.placement;
+    pdf.line("face at chainage " + report_number(p.chainage, 2) + ", offset " +
+             report_number(p.offset_m, 2) + " m; placed by " +
+             (p.method == VisitPlacement::Method::ground_control
+                  ? std::string("monitoring targets with survey coordinates")
+                  : std::string("the typed chainage and the compass line")) +
+             (p.note.empty() ? "" : " (" + p.note + ")"));
+    if (p.rms_m) pdf.line("target residual rms " + report_number(*p.rms_m * 1000, 1) + " mm");
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& res : p.residuals)
+      rows.push_back({res.label, report_number(res.residual.norm() * 1000, 1)});
+    if (!rows.empty()) pdf.table({{"target", 80}, {"residual mm", 80}}, rows);
+  }
+  for (const auto& line : t.profile_lines) pdf.line(line, kSmall);
+  if (!t.developed_view.empty()) {
+    pdf.image(t.developed_view, PdfPages::text_width(), 0.4 * kPageH);
+    pdf.line("developed view of the round: overbreak red, underbreak blue, not seen hatched",
+             kSmall);
+  }
+  if (!t.planes.empty()) {
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& pl : t.planes)
+      rows.push_back({pl.label, report_number(pl.dip_deg, 1), report_number(pl.dipdir_deg, 1),
+                      report_number(pl.chainage, 2), report_number(pl.offset_m, 2),
+                      pl.strike_class + (pl.marginal ? " ?" : ""),
+                      std::to_string(pl.rmr_adjustment), report_number(pl.margin_deg, 1)});
+    pdf.table({{"plane", 40},
+               {"dip deg", 45},
+               {"dip dir deg", 55},
+               {"chainage", 50},
+               {"offset m", 45},
+               {"against the drive (RMR89)", 170},
+               {"RMR adj", 40},
+               {"margin deg", 50}},
+              rows, kSmall);
+  }
+  if (!t.blocks.empty()) {
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& b : t.blocks)
+      rows.push_back({b.label, report_number(b.survey.x(), 3), report_number(b.survey.y(), 3),
+                      report_number(b.survey.z(), 3), report_number(b.chainage, 2),
+                      report_number(b.offset_m, 2), report_number(b.height_m, 2)});
+    pdf.table({{"block", 40},
+               {"easting", 75},
+               {"northing", 80},
+               {"elevation", 60},
+               {"chainage", 55},
+               {"offset m", 50},
+               {"height m", 50}},
+              rows, kSmall);
+  }
+}
+
 void joint_section(PdfPages& pdf, const FieldReport& r) {
   pdf.heading("Joints");
   std::vector<std::vector<std::string>> rows;
@@ -295,6 +360,7 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
            report_number(r.datum.y(), 3) + ", Z " + report_number(r.datum.z(), 3));
   camera_section(pdf, r);
   accuracy_section(pdf, r);
+  tunnel_section(pdf, r);
 
   pdf.heading("The face", 0.3 * kPageH);
   if (r.photograph.empty()) {

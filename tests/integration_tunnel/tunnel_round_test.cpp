@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -192,6 +193,23 @@ TEST_F(TunnelRound, TheProfileVerbWritesThePictureAndTheFigures) {
   EXPECT_FALSE(j["sections"].empty());
 }
 
+TEST_F(TunnelRound, TheFieldReportPlacesTheVisitAndPrintsItsRound) {
+  const fs::path pdf = dir_ / "report.pdf", text = dir_ / "report.txt";
+  const std::string command = std::string(ROCKFACE_BINARY_DIR) + "/rockface report " +
+                              (dir_ / "round.rockface").string() + " --out " + pdf.string() +
+                              " > /dev/null && pdftotext -layout " + pdf.string() + " " +
+                              text.string();
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream in(text);
+  const std::string body((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(body.find("The tunnel"), std::string::npos);
+  EXPECT_NE(body.find("tunnel Main drive"), std::string::npos);
+  EXPECT_NE(body.find("placed by the typed chainage and the compass line"), std::string::npos);
+  EXPECT_NE(body.find("overbreak"), std::string::npos);
+  // Each joint against the drive in Bieniawski's words.
+  EXPECT_NE(body.find("strike parallel to the axis"), std::string::npos);
+}
+
 TEST(TunnelNoWalls, AVisitThatSeesOnlyTheFaceSaysSoInsteadOfZero) {
   const fs::path dir =
       fs::temp_directory_path() / ("rockface-tunnel-nowalls-" + std::to_string(::getpid()));
@@ -215,7 +233,8 @@ TEST(TunnelNoWalls, AVisitThatSeesOnlyTheFaceSaysSoInsteadOfZero) {
       {scene.string(), (dir / "face-only.rockface").string(), Preset::fast}, quiet);
   storage::ProjectStore store = storage::ProjectStore::open(dir / "face-only.rockface");
   const VisitProfile p = visit_profile(store, out.visit_id, Preset::standard);
-  EXPECT_EQ(p.deviation.status, tunnel::DeviationStatus::no_walls_in_view) << p.deviation.message << " round " << p.round_from << " to " << p.round_to;
+  EXPECT_EQ(p.deviation.status, tunnel::DeviationStatus::no_walls_in_view)
+      << p.deviation.message << " round " << p.round_from << " to " << p.round_to;
   EXPECT_FALSE(p.deviation.message.empty());
   fs::remove_all(dir);
 }
