@@ -210,6 +210,26 @@ TEST_F(TunnelRound, TheFieldReportPlacesTheVisitAndPrintsItsRound) {
   EXPECT_NE(body.find("strike parallel to the axis"), std::string::npos);
 }
 
+TEST_F(TunnelRound, TheTabletShowsTheRoundOnTheProjectScreen) {
+  // The geologist taps "Excavation of this round" on the Project screen: the
+  // worker measures the round and the screen shows its figures and picture.
+  const fs::path steps = dir_ / "tunnel.steps.json", out = dir_ / "ui.txt";
+  std::ofstream(steps) << R"({ "viewport": [1280, 800], "steps": [
+      { "tap": "Project" }, { "tap": "Excavation of this round" }, { "wait": "task" },
+      { "screenshot": "tunnel-round" } ] })";
+  const std::string command = "EGL_PLATFORM=surfaceless " + std::string(ROCKFACE_BINARY_DIR) +
+                              "/rockface ui --project " + (dir_ / "round.rockface").string() +
+                              " --headless --script " + steps.string() + " --screenshots " +
+                              dir_.string() + " > " + out.string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("status: Excavation against the design: tunnel Main drive"),
+            std::string::npos)
+      << text;
+  EXPECT_TRUE(fs::exists(dir_ / "tunnel-round.png"));
+}
+
 TEST(TunnelNoWalls, AVisitThatSeesOnlyTheFaceSaysSoInsteadOfZero) {
   const fs::path dir =
       fs::temp_directory_path() / ("rockface-tunnel-nowalls-" + std::to_string(::getpid()));
