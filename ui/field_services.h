@@ -66,6 +66,12 @@ class TunnelRunner {
   virtual TunnelPicture profile(const std::filesystem::path& project, storage::RecordId visit_id,
                                 Progress& progress) = 0;
   virtual TunnelPicture drive(const std::filesystem::path& project, Progress& progress) = 0;
+  // Places the visit by the chainage, offset and height (m above the axis)
+  // the geologist typed for the range pole's lower target; returns what was
+  // placed in words.
+  virtual std::vector<std::string> place(const std::filesystem::path& project,
+                                         storage::RecordId visit_id, double chainage, double offset,
+                                         double height, Progress& progress) = 0;
 };
 
 struct FieldServices {

@@ -69,6 +69,51 @@ void show(AppState& app, const std::string& view) {
       });
 }
 
+void place(AppState& app) {
+  TunnelRunner* runner = app.services.tunnel;
+  const auto file = app.session->file();
+  const auto visit = *app.session->visit();
+  const TunnelState& t = app.tunnel;
+  const double chainage = t.typed_chainage, offset = t.typed_offset, height = t.typed_height;
+  auto lines = std::make_shared<std::vector<std::string>>();
+  app.task.start(
+      "Place the visit",
+      [runner, file, visit, chainage, offset, height, lines](Progress& progress) {
+        *lines = runner->place(file, visit, chainage, offset, height, progress);
+        return lines->empty() ? std::string("placed") : lines->front();
+      },
+      [&app, lines](const TaskOutcome& outcome) {
+        app.tunnel.loaded = false;  // re-read the placement
+        if (outcome.kind == TaskOutcome::Kind::done) {
+          app.session->refresh();  // the moved 3D images are the visit's models now
+          app.tunnel.lines = *lines;
+        }
+      });
+}
+
+// The form for a visit with no survey target in view: where the range
+// pole's lower target stood.
+void draw_typed_placement(AppState& app) {
+  TunnelState& t = app.tunnel;
+  if (t.record && !t.record->stations.empty() && t.typed_chainage == 0)
+    t.typed_chainage = t.record->stations.front().chainage;
+  const float w = 150 * app.targets.scale();
+  ImGui::TextWrapped("Range pole's lower target (m):");
+  ImGui::SetNextItemWidth(w);
+  ImGui::InputDouble("chainage", &t.typed_chainage, 0.1, 1.0, "%.2f");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(w);
+  ImGui::InputDouble("offset right", &t.typed_offset, 0.1, 1.0, "%.2f");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(w);
+  ImGui::InputDouble("height above axis", &t.typed_height, 0.1, 1.0, "%.2f");
+  const bool can = !app.task.running() && app.services.tunnel && !app.session->read_only() &&
+                   !app.session->pairs().empty() && app.session->measurements().empty();
+  if (app.targets.button("Place this visit", 0, can)) place(app);
+  if (!app.session->measurements().empty())
+    ImGui::TextDisabled("(placing moves the 3D image: only before mapping on it)");
+}
+
 }  // namespace
 
 void draw_tunnel_panel(AppState& app) {
@@ -97,6 +142,7 @@ void draw_tunnel_panel(AppState& app) {
     if (p.rms_m) ImGui::TextWrapped("Target residual rms %s mm", fixed(*p.rms_m * 1000, 1).c_str());
   } else if (app.session->visit()) {
     ImGui::TextWrapped("This visit is not placed in the tunnel yet.");
+    draw_typed_placement(app);
   }
   const bool idle = !app.task.running() && app.services.tunnel;
   if (app.targets.button("Excavation of this round", 0, idle && t.placement.has_value()))

@@ -24,6 +24,8 @@ struct TunnelState {
   std::optional<storage::TunnelRecord> record;
   std::optional<storage::VisitPlacement> placement;
   std::string view;  // "excavation" | "drive" | empty
+  // The typed placement of the range pole's lower target (m).
+  double typed_chainage = 0, typed_offset = 0, typed_height = 0;
   std::vector<std::string> lines;
   PictureTexture picture;
 };

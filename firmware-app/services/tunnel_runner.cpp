@@ -1,8 +1,11 @@
 // The tablet's tunnel views (ui::TunnelRunner): each opens its own
 // connection to the project (one per thread) and draws what the verbs
 // `profile` and `drive` write.
+#include <cstdio>
+
 #include "firmware-app/services/ui_services.h"
 #include "firmware-app/tunnel/project_drive.h"
+#include "firmware-app/tunnel/typed_placement.h"
 #include "firmware-app/tunnel/visit_profile.h"
 #include "firmware-app/tunnel/visit_profile_json.h"
 #include "storage/field_report/tunnel_pictures.h"
@@ -36,6 +39,20 @@ ui::TunnelPicture StoreTunnelRunner::drive(const std::filesystem::path& project,
   const tunnel::DriveSets d = project_drive(store);
   progress.step("drive picture", 0.9);
   return {storage::drive_picture(d), drive_summary(d)};
+}
+
+std::vector<std::string> StoreTunnelRunner::place(const std::filesystem::path& project,
+                                                  storage::RecordId visit_id, double chainage,
+                                                  double offset, double height,
+                                                  Progress& progress) {
+  progress.step("moving the 3D images to the typed chainage", 0.2);
+  storage::ProjectStore store = storage::ProjectStore::open(project);
+  const storage::VisitPlacement p =
+      place_by_typed_chainage(store, visit_id, {chainage, offset, height});
+  char text[160];
+  std::snprintf(text, sizeof text, "visit %lld placed: face at chainage %.2f, offset %.2f m",
+                static_cast<long long>(visit_id), p.chainage, p.offset_m);
+  return {text, p.note};
 }
 
 }  // namespace rockface::app

@@ -27,6 +27,9 @@ class StoreTunnelRunner final : public ui::TunnelRunner {
   ui::TunnelPicture profile(const std::filesystem::path& project, storage::RecordId visit_id,
                             Progress& progress) override;
   ui::TunnelPicture drive(const std::filesystem::path& project, Progress& progress) override;
+  std::vector<std::string> place(const std::filesystem::path& project, storage::RecordId visit_id,
+                                 double chainage, double offset, double height,
+                                 Progress& progress) override;
 };
 
 // source: a scene with an imaging section, a folder of captures, or empty
