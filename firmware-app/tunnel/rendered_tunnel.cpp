@@ -160,7 +160,10 @@ std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnel
   for (int j = 0; j < cols; ++j) {
     const Eigen::Vector2d a = outline[j], b = outline[(j + 1) % cols];
     if (runs.empty() || runs.back().first != quarter(a)) runs.push_back({quarter(a), {}});
-    runs.back().second.push_back(a);
+    // An outline vertex on a line through the apex is also the crossing
+    // that closed the previous run: keep it once.
+    if (runs.back().second.empty() || (runs.back().second.back() - a).norm() > 1e-12)
+      runs.back().second.push_back(a);
     // Crossings of the two lines between a and b, in order along a -> b.
     std::vector<double> ts;
     for (int axis = 0; axis < 2; ++axis) {
@@ -170,14 +173,16 @@ std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnel
     std::sort(ts.begin(), ts.end());
     for (double t : ts) {
       const Eigen::Vector2d x = a + t * (b - a);
-      runs.back().second.push_back(x);
+      // (When the crossing is `a` itself it already ends this run.)
+      if ((x - runs.back().second.back()).norm() > 1e-12) runs.back().second.push_back(x);
       runs.push_back({quarter(b), {x}});
     }
   }
   // The last run continues the first (the outline is closed).
   if (runs.size() > 1 && runs.back().first == runs.front().first) {
-    runs.back().second.insert(runs.back().second.end(), runs.front().second.begin(),
-                              runs.front().second.end());
+    auto& last = runs.back().second;
+    for (const auto& x : runs.front().second)
+      if (last.empty() || (x - last.back()).norm() > 1e-12) last.push_back(x);
     runs.erase(runs.begin());
   }
   int n = 0;
@@ -190,8 +195,20 @@ std::vector<camera::SyntheticPatch> rendered_tunnel_patches(const RenderedTunnel
       twice_area.x() += a.x() * b.y() - a.y() * b.x();
     }
     if (std::abs(twice_area.x()) < 1e-6) continue;
-    camera::SyntheticPatch face{"FACE-" + std::to_string(++n), {face_point(apex)}};
-    for (const auto& x : run) face.polygon.push_back(face_point(x));
+    // Points in line with their neighbours (the facets of a straight
+    // invert) add nothing to the polygon and give the free surface's convex
+    // partition zero-angle corners: dropped.
+    std::vector<Eigen::Vector2d> corners{apex};
+    for (std::size_t k = 0; k < run.size(); ++k) {
+      const Eigen::Vector2d& prev = corners.back();
+      const Eigen::Vector2d& next = k + 1 < run.size() ? run[k + 1] : apex;
+      const Eigen::Vector2d d1 = run[k] - prev, d2 = next - run[k];
+      if (std::abs(d1.x() * d2.y() - d1.y() * d2.x()) > 1e-9 * d1.norm() * d2.norm() ||
+          d1.dot(d2) < 0)
+        corners.push_back(run[k]);
+    }
+    camera::SyntheticPatch face{"FACE-" + std::to_string(++n), {}};
+    for (const auto& x : corners) face.polygon.push_back(face_point(x));
     patches.push_back(std::move(face));
   }
   return patches;
