@@ -157,6 +157,13 @@ const char* deviation_status_name(DeviationStatus status) {
 
 ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment& alignment,
                                    const DesignProfile& profile, const DeviationOptions& options) {
+  const MeshRaycaster caster(surface.vertices, surface.triangles);
+  return profile_deviation(caster, surface, alignment, profile, options);
+}
+
+ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInput& surface,
+                                   const Alignment& alignment, const DesignProfile& profile,
+                                   const DeviationOptions& options) {
   require_positive(options.section_spacing_m, "section_spacing_m");
   require_positive(options.ray_spacing_m, "ray_spacing_m");
   require_positive(options.max_overbreak_m, "max_overbreak_m");
@@ -193,7 +200,6 @@ ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment&
     hi = std::min(hi, alignment.last_chainage());
   }
 
-  const MeshRaycaster caster(surface.vertices, surface.triangles);
   out.triangles = caster.triangle_count();
   std::vector<std::uint8_t> masked(surface.triangles.size(), 0);
   for (std::size_t i = 0; i < surface.triangles.size(); ++i) {
@@ -304,8 +310,8 @@ ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment&
   }
   out.seen_fraction = static_cast<double>(seen) / static_cast<double>(rows * cols);
   out.excluded_fraction = static_cast<double>(excluded) / static_cast<double>(rows * cols);
-  out.beyond_tolerance =
-      patches_of(out, options.underbreak_tolerance_m, cell_s, rows > 1 ? dc : 0, position);
+  out.beyond_tolerance = patches_of(out, options.underbreak_tolerance_m, cell_s,
+                                    rows > 1 ? dc : options.section_spacing_m, position);
 
   // What the geologist is told.
   bool walls_or_roof = false;

@@ -34,12 +34,16 @@
 
 #include "core/tunnel/alignment.h"
 #include "core/tunnel/design_profile.h"
+#include "core/tunnel/mesh_raycast.h"
 
 namespace rockface::tunnel {
 
 struct DeviationOptions {
-  double chainage_from = 0, chainage_to = 0;  // the round: ascending or not, both included
-  double section_spacing_m = 0.25;            // between cross-sections
+  // The round: ascending or not, both included. Keep its end ~0.5 m behind
+  // the face (FacePlace::face_chainage in tunnel_relative.h): a section
+  // closer to the face meets the face's own relief, which is not wall.
+  double chainage_from = 0, chainage_to = 0;
+  double section_spacing_m = 0.25;  // between cross-sections
   // Between rays along the design outline (the angular resolution expressed
   // at the outline: angle = spacing / distance from the ray centre). The
   // area error of a section is of the order of the deviation's variation
@@ -128,7 +132,10 @@ struct ProfileDeviation {
   ProfilePosition max_underbreak;  // deepest normal underbreak (valid if has_underbreak)
   double max_underbreak_m = 0;
   double max_overbreak_m = 0;
-  std::vector<UnderbreakPatch> beyond_tolerance;  // deepest first
+  // Deepest first. A patch's area is that of its cells on the developed
+  // view (ray spacing x section spacing each; one section: the spacing
+  // asked for).
+  std::vector<UnderbreakPatch> beyond_tolerance;
   double underbreak_tolerance_m = 0;
   DevelopedView view;
   std::size_t rays_cast = 0, triangles = 0;
@@ -139,5 +146,12 @@ struct ProfileDeviation {
 // error: it is reported as no_walls_in_view.
 ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment& alignment,
                                    const DesignProfile& profile, const DeviationOptions& options);
+// The same with the mesh's ray caster built once by the caller (built from
+// surface.vertices and surface.triangles): for several rounds or repeated
+// views of one mesh, the build dominates large meshes
+// (docs/accuracy-cost.md, "The tunnel drive").
+ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInput& surface,
+                                   const Alignment& alignment, const DesignProfile& profile,
+                                   const DeviationOptions& options);
 
 }  // namespace rockface::tunnel
