@@ -234,10 +234,13 @@ BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
                        : to.kind == ModeKind::Sliding ? "slides"
                        : to.kind == ModeKind::Rest    ? "rest"
                                                       : "rotates";
-    record_event(t, kind, to.describe(), to.planes);
+    if (from.describe() != to.describe() || from.kind != to.kind)
+      record_event(t, kind, to.describe(), to.planes);
   };
-  mode_event(ContactMode{}, mode, 0.0);
-  if (mode.kind == ModeKind::FreeFall) out.events.back().what = "free fall (no joint holds it)";
+  if (mode.kind == ModeKind::FreeFall)
+    record_event(0.0, "free_fall", "free fall (no joint holds it)", {});
+  else
+    mode_event(ContactMode{}, mode, 0.0);
 
   auto mode_at = [&](const State& s) {
     const Physical p = unpack(s, k);
@@ -358,17 +361,27 @@ BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
     Eigen::Vector3d d = last.pose.u;
     d -= d.dot(Eigen::Vector3d::UnitZ()) * Eigen::Vector3d::UnitZ();
     l.distance_from_start = d.norm();
-    // The steepest free face of the block is "the face".
-    double steepest = std::sin(10.0 * M_PI / 180.0);
+    // "The face": of the block's steep free faces (dip > 10 degrees), the
+    // one it moved out through (the largest horizontal part of its outward
+    // normal along the centroid's horizontal travel).
+    double best = -INFINITY;
     for (const blocks::BlockPlane& bp : block.planes()) {
       if (bp.kind != blocks::PlaneKind::FreeFace) continue;
       const Eigen::Vector3d n = bp.outward_normal();
       const double horizontal = std::hypot(n(0), n(1));
-      if (horizontal <= steepest) continue;
-      steepest = horizontal;
+      if (horizontal <= std::sin(10.0 * M_PI / 180.0)) continue;
+      const double along =
+          d.norm() > 0 ? Eigen::Vector3d(n(0), n(1), 0).dot(d) / (horizontal * d.norm()) : 0.0;
+      if (along <= best) continue;
+      best = along;
       l.face = bp.name;
-      l.distance_from_face = bp.plane.signed_distance(l.centroid) *
-                             (bp.plane.normal.dot(n) > 0 ? 1.0 : -1.0) / horizontal;
+      // Horizontal distance of the landing centroid in front of the plane.
+      l.distance_from_face =
+          n.dot(l.centroid - block.vertices()[block
+                                                  .faces()[block.faces_on_plane(static_cast<int>(
+                                                      &bp - block.planes().data()))[0]]
+                                                  .loop[0]]) /
+          horizontal;
     }
     out.landing = l;
     char buf[128];

@@ -63,7 +63,10 @@ ContactMode contact_mode(const BlockMotion& motion, const BlockPose& pose,
       in_contact.insert(static_cast<int>(s));
       mode.planes.push_back(surfaces[s].name);
     }
-  if (points.empty()) return mode;  // free fall
+  if (points.empty()) {  // free fall
+    mode.planes.clear();
+    return mode;
+  }
   const double rest = kRestSpeedRel * std::sqrt(motion.gravity() * length);
   const double speed = velocity.v.norm() + velocity.w.norm() * length;
   const double accel = solution.acceleration.norm() + solution.angular_acceleration.norm() * length;
