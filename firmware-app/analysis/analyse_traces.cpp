@@ -17,6 +17,7 @@
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
 #include "core/geometry/orientation.h"
+#include "firmware-app/analysis/block_dynamics.h"
 #include "firmware-app/analysis/block_mechanics.h"
 #include "firmware-app/analysis/block_report.h"
 #include "firmware-app/analysis/scene_analysis.h"
@@ -94,6 +95,8 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInpu
     fill_block_report(*b.polyhedron, *b.analysis, scene.analysis, rb);
     if (scene_wants_mechanics(scene) && b.finite)
       analyse_block_mechanics(*b.polyhedron, scene, effects, rb);
+    if (scene_wants_dynamics(scene) && b.finite)
+      analyse_block_dynamics(*b.polyhedron, scene, effects, rb);
     rename_joint_planes(b, net, rb);
   } else {
     // An infinite block has no corners, and a finite one that is not one
