@@ -118,8 +118,8 @@ std::optional<ReportDynamics> dynamics_from_block_json(const std::string& block_
     d.trigger = j.value("trigger", "");
     d.outcome = j.value("outcome", "");
     d.strength_divisor = j.value("strength_divisor", 1.0);
-    for (auto it = j.value("friction_deg", json::object()).begin();
-         it != j.value("friction_deg", json::object()).end(); ++it)
+    const json friction = j.value("friction_deg", json::object());
+    for (auto it = friction.begin(); it != friction.end(); ++it)
       d.friction_deg[it.key()] = it.value().get<double>();
     for (const json& e : j.value("events", json::array())) {
       ReportMotionEvent ev;
