@@ -87,6 +87,7 @@ ContactSolution BlockMotion::solve(const BlockPose& pose, const BlockVelocity& v
     Eigen::Vector3d arm, t1, t2, slip;
     double mu = 0, bias = 0;
     bool stuck = false;
+    bool from_rest = false;  // slips from rest: its direction is found, not given
   };
   std::vector<Item> items;
   for (const JointContact& c : geometry_.contacts(pose, kContactGapRel * length)) {
@@ -177,8 +178,27 @@ ContactSolution BlockMotion::solve(const BlockPose& pose, const BlockVelocity& v
           const Eigen::Vector3d f =
               face_friction[s] - face_friction[s].dot(it.c.normal) * it.c.normal;
           it.slip = -f.normalized();
+          it.from_rest = true;
           changed = true;
         }
+    }
+    // A contact that starts to slip from rest slips the way it then
+    // accelerates (the friction it needed at rest only hints at it): the
+    // direction is refined to its tangential acceleration.
+    if (!changed) {
+      const Eigen::Matrix<double, 6, 1> a = minv * gen_force;
+      for (Item& it : items) {
+        if (!it.from_rest) continue;
+        const Eigen::Vector3d ap = a.head<3>() + a.tail<3>().cross(it.arm) +
+                                   vel.w.cross(vel.w.cross(it.arm));
+        const Eigen::Vector3d at = ap - ap.dot(it.c.normal) * it.c.normal;
+        if (at.norm() <= kLcpRel * gravity_) continue;
+        const Eigen::Vector3d dir = at.normalized();
+        if ((dir - it.slip).norm() > 1e-12) {
+          it.slip = dir;
+          changed = true;
+        }
+      }
     }
     if (!changed) break;
   }
