@@ -189,8 +189,8 @@ ContactSolution BlockMotion::solve(const BlockPose& pose, const BlockVelocity& v
       const Eigen::Matrix<double, 6, 1> a = minv * gen_force;
       for (Item& it : items) {
         if (!it.from_rest) continue;
-        const Eigen::Vector3d ap = a.head<3>() + a.tail<3>().cross(it.arm) +
-                                   vel.w.cross(vel.w.cross(it.arm));
+        const Eigen::Vector3d ap =
+            a.head<3>() + a.tail<3>().cross(it.arm) + vel.w.cross(vel.w.cross(it.arm));
         const Eigen::Vector3d at = ap - ap.dot(it.c.normal) * it.c.normal;
         if (at.norm() <= kLcpRel * gravity_) continue;
         const Eigen::Vector3d dir = at.normalized();
