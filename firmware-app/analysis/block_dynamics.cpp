@@ -47,9 +47,38 @@ bool scene_wants_dynamics(const AnalysisInput& scene) {
   return scene.analysis.dynamics.has_value();
 }
 
+void rename_dynamics_planes(storage::ReportDynamics& d,
+                            const std::function<std::string(const std::string&)>& name) {
+  std::map<std::string, double> friction;
+  for (const auto& [plane, deg] : d.friction_deg) friction[name(plane)] = deg;
+  d.friction_deg = std::move(friction);
+  for (storage::ReportMotionEvent& e : d.events) {
+    std::vector<std::string> renamed;
+    for (const std::string& p : e.planes) renamed.push_back(name(p));
+    // Whole names in the text ("slides on T1 and T2", "edge T1-F1").
+    std::string text;
+    std::string word;
+    auto flush = [&] {
+      text += word.empty() ? word : name(word);
+      word.clear();
+    };
+    for (char c : e.what) {
+      if (c == ' ' || c == '-' || c == ',' || c == '(' || c == ')') {
+        flush();
+        text += c;
+      } else {
+        word += c;
+      }
+    }
+    flush();
+    e.what = text;
+    e.planes = renamed;
+  }
+}
+
 void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput& scene,
                             const kinematics::Effects& effects, storage::ReportBlock& rb,
-                            Progress* progress) {
+                            Progress* progress, const std::map<std::string, double>* friction_deg) {
   const storage::SceneDynamics& sd = *scene.analysis.dynamics;
   const std::optional<Trigger> why = trigger(rb);
   if (!why) {
@@ -71,6 +100,7 @@ void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput&
       phi = scene.joints[bp.index].friction;
     else if (const storage::SceneJoint* j = scene.joint(bp.name))
       phi = j->friction;
+    if (!phi && friction_deg && friction_deg->count(bp.name)) phi = friction_deg->at(bp.name);
     if (!phi && scene.effects.joint_law)
       phi = scene.effects.joint_law->phi_r.value_or(scene.effects.joint_law->phi_b);
     if (!phi) {
