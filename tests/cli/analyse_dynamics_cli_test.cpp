@@ -116,3 +116,33 @@ TEST(AnalyseDynamicsCli, BadFieldsAreNamed) {
 }
 
 }  // namespace
+
+namespace {
+
+// With the equilibrium path, a block that holds (FoS 1.39) is set moving
+// from its limit point: its joints' friction reduced by the limit point's
+// lambda (tan phi / lambda), cohesion lost.
+TEST(AnalyseDynamicsCli, FromTheLimitPointOfTheEquilibriumPath) {
+  const std::string scene = sample_with("dynamics-limit", [](nlohmann::json& j) {
+    j["joints"][0]["friction"] = 32;
+    j["joints"][1]["friction"] = 30;
+    j["analysis"]["stability"] = "equilibrium_path";
+    j["effects"]["joint_law"] = {{"model", "coulomb"}, {"normal_stiffness", 1e11}};
+  });
+  const CliRun r = run_rockface("analyse " + scene);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  const auto& b = report.at("blocks").at(0);
+  ASSERT_GT(b.at("fos").get<double>(), 1.0);  // limit equilibrium: it holds
+  const double lambda = b.at("mechanics").at("fos_limit_point").get<double>();
+  ASSERT_TRUE(b.contains("dynamics"));
+  const auto& d = b.at("dynamics");
+  EXPECT_EQ(d.at("trigger").get<std::string>().rfind("equilibrium path: from its limit point", 0),
+            0u);
+  // Written with 9 significant digits.
+  EXPECT_NEAR(d.at("strength_divisor").get<double>(), lambda, 1e-8 * lambda);
+  const double j1 = std::atan(std::tan(32 * M_PI / 180) / lambda) * 180 / M_PI;
+  EXPECT_NEAR(d.at("friction_deg").at("J1").get<double>(), j1, 1e-6);
+}
+
+}  // namespace

@@ -100,12 +100,11 @@ ContactSolution BlockMotion::solve(const BlockPose& pose, const BlockVelocity& v
     it.mu = geometry_.surfaces()[c.surface].friction;
     const Eigen::Vector3d vt = vp - separating * c.normal;
     joint_frame(c.normal, it.t1, it.t2);
-    if (vt.norm() > rest) {
+    it.slip = Eigen::Vector3d::Zero();
+    if (vt.norm() > rest)
       it.slip = vt.normalized();
-    } else {
-      it.slip = Eigen::Vector3d::Zero();
-      it.stuck = it.mu > 0;
-    }
+    else
+      it.from_rest = it.mu > 0;  // at rest: sticks or slips, found below
     // d2(gap)/dt2 beyond J nu': the centripetal acceleration of the point,
     // and for a point under a turning face the turning of the face's normal.
     const Eigen::Vector3d centripetal = vel.w.cross(vel.w.cross(it.arm));
@@ -114,9 +113,13 @@ ContactSolution BlockMotion::solve(const BlockPose& pose, const BlockVelocity& v
     items.push_back(it);
   }
 
+  // One solution of the contact problem with the items' current states:
+  // sliding contacts with friction mu N against their slip direction (none
+  // while the direction is still unknown), sticking ones with tangential
+  // rows held at zero acceleration.
   Eigen::VectorXd z;
   Eigen::Matrix<double, 6, 1> gen_force = f;
-  for (int round = 0; round < kStickSlipRounds; ++round) {
+  auto solve_once = [&] {
     std::vector<Row> g_rows, h_rows;
     std::vector<double> bias;
     std::vector<bool> unilateral;
@@ -152,55 +155,59 @@ ContactSolution BlockMotion::solve(const BlockPose& pose, const BlockVelocity& v
     out.converged = r.converged;
     z = r.z;
     gen_force = f + h.transpose() * z;
-    // Sticking faces whose friction would leave the cone slip against it.
-    // The check is per joint surface (|sum of friction| <= mu sum N): the
-    // rigid face sticks or slips as one, and the split of its friction
-    // among redundant contacts (least-norm) is not physical, their sum is.
-    bool changed = false;
-    const int surfaces = static_cast<int>(geometry_.surfaces().size());
-    std::vector<Eigen::Vector3d> face_friction(surfaces, Eigen::Vector3d::Zero());
-    std::vector<double> face_normal(surfaces, 0.0);
-    int k = static_cast<int>(items.size());
-    for (size_t i = 0; i < items.size(); ++i) {
-      if (!items[i].stuck) continue;
-      face_friction[items[i].c.surface] += z(k) * items[i].t1 + z(k + 1) * items[i].t2;
-      face_normal[items[i].c.surface] += std::max(z(i), 0.0);
-      k += 2;
-    }
-    for (int s = 0; s < surfaces; ++s) {
-      const double limit = geometry_.surfaces()[s].friction * face_normal[s];
-      if (face_friction[s].norm() <= limit * (1 + kFrictionConeRel) + kLcpRel * load_scale())
-        continue;
-      for (Item& it : items)
-        if (it.stuck && it.c.surface == s) {
-          it.stuck = false;
-          // Slip against the friction the face needed, in the contact's plane.
-          const Eigen::Vector3d f =
-              face_friction[s] - face_friction[s].dot(it.c.normal) * it.c.normal;
-          it.slip = -f.normalized();
-          it.from_rest = true;
-          changed = true;
-        }
-    }
-    // A contact that starts to slip from rest slips the way it then
-    // accelerates (the friction it needed at rest only hints at it): the
-    // direction is refined to its tangential acceleration.
-    if (!changed) {
-      const Eigen::Matrix<double, 6, 1> a = minv * gen_force;
+  };
+  // The tangential acceleration of an item's point in the current solution.
+  auto tangential = [&](const Item& it) {
+    const Eigen::Matrix<double, 6, 1> a = minv * gen_force;
+    const Eigen::Vector3d ap =
+        a.head<3>() + a.tail<3>().cross(it.arm) + vel.w.cross(vel.w.cross(it.arm));
+    return Eigen::Vector3d(ap - ap.dot(it.c.normal) * it.c.normal);
+  };
+  // Contacts at rest: the block sticks or slips as a whole. They are
+  // first let go without friction to see which way they would move; then
+  // they slip with mu N against that way, refined to the way they then
+  // accelerate, as long as friction does not turn them back. Where it
+  // would (kinetic friction exceeds what drives them) they stick, and the
+  // friction they need, within mu N, holds them. This is the consistent
+  // choice of the two, and it is the same just above and just below the
+  // rest speed, so that a block at its limit does not chatter.
+  solve_once();
+  bool any_at_rest = false;
+  for (const Item& it : items) any_at_rest = any_at_rest || it.from_rest;
+  if (any_at_rest) {
+    bool sticks = false;
+    for (Item& it : items)
+      if (it.from_rest) {
+        const Eigen::Vector3d at = tangential(it);
+        if (at.norm() <= kLcpRel * gravity_)
+          sticks = true;  // nothing drives it along its plane
+        else
+          it.slip = at.normalized();
+      }
+    for (int round = 0; round < kStickSlipRounds && !sticks; ++round) {
+      solve_once();
+      bool changed = false;
       for (Item& it : items) {
         if (!it.from_rest) continue;
-        const Eigen::Vector3d ap =
-            a.head<3>() + a.tail<3>().cross(it.arm) + vel.w.cross(vel.w.cross(it.arm));
-        const Eigen::Vector3d at = ap - ap.dot(it.c.normal) * it.c.normal;
-        if (at.norm() <= kLcpRel * gravity_) continue;
-        const Eigen::Vector3d dir = at.normalized();
-        if ((dir - it.slip).norm() > 1e-12) {
-          it.slip = dir;
-          changed = true;
+        const Eigen::Vector3d at = tangential(it);
+        if (at.dot(it.slip) <= kLcpRel * gravity_) {
+          sticks = true;  // friction would turn it back
+          break;
         }
+        const Eigen::Vector3d dir = at.normalized();
+        if ((dir - it.slip).norm() > 1e-12) changed = true;
+        it.slip = dir;
       }
+      if (!changed) break;
     }
-    if (!changed) break;
+    if (sticks) {
+      for (Item& it : items)
+        if (it.from_rest) {
+          it.stuck = true;
+          it.slip = Eigen::Vector3d::Zero();
+        }
+      solve_once();
+    }
   }
   const Eigen::Matrix<double, 6, 1> acc = minv * gen_force;
   out.acceleration = acc.head<3>();

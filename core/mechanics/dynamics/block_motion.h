@@ -13,9 +13,9 @@
 // N = 0 where it would accelerate away (it opens: the normal force would
 // have turned tensile); a mixed linear complementarity problem
 // (mixed_lcp.h). Coulomb friction acts while a contact slides: mu N
-// against its slip velocity, mu = tan of the joint's friction angle. A
-// contact at rest sticks while the friction it needs stays within mu N,
-// and slips (against that friction) otherwise. Cohesion is not used: a
+// against its slip velocity, mu = tan of the joint's friction angle.
+// Contacts at rest slip (as a whole) where kinetic friction against the way
+// they would move does not turn them back, and stick otherwise. Cohesion is not used: a
 // block that has failed has broken its joints' cohesion, and sliding does
 // not restore it.
 //

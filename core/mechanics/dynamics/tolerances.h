@@ -50,9 +50,8 @@ inline constexpr double kSupportEdgeRel = 1e-9;
 // integration tolerances).
 inline constexpr double kLcpRel = 1e-10;
 inline constexpr int kLcpIterations = 200;
-// Stick / slip fixed point: a sticking contact whose friction would exceed
-// mu N by more than this fraction slips; at most this many rounds.
-inline constexpr double kFrictionConeRel = 1e-9;
+// Contacts at rest: at most this many rounds refine the way they slip
+// (each round one solution of the contact problem) before it is taken.
 inline constexpr int kStickSlipRounds = 12;
 
 // Events (contact switches, impacts, landing) are located by bisection of
