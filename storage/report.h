@@ -94,6 +94,55 @@ struct ReportMechanics {
   std::optional<std::string> plot;  // PNG of the path, beside the report
 };
 
+// The block's motion after failure (analysis.dynamics; docs/scene-extensions.md
+// "Dynamics after failure"). Points absolute, times in s, energies in J.
+struct ReportMotionEvent {
+  double time_s = 0;
+  std::string kind;                 // slides | rotates | leaves | free_fall | hits | lands | rest
+  std::string what;                 // "leaves J1", "rotates about edge J2-J3"
+  std::vector<std::string> planes;  // the planes it names
+};
+
+struct ReportMotionSample {
+  double time_s = 0;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // centroid, absolute
+  Eigen::Vector4d orientation{1, 0, 0, 0};             // unit quaternion (w, x, y, z) from rest
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, global axes
+  double kinetic_translational = 0, kinetic_rotational = 0;    // J
+  double work = 0;        // J, of gravity and the effects since rest
+  double dissipated = 0;  // J, work - kinetic energy (friction, impacts)
+};
+
+struct ReportLanding {
+  double time_s = 0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();           // first corner on the floor, absolute
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();        // absolute
+  double speed = 0, corner_speed = 0, angular_speed = 0;     // m/s, m/s, rad/s
+  double kinetic_translational = 0, kinetic_rotational = 0;  // J
+  double distance_from_start = 0;                            // m, horizontal
+  std::optional<double> distance_from_face;                  // m, horizontal, in front of `face`
+  std::string face;
+};
+
+struct ReportDynamics {
+  std::string trigger;                         // why it ran: "limit equilibrium: FoS 0.72 < 1", ...
+  std::string outcome;                         // "lands", "at rest", "moving at the end", ...
+  double strength_divisor = 1;                 // friction tan / this (the limit point's lambda)
+  std::map<std::string, double> friction_deg;  // per joint, while sliding; cohesion lost
+  std::vector<ReportMotionEvent> events;
+  std::vector<ReportMotionSample> path;
+  std::optional<ReportLanding> landing;
+  std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>>
+      floor;  // point (absolute), unit up normal
+  double duration_s = 0, sample_s = 0, end_time_s = 0;
+  double abs_tol = 0, rel_tol = 0, max_step_s = 0;
+  int steps = 0, rejected_steps = 0, evaluations = 0;
+  double drift_before_m = 0, drift_after_m = 0, drift_bound_m = 0;
+  std::optional<std::string> picture;  // PNG beside the report
+  std::vector<std::string> notes;
+};
+
 struct ReportBlock {
   std::string id;
   std::string source = "scene";     // "scene" or "traces"
@@ -119,7 +168,8 @@ struct ReportBlock {
   std::optional<ReportRemoteAxis> remote_axis;
   std::optional<ReportStability> stability;
   std::optional<ReportMechanics> mechanics;
-  std::vector<std::string> notes;  // e.g. "face J3 opens under water pressure"
+  std::optional<ReportDynamics> dynamics;  // analysis.dynamics, failing blocks only
+  std::vector<std::string> notes;          // e.g. "face J3 opens under water pressure"
 };
 
 struct Report {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "storage/report.h"
+#include "storage/report_dynamics_json.h"
 
 namespace rockface::storage {
 
@@ -170,6 +171,7 @@ ordered block_json(const ReportBlock& b) {
     j["stability"] = st;
   }
   if (b.mechanics) j["mechanics"] = mechanics_json(*b.mechanics);
+  if (b.dynamics) j["dynamics"] = dynamics_to_json(*b.dynamics);
   if (!b.notes.empty()) j["notes"] = b.notes;
   return j;
 }
@@ -301,6 +303,12 @@ std::string report_summary(const Report& r) {
           << pad(m.fos_limit_point ? fixed(*m.fos_limit_point, 2) : std::string("-"), 8)
           << pad(m.failure_mode.kind, 14) << pad(m.stability, 12) << m.outcome << "\n";
     }
+  }
+  // The motion after failure, only where the scene asked for it.
+  for (const auto& b : r.blocks) {
+    if (!b.dynamics) continue;
+    out << "\nmotion of " << b.id << " after failure (" << b.dynamics->trigger << "):\n";
+    for (const auto& e : b.dynamics->events) out << "  " << event_text(e) << "\n";
   }
   for (const auto& n : r.notes) out << "note: " << n << "\n";
   return out.str();

@@ -65,6 +65,20 @@ struct SceneRemoteAxis {
   unsigned seed = 1;
 };
 
+// analysis.dynamics: the block's motion after failure (docs/scene-extensions.md).
+struct SceneFloor {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // absolute
+  double dip = 0, dipdir = 0;                       // degrees; level by default
+};
+
+struct SceneDynamics {
+  double duration_s = 2.0;          // s of motion after failure
+  double sample_s = 0.2;            // s between the path's samples
+  std::optional<SceneFloor> floor;  // where a block in free flight lands
+  // Time-step knobs; none: the preset's (docs/scene-extensions.md).
+  std::optional<double> abs_tol, rel_tol, max_step_s;
+};
+
 struct SceneAnalysis {
   bool pyramids = true;
   bool blocks = true;
@@ -81,6 +95,8 @@ struct SceneAnalysis {
   std::optional<double> continuation_step;  // initial arc-length step (lambda units)
   std::optional<int> max_steps;             // continuation steps before "no limit point"
   std::optional<double> lambda_max;         // largest load factor tried
+  // The block's motion after failure; none: not simulated.
+  std::optional<SceneDynamics> dynamics;
 };
 
 struct SceneWater {

@@ -139,6 +139,58 @@ std::vector<Eigen::Vector3d> read_points(const Reader& r, const json& v, const s
   return pts;
 }
 
+// analysis.dynamics: every field checked, unknown ones refused by name.
+SceneDynamics read_dynamics(const Reader& r, const json& v) {
+  const std::string p = "analysis.dynamics";
+  if (!v.is_object()) r.fail(p, "must be an object");
+  static const std::set<std::string> known = {"duration_s", "sample_s", "floor",
+                                              "abs_tol",    "rel_tol",  "max_step_s"};
+  for (auto it = v.begin(); it != v.end(); ++it)
+    if (!known.count(it.key()))
+      r.fail(p + "." + it.key(),
+             "unknown field (duration_s, sample_s, floor, abs_tol, rel_tol, max_step_s)");
+  SceneDynamics d;
+  if (auto* x = r.optional(v, p, "duration_s"))
+    d.duration_s = r.number_in(*x, p + ".duration_s", 1e-3, 600);
+  if (auto* x = r.optional(v, p, "sample_s")) d.sample_s = r.positive(*x, p + ".sample_s");
+  if (d.duration_s / d.sample_s > 100000)
+    r.fail(p + ".sample_s", "more than 100000 samples over duration_s");
+  if (auto* x = r.optional(v, p, "abs_tol"))
+    d.abs_tol = r.number_in(*x, p + ".abs_tol", 1e-15, 1e-2);
+  if (auto* x = r.optional(v, p, "rel_tol"))
+    d.rel_tol = r.number_in(*x, p + ".rel_tol", 1e-14, 1e-2);
+  if (auto* x = r.optional(v, p, "max_step_s"))
+    d.max_step_s = r.number_in(*x, p + ".max_step_s", 1e-6, 1);
+  if (auto* f = r.optional(v, p, "floor")) {
+    const std::string fp = p + ".floor";
+    if (!f->is_object()) r.fail(fp, "must be an object");
+    static const std::set<std::string> floor_keys = {"elevation", "point", "dip", "dipdir"};
+    for (auto it = f->begin(); it != f->end(); ++it)
+      if (!floor_keys.count(it.key()))
+        r.fail(fp + "." + it.key(), "unknown field (elevation, or point with dip and dipdir)");
+    SceneFloor floor;
+    const json* elevation = r.optional(*f, fp, "elevation");
+    const json* point = r.optional(*f, fp, "point");
+    if ((elevation != nullptr) == (point != nullptr))
+      r.fail(fp, "give either elevation (a level floor, m) or point (with dip and dipdir)");
+    if (elevation) {
+      floor.point = Eigen::Vector3d(0, 0, r.number(*elevation, fp + ".elevation"));
+      if (r.optional(*f, fp, "dip") || r.optional(*f, fp, "dipdir"))
+        r.fail(fp + ".dip", "a floor given by elevation is level: give point, dip and dipdir");
+    } else {
+      floor.point = r.vec3(*point, fp + ".point");
+      if (auto* x = r.optional(*f, fp, "dip"))
+        floor.dip = r.number_in(*x, fp + ".dip", 0, 90, true);
+      if (auto* x = r.optional(*f, fp, "dipdir")) {
+        floor.dipdir = r.number_in(*x, fp + ".dipdir", 0, 360);
+        if (floor.dipdir == 360) floor.dipdir = 0;
+      }
+    }
+    d.floor = floor;
+  }
+  return d;
+}
+
 SceneAnalysis read_analysis(const Reader& r, const json& doc) {
   SceneAnalysis a;
   const json* an = r.optional(doc, "", "analysis");
@@ -194,6 +246,7 @@ SceneAnalysis read_analysis(const Reader& r, const json& doc) {
   }
   if (auto* v = r.optional(*an, p, "lambda_max"))
     a.lambda_max = r.number_in(*v, p + ".lambda_max", 0.1, 1e6);
+  if (auto* v = r.optional(*an, p, "dynamics")) a.dynamics = read_dynamics(r, *v);
   return a;
 }
 
@@ -207,6 +260,8 @@ SceneEffects read_effects(const Reader& r, const json& doc) {
                                               "forces",  "bolts", "joint_law", "dynamics"};
   for (auto it = ef->begin(); it != ef->end(); ++it)
     if (!known.count(it.key())) r.fail(p + "." + it.key(), "unknown effect");
+  if (ef->contains("dynamics"))
+    r.fail(p + ".dynamics", "the motion after failure is asked for in analysis.dynamics");
   if (auto* w = r.optional(*ef, p, "water")) {
     const std::string wp = p + ".water";
     SceneWater water;

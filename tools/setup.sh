@@ -18,6 +18,8 @@ packages=(
   fonts-dejavu-core
   # the UI's window test: a virtual X server
   xvfb xauth
+  # the block's motion after failure: Boost.Odeint (header-only, in libboost-dev)
+  libboost-dev
   # the field report's PDF (cairo's PDF surface)
   libcairo2-dev
   # tests and benchmarks

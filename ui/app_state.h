@@ -14,6 +14,7 @@
 #include "ui/background_task.h"
 #include "ui/field_services.h"
 #include "ui/model_view.h"
+#include "ui/motion_playback.h"
 #include "ui/project_session.h"
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
@@ -64,6 +65,7 @@ struct AppState {
   MappingState mapping;
   TunnelState tunnel;                         // the Project screen's tunnel panel
   std::optional<std::size_t> selected_block;  // index into session->blocks()
+  MotionPlayback motion;                      // the selected block's motion after failure
   std::string status;                         // last message for the status bar
   std::string new_project_name = "site";
   TouchGesture gesture;  // this frame's two-finger gesture

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "storage/report_dynamics_json.h"
 #include "ui/block_summary.h"
 
 namespace rockface::ui {
@@ -26,6 +27,14 @@ BlockView make_block_view(const storage::BlockResult& block, const Eigen::Vector
         if (p.is_array() && p.size() == 3)
           v.vertices.push_back(
               Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>()) - datum);
+    if ((v.dynamics = storage::dynamics_from_block_json(block.report_json))) {
+      for (auto& s : v.dynamics->path) s.position -= datum;
+      if (v.dynamics->landing) {
+        v.dynamics->landing->point -= datum;
+        v.dynamics->landing->centroid -= datum;
+      }
+      if (v.dynamics->floor) v.dynamics->floor->first -= datum;
+    }
     if (json.contains("rotation") && json["rotation"].is_object()) {
       bool any = false;
       for (const char* part : {"corners", "edges"})

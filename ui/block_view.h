@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "storage/project_records.h"
+#include "storage/report.h"
 #include "ui/block_verdict.h"
 
 namespace rockface::ui {
@@ -23,6 +24,8 @@ struct BlockView {
   std::string report_text;                // the block's report JSON, indented
   std::vector<std::string> summary;       // ui/block_summary.h: the report in words
   BlockVerdict verdict = BlockVerdict::infinite;
+  // The motion after failure (analysis.dynamics), points datum-relative.
+  std::optional<storage::ReportDynamics> dynamics;
 };
 
 // datum: the project's, subtracted from the report's absolute coordinates.

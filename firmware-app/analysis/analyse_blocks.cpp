@@ -11,6 +11,7 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
+#include "firmware-app/analysis/block_dynamics.h"
 #include "firmware-app/analysis/block_mechanics.h"
 #include "firmware-app/analysis/block_report.h"
 #include "firmware-app/analysis/scene_analysis.h"
@@ -183,6 +184,8 @@ void analyse_scene_blocks(const AnalysisInput& scene, storage::Report& report, P
     fill_block_report(*poly, a, scene.analysis, rb);
     if (scene_wants_mechanics(scene) && a.finiteness.finite.value)
       analyse_block_mechanics(*poly, scene, effects, rb, &progress);
+    if (scene_wants_dynamics(scene) && a.finiteness.finite.value)
+      analyse_block_dynamics(*poly, scene, effects, rb, &progress);
     report.blocks.push_back(std::move(rb));
   }
 }

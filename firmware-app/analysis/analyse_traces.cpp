@@ -17,6 +17,7 @@
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
 #include "core/geometry/orientation.h"
+#include "firmware-app/analysis/block_dynamics.h"
 #include "firmware-app/analysis/block_mechanics.h"
 #include "firmware-app/analysis/block_report.h"
 #include "firmware-app/analysis/scene_analysis.h"
@@ -61,6 +62,7 @@ void rename_joint_planes(const faces::TraceBlock& b, const faces::TraceNetwork& 
   if (rb.rotation)
     for (auto& c : rb.rotation->corners)
       for (auto& n : c.sliding_on) n = name(n);
+  if (rb.dynamics) rename_dynamics_planes(*rb.dynamics, name);
 }
 
 storage::ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInput& scene,
@@ -94,6 +96,14 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInpu
     fill_block_report(*b.polyhedron, *b.analysis, scene.analysis, rb);
     if (scene_wants_mechanics(scene) && b.finite)
       analyse_block_mechanics(*b.polyhedron, scene, effects, rb);
+    if (scene_wants_dynamics(scene) && b.finite) {
+      std::map<std::string, double> friction;  // degrees, from each plane's joint
+      for (const auto& p : b.planes)
+        if (p.kind == blocks::PlaneKind::Joint && net.groups()[p.group].joint &&
+            net.groups()[p.group].joint->friction)
+          friction[p.name] = rad_to_deg(*net.groups()[p.group].joint->friction);
+      analyse_block_dynamics(*b.polyhedron, scene, effects, rb, nullptr, &friction);
+    }
     rename_joint_planes(b, net, rb);
   } else {
     // An infinite block has no corners, and a finite one that is not one

@@ -35,6 +35,16 @@ storage::Report analyse(const AnalysisInput& scene, Progress& progress) {
     progress.step("trace map", 0.6);
     report.timings_ms["traces"] = timed_ms([&] { analyse_trace_blocks(scene, report, progress); });
   }
+  // Dynamics after failure: listed when a block's motion was simulated.
+  if (scene.analysis.dynamics) {
+    bool ran = false;
+    for (const auto& b : report.blocks) ran = ran || b.dynamics.has_value();
+    if (ran)
+      report.effects_simulated.push_back("dynamics after failure");
+    else
+      report.notes.push_back(
+          "dynamics after failure: no block fails under its loads, nothing to simulate");
+  }
   progress.step("done", 1.0);
   return report;
 }

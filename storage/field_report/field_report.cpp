@@ -12,6 +12,7 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
+#include "storage/report_dynamics_json.h"
 
 namespace rockface::storage {
 
@@ -47,6 +48,14 @@ ReportedBlock block_from(const BlockResult& stored, const Eigen::Vector3d& datum
     for (const auto& p : j["mode"]["planes"]) b.mode_planes.push_back(p.get<std::string>());
   if (j.contains("vertices"))
     for (const auto& v : j["vertices"]) b.vertices.push_back(vec3(v) - datum);
+  if ((b.dynamics = dynamics_from_block_json(stored.report_json))) {
+    for (auto& s : b.dynamics->path) s.position -= datum;
+    if (b.dynamics->landing) {
+      b.dynamics->landing->point -= datum;
+      b.dynamics->landing->centroid -= datum;
+    }
+    if (b.dynamics->floor) b.dynamics->floor->first -= datum;
+  }
   if (j.contains("rotation")) {
     ReportedRotation r;
     for (const auto& c : j["rotation"].value("corners", json::array())) {

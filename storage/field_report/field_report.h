@@ -13,6 +13,7 @@
 
 #include "core/photogrammetry/camera/camera_model.h"
 #include "storage/project_store.h"
+#include "storage/report.h"
 #include "storage/tunnel_records.h"
 
 namespace rockface::storage {
@@ -47,6 +48,8 @@ struct ReportedBlock {
   std::optional<double> fos;
   std::optional<ReportedRotation> rotation;
   std::vector<Eigen::Vector3d> vertices;  // datum-relative
+  // The motion after failure (analysis.dynamics), points datum-relative.
+  std::optional<ReportDynamics> dynamics;
 };
 
 // One 3D image of the visit and how it was registered to the face.

@@ -8,7 +8,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.h"
+#include "storage/field_report/dynamics_picture.h"
 #include "storage/field_report/field_report_pictures.h"
+#include "storage/report_dynamics_json.h"
 
 namespace rockface::storage {
 
@@ -349,6 +351,37 @@ void block_section(PdfPages& pdf, const FieldReport& r) {
       kSmall);
 }
 
+// The motion after failure of each block the analysis set moving
+// (analysis.dynamics): why, its events, the landing and the picture.
+void dynamics_section(PdfPages& pdf, const FieldReport& r) {
+  bool any = false;
+  for (const auto& b : r.blocks) any = any || b.dynamics.has_value();
+  if (!any) return;
+  pdf.heading("Motion after failure", 0.45 * kPageH);
+  for (const auto& b : r.blocks) {
+    if (!b.dynamics) continue;
+    const ReportDynamics& d = *b.dynamics;
+    std::string friction;
+    for (const auto& [plane, deg] : d.friction_deg)
+      friction += (friction.empty() ? "" : ", ") + plane + " " + report_number(deg, 1) + " deg";
+    pdf.line("block " + b.label + ": " + d.trigger + "; friction while sliding " + friction +
+             ", cohesion lost; " + d.outcome);
+    std::string events;
+    for (const auto& e : d.events) events += (events.empty() ? "" : "; ") + event_text(e);
+    pdf.line(events, kSmall);
+    if (d.landing)
+      pdf.line(
+          "lands at " + report_number(d.landing->time_s, 2) + " s, " +
+              report_number(d.landing->speed, 1) + " m/s, kinetic energy " +
+              report_number(
+                  (d.landing->kinetic_translational + d.landing->kinetic_rotational) / 1000, 0) +
+              " kJ, " + report_number(d.landing->distance_from_start, 1) +
+              " m from where it started",
+          kSmall);
+    pdf.image(dynamics_picture(b.label, b.vertices, d), PdfPages::text_width(), 0.4 * kPageH);
+  }
+}
+
 }  // namespace
 
 void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& file) {
@@ -377,6 +410,7 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
     pdf.image(net, 0.6 * PdfPages::text_width(), 0.6 * PdfPages::text_width());
   joint_section(pdf, r);
   block_section(pdf, r);
+  dynamics_section(pdf, r);
   pdf.finish();
 }
 

@@ -8,6 +8,7 @@
 #include <set>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "storage/project_store.h"
@@ -337,3 +338,70 @@ TEST(UiScreens, ReadOnlyProjectSaysWhy) {
 }
 
 }  // namespace
+
+// The motion after failure played on the Blocks screen: a stored block
+// with `dynamics` gets Play / Pause and a time slider; playing moves the
+// time on and draws the block's outline (orange) on the model.
+TEST(UiScreens, BlockMotionAfterFailurePlaysOnTheModel) {
+  const fs::path project = rockface::test::copy_of_demo("motion");
+  std::string label;
+  {
+    auto store = rockface::storage::ProjectStore::open(project);
+    auto run = store.load_analysis(store.list_analyses(store.latest_visit()).back().id);
+    for (auto& b : run.blocks) {
+      auto j = nlohmann::json::parse(b.report_json);
+      if (!j.contains("centroid") || !j.contains("vertices")) continue;
+      // One second of motion: the block drops 0.5 m and turns 30 degrees
+      // about the horizontal, sampled every 0.25 s.
+      const Eigen::Vector3d c(j["centroid"][0], j["centroid"][1], j["centroid"][2]);
+      nlohmann::json path = nlohmann::json::array();
+      for (int k = 0; k <= 4; ++k) {
+        const double t = 0.25 * k, a = 0.5 * (M_PI / 6) * t;
+        path.push_back({{"t", t},
+                        {"position", {c.x(), c.y(), c.z() - 0.5 * t * t}},
+                        {"orientation", {std::cos(a), std::sin(a), 0, 0}},
+                        {"velocity", {0, 0, -t}},
+                        {"angular_velocity", {0.5, 0, 0}}});
+      }
+      j["dynamics"] = {
+          {"trigger", "limit equilibrium: FoS 0.50 < 1"},
+          {"outcome", "moving at the end"},
+          {"events", {{{"time_s", 0.0}, {"kind", "slides"}, {"event", "slides on J1"}}}},
+          {"path", path}};
+      b.report_json = j.dump();
+      label = b.label;
+      break;
+    }
+    ASSERT_FALSE(label.empty());
+    run.id = 0;
+    store.save_analysis(run);
+  }
+  auto s = open_session(project);
+  s->tap("Blocks");
+  s->tap("row " + label);
+  s->frame();
+  ASSERT_TRUE(s->state().targets.find("Play motion")) << "no playback for " << label;
+  EXPECT_TRUE(s->state().targets.find("motion time"));
+  s->tap("Play motion");
+  for (int i = 0; i < 20; ++i) s->frame();
+  const MotionPlayback& m = s->state().motion;
+  EXPECT_TRUE(m.playing || m.time >= 1.0);
+  EXPECT_GT(m.time, 0.0);
+  // The outline is drawn in the model panel.
+  const cv::Mat shot = s->screenshot();
+  const cv::Vec3b orange = bgr(IM_COL32(255, 80, 40, 255));
+  int outline = 0;
+  const ModelView& view = s->state().model_view;
+  for (int y = static_cast<int>(view.panel_min().y); y < static_cast<int>(view.panel_max().y); ++y)
+    for (int x = static_cast<int>(view.panel_min().x); x < static_cast<int>(view.panel_max().x);
+         ++x)
+      if (shot.at<cv::Vec3b>(y, x) == orange) ++outline;
+  EXPECT_GT(outline, 30);
+  // The pose at a sample time: the centroid is where the path says.
+  const BlockView& b = s->state().session->blocks()[*s->state().selected_block];
+  ASSERT_TRUE(b.dynamics);
+  const Eigen::Vector3d c0 = b.dynamics->path.front().position;
+  const auto at_half = posed_at({c0}, *b.dynamics, 0.5);
+  ASSERT_EQ(at_half.size(), 1u);
+  EXPECT_NEAR(c0.z() - at_half[0].z(), 0.125, 1e-9);  // 0.5 t^2 at t = 0.5, exact in doubles
+}

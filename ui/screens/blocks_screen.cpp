@@ -4,6 +4,7 @@
 // table). "Run analysis" analyses the visit on the worker.
 #include <opencv2/imgproc.hpp>
 
+#include "ui/motion_playback.h"
 #include "ui/screens/screens.h"
 
 namespace rockface::ui {
@@ -179,6 +180,7 @@ void draw_blocks_screen(AppState& app) {
         app.model_view.draw(ImVec2(ImGui::GetContentRegionAvail().x, model_height), app.gesture);
     ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
     draw_blocks_on_model(app, interaction.tap);
+    draw_motion_on_model(app);
     ImGui::PopClipRect();
   }
   draw_table(app);
@@ -189,6 +191,7 @@ void draw_blocks_screen(AppState& app) {
   if (app.selected_block && *app.selected_block < blocks.size()) {
     const BlockView& b = blocks[*app.selected_block];
     for (const auto& line : b.summary) ImGui::TextWrapped("%s", line.c_str());
+    draw_motion_controls(app, b);
     if (ImGui::CollapsingHeader("Full report (JSON)"))
       ImGui::TextWrapped("%s", b.report_text.c_str());
   } else {

@@ -1,0 +1,405 @@
+#include "core/mechanics/dynamics/block_dynamics.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+
+#include <boost/numeric/odeint.hpp>
+
+#include "core/common/error.h"
+#include "core/mechanics/block_loads.h"
+#include "core/mechanics/dynamics/block_motion.h"
+#include "core/mechanics/dynamics/contact_mode.h"
+#include "core/mechanics/dynamics/tolerances.h"
+
+namespace rockface::mechanics {
+
+namespace {
+
+namespace odeint = boost::numeric::odeint;
+
+// Scaled state: centroid displacement / L, quaternion (w, x, y, z),
+// velocity / sqrt(g L), angular velocity x T, work of the loads / (W L).
+using State = std::array<double, 14>;
+
+struct Scales {
+  double length = 1, time = 1, speed = 1, energy = 1;
+};
+
+struct Physical {
+  BlockPose pose;
+  BlockVelocity velocity;
+  double work = 0;
+};
+
+Physical unpack(const State& s, const Scales& k) {
+  Physical p;
+  p.pose.u = Eigen::Vector3d(s[0], s[1], s[2]) * k.length;
+  p.pose.q = Eigen::Quaterniond(s[3], s[4], s[5], s[6]).normalized();
+  p.velocity.v = Eigen::Vector3d(s[7], s[8], s[9]) * k.speed;
+  p.velocity.w = Eigen::Vector3d(s[10], s[11], s[12]) / k.time;
+  p.work = s[13] * k.energy;
+  return p;
+}
+
+State pack(const Physical& p, const Scales& k) {
+  State s;
+  const Eigen::Vector3d u = p.pose.u / k.length, v = p.velocity.v / k.speed,
+                        w = p.velocity.w * k.time;
+  const Eigen::Quaterniond q = p.pose.q;
+  s = {u(0), u(1), u(2), q.w(), q.x(), q.y(), q.z(),
+       v(0), v(1), v(2), w(0),  w(1),  w(2),  p.work / k.energy};
+  return s;
+}
+
+class MotionSystem {
+ public:
+  MotionSystem(const BlockMotion& motion, const Scales& k, int& evaluations)
+      : motion_(motion), k_(k), evaluations_(evaluations) {}
+  void operator()(const State& s, State& ds, double /*tau*/) const {
+    ++evaluations_;
+    const Physical p = unpack(s, k_);
+    const ContactSolution sol = motion_.solve(p.pose, p.velocity);
+    const double power = motion_.applied(p.pose, p.velocity).power;
+    // q' = 1/2 (0, w) q for w in global axes; d/dtau = T d/dt.
+    const Eigen::Quaterniond qs(s[3], s[4], s[5], s[6]);
+    const Eigen::Quaterniond wq(0, p.velocity.w(0), p.velocity.w(1), p.velocity.w(2));
+    const Eigen::Quaterniond dq = wq * qs;
+    const double t = k_.time;
+    const Eigen::Vector3d du = p.velocity.v * t / k_.length;
+    const Eigen::Vector3d dv = sol.acceleration * t / k_.speed;
+    const Eigen::Vector3d dw = sol.angular_acceleration * t * t;
+    ds = {du(0),
+          du(1),
+          du(2),
+          0.5 * t * dq.w(),
+          0.5 * t * dq.x(),
+          0.5 * t * dq.y(),
+          0.5 * t * dq.z(),
+          dv(0),
+          dv(1),
+          dv(2),
+          dw(0),
+          dw(1),
+          dw(2),
+          power * t / k_.energy};
+  }
+
+ private:
+  const BlockMotion& motion_;
+  Scales k_;
+  int& evaluations_;
+};
+
+double lowest_height(const BlockMotion& m, const BlockPose& pose, const DynamicsFloor& floor,
+                     int* vertex = nullptr) {
+  double low = INFINITY;
+  for (int v = 0; v < static_cast<int>(m.geometry().arms().size()); ++v) {
+    const double h = floor.normal.dot(m.geometry().vertex(pose, v) - floor.point);
+    if (h < low) {
+      low = h;
+      if (vertex) *vertex = v;
+    }
+  }
+  return low;
+}
+
+double deepest_gap(const BlockMotion& m, const BlockPose& pose) {
+  double low = INFINITY;
+  for (const JointContact& c : m.geometry().contacts(pose, 0.0)) low = std::min(low, c.gap);
+  return low;
+}
+
+MotionSample sample_at(const BlockMotion& m, const Physical& p, double time) {
+  MotionSample s;
+  s.time = time;
+  s.centroid = m.centroid() + p.pose.u;
+  s.orientation = p.pose.q;
+  s.velocity = p.velocity.v;
+  s.angular_velocity = p.velocity.w;
+  s.kinetic_translational = m.kinetic_translational(p.velocity);
+  s.kinetic_rotational = m.kinetic_rotational(p.pose, p.velocity);
+  s.work = p.work;
+  s.dissipated = p.work - s.kinetic_translational - s.kinetic_rotational;
+  return s;
+}
+
+void check_options(const DynamicsOptions& o) {
+  auto positive = [](double v, const char* field) {
+    if (!(v > 0) || !std::isfinite(v))
+      throw InputError(std::string("analysis.dynamics.") + field, "must be a positive number");
+  };
+  positive(o.duration, "duration_s");
+  positive(o.sample, "sample_s");
+  positive(o.abs_tol, "abs_tol");
+  positive(o.rel_tol, "rel_tol");
+  positive(o.max_step, "max_step_s");
+  if (o.duration / o.sample > 100000)
+    throw InputError("analysis.dynamics.sample_s", "more than 100000 samples over the duration");
+}
+
+}  // namespace
+
+DynamicsOptions dynamics_options(Preset preset) {
+  DynamicsOptions o;
+  switch (preset) {
+    case Preset::fast:
+      o.abs_tol = 1e-8;
+      o.rel_tol = 1e-6;
+      o.max_step = 0.02;
+      break;
+    case Preset::standard:
+      o.abs_tol = 1e-10;
+      o.rel_tol = 1e-8;
+      o.max_step = 0.01;
+      break;
+    case Preset::precise:
+      o.abs_tol = 1e-12;
+      o.rel_tol = 1e-10;
+      o.max_step = 0.005;
+      break;
+  }
+  return o;
+}
+
+BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
+                                    const blocks::MassProperties& mass,
+                                    const kinematics::Effects& effects,
+                                    const std::vector<double>& friction_deg,
+                                    const DynamicsOptions& options) {
+  check_options(options);
+  BlockDynamics out;
+  BlockLoads loads = block_loads(block, mass, effects);
+  out.effects_used = loads.effects_used;
+  out.notes = loads.notes;
+  out.mass = mass.mass;
+  out.friction_deg = friction_deg;
+  const BlockMotion motion(block, mass, std::move(loads), friction_deg);
+  Scales k;
+  k.length = motion.length();
+  k.time = std::sqrt(k.length / motion.gravity());
+  k.speed = k.length / k.time;
+  k.energy = motion.load_scale() * k.length;
+  out.drift_bound = kDriftBoundRel * k.length;
+
+  std::optional<DynamicsFloor> floor = options.floor;
+  if (floor) {
+    floor->normal.normalize();
+    if (lowest_height(motion, BlockPose{}, *floor) < -kContactGapRel * k.length) {
+      out.notes.push_back("the floor lies above the block's lowest corner: no landing computed");
+      floor.reset();
+    }
+  }
+
+  const MotionSystem system(motion, k, out.evaluations);
+  auto controlled = odeint::make_controlled(options.abs_tol, options.rel_tol,
+                                            odeint::runge_kutta_dopri5<State>());
+  odeint::runge_kutta_dopri5<State> plain;
+  // One plain Dormand-Prince step of length h from (x0, t0): the
+  // bisection's probe of a step that an event cuts short.
+  auto advance = [&](const State& x0, double t0, double h) {
+    State dx0, x1, dx1;
+    system(x0, dx0, t0);
+    plain.reset();
+    plain.do_step(system, x0, dx0, t0, x1, dx1, h);
+    return x1;
+  };
+
+  Physical now;
+  State x = pack(now, k);
+  double tau = 0;
+  const double tau_end_contact = options.duration / k.time;
+  double tau_end = tau_end_contact;
+  const double tau_sample = options.sample / k.time;
+  const double tau_max_step = options.max_step / k.time;
+  double next_sample = 0;
+  double dt = std::min(tau_max_step, 1e-3);
+  ContactMode mode =
+      contact_mode(motion, now.pose, now.velocity, motion.solve(now.pose, now.velocity));
+  auto record_event = [&](double t, const std::string& kind, const std::string& what,
+                          std::vector<std::string> planes) {
+    MotionEvent e;
+    e.time = t;
+    e.kind = kind;
+    e.what = what;
+    e.planes = std::move(planes);
+    out.events.push_back(std::move(e));
+  };
+  auto mode_event = [&](const ContactMode& from, const ContactMode& to, double t) {
+    for (const std::string& p : from.planes)
+      if (std::find(to.planes.begin(), to.planes.end(), p) == to.planes.end())
+        record_event(t, "leaves", "leaves " + p, {p});
+    const char* kind = to.kind == ModeKind::FreeFall  ? "free_fall"
+                       : to.kind == ModeKind::Sliding ? "slides"
+                       : to.kind == ModeKind::Rest    ? "rest"
+                                                      : "rotates";
+    if (from.describe() != to.describe() || from.kind != to.kind)
+      record_event(t, kind, to.describe(), to.planes);
+  };
+  if (mode.kind == ModeKind::FreeFall)
+    record_event(0.0, "free_fall", "free fall (no joint holds it)", {});
+  else
+    mode_event(ContactMode{}, mode, 0.0);
+
+  auto mode_at = [&](const State& s) {
+    const Physical p = unpack(s, k);
+    return contact_mode(motion, p.pose, p.velocity, motion.solve(p.pose, p.velocity));
+  };
+  const double penetration = -kContactGapRel * k.length;
+  auto impact_at = [&](const State& s) {
+    return deepest_gap(motion, unpack(s, k).pose) < penetration;
+  };
+  auto lands_at = [&](const State& s) {
+    return floor && lowest_height(motion, unpack(s, k).pose, *floor) < 0;
+  };
+
+  bool landed = false;
+  int guard = 0;
+  while (tau < tau_end - 1e-12 * tau_end && !landed) {
+    if (++guard > 5000000) {
+      out.notes.push_back("stopped after 5 000 000 steps");
+      break;
+    }
+    if (options.progress && (out.steps % 64) == 0)
+      options.progress->step("dynamics", std::min(1.0, tau / tau_end));
+    // Samples fall on step ends.
+    while (next_sample <= tau + 1e-9 * tau_sample) {
+      out.samples.push_back(sample_at(motion, unpack(x, k), next_sample * k.time));
+      next_sample += tau_sample;
+    }
+    double h = std::min({dt, tau_max_step, next_sample - tau, tau_end - tau});
+    const State x0 = x;
+    const double t0 = tau;
+    controlled.reset();  // the state may have been projected: no stale first derivative
+    if (controlled.try_step(system, x, tau, h) == odeint::fail) {
+      ++out.rejected_steps;
+      dt = h;
+      if (h < 1e-14)
+        throw Error("dynamics: the step size vanished at t = " + std::to_string(t0 * k.time) +
+                    " s");
+      continue;
+    }
+    ++out.steps;
+    dt = h;
+    // Events inside the step: a contact closing into the rock, the floor,
+    // a change of the contact mode. The earliest is found by bisection.
+    ContactMode new_mode = mode_at(x);
+    const bool impact = impact_at(x), lands = lands_at(x);
+    if (impact || lands || new_mode != mode) {
+      auto happened = [&](const State& s) {
+        return impact_at(s) || lands_at(s) || mode_at(s) != mode;
+      };
+      double lo = 0, hi = tau - t0;
+      State at_hi = x;
+      while (hi - lo > kEventTimeRel) {
+        const double mid = 0.5 * (lo + hi);
+        const State xm = advance(x0, t0, mid);
+        if (happened(xm)) {
+          hi = mid;
+          at_hi = xm;
+        } else {
+          lo = mid;
+        }
+      }
+      x = at_hi;
+      tau = t0 + hi;
+      new_mode = mode_at(x);
+      if (lands_at(x)) {
+        landed = true;
+      }
+    }
+    // Projection: drift back onto the loaded contacts; a closing contact
+    // stops (plastic impact).
+    Physical p = unpack(x, k);
+    const double q_error = std::abs(Eigen::Quaterniond(x[3], x[4], x[5], x[6]).norm() - 1.0);
+    out.quaternion_error = std::max(out.quaternion_error, q_error);
+    if (!landed) {
+      const BlockMotion::Projection pr = motion.project(p.pose, p.velocity);
+      out.drift_before = std::max(out.drift_before, pr.drift_before);
+      out.drift_after = std::max(out.drift_after, pr.drift_after);
+      if (pr.impact_speed > 1e-4 * k.speed) {
+        std::vector<std::string> hit;
+        for (const JointContact& c : motion.geometry().contacts(p.pose, -penetration))
+          hit.push_back(motion.geometry().surfaces()[c.surface].name);
+        std::sort(hit.begin(), hit.end());
+        hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
+        std::string names;
+        for (const auto& n : hit) names += (names.empty() ? "" : " and ") + n;
+        char buf[64];
+        std::snprintf(buf, sizeof buf, " at %.2f m/s", pr.impact_speed);
+        record_event(tau * k.time, "hits", "hits " + names + buf, hit);
+      }
+      x = pack(p, k);
+      new_mode = mode_at(x);
+    }
+    if (new_mode != mode) {
+      mode_event(mode, new_mode, tau * k.time);
+      mode = new_mode;
+    }
+    // Free flight goes on to the floor beyond the duration.
+    if (mode.kind == ModeKind::FreeFall && floor)
+      tau_end = std::max(tau_end_contact, std::min(tau + (kMaxFlightSeconds / k.time),
+                                                   tau_end_contact + kMaxFlightSeconds / k.time));
+  }
+  const Physical last = unpack(x, k);
+  out.end_time = tau * k.time;
+  if (out.samples.empty() || out.samples.back().time < out.end_time - 1e-9 * k.time)
+    out.samples.push_back(sample_at(motion, last, out.end_time));
+  if (landed) {
+    Landing l;
+    int v = 0;
+    lowest_height(motion, last.pose, *floor, &v);
+    l.time = out.end_time;
+    l.point = motion.geometry().vertex(last.pose, v);
+    l.centroid = motion.centroid() + last.pose.u;
+    l.speed = last.velocity.v.norm();
+    l.corner_speed = (last.velocity.v + last.velocity.w.cross(l.point - l.centroid)).norm();
+    l.angular_speed = last.velocity.w.norm();
+    l.kinetic_translational = motion.kinetic_translational(last.velocity);
+    l.kinetic_rotational = motion.kinetic_rotational(last.pose, last.velocity);
+    Eigen::Vector3d d = last.pose.u;
+    d -= d.dot(Eigen::Vector3d::UnitZ()) * Eigen::Vector3d::UnitZ();
+    l.distance_from_start = d.norm();
+    // "The face": of the block's steep free faces (dip > 10 degrees), the
+    // one it moved out through (the largest horizontal part of its outward
+    // normal along the centroid's horizontal travel).
+    double best = -INFINITY;
+    for (const blocks::BlockPlane& bp : block.planes()) {
+      if (bp.kind != blocks::PlaneKind::FreeFace) continue;
+      const Eigen::Vector3d n = bp.outward_normal();
+      const double horizontal = std::hypot(n(0), n(1));
+      if (horizontal <= std::sin(10.0 * M_PI / 180.0)) continue;
+      const double along =
+          d.norm() > 0 ? Eigen::Vector3d(n(0), n(1), 0).dot(d) / (horizontal * d.norm()) : 0.0;
+      if (along <= best) continue;
+      best = along;
+      l.face = bp.name;
+      // Horizontal distance of the landing centroid in front of the plane.
+      l.distance_from_face =
+          n.dot(l.centroid - block.vertices()[block
+                                                  .faces()[block.faces_on_plane(static_cast<int>(
+                                                      &bp - block.planes().data()))[0]]
+                                                  .loop[0]]) /
+          horizontal;
+    }
+    out.landing = l;
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "lands %.1f m from %s at %.1f m/s",
+                  l.distance_from_face ? *l.distance_from_face : l.distance_from_start,
+                  l.distance_from_face ? ("the face " + l.face).c_str() : "where it started",
+                  l.speed);
+    record_event(out.end_time, "lands", buf, {});
+    out.outcome = "lands";
+  } else if (mode.kind == ModeKind::Rest) {
+    out.outcome = "at rest";
+  } else if (mode.kind == ModeKind::FreeFall) {
+    out.outcome =
+        floor ? "in free flight when the time ran out" : "in free flight (no floor given)";
+  } else {
+    out.outcome = "moving at the end";
+  }
+  return out;
+}
+
+}  // namespace rockface::mechanics

@@ -1,0 +1,181 @@
+#include "storage/report_dynamics_json.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace rockface::storage {
+
+namespace {
+
+using ordered = nlohmann::ordered_json;
+using nlohmann::json;
+
+double tidy(double v) {
+  // 9 significant digits: far beyond what the integration gives.
+  if (!std::isfinite(v)) return 0;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return std::strtod(buf, nullptr);
+}
+
+ordered vec(const Eigen::Vector3d& v) {
+  return ordered::array({tidy(v(0)), tidy(v(1)), tidy(v(2))});
+}
+
+Eigen::Vector3d vec3(const json& j) {
+  if (!j.is_array() || j.size() != 3) return Eigen::Vector3d::Zero();
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
+
+}  // namespace
+
+std::string event_text(const ReportMotionEvent& e) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, " at %.2f s", e.time_s);
+  return e.what + buf;
+}
+
+ordered dynamics_to_json(const ReportDynamics& d) {
+  ordered j;
+  j["trigger"] = d.trigger;
+  j["outcome"] = d.outcome;
+  ordered friction = ordered::object();
+  for (const auto& [plane, deg] : d.friction_deg) friction[plane] = tidy(deg);
+  j["friction_deg"] = friction;
+  j["cohesion"] = "lost";
+  if (d.strength_divisor != 1) j["strength_divisor"] = tidy(d.strength_divisor);
+  ordered events = ordered::array();
+  for (const auto& e : d.events) {
+    ordered o;
+    o["time_s"] = tidy(e.time_s);
+    o["kind"] = e.kind;
+    o["event"] = e.what;
+    o["planes"] = e.planes;
+    o["text"] = event_text(e);
+    events.push_back(o);
+  }
+  j["events"] = events;
+  ordered path = ordered::array();
+  for (const auto& s : d.path) {
+    ordered o;
+    o["t"] = tidy(s.time_s);
+    o["position"] = vec(s.position);
+    o["orientation"] = ordered::array({tidy(s.orientation(0)), tidy(s.orientation(1)),
+                                       tidy(s.orientation(2)), tidy(s.orientation(3))});
+    o["velocity"] = vec(s.velocity);
+    o["angular_velocity"] = vec(s.angular_velocity);
+    o["energy"] = {{"kinetic_translational", tidy(s.kinetic_translational)},
+                   {"kinetic_rotational", tidy(s.kinetic_rotational)},
+                   {"work", tidy(s.work)},
+                   {"dissipated", tidy(s.dissipated)}};
+    path.push_back(o);
+  }
+  j["path"] = path;
+  if (d.landing) {
+    const ReportLanding& l = *d.landing;
+    ordered o;
+    o["time_s"] = tidy(l.time_s);
+    o["point"] = vec(l.point);
+    o["centroid"] = vec(l.centroid);
+    o["speed"] = tidy(l.speed);
+    o["corner_speed"] = tidy(l.corner_speed);
+    o["angular_speed"] = tidy(l.angular_speed);
+    o["kinetic_energy"] = tidy(l.kinetic_translational + l.kinetic_rotational);
+    o["kinetic_translational"] = tidy(l.kinetic_translational);
+    o["kinetic_rotational"] = tidy(l.kinetic_rotational);
+    o["distance_from_start"] = tidy(l.distance_from_start);
+    if (l.distance_from_face) {
+      o["distance_from_face"] = tidy(*l.distance_from_face);
+      o["face"] = l.face;
+    }
+    j["landing"] = o;
+  }
+  if (d.floor) j["floor"] = {{"point", vec(d.floor->first)}, {"normal", vec(d.floor->second)}};
+  j["numerics"] = {{"duration_s", tidy(d.duration_s)},
+                   {"sample_s", tidy(d.sample_s)},
+                   {"end_time_s", tidy(d.end_time_s)},
+                   {"abs_tol", d.abs_tol},
+                   {"rel_tol", d.rel_tol},
+                   {"max_step_s", tidy(d.max_step_s)},
+                   {"steps", d.steps},
+                   {"rejected_steps", d.rejected_steps},
+                   {"evaluations", d.evaluations},
+                   {"drift_before_m", d.drift_before_m},
+                   {"drift_after_m", d.drift_after_m},
+                   {"drift_bound_m", d.drift_bound_m}};
+  if (d.picture) j["picture"] = *d.picture;
+  if (!d.notes.empty()) j["notes"] = d.notes;
+  return j;
+}
+
+std::optional<ReportDynamics> dynamics_from_block_json(const std::string& block_json) {
+  const json b = json::parse(block_json, nullptr, false);
+  if (b.is_discarded() || !b.is_object() || !b.contains("dynamics") || !b["dynamics"].is_object())
+    return std::nullopt;
+  const json& j = b["dynamics"];
+  ReportDynamics d;
+  try {
+    d.trigger = j.value("trigger", "");
+    d.outcome = j.value("outcome", "");
+    d.strength_divisor = j.value("strength_divisor", 1.0);
+    const json friction = j.value("friction_deg", json::object());
+    for (auto it = friction.begin(); it != friction.end(); ++it)
+      d.friction_deg[it.key()] = it.value().get<double>();
+    for (const json& e : j.value("events", json::array())) {
+      ReportMotionEvent ev;
+      ev.time_s = e.value("time_s", 0.0);
+      ev.kind = e.value("kind", "");
+      ev.what = e.value("event", "");
+      for (const json& p : e.value("planes", json::array()))
+        ev.planes.push_back(p.get<std::string>());
+      d.events.push_back(ev);
+    }
+    for (const json& s : j.value("path", json::array())) {
+      ReportMotionSample m;
+      m.time_s = s.value("t", 0.0);
+      m.position = vec3(s["position"]);
+      const json& q = s["orientation"];
+      if (q.is_array() && q.size() == 4)
+        m.orientation = Eigen::Vector4d(q[0].get<double>(), q[1].get<double>(), q[2].get<double>(),
+                                        q[3].get<double>());
+      m.velocity = vec3(s["velocity"]);
+      m.angular_velocity = vec3(s["angular_velocity"]);
+      const json& en = s.value("energy", json::object());
+      m.kinetic_translational = en.value("kinetic_translational", 0.0);
+      m.kinetic_rotational = en.value("kinetic_rotational", 0.0);
+      m.work = en.value("work", 0.0);
+      m.dissipated = en.value("dissipated", 0.0);
+      d.path.push_back(m);
+    }
+    if (j.contains("landing")) {
+      const json& o = j["landing"];
+      ReportLanding l;
+      l.time_s = o.value("time_s", 0.0);
+      l.point = vec3(o["point"]);
+      l.centroid = vec3(o["centroid"]);
+      l.speed = o.value("speed", 0.0);
+      l.corner_speed = o.value("corner_speed", 0.0);
+      l.angular_speed = o.value("angular_speed", 0.0);
+      l.kinetic_translational = o.value("kinetic_translational", 0.0);
+      l.kinetic_rotational = o.value("kinetic_rotational", 0.0);
+      l.distance_from_start = o.value("distance_from_start", 0.0);
+      if (o.contains("distance_from_face")) {
+        l.distance_from_face = o["distance_from_face"].get<double>();
+        l.face = o.value("face", "");
+      }
+      d.landing = l;
+    }
+    if (j.contains("floor"))
+      d.floor = std::make_pair(vec3(j["floor"]["point"]), vec3(j["floor"]["normal"]));
+    const json& n = j.value("numerics", json::object());
+    d.duration_s = n.value("duration_s", 0.0);
+    d.sample_s = n.value("sample_s", 0.0);
+    d.end_time_s = n.value("end_time_s", 0.0);
+    if (j.contains("picture")) d.picture = j["picture"].get<std::string>();
+  } catch (const json::exception&) {
+    return std::nullopt;  // not a report this program wrote
+  }
+  return d;
+}
+
+}  // namespace rockface::storage
