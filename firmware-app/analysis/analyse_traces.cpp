@@ -93,7 +93,7 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInpu
   if (b.polyhedron && b.analysis) {
     fill_block_report(*b.polyhedron, *b.analysis, scene.analysis, rb);
     if (scene_wants_mechanics(scene) && b.finite)
-      analyse_block_mechanics(*b.polyhedron, scene, effects, rb);
+      analyse_block_mechanics(*b.polyhedron, scene, b.strengths, effects, rb);
     rename_joint_planes(b, net, rb);
   } else {
     // An infinite block has no corners, and a finite one that is not one
