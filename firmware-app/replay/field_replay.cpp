@@ -78,9 +78,9 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   if (from_scene) {
     scene = storage::load_scene(request.source);
     synthetic = synthetic_scene_from_scene(*scene);
-    // A pick naming a pair the scene does not photograph: bad input before
-    // anything is captured or stored.
-    check_pick_pairs(*scene, std::max<std::size_t>(1, synthetic->pairs.size()));
+    // A pick naming a pair the scene does not photograph, or a pixel outside
+    // the photographs: bad input before anything is captured or stored.
+    check_picks_before_capture(*scene, std::max<std::size_t>(1, synthetic->pairs.size()));
     cam = camera::MockCamera::synthetic(synthetic->scene, spool.string());
     intrinsics = camera::rendered_intrinsics(synthetic->scene);
     intrinsics.body = "rockface synthetic camera";
