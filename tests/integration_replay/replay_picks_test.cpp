@@ -89,6 +89,11 @@ TEST(ReplayPicks, TracesMeasuredOnTheImageGiveThePlanesAndTheKeyblock) {
   }
   EXPECT_EQ(measured, 2);
   EXPECT_NE(r.out.find("J2: orientation unknown"), std::string::npos) << r.out;
+  // The replay prints each joint's measured plane beside the scene's.
+  EXPECT_NE(r.out.find("joints measured from the picked traces"), std::string::npos) << r.out;
+  for (const std::string row : {"J1     ", "J2     unknown             75.0/110.0", "J3     "})
+    EXPECT_NE(r.out.find("\n" + row), std::string::npos) << row << " in\n" << r.out;
+  EXPECT_NE(r.out.find("60.0/200.0"), std::string::npos) << r.out;
 
   // The blocks come from the measured traces: the keyblock is found, its
   // loop made of the picked traces. Its volume with the true traces is
