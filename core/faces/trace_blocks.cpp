@@ -531,6 +531,7 @@ std::optional<TraceBlock> trace_block(const FreeSurface& surface, const TraceNet
           in.strengths.push_back(s);
         }
         block.analysis = kinematics::analyse_block(*block.polyhedron, in);
+        block.strengths = std::move(in.strengths);
         block.finiteness = block.analysis->finiteness;
         block.finite = block.finiteness.finite.value;
       } catch (const InputError& e) {

@@ -75,6 +75,9 @@ struct TraceBlock {
   kinematics::Finiteness finiteness;
   std::optional<blocks::Polyhedron> polyhedron;       // finite blocks
   std::optional<kinematics::BlockAnalysis> analysis;  // finite blocks
+  // Per polyhedron plane, the joints' friction and cohesion the analysis
+  // took (finite blocks): the equilibrium path takes the same.
+  std::vector<kinematics::JointStrength> strengths;
   double uncertainty = 0;  // radians behind the verdicts (scene's, or worse for fitted planes)
   std::vector<std::string> notes;
 };

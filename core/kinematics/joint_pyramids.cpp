@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/common/error.h"
+
 namespace rockface::kinematics {
 
 geometry::Cone excavation_pyramid(const std::vector<FreeFaceSpec>& faces) {
@@ -56,7 +58,9 @@ std::vector<PyramidVerdict> analyse_joint_pyramids(const std::vector<JointSpec>&
                                                    const geometry::Cone& excavation,
                                                    const PyramidOptions& options) {
   if (joints.size() > 20)
-    throw std::invalid_argument("more than 20 joints: 2^n pyramids would not fit in memory");
+    throw InputError("joints",
+                     "more than 20 joints make more than 2^20 pyramids, which would not "
+                     "fit in memory: give the joint sets' mean planes instead");
   const size_t n = joints.size();
   std::vector<PyramidVerdict> out;
   out.reserve(size_t{1} << n);

@@ -57,7 +57,8 @@ struct PyramidOptions {
   Eigen::Vector3d resultant = Eigen::Vector3d::Zero();
 };
 
-// Every code of the n joints (2^n of them, n <= 20) against one EP.
+// Every code of the n joints (2^n of them) against one EP. Throws
+// InputError("joints") for n > 20: the table would not fit in memory.
 std::vector<PyramidVerdict> analyse_joint_pyramids(const std::vector<JointSpec>& joints,
                                                    const geometry::Cone& excavation,
                                                    const PyramidOptions& options);

@@ -7,6 +7,7 @@
 #include "core/common/error.h"
 #include "core/measure/joined_traces.h"
 #include "core/measure/least_cost_trace.h"
+#include "core/measure/pair_photo.h"
 
 namespace rockface::measure {
 
@@ -39,7 +40,41 @@ void require_in_image(const PhotoView& view, const std::vector<Eigen::Vector2d>&
     }
 }
 
+// The same rule as pixel_in_image, for a photograph of width x height px.
+void require_in_photograph(const std::string& photo, int width, int height,
+                           const std::vector<Eigen::Vector2d>& pixels, const std::string& where) {
+  PhotoView view;
+  view.name = photo;
+  view.camera.width = width;
+  view.camera.height = height;
+  require_in_image(view, pixels, where);
+}
+
 }  // namespace
+
+void check_picks_in_photographs(const Picks& picks, int width, int height,
+                                const std::string& source) {
+  const std::string prefix = source.empty() ? std::string() : source + ": ";
+  for (const auto& t : picks.traces) {
+    const std::string where = prefix + t.where;
+    if (!t.pixels.empty())
+      require_in_photograph(pair_photo(t.pair, t.photo), width, height, t.pixels,
+                            where + ".pixels");
+    if (t.ends) {
+      require_in_photograph(pair_photo(t.pair, t.photo), width, height,
+                            {(*t.ends)[0], (*t.ends)[1]}, where + ".ends");
+      if (t.cost == "curvature" && t.photo != "left")
+        throw InputError(where + ".cost",
+                         "the curvature cost follows the 3D image on the left photograph only");
+    }
+  }
+  for (const auto& a : picks.areas)
+    require_in_photograph(pair_photo(a.pair, a.photo), width, height, a.polygon,
+                          prefix + a.where + ".polygon");
+  for (const auto& p : picks.points)
+    require_in_photograph(pair_photo(p.pair, p.photo), width, height, {p.pixel},
+                          prefix + p.where + ".pixel");
+}
 
 const std::string& MeasuredPicks::pole_id(std::size_t k) const {
   const PoleSource& s = poles[k];

@@ -96,4 +96,14 @@ struct MeasuredPicks {
 MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& context,
                             std::optional<int> sets);
 
+// What the picks can be checked for before anything is photographed, from
+// the camera alone (every photograph width x height px): each tap, end and
+// polygon corner inside its photograph, and the curvature cost only on the
+// left photograph (the one the 3D image is seen from). Whether a tap has
+// surface under it is known only from the 3D image (measure_picks). Throws
+// InputError naming `source` and the pick's field ("...: picks.traces[2].
+// pixels[1]: pixel (6100, 20) is outside the left photograph (6000 x 4000)").
+void check_picks_in_photographs(const Picks& picks, int width, int height,
+                                const std::string& source);
+
 }  // namespace rockface::measure

@@ -183,7 +183,7 @@ void analyse_scene_blocks(const AnalysisInput& scene, storage::Report& report, P
     fill_verdicts(a.finiteness, rb);
     fill_block_report(*poly, a, scene.analysis, rb);
     if (scene_wants_mechanics(scene) && a.finiteness.finite.value)
-      analyse_block_mechanics(*poly, scene, effects, rb, &progress);
+      analyse_block_mechanics(*poly, scene, in.strengths, effects, rb, &progress);
     if (scene_wants_dynamics(scene) && a.finiteness.finite.value)
       analyse_block_dynamics(*poly, scene, effects, rb, &progress);
     report.blocks.push_back(std::move(rb));

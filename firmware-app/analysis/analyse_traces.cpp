@@ -95,7 +95,7 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInpu
   if (b.polyhedron && b.analysis) {
     fill_block_report(*b.polyhedron, *b.analysis, scene.analysis, rb);
     if (scene_wants_mechanics(scene) && b.finite)
-      analyse_block_mechanics(*b.polyhedron, scene, effects, rb);
+      analyse_block_mechanics(*b.polyhedron, scene, b.strengths, effects, rb);
     if (scene_wants_dynamics(scene) && b.finite) {
       std::map<std::string, double> friction;  // degrees, from each plane's joint
       for (const auto& p : b.planes)

@@ -1,6 +1,9 @@
 // `rockface replay CAPTURE_DIR_OR_SCENE --project PROJECT.rockface`
 #include <cstdio>
+#include <iomanip>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "core/common/preset.h"
 #include "firmware-app/cli/verb_registry.h"
@@ -22,6 +25,32 @@ class StderrProgress final : public Progress {
   std::string last_;
 };
 
+// Each joint measured from its picked traces beside the scene's plane.
+void print_joint_comparisons(const std::vector<JointComparison>& joints) {
+  if (joints.empty()) return;
+  const auto plane = [](double dip, double dipdir) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f/%05.1f", dip, dipdir);
+    return std::string(text);
+  };
+  std::cout << "\njoints measured from the picked traces (dip/dip direction, degrees):\n"
+            << std::left << std::setw(7) << "joint" << std::setw(20) << "measured (1 sigma)"
+            << std::setw(13) << "scene" << std::setw(10) << "apart"
+            << "traces\n";
+  for (const auto& j : joints) {
+    std::string traces;
+    for (const auto& t : j.traces) traces += (traces.empty() ? "" : " ") + t;
+    char sigma[16], apart[16];
+    std::snprintf(sigma, sizeof sigma, " (%.1f)", j.sigma);
+    std::snprintf(apart, sizeof apart, "%.1f deg", j.angle);
+    std::cout << std::setw(7) << j.id << std::setw(20)
+              << (j.measured ? plane(j.dip, j.dipdir) + sigma : "unknown") << std::setw(13)
+              << plane(j.scene_dip, j.scene_dipdir) << std::setw(10) << (j.measured ? apart : "-")
+              << traces << (j.measured ? "" : " (the scene's plane is kept)") << "\n";
+  }
+  std::cout << std::right;
+}
+
 VerbRun setup_replay(CLI::App& sub) {
   auto req = std::make_shared<ReplayRequest>();
   auto preset = std::make_shared<std::string>();
@@ -41,6 +70,7 @@ VerbRun setup_replay(CLI::App& sub) {
               << " points; " << out.registration << "; predicted depth precision "
               << out.predicted_depth_sigma_m * 1000 << " mm)\n";
     for (const auto& g : out.guidance) std::cout << "capture: " << g << "\n";
+    print_joint_comparisons(out.joints);
     if (out.report) std::cout << storage::report_summary(*out.report);
     return 0;
   };

@@ -1,6 +1,7 @@
 #include "firmware-app/replay/field_replay.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -12,6 +13,7 @@
 #include "camera/synthetic_renderer.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
+#include "core/geometry/orientation.h"
 #include "core/measure/pair_photo.h"
 #include "core/photogrammetry/reconstruction/preset.h"
 #include "core/photogrammetry/reconstruction/reconstruction.h"
@@ -61,6 +63,34 @@ std::optional<photogrammetry::NorthReference> compass_reading(
   return north;
 }
 
+// Each scene joint that has picked traces: its measured plane beside the
+// scene's.
+std::vector<JointComparison> joint_comparisons(const storage::Scene& scene,
+                                               const measure::MeasuredPicks& measured) {
+  std::vector<JointComparison> out;
+  for (const auto& j : scene.joints)
+    for (const auto& m : measured.joints) {
+      if (m.label != j.id) continue;
+      JointComparison c;
+      c.id = j.id;
+      c.scene_dip = j.dip;
+      c.scene_dipdir = j.dipdir;
+      c.traces = m.traces;
+      c.measured = m.plane.known;
+      c.problem = m.plane.problem;
+      if (c.measured) {
+        c.dip = rad_to_deg(m.plane.orientation.dip);
+        c.dipdir = rad_to_deg(m.plane.orientation.dipdir);
+        c.sigma = rad_to_deg(m.plane.sigma);
+        const double cosine = std::abs(geometry::plane_normal_deg(c.dip, c.dipdir)
+                                           .dot(geometry::plane_normal_deg(j.dip, j.dipdir)));
+        c.angle = rad_to_deg(std::acos(std::min(1.0, cosine)));
+      }
+      out.push_back(std::move(c));
+    }
+  return out;
+}
+
 }  // namespace
 
 ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& progress) {
@@ -79,9 +109,9 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   if (from_scene) {
     scene = storage::load_scene(request.source);
     synthetic = synthetic_scene_from_scene(*scene);
-    // A pick naming a pair the scene does not photograph: bad input before
-    // anything is captured or stored.
-    check_pick_pairs(*scene, std::max<std::size_t>(1, synthetic->pairs.size()));
+    // A pick naming a pair the scene does not photograph, or a pixel outside
+    // the photographs: bad input before anything is captured or stored.
+    check_picks_before_capture(*scene, std::max<std::size_t>(1, synthetic->pairs.size()));
     cam = camera::MockCamera::synthetic(synthetic->scene, spool.string());
     intrinsics = camera::rendered_intrinsics(synthetic->scene);
     intrinsics.body = "rockface synthetic camera";
@@ -192,6 +222,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     picked = measure_replay_picks(*scene, rec, intrinsics, preset, left_image, right_image,
                                   more ? &*more : nullptr);
     for (const auto& note : picked->notes) out.guidance.push_back(note);
+    out.joints = joint_comparisons(*scene, picked->measured);
   }
   // The analysis input, filled once from the scene and then with what was
   // measured: the measured traces and joint planes.

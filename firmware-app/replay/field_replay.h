@@ -18,6 +18,18 @@ struct ReplayRequest {
   std::optional<Preset> preset;  // none: the scene's analysis.preset (standard for a folder)
 };
 
+// A joint's orientation as measured from its picked traces, beside the
+// orientation the scene gives it (for a synthetic scene: the truth).
+struct JointComparison {
+  std::string id;
+  double scene_dip = 0, scene_dipdir = 0;  // degrees
+  bool measured = false;                   // false: orientation unknown (why: `problem`)
+  double dip = 0, dipdir = 0, sigma = 0;   // degrees, when measured
+  double angle = 0;                        // degrees between the two planes, when measured
+  std::vector<std::string> traces;
+  std::string problem;
+};
+
 struct ReplayOutcome {
   storage::RecordId visit_id = 0;
   storage::RecordId capture_id = 0;
@@ -28,6 +40,9 @@ struct ReplayOutcome {
   std::string registration;            // how the model was scaled and oriented
   double predicted_depth_sigma_m = 0;  // sigma_Z at the face distance
   std::vector<std::string> guidance;   // capture guidance notes
+  // With picks: each scene joint's plane measured from its traces beside
+  // the scene's (JointComparison), in scene order.
+  std::vector<JointComparison> joints;
   std::optional<storage::Report> report;
 };
 

@@ -31,6 +31,14 @@ void check_pick_pairs(const storage::Scene& scene, std::size_t pairs) {
   for (const auto& p : scene.picks->points) check_pair(scene, p.where, p.pair, pairs);
 }
 
+void check_picks_before_capture(const storage::Scene& scene, std::size_t pairs) {
+  if (!scene.picks) return;
+  check_pick_pairs(scene, pairs);
+  if (scene.imaging)
+    measure::check_picks_in_photographs(*scene.picks, scene.imaging->camera.width,
+                                        scene.imaging->camera.height, scene.source);
+}
+
 ReplayPicks measure_replay_picks(const storage::Scene& scene,
                                  const photogrammetry::ReconstructionResult& rec,
                                  const photogrammetry::CameraIntrinsics& intrinsics,

@@ -47,4 +47,10 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
 // pairs. Throws InputError naming the scene file and the pick's `pair` field.
 void check_pick_pairs(const storage::Scene& scene, std::size_t pairs);
 
+// Everything about the scene's picks that is known before anything is
+// captured: the pairs they name (check_pick_pairs) and their pixels inside
+// the photographs of imaging.camera (measure::check_picks_in_photographs).
+// Throws InputError naming the scene file and the pick's field.
+void check_picks_before_capture(const storage::Scene& scene, std::size_t pairs);
+
 }  // namespace rockface::app

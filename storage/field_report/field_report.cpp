@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
+#include "storage/export_scene_json.h"
 #include "storage/report_dynamics_json.h"
 
 namespace rockface::storage {
@@ -149,11 +151,28 @@ void joints_and_sets(ProjectStore& store, FieldReport& r) {
   }
   // No sets stored: they are clustered here (core/measure), as the tablet
   // would offer: from the planes measured on the face when there are two or
-  // more, else from the joints.
+  // more, else from the joints. A trace joined from pieces stored on
+  // different pairs (scene_traces) is one discontinuity: one pole, the mean
+  // of its pieces' planes.
+  const std::vector<Measurement> measurements = store.list_measurements(r.visit_id);
+  std::map<std::string, std::vector<Eigen::Vector3d>> joined_poles;  // by the joined trace's label
+  std::map<std::string, std::string> joined_into;                    // piece label -> trace label
+  for (const auto& t : scene_traces(measurements))
+    if (t.pieces.size() > 1)
+      for (const auto& piece : t.pieces) joined_into[piece] = t.label;
   std::vector<Eigen::Vector3d> measured;
-  for (const auto& m : store.list_measurements(r.visit_id))
-    if (m.dip_deg && m.dipdir_deg)
-      measured.push_back(geometry::plane_normal_deg(*m.dip_deg, *m.dipdir_deg));
+  for (const auto& m : measurements) {
+    if (!m.dip_deg || !m.dipdir_deg) continue;
+    const Eigen::Vector3d pole = geometry::plane_normal_deg(*m.dip_deg, *m.dipdir_deg);
+    const auto joined =
+        m.kind == Measurement::Kind::trace ? joined_into.find(m.label) : joined_into.end();
+    if (joined == joined_into.end())
+      measured.push_back(pole);
+    else
+      joined_poles[joined->second].push_back(pole);
+  }
+  for (const auto& [label, poles] : joined_poles)
+    measured.push_back(measure::fisher_statistics(poles).mean);
   const bool from_measured = measured.size() >= 2;
   if (from_measured) r.poles = measured;
   if (r.poles.size() < 2) return;
@@ -228,8 +247,14 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
       }
     }
   }
-  for (const auto& m : store.list_measurements(visit_id))
-    if (m.kind == Measurement::Kind::trace) r.traces.emplace_back(m.label, m.points);
+  // The traces as the analysis takes them: the pieces of one trace stored
+  // from different pairs' models joined into one (scene_traces), drawn as
+  // one line and labelled by its pieces ("T1+T4").
+  for (const auto& t : scene_traces(store.list_measurements(visit_id))) {
+    std::string label = t.label;
+    for (std::size_t k = 1; k < t.pieces.size(); ++k) label += "+" + t.pieces[k];
+    r.traces.emplace_back(label, t.points);
+  }
   joints_and_sets(store, r);
 
   const auto runs = store.list_analyses(visit_id);

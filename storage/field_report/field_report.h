@@ -123,13 +123,16 @@ struct FieldReport {
   double model_scale = 1;
   Eigen::Matrix3d model_rotation = Eigen::Matrix3d::Identity();
   Eigen::Vector3d model_translation = Eigen::Vector3d::Zero();
-  std::vector<std::pair<std::string, std::vector<Eigen::Vector3d>>> traces;  // label, points
+  // The traces, pieces stored from different pairs joined into one (label
+  // "T1+T4", points ordered along it): label, points.
+  std::vector<std::pair<std::string, std::vector<Eigen::Vector3d>>> traces;
 
   ReportedAccuracy accuracy;
   std::vector<ReportedJoint> joints;
   std::vector<ReportedJointSet> sets;
   // The poles on the stereonet: of the planes measured on the face when two
-  // or more were, else of the joints (in their order).
+  // or more were (a joined trace once, the mean of its pieces' planes), else
+  // of the joints (in their order).
   std::vector<Eigen::Vector3d> poles;
   std::vector<int> pole_sets;  // per pole: index into `sets`, or -1
 

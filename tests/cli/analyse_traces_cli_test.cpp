@@ -65,6 +65,31 @@ TEST(AnalyseTracesCli, KeyblockNamedByJointsWithIdsApartFromSceneBlocks) {
   EXPECT_EQ(tb1, 1);
   EXPECT_EQ(keyblocks, 1);
 
+  // The equilibrium path of a trace block takes each joint's own friction,
+  // as limit equilibrium does (J1 32, J2 30 degrees), not phi_b for all.
+  // The keyblock is a union of three convex pieces whose limit mode turns a
+  // little as it slides: its limit point lies 1.0-1.4 % above limit
+  // equilibrium at contact densities 6-2 (measured); 30 degrees on J1 too
+  // would put it 7.6 % below (tan 30 / tan 32). Bound: 3 %.
+  nlohmann::json path_scene = scene;
+  path_scene["analysis"]["stability"] = "equilibrium_path";
+  path_scene["analysis"]["preset"] = "fast";
+  const fs::path path_file = dir / "traces-path.scene.json";
+  std::ofstream(path_file) << path_scene.dump(2);
+  const auto path = run_rockface("analyse " + path_file.string());
+  ASSERT_EQ(path.exit_code, 0) << path.err;
+  const nlohmann::json path_report = nlohmann::json::parse(path.out);
+  int with_mechanics = 0;
+  for (const auto& b : path_report["blocks"]) {
+    if (b["source"] != "traces" || !b.contains("mechanics")) continue;
+    ++with_mechanics;
+    EXPECT_EQ(b["mechanics"]["joint_law"], "coulomb (scene friction/cohesion)");
+    EXPECT_EQ(b["mechanics"]["outcome"], "limit point");
+    const double le = b["fos"].get<double>();
+    EXPECT_NEAR(b["mechanics"]["fos_limit_point"].get<double>(), le, 0.03 * le);
+  }
+  EXPECT_EQ(with_mechanics, 1);
+
   // The table shows a non-convex code shortened, with the legend.
   const auto table = run_rockface("analyse " + file.string() + " --summary");
   ASSERT_EQ(table.exit_code, 0);

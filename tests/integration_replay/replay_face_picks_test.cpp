@@ -436,6 +436,79 @@ TEST_F(ReplayFacePicks, APickNamingAPairTheSceneDoesNotHaveIsBadInput) {
   EXPECT_FALSE(fs::exists(project));
 }
 
+// A pick outside its photograph (a tap, an end of a semi-automatic trace,
+// an area's corner, a point) is refused like a bad pair: exit 2 naming the
+// pick, before anything is captured; an existing project file is left as it
+// was, byte for byte, and none is created.
+TEST_F(ReplayFacePicks, APickOutsideItsPhotographIsRefusedBeforeAnythingIsCaptured) {
+  const nlohmann::json scene = three_pair_scene();
+  const int width = scene["imaging"]["camera"]["width"].get<int>();
+  const int height = scene["imaging"]["camera"]["height"].get<int>();
+  const fs::path file = dir_ / "bad-pick.scene.json";
+  const fs::path fresh = dir_ / "fresh.rockface", existing = dir_ / "existing.rockface";
+  {
+    rockface::storage::ProjectInfo info;
+    info.name = "existing";
+    rockface::storage::ProjectStore::create(existing, info).begin_visit("tablet");
+  }
+  const auto bytes = [](const fs::path& f) {
+    std::ifstream in(f, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string before = bytes(existing);
+  struct Bad {
+    nlohmann::json picks;
+    std::string where, what;
+  };
+  const std::vector<Bad> bad = {
+      {{{"traces",
+         {{{"id", "T1"},
+           {"joint", "J1"},
+           {"photo", "left"},
+           {"pixels", {{700, 500}, {width + 40, 540}}}}}}},
+       "picks.traces[0].pixels[1]",
+       "is outside the left photograph"},
+      {{{"traces",
+         {{{"id", "T1"},
+           {"photo", "right"},
+           {"ends", {{-3, 500}, {800, 900}}},
+           {"cost", "darkness"}}}}},
+       "picks.traces[0].ends[0]",
+       "is outside the right photograph"},
+      {{{"traces",
+         {{{"id", "T1"},
+           {"photo", "right"},
+           {"ends", {{30, 500}, {800, 900}}},
+           {"cost", "curvature"}}}}},
+       "picks.traces[0].cost",
+       "left photograph only"},
+      {{{"areas",
+         {{{"id", "A1"},
+           {"pair", 2},
+           {"photo", "left"},
+           {"polygon", {{100, 100}, {300, height + 1}, {200, 50}}}}}}},
+       "picks.areas[0].polygon[1]",
+       "is outside the pair 2 left photograph"},
+      {{{"points", {{{"id", "Q1"}, {"photo", "left"}, {"pixel", {10, -20}}}}}},
+       "picks.points[0].pixel[0]",
+       "is outside the left photograph"}};
+  for (const Bad& b : bad) {
+    nlohmann::json s = scene;
+    s["picks"] = b.picks;
+    std::ofstream(file) << s.dump(2);
+    for (const fs::path& project : {fresh, existing}) {
+      const CliRun r = run_rockface("replay " + file.string() + " --project " + project.string() +
+                                    " --preset fast");
+      EXPECT_EQ(r.exit_code, 2) << b.where << ": " << r.err;
+      EXPECT_NE(r.err.find(file.string() + ": " + b.where + ": "), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(b.what), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(fresh)) << b.where;
+    EXPECT_EQ(bytes(existing), before) << b.where;
+  }
+  EXPECT_FALSE(fs::exists(fs::path(fresh.string() + ".spool")));
+}
+
 TEST(PicksPair, TheParserNamesABadPair) {
   auto error_of = [](const nlohmann::json& trace) {
     const nlohmann::json doc = {{"format", "rockface-picks/1"}, {"traces", {trace}}};

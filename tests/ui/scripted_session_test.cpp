@@ -74,7 +74,7 @@ TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
 
   // Reopen: the Blocks table holds the stored analysis (a row can be tapped).
   ASSERT_EQ(
-      run_script(project, R"([{"tap": "Blocks"}, {"tap": "row TB3"}, {"screenshot": "reopened"}])",
+      run_script(project, R"([{"tap": "Blocks"}, {"tap": "row TB1"}, {"screenshot": "reopened"}])",
                  "second"),
       0)
       << slurp(ui_test_dir() / "second.txt");

@@ -21,7 +21,7 @@ TEST(UiWindow, ScriptInAWindowDrawsWhatHeadlessDraws) {
   fs::create_directories(dir);
   const fs::path script = dir / "steps.json";
   std::ofstream(script) << R"({"viewport": [800, 500], "steps": [
-      {"tap": "Blocks"}, {"tap": "row TB3"}, {"screenshot": "blocks"}]})";
+      {"tap": "Blocks"}, {"tap": "row TB1"}, {"screenshot": "blocks"}]})";
   const std::string common = "ui --project " + demo_project().string() +
                              " --scale 0.6 --max-triangles 20000 --script " + script.string();
   ASSERT_EQ(run_rockface_logged(common + " --headless --screenshots " + (dir / "headless").string(),
