@@ -3,6 +3,7 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/tunnel/tunnel_relative.h"
+#include "firmware-app/tunnel/visit_placement.h"
 #include "firmware-app/tunnel/visit_profile.h"
 #include "firmware-app/tunnel/visit_profile_json.h"
 #include "storage/field_report/tunnel_pictures.h"
@@ -23,7 +24,7 @@ void add_tunnel_to_report(storage::ProjectStore& store, storage::FieldReport& re
   t.perimeter_m = record->profile.perimeter();
   t.area_m2 = record->profile.area();
   t.underbreak_tolerance_m = record->underbreak_tolerance_m;
-  t.placement = store.load_visit_placement(report.visit_id);
+  t.placement = known_placement(store, *record, report.visit_id);
   if (t.placement) {
     const VisitProfile profile = visit_profile(store, report.visit_id, preset);
     t.profile_lines = visit_profile_summary(profile);

@@ -93,4 +93,14 @@ storage::VisitPlacement place_visit(const tunnel::Alignment& alignment,
   return out;
 }
 
+std::optional<storage::VisitPlacement> known_placement(storage::ProjectStore& store,
+                                                       const storage::TunnelRecord& tunnel,
+                                                       storage::RecordId visit_id) {
+  if (auto stored = store.load_visit_placement(visit_id)) return stored;
+  const auto models = store.list_visit_models(visit_id);
+  if (models.empty() || models.front().registration_kind != "ground_control") return std::nullopt;
+  return place_visit(tunnel.alignment(store.project().datum), tunnel.profile,
+                     visit_surface(store, visit_id), visit_id);
+}
+
 }  // namespace rockface::app

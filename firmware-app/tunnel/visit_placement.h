@@ -12,6 +12,7 @@
 
 #include "core/tunnel/alignment.h"
 #include "firmware-app/tunnel/visit_surface.h"
+#include "storage/project_store.h"
 #include "storage/tunnel_records.h"
 
 namespace rockface::app {
@@ -29,5 +30,13 @@ storage::VisitPlacement place_visit(const tunnel::Alignment& alignment,
                                     const tunnel::DesignProfile& profile,
                                     const VisitSurface& surface, storage::RecordId visit_id,
                                     const std::string& typed = {});
+
+// The visit's stored placement; else, when its 3D image was registered to
+// monitoring targets with survey coordinates (`rockface reconstruct --gcp`),
+// the placement read from that image (not stored: the store may be
+// read-only); else nothing.
+std::optional<storage::VisitPlacement> known_placement(storage::ProjectStore& store,
+                                                       const storage::TunnelRecord& tunnel,
+                                                       storage::RecordId visit_id);
 
 }  // namespace rockface::app

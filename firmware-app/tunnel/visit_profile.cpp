@@ -6,6 +6,7 @@
 
 #include "core/common/error.h"
 #include "firmware-app/tunnel/face_front.h"
+#include "firmware-app/tunnel/visit_placement.h"
 #include "firmware-app/tunnel/visit_surface.h"
 
 namespace rockface::app {
@@ -57,7 +58,7 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
     throw InputError(store.file().string(),
                      "the project has no tunnel: add its alignment and design profile first");
   out.tunnel = std::move(*tunnel);
-  auto placement = store.load_visit_placement(visit_id);
+  auto placement = known_placement(store, out.tunnel, visit_id);
   if (!placement)
     throw InputError("visit " + std::to_string(visit_id),
                      "is not placed in the tunnel: type the chainage of its range pole, or "

@@ -12,6 +12,7 @@
 
 #include "core/common/error.h"
 #include "firmware-app/tunnel/rendered_tunnel.h"
+#include "firmware-app/tunnel/visit_placement.h"
 #include "storage/project_store.h"
 
 namespace rockface::app {
@@ -22,7 +23,10 @@ using Eigen::Vector3d;
 
 class TypedPlacement : public ::testing::Test {
  protected:
-  void SetUp() override {
+  void SetUp() override { make("range_pole_compass"); }
+  // `kind` "ground_control": the 3D image registered to monitoring targets
+  // lies in the project frame already (not in the pole's frame).
+  void make(const std::string& kind) {
     dir_ = fs::temp_directory_path() / ("rockface-typed-" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
@@ -48,11 +52,18 @@ class TypedPlacement : public ::testing::Test {
     storage::Model model;
     for (const auto& patch : rendered_tunnel_patches(spec, alignment, tunnel.profile, "test")) {
       const int base = static_cast<int>(model.mesh.vertices.size());
-      for (const auto& v : patch.polygon) model.mesh.vertices.push_back(v - pole_);
+      for (const auto& v : patch.polygon)
+        model.mesh.vertices.push_back(kind == "ground_control" ? v : Vector3d(v - pole_));
       for (int k = 1; k + 1 < static_cast<int>(patch.polygon.size()); ++k)
         model.mesh.faces.push_back({base, base + k, base + k + 1});
     }
-    model.registration.kind = "range_pole_compass";
+    model.registration.kind = kind;
+    if (kind == "ground_control") {
+      model.registration.rms_m = 0.006;
+      model.residuals = {{"P1", {0.004, 0.002, -0.003}},
+                         {"P2", {-0.005, 0.001, 0.004}},
+                         {"P3", {0.001, -0.006, 0.002}}};
+    }
     model.registration.parameters_json = R"({"targets": [[0, 0, 0], [0, 0, 2]]})";
     model.preset = "fast";
     storage::Capture capture;
@@ -66,6 +77,10 @@ class TypedPlacement : public ::testing::Test {
   void TearDown() override {
     store_.reset();
     fs::remove_all(dir_);
+  }
+  void remake(const std::string& kind) {
+    TearDown();
+    make(kind);
   }
   fs::path dir_;
   std::optional<storage::ProjectStore> store_;
@@ -110,6 +125,25 @@ TEST_F(TypedPlacement, OffTheAlignmentOrAfterMappingIsRefusedByName) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("measurements"), std::string::npos) << e.what();
   }
+}
+
+TEST_F(TypedPlacement, AVisitRegisteredToMonitoringTargetsIsPlacedFromThem) {
+  remake("ground_control");
+  // Not stored: `rockface reconstruct --gcp` made the 3D image; the profile
+  // and the report read the placement from it.
+  EXPECT_FALSE(store_->load_visit_placement(visit_));
+  const auto tunnel = store_->load_tunnel();
+  ASSERT_TRUE(tunnel);
+  const auto p = known_placement(*store_, *tunnel, visit_);
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->method, storage::VisitPlacement::Method::ground_control);
+  EXPECT_EQ(p->residuals.size(), 3u);
+  ASSERT_TRUE(p->rms_m);
+  EXPECT_DOUBLE_EQ(*p->rms_m, 0.006);
+  EXPECT_NEAR(p->chainage, 14.0, 1e-6);  // the flat face at chainage 14
+  // The range pole's frame is never asked for: nothing is moved.
+  EXPECT_EQ(store_->list_models().size(), 1u);
+  EXPECT_FALSE(store_->load_visit_placement(visit_));
 }
 
 }  // namespace
