@@ -37,4 +37,9 @@ struct AnalysisInput {
 // The analysis input of a parsed scene (its imaging and picks left aside).
 AnalysisInput analysis_input(const storage::Scene& scene);
 
+// The invert of the scene's tunnel at its face as the floor a falling block
+// lands on (analysis.dynamics without a floor): the design profile's lowest
+// point, in the plane of the cross-section's right and the drive.
+storage::SceneFloor tunnel_invert_floor(const storage::Scene& scene);
+
 }  // namespace rockface::app
