@@ -1,26 +1,16 @@
 #include "firmware-app/tunnel/project_drive.h"
 
-#include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
+#include "storage/field_report/field_report.h"
 
 namespace rockface::app {
 
-namespace {
-
-std::string fixed(double v, int decimals) {
-  if (!std::isfinite(v)) return v > 0 ? "inf" : "";
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<tunnel::SetObservation> visit_set_observations(storage::ProjectStore& store,
                                                            storage::RecordId visit_id) {
@@ -65,15 +55,18 @@ std::string drive_csv(const tunnel::DriveSets& drive) {
       for (const auto& e : t.events)
         if (e.visit_id == p.visit_id && e.kind == tunnel::TrackEvent::Kind::appears)
           event = event.empty() ? "appears" : event + " appears";
-      out << t.id << "," << p.visit_id << "," << fixed(p.chainage, 3) << "," << p.name << ","
-          << fixed(p.dip_deg, 1) << "," << fixed(p.dipdir_deg, 1) << "," << fixed(p.fisher_k, 1)
-          << "," << p.count << "," << (p.alpha95_deg < 180 ? fixed(p.alpha95_deg, 1) : "") << ","
-          << fixed(p.angle_to_running_mean_deg, 1) << "," << fixed(p.turn_cone_deg, 1) << ","
-          << event << "\n";
+      out << t.id << "," << p.visit_id << "," << storage::report_number(p.chainage, 3) << ","
+          << p.name << "," << storage::report_number(p.dip_deg, 1) << ","
+          << storage::report_number(p.dipdir_deg, 1) << "," << storage::report_number(p.fisher_k, 1)
+          << "," << p.count << ","
+          << (p.alpha95_deg < 180 ? storage::report_number(p.alpha95_deg, 1) : "") << ","
+          << storage::report_number(p.angle_to_running_mean_deg, 1) << ","
+          << storage::report_number(p.turn_cone_deg, 1) << "," << event << "\n";
     }
     for (const auto& e : t.events)
       if (e.kind == tunnel::TrackEvent::Kind::vanishes)
-        out << t.id << "," << e.visit_id << "," << fixed(e.chainage, 3) << ",,,,,,,,,vanishes\n";
+        out << t.id << "," << e.visit_id << "," << storage::report_number(e.chainage, 3)
+            << ",,,,,,,,,vanishes\n";
   }
   return out.str();
 }
@@ -85,10 +78,12 @@ std::vector<std::string> drive_summary(const tunnel::DriveSets& drive) {
   for (const auto& t : drive.tracks) {
     const auto& a = t.points.front();
     const auto& b = t.points.back();
-    lines.push_back("set " + std::to_string(t.id) + ": " + std::to_string(t.points.size()) +
-                    " visits, chainage " + fixed(a.chainage, 2) + " to " + fixed(b.chainage, 2) +
-                    ", " + fixed(a.dip_deg, 0) + "/" + fixed(a.dipdir_deg, 0) + " to " +
-                    fixed(b.dip_deg, 0) + "/" + fixed(b.dipdir_deg, 0));
+    lines.push_back(
+        "set " + std::to_string(t.id) + ": " + std::to_string(t.points.size()) +
+        " visits, chainage " + storage::report_number(a.chainage, 2) + " to " +
+        storage::report_number(b.chainage, 2) + ", " + storage::report_number(a.dip_deg, 0) + "/" +
+        storage::report_number(a.dipdir_deg, 0) + " to " + storage::report_number(b.dip_deg, 0) +
+        "/" + storage::report_number(b.dipdir_deg, 0));
     for (const auto& e : t.events) lines.push_back("  " + e.message);
   }
   return lines;

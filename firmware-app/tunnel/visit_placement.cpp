@@ -12,9 +12,6 @@ namespace rockface::app {
 
 namespace {
 
-// Every k-th vertex: 20,000 places give the face's chainage to well under
-// the millimetres the percentile moves by.
-constexpr std::size_t kSamples = 20000;
 // The face is the surface within this band (m of chainage) of the farthest
 // 1 % of the vertices: a face leans and is rough by a few decimetres.
 constexpr double kFaceBandM = 0.3;
@@ -45,16 +42,11 @@ storage::VisitPlacement place_visit(const tunnel::Alignment& alignment,
                                     const std::string& typed) {
   const std::string where = "visit " + std::to_string(visit_id);
   const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
-  const std::size_t step = std::max<std::size_t>(1, surface.vertices.size() / kSamples);
-  std::vector<tunnel::AlignmentPlace> places;
-  for (std::size_t i = 0; i < surface.vertices.size(); i += step)
-    if (!surface.not_rock[i]) places.push_back(alignment.place(surface.vertices[i]));
-  if (places.empty()) throw InputError(where, "its 3D image has no rock to place");
-  std::vector<double> ahead;
-  for (const auto& p : places) ahead.push_back(sense * p.chainage);
-  std::sort(ahead.begin(), ahead.end());
-  double face_ahead = ahead[static_cast<std::size_t>(0.99 * (ahead.size() - 1))];
-  const double rear = sense * ahead[static_cast<std::size_t>(0.02 * (ahead.size() - 1))];
+  const std::vector<tunnel::AlignmentPlace> places = rock_places(alignment, surface);
+  const auto reach = surface_reach(alignment, places);
+  if (!reach) throw InputError(where, "its 3D image has no rock to place");
+  double face_ahead = sense * reach->front;
+  const double rear = reach->rear;
   if (const auto front = face_front(alignment, profile, surface, rear))
     face_ahead = sense * front->median_chainage;
   std::vector<double> offsets, heights;

@@ -15,20 +15,6 @@ namespace {
 
 constexpr double kFaceClearM = 0.15;
 
-// The rear of the 3D image: its 2nd percentile of chainage behind the face
-// (the walls the cameras saw), ignoring a few stray points.
-double surface_start(const tunnel::Alignment& alignment, const VisitSurface& surface) {
-  const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
-  std::vector<double> ahead;
-  const std::size_t step = std::max<std::size_t>(1, surface.vertices.size() / 20000);
-  for (std::size_t i = 0; i < surface.vertices.size(); i += step)
-    if (!surface.not_rock[i])
-      ahead.push_back(sense * alignment.place(surface.vertices[i]).chainage);
-  if (ahead.empty()) return 0;
-  std::sort(ahead.begin(), ahead.end());
-  return sense * ahead[static_cast<std::size_t>(0.02 * (ahead.size() - 1))];
-}
-
 }  // namespace
 
 tunnel::DeviationOptions deviation_options(Preset preset) {
@@ -74,7 +60,8 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
   // farthest back (face_front.h): a cross-section through the face cuts the
   // face (its bulge, its roughness, the reconstruction's smear into the
   // corner), which would read as metres of underbreak.
-  const double start = surface_start(alignment, surface);
+  const auto reach = surface_reach(alignment, rock_places(alignment, surface));
+  const double start = reach ? reach->rear : 0;
   const auto front = face_front(alignment, out.tunnel.profile, surface, start);
   out.round_to = (front ? front->nearest_chainage : out.placement.chainage) - sense * kFaceClearM;
   std::optional<double> previous;

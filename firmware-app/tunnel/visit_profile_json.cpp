@@ -1,7 +1,7 @@
 #include "firmware-app/tunnel/visit_profile_json.h"
+#include "storage/field_report/field_report.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
@@ -15,12 +15,6 @@ using nlohmann::json;
 // resolves; more digits would claim what the mesh does not give.
 double round_to(double v, double step) {
   return std::round(v / step) * step;
-}
-
-std::string fixed(double v, int decimals) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
 }
 
 json position(const tunnel::ProfilePosition& p) {
@@ -95,26 +89,29 @@ std::vector<std::string> visit_profile_summary(const VisitProfile& v) {
   const auto& d = v.deviation;
   std::vector<std::string> lines;
   lines.push_back("tunnel " + v.tunnel.name + ", visit " + std::to_string(v.placement.visit_id) +
-                  ": face at chainage " + fixed(v.placement.chainage, 2) + ", offset " +
-                  fixed(v.placement.offset_m, 2) + " m (" + v.placement.note + ")");
-  lines.push_back("round from chainage " + fixed(v.round_from, 2) + " (" + v.round_from_source +
-                  ") to " + fixed(v.round_to, 2));
+                  ": face at chainage " + storage::report_number(v.placement.chainage, 2) +
+                  ", offset " + storage::report_number(v.placement.offset_m, 2) + " m (" +
+                  v.placement.note + ")");
+  lines.push_back("round from chainage " + storage::report_number(v.round_from, 2) + " (" +
+                  v.round_from_source + ") to " + storage::report_number(v.round_to, 2));
   if (d.status == tunnel::DeviationStatus::no_walls_in_view ||
       d.status == tunnel::DeviationStatus::outside_alignment) {
     lines.push_back(d.message);
     return lines;
   }
-  lines.push_back("overbreak " + fixed(d.overbreak_volume_m3, 2) + " m3, underbreak " +
-                  fixed(d.underbreak_volume_m3, 2) + " m3 over the round; " +
-                  fixed(d.seen_fraction * 100, 0) + " % of the outline seen");
+  lines.push_back("overbreak " + storage::report_number(d.overbreak_volume_m3, 2) +
+                  " m3, underbreak " + storage::report_number(d.underbreak_volume_m3, 2) +
+                  " m3 over the round; " + storage::report_number(d.seen_fraction * 100, 0) +
+                  " % of the outline seen");
   if (d.has_underbreak)
-    lines.push_back("deepest underbreak " + fixed(d.max_underbreak_m * 100, 1) +
-                    " cm at chainage " + fixed(d.max_underbreak.chainage, 2) + ", " +
-                    fixed(d.max_underbreak.s, 2) + " m along the design line");
+    lines.push_back("deepest underbreak " + storage::report_number(d.max_underbreak_m * 100, 1) +
+                    " cm at chainage " + storage::report_number(d.max_underbreak.chainage, 2) +
+                    ", " + storage::report_number(d.max_underbreak.s, 2) +
+                    " m along the design line");
   lines.push_back(std::to_string(d.beyond_tolerance.size()) +
                   (d.beyond_tolerance.size() == 1 ? " patch" : " patches") +
                   " of underbreak beyond the tolerance of " +
-                  fixed(v.tunnel.underbreak_tolerance_m * 100, 0) + " cm");
+                  storage::report_number(v.tunnel.underbreak_tolerance_m * 100, 0) + " cm");
   if (!d.message.empty()) lines.push_back(d.message);
   return lines;
 }

@@ -7,10 +7,12 @@
 // so the pole is never counted as underbreak.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "core/tunnel/alignment.h"
 #include "storage/project_store.h"
 
 namespace rockface::app {
@@ -38,5 +40,20 @@ struct PoleMask {
 // Throws InputError naming the visit when it has no 3D image.
 VisitSurface visit_surface(storage::ProjectStore& store, storage::RecordId visit_id,
                            const PoleMask& mask = {});
+
+// The surface's rock placed along the tunnel: every k-th vertex that is rock
+// (20,000 places give the percentiles below to well under a millimetre).
+std::vector<tunnel::AlignmentPlace> rock_places(const tunnel::Alignment& alignment,
+                                                const VisitSurface& surface);
+
+// How far the rock reaches along the drive: the 2nd percentile of chainage
+// in the drive direction (the rear of the walls the cameras saw) and the
+// 99th (the face), so that a few stray points count for nothing. Nothing
+// when there is no rock.
+struct SurfaceReach {
+  double rear = 0, front = 0;  // chainages
+};
+std::optional<SurfaceReach> surface_reach(const tunnel::Alignment& alignment,
+                                          const std::vector<tunnel::AlignmentPlace>& places);
 
 }  // namespace rockface::app

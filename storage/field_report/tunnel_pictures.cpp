@@ -1,8 +1,8 @@
 #include "storage/field_report/tunnel_pictures.h"
+#include "storage/field_report/field_report.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -18,12 +18,6 @@ const cv::Scalar kPaper{255, 255, 255};
 const cv::Scalar kNotSeen{205, 205, 205};
 const cv::Scalar kNotRock{95, 95, 95};
 constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
-
-std::string fixed(double v, int decimals) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
-}
 
 void text(cv::Mat& img, const std::string& s, cv::Point at, double scale = 0.5,
           const cv::Scalar& colour = kInk, int thickness = 1) {
@@ -148,7 +142,7 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
     const std::size_t i = ticks == 1 ? 0 : k * (rows - 1) / (ticks - 1);
     const int y = top + h - static_cast<int>(std::lround((i + 0.5) * h / rows));
     cv::line(img, {left - 5, y}, {left, y}, kInk, 1);
-    text(img, fixed(view.chainage[i], 2), {6, y + 5}, 0.42);
+    text(img, report_number(view.chainage[i], 2), {6, y + 5}, 0.42);
   }
   text(img, "chainage (m), face at the top", {6, top - 8}, 0.42);
 
@@ -167,20 +161,21 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
       static_cast<int>(std::lround((0.5 - dev.underbreak_tolerance_m / extent / 2) * bar_w));
   cv::line(img, {tol_x, bar_y - 4}, {tol_x, bar_y + 18}, cv::Scalar(0, 0, 0), 2);
   const std::string legend = "black outline: underbreak beyond " +
-                             fixed(dev.underbreak_tolerance_m * 100, 0) +
+                             report_number(dev.underbreak_tolerance_m * 100, 0) +
                              " cm;  hatched: not seen;  dark: range pole";
   text(img, legend, {bar_x, bar_y + 54}, 0.4);
 
-  const std::string title =
-      "Round ch " + fixed(view.chainage.front(), 2) + " to " + fixed(view.chainage.back(), 2) +
-      ": overbreak " + fixed(dev.overbreak_volume_m3, 2) + " m3, underbreak " +
-      fixed(dev.underbreak_volume_m3, 2) + " m3, seen " + fixed(dev.seen_fraction * 100, 0) + " %";
+  const std::string title = "Round ch " + report_number(view.chainage.front(), 2) + " to " +
+                            report_number(view.chainage.back(), 2) + ": overbreak " +
+                            report_number(dev.overbreak_volume_m3, 2) + " m3, underbreak " +
+                            report_number(dev.underbreak_volume_m3, 2) + " m3, seen " +
+                            report_number(dev.seen_fraction * 100, 0) + " %";
   text(img, title, {6, 20}, 0.5);
   if (dev.has_underbreak)
     text(img,
-         "deepest underbreak " + fixed(dev.max_underbreak_m * 100, 1) + " cm at ch " +
-             fixed(dev.max_underbreak.chainage, 2) + ", " + fixed(dev.max_underbreak.s, 2) +
-             " m along the line (x)",
+         "deepest underbreak " + report_number(dev.max_underbreak_m * 100, 1) + " cm at ch " +
+             report_number(dev.max_underbreak.chainage, 2) + ", " +
+             report_number(dev.max_underbreak.s, 2) + " m along the line (x)",
          {6, 42}, 0.42);
   return img;
 }
@@ -230,7 +225,7 @@ cv::Mat drive_picture(const tunnel::DriveSets& drive, int width_px, int height_p
     for (double v = p.lo; v <= p.hi + 1e-9; v += step) {
       const int y = p.y0 + ph - static_cast<int>(std::lround((v - p.lo) / (p.hi - p.lo) * ph));
       cv::line(img, {left, y}, {left + w, y}, cv::Scalar(225, 225, 225), 1);
-      text(img, fixed(v, 0), {left - 40, y + 5}, 0.4);
+      text(img, report_number(v, 0), {left - 40, y + 5}, 0.4);
     }
     text(img, p.label, {left, p.y0 - 6}, 0.45);
   }
@@ -240,7 +235,7 @@ cv::Mat drive_picture(const tunnel::DriveSets& drive, int width_px, int height_p
   for (double c = std::ceil(c0 / tick) * tick; c <= c1; c += tick) {
     const int x = x_of(c);
     for (const auto& p : panels) cv::line(img, {x, p.y0 + ph}, {x, p.y0 + ph + 4}, kInk, 1);
-    text(img, fixed(c, tick < 1 ? 1 : 0), {x - 12, panels[1].y0 + ph + 20}, 0.4);
+    text(img, report_number(c, tick < 1 ? 1 : 0), {x - 12, panels[1].y0 + ph + 20}, 0.4);
   }
   text(img, "chainage (m)", {left + w - 100, panels[1].y0 + ph + 40}, 0.42);
 
@@ -279,8 +274,8 @@ cv::Mat drive_picture(const tunnel::DriveSets& drive, int width_px, int height_p
       cv::line(img, {x, panels[1].y0}, {x, panels[1].y0 + ph}, colour, 1, cv::LINE_4);
     }
     const auto& m = track.points.back();
-    std::string entry = "set " + std::to_string(track.id) + ": " + fixed(m.dip_deg, 0) + "/" +
-                        fixed(m.dipdir_deg, 0);
+    std::string entry = "set " + std::to_string(track.id) + ": " + report_number(m.dip_deg, 0) +
+                        "/" + report_number(m.dipdir_deg, 0);
     cv::rectangle(img, {left + w + 14, legend_y - 10}, {left + w + 26, legend_y + 2}, colour,
                   cv::FILLED);
     text(img, entry, {left + w + 32, legend_y}, 0.42);

@@ -28,6 +28,27 @@ Eigen::Matrix<double, 6, 6> inverse_mass(double m, const Eigen::Matrix3d& inerti
   return out;
 }
 
+// The smallest mass-weighted correction (translation, rotation) that
+// brings each row's value to zero (rows held both ways) or to >= 0
+// (unilateral rows): one complementarity problem, for the positions' gaps
+// and for the velocities' normal speeds alike.
+Eigen::Matrix<double, 6, 1> mass_weighted_correction(const std::vector<Row>& rows,
+                                                     const std::vector<double>& values,
+                                                     const std::vector<bool>& unilateral,
+                                                     const Eigen::Matrix<double, 6, 6>& minv,
+                                                     double force_tol, double value_tol) {
+  const int n = static_cast<int>(rows.size());
+  Eigen::MatrixXd j(n, 6);
+  Eigen::VectorXd b(n);
+  for (int i = 0; i < n; ++i) {
+    j.row(i) = rows[i];
+    b(i) = values[i];
+  }
+  const MixedLcpResult r = solve_mixed_lcp(j * minv * j.transpose(), b, unilateral, force_tol,
+                                           value_tol, kLcpIterations);
+  return minv * j.transpose() * r.z;
+}
+
 }  // namespace
 
 BlockMotion::BlockMotion(const blocks::Polyhedron& block, const blocks::MassProperties& mass,
@@ -263,17 +284,9 @@ BlockMotion::Projection BlockMotion::project(BlockPose& pose, BlockVelocity& vel
     if (pass == 0) out.drift_before = drift;
     out.drift_after = drift;
     if (drift <= 0.01 * bound || rows.empty()) break;
-    const int n = static_cast<int>(rows.size());
-    Eigen::MatrixXd j(n, 6);
-    Eigen::VectorXd g(n);
-    for (int i = 0; i < n; ++i) {
-      j.row(i) = rows[i];
-      g(i) = gaps[i];
-    }
-    const Eigen::Matrix<double, 6, 6> minv = inverse_mass(mass_, inertia(pose));
-    const MixedLcpResult r = solve_mixed_lcp(j * minv * j.transpose(), g, unilateral,
-                                             1e-14 * mass_ * length, 1e-3 * bound, kLcpIterations);
-    const Eigen::Matrix<double, 6, 1> delta = minv * j.transpose() * r.z;
+    const Eigen::Matrix<double, 6, 1> delta =
+        mass_weighted_correction(rows, gaps, unilateral, inverse_mass(mass_, inertia(pose)),
+                                 1e-14 * mass_ * length, 1e-3 * bound);
     pose.u += delta.head<3>();
     pose.q = (rotation_quaternion(delta.tail<3>()) * pose.q).normalized();
   }
@@ -295,17 +308,9 @@ BlockMotion::Projection BlockMotion::project(BlockPose& pose, BlockVelocity& vel
       unilateral.push_back(!hold);
     }
     if (!rows.empty()) {
-      const int n = static_cast<int>(rows.size());
-      Eigen::MatrixXd j(n, 6);
-      Eigen::VectorXd s(n);
-      for (int i = 0; i < n; ++i) {
-        j.row(i) = rows[i];
-        s(i) = speeds[i];
-      }
-      const Eigen::Matrix<double, 6, 6> minv = inverse_mass(mass_, inertia(pose));
-      const MixedLcpResult r = solve_mixed_lcp(j * minv * j.transpose(), s, unilateral,
-                                               1e-14 * mass_ * rest, 1e-3 * rest, kLcpIterations);
-      const Eigen::Matrix<double, 6, 1> dv = minv * j.transpose() * r.z;
+      const Eigen::Matrix<double, 6, 1> dv =
+          mass_weighted_correction(rows, speeds, unilateral, inverse_mass(mass_, inertia(pose)),
+                                   1e-14 * mass_ * rest, 1e-3 * rest);
       vel.v += dv.head<3>();
       vel.w += dv.tail<3>();
     }
