@@ -13,6 +13,7 @@
 
 #include "ui/background_task.h"
 #include "ui/field_services.h"
+#include "ui/map_blocks.h"
 #include "ui/model_view.h"
 #include "ui/motion_playback.h"
 #include "ui/project_session.h"
@@ -51,6 +52,7 @@ struct CaptureState {
 struct MappingState {
   TraceMarker marker;       // the trace being marked
   std::string joint_label;  // joint (set) the next trace is assigned to; empty: none
+  MapBlocksState blocks;    // the blocks the saved traces cut out, updated after each edit
 };
 
 struct AppState {

@@ -9,15 +9,18 @@
 // returns the id of the record.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
 #include <opencv2/core.hpp>
 
 #include "camera/camera.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
 #include "storage/project_records.h"
+#include "ui/block_verdict.h"
 
 namespace rockface::ui {
 
@@ -74,11 +77,47 @@ class TunnelRunner {
                                          double height, Progress& progress) = 0;
 };
 
+// The blocks of a visit's trace map while the geologist maps it (issue 28):
+// after each saved trace the Mapping screen shows which loops of traces are
+// blocks and what they do, before the full analysis of the Blocks screen.
+// Only the block-theory verdicts and the limit-equilibrium mode and factor of
+// safety: the costly parts (rotation, remote axis, mechanics) stay with the
+// full analysis.
+struct MapBlock {
+  std::vector<Eigen::Vector3d> outline;  // the loop on the surface, absolute, m
+  BlockVerdict verdict = BlockVerdict::infinite;
+  std::string mode;  // "falling" | "lifting" | "sliding" | "none" | ""
+  std::optional<double> factor_of_safety;
+  double margin_deg = 0;  // of the deciding verdict (finiteness, else removability)
+  double volume_m3 = 0;   // finite blocks
+};
+
+struct MapVerdicts {
+  std::vector<MapBlock> blocks;
+  int traces = 0;                  // traces on the map (joined pieces count once)
+  int recomputed = 0;              // regions computed by this update
+  int reused = 0;                  // regions whose block the last update had
+  double milliseconds = 0;         // from the traces to the verdicts, wall
+  std::vector<std::string> notes;  // what the map left out, in words
+};
+
+class TraceMapRunner {
+ public:
+  virtual ~TraceMapRunner() = default;
+  // The verdicts of the visit's stored traces as they are now. The runner
+  // keeps the map of the last call (one visit at a time) and recomputes only
+  // the regions an edit touched. Throws rockface::Error / InputError saying
+  // why (no surface patches, a bad trace).
+  virtual MapVerdicts update(const std::filesystem::path& project, storage::RecordId visit_id,
+                             Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
   CameraConnector* camera = nullptr;               // null: no camera
   TunnelRunner* tunnel = nullptr;                  // null: the Project screen shows no tunnel views
+  TraceMapRunner* trace_map = nullptr;             // null: the Mapping screen shows no blocks
 };
 
 }  // namespace rockface::ui

@@ -3,6 +3,7 @@
 // UI layer must not include: reconstruction with registration, the scene
 // analysis, and the cameras (the DSLR, or the mock camera of a scene or a
 // capture folder).
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -30,6 +31,20 @@ class StoreTunnelRunner final : public ui::TunnelRunner {
   std::vector<std::string> place(const std::filesystem::path& project, storage::RecordId visit_id,
                                  double chainage, double offset, double height,
                                  Progress& progress) override;
+};
+
+// The Mapping screen's blocks: keeps the last visit's trace map between
+// calls (one visit at a time; the worker calls it, one task at a time).
+class StoreTraceMapRunner final : public ui::TraceMapRunner {
+ public:
+  StoreTraceMapRunner();
+  ~StoreTraceMapRunner() override;
+  ui::MapVerdicts update(const std::filesystem::path& project, storage::RecordId visit_id,
+                         Progress& progress) override;
+
+ private:
+  struct Cache;
+  std::unique_ptr<Cache> cache_;
 };
 
 // source: a scene with an imaging section, a folder of captures, or empty

@@ -5,6 +5,7 @@
 // Saving a trace stores it at once (on the worker).
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
@@ -94,17 +95,34 @@ void save_trace(AppState& app) {
     m.fit_rms_m = marker.plane()->fit.rms_off_plane();
   }
   const auto file = app.session->file();
+  const FieldServices services = app.services;
+  // The blocks are updated in the same task, right after the trace is
+  // stored: the geologist sees what the trace closed before the next tap.
+  auto blocks = std::make_shared<std::shared_ptr<const MapVerdicts>>();
+  auto problem = std::make_shared<std::string>();
   app.task.start(
       "Saving trace",
-      [file, m](Progress&) {
+      [file, m, services, blocks, problem](Progress& progress) {
         storage::ProjectStore store = storage::ProjectStore::open(file);
         store.save_measurements(m.visit_id, {m});
-        return "trace " + m.label + " saved";
+        std::string done = "trace " + m.label + " saved";
+        try {
+          *blocks = update_map_blocks(services, file, m.visit_id, progress);
+        } catch (const std::exception& e) {
+          *problem = e.what();  // the trace is stored; the map says why it has no blocks
+        }
+        if (*blocks) done += "; " + map_blocks_summary(**blocks);
+        return done;
       },
-      [&app](const TaskOutcome& outcome) {
+      [&app, visit = m.visit_id, blocks, problem](const TaskOutcome& outcome) {
         if (outcome.kind != TaskOutcome::Kind::done) return;
         app.mapping.marker.clear();
         if (app.session) app.session->refresh();
+        MapBlocksState& state = app.mapping.blocks;
+        if (state.visit != visit) return;
+        state.verdicts = *blocks;
+        state.problem = *problem;
+        state.stale = !*blocks && problem->empty();
       });
 }
 
@@ -186,13 +204,16 @@ void draw_mapping_screen(AppState& app) {
     const ScreenRay r = app.model_view.ray_at(*interaction.tap);
     app.mapping.marker.tap({r.origin, r.direction}, trace_context(app));
   }
+  refresh_map_blocks(app);
   ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
+  draw_map_blocks_on_model(app);
   draw_traces(app);
   ImGui::PopClipRect();
   ImGui::EndGroup();
   ImGui::SameLine();
   ImGui::BeginChild("mapping side", ImVec2(0, 0));
   draw_controls(app);
+  draw_map_blocks_panel(app);
   std::vector<StereonetPlane> planes;
   for (const auto& j : app.session->joints())
     planes.push_back({j.dip_deg, j.dipdir_deg, kJointColour, true});

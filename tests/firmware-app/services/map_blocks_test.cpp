@@ -1,0 +1,195 @@
+// The Mapping screen's blocks (issue 28): after each saved trace the
+// tablet updates the blocks of the trace map with faces::TraceSession
+// (StoreTraceMapRunner), recomputing only the regions the edit touched. The
+// verdicts it shows must be the full analysis's (StoreAnalysisRunner, the
+// same workflow as `rockface analyse`) for the same stored traces.
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/common/error.h"
+#include "core/common/progress.h"
+#include "firmware-app/services/ui_services.h"
+#include "storage/project_store.h"
+#include "tests/support/dense_face.h"
+#include "tests/ui/demo_project.h"
+#include "ui/headless_session.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rockface;
+
+fs::path test_dir() {
+  static const fs::path dir = [] {
+    const fs::path d =
+        fs::temp_directory_path() / ("rockface-map-blocks-" + std::to_string(::getpid()));
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+storage::Measurement trace_measurement(const test::DenseFaceTrace& t) {
+  storage::Measurement m;
+  m.kind = storage::Measurement::Kind::trace;
+  m.label = t.id;
+  m.joint_label = t.joint;
+  m.points = {t.from, t.point, t.to};
+  m.dip_deg = t.dip;
+  m.dipdir_deg = t.dipdir;
+  return m;
+}
+
+storage::Joint joint_of(const test::DenseFaceTrace& t) {
+  storage::Joint j;
+  j.label = t.joint;
+  j.dip_deg = t.dip;
+  j.dipdir_deg = t.dipdir;
+  j.point = t.point;
+  j.friction_deg = t.friction;
+  j.cohesion_pa = 0;
+  j.source = "trace " + t.id;
+  j.type = "trace";
+  return j;
+}
+
+// A face of `first` traces; the rest of `face` is added one by one later.
+storage::RecordId make_project(const fs::path& file, const test::DenseFace& face, size_t first) {
+  storage::ProjectInfo info;
+  info.name = "face mapped trace by trace";
+  info.datum = {2690000.0, 1170000.0, 1100.0};
+  storage::ProjectStore store = storage::ProjectStore::create(file, info);
+  const storage::RecordId visit = store.begin_visit("tablet");
+  std::vector<storage::Measurement> measurements;
+  storage::Measurement area;
+  area.kind = storage::Measurement::Kind::area;
+  area.label = "FACE";
+  area.points = face.polygon();
+  area.dip_deg = 90;
+  area.dipdir_deg = 180;
+  area.rock_side = "lower";
+  measurements.push_back(area);
+  std::vector<storage::Joint> joints;
+  for (const auto& t : face.traces) joints.push_back(joint_of(t));
+  for (size_t k = 0; k < first; ++k) measurements.push_back(trace_measurement(face.traces[k]));
+  store.save_measurements(visit, measurements);
+  store.save_joints(visit, {}, joints);
+  return visit;
+}
+
+// The map's verdicts against the stored full analysis of the same traces:
+// the same blocks in the same order, the same verdicts, modes and factors of
+// safety (the same computation of each region's block, so to the bit; the
+// margin to a rounding of the report).
+void expect_same_as_full_analysis(const fs::path& file, storage::RecordId visit,
+                                  const ui::MapVerdicts& map) {
+  NoProgress progress;
+  app::StoreAnalysisRunner full;
+  const storage::RecordId id = full.analyse(file, visit, progress);
+  storage::ProjectStore store = storage::ProjectStore::open(file);
+  const storage::AnalysisRun run = store.load_analysis(id);
+  std::vector<storage::BlockResult> blocks;
+  for (const auto& b : run.blocks)
+    if (b.source == "traces") blocks.push_back(b);
+  ASSERT_EQ(map.blocks.size(), blocks.size());
+  for (size_t k = 0; k < blocks.size(); ++k) {
+    SCOPED_TRACE("block " + blocks[k].label);
+    EXPECT_EQ(map.blocks[k].verdict, ui::verdict_of(blocks[k]));
+    if (!blocks[k].finite) continue;
+    EXPECT_EQ(map.blocks[k].mode, blocks[k].mode);
+    ASSERT_EQ(map.blocks[k].factor_of_safety.has_value(), blocks[k].fos.has_value());
+    if (blocks[k].fos && std::isfinite(*blocks[k].fos)) {
+      EXPECT_DOUBLE_EQ(*map.blocks[k].factor_of_safety, *blocks[k].fos);
+    }
+    EXPECT_NEAR(map.blocks[k].volume_m3, blocks[k].volume_m3, 1e-9 * blocks[k].volume_m3);
+  }
+}
+
+TEST(MapBlocks, EachSavedTraceUpdatesOnlyTheTouchedRegionsToTheFullAnalysisVerdicts) {
+  const fs::path file = test_dir() / "traced.rockface";
+  const test::DenseFace face = test::dense_face(60);
+  const storage::RecordId visit = make_project(file, face, 57);
+  NoProgress progress;
+  app::StoreTraceMapRunner runner;
+  const ui::MapVerdicts first = runner.update(file, visit, progress);
+  EXPECT_EQ(first.traces, 57);
+  EXPECT_EQ(first.reused, 0) << "a new map computes every region";
+  ASSERT_GT(first.blocks.size(), 10u);
+  int finite = 0;
+  for (const auto& b : first.blocks) finite += b.verdict != ui::BlockVerdict::infinite;
+  EXPECT_GT(finite, 0);
+  expect_same_as_full_analysis(file, visit, first);
+  for (size_t k = 57; k < face.traces.size(); ++k) {
+    SCOPED_TRACE("after trace " + face.traces[k].id);
+    {
+      storage::ProjectStore store = storage::ProjectStore::open(file);
+      store.save_measurements(visit, {trace_measurement(face.traces[k])});
+    }
+    const ui::MapVerdicts after = runner.update(file, visit, progress);
+    EXPECT_EQ(after.traces, static_cast<int>(k) + 1);
+    // One trace of a few metres on a 20 x 10 m face crosses a handful of
+    // regions: most blocks are kept.
+    EXPECT_GT(after.reused, after.recomputed);
+    expect_same_as_full_analysis(file, visit, after);
+  }
+}
+
+TEST(MapBlocks, AVisitWithoutSurfaceSaysWhatIsMissing) {
+  const fs::path file = test_dir() / "no-surface.rockface";
+  storage::RecordId visit = 0;
+  {
+    storage::ProjectStore store = storage::ProjectStore::create(file, {});
+    visit = store.begin_visit("tablet");
+    storage::Measurement m = trace_measurement(test::dense_face(3).traces[0]);
+    m.joint_label.clear();
+    store.save_measurements(visit, {m});
+  }
+  NoProgress progress;
+  app::StoreTraceMapRunner runner;
+  try {
+    runner.update(file, visit, progress);
+    FAIL() << "a map without a surface has no blocks";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("surface.patches"), std::string::npos) << e.what();
+  }
+}
+
+// The screen: opening Mapping shows the demo visit's blocks; a trace tapped
+// and saved updates them in the same task.
+TEST(MapBlocks, TheMappingScreenShowsTheBlocksAndUpdatesThemAfterASavedTrace) {
+  const fs::path file = test_dir() / "demo.rockface";
+  fs::copy_file(test::demo_project(), file, fs::copy_options::overwrite_existing);
+  app::StoreTraceMapRunner runner;
+  ui::FieldServices services;
+  services.trace_map = &runner;
+  ui::UiOptions options;
+  options.project = file;
+  options.scale = 0.6f;
+  options.max_display_triangles = 20000;
+  ui::HeadlessSession s(options, services, 800, 500);
+  s.settle();
+  s.tap("Mapping");
+  s.settle();
+  const ui::MapBlocksState& blocks = s.state().mapping.blocks;
+  ASSERT_TRUE(blocks.verdicts) << blocks.problem;
+  const int before = blocks.verdicts->traces;
+  EXPECT_GT(before, 0);
+  const ui::ModelView& view = s.state().model_view;
+  const auto centre = view.to_screen(view.display_mesh().centre);
+  ASSERT_TRUE(centre);
+  for (int i = 0; i < 4; ++i) s.tap(centre->x - 60 + 40 * i, centre->y - 30 + 20 * i);
+  ASSERT_EQ(s.state().mapping.marker.taps().size(), 4u) << s.state().mapping.marker.problem();
+  s.tap("Save trace");
+  s.settle();
+  ASSERT_TRUE(blocks.verdicts) << blocks.problem;
+  EXPECT_EQ(blocks.verdicts->traces, before + 1);
+  EXPECT_NE(s.state().status.find("updated in"), std::string::npos) << s.state().status;
+  const storage::RecordId visit = *s.state().session->visit();
+  expect_same_as_full_analysis(file, visit, *blocks.verdicts);
+}
+
+}  // namespace

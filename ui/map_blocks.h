@@ -1,0 +1,47 @@
+#pragma once
+// The blocks of the trace map on the Mapping screen (issue 28): after every
+// saved trace the worker updates them (FieldServices::trace_map, which
+// recomputes only the regions the edit touched); the screen draws each
+// finite block's loop on the model in its verdict's colour and lists them
+// beside it. Loops that are not finite are counted, not drawn: they have no
+// footprint on the mapped face to show.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/common/progress.h"
+#include "ui/field_services.h"
+
+namespace rockface::ui {
+
+struct AppState;
+
+struct MapBlocksState {
+  std::shared_ptr<const MapVerdicts> verdicts;  // of `visit`'s traces as last saved
+  storage::RecordId visit = 0;
+  std::string problem;  // why there are none (no surface, a bad trace); stays until the next edit
+  bool stale = true;    // the traces changed since `verdicts`
+};
+
+// Runs on the worker after a trace was saved (or when the screen opens):
+// the verdicts of the visit's stored traces. Null when the services have
+// no trace map runner.
+std::shared_ptr<const MapVerdicts> update_map_blocks(const FieldServices& services,
+                                                     const std::filesystem::path& project,
+                                                     storage::RecordId visit, Progress& progress);
+
+// One line for the status bar: "3 blocks (1 moves, 2 hold), updated in 42 ms".
+std::string map_blocks_summary(const MapVerdicts& verdicts);
+
+// Starts the update on the worker when the verdicts are stale and the worker
+// is free (the Mapping screen calls it every frame).
+void refresh_map_blocks(AppState& app);
+
+// The finite blocks' loops on the model view (inside its clip rectangle).
+void draw_map_blocks_on_model(AppState& app);
+
+// The side panel's list: counts by verdict, each finite block with its mode,
+// factor of safety and margin, and what the map left out.
+void draw_map_blocks_panel(AppState& app);
+
+}  // namespace rockface::ui
