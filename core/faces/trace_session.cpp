@@ -89,18 +89,25 @@ const std::vector<TraceBlock>& TraceSession::update(const std::vector<TraceInput
   std::unordered_map<std::string, int> group_index;
   for (size_t g = 0; g < network_.groups().size(); ++g)
     group_index[network_.groups()[g].name] = static_cast<int>(g);
-  std::map<std::string, std::optional<TraceBlock>> cache;
+  std::vector<TraceBlock> old = std::move(blocks_);
+  std::vector<bool> taken(old.size(), false);
   blocks_.clear();
   recomputed_ = reused_ = 0;
   const size_t n = loops_.regions().size();
+  std::vector<std::string> keys(n);
+  std::unordered_map<std::string, int> cache;
+  cache.reserve(n);
   for (size_t r = 0; r < n; ++r) {
-    std::string key = trace_region_key(network_, loops_, static_cast<int>(r));
+    keys[r] = trace_region_key(network_, loops_, static_cast<int>(r));
     std::optional<TraceBlock> block;
-    const auto hit = cache_.find(key);
-    if (hit != cache_.end()) {
+    const auto hit = cache_.find(keys[r]);
+    // A block is moved out once; a second region with the same key (the
+    // same inputs, so the same block) computes its own.
+    if (hit != cache_.end() && (hit->second < 0 || !taken[hit->second])) {
       ++reused_;
-      block = hit->second;
-      if (block) {
+      if (hit->second >= 0) {
+        taken[hit->second] = true;
+        block = std::move(old[hit->second]);
         // The same block in the new map's numbering.
         block->region = static_cast<int>(r);
         block->traces = loops_.regions()[r].traces;
@@ -112,11 +119,15 @@ const std::vector<TraceBlock>& TraceSession::update(const std::vector<TraceInput
       ++recomputed_;
       block = trace_block(surface_, network_, loops_, static_cast<int>(r), options_);
     }
-    if (block) blocks_.push_back(*block);
-    cache.emplace(std::move(key), std::move(block));
+    if (block)
+      blocks_.push_back(std::move(*block));
+    else
+      cache.emplace(keys[r], -1);
   }
-  cache_ = std::move(cache);
   order_trace_blocks(blocks_);
+  for (size_t i = 0; i < blocks_.size(); ++i)
+    cache.emplace(std::move(keys[blocks_[i].region]), static_cast<int>(i));
+  cache_ = std::move(cache);
   return blocks_;
 }
 
