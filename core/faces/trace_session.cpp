@@ -94,6 +94,7 @@ const std::vector<TraceBlock>& TraceSession::update(const std::vector<TraceInput
   blocks_.clear();
   recomputed_ = reused_ = 0;
   const size_t n = loops_.regions().size();
+  blocks_.reserve(n);  // no reallocation, which copies blocks (their move is not noexcept)
   std::vector<std::string> keys(n);
   std::unordered_map<std::string, int> cache;
   cache.reserve(n);
