@@ -13,6 +13,7 @@
 
 #include "core/common/error.h"
 #include "core/photogrammetry/matching/feature_matching.h"
+#include "core/photogrammetry/matching/image_overlap.h"
 #include "core/photogrammetry/surface/pixel_lookup.h"
 
 namespace rockface::photogrammetry {
@@ -262,63 +263,33 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
   };
   std::vector<std::string> tried(n);  // what each slave was tried against
 
+  // Which images overlap, from thumbnails (image_overlap.h): a new image is
+  // matched first against the placed image that overlaps it most, and
+  // against the others only while that gives too few tie points. Matching
+  // every unplaced image against every placed one made the merge grow with
+  // the square of the number of images.
+  std::vector<Thumbnail> thumbnails;
+  for (const auto& image : images) thumbnails.push_back(make_thumbnail(image.photograph));
+  std::vector<std::vector<double>> score(n, std::vector<double>(n, 0.0));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      score[i][j] = score[j][i] = coarse_overlap(thumbnails[i], thumbnails[j]).score();
+  std::vector<bool> failed(n, false);  // against every image placed when it was tried
+
   std::size_t done = 1;
   while (done < n) {
-    bool progressed = false;
+    // The unplaced image that overlaps a placed one most comes next.
+    int next = -1;
+    double next_score = -1;
     for (std::size_t i = 1; i < n; ++i) {
-      if (placed[i]) continue;
-      progress.step("registering " + images[i].name, static_cast<double>(done) / n);
-      TieFit best;
-      int best_ref = -1;
-      double best_inlier_m = 0;
-      tried[i].clear();
-      for (std::size_t j = 0; j < n; ++j) {
-        if (!placed[j]) continue;
-        const double scale = out.images[j].to_face.scale;
-        const double inlier_m =
-            options.inlier_sigmas * images[j].sigma_z * scale + spacing[j] * scale;
-        const TieFit fit = fit_tie_points(tie_points(j, i), inlier_m, options.ransac_iterations,
-                                          options.seed + i * 7919 + j);
-        tried[i] += (tried[i].empty() ? "" : ", ") + images[j].name + " (" +
-                    std::to_string(fit.inliers.size()) + " tie points)";
-        if (fit.inliers.size() > best.inliers.size()) {
-          best = fit;
-          best_ref = static_cast<int>(j);
-          best_inlier_m = inlier_m;
+      if (placed[i] || failed[i]) continue;
+      for (std::size_t j = 0; j < n; ++j)
+        if (placed[j] && score[i][j] > next_score) {
+          next = static_cast<int>(i);
+          next_score = score[i][j];
         }
-      }
-      if (static_cast<int>(best.inliers.size()) < options.min_tie_points) continue;
-
-      ImageResidual& r = out.images[i];
-      r.reference = best_ref;
-      r.tie_points = static_cast<int>(best.inliers.size());
-      // Refine on the overlapping surface.
-      const std::size_t j = static_cast<std::size_t>(best_ref);
-      const SurfaceSample reference =
-          sample_surface(images[j].mesh, normals[j], out.images[j].to_face, options.icp_max_points);
-      const NearestPoint tree(reference.points);
-      const double overlap_m = options.overlap_distance_factor * best_inlier_m;
-      const SurfaceSample before =
-          sample_surface(images[i].mesh, normals[i], best.slave_to_face, options.icp_max_points);
-      const OverlapFit o = overlap(before, reference, tree, overlap_m);
-      r.surface_rms_before_icp_m = o.rms;
-      Similarity to_face = best.slave_to_face;
-      if (o.slave.size() >= 100) {
-        const Similarity rigid = icp_refinement(before, reference, o, options);
-        const Similarity refined = best.slave_to_face.then(rigid);
-        const SurfaceSample after =
-            sample_surface(images[i].mesh, normals[i], refined, options.icp_max_points);
-        const OverlapFit o2 = overlap(after, reference, tree, overlap_m);
-        // ICP is kept only when it brings the surfaces closer over no less overlap.
-        if (o2.rms < o.rms && o2.slave.size() + o.slave.size() / 10 >= o.slave.size())
-          to_face = refined;
-      }
-      r.to_face = to_face;
-      placed[i] = true;
-      ++done;
-      progressed = true;
     }
-    if (!progressed) {
+    if (next < 0) {
       for (std::size_t i = 1; i < n; ++i)
         if (!placed[i])
           throw InputError(images[i].name,
@@ -327,6 +298,67 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
                                " tie points agree on one surface (a photograph of another "
                                "face, or no area in common)");
     }
+    const std::size_t i = static_cast<std::size_t>(next);
+    progress.step("registering " + images[i].name, static_cast<double>(done) / n);
+    std::vector<std::size_t> candidates;
+    for (std::size_t j = 0; j < n; ++j)
+      if (placed[j]) candidates.push_back(j);
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [&](std::size_t x, std::size_t y) { return score[i][x] > score[i][y]; });
+    TieFit best;
+    int best_ref = -1;
+    double best_inlier_m = 0;
+    tried[i].clear();
+    for (const std::size_t j : candidates) {
+      const double scale = out.images[j].to_face.scale;
+      const double inlier_m =
+          options.inlier_sigmas * images[j].sigma_z * scale + spacing[j] * scale;
+      const TieFit fit = fit_tie_points(tie_points(j, i), inlier_m, options.ransac_iterations,
+                                        options.seed + i * 7919 + j);
+      tried[i] += (tried[i].empty() ? "" : ", ") + images[j].name + " (" +
+                  std::to_string(fit.inliers.size()) + " tie points)";
+      if (fit.inliers.size() > best.inliers.size()) {
+        best = fit;
+        best_ref = static_cast<int>(j);
+        best_inlier_m = inlier_m;
+      }
+      if (static_cast<int>(best.inliers.size()) >= options.enough_tie_points) break;
+    }
+    if (static_cast<int>(best.inliers.size()) < options.min_tie_points) {
+      // Tried against every placed image; an image placed later may overlap it.
+      failed[i] = true;
+      continue;
+    }
+
+    ImageResidual& r = out.images[i];
+    r.reference = best_ref;
+    r.tie_points = static_cast<int>(best.inliers.size());
+    // Refine on the overlapping surface.
+    const std::size_t j = static_cast<std::size_t>(best_ref);
+    const SurfaceSample reference =
+        sample_surface(images[j].mesh, normals[j], out.images[j].to_face, options.icp_max_points);
+    const NearestPoint tree(reference.points);
+    const double overlap_m = options.overlap_distance_factor * best_inlier_m;
+    const SurfaceSample before =
+        sample_surface(images[i].mesh, normals[i], best.slave_to_face, options.icp_max_points);
+    const OverlapFit o = overlap(before, reference, tree, overlap_m);
+    r.surface_rms_before_icp_m = o.rms;
+    Similarity to_face = best.slave_to_face;
+    if (o.slave.size() >= 100) {
+      const Similarity rigid = icp_refinement(before, reference, o, options);
+      const Similarity refined = best.slave_to_face.then(rigid);
+      const SurfaceSample after =
+          sample_surface(images[i].mesh, normals[i], refined, options.icp_max_points);
+      const OverlapFit o2 = overlap(after, reference, tree, overlap_m);
+      // ICP is kept only when it brings the surfaces closer over no less overlap.
+      if (o2.rms < o.rms && o2.slave.size() + o.slave.size() / 10 >= o.slave.size())
+        to_face = refined;
+    }
+    r.to_face = to_face;
+    placed[i] = true;
+    ++done;
+    // A newly placed image may be the one a failed image overlaps.
+    std::fill(failed.begin(), failed.end(), false);
   }
 
   // Ground control moves the whole block.

@@ -3,7 +3,8 @@
 // stereo reconstruction to the first, master-slave as in the field workflow.
 // For each slave:
 //   1. tie points: SIFT matches (feature_matching) between its left photograph
-//      and that of an image already in the face frame, lifted to both surfaces
+//      and that of an image already in the face frame (the one its thumbnail
+//      overlaps most first: image_overlap.h), lifted to both surfaces
 //      through the pixels of the lattice vertices;
 //   2. a similarity transform (Eigen::umeyama) estimated robustly (RANSAC over
 //      3-point samples, then all inliers), so a slave may be unscaled and
@@ -51,6 +52,11 @@ struct MultiImageOptions {
   // the pair does not overlap (SIFT on unrelated rock still gives a few
   // chance matches that agree with some similarity; 20 is well above that).
   int min_tie_points = 20;
+  // Tie points with one placed image that end the search for a reference:
+  // the placed images are tried in the order of their coarse overlap with the
+  // new one (image_overlap.h), and one that overlaps gives hundreds to
+  // thousands; chance matches on unrelated rock stay near min_tie_points.
+  int enough_tie_points = 200;
   int ransac_iterations = 400;
   // Tie-point inlier distance, in units of the reference image's predicted
   // depth precision sigma_z plus one point spacing (the vertex picked at a
@@ -86,9 +92,11 @@ struct FaceRegistration {
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();
 };
 
-// Registers images[1..] to images[0] (each to the placed image it shares most
-// tie points with). Throws InputError naming the image that overlaps no
-// placed image, or a control point whose pixel has no surface.
+// Registers images[1..] to images[0]: each new image to the placed image
+// that overlaps it most (coarse overlap of thumbnails, then at least
+// options.enough_tie_points tie points; else to the placed image it shares
+// most tie points with), the image that overlaps a placed one most first. Throws InputError naming
+// the image that overlaps no placed image, or a control point whose pixel has no surface.
 FaceRegistration register_face_images(const std::vector<FaceImage>& images,
                                       const std::vector<FaceControlPoint>& control_points,
                                       const ReconstructionPreset& preset,
