@@ -119,6 +119,13 @@ BENCHMARK(BM_MergeImages)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
 
+// Ten images, stations 0.5 m apart alternately West and East (the face's
+// 8.4 m hold no more at 1 m): how the merge grows beyond five.
+void BM_MergeTenImages(benchmark::State& state) {
+  merge(state, {0.0, -0.5, 0.5, -1.0, 1.0, -1.5, 1.5, -2.0, 2.0, -2.5});
+}
+BENCHMARK(BM_MergeTenImages)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
 // Overlap: two images, the second station `range(0)` cm West of the master
 // (beyond 3 m its photographs show too little of the 8.4 m face for a 3D image).
 void BM_MergeOverlap(benchmark::State& state) {

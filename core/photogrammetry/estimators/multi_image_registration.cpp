@@ -6,6 +6,7 @@
 #include <numeric>
 #include <optional>
 #include <random>
+#include <tuple>
 
 #include <Eigen/Geometry>
 #include <opencv2/flann.hpp>
@@ -13,6 +14,7 @@
 
 #include "core/common/error.h"
 #include "core/photogrammetry/matching/feature_matching.h"
+#include "core/photogrammetry/matching/guided_matching.h"
 #include "core/photogrammetry/matching/image_overlap.h"
 #include "core/photogrammetry/surface/pixel_lookup.h"
 
@@ -246,11 +248,32 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
           preset);
     return *features[i];
   };
-  std::map<std::pair<std::size_t, std::size_t>, RawTiePoints> matched;
-  auto tie_points = [&](std::size_t ref, std::size_t slave) -> TiePoints {
-    auto [it, fresh] = matched.try_emplace({ref, slave});
+  // Which images overlap, from thumbnails (image_overlap.h): a new image is
+  // matched first against the placed image that overlaps it most, and
+  // against the others only while that gives too few tie points. Matching
+  // every unplaced image against every placed one made the merge grow with
+  // the square of the number of images.
+  std::vector<Thumbnail> thumbnails;
+  for (const auto& image : images) thumbnails.push_back(make_thumbnail(image.photograph));
+  std::vector<std::vector<CoarseOverlap>> coarse(n, std::vector<CoarseOverlap>(n));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      coarse[i][j] = coarse_overlap(thumbnails[i], thumbnails[j]);
+      coarse[j][i] = coarse[i][j];
+      coarse[j][i].shift_px = -coarse[i][j].shift_px;
+    }
+
+  // Tie points of a (placed, slave) pair, matched once each way: guided by
+  // the pair's coarse shift where it was found clearly (guided_matching.h),
+  // else (or when the guided ones fit too few) against all keypoints.
+  std::map<std::tuple<std::size_t, std::size_t, bool>, RawTiePoints> matched;
+  auto tie_points = [&](std::size_t ref, std::size_t slave, bool guided) -> TiePoints {
+    auto [it, fresh] = matched.try_emplace({ref, slave, guided});
     if (fresh) {
-      const FeatureMatches m = match_detected(features_of(ref), features_of(slave), preset);
+      const FeatureMatches m =
+          guided ? match_guided(features_of(ref), features_of(slave), coarse[ref][slave].shift_px,
+                                options.guide_window * images[ref].photograph.cols, preset)
+                 : match_detected(features_of(ref), features_of(slave), preset);
       for (std::size_t k = 0; k < m.size(); ++k) {
         const int a = grids[ref].nearest(m.left[k]);
         const int b = grids[slave].nearest(m.right[k]);
@@ -263,18 +286,9 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
   };
   std::vector<std::string> tried(n);  // what each slave was tried against
 
-  // Which images overlap, from thumbnails (image_overlap.h): a new image is
-  // matched first against the placed image that overlaps it most, and
-  // against the others only while that gives too few tie points. Matching
-  // every unplaced image against every placed one made the merge grow with
-  // the square of the number of images.
-  std::vector<Thumbnail> thumbnails;
-  for (const auto& image : images) thumbnails.push_back(make_thumbnail(image.photograph));
-  std::vector<std::vector<double>> score(n, std::vector<double>(n, 0.0));
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      score[i][j] = score[j][i] = coarse_overlap(thumbnails[i], thumbnails[j]).score();
-  std::vector<bool> failed(n, false);  // against every image placed when it was tried
+  std::vector<bool> failed(n, false);
+  std::vector<bool> guided_ties(n, false);  // each image's tie points came from guided matching  //
+                                            // against every image placed when it was tried
 
   std::size_t done = 1;
   while (done < n) {
@@ -284,9 +298,9 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     for (std::size_t i = 1; i < n; ++i) {
       if (placed[i] || failed[i]) continue;
       for (std::size_t j = 0; j < n; ++j)
-        if (placed[j] && score[i][j] > next_score) {
+        if (placed[j] && coarse[i][j].score() > next_score) {
           next = static_cast<int>(i);
-          next_score = score[i][j];
+          next_score = coarse[i][j].score();
         }
     }
     if (next < 0) {
@@ -303,8 +317,9 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     std::vector<std::size_t> candidates;
     for (std::size_t j = 0; j < n; ++j)
       if (placed[j]) candidates.push_back(j);
-    std::stable_sort(candidates.begin(), candidates.end(),
-                     [&](std::size_t x, std::size_t y) { return score[i][x] > score[i][y]; });
+    std::stable_sort(candidates.begin(), candidates.end(), [&](std::size_t x, std::size_t y) {
+      return coarse[i][x].score() > coarse[i][y].score();
+    });
     TieFit best;
     int best_ref = -1;
     double best_inlier_m = 0;
@@ -313,14 +328,24 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       const double scale = out.images[j].to_face.scale;
       const double inlier_m =
           options.inlier_sigmas * images[j].sigma_z * scale + spacing[j] * scale;
-      const TieFit fit = fit_tie_points(tie_points(j, i), inlier_m, options.ransac_iterations,
-                                        options.seed + i * 7919 + j);
+      bool guided = coarse[j][i].response >= options.guide_min_response;
+      TieFit fit = fit_tie_points(tie_points(j, i, guided), inlier_m, options.ransac_iterations,
+                                  options.seed + i * 7919 + j);
+      if (guided && static_cast<int>(fit.inliers.size()) < options.enough_tie_points) {
+        TieFit all = fit_tie_points(tie_points(j, i, false), inlier_m, options.ransac_iterations,
+                                    options.seed + i * 7919 + j);
+        if (all.inliers.size() > fit.inliers.size()) {
+          fit = std::move(all);
+          guided = false;
+        }
+      }
       tried[i] += (tried[i].empty() ? "" : ", ") + images[j].name + " (" +
                   std::to_string(fit.inliers.size()) + " tie points)";
       if (fit.inliers.size() > best.inliers.size()) {
         best = fit;
         best_ref = static_cast<int>(j);
         best_inlier_m = inlier_m;
+        guided_ties[i] = guided;
       }
       if (static_cast<int>(best.inliers.size()) >= options.enough_tie_points) break;
     }
@@ -406,7 +431,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
                                      : static_cast<double>(o.slave.size()) /
                                            static_cast<double>(slave.points.size());
     // Tie points again, through the final transforms.
-    const TiePoints t = tie_points(j, i);
+    const TiePoints t = tie_points(j, i, guided_ties[i]);
     double sum2 = 0;
     int count = 0;
     for (std::size_t k = 0; k < t.slave.size(); ++k) {
