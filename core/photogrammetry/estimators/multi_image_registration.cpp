@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <random>
@@ -13,6 +14,7 @@
 #include <opencv2/surface_matching.hpp>
 
 #include "core/common/error.h"
+#include "core/common/parallel.h"
 #include "core/photogrammetry/matching/feature_matching.h"
 #include "core/photogrammetry/matching/guided_matching.h"
 #include "core/photogrammetry/matching/image_overlap.h"
@@ -238,16 +240,14 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
   out.images[0].to_face = identity();
   placed[0] = true;
 
-  // SIFT is detected once per photograph (each at its own working scale);
-  // tie points of every (placed, slave) pair are matched once.
-  std::vector<std::optional<ImageFeatures>> features(n);
-  auto features_of = [&](std::size_t i) -> const ImageFeatures& {
-    if (!features[i])
-      features[i] = detect_features(
-          images[i].photograph, working_scale(images[i].photograph.cols, preset.feature_max_width),
-          preset);
-    return *features[i];
-  };
+  // SIFT is detected once per photograph (each at its own working scale),
+  // all before the first match, on all cores.
+  std::vector<ImageFeatures> features(n);
+  parallel_for(n, [&](std::size_t i) {
+    features[i] =
+        detect_features(images[i].photograph,
+                        working_scale(images[i].photograph.cols, preset.feature_max_width), preset);
+  });
   // Which images overlap, from thumbnails (image_overlap.h): a new image is
   // matched first against the placed image that overlaps it most, and
   // against the others only while that gives too few tie points. Matching
@@ -265,55 +265,52 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
 
   // Tie points of a (placed, slave) pair, matched once each way: guided by
   // the pair's coarse shift where it was found clearly (guided_matching.h),
-  // else (or when the guided ones fit too few) against all keypoints.
+  // else (or when the guided ones fit too few) against all keypoints. The
+  // images of one wave (below) are matched on several threads: each item
+  // inserts only its own slave's keys, under the lock; the map's nodes stay
+  // where they are.
   std::map<std::tuple<std::size_t, std::size_t, bool>, RawTiePoints> matched;
+  std::mutex matched_lock;
   auto tie_points = [&](std::size_t ref, std::size_t slave, bool guided) -> TiePoints {
-    auto [it, fresh] = matched.try_emplace({ref, slave, guided});
+    RawTiePoints* raw = nullptr;
+    bool fresh = false;
+    {
+      const std::lock_guard<std::mutex> lock(matched_lock);
+      auto [it, inserted] = matched.try_emplace({ref, slave, guided});
+      raw = &it->second;
+      fresh = inserted;
+    }
     if (fresh) {
       const FeatureMatches m =
-          guided ? match_guided(features_of(ref), features_of(slave), coarse[ref][slave].shift_px,
+          guided ? match_guided(features[ref], features[slave], coarse[ref][slave].shift_px,
                                 options.guide_window * images[ref].photograph.cols, preset)
-                 : match_detected(features_of(ref), features_of(slave), preset);
+                 : match_detected(features[ref], features[slave], preset);
       for (std::size_t k = 0; k < m.size(); ++k) {
         const int a = grids[ref].nearest(m.left[k]);
         const int b = grids[slave].nearest(m.right[k]);
         if (a < 0 || b < 0) continue;
-        it->second.reference.push_back(images[ref].mesh.vertices[a]);
-        it->second.slave.push_back(images[slave].mesh.vertices[b]);
+        raw->reference.push_back(images[ref].mesh.vertices[a]);
+        raw->slave.push_back(images[slave].mesh.vertices[b]);
       }
     }
-    return it->second.in_face(out.images[ref].to_face);
+    return raw->in_face(out.images[ref].to_face);
   };
-  std::vector<std::string> tried(n);  // what each slave was tried against
+  std::vector<std::string> tried(n);    // what each slave was tried against
+  std::vector<char> guided_ties(n, 0);  // its tie points came from guided matching
+  std::vector<char> failed(n, 0);       // against every image placed when it was tried
 
-  std::vector<bool> failed(n, false);
-  std::vector<bool> guided_ties(n, false);  // each image's tie points came from guided matching  //
-                                            // against every image placed when it was tried
-
-  std::size_t done = 1;
-  while (done < n) {
-    // The unplaced image that overlaps a placed one most comes next.
-    int next = -1;
-    double next_score = -1;
-    for (std::size_t i = 1; i < n; ++i) {
-      if (placed[i] || failed[i]) continue;
-      for (std::size_t j = 0; j < n; ++j)
-        if (placed[j] && coarse[i][j].score() > next_score) {
-          next = static_cast<int>(i);
-          next_score = coarse[i][j].score();
-        }
-    }
-    if (next < 0) {
-      for (std::size_t i = 1; i < n; ++i)
-        if (!placed[i])
-          throw InputError(images[i].name,
-                           "does not overlap " + tried[i] + ": fewer than " +
-                               std::to_string(options.min_tie_points) +
-                               " tie points agree on one surface (a photograph of another "
-                               "face, or no area in common)");
-    }
-    const std::size_t i = static_cast<std::size_t>(next);
-    progress.step("registering " + images[i].name, static_cast<double>(done) / n);
+  // One image registered to the images placed so far (`placed` is not
+  // changed while a wave runs).
+  struct Placement {
+    bool ok = false;
+    int reference = -1, tie_points = 0;
+    bool guided = false;
+    double surface_rms_before_icp_m = 0;
+    Similarity to_face;
+    std::string tried;
+  };
+  auto place = [&](std::size_t i) {
+    Placement result;
     std::vector<std::size_t> candidates;
     for (std::size_t j = 0; j < n; ++j)
       if (placed[j]) candidates.push_back(j);
@@ -321,9 +318,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       return coarse[i][x].score() > coarse[i][y].score();
     });
     TieFit best;
-    int best_ref = -1;
     double best_inlier_m = 0;
-    tried[i].clear();
     for (const std::size_t j : candidates) {
       const double scale = out.images[j].to_face.scale;
       const double inlier_m =
@@ -339,27 +334,21 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
           guided = false;
         }
       }
-      tried[i] += (tried[i].empty() ? "" : ", ") + images[j].name + " (" +
-                  std::to_string(fit.inliers.size()) + " tie points)";
+      result.tried += (result.tried.empty() ? "" : ", ") + images[j].name + " (" +
+                      std::to_string(fit.inliers.size()) + " tie points)";
       if (fit.inliers.size() > best.inliers.size()) {
         best = fit;
-        best_ref = static_cast<int>(j);
+        result.reference = static_cast<int>(j);
+        result.guided = guided;
         best_inlier_m = inlier_m;
-        guided_ties[i] = guided;
       }
       if (static_cast<int>(best.inliers.size()) >= options.enough_tie_points) break;
     }
-    if (static_cast<int>(best.inliers.size()) < options.min_tie_points) {
-      // Tried against every placed image; an image placed later may overlap it.
-      failed[i] = true;
-      continue;
-    }
-
-    ImageResidual& r = out.images[i];
-    r.reference = best_ref;
-    r.tie_points = static_cast<int>(best.inliers.size());
+    if (static_cast<int>(best.inliers.size()) < options.min_tie_points) return result;
+    result.ok = true;
+    result.tie_points = static_cast<int>(best.inliers.size());
     // Refine on the overlapping surface.
-    const std::size_t j = static_cast<std::size_t>(best_ref);
+    const std::size_t j = static_cast<std::size_t>(result.reference);
     const SurfaceSample reference =
         sample_surface(images[j].mesh, normals[j], out.images[j].to_face, options.icp_max_points);
     const NearestPoint tree(reference.points);
@@ -367,8 +356,8 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     const SurfaceSample before =
         sample_surface(images[i].mesh, normals[i], best.slave_to_face, options.icp_max_points);
     const OverlapFit o = overlap(before, reference, tree, overlap_m);
-    r.surface_rms_before_icp_m = o.rms;
-    Similarity to_face = best.slave_to_face;
+    result.surface_rms_before_icp_m = o.rms;
+    result.to_face = best.slave_to_face;
     if (o.slave.size() >= 100) {
       const Similarity rigid = icp_refinement(before, reference, o, options);
       const Similarity refined = best.slave_to_face.then(rigid);
@@ -377,13 +366,68 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       const OverlapFit o2 = overlap(after, reference, tree, overlap_m);
       // ICP is kept only when it brings the surfaces closer over no less overlap.
       if (o2.rms < o.rms && o2.slave.size() + o.slave.size() / 10 >= o.slave.size())
-        to_face = refined;
+        result.to_face = refined;
     }
-    r.to_face = to_face;
-    placed[i] = true;
-    ++done;
+    return result;
+  };
+
+  std::size_t done = 1;
+  while (done < n) {
+    // A wave: the unplaced images that overlap a placed image nearly as well
+    // as any image (options.wave_share), registered side by side; they do
+    // not depend on each other, and which images form a wave does not
+    // depend on the number of threads, so neither do the results. When no
+    // image qualifies, the one that overlaps a placed image most goes alone.
+    std::vector<std::size_t> wave;
+    int next = -1;
+    double next_score = -1;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (placed[i] || failed[i]) continue;
+      double any = 0, with_placed = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (j == i) continue;
+        any = std::max(any, coarse[i][j].score());
+        if (placed[j]) with_placed = std::max(with_placed, coarse[i][j].score());
+      }
+      if (with_placed > 0 && with_placed >= options.wave_share * any) wave.push_back(i);
+      if (with_placed > next_score) {
+        next = static_cast<int>(i);
+        next_score = with_placed;
+      }
+    }
+    if (wave.empty() && next >= 0) wave.push_back(static_cast<std::size_t>(next));
+    if (wave.empty()) {
+      for (std::size_t i = 1; i < n; ++i)
+        if (!placed[i])
+          throw InputError(images[i].name,
+                           "does not overlap " + tried[i] + ": fewer than " +
+                               std::to_string(options.min_tie_points) +
+                               " tie points agree on one surface (a photograph of another "
+                               "face, or no area in common)");
+    }
+    progress.step("registering " + images[wave.front()].name, static_cast<double>(done) / n);
+    std::vector<Placement> results(wave.size());
+    parallel_for(wave.size(), [&](std::size_t k) { results[k] = place(wave[k]); });
+    bool progressed = false;
+    for (std::size_t k = 0; k < wave.size(); ++k) {
+      const std::size_t i = wave[k];
+      tried[i] = results[k].tried;
+      if (!results[k].ok) {
+        failed[i] = 1;  // an image placed later may overlap it
+        continue;
+      }
+      ImageResidual& r = out.images[i];
+      r.reference = results[k].reference;
+      r.tie_points = results[k].tie_points;
+      r.surface_rms_before_icp_m = results[k].surface_rms_before_icp_m;
+      r.to_face = results[k].to_face;
+      guided_ties[i] = results[k].guided;
+      placed[i] = true;
+      ++done;
+      progressed = true;
+    }
     // A newly placed image may be the one a failed image overlaps.
-    std::fill(failed.begin(), failed.end(), false);
+    if (progressed) std::fill(failed.begin(), failed.end(), 0);
   }
 
   // Ground control moves the whole block.

@@ -65,6 +65,10 @@ struct MultiImageOptions {
   // width against the shift, and the shift is found to under 1 %.
   double guide_min_response = 0.15;
   double guide_window = 0.1;
+  // Images whose best overlap with a placed image is at least this share of
+  // their best overlap with any image are registered side by side, on all
+  // cores (a station's neighbours on both sides of the master, then theirs).
+  double wave_share = 0.8;
   int ransac_iterations = 400;
   // Tie-point inlier distance, in units of the reference image's predicted
   // depth precision sigma_z plus one point spacing (the vertex picked at a
