@@ -65,6 +65,17 @@ class PathProblem final : public ContinuationProblem {
     return dr_.cwiseInverse().asDiagonal() *
            eq_.unbalance(motion(x), loading_ ? p : 1.0, loading_ ? divisor_ : p);
   }
+  bool residual_and_jacobian(const Eigen::VectorXd& x, double p, Eigen::VectorXd& r,
+                             Eigen::MatrixXd& jx, Eigen::VectorXd& jp) const override {
+    UnbalanceDerivatives d;
+    const Vector6 unbalance =
+        eq_.unbalance(motion(x), loading_ ? p : 1.0, loading_ ? divisor_ : p, nullptr, &d);
+    const Vector6 inv = dr_.cwiseInverse();
+    r = inv.asDiagonal() * unbalance;
+    jx = inv.asDiagonal() * d.motion * dx_.asDiagonal();
+    jp = inv.asDiagonal() * (loading_ ? d.load_factor : d.divisor);
+    return true;
+  }
   Eigen::MatrixXd fallback_jacobian() const override {
     return -(dr_.cwiseInverse().asDiagonal() * eq_.elastic_stiffness() * dx_.asDiagonal());
   }
@@ -132,6 +143,7 @@ EquilibriumPath equilibrium_path(const blocks::Polyhedron& block,
   co.max_steps = options.max_steps;
   co.p_max = options.lambda_max;
   co.progress = options.progress;
+  co.difference_jacobian = options.difference_tangent;
 
   // 1. Loading at strengths x 1 / lambda_start.
   PathProblem loading(eq, true, options.lambda_start);

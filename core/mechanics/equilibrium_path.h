@@ -46,6 +46,9 @@ struct MechanicsOptions {
   int max_steps = 400;         // accepted continuation steps
   double lambda_start = 0.05;  // strengths x 20 while the loads are applied
   double lambda_max = 20;      // no limit point below this: reported as such
+  // The path's tangent by forward differences of the equilibrium instead of
+  // the joint laws' consistent tangents (the earlier method; for comparison).
+  bool difference_tangent = false;
   Progress* progress = nullptr;
 };
 

@@ -124,13 +124,13 @@ StagedJointLaw::SlipUpdate StagedJointLaw::slip_update(const JointState& committ
 
 double StagedJointLaw::closed_form_slip(const JointState& committed, double sigma0,
                                         double trial_norm, double divisor) const {
+  if (!(sigma0 > 0)) return -1;  // no closed form: the caller bisects
   const double tan_p = std::tan(peak_->peak_angle(sigma0));
   if (committed.past_peak)
     return std::max(trial_norm - strength(sigma0, committed) / divisor, 0.0) / ks_;
   const double kappa_p = peak_slip(sigma0);
   const double k0 = committed.slip_length;
-  const double plastic = std::max(trial_norm - sigma0 * tan_p / divisor, 0.0) / ks_;
-  if (!(kappa_p > k0)) return plastic;
+  if (!(kappa_p > k0)) return std::max(trial_norm - sigma0 * tan_p / divisor, 0.0) / ks_;
   // |trial| - ks (kappa_p s^2 - k0) = sigma0 (tan_p - (1 - s)^2 (tan_p - tan_r)) / divisor
   // in s = sqrt(kappa / kappa_p): a s^2 + b s + c = 0, decreasing in s on [s0, 1].
   const double spread = sigma0 * (tan_p - std::tan(peak_->residual_angle())) / divisor;
@@ -144,7 +144,6 @@ double StagedJointLaw::closed_form_slip(const JointState& committed, double sigm
   const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
   for (const double s : {q / a, c / q})
     if (std::isfinite(s) && s >= s0 && s <= 1.0) return kappa_p * s * s - k0;
-  (void)plastic;
   return 0.5 * (kappa_p - k0);
 }
 
@@ -153,19 +152,31 @@ JointResponse StagedJointLaw::respond(const JointState& committed, double closur
   JointResponse r;
   r.state = committed;
   const double sigma0 = kn_ * (closure + committed.dilation);
-  if (!(sigma0 > 0)) {
+  const Eigen::Vector2d trial = ks_ * (shear - committed.slip);
+  const double trial_norm = trial.norm();
+  bool contact = sigma0 > 0;
+  if (!contact && strength_divisor > 0 && trial_norm > 0 && p_.dilation) {
+    // Open at the committed dilation, but the shear that moves it rides up
+    // the asperities: a contact whose dilation, slipping the whole trial,
+    // closes it again carries the stress that slip leaves (a stiff joint
+    // under a lifting block lives there; calling it open would give a
+    // residual that jumps with each Newton iterate).
+    const SlipUpdate whole =
+        slip_update(committed, trial / trial_norm, Dual(trial_norm / ks_), Dual(0.0));
+    contact = closure + whole.dilation.v > 0;
+  }
+  if (!contact) {
     // Open: no tractions; the shear spring relaxes onto the displacement.
     r.state.slip = shear;
     r.stage = JointStage::Open;
     return r;
   }
-  const Eigen::Vector2d trial = ks_ * (shear - committed.slip);
-  const double trial_norm = trial.norm();
-  r.normal_stress = sigma0;
+  r.normal_stress = std::max(sigma0, 0.0);
   r.shear_stress = trial;
   r.stage = stage_of(sigma0, committed);
   r.tangent.diagonal() << kn_, ks_, ks_;
-  if (strength_divisor <= 0 || trial_norm <= strength(sigma0, committed) / strength_divisor)
+  if (strength_divisor <= 0 ||
+      trial_norm <= strength(r.normal_stress, committed) / strength_divisor)
     return r;
 
   // Slip: radial return along the trial direction. Unknowns dg (slip) and
@@ -191,8 +202,9 @@ JointResponse StagedJointLaw::respond(const JointState& committed, double closur
       pt.f_sigma = gap > 0 ? 1 - kn_ * pt.u.dilation.d(1) : 1.0;
       return sigma - kn_ * std::max(gap, 0.0);
     };
-    if (at(0.0) >= 0) return pt;  // opened by riding down the asperities
-    double lo = 0, hi = INFINITY, x = guess > 0 ? guess : sigma0;
+    const double f0 = at(0.0);
+    if (f0 >= 0) return pt;  // open: no dilation of this slip closes it
+    double lo = 0, hi = INFINITY, x = guess > 0 ? guess : -f0;
     for (int it = 0; it < kReturnMappingIterations; ++it) {
       const double f = at(x);
       if (std::abs(f) <= kReturnMappingRel * x) break;
