@@ -226,7 +226,10 @@ EquilibriumPath equilibrium_path(const blocks::Polyhedron& block,
   if (out.flutter_lambda && out.stability != StabilityKind::Flutter) {
     std::ostringstream note;
     note << "the tangent has complex eigenvalues (flutter of the linearised motion) from lambda = "
-         << *out.flutter_lambda << ", while joints slip partly";
+         << *out.flutter_lambda
+         << ", while joints slip partly: a slipping joint's tangent is not symmetric (its "
+            "friction is not associated with its dilation), which couples two modes of the "
+            "block; equilibrium is not lost there";
     out.notes.push_back(note.str());
   }
   return out;
