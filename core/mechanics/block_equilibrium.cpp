@@ -97,6 +97,7 @@ BlockEquilibrium::BlockEquilibrium(const blocks::Polyhedron& block,
   // would take 1e5 elastic units of path: steps are scaled to a hundredth
   // of that slip instead.
   displacement_scale_ = std::max(displacement_scale_, slip_scale * kSlipScaleFraction);
+  slip_scale_ = slip_scale;
 }
 
 Vector6 BlockEquilibrium::unbalance(const Vector6& x, double load_factor, double divisor,

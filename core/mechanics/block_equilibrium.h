@@ -74,6 +74,7 @@ class BlockEquilibrium {
   double load_scale() const { return load_scale_; }                  // N
   double length() const { return length_; }                          // m
   double displacement_scale() const { return displacement_scale_; }  // m, the path's unit
+  double slip_scale() const { return slip_scale_; }  // m, the largest of the laws' (0: none)
   const std::vector<ContactPoint>& contacts() const { return contacts_; }
   const std::vector<JointState>& committed() const { return committed_; }
   const BlockLoads& loads() const { return loads_; }
@@ -94,7 +95,7 @@ class BlockEquilibrium {
   double mass_ = 0;
   Eigen::Matrix3d inertia_;
   std::vector<Eigen::Vector3d> vertex_arms_;
-  double load_scale_ = 1, length_ = 1, displacement_scale_ = 1;
+  double load_scale_ = 1, length_ = 1, displacement_scale_ = 1, slip_scale_ = 0;
 };
 
 }  // namespace rockface::mechanics

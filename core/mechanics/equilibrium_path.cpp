@@ -9,6 +9,7 @@
 #include "core/mechanics/block_equilibrium.h"
 #include "core/mechanics/block_loads.h"
 #include "core/mechanics/contact_points.h"
+#include "core/mechanics/tolerances.h"
 
 namespace rockface::mechanics {
 
@@ -144,6 +145,11 @@ EquilibriumPath equilibrium_path(const blocks::Polyhedron& block,
   co.p_max = options.lambda_max;
   co.progress = options.progress;
   co.difference_jacobian = options.difference_tangent;
+  // Steps of at most kPathSlipFraction of the joints' slip scale: the
+  // staged laws' history is integrated step by step (none for Coulomb).
+  if (eq.slip_scale() > 0)
+    co.max_step =
+        std::max(kPathSlipFraction * eq.slip_scale() / eq.displacement_scale(), options.step);
 
   // 1. Loading at strengths x 1 / lambda_start.
   PathProblem loading(eq, true, options.lambda_start);
