@@ -303,6 +303,16 @@ TEST(EquilibriumPath, StiffRoughJointIsSolved) {
   const double rise = std::atan2(mode.dot(slab.n()), mode.dot(slab.d()));
   EXPECT_NEAR(rad_to_deg(rise), rad_to_deg(phi_peak - deg_to_rad(30)) / 2, 1.5);
   EXPECT_EQ(stiff.stability, StabilityKind::Divergence);
+  // Before the limit, while some contacts slip and others stick, the
+  // consistent tangent is not symmetric (friction kn tan(phi) one way,
+  // dilation kn tan(d) the other) and has complex pairs: they are noted
+  // with their cause, and they end before the limit.
+  ASSERT_TRUE(stiff.flutter_lambda);
+  EXPECT_LT(*stiff.flutter_lambda, *stiff.fos_limit_point);
+  bool explained = false;
+  for (const std::string& n : stiff.notes)
+    explained = explained || n.find("not symmetric") != std::string::npos;
+  EXPECT_TRUE(explained);
   const double rigid = le_fos(p, gravity(), rad_to_deg(phi_peak));
   ASSERT_NEAR(rigid, std::tan(phi_peak) / std::tan(deg_to_rad(slab.psi)), 1e-9);
   // Expected: below the rigid-plastic value by Jensen's gap. The normal
