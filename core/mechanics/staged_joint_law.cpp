@@ -222,8 +222,9 @@ JointResponse StagedJointLaw::respond(const JointState& committed, double closur
   if (!(dg > lo && dg < hi)) dg = 0.5 * (lo + hi);
   Point pt;
   double guess = sigma0;
-  for (int it = 0; it < kReturnMappingIterations; ++it) {
+  for (int it = 0;; ++it) {
     pt = normal_stress(dg, guess);
+    if (it == kReturnMappingIterations) break;  // pt stays the point of dg
     guess = pt.sigma;
     const double g = trial_norm - ks_ * dg - pt.u.strength.v / strength_divisor;
     if (std::abs(g) <= kReturnMappingRel * trial_norm) break;

@@ -8,9 +8,11 @@ namespace rockface::mechanics {
 // grows without bound, and the recommended cap keeps the peak physical.
 inline constexpr double kMaxPeakFrictionDeg = 70.0;
 
-// Return mapping of a slipping contact: the plastic slip increment is found
-// by bracketing; it stops when the bracket is below this fraction of the
-// elastic trial slip (the traction is then exact to the same fraction).
+// Return mapping of a slipping contact: the plastic slip increment (and the
+// normal stress its dilation brings) is found by Newton kept inside a
+// bracket; it stops when the equation's residual, or the bracket, is below
+// this fraction of the elastic trial traction (trial slip), so the
+// traction is exact to the same fraction.
 inline constexpr double kReturnMappingRel = 1e-12;
 inline constexpr int kReturnMappingIterations = 200;
 
