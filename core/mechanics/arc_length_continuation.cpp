@@ -38,7 +38,8 @@ struct Corrected {
 
 class Corrector {
  public:
-  explicit Corrector(ContinuationProblem& problem) : problem_(problem) {}
+  Corrector(ContinuationProblem& problem, bool differences)
+      : problem_(problem), differences_(differences) {}
   int evaluations = 0;
 
   Eigen::VectorXd residual(const Eigen::VectorXd& x, double p) {
@@ -46,9 +47,14 @@ class Corrector {
     return problem_.residual(x, p);
   }
 
-  // Forward differences of R around (x, p) with R = residual(x, p).
-  void jacobian(const Eigen::VectorXd& x, double p, const Eigen::VectorXd& r, Eigen::MatrixXd& jx,
+  // dR/dx and dR/dp at (x, p): the problem's own, which re-evaluates R
+  // there, or forward differences around R = residual(x, p).
+  void jacobian(const Eigen::VectorXd& x, double p, Eigen::VectorXd& r, Eigen::MatrixXd& jx,
                 Eigen::VectorXd& jp) {
+    if (!differences_ && problem_.residual_and_jacobian(x, p, r, jx, jp)) {
+      ++evaluations;
+      return;
+    }
     const int n = static_cast<int>(x.size());
     jx.resize(n, n);
     for (int k = 0; k < n; ++k) {
@@ -124,6 +130,7 @@ class Corrector {
 
  private:
   ContinuationProblem& problem_;
+  bool differences_;
 };
 
 // Unit tangent of the path: [Jx Jp; t_prev^T] t = (0, 1), oriented along t_prev.
@@ -156,7 +163,7 @@ void report(const ContinuationOptions& o, int accepted) {
 ContinuationResult step_parameter(ContinuationProblem& problem, const Eigen::VectorXd& x0,
                                   double p0, double p_target, const ContinuationOptions& options) {
   ContinuationResult out;
-  Corrector corrector(problem);
+  Corrector corrector(problem, options.difference_jacobian);
   const int n = static_cast<int>(x0.size());
   Eigen::VectorXd fixed_p = Eigen::VectorXd::Zero(n + 1);
   fixed_p(n) = 1;
@@ -202,7 +209,7 @@ ContinuationResult step_parameter(ContinuationProblem& problem, const Eigen::Vec
 ContinuationResult continue_path(ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0,
                                  const ContinuationOptions& options) {
   ContinuationResult out;
-  Corrector corrector(problem);
+  Corrector corrector(problem, options.difference_jacobian);
   const int n = static_cast<int>(x0.size());
   const double min_step = options.min_step > 0 ? options.min_step : options.step / 64;
   const double max_step = options.max_step > 0 ? options.max_step : options.step * 1e6;

@@ -36,6 +36,15 @@ class ContinuationProblem {
   // dR/dx to use where differences see no stiffness (contacts exactly at
   // zero load before the first step); empty: none.
   virtual Eigen::MatrixXd fallback_jacobian() const { return {}; }
+  // The residual and its exact derivatives dR/dx, dR/dp at (x, p), for a
+  // problem that has them (false: the corrector takes forward differences,
+  // size() + 1 more residuals a Newton iteration, each as noisy as the
+  // residual's own return mappings).
+  virtual bool residual_and_jacobian(const Eigen::VectorXd& x, double p, Eigen::VectorXd& r,
+                                     Eigen::MatrixXd& jx, Eigen::VectorXd& jp) const {
+    (void)x, (void)p, (void)r, (void)jx, (void)jp;
+    return false;
+  }
   virtual void commit(const Eigen::VectorXd& x, double p) = 0;
 };
 
@@ -44,7 +53,10 @@ struct ContinuationOptions {
   double min_step = 0;  // 0: step / 64
   double max_step = 0;  // 0: step x 1e6
   int max_steps = 400;  // accepted steps
-  double p_max = 20;    // the path stops here: no limit point below it
+  // Forward differences of the residual even where the problem has exact
+  // derivatives: the tangent of the earlier versions, for comparison.
+  bool difference_jacobian = false;
+  double p_max = 20;  // the path stops here: no limit point below it
   // dp/ds below this (scaled) counts as a flat path: a mechanism. The
   // path creeps up to a frictional limit as the joints' shear stresses
   // turn into the final slip direction (over a few elastic displacements):

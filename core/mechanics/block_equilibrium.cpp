@@ -27,6 +27,18 @@ Eigen::Quaterniond rotation_quaternion(const Eigen::Vector3d& w) {
   return Eigen::Quaterniond(std::cos(half), s * w(0), s * w.y(), s * w.z());
 }
 
+Eigen::Matrix3d rotation_left_jacobian(const Eigen::Vector3d& w) {
+  const double a = w.norm();
+  const Eigen::Matrix3d k = skew(w);
+  // (1 - cos a) / a^2 and (a - sin a) / a^3, by their series at small angles.
+  double c1 = 0.5 - a * a / 24.0, c2 = 1.0 / 6.0 - a * a / 120.0;
+  if (a > 1e-3) {
+    c1 = (1.0 - std::cos(a)) / (a * a);
+    c2 = (a - std::sin(a)) / (a * a * a);
+  }
+  return Eigen::Matrix3d::Identity() + c1 * k + c2 * k * k;
+}
+
 Eigen::Vector3d rotation_offset(const Eigen::Quaterniond& q, const Eigen::Vector3d& r) {
   const Eigen::Vector3d v = q.vec();
   const Eigen::Vector3d vr = v.cross(r);
@@ -85,14 +97,18 @@ BlockEquilibrium::BlockEquilibrium(const blocks::Polyhedron& block,
   // would take 1e5 elastic units of path: steps are scaled to a hundredth
   // of that slip instead.
   displacement_scale_ = std::max(displacement_scale_, slip_scale * kSlipScaleFraction);
+  slip_scale_ = slip_scale;
 }
 
 Vector6 BlockEquilibrium::unbalance(const Vector6& x, double load_factor, double divisor,
-                                    std::vector<JointResponse>* responses) const {
+                                    std::vector<JointResponse>* responses,
+                                    UnbalanceDerivatives* derivatives) const {
   const Eigen::Vector3d u = x.head<3>();
   const Eigen::Quaterniond q = rotation_quaternion(x.tail<3>());
+  const Eigen::Matrix3d jl = derivatives ? rotation_left_jacobian(x.tail<3>()) : Eigen::Matrix3d();
   Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
   if (responses) responses->resize(contacts_.size());
+  if (derivatives) *derivatives = UnbalanceDerivatives{};
   for (size_t k = 0; k < contacts_.size(); ++k) {
     const ContactPoint& c = contacts_[k];
     const Eigen::Vector3d turn = rotation_offset(q, arms_[k]);
@@ -103,15 +119,51 @@ Vector6 BlockEquilibrium::unbalance(const Vector6& x, double load_factor, double
     JointResponse r = laws_[k]->respond(committed_[k], closure, shear, divisor);
     const Eigen::Vector3d f =
         c.area * (r.normal_stress * c.normal - r.shear_stress(0) * c.t1 - r.shear_stress(1) * c.t2);
+    const Eigen::Vector3d arm = arms_[k] + turn;
     force += f;
-    moment += (arms_[k] + turn).cross(f);
+    moment += arm.cross(f);
+    if (derivatives && !r.tangent.isZero(0.0)) {
+      // (closure, shear) = G d + load_factor (closure0, shear0); f = area H
+      // (sigma, tau), H = -G^T; d(arm) / dx = [0, -[arm]x J_l].
+      Eigen::Matrix3d g;
+      g << -c.normal.transpose(), c.t1.transpose(), c.t2.transpose();
+      Eigen::Matrix<double, 3, 6> d_arm = Eigen::Matrix<double, 3, 6>::Zero();
+      d_arm.rightCols<3>() = -skew(arm) * jl;
+      Eigen::Matrix<double, 3, 6> d_d = d_arm;
+      d_d.leftCols<3>() = Eigen::Matrix3d::Identity();
+      const Eigen::Matrix3d h = -c.area * g.transpose();
+      const Eigen::Matrix<double, 3, 6> df = h * r.tangent * g * d_d;
+      const Eigen::Vector3d df_load =
+          h * r.tangent * Eigen::Vector3d(closure0_[k], shear0_[k](0), shear0_[k](1));
+      const Eigen::Vector3d df_div = h * r.divisor_rate;
+      derivatives->motion.topRows<3>() += df;
+      derivatives->motion.bottomRows<3>() += skew(arm) * df - skew(f) * d_arm;
+      derivatives->load_factor.head<3>() += df_load;
+      derivatives->load_factor.tail<3>() += arm.cross(df_load);
+      derivatives->divisor.head<3>() += df_div;
+      derivatives->divisor.tail<3>() += arm.cross(df_div);
+    }
     if (responses) (*responses)[k] = std::move(r);
   }
   for (const RigidLoad& l : loads_.loads) {
     const Eigen::Vector3d arm = l.arm + rotation_offset(q, l.arm);
-    const Eigen::Vector3d f = load_factor * (l.follower ? q * l.force : l.force);
+    const Eigen::Vector3d unit_force = l.follower ? q * l.force : l.force;
+    const Eigen::Vector3d unit_couple = l.follower ? q * l.couple : l.couple;
+    const Eigen::Vector3d f = load_factor * unit_force;
     force += f;
-    moment += arm.cross(f) + load_factor * (l.follower ? q * l.couple : l.couple);
+    moment += arm.cross(f) + load_factor * unit_couple;
+    if (derivatives) {
+      const Eigen::Matrix3d d_arm = -skew(arm) * jl;
+      derivatives->motion.bottomRightCorner<3, 3>() -= skew(f) * d_arm;
+      if (l.follower) {
+        const Eigen::Matrix3d df = -load_factor * skew(unit_force) * jl;
+        derivatives->motion.topRightCorner<3, 3>() += df;
+        derivatives->motion.bottomRightCorner<3, 3>() +=
+            skew(arm) * df - load_factor * skew(unit_couple) * jl;
+      }
+      derivatives->load_factor.head<3>() += unit_force;
+      derivatives->load_factor.tail<3>() += arm.cross(unit_force) + unit_couple;
+    }
   }
   Vector6 out;
   out << force, moment;

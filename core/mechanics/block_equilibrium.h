@@ -31,9 +31,20 @@ using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
 // The unit quaternion of a rotation vector (angle x unit axis).
 Eigen::Quaterniond rotation_quaternion(const Eigen::Vector3d& rotation_vector);
+// The left Jacobian of the rotation vector: R(w + dw) = Exp(J_l(w) dw) R(w)
+// to first order, so d(R r)/dw = -[R r]x J_l(w).
+Eigen::Matrix3d rotation_left_jacobian(const Eigen::Vector3d& rotation_vector);
 // (R - I) r for the rotation q, without the cancellation of R r - r at
 // tiny angles: 2 w (v x r) + 2 v x (v x r), q = (w, v).
 Eigen::Vector3d rotation_offset(const Eigen::Quaterniond& q, const Eigen::Vector3d& r);
+
+// The derivatives of BlockEquilibrium::unbalance, from the joint laws'
+// consistent tangents and the exact kinematics of the rotation.
+struct UnbalanceDerivatives {
+  Matrix6 motion = Matrix6::Zero();       // d unbalance / dx
+  Vector6 load_factor = Vector6::Zero();  // d unbalance / d load_factor
+  Vector6 divisor = Vector6::Zero();      // d unbalance / d divisor
+};
 
 class BlockEquilibrium {
  public:
@@ -48,8 +59,10 @@ class BlockEquilibrium {
   // motion x, loads and in-situ stress times load_factor, shear strengths
   // divided by divisor, from the committed joint states. Zero in
   // equilibrium.
+  // derivatives: filled when given.
   Vector6 unbalance(const Vector6& x, double load_factor, double divisor,
-                    std::vector<JointResponse>* responses = nullptr) const;
+                    std::vector<JointResponse>* responses = nullptr,
+                    UnbalanceDerivatives* derivatives = nullptr) const;
   // Accepts the motion: the joints' states move on.
   void commit(const Vector6& x, double load_factor, double divisor);
 
@@ -61,6 +74,7 @@ class BlockEquilibrium {
   double load_scale() const { return load_scale_; }                  // N
   double length() const { return length_; }                          // m
   double displacement_scale() const { return displacement_scale_; }  // m, the path's unit
+  double slip_scale() const { return slip_scale_; }  // m, the largest of the laws' (0: none)
   const std::vector<ContactPoint>& contacts() const { return contacts_; }
   const std::vector<JointState>& committed() const { return committed_; }
   const BlockLoads& loads() const { return loads_; }
@@ -81,7 +95,7 @@ class BlockEquilibrium {
   double mass_ = 0;
   Eigen::Matrix3d inertia_;
   std::vector<Eigen::Vector3d> vertex_arms_;
-  double load_scale_ = 1, length_ = 1, displacement_scale_ = 1;
+  double load_scale_ = 1, length_ = 1, displacement_scale_ = 1, slip_scale_ = 0;
 };
 
 }  // namespace rockface::mechanics

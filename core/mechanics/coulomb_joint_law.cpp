@@ -30,6 +30,7 @@ JointResponse CoulombJointLaw::respond(const JointState& committed, double closu
   const double trial_norm = trial.norm();
   r.shear_stress = trial;
   r.stage = committed.slip_length > 0 ? JointStage::PostPeak : JointStage::Elastic;
+  r.tangent.diagonal() << kn_, ks_, ks_;
   if (strength_divisor <= 0) return r;
   const double limit = strength(r.normal_stress, committed) / strength_divisor;
   if (trial_norm <= limit) return r;
@@ -43,6 +44,12 @@ JointResponse CoulombJointLaw::respond(const JointState& committed, double closu
   r.shear_stress = limit * dir;
   r.stage = JointStage::PostPeak;
   r.slipping = true;
+  // Tangent of the return: the traction's size follows the normal stress,
+  // its direction the trial's (which turns by ks / |trial| per unit shear).
+  r.tangent.block<2, 1>(1, 0) = kn_ * tan_phi_ / strength_divisor * dir;
+  r.tangent.block<2, 2>(1, 1) =
+      limit / trial_norm * ks_ * (Eigen::Matrix2d::Identity() - dir * dir.transpose());
+  r.divisor_rate.tail<2>() = -limit / strength_divisor * dir;
   return r;
 }
 

@@ -9,6 +9,7 @@
 #include "core/mechanics/block_equilibrium.h"
 #include "core/mechanics/block_loads.h"
 #include "core/mechanics/contact_points.h"
+#include "core/mechanics/tolerances.h"
 
 namespace rockface::mechanics {
 
@@ -64,6 +65,17 @@ class PathProblem final : public ContinuationProblem {
   Eigen::VectorXd residual(const Eigen::VectorXd& x, double p) const override {
     return dr_.cwiseInverse().asDiagonal() *
            eq_.unbalance(motion(x), loading_ ? p : 1.0, loading_ ? divisor_ : p);
+  }
+  bool residual_and_jacobian(const Eigen::VectorXd& x, double p, Eigen::VectorXd& r,
+                             Eigen::MatrixXd& jx, Eigen::VectorXd& jp) const override {
+    UnbalanceDerivatives d;
+    const Vector6 unbalance =
+        eq_.unbalance(motion(x), loading_ ? p : 1.0, loading_ ? divisor_ : p, nullptr, &d);
+    const Vector6 inv = dr_.cwiseInverse();
+    r = inv.asDiagonal() * unbalance;
+    jx = inv.asDiagonal() * d.motion * dx_.asDiagonal();
+    jp = inv.asDiagonal() * (loading_ ? d.load_factor : d.divisor);
+    return true;
   }
   Eigen::MatrixXd fallback_jacobian() const override {
     return -(dr_.cwiseInverse().asDiagonal() * eq_.elastic_stiffness() * dx_.asDiagonal());
@@ -132,6 +144,12 @@ EquilibriumPath equilibrium_path(const blocks::Polyhedron& block,
   co.max_steps = options.max_steps;
   co.p_max = options.lambda_max;
   co.progress = options.progress;
+  co.difference_jacobian = options.difference_tangent;
+  // Steps of at most kPathSlipFraction of the joints' slip scale: the
+  // staged laws' history is integrated step by step (none for Coulomb).
+  if (eq.slip_scale() > 0)
+    co.max_step =
+        std::max(kPathSlipFraction * eq.slip_scale() / eq.displacement_scale(), options.step);
 
   // 1. Loading at strengths x 1 / lambda_start.
   PathProblem loading(eq, true, options.lambda_start);
@@ -214,7 +232,10 @@ EquilibriumPath equilibrium_path(const blocks::Polyhedron& block,
   if (out.flutter_lambda && out.stability != StabilityKind::Flutter) {
     std::ostringstream note;
     note << "the tangent has complex eigenvalues (flutter of the linearised motion) from lambda = "
-         << *out.flutter_lambda << ", while joints slip partly";
+         << *out.flutter_lambda
+         << ", while joints slip partly: a slipping joint's tangent is not symmetric (its "
+            "friction is not associated with its dilation), which couples two modes of the "
+            "block; equilibrium is not lost there";
     out.notes.push_back(note.str());
   }
   return out;

@@ -20,9 +20,18 @@
 // of the equilibrium (stability_analysis.h): how equilibrium is lost at the
 // limit point (divergence, or flutter when the critical pair is complex).
 // Along the path every accepted point is checked for flutter too, which the
-// static path cannot see: the first lambda with a complex pair is kept
-// (with partly slipping, non-associated joints the tangent is not
-// symmetric, and such pairs are common before the limit).
+// static path cannot see: the first lambda with a complex pair is kept.
+// The tangent is the joint laws' consistent one (exact, not differences).
+// Such pairs before the limit are the tangent's, not rounding: a slipping
+// contact's tangent is not symmetric (d shear / d closure is friction,
+// kn tan(phi), d normal / d shear is dilation, -kn tan(d); a
+// non-associated law has d < phi, Coulomb d = 0), and while some joints
+// slip and others stick this couples two of the block's modes whose
+// eigenvalues are close into a complex pair (the mode coupling of friction
+// flutter). They come and go along the path; at the limit the critical mu
+// is real (divergence) for sliding. The tangent is the loading branch's: a
+// contact that unloads is elastic, so such a pair flags a possible
+// oscillation of the linearised motion, not a loss of equilibrium.
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +55,9 @@ struct MechanicsOptions {
   int max_steps = 400;         // accepted continuation steps
   double lambda_start = 0.05;  // strengths x 20 while the loads are applied
   double lambda_max = 20;      // no limit point below this: reported as such
+  // The path's tangent by forward differences of the equilibrium instead of
+  // the joint laws' consistent tangents (the earlier method; for comparison).
+  bool difference_tangent = false;
   Progress* progress = nullptr;
 };
 

@@ -47,6 +47,13 @@ struct JointResponse {
   JointStage stage = JointStage::Open;
   bool slipping = false;  // the strength was reached in this step
   JointState state;       // after the step (commit it when the step is accepted)
+  // The consistent tangent of this response (the derivatives of the
+  // tractions above, return mapping included, from the same committed
+  // state): d(normal_stress, shear_stress) / d(closure, shear), Pa/m, and
+  // d(normal_stress, shear_stress) / d(strength_divisor), Pa. Path
+  // following uses them instead of differences.
+  Eigen::Matrix3d tangent = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d divisor_rate = Eigen::Vector3d::Zero();
 };
 
 class JointLaw {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/common/units.h"
 #include "core/mechanics/tolerances.h"
@@ -39,6 +40,14 @@ double BartonBandisPeak::peak_angle(double sigma_n) const {
   return cap_peak(phi_r_, phi_r_ + deg_to_rad(std::max(i_deg, 0.0)));
 }
 
+double BartonBandisPeak::peak_angle_slope(double sigma_n) const {
+  const double i_deg = jrc_n_ * std::log10(jcs_n_ / sigma_n);
+  const double angle = phi_r_ + deg_to_rad(i_deg);
+  // Capped (70 degrees) or no roughness mobilised (sigma_n >= JCS): flat.
+  if (!(i_deg > 0) || angle >= deg_to_rad(kMaxPeakFrictionDeg)) return 0;
+  return -deg_to_rad(jrc_n_ / (sigma_n * std::numbers::ln10));
+}
+
 GrasselliPeak::GrasselliPeak(const JointLawParameters& p)
     : phi_r_(p.phi_r.value_or(p.phi_b)),
       a0_(p.contact_area),
@@ -52,6 +61,16 @@ double GrasselliPeak::peak_angle(double sigma_n) const {
       1.0 + std::exp(-theta_max_deg_ / (9.0 * a0_ * (c_ + 1.0)) * sigma_n / sigma_t_);
   const double angle = phi_r_ + deg_to_rad(std::pow(theta_max_deg_ / c_, 1.18));
   return cap_peak(phi_r_, std::atan(factor * std::tan(angle)));
+}
+
+double GrasselliPeak::peak_angle_slope(double sigma_n) const {
+  const double rate = theta_max_deg_ / (9.0 * a0_ * (c_ + 1.0)) / sigma_t_;
+  const double factor = 1.0 + std::exp(-rate * sigma_n);
+  const double tan_angle = std::tan(phi_r_ + deg_to_rad(std::pow(theta_max_deg_ / c_, 1.18)));
+  const double raw = std::atan(factor * tan_angle);
+  if (raw <= phi_r_ || raw >= std::max(phi_r_, deg_to_rad(kMaxPeakFrictionDeg))) return 0;
+  const double x = factor * tan_angle;
+  return -rate * std::exp(-rate * sigma_n) * tan_angle / (1 + x * x);
 }
 
 std::unique_ptr<PeakStrength> make_peak_strength(const JointLawParameters& p) {

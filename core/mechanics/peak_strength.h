@@ -18,6 +18,10 @@ class PeakStrength {
   virtual double residual_angle() const = 0;
   // Peak friction angle phi_r + i (radians) at sigma_n > 0 (Pa).
   virtual double peak_angle(double sigma_n) const = 0;
+  // d peak_angle / d sigma_n (radians per Pa): the staged law's analytic
+  // tangent needs how the peak moves with the normal stress. 0 where the
+  // angle is capped.
+  virtual double peak_angle_slope(double sigma_n) const = 0;
   // Shear displacement at the peak (m).
   virtual double peak_displacement() const = 0;
 };
@@ -32,6 +36,7 @@ class BartonBandisPeak final : public PeakStrength {
   explicit BartonBandisPeak(const JointLawParameters& p);
   double residual_angle() const override { return phi_r_; }
   double peak_angle(double sigma_n) const override;
+  double peak_angle_slope(double sigma_n) const override;
   double peak_displacement() const override { return delta_p_; }
   double jrc() const { return jrc_n_; }  // after the scale correction
   double jcs() const { return jcs_n_; }
@@ -50,6 +55,7 @@ class GrasselliPeak final : public PeakStrength {
   explicit GrasselliPeak(const JointLawParameters& p);
   double residual_angle() const override { return phi_r_; }
   double peak_angle(double sigma_n) const override;
+  double peak_angle_slope(double sigma_n) const override;
   double peak_displacement() const override { return delta_p_; }
 
  private:

@@ -25,8 +25,21 @@
 // tan(d_p) kappa_p / 2)), tan(i / M) in C. Slip back towards the origin
 // rides down the asperities: dilation decreases, never below zero.
 // Hardening is isotropic in the accumulated slip; slip is a radial return.
+//
+// The return of a slipping step solves two equations in the slip dg and
+// the normal stress sigma at the end of the step: sigma = kn (closure +
+// v(dg, sigma)) (the dilation of the step loads the normal spring) and
+// |trial| - ks dg = S(dg, sigma) / divisor. In stage B with sigma fixed the
+// second is a quadratic in sqrt(slip / kappa_p), solved in closed form: the
+// return is exact without dilation, and it is the start of a Newton
+// iteration otherwise (a stiff joint's dilation changes sigma by kn x dv,
+// which a fixed point on sigma does not survive at 1e12 Pa/m). The explicit
+// update is evaluated on dual numbers, so Newton and the consistent tangent
+// (JointResponse::tangent, by the implicit function theorem at the
+// solution) use its exact derivatives.
 #include <memory>
 
+#include "core/mechanics/dual_number.h"
 #include "core/mechanics/joint_law.h"
 #include "core/mechanics/peak_strength.h"
 
@@ -52,6 +65,20 @@ class StagedJointLaw final : public JointLaw {
   double softened_roughness(double sigma_n, const JointState& state) const;
 
  private:
+  // The explicit update of a slipping step: slip dg along dir at the normal
+  // stress sigma (duals in (dg, sigma)) -> the state after the step, its
+  // dilation v and its strength S (before the divisor).
+  struct SlipUpdate {
+    JointState state;
+    Dual dilation;
+    Dual strength;
+  };
+  SlipUpdate slip_update(const JointState& committed, const Eigen::Vector2d& dir, const Dual& dg,
+                         const Dual& sigma) const;
+  // The slip of the step in closed form with sigma held at sigma0 (stage
+  // B's quadratic; perfectly plastic at the current strength otherwise).
+  double closed_form_slip(const JointState& committed, double sigma0, double trial_norm,
+                          double divisor) const;
   JointStage stage_of(double sigma_n, const JointState& s) const;
 
   JointLawParameters p_;

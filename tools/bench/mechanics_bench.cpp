@@ -151,26 +151,36 @@ void BM_Prism12Preset(benchmark::State& state) {
 
 // The staged Barton-Bandis law (JRC 10, JCS 100 MPa, phi_b 30) on the
 // plane slab: arg 0 the normal stiffness exponent (10: 1e10 Pa/m), arg 1
-// the contact density.
+// the contact density, arg 2 the tangent of the path (0: the laws'
+// consistent tangents, 1: forward differences, the earlier method).
 void BM_BartonSlab(benchmark::State& state) {
   const Case c = plane_case();
   mech::MechanicsOptions o;
   o.contact_density = static_cast<int>(state.range(1));
+  o.difference_tangent = state.range(2) == 1;
   const auto m = rockface::blocks::mass_properties(c.block, kRho);
   const auto laws = mech::testing::laws(
       c.block, mech::testing::barton(10, std::pow(10.0, static_cast<double>(state.range(0)))));
   mech::EquilibriumPath r;
   for (auto _ : state) r = mech::equilibrium_path(c.block, m, c.effects, laws, std::nullopt, o);
+  state.SetLabel(o.difference_tangent ? "differences" : "consistent");
   report(state, r, r.fos_limit_point.value_or(NAN));
   state.counters["lambda_end"] = r.path.back().lambda;
+  state.counters["rejected"] = r.rejected_steps;
+  state.counters["flutter_from"] = r.flutter_lambda.value_or(NAN);
 }
 
 }  // namespace
 
 BENCHMARK(BM_BartonSlab)
-    ->Args({10, 2})
-    ->Args({10, 3})
-    ->Args({12, 2})
+    ->Args({10, 2, 0})
+    ->Args({10, 3, 0})
+    ->Args({12, 2, 0})
+    ->Args({12, 3, 0})
+    ->Args({10, 2, 1})
+    ->Args({10, 3, 1})
+    ->Args({12, 2, 1})
+    ->Args({12, 3, 1})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 BENCHMARK(BM_PlaneDensity)->Arg(1)->Arg(2)->Arg(3)->Arg(6)->Unit(benchmark::kMillisecond);
