@@ -69,34 +69,37 @@ StagedJointLaw::SlipUpdate StagedJointLaw::slip_update(const JointState& committ
                                                        const Eigen::Vector2d& dir, const Dual& dg,
                                                        const Dual& sigma) const {
   const double phi_r = peak_->residual_angle();
-  const Dual phi_p(peak_->peak_angle(sigma.v), peak_->peak_angle_slope(sigma.v) * sigma.d);
+  const Dual phi_p(peak_->peak_angle(sigma.value()),
+                   peak_->peak_angle_slope(sigma.value()) * sigma.derivatives());
   const Dual i_p = phi_p - phi_r;
   const Dual tan_p = tan(phi_p);
-  const Dual kappa_p = max(peak_->peak_displacement() - sigma * tan_p / ks_, Dual(0.0));
+  const Dual kappa_p = max(Dual(peak_->peak_displacement() - sigma * tan_p / ks_), Dual(0.0));
   const Dual tan_dp = p_.dilation ? tan(i_p / p_.dilation_divisor) : Dual(0.0);
   SlipUpdate u;
   u.state = committed;
-  u.state.slip += dg.v * dir;
+  u.state.slip += dg.value() * dir;
   const double k0 = committed.slip_length;
   const Dual k1 = k0 + dg;
-  u.state.slip_length = k1.v;
+  u.state.slip_length = k1.value();
   // The softening energy: fixed when the peak was passed, or now.
   Dual wc = committed.softening_energy;
-  auto softened = [&](const Dual& work) { return wc.v > 0 ? i_p * exp(-work / wc) : i_p; };
+  auto softened = [&](const Dual& work) -> Dual {
+    return wc.value() > 0 ? i_p * exp(-work / wc) : i_p;
+  };
   Dual dv = 0.0;
   Dual excess = 0.0;  // slip past the peak in this step
   if (committed.past_peak) {
     if (p_.dilation) dv = tan(softened(committed.work) / p_.dilation_divisor) * dg;
     excess = dg;
-  } else if (kappa_p.v > 0 && k1.v <= kappa_p.v) {
+  } else if (kappa_p.value() > 0 && k1.value() <= kappa_p.value()) {
     dv = tan_dp * (k1 * k1 - k0 * k0) / (2.0 * kappa_p);
   } else {
     const Dual kb = max(min(kappa_p, k1), Dual(k0));
-    if (kappa_p.v > 0) dv = tan_dp * (kb * kb - k0 * k0) / (2.0 * kappa_p);
+    if (kappa_p.value() > 0) dv = tan_dp * (kb * kb - k0 * k0) / (2.0 * kappa_p);
     excess = k1 - kb;
     dv += tan_dp * excess;
   }
-  if (excess.v > 0 && !committed.past_peak) {
+  if (excess.value() > 0 && !committed.past_peak) {
     u.state.past_peak = true;
     wc = p_.softening_energy ? Dual(*p_.softening_energy)
                              : kSofteningSlips * peak_->peak_displacement() * sigma * tan_p;
@@ -104,15 +107,15 @@ StagedJointLaw::SlipUpdate StagedJointLaw::slip_update(const JointState& committ
   // Moving away from the origin of slip rides up the asperities.
   const double sense = u.state.slip.dot(dir) >= 0 ? 1.0 : -1.0;
   const Dual v = committed.dilation + sense * dv;
-  u.dilation = v.v > 0 ? v : Dual(0.0);
-  u.state.dilation = u.dilation.v;
+  u.dilation = v.value() > 0 ? v : Dual(0.0);
+  u.state.dilation = u.dilation.value();
   if (u.state.past_peak) {
     Dual work = committed.work;
-    if (excess.v > 0) work += sigma * tan(phi_r + softened(work)) * excess;
-    u.state.work = work.v;
-    u.state.softening_energy = wc.v;
+    if (excess.value() > 0) work += sigma * tan(phi_r + softened(work)) * excess;
+    u.state.work = work.value();
+    u.state.softening_energy = wc.value();
     u.strength = sigma * tan(phi_r + softened(work));
-  } else if (kappa_p.v > 0 && k1.v < kappa_p.v) {
+  } else if (kappa_p.value() > 0 && k1.value() < kappa_p.value()) {
     const Dual t = sqrt(k1 / kappa_p);
     const Dual one_minus = 1.0 - t;
     u.strength = sigma * (tan_p - one_minus * one_minus * (tan_p - std::tan(phi_r)));
@@ -163,7 +166,7 @@ JointResponse StagedJointLaw::respond(const JointState& committed, double closur
     // residual that jumps with each Newton iterate).
     const SlipUpdate whole =
         slip_update(committed, trial / trial_norm, Dual(trial_norm / ks_), Dual(0.0));
-    contact = closure + whole.dilation.v > 0;
+    contact = closure + whole.dilation.value() > 0;
   }
   if (!contact) {
     // Open: no tractions; the shear spring relaxes onto the displacement.
@@ -196,10 +199,10 @@ JointResponse StagedJointLaw::respond(const JointState& committed, double closur
     Point pt;
     auto at = [&](double sigma) {
       pt.sigma = sigma;
-      pt.u = slip_update(committed, dir, Dual::variable(dg, 0), Dual::variable(sigma, 1));
-      const double gap = closure + pt.u.dilation.v;
-      pt.f_dg = gap > 0 ? -kn_ * pt.u.dilation.d(0) : 0.0;
-      pt.f_sigma = gap > 0 ? 1 - kn_ * pt.u.dilation.d(1) : 1.0;
+      pt.u = slip_update(committed, dir, dual_variable(dg, 0), dual_variable(sigma, 1));
+      const double gap = closure + pt.u.dilation.value();
+      pt.f_dg = gap > 0 ? -kn_ * pt.u.dilation.derivatives()(0) : 0.0;
+      pt.f_sigma = gap > 0 ? 1 - kn_ * pt.u.dilation.derivatives()(1) : 1.0;
       return sigma - kn_ * std::max(gap, 0.0);
     };
     const double f0 = at(0.0);
@@ -226,12 +229,13 @@ JointResponse StagedJointLaw::respond(const JointState& committed, double closur
     pt = normal_stress(dg, guess);
     if (it == kReturnMappingIterations) break;  // pt stays the point of dg
     guess = pt.sigma;
-    const double g = trial_norm - ks_ * dg - pt.u.strength.v / strength_divisor;
+    const double g = trial_norm - ks_ * dg - pt.u.strength.value() / strength_divisor;
     if (std::abs(g) <= kReturnMappingRel * trial_norm) break;
     (g > 0 ? lo : hi) = dg;
     const double dsigma = -pt.f_dg / pt.f_sigma;
     const double slope =
-        -ks_ - (pt.u.strength.d(0) + pt.u.strength.d(1) * dsigma) / strength_divisor;
+        -ks_ - (pt.u.strength.derivatives()(0) + pt.u.strength.derivatives()(1) * dsigma) /
+                   strength_divisor;
     double next = dg - g / slope;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (hi - lo <= kReturnMappingRel * dg_max) break;
@@ -251,10 +255,10 @@ JointResponse StagedJointLaw::respond(const JointState& committed, double closur
   }
   // Consistent tangent: d(dg, sigma) / d(closure, |trial|, divisor) from
   // the implicit function theorem on (F, G) at the solution.
-  const double s = pt.u.strength.v;
+  const double s = pt.u.strength.value();
   Eigen::Matrix2d a;
-  a << pt.f_dg, pt.f_sigma, -ks_ - pt.u.strength.d(0) / strength_divisor,
-      -pt.u.strength.d(1) / strength_divisor;
+  a << pt.f_dg, pt.f_sigma, -ks_ - pt.u.strength.derivatives()(0) / strength_divisor,
+      -pt.u.strength.derivatives()(1) / strength_divisor;
   Eigen::Matrix<double, 2, 3> b;
   b << -kn_, 0, 0, 0, 1, s / (strength_divisor * strength_divisor);
   const Eigen::Matrix<double, 2, 3> d = -a.inverse() * b;   // rows dg, sigma
