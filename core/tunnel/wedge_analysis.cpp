@@ -344,6 +344,7 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
               fit.scale = s;
             }
             w.place = WedgePlace::face;
+            for (const auto& t : tri) w.outline.push_back(fit.offset + fit.scale * t);
             w.removable = pv.removable;
             try {
               w.block = face_wedge_block(code, frame, datum, planes, fit, first_free + 1000);
@@ -458,6 +459,9 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
                                 ")");
           }
           centre /= len;
+          w.outline.push_back(q);
+          w.outline.push_back(base.front().a);
+          for (const auto& piece : base) w.outline.push_back(piece.b);
           w.segments.assign(segs.begin(), segs.end());
           w.position_deg =
               std::atan2(centre.y() - ctx.centre.y(), centre.x() - ctx.centre.x()) * kDeg;

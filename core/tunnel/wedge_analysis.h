@@ -91,6 +91,10 @@ struct Wedge {
   double shotcrete_force = 0;         // N
   double support_pressure = 0;        // Pa, support force over the face area
   double weight_pressure = 0;         // Pa, weight over the face area
+  // Seen along the axis (u, v): perimeter wedges the apex and then their
+  // face's outline from one end to the other; face wedges their triangle
+  // on the face.
+  std::vector<Eigen::Vector2d> outline;
   std::vector<std::size_t> segments;  // profile segments its face lies on
   std::vector<std::string> corners;   // the profile's corners it spans, in words
   std::vector<std::string> notes;
