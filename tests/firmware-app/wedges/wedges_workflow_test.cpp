@@ -14,7 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include "core/geometry/orientation.h"
+#include "firmware-app/wedges/report_wedges.h"
 #include "firmware-app/wedges/wedges_workflow.h"
+#include "storage/field_report/field_report.h"
 #include "storage/project_store.h"
 #include "storage/tunnel_files.h"
 #include "tests/support/test_paths.h"
@@ -222,6 +224,30 @@ TEST(WedgesVerb, ProjectVisitWithMeasuredSets) {
   const auto r = project_visit_wedges(store, visit, &why);
   ASSERT_TRUE(r) << why;
   EXPECT_EQ(r->analysis.wedges.size(), j["wedges"].size());
+  // The field report's section: one row per wedge, in words, and the picture.
+  storage::FieldReport report = storage::collect_field_report(store, visit);
+  add_wedges_to_report(store, report);
+  ASSERT_TRUE(report.wedges);
+  ASSERT_EQ(report.wedges->rows.size(), j["wedges"].size());
+  for (std::size_t i = 0; i < report.wedges->rows.size(); ++i) {
+    EXPECT_EQ(report.wedges->rows[i][0], j["wedges"][i]["id"]);
+    EXPECT_EQ(report.wedges->rows[i][1], j["wedges"][i]["place"]);
+  }
+  EXPECT_FALSE(report.wedges->picture.empty());
+}
+
+TEST(WedgesReport, NoTunnelNoSection) {
+  const fs::path dir = temp_dir("notunnel");
+  storage::ProjectInfo info;
+  info.name = "slope";
+  storage::ProjectStore store = storage::ProjectStore::create(dir / "p.rockface", info);
+  const storage::RecordId visit = store.begin_visit("a visit");
+  storage::FieldReport report = storage::collect_field_report(store, visit);
+  add_wedges_to_report(store, report);
+  EXPECT_FALSE(report.wedges);
+  std::string why;
+  EXPECT_FALSE(project_visit_wedges(store, visit, &why));
+  EXPECT_NE(why.find("no tunnel"), std::string::npos) << why;
 }
 
 }  // namespace
