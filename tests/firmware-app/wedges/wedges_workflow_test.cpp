@@ -13,10 +13,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/common/progress.h"
 #include "core/geometry/orientation.h"
+#include "firmware-app/services/ui_services.h"
 #include "firmware-app/wedges/report_wedges.h"
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/field_report/field_report.h"
+#include "storage/field_report/field_report_pdf.h"
 #include "storage/project_store.h"
 #include "storage/tunnel_files.h"
 #include "tests/support/test_paths.h"
@@ -234,6 +237,28 @@ TEST(WedgesVerb, ProjectVisitWithMeasuredSets) {
     EXPECT_EQ(report.wedges->rows[i][1], j["wedges"][i]["place"]);
   }
   EXPECT_FALSE(report.wedges->picture.empty());
+  // Printed: the PDF writer lays the section out (cairo keeps text compressed,
+  // so only that it writes is checked here).
+  storage::write_field_report_pdf(report, dir / "report.pdf");
+  EXPECT_GT(fs::file_size(dir / "report.pdf"), 20000u);
+  // The tablet's Wedges view: the same wedges, in words and units.
+  StoreWedgeRunner runner;
+  NoProgress progress;
+  const ui::WedgeTable table = runner.wedges(project, visit, progress);
+  ASSERT_EQ(table.rows.size(), j["wedges"].size());
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    ASSERT_EQ(table.rows[i].size(), table.columns.size());
+    EXPECT_EQ(table.rows[i][1], j["wedges"][i]["place"]);
+    // Margins to 0.1 degree with their unit, factors of safety to 2 decimals.
+    const std::string& margin = table.rows[i][7];
+    EXPECT_EQ(margin.substr(margin.size() - 2), "°");
+    EXPECT_EQ(margin[margin.size() - 4], '.');
+    const std::string& fos = table.rows[i][9];
+    if (fos != "stable" && fos != "-") {
+      EXPECT_EQ(fos[fos.size() - 3], '.') << fos;
+    }
+  }
+  EXPECT_FALSE(table.bgr.empty());
 }
 
 TEST(WedgesReport, NoTunnelNoSection) {
