@@ -250,6 +250,25 @@ TEST(WedgeAnalysis, TheSameWedgeTurnedWithTheAxisAndTheSets) {
   }
 }
 
+TEST(WedgeAnalysis, TheSameWedgeMovedToSurveyCoordinates) {
+  const WedgeAnalysis a = analyse_wedges(rectangle_profile(6, 5, -1), north_axis(),
+                                         Eigen::Vector3d::Zero(), symmetric_sets(55, 10), {});
+  // A section 300 m from the datum, the datum at survey coordinates of 10^6 m.
+  const Eigen::Vector3d datum(2.6e6, 1.2e6, 450), origin(120, -250, 31);
+  const WedgeAnalysis b =
+      analyse_wedges(rectangle_profile(6, 5, -1), axis_frame(0, 0, origin, "axis"), datum,
+                     symmetric_sets(55, 10), {});
+  ASSERT_EQ(a.wedges.size(), b.wedges.size());
+  for (std::size_t i = 0; i < a.wedges.size(); ++i) {
+    const Wedge& x = a.wedges[i];
+    const Wedge& y = b.wedges[i];
+    EXPECT_EQ(x.code, y.code);
+    // Datum-relative coordinates of a few hundred metres: rounding ~1e-13.
+    EXPECT_NEAR(y.mass.volume, x.mass.volume, 1e-9 * x.mass.volume) << x.code;
+    EXPECT_LT((y.apex - (x.apex + datum + origin)).norm(), 1e-6) << x.code;
+  }
+}
+
 TEST(WedgeAnalysis, CircleRoofWedgeLiesBetweenItsClosedFormBounds) {
   // Symmetric sets: seen along the axis the pyramid's sector is symmetric
   // about the vertical with half-angle theta, tan(theta) = sqrt(3) / tan(alpha);
