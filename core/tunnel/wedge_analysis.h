@@ -87,10 +87,10 @@ struct Wedge {
   std::vector<std::string> effects_used;  // what acted on it
   std::vector<WedgeBolt> bolts;           // pattern bolts on its face
   int bolts_anchored = 0;
-  double bolt_force = 0;              // N, sum of the anchored bolts'
-  double shotcrete_force = 0;         // N
-  double support_pressure = 0;        // Pa, support force over the face area
-  double weight_pressure = 0;         // Pa, weight over the face area
+  double bolt_force = 0;        // N, sum of the anchored bolts'
+  double shotcrete_force = 0;   // N
+  double support_pressure = 0;  // Pa, support force over the face area
+  double weight_pressure = 0;   // Pa, weight over the face area
   // Seen along the axis (u, v): perimeter wedges the apex and then their
   // face's outline from one end to the other; face wedges their triangle
   // on the face.
