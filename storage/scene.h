@@ -17,6 +17,7 @@
 #include "core/common/preset.h"
 #include "core/measure/picks.h"
 #include "storage/scene_tunnel.h"
+#include "storage/scene_wedges.h"
 
 namespace rockface::storage {
 
@@ -196,6 +197,7 @@ struct Scene {
   std::optional<measure::Picks> picks;
   // The tunnel the face lies in (docs/scene-extensions.md, "tunnel").
   std::optional<SceneTunnel> tunnel;
+  std::optional<SceneWedges> wedges;  // the wedges around the excavation (issue 23)
 
   const SceneJoint* joint(const std::string& id) const;
   const SceneFreeFace* free_face(const std::string& id) const;

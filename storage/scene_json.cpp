@@ -549,6 +549,12 @@ Scene parse_scene(const std::string& text, const std::string& source) {
         r.fail(t.where + ".joint", "unknown joint id \"" + t.joint + "\"");
   }
   if (auto* t = r.optional(doc, "", "tunnel")) s.tunnel = read_scene_tunnel(r, *t, source);
+  if (auto* w = r.optional(doc, "", "wedges")) {
+    s.wedges = read_scene_wedges(r, *w, source);
+    for (std::size_t i = 0; i < s.wedges->sets.size(); ++i)
+      if (!s.joint(s.wedges->sets[i]))
+        r.fail(Reader::index("wedges.sets", i), "unknown joint id \"" + s.wedges->sets[i] + "\"");
+  }
   check_references(r, s);
   return s;
 }

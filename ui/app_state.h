@@ -20,6 +20,7 @@
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
 #include "ui/tunnel_panel.h"
+#include "ui/wedges_view.h"
 #include "ui/widgets.h"
 
 namespace rockface::ui {
@@ -66,6 +67,7 @@ struct AppState {
   CaptureState capture;
   MappingState mapping;
   TunnelState tunnel;                         // the Project screen's tunnel panel
+  WedgesState wedges;                         // the Blocks screen's Wedges view
   std::optional<std::size_t> selected_block;  // index into session->blocks()
   MotionPlayback motion;                      // the selected block's motion after failure
   std::string status;                         // last message for the status bar

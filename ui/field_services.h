@@ -86,7 +86,7 @@ class TunnelRunner {
 struct MapBlock {
   std::vector<Eigen::Vector3d> outline;  // the loop on the surface, absolute, m
   BlockVerdict verdict = BlockVerdict::infinite;
-  std::string mode;  // "falling" | "lifting" | "sliding" | "none" | ""
+  std::string mode;  // "falling" | "lifting" | "sliding" | "none", as the stored analysis
   std::optional<double> factor_of_safety;
   double margin_deg = 0;  // of the deciding verdict (finiteness, else removability)
   double volume_m3 = 0;   // finite blocks
@@ -112,12 +112,33 @@ class TraceMapRunner {
                              Progress& progress) = 0;
 };
 
+// The wedges around the excavation (issue 23) for the Blocks screen's
+// Wedges view: the wedges of the project's tunnel with a visit's sets, as
+// a table already in words and units, with the section picture.
+struct WedgeTable {
+  std::vector<std::string> lines;    // the input: section, axis, sets, effects
+  std::vector<std::string> columns;  // headings with units
+  std::vector<std::vector<std::string>> rows;
+  std::vector<bool> marginal;      // per row: a verdict inside the uncertainty
+  std::vector<std::string> notes;  // corners crossed, pyramids with no wedge, assumptions
+  cv::Mat bgr;                     // the section and the largest wedges
+};
+
+class WedgeRunner {
+ public:
+  virtual ~WedgeRunner() = default;
+  // Throws rockface::InputError saying why (no tunnel, fewer than three sets).
+  virtual WedgeTable wedges(const std::filesystem::path& project, storage::RecordId visit_id,
+                            Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
   CameraConnector* camera = nullptr;               // null: no camera
   TunnelRunner* tunnel = nullptr;                  // null: the Project screen shows no tunnel views
   TraceMapRunner* trace_map = nullptr;             // null: the Mapping screen shows no blocks
+  WedgeRunner* wedges = nullptr;                   // null: the Blocks screen shows no Wedges view
 };
 
 }  // namespace rockface::ui

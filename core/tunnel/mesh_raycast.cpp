@@ -59,8 +59,8 @@ int MeshRaycaster::build(int first, int count, int depth) {
   }
   // Pad the box: a ray through a vertex or along an edge on the box's
   // boundary must not be lost to the rounding of the slab test.
-  const double pad = kBarycentricSlack * std::max(1.0, (node.hi - node.lo).maxCoeff() +
-                                                           node.lo.cwiseAbs().maxCoeff());
+  const double pad = kBarycentricSlack *
+                     std::max(1.0, (node.hi - node.lo).maxCoeff() + node.lo.cwiseAbs().maxCoeff());
   node.lo.array() -= pad;
   node.hi.array() += pad;
   const int id = static_cast<int>(nodes_.size());

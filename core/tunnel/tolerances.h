@@ -45,4 +45,25 @@ inline constexpr double kRayParallel = 1e-12;
 // lies within 1e-9 of its size from it, far below any mesh's accuracy).
 inline constexpr double kBarycentricSlack = 1e-9;
 
+// ---- wedges around the excavation (wedge_*.h) ----
+// A profile vertex where the outline turns by more than this (radians, 1
+// degree) is a corner (a horseshoe's wall meeting its invert, a rectangle's
+// corner); arcs drawn as chords turn by less at each chord (their sagitta
+// is kept below a millimetre, see WedgeOptions), and the joins of tangent
+// segments turn by rounding only.
+inline constexpr double kWedgeCornerRad = 0.017453292519943295;
+// Two wedge vertices closer than this, relative to the wedge's size, are one
+// (the pieces of a wedge compute shared corners separately; they agree to
+// ~1e-13 relative rounding).
+inline constexpr double kWedgeVertexMergeRel = 1e-9;
+// A joint pyramid edge whose projection on the cross-section is shorter than
+// this (sine of its angle to the axis) runs along the axis: the wedges it
+// bounds never end along the tunnel (a margin of 0).
+inline constexpr double kWedgeAlongAxisSine = 1e-12;
+// The face wedge's largest triangle is found by bisection of its scale to
+// this relative precision (far below the sagitta of the profile's chords).
+inline constexpr double kWedgeScaleRel = 1e-10;
+// A trace-length limit is met by bisection on the apex's position to this
+// relative precision of the limit.
+inline constexpr double kWedgeTraceRel = 1e-6;
 }  // namespace rockface::tunnel

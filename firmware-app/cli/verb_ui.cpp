@@ -30,7 +30,14 @@ int run_ui(const UiRequest& req) {
   FieldCameraConnector camera(req.camera);
   StoreTunnelRunner tunnel;
   StoreTraceMapRunner trace_map;
-  const ui::FieldServices services{&reconstruction, &analysis, &camera, &tunnel, &trace_map};
+  StoreWedgeRunner wedges;
+  ui::FieldServices services;
+  services.reconstruction = &reconstruction;
+  services.analysis = &analysis;
+  services.camera = &camera;
+  services.tunnel = &tunnel;
+  services.trace_map = &trace_map;
+  services.wedges = &wedges;
   if (req.script.empty()) {
     ui::run_in_window(options, services);
     return 0;

@@ -47,6 +47,12 @@ class StoreTraceMapRunner final : public ui::TraceMapRunner {
   std::unique_ptr<Cache> cache_;
 };
 
+class StoreWedgeRunner final : public ui::WedgeRunner {
+ public:
+  ui::WedgeTable wedges(const std::filesystem::path& project, storage::RecordId visit_id,
+                        Progress& progress) override;
+};
+
 // source: a scene with an imaging section, a folder of captures, or empty
 // (the first DSLR libgphoto2 finds).
 class FieldCameraConnector final : public ui::CameraConnector {

@@ -106,6 +106,16 @@ struct ReportedTunnel {
   std::vector<ReportedTunnelBlock> blocks;
 };
 
+// The wedges around the excavation (issue 23): filled by the application
+// (an analysis of the tunnel's profile and the visit's sets), absent when
+// the project has no tunnel or the visit fewer than three sets.
+struct ReportedWedges {
+  std::vector<std::string> lines;              // the input in words: section, axis, sets, support
+  std::vector<std::vector<std::string>> rows;  // one per wedge, in words and units
+  std::vector<std::string> notes;              // corners crossed, pyramids with no wedge, ...
+  cv::Mat picture;                             // BGR: the section and the largest wedges
+};
+
 struct FieldReport {
   std::string project_name, project_file;
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();
@@ -141,6 +151,7 @@ struct FieldReport {
   std::vector<ReportedBlock> blocks;
 
   std::optional<ReportedTunnel> tunnel;
+  std::optional<ReportedWedges> wedges;
 };
 
 // Reads everything the report shows for `visit_id` (InputError naming the

@@ -382,6 +382,36 @@ void dynamics_section(PdfPages& pdf, const FieldReport& r) {
   }
 }
 
+void wedges_section(PdfPages& pdf, const FieldReport& r) {
+  if (!r.wedges) return;
+  const ReportedWedges& w = *r.wedges;
+  pdf.heading("Wedges around the excavation", 0.3 * kPageH);
+  for (const auto& line : w.lines) pdf.line(line);
+  if (w.rows.empty())
+    pdf.line("no removable wedge");
+  else
+    pdf.table({{"wedge", 30},
+               {"place", 50},
+               {"code", 35},
+               {"volume m3", 45},
+               {"weight kN", 45},
+               {"apex m", 35},
+               {"bolt m", 35},
+               {"margin deg", 45},
+               {"mode", 85},
+               {"FoS", 30},
+               {"supported", 40}},
+              w.rows, kSmall);
+  for (const auto& note : w.notes) pdf.line(note, kSmall);
+  if (!w.picture.empty()) {
+    pdf.image(w.picture, 0.8 * PdfPages::text_width(), 0.6 * kPageH);
+    pdf.line(
+        "the wedges seen along the drive, and the largest in perspective; apex: height above "
+        "the chord of the wedge's face; bolt: length from the excavation to the apex",
+        kSmall);
+  }
+}
+
 }  // namespace
 
 void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& file) {
@@ -394,6 +424,7 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   camera_section(pdf, r);
   accuracy_section(pdf, r);
   tunnel_section(pdf, r);
+  wedges_section(pdf, r);
 
   pdf.heading("The face", 0.3 * kPageH);
   if (r.photograph.empty()) {

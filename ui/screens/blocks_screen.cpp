@@ -6,6 +6,7 @@
 
 #include "ui/motion_playback.h"
 #include "ui/screens/screens.h"
+#include "ui/wedges_view.h"
 
 namespace rockface::ui {
 
@@ -159,6 +160,14 @@ void start_analysis(AppState& app) {
 void draw_blocks_screen(AppState& app) {
   if (!app.session) {
     ImGui::TextWrapped("Open a project first (Project).");
+    return;
+  }
+  // The Wedges view (wedges around the excavation) in place of the blocks.
+  if (app.targets.button(app.wedges.open ? "Blocks view" : "Wedges view", 0, true))
+    app.wedges.open = !app.wedges.open;
+  ImGui::SameLine();
+  if (app.wedges.open) {
+    draw_wedges_view(app);
     return;
   }
   const bool can_run = app.services.analysis && app.session->visit() && !app.session->read_only() &&

@@ -1,0 +1,487 @@
+#include "core/tunnel/wedge_analysis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/common/error.h"
+#include "core/geometry/cone.h"
+#include "core/geometry/orientation.h"
+#include "core/kinematics/block_analysis.h"
+#include "core/kinematics/effects/effect_bolt.h"
+#include "core/kinematics/effects/effect_gravity.h"
+#include "core/kinematics/effects/effect_seismic.h"
+#include "core/kinematics/effects/effect_shotcrete.h"
+#include "core/kinematics/effects/effect_water.h"
+#include "core/kinematics/joint_pyramids.h"
+#include "core/tunnel/tolerances.h"
+#include "core/tunnel/wedge_geometry.h"
+
+namespace rockface::tunnel {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = 180.0 / kPi;
+
+std::string fixed1(double v) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(1);
+  s << v;
+  return s.str();
+}
+
+kinematics::Effects load_effects(const WedgeOptions& o) {
+  kinematics::Effects e;
+  e.push_back(std::make_unique<kinematics::GravityEffect>(o.gravity));
+  if (o.water)
+    e.push_back(std::make_unique<kinematics::WaterEffect>(
+        o.water->unit_weight, o.water->phreatic_point, o.water->phreatic_normal, o.water->sets));
+  if (o.seismic) e.push_back(std::make_unique<kinematics::SeismicEffect>(*o.seismic));
+  return e;
+}
+
+void check_options(const WedgeOptions& o) {
+  if (!(o.density > 0)) throw InputError("rock.density", "must be positive");
+  if (o.trace_length_limit && !(*o.trace_length_limit > 0))
+    throw InputError("wedges.trace_length", "must be a positive number of metres");
+  if (o.bolts) {
+    const auto& b = *o.bolts;
+    if (!(b.length > 0)) throw InputError("wedges.support.bolts.length", "must be positive (m)");
+    if (!(b.spacing > 0)) throw InputError("wedges.support.bolts.spacing", "must be positive (m)");
+    if (!(b.capacity > 0))
+      throw InputError("wedges.support.bolts.capacity", "must be positive (N)");
+    if (b.bond_strength && !(*b.bond_strength > 0))
+      throw InputError("wedges.support.bolts.bond_strength", "must be positive (N/m)");
+  }
+  if (o.shotcrete) {
+    if (!(o.shotcrete->thickness > 0))
+      throw InputError("wedges.support.shotcrete.thickness", "must be positive (m)");
+    if (!(o.shotcrete->shear_strength > 0))
+      throw InputError("wedges.support.shotcrete.shear_strength", "must be positive (Pa)");
+  }
+}
+
+// Length of each joint's trace on the excavation (edges between a joint
+// face and a free face), in the order of the block's planes.
+std::vector<std::pair<std::string, double>> traces_of(const blocks::Polyhedron& b) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& e : b.edges()) {
+    const auto& pl = b.planes()[b.faces()[e.left].plane];
+    const auto& pr = b.planes()[b.faces()[e.right].plane];
+    if ((pl.kind == blocks::PlaneKind::FreeFace) == (pr.kind == blocks::PlaneKind::FreeFace))
+      continue;
+    const std::string& joint = pl.kind == blocks::PlaneKind::Joint ? pl.name : pr.name;
+    const double len = (b.vertices()[e.v1] - b.vertices()[e.v0]).norm();
+    auto it = std::find_if(out.begin(), out.end(), [&](const auto& p) { return p.first == joint; });
+    if (it == out.end())
+      out.emplace_back(joint, len);
+    else
+      it->second += len;
+  }
+  return out;
+}
+
+double longest(const std::vector<std::pair<std::string, double>>& t) {
+  double m = 0;
+  for (const auto& [id, len] : t) m = std::max(m, len);
+  return m;
+}
+
+WedgePlace place_of(double angle_deg) {
+  double a = std::fmod(angle_deg + 360.0, 360.0);
+  if (a >= 45 && a <= 135) return WedgePlace::roof;
+  if (a > 135 && a < 225) return WedgePlace::left_wall;
+  if (a >= 225 && a <= 315) return WedgePlace::floor;
+  return WedgePlace::right_wall;
+}
+
+bool support_here(const SupportPlaces& s, WedgePlace p) {
+  switch (p) {
+    case WedgePlace::roof:
+      return s.roof;
+    case WedgePlace::right_wall:
+    case WedgePlace::left_wall:
+      return s.walls;
+    case WedgePlace::floor:
+      return s.floor;
+    case WedgePlace::face:
+      return s.face;
+  }
+  return false;
+}
+
+struct Context {
+  const SectionPolygon& section;
+  const TunnelFrame& frame;
+  const Eigen::Vector3d& datum;
+  const std::vector<WedgeJointSet>& sets;
+  const WedgeOptions& options;
+  const kinematics::Effects& loads;
+  Eigen::Vector2d centre;
+};
+
+// Mass, mode, factors of safety and support of a built wedge.
+void analyse_wedge(const Context& c, Wedge& w, const std::vector<WedgePlane>& planes,
+                   const Eigen::Vector3d& apex_local) {
+  std::vector<kinematics::JointStrength> strengths;
+  for (const auto& p : w.block.planes()) {
+    kinematics::JointStrength s;
+    if (p.kind == blocks::PlaneKind::Joint && p.index >= 0 &&
+        p.index < static_cast<int>(c.sets.size())) {
+      s.friction = c.sets[p.index].friction;
+      s.cohesion = c.sets[p.index].cohesion;
+    }
+    strengths.push_back(s);
+  }
+  kinematics::BlockAnalysisInput in;
+  in.density = c.options.density;
+  in.strengths = strengths;
+  in.effects = &c.loads;
+  in.uncertainty = c.options.uncertainty;
+  const kinematics::BlockAnalysis a = kinematics::analyse_block(w.block, in);
+  w.mass = a.mass;
+  w.weight = a.mass.mass * c.options.gravity.norm();
+  w.effects_used = a.effects_used;
+  w.notes.insert(w.notes.end(), a.notes.begin(), a.notes.end());
+  const std::vector<kinematics::ContactPlane> contacts =
+      kinematics::block_contacts(w.block, a.mass, strengths);
+  if (a.mode)
+    w.mode = a.mode;
+  else if (w.removable.value || w.removable.marginal)
+    w.mode = kinematics::sliding_mode(a.force, contacts, c.options.uncertainty);
+  if (w.mode) w.fos = w.mode->fos;
+  w.face_perimeter = kinematics::free_face_outline(w.block);
+  for (std::size_t f = 0; f < w.block.faces().size(); ++f)
+    if (w.block.planes()[w.block.faces()[f].plane].kind == blocks::PlaneKind::FreeFace)
+      w.face_area += a.mass.face_areas[f];
+  if (w.face_area > 0) w.weight_pressure = w.weight / w.face_area;
+  if (!w.mode || !(c.options.bolts || c.options.shotcrete)) return;
+
+  Eigen::Vector3d support = Eigen::Vector3d::Zero();
+  if (c.options.bolts) {
+    std::vector<Eigen::Vector3d> inward;
+    for (const auto& p : planes) inward.push_back(p.inward());
+    w.bolts = pattern_bolts_on_wedge(*c.options.bolts, w.block, c.section, c.frame,
+                                     w.place == WedgePlace::face, apex_local, inward);
+    for (std::size_t i = 0; i < w.bolts.size(); ++i) {
+      const WedgeBolt& b = w.bolts[i];
+      if (!(b.force > 0)) continue;
+      const kinematics::BoltEffect bolt("bolt " + std::to_string(i + 1), b.head, b.direction,
+                                        b.force);
+      const kinematics::EffectLoad l = bolt.load(w.block, a.mass);
+      if (!l.acts) continue;
+      support += l.force;
+      w.bolt_force += b.force;
+      ++w.bolts_anchored;
+    }
+    if (w.bolts_anchored > 0) w.effects_used.push_back("bolts");
+    const int short_bolts = static_cast<int>(w.bolts.size()) - w.bolts_anchored;
+    if (short_bolts > 0)
+      w.notes.push_back(std::to_string(short_bolts) + " of the " + std::to_string(w.bolts.size()) +
+                        " pattern bolts on it end inside the wedge: they hold nothing");
+  }
+  if (c.options.shotcrete && support_here(c.options.shotcrete->places, w.place) &&
+      w.mode->type != kinematics::ModeType::None) {
+    const kinematics::ShotcreteEffect sc("shotcrete", c.options.shotcrete->thickness,
+                                         c.options.shotcrete->shear_strength, w.mode->direction);
+    const kinematics::EffectLoad l = sc.load(w.block, a.mass);
+    if (l.acts) {
+      support += l.force;
+      w.shotcrete_force = l.force.norm();
+      w.effects_used.push_back("shotcrete");
+    }
+  }
+  const SupportedFos s = supported_fos(*w.mode, contacts, a.force, support);
+  w.fos_supported = s.fos;
+  for (int p : s.lifted_planes)
+    for (const auto& bp : w.block.planes())
+      if (bp.index == p && bp.kind == blocks::PlaneKind::Joint)
+        w.notes.push_back("the support lifts the wedge off " + bp.name);
+  if (w.face_area > 0) w.support_pressure = (w.bolt_force + w.shotcrete_force) / w.face_area;
+}
+
+std::string code_text(std::size_t n, const std::vector<int>& idx, const std::vector<double>& sign) {
+  std::string code(n, '2');
+  for (std::size_t k = 0; k < idx.size(); ++k) code[idx[k]] = sign[k] > 0 ? '0' : '1';
+  return code;
+}
+
+}  // namespace
+
+const char* wedge_place_name(WedgePlace p) {
+  switch (p) {
+    case WedgePlace::roof:
+      return "roof";
+    case WedgePlace::right_wall:
+      return "right wall";
+    case WedgePlace::left_wall:
+      return "left wall";
+    case WedgePlace::floor:
+      return "floor";
+    case WedgePlace::face:
+      return "face";
+  }
+  return "?";
+}
+
+TunnelFrame axis_frame(double trend, double plunge, const Eigen::Vector3d& origin,
+                       const std::string& where) {
+  if (!std::isfinite(trend) || !std::isfinite(plunge) || std::abs(plunge) > kPi / 2)
+    throw InputError(where, "trend and plunge must be finite, the plunge within +-90 degrees");
+  TunnelFrame f;
+  f.origin = origin;
+  f.along = geometry::line_direction({trend, plunge});
+  const Eigen::Vector3d r = f.along.cross(Eigen::Vector3d::UnitZ());
+  if (r.norm() < 1e-6)
+    throw InputError(where, "a vertical axis is a shaft: its walls have no roof or floor");
+  f.right = r.normalized();
+  f.up = f.right.cross(f.along).normalized();
+  return f;
+}
+
+WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& frame,
+                             const Eigen::Vector3d& datum, const std::vector<WedgeJointSet>& sets,
+                             const WedgeOptions& options) {
+  if (sets.size() < 3)
+    throw InputError("sets",
+                     "a wedge needs three joint sets; " + std::to_string(sets.size()) + " given");
+  for (std::size_t i = 0; i < sets.size(); ++i)
+    if (!sets[i].normal.allFinite() || !(sets[i].normal.norm() > 0.5))
+      throw InputError("sets[" + std::to_string(i) + "]", "has no orientation");
+  check_options(options);
+  WedgeAnalysis out;
+  out.frame = frame;
+  out.section = section_polygon(profile, options.sagitta_m, "profile");
+  out.notes = out.section.notes;
+  const kinematics::Effects loads = load_effects(options);
+  for (const auto& e : loads) out.effects_simulated.push_back(e->name());
+  if (options.bolts) out.effects_simulated.push_back("bolts");
+  if (options.shotcrete) out.effects_simulated.push_back("shotcrete");
+  const Context ctx{out.section, frame, datum, sets, options, loads, profile.ray_centre()};
+  const int first_free = static_cast<int>(sets.size());
+
+  // The face: rock ahead of it (the drive direction), its EP for block theory.
+  kinematics::FreeFaceSpec face_spec;
+  face_spec.normal = frame.along.z() >= 0 ? frame.along : Eigen::Vector3d(-frame.along);
+  face_spec.rock_side =
+      frame.along.z() >= 0 ? geometry::HalfSpace::Upper : geometry::HalfSpace::Lower;
+  const geometry::Cone face_ep = kinematics::excavation_pyramid({face_spec});
+
+  const std::size_t n = sets.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      for (std::size_t k = j + 1; k < n; ++k) {
+        const std::vector<int> idx{static_cast<int>(i), static_cast<int>(j), static_cast<int>(k)};
+        const std::vector<std::string> ids{sets[i].id, sets[j].id, sets[k].id};
+        // Parallel sets, or three sets through one line, bound no pyramid.
+        const double det = std::abs(sets[i].normal.dot(sets[j].normal.cross(sets[k].normal)));
+        if (det < std::sin(options.uncertainty) * 1e-3) {
+          NoWedge nw;
+          nw.code =
+              code_text(n, idx, {1, 1, 1}).replace(i, 1, "*").replace(j, 1, "*").replace(k, 1, "*");
+          nw.sets = ids;
+          nw.reason = "sets " + ids[0] + ", " + ids[1] + " and " + ids[2] +
+                      " meet in one line (or two are parallel): they bound no wedge";
+          out.none.push_back(nw);
+          continue;
+        }
+        for (int c = 0; c < 8; ++c) {
+          std::vector<double> sign{(c & 4) ? -1.0 : 1.0, (c & 2) ? -1.0 : 1.0,
+                                   (c & 1) ? -1.0 : 1.0};
+          std::vector<WedgePlane> planes;
+          std::vector<Eigen::Vector3d> inward;
+          for (int m = 0; m < 3; ++m) {
+            planes.push_back({idx[m], ids[m], sets[idx[m]].normal.normalized(), sign[m]});
+            inward.push_back(planes.back().inward());
+          }
+          const std::string code = code_text(n, idx, sign);
+          const geometry::Cone jp(inward);
+          const geometry::ConeMargin jm = jp.margin();
+          if (!(jm.angle > 0)) continue;  // independent planes: never empty
+          const std::vector<Eigen::Vector3d> edges = jp.edges(jm.angle);
+          Wedge w;
+          w.code = code;
+          w.sets = ids;
+          // Strictly inside (beyond rounding): a pyramid with an edge along the
+          // axis is a perimeter pyramid that never ends, not a face one.
+          const bool into_tunnel = jp.margin_of(-frame.along) > kWedgeAlongAxisSine;
+          if (into_tunnel) {
+            if (!options.face) continue;
+            std::vector<kinematics::JointSpec> js;
+            std::vector<geometry::HalfSpace> hs(3);
+            for (int m = 0; m < 3; ++m) {
+              js.push_back({planes[m].normal, sets[idx[m]].friction});
+              hs[m] = sign[m] > 0 ? geometry::HalfSpace::Upper : geometry::HalfSpace::Lower;
+            }
+            const kinematics::PyramidVerdict pv = kinematics::analyse_joint_pyramid(
+                js, hs, face_ep, {options.uncertainty, Eigen::Vector3d::Zero()});
+            if (!(pv.removable.value || pv.removable.marginal)) {
+              out.none.push_back({code, ids, -pv.removable.margin,
+                                  "opens toward the tunnel but is not removable from the face: "
+                                  "its pyramid reaches into the rock ahead (by " +
+                                      fixed1(pv.removable.margin * kDeg) + " deg)"});
+              continue;
+            }
+            const auto tri = face_unit_triangle(edges, frame);
+            FaceFit fit = largest_face_triangle(out.section, tri);
+            if (!(fit.scale > 0)) continue;
+            double side = 0;
+            for (const auto& a : tri)
+              for (const auto& b : tri) side = std::max(side, (a - b).norm());
+            if (options.trace_length_limit && fit.scale * side > *options.trace_length_limit) {
+              Eigen::Vector2d mean = (tri[0] + tri[1] + tri[2]) / 3.0;
+              const double s = *options.trace_length_limit / side;
+              fit.offset += (fit.scale - s) * mean;
+              w.scale = s / fit.scale;
+              w.scaled = true;
+              fit.scale = s;
+            }
+            w.place = WedgePlace::face;
+            for (const auto& t : tri) w.outline.push_back(fit.offset + fit.scale * t);
+            w.removable = pv.removable;
+            try {
+              w.block = face_wedge_block(code, frame, datum, planes, fit, first_free + 1000);
+            } catch (const std::exception& e) {
+              out.none.push_back({code, ids, 0, std::string("could not be built: ") + e.what()});
+              continue;
+            }
+            const Eigen::Vector3d apex = frame.to_local(fit.offset.x(), fit.offset.y(), fit.scale);
+            w.apex = apex + datum;
+            w.apex_height = fit.scale;
+            w.bolt_length_to_apex = fit.scale;
+            const Eigen::Vector2d centre =
+                fit.offset + fit.scale * (tri[0] + tri[1] + tri[2]) / 3.0;
+            w.position_deg =
+                std::atan2(centre.y() - ctx.centre.y(), centre.x() - ctx.centre.x()) * kDeg;
+            w.trace_lengths = traces_of(w.block);
+            analyse_wedge(ctx, w, planes, apex);
+            out.wedges.push_back(std::move(w));
+            continue;
+          }
+          if (jp.margin_of(frame.along) > kWedgeAlongAxisSine)
+            continue;  // opens into the rock ahead of the face
+          if (!options.perimeter) continue;
+          const PyramidSector sector = pyramid_sector(edges, frame);
+          if (!sector.pointed) {
+            out.none.push_back(
+                {code, ids, sector.margin,
+                 "seen along the axis its pyramid spans " + fixed1(sector.span * kDeg) +
+                     " deg (180 or more): the wedge would run along the tunnel without end"});
+            continue;
+          }
+          const Eigen::Vector2d q_max = largest_apex(out.section, sector);
+          if (out.section.distance(q_max) <=
+              kWedgeVertexMergeRel * (q_max.norm() + out.section.perimeter)) {
+            // Both edges of the sector touch the outline at one point (an
+            // edge of the pyramid runs along a straight side seen along the
+            // axis): the largest wedge there has no size.
+            out.none.push_back({code, ids, 0,
+                                "its wedge has no size: seen along the axis an edge of its "
+                                "pyramid runs along a straight side of the section"});
+            continue;
+          }
+          auto build = [&](const Eigen::Vector2d& q, std::vector<BasePiece>& base) {
+            base = visible_base(out.section, sector, q);
+            return perimeter_wedge_block(code, frame, datum, planes, out.section, base, q, 0,
+                                         first_free);
+          };
+          std::vector<BasePiece> base;
+          Eigen::Vector2d q = q_max;
+          try {
+            w.block = build(q, base);
+            w.trace_lengths = traces_of(w.block);
+            if (options.trace_length_limit &&
+                longest(w.trace_lengths) > *options.trace_length_limit) {
+              const double full = longest(w.trace_lengths);
+              const Eigen::Vector2d mid = 0.5 * (base.front().a + base.back().b);
+              auto at = [&](double l) { return Eigen::Vector2d(mid + l * (q_max - mid)); };
+              double lo = 0, hi = 1;  // the apex reaches the outline at lo
+              for (int it = 0; it < 60; ++it) {
+                const double m = 0.5 * (lo + hi);
+                (out.section.contains(at(m)) ? lo : hi) = m;
+              }
+              hi = 1;
+              for (int it = 0; it < 60 && hi - lo > kWedgeTraceRel * (1 - lo); ++it) {
+                const double m = 0.5 * (lo + hi);
+                std::vector<BasePiece> b;
+                const auto t = longest(traces_of(build(at(m), b)));
+                (t > *options.trace_length_limit ? hi : lo) = m;
+              }
+              q = at(lo);
+              w.block = build(q, base);
+              w.trace_lengths = traces_of(w.block);
+              w.scaled = true;
+              w.scale = longest(w.trace_lengths) / full;
+            }
+          } catch (const std::exception& e) {
+            out.none.push_back(
+                {code, ids, sector.margin, std::string("could not be built: ") + e.what()});
+            continue;
+          }
+          w.removable = geometry::decide(std::min(jm.angle, sector.margin), options.uncertainty);
+          const Eigen::Vector3d apex = frame.to_local(q.x(), q.y(), 0);
+          w.apex = apex + datum;
+          const Eigen::Vector2d c0 = base.front().a, cm = base.back().b;
+          const Eigen::Vector2d chord = cm - c0;
+          w.apex_height =
+              chord.norm() > 0
+                  ? std::abs(chord.x() * (q - c0).y() - chord.y() * (q - c0).x()) / chord.norm()
+                  : (q - c0).norm();
+          w.bolt_length_to_apex = out.section.distance(q);
+          // Where its face lies: the area-weighted centre of its pieces.
+          Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+          double len = 0;
+          std::set<std::size_t> segs;
+          for (std::size_t p = 0; p < base.size(); ++p) {
+            const double l = (base[p].b - base[p].a).norm();
+            centre += l * 0.5 * (base[p].a + base[p].b);
+            len += l;
+            segs.insert(out.section.vertices[base[p].edge].segment);
+            if (p == 0) continue;
+            // The outline vertex between this piece and the previous one.
+            const std::size_t e1 = base[p - 1].edge, e2 = base[p].edge, m = out.section.size();
+            const std::size_t first = (e1 + 1) % m == e2 ? e1 : e2;  // in the outline's order
+            const std::size_t second = first == e1 ? e2 : e1;
+            const auto& v = out.section.vertices[second];
+            if ((first + 1) % m != second || !v.corner) continue;
+            const std::size_t sa = out.section.vertices[first].segment, sb = v.segment;
+            w.corners.push_back("crosses the profile's corner at (" + fixed1(v.p.x()) + ", " +
+                                fixed1(v.p.y()) + ") m between segment " + std::to_string(sa + 1) +
+                                " (" + out.section.segment_kinds[sa] + ") and segment " +
+                                std::to_string(sb + 1) + " (" + out.section.segment_kinds[sb] +
+                                ")");
+          }
+          centre /= len;
+          w.outline.push_back(q);
+          w.outline.push_back(base.front().a);
+          for (const auto& piece : base) w.outline.push_back(piece.b);
+          w.segments.assign(segs.begin(), segs.end());
+          w.position_deg =
+              std::atan2(centre.y() - ctx.centre.y(), centre.x() - ctx.centre.x()) * kDeg;
+          w.place = place_of(w.position_deg);
+          w.notes.insert(w.notes.end(), w.corners.begin(), w.corners.end());
+          analyse_wedge(ctx, w, planes, apex);
+          out.wedges.push_back(std::move(w));
+        }
+      }
+  std::stable_sort(out.wedges.begin(), out.wedges.end(), [](const Wedge& a, const Wedge& b) {
+    if (a.place != b.place) return a.place < b.place;
+    return a.mass.volume > b.mass.volume;
+  });
+  for (std::size_t i = 0; i < out.wedges.size(); ++i)
+    out.wedges[i].id = "W" + std::to_string(i + 1);
+  if (out.wedges.empty())
+    out.notes.push_back("no removable wedge: " +
+                        (out.none.empty() ? std::string("the sets form none around this section")
+                                          : out.none.front().reason));
+  return out;
+}
+
+}  // namespace rockface::tunnel

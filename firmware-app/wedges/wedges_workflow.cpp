@@ -1,0 +1,123 @@
+#include "firmware-app/wedges/wedges_workflow.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/common/error.h"
+
+namespace rockface::app {
+
+namespace {
+
+std::vector<double> numbers(const std::string& text, const std::string& where, std::size_t min,
+                            std::size_t max, const std::string& form) {
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    try {
+      std::size_t used = 0;
+      out.push_back(std::stod(item, &used));
+      if (used != item.size()) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw InputError(where, "\"" + text + "\" is not " + form);
+    }
+    if (!(out.back() > 0)) throw InputError(where, "every value of " + form + " must be positive");
+  }
+  if (out.size() < min || out.size() > max)
+    throw InputError(where, "\"" + text + "\" is not " + form);
+  return out;
+}
+
+bool looks_like_json(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char c = 0;
+  while (in.get(c))
+    if (!std::isspace(static_cast<unsigned char>(c))) return c == '{';
+  return false;
+}
+
+}  // namespace
+
+WedgesResult wedges_from_input(const WedgesRequest& q) {
+  if (!std::filesystem::exists(q.input)) throw InputError(q.input, "no such file");
+  std::optional<std::pair<double, double>> axis;
+  if (q.axis) axis = parse_axis(*q.axis, "--axis");
+  WedgesResult out;
+  if (looks_like_json(q.input)) {
+    for (auto [given, name] : {std::pair{q.friction_deg.has_value(), "--friction"},
+                               std::pair{q.cohesion_pa.has_value(), "--cohesion"},
+                               std::pair{q.trace_length_m.has_value(), "--trace-length"},
+                               std::pair{q.bolts.has_value(), "--bolts"},
+                               std::pair{q.shotcrete.has_value(), "--shotcrete"},
+                               std::pair{q.visit.has_value(), "--visit"}})
+      if (given)
+        throw InputError(name, "applies to a project; a scene gives it in its wedges section");
+    storage::Scene scene = storage::load_scene(q.input);
+    if (q.preset) scene.analysis.preset = parse_preset(*q.preset, "--preset");
+    out.run = wedge_run_from_scene(scene, axis);
+  } else {
+    storage::OpenOptions read;
+    read.read_only = true;
+    storage::ProjectStore store = storage::ProjectStore::open(q.input, read);
+    const auto visit = q.visit ? q.visit : store.latest_visit();
+    if (!visit) throw InputError(q.input, "the project has no visit");
+    ProjectWedgeSettings s;
+    s.axis = axis;
+    if (q.friction_deg) {
+      if (!(*q.friction_deg >= 0 && *q.friction_deg < 90))
+        throw InputError("--friction", "must be in [0, 90) degrees");
+      s.friction_deg = *q.friction_deg;
+      s.friction_given = true;
+    }
+    if (q.cohesion_pa) {
+      if (!(*q.cohesion_pa >= 0)) throw InputError("--cohesion", "must not be negative (Pa)");
+      s.cohesion_pa = *q.cohesion_pa;
+    }
+    if (q.trace_length_m) {
+      if (!(*q.trace_length_m > 0)) throw InputError("--trace-length", "must be positive (m)");
+      s.trace_length = q.trace_length_m;
+    }
+    if (q.bolts) {
+      const auto v =
+          numbers(*q.bolts, "--bolts", 3, 4, "LENGTH,SPACING,CAPACITY[,BOND] (m, m, N, N/m)");
+      tunnel::PatternBolts b;
+      b.length = v[0];
+      b.spacing = v[1];
+      b.capacity = v[2];
+      if (v.size() == 4) b.bond_strength = v[3];
+      s.bolts = b;
+    }
+    if (q.shotcrete) {
+      const auto v = numbers(*q.shotcrete, "--shotcrete", 2, 2, "THICKNESS,SHEAR_STRENGTH (m, Pa)");
+      tunnel::Shotcrete sc;
+      sc.thickness = v[0];
+      sc.shear_strength = v[1];
+      s.shotcrete = sc;
+    }
+    if (q.preset) s.preset = parse_preset(*q.preset, "--preset");
+    out.run = wedge_run_from_project(store, *visit, s);
+  }
+  try {
+    out.analysis = run_wedges(out.run);
+  } catch (const InputError& e) {
+    throw InputError(out.run.source, e.what());
+  }
+  return out;
+}
+
+std::optional<WedgesResult> project_visit_wedges(storage::ProjectStore& store,
+                                                 storage::RecordId visit, std::string* why) {
+  try {
+    WedgesResult out;
+    out.run = wedge_run_from_project(store, visit, {});
+    out.analysis = run_wedges(out.run);
+    return out;
+  } catch (const InputError& e) {
+    if (why) *why = e.what();
+    return std::nullopt;
+  }
+}
+
+}  // namespace rockface::app

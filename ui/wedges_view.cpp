@@ -1,0 +1,99 @@
+#include "ui/wedges_view.h"
+
+#include <memory>
+
+#include <imgui.h>
+
+#include "ui/app_state.h"
+
+namespace rockface::ui {
+
+namespace {
+
+void find_wedges(AppState& app) {
+  WedgeRunner* runner = app.services.wedges;
+  const auto file = app.session->file();
+  const auto visit = *app.session->visit();
+  auto result = std::make_shared<WedgeTable>();
+  app.task.start(
+      "Wedges",
+      [runner, file, visit, result](Progress& progress) {
+        *result = runner->wedges(file, visit, progress);
+        return std::to_string(result->rows.size()) + " wedges around the excavation";
+      },
+      [&app, result](const TaskOutcome& outcome) {
+        WedgesState& w = app.wedges;
+        if (outcome.kind != TaskOutcome::Kind::done) {
+          w.table.reset();
+          w.picture.clear();
+          w.message = outcome.message;
+          return;
+        }
+        w.message.clear();
+        w.picture.set(result->bgr);
+        result->bgr.release();
+        w.table = std::move(*result);
+      });
+}
+
+void draw_table(AppState& app, const WedgeTable& t) {
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+  if (!ImGui::BeginTable("wedges", static_cast<int>(t.columns.size()), flags)) return;
+  for (const auto& c : t.columns) ImGui::TableSetupColumn(c.c_str());
+  ImGui::TableHeadersRow();
+  const float row_height = kTouchTargetPx * app.targets.scale() * 0.6f;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    ImGui::TableNextRow(0, row_height);
+    if (i < t.marginal.size() && t.marginal[i])
+      ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(255, 200, 120, 255));
+    for (std::size_t c = 0; c < t.rows[i].size(); ++c) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(t.rows[i][c].c_str());
+      if (c == 0)
+        app.targets.record("wedge " + t.rows[i][0], ImGui::GetItemRectMin(),
+                           ImGui::GetItemRectMax());
+    }
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace
+
+void draw_wedges_view(AppState& app) {
+  WedgesState& w = app.wedges;
+  if (!app.session) return;
+  if (w.file != app.session->file() || w.visit != app.session->visit()) {
+    w.file = app.session->file();
+    w.visit = app.session->visit();
+    w.table.reset();
+    w.message.clear();
+    w.picture.clear();
+  }
+  const bool can = app.services.wedges && app.session->visit() && !app.task.running();
+  if (app.targets.button("Find wedges", 0, can)) find_wedges(app);
+  ImGui::SameLine();
+  ImGui::TextWrapped(
+      "Wedges that the visit's sets form around the tunnel's design section, "
+      "each at its largest (joints of unlimited persistence).");
+  if (!app.services.wedges) ImGui::TextDisabled("No wedge analysis in this build.");
+  if (!w.message.empty()) ImGui::TextWrapped("%s", w.message.c_str());
+  if (!w.table) return;
+  const WedgeTable& t = *w.table;
+  for (const auto& line : t.lines) ImGui::TextWrapped("%s", line.c_str());
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float side = 0.4f * avail.x;
+  ImGui::BeginChild("wedge table", ImVec2(avail.x - side, 0));
+  if (t.rows.empty())
+    ImGui::TextWrapped("No removable wedge.");
+  else
+    draw_table(app, t);
+  for (const auto& n : t.notes) ImGui::TextWrapped("%s", n.c_str());
+  ImGui::EndChild();
+  ImGui::SameLine();
+  ImGui::BeginChild("wedge picture", ImVec2(0, 0), true);
+  w.picture.draw(ImGui::GetContentRegionAvail().x);
+  ImGui::EndChild();
+}
+
+}  // namespace rockface::ui
