@@ -15,6 +15,7 @@
 #include "ui/field_services.h"
 #include "ui/model_view.h"
 #include "ui/motion_playback.h"
+#include "ui/office_panel.h"
 #include "ui/project_session.h"
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
@@ -64,6 +65,7 @@ struct AppState {
   CaptureState capture;
   MappingState mapping;
   TunnelState tunnel;                         // the Project screen's tunnel panel
+  OfficeState office;                         // the Project screen's sync to the office
   std::optional<std::size_t> selected_block;  // index into session->blocks()
   MotionPlayback motion;                      // the selected block's motion after failure
   std::string status;                         // last message for the status bar

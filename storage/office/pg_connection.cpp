@@ -104,6 +104,10 @@ Connection::Connection(const std::string& conninfo, int connect_timeout_s)
     throw ServerError(label_ + ": cannot connect to the server: " + masked_conninfo(why), "08001",
                       true);
   }
+  // The server's notices ("role is already a member ...") are not errors;
+  // libpq's default prints them on stderr, which library code never does.
+  PQsetNoticeProcessor(
+      conn_, [](void*, const char*) {}, nullptr);
 }
 
 Connection::~Connection() {
