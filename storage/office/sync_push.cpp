@@ -146,7 +146,8 @@ std::vector<Unit> dirty_units(
 }
 
 void send_unit(Connection& server, sqlite::Connection& db, const ProjectDocuments& docs,
-               std::int64_t tunnel_id, std::int64_t target, const Unit& unit, SyncResult& result) {
+               std::int64_t tunnel_id, std::int64_t target, const Unit& unit, SyncResult& result,
+               Progress& progress, double fraction) {
   const std::string doing = "sending " + visit_name(unit);
   json batch = json::array();
   std::string text = "[";
@@ -203,6 +204,10 @@ void send_unit(Connection& server, sqlite::Connection& db, const ProjectDocument
   result.record_bytes_sent += static_cast<std::int64_t>(text.size());
   ++result.units_sent;
 
+  // A kill (or cancel) here leaves the unit on the server but not in the
+  // tablet's record: the next sync sends it again, and the server, finding
+  // the same content as the latest revision, stores nothing.
+  progress.step("recording what was synced", fraction);
   std::map<std::pair<std::string, std::string>, std::int64_t> revisions;
   for (int i = 0; i < sent.rows(); ++i)
     revisions[{sent.text(i, 0), sent.text(i, 1)}] = sent.int64(i, 2);
@@ -316,9 +321,10 @@ SyncResult sync_project(const std::filesystem::path& project, const std::string&
     result.blobs_already_there = stats.already_there;
     result.blob_bytes_sent = stats.bytes;
     for (std::size_t i = 0; i < units.size(); ++i) {
-      progress.step("sending the records",
-                    0.5 + 0.5 * static_cast<double>(i) / static_cast<double>(units.size()));
-      send_unit(server, db, docs, tunnel_id, target, units[i], result);
+      const double fraction =
+          0.5 + 0.5 * static_cast<double>(i) / static_cast<double>(units.size());
+      progress.step("sending the records", fraction);
+      send_unit(server, db, docs, tunnel_id, target, units[i], result, progress, fraction);
     }
     progress.step("sending the records", 1);
     server.query(

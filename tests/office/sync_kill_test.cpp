@@ -12,6 +12,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
+
 #include "core/common/progress.h"
 #include "storage/office/pg_connection.h"
 #include "storage/office/sync_push.h"
@@ -81,7 +83,7 @@ bool sync_killed_at(const fs::path& project, const std::string& server, int kill
 TEST(OfficeSyncKills, EveryKillPointIsCompletedByTheNextSync) {
   storage::test::TempDir dir("office-kills");
   TabletProject a;
-  a.visits = 2;
+  a.visits = 3;
   a.image_width = 200;
   a.image_height = 150;
   // How many steps a whole sync takes, on a first database.
@@ -94,6 +96,7 @@ TEST(OfficeSyncKills, EveryKillPointIsCompletedByTheNextSync) {
     steps = p.steps();
   }
   ASSERT_GE(steps, 50) << "at least 50 kill points";
+  std::printf("a whole sync of the test project: %d kill points\n", steps);
   int killed = 0;
   for (int n = 1; n <= steps; ++n) {
     SCOPED_TRACE("killed before step " + std::to_string(n) + " of " + std::to_string(steps));
@@ -108,7 +111,7 @@ TEST(OfficeSyncKills, EveryKillPointIsCompletedByTheNextSync) {
     sync_project(project, as_role(db, "tablet_a"), small_chunks(), none);
     expect_server_holds(as_superuser(db), project, 1);
     EXPECT_EQ(first_difference(project_content(project), before), "");
-    server().psql("SELECT 1", "postgres");  // the server still answers
+    server().psql("DROP DATABASE " + db + " WITH (FORCE)", "postgres");
     fs::remove(project);
     if (::testing::Test::HasFailure()) break;
   }
