@@ -135,8 +135,12 @@ void Connection::fail(pg_result* r, std::string_view doing) {
     PQclear(r);
   }
   if (message.empty()) message = trimmed(PQerrorMessage(conn_));
-  const bool lost = PQstatus(conn_) != CONNECTION_OK || state.rfind("08", 0) == 0 ||
-                    state == "57P01" || state == "57P02" || state == "57P03";
+  // An error the server did not send (no SQLSTATE: libpq's own, such as
+  // "server closed the connection unexpectedly", which PQstatus may not
+  // reflect yet), a connection exception (08) or a shutdown (57P01-03).
+  const bool lost = PQstatus(conn_) != CONNECTION_OK || state.empty() ||
+                    state.rfind("08", 0) == 0 || state == "57P01" || state == "57P02" ||
+                    state == "57P03";
   throw ServerError(label_ + ": " + std::string(doing) + ": " +
                         (lost ? "the connection to the server was lost: " : "") + message,
                     state, lost);
