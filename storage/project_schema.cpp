@@ -30,6 +30,20 @@ std::string with_capture_columns(std::string_view sql) {
   return out;
 }
 
+// A random (version 4) UUID in SQL, for schema 6's "<uuid>" marks.
+constexpr std::string_view kUuidMark = "<uuid>";
+constexpr std::string_view kUuidExpression =
+    "lower(hex(randomblob(4)) || '-' || hex(randomblob(2)) || '-4' || "
+    "substr(hex(randomblob(2)), 2) || '-' || substr('89ab', 1 + (abs(random()) % 4), 1) || "
+    "substr(hex(randomblob(2)), 2) || '-' || hex(randomblob(6)))";
+
+std::string with_uuid_expression(std::string sql) {
+  for (std::size_t at = sql.find(kUuidMark); at != std::string::npos;
+       at = sql.find(kUuidMark, at + kUuidExpression.size()))
+    sql.replace(at, kUuidMark.size(), kUuidExpression);
+  return sql;
+}
+
 // Version 1, as first released. Coordinates are project-frame (datum
 // relative) metres; angles degrees; times UTC ISO 8601 text.
 constexpr const char* kVersion1 = R"sql(
@@ -300,12 +314,121 @@ CREATE TABLE visit_placement_residual (
 );
 )sql";
 
+// Version 6 (issue 24, the office server): every record that a tablet makes
+// gets a UUID when it is created (a trigger, so no writer can forget it; the
+// rows of an older project get theirs here), so that the visits of several
+// tablets never collide on the site's server; and the tablet keeps a record
+// of what it synced where (sync_target, sync_record, sync_blob, sync_run),
+// nothing else. The UUID is version 4 (random), made by SQLite's randomblob.
+// "<uuid>" stands for that expression (with_uuid_expression).
+constexpr const char* kVersion5To6 = R"sql(
+ALTER TABLE project ADD COLUMN uuid TEXT;
+UPDATE project SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS project_by_uuid ON project(uuid);
+CREATE TRIGGER IF NOT EXISTS project_gets_uuid AFTER INSERT ON project FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE project SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE visit ADD COLUMN uuid TEXT;
+UPDATE visit SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS visit_by_uuid ON visit(uuid);
+CREATE TRIGGER IF NOT EXISTS visit_gets_uuid AFTER INSERT ON visit FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE visit SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE camera_body ADD COLUMN uuid TEXT;
+UPDATE camera_body SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS camera_body_by_uuid ON camera_body(uuid);
+CREATE TRIGGER IF NOT EXISTS camera_body_gets_uuid AFTER INSERT ON camera_body FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE camera_body SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE calibration ADD COLUMN uuid TEXT;
+UPDATE calibration SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS calibration_by_uuid ON calibration(uuid);
+CREATE TRIGGER IF NOT EXISTS calibration_gets_uuid AFTER INSERT ON calibration FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE calibration SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE image ADD COLUMN uuid TEXT;
+UPDATE image SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS image_by_uuid ON image(uuid);
+CREATE TRIGGER IF NOT EXISTS image_gets_uuid AFTER INSERT ON image FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE image SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE capture ADD COLUMN uuid TEXT;
+UPDATE capture SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS capture_by_uuid ON capture(uuid);
+CREATE TRIGGER IF NOT EXISTS capture_gets_uuid AFTER INSERT ON capture FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE capture SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE model ADD COLUMN uuid TEXT;
+UPDATE model SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS model_by_uuid ON model(uuid);
+CREATE TRIGGER IF NOT EXISTS model_gets_uuid AFTER INSERT ON model FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE model SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE measurement ADD COLUMN uuid TEXT;
+UPDATE measurement SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS measurement_by_uuid ON measurement(uuid);
+CREATE TRIGGER IF NOT EXISTS measurement_gets_uuid AFTER INSERT ON measurement FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE measurement SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE joint_set ADD COLUMN uuid TEXT;
+UPDATE joint_set SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS joint_set_by_uuid ON joint_set(uuid);
+CREATE TRIGGER IF NOT EXISTS joint_set_gets_uuid AFTER INSERT ON joint_set FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE joint_set SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE joint ADD COLUMN uuid TEXT;
+UPDATE joint SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS joint_by_uuid ON joint(uuid);
+CREATE TRIGGER IF NOT EXISTS joint_gets_uuid AFTER INSERT ON joint FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE joint SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE analysis ADD COLUMN uuid TEXT;
+UPDATE analysis SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS analysis_by_uuid ON analysis(uuid);
+CREATE TRIGGER IF NOT EXISTS analysis_gets_uuid AFTER INSERT ON analysis FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE analysis SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE block ADD COLUMN uuid TEXT;
+UPDATE block SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS block_by_uuid ON block(uuid);
+CREATE TRIGGER IF NOT EXISTS block_gets_uuid AFTER INSERT ON block FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE block SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+ALTER TABLE action_log ADD COLUMN uuid TEXT;
+UPDATE action_log SET uuid = <uuid> WHERE uuid IS NULL;
+CREATE UNIQUE INDEX IF NOT EXISTS action_log_by_uuid ON action_log(uuid);
+CREATE TRIGGER IF NOT EXISTS action_log_gets_uuid AFTER INSERT ON action_log FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE action_log SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+CREATE TABLE IF NOT EXISTS sync_target (
+  id INTEGER PRIMARY KEY,
+  server_id TEXT NOT NULL UNIQUE,
+  server_label TEXT NOT NULL,
+  tunnel TEXT NOT NULL,
+  last_sync_at TEXT,
+  last_outcome TEXT NOT NULL DEFAULT ''
+);
+CREATE TABLE IF NOT EXISTS sync_record (
+  target_id INTEGER NOT NULL REFERENCES sync_target(id) ON DELETE CASCADE,
+  kind TEXT NOT NULL,
+  uuid TEXT NOT NULL,
+  content_sha256 TEXT NOT NULL,
+  revision INTEGER NOT NULL,
+  synced_at TEXT NOT NULL,
+  PRIMARY KEY (target_id, kind, uuid)
+);
+CREATE TABLE IF NOT EXISTS sync_blob (
+  kind TEXT NOT NULL,
+  uuid TEXT NOT NULL,
+  sha256 TEXT NOT NULL,
+  byte_size INTEGER NOT NULL,
+  PRIMARY KEY (kind, uuid)
+);
+CREATE TABLE IF NOT EXISTS sync_run (
+  id INTEGER PRIMARY KEY,
+  target_id INTEGER NOT NULL REFERENCES sync_target(id) ON DELETE CASCADE,
+  started_at TEXT NOT NULL,
+  finished_at TEXT,
+  outcome TEXT NOT NULL DEFAULT '',
+  records_sent INTEGER NOT NULL DEFAULT 0,
+  blobs_sent INTEGER NOT NULL DEFAULT 0,
+  bytes_sent INTEGER NOT NULL DEFAULT 0
+);
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
 constexpr Step kSteps[] = {
-    {2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4}, {5, kVersion4To5}};
+    {2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4}, {5, kVersion4To5}, {6, kVersion5To6}};
 
 }  // namespace
 
@@ -355,7 +478,7 @@ void migrate_to(sqlite::Connection& db, int target) {
                 std::to_string(from) + ", past " + std::to_string(target));
   for (const Step& step : kSteps) {
     if (step.to_version <= from || step.to_version > target) continue;
-    db.exec(with_capture_columns(step.sql),
+    db.exec(with_uuid_expression(with_capture_columns(step.sql)),
             "upgrading the project to schema " + std::to_string(step.to_version));
   }
   sqlite::Statement check(db, "PRAGMA foreign_key_check", "upgrading the project");

@@ -26,6 +26,10 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # the report tests read the PDF back (pdftotext, pdftoppm)
   poppler-utils
+  # the office server (issue 24): libpq's C API, OpenSSL's SHA-256, and for
+  # the tests a real PostgreSQL server (initdb, pg_ctl) and openssl to make
+  # the TLS test's CA and certificate
+  libpq-dev libssl-dev postgresql openssl
 )
 
 missing=()

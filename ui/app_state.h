@@ -16,6 +16,7 @@
 #include "ui/map_blocks.h"
 #include "ui/model_view.h"
 #include "ui/motion_playback.h"
+#include "ui/office_panel.h"
 #include "ui/project_session.h"
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
@@ -68,6 +69,7 @@ struct AppState {
   MappingState mapping;
   TunnelState tunnel;                         // the Project screen's tunnel panel
   WedgesState wedges;                         // the Blocks screen's Wedges view
+  OfficeState office;                         // the Project screen's sync to the office
   std::optional<std::size_t> selected_block;  // index into session->blocks()
   MotionPlayback motion;                      // the selected block's motion after failure
   std::string status;                         // last message for the status bar

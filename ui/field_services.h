@@ -132,6 +132,27 @@ class WedgeRunner {
                             Progress& progress) = 0;
 };
 
+// The office server (issue 24): the tablet's one server (a libpq service
+// set once per tablet), what waits to go up, and the sync itself.
+struct SyncOverview {
+  std::string server;  // e.g. "service=rockface"; never a password
+  bool ever_synced = false;
+  std::string tunnel, last_sync_at, last_outcome;
+  int records_waiting = 0, visits_waiting = 0;
+};
+
+class SyncRunner {
+ public:
+  virtual ~SyncRunner() = default;
+  // Read from the project alone (no network).
+  virtual SyncOverview overview(const std::filesystem::path& project) = 0;
+  // Sends what waits; returns what was sent in words. Throws rockface::Error
+  // saying so when the server cannot be reached (nothing lost: the next
+  // sync resumes), Cancelled when cancelled (likewise).
+  virtual std::vector<std::string> sync(const std::filesystem::path& project,
+                                        Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
@@ -139,6 +160,7 @@ struct FieldServices {
   TunnelRunner* tunnel = nullptr;                  // null: the Project screen shows no tunnel views
   TraceMapRunner* trace_map = nullptr;             // null: the Mapping screen shows no blocks
   WedgeRunner* wedges = nullptr;                   // null: the Blocks screen shows no Wedges view
+  SyncRunner* sync = nullptr;                      // null: no office server on this tablet
 };
 
 }  // namespace rockface::ui

@@ -1,12 +1,15 @@
 // `rockface drive PROJECT --out DRIVE.png [--csv DRIVE.csv]`: each joint
 // set's orientation along the tunnel's chainage over all visits, with the
-// sets that appear, vanish or turn flagged.
+// sets that appear, vanish or turn flagged. `rockface drive postgresql://...
+// --tunnel NAME ...` gives the same from the office server, over every
+// tablet's visits.
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/office/office_workflows.h"
 #include "firmware-app/tunnel/png_file.h"
 #include "firmware-app/tunnel/project_drive.h"
 #include "storage/export_file.h"
@@ -17,20 +20,31 @@ namespace rockface::app {
 namespace {
 
 struct DriveOptions {
-  std::string project, out, csv;
+  std::string project, out, csv, tunnel;
 };
 
 VerbRun setup_drive(CLI::App& sub) {
   auto o = std::make_shared<DriveOptions>();
-  sub.add_option("PROJECT", o->project, "project file (*.rockface) with a tunnel")->required();
+  sub.add_option("PROJECT", o->project,
+                 "project file (*.rockface) with a tunnel, or the office server (postgresql://... "
+                 "or service=NAME) with --tunnel")
+      ->required();
+  sub.add_option("--tunnel", o->tunnel, "the server's tunnel (with a server)");
   sub.add_option("--out", o->out, "the sets against chainage, a PNG file")->required();
   sub.add_option("--csv", o->csv, "one row per set and visit, a CSV file");
   return [o] {
-    if (!std::filesystem::exists(o->project)) throw InputError(o->project, "no such project file");
-    storage::OpenOptions read;
-    read.read_only = true;
-    storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
-    const tunnel::DriveSets drive = project_drive(store);
+    tunnel::DriveSets drive;
+    if (is_server_address(o->project)) {
+      if (o->tunnel.empty()) throw InputError("--tunnel", "name the server's tunnel");
+      drive = server_drive(o->project, o->tunnel);
+    } else {
+      if (!std::filesystem::exists(o->project))
+        throw InputError(o->project, "no such project file");
+      storage::OpenOptions read;
+      read.read_only = true;
+      storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
+      drive = project_drive(store);
+    }
     write_png(o->out, storage::drive_picture(drive));
     if (!o->csv.empty()) storage::write_text_atomically(o->csv, drive_csv(drive));
     for (const auto& line : drive_summary(drive)) std::cout << line << "\n";

@@ -38,6 +38,8 @@ int run_ui(const UiRequest& req) {
   services.tunnel = &tunnel;
   services.trace_map = &trace_map;
   services.wedges = &wedges;
+  StoreSyncRunner sync;
+  services.sync = &sync;
   if (req.script.empty()) {
     ui::run_in_window(options, services);
     return 0;

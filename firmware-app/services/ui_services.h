@@ -53,6 +53,14 @@ class StoreWedgeRunner final : public ui::WedgeRunner {
                         Progress& progress) override;
 };
 
+// The tablet's sync to the office server named by its libpq service
+// (firmware-app/office/office_workflows.h tablet_server()).
+class StoreSyncRunner final : public ui::SyncRunner {
+ public:
+  ui::SyncOverview overview(const std::filesystem::path& project) override;
+  std::vector<std::string> sync(const std::filesystem::path& project, Progress& progress) override;
+};
+
 // source: a scene with an imaging section, a folder of captures, or empty
 // (the first DSLR libgphoto2 finds).
 class FieldCameraConnector final : public ui::CameraConnector {

@@ -14,13 +14,19 @@ namespace {}  // namespace
 
 std::vector<tunnel::SetObservation> visit_set_observations(storage::ProjectStore& store,
                                                            storage::RecordId visit_id) {
+  return set_observations(store.list_joint_sets(visit_id), store.list_measurements(visit_id));
+}
+
+std::vector<tunnel::SetObservation> set_observations(
+    const std::vector<storage::JointSet>& sets,
+    const std::vector<storage::Measurement>& measurements) {
   std::vector<tunnel::SetObservation> out;
-  for (const auto& s : store.list_joint_sets(visit_id))
+  for (const auto& s : sets)
     out.push_back(
         {s.label, geometry::plane_normal_deg(s.dip_deg, s.dipdir_deg), s.fisher_k, s.count});
   if (!out.empty()) return out;
   std::vector<Eigen::Vector3d> poles;
-  for (const auto& m : store.list_measurements(visit_id))
+  for (const auto& m : measurements)
     if (m.dip_deg && m.dipdir_deg)
       poles.push_back(geometry::plane_normal_deg(*m.dip_deg, *m.dipdir_deg));
   if (poles.size() < 2) return out;

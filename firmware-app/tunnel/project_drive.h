@@ -15,6 +15,11 @@ namespace rockface::app {
 // One visit's sets; empty when it has fewer than two measured planes.
 std::vector<tunnel::SetObservation> visit_set_observations(storage::ProjectStore& store,
                                                            storage::RecordId visit_id);
+// The same from a visit's records wherever they were read (a project, the
+// office server): its stored sets, else its measured planes clustered.
+std::vector<tunnel::SetObservation> set_observations(
+    const std::vector<storage::JointSet>& sets,
+    const std::vector<storage::Measurement>& measurements);
 
 // Throws InputError naming the project when it has no tunnel.
 tunnel::DriveSets project_drive(storage::ProjectStore& store);

@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/office_panel.h"
 #include "ui/screens/screens.h"
 #include "ui/tunnel_panel.h"
 
@@ -102,6 +103,7 @@ void draw_project_screen(AppState& app) {
           static_cast<long long>(s.model()->face_count), s.model()->registration_kind.c_str());
   }
   draw_tunnel_panel(app);
+  draw_office_panel(app);
 }
 
 }  // namespace rockface::ui

@@ -1,0 +1,44 @@
+#pragma once
+// The office server's workflows behind the verbs `sync`, `pull`, `server`
+// and `drive postgresql://...`, and the tablet's Sync button: each takes a
+// libpq connection string (a postgresql:// URL, key=value text or
+// service=NAME) and returns the lines to print; no password is ever part of
+// what they return (storage/office/pg_connection.h masks it).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/common/progress.h"
+#include "core/tunnel/drive_sets.h"
+#include "storage/office/sync_push.h"
+
+namespace rockface::app {
+
+// Whether a command-line argument names a server rather than a project
+// file: a postgresql:// or postgres:// URL, or libpq key=value text.
+bool is_server_address(const std::string& text);
+
+// The tablet's server: the libpq service named by ROCKFACE_SERVICE, else
+// "rockface", looked up in ~/.pg_service.conf or PGSYSCONFDIR: set once per
+// tablet by whoever sets the tablet up, never typed per visit.
+std::string tablet_server();
+
+std::vector<std::string> sync_lines(const storage::office::SyncResult& r);
+std::vector<std::string> run_sync(const std::filesystem::path& project, const std::string& server,
+                                  const storage::office::SyncOptions& options, Progress& progress);
+
+std::vector<std::string> run_pull(const std::string& server, const std::string& tunnel,
+                                  const std::filesystem::path& out, Progress& progress);
+
+std::vector<std::string> run_server_init(const std::string& server);
+std::vector<std::string> run_server_add_tunnel(const std::string& server, const std::string& name);
+std::vector<std::string> run_server_add_tablet(const std::string& server, const std::string& role,
+                                               const std::string& tunnel);
+std::vector<std::string> run_server_add_office(const std::string& server, const std::string& role);
+
+// The drive of every tablet's visits of the tunnel, from the server: the
+// same sets, tracks and events as `rockface drive` of one project holding
+// those visits (firmware-app/tunnel/project_drive.h).
+tunnel::DriveSets server_drive(const std::string& server, const std::string& tunnel);
+
+}  // namespace rockface::app

@@ -1,0 +1,372 @@
+#include "storage/office/pull_project.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/error.h"
+#include "storage/office/record_kinds.h"
+#include "storage/office/server_records.h"
+#include "storage/office/server_schema.h"
+#include "storage/office/sha256.h"
+#include "storage/office/sqlite_rows.h"
+#include "storage/project_store.h"
+
+namespace rockface::storage::office {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+class ProjectWriter {
+ public:
+  ProjectWriter(sqlite::Connection& db, Connection& server, bool keep_ids, PullResult& result,
+                Progress& progress)
+      : db_(db), server_(server), keep_ids_(keep_ids), result_(result), progress_(progress) {}
+
+  // Inserts one record (and its children); returns its row id.
+  void insert(const ServerRecord& rec) {
+    const std::string where = rec.kind + " " + rec.uuid;
+    const json body = json::parse(rec.body);
+    const json& row = body.at("row");
+    if (rec.kind == "camera_body") {
+      // Two tablets with the same camera: one body, as the store keeps it.
+      RawStatement same(db_,
+                        "SELECT id FROM camera_body WHERE make = ? AND model = ? AND serial = ?",
+                        "finding a camera body");
+      same.bind_text(1, row.at("make").get<std::string>());
+      same.bind_text(2, row.at("model").get<std::string>());
+      same.bind_text(3, row.at("serial").get<std::string>());
+      if (same.step()) {
+        ids_[{rec.kind, rec.uuid}] = same.int64(0);
+        return;
+      }
+    }
+    if (rec.kind == "image") {
+      // Identical photographs from several tablets are stored once, as the
+      // project store does.
+      const std::string sha = row.at("bytes").at("$blob").get<std::string>();
+      const auto same = images_.find(sha + "/" + row.at("format").get<std::string>());
+      if (same != images_.end()) {
+        ids_[{rec.kind, rec.uuid}] = same->second;
+        return;
+      }
+    }
+    // The record keeps its UUID (the body holds it as its key, not a column).
+    json with_uuid = row;
+    if (has_column(rec.kind, "uuid")) with_uuid["uuid"] = rec.uuid;
+    const std::int64_t rowid = insert_row(rec.kind, with_uuid, where, keep_ids_ ? rec.local_id : 0);
+    ids_[{rec.kind, rec.uuid}] = key_of(rec.kind, "id", rowid);
+    if (rec.kind == "visit_placement")
+      ids_[{rec.kind, rec.uuid}] = key_of(rec.kind, "visit_id", rowid);
+    if (rec.kind == "image")
+      images_[row.at("bytes").at("$blob").get<std::string>() + "/" +
+              row.at("format").get<std::string>()] = rowid;
+    const RecordKind* kind = find_record_kind(rec.kind);
+    if (kind && body.contains("children")) {
+      for (const ChildTable& child : kind->children) {
+        const auto it = body["children"].find(child.table);
+        if (it == body["children"].end()) continue;
+        std::string to = "id";
+        for (const auto& fk : fks(child.table))
+          if (fk.column == child.parent_column) to = fk.to;
+        const std::int64_t parent = key_of(rec.kind, to, rowid);
+        for (json r : *it) {
+          r[child.parent_column] = parent;
+          insert_row(child.table, r, where + " " + child.table, 0);
+        }
+      }
+    }
+  }
+
+ private:
+  std::int64_t key_of(const std::string& table, const std::string& column, std::int64_t rowid) {
+    if (column == "id" && has_column(table, "id")) return rowid;
+    if (!has_column(table, column)) return rowid;
+    RawStatement st(db_, "SELECT " + column + " FROM " + table + " WHERE rowid = ?",
+                    "reading back " + table);
+    st.bind_int64(1, rowid);
+    st.step();
+    return st.int64(0);
+  }
+
+  const std::vector<ForeignKey>& fks(const std::string& table) {
+    auto it = fks_.find(table);
+    if (it == fks_.end()) it = fks_.emplace(table, foreign_keys(db_, table)).first;
+    return it->second;
+  }
+  bool has_column(const std::string& table, const std::string& column) {
+    auto it = columns_.find(table);
+    if (it == columns_.end()) {
+      const auto names = column_names(db_, table);
+      it = columns_.emplace(table, std::set<std::string>(names.begin(), names.end())).first;
+    }
+    return it->second.count(column) > 0;
+  }
+
+  std::int64_t insert_row(const std::string& table, const json& row, const std::string& where,
+                          std::int64_t keep_id) {
+    std::vector<std::string> names;
+    std::vector<const json*> values;
+    std::vector<std::pair<std::string, json>> blobs;
+    for (auto it = row.begin(); it != row.end(); ++it) {
+      if (!has_column(table, it.key()))
+        throw InputError(where, "has column " + it.key() + " that this rockface's " + table +
+                                    " table does not know: update rockface");
+      names.push_back(it.key());
+      values.push_back(&it.value());
+    }
+    std::string sql = "INSERT INTO " + table + " (";
+    std::string marks;
+    if (keep_id > 0 && has_column(table, "id")) {
+      sql += "id, ";
+      marks += std::to_string(keep_id) + ", ";
+    }
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      sql += (i ? ", " : "") + names[i];
+      marks += (i ? ", ?" : "?");
+    }
+    sql += ") VALUES (" + marks + ")";
+    RawStatement st(db_, sql, "writing " + where);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const int at = static_cast<int>(i + 1);
+      const json& v = *values[i];
+      if (v.is_null()) {
+        st.bind_null(at);
+      } else if (v.is_number_integer()) {
+        st.bind_int64(at, v.get<std::int64_t>());
+      } else if (v.is_number_float()) {
+        sqlite3_bind_double(st.get(), at, v.get<double>());
+      } else if (v.is_string()) {
+        st.bind_text(at, v.get<std::string>());
+      } else if (v.is_object() && v.contains("$ref")) {
+        st.bind_int64(at, resolve(table, names[i], v["$ref"].get<std::string>(), where));
+      } else if (v.is_object() && v.contains("$blob")) {
+        sqlite3_bind_zeroblob64(st.get(), at, v.at("size").get<std::uint64_t>());
+        blobs.emplace_back(names[i], v);
+      } else if (v.is_object() && v.contains("$hex")) {
+        const auto bytes = bytes_of_hex(v["$hex"].get<std::string>(), where + "." + names[i]);
+        sqlite3_bind_blob(st.get(), at, bytes.data(), static_cast<int>(bytes.size()),
+                          SQLITE_TRANSIENT);
+      } else if (v.is_object() && v.contains("$real")) {
+        sqlite3_bind_double(st.get(), at, v["$real"] == "inf" ? HUGE_VAL : -HUGE_VAL);
+      } else {
+        throw InputError(where + "." + names[i], "a value this rockface cannot store");
+      }
+    }
+    st.step();
+    const std::int64_t rowid = sqlite3_last_insert_rowid(db_.handle());
+    for (const auto& [column, ref] : blobs)
+      fetch_blob(table, column, rowid, ref["$blob"].get<std::string>(),
+                 ref["size"].get<std::int64_t>(), where);
+    return rowid;
+  }
+
+  std::int64_t resolve(const std::string& table, const std::string& column, const std::string& uuid,
+                       const std::string& where) {
+    for (const auto& fk : fks(table)) {
+      if (fk.column != column) continue;
+      const auto it = ids_.find({fk.table, uuid});
+      if (it == ids_.end())
+        throw InputError(where, column + " refers to " + fk.table + " " + uuid +
+                                    ", which is not among the tunnel's records on the server");
+      return it->second;
+    }
+    throw InputError(where,
+                     column + " is a reference this rockface's " + table + " table does not have");
+  }
+
+  // Streams one blob from the server into the row, checking its hash.
+  void fetch_blob(const std::string& table, const std::string& column, std::int64_t rowid,
+                  const std::string& sha, std::int64_t size, const std::string& where) {
+    const std::string what = where + " " + column + " (blob " + sha + ")";
+    progress_.step("fetching photographs and meshes", 0.5);
+    const Result head =
+        server_.query("SELECT complete, byte_size, chunk_size FROM rockface.blob WHERE sha256 = $1",
+                      {Param::of(sha)}, "fetching " + what);
+    if (head.rows() == 0 || head.text(0, 0) != "t")
+      throw InputError(server_.label() + ": " + what, "missing or incomplete on the server");
+    if (head.int64(0, 1) != size)
+      throw InputError(server_.label() + ": " + what,
+                       "the server says it has " + std::to_string(head.int64(0, 1)) +
+                           " bytes, the record " + std::to_string(size));
+    const std::int64_t chunk = head.int64(0, 2);
+    const std::int64_t chunks = (size + chunk - 1) / chunk;
+    BlobWriter writer(db_, table, column, rowid);
+    Sha256 h;
+    std::int64_t at = 0;
+    for (std::int64_t i = 0; i < chunks; ++i) {
+      progress_.step("fetching photographs and meshes", 0.5);
+      const Result r =
+          server_.query("SELECT bytes FROM rockface.blob_chunk WHERE sha256 = $1 AND idx = $2",
+                        {Param::of(sha), Param::of(i)}, "fetching " + what, true);
+      const std::int64_t want = std::min(chunk, size - at);
+      if (r.rows() == 0 || static_cast<std::int64_t>(r.bytes(0, 0).size()) != want)
+        throw InputError(server_.label() + ": " + what,
+                         "truncated on the server: chunk " + std::to_string(i) + " of " +
+                             std::to_string(chunks) +
+                             (r.rows() == 0 ? " is missing" : " has the wrong length") +
+                             "; the pull was abandoned");
+      const auto bytes = r.bytes(0, 0);
+      h.add(bytes);
+      writer.write(at, bytes.data(), bytes.size());
+      at += want;
+    }
+    const std::string got = h.hex();
+    if (got != sha)
+      throw InputError(server_.label() + ": " + what,
+                       "corrupt on the server: its bytes hash to " + got +
+                           ", not to their name; the pull was abandoned");
+    ++result_.blobs;
+    result_.blob_bytes += size;
+  }
+
+  sqlite::Connection& db_;
+  Connection& server_;
+  bool keep_ids_;
+  PullResult& result_;
+  Progress& progress_;
+  std::map<std::pair<std::string, std::string>, std::int64_t> ids_;  // (kind, uuid) -> key
+  std::map<std::string, std::int64_t> images_;                       // sha/format -> row
+  std::map<std::string, std::vector<ForeignKey>> fks_;
+  std::map<std::string, std::set<std::string>> columns_;
+};
+
+// The project row every tablet's project of the tunnel must agree on: its
+// datum (a merged project holds coordinates relative to one datum).
+const ServerRecord& base_project(const std::vector<ServerRecord>& records,
+                                 const ServerTunnel& tunnel) {
+  const ServerRecord* base = nullptr;
+  json datum;
+  for (const std::string& uuid : tunnel.projects)
+    for (const ServerRecord& r : records) {
+      if (r.kind != "project" || r.project_uuid != uuid) continue;
+      const json row = json::parse(r.body).at("row");
+      const json d = {row.at("datum_x"), row.at("datum_y"), row.at("datum_z"), row.at("datum_crs")};
+      if (!base) {
+        base = &r;
+        datum = d;
+      } else if (d != datum) {
+        throw InputError("tunnel " + tunnel.name, "its projects have different datums (" +
+                                                      datum.dump() + " and " + d.dump() +
+                                                      " of project " + uuid +
+                                                      "): they cannot be merged into one project");
+      }
+    }
+  if (!base) throw InputError("tunnel " + tunnel.name, "no project has synced to it yet");
+  return *base;
+}
+
+}  // namespace
+
+PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel_name,
+                       const fs::path& out, Progress& progress, int connect_timeout_s) {
+  if (fs::exists(out)) throw InputError(out.string(), "exists already: pull makes a new project");
+  PullResult result;
+  progress.step("connecting to the server", 0);
+  Connection server(conninfo, connect_timeout_s);
+  result.server_label = server.label();
+  require_compatible_server(server);
+  // One snapshot of the server for the whole pull.
+  server.exec("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY", "reading the tunnel");
+  const ServerTunnel tunnel = read_server_tunnel(server, tunnel_name);
+  std::vector<ServerRecord> records = read_current_records(server, tunnel.id, {});
+  const ServerRecord base = base_project(records, tunnel);  // a copy: records are sorted below
+  result.projects = static_cast<int>(tunnel.projects.size());
+  result.visits = static_cast<int>(tunnel.visits.size());
+  const bool keep_ids = tunnel.projects.size() == 1;
+
+  // The order records go in: kinds in dependency order; visits in the
+  // server's order; the rest by project, then their local order.
+  std::map<std::string, int> visit_rank, project_rank, kind_rank;
+  for (std::size_t i = 0; i < tunnel.visits.size(); ++i)
+    visit_rank[tunnel.visits[i].uuid] = static_cast<int>(i);
+  for (std::size_t i = 0; i < tunnel.projects.size(); ++i)
+    project_rank[tunnel.projects[i]] = static_cast<int>(i);
+  for (std::size_t i = 0; i < record_kinds().size(); ++i)
+    kind_rank[record_kinds()[i].kind] = static_cast<int>(i);
+  for (const ServerRecord& r : records)
+    if (!kind_rank.count(r.kind))
+      throw InputError(r.kind + " " + r.uuid, "a kind of record this rockface does not know");
+  auto key = [&](const ServerRecord& r) {
+    const int k = kind_rank[r.kind];
+    if (r.kind == "visit") return std::tuple(k, visit_rank[r.uuid], 0, r.local_id);
+    return std::tuple(k, 0, project_rank[r.project_uuid], r.local_id);
+  };
+  std::sort(records.begin(), records.end(),
+            [&](const ServerRecord& a, const ServerRecord& b) { return key(a) < key(b); });
+
+  const fs::path partial = fs::path(out.string() + ".partial");
+  fs::remove(partial);
+  fs::remove(fs::path(partial.string() + "-wal"));
+  fs::remove(fs::path(partial.string() + "-shm"));
+  try {
+    {
+      ProjectInfo info;
+      info.name = "pulled";
+      ProjectStore::create(partial, info);
+    }
+    {
+      sqlite::Connection db(partial, sqlite::Connection::Access::read_write);
+      db.exec("PRAGMA foreign_keys = ON", "building the pulled project");
+      sqlite::WriteTransaction tx(db, "building the pulled project");
+      db.exec("DELETE FROM action_log", "building the pulled project");
+      // The project row as the first project synced it.
+      json row = json::parse(base.body).at("row");
+      row["uuid"] = base.uuid;
+      for (auto it = row.begin(); it != row.end(); ++it) {
+        RawStatement st(db, "UPDATE project SET " + it.key() + " = ? WHERE id = 1",
+                        "writing the project row");
+        if (it->is_string())
+          st.bind_text(1, it->get<std::string>());
+        else if (it->is_number_integer())
+          st.bind_int64(1, it->get<std::int64_t>());
+        else if (it->is_number_float())
+          sqlite3_bind_double(st.get(), 1, it->get<double>());
+        else
+          st.bind_null(1);
+        st.step();
+      }
+      ProjectWriter writer(db, server, keep_ids, result, progress);
+      for (std::size_t i = 0; i < records.size(); ++i) {
+        const ServerRecord& r = records[i];
+        if (r.kind == "project") continue;
+        // One tablet's tunnel record is the tunnel (the latest synced wins
+        // when several tablets carry it).
+        if (r.kind == "tunnel" && r.project_uuid != base.project_uuid) {
+          bool base_has = false;
+          for (const ServerRecord& o : records)
+            base_has |= o.kind == "tunnel" && o.project_uuid == base.project_uuid;
+          if (base_has) continue;
+          db.exec("DELETE FROM tunnel", "writing the tunnel");
+        }
+        progress.step("building the project",
+                      0.5 + 0.5 * static_cast<double>(i) / static_cast<double>(records.size()));
+        writer.insert(r);
+        ++result.records;
+      }
+      tx.commit();
+    }
+    server.exec("COMMIT", "reading the tunnel");
+    // The pulled file passes the store's full check before it takes its name.
+    {
+      OpenOptions check;
+      check.check = OpenOptions::Check::full;
+      ProjectStore store = ProjectStore::open(partial, check);
+      store.checkpoint();
+    }
+    fs::rename(partial, out);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(partial, ec);
+    fs::remove(fs::path(partial.string() + "-wal"), ec);
+    fs::remove(fs::path(partial.string() + "-shm"), ec);
+    throw;
+  }
+  return result;
+}
+
+}  // namespace rockface::storage::office

@@ -1,0 +1,28 @@
+#pragma once
+// `rockface pull`: a project built from the office server's records of one
+// tunnel (every tablet's visits), on another tablet or a desktop. The rows
+// come back with the values they were sent with, so the pulled project gives
+// the same analysis as the tablet's, bit for bit; a pull of a tunnel that
+// one project synced keeps that project's record ids too. Every photograph
+// and mesh is checked against its SHA-256 as it arrives: a corrupt or
+// truncated blob on the server stops the pull, naming it. The project
+// appears complete or not at all (built beside the target, then renamed).
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "core/common/progress.h"
+
+namespace rockface::storage::office {
+
+struct PullResult {
+  std::string server_label;
+  int projects = 0, visits = 0, records = 0, blobs = 0;
+  std::int64_t blob_bytes = 0;
+};
+
+PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel,
+                       const std::filesystem::path& out, Progress& progress,
+                       int connect_timeout_s = 10);
+
+}  // namespace rockface::storage::office

@@ -1,0 +1,61 @@
+#include "storage/office/server_records.h"
+
+#include "core/common/error.h"
+#include "storage/project_schema.h"
+
+namespace rockface::storage::office {
+
+ServerTunnel read_server_tunnel(Connection& c, const std::string& name) {
+  ServerTunnel t;
+  t.name = name;
+  const Result r = c.query("SELECT id FROM rockface.tunnel WHERE name = $1", {Param::of(name)},
+                           "finding the tunnel");
+  if (r.rows() == 0)
+    throw InputError("tunnel " + name, "not on " + c.label() + ", or this role may not read it");
+  t.id = r.int64(0, 0);
+  const Result p = c.query(
+      "SELECT uuid::text FROM rockface.project WHERE tunnel_id = $1 ORDER BY first_synced_at, uuid",
+      {Param::of(t.id)}, "reading the tunnel's projects");
+  for (int i = 0; i < p.rows(); ++i) t.projects.push_back(p.text(i, 0));
+  const Result v = c.query(
+      "SELECT uuid::text, project_uuid::text, local_id FROM rockface.visit WHERE tunnel_id = $1 "
+      "ORDER BY started_at, project_uuid, local_id",
+      {Param::of(t.id)}, "reading the tunnel's visits");
+  for (int i = 0; i < v.rows(); ++i)
+    t.visits.push_back({v.text(i, 0), v.text(i, 1), v.int64(i, 2)});
+  return t;
+}
+
+std::vector<ServerRecord> read_current_records(Connection& c, std::int64_t tunnel_id,
+                                               const std::vector<std::string>& kinds,
+                                               bool with_body) {
+  std::string list = "{";
+  for (std::size_t i = 0; i < kinds.size(); ++i) list += (i ? "," : "") + kinds[i];
+  list += "}";
+  // DISTINCT ON inside the tunnel's rows (record_by_tunnel_kind), not over
+  // the view, whose DISTINCT ON would run over every tunnel first.
+  const Result r =
+      c.query(std::string("SELECT kind, uuid::text, visit_uuid::text, project_uuid::text, "
+                          "coalesce(local_id, 0), project_schema, ") +
+                  (with_body ? "body::text" : "''") +
+                  " FROM (SELECT DISTINCT ON (kind, uuid) * FROM rockface.record "
+                  "WHERE tunnel_id = $1 AND ($2::text[] = '{}' OR kind = ANY($2::text[])) "
+                  "ORDER BY kind, uuid, revision DESC) latest WHERE NOT deleted",
+              {Param::of(tunnel_id), Param::of(list)}, "reading the tunnel's records");
+  std::vector<ServerRecord> out;
+  out.reserve(static_cast<std::size_t>(r.rows()));
+  for (int i = 0; i < r.rows(); ++i) {
+    ServerRecord rec{r.text(i, 0), r.text(i, 1),  r.optional_text(i, 2),
+                     r.text(i, 3), r.int64(i, 4), static_cast<int>(r.int64(i, 5)),
+                     r.text(i, 6)};
+    if (rec.project_schema > schema::kCurrentVersion)
+      throw InputError(rec.kind + " " + rec.uuid,
+                       "written by a newer rockface (project schema " +
+                           std::to_string(rec.project_schema) + ", this program knows up to " +
+                           std::to_string(schema::kCurrentVersion) + "): update rockface");
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+}  // namespace rockface::storage::office

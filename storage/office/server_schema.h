@@ -1,0 +1,58 @@
+#pragma once
+// The office server's layout (PostgreSQL schema "rockface") and its history,
+// like the project file's (storage/project_schema.h): each change is a
+// numbered forward step kept forever, run by `rockface server init`, which
+// creates the layout, the three group roles and the row-level-security
+// policies in one transaction, or upgrades an older server.
+//
+// Roles (group roles, NOLOGIN; a person or tablet logs in as a member):
+//   rockface_tablet  adds visits and records to the tunnels it is a member
+//                    of (tunnel_member) and reads those tunnels; it never
+//                    updates or deletes a row (a change is a new revision),
+//                    and may not add a revision to another tablet's record.
+//   rockface_office  reads every tunnel.
+//   rockface_admin   creates tunnels, tablet and office roles, and grants.
+//
+// Versions:
+//   1  tunnels and their members, projects, visits, records (one row per
+//      revision of a record, body as JSON), blobs stored once by SHA-256 in
+//      chunks, sync runs; the policies above.
+#include <string>
+
+#include "storage/office/pg_connection.h"
+
+namespace rockface::storage::office {
+
+constexpr int kServerSchemaVersion = 1;
+
+// The server's schema version, 0 when it has no rockface layout.
+int server_schema_version(Connection& c);
+
+// The server's identity (a UUID made at init): a project remembers what it
+// synced to which server by it.
+std::string server_id(Connection& c);
+
+// Throws Error naming the server and both versions when the server's schema
+// is newer than this program (an older client is refused: it would write
+// records the newer layout does not expect), or older (an administrator
+// runs `rockface server init` to upgrade it), or missing.
+void require_compatible_server(Connection& c);
+
+struct InitResult {
+  int from_version = 0, to_version = 0;
+};
+// Creates or upgrades the layout, roles and policies; run by a superuser
+// or the database's owner with CREATEROLE. Idempotent.
+InitResult init_server(Connection& c);
+
+// Admin: a tunnel (a site's drive) that tablets add visits to.
+void add_tunnel(Connection& c, const std::string& name);
+// Admin: a login role for one tablet (member of rockface_tablet) that may
+// add visits to `tunnel`; an existing role is only granted the tunnel. No
+// password is set here: the administrator gives one with psql's \password
+// or authenticates the tablet by certificate.
+void add_tablet(Connection& c, const std::string& role, const std::string& tunnel);
+// Admin: a login role of the office (member of rockface_office).
+void add_office_user(Connection& c, const std::string& role);
+
+}  // namespace rockface::storage::office

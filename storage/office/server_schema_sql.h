@@ -1,0 +1,226 @@
+#pragma once
+// The SQL of each step of the office server's layout (server_schema.h).
+// Kept apart from the code that runs it: these texts are the layout's
+// history and never change once released.
+
+namespace rockface::storage::office::sql {
+
+// The group roles, created once per cluster (roles are not per database).
+inline constexpr const char* kRoles = R"sql(
+DO $$ BEGIN
+  IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'rockface_tablet') THEN
+    CREATE ROLE rockface_tablet NOLOGIN;
+  END IF;
+  IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'rockface_office') THEN
+    CREATE ROLE rockface_office NOLOGIN;
+  END IF;
+  IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'rockface_admin') THEN
+    CREATE ROLE rockface_admin NOLOGIN CREATEROLE;
+  END IF;
+END $$;
+)sql";
+
+// Version 1. Records are append-only: a change on a tablet is a new revision
+// (kind, uuid, revision), so the server keeps every record's history and a
+// tablet never needs UPDATE or DELETE. A record's body is the tablet's row
+// as JSON (storage/office/record_documents.h); its photographs and meshes
+// are blobs referred to by SHA-256, and a record may only refer to a blob
+// whose every byte arrived and was verified (record_blobs_complete).
+inline constexpr const char* kVersion1 = R"sql(
+CREATE SCHEMA rockface;
+CREATE TABLE rockface.meta (key text PRIMARY KEY, value text NOT NULL);
+CREATE TABLE rockface.tunnel (
+  id bigserial PRIMARY KEY,
+  name text NOT NULL UNIQUE CHECK (name <> ''),
+  created_at timestamptz NOT NULL DEFAULT now(),
+  created_by name NOT NULL DEFAULT current_user
+);
+CREATE TABLE rockface.tunnel_member (
+  tunnel_id bigint NOT NULL REFERENCES rockface.tunnel(id) ON DELETE CASCADE,
+  role_name name NOT NULL,
+  PRIMARY KEY (tunnel_id, role_name)
+);
+CREATE TABLE rockface.project (
+  uuid uuid PRIMARY KEY,
+  tunnel_id bigint NOT NULL REFERENCES rockface.tunnel(id),
+  owner name NOT NULL DEFAULT current_user,
+  name text NOT NULL,
+  first_synced_at timestamptz NOT NULL DEFAULT now()
+);
+CREATE TABLE rockface.visit (
+  uuid uuid PRIMARY KEY,
+  tunnel_id bigint NOT NULL REFERENCES rockface.tunnel(id),
+  project_uuid uuid NOT NULL REFERENCES rockface.project(uuid),
+  owner name NOT NULL DEFAULT current_user,
+  local_id bigint NOT NULL,
+  started_at text NOT NULL,
+  synced_at timestamptz NOT NULL DEFAULT now()
+);
+CREATE INDEX visit_by_tunnel ON rockface.visit(tunnel_id, started_at);
+CREATE TABLE rockface.blob (
+  sha256 text PRIMARY KEY CHECK (sha256 ~ '^[0-9a-f]{64}$'),
+  byte_size bigint NOT NULL CHECK (byte_size >= 0),
+  chunk_size integer NOT NULL CHECK (chunk_size > 0),
+  complete boolean NOT NULL DEFAULT false,
+  created_by name NOT NULL DEFAULT current_user,
+  created_at timestamptz NOT NULL DEFAULT now()
+);
+CREATE TABLE rockface.blob_chunk (
+  sha256 text NOT NULL REFERENCES rockface.blob(sha256) ON DELETE CASCADE,
+  idx integer NOT NULL CHECK (idx >= 0),
+  bytes bytea NOT NULL,
+  PRIMARY KEY (sha256, idx)
+);
+CREATE TABLE rockface.record (
+  kind text NOT NULL,
+  uuid uuid NOT NULL,
+  revision integer NOT NULL CHECK (revision >= 1),
+  tunnel_id bigint NOT NULL REFERENCES rockface.tunnel(id),
+  project_uuid uuid NOT NULL REFERENCES rockface.project(uuid),
+  visit_uuid uuid REFERENCES rockface.visit(uuid),
+  local_id bigint,
+  owner name NOT NULL DEFAULT current_user,
+  project_schema integer NOT NULL,
+  content_sha256 text NOT NULL,
+  deleted boolean NOT NULL DEFAULT false,
+  body jsonb,
+  synced_at timestamptz NOT NULL DEFAULT now(),
+  PRIMARY KEY (kind, uuid, revision)
+);
+CREATE INDEX record_by_tunnel_kind ON rockface.record(tunnel_id, kind, uuid, revision DESC);
+CREATE INDEX record_by_visit ON rockface.record(visit_uuid);
+CREATE TABLE rockface.sync_log (
+  id bigserial PRIMARY KEY,
+  project_uuid uuid NOT NULL,
+  owner name NOT NULL DEFAULT current_user,
+  started_at timestamptz NOT NULL,
+  finished_at timestamptz NOT NULL DEFAULT now(),
+  records integer NOT NULL, blobs integer NOT NULL, bytes bigint NOT NULL,
+  client text NOT NULL
+);
+-- The latest revision of every record, with the reader's own rights.
+CREATE VIEW rockface.record_current WITH (security_invoker = true) AS
+  SELECT DISTINCT ON (kind, uuid) * FROM rockface.record ORDER BY kind, uuid, revision DESC;
+
+CREATE FUNCTION rockface.is_admin() RETURNS boolean LANGUAGE sql STABLE AS
+  $$ SELECT pg_has_role(current_user, 'rockface_admin', 'MEMBER') $$;
+CREATE FUNCTION rockface.is_office() RETURNS boolean LANGUAGE sql STABLE AS
+  $$ SELECT pg_has_role(current_user, 'rockface_office', 'MEMBER') OR rockface.is_admin() $$;
+CREATE FUNCTION rockface.is_member(t bigint) RETURNS boolean LANGUAGE sql STABLE AS
+  $$ SELECT EXISTS (SELECT 1 FROM rockface.tunnel_member m
+                    WHERE m.tunnel_id = t AND pg_has_role(current_user, m.role_name, 'MEMBER')) $$;
+-- Owners of rows the caller may not see (another tunnel's): definer's rights.
+CREATE FUNCTION rockface.record_owner(k text, u uuid) RETURNS name LANGUAGE sql STABLE
+  SECURITY DEFINER SET search_path = pg_catalog, rockface AS
+  $$ SELECT owner FROM rockface.record WHERE kind = k AND uuid = u LIMIT 1 $$;
+CREATE FUNCTION rockface.visit_owner(u uuid) RETURNS name LANGUAGE sql STABLE
+  SECURITY DEFINER SET search_path = pg_catalog, rockface AS
+  $$ SELECT owner FROM rockface.visit WHERE uuid = u $$;
+CREATE FUNCTION rockface.project_owner(u uuid) RETURNS name LANGUAGE sql STABLE
+  SECURITY DEFINER SET search_path = pg_catalog, rockface AS
+  $$ SELECT owner FROM rockface.project WHERE uuid = u $$;
+CREATE FUNCTION rockface.blob_is_complete(s text) RETURNS boolean LANGUAGE sql STABLE
+  SECURITY DEFINER SET search_path = pg_catalog, rockface AS
+  $$ SELECT coalesce((SELECT complete FROM rockface.blob WHERE sha256 = s), false) $$;
+
+-- A blob is complete only when its chunks add up to its size and hash to
+-- its name; a damaged upload loses its chunks and is sent again.
+CREATE FUNCTION rockface.complete_blob(p_sha text) RETURNS boolean LANGUAGE plpgsql
+  SECURITY DEFINER SET search_path = pg_catalog, rockface AS $$
+DECLARE
+  want bigint; done boolean; got_size bigint; got_sha text;
+BEGIN
+  SELECT byte_size, complete INTO want, done FROM rockface.blob WHERE sha256 = p_sha FOR UPDATE;
+  IF NOT FOUND THEN
+    RAISE EXCEPTION 'blob % is not on the server', p_sha USING ERRCODE = '23503';
+  END IF;
+  IF done THEN RETURN true; END IF;
+  SELECT coalesce(sum(length(bytes)), 0),
+         encode(sha256(coalesce(string_agg(bytes, ''::bytea ORDER BY idx), ''::bytea)), 'hex')
+    INTO got_size, got_sha FROM rockface.blob_chunk WHERE sha256 = p_sha;
+  IF got_size <> want OR got_sha <> p_sha THEN
+    DELETE FROM rockface.blob_chunk WHERE sha256 = p_sha;
+    RETURN false;
+  END IF;
+  UPDATE rockface.blob SET complete = true WHERE sha256 = p_sha;
+  RETURN true;
+END $$;
+
+CREATE FUNCTION rockface.record_blobs_complete() RETURNS trigger LANGUAGE plpgsql
+  SECURITY DEFINER SET search_path = pg_catalog, rockface AS $$
+DECLARE
+  missing text;
+BEGIN
+  SELECT q.s INTO missing
+    FROM (SELECT jsonb_path_query(NEW.body, 'lax $.**."$blob"') #>> '{}' AS s) q
+   WHERE NOT EXISTS (SELECT 1 FROM rockface.blob b WHERE b.sha256 = q.s AND b.complete)
+   LIMIT 1;
+  IF missing IS NOT NULL THEN
+    RAISE EXCEPTION 'record % % refers to blob % that is not complete on the server',
+      NEW.kind, NEW.uuid, missing USING ERRCODE = '23503';
+  END IF;
+  RETURN NEW;
+END $$;
+CREATE TRIGGER record_blobs_complete BEFORE INSERT ON rockface.record
+  FOR EACH ROW EXECUTE FUNCTION rockface.record_blobs_complete();
+
+ALTER TABLE rockface.tunnel ENABLE ROW LEVEL SECURITY;
+ALTER TABLE rockface.project ENABLE ROW LEVEL SECURITY;
+ALTER TABLE rockface.visit ENABLE ROW LEVEL SECURITY;
+ALTER TABLE rockface.record ENABLE ROW LEVEL SECURITY;
+ALTER TABLE rockface.blob ENABLE ROW LEVEL SECURITY;
+ALTER TABLE rockface.blob_chunk ENABLE ROW LEVEL SECURITY;
+ALTER TABLE rockface.sync_log ENABLE ROW LEVEL SECURITY;
+
+CREATE POLICY admin_all ON rockface.tunnel USING (rockface.is_admin());
+CREATE POLICY read_own_or_office ON rockface.tunnel FOR SELECT
+  USING (rockface.is_office() OR rockface.is_member(id));
+
+CREATE POLICY admin_all ON rockface.project USING (rockface.is_admin());
+CREATE POLICY read_tunnel ON rockface.project FOR SELECT
+  USING (rockface.is_office() OR rockface.is_member(tunnel_id));
+CREATE POLICY tablet_adds ON rockface.project FOR INSERT
+  WITH CHECK (owner = current_user AND rockface.is_member(tunnel_id));
+
+CREATE POLICY admin_all ON rockface.visit USING (rockface.is_admin());
+CREATE POLICY read_tunnel ON rockface.visit FOR SELECT
+  USING (rockface.is_office() OR rockface.is_member(tunnel_id));
+CREATE POLICY tablet_adds ON rockface.visit FOR INSERT
+  WITH CHECK (owner = current_user AND rockface.is_member(tunnel_id)
+              AND rockface.project_owner(project_uuid) = current_user);
+
+CREATE POLICY admin_all ON rockface.record USING (rockface.is_admin());
+CREATE POLICY read_tunnel ON rockface.record FOR SELECT
+  USING (rockface.is_office() OR rockface.is_member(tunnel_id));
+CREATE POLICY tablet_adds ON rockface.record FOR INSERT
+  WITH CHECK (owner = current_user AND rockface.is_member(tunnel_id)
+              AND rockface.project_owner(project_uuid) = current_user
+              AND (visit_uuid IS NULL OR rockface.visit_owner(visit_uuid) = current_user)
+              AND coalesce(rockface.record_owner(kind, uuid), current_user) = current_user);
+
+CREATE POLICY admin_all ON rockface.blob USING (rockface.is_admin());
+CREATE POLICY read_all ON rockface.blob FOR SELECT USING (true);
+CREATE POLICY tablet_adds ON rockface.blob FOR INSERT
+  WITH CHECK (created_by = current_user AND NOT complete);
+CREATE POLICY admin_all ON rockface.blob_chunk USING (rockface.is_admin());
+CREATE POLICY read_all ON rockface.blob_chunk FOR SELECT USING (true);
+CREATE POLICY tablet_adds ON rockface.blob_chunk FOR INSERT
+  WITH CHECK (NOT rockface.blob_is_complete(sha256));
+
+CREATE POLICY admin_all ON rockface.sync_log USING (rockface.is_admin());
+CREATE POLICY read_own_or_office ON rockface.sync_log FOR SELECT
+  USING (rockface.is_office() OR owner = current_user);
+CREATE POLICY tablet_adds ON rockface.sync_log FOR INSERT WITH CHECK (owner = current_user);
+
+GRANT USAGE ON SCHEMA rockface TO rockface_tablet, rockface_office, rockface_admin;
+GRANT SELECT ON ALL TABLES IN SCHEMA rockface TO rockface_tablet, rockface_office;
+GRANT INSERT ON rockface.project, rockface.visit, rockface.record, rockface.blob,
+  rockface.blob_chunk, rockface.sync_log TO rockface_tablet;
+GRANT ALL ON ALL TABLES IN SCHEMA rockface TO rockface_admin;
+GRANT USAGE ON ALL SEQUENCES IN SCHEMA rockface TO rockface_tablet, rockface_admin;
+REVOKE EXECUTE ON FUNCTION rockface.complete_blob(text) FROM PUBLIC;
+GRANT EXECUTE ON FUNCTION rockface.complete_blob(text) TO rockface_tablet, rockface_admin;
+INSERT INTO rockface.meta (key, value) VALUES ('server_id', gen_random_uuid()::text);
+)sql";
+
+}  // namespace rockface::storage::office::sql

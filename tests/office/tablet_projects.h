@@ -1,0 +1,39 @@
+#pragma once
+// Small tablet projects for the office suite, and the checks that a server
+// holds exactly what a tablet sent.
+#include <filesystem>
+#include <string>
+
+namespace rockface::office_test {
+
+struct TabletProject {
+  std::string name = "tablet";
+  int visits = 2;
+  double first_chainage = 102;  // visits 2.5 m apart along the sample tunnel
+  int seed = 1;                 // varies photographs and plane scatter
+  int image_width = 160, image_height = 120;
+  bool dense_face_visit = false;  // one more visit: a mapped face with joints, for the analysis
+};
+
+// A project with the sample tunnel (tools/samples/tunnel-drive.*), and per
+// visit: a capture (two JPEGs), its model, measured planes of two joint
+// sets, a block analysis, its place in the tunnel; the first visit also
+// joints and joint sets.
+void make_tablet_project(const std::filesystem::path& file, const TabletProject& options);
+
+// Every row of the project's tables but the sync's own, as text: equal
+// before and after a sync when the sync changed nothing else.
+std::string project_content(const std::filesystem::path& file);
+
+// The first line where two contents differ ("" when equal), for a short
+// failure message.
+std::string first_difference(const std::string& a, const std::string& b);
+
+// The server (superuser connection) holds each record of the project as its
+// latest revision, with the same content; `revisions_each` revisions of
+// every record when given; every photograph and mesh complete and hashing
+// to its name. Adds GoogleTest failures.
+void expect_server_holds(const std::string& superuser, const std::filesystem::path& project,
+                         int revisions_each = 0);
+
+}  // namespace rockface::office_test

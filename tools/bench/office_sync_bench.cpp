@@ -1,0 +1,209 @@
+// The office server (issue 24) on a real PostgreSQL server started here
+// (tests/support/postgres_server.h, Unix socket, fsync off as the test
+// fixture runs it: the times are the client's and the server's work, not
+// the disk's): sync time and bytes per visit for one visit with two 24 Mpx
+// photographs and a 3D image, and for 1,000 synthetic visits; the second
+// sync of an unchanged project; and the office's drive query over 3,000
+// visits of three tablets (target: under a second).
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <random>
+
+#include <benchmark/benchmark.h>
+
+#include "core/common/progress.h"
+#include "core/tunnel/design_profile.h"
+#include "firmware-app/office/office_workflows.h"
+#include "storage/office/pg_connection.h"
+#include "storage/office/server_schema.h"
+#include "storage/office/sqlite_rows.h"
+#include "storage/office/sync_push.h"
+#include "storage/project_store.h"
+#include "tests/storage/sample_records.h"
+#include "tests/support/postgres_server.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rockface;
+namespace office = storage::office;
+
+test::PostgresServer& server() {
+  static test::PostgresServer s;
+  return s;
+}
+
+fs::path folder() {
+  static const fs::path dir =
+      fs::temp_directory_path() / ("rockface-office-bench-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string fresh_database() {
+  static int n = 0;
+  const std::string db = "bench" + std::to_string(++n);
+  server().psql("CREATE DATABASE " + db, "postgres");
+  office::Connection c(server().socket_conninfo(test::PostgresServer::kSuperuser, db));
+  office::init_server(c);
+  office::add_tunnel(c, "bench");
+  for (const char* t : {"tablet_1", "tablet_2", "tablet_3"}) office::add_tablet(c, t, "bench");
+  office::add_office_user(c, "office_bench");
+  return db;
+}
+
+// A 3D image of about `vertices` vertices: a rough face on a grid.
+storage::Model grid_model(storage::RecordId capture, int side) {
+  storage::Model m;
+  m.capture_id = capture;
+  m.preset = "standard";
+  std::mt19937 rng(3);
+  std::normal_distribution<double> rough(0, 0.02);
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      m.mesh.vertices.push_back({0.01 * i, rough(rng), 0.01 * j});
+      m.mesh.texcoords.push_back({static_cast<float>(i) / side, static_cast<float>(j) / side});
+    }
+  for (int i = 0; i + 1 < side; ++i)
+    for (int j = 0; j + 1 < side; ++j) {
+      const int a = i * side + j;
+      m.mesh.faces.push_back({a, a + 1, a + side});
+      m.mesh.faces.push_back({a + 1, a + side + 1, a + side});
+    }
+  m.registration.kind = "none";
+  return m;
+}
+
+void add_visit(storage::ProjectStore& store, int i, int width, int height, int mesh_side) {
+  const storage::RecordId visit = store.begin_visit("bench visit " + std::to_string(i));
+  storage::Capture capture = storage::test::sample_capture(visit, i, width, height);
+  const storage::RecordId cap = store.save_capture(capture);
+  const storage::RecordId model = store.save_model(grid_model(cap, mesh_side));
+  std::mt19937 rng(static_cast<unsigned>(i));
+  std::normal_distribution<double> jitter(0, 2.0);
+  std::vector<storage::Measurement> planes;
+  for (const auto& [dip, dipdir] :
+       std::vector<std::pair<double, double>>{{70, 120}, {45, 300}, {20, 30}})
+    for (int k = 0; k < 6; ++k) {
+      storage::Measurement m;
+      m.visit_id = visit;
+      m.model_id = model;
+      m.label = "T" + std::to_string(planes.size() + 1);
+      m.points = {{0, 3.0 * i, 0}, {0.5, 3.0 * i, 0.4}, {1, 3.0 * i, 1}};
+      m.dip_deg = std::clamp(dip + jitter(rng), 0.0, 90.0);
+      m.dipdir_deg = std::fmod(dipdir + jitter(rng) + 360, 360);
+      planes.push_back(m);
+    }
+  store.save_measurements(visit, planes);
+  store.save_analysis(storage::test::sample_analysis(visit, model));
+  storage::VisitPlacement p;
+  p.visit_id = visit;
+  p.chainage = 3.0 * i;
+  store.save_visit_placement(p);
+}
+
+fs::path make_project(const std::string& name, int visits, int width, int height, int mesh_side) {
+  const fs::path file = folder() / (name + ".rockface");
+  if (fs::exists(file)) return file;
+  storage::ProjectInfo info;
+  info.name = name;
+  storage::ProjectStore store = storage::ProjectStore::create(file, info);
+  storage::TunnelRecord tunnel;
+  tunnel.name = "bench";
+  tunnel.stations = {{0, {0, 0, 0}}, {10000, {0, 10000, 0}}};
+  tunnel.radii = {0};
+  tunnel.profile = tunnel::circle_profile(3.0);
+  store.save_tunnel(tunnel);
+  for (int i = 0; i < visits; ++i) add_visit(store, i, width, height, mesh_side);
+  return file;
+}
+
+// A copy of a project as another tablet's: every record a new UUID.
+fs::path another_tablets_copy(const fs::path& file, const std::string& name) {
+  const fs::path copy = folder() / (name + ".rockface");
+  fs::remove(copy);
+  fs::copy_file(file, copy);
+  storage::sqlite::Connection db(copy, storage::sqlite::Connection::Access::read_write);
+  for (const char* t :
+       {"project", "visit", "camera_body", "calibration", "image", "capture", "model",
+        "measurement", "joint_set", "joint", "analysis", "block", "action_log"})
+    db.exec(std::string("UPDATE ") + t +
+                " SET uuid = lower(hex(randomblob(4)) || '-' || hex(randomblob(2)) || '-4' || "
+                "substr(hex(randomblob(2)), 2) || '-a' || substr(hex(randomblob(2)), 2) || '-' "
+                "|| hex(randomblob(6)))",
+            "new uuids");
+  db.exec("DELETE FROM sync_record; DELETE FROM sync_run; DELETE FROM sync_target", "reset");
+  return copy;
+}
+
+void sync_bench(benchmark::State& state, const fs::path& original, int visits) {
+  office::SyncResult last;
+  for (auto _ : state) {
+    state.PauseTiming();
+    const std::string db = fresh_database();
+    const fs::path copy = folder() / "synced.rockface";
+    fs::remove(copy);
+    fs::copy_file(original, copy);
+    state.ResumeTiming();
+    NoProgress none;
+    last = office::sync_project(copy, server().socket_conninfo("tablet_1", db), {}, none);
+  }
+  const double bytes = static_cast<double>(last.blob_bytes_sent + last.record_bytes_sent);
+  state.counters["visits"] = visits;
+  state.counters["MB_per_visit"] = bytes / 1e6 / visits;
+  state.counters["photo_mesh_MB_per_visit"] =
+      static_cast<double>(last.blob_bytes_sent) / 1e6 / visits;
+  state.counters["record_kB_per_visit"] =
+      static_cast<double>(last.record_bytes_sent) / 1e3 / visits;
+  state.counters["records"] = last.records_sent;
+}
+
+void BM_SyncOneVisit24Mpx(benchmark::State& state) {
+  // Two 6000 x 4000 JPEGs and a 3D image of 250,000 vertices.
+  sync_bench(state, make_project("one-visit", 1, 6000, 4000, 500), 1);
+}
+BENCHMARK(BM_SyncOneVisit24Mpx)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_SyncThousandVisits(benchmark::State& state) {
+  // 640 x 480 photographs and 2,500-vertex meshes: the records dominate.
+  sync_bench(state, make_project("thousand", 1000, 640, 480, 50), 1000);
+}
+BENCHMARK(BM_SyncThousandVisits)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_SecondSyncNothingChanged1000(benchmark::State& state) {
+  const fs::path file = make_project("thousand", 1000, 640, 480, 50);
+  const std::string db = fresh_database();
+  const fs::path copy = folder() / "resynced.rockface";
+  fs::remove(copy);
+  fs::copy_file(file, copy);
+  NoProgress none;
+  office::sync_project(copy, server().socket_conninfo("tablet_1", db), {}, none);
+  for (auto _ : state)
+    office::sync_project(copy, server().socket_conninfo("tablet_1", db), {}, none);
+}
+BENCHMARK(BM_SecondSyncNothingChanged1000)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_OfficeDriveQuery3000(benchmark::State& state) {
+  const fs::path file = make_project("thousand", 1000, 640, 480, 50);
+  const std::string db = fresh_database();
+  NoProgress none;
+  for (int t = 1; t <= 3; ++t) {
+    const fs::path copy = another_tablets_copy(file, "tablet" + std::to_string(t));
+    office::sync_project(copy, server().socket_conninfo("tablet_" + std::to_string(t), db), {},
+                         none);
+  }
+  std::size_t placed = 0;
+  for (auto _ : state) {
+    const auto drive = app::server_drive(server().socket_conninfo("office_bench", db), "bench");
+    placed = drive.visits.size();
+  }
+  state.counters["visits"] = static_cast<double>(placed);
+}
+BENCHMARK(BM_OfficeDriveQuery3000)->Unit(benchmark::kMillisecond)->Iterations(5);
+
+}  // namespace
+
+BENCHMARK_MAIN();
