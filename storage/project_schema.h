@@ -16,6 +16,7 @@
 //   4  models keep the map from their camera frame to their mesh's frame
 //      (the views of their photographs), apart from the registration: a
 //      further pair of a visit is registered onto the face (issue 15).
+//   6  the rock-mass classification form entered per visit (issue 23).
 #include <cstdint>
 
 #include "storage/project_sqlite.h"
@@ -24,7 +25,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 5;
+constexpr int kCurrentVersion = 6;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then

@@ -12,6 +12,7 @@
 #include "storage/json_reader.h"
 #include "storage/picks_json.h"
 #include "storage/scene.h"
+#include "storage/rockmass_form_json.h"
 #include "storage/scene_tunnel.h"
 
 namespace rockface::storage {
@@ -549,6 +550,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
         r.fail(t.where + ".joint", "unknown joint id \"" + t.joint + "\"");
   }
   if (auto* t = r.optional(doc, "", "tunnel")) s.tunnel = read_scene_tunnel(r, *t, source);
+  if (auto* f = r.optional(doc, "", "rockmass")) s.rockmass = read_rockmass_form(r, *f, "rockmass");
   check_references(r, s);
   return s;
 }

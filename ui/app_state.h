@@ -16,6 +16,7 @@
 #include "ui/model_view.h"
 #include "ui/motion_playback.h"
 #include "ui/project_session.h"
+#include "ui/rockmass_view.h"
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
 #include "ui/tunnel_panel.h"
@@ -64,6 +65,7 @@ struct AppState {
   CaptureState capture;
   MappingState mapping;
   TunnelState tunnel;                         // the Project screen's tunnel panel
+  RockMassState rockmass;                     // the Blocks screen's Rock mass view
   std::optional<std::size_t> selected_block;  // index into session->blocks()
   MotionPlayback motion;                      // the selected block's motion after failure
   std::string status;                         // last message for the status bar

@@ -9,6 +9,7 @@
 // returns the id of the record.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "camera/camera.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
+#include "core/rockmass/classification_form.h"
 #include "storage/project_records.h"
 
 namespace rockface::ui {
@@ -74,11 +76,25 @@ class TunnelRunner {
                                          double height, Progress& progress) = 0;
 };
 
+// The rock mass of a visit (issue 23): its figures and classifications in
+// words, with the form entered for it (saved first when given).
+class RockMassRunner {
+ public:
+  virtual ~RockMassRunner() = default;
+  // Throws InputError naming the field for a form value out of range, or
+  // the visit when it has no traces.
+  virtual std::vector<std::string> figures(const std::filesystem::path& project,
+                                           storage::RecordId visit_id,
+                                           const std::optional<rockmass::ClassificationForm>& save,
+                                           Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
   CameraConnector* camera = nullptr;               // null: no camera
   TunnelRunner* tunnel = nullptr;                  // null: the Project screen shows no tunnel views
+  RockMassRunner* rockmass = nullptr;              // null: the Blocks screen shows no rock mass
 };
 
 }  // namespace rockface::ui

@@ -18,6 +18,9 @@ struct FaceTrace {
   std::vector<Eigen::Vector3d> points;  // project frame, along the trace
   // Its own plane's normal where its points give one (not straight).
   std::optional<Eigen::Vector3d> normal;
+  // Its joint ("J7"): the pieces of one joint traced apart are one
+  // discontinuity in the spacing. Empty when unassigned.
+  std::string joint_label;
   std::string set_label;  // the set its joint belongs to, when stored so
   std::optional<double> length_m;
   bool censored = false;  // an end leaves the mapped area
@@ -37,9 +40,8 @@ struct FaceWindow {
 };
 
 // The window of the mapped face: plane and outline from `outline_points`
-// (the free-face areas' polygons or the surface's vertices; the traces'
-// points when nothing else is given). Throws InputError("face", ...) when
-// fewer than three points or all on a line.
+// (the mapped traces' points: the window is where joints were mapped). Throws InputError("face",
+// ...) when fewer than three points or all on a line.
 FaceWindow face_window(const std::vector<Eigen::Vector3d>& outline_points);
 
 }  // namespace rockface::rockmass

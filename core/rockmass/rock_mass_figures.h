@@ -30,7 +30,7 @@ struct SetAgainstDrive {
 struct RockMassInput {
   std::vector<FaceTrace> traces;
   std::vector<SetInput> sets;
-  std::vector<Eigen::Vector3d> outline_points;  // empty: the traces' points
+  std::vector<Eigen::Vector3d> outline_points;  // the window's; empty: the traces' points
   std::vector<FaceBlock> blocks;                // finite blocks of the face
   std::vector<SetAgainstDrive> drive;           // empty: no tunnel / visit not placed
   std::optional<double> tunnel_span_m;          // the design profile's width

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdio>
+#include <map>
 #include <numeric>
 
 #include "core/rockmass/tolerances.h"
@@ -41,14 +42,25 @@ std::vector<SetSpacing> set_spacings(const std::vector<FaceTrace>& traces,
     SetSpacing s;
     s.label = sets[k].label;
     const Eigen::Vector3d n = sets[k].normal.normalized();
+    // One position per discontinuity: the pieces of one joint (same joint
+    // label) averaged; unlabelled traces each their own.
+    std::map<std::string, std::pair<double, int>> by_joint;
     std::vector<double> at;
     for (int i : assigned.members[k]) {
       const auto& pts = traces[i].points;
       if (pts.empty()) continue;
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
       for (const auto& p : pts) c += p;
-      at.push_back(n.dot(c / static_cast<double>(pts.size())));
+      const double x = n.dot(c / static_cast<double>(pts.size()));
+      if (traces[i].joint_label.empty()) {
+        at.push_back(x);
+      } else {
+        auto& [sum, count] = by_joint[traces[i].joint_label];
+        sum += x;
+        ++count;
+      }
     }
+    for (const auto& [label, sc] : by_joint) at.push_back(sc.first / sc.second);
     s.traces = static_cast<int>(assigned.members[k].size());
     std::sort(at.begin(), at.end());
     std::vector<double> merged;

@@ -29,7 +29,8 @@ int run_ui(const UiRequest& req) {
   StoreAnalysisRunner analysis;
   FieldCameraConnector camera(req.camera);
   StoreTunnelRunner tunnel;
-  const ui::FieldServices services{&reconstruction, &analysis, &camera, &tunnel};
+  StoreRockMassRunner rockmass;
+  const ui::FieldServices services{&reconstruction, &analysis, &camera, &tunnel, &rockmass};
   if (req.script.empty()) {
     ui::run_in_window(options, services);
     return 0;

@@ -80,7 +80,7 @@ VisitPlacement by_ground_control(RecordId visit) {
 TEST(ProjectTunnel, TunnelAndPlacementsRoundTrip) {
   TempDir dir("tunnel");
   auto store = ProjectStore::create(dir / "t.rockface", test::sample_project());
-  EXPECT_EQ(store.schema_version(), 5);
+  EXPECT_EQ(store.schema_version(), schema::kCurrentVersion);
   EXPECT_FALSE(store.load_tunnel());
   const TunnelRecord t = sample_tunnel();
   store.save_tunnel(t);
