@@ -317,8 +317,7 @@ struct Step {
   const char* sql;
 };
 constexpr Step kSteps[] = {
-    {2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4}, {5, kVersion4To5},
-    {6, kVersion5To6}};
+    {2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4}, {5, kVersion4To5}, {6, kVersion5To6}};
 
 }  // namespace
 

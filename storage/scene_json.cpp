@@ -11,8 +11,8 @@
 #include "core/common/preset.h"
 #include "storage/json_reader.h"
 #include "storage/picks_json.h"
-#include "storage/scene.h"
 #include "storage/rockmass_form_json.h"
+#include "storage/scene.h"
 #include "storage/scene_tunnel.h"
 
 namespace rockface::storage {

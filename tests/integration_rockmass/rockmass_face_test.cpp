@@ -91,8 +91,63 @@ class RockMassFace : public ::testing::Test {
     const test::CliRun render = test::run_rockface("render " + (dir_ / "face.scene.json").string() +
                                                    " --out " + (dir_ / "render").string());
     ASSERT_EQ(render.exit_code, 0) << render.err;
+    // The range pole stands 2 m before the face: the face behind it is not
+    // in the 3D image, and a tap there is refused. Its box in the left
+    // photograph (pinhole projection of its shaft, widened by its targets
+    // and 60 px for the lens distortion and the dense matching's edge).
+    const auto& imaging = scene["imaging"];
+    const auto& st = imaging["stations"][0];
+    const auto& cam = imaging["camera"];
+    const Eigen::Vector3d eye(st["position"][0].get<double>(), st["position"][1].get<double>(),
+                              st["position"][2].get<double>());
+    const Eigen::Vector3d look(st["look_at"][0].get<double>(), st["look_at"][1].get<double>(),
+                               st["look_at"][2].get<double>());
+    const Eigen::Vector3d fwd = (look - eye).normalized();
+    const Eigen::Vector3d right = fwd.cross(Eigen::Vector3d::UnitZ()).normalized();
+    const Eigen::Vector3d down = fwd.cross(right);
+    const auto& pole = imaging["range_pole"];
+    const Eigen::Vector3d base(pole["base"][0].get<double>(), pole["base"][1].get<double>(),
+                               pole["base"][2].get<double>());
+    const double pole_length = pole["length"].get<double>();
+    const double reach = pole.value("target_diameter", 0.25);
+    double u0 = 1e9, u1 = -1e9, v0 = 1e9, v1 = -1e9;
+    for (double f = 0; f <= 1.0001; f += 0.05)
+      for (double side : {-reach, reach}) {
+        const Eigen::Vector3d q = base + Eigen::Vector3d(0, 0, f * pole_length) + side * right;
+        const double z = (q - eye).dot(fwd);
+        const double u =
+            cam["cx"].get<double>() + cam["fx"].get<double>() * (q - eye).dot(right) / z;
+        const double v =
+            cam["cy"].get<double>() + cam["fy"].get<double>() * (q - eye).dot(down) / z;
+        u0 = std::min(u0, u - 60);
+        u1 = std::max(u1, u + 60);
+        v0 = std::min(v0, v - 60);
+        v1 = std::max(v1, v + 60);
+      }
     json picks = json::array();
     for (auto t : test::face_traces(dir_ / "render" / "truth.json")) {
+      // The longest run of the trace's pixels clear of the pole.
+      std::size_t best_from = 0, best_n = 0;
+      for (std::size_t i = 0; i < t.pixels.size();) {
+        auto behind = [&](std::size_t k) {
+          return t.pixels[k][0] > u0 && t.pixels[k][0] < u1 && t.pixels[k][1] > v0 &&
+                 t.pixels[k][1] < v1;
+        };
+        if (behind(i)) {
+          ++i;
+          continue;
+        }
+        std::size_t j = i;
+        while (j < t.pixels.size() && !behind(j)) ++j;
+        if (j - i > best_n) {
+          best_from = i;
+          best_n = j - i;
+        }
+        i = j;
+      }
+      t.pixels.assign(t.pixels.begin() + static_cast<long>(best_from),
+                      t.pixels.begin() + static_cast<long>(best_from + best_n));
+      if (t.pixels.size() < 20) continue;
       // The taps keep 8 % off each end, away from the photograph's borders
       // where dense matching leaves holes. The true traces below span what
       // was measured.

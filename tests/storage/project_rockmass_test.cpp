@@ -66,8 +66,8 @@ TEST(ProjectRockMass, AValueOutOfRangeIsRefusedByNameAndNothingStored) {
 TEST(SceneRockMass, TheSectionIsReadWithItsChecks) {
   const std::string head =
       R"({"format": "rockface-scene/1", "joints": [], "free_faces": [], "rockmass": )";
-  const Scene s = parse_scene(head + R"({"ucs_mpa": 60, "weathering": "slightly weathered"}})",
-                              "a.scene.json");
+  const Scene s =
+      parse_scene(head + R"({"ucs_mpa": 60, "weathering": "slightly weathered"}})", "a.scene.json");
   ASSERT_TRUE(s.rockmass);
   EXPECT_EQ(*s.rockmass->ucs_mpa, 60);
   EXPECT_EQ(*s.rockmass->weathering, rockmass::Weathering::slightly);
