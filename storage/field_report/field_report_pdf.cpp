@@ -412,7 +412,6 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   camera_section(pdf, r);
   accuracy_section(pdf, r);
   tunnel_section(pdf, r);
-  rock_mass_section(pdf, r);
 
   pdf.heading("The face", 0.3 * kPageH);
   if (r.photograph.empty()) {
@@ -430,6 +429,8 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   joint_section(pdf, r);
   block_section(pdf, r);
   dynamics_section(pdf, r);
+  // After the blocks: page 1 keeps the face with its traces and blocks.
+  rock_mass_section(pdf, r);
   pdf.finish();
 }
 
