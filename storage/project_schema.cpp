@@ -423,12 +423,24 @@ CREATE TABLE IF NOT EXISTS sync_run (
 );
 )sql";
 
+// Version 7: the rock-mass classification form per visit (issue 23): the
+// parameters the geologist entered on site (core/rockmass/classification_form.h)
+// as the JSON of storage/rockmass_form_json.h, one row per visit, replaced
+// on each save. A new table only: earlier visits simply have no form.
+constexpr const char* kVersion6To7 = R"sql(
+CREATE TABLE IF NOT EXISTS rockmass_form (
+  visit_id INTEGER PRIMARY KEY REFERENCES visit(id),
+  form_json TEXT NOT NULL,
+  updated_at TEXT NOT NULL
+);
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
-constexpr Step kSteps[] = {
-    {2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4}, {5, kVersion4To5}, {6, kVersion5To6}};
+constexpr Step kSteps[] = {{2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4},
+                           {5, kVersion4To5}, {6, kVersion5To6}, {7, kVersion6To7}};
 
 }  // namespace
 

@@ -19,6 +19,7 @@
 //   5  the tunnel (issue 22).
 //   6  a UUID on every record, made when it is created, and the record of
 //      what was synced to the office server (issue 24).
+//   7  the rock-mass classification form entered per visit (issue 23).
 #include <cstdint>
 
 #include "storage/project_sqlite.h"
@@ -27,7 +28,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 6;
+constexpr int kCurrentVersion = 7;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then

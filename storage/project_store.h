@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "core/rockmass/classification_form.h"
 #include "storage/project_records.h"
 #include "storage/project_sqlite.h"
 #include "storage/tunnel_records.h"
@@ -139,6 +140,12 @@ class ProjectStore {
   void save_visit_placement(const VisitPlacement& placement);
   std::optional<VisitPlacement> load_visit_placement(RecordId visit_id);
   std::vector<VisitPlacement> list_visit_placements();  // by chainage
+
+  // ---- the rock-mass form (issue 23; storage/project_store_rockmass.cpp) ----
+  // The classification form entered for a visit: saving replaces the one
+  // stored (validated first: an out-of-range value is refused by name).
+  void save_rockmass_form(RecordId visit_id, const rockmass::ClassificationForm& form);
+  std::optional<rockmass::ClassificationForm> load_rockmass_form(RecordId visit_id);
 
   IntegrityReport check_integrity(OpenOptions::Check depth = OpenOptions::Check::full);
   // Moves the write-ahead log into the main file (done on close anyway); a

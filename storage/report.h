@@ -181,6 +181,10 @@ struct Report {
   std::vector<ReportBlock> blocks;
   std::vector<std::string> notes;  // scene-level notes (traces left out, effects not applicable)
   std::map<std::string, double> timings_ms;
+  // The rock mass in figures of the trace map (storage/rockmass_report_json.h),
+  // as JSON text; empty when the analysis had no traces (see
+  // docs/scene-extensions.md, "The rock mass in figures").
+  std::string rockmass_json;
 };
 
 // JSON text of the report (format rockface-report/1), pretty-printed.

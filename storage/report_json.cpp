@@ -222,6 +222,7 @@ std::string report_to_json(const Report& r) {
   for (const auto& b : r.blocks) blocks.push_back(block_json(b));
   j["blocks"] = blocks;
   if (!r.notes.empty()) j["notes"] = r.notes;
+  if (!r.rockmass_json.empty()) j["rockmass"] = ordered::parse(r.rockmass_json);
   ordered timings = ordered::object();
   for (const auto& [k, v] : r.timings_ms) timings[k] = tidy(v);
   j["timings_ms"] = timings;

@@ -16,6 +16,7 @@
 
 #include "core/common/preset.h"
 #include "core/measure/picks.h"
+#include "core/rockmass/classification_form.h"
 #include "storage/scene_tunnel.h"
 #include "storage/scene_wedges.h"
 
@@ -198,6 +199,10 @@ struct Scene {
   // The tunnel the face lies in (docs/scene-extensions.md, "tunnel").
   std::optional<SceneTunnel> tunnel;
   std::optional<SceneWedges> wedges;  // the wedges around the excavation (issue 23)
+  // The rock-mass classification form (docs/scene-extensions.md,
+  // "rockmass"): what the geologist entered on site; the replay stores it
+  // with the visit.
+  std::optional<rockmass::ClassificationForm> rockmass;
 
   const SceneJoint* joint(const std::string& id) const;
   const SceneFreeFace* free_face(const std::string& id) const;

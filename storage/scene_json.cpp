@@ -11,6 +11,7 @@
 #include "core/common/preset.h"
 #include "storage/json_reader.h"
 #include "storage/picks_json.h"
+#include "storage/rockmass_form_json.h"
 #include "storage/scene.h"
 #include "storage/scene_tunnel.h"
 
@@ -555,6 +556,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       if (!s.joint(s.wedges->sets[i]))
         r.fail(Reader::index("wedges.sets", i), "unknown joint id \"" + s.wedges->sets[i] + "\"");
   }
+  if (auto* f = r.optional(doc, "", "rockmass")) s.rockmass = read_rockmass_form(r, *f, "rockmass");
   check_references(r, s);
   return s;
 }

@@ -18,6 +18,7 @@
 #include "ui/motion_playback.h"
 #include "ui/office_panel.h"
 #include "ui/project_session.h"
+#include "ui/rockmass_view.h"
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
 #include "ui/tunnel_panel.h"
@@ -70,6 +71,7 @@ struct AppState {
   TunnelState tunnel;                         // the Project screen's tunnel panel
   WedgesState wedges;                         // the Blocks screen's Wedges view
   OfficeState office;                         // the Project screen's sync to the office
+  RockMassState rockmass;                     // the Blocks screen's Rock mass view
   std::optional<std::size_t> selected_block;  // index into session->blocks()
   MotionPlayback motion;                      // the selected block's motion after failure
   std::string status;                         // last message for the status bar

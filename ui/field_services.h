@@ -19,6 +19,7 @@
 #include "camera/camera.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
+#include "core/rockmass/classification_form.h"
 #include "storage/project_records.h"
 #include "ui/block_verdict.h"
 
@@ -153,6 +154,19 @@ class SyncRunner {
                                         Progress& progress) = 0;
 };
 
+// The rock mass of a visit (issue 23): its figures and classifications in
+// words, with the form entered for it (saved first when given).
+class RockMassRunner {
+ public:
+  virtual ~RockMassRunner() = default;
+  // Throws InputError naming the field for a form value out of range, or
+  // the visit when it has no traces.
+  virtual std::vector<std::string> figures(const std::filesystem::path& project,
+                                           storage::RecordId visit_id,
+                                           const std::optional<rockmass::ClassificationForm>& save,
+                                           Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
@@ -161,6 +175,7 @@ struct FieldServices {
   TraceMapRunner* trace_map = nullptr;             // null: the Mapping screen shows no blocks
   WedgeRunner* wedges = nullptr;                   // null: the Blocks screen shows no Wedges view
   SyncRunner* sync = nullptr;                      // null: no office server on this tablet
+  RockMassRunner* rockmass = nullptr;              // null: the Blocks screen shows no rock mass
 };
 
 }  // namespace rockface::ui

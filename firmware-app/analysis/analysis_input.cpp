@@ -64,6 +64,7 @@ AnalysisInput analysis_input(const storage::Scene& scene) {
   in.traces = scene.traces;
   in.analysis = scene.analysis;
   in.effects = scene.effects;
+  in.rockmass_form = scene.rockmass;
   // In a tunnel a block in free flight lands on the invert: the design
   // profile's lowest point at the face, when the scene gives no floor.
   if (in.analysis.dynamics && !in.analysis.dynamics->floor && scene.tunnel)

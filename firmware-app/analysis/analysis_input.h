@@ -6,6 +6,7 @@
 // as in the scene file. The replay fills it with the measured joint planes
 // and traces; a scene file becomes one once, at the boundary
 // (analysis_input).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct AnalysisInput {
   std::vector<storage::SceneTrace> traces;
   storage::SceneAnalysis analysis;
   storage::SceneEffects effects;
+  // The rock-mass form the scene brings (its `rockmass` section), for the
+  // report's rock-mass section.
+  std::optional<rockmass::ClassificationForm> rockmass_form;
 
   const storage::SceneJoint* joint(const std::string& id) const;
   // Index of a plane id among joints followed by free faces, -1 if unknown.

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "firmware-app/analysis/analyse_rock_mass.h"
+
 namespace rockface::app {
 
 namespace {
@@ -34,6 +36,12 @@ storage::Report analyse(const AnalysisInput& scene, Progress& progress) {
   if (scene.analysis.blocks && !scene.traces.empty()) {
     progress.step("trace map", 0.6);
     report.timings_ms["traces"] = timed_ms([&] { analyse_trace_blocks(scene, report, progress); });
+  }
+  // The trace map's rock mass (spacing, RQD, Jv, block sizes, RMR89 / Q):
+  // whenever there are traces, with the scene's rockmass form.
+  if (!scene.traces.empty()) {
+    progress.step("rock mass", 0.9);
+    report.timings_ms["rockmass"] = timed_ms([&] { analyse_rock_mass(scene, report); });
   }
   // Dynamics after failure: listed when a block's motion was simulated.
   if (scene.analysis.dynamics) {

@@ -40,6 +40,8 @@ int run_ui(const UiRequest& req) {
   services.wedges = &wedges;
   StoreSyncRunner sync;
   services.sync = &sync;
+  StoreRockMassRunner rockmass;
+  services.rockmass = &rockmass;
   if (req.script.empty()) {
     ui::run_in_window(options, services);
     return 0;

@@ -307,6 +307,8 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     joints.push_back(joint);
   }
   store.save_joints(out.visit_id, {}, joints);
+  // The rock-mass form the scene brings (what the geologist entered on site).
+  if (scene->rockmass) store.save_rockmass_form(out.visit_id, *scene->rockmass);
 
   progress.step("blocks", 0.8);
   storage::Report report = analyse(analysed, progress);

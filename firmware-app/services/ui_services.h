@@ -61,6 +61,13 @@ class StoreSyncRunner final : public ui::SyncRunner {
   std::vector<std::string> sync(const std::filesystem::path& project, Progress& progress) override;
 };
 
+class StoreRockMassRunner final : public ui::RockMassRunner {
+ public:
+  std::vector<std::string> figures(const std::filesystem::path& project, storage::RecordId visit_id,
+                                   const std::optional<rockmass::ClassificationForm>& save,
+                                   Progress& progress) override;
+};
+
 // source: a scene with an imaging section, a folder of captures, or empty
 // (the first DSLR libgphoto2 finds).
 class FieldCameraConnector final : public ui::CameraConnector {

@@ -12,6 +12,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/photogrammetry/camera/camera_model.h"
+#include "core/rockmass/rock_mass_figures.h"
 #include "storage/project_store.h"
 #include "storage/report.h"
 #include "storage/tunnel_records.h"
@@ -152,6 +153,12 @@ struct FieldReport {
 
   std::optional<ReportedTunnel> tunnel;
   std::optional<ReportedWedges> wedges;
+
+  // The rock mass in figures and its classifications (issue 23): filled by
+  // the application (firmware-app/rockmass), absent with the reason in
+  // rockmass_note when the visit has no traces.
+  std::optional<rockmass::RockMassFigures> rockmass;
+  std::string rockmass_note;
 };
 
 // Reads everything the report shows for `visit_id` (InputError naming the

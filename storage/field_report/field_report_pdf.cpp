@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.h"
+#include "core/rockmass/figures_in_words.h"
 #include "storage/field_report/dynamics_picture.h"
 #include "storage/field_report/field_report_pictures.h"
 #include "storage/report_dynamics_json.h"
@@ -412,6 +413,23 @@ void wedges_section(PdfPages& pdf, const FieldReport& r) {
   }
 }
 
+// The rock mass (issue 23): the figures in words, then RMR89 and Q line by
+// line, each rating with its source (measured / entered) and its table.
+void rock_mass_section(PdfPages& pdf, const FieldReport& r) {
+  if (!r.rockmass && r.rockmass_note.empty()) return;
+  pdf.heading("The rock mass", 0.25 * kPageH);
+  if (!r.rockmass) {
+    pdf.line(r.rockmass_note);
+    return;
+  }
+  for (const auto& line : rockmass::figures_lines(*r.rockmass)) pdf.line(line, kSmall);
+  pdf.heading("Classification (RMR89, Q)", 0.2 * kPageH);
+  for (const auto& line : rockmass::classification_lines(*r.rockmass)) {
+    const bool total = line.rfind("RMR89", 0) == 0 || line.rfind("Q ", 0) == 0;
+    pdf.line(line, total ? kBody : kSmall, total);
+  }
+}
+
 }  // namespace
 
 void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& file) {
@@ -442,6 +460,8 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   joint_section(pdf, r);
   block_section(pdf, r);
   dynamics_section(pdf, r);
+  // After the blocks: page 1 keeps the face with its traces and blocks.
+  rock_mass_section(pdf, r);
   pdf.finish();
 }
 

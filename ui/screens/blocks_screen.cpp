@@ -174,6 +174,10 @@ void draw_blocks_screen(AppState& app) {
                        !app.task.running();
   if (app.targets.button("Run analysis", 0, can_run)) start_analysis(app);
   ImGui::SameLine();
+  if (app.targets.button(app.rockmass.open ? "Block report" : "Rock mass", 0,
+                         app.services.rockmass != nullptr))
+    app.rockmass.open = !app.rockmass.open;
+  ImGui::SameLine();
   if (const auto& a = app.session->analysis())
     ImGui::Text("Analysis %lld (%s, %s): %zu blocks", static_cast<long long>(a->id),
                 a->preset.c_str(), a->created_at.substr(0, 19).c_str(), a->blocks.size());
@@ -197,7 +201,9 @@ void draw_blocks_screen(AppState& app) {
   ImGui::SameLine();
   ImGui::BeginChild("block report", ImVec2(0, 0), true);
   const auto& blocks = app.session->blocks();
-  if (app.selected_block && *app.selected_block < blocks.size()) {
+  if (app.rockmass.open) {
+    draw_rockmass_view(app);  // ui/rockmass_view.h
+  } else if (app.selected_block && *app.selected_block < blocks.size()) {
     const BlockView& b = blocks[*app.selected_block];
     for (const auto& line : b.summary) ImGui::TextWrapped("%s", line.c_str());
     draw_motion_controls(app, b);

@@ -1,0 +1,139 @@
+#include "ui/rockmass_view.h"
+
+#include <memory>
+
+#include <imgui.h>
+
+#include "core/common/error.h"
+#include "ui/app_state.h"
+
+namespace rockface::ui {
+
+namespace {
+
+void compute(AppState& app, std::optional<rockmass::ClassificationForm> save) {
+  RockMassRunner* runner = app.services.rockmass;
+  const auto file = app.session->file();
+  const auto visit = *app.session->visit();
+  auto lines = std::make_shared<std::vector<std::string>>();
+  app.task.start(
+      save ? "Save the form and classify" : "Rock mass",
+      [runner, file, visit, save, lines](Progress& progress) {
+        *lines = runner->figures(file, visit, save, progress);
+        return std::string(save ? "form saved" : "rock mass");
+      },
+      [&app, lines](const TaskOutcome& outcome) {
+        RockMassState& r = app.rockmass;
+        r.lines = outcome.kind == TaskOutcome::Kind::done
+                      ? *lines
+                      : std::vector<std::string>{outcome.message};
+      });
+}
+
+void reload(AppState& app) {
+  RockMassState& r = app.rockmass;
+  ProjectSession& s = *app.session;
+  if (r.loaded && r.file == s.file() && r.visit == s.visit()) return;
+  r.file = s.file();
+  r.visit = s.visit();
+  r.loaded = true;
+  r.form = {};
+  r.refusal.clear();
+  r.lines.clear();
+  try {
+    if (s.visit())
+      if (const auto stored = s.store().load_rockmass_form(*s.visit())) r.form = *stored;
+  } catch (const std::exception& e) {
+    r.lines = {std::string("The stored form could not be read: ") + e.what()};
+  }
+}
+
+// One number of the form: a box to say it was entered, and its value.
+void number(AppState& app, const char* label, const char* unit, std::optional<double>& value,
+            double start) {
+  bool entered = value.has_value();
+  ImGui::PushID(label);
+  if (ImGui::Checkbox("##entered", &entered))
+    value = entered ? std::optional<double>(start) : std::nullopt;
+  ImGui::SameLine();
+  if (value) {
+    ImGui::SetNextItemWidth(120 * app.targets.scale());
+    ImGui::InputDouble(label, &*value, 0, 0, "%.3g");
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", unit);
+  } else {
+    ImGui::TextDisabled("%s: not entered", label);
+  }
+  ImGui::PopID();
+}
+
+// One choice of the form among the sheet's words, or "not entered".
+template <class E>
+void choice(const char* label, std::optional<E>& value, const std::vector<std::string>& words) {
+  const std::string shown = value ? words[static_cast<int>(*value)] : "not entered";
+  if (ImGui::BeginCombo(label, shown.c_str())) {
+    if (ImGui::Selectable("not entered", !value)) value.reset();
+    for (std::size_t i = 0; i < words.size(); ++i)
+      if (ImGui::Selectable(words[i].c_str(), value && static_cast<std::size_t>(*value) == i))
+        value = static_cast<E>(i);
+    ImGui::EndCombo();
+  }
+}
+
+void draw_form(AppState& app) {
+  rockmass::ClassificationForm& f = app.rockmass.form;
+  ImGui::TextDisabled("RMR89: intact rock, joint condition, groundwater");
+  number(app, "UCS", "MPa", f.ucs_mpa, 100);
+  number(app, "Is50", "MPa", f.is50_mpa, 4);
+  number(app, "aperture", "mm", f.aperture_mm, 0.5);
+  number(app, "persistence (when not measured)", "m", f.persistence_m, 3);
+  choice("roughness", f.roughness, rockmass::roughness_words());
+  choice("infilling", f.infilling, rockmass::infilling_words());
+  choice("weathering", f.weathering, rockmass::weathering_words());
+  number(app, "condition rating (instead)", "0-30", f.condition_rating, 20);
+  choice("groundwater", f.groundwater, rockmass::groundwater_words());
+  number(app, "inflow per 10 m (instead)", "l/min", f.inflow_l_per_min, 0);
+  choice("orientation (without a tunnel)", f.orientation, rockmass::orientation_words());
+  ImGui::TextDisabled("Q: Barton 2002 tables");
+  number(app, "Jr", "", f.jr, 1.5);
+  number(app, "Ja", "", f.ja, 1);
+  number(app, "Jw", "", f.jw, 1);
+  number(app, "SRF", "", f.srf, 1);
+  number(app, "ESR", "", f.esr, 1);
+  number(app, "span", "m", f.span_m, 10);
+}
+
+}  // namespace
+
+void draw_rockmass_view(AppState& app) {
+  if (!app.session || !app.session->visit()) {
+    ImGui::TextWrapped("Open a project with a visit first.");
+    return;
+  }
+  reload(app);
+  RockMassState& r = app.rockmass;
+  const bool idle = !app.task.running() && app.services.rockmass;
+  if (app.targets.button("Rock mass figures", 0, idle)) compute(app, std::nullopt);
+  ImGui::SameLine();
+  if (app.targets.button("Save form", 0, idle && !app.session->read_only())) {
+    // Refused by name here, before the worker: the geologist sees at once
+    // which value is off its table.
+    try {
+      rockmass::validate(r.form);
+      r.refusal.clear();
+      compute(app, r.form);
+    } catch (const InputError& e) {
+      r.refusal = e.where() + ": " + e.reason();
+    }
+  }
+  if (!r.refusal.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(230, 60, 40, 255));
+    ImGui::TextWrapped("Refused: %s", r.refusal.c_str());
+    ImGui::PopStyleColor();
+  }
+  for (const auto& line : r.lines) ImGui::TextWrapped("%s", line.c_str());
+  if (ImGui::CollapsingHeader("Entered on site (form)", ImGuiTreeNodeFlags_DefaultOpen))
+    draw_form(app);
+}
+
+}  // namespace rockface::ui
