@@ -64,6 +64,12 @@ ImageContrast measure_contrast(const cv::Mat& image) {
   std::nth_element(abs_lap.begin(), mid, abs_lap.end());
   out.noise_grey = abs_lap.empty() ? 0.0 : *mid / (0.6745 * 6.0);
 
+  std::vector<uchar> levels(grey.begin<uchar>(), grey.end<uchar>());
+  auto p90 =
+      levels.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(levels.size() - 1));
+  std::nth_element(levels.begin(), p90, levels.end());
+  out.bright_grey = *p90;
+
   const cv::Mat band = band_pass(f);
   cv::Mat energy;
   cv::boxFilter(band.mul(band), energy, CV_32F, cv::Size(kWindow, kWindow), cv::Point(-1, -1), true,
@@ -81,6 +87,13 @@ void require_matchable_contrast(const cv::Mat& image, const std::string& which) 
   std::ostringstream s;
   s.precision(2);
   s << std::fixed;
+  if (c.texture_grey < kMinMatchableTexture && c.bright_grey < kDarkImage) {
+    s << "under-exposed: the photograph is dark (nine pixels in ten below " << c.bright_grey
+      << " grey levels) and the face's texture only " << c.texture_grey
+      << " grey levels rms, at least " << kMinMatchableTexture
+      << " needed: light the face (flash, lamps) or expose longer";
+    throw InputError(which, s.str());
+  }
   if (c.texture_grey < kMinMatchableTexture) {
     s << "dust haze: the face's contrast is too low for matching: its texture is " << c.texture_grey
       << " grey levels rms (sensor noise " << c.noise_grey << " taken out), at least "

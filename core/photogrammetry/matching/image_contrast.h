@@ -17,7 +17,8 @@ struct ImageContrast {
   // matching uses: the band of 2 to 8 px wavelengths at 1000 px width, rms
   // in 15 x 15 px windows, with the noise's share taken out. Grey levels.
   double texture_grey = 0;
-  double noise_grey = 0;  // sensor noise, rms per pixel (Immerkaer's estimator)
+  double noise_grey = 0;   // sensor noise, rms per pixel (Immerkaer's estimator)
+  double bright_grey = 0;  // 90th percentile of the grey levels
 };
 
 ImageContrast measure_contrast(const cv::Mat& image);
@@ -30,6 +31,11 @@ ImageContrast measure_contrast(const cv::Mat& image);
 // orientation. The limit sits between the last that holds and the first
 // that fails.
 constexpr double kMinMatchableTexture = 2.0;
+
+// A photograph whose 90th percentile is below this is dark, not veiled:
+// haze lifts the dark parts toward the airlight, darkness leaves nine
+// pixels in ten below a quarter of full scale.
+constexpr double kDarkImage = 64;
 
 // Below this ratio of texture to sensor noise the matches are noise:
 // measured on the same face at high ISO, a ratio of 3.6 (ISO 12800)
