@@ -440,6 +440,8 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
   const RayPatchBins bins(polygons, view.pose, corner_lo - widen, corner_hi + widen);
 
   cv::Mat luminance(cam.height, cam.width, CV_32F);
+  cv::Mat airlight;  // the dust's veil, of full white (effects.dust only)
+  if (fx.dust) airlight.create(cam.height, cam.width, CV_32F);
   cv::Mat material(cam.height, cam.width, CV_8U);
   if (with_depth) view.depth.create(cam.height, cam.width, CV_32F);
   const char* stage = station == 0 ? "rendering left image" : "rendering right image";
@@ -454,19 +456,27 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
         auto* lum = luminance.ptr<float>(v);
         auto* mat = material.ptr<uint8_t>(v);
         float* depth = with_depth ? view.depth.ptr<float>(v) : nullptr;
+        float* veil = fx.dust ? airlight.ptr<float>(v) : nullptr;
         for (int u = 0; u < cam.width; ++u) {
           const Vector3d d = Rt * Vector3d(normalised[u].x, normalised[u].y, 1.0);
           const Hit hit = tracer.trace(C, d, bins.candidates(normalised[u].x, normalised[u].y));
           lum[u] = hit.luminance;
           // Dust between the camera and what was hit (nothing hit: the
-          // haze all the way), then the lens's fall-off toward the corners.
-          if (fx.dust)
-            lum[u] = static_cast<float>(hit.material == kBackground
-                                            ? fx.dust->airlight
-                                            : through_dust(lum[u], hit.t * d.norm(), *fx.dust));
-          if (fx.vignetting)
-            lum[u] = static_cast<float>(
-                lum[u] * vignetting_factor(normalised[u].x, normalised[u].y, *fx.vignetting));
+          // haze all the way): the surface's radiance attenuated, and the
+          // airlight (neutral grey, not the surface's colour) added apart.
+          if (fx.dust) {
+            const double t = hit.material == kBackground
+                                 ? 0.0
+                                 : std::exp(-fx.dust->beta_per_m * hit.t * d.norm());
+            lum[u] = static_cast<float>(lum[u] * t);
+            veil[u] = static_cast<float>(fx.dust->airlight * (1 - t));
+          }
+          // The lens's fall-off toward the corners, on both.
+          if (fx.vignetting) {
+            const double f = vignetting_factor(normalised[u].x, normalised[u].y, *fx.vignetting);
+            lum[u] = static_cast<float>(lum[u] * f);
+            if (veil) veil[u] = static_cast<float>(veil[u] * f);
+          }
           mat[u] = hit.material;
           if (depth) depth[u] = hit.material == kBackground ? 0.f : static_cast<float>(hit.t);
         }
@@ -475,9 +485,13 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
     progress.step(stage, static_cast<double>(v1) / cam.height);
   }
 
-  if (scene.effects.blur_px > 0)
+  if (scene.effects.blur_px > 0) {
     cv::GaussianBlur(luminance, luminance, cv::Size(0, 0), scene.effects.blur_px, 0,
                      cv::BORDER_REFLECT);
+    if (fx.dust)
+      cv::GaussianBlur(airlight, airlight, cv::Size(0, 0), scene.effects.blur_px, 0,
+                       cv::BORDER_REFLECT);
+  }
 
   // Colour per material (B, G, R): brownish-grey rock, neutral targets, a
   // red and white pole, a dark background.
@@ -498,10 +512,12 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
   for (int v = 0; v < cam.height; ++v) {
     const float* lum = luminance.ptr<float>(v);
     const uint8_t* mat = material.ptr<uint8_t>(v);
+    const float* veil = fx.dust ? airlight.ptr<float>(v) : nullptr;
     auto* out = view.image.ptr<cv::Vec3b>(v);
     for (int u = 0; u < cam.width; ++u)
       for (int c = 0; c < 3; ++c) {
         double value = tint[mat[u]][c] * lum[u] * gain;
+        if (veil) value += veil[u] * gain;
         if (sensor) value = sensor->apply(value, sensor_rng);
         if (sigma > 0) value += rng.gaussian(sigma);
         out[u][c] = cv::saturate_cast<uint8_t>(value);

@@ -58,12 +58,6 @@ double headlamp_specular(const Eigen::Vector3d& q, const Eigen::Vector3d& n,
                          const Eigen::Vector3d& to_camera, const Eigen::Vector3d& lamp,
                          double shininess);
 
-// Koschmieder: the radiance seen through `distance_m` of dust.
-inline double through_dust(double radiance, double distance_m, const SyntheticDust& dust) {
-  const double t = std::exp(-dust.beta_per_m * distance_m);
-  return radiance * t + dust.airlight * (1 - t);
-}
-
 // Vignetting at a ray of normalised (undistorted) image coordinates (x, y):
 // 1 - strength (1 - cos^4 theta), at least 0; strength 1 is the cos^4 law.
 inline double vignetting_factor(double x, double y, double strength) {

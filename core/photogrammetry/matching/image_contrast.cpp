@@ -69,6 +69,9 @@ ImageContrast measure_contrast(const cv::Mat& image) {
       levels.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(levels.size() - 1));
   std::nth_element(levels.begin(), p90, levels.end());
   out.bright_grey = *p90;
+  auto p50 = levels.begin() + static_cast<std::ptrdiff_t>(levels.size() / 2);
+  std::nth_element(levels.begin(), p50, levels.end());
+  out.median_grey = *p50;
 
   const cv::Mat band = band_pass(f);
   cv::Mat energy;
@@ -87,6 +90,13 @@ void require_matchable_contrast(const cv::Mat& image, const std::string& which) 
   std::ostringstream s;
   s.precision(2);
   s << std::fixed;
+  if (c.texture_grey < kMinMatchableTexture && c.median_grey >= kClippedImage) {
+    s << "over-exposed: half the photograph is at " << c.median_grey
+      << " grey levels or brighter, where the rock's texture is clipped (" << c.texture_grey
+      << " grey levels rms left, at least " << kMinMatchableTexture
+      << " needed): less flash or lamp on the face, or a shorter exposure";
+    throw InputError(which, s.str());
+  }
   if (c.texture_grey < kMinMatchableTexture && c.bright_grey < kDarkImage) {
     s << "under-exposed: the photograph is dark (nine pixels in ten below " << c.bright_grey
       << " grey levels) and the face's texture only " << c.texture_grey

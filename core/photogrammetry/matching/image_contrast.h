@@ -19,6 +19,7 @@ struct ImageContrast {
   double texture_grey = 0;
   double noise_grey = 0;   // sensor noise, rms per pixel (Immerkaer's estimator)
   double bright_grey = 0;  // 90th percentile of the grey levels
+  double median_grey = 0;
 };
 
 ImageContrast measure_contrast(const cv::Mat& image);
@@ -36,6 +37,8 @@ constexpr double kMinMatchableTexture = 2.0;
 // haze lifts the dark parts toward the airlight, darkness leaves nine
 // pixels in ten below a quarter of full scale.
 constexpr double kDarkImage = 64;
+// Half the photograph at or above this is clipped: JPEG's top levels.
+constexpr double kClippedImage = 245;
 
 // Below this ratio of texture to sensor noise the matches are noise:
 // measured on the same face at high ISO, a ratio of 3.6 (ISO 12800)
