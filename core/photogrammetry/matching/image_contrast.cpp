@@ -69,6 +69,10 @@ ImageContrast measure_contrast(const cv::Mat& image) {
       levels.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(levels.size() - 1));
   std::nth_element(levels.begin(), p90, levels.end());
   out.bright_grey = *p90;
+  double lo = 0, hi = 0;
+  cv::minMaxLoc(grey, &lo, &hi);
+  out.darkest_grey = lo;
+  out.brightest_grey = hi;
   auto p50 = levels.begin() + static_cast<std::ptrdiff_t>(levels.size() / 2);
   std::nth_element(levels.begin(), p50, levels.end());
   out.median_grey = *p50;
@@ -90,6 +94,12 @@ void require_matchable_contrast(const cv::Mat& image, const std::string& which) 
   std::ostringstream s;
   s.precision(2);
   s << std::fixed;
+  if (c.darkest_grey + kBlankRange >= c.brightest_grey) {
+    s << "the image is blank, black or uniform (grey levels " << c.darkest_grey << " to "
+      << c.brightest_grey
+      << "): nothing to match; the lens cap on, the shot taken in the dark, or a failed capture";
+    throw InputError(which, s.str());
+  }
   if (c.texture_grey < kMinMatchableTexture && c.median_grey >= kClippedImage) {
     s << "over-exposed: half the photograph is at " << c.median_grey
       << " grey levels or brighter, where the rock's texture is clipped (" << c.texture_grey

@@ -20,6 +20,7 @@ struct ImageContrast {
   double noise_grey = 0;   // sensor noise, rms per pixel (Immerkaer's estimator)
   double bright_grey = 0;  // 90th percentile of the grey levels
   double median_grey = 0;
+  double darkest_grey = 0, brightest_grey = 0;
 };
 
 ImageContrast measure_contrast(const cv::Mat& image);
@@ -37,6 +38,9 @@ constexpr double kMinMatchableTexture = 2.0;
 // haze lifts the dark parts toward the airlight, darkness leaves nine
 // pixels in ten below a quarter of full scale.
 constexpr double kDarkImage = 64;
+// An image whose grey levels all lie within this range is blank (a capped
+// lens, a black frame): a few levels of sensor noise at most.
+constexpr double kBlankRange = 4;
 // Half the photograph at or above this is clipped: JPEG's top levels.
 constexpr double kClippedImage = 245;
 
