@@ -45,11 +45,14 @@ constexpr double kBlankRange = 4;
 constexpr double kClippedImage = 245;
 
 // Below this ratio of texture to sensor noise the matches are noise:
-// measured on the same face at high ISO, a ratio of 3.6 (ISO 12800)
+// measured on the synthetic face at high ISO, a ratio of 3.6 (ISO 12800)
 // registers with the scale within 0.8 % and the facets within 0.7 deg, 1.7
-// (ISO 51200) comes out 2 % in scale and 6 deg in the facets and north
-// without any other check objecting. The limit sits between.
-constexpr double kMinTextureToNoise = 2.5;
+// (ISO 51200) came out 2 % in scale and 6 deg in the facets and north
+// without any other check objecting; the independent face of
+// tests/integration_reconstruct (a darker rock, 3.4 grey levels of texture
+// under 1.5 of noise: 2.3) registers within its test's bounds. The limit
+// sits between the lowest that holds and the highest that fails.
+constexpr double kMinTextureToNoise = 2.0;
 
 // Throws InputError("left image" / "right image", ...) naming the texture,
 // the noise and the limit when a photograph has too little texture.
