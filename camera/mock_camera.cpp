@@ -1,6 +1,7 @@
 #include "camera/mock_camera.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -240,6 +241,9 @@ Capture MockCamera::capture_synthetic() {
   exif.exposure_time_s = shutter_seconds(find("shutterspeed").value);
   exif.iso = std::stoi(find("iso").value);
   exif.flash_fired = find("flashmode").value == "On";
+  // A scene that asks for a sensor at an ISO or a flash was shot so.
+  if (scene.effects.sensor) exif.iso = static_cast<int>(std::lround(scene.effects.sensor->iso));
+  if (scene.effects.flash) exif.flash_fired = true;
   const auto& st = scene.stations[station];
   exif.focus_distance_m =
       focus_locked_ && locked_focus_m_ ? *locked_focus_m_ : (st.look_at - st.position).norm();

@@ -10,6 +10,8 @@
 
 #include "camera/ray_patch_bins.h"
 #include "camera/rock_texture.h"
+#include "camera/sensor_effects.h"
+#include "camera/tunnel_lighting.h"
 #include "core/common/error.h"
 
 namespace rockface::camera {
@@ -52,7 +54,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Luminance classes, tinted to colour at the end.
-enum Material : uint8_t { kBackground = 0, kRock, kTarget, kPoleWhite, kPoleRed };
+enum Material : uint8_t { kBackground = 0, kRock, kTarget, kPoleWhite, kPoleRed, kShotcrete };
 
 struct JointOnPatch {
   Vector3d normal;
@@ -82,6 +84,8 @@ struct PreparedScene {
   Vector2d pole_xy;
   double pole_z0 = 0, pole_z1 = 0;
   Vector3d lamp;  // midpoint of the stations
+  // Regions on the face (effects.wet, effects.shotcrete), in scene order.
+  std::vector<PreparedRegion> wet, shotcrete;
 };
 
 bool inside_polygon(const std::vector<Vector2d>& poly, const Vector2d& p) {
@@ -142,6 +146,12 @@ PreparedScene prepare(const SyntheticScene& scene) {
   for (size_t i = 0; i < scene.patches.size(); ++i)
     s.patches.push_back(prepare_patch(scene.patches[i], i, scene.joints));
   s.lamp = 0.5 * (scene.stations[0].position + scene.stations[1].position);
+  for (std::size_t i = 0; i < scene.effects.wet.size(); ++i)
+    s.wet.emplace_back(scene.effects.wet[i].region,
+                       "imaging.effects.wet[" + std::to_string(i) + "].polygon");
+  for (std::size_t i = 0; i < scene.effects.shotcrete.size(); ++i)
+    s.shotcrete.emplace_back(scene.effects.shotcrete[i].region,
+                             "imaging.effects.shotcrete[" + std::to_string(i) + "].polygon");
   if (scene.range_pole) {
     const auto& pole = *scene.range_pole;
     s.has_pole = true;
@@ -164,7 +174,9 @@ struct Hit {
 struct Tracer {
   const PreparedScene& scene;
   RockTexture texture;
-  double inv_focal;  // 1 / fx: pixel footprint per metre of depth
+  double inv_focal;                           // 1 / fx: pixel footprint per metre of depth
+  const SyntheticEffects* effects = nullptr;  // for wet and shotcrete regions
+  const TunnelLights* lights = nullptr;       // flash, lamps; null: the default headlamp
 
   // `candidates`: the patches the ray can hit (RayPatchBins), in patch
   // order; nullptr tests every patch.
@@ -231,6 +243,10 @@ struct Tracer {
       hit.t = t;
       hit.material = kTarget;
       hit.luminance = static_cast<float>(0.06 + (0.92 - 0.06) * white);
+      if (lights) {
+        const Vector3d facing = denom < 0 ? target.normal : Vector3d(-target.normal);
+        hit.luminance = static_cast<float>(hit.luminance * lights->diffuse(C + t * d, facing));
+      }
     }
     if (hit.material == kTarget) return hit;
     Vector3d pole_normal = Vector3d::Zero();
@@ -242,7 +258,8 @@ struct Tracer {
       hit.material = (band % 2 == 0) ? kPoleWhite : kPoleRed;
       const double lit = std::max(0.0, pole_normal.dot((scene.lamp - q).normalized()));
       hit.luminance =
-          static_cast<float>((hit.material == kPoleWhite ? 0.85 : 0.6) * (0.35 + 0.65 * lit));
+          static_cast<float>((hit.material == kPoleWhite ? 0.85 : 0.6) *
+                             (lights ? lights->diffuse(q, pole_normal) : 0.35 + 0.65 * lit));
       return hit;
     }
     if (which < 0) return hit;
@@ -250,8 +267,11 @@ struct Tracer {
     const Vector3d q = C + t_patch * d;
     const double cos_incidence = std::max(std::abs(p.normal.dot(d)) / dn, 0.1);
     const double footprint = t_patch * dn * inv_focal / cos_incidence;
-    double lum = texture.albedo(q, footprint);
     const Vector3d facing = p.normal.dot(d) < 0 ? p.normal : Vector3d(-p.normal);
+    hit.t = t_patch;
+    if (!scene.shotcrete.empty() || !scene.wet.empty() || lights)
+      return lit_surface(hit, q, facing, -d / dn, footprint, p);
+    double lum = texture.albedo(q, footprint);
     const double lit = std::max(0.0, facing.dot((scene.lamp - q).normalized()));
     lum *= 0.3 + 0.7 * lit;
     for (const auto& j : p.joints) {
@@ -260,7 +280,55 @@ struct Tracer {
           std::clamp((SyntheticDrawing::kTraceWidth / 2 - s) / footprint + 0.5, 0.0, 1.0);
       lum *= 1.0 - 0.85 * cover;
     }
-    hit.t = t_patch;
+    hit.material = kRock;
+    hit.luminance = static_cast<float>(lum);
+    return hit;
+  }
+
+  // A surface hit under the tunnel's effects: shotcrete hides the texture
+  // and the traces; wet rock is darker and has a specular lobe; the light
+  // is the flash and lamps when asked, else the default headlamp.
+  Hit lit_surface(Hit hit, const Vector3d& q, const Vector3d& facing, const Vector3d& to_camera,
+                  double footprint, const PreparedPatch& p) const {
+    const double light = lights
+                             ? lights->diffuse(q, facing)
+                             : 0.3 + 0.7 * std::max(0.0, facing.dot((scene.lamp - q).normalized()));
+    for (std::size_t k = 0; k < scene.shotcrete.size(); ++k)
+      if (scene.shotcrete[k].contains(q)) {
+        // Sprayed concrete is even: a grain of +-5 % (the texture's fine
+        // octaves at a tenth of the rock's contrast), no joints.
+        const double grain = 1.0 + 0.1 * (texture.albedo(q * 7.0, footprint * 7.0) - 0.5);
+        hit.material = kShotcrete;
+        hit.luminance = static_cast<float>(effects->shotcrete[k].albedo * grain * light);
+        return hit;
+      }
+    double lum = texture.albedo(q, footprint);
+    const SyntheticWet* wet = nullptr;
+    for (std::size_t k = 0; k < scene.wet.size() && !wet; ++k)
+      if (scene.wet[k].contains(q)) wet = &effects->wet[k];
+    if (wet) lum *= wet->darkening;
+    lum *= light;
+    for (const auto& j : p.joints) {
+      const double s = std::abs(j.normal.dot(q) - j.offset) * j.in_surface_scale;
+      const double cover =
+          std::clamp((SyntheticDrawing::kTraceWidth / 2 - s) / footprint + 0.5, 0.0, 1.0);
+      lum *= 1.0 - 0.85 * cover;
+    }
+    if (wet) {
+      // The water film follows the rock's relief, so the lobe breaks into
+      // glints: the normal tilted by the texture's slope over 1 cm (a
+      // relief of a few millimetres per centimetre, as on a blasted face).
+      const double h = 0.01, relief = 3.0;
+      const double su =
+          texture.albedo(q + h * p.eu, footprint) - texture.albedo(q - h * p.eu, footprint);
+      const double sv =
+          texture.albedo(q + h * p.ev, footprint) - texture.albedo(q - h * p.ev, footprint);
+      const Vector3d n = (facing - relief * (su * p.eu + sv * p.ev)).normalized();
+      // The film reflects on top of the traces too.
+      lum +=
+          wet->specular * (lights ? lights->specular(q, n, to_camera, wet->shininess)
+                                  : headlamp_specular(q, n, to_camera, scene.lamp, wet->shininess));
+    }
     hit.material = kRock;
     hit.luminance = static_cast<float>(lum);
     return hit;
@@ -352,7 +420,10 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
   SyntheticView view;
   view.pose =
       station_pose(scene.stations[station], "imaging.stations[" + std::to_string(station) + "]");
-  const Tracer tracer{prepared, RockTexture(scene.texture_seed), 1.0 / cam.fx};
+  const SyntheticEffects& fx = scene.effects;
+  const TunnelLights lights(fx, scene.stations[station]);
+  const Tracer tracer{prepared, RockTexture(scene.texture_seed), 1.0 / cam.fx, &fx,
+                      fx.tunnel_lit() ? &lights : nullptr};
   const cv::Matx33d K = camera_matrix_of(cam);
   const cv::Mat dist = dist_of(cam);
   const int iterations = undistort_iterations(cam);
@@ -369,6 +440,8 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
   const RayPatchBins bins(polygons, view.pose, corner_lo - widen, corner_hi + widen);
 
   cv::Mat luminance(cam.height, cam.width, CV_32F);
+  cv::Mat airlight;  // the dust's veil, of full white (effects.dust only)
+  if (fx.dust) airlight.create(cam.height, cam.width, CV_32F);
   cv::Mat material(cam.height, cam.width, CV_8U);
   if (with_depth) view.depth.create(cam.height, cam.width, CV_32F);
   const char* stage = station == 0 ? "rendering left image" : "rendering right image";
@@ -383,10 +456,27 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
         auto* lum = luminance.ptr<float>(v);
         auto* mat = material.ptr<uint8_t>(v);
         float* depth = with_depth ? view.depth.ptr<float>(v) : nullptr;
+        float* veil = fx.dust ? airlight.ptr<float>(v) : nullptr;
         for (int u = 0; u < cam.width; ++u) {
           const Vector3d d = Rt * Vector3d(normalised[u].x, normalised[u].y, 1.0);
           const Hit hit = tracer.trace(C, d, bins.candidates(normalised[u].x, normalised[u].y));
           lum[u] = hit.luminance;
+          // Dust between the camera and what was hit (nothing hit: the
+          // haze all the way): the surface's radiance attenuated, and the
+          // airlight (neutral grey, not the surface's colour) added apart.
+          if (fx.dust) {
+            const double t = hit.material == kBackground
+                                 ? 0.0
+                                 : std::exp(-fx.dust->beta_per_m * hit.t * d.norm());
+            lum[u] = static_cast<float>(lum[u] * t);
+            veil[u] = static_cast<float>(fx.dust->airlight * (1 - t));
+          }
+          // The lens's fall-off toward the corners, on both.
+          if (fx.vignetting) {
+            const double f = vignetting_factor(normalised[u].x, normalised[u].y, *fx.vignetting);
+            lum[u] = static_cast<float>(lum[u] * f);
+            if (veil) veil[u] = static_cast<float>(veil[u] * f);
+          }
           mat[u] = hit.material;
           if (depth) depth[u] = hit.material == kBackground ? 0.f : static_cast<float>(hit.t);
         }
@@ -395,37 +485,52 @@ SyntheticView render_view(const SyntheticScene& scene, int station, const Camera
     progress.step(stage, static_cast<double>(v1) / cam.height);
   }
 
-  if (scene.effects.blur_px > 0)
+  if (scene.effects.blur_px > 0) {
     cv::GaussianBlur(luminance, luminance, cv::Size(0, 0), scene.effects.blur_px, 0,
                      cv::BORDER_REFLECT);
+    if (fx.dust)
+      cv::GaussianBlur(airlight, airlight, cv::Size(0, 0), scene.effects.blur_px, 0,
+                       cv::BORDER_REFLECT);
+  }
 
   // Colour per material (B, G, R): brownish-grey rock, neutral targets, a
   // red and white pole, a dark background.
-  static const float tint[5][3] = {{1.0f, 1.0f, 1.0f},
-                                   {0.82f, 0.92f, 1.0f},
-                                   {1.0f, 1.0f, 1.0f},
-                                   {1.0f, 1.0f, 1.0f},
-                                   {0.25f, 0.25f, 1.0f}};
+  static const float tint[6][3] = {
+      {1.0f, 1.0f, 1.0f}, {0.82f, 0.92f, 1.0f}, {1.0f, 1.0f, 1.0f},
+      {1.0f, 1.0f, 1.0f}, {0.25f, 0.25f, 1.0f}, {0.9f, 0.95f, 0.97f}};  // shotcrete: cement grey
   view.image.create(cam.height, cam.width, CV_8UC3);
   const float gain = static_cast<float>(255.0 * scene.effects.exposure);
   const double sigma = scene.effects.noise_sigma;
   // One generator walked in pixel order: the same noise on every run.
   cv::RNG rng(0x5EED0000ULL + 2ULL * scene.texture_seed + static_cast<uint64_t>(station));
+  // The sensor's own generator, so that asking for it leaves noise_sigma's
+  // sequence as it was.
+  const std::optional<SensorNoise> sensor =
+      fx.sensor ? std::optional<SensorNoise>(SensorNoise(*fx.sensor)) : std::nullopt;
+  cv::RNG sensor_rng(0xC0FFEE00ULL + 2ULL * (fx.sensor ? fx.sensor->seed : 0) +
+                     static_cast<uint64_t>(station));
   for (int v = 0; v < cam.height; ++v) {
     const float* lum = luminance.ptr<float>(v);
     const uint8_t* mat = material.ptr<uint8_t>(v);
+    const float* veil = fx.dust ? airlight.ptr<float>(v) : nullptr;
     auto* out = view.image.ptr<cv::Vec3b>(v);
     for (int u = 0; u < cam.width; ++u)
       for (int c = 0; c < 3; ++c) {
         double value = tint[mat[u]][c] * lum[u] * gain;
+        if (veil) value += veil[u] * gain;
+        if (sensor) value = sensor->apply(value, sensor_rng);
         if (sigma > 0) value += rng.gaussian(sigma);
         out[u][c] = cv::saturate_cast<uint8_t>(value);
       }
   }
+  if (fx.jpeg_quality) view.image = jpeg_round_trip(view.image, *fx.jpeg_quality);
   return view;
 }
 
-std::vector<TraceSegment> true_trace_segments(const SyntheticScene& scene) {
+namespace {
+
+// Where each joint cuts each patch, whole.
+std::vector<TraceSegment> traces_on_patches(const SyntheticScene& scene) {
   std::vector<TraceSegment> segments;
   for (const auto& joint : scene.joints) {
     const Vector3d nj = joint.normal.normalized();
@@ -453,6 +558,23 @@ std::vector<TraceSegment> true_trace_segments(const SyntheticScene& scene) {
       for (size_t i = 0; i + 1 < crossings.size(); i += 2)
         segments.push_back({joint.id, patch.id, {crossings[i].second, crossings[i + 1].second}});
     }
+  }
+  return segments;
+}
+
+}  // namespace
+
+std::vector<TraceSegment> true_trace_segments(const SyntheticScene& scene) {
+  std::vector<TraceSegment> segments = traces_on_patches(scene);
+  // Shotcrete hides the rock: no trace is seen (or drawn) under it.
+  for (std::size_t i = 0; i < scene.effects.shotcrete.size(); ++i) {
+    const PreparedRegion region(scene.effects.shotcrete[i].region,
+                                "imaging.effects.shotcrete[" + std::to_string(i) + "].polygon");
+    std::vector<TraceSegment> kept;
+    for (const auto& seg : segments)
+      for (const auto& piece : region.outside(seg.world[0], seg.world[1]))
+        kept.push_back({seg.joint, seg.patch, piece});
+    segments = std::move(kept);
   }
   return segments;
 }
@@ -510,6 +632,23 @@ SyntheticRender render_scene(const SyntheticScene& scene, Progress& progress) {
     r.traces.push_back(std::move(trace));
   }
   return r;
+}
+
+std::vector<std::string> SyntheticEffects::simulated() const {
+  std::vector<std::string> out;
+  if (distortion) out.push_back("distortion");
+  if (noise_sigma > 0) out.push_back("noise_sigma");
+  if (blur_px > 0) out.push_back("blur_px");
+  if (exposure != 1.0) out.push_back("exposure");
+  if (flash) out.push_back("flash");
+  if (!lamps.empty()) out.push_back("lamps");
+  if (vignetting) out.push_back("vignetting");
+  if (sensor) out.push_back("sensor");
+  if (jpeg_quality) out.push_back("jpeg_quality");
+  if (!wet.empty()) out.push_back("wet");
+  if (!shotcrete.empty()) out.push_back("shotcrete");
+  if (dust) out.push_back("dust");
+  return out;
 }
 
 }  // namespace rockface::camera

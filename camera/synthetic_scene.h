@@ -49,12 +49,85 @@ struct SyntheticRangePole {
   double target_diameter = 0.25;  // m
 };
 
+// Tunnel lighting and imaging (docs/scene-extensions.md, "The face as a
+// tunnel lights it"). Each is off unless the scene asks for it.
+
+// A flash at each station's camera: a point light whose irradiance falls
+// with the distance squared and the cosine of the angle of incidence. At
+// `intensity` 1 a face-on surface at the station's look_at distance gets
+// the full white of the default lighting (a TTL flash exposes for the
+// focus point).
+struct SyntheticFlash {
+  double intensity = 1.0;
+};
+
+// A lamp (the jumbo's work lights): a point light at `position`; a surface
+// facing it at distance d gets intensity / d^2 of full white.
+struct SyntheticLamp {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  double intensity = 1.0;  // full white x m^2
+};
+
+// A region on the face: points of the surface within kRegionReach of the
+// polygon's plane whose projection on it falls inside the polygon.
+struct SyntheticRegion {
+  std::string id;
+  std::vector<Eigen::Vector3d> polygon;        // at least 3 points, planar
+  static constexpr double kRegionReach = 0.3;  // m: a face is not flatter than this
+};
+
+// Water on the rock: darker albedo and a specular (Blinn-Phong) lobe.
+struct SyntheticWet {
+  SyntheticRegion region;
+  double specular = 0.5;   // k_s: peak reflectance of the lobe, of full white
+  double shininess = 60;   // Blinn-Phong exponent
+  double darkening = 0.6;  // albedo factor of wet rock
+};
+
+// Sprayed concrete: grey, smooth, no texture and no joint traces.
+struct SyntheticShotcrete {
+  SyntheticRegion region;
+  double albedo = 0.55;
+};
+
+// The sensor at an ISO: shot noise (Poisson, sqrt of the electrons) and
+// read noise, in electrons; full scale (255) holds full_well_e * base_iso
+// / iso electrons.
+struct SyntheticSensor {
+  double iso = 100;
+  double base_iso = 100;
+  double full_well_e = 40000;  // electrons at base ISO (APS-C DSLR, ~4 um pixels)
+  double read_noise_e = 3.0;   // electrons rms
+  unsigned seed = 1;
+};
+
+// Dust in the air (Koschmieder): radiance attenuated by exp(-beta d) toward
+// the airlight over the distance d from the camera.
+struct SyntheticDust {
+  double beta_per_m = 0;   // extinction coefficient; visibility = 3.912 / beta
+  double airlight = 0.35;  // grey of the lit haze, of full white
+};
+
 // Imaging effects; each is off unless the scene switches it on.
 struct SyntheticEffects {
   bool distortion = false;  // render through the camera's Brown distortion
   double noise_sigma = 0;   // Gaussian sensor noise, grey levels (0..255)
   double blur_px = 0;       // Gaussian blur sigma, pixels
   double exposure = 1.0;    // gain on the rendered radiance
+  // The face as a tunnel lights it.
+  std::optional<SyntheticFlash> flash;
+  std::vector<SyntheticLamp> lamps;
+  std::optional<double> vignetting;  // strength: 1 = the cos^4 law of a simple lens
+  std::optional<SyntheticSensor> sensor;
+  std::optional<int> jpeg_quality;  // 1..100: a JPEG round trip at this quality
+  std::vector<SyntheticWet> wet;
+  std::vector<SyntheticShotcrete> shotcrete;
+  std::optional<SyntheticDust> dust;
+  // What ran, by the scene's field names, in a fixed order (distortion,
+  // noise_sigma, blur_px, exposure, flash, lamps, vignetting, sensor,
+  // jpeg_quality, wet, shotcrete, dust).
+  std::vector<std::string> simulated() const;
+  bool tunnel_lit() const { return flash.has_value() || !lamps.empty(); }
 };
 
 struct SyntheticScene {

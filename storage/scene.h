@@ -160,11 +160,47 @@ struct SceneRangePole {
   double target_diameter = 0.25;
 };
 
+// The face as a tunnel lights it (docs/scene-extensions.md): flash, lamps,
+// vignetting, sensor, jpeg_quality, wet, shotcrete, dust.
+struct SceneRegion {
+  std::string id;
+  std::vector<Eigen::Vector3d> polygon;  // absolute, like surface.patches
+};
+struct SceneLamp {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // absolute
+  double intensity = 1.0;                              // full white x m^2
+};
+struct SceneWet {
+  SceneRegion region;
+  double specular = 0.5, shininess = 60, darkening = 0.6;
+};
+struct SceneShotcrete {
+  SceneRegion region;
+  double albedo = 0.55;
+};
+struct SceneSensor {
+  double iso = 100, base_iso = 100, full_well_e = 40000, read_noise_e = 3.0;
+  unsigned seed = 1;
+};
+struct SceneDust {
+  double beta_per_m = 0;  // given, or 3.912 / visibility_m
+  double airlight = 0.35;
+};
+
 struct SceneImagingEffects {
   bool distortion = false;
   double noise_sigma = 0;  // grey levels
   double blur_px = 0;      // Gaussian sigma, pixels
   double exposure = 1.0;   // gain
+  // The face as a tunnel lights it.
+  std::optional<double> flash;  // intensity: 1 exposes the look_at distance to full white
+  std::vector<SceneLamp> lamps;
+  std::optional<double> vignetting;  // strength: 1 = cos^4
+  std::optional<SceneSensor> sensor;
+  std::optional<int> jpeg_quality;
+  std::vector<SceneWet> wet;
+  std::vector<SceneShotcrete> shotcrete;
+  std::optional<SceneDust> dust;
 };
 
 struct SceneImaging {

@@ -13,6 +13,7 @@
 #include "storage/picks_json.h"
 #include "storage/rockmass_form_json.h"
 #include "storage/scene.h"
+#include "storage/scene_lighting_json.h"
 #include "storage/scene_tunnel.h"
 
 namespace rockface::storage {
@@ -407,6 +408,7 @@ SceneImaging read_imaging(const Reader& r, const json& im) {
       img.effects.blur_px = r.non_negative(*v, ep + ".blur_px");
     if (auto* v = r.optional(*ef, ep, "exposure"))
       img.effects.exposure = r.positive(*v, ep + ".exposure");
+    read_tunnel_lighting(r, *ef, ep, img.effects);
   }
   if (auto* v = r.optional(im, p, "texture_seed")) {
     const int seed = r.integer(*v, p + ".texture_seed");

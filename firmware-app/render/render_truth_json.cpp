@@ -19,6 +19,43 @@ json pixel(const Eigen::Vector2d& p) {
   return json::array({p.x(), p.y()});
 }
 
+// The tunnel lighting the render used, positions absolute again.
+void add_tunnel_lighting(json& out, const camera::SyntheticEffects& e,
+                         const Eigen::Vector3d& origin) {
+  auto region = [&](const camera::SyntheticRegion& r) {
+    json poly = json::array();
+    for (const auto& x : r.polygon) poly.push_back(vec(x + origin));
+    return json{{"id", r.id}, {"polygon", poly}};
+  };
+  if (e.flash) out["flash"] = {{"intensity", e.flash->intensity}};
+  for (const auto& l : e.lamps)
+    out["lamps"].push_back({{"position", vec(l.position + origin)}, {"intensity", l.intensity}});
+  if (e.vignetting) out["vignetting"] = *e.vignetting;
+  if (e.sensor)
+    out["sensor"] = {{"iso", e.sensor->iso},
+                     {"base_iso", e.sensor->base_iso},
+                     {"full_well_e", e.sensor->full_well_e},
+                     {"read_noise_e", e.sensor->read_noise_e},
+                     {"seed", e.sensor->seed}};
+  if (e.jpeg_quality) out["jpeg_quality"] = *e.jpeg_quality;
+  for (const auto& w : e.wet) {
+    json j = region(w.region);
+    j["specular"] = w.specular;
+    j["shininess"] = w.shininess;
+    j["darkening"] = w.darkening;
+    out["wet"].push_back(j);
+  }
+  for (const auto& s : e.shotcrete) {
+    json j = region(s.region);
+    j["albedo"] = s.albedo;
+    out["shotcrete"].push_back(j);
+  }
+  if (e.dust)
+    out["dust"] = {{"beta_per_m", e.dust->beta_per_m},
+                   {"visibility_m", 3.912 / e.dust->beta_per_m},
+                   {"airlight", e.dust->airlight}};
+}
+
 }  // namespace
 
 std::string render_truth_json(const camera::SyntheticScene& scene, const camera::SyntheticRender& r,
@@ -94,6 +131,8 @@ std::string render_truth_json(const camera::SyntheticScene& scene, const camera:
                     {"noise_sigma", scene.effects.noise_sigma},
                     {"blur_px", scene.effects.blur_px},
                     {"exposure", scene.effects.exposure}};
+  add_tunnel_lighting(doc["effects"], scene.effects, origin);
+  doc["effects_simulated"] = scene.effects.simulated();
   doc["texture_seed"] = scene.texture_seed;
   return doc.dump(2) + "\n";
 }

@@ -7,6 +7,33 @@
 
 namespace rockface::app {
 
+namespace {
+
+// The tunnel lighting of the scene (absolute positions) in the render's
+// datum-relative frame.
+void tunnel_lighting_from_scene(const storage::SceneImagingEffects& in,
+                                const Eigen::Vector3d& origin, camera::SyntheticEffects& out) {
+  auto region = [&](const storage::SceneRegion& r) {
+    camera::SyntheticRegion s{r.id, {}};
+    for (const auto& x : r.polygon) s.polygon.push_back(x - origin);
+    return s;
+  };
+  if (in.flash) out.flash = camera::SyntheticFlash{*in.flash};
+  for (const auto& l : in.lamps) out.lamps.push_back({l.position - origin, l.intensity});
+  out.vignetting = in.vignetting;
+  if (in.sensor)
+    out.sensor =
+        camera::SyntheticSensor{in.sensor->iso, in.sensor->base_iso, in.sensor->full_well_e,
+                                in.sensor->read_noise_e, in.sensor->seed};
+  out.jpeg_quality = in.jpeg_quality;
+  for (const auto& w : in.wet)
+    out.wet.push_back({region(w.region), w.specular, w.shininess, w.darkening});
+  for (const auto& s : in.shotcrete) out.shotcrete.push_back({region(s.region), s.albedo});
+  if (in.dust) out.dust = camera::SyntheticDust{in.dust->beta_per_m, in.dust->airlight};
+}
+
+}  // namespace
+
 SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& s) {
   if (!s.imaging)
     throw InputError(s.source + ": imaging",
@@ -59,8 +86,11 @@ SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& s) {
   if (im.reference_line)
     out.reference_line =
         std::make_pair(im.reference_line->first - in.origin, im.reference_line->second - in.origin);
-  out.effects = {im.effects.distortion, im.effects.noise_sigma, im.effects.blur_px,
-                 im.effects.exposure};
+  out.effects.distortion = im.effects.distortion;
+  out.effects.noise_sigma = im.effects.noise_sigma;
+  out.effects.blur_px = im.effects.blur_px;
+  out.effects.exposure = im.effects.exposure;
+  tunnel_lighting_from_scene(im.effects, in.origin, out.effects);
   out.texture_seed = im.texture_seed;
   return in;
 }

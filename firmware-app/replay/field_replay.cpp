@@ -312,6 +312,9 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
 
   progress.step("blocks", 0.8);
   storage::Report report = analyse(analysed, progress);
+  // What the synthetic camera simulated, named as the analysis's effects are.
+  for (const auto& e : synthetic->scene.effects.simulated())
+    report.effects_simulated.push_back("imaging." + e);
   const storage::AnalysisRun run = analysis_record(report, out.visit_id, out.model_id, chosen);
   out.analysis_id = store.save_analysis(run);
   out.report = std::move(report);

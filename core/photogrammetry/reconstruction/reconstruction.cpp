@@ -11,6 +11,7 @@
 #include "core/photogrammetry/camera/camera_cv.h"
 #include "core/photogrammetry/estimators/triangulation.h"
 #include "core/photogrammetry/matching/feature_matching.h"
+#include "core/photogrammetry/matching/image_contrast.h"
 #include "core/photogrammetry/matching/tie_point_refinement.h"
 
 namespace rockface::photogrammetry {
@@ -66,6 +67,9 @@ ReconstructionResult reconstruct(const cv::Mat& left_image, const cv::Mat& right
                                  const RegistrationSources& sources, Progress& progress) {
   check_camera_fits_image(left, left_image, "left image");
   check_camera_fits_image(right, right_image, "right image");
+  // Haze, darkness or noise: refused by name before matching blames the overlap.
+  require_matchable_contrast(left_image, "left image");
+  require_matchable_contrast(right_image, "right image");
   ReconstructionResult out;
 
   {

@@ -354,8 +354,12 @@ Eigen::Vector2d to_pixel(const Eigen::Vector2d& normalised, const CameraIntrinsi
 
 }  // namespace
 
-std::vector<TargetObservation> detect_targets(const cv::Mat& image, const CameraIntrinsics& camera,
-                                              const TargetDetectorOptions& o) {
+namespace {
+
+std::vector<TargetObservation> detect_targets_at(const cv::Mat& image,
+                                                 const CameraIntrinsics& camera,
+                                                 const TargetDetectorOptions& o,
+                                                 const std::vector<int>& thresholds) {
   const cv::Mat g = to_grey(image);
   // Candidates are searched on a copy at most kSearchWidth px wide (bounded
   // time on 24 Mpx frames); the edge is then located on the full image.
@@ -370,7 +374,7 @@ std::vector<TargetObservation> detect_targets(const cv::Mat& image, const Camera
   const double min_d = std::max(3.0, o.min_white_diameter_px * scale);
   std::vector<Candidate> candidates;
   cv::Mat binary;
-  for (int t : kThresholds) {
+  for (int t : thresholds) {
     cv::threshold(small, binary, t, 255, cv::THRESH_BINARY);
     std::vector<std::vector<cv::Point>> contours;
     cv::findContours(binary, contours, cv::RETR_LIST, cv::CHAIN_APPROX_NONE);
@@ -445,11 +449,20 @@ std::vector<TargetObservation> detect_targets(const cv::Mat& image, const Camera
     obs.ring_ratio = c.ring.ring_ratio;
     obs.diameter_px = obs.white_diameter_px * std::max(1.0, obs.ring_ratio);
     obs.contrast = c.ring.white - c.ring.black;
+    obs.white_level = c.ring.white;
     out.push_back(obs);
   }
   std::sort(out.begin(), out.end(),
             [](const auto& a, const auto& b) { return a.contrast > b.contrast; });
   return out;
+}
+
+}  // namespace
+
+std::vector<TargetObservation> detect_targets(const cv::Mat& image, const CameraIntrinsics& camera,
+                                              const TargetDetectorOptions& o) {
+  return detect_targets_at(image, camera, o,
+                           std::vector<int>(kThresholds.begin(), kThresholds.end()));
 }
 
 namespace {
@@ -472,17 +485,97 @@ std::string position(const TargetObservation& t) {
   return s.str();
 }
 
+// Why a target of the pole was not found, when a look with relaxed limits
+// finds it: too little light on it (its white is dark), a veil over it
+// (dust, glare: its black is raised), or too much light (its white clipped
+// and its ring bright). Empty when nothing target-like is there at all
+// (the pole is out of view or hidden): the caller says where it looked.
+std::string why_targets_missed(const cv::Mat& image, const CameraIntrinsics& camera,
+                               const std::vector<TargetObservation>& found,
+                               const TargetDetectorOptions& o, const std::string& where) {
+  // Relaxed: a quarter of the contrast (10 grey levels still outline a
+  // disk in an 8-bit image with a few levels of noise), a ring up to 0.75
+  // of the white, thresholds down into the shadows and up to the clip.
+  TargetDetectorOptions relaxed = o;
+  relaxed.min_contrast = 10;
+  relaxed.max_black_to_white = 0.75;
+  const auto near =
+      detect_targets_at(image, camera, relaxed, {20, 35, 50, 65, 80, 120, 160, 200, 235});
+  std::vector<TargetObservation> missed;
+  for (const auto& t : near) {
+    bool known = false;
+    for (const auto& f : found)
+      if ((f.centre_px - t.centre_px).norm() < 0.5 * f.white_diameter_px) known = true;
+    if (!known) missed.push_back(t);
+  }
+  if (missed.empty()) return {};
+  // The pole's other target: below the one found is the lower, above it the
+  // upper; with none found, the lowest in the image is the lower.
+  std::sort(missed.begin(), missed.end(),
+            [](const auto& a, const auto& b) { return a.centre_px.y() > b.centre_px.y(); });
+  std::ostringstream s;
+  s.precision(0);
+  s << std::fixed;
+  for (std::size_t k = 0; k < missed.size() && k < 2; ++k) {
+    const TargetObservation& t = missed[k];
+    std::string name = "target";
+    if (found.size() == 1)
+      name = t.centre_px.y() > found[0].centre_px.y() ? "lower target" : "upper target";
+    else if (missed.size() >= 2)
+      name = k == 0 ? "lower target" : "upper target";
+    const double black = t.white_level - t.contrast;
+    std::string state;
+    // Printed white under good light is > 150 grey levels; under 100 the
+    // ring's edge is lost in noise before the contrast limit is reached.
+    if (t.white_level >= 250 && black > o.max_black_to_white * t.white_level)
+      state = "over-exposed (its white clipped at " + std::to_string(int(t.white_level)) +
+              " and its black ring at " + std::to_string(int(black)) +
+              "): too much flash or lamp on the pole, or the pole too near the light";
+    else if (t.white_level < 100)
+      state =
+          "under-exposed (its white at " + std::to_string(int(t.white_level)) + " grey levels, " +
+          std::to_string(int(t.contrast)) + " above its black ring, where the detector needs " +
+          std::to_string(int(o.min_contrast)) + "): light the pole (flash, lamp) or expose longer";
+    else
+      state = "veiled (its black ring at " + std::to_string(int(black)) + " under a white of " +
+              std::to_string(int(t.white_level)) + ", " + std::to_string(int(t.contrast)) +
+              " grey levels of contrast where the detector needs " +
+              std::to_string(int(o.min_contrast)) +
+              "): dust haze or glare between the camera and the pole; wait for the dust to "
+              "settle or come closer";
+    s << (k ? "; " : "") << name << " " << state << ", in the " << where << " at " << position(t)
+      << " px";
+  }
+  return s.str();
+}
+
 }  // namespace
 
 RangePoleTargets find_range_pole(const cv::Mat& left_image, const cv::Mat& right_image,
                                  const CameraIntrinsics& left, const CameraIntrinsics& right,
                                  const RelativeOrientation& ro, const TargetDetectorOptions& o) {
-  const auto tl = detect_targets(left_image, left, o);
-  const auto tr = detect_targets(right_image, right, o);
+  // A pole in the dark (a tunnel lit by a flash or lamps): its white below
+  // the usual thresholds, its contrast still enough; looked for again with
+  // thresholds down into the shadows when the usual ones miss a target.
+  auto detect = [&](const cv::Mat& image, const CameraIntrinsics& camera) {
+    auto found = detect_targets(image, camera, o);
+    if (found.size() < 2) {
+      auto dark = detect_targets_at(image, camera, o, {30, 45, 60, 80, 120, 160, 200});
+      if (dark.size() > found.size()) found = std::move(dark);
+    }
+    return found;
+  };
+  const auto tl = detect(left_image, left);
+  const auto tr = detect(right_image, right);
   for (int side = 0; side < 2; ++side) {
     const auto& found = side == 0 ? tl : tr;
     const cv::Mat& img = side == 0 ? left_image : right_image;
     const std::string which = side == 0 ? "left" : "right";
+    if (found.size() < 2) {
+      const std::string why =
+          why_targets_missed(img, side == 0 ? left : right, found, o, which + " image");
+      if (!why.empty()) throw InputError("range pole", why);
+    }
     if (found.empty())
       throw InputError("range pole",
                        "no target found in the " + which + " image: " + where_looked(img, o));

@@ -37,6 +37,7 @@ struct TargetObservation {
   double ring_ratio = 0;   // the ring's outer diameter / the disk's; 0 where not seen (dark rock)
   double diameter_px = 0;  // the target across: white disk x ring ratio where seen, major axis
   double contrast = 0;     // white minus black grey level
+  double white_level = 0;  // grey level of the white disk (median over rays)
   double fit_rms_px = 0;   // sub-pixel edge points against the ellipse
 };
 
