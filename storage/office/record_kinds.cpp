@@ -51,6 +51,13 @@ const std::vector<RecordKind>& record_kinds() {
        "t.visit_id",
        {{"visit_placement_residual", "visit_id"}},
        {}},
+      // The rock-mass form entered for a visit (issue 23), one per visit.
+      {"rockmass_form",
+       "(SELECT v.uuid FROM visit v WHERE v.id = t.visit_id)",
+       "t.visit_id",
+       "t.visit_id",
+       {},
+       {}},
       {"action_log", "t.uuid", "t.visit_id", "t.id", {}, {}},
   };
   return kinds;
