@@ -1,4 +1,4 @@
-// `rockface server init|add-tunnel|add-tablet|add-office SERVER ...`: the
+// `rockface server init|add-tunnel|add-tablet|add-office|add-admin SERVER ...`: the
 // site's PostgreSQL server set up by its administrator (schema, roles,
 // row-level security; tunnels; tablet and office logins).
 #include <iostream>
@@ -34,15 +34,22 @@ VerbRun setup_server(CLI::App& sub) {
   server_arg(tablet);
   tablet->add_option("ROLE", o->name, "the tablet's role name")->required();
   tablet->add_option("--tunnel", o->tunnel, "the tunnel it adds visits to")->required();
-  CLI::App* office = sub.add_subcommand("add-office", "an office login role that reads all");
+  CLI::App* office =
+      sub.add_subcommand("add-office, add-admin", "an office login role that reads all");
   server_arg(office);
   office->add_option("ROLE", o->name, "the role name")->required();
-  return [o, init, tunnel, tablet, office] {
+  CLI::App* admin = sub.add_subcommand(
+      "add-admin",
+      "a login role that creates tunnels, tablets and office users (needs a superuser)");
+  server_arg(admin);
+  admin->add_option("ROLE", o->name, "the role name")->required();
+  return [o, init, tunnel, tablet, office, admin] {
     std::vector<std::string> lines;
     if (init->parsed()) lines = run_server_init(o->server);
     if (tunnel->parsed()) lines = run_server_add_tunnel(o->server, o->name);
     if (tablet->parsed()) lines = run_server_add_tablet(o->server, o->name, o->tunnel);
     if (office->parsed()) lines = run_server_add_office(o->server, o->name);
+    if (admin->parsed()) lines = run_server_add_admin(o->server, o->name);
     for (const auto& line : lines) std::cout << line << "\n";
     return 0;
   };
@@ -51,7 +58,7 @@ VerbRun setup_server(CLI::App& sub) {
 const VerbRegistrar registrar{
     "server",
     "set up the site's PostgreSQL server: init (schema, roles, policies), add-tunnel, add-tablet, "
-    "add-office",
+    "add-office, add-admin",
     setup_server};
 
 }  // namespace

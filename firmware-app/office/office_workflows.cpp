@@ -47,13 +47,16 @@ std::vector<std::string> run_sync(const std::filesystem::path& project, const st
 std::vector<std::string> run_pull(const std::string& server, const std::string& tunnel,
                                   const std::filesystem::path& out, Progress& progress) {
   const office::PullResult r = office::pull_tunnel(server, tunnel, out, progress);
-  return {"server " + r.server_label + ", tunnel " + tunnel,
-          std::to_string(r.projects) + " tablet projects, " + std::to_string(r.visits) +
-              " visits, " + std::to_string(r.records) + " records, " + std::to_string(r.blobs) +
-              " photographs and meshes (" +
-              storage::report_number(static_cast<double>(r.blob_bytes) / 1e6, 2) +
-              " MB, each checked against its SHA-256)",
-          "project: " + out.string()};
+  std::vector<std::string> lines{
+      "server " + r.server_label + ", tunnel " + tunnel,
+      std::to_string(r.projects) + " tablet projects, " + std::to_string(r.visits) + " visits, " +
+          std::to_string(r.records) + " records, " + std::to_string(r.blobs) +
+          " photographs and meshes (" +
+          storage::report_number(static_cast<double>(r.blob_bytes) / 1e6, 2) +
+          " MB, each checked against its SHA-256)",
+      "project: " + out.string()};
+  for (const std::string& w : r.warnings) lines.push_back("warning: " + w);
+  return lines;
 }
 
 std::vector<std::string> run_server_init(const std::string& server) {
@@ -91,6 +94,15 @@ std::vector<std::string> run_server_add_office(const std::string& server, const 
   office::require_compatible_server(c);
   office::add_office_user(c, role);
   return {c.label() + ": office role " + role + " reads every tunnel"};
+}
+
+std::vector<std::string> run_server_add_admin(const std::string& server, const std::string& role) {
+  office::Connection c(server);
+  office::require_compatible_server(c);
+  office::add_admin(c, role);
+  return {c.label() + ": admin role " + role +
+          " creates tunnels, tablets and office users (give it a password with psql's "
+          "\\password, or a client certificate)"};
 }
 
 tunnel::DriveSets server_drive(const std::string& server, const std::string& name) {

@@ -260,6 +260,61 @@ const ServerRecord& base_project(const std::vector<ServerRecord>& records,
   return *base;
 }
 
+// A tunnel record's design (alignment, profile, drive, tolerance) without
+// what differs between two tablets that hold the same design: local ids,
+// when it was entered and the names of the files it came from.
+json tunnel_design(const std::string& body) {
+  json doc = json::parse(body);
+  json& row = doc["row"];
+  for (const char* k : {"id", "created_at", "alignment_source", "profile_source"}) row.erase(k);
+  if (doc.contains("children"))
+    for (auto& [table, rows] : doc["children"].items())
+      for (json& child : rows) {
+        child.erase("id");
+        child.erase("tunnel_id");
+      }
+  return doc;
+}
+
+std::string project_name(const std::vector<ServerRecord>& records, const std::string& uuid) {
+  for (const ServerRecord& r : records)
+    if (r.kind == "project" && r.project_uuid == uuid) {
+      const json row = json::parse(r.body).at("row");
+      if (row.contains("name") && row["name"].is_string()) return row["name"];
+    }
+  return uuid;
+}
+
+// The pulled project holds one tunnel: the base project's when it has one,
+// else the last synced project's (the order the records go in). Says so
+// when the tablets carry different designs.
+std::vector<std::string> tunnel_disagreements(const std::vector<ServerRecord>& records,
+                                              const ServerTunnel& tunnel,
+                                              const std::string& base_project_uuid) {
+  std::vector<const ServerRecord*> tunnels;
+  for (const std::string& uuid : tunnel.projects)
+    for (const ServerRecord& r : records)
+      if (r.kind == "tunnel" && r.project_uuid == uuid) tunnels.push_back(&r);
+  if (tunnels.size() < 2) return {};
+  const ServerRecord* kept = tunnels.back();
+  for (const ServerRecord* r : tunnels)
+    if (r->project_uuid == base_project_uuid) kept = r;
+  const json design = tunnel_design(kept->body);
+  std::vector<std::string> differ;
+  for (const ServerRecord* r : tunnels)
+    if (tunnel_design(r->body) != design)
+      differ.push_back("'" + project_name(records, r->project_uuid) + "'");
+  if (differ.empty()) return {};
+  std::string names = differ.front();
+  for (std::size_t i = 1; i < differ.size(); ++i) names += ", " + differ[i];
+  return {"tunnel " + tunnel.name +
+          ": the tablets' projects carry different designs of it (alignment, profile, drive or "
+          "underbreak tolerance); the pulled project holds the one of project '" +
+          project_name(records, kept->project_uuid) + "', and project" +
+          (differ.size() > 1 ? "s " : " ") + names +
+          " differ: check which design is current before reading over- and underbreak"};
+}
+
 }  // namespace
 
 PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel_name,
@@ -278,6 +333,7 @@ PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel_na
   result.projects = static_cast<int>(tunnel.projects.size());
   result.visits = static_cast<int>(tunnel.visits.size());
   const bool keep_ids = tunnel.projects.size() == 1;
+  result.warnings = tunnel_disagreements(records, tunnel, base.project_uuid);
 
   // The order records go in: kinds in dependency order; visits in the
   // server's order; the rest by project, then their local order.

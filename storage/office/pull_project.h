@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "core/common/progress.h"
 
@@ -19,6 +20,9 @@ struct PullResult {
   std::string server_label;
   int projects = 0, visits = 0, records = 0, blobs = 0;
   std::int64_t blob_bytes = 0;
+  // What the geologist must check in the pulled project, in words: e.g.
+  // tablets that carry different designs of the tunnel (one is kept).
+  std::vector<std::string> warnings;
 };
 
 PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel,

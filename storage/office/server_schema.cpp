@@ -123,4 +123,17 @@ void add_office_user(Connection& c, const std::string& role) {
   tx.commit();
 }
 
+void add_admin(Connection& c, const std::string& role) {
+  require_role_name(role);
+  Transaction tx(c, "adding admin " + role);
+  const Result exists =
+      c.query("SELECT 1 FROM pg_roles WHERE rolname = $1", {Param::of(role)}, "adding an admin");
+  if (exists.rows() == 0)
+    c.exec("CREATE ROLE " + role + " LOGIN CREATEROLE", "adding admin " + role);
+  else
+    c.exec("ALTER ROLE " + role + " CREATEROLE", "adding admin " + role);
+  c.exec("GRANT rockface_admin TO " + role, "adding admin " + role);
+  tx.commit();
+}
+
 }  // namespace rockface::storage::office

@@ -54,5 +54,10 @@ void add_tunnel(Connection& c, const std::string& name);
 void add_tablet(Connection& c, const std::string& role, const std::string& tunnel);
 // Admin: a login role of the office (member of rockface_office).
 void add_office_user(Connection& c, const std::string& role);
+// Superuser (or an admin): a login role that administers the site (member
+// of rockface_admin, with CREATEROLE so that it can add tablets and office
+// users itself: role attributes are not inherited through membership). An
+// existing role is made an admin.
+void add_admin(Connection& c, const std::string& role);
 
 }  // namespace rockface::storage::office

@@ -261,13 +261,19 @@ SyncStatus sync_status(const std::filesystem::path& project) {
                          ? synced_records(db, target)
                          : std::map<std::pair<std::string, std::string>, std::string>{};
   std::set<std::optional<std::int64_t>> visits;
+  std::set<std::pair<std::string, std::string>> present;
   for (const RecordDocument& d : docs.records) {
+    present.insert({d.kind, d.uuid});
     const auto it = known.find({d.kind, d.uuid});
     if (it == known.end() || it->second != d.content_sha256) {
       ++status.records_waiting;
       if (d.visit_id) visits.insert(d.visit_id);
     }
   }
+  // A record gone from the project since the last sync waits too: its
+  // deletion goes up as a revision (dirty_units' tombstones).
+  for (const auto& [key, sha] : known)
+    if (!present.count(key) && sha != "deleted") ++status.records_waiting;
   status.visits_waiting = static_cast<int>(visits.size());
   return status;
 }

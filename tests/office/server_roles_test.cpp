@@ -4,7 +4,8 @@
 // tunnel; the office reads everything and writes nothing. TLS with
 // sslmode=verify-full against a certificate from a CA made in the test,
 // the password from a pgpass file, the server named by a service file, and
-// no password in any message.
+// no password in any message. An admin made by the superuser sets up a
+// tunnel and its tablets without the superuser; a tablet cannot.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -83,6 +84,44 @@ TEST(OfficeRoles, ATabletCannotChangeOrDeleteAnotherTabletsVisit) {
   EXPECT_EQ(tb.query("SELECT count(*) FROM rockface.visit", {}, "reading").int64(0, 0), 1);
   // And the server still holds tablet A's records, each once.
   expect_server_holds(as_superuser(db), dir / "a.rockface", 1);
+}
+
+TEST(OfficeRoles, AnAdminAddsTunnelsTabletsAndOfficeUsersWithoutTheSuperuser) {
+  const std::string db = fresh_database();
+  {
+    Connection su(as_superuser(db));
+    storage::office::add_admin(su, "site_admin");
+  }
+  {
+    Connection admin(as_role(db, "site_admin"));
+    storage::office::add_tunnel(admin, "Adit 2");
+    storage::office::add_tablet(admin, "tablet_adit", "Adit 2");
+    storage::office::add_office_user(admin, "adit_office");
+  }
+  // The admin's tablet syncs to the admin's tunnel, and the admin's office
+  // user reads it.
+  storage::test::TempDir dir("office-admin");
+  TabletProject a;
+  a.visits = 1;
+  a.tunnel = "Adit 2";
+  make_tablet_project(dir / "a.rockface", a);
+  NoProgress none;
+  storage::office::sync_project(dir / "a.rockface", as_role(db, "tablet_adit"), {}, none);
+  Connection office(as_role(db, "adit_office"));
+  EXPECT_EQ(office
+                .query("SELECT count(*) FROM rockface.visit v JOIN rockface.tunnel t ON t.id = "
+                       "v.tunnel_id WHERE t.name = 'Adit 2'",
+                       {}, "reading")
+                .int64(0, 0),
+            1);
+  // A tablet is no admin: no tunnel, no role, no admin of itself.
+  constexpr const char* kDenied = "42501";
+  EXPECT_EQ(refusal(as_role(db, "tablet_a"), "INSERT INTO rockface.tunnel (name) VALUES ('Rogue')"),
+            kDenied);
+  EXPECT_EQ(refusal(as_role(db, "tablet_a"), "CREATE ROLE rogue_tablet LOGIN"), kDenied);
+  EXPECT_EQ(refusal(as_role(db, "tablet_a"), "GRANT rockface_admin TO tablet_a"), kDenied);
+  EXPECT_EQ(refusal(as_role(db, "adit_office"), "INSERT INTO rockface.tunnel (name) VALUES ('X')"),
+            kDenied);
 }
 
 TEST(OfficeRoles, TlsVerifyFullWithPgpassAndAServiceFileAndNoPasswordShown) {

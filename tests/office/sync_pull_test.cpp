@@ -16,6 +16,7 @@
 #include "storage/office/pg_connection.h"
 #include "storage/office/pull_project.h"
 #include "storage/office/sync_push.h"
+#include "storage/project_sqlite.h"
 #include "storage/project_store.h"
 #include "tests/office/office_environment.h"
 #include "tests/office/tablet_projects.h"
@@ -70,8 +71,10 @@ TEST(OfficeSync, TwoTabletsSyncToOneServerAndPullBack) {
   expect_server_holds(as_superuser(db), dir / "a.rockface", 1);
 
   // The office pulls the tunnel: both tablets' visits in one project.
-  storage::office::pull_tunnel(as_role(db, "office_reader"), "Main drive", dir / "pulled.rockface",
-                               none);
+  const auto pull = storage::office::pull_tunnel(as_role(db, "office_reader"), "Main drive",
+                                                 dir / "pulled.rockface", none);
+  EXPECT_EQ(pull.warnings, std::vector<std::string>{})
+      << "both tablets carry the same design of the tunnel";
   storage::ProjectStore pulled = storage::ProjectStore::open(dir / "pulled.rockface");
   EXPECT_EQ(pulled.list_visits().size(), 4u);
   EXPECT_EQ(pulled.list_captures().size(), 4u);
@@ -170,6 +173,92 @@ TEST(OfficeSync, AChangedRecordIsANewRevisionAndTheHistoryIsKept) {
   EXPECT_EQ(history.text(1, 2), "corrected from the survey");
   EXPECT_EQ(std::stod(history.text(1, 1)) - std::stod(history.text(0, 1)), 0.75);
   EXPECT_EQ(storage::office::sync_status(dir / "a.rockface").records_waiting, 0);
+}
+
+TEST(OfficeSync, ARecordGoneFromTheTabletGoesUpAsADeletedRevision) {
+  const std::string db = fresh_database();
+  storage::test::TempDir dir("office-deleted");
+  TabletProject a;
+  a.visits = 2;
+  make_tablet_project(dir / "a.rockface", a);
+  NoProgress none;
+  sync_project(dir / "a.rockface", as_role(db, "tablet_a"), small_chunks(), none);
+  // The program itself never deletes a record today (a change is a new
+  // row); a row removed by another tool, or a future undo, must still reach
+  // the office as a deletion, never be resurrected by a pull.
+  std::string uuid;
+  {
+    storage::sqlite::Connection c(dir / "a.rockface",
+                                  storage::sqlite::Connection::Access::read_write);
+    storage::sqlite::Statement pick(
+        c,
+        "SELECT id, uuid FROM measurement WHERE id NOT IN (SELECT measurement_id FROM joint "
+        "WHERE measurement_id IS NOT NULL) ORDER BY id DESC LIMIT 1",
+        "picking a measurement");
+    ASSERT_TRUE(pick.step()) << "the sample project has a measurement no joint refers to";
+    const std::int64_t id = pick.column_int(0);
+    uuid = pick.column_text(1);
+    storage::sqlite::Statement del(c, "DELETE FROM measurement WHERE id = ?", "deleting it");
+    del.bind(1, id).run();
+  }
+  const auto status = storage::office::sync_status(dir / "a.rockface");
+  EXPECT_EQ(status.records_waiting, 1) << "the deletion alone";
+  const auto r = sync_project(dir / "a.rockface", as_role(db, "tablet_a"), small_chunks(), none);
+  EXPECT_EQ(r.records_sent, 1);
+  storage::office::Connection c(as_superuser(db));
+  const auto history = c.query(
+      "SELECT revision, deleted, body IS NULL FROM rockface.record WHERE kind = 'measurement' "
+      "AND uuid = $1::uuid ORDER BY revision",
+      {storage::office::Param::of(uuid)}, "reading the history");
+  ASSERT_EQ(history.rows(), 2) << "the measurement as synced, then its deletion";
+  EXPECT_EQ(history.text(0, 1), "f");
+  EXPECT_EQ(history.text(1, 1), "t");
+  EXPECT_EQ(history.text(1, 2), "t") << "a deleted revision carries no body";
+  // Nothing waits any more; a second sync sends nothing; the server holds
+  // the tablet's records (the deleted one no longer among them).
+  EXPECT_EQ(storage::office::sync_status(dir / "a.rockface").records_waiting, 0);
+  EXPECT_EQ(
+      sync_project(dir / "a.rockface", as_role(db, "tablet_a"), small_chunks(), none).records_sent,
+      0);
+  expect_server_holds(as_superuser(db), dir / "a.rockface");
+  // A pull does not bring it back.
+  storage::office::pull_tunnel(as_role(db, "office_reader"), "Main drive", dir / "p.rockface",
+                               none);
+  storage::sqlite::Connection p(dir / "p.rockface", storage::sqlite::Connection::Access::read_only);
+  storage::sqlite::Statement count(p, "SELECT count(*) FROM measurement WHERE uuid = ?",
+                                   "counting");
+  count.bind(1, uuid);
+  ASSERT_TRUE(count.step());
+  EXPECT_EQ(count.column_int(0), 0);
+}
+
+TEST(OfficeSync, APullSaysWhenTheTabletsCarryDifferentDesignsOfTheTunnel) {
+  const std::string db = fresh_database();
+  storage::test::TempDir dir("office-two-designs");
+  TabletProject a;
+  a.name = "tablet A";
+  a.visits = 1;
+  TabletProject b = a;
+  b.name = "tablet B";
+  b.first_chainage = 107;
+  b.underbreak_tolerance_m = 0.10;  // B was set up with another design tolerance
+  make_tablet_project(dir / "a.rockface", a);
+  make_tablet_project(dir / "b.rockface", b);
+  NoProgress none;
+  sync_project(dir / "a.rockface", as_role(db, "tablet_a"), small_chunks(), none);
+  sync_project(dir / "b.rockface", as_role(db, "tablet_b"), small_chunks(), none);
+  const auto lines =
+      app::run_pull(as_role(db, "office_reader"), "Main drive", dir / "p.rockface", none);
+  std::string warning;
+  for (const auto& line : lines)
+    if (line.rfind("warning: ", 0) == 0) warning = line;
+  EXPECT_NE(warning.find("different designs"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("holds the one of project 'tablet A'"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("'tablet B' differ"), std::string::npos) << warning;
+  // The pulled project holds tablet A's design (the first synced).
+  storage::ProjectStore pulled = storage::ProjectStore::open(dir / "p.rockface");
+  ASSERT_TRUE(pulled.load_tunnel());
+  EXPECT_EQ(pulled.load_tunnel()->underbreak_tolerance_m, 0.05);
 }
 
 TEST(OfficeSync, ACorruptOrTruncatedBlobOnTheServerIsDetectedOnPull) {

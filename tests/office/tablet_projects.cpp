@@ -29,7 +29,8 @@ void make_tablet_project(const fs::path& file, const TabletProject& o) {
   ProjectStore store = ProjectStore::create(file, info);
   const fs::path samples = fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples";
   TunnelRecord tunnel;
-  tunnel.name = "Main drive";
+  tunnel.name = o.tunnel;
+  tunnel.underbreak_tolerance_m = o.underbreak_tolerance_m;
   const AlignmentTable table = read_alignment_csv(samples / "tunnel-drive.alignment.csv");
   tunnel.stations = table.stations;
   tunnel.radii = table.radii;
@@ -166,13 +167,14 @@ void expect_server_holds(const std::string& superuser, const fs::path& project,
   office::Connection c(superuser);
   const office::Result r = c.query(
       "SELECT kind, uuid::text, content_sha256, body::text, revision, "
-      "count(*) OVER (PARTITION BY kind, uuid) FROM (SELECT *, rank() OVER (PARTITION BY kind, "
+      "count(*) OVER (PARTITION BY kind, uuid), deleted FROM (SELECT *, rank() OVER (PARTITION BY kind, "
       "uuid ORDER BY revision DESC) AS newest FROM rockface.record WHERE project_uuid = "
       "$1::uuid) r WHERE newest = 1 OR true ORDER BY kind, uuid, revision",
       {office::Param::of(docs.project_uuid)}, "checking the server");
   struct Held {
     std::string sha, body;
     int revisions = 0;
+    bool deleted = false;
   };
   std::map<std::pair<std::string, std::string>, Held> held;
   for (int i = 0; i < r.rows(); ++i) {
@@ -180,7 +182,10 @@ void expect_server_holds(const std::string& superuser, const fs::path& project,
     h.sha = r.text(i, 2);  // rows come oldest first: the last one is the newest
     h.body = r.text(i, 3);
     h.revisions = static_cast<int>(r.int64(i, 5));
+    h.deleted = r.text(i, 6) == "t";
   }
+  // A record whose newest revision is its deletion is no longer held.
+  std::erase_if(held, [](const auto& kv) { return kv.second.deleted; });
   EXPECT_EQ(held.size(), docs.records.size()) << "records on the server vs the tablet";
   for (const auto& d : docs.records) {
     const auto it = held.find({d.kind, d.uuid});

@@ -13,6 +13,8 @@ struct TabletProject {
   int seed = 1;                 // varies photographs and plane scatter
   int image_width = 160, image_height = 120;
   bool dense_face_visit = false;  // one more visit: a mapped face with joints, for the analysis
+  std::string tunnel = "Main drive";
+  double underbreak_tolerance_m = 0.05;  // another value: the same tunnel, designed differently
 };
 
 // A project with the sample tunnel (tools/samples/tunnel-drive.*), and per
@@ -30,7 +32,8 @@ std::string project_content(const std::filesystem::path& file);
 std::string first_difference(const std::string& a, const std::string& b);
 
 // The server (superuser connection) holds each record of the project as its
-// latest revision, with the same content; `revisions_each` revisions of
+// latest revision (a record whose latest revision is its deletion is not
+// held), with the same content; `revisions_each` revisions of
 // every record when given; every photograph and mesh complete and hashing
 // to its name. Adds GoogleTest failures.
 void expect_server_holds(const std::string& superuser, const std::filesystem::path& project,
