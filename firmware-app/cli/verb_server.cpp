@@ -34,8 +34,7 @@ VerbRun setup_server(CLI::App& sub) {
   server_arg(tablet);
   tablet->add_option("ROLE", o->name, "the tablet's role name")->required();
   tablet->add_option("--tunnel", o->tunnel, "the tunnel it adds visits to")->required();
-  CLI::App* office =
-      sub.add_subcommand("add-office, add-admin", "an office login role that reads all");
+  CLI::App* office = sub.add_subcommand("add-office", "an office login role that reads all");
   server_arg(office);
   office->add_option("ROLE", o->name, "the role name")->required();
   CLI::App* admin = sub.add_subcommand(
