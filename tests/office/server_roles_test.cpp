@@ -10,6 +10,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 
 #include "core/common/progress.h"
 #include "storage/office/pg_connection.h"
@@ -18,6 +19,7 @@
 #include "tests/office/office_environment.h"
 #include "tests/office/tablet_projects.h"
 #include "tests/storage/sample_records.h"
+#include "tests/support/test_paths.h"
 
 namespace rockface::office_test {
 namespace {
@@ -89,8 +91,15 @@ TEST(OfficeRoles, ATabletCannotChangeOrDeleteAnotherTabletsVisit) {
 TEST(OfficeRoles, AnAdminAddsTunnelsTabletsAndOfficeUsersWithoutTheSuperuser) {
   const std::string db = fresh_database();
   {
-    Connection su(as_superuser(db));
-    storage::office::add_admin(su, "site_admin");
+    // The verb, as the database administrator types it.
+    storage::test::TempDir out("office-admin-verb");
+    const std::string command = std::string(ROCKFACE_BINARY_DIR) + "/rockface server add-admin '" +
+                                as_superuser(db) + "' site_admin >" + (out / "out.txt").string() +
+                                " 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    std::ifstream said(out / "out.txt");
+    const std::string text((std::istreambuf_iterator<char>(said)), {});
+    EXPECT_NE(text.find("admin role site_admin creates tunnels"), std::string::npos) << text;
   }
   {
     Connection admin(as_role(db, "site_admin"));
