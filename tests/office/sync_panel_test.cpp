@@ -36,19 +36,34 @@ void set_tablet_service(const fs::path& dir, const std::string& conninfo) {
   ::setenv("ROCKFACE_SERVICE", "panel-office", 1);
 }
 
-std::unique_ptr<ui::HeadlessSession> open_tablet(const fs::path& project,
-                                                 app::StoreSyncRunner& sync) {
-  ui::UiOptions options;
-  options.project = project;
-  options.scale = 0.6f;
-  options.max_display_triangles = 20000;
-  ui::FieldServices services;
-  services.sync = &sync;
-  auto s = std::make_unique<ui::HeadlessSession>(options, services, 1280, 800);
-  s->settle();
-  s->tap("Project");
-  return s;
-}
+// A tablet with a project of `visits` visits, its service naming the
+// server of `conninfo`, and its UI open on the Project screen.
+class Tablet {
+ public:
+  Tablet(const std::string& name, int visits, const std::string& conninfo) : dir_(name) {
+    TabletProject a;
+    a.visits = visits;
+    make_tablet_project(file(), a);
+    set_tablet_service(dir_.path(), conninfo);
+    ui::UiOptions options;
+    options.project = file();
+    options.scale = 0.6f;
+    options.max_display_triangles = 20000;
+    ui::FieldServices services;
+    services.sync = &sync_;
+    ui_ = std::make_unique<ui::HeadlessSession>(options, services, 1280, 800);
+    ui_->settle();
+    ui_->tap("Project");
+  }
+  fs::path file() const { return dir_ / "a.rockface"; }
+  ui::HeadlessSession& ui() { return *ui_; }
+  ui::OfficeState& office() { return ui_->state().office; }
+
+ private:
+  storage::test::TempDir dir_;
+  app::StoreSyncRunner sync_;
+  std::unique_ptr<ui::HeadlessSession> ui_;
+};
 
 std::string joined(const std::vector<std::string>& lines) {
   std::string all;
@@ -58,15 +73,10 @@ std::string joined(const std::vector<std::string>& lines) {
 
 TEST(OfficeSyncPanel, SyncButtonSendsWhatWaitsAndThePanelSaysSo) {
   const std::string db = fresh_database();
-  storage::test::TempDir dir("office-panel");
-  TabletProject a;
-  a.visits = 2;
-  make_tablet_project(dir / "a.rockface", a);
-  set_tablet_service(dir.path(), as_role(db, "tablet_a"));
-  app::StoreSyncRunner sync;
-  auto s = open_tablet(dir / "a.rockface", sync);
+  Tablet tablet("office-panel", 2, as_role(db, "tablet_a"));
+  ui::HeadlessSession* s = &tablet.ui();
   s->frame();
-  ui::OfficeState& office = s->state().office;
+  ui::OfficeState& office = tablet.office();
   ASSERT_TRUE(office.overview) << office.error;
   EXPECT_EQ(office.overview->server, "service=panel-office");
   EXPECT_FALSE(office.overview->ever_synced);
@@ -82,18 +92,13 @@ TEST(OfficeSyncPanel, SyncButtonSendsWhatWaitsAndThePanelSaysSo) {
   EXPECT_TRUE(office.overview->ever_synced);
   EXPECT_EQ(office.overview->tunnel, "Main drive");
   EXPECT_EQ(office.overview->records_waiting, 0);
-  expect_server_holds(as_superuser(db), dir / "a.rockface", 1);
+  expect_server_holds(as_superuser(db), tablet.file(), 1);
 }
 
 TEST(OfficeSyncPanel, ACancelledSyncKeepsWhatWasSentAndTheNextSyncCompletesIt) {
   const std::string db = fresh_database();
-  storage::test::TempDir dir("office-panel-cancel");
-  TabletProject a;
-  a.visits = 2;
-  make_tablet_project(dir / "a.rockface", a);
-  set_tablet_service(dir.path(), as_role(db, "tablet_a"));
-  app::StoreSyncRunner sync;
-  auto s = open_tablet(dir / "a.rockface", sync);
+  Tablet tablet("office-panel-cancel", 2, as_role(db, "tablet_a"));
+  ui::HeadlessSession* s = &tablet.ui();
   {
     // The office's own work holds the records table: the tablet's sync
     // waits at its first unit while the geologist taps Cancel, so the
@@ -107,7 +112,7 @@ TEST(OfficeSyncPanel, ACancelledSyncKeepsWhatWasSentAndTheNextSyncCompletesIt) {
   }
   s->settle();
   s->frame();
-  ui::OfficeState& office = s->state().office;
+  ui::OfficeState& office = tablet.office();
   EXPECT_NE(joined(office.lines).find("cancelled"), std::string::npos) << joined(office.lines);
   ASSERT_TRUE(office.overview);
   EXPECT_GT(office.overview->records_waiting, 0) << "the cancel came before the last unit";
@@ -117,23 +122,18 @@ TEST(OfficeSyncPanel, ACancelledSyncKeepsWhatWasSentAndTheNextSyncCompletesIt) {
   s->frame();
   ASSERT_TRUE(office.overview);
   EXPECT_EQ(office.overview->records_waiting, 0);
-  expect_server_holds(as_superuser(db), dir / "a.rockface", 1);
+  expect_server_holds(as_superuser(db), tablet.file(), 1);
 }
 
 TEST(OfficeSyncPanel, WithoutANetworkThePanelSaysSoAndFieldWorkGoesOn) {
-  storage::test::TempDir dir("office-panel-offline");
-  TabletProject a;
-  a.visits = 1;
-  make_tablet_project(dir / "a.rockface", a);
-  const std::string before = project_content(dir / "a.rockface");
   // Nothing listens on port 1 of this machine: the office is out of reach.
-  set_tablet_service(dir.path(), "host=127.0.0.1 port=1 user=tablet_a dbname=rockface");
-  app::StoreSyncRunner sync;
-  auto s = open_tablet(dir / "a.rockface", sync);
+  Tablet tablet("office-panel-offline", 1, "host=127.0.0.1 port=1 user=tablet_a dbname=rockface");
+  ui::HeadlessSession* s = &tablet.ui();
+  const std::string before = project_content(tablet.file());
   s->tap("Sync");
   s->settle();
   s->frame();
-  const ui::OfficeState& office = s->state().office;
+  const ui::OfficeState& office = tablet.office();
   EXPECT_NE(joined(office.lines).find("No network"), std::string::npos) << joined(office.lines);
   EXPECT_NE(joined(office.lines).find("Nothing is lost"), std::string::npos);
   ASSERT_TRUE(office.overview);
@@ -142,7 +142,7 @@ TEST(OfficeSyncPanel, WithoutANetworkThePanelSaysSoAndFieldWorkGoesOn) {
   s->tap("Mapping");
   s->tap("Project");
   EXPECT_FALSE(s->state().task.running());
-  EXPECT_EQ(first_difference(project_content(dir / "a.rockface"), before), "");
+  EXPECT_EQ(first_difference(project_content(tablet.file()), before), "");
 }
 
 }  // namespace
