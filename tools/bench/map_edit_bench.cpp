@@ -19,23 +19,12 @@
 #include "firmware-app/services/ui_services.h"
 #include "storage/project_store.h"
 #include "tests/core/faces/random_slope.h"
-#include "tests/support/dense_face.h"
+#include "tests/support/dense_face_visit.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace rockface;
-
-storage::Measurement trace_measurement(const test::DenseFaceTrace& t) {
-  storage::Measurement m;
-  m.kind = storage::Measurement::Kind::trace;
-  m.label = t.id;
-  m.joint_label = t.joint;
-  m.points = {t.from, t.point, t.to};
-  m.dip_deg = t.dip;
-  m.dipdir_deg = t.dipdir;
-  return m;
-}
 
 // A visit of `areas` (the surface), `joints` and the first n of `traces`;
 // each iteration stores the next trace and times the update.
@@ -136,29 +125,13 @@ BENCHMARK(BM_SlopeEditToVerdicts)
 void BM_DenseFaceEditToVerdicts(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const test::DenseFace face = test::dense_face(n + kEdits);
-  storage::Measurement area;
-  area.kind = storage::Measurement::Kind::area;
-  area.label = "FACE";
-  area.points = face.polygon();
-  area.dip_deg = 90;
-  area.dipdir_deg = 180;
-  area.rock_side = "lower";
   std::vector<storage::Joint> joints;
   std::vector<storage::Measurement> traces;
   for (const auto& t : face.traces) {
-    storage::Joint j;
-    j.label = t.joint;
-    j.dip_deg = t.dip;
-    j.dipdir_deg = t.dipdir;
-    j.point = t.point;
-    j.friction_deg = t.friction;
-    j.cohesion_pa = 0;
-    j.source = "trace " + t.id;
-    j.type = "trace";
-    joints.push_back(j);
-    traces.push_back(trace_measurement(t));
+    joints.push_back(test::joint_of(t));
+    traces.push_back(test::trace_measurement(t));
   }
-  edits_to_verdicts(state, {area}, joints, traces, n);
+  edits_to_verdicts(state, {test::face_area(face)}, joints, traces, n);
 }
 BENCHMARK(BM_DenseFaceEditToVerdicts)
     ->Arg(200)

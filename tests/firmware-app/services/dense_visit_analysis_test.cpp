@@ -11,7 +11,7 @@
 #include "core/common/progress.h"
 #include "firmware-app/services/ui_services.h"
 #include "storage/project_store.h"
-#include "tests/support/dense_face.h"
+#include "tests/support/dense_face_visit.h"
 
 namespace {
 
@@ -24,47 +24,8 @@ TEST(DenseVisitAnalysis, TwoHundredStoredTracesWithTheirOwnPlanesAnalyse) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path file = dir / "face.rockface";
-  storage::ProjectInfo info;
-  info.name = "densely mapped face";
-  info.datum = {2690000.0, 1170000.0, 1100.0};
   const test::DenseFace face = test::dense_face(200);
-  storage::RecordId visit = 0;
-  {
-    storage::ProjectStore store = storage::ProjectStore::create(file, info);
-    visit = store.begin_visit("tablet");
-    std::vector<storage::Measurement> measurements;
-    storage::Measurement area;
-    area.kind = storage::Measurement::Kind::area;
-    area.label = "FACE";
-    area.points = face.polygon();
-    area.dip_deg = 90;
-    area.dipdir_deg = 180;
-    area.rock_side = "lower";
-    measurements.push_back(area);
-    std::vector<storage::Joint> joints;
-    for (const auto& t : face.traces) {
-      storage::Measurement m;
-      m.kind = storage::Measurement::Kind::trace;
-      m.label = t.id;
-      m.joint_label = t.joint;
-      m.points = {t.from, t.point, t.to};
-      m.dip_deg = t.dip;
-      m.dipdir_deg = t.dipdir;
-      measurements.push_back(m);
-      storage::Joint j;
-      j.label = t.joint;
-      j.dip_deg = t.dip;
-      j.dipdir_deg = t.dipdir;
-      j.point = t.point;
-      j.friction_deg = t.friction;
-      j.cohesion_pa = 0;
-      j.source = "trace " + t.id;
-      j.type = "trace";
-      joints.push_back(j);
-    }
-    store.save_measurements(visit, measurements);
-    store.save_joints(visit, {}, joints);
-  }
+  const storage::RecordId visit = test::make_dense_visit(file, face, face.traces.size());
 
   NoProgress progress;
   app::StoreAnalysisRunner runner;

@@ -13,7 +13,7 @@
 #include "core/common/progress.h"
 #include "firmware-app/services/ui_services.h"
 #include "storage/project_store.h"
-#include "tests/support/dense_face.h"
+#include "tests/support/dense_face_visit.h"
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
 
@@ -31,54 +31,6 @@ fs::path test_dir() {
     return d;
   }();
   return dir;
-}
-
-storage::Measurement trace_measurement(const test::DenseFaceTrace& t) {
-  storage::Measurement m;
-  m.kind = storage::Measurement::Kind::trace;
-  m.label = t.id;
-  m.joint_label = t.joint;
-  m.points = {t.from, t.point, t.to};
-  m.dip_deg = t.dip;
-  m.dipdir_deg = t.dipdir;
-  return m;
-}
-
-storage::Joint joint_of(const test::DenseFaceTrace& t) {
-  storage::Joint j;
-  j.label = t.joint;
-  j.dip_deg = t.dip;
-  j.dipdir_deg = t.dipdir;
-  j.point = t.point;
-  j.friction_deg = t.friction;
-  j.cohesion_pa = 0;
-  j.source = "trace " + t.id;
-  j.type = "trace";
-  return j;
-}
-
-// A face of `first` traces; the rest of `face` is added one by one later.
-storage::RecordId make_project(const fs::path& file, const test::DenseFace& face, size_t first) {
-  storage::ProjectInfo info;
-  info.name = "face mapped trace by trace";
-  info.datum = {2690000.0, 1170000.0, 1100.0};
-  storage::ProjectStore store = storage::ProjectStore::create(file, info);
-  const storage::RecordId visit = store.begin_visit("tablet");
-  std::vector<storage::Measurement> measurements;
-  storage::Measurement area;
-  area.kind = storage::Measurement::Kind::area;
-  area.label = "FACE";
-  area.points = face.polygon();
-  area.dip_deg = 90;
-  area.dipdir_deg = 180;
-  area.rock_side = "lower";
-  measurements.push_back(area);
-  std::vector<storage::Joint> joints;
-  for (const auto& t : face.traces) joints.push_back(joint_of(t));
-  for (size_t k = 0; k < first; ++k) measurements.push_back(trace_measurement(face.traces[k]));
-  store.save_measurements(visit, measurements);
-  store.save_joints(visit, {}, joints);
-  return visit;
 }
 
 // The map's verdicts against the stored full analysis of the same traces:
@@ -112,7 +64,7 @@ void expect_same_as_full_analysis(const fs::path& file, storage::RecordId visit,
 TEST(MapBlocks, EachSavedTraceUpdatesOnlyTheTouchedRegionsToTheFullAnalysisVerdicts) {
   const fs::path file = test_dir() / "traced.rockface";
   const test::DenseFace face = test::dense_face(60);
-  const storage::RecordId visit = make_project(file, face, 57);
+  const storage::RecordId visit = test::make_dense_visit(file, face, 57);
   NoProgress progress;
   app::StoreTraceMapRunner runner;
   const ui::MapVerdicts first = runner.update(file, visit, progress);
@@ -127,7 +79,7 @@ TEST(MapBlocks, EachSavedTraceUpdatesOnlyTheTouchedRegionsToTheFullAnalysisVerdi
     SCOPED_TRACE("after trace " + face.traces[k].id);
     {
       storage::ProjectStore store = storage::ProjectStore::open(file);
-      store.save_measurements(visit, {trace_measurement(face.traces[k])});
+      store.save_measurements(visit, {test::trace_measurement(face.traces[k])});
     }
     const ui::MapVerdicts after = runner.update(file, visit, progress);
     EXPECT_EQ(after.traces, static_cast<int>(k) + 1);
@@ -144,7 +96,7 @@ TEST(MapBlocks, AVisitWithoutSurfaceSaysWhatIsMissing) {
   {
     storage::ProjectStore store = storage::ProjectStore::create(file, {});
     visit = store.begin_visit("tablet");
-    storage::Measurement m = trace_measurement(test::dense_face(3).traces[0]);
+    storage::Measurement m = test::trace_measurement(test::dense_face(3).traces[0]);
     m.joint_label.clear();
     store.save_measurements(visit, {m});
   }
