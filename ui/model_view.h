@@ -15,6 +15,9 @@
 #include "ui/display_mesh.h"
 #include "ui/model_renderer.h"
 #include "ui/orbit_camera.h"
+#include "ui/overlay_blocks.h"
+#include "ui/overlay_drape.h"
+#include "ui/overlay_scene.h"
 #include "ui/touch_input.h"
 
 namespace rockface::ui {
@@ -29,7 +32,8 @@ struct PreparedModel {
   std::shared_ptr<const measure::MeshPicker> picker;  // on `surface`
   std::optional<measure::PhotoView> left_view;        // when the capture's calibration is stored
   DisplayMesh mesh;
-  cv::Mat photo_bgr;  // the texture photograph (full size); empty when none
+  std::shared_ptr<const SurfaceDrape> drape;  // on `mesh`: overlays are laid on what is drawn
+  cv::Mat photo_bgr;                          // the texture photograph (full size); empty when none
 };
 
 // Worker side: opens its own store on `project`.
@@ -49,6 +53,17 @@ class ModelView {
   const std::optional<measure::PhotoView>& left_view() const { return left_view_; }
   const cv::Mat& photo() const { return photo_; }
   const DisplayMesh& display_mesh() const { return mesh_; }
+  // The drawn surface that overlays are laid on; null without a model.
+  const SurfaceDrape* drape() const { return drape_.get(); }
+  // Lines already laid on this model's surface (emptied with the model).
+  DrapeCache& drape_cache() { return drape_cache_; }
+  BlockFaceCache& block_cache() { return block_cache_; }
+
+  // What the next draw() renders on the surface (depth-tested); screens set
+  // it each frame before draw(), which then empties it.
+  OverlayScene& overlay() { return overlay_; }
+  // What the last draw() rendered on the surface.
+  const OverlayScene& drawn_overlay() const { return drawn_overlay_; }
 
   struct Interaction {
     std::optional<ImVec2> tap;  // a touch that went up where it went down (screen px)
@@ -74,6 +89,10 @@ class ModelView {
   std::optional<measure::PhotoView> left_view_;
   cv::Mat photo_;
   DisplayMesh mesh_;
+  std::shared_ptr<const SurfaceDrape> drape_;
+  DrapeCache drape_cache_;
+  BlockFaceCache block_cache_;
+  OverlayScene overlay_, drawn_overlay_;
   storage::RecordId id_ = 0;
   OrbitCamera camera_;
   ImVec2 panel_min_{0, 0}, panel_max_{0, 0};
