@@ -34,6 +34,12 @@ bool inside_patch(const SurfacePatchPlane& patch, const Eigen::Vector3d& p) {
   return false;
 }
 
+// A footprint's straight edge between corners on two patches of the face
+// leaves the surface by up to half its length times sin(bend / 2): 0.05
+// allows bends between patches up to 11 degrees (a tunnel face's facets; a crown or wall
+// meets the face at a larger angle, and the corners there split the edge).
+constexpr double kEdgeSag = 0.05;
+
 std::vector<double> key_of(const std::vector<Eigen::Vector3d>& points) {
   std::vector<double> key;
   for (const auto& p : points) key.insert(key.end(), {p.x(), p.y(), p.z()});
@@ -114,7 +120,7 @@ BlockOnFace lay_block(const std::vector<Eigen::Vector3d>& footprint, const Surfa
     weighted += at * (a + b + c) / 3;
     area += at;
   }
-  out.edges = drape.drape(footprint, true);
+  out.edges = drape.drape(footprint, true, kEdgeSag);
   out.open = drape.open_edges_inside(out.footprint);
   if (area > 0)
     if (const auto hit = drape.project(weighted / area)) out.centre = hit->point;

@@ -68,13 +68,15 @@ SurfaceDrape::SurfaceDrape(const DisplayMesh& mesh) {
   tolerance_ = std::sqrt(3.0) * mesh.cell + 3 * spacing_;
 }
 
-std::optional<measure::PickHit> SurfaceDrape::project(const Eigen::Vector3d& point) const {
+std::optional<measure::PickHit> SurfaceDrape::project(const Eigen::Vector3d& point,
+                                                      double slack) const {
   if (!point.allFinite() || surface_.triangles.empty()) return std::nullopt;
   // From `tolerance` in front of the point back through it: the first
   // surface within `tolerance` on either side.
-  const measure::Ray ray{point + direction_ * tolerance_, -direction_};
+  const double reach = tolerance_ + slack;
+  const measure::Ray ray{point + direction_ * reach, -direction_};
   auto hit = picker_->pick(ray);
-  if (!hit || hit->distance > 2 * tolerance_) return std::nullopt;
+  if (!hit || hit->distance > 2 * reach) return std::nullopt;
   return hit;
 }
 
@@ -94,7 +96,7 @@ std::optional<std::array<int, 2>> SurfaceDrape::shared_edge(int a, int b) const 
 }
 
 void SurfaceDrape::refine(const measure::PickHit& from, const measure::PickHit& to, int depth,
-                          std::vector<std::vector<Eigen::Vector3d>>& runs) const {
+                          double slack, std::vector<std::vector<Eigen::Vector3d>>& runs) const {
   if (from.triangle == to.triangle) {
     runs.back().push_back(to.point);
     return;
@@ -117,7 +119,7 @@ void SurfaceDrape::refine(const measure::PickHit& from, const measure::PickHit& 
     runs.back().push_back(to.point);
     return;
   }
-  const auto middle = project(0.5 * (from.point + to.point));
+  const auto middle = project(0.5 * (from.point + to.point), slack);
   if (!middle) {
     // A hole (or a notch of the border) between the samples: the run ends
     // before it and a new one starts after it.
@@ -125,19 +127,20 @@ void SurfaceDrape::refine(const measure::PickHit& from, const measure::PickHit& 
     runs.back().push_back(to.point);
     return;
   }
-  refine(from, *middle, depth + 1, runs);
-  refine(*middle, to, depth + 1, runs);
+  refine(from, *middle, depth + 1, slack, runs);
+  refine(*middle, to, depth + 1, slack, runs);
 }
 
 std::vector<std::vector<Eigen::Vector3d>> SurfaceDrape::drape(
-    const std::vector<Eigen::Vector3d>& line, bool closed) const {
+    const std::vector<Eigen::Vector3d>& line, bool closed, double sag) const {
   std::vector<std::vector<Eigen::Vector3d>> runs;
   if (line.empty() || spacing_ <= 0) return runs;
   std::vector<Eigen::Vector3d> path = line;
   if (closed && line.size() > 2) path.push_back(line.front());
   std::optional<measure::PickHit> last;
+  double slack = 0;
   auto visit = [&](const Eigen::Vector3d& sample) {
-    auto hit = project(sample);
+    auto hit = project(sample, slack);
     if (!hit) {
       last.reset();
       return;
@@ -146,13 +149,14 @@ std::vector<std::vector<Eigen::Vector3d>> SurfaceDrape::drape(
       runs.emplace_back();
       runs.back().push_back(hit->point);
     } else {
-      refine(*last, *hit, 0, runs);
+      refine(*last, *hit, 0, slack, runs);
     }
     last = hit;
   };
   visit(path.front());
   for (std::size_t i = 1; i < path.size(); ++i) {
     const Eigen::Vector3d a = path[i - 1], b = path[i];
+    slack = sag * (b - a).norm();
     const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / spacing_)));
     // A segment longer than the whole surface is sampled no finer than
     // 4096 steps: its part on the surface then has samples a surface's

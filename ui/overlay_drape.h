@@ -45,12 +45,17 @@ class SurfaceDrape {
   // Median edge of the drawn surface (m): the sampling step of draping.
   double spacing() const { return spacing_; }
 
-  // The surface point for `point`, with its triangle, or nothing.
-  std::optional<measure::PickHit> project(const Eigen::Vector3d& point) const;
+  // The surface point for `point`, with its triangle, or nothing; `slack`
+  // (m) is added to the tolerance.
+  std::optional<measure::PickHit> project(const Eigen::Vector3d& point, double slack = 0) const;
   // The runs of a polyline (closed: the last point joins the first) that
-  // lie on the surface, each with two points or more.
+  // lie on the surface, each with two points or more. `sag` (a fraction of
+  // each segment's length) widens the tolerance on that segment: a straight
+  // edge between two points of a bent surface (a block's corners on two
+  // patches of the face) leaves the surface by up to half its length times
+  // the sine of half the bend.
   std::vector<std::vector<Eigen::Vector3d>> drape(const std::vector<Eigen::Vector3d>& line,
-                                                  bool closed) const;
+                                                  bool closed, double sag = 0) const;
 
   // Coordinates in the plane across the drape direction.
   Eigen::Vector2d to_plane(const Eigen::Vector3d& point) const;
@@ -68,7 +73,7 @@ class SurfaceDrape {
   const measure::MeshPicker& picker() const { return *picker_; }
 
  private:
-  void refine(const measure::PickHit& from, const measure::PickHit& to, int depth,
+  void refine(const measure::PickHit& from, const measure::PickHit& to, int depth, double slack,
               std::vector<std::vector<Eigen::Vector3d>>& runs) const;
   std::optional<std::array<int, 2>> shared_edge(int a, int b) const;
 
