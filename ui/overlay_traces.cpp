@@ -12,7 +12,7 @@ namespace {
 // orange, yellow, green, grey) or the pending trace's blue, each readable
 // on grey rock.
 constexpr std::array<ImU32, 6> kJointPalette{
-    IM_COL32(170, 90, 255, 255),  IM_COL32(0, 220, 200, 255),   IM_COL32(255, 255, 255, 255),
+    IM_COL32(170, 90, 255, 255),  IM_COL32(0, 220, 200, 255),   IM_COL32(200, 220, 255, 255),
     IM_COL32(255, 150, 230, 255), IM_COL32(140, 255, 120, 255), IM_COL32(120, 60, 30, 255)};
 
 void add_line(AppState& app, const std::string& what, const std::vector<Eigen::Vector3d>& points,
