@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ui/motion_playback.h"
+#include "ui/overlay_legend.h"
 #include "ui/screens/screens.h"
 #include "ui/wedges_view.h"
 
@@ -183,6 +184,7 @@ void draw_blocks_screen(AppState& app) {
     ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
     draw_blocks_on_model(app, interaction.tap);
     draw_motion_on_model(app);
+    draw_model_overlays(app, ModelScreen::blocks);  // ui/overlay_legend.h
     ImGui::PopClipRect();
   }
   draw_table(app);

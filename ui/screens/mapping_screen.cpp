@@ -11,6 +11,7 @@
 
 #include "core/common/units.h"
 #include "storage/project_store.h"
+#include "ui/overlay_legend.h"
 #include "ui/overlay_traces.h"
 #include "ui/screens/screens.h"
 #include "ui/stereonet_view.h"
@@ -199,6 +200,7 @@ void draw_mapping_screen(AppState& app) {
   ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
   draw_map_blocks_on_model(app);
   draw_traces(app);
+  draw_model_overlays(app, ModelScreen::mapping);  // ui/overlay_legend.h
   ImGui::PopClipRect();
   ImGui::EndGroup();
   ImGui::SameLine();

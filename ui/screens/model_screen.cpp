@@ -2,6 +2,7 @@
 // the range pole targets and the accuracy report on it.
 #include <nlohmann/json.hpp>
 
+#include "ui/overlay_legend.h"
 #include "ui/screens/screens.h"
 
 namespace rockface::ui {
@@ -85,6 +86,7 @@ void draw_model_screen(AppState& app) {
   app.model_view.draw(ImVec2(avail.x - side, avail.y), app.gesture);
   ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
   draw_targets(app, *app.model_view.model());
+  draw_model_overlays(app, ModelScreen::model);  // ui/overlay_legend.h
   ImGui::PopClipRect();
   ImGui::EndGroup();
   ImGui::SameLine();
