@@ -94,6 +94,7 @@ void ModelView::clear() {
 
 ModelView::Interaction ModelView::draw(ImVec2 size, const TouchGesture& gesture) {
   Interaction out;
+  flat_marks_.clear();
   size.x = std::max(size.x, 1.0f);
   size.y = std::max(size.y, 1.0f);
   camera_.set_viewport(static_cast<int>(size.x), static_cast<int>(size.y));

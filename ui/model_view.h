@@ -4,6 +4,7 @@
 // finger turns, two fingers pan and pinch zoom. Screens draw their overlays
 // (targets, traces, blocks) on top with to_screen().
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -64,6 +65,13 @@ class ModelView {
   OverlayScene& overlay() { return overlay_; }
   // What the last draw() rendered on the surface.
   const OverlayScene& drawn_overlay() const { return drawn_overlay_; }
+  // Rectangles of the panel covered by flat marks drawn this frame over the
+  // 3D image (legend, scale bar, north arrow), by name; emptied by draw().
+  void add_flat_mark(const std::string& name, ImVec2 min, ImVec2 max) {
+    // Antialiased edges reach a pixel or two beyond what was asked.
+    flat_marks_[name] = {ImVec2(min.x - 2, min.y - 2), ImVec2(max.x + 2, max.y + 2)};
+  }
+  const std::map<std::string, std::pair<ImVec2, ImVec2>>& flat_marks() const { return flat_marks_; }
 
   struct Interaction {
     std::optional<ImVec2> tap;  // a touch that went up where it went down (screen px)
@@ -93,6 +101,7 @@ class ModelView {
   DrapeCache drape_cache_;
   BlockFaceCache block_cache_;
   OverlayScene overlay_, drawn_overlay_;
+  std::map<std::string, std::pair<ImVec2, ImVec2>> flat_marks_;
   storage::RecordId id_ = 0;
   OrbitCamera camera_;
   ImVec2 panel_min_{0, 0}, panel_max_{0, 0};

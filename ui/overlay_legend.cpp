@@ -69,7 +69,7 @@ std::vector<LegendEntry> blocks_legend(const AppState& app) {
   return out;
 }
 
-void draw_legend(const AppState& app, const std::vector<LegendEntry>& entries) {
+void draw_legend(AppState& app, const std::vector<LegendEntry>& entries) {
   if (entries.empty()) return;
   const float s = app.targets.scale();
   const float line = ImGui::GetTextLineHeightWithSpacing();
@@ -80,6 +80,7 @@ void draw_legend(const AppState& app, const std::vector<LegendEntry>& entries) {
   const ImVec2 lo(hi.x - width - swatch - 3 * pad, hi.y - line * entries.size() - 2 * pad);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(lo, hi, IM_COL32(0, 0, 0, 170), 4 * s);
+  app.model_view.add_flat_mark("legend", lo, hi);
   float y = lo.y + pad;
   for (const auto& e : entries) {
     const float mid = y + line / 2;
@@ -120,8 +121,10 @@ void draw_model_overlays(AppState& app, ModelScreen screen) {
       draw_legend(app, blocks_legend(app));
       return;  // a smaller panel: the legend only
   }
-  draw_scale_bar(app.model_view, s);
-  draw_north_arrow(app.model_view, s);
+  const DrawnRect bar = draw_scale_bar(app.model_view, s);
+  app.model_view.add_flat_mark("scale bar", bar.min, bar.max);
+  const DrawnRect arrow = draw_north_arrow(app.model_view, s);
+  app.model_view.add_flat_mark("north arrow", arrow.min, arrow.max);
 }
 
 }  // namespace rockface::ui

@@ -23,7 +23,9 @@ std::vector<LegendEntry> model_legend(const AppState& app);
 std::vector<LegendEntry> mapping_legend(const AppState& app);
 std::vector<LegendEntry> blocks_legend(const AppState& app);
 
-void draw_legend(const AppState& app, const std::vector<LegendEntry>& entries);
+// Records where it drew as the model view's flat mark "legend" (as the
+// scale bar and the north arrow: "scale bar", "north arrow"), for tests.
+void draw_legend(AppState& app, const std::vector<LegendEntry>& entries);
 
 // The Model and Mapping screens' legend, scale bar and north arrow, the
 // Blocks screen's legend: one call after ModelView::draw, inside the

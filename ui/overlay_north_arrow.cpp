@@ -46,15 +46,17 @@ std::optional<double> view_azimuth_deg(const ModelView& view) {
   return a >= 360 ? 0 : a;
 }
 
-void draw_north_arrow(const ModelView& view, float scale) {
-  if (!view.has_model()) return;
+DrawnRect draw_north_arrow(const ModelView& view, float scale) {
+  DrawnRect drawn;
+  if (!view.has_model()) return drawn;
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float pad = 14 * scale, r = 26 * scale;
   const ImVec2 centre(view.panel_min().x + pad + r, view.panel_min().y + pad + r);
   if (!model_is_oriented(*view.model())) {
-    outlined_text(draw, ImVec2(view.panel_min().x + pad, view.panel_min().y + pad),
-                  "not oriented: no north");
-    return;
+    const ImVec2 at(view.panel_min().x + pad, view.panel_min().y + pad);
+    outlined_text(draw, at, "not oriented: no north");
+    drawn.add_text(at, "not oriented: no north");
+    return drawn;
   }
   // North and east as the view shows them at the model's centre: the
   // screen images of short steps along +y and +x.
@@ -62,10 +64,12 @@ void draw_north_arrow(const ModelView& view, float scale) {
   const double step = 0.1 * std::max(view.display_mesh().radius, 1e-3);
   const auto o = view.to_screen(c), n = view.to_screen(c + Eigen::Vector3d(0, step, 0)),
              e = view.to_screen(c + Eigen::Vector3d(step, 0, 0));
-  if (!o || !n || !e) return;
+  if (!o || !n || !e) return drawn;
   const Eigen::Vector2f north(n->x - o->x, n->y - o->y), east(e->x - o->x, e->y - o->y);
   const float longest = std::max({north.norm(), east.norm(), 1e-6f});
   draw->AddCircleFilled(centre, r + 4 * scale, IM_COL32(0, 0, 0, 150), 32);
+  drawn.add(ImVec2(centre.x - r - 6 * scale, centre.y - r - 6 * scale),
+            ImVec2(centre.x + r + 6 * scale, centre.y + r + 6 * scale));
   draw->AddCircle(centre, r + 4 * scale, IM_COL32(255, 255, 255, 255), 32, 1.5f * scale);
   const Eigen::Vector2f tip = north / longest * r, side = east / longest * r * 0.5f;
   const ImVec2 head(centre.x + tip.x(), centre.y + tip.y());
@@ -82,15 +86,18 @@ void draw_north_arrow(const ModelView& view, float scale) {
   else
     std::snprintf(text, sizeof text, "looking straight down");
   outlined_text(draw, ImVec2(view.panel_min().x + pad, centre.y + r + 8 * scale), text);
+  drawn.add_text(ImVec2(view.panel_min().x + pad, centre.y + r + 8 * scale), text);
   // Seen end-on the needle is short: say where north is.
   if (north.norm() < 0.3f * longest) {
     const auto azimuth = view_azimuth_deg(view);
     const bool into = azimuth && (*azimuth < 90 || *azimuth > 270);
-    outlined_text(draw,
-                  ImVec2(view.panel_min().x + pad,
-                         centre.y + r + 8 * scale + ImGui::GetTextLineHeightWithSpacing()),
-                  into ? "north: into the view" : "north: out of the view");
+    const ImVec2 at(view.panel_min().x + pad,
+                    centre.y + r + 8 * scale + ImGui::GetTextLineHeightWithSpacing());
+    const char* words = into ? "north: into the view" : "north: out of the view";
+    outlined_text(draw, at, words);
+    drawn.add_text(at, words);
   }
+  return drawn;
 }
 
 }  // namespace rockface::ui

@@ -6,6 +6,7 @@
 // photographed head-on is often seen looking north and its north arrow then
 // points into the screen. A model that was not oriented says so instead.
 #include "ui/model_view.h"
+#include "ui/overlay_scale_bar.h"
 
 namespace rockface::ui {
 
@@ -17,6 +18,6 @@ bool model_is_oriented(const storage::Model& model);
 std::optional<double> view_azimuth_deg(const ModelView& view);
 
 // Top left of the model panel.
-void draw_north_arrow(const ModelView& view, float scale);
+DrawnRect draw_north_arrow(const ModelView& view, float scale);
 
 }  // namespace rockface::ui

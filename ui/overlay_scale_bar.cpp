@@ -1,5 +1,6 @@
 #include "ui/overlay_scale_bar.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -28,21 +29,35 @@ void outlined_text(ImDrawList* draw, ImVec2 at, const char* text) {
 
 }  // namespace
 
+void DrawnRect::add(ImVec2 a, ImVec2 b) {
+  min = ImVec2(std::min({min.x, a.x, b.x}), std::min({min.y, a.y, b.y}));
+  max = ImVec2(std::max({max.x, a.x, b.x}), std::max({max.y, a.y, b.y}));
+}
+
+void DrawnRect::add_text(ImVec2 at, const char* text) {
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  // The halo reaches a pixel further.
+  add(ImVec2(at.x - 1, at.y - 1), ImVec2(at.x + size.x + 1, at.y + size.y + 1));
+}
+
 bool model_is_scaled(const storage::Model& model) {
   if (model.registration.kind == "none") return false;
   const auto r = registration_of(model);
   return !(r.contains("scaled") && r["scaled"].is_boolean() && !r["scaled"].get<bool>());
 }
 
-void draw_scale_bar(const ModelView& view, float scale) {
-  if (!view.has_model()) return;
+DrawnRect draw_scale_bar(const ModelView& view, float scale) {
+  DrawnRect drawn;
+  if (!view.has_model()) return drawn;
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 lo = view.panel_min(), hi = view.panel_max();
   const float pad = 14 * scale;
   const ImVec2 at(lo.x + pad, hi.y - pad - ImGui::GetTextLineHeight() - 10 * scale);
   if (!model_is_scaled(*view.model())) {
-    outlined_text(draw, at, "not to scale (no range pole or control points)");
-    return;
+    const char* words = "not to scale (no range pole or control points)";
+    outlined_text(draw, at, words);
+    drawn.add_text(at, words);
+    return drawn;
   }
   // The surface in the middle of the view, else the model's centre.
   const ImVec2 mid((lo.x + hi.x) / 2, (lo.y + hi.y) / 2);
@@ -57,7 +72,7 @@ void draw_scale_bar(const ModelView& view, float scale) {
   const double t = depth / side.direction.dot(ray.direction);
   const double metres_per_px =
       ((side.origin + t * side.direction) - (ray.origin + depth * ray.direction)).norm() / 100;
-  if (!(metres_per_px > 0) || !std::isfinite(metres_per_px)) return;
+  if (!(metres_per_px > 0) || !std::isfinite(metres_per_px)) return drawn;
   // The largest round length within a quarter of the panel's width.
   const double most = 0.25 * (hi.x - lo.x) * metres_per_px;
   double length = std::pow(10.0, std::floor(std::log10(most)));
@@ -77,7 +92,11 @@ void draw_scale_bar(const ModelView& view, float scale) {
     std::snprintf(text, sizeof text, "%g m (at the middle of the view)", length);
   else
     std::snprintf(text, sizeof text, "%g mm (at the middle of the view)", length * 1000);
-  outlined_text(draw, ImVec2(at.x, y - h - ImGui::GetTextLineHeight() - 2 * scale), text);
+  const ImVec2 text_at(at.x, y - h - ImGui::GetTextLineHeight() - 2 * scale);
+  outlined_text(draw, text_at, text);
+  drawn.add_text(text_at, text);
+  drawn.add(ImVec2(at.x - 1, y - h - 1), ImVec2(at.x + px + 1, y + 1));
+  return drawn;
 }
 
 }  // namespace rockface::ui

@@ -11,7 +11,15 @@ namespace rockface::ui {
 // Whether the model's registration scaled it to metres.
 bool model_is_scaled(const storage::Model& model);
 
+// A rectangle of the screen that an overlay drew on (for tests: the flat
+// marks drawn over the 3D image, not on its surface).
+struct DrawnRect {
+  ImVec2 min{1e9f, 1e9f}, max{-1e9f, -1e9f};
+  void add(ImVec2 a, ImVec2 b);
+  void add_text(ImVec2 at, const char* text);
+};
+
 // Bottom left of the model panel; `scale` is the UI's (1 = 1280 x 800).
-void draw_scale_bar(const ModelView& view, float scale);
+DrawnRect draw_scale_bar(const ModelView& view, float scale);
 
 }  // namespace rockface::ui
