@@ -74,7 +74,11 @@ void PhotoTargetsView::draw(storage::RecordId model_id, const storage::Model& mo
     char text[96];
     std::snprintf(text, sizeof text, "%s target (%.0f, %.0f) px", t.which.c_str(), t.pixel.x(),
                   t.pixel.y());
-    draw->AddText(ImVec2(c.x + r + 6 * scale, c.y - 8 * scale), kTargetColour, text);
+    // Beside the ring, on the side with room for the words.
+    const float width = ImGui::CalcTextSize(text).x;
+    const float x =
+        c.x + r + 6 * scale + width <= hi.x ? c.x + r + 6 * scale : c.x - r - 6 * scale - width;
+    draw->AddText(ImVec2(x, c.y - 8 * scale), kTargetColour, text);
   }
   if (targets.empty())
     draw->AddText(ImVec2(lo.x + 8 * scale, lo.y + 8 * scale), kTargetColour,
