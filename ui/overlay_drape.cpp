@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <unordered_map>
 #include <utility>
 
 #include <Eigen/Geometry>
@@ -50,17 +52,22 @@ SurfaceDrape::SurfaceDrape(const DisplayMesh& mesh) {
 
   // Edges: the median length is the sampling step; an edge of one triangle
   // is on the border of the mapped area (or of a hole in it).
-  std::map<std::pair<int, int>, int> uses;
+  std::unordered_map<std::uint64_t, int> uses;  // (low vertex, high vertex) packed
+  uses.reserve(surface_.triangles.size() * 2);
   std::vector<double> lengths;
   lengths.reserve(surface_.triangles.size() * 3);
   for (const auto& t : surface_.triangles)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
-      ++uses[{std::min(a, b), std::max(a, b)}];
+      ++uses[(static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+             static_cast<std::uint32_t>(std::max(a, b))];
       lengths.push_back((surface_.vertices[a] - surface_.vertices[b]).norm());
     }
   for (const auto& [edge, count] : uses)
-    if (count == 1) boundary_.push_back({edge.first, edge.second});
+    if (count == 1)
+      boundary_.push_back({static_cast<int>(edge >> 32), static_cast<int>(edge & 0xFFFFFFFFu)});
+  // Sorted: the same mesh gives the same chains of open edges run after run.
+  std::sort(boundary_.begin(), boundary_.end());
   if (!lengths.empty()) {
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
     spacing_ = lengths[lengths.size() / 2];
