@@ -17,6 +17,7 @@
 #include "ui/model_view.h"
 #include "ui/motion_playback.h"
 #include "ui/office_panel.h"
+#include "ui/overlay_photo_targets.h"
 #include "ui/project_session.h"
 #include "ui/rockmass_view.h"
 #include "ui/touch_input.h"
@@ -77,6 +78,10 @@ struct AppState {
   std::string status;                         // last message for the status bar
   std::string new_project_name = "site";
   TouchGesture gesture;  // this frame's two-finger gesture
+  // The Model screen's left photograph with the detected pole targets
+  // (issue 27), shown in place of the 3D image when chosen.
+  PhotoTargetsView photo_targets;
+  bool show_photograph = false;
 
   // Opens a project and loads its model on the worker; errors go to status.
   void open_project(const std::filesystem::path& file);

@@ -27,6 +27,12 @@ BlockView make_block_view(const storage::BlockResult& block, const Eigen::Vector
         if (p.is_array() && p.size() == 3)
           v.vertices.push_back(
               Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>()) - datum);
+    // analyse_traces.cpp notes it so ("vertices: the loop on the free surface ...").
+    if (json.contains("notes") && json["notes"].is_array())
+      for (const auto& n : json["notes"])
+        if (n.is_string() &&
+            n.get<std::string>().rfind("vertices: the loop on the free surface", 0) == 0)
+          v.vertices_are_surface_loop = true;
     if ((v.dynamics = storage::dynamics_from_block_json(block.report_json))) {
       for (auto& s : v.dynamics->path) s.position -= datum;
       if (v.dynamics->landing) {

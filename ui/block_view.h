@@ -21,8 +21,11 @@ struct BlockView {
   std::optional<double> margin_deg;
   std::optional<bool> rotatable;          // a corner or edge can rotate; absent: not analysed
   std::vector<Eigen::Vector3d> vertices;  // project frame (datum-relative)
-  std::string report_text;                // the block's report JSON, indented
-  std::vector<std::string> summary;       // ui/block_summary.h: the report in words
+  // The vertices are the block's loop on the free surface (a block with no
+  // finite corners, or not one polyhedron), not its corners.
+  bool vertices_are_surface_loop = false;
+  std::string report_text;           // the block's report JSON, indented
+  std::vector<std::string> summary;  // ui/block_summary.h: the report in words
   BlockVerdict verdict = BlockVerdict::infinite;
   // The motion after failure (analysis.dynamics), points datum-relative.
   std::optional<storage::ReportDynamics> dynamics;

@@ -51,6 +51,7 @@ DisplayMesh make_display_mesh(const storage::Mesh& mesh, std::size_t max_triangl
         const std::array<std::int32_t, 3> g{rep[f[0]], rep[f[1]], rep[f[2]]};
         if (g[0] != g[1] && g[1] != g[2] && g[0] != g[2]) faces.push_back(g);
       }
+      out.cell = cell;
       if (faces.size() <= max_triangles) break;
       cell *= std::sqrt(2.0);
     }

@@ -15,8 +15,11 @@
 namespace rockface::ui {
 
 struct DisplayMesh {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();        // project frame
-  double radius = 0;                                       // of the bounding sphere around centre
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // project frame
+  double radius = 0;                                 // of the bounding sphere around centre
+  // Edge of the clustering grid cell (m); 0 when the mesh was not decimated.
+  // A displayed vertex is within a cell's diagonal of the stored one.
+  double cell = 0;
   Eigen::Vector3d mean_normal = Eigen::Vector3d::UnitZ();  // area-weighted, unit
   std::vector<float> positions;                            // xyz relative to centre
   std::vector<float> texcoords;                            // uv (empty: none)

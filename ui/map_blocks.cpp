@@ -87,6 +87,33 @@ void refresh_map_blocks(AppState& app) {
       });
 }
 
+namespace {
+
+// A map block's loop laid on the 3D image (datum-relative, as the surface).
+const BlockOnFace* laid_map_block(AppState& app, const MapBlock& b) {
+  const SurfaceDrape* drape = app.model_view.drape();
+  if (!drape || !app.session || b.outline.size() < 3) return nullptr;
+  std::vector<Eigen::Vector3d> loop;
+  for (const auto& p : b.outline) loop.push_back(p - app.session->info().datum);
+  return &app.model_view.block_cache().get(loop, *drape);
+}
+
+}  // namespace
+
+void add_map_blocks_to_overlay(AppState& app) {
+  const auto& v = app.mapping.blocks.verdicts;
+  if (!v) return;
+  int number = 0;
+  for (const auto& b : v->blocks) {
+    ++number;
+    // A loop that is not finite is no block: counted in the panel, not drawn.
+    if (b.verdict == BlockVerdict::infinite) continue;
+    if (const BlockOnFace* laid = laid_map_block(app, b))
+      add_block_to_overlay(app.model_view.overlay(), "TB" + std::to_string(number), *laid,
+                           verdict_colour(b.verdict), true, 3.0f * app.targets.scale());
+  }
+}
+
 void draw_map_blocks_on_model(AppState& app) {
   const auto& v = app.mapping.blocks.verdicts;
   if (!v) return;
@@ -96,24 +123,14 @@ void draw_map_blocks_on_model(AppState& app) {
   for (const auto& b : v->blocks) {
     ++number;
     if (b.verdict == BlockVerdict::infinite) continue;
-    std::vector<ImVec2> line;
-    ImVec2 centre(0, 0);
-    for (const auto& p : b.outline)
-      if (const auto q = app.model_view.to_screen(p)) {
-        line.push_back(*q);
-        centre.x += q->x;
-        centre.y += q->y;
-      }
-    // A loop partly behind the camera has no outline to trust.
-    if (line.size() != b.outline.size() || line.size() < 3) continue;
+    const BlockOnFace* laid = laid_map_block(app, b);
+    if (!laid || !laid->centre) continue;  // not on the 3D image
+    const auto centre = app.model_view.to_screen(*laid->centre);
+    if (!centre) continue;
     const ImU32 colour = verdict_colour(b.verdict);
-    draw->AddPolyline(line.data(), static_cast<int>(line.size()), colour, ImDrawFlags_Closed,
-                      3.0f * s);
-    centre.x /= static_cast<float>(line.size());
-    centre.y /= static_cast<float>(line.size());
-    draw->AddCircleFilled(centre, 7 * s, colour, 16);
+    draw->AddCircleFilled(*centre, 7 * s, colour, 16);
     const std::string label = "TB" + std::to_string(number);
-    draw->AddText(ImVec2(centre.x + 10 * s, centre.y - 9 * s), IM_COL32(255, 255, 255, 255),
+    draw->AddText(ImVec2(centre->x + 10 * s, centre->y - 9 * s), IM_COL32(255, 255, 255, 255),
                   label.c_str());
   }
 }

@@ -3,8 +3,8 @@
 // saved trace the worker updates them (FieldServices::trace_map, which
 // recomputes only the regions the edit touched); the screen draws each
 // finite block's loop on the model in its verdict's colour and lists them
-// beside it. Loops that are not finite are counted, not drawn: they have no
-// footprint on the mapped face to show.
+// beside it, where it lies on the 3D image. Loops that are not finite are
+// counted, not drawn: they are no block.
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,7 +37,10 @@ std::string map_blocks_summary(const MapVerdicts& verdicts);
 // is free (the Mapping screen calls it every frame).
 void refresh_map_blocks(AppState& app);
 
-// The finite blocks' loops on the model view (inside its clip rectangle).
+// The finite blocks' loops laid on the model's surface (before the model
+// view draws: ui/overlay_blocks.h), and their markers and labels on top
+// (after it, inside its clip rectangle).
+void add_map_blocks_to_overlay(AppState& app);
 void draw_map_blocks_on_model(AppState& app);
 
 // The side panel's list: counts by verdict, each finite block with its mode,

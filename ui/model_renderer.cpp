@@ -7,7 +7,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "core/common/error.h"
+#include "ui/gles_program.h"
 
 namespace rockface::ui {
 
@@ -46,35 +46,10 @@ void main() {
 // photograph on a 1920 px screen gains nothing from more.
 constexpr int kMaxTextureSide = 2048;
 
-unsigned compile(GLenum kind, const char* source) {
-  const unsigned shader = glCreateShader(kind);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[1024] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw Error(std::string("GLES: model shader does not compile: ") + log);
-  }
-  return shader;
-}
-
 }  // namespace
 
 ModelRenderer::ModelRenderer() {
-  const unsigned vs = compile(GL_VERTEX_SHADER, kVertexShader);
-  const unsigned fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-  program_ = glCreateProgram();
-  glAttachShader(program_, vs);
-  glAttachShader(program_, fs);
-  glLinkProgram(program_);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-  if (!ok) throw Error("GLES: model shader does not link");
+  program_ = link_gles_program(kVertexShader, kFragmentShader, "model");
   glGenVertexArrays(1, &vertex_array_);
   glGenBuffers(4, buffers_);
   glGenTextures(1, &texture_);
@@ -111,6 +86,7 @@ void ModelRenderer::upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr) 
                mesh.indices.data(), GL_STATIC_DRAW);
   glBindVertexArray(0);
   index_count_ = static_cast<int>(mesh.indices.size());
+  origin_ = mesh.centre;
 
   textured_ = !texture_bgr.empty() && !mesh.texcoords.empty();
   if (textured_) {
@@ -130,7 +106,7 @@ void ModelRenderer::upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr) 
   }
 }
 
-unsigned ModelRenderer::render(const OrbitCamera& camera) {
+unsigned ModelRenderer::render(const OrbitCamera& camera, const OverlayScene& overlay) {
   if (!target_ || target_->width() != camera.width() || target_->height() != camera.height())
     target_ = std::make_unique<Framebuffer>(camera.width(), camera.height());
   target_->bind();
@@ -150,8 +126,19 @@ unsigned ModelRenderer::render(const OrbitCamera& camera) {
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_);
     glBindVertexArray(vertex_array_);
+    // Pushed back in depth by a little more than its slope across the
+    // widest overlay ribbon's half width (a few pixels): a line laid on the
+    // surface passes the depth test along its whole width, and a ridge of
+    // the face in front of it still hides it.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(4.0f, 8.0f);
     glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
     glBindVertexArray(0);
+    if (!overlay.empty()) {
+      if (!overlay_) overlay_ = std::make_unique<OverlayRenderer>();
+      overlay_->draw(overlay, camera, origin_);
+    }
     glDisable(GL_DEPTH_TEST);
   }
   Framebuffer::unbind();

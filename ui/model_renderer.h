@@ -1,13 +1,16 @@
 #pragma once
 // Draws the textured 3D image with GLES 3 into a framebuffer: the model
-// view's panel shows that framebuffer's texture, and ImGui draws the
-// overlays (targets, traces, blocks) on top.
+// view's panel shows that framebuffer's texture. What lies on the surface
+// (traces, blocks: OverlayScene) is drawn into the same framebuffer with the
+// model's depth; ImGui draws the flat marks (labels, markers) on top.
 #include <memory>
 
 #include <opencv2/core.hpp>
 
 #include "ui/display_mesh.h"
 #include "ui/orbit_camera.h"
+#include "ui/overlay_renderer.h"
+#include "ui/overlay_scene.h"
 #include "ui/platform/framebuffer.h"
 
 namespace rockface::ui {
@@ -23,13 +26,16 @@ class ModelRenderer {
   void upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr);
   // Renders into a framebuffer of the camera's viewport size (made or
   // resized as needed) and returns its colour texture.
-  unsigned render(const OrbitCamera& camera);
+  // The overlay is drawn after the model, depth-tested against it.
+  unsigned render(const OrbitCamera& camera, const OverlayScene& overlay = {});
 
  private:
   unsigned program_ = 0, vertex_array_ = 0, texture_ = 0;
   unsigned buffers_[4] = {0, 0, 0, 0};  // positions, texcoords, colours, indices
   int index_count_ = 0;
   bool textured_ = false;
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // the mesh's centre: positions are relative
+  std::unique_ptr<OverlayRenderer> overlay_;
   std::unique_ptr<Framebuffer> target_;
 };
 

@@ -39,6 +39,7 @@ PreparedModel prepare_model(const std::filesystem::path& project, storage::Recor
   out.id = model_id;
   auto model = std::make_shared<storage::Model>(store.load_model(model_id));
   out.mesh = make_display_mesh(model->mesh, max_triangles);
+  out.drape = std::make_shared<SurfaceDrape>(out.mesh);
   if (model->texture_capture_id) {
     const storage::ImageBlob blob =
         store.load_capture_image(*model->texture_capture_id, model->texture_side);
@@ -67,6 +68,11 @@ void ModelView::install(PreparedModel prepared) {
   left_view_ = std::move(prepared.left_view);
   photo_ = std::move(prepared.photo_bgr);
   mesh_ = std::move(prepared.mesh);
+  drape_ = std::move(prepared.drape);
+  drape_cache_.clear();
+  block_cache_.clear();
+  overlay_ = {};
+  drawn_overlay_ = {};
   camera_.frame(mesh_.centre, mesh_.radius, mesh_.mean_normal);
 }
 
@@ -77,12 +83,18 @@ void ModelView::clear() {
   photo_ = cv::Mat();
   model_.reset();
   mesh_ = {};
+  drape_.reset();
+  drape_cache_.clear();
+  block_cache_.clear();
+  overlay_ = {};
+  drawn_overlay_ = {};
   id_ = 0;
   if (renderer_) renderer_->upload(mesh_, {});
 }
 
 ModelView::Interaction ModelView::draw(ImVec2 size, const TouchGesture& gesture) {
   Interaction out;
+  flat_marks_.clear();
   size.x = std::max(size.x, 1.0f);
   size.y = std::max(size.y, 1.0f);
   camera_.set_viewport(static_cast<int>(size.x), static_cast<int>(size.y));
@@ -103,14 +115,17 @@ ModelView::Interaction ModelView::draw(ImVec2 size, const TouchGesture& gesture)
     }
   }
   if (renderer_ && model_) {
-    const unsigned texture = renderer_->render(camera_);
+    const unsigned texture = renderer_->render(camera_, overlay_);
     // The framebuffer's first row is the bottom one: flip v.
     ImGui::GetWindowDrawList()->AddImage(
         reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), panel_min_, panel_max_,
         ImVec2(0, 1), ImVec2(1, 0));
   } else {
     ImGui::GetWindowDrawList()->AddRectFilled(panel_min_, panel_max_, IM_COL32(46, 46, 51, 255));
+    overlay_ = {};  // nothing to lay it on
   }
+  drawn_overlay_ = std::move(overlay_);
+  overlay_ = {};
   return out;
 }
 

@@ -4,6 +4,7 @@
 // finger turns, two fingers pan and pinch zoom. Screens draw their overlays
 // (targets, traces, blocks) on top with to_screen().
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -15,6 +16,9 @@
 #include "ui/display_mesh.h"
 #include "ui/model_renderer.h"
 #include "ui/orbit_camera.h"
+#include "ui/overlay_blocks.h"
+#include "ui/overlay_drape.h"
+#include "ui/overlay_scene.h"
 #include "ui/touch_input.h"
 
 namespace rockface::ui {
@@ -29,7 +33,8 @@ struct PreparedModel {
   std::shared_ptr<const measure::MeshPicker> picker;  // on `surface`
   std::optional<measure::PhotoView> left_view;        // when the capture's calibration is stored
   DisplayMesh mesh;
-  cv::Mat photo_bgr;  // the texture photograph (full size); empty when none
+  std::shared_ptr<const SurfaceDrape> drape;  // on `mesh`: overlays are laid on what is drawn
+  cv::Mat photo_bgr;                          // the texture photograph (full size); empty when none
 };
 
 // Worker side: opens its own store on `project`.
@@ -49,6 +54,24 @@ class ModelView {
   const std::optional<measure::PhotoView>& left_view() const { return left_view_; }
   const cv::Mat& photo() const { return photo_; }
   const DisplayMesh& display_mesh() const { return mesh_; }
+  // The drawn surface that overlays are laid on; null without a model.
+  const SurfaceDrape* drape() const { return drape_.get(); }
+  // Lines already laid on this model's surface (emptied with the model).
+  DrapeCache& drape_cache() { return drape_cache_; }
+  BlockFaceCache& block_cache() { return block_cache_; }
+
+  // What the next draw() renders on the surface (depth-tested); screens set
+  // it each frame before draw(), which then empties it.
+  OverlayScene& overlay() { return overlay_; }
+  // What the last draw() rendered on the surface.
+  const OverlayScene& drawn_overlay() const { return drawn_overlay_; }
+  // Rectangles of the panel covered by flat marks drawn this frame over the
+  // 3D image (legend, scale bar, north arrow), by name; emptied by draw().
+  void add_flat_mark(const std::string& name, ImVec2 min, ImVec2 max) {
+    // Antialiased edges reach a pixel or two beyond what was asked.
+    flat_marks_[name] = {ImVec2(min.x - 2, min.y - 2), ImVec2(max.x + 2, max.y + 2)};
+  }
+  const std::map<std::string, std::pair<ImVec2, ImVec2>>& flat_marks() const { return flat_marks_; }
 
   struct Interaction {
     std::optional<ImVec2> tap;  // a touch that went up where it went down (screen px)
@@ -74,6 +97,11 @@ class ModelView {
   std::optional<measure::PhotoView> left_view_;
   cv::Mat photo_;
   DisplayMesh mesh_;
+  std::shared_ptr<const SurfaceDrape> drape_;
+  DrapeCache drape_cache_;
+  BlockFaceCache block_cache_;
+  OverlayScene overlay_, drawn_overlay_;
+  std::map<std::string, std::pair<ImVec2, ImVec2>> flat_marks_;
   storage::RecordId id_ = 0;
   OrbitCamera camera_;
   ImVec2 panel_min_{0, 0}, panel_max_{0, 0};

@@ -129,6 +129,11 @@ TEST(UiScreens, TheModelIsDrawnWhereTheOverlaysProjectIt) {
       // reach past its silhouette where a target sits at the edge of the 3D image (the demo's lower
       // target).
       if (p[0] < 60 && p[1] > p[0] + 6 && p[2] > p[0] + 6) continue;
+      // The legend, scale bar and north arrow are flat marks over the panel.
+      bool flat = false;
+      for (const auto& [name, r] : view.flat_marks())
+        flat = flat || (x >= r.first.x && x <= r.second.x && y >= r.first.y && y <= r.second.y);
+      if (flat) continue;
       const cv::Rect2f px(static_cast<float>(x), static_cast<float>(y), 1, 1);
       rendered = first ? px : (rendered | px);
       first = false;

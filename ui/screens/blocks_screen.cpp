@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ui/motion_playback.h"
+#include "ui/overlay_legend.h"
 #include "ui/screens/screens.h"
 #include "ui/wedges_view.h"
 
@@ -12,17 +13,10 @@ namespace rockface::ui {
 
 namespace {
 
-// Screen outline of a block: the convex hull of its projected corners.
-std::vector<ImVec2> outline(const AppState& app, const BlockView& block) {
-  std::vector<cv::Point2f> projected;
-  for (const auto& v : block.vertices)
-    if (const auto p = app.model_view.to_screen(v)) projected.emplace_back(p->x, p->y);
-  std::vector<ImVec2> out;
-  if (projected.size() < 3) return out;
-  std::vector<cv::Point2f> hull;
-  cv::convexHull(projected, hull);
-  for (const auto& p : hull) out.emplace_back(p.x, p.y);
-  return out;
+// Screen outline of a block: its footprint on the 3D image
+// (ui/overlay_blocks.h), projected.
+std::vector<ImVec2> outline(AppState& app, const BlockView& block) {
+  return block_outline_on_screen(app, block);
 }
 
 ImVec2 centre_of(const std::vector<ImVec2>& polygon) {
@@ -59,12 +53,7 @@ void draw_blocks_on_model(AppState& app, std::optional<ImVec2> tap) {
     polys[i] = outline(app, blocks[i]);
     const std::vector<ImVec2>& poly = polys[i];
     if (poly.empty()) continue;
-    const ImU32 colour = verdict_colour(blocks[i].verdict);
-    const ImU32 fill = (colour & 0x00FFFFFF) | (70u << IM_COL32_A_SHIFT);
-    draw->AddConvexPolyFilled(poly.data(), static_cast<int>(poly.size()), fill);
-    const bool selected = app.selected_block && *app.selected_block == i;
-    draw->AddPolyline(poly.data(), static_cast<int>(poly.size()), colour, ImDrawFlags_Closed,
-                      (selected ? 6.0f : 3.0f) * s);
+    // Tinted and outlined on the surface by the renderer (add_blocks_to_overlay).
     if (tap && contains(poly, *tap)) {
       const float a = area_of(poly);
       if (!tapped || a < tapped_area) {
@@ -75,13 +64,13 @@ void draw_blocks_on_model(AppState& app, std::optional<ImVec2> tap) {
   }
   for (std::size_t i = 0; i < blocks.size(); ++i)
     if (!polys[i].empty()) {
-      const ImVec2 c = centre_of(polys[i]);
+      const ImVec2 c = block_marker_on_screen(app, blocks[i]).value_or(centre_of(polys[i]));
       draw->AddText(ImVec2(c.x + 12 * s, c.y - 10 * s), IM_COL32(255, 255, 255, 255),
                     blocks[i].label.c_str());
     }
   for (std::size_t i = 0; i < blocks.size(); ++i)
     if (!polys[i].empty()) {
-      const ImVec2 c = centre_of(polys[i]);
+      const ImVec2 c = block_marker_on_screen(app, blocks[i]).value_or(centre_of(polys[i]));
       draw->AddCircleFilled(c, 9 * s, verdict_colour(blocks[i].verdict), 20);
       app.targets.record("block " + blocks[i].label, ImVec2(c.x - 9 * s, c.y - 9 * s),
                          ImVec2(c.x + 9 * s, c.y + 9 * s));
@@ -189,11 +178,13 @@ void draw_blocks_screen(AppState& app) {
   const float model_height = avail.y * 0.55f;
   ImGui::BeginChild("blocks left", ImVec2(avail.x - side, 0));
   if (app.model_view.has_model()) {
+    add_blocks_to_overlay(app);  // ui/overlay_blocks.h: on the surface, depth-tested
     const auto interaction =
         app.model_view.draw(ImVec2(ImGui::GetContentRegionAvail().x, model_height), app.gesture);
     ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
     draw_blocks_on_model(app, interaction.tap);
     draw_motion_on_model(app);
+    draw_model_overlays(app, ModelScreen::blocks);  // ui/overlay_legend.h
     ImGui::PopClipRect();
   }
   draw_table(app);

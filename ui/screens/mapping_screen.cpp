@@ -11,6 +11,8 @@
 
 #include "core/common/units.h"
 #include "storage/project_store.h"
+#include "ui/overlay_legend.h"
+#include "ui/overlay_traces.h"
 #include "ui/screens/screens.h"
 #include "ui/stereonet_view.h"
 
@@ -38,23 +40,11 @@ TraceContext trace_context(const AppState& app) {
   return c;
 }
 
-void draw_polyline(const AppState& app, const std::vector<Eigen::Vector3d>& points, ImU32 colour,
-                   float width) {
-  std::vector<ImVec2> line;
-  for (const auto& p : points)
-    if (const auto q = app.model_view.to_screen(p)) line.push_back(*q);
-  ImGui::GetWindowDrawList()->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0,
-                                          width);
-}
-
+// The taps of the trace being marked; the traces themselves are laid on
+// the surface by the renderer (ui/overlay_traces.h).
 void draw_traces(AppState& app) {
   const float s = app.targets.scale();
-  for (const auto& m : app.session->measurements())
-    if (m.kind == storage::Measurement::Kind::trace)
-      draw_polyline(app, m.points, kTraceColour, 4 * s);
-  const TraceMarker& marker = app.mapping.marker;
-  draw_polyline(app, marker.points(), kPendingTraceColour, 4 * s);
-  for (const auto& t : marker.taps())
+  for (const auto& t : app.mapping.marker.taps())
     if (const auto q = app.model_view.to_screen(t))
       ImGui::GetWindowDrawList()->AddCircleFilled(*q, 7 * s, kPendingTraceColour, 16);
 }
@@ -199,6 +189,8 @@ void draw_mapping_screen(AppState& app) {
   const float side = 400 * app.targets.scale();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   ImGui::BeginGroup();
+  add_traces_to_overlay(app);
+  add_map_blocks_to_overlay(app);
   const auto interaction = app.model_view.draw(ImVec2(avail.x - side, avail.y), app.gesture);
   if (interaction.tap) {
     const ScreenRay r = app.model_view.ray_at(*interaction.tap);
@@ -208,6 +200,7 @@ void draw_mapping_screen(AppState& app) {
   ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
   draw_map_blocks_on_model(app);
   draw_traces(app);
+  draw_model_overlays(app, ModelScreen::mapping);  // ui/overlay_legend.h
   ImGui::PopClipRect();
   ImGui::EndGroup();
   ImGui::SameLine();

@@ -2,6 +2,7 @@
 // the range pole targets and the accuracy report on it.
 #include <nlohmann/json.hpp>
 
+#include "ui/overlay_legend.h"
 #include "ui/screens/screens.h"
 
 namespace rockface::ui {
@@ -82,10 +83,17 @@ void draw_model_screen(AppState& app) {
   const float side = 360 * app.targets.scale();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   ImGui::BeginGroup();
-  app.model_view.draw(ImVec2(avail.x - side, avail.y), app.gesture);
-  ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
-  draw_targets(app, *app.model_view.model());
-  ImGui::PopClipRect();
+  if (app.show_photograph) {  // ui/overlay_photo_targets.h
+    app.photo_targets.draw(app.model_view.model_id(), *app.model_view.model(),
+                           app.model_view.photo(), ImVec2(avail.x - side, avail.y),
+                           app.targets.scale());
+  } else {
+    app.model_view.draw(ImVec2(avail.x - side, avail.y), app.gesture);
+    ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
+    draw_targets(app, *app.model_view.model());
+    draw_model_overlays(app, ModelScreen::model);  // ui/overlay_legend.h
+    ImGui::PopClipRect();
+  }
   ImGui::EndGroup();
   ImGui::SameLine();
   ImGui::BeginChild("model side", ImVec2(0, 0));
@@ -97,6 +105,8 @@ void draw_model_screen(AppState& app) {
   ImGui::Text("shown: %zu triangles", mesh.triangle_count());
   if (app.targets.button("Reset view", -1))
     app.model_view.camera().frame(mesh.centre, mesh.radius, mesh.mean_normal);
+  if (app.targets.button(app.show_photograph ? "3D image" : "Photograph", -1))
+    app.show_photograph = !app.show_photograph;
   ImGui::Separator();
   draw_accuracy(model);
   ImGui::EndChild();

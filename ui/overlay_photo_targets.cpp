@@ -1,0 +1,88 @@
+#include "ui/overlay_photo_targets.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "ui/widgets.h"
+
+namespace rockface::ui {
+
+namespace {
+
+// The largest side uploaded (GLES 3 guarantees 2048 texels).
+constexpr int kMaxSide = 2048;
+
+}  // namespace
+
+std::vector<DetectedTarget> detected_targets(const storage::Model& model) {
+  std::vector<DetectedTarget> out;
+  const auto p = nlohmann::json::parse(
+      model.registration.parameters_json.empty() ? "{}" : model.registration.parameters_json,
+      nullptr, false);
+  if (!p.is_object() || !p.contains("registration") || !p["registration"].is_object()) return out;
+  const auto& r = p["registration"];
+  if (!r.contains("range_pole") || !r["range_pole"].is_object() ||
+      !r["range_pole"].contains("targets") || !r["range_pole"]["targets"].is_array())
+    return out;
+  for (const auto& t : r["range_pole"]["targets"]) {
+    if (!t.is_object() || !t.contains("left_px") || !t["left_px"].is_array() ||
+        t["left_px"].size() != 2 || !t["left_px"][0].is_number() || !t["left_px"][1].is_number())
+      continue;
+    DetectedTarget d;
+    d.which = t.value("which", std::string());
+    d.pixel = {t["left_px"][0].get<double>(), t["left_px"][1].get<double>()};
+    if (t.contains("diameter_px") && t["diameter_px"].is_number())
+      d.diameter_px = t["diameter_px"].get<double>();
+    out.push_back(d);
+  }
+  return out;
+}
+
+void PhotoTargetsView::draw(storage::RecordId model_id, const storage::Model& model,
+                            const cv::Mat& photo_bgr, ImVec2 size, float scale) {
+  rings_.clear();
+  if (photo_bgr.empty()) {
+    ImGui::TextWrapped("This 3D image has no photograph stored with it.");
+    return;
+  }
+  if (model_id != model_id_ || texture_.empty()) {
+    const double shrink =
+        std::min(1.0, static_cast<double>(kMaxSide) / std::max(photo_bgr.cols, photo_bgr.rows));
+    cv::Mat small;
+    cv::resize(photo_bgr, small, cv::Size(), shrink, shrink, cv::INTER_AREA);
+    texture_.set(small);
+    model_id_ = model_id;
+    photo_width_ = photo_bgr.cols;
+  }
+  const float aspect = static_cast<float>(photo_bgr.cols) / static_cast<float>(photo_bgr.rows);
+  texture_.draw(std::min(size.x, size.y * aspect));
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  const float k = (hi.x - lo.x) / static_cast<float>(photo_width_);  // screen px per photo px
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const auto targets = detected_targets(model);
+  for (const auto& t : targets) {
+    const ImVec2 c(lo.x + static_cast<float>(t.pixel.x()) * k,
+                   lo.y + static_cast<float>(t.pixel.y()) * k);
+    // The target's own size, but never smaller than a fingertip's mark.
+    const float r = std::max(static_cast<float>(t.diameter_px) * k * 0.5f + 4 * scale, 10 * scale);
+    draw->AddCircle(c, r + 2 * scale, IM_COL32(0, 0, 0, 255), 32, 2 * scale);
+    draw->AddCircle(c, r, kTargetColour, 32, 3 * scale);
+    rings_.emplace_back(c, r);
+    char text[96];
+    std::snprintf(text, sizeof text, "%s target (%.0f, %.0f) px", t.which.c_str(), t.pixel.x(),
+                  t.pixel.y());
+    // Beside the ring, on the side with room for the words.
+    const float width = ImGui::CalcTextSize(text).x;
+    const float x =
+        c.x + r + 6 * scale + width <= hi.x ? c.x + r + 6 * scale : c.x - r - 6 * scale - width;
+    draw->AddText(ImVec2(x, c.y - 8 * scale), kTargetColour, text);
+  }
+  if (targets.empty())
+    draw->AddText(ImVec2(lo.x + 8 * scale, lo.y + 8 * scale), kTargetColour,
+                  "no range-pole targets stored with this 3D image");
+}
+
+}  // namespace rockface::ui
