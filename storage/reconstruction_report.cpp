@@ -38,7 +38,14 @@ std::string reconstruction_report_json(const photogrammetry::ReconstructionResul
                 {"min_disparity", r.disparity_range.min_disparity},
                 {"num_disparities", r.disparity_range.num_disparities},
                 {"valid_fraction", r.dense_valid_fraction},
-                {"left_right_rejected_fraction", r.lr_rejected_fraction}};
+                {"left_right_rejected_fraction", r.lr_rejected_fraction},
+                // How differently the two photographs light the same rock
+                // (view_shading.h), and whether matching was normalised for it.
+                {"shading",
+                 {{"tie_points", r.view_shading.samples},
+                  {"gain", r.view_shading.gain},
+                  {"spread", r.view_shading.spread},
+                  {"normalised", r.shading_normalised}}}};
   json R = json::array();
   for (int i = 0; i < 3; ++i) R.push_back({ro.R(i, 0), ro.R(i, 1), ro.R(i, 2)});
   j["orientation"] = {{"matches", ro.matches},

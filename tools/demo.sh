@@ -11,7 +11,7 @@
 # tests, the benchmarks or debug information (CMake preset "demo", build/demo).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tools/setup.sh
+tools/setup.sh --demo
 cmake --preset demo >/dev/null
 cmake --build --preset demo -j "$(nproc)"
 echo "demo.sh: rockface built in $SECONDS s"

@@ -16,21 +16,30 @@ packages=(
   # the window, a TTF font
   libimgui-dev libstb-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libx11-dev libxi-dev
   fonts-dejavu-core
-  # the UI's window test: a virtual X server
-  xvfb xauth
   # the block's motion after failure: Boost.Odeint (header-only, in libboost-dev)
   libboost-dev
   # the field report's PDF (cairo's PDF surface)
   libcairo2-dev
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
-  # the report tests read the PDF back (pdftotext, pdftoppm)
-  poppler-utils
-  # the office server (issue 24): libpq's C API, OpenSSL's SHA-256, and for
-  # the tests a real PostgreSQL server (initdb, pg_ctl) and openssl to make
-  # the TLS test's CA and certificate
-  libpq-dev libssl-dev postgresql openssl
+  # the office server (issue 24): libpq's C API, OpenSSL's SHA-256
+  libpq-dev libssl-dev
 )
+# What only the tests and benchmarks need; `tools/setup.sh --demo` (what
+# tools/demo.sh runs) leaves them out: 65 MB less to download of ~525, and
+# no PostgreSQL cluster set up (docs/accuracy-cost.md, "The demo on a fresh
+# machine").
+if [ "${1:-}" != "--demo" ]; then
+  packages+=(
+    # the UI's window test: a virtual X server
+    xvfb xauth
+    # tests and benchmarks
+    libgtest-dev libgmock-dev libbenchmark-dev
+    # the report tests read the PDF back (pdftotext, pdftoppm)
+    poppler-utils
+    # the office tests: a real PostgreSQL server (initdb, pg_ctl) and openssl
+    # to make the TLS test's CA and certificate
+    postgresql openssl
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do

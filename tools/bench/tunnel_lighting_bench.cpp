@@ -29,6 +29,8 @@ void run_case(benchmark::State& state, const std::string& name, const Effects& e
   const auto c = photogrammetry::measure_contrast(o.render.images[0]);
   state.counters["texture_grey"] = c.texture_grey;
   state.counters["refused"] = o.truth ? 0 : 1;
+  state.counters["shading_spread"] = o.shading.spread;
+  state.counters["normalised"] = o.shading_normalised ? 1 : 0;
   if (o.truth) {
     state.counters["scale_err_pct"] = 100 * o.truth->scale_error;
     state.counters["north_err_deg"] = o.truth->north_error_deg;

@@ -295,9 +295,8 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     }
     return raw->in_face(out.images[ref].to_face);
   };
-  std::vector<std::string> tried(n);    // what each slave was tried against
-  std::vector<char> guided_ties(n, 0);  // its tie points came from guided matching
-  std::vector<char> failed(n, 0);       // against every image placed when it was tried
+  std::vector<std::string> tried(n);  // what each slave was tried against
+  std::vector<char> failed(n, 0);     // against every image placed when it was tried
 
   // One image registered to the images placed so far (`placed` is not
   // changed while a wave runs).
@@ -306,6 +305,9 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     int reference = -1, tie_points = 0;
     bool guided = false;
     double surface_rms_before_icp_m = 0;
+    // The residuals through to_face, in face units before ground control
+    // (ImageResidual); the final transform moves slave and reference alike.
+    double overlap = 0, surface_rms_m = 0, tie_rms_m = 0;
     Similarity to_face;
     std::string tried;
   };
@@ -358,6 +360,10 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     const OverlapFit o = overlap(before, reference, tree, overlap_m);
     result.surface_rms_before_icp_m = o.rms;
     result.to_face = best.slave_to_face;
+    result.surface_rms_m = o.rms;
+    result.overlap = before.points.empty() ? 0.0
+                                           : static_cast<double>(o.slave.size()) /
+                                                 static_cast<double>(before.points.size());
     if (o.slave.size() >= 100) {
       const Similarity rigid = icp_refinement(before, reference, o, options);
       const Similarity refined = best.slave_to_face.then(rigid);
@@ -365,34 +371,60 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
           sample_surface(images[i].mesh, normals[i], refined, options.icp_max_points);
       const OverlapFit o2 = overlap(after, reference, tree, overlap_m);
       // ICP is kept only when it brings the surfaces closer over no less overlap.
-      if (o2.rms < o.rms && o2.slave.size() + o.slave.size() / 10 >= o.slave.size())
+      if (o2.rms < o.rms && o2.slave.size() + o.slave.size() / 10 >= o.slave.size()) {
         result.to_face = refined;
+        result.surface_rms_m = o2.rms;
+        result.overlap = after.points.empty() ? 0.0
+                                              : static_cast<double>(o2.slave.size()) /
+                                                    static_cast<double>(after.points.size());
+      }
     }
+    // The tie points through the final transform, those within the overlap
+    // distance (the others are the RANSAC outliers).
+    const TiePoints t = tie_points(j, i, result.guided);
+    double sum2 = 0;
+    int count = 0;
+    for (std::size_t k = 0; k < t.slave.size(); ++k) {
+      const double d = (result.to_face.apply(t.slave[k]) - t.reference[k]).norm();
+      if (d < overlap_m) {
+        sum2 += d * d;
+        ++count;
+      }
+    }
+    result.tie_rms_m = count ? std::sqrt(sum2 / count) : 0.0;
     return result;
   };
 
   std::size_t done = 1;
   while (done < n) {
-    // A wave: the unplaced images that overlap a placed image nearly as well
-    // as any image (options.wave_share), registered side by side; they do
-    // not depend on each other, and which images form a wave does not
-    // depend on the number of threads, so neither do the results. When no
-    // image qualifies, the one that overlaps a placed image most goes alone.
+    // A wave: the unplaced images that need not wait for another
+    // (options.wave_share), registered side by side; they do not depend on
+    // each other, and which images form a wave does not depend on the
+    // number of threads, so neither do the results. When no image
+    // qualifies, the one that overlaps a placed image most goes alone.
     std::vector<std::size_t> wave;
     int next = -1;
     double next_score = -1;
+    std::vector<double> with_placed(n, 0.0);
+    for (std::size_t i = 1; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        if (j != i && placed[j]) with_placed[i] = std::max(with_placed[i], coarse[i][j].score());
     for (std::size_t i = 1; i < n; ++i) {
       if (placed[i] || failed[i]) continue;
-      double any = 0, with_placed = 0;
-      for (std::size_t j = 0; j < n; ++j) {
-        if (j == i) continue;
-        any = std::max(any, coarse[i][j].score());
-        if (placed[j]) with_placed = std::max(with_placed, coarse[i][j].score());
-      }
-      if (with_placed > 0 && with_placed >= options.wave_share * any) wave.push_back(i);
-      if (with_placed > next_score) {
+      // Waiting for j pays only when j overlaps i clearly better than any
+      // placed image and j can be placed no later than i. Comparing the
+      // best overlap with any image instead kept a station from going
+      // beside its mirror image whenever the thumbnails' noisy peak rated
+      // its outer neighbour (not placeable yet) a little higher.
+      bool waits = false;
+      for (std::size_t j = 1; j < n && !waits; ++j)
+        waits = j != i && !placed[j] && !failed[j] &&
+                options.wave_share * coarse[i][j].score() > with_placed[i] &&
+                with_placed[j] >= with_placed[i];
+      if (with_placed[i] > 0 && !waits) wave.push_back(i);
+      if (with_placed[i] > next_score) {
         next = static_cast<int>(i);
-        next_score = with_placed;
+        next_score = with_placed[i];
       }
     }
     if (wave.empty() && next >= 0) wave.push_back(static_cast<std::size_t>(next));
@@ -420,8 +452,10 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       r.reference = results[k].reference;
       r.tie_points = results[k].tie_points;
       r.surface_rms_before_icp_m = results[k].surface_rms_before_icp_m;
+      r.overlap = results[k].overlap;
+      r.surface_rms_m = results[k].surface_rms_m;
+      r.tie_rms_m = results[k].tie_rms_m;
       r.to_face = results[k].to_face;
-      guided_ties[i] = results[k].guided;
       placed[i] = true;
       ++done;
       progressed = true;
@@ -453,39 +487,15 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     for (auto& r : out.images) r.to_face = r.to_face.then(out.control_points->transform);
   }
 
-  // Final residuals, in face units.
-  progress.step("residuals", 0.95);
+  // The residuals were measured as each image was placed (the ICP's last
+  // overlap is the final one); ground control moves slave and reference by
+  // one similarity, which scales every distance alike.
+  const double to_final = out.control_points ? out.control_points->transform.scale : 1.0;
   for (std::size_t i = 1; i < n; ++i) {
     ImageResidual& r = out.images[i];
-    const auto j = static_cast<std::size_t>(r.reference);
-    const double to_final = out.control_points ? out.control_points->transform.scale : 1.0;
     r.surface_rms_before_icp_m *= to_final;
-    const SurfaceSample reference =
-        sample_surface(images[j].mesh, normals[j], out.images[j].to_face, options.icp_max_points);
-    const SurfaceSample slave =
-        sample_surface(images[i].mesh, normals[i], r.to_face, options.icp_max_points);
-    const NearestPoint tree(reference.points);
-    const double scale = out.images[j].to_face.scale;
-    const double overlap_m =
-        options.overlap_distance_factor *
-        (options.inlier_sigmas * images[j].sigma_z * scale + spacing[j] * scale);
-    const OverlapFit o = overlap(slave, reference, tree, overlap_m);
-    r.surface_rms_m = o.rms;
-    r.overlap = slave.points.empty() ? 0.0
-                                     : static_cast<double>(o.slave.size()) /
-                                           static_cast<double>(slave.points.size());
-    // Tie points again, through the final transforms.
-    const TiePoints t = tie_points(j, i, guided_ties[i]);
-    double sum2 = 0;
-    int count = 0;
-    for (std::size_t k = 0; k < t.slave.size(); ++k) {
-      const double d = (r.to_face.apply(t.slave[k]) - t.reference[k]).norm();
-      if (d < overlap_m) {
-        sum2 += d * d;
-        ++count;
-      }
-    }
-    r.tie_rms_m = count ? std::sqrt(sum2 / count) : 0.0;
+    r.surface_rms_m *= to_final;
+    r.tie_rms_m *= to_final;
   }
   progress.step("done", 1.0);
   return out;

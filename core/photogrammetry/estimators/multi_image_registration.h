@@ -65,9 +65,12 @@ struct MultiImageOptions {
   // width against the shift, and the shift is found to under 1 %.
   double guide_min_response = 0.15;
   double guide_window = 0.1;
-  // Images whose best overlap with a placed image is at least this share of
-  // their best overlap with any image are registered side by side, on all
-  // cores (a station's neighbours on both sides of the master, then theirs).
+  // Images are registered side by side, on all cores, in waves (a
+  // station's neighbours on both sides of the master, then theirs): an
+  // image waits for an unplaced one only when that overlaps it better than
+  // any placed image by more than 1 / wave_share and is itself no farther
+  // from being placed (its best overlap with a placed image is at least
+  // as good); every other image with a placed neighbour goes now.
   double wave_share = 0.8;
   int ransac_iterations = 400;
   // Tie-point inlier distance, in units of the reference image's predicted

@@ -132,10 +132,9 @@ Rectification rectify(const CameraIntrinsics& left, const CameraIntrinsics& righ
   return r;
 }
 
-DisparityRange disparity_range_from_inliers(const RelativeOrientation& ro,
-                                            const Rectification& rect, const CameraIntrinsics& left,
-                                            const CameraIntrinsics& right,
-                                            const ReconstructionPreset& preset) {
+RectifiedTiePoints rectified_tie_points(const RelativeOrientation& ro, const Rectification& rect,
+                                        const CameraIntrinsics& left,
+                                        const CameraIntrinsics& right) {
   const CameraIntrinsics l = scaled(left, rect.scale), r = scaled(right, rect.scale);
   std::vector<cv::Point2d> pl, pr, ql, qr;
   const double s = rect.scale;
@@ -143,10 +142,24 @@ DisparityRange disparity_range_from_inliers(const RelativeOrientation& ro,
     pl.emplace_back((ro.left[i].x() + 0.5) * s - 0.5, (ro.left[i].y() + 0.5) * s - 0.5);
     pr.emplace_back((ro.right[i].x() + 0.5) * s - 0.5, (ro.right[i].y() + 0.5) * s - 0.5);
   }
+  RectifiedTiePoints out;
+  if (pl.empty()) return out;
   cv::undistortPoints(pl, ql, camera_matrix(l), distortion_vector(l), rect.R1, rect.P1);
   cv::undistortPoints(pr, qr, camera_matrix(r), distortion_vector(r), rect.R2, rect.P2);
+  for (std::size_t i = 0; i < ql.size(); ++i) {
+    out.left.emplace_back(ql[i].x, ql[i].y);
+    out.right.emplace_back(qr[i].x, qr[i].y);
+  }
+  return out;
+}
+
+DisparityRange disparity_range_from_inliers(const RelativeOrientation& ro,
+                                            const Rectification& rect, const CameraIntrinsics& left,
+                                            const CameraIntrinsics& right,
+                                            const ReconstructionPreset& preset) {
+  const RectifiedTiePoints q = rectified_tie_points(ro, rect, left, right);
   std::vector<double> d;
-  for (std::size_t i = 0; i < ql.size(); ++i) d.push_back(ql[i].x - qr[i].x);
+  for (std::size_t i = 0; i < q.left.size(); ++i) d.push_back(q.left[i].x() - q.right[i].x());
   if (d.empty())
     throw InputError("left/right images", "no tie points to bound the disparity search");
   std::sort(d.begin(), d.end());

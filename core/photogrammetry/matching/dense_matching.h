@@ -4,6 +4,9 @@
 // preset's image scale with sub-pixel disparities, checked left against right
 // (a second SGBM on the mirrored pair gives the right disparity), and cleaned
 // of speckles (cv::filterSpeckles).
+#include <vector>
+
+#include <Eigen/Core>
 #include <opencv2/core.hpp>
 
 #include "core/common/progress.h"
@@ -45,6 +48,15 @@ struct Rectification {
 
 Rectification rectify(const CameraIntrinsics& left, const CameraIntrinsics& right,
                       const RelativeOrientation& ro, double scale);
+
+// The tie points of the orientation (ro.left / ro.right, full-size pixels)
+// in the pixels of the rectified images.
+struct RectifiedTiePoints {
+  std::vector<Eigen::Vector2d> left, right;
+};
+RectifiedTiePoints rectified_tie_points(const RelativeOrientation& ro, const Rectification& rect,
+                                        const CameraIntrinsics& left,
+                                        const CameraIntrinsics& right);
 
 // The disparity search range from the sparse inliers, widened by the preset's
 // margin and capped at preset.max_disparities around the median.

@@ -13,6 +13,7 @@
 #include "core/photogrammetry/matching/feature_matching.h"
 #include "core/photogrammetry/matching/image_contrast.h"
 #include "core/photogrammetry/matching/tie_point_refinement.h"
+#include "core/photogrammetry/matching/view_shading.h"
 
 namespace rockface::photogrammetry {
 
@@ -107,10 +108,24 @@ ReconstructionResult reconstruct(const cv::Mat& left_image, const cv::Mat& right
     const cv::Mat small_right = resized(right_image, out.dense_scale);
     cv::remap(small_right, rect_right, rect.map2x, rect.map2y, cv::INTER_LINEAR);
   }
+  // A flash on the camera lights each view from its own station; dense
+  // matching would follow the shading (view_shading.h). Then both views are
+  // matched divided by their local brightness; rect_left keeps the colours.
+  {
+    const RectifiedTiePoints q = rectified_tie_points(ro, rect, left, right);
+    out.view_shading = compare_view_shading(rect_left, rect_right, q.left, q.right);
+  }
+  out.shading_normalised = shading_differs(out.view_shading);
   DisparityMap disparity;
   {
     StageProgress p(progress, 0.4, 0.85);
-    disparity = match_rectified(rect_left, rect_right, out.disparity_range, preset, p);
+    if (out.shading_normalised)
+      disparity =
+          match_rectified(normalise_local_brightness(rect_left, kShadingNormalisationSigmaPx),
+                          normalise_local_brightness(rect_right, kShadingNormalisationSigmaPx),
+                          out.disparity_range, preset, p);
+    else
+      disparity = match_rectified(rect_left, rect_right, out.disparity_range, preset, p);
   }
   rect_right.release();
   out.dense_valid_fraction = disparity.valid_fraction;
@@ -202,6 +217,7 @@ ReconstructionResult reconstruct(const cv::Mat& left_image, const cv::Mat& right
   acc.overlap = out.dense_valid_fraction;
   if (out.targets) acc.smallest_target_px = out.targets->smallest_diameter_px;
   out.accuracy = predict_accuracy(acc);
+  if (out.shading_normalised) out.accuracy.warnings.push_back(shading_warning(out.view_shading));
   if (!out.scaled)
     out.accuracy.warnings.push_back("no scale source given: the model is in units of the base");
   if (out.vertical_source == "levelled camera")

@@ -16,6 +16,7 @@
 #include "core/photogrammetry/estimators/relative_orientation.h"
 #include "core/photogrammetry/matching/dense_matching.h"
 #include "core/photogrammetry/matching/tie_point_refinement.h"
+#include "core/photogrammetry/matching/view_shading.h"
 #include "core/photogrammetry/reconstruction/accuracy.h"
 #include "core/photogrammetry/reconstruction/preset.h"
 #include "core/photogrammetry/surface/surface_mesh.h"
@@ -61,6 +62,10 @@ struct ReconstructionResult {
 
   DisparityRange disparity_range;
   double dense_scale = 0;
+  // How the two views' brightness of the same rock differs (view_shading.h),
+  // and whether dense matching ran on brightness-normalised images for it.
+  ViewShading view_shading;
+  bool shading_normalised = false;
   double dense_valid_fraction = 0;
   double lr_rejected_fraction = 0;
   double distance = 0;            // median depth, world units
