@@ -19,6 +19,36 @@ std::string percent(double share) {
   return s.str();
 }
 
+// Two facets lie in one plane when the centroid of one is within
+// kSameDiscontinuityM of the plane of the other, the better known (smaller
+// sigma), plus what that plane's uncertainty makes of the lever arm between
+// them (two of its sigmas): a wall seen in pieces is one plane although its
+// pieces' planes, each a little tilted, part by centimetres over metres;
+// a poorly known small facet cannot chain two planes of a set together.
+// The planes are the groups of facets so linked.
+int distinct_planes(const std::vector<const Facet*>& facets) {
+  const std::size_t n = facets.size();
+  std::vector<std::size_t> root(n);
+  for (std::size_t i = 0; i < n; ++i) root[i] = i;
+  auto find = [&](std::size_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  auto on_plane_of = [](const Facet& a, const Facet& b) {
+    const Eigen::Vector3d d = b.centroid - a.centroid;
+    return std::abs(a.plane.fit.normal.dot(d)) <=
+           kSameDiscontinuityM + 2 * std::tan(a.plane.sigma) * d.norm();
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (facets[i]->plane.sigma <= facets[j]->plane.sigma ? on_plane_of(*facets[i], *facets[j])
+                                                           : on_plane_of(*facets[j], *facets[i]))
+        root[find(i)] = find(j);
+  int planes = 0;
+  for (std::size_t i = 0; i < n; ++i) planes += find(i) == i;
+  return planes;
+}
+
 }  // namespace
 
 FacetSets facet_sets(const FacetSearch& search, const ClusterOptions& clustering) {
@@ -43,18 +73,15 @@ FacetSets facet_sets(const FacetSearch& search, const ClusterOptions& clustering
   std::vector<std::vector<int>> kept_ids;
   for (std::size_t s = 0; s < clusters.sets.size(); ++s) {
     std::vector<int> ids;
-    std::vector<double> offsets;
+    std::vector<const Facet*> in_set;
     double area = 0;
     for (std::size_t i = 0; i < n; ++i)
       if (clusters.set_of[i] == static_cast<int>(s)) {
         ids.push_back(search.facets[i].id);
-        offsets.push_back(clusters.sets[s].mean.dot(search.facets[i].centroid));
+        in_set.push_back(&search.facets[i]);
         area += search.facets[i].area;
       }
-    std::sort(offsets.begin(), offsets.end());
-    int planes = 0;
-    for (std::size_t i = 0; i < offsets.size(); ++i)
-      if (i == 0 || offsets[i] - offsets[i - 1] > kSameDiscontinuityM) ++planes;
+    const int planes = distinct_planes(in_set);
     const double to_face = rad_to_deg(
         std::acos(std::min(1.0, std::abs(clusters.sets[s].mean.dot(search.surface_normal)))));
     const double share = search.mapped_area > 0 ? area / search.mapped_area : 0;
