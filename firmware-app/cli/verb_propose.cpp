@@ -31,6 +31,7 @@ struct ProposeOptions {
   std::string project, out, preset = "standard", report;
   std::optional<storage::RecordId> visit;
   bool png = false;
+  ProposeRequest request;
 };
 
 VerbRun setup_propose(CLI::App& sub) {
@@ -42,10 +43,17 @@ VerbRun setup_propose(CLI::App& sub) {
                "also the picture of the facets by set over the photograph, beside --out (.png)");
   sub.add_option("--preset", o->preset,
                  "fast | standard | precise: angle tolerance, minimum area, smoothing");
+  sub.add_option("--angle", o->request.angle_tolerance_deg,
+                 "knob: angle tolerance of the growing, deg (over the preset's)");
+  sub.add_option("--min-area", o->request.min_area_m2, "knob: smallest facet kept, m2");
+  sub.add_option("--planarity", o->request.planarity_in_sigmas,
+                 "knob: planarity gate in point sigmas");
+  sub.add_option("--smoothing", o->request.smoothing_passes,
+                 "knob: passes of normal smoothing over the triangles' neighbours");
   sub.add_option("--report", o->report,
                  "also the visit's field report (PDF) with a section on the facets");
   return [o] {
-    ProposeRequest request;
+    ProposeRequest request = o->request;
     request.project = o->project;
     request.visit = o->visit;
     request.preset = parse_preset(o->preset, "--preset");

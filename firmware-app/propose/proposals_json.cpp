@@ -48,7 +48,7 @@ std::string proposals_json(const ProposeResult& r, Preset preset) {
   knobs["angle_tolerance_deg"] = f.options.angle_tolerance_deg;
   knobs["min_area_m2"] = f.options.min_area_m2;
   knobs["planarity_in_sigmas"] = f.options.planarity_in_sigmas;
-  knobs["smoothing_rings"] = f.options.smoothing_rings;
+  knobs["smoothing_passes"] = f.options.smoothing_passes;
   knobs["point_sigma_m"] = f.point_sigma;
   j["knobs"] = knobs;
   j["mapped_area_m2"] = f.mapped_area;

@@ -33,8 +33,12 @@ ProposeResult propose_for_visit(const ProposeRequest& request, Progress& progres
   measure::MeasureSettings settings;
   settings.point_sigma = r.model.point_sigma;
   settings.correlation_length = r.model.correlation_length;
-  r.facets = measure::find_facets(r.model.mesh, settings, measure::facet_options(request.preset),
-                                  progress);
+  measure::FacetOptions options = measure::facet_options(request.preset);
+  if (request.angle_tolerance_deg) options.angle_tolerance_deg = *request.angle_tolerance_deg;
+  if (request.min_area_m2) options.min_area_m2 = *request.min_area_m2;
+  if (request.planarity_in_sigmas) options.planarity_in_sigmas = *request.planarity_in_sigmas;
+  if (request.smoothing_passes) options.smoothing_passes = *request.smoothing_passes;
+  r.facets = measure::find_facets(r.model.mesh, settings, options, progress);
   r.sets = measure::facet_sets(r.facets);
   for (const auto& f : r.facets.facets) r.outlines[f.id] = f.outline;
   if (request.propose_traces) r.trace_proposals = request.propose_traces(r.model, r.outlines);

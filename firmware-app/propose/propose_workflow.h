@@ -32,6 +32,10 @@ struct ProposeRequest {
   std::string project;
   std::optional<storage::RecordId> visit;  // default: the newest visit with a model
   Preset preset = Preset::standard;
+  // Knobs set by hand over the preset's (qFacets lets the geologist set
+  // them too); checked by check_facet_options.
+  std::optional<double> angle_tolerance_deg, min_area_m2, planarity_in_sigmas;
+  std::optional<int> smoothing_passes;
   // The trace proposals (core/measure/proposals/, issue 25's traces): given
   // the loaded 3D image with its photographs and the facets' outlines, their
   // JSON for PROPOSALS.json's "trace_proposals". Wired in by the lead; when

@@ -178,12 +178,12 @@ BENCHMARK(BM_PlanarityTenthSigmas)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 
-void BM_SmoothingRings(benchmark::State& state) {
+void BM_SmoothingPasses(benchmark::State& state) {
   auto o = rm::facet_options(rockface::Preset::standard);
-  o.smoothing_rings = static_cast<int>(state.range(0));
+  o.smoothing_passes = static_cast<int>(state.range(0));
   run(state, o);
 }
-BENCHMARK(BM_SmoothingRings)
+BENCHMARK(BM_SmoothingPasses)
     ->Arg(1)
     ->Arg(2)
     ->Arg(3)

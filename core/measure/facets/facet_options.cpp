@@ -13,7 +13,7 @@ FacetOptions facet_options(Preset preset) {
     case Preset::fast:
       o.angle_tolerance_deg = 12.0;
       o.min_area_m2 = 0.10;
-      o.smoothing_rings = 2;
+      o.smoothing_passes = 2;
       o.refit_growth = 2.0;
       break;
     case Preset::standard:
@@ -21,7 +21,7 @@ FacetOptions facet_options(Preset preset) {
     case Preset::precise:
       o.angle_tolerance_deg = 8.0;
       o.min_area_m2 = 0.02;
-      o.smoothing_rings = 4;
+      o.smoothing_passes = 4;
       o.refit_growth = 1.25;
       break;
   }
@@ -40,8 +40,8 @@ void check_facet_options(const FacetOptions& o) {
   if (!(o.planarity_in_sigmas >= 1) || !std::isfinite(o.planarity_in_sigmas))
     refuse("planarity_in_sigmas",
            "must be at least 1 (the noise itself), got " + std::to_string(o.planarity_in_sigmas));
-  if (o.smoothing_rings < 0 || o.smoothing_rings > 20)
-    refuse("smoothing_rings", "must be in [0, 20], got " + std::to_string(o.smoothing_rings));
+  if (o.smoothing_passes < 0 || o.smoothing_passes > 200)
+    refuse("smoothing_passes", "must be in [0, 200], got " + std::to_string(o.smoothing_passes));
   if (!(o.refit_growth > 1) || !std::isfinite(o.refit_growth))
     refuse("refit_growth", "must be more than 1, got " + std::to_string(o.refit_growth));
 }

@@ -19,17 +19,19 @@ struct FacetOptions {
   // plane, and a facet is kept only when its points' RMS off the fitted
   // plane is within it (tolerances.h kMaxPlanarityInSigmas for traces).
   double planarity_in_sigmas = 4.0;
-  // Triangle normals are as noisy as their three vertices: each is
-  // averaged over this many rings of neighbours before growing. More rings
-  // cost time and round off small steps.
-  int smoothing_rings = 3;
+  // Triangle normals are as noisy as their three vertices, and dense
+  // matching leaves terraces (sub-pixel "pixel locking") a few pixels wide
+  // on a face seen square: each normal is averaged with its neighbours'
+  // this many times, a diffusion over about sqrt(passes) point spacings.
+  // More passes cost time and round off steps and small facets.
+  int smoothing_passes = 3;
   // A facet's plane is refitted every time it has grown by this factor
   // (the running plane the distance test uses).
   double refit_growth = 1.5;
 };
 
-// fast: coarse (wide angle, big facets, two rings); standard; precise:
-// narrow angle, small facets, more smoothing.
+// fast: coarse (wide angle, big facets, light smoothing); standard;
+// precise: narrow angle, small facets, more smoothing.
 FacetOptions facet_options(Preset preset);
 
 // Throws InputError naming the field when a knob is out of range.

@@ -11,6 +11,7 @@
 #include "core/common/units.h"
 #include "core/measure/facets/facet_outline.h"
 #include "core/measure/facets/triangle_graph.h"
+#include "core/measure/tolerances.h"
 
 namespace rockface::measure {
 
@@ -85,7 +86,7 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
   }
   progress.step("facets: mesh", 0.0);
   const TriangleGraph graph = triangle_graph(mesh);
-  const std::vector<Eigen::Vector3d> normals = smoothed_normals(graph, options.smoothing_rings);
+  const std::vector<Eigen::Vector3d> normals = smoothed_normals(graph, options.smoothing_passes);
   const std::vector<float> bend = bending(graph, normals);
   Eigen::Vector3d surface = Eigen::Vector3d::Zero();
   std::vector<int> seeds;
@@ -187,6 +188,12 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
     f.plane.problem =
         planarity_problem(f.plane, settings, options.planarity_in_sigmas, "the facet");
     const double sigma_deg = rad_to_deg(f.plane.sigma);
+    // The area measurement's sliver test: a region no wider than the noise
+    // (a band along a crease, where the smoothed normals turn from one
+    // plane to the next) is a line, not a plane.
+    if (f.plane.problem.empty() && f.plane.fit.relief() < kMinReliefInSigmas * settings.point_sigma)
+      f.plane.problem = "orientation unknown: the region is a sliver (" +
+                        fixed(f.plane.fit.relief() * 1000, 0) + " mm wide RMS)";
     // The growing kept triangles near its running plane: on a surface
     // rougher than the point precision it picks its way between the rest,
     // and the points it keeps can pass the RMS test only because the others

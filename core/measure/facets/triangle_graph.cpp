@@ -67,13 +67,14 @@ TriangleGraph triangle_graph(const photogrammetry::SurfaceMesh& mesh) {
   return g;
 }
 
-std::vector<Eigen::Vector3d> smoothed_normals(const TriangleGraph& g, int rings) {
+std::vector<Eigen::Vector3d> smoothed_normals(const TriangleGraph& g, int passes) {
   std::vector<Eigen::Vector3d> current(g.size());
   for (std::size_t t = 0; t < g.size(); ++t) current[t] = g.normals[t] * g.areas[t];
   std::vector<Eigen::Vector3d> next(g.size());
-  // Each pass widens the average by one ring (a diffusion of the
-  // area-weighted normals): cheap, and for a lattice mesh close to a disc.
-  for (int pass = 0; pass < rings; ++pass) {
+  // Each pass averages with the edge neighbours (a diffusion of the
+  // area-weighted normals): cheap, and on a lattice mesh close to a
+  // Gaussian of sqrt(passes) triangles.
+  for (int pass = 0; pass < passes; ++pass) {
     for (std::size_t t = 0; t < g.size(); ++t) {
       if (!g.usable(t)) {
         next[t].setZero();
@@ -82,7 +83,10 @@ std::vector<Eigen::Vector3d> smoothed_normals(const TriangleGraph& g, int rings)
       Eigen::Vector3d sum = current[t];
       for (int k : g.neighbours[t])
         if (k >= 0) sum += current[k].dot(g.normals[t]) < 0 ? -current[k] : current[k];
-      next[t] = sum;
+      // Renormalised each pass (area-weighted again), so that many passes
+      // neither overflow nor let large triangles dominate.
+      const double norm = sum.norm();
+      next[t] = norm > 0 ? Eigen::Vector3d(sum * (g.areas[t] / norm)) : Eigen::Vector3d::Zero();
     }
     std::swap(current, next);
   }

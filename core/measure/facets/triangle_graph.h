@@ -28,10 +28,11 @@ struct TriangleGraph {
 // Throws InputError("mesh", ...) when the mesh has more than 2^31 triangles.
 TriangleGraph triangle_graph(const photogrammetry::SurfaceMesh& mesh);
 
-// The normals averaged (area-weighted) over `rings` rings of neighbours:
-// one ring is the triangle and the triangles sharing an edge with it.
+// The normals averaged (area-weighted) with their neighbours `passes` times
+// (each pass: the triangle and the triangles sharing an edge with it), a
+// diffusion over about sqrt(passes) triangles.
 // Normals are oriented consistently with the triangle's own before summing.
-std::vector<Eigen::Vector3d> smoothed_normals(const TriangleGraph& graph, int rings);
+std::vector<Eigen::Vector3d> smoothed_normals(const TriangleGraph& graph, int passes);
 
 // How bent the surface is at each triangle: the largest angle (radians)
 // between its normal and those of its neighbours (a crease, an edge of the

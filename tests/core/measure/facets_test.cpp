@@ -217,7 +217,7 @@ TEST(Facets, PresetsOrderTheirKnobs) {
   EXPECT_GT(standard.angle_tolerance_deg, precise.angle_tolerance_deg);
   EXPECT_GT(fast.min_area_m2, standard.min_area_m2);
   EXPECT_GT(standard.min_area_m2, precise.min_area_m2);
-  EXPECT_LT(fast.smoothing_rings, precise.smoothing_rings);
+  EXPECT_LT(fast.smoothing_passes, precise.smoothing_passes);
 }
 
 TEST(Facets, ThinningKeepsTheCornersOfAnOutline) {
