@@ -40,10 +40,37 @@ double independent_points(const geometry::PlaneFit& fit, double correlation_leng
   return std::clamp(std::sqrt(12.0) * fit.spread(2) / correlation_length, 3.0, n);
 }
 
+std::vector<Eigen::Vector2d> densify(const std::vector<Eigen::Vector2d>& pixels, double step) {
+  std::vector<Eigen::Vector2d> out{pixels.front()};
+  for (std::size_t i = 1; i < pixels.size(); ++i) {
+    const Eigen::Vector2d a = pixels[i - 1], b = pixels[i];
+    const int parts = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step)));
+    for (int k = 1; k <= parts; ++k) out.push_back(a + (b - a) * (static_cast<double>(k) / parts));
+  }
+  return out;
+}
+
+double polyline_length(const std::vector<Eigen::Vector3d>& points) {
+  double length = 0;
+  for (std::size_t i = 1; i < points.size(); ++i) length += (points[i] - points[i - 1]).norm();
+  return length;
+}
+
+// The surface normal at a point: the plane of the mesh within a few point
+// spacings (a single triangle's normal is as noisy as its three vertices).
+Eigen::Vector3d local_normal(const MeshPicker& picker, const Eigen::Vector3d& p, double radius) {
+  std::vector<Eigen::Vector3d> near;
+  for (int v : picker.vertices_near(p, radius)) near.push_back(picker.mesh().vertices[v]);
+  if (near.size() < 3) return Eigen::Vector3d::Zero();
+  return geometry::fit_plane(near).normal;
+}
+
+}  // namespace
+
 // Least squares with outliers dropped (tolerances.h: kOutlierInSigmas);
 // `kept` marks the points used.
 PlaneEstimate plane_of_points(const std::vector<Eigen::Vector3d>& points,
-                              const MeasureSettings& settings, std::vector<char>* kept = nullptr) {
+                              const MeasureSettings& settings, std::vector<char>* kept) {
   PlaneEstimate e;
   std::vector<char> in(points.size(), 1);
   std::vector<Eigen::Vector3d> used = points;
@@ -84,32 +111,15 @@ PlaneEstimate plane_of_points(const std::vector<Eigen::Vector3d>& points,
   return e;
 }
 
-std::vector<Eigen::Vector2d> densify(const std::vector<Eigen::Vector2d>& pixels, double step) {
-  std::vector<Eigen::Vector2d> out{pixels.front()};
-  for (std::size_t i = 1; i < pixels.size(); ++i) {
-    const Eigen::Vector2d a = pixels[i - 1], b = pixels[i];
-    const int parts = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step)));
-    for (int k = 1; k <= parts; ++k) out.push_back(a + (b - a) * (static_cast<double>(k) / parts));
-  }
-  return out;
+std::string planarity_problem(const PlaneEstimate& e, const MeasureSettings& settings,
+                              double max_rms_in_sigmas, const std::string& what) {
+  if (e.fit.rms_off_plane() <= max_rms_in_sigmas * settings.point_sigma) return {};
+  std::ostringstream s;
+  s.precision(2);
+  s << "orientation unknown: " << what << " is not planar (RMS " << metres(e.fit.rms_off_plane())
+    << " off its best-fit plane, more than " << max_rms_in_sigmas << " times the point precision)";
+  return s.str();
 }
-
-double polyline_length(const std::vector<Eigen::Vector3d>& points) {
-  double length = 0;
-  for (std::size_t i = 1; i < points.size(); ++i) length += (points[i] - points[i - 1]).norm();
-  return length;
-}
-
-// The surface normal at a point: the plane of the mesh within a few point
-// spacings (a single triangle's normal is as noisy as its three vertices).
-Eigen::Vector3d local_normal(const MeshPicker& picker, const Eigen::Vector3d& p, double radius) {
-  std::vector<Eigen::Vector3d> near;
-  for (int v : picker.vertices_near(p, radius)) near.push_back(picker.mesh().vertices[v]);
-  if (near.size() < 3) return Eigen::Vector3d::Zero();
-  return geometry::fit_plane(near).normal;
-}
-
-}  // namespace
 
 PlaneEstimate fit_trace_plane(const std::vector<Eigen::Vector3d>& points,
                               const std::vector<Eigen::Vector3d>& surface_normals,
@@ -155,11 +165,9 @@ PlaneEstimate fit_trace_plane(const std::vector<Eigen::Vector3d>& points,
                 "); its best-fit plane would be the face's, not the joint's";
     return e;
   }
-  if (e.fit.rms_off_plane() > kMaxPlanarityInSigmas * sigma) {
-    e.problem = "orientation unknown: the trace is not planar (RMS " +
-                metres(e.fit.rms_off_plane()) + " off its best-fit plane, more than " +
-                std::to_string(static_cast<int>(kMaxPlanarityInSigmas)) +
-                " times the point precision)";
+  if (std::string p = planarity_problem(e, settings, kMaxPlanarityInSigmas, "the trace");
+      !p.empty()) {
+    e.problem = std::move(p);
     return e;
   }
   if (rad_to_deg(e.sigma) > settings.max_plane_sigma_deg) {

@@ -79,6 +79,20 @@ struct PointMeasurement {
   PlaneEstimate plane;  // the local surface plane within `radius` of the point
 };
 
+// The robust plane of points on the 3D image (least squares, points farther
+// than kOutlierInSigmas dropped and the plane refitted), its sigma from the
+// point precision or the scatter seen, whichever is larger, counting one
+// independent point per correlation length. `kept` (optional) marks the
+// points used. Leaves `known` false and `problem` empty: callers judge.
+PlaneEstimate plane_of_points(const std::vector<Eigen::Vector3d>& points,
+                              const MeasureSettings& settings, std::vector<char>* kept = nullptr);
+
+// The planarity test of measuring: "orientation unknown: WHAT is not
+// planar ..." when the points scatter off their plane by more than
+// `max_rms_in_sigmas` point sigmas (RMS); empty when they pass.
+std::string planarity_problem(const PlaneEstimate& estimate, const MeasureSettings& settings,
+                              double max_rms_in_sigmas, const std::string& what);
+
 // The plane of a trace's points, with the surface normals at them (for the
 // relief-off-the-face test; may be empty when unknown).
 PlaneEstimate fit_trace_plane(const std::vector<Eigen::Vector3d>& points,

@@ -59,4 +59,12 @@ inline constexpr double kMinSetSeparationDeg = 20.0;
 // measuring spacing.
 inline constexpr double kSameDiscontinuityM = 0.05;
 
+// Facet sets (facets/facet_sets.h). A set of facets whose mean plane is
+// within kFaceParallelDeg of the mapped surface's mean plane and whose facets
+// cover at least kFaceShare of the mapped area is the excavation surface (a
+// sprayed or blasted wall seen face-on), not a family of joints: the angle is
+// what a face dressed by the excavation departs from its mean attitude.
+inline constexpr double kFaceParallelDeg = 15.0;
+inline constexpr double kFaceShare = 0.5;
+
 }  // namespace rockface::measure

@@ -117,6 +117,16 @@ struct ReportedWedges {
   cv::Mat picture;                             // BGR: the section and the largest wedges
 };
 
+// Facets and joint sets proposed on the visit's 3D image (issue 25): filled
+// by the application (firmware-app/propose) when the report is written by
+// `rockface propose --report`; absent otherwise.
+struct ReportedFacets {
+  std::vector<std::string> lines;              // knobs, counts, areas in words
+  std::vector<std::vector<std::string>> rows;  // one per set: label, orientation, K, ...
+  std::vector<std::string> notes;              // clusters that are not sets, and why
+  cv::Mat picture;                             // BGR: facets by set over the photograph
+};
+
 struct FieldReport {
   std::string project_name, project_file;
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();
@@ -159,6 +169,8 @@ struct FieldReport {
   // rockmass_note when the visit has no traces.
   std::optional<rockmass::RockMassFigures> rockmass;
   std::string rockmass_note;
+
+  std::optional<ReportedFacets> facets;  // issue 25's proposals
 };
 
 // Reads everything the report shows for `visit_id` (InputError naming the

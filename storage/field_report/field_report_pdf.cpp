@@ -430,6 +430,32 @@ void rock_mass_section(PdfPages& pdf, const FieldReport& r) {
   }
 }
 
+// Facets proposed on the 3D image (issue 25): the sets they form and the
+// picture of them over the photograph.
+void facets_section(PdfPages& pdf, const FieldReport& r) {
+  if (!r.facets) return;
+  const ReportedFacets& f = *r.facets;
+  pdf.heading("Facets on the 3D image (proposed)", 0.3 * kPageH);
+  for (const auto& line : f.lines) pdf.line(line);
+  if (f.rows.empty())
+    pdf.line("no joint set from the facets");
+  else
+    pdf.table({{"set", 30},
+               {"dip/dir deg", 60},
+               {"facets", 40},
+               {"planes", 40},
+               {"Fisher K", 45},
+               {"a95 deg", 40},
+               {"spacing m", 50},
+               {"area m2", 45}},
+              f.rows, kSmall);
+  for (const auto& note : f.notes) pdf.line(note, kSmall);
+  if (!f.picture.empty()) {
+    pdf.image(f.picture, PdfPages::text_width(), 0.5 * kPageH);
+    pdf.line("facets coloured by set, grey: in no set; proposals until accepted by picks", kSmall);
+  }
+}
+
 }  // namespace
 
 void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& file) {
@@ -462,6 +488,7 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   dynamics_section(pdf, r);
   // After the blocks: page 1 keeps the face with its traces and blocks.
   rock_mass_section(pdf, r);
+  facets_section(pdf, r);
   pdf.finish();
 }
 

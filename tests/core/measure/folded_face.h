@@ -30,17 +30,22 @@ struct FoldedFace {
   measure::PhotoView view;
   photogrammetry::SurfaceMesh mesh;
 
-  // The facet point along a ray, if any.
+  // The nearest facet point along a ray, if any.
   std::optional<Eigen::Vector3d> hit(const Eigen::Vector3d& o, const Eigen::Vector3d& d) const {
+    std::optional<Eigen::Vector3d> nearest;
+    double nearest_t = 0;
     for (const Facet& f : facets) {
       const double den = f.plane.normal.dot(d);
       if (std::abs(den) < 1e-12) continue;
       const double t = (f.plane.offset - f.plane.normal.dot(o)) / den;
       const Eigen::Vector3d p = o + t * d;
-      if (t > 0 && p.x() >= f.x_from && p.x() <= f.x_to && p.z() >= z_from && p.z() <= z_to)
-        return p;
+      if (t > 0 && p.x() >= f.x_from && p.x() <= f.x_to && p.z() >= z_from && p.z() <= z_to &&
+          (!nearest || t < nearest_t)) {
+        nearest = p;
+        nearest_t = t;
+      }
     }
-    return std::nullopt;
+    return nearest;
   }
 
   // The straight trace of a joint on facet k, as its two end points.
@@ -74,6 +79,9 @@ struct FoldedFace {
   }
 };
 
+inline void look_at_lattice(FoldedFace& f, int width, int height, double depth_sigma,
+                            int lattice_step);
+
 inline geometry::Plane plane_through(double dip_deg, double dipdir_deg, const Eigen::Vector3d& p) {
   return geometry::Plane::from_orientation({deg_to_rad(dip_deg), deg_to_rad(dipdir_deg)}, p);
 }
@@ -95,7 +103,15 @@ inline FoldedFace folded_face(int width = 800, int height = 600, double depth_si
     p.offset = p.normal.dot(Eigen::Vector3d(edges[k], c + slopes[k] * edges[k], 0.0));
     f.facets.push_back({p, edges[k], edges[k + 1]});
   }
+  look_at_lattice(f, width, height, depth_sigma, lattice_step);
+  return f;
+}
 
+// The camera 0.5 m above the origin looking north, and the 3D image of
+// `f.facets` on its pixel lattice (every `lattice_step` px), with
+// `depth_sigma` m of noise along the rays.
+inline void look_at_lattice(FoldedFace& f, int width, int height, double depth_sigma,
+                            int lattice_step) {
   photogrammetry::CameraIntrinsics cam;
   cam.width = width;
   cam.height = height;
@@ -136,7 +152,6 @@ inline FoldedFace folded_face(int width = 800, int height = 600, double depth_si
       if (v00 >= 0 && v10 >= 0 && v01 >= 0) m.triangles.push_back({v00, v10, v01});
       if (v01 >= 0 && v10 >= 0 && v11 >= 0) m.triangles.push_back({v01, v10, v11});
     }
-  return f;
 }
 
 // Pixels of world points in the face's view.

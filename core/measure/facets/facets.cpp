@@ -1,0 +1,252 @@
+#include "core/measure/facets/facets.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+
+#include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/measure/facets/facet_outline.h"
+#include "core/measure/facets/triangle_graph.h"
+#include "core/measure/tolerances.h"
+
+namespace rockface::measure {
+
+namespace {
+
+constexpr int kFree = -1;     // not yet in any region
+constexpr int kDropped = -2;  // in a region too small or not planar: no seed, joins nothing
+// A region with more than this share of its points beyond the planarity
+// gate is rough, not planar: 5 % beyond 4 sigma means a scatter of at least
+// twice the stated point precision (2 sigma of a normal law is its 4.6 %).
+constexpr double kMaxOffPlaneShare = 0.05;
+
+// The running plane of a growing region: area-weighted sums of the
+// triangles' centres (for the best-fit plane) and normals (the mean normal
+// the angle test compares with).
+struct RunningPlane {
+  double weight = 0;
+  Eigen::Vector3d sum_centre = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d sum_outer = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d sum_normal = Eigen::Vector3d::Zero();
+  Eigen::Vector3d mean_normal = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d plane_normal = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  bool fitted = false;  // plane_normal is the best-fit plane's (else the mean normal)
+
+  void add(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, double area) {
+    weight += area;
+    sum_centre += area * centre;
+    sum_outer += area * centre * centre.transpose();
+    sum_normal += area * normal;
+  }
+  // Mean normal always; the fitted plane's normal once the region is wide
+  // enough in both directions that its tilt is better known than the
+  // smoothed normals' mean (`wide`, m RMS).
+  void refit(double wide) {
+    mean_normal = sum_normal.normalized();
+    centroid = sum_centre / weight;
+    const Eigen::Matrix3d cov = sum_outer / weight - centroid * centroid.transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+    const Eigen::Vector3d spread = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+    Eigen::Vector3d n = eig.eigenvectors().col(0);
+    if (n.dot(mean_normal) < 0) n = -n;
+    fitted = spread(1) > wide;
+    plane_normal = fitted ? n : mean_normal;
+  }
+};
+
+std::string fixed(double v, int digits) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSettings& settings,
+                        const FacetOptions& options, Progress& progress) {
+  check_facet_options(options);
+  if (!(settings.point_sigma > 0) || !std::isfinite(settings.point_sigma))
+    throw InputError("point_sigma",
+                     "the point precision of the 3D image must be a positive "
+                     "length (m), got " +
+                         std::to_string(settings.point_sigma));
+  FacetSearch out;
+  out.options = options;
+  out.point_sigma = settings.point_sigma;
+  if (mesh.triangles.empty()) {
+    out.notes.push_back("the 3D image has no triangles: no facets");
+    return out;
+  }
+  progress.step("facets: mesh", 0.0);
+  const TriangleGraph graph = triangle_graph(mesh);
+  const std::vector<Eigen::Vector3d> normals = smoothed_normals(graph, options.smoothing_passes);
+  const std::vector<float> bend = bending(graph, normals);
+  Eigen::Vector3d surface = Eigen::Vector3d::Zero();
+  std::vector<int> seeds;
+  for (std::size_t t = 0; t < graph.size(); ++t)
+    if (graph.usable(t)) {
+      out.mapped_area += graph.areas[t];
+      surface += graph.areas[t] * graph.normals[t];
+      seeds.push_back(static_cast<int>(t));
+    }
+  if (seeds.empty()) {
+    out.notes.push_back("the 3D image has no usable triangle (all degenerate): no facets");
+    return out;
+  }
+  if (surface.squaredNorm() > 0) out.surface_normal = surface.normalized();
+  if (out.surface_normal.z() < 0) out.surface_normal = -out.surface_normal;
+  // Flattest first (qFacets and DSE seed where the surface is most planar);
+  // ties by index keep the result independent of the sort's whims.
+  std::stable_sort(seeds.begin(), seeds.end(), [&](int a, int b) { return bend[a] < bend[b]; });
+
+  const double angle = deg_to_rad(options.angle_tolerance_deg);
+  const double cos_angle = std::cos(angle), cos_twice = std::cos(2 * angle);
+  const double gate = options.planarity_in_sigmas * settings.point_sigma;
+  std::vector<int> label(graph.size(), kFree);
+  std::vector<char> vertex_seen(mesh.vertices.size(), 0);
+  std::vector<int> members, queue;
+  std::vector<Facet> facets;
+  const double edge = mesh.median_edge_length();
+  std::size_t done = 0;
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    const int seed = seeds[s];
+    if ((s & 0xfff) == 0)
+      progress.step("facets: growing",
+                    static_cast<double>(done) / static_cast<double>(seeds.size()));
+    if (label[seed] != kFree) continue;
+    // The rest of the surface bends more than the tolerance at every
+    // triangle: edges, creases, noise. No facet grows from there.
+    if (bend[seed] > angle) break;
+    const int region = static_cast<int>(facets.size());
+    members.assign(1, seed);
+    queue.assign(1, seed);
+    label[seed] = region;
+    RunningPlane plane;
+    plane.add(graph.centres[seed], normals[seed], graph.areas[seed]);
+    plane.refit(gate * 10);
+    double next_refit = 3;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int t = queue[head];
+      for (const int k : graph.neighbours[t]) {
+        if (k < 0 || label[k] != kFree || !graph.usable(static_cast<std::size_t>(k))) continue;
+        // On the plane: all three corners within the planarity gate and
+        // the normal within twice the tolerance (a noisy normal does not
+        // keep a triangle that lies on the plane out, but one across a
+        // ridge, whose smoothed normal is bent half way, stays out).
+        // Else: its normal agrees and its centre is within the gate.
+        // Only once the region's plane is fitted (wide enough): against a
+        // plane still set by a few smoothed normals the corners' test would
+        // pick points toward that first guess.
+        // Nor where the surface creases (bending over the tolerance): the
+        // corners of a triangle across a ridge lie within the gate of both
+        // planes and would tilt the facet toward its neighbour.
+        bool on_plane =
+            plane.fitted && bend[k] <= angle && normals[k].dot(plane.mean_normal) >= cos_twice;
+        for (const int v : mesh.triangles[k])
+          on_plane = on_plane &&
+                     std::abs(plane.plane_normal.dot(mesh.vertices[v] - plane.centroid)) <= gate;
+        if (!on_plane &&
+            (normals[k].dot(plane.mean_normal) < cos_angle ||
+             std::abs(plane.plane_normal.dot(graph.centres[k] - plane.centroid)) > gate))
+          continue;
+        label[k] = region;
+        members.push_back(k);
+        queue.push_back(k);
+        plane.add(graph.centres[k], normals[k], graph.areas[k]);
+        if (static_cast<double>(members.size()) >= next_refit) {
+          // Ten times the gate across the region: its fitted tilt is then
+          // known to a few tenths of the angle tolerance.
+          plane.refit(gate * 10);
+          next_refit = std::max(next_refit + 1, next_refit * options.refit_growth);
+        }
+      }
+    }
+    done += members.size();
+    if (plane.weight < options.min_area_m2) {
+      for (int t : members) label[t] = kDropped;
+      continue;
+    }
+    // Measure the region as an area picked by hand: its vertices' plane.
+    std::vector<Eigen::Vector3d> points;
+    for (int t : members)
+      for (int v : mesh.triangles[t])
+        if (!vertex_seen[v]) {
+          vertex_seen[v] = 1;
+          points.push_back(mesh.vertices[v]);
+        }
+    for (int t : members)
+      for (int v : mesh.triangles[t]) vertex_seen[v] = 0;
+    Facet f;
+    f.plane = plane_of_points(points, settings);
+    f.plane.problem =
+        planarity_problem(f.plane, settings, options.planarity_in_sigmas, "the facet");
+    const double sigma_deg = rad_to_deg(f.plane.sigma);
+    // The area measurement's sliver test: a region no wider than the noise
+    // (a band along a crease, where the smoothed normals turn from one
+    // plane to the next) is a line, not a plane.
+    if (f.plane.problem.empty() && f.plane.fit.relief() < kMinReliefInSigmas * settings.point_sigma)
+      f.plane.problem = "orientation unknown: the region is a sliver (" +
+                        fixed(f.plane.fit.relief() * 1000, 0) + " mm wide RMS)";
+    // The growing kept triangles near its running plane: on a surface
+    // rougher than the point precision it picks its way between the rest,
+    // and the points it keeps can pass the RMS test only because the others
+    // were left out. Their tail gives it away: under the stated precision a
+    // point lies beyond the 4-sigma gate with odds of 6e-5.
+    std::size_t off = 0;
+    for (const auto& p : points) off += std::abs(f.plane.fit.plane().signed_distance(p)) > gate;
+    const double off_share = static_cast<double>(off) / static_cast<double>(points.size());
+    if (f.plane.problem.empty() && off_share > kMaxOffPlaneShare)
+      f.plane.problem = "orientation unknown: the surface is rougher than the point precision (" +
+                        fixed(100 * off_share, 0) + " % of its points more than " +
+                        fixed(options.planarity_in_sigmas, 1) + " point sigmas off its plane)";
+    if (f.plane.problem.empty() && sigma_deg > settings.max_plane_sigma_deg)
+      f.plane.problem = "orientation unknown: too little relief for a reliable plane (" +
+                        fixed(sigma_deg, 1) + " deg)";
+    if (!f.plane.problem.empty()) {
+      ++out.rejected_regions;
+      out.rejected_area += plane.weight;
+      for (int t : members) label[t] = kDropped;
+      continue;
+    }
+    f.plane.known = true;
+    f.area = plane.weight;
+    f.centroid = plane.sum_centre / plane.weight;
+    f.triangles = members.size();
+    f.vertices = points.size();
+    f.planarity_margin_sigmas =
+        options.planarity_in_sigmas - f.plane.fit.rms_off_plane() / settings.point_sigma;
+    f.orientation_margin_deg = settings.max_plane_sigma_deg - sigma_deg;
+    f.marginal = f.planarity_margin_sigmas < 1.0 || f.orientation_margin_deg < sigma_deg;
+    f.mesh_triangles = members;
+    facets.push_back(std::move(f));
+  }
+  progress.step("facets: outlines", 0.95);
+  std::stable_sort(facets.begin(), facets.end(),
+                   [](const Facet& a, const Facet& b) { return a.area > b.area; });
+  for (std::size_t i = 0; i < facets.size(); ++i) {
+    Facet& f = facets[i];
+    f.id = static_cast<int>(i) + 1;
+    // Thinned to two point spacings: the outline keeps the facet's shape
+    // to the resolution of the 3D image without its lattice staircase.
+    const FacetOutline outline = facet_outline(mesh, f.mesh_triangles, 2.0 * edge);
+    f.outline = outline.outer;
+    f.holes = outline.holes;
+    out.facet_area += f.area;
+  }
+  out.facets = std::move(facets);
+  if (out.facets.empty())
+    out.notes.push_back("no planar region of at least " + fixed(options.min_area_m2, 2) +
+                        " m2 within " + fixed(options.angle_tolerance_deg, 0) + " deg and " +
+                        fixed(options.planarity_in_sigmas, 1) + " point sigmas of a plane");
+  progress.step("facets: done", 1.0);
+  return out;
+}
+
+}  // namespace rockface::measure

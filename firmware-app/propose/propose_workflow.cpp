@@ -1,0 +1,48 @@
+#include "firmware-app/propose/propose_workflow.h"
+
+#include <filesystem>
+
+#include "core/common/error.h"
+#include "storage/project_store.h"
+
+namespace rockface::app {
+
+ProposeResult propose_for_visit(const ProposeRequest& request, Progress& progress) {
+  if (!std::filesystem::exists(request.project))
+    throw InputError(request.project, "no such project file");
+  storage::OpenOptions read;
+  read.read_only = true;
+  storage::ProjectStore store = storage::ProjectStore::open(request.project, read);
+  ModelSource source;
+  source.source = request.project;
+  source.visit = request.visit;
+  if (!source.visit) {
+    // The newest visit with a model (as `rockface measure` chooses).
+    const auto visits = store.list_visits();
+    for (auto v = visits.rbegin(); v != visits.rend() && !source.visit; ++v)
+      if (!store.list_visit_models(v->id).empty()) source.visit = v->id;
+    if (!source.visit) throw InputError(request.project, "the project has no visit with a model");
+  }
+  const ProjectPairs pairs = project_pairs(store, source);
+  ProposeResult r;
+  // Pair 1: its mesh frame is the face frame the measurements use; further
+  // pairs overlap it and would give the same facets twice.
+  r.model = load_stored_model(store, source, pairs.models[0], 1);
+  r.on = pairs.what + ": model " + std::to_string(pairs.models[0]);
+  r.visit = *source.visit;
+  measure::MeasureSettings settings;
+  settings.point_sigma = r.model.point_sigma;
+  settings.correlation_length = r.model.correlation_length;
+  measure::FacetOptions options = measure::facet_options(request.preset);
+  if (request.angle_tolerance_deg) options.angle_tolerance_deg = *request.angle_tolerance_deg;
+  if (request.min_area_m2) options.min_area_m2 = *request.min_area_m2;
+  if (request.planarity_in_sigmas) options.planarity_in_sigmas = *request.planarity_in_sigmas;
+  if (request.smoothing_passes) options.smoothing_passes = *request.smoothing_passes;
+  r.facets = measure::find_facets(r.model.mesh, settings, options, progress);
+  r.sets = measure::facet_sets(r.facets);
+  for (const auto& f : r.facets.facets) r.outlines[f.id] = f.outline;
+  if (request.propose_traces) r.trace_proposals = request.propose_traces(r.model, r.outlines);
+  return r;
+}
+
+}  // namespace rockface::app

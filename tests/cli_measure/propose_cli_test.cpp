@@ -1,0 +1,70 @@
+// `rockface propose` as a user runs it: the real binary on the demo face
+// replayed into a project at the fast preset. The demo face is two nearly
+// coplanar walls (FACE_W, FACE_E, 12 deg apart) with joints drawn on them
+// but no joint faces exposed: facets are found, but no joint set.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/cli_run.h"
+#include "tests/support/truth_picks.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using rockface::test::CliRun;
+using rockface::test::run_rockface;
+
+TEST(ProposeCli, FacetsOfTheDemoFaceNoSetPictureReportAndBadVisitByName) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("rockface-propose-cli-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  { std::ofstream(dir / "face.scene.json") << rockface::test::demo_scene().dump(2); }
+  const fs::path project = dir / "site.rockface";
+  CliRun r = run_rockface("replay " + (dir / "face.scene.json").string() + " --project " +
+                          project.string() + " --preset fast");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  const fs::path out = dir / "proposals.json", report = dir / "report.pdf";
+  r = run_rockface("propose " + project.string() + " --visit 1 --out " + out.string() +
+                   " --png --preset fast --report " + report.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "proposals.png"));
+  EXPECT_GT(fs::file_size(report), 1000u);
+  std::ifstream in(out);
+  const json p = json::parse(in);
+  EXPECT_EQ(p.at("format"), "rockface-proposals/1");
+  EXPECT_EQ(p.at("visit"), 1);
+  EXPECT_EQ(p.at("preset"), "fast");
+  EXPECT_GT(p.at("knobs").at("point_sigma_m").get<double>(), 0);
+  ASSERT_FALSE(p.at("facets").empty());
+  for (const auto& f : p.at("facets")) {
+    // On the walls: steep (the walls dip 88 deg), and with an outline of
+    // absolute points near the face (northing 5211880 +- 1 m).
+    EXPECT_GT(f.at("dip").get<double>(), 75.0) << f.at("id");
+    ASSERT_GE(f.at("outline").size(), 3u);
+    EXPECT_NEAR(f.at("outline")[0][1].get<double>(), 5211880.0, 1.0);
+    EXPECT_GT(f.at("area_m2").get<double>(), 0.0);
+    EXPECT_TRUE(f.at("set").is_null());
+  }
+  // No joint face is exposed: the walls are one surface, not a set.
+  EXPECT_TRUE(p.at("sets").empty());
+  EXPECT_FALSE(p.at("not_sets").empty());
+  EXPECT_TRUE(p.at("trace_proposals").is_null());
+
+  r = run_rockface("propose " + project.string() + " --visit 7 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--visit"), std::string::npos) << r.err;
+  r = run_rockface("propose " + project.string() + " --out " + out.string() + " --preset quick");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--preset"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+}  // namespace
