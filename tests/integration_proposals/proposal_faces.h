@@ -104,6 +104,7 @@ struct ProposalFace {
   Eigen::Matrix4d scene_to_mesh = Eigen::Matrix4d::Identity();
   // True trace segments in the 3D image's frame.
   std::vector<std::array<Eigen::Vector3d, 2>> truth;
+  std::vector<std::string> truth_joint;  // the joint of each segment
   // Facets' outlines in the 3D image's frame (the scene's patches).
   std::vector<measure::ProposalFacet> facets;
 };
@@ -151,13 +152,18 @@ inline ProposalFace build_proposal_face(JointDensity density, Preset preset) {
   f.scene_to_mesh = T;
   for (const auto& t : camera::true_trace_segments(f.scene))
     if (t.joint != "K1" && t.joint != "K2")  // the folds: added whole below
+    {
       f.truth.push_back({to_mesh(t.world[0]), to_mesh(t.world[1])});
+      f.truth_joint.push_back(t.joint);
+    }
   // The fold joints' planes hold the facets' shared edges: their traces are
   // those edges (a degenerate cut for the renderer's clipping).
   if (density != JointDensity::none)
-    for (double x : {-1.4, 1.4})
+    for (double x : {-1.4, 1.4}) {
       f.truth.push_back({to_mesh(Eigen::Vector3d(x, folded_face_y(x, -2.5, false), -2.5)),
                          to_mesh(Eigen::Vector3d(x, folded_face_y(x, 3.5, false), 3.5))});
+      f.truth_joint.push_back(x < 0 ? "K1" : "K2");
+    }
   for (std::size_t k = 0; k < f.scene.patches.size(); ++k) {
     measure::ProposalFacet facet;
     facet.id = static_cast<int>(k) + 1;
