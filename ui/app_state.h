@@ -18,6 +18,7 @@
 #include "ui/motion_playback.h"
 #include "ui/office_panel.h"
 #include "ui/project_session.h"
+#include "ui/proposals_view.h"
 #include "ui/rockmass_view.h"
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
@@ -53,9 +54,10 @@ struct CaptureState {
 };
 
 struct MappingState {
-  TraceMarker marker;       // the trace being marked
-  std::string joint_label;  // joint (set) the next trace is assigned to; empty: none
-  MapBlocksState blocks;    // the blocks the saved traces cut out, updated after each edit
+  TraceMarker marker;        // the trace being marked
+  std::string joint_label;   // joint (set) the next trace is assigned to; empty: none
+  MapBlocksState blocks;     // the blocks the saved traces cut out, updated after each edit
+  ProposalsState proposals;  // trace proposals to accept, correct or reject (issue 25)
 };
 
 struct AppState {

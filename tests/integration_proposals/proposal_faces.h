@@ -109,10 +109,13 @@ struct ProposalFace {
   std::vector<measure::ProposalFacet> facets;
 };
 
-inline ProposalFace build_proposal_face(JointDensity density, Preset preset) {
+// `scene`: proposal_face_scene(density), perhaps with another camera (the
+// benchmark's 24 Mpx frame).
+inline ProposalFace build_proposal_face_from(JointDensity density, camera::SyntheticScene scene,
+                                             Preset preset) {
   ProposalFace f;
   f.density = density;
-  f.scene = proposal_face_scene(density);
+  f.scene = std::move(scene);
   NoProgress progress;
   f.render = camera::render_scene(f.scene, progress);
   f.rec = photogrammetry::reconstruct(f.render.images[0], f.render.images[1], f.render.intrinsics,
@@ -171,6 +174,10 @@ inline ProposalFace build_proposal_face(JointDensity density, Preset preset) {
     f.facets.push_back(facet);
   }
   return f;
+}
+
+inline ProposalFace build_proposal_face(JointDensity density, Preset preset) {
+  return build_proposal_face_from(density, proposal_face_scene(density), preset);
 }
 
 inline double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
