@@ -42,7 +42,7 @@ TEST(UiProposals, AnAcceptedProposalIsStoredAndAnalysedLikeAHandTrace) {
     analyses = store.list_analyses().size();
   }
   ASSERT_EQ(run_script(project, R"([
-      {"tap": "Mapping"}, {"tap": "Find traces"}, {"wait": "task"}, {"frames": 2},
+      {"tap": "Mapping"}, {"wait": "task"}, {"tap": "Find traces"}, {"wait": "task"}, {"frames": 2},
       {"screenshot": "proposals"}, {"tap": "proposal P1"}, {"frames": 1},
       {"screenshot": "selected"}, {"tap": "Accept"}, {"wait": "task"},
       {"tap": "Blocks"}, {"tap": "Run analysis"}, {"wait": "task"}])",
@@ -94,7 +94,7 @@ TEST(UiProposals, ARejectedProposalStoresNothing) {
     measurements = store.list_measurements().size();
   }
   ASSERT_EQ(run_script(project, R"([
-      {"tap": "Mapping"}, {"tap": "Find traces"}, {"wait": "task"}, {"frames": 2},
+      {"tap": "Mapping"}, {"wait": "task"}, {"tap": "Find traces"}, {"wait": "task"}, {"frames": 2},
       {"tap": "P1"}, {"frames": 1}, {"tap": "Reject"}, {"frames": 2},
       {"screenshot": "rejected"}])",
                        "reject"),
