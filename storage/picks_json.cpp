@@ -83,6 +83,11 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
       pick.id = r.id(r.require(t, path, "id"), path + ".id");
       unique(pick.id, path + ".id");
       if (auto* j = r.optional(t, path, "joint")) pick.joint = r.id(*j, path + ".joint");
+      if (auto* o = r.optional(t, path, "origin")) {
+        pick.origin = r.string(*o, path + ".origin");
+        if (pick.origin != "hand" && pick.origin != "proposed" && pick.origin != "corrected")
+          r.fail(path + ".origin", "\"" + pick.origin + "\" is not hand, proposed or corrected");
+      }
       const int forms = (t.contains("pixels") ? 1 : 0) + (t.contains("points") ? 1 : 0) +
                         (t.contains("ends") ? 1 : 0);
       if (forms != 1)

@@ -182,6 +182,10 @@ struct Measurement {
   std::optional<double> trace_length_m;  // trace: length along its points
   bool censored = false;  // trace: an end leaves the mapped area (the length is a lower bound)
   std::string note;       // why the orientation is unknown, or a warning about the fit
+  // trace: where it came from (issue 25): "hand" (tapped), "proposed" (a
+  // trace proposal accepted as found) or "corrected" (a proposal redrawn by
+  // least-cost tracing between its dragged ends). Areas and points: "hand".
+  std::string origin = "hand";
 };
 
 struct JointSet {

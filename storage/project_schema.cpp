@@ -435,12 +435,21 @@ CREATE TABLE IF NOT EXISTS rockmass_form (
 );
 )sql";
 
+// Version 8: where a trace came from (issue 25): tapped by hand, a proposal
+// accepted as found, or a proposal corrected by least-cost tracing. A column
+// only: every earlier trace (and every area and point) was tapped by hand.
+constexpr const char* kVersion7To8 = R"sql(
+ALTER TABLE measurement ADD COLUMN origin TEXT NOT NULL DEFAULT 'hand'
+  CHECK (origin IN ('hand', 'proposed', 'corrected'));
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
 constexpr Step kSteps[] = {{2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4},
-                           {5, kVersion4To5}, {6, kVersion5To6}, {7, kVersion6To7}};
+                           {5, kVersion4To5}, {6, kVersion5To6}, {7, kVersion6To7},
+                           {8, kVersion7To8}};
 
 }  // namespace
 

@@ -66,13 +66,18 @@ std::vector<RecordId> ProjectStore::save_measurements(
       throw InputError(where + ".photo", "pixels need the photo they were picked in");
     if (m.sigma_deg) require_finite(*m.sigma_deg, where + ".sigma_deg");
     if (m.trace_length_m) require_finite(*m.trace_length_m, where + ".trace_length_m");
+    if (m.origin != "hand" && m.origin != "proposed" && m.origin != "corrected")
+      throw InputError(where + ".origin",
+                       "must be 'hand', 'proposed' or 'corrected', not '" + m.origin + "'");
+    if (m.origin != "hand" && m.kind != Measurement::Kind::trace)
+      throw InputError(where + ".origin", "only a trace is proposed or corrected");
   }
   WriteTransaction tx(db_, doing);
   Statement st(db_,
                "INSERT INTO measurement (visit_id, model_id, kind, label, joint_label, points, "
                "dip, dipdir, fit_rms_m, rock_side, created_at, photo, photo_capture_id, pixels, "
-               "sigma_deg, trace_length_m, censored, note) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-               "?, ?, ?, ?, ?, ?, ?, ?)",
+               "sigma_deg, trace_length_m, censored, note, origin) VALUES (?, ?, ?, ?, ?, ?, ?, ?, "
+               "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                doing);
   std::vector<RecordId> ids;
   std::string labels;
@@ -96,7 +101,8 @@ std::vector<RecordId> ProjectStore::save_measurements(
         .bind(15, m.sigma_deg)
         .bind(16, m.trace_length_m)
         .bind(17, m.censored)
-        .bind(18, m.note);
+        .bind(18, m.note)
+        .bind(19, m.origin);
     st.run();
     ids.push_back(db_.last_insert_id());
     labels += (labels.empty() ? "" : " ") + m.label;
@@ -111,7 +117,7 @@ std::vector<Measurement> ProjectStore::list_measurements(std::optional<RecordId>
   Statement st(db_,
                "SELECT id, visit_id, model_id, kind, label, joint_label, points, dip, dipdir, "
                "fit_rms_m, rock_side, created_at, photo, photo_capture_id, pixels, sigma_deg, "
-               "trace_length_m, censored, note FROM measurement WHERE (?1 IS NULL OR "
+               "trace_length_m, censored, note, origin FROM measurement WHERE (?1 IS NULL OR "
                "visit_id = ?1) ORDER BY id",
                "listing measurements");
   st.bind(1, visit_id);
@@ -139,6 +145,7 @@ std::vector<Measurement> ProjectStore::list_measurements(std::optional<RecordId>
     m.trace_length_m = row.next_optional_double();
     m.censored = row.next_bool();
     m.note = row.next_text();
+    m.origin = row.next_text();
     out.push_back(std::move(m));
   }
   return out;

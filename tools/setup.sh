@@ -10,6 +10,8 @@ packages=(
   ccache
   # libraries (DESIGN.md: Eigen, OpenCV, libgphoto2, SQLite; header-only helpers)
   libeigen3-dev libopencv-dev libgphoto2-dev libexif-dev libsqlite3-dev nlohmann-json3-dev libcli11-dev
+  # OpenCV's contrib modules: ximgproc's thinning for trace proposals (issue 25)
+  libopencv-contrib-dev
   # tablet UI: Dear ImGui 1.86 (with its OpenGL 3 backend source and stb),
   # EGL + GLES 3 headers and libraries, Mesa's EGL (surfaceless platform) and
   # software renderer for headless runs, Xlib and XInput 2 (multi-touch) for

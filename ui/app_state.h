@@ -19,6 +19,7 @@
 #include "ui/office_panel.h"
 #include "ui/overlay_photo_targets.h"
 #include "ui/project_session.h"
+#include "ui/proposals_view.h"
 #include "ui/rockmass_view.h"
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
@@ -54,9 +55,10 @@ struct CaptureState {
 };
 
 struct MappingState {
-  TraceMarker marker;       // the trace being marked
-  std::string joint_label;  // joint (set) the next trace is assigned to; empty: none
-  MapBlocksState blocks;    // the blocks the saved traces cut out, updated after each edit
+  TraceMarker marker;        // the trace being marked
+  std::string joint_label;   // joint (set) the next trace is assigned to; empty: none
+  MapBlocksState blocks;     // the blocks the saved traces cut out, updated after each edit
+  ProposalsState proposals;  // trace proposals to accept, correct or reject (issue 25)
 };
 
 struct AppState {

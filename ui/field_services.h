@@ -19,6 +19,7 @@
 #include "camera/camera.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
+#include "core/measure/proposals/trace_proposals.h"
 #include "core/rockmass/classification_form.h"
 #include "storage/project_records.h"
 #include "ui/block_verdict.h"
@@ -167,6 +168,28 @@ class RockMassRunner {
                                            Progress& progress) = 0;
 };
 
+// Trace proposals (issue 25) for the Mapping screen: the lines of the 3D
+// image on display that look like joint traces (folds of the surface, dark
+// lines of its photograph), each measured like a hand trace, with its
+// confidence, for the geologist to accept, correct or reject. Runs on the
+// worker over the model the screen already holds (no second load).
+struct ProposalInput {
+  const photogrammetry::SurfaceMesh* mesh = nullptr;
+  const measure::MeshPicker* picker = nullptr;  // on `mesh`
+  const measure::PhotoView* view = nullptr;     // the left photograph's camera and pose
+  cv::Mat photo;                                // that photograph (BGR)
+  double point_sigma_m = 0.01;                  // the model's depth precision (1 sigma)
+  Preset preset = Preset::standard;
+};
+
+class ProposalRunner {
+ public:
+  virtual ~ProposalRunner() = default;
+  // Throws InputError saying why (no photograph, a mesh without lattice);
+  // Cancelled when cancelled.
+  virtual measure::ProposalResult propose(const ProposalInput& input, Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
@@ -176,6 +199,7 @@ struct FieldServices {
   WedgeRunner* wedges = nullptr;                   // null: the Blocks screen shows no Wedges view
   SyncRunner* sync = nullptr;                      // null: no office server on this tablet
   RockMassRunner* rockmass = nullptr;              // null: the Blocks screen shows no rock mass
+  ProposalRunner* proposals = nullptr;             // null: the Mapping screen proposes no traces
 };
 
 }  // namespace rockface::ui

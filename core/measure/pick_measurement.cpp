@@ -122,6 +122,7 @@ MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& c,
     const std::string where = prefix + t.where;
     MeasuredTrace mt;
     mt.joint = t.joint;
+    mt.origin = t.origin;
     if (!t.points.empty()) {
       std::vector<Eigen::Vector3d> relative;
       for (const auto& p : t.points) relative.push_back(p - c.datum);

@@ -38,6 +38,7 @@ struct MeasuredTrace {
   std::string cost;                   // semi-automatic: the cost used; empty otherwise
   double mean_cost = 0;               // semi-automatic: per pixel step, [0, 1]
   std::vector<Eigen::Vector2d> taps;  // what was picked (the ends for semi-automatic)
+  std::string origin = "hand";        // as picked: "hand" | "proposed" | "corrected"
 };
 
 struct MeasuredArea {

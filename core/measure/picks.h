@@ -27,6 +27,10 @@ struct TracePick {
   std::vector<Eigen::Vector3d> points;                 // 3D points (absolute coordinates)
   std::optional<std::array<Eigen::Vector2d, 2>> ends;  // semi-automatic: trace between them
   std::string cost = "darkness";  // semi-automatic: darkness | gradient | curvature
+  // Where the trace came from (issue 25): "hand" (tapped; the default),
+  // "proposed" (a trace proposal accepted as found: `rockface propose`),
+  // "corrected" (a proposal redrawn between its dragged ends).
+  std::string origin = "hand";
 };
 
 struct AreaPick {

@@ -42,6 +42,8 @@ int run_ui(const UiRequest& req) {
   services.sync = &sync;
   StoreRockMassRunner rockmass;
   services.rockmass = &rockmass;
+  FieldProposalRunner proposals;
+  services.proposals = &proposals;
   if (req.script.empty()) {
     ui::run_in_window(options, services);
     return 0;

@@ -51,6 +51,7 @@ std::vector<storage::Measurement> measurement_records(
   for (const auto& t : r.traces) {
     storage::Measurement m = base(storage::Measurement::Kind::trace, t.m.id, t.m.plane);
     m.joint_label = t.joint;
+    m.origin = t.origin;
     m.points = t.m.points;
     photo(m, t.m.picks);
     m.trace_length_m = t.m.length;

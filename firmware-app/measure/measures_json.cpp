@@ -72,6 +72,7 @@ std::string measures_json(const measure::MeasuredPicks& r, const measure::Measur
     m["type"] = "trace";
     m["method"] = !t.cost.empty() ? "semi_automatic" : t.taps.empty() ? "points" : "taps";
     m["joint"] = t.joint;
+    m["origin"] = t.origin;  // hand | proposed | corrected (issue 25)
     m["set"] = r.set_of(t.m.id);
     m["photo"] = t.m.picks.empty() ? json("") : json(t.m.picks.front().photo);
     put_pair(m, m["photo"].get<std::string>());

@@ -68,6 +68,15 @@ class StoreRockMassRunner final : public ui::RockMassRunner {
                                    Progress& progress) override;
 };
 
+// Trace proposals on the Mapping screen's model (issue 25):
+// measure::propose_traces with the preset's knobs and the model's depth
+// precision. Facets are not passed yet: the propose workflow's facets
+// (firmware-app/propose) are the ones to hand in when it is merged.
+class FieldProposalRunner final : public ui::ProposalRunner {
+ public:
+  measure::ProposalResult propose(const ui::ProposalInput& input, Progress& progress) override;
+};
+
 // source: a scene with an imaging section, a folder of captures, or empty
 // (the first DSLR libgphoto2 finds).
 class FieldCameraConnector final : public ui::CameraConnector {

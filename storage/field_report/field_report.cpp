@@ -250,7 +250,13 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
   // The traces as the analysis takes them: the pieces of one trace stored
   // from different pairs' models joined into one (scene_traces), drawn as
   // one line and labelled by its pieces ("T1+T4").
-  for (const auto& t : scene_traces(store.list_measurements(visit_id))) {
+  const std::vector<Measurement> stored = store.list_measurements(visit_id);
+  for (const auto& m : stored)
+    if (m.kind == Measurement::Kind::trace)
+      ++(m.origin == "proposed"    ? r.traces_proposed
+         : m.origin == "corrected" ? r.traces_corrected
+                                   : r.traces_by_hand);
+  for (const auto& t : scene_traces(stored)) {
     std::string label = t.label;
     for (std::size_t k = 1; k < t.pieces.size(); ++k) label += "+" + t.pieces[k];
     r.traces.emplace_back(label, t.points);

@@ -147,6 +147,9 @@ struct FieldReport {
   // The traces, pieces stored from different pairs joined into one (label
   // "T1+T4", points ordered along it): label, points.
   std::vector<std::pair<std::string, std::vector<Eigen::Vector3d>>> traces;
+  // How the stored traces came (issue 25): tapped by hand, proposals
+  // accepted as found, proposals corrected by least-cost tracing.
+  int traces_by_hand = 0, traces_proposed = 0, traces_corrected = 0;
 
   ReportedAccuracy accuracy;
   std::vector<ReportedJoint> joints;

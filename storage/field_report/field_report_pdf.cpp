@@ -477,6 +477,12 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
     pdf.image(face_picture(r), PdfPages::text_width(), 0.55 * kPageH);
     pdf.line("traces yellow; blocks: removable red, marginal orange, keyed green", kSmall);
   }
+  if (r.traces_proposed + r.traces_corrected > 0)
+    pdf.line(std::to_string(r.traces_by_hand + r.traces_proposed + r.traces_corrected) +
+                 " traces: " + std::to_string(r.traces_by_hand) + " tapped by hand, " +
+                 std::to_string(r.traces_proposed) + " proposed and accepted, " +
+                 std::to_string(r.traces_corrected) + " proposed and corrected",
+             kSmall);
   pdf.heading("Stereonet (lower hemisphere, equal area)", 0.6 * PdfPages::text_width());
   const cv::Mat net = stereonet_picture(r);
   if (net.empty())

@@ -13,6 +13,7 @@
 #include "storage/project_store.h"
 #include "ui/overlay_legend.h"
 #include "ui/overlay_traces.h"
+#include "ui/proposals_view.h"
 #include "ui/screens/screens.h"
 #include "ui/stereonet_view.h"
 
@@ -84,36 +85,7 @@ void save_trace(AppState& app) {
     m.dipdir_deg = rad_to_deg(marker.plane()->orientation.dipdir);
     m.fit_rms_m = marker.plane()->fit.rms_off_plane();
   }
-  const auto file = app.session->file();
-  const FieldServices services = app.services;
-  // The blocks are updated in the same task, right after the trace is
-  // stored: the geologist sees what the trace closed before the next tap.
-  auto blocks = std::make_shared<std::shared_ptr<const MapVerdicts>>();
-  auto problem = std::make_shared<std::string>();
-  app.task.start(
-      "Saving trace",
-      [file, m, services, blocks, problem](Progress& progress) {
-        storage::ProjectStore store = storage::ProjectStore::open(file);
-        store.save_measurements(m.visit_id, {m});
-        std::string done = "trace " + m.label + " saved";
-        try {
-          *blocks = update_map_blocks(services, file, m.visit_id, progress);
-        } catch (const std::exception& e) {
-          *problem = e.what();  // the trace is stored; the map says why it has no blocks
-        }
-        if (*blocks) done += "; " + map_blocks_summary(**blocks);
-        return done;
-      },
-      [&app, visit = m.visit_id, blocks, problem](const TaskOutcome& outcome) {
-        if (outcome.kind != TaskOutcome::Kind::done) return;
-        app.mapping.marker.clear();
-        if (app.session) app.session->refresh();
-        MapBlocksState& state = app.mapping.blocks;
-        if (state.visit != visit) return;
-        state.verdicts = *blocks;
-        state.problem = *problem;
-        state.stale = !*blocks && problem->empty();
-      });
+  store_trace(app, std::move(m));
 }
 
 void draw_fit(const TraceMarker& marker) {
@@ -184,6 +156,42 @@ void draw_controls(AppState& app) {
 
 }  // namespace
 
+// Stores a trace as the Save trace button does (a hand trace, an accepted or
+// a corrected proposal: proposals_view.h), then updates the map's blocks.
+bool store_trace(AppState& app, storage::Measurement m) {
+  if (m.label.empty()) m.label = next_trace_label(*app.session);
+  const auto file = app.session->file();
+  const FieldServices services = app.services;
+  // The blocks are updated in the same task, right after the trace is
+  // stored: the geologist sees what the trace closed before the next tap.
+  auto blocks = std::make_shared<std::shared_ptr<const MapVerdicts>>();
+  auto problem = std::make_shared<std::string>();
+  return app.task.start(
+      "Saving trace",
+      [file, m, services, blocks, problem](Progress& progress) {
+        storage::ProjectStore store = storage::ProjectStore::open(file);
+        store.save_measurements(m.visit_id, {m});
+        std::string done = "trace " + m.label + " saved";
+        try {
+          *blocks = update_map_blocks(services, file, m.visit_id, progress);
+        } catch (const std::exception& e) {
+          *problem = e.what();  // the trace is stored; the map says why it has no blocks
+        }
+        if (*blocks) done += "; " + map_blocks_summary(**blocks);
+        return done;
+      },
+      [&app, visit = m.visit_id, blocks, problem](const TaskOutcome& outcome) {
+        if (outcome.kind != TaskOutcome::Kind::done) return;
+        app.mapping.marker.clear();
+        if (app.session) app.session->refresh();
+        MapBlocksState& state = app.mapping.blocks;
+        if (state.visit != visit) return;
+        state.verdicts = *blocks;
+        state.problem = *problem;
+        state.stale = !*blocks && problem->empty();
+      });
+}
+
 void draw_mapping_screen(AppState& app) {
   if (!require_model(app)) return;
   const float side = 400 * app.targets.scale();
@@ -191,8 +199,9 @@ void draw_mapping_screen(AppState& app) {
   ImGui::BeginGroup();
   add_traces_to_overlay(app);
   add_map_blocks_to_overlay(app);
+  drag_proposal_ends(app);  // before the model: a dragged handle does not turn it
   const auto interaction = app.model_view.draw(ImVec2(avail.x - side, avail.y), app.gesture);
-  if (interaction.tap) {
+  if (interaction.tap && !tap_proposal(app, *interaction.tap)) {
     const ScreenRay r = app.model_view.ray_at(*interaction.tap);
     app.mapping.marker.tap({r.origin, r.direction}, trace_context(app));
   }
@@ -201,11 +210,13 @@ void draw_mapping_screen(AppState& app) {
   draw_map_blocks_on_model(app);
   draw_traces(app);
   draw_model_overlays(app, ModelScreen::mapping);  // ui/overlay_legend.h
+  draw_proposals_on_model(app);
   ImGui::PopClipRect();
   ImGui::EndGroup();
   ImGui::SameLine();
   ImGui::BeginChild("mapping side", ImVec2(0, 0));
   draw_controls(app);
+  draw_proposal_panel(app);
   draw_map_blocks_panel(app);
   std::vector<StereonetPlane> planes;
   for (const auto& j : app.session->joints())

@@ -1,0 +1,176 @@
+#include "core/measure/proposals/line_chains.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace rockface::measure::proposals {
+
+namespace {
+
+constexpr int kDx[8] = {1, 0, -1, 0, 1, -1, -1, 1};  // 4-neighbours first
+constexpr int kDy[8] = {0, 1, 0, -1, 1, 1, -1, -1};
+
+// The direction out of a chain at one end, from the pixel a few steps in
+// (a single pixel step only says one of eight directions).
+cv::Point2f end_direction(const Chain& c, bool at_front) {
+  const std::size_t n = c.size();
+  const std::size_t k = std::min<std::size_t>(8, n - 1);
+  const cv::Point2f end = at_front ? c.front() : c.back();
+  const cv::Point2f inner = at_front ? c[k] : c[n - 1 - k];
+  cv::Point2f d = end - inner;
+  const float len = std::hypot(d.x, d.y);
+  return len > 0 ? d / len : cv::Point2f(0, 0);
+}
+
+double angle_deg(cv::Point2f a, cv::Point2f b) {
+  const double la = std::hypot(a.x, a.y), lb = std::hypot(b.x, b.y);
+  if (la == 0 || lb == 0) return 180;
+  return std::acos(std::clamp((a.x * b.x + a.y * b.y) / (la * lb), -1.0, 1.0)) * 180 / M_PI;
+}
+
+}  // namespace
+
+double chain_length(const Chain& chain) {
+  double s = 0;
+  for (std::size_t i = 1; i < chain.size(); ++i)
+    s += std::hypot(chain[i].x - chain[i - 1].x, chain[i].y - chain[i - 1].y);
+  return s;
+}
+
+std::vector<Chain> trace_chains(const cv::Mat& lines, int min_pixels) {
+  const int w = lines.cols, h = lines.rows;
+  auto on = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < w && y < h && lines.at<std::uint8_t>(y, x) != 0;
+  };
+  cv::Mat count(lines.size(), CV_8U, cv::Scalar(0));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (on(x, y))
+        for (int k = 0; k < 8; ++k) count.at<std::uint8_t>(y, x) += on(x + kDx[k], y + kDy[k]);
+  auto is_node = [&](int x, int y) { return count.at<std::uint8_t>(y, x) != 2; };
+  cv::Mat visited(lines.size(), CV_8U, cv::Scalar(0));
+  std::vector<Chain> chains;
+
+  // Walks from `start` through `next` until a node, a dead end or a pixel
+  // already walked.
+  auto walk = [&](cv::Point start, cv::Point next) {
+    Chain c{cv::Point2f(start)};
+    cv::Point prev = start, cur = next;
+    while (true) {
+      c.emplace_back(cur);
+      if (is_node(cur.x, cur.y)) break;
+      visited.at<std::uint8_t>(cur.y, cur.x) = 1;
+      bool moved = false;
+      for (int k = 0; k < 8 && !moved; ++k) {
+        const cv::Point n(cur.x + kDx[k], cur.y + kDy[k]);
+        if (n == prev || !on(n.x, n.y)) continue;
+        if (!is_node(n.x, n.y) && visited.at<std::uint8_t>(n.y, n.x)) continue;
+        if (n == start && c.size() < 3) continue;
+        prev = cur;
+        cur = n;
+        moved = true;
+      }
+      if (!moved) break;
+    }
+    if (static_cast<int>(c.size()) >= min_pixels) chains.push_back(std::move(c));
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!on(x, y) || !is_node(x, y)) continue;
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + kDx[k], ny = y + kDy[k];
+        if (!on(nx, ny) || is_node(nx, ny) || visited.at<std::uint8_t>(ny, nx)) continue;
+        walk(cv::Point(x, y), cv::Point(nx, ny));
+      }
+    }
+  // Closed loops (every pixel with two neighbours): start anywhere.
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!on(x, y) || is_node(x, y) || visited.at<std::uint8_t>(y, x)) continue;
+      visited.at<std::uint8_t>(y, x) = 1;
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + kDx[k], ny = y + kDy[k];
+        if (on(nx, ny) && !visited.at<std::uint8_t>(ny, nx)) {
+          walk(cv::Point(x, y), cv::Point(nx, ny));
+          break;
+        }
+      }
+    }
+  return chains;
+}
+
+std::vector<Chain> join_chains(std::vector<Chain> chains, double max_gap_px, double max_turn_deg) {
+  struct Link {
+    double score;
+    int a, b;  // end ids: 2 * chain + (0 front, 1 back)
+  };
+  const int n = static_cast<int>(chains.size());
+  std::vector<Link> links;
+  for (int i = 0; i < n; ++i) {
+    if (chains[i].size() < 2) continue;
+    for (int j = i + 1; j < n; ++j) {
+      if (chains[j].size() < 2) continue;
+      for (int ei = 0; ei < 2; ++ei)
+        for (int ej = 0; ej < 2; ++ej) {
+          const cv::Point2f pi = ei == 0 ? chains[i].front() : chains[i].back();
+          const cv::Point2f pj = ej == 0 ? chains[j].front() : chains[j].back();
+          const cv::Point2f gap = pj - pi;
+          const double len = std::hypot(gap.x, gap.y);
+          if (len > max_gap_px) continue;
+          const cv::Point2f ti = end_direction(chains[i], ei == 0);
+          const cv::Point2f tj = end_direction(chains[j], ej == 0);
+          const double turn = angle_deg(ti, -tj);
+          if (turn > max_turn_deg) continue;
+          // Across a real gap the bridge itself must run on the same way.
+          if (len > 2.5 &&
+              (angle_deg(ti, gap) > max_turn_deg || angle_deg(-tj, gap) > max_turn_deg))
+            continue;
+          links.push_back({len + turn / 10.0, 2 * i + ei, 2 * j + ej});
+        }
+    }
+  }
+  std::sort(links.begin(), links.end(),
+            [](const Link& x, const Link& y) { return x.score < y.score; });
+  std::vector<int> partner(static_cast<std::size_t>(2 * n), -1);
+  std::vector<int> root(static_cast<std::size_t>(n));
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](int x) {
+    while (root[x] != x) x = root[x] = root[root[x]];
+    return x;
+  };
+  for (const Link& l : links) {
+    if (partner[l.a] >= 0 || partner[l.b] >= 0) continue;
+    const int ra = find(l.a / 2), rb = find(l.b / 2);
+    if (ra == rb) continue;  // would close a loop
+    root[ra] = rb;
+    partner[l.a] = l.b;
+    partner[l.b] = l.a;
+  }
+  // Follow the links from each free end.
+  std::vector<Chain> out;
+  std::vector<bool> used(static_cast<std::size_t>(n), false);
+  for (int i = 0; i < n; ++i) {
+    if (used[i] || chains[i].size() < 2) continue;
+    int start_end = -1;
+    for (int e = 0; e < 2; ++e)
+      if (partner[2 * i + e] < 0) start_end = 2 * i + e;
+    if (start_end < 0) continue;  // inside a sequence: reached from its free end
+    Chain joined;
+    int end = start_end;
+    while (true) {
+      const int c = end / 2;
+      used[c] = true;
+      Chain piece = chains[c];
+      if (end % 2 == 1) std::reverse(piece.begin(), piece.end());  // enter at `end`
+      joined.insert(joined.end(), piece.begin(), piece.end());
+      const int exit = end ^ 1;
+      if (partner[exit] < 0) break;
+      end = partner[exit];
+    }
+    out.push_back(std::move(joined));
+  }
+  return out;
+}
+
+}  // namespace rockface::measure::proposals

@@ -1,0 +1,254 @@
+#include "core/measure/proposals/line_evidence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Geometry>
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/ximgproc.hpp>
+
+namespace rockface::measure::proposals {
+
+namespace {
+
+// Bilinear sample of a single-channel float image; NaN off the image.
+float sample(const cv::Mat& m, double x, double y) {
+  if (m.cols < 2 || m.rows < 2 || !(x >= 0 && y >= 0 && x <= m.cols - 1 && y <= m.rows - 1))
+    return std::numeric_limits<float>::quiet_NaN();
+  const int x0 = std::min(static_cast<int>(x), m.cols - 2);
+  const int y0 = std::min(static_cast<int>(y), m.rows - 2);
+  const int x1 = x0 + 1, y1 = y0 + 1;
+  const double fx = x - x0, fy = y - y0;
+  const double top = (1 - fx) * m.at<float>(y0, x0) + fx * m.at<float>(y0, x1);
+  const double bottom = (1 - fx) * m.at<float>(y1, x0) + fx * m.at<float>(y1, x1);
+  return static_cast<float>((1 - fy) * top + fy * bottom);
+}
+
+cv::Vec3f sample3(const cv::Mat& m, double x, double y) {
+  const int xi = static_cast<int>(std::lround(x)), yi = static_cast<int>(std::lround(y));
+  if (xi < 0 || yi < 0 || xi >= m.cols || yi >= m.rows)
+    return cv::Vec3f(std::nanf(""), std::nanf(""), std::nanf(""));
+  return m.at<cv::Vec3f>(yi, xi);
+}
+
+bool masked_in(const cv::Mat& mask, double x, double y) {
+  const int xi = static_cast<int>(std::lround(x)), yi = static_cast<int>(std::lround(y));
+  return xi >= 0 && yi >= 0 && xi < mask.cols && yi < mask.rows && mask.at<std::uint8_t>(yi, xi);
+}
+
+// Median and robust sigma (1.4826 MAD) of a float image over the mask,
+// from a sample of at most ~200,000 pixels.
+std::pair<double, double> robust_level(const cv::Mat& values, const cv::Mat& mask) {
+  std::vector<float> v;
+  const std::size_t total = static_cast<std::size_t>(values.rows) * values.cols;
+  const int stride = static_cast<int>(std::max<std::size_t>(1, total / 200000));
+  for (int r = 0; r < values.rows; ++r)
+    for (int c = (r * 7) % stride; c < values.cols; c += stride)
+      if (mask.at<std::uint8_t>(r, c)) v.push_back(values.at<float>(r, c));
+  if (v.empty()) return {0, 1};
+  auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  const double median = *mid;
+  for (float& x : v) x = std::abs(x - static_cast<float>(median));
+  std::nth_element(v.begin(), mid, v.end());
+  return {median, std::max(1.4826 * *mid, 1e-6)};
+}
+
+}  // namespace
+
+cv::Mat hysteresis(const cv::Mat& keep, const cv::Mat& seed) {
+  cv::Mat labels;
+  const int n = cv::connectedComponents(keep, labels, 8, CV_32S);
+  std::vector<std::uint8_t> seeded(static_cast<std::size_t>(n), 0);
+  for (int r = 0; r < keep.rows; ++r)
+    for (int c = 0; c < keep.cols; ++c)
+      if (seed.at<std::uint8_t>(r, c) && keep.at<std::uint8_t>(r, c))
+        seeded[static_cast<std::size_t>(labels.at<int>(r, c))] = 255;
+  seeded[0] = 0;
+  cv::Mat out(keep.size(), CV_8U);
+  for (int r = 0; r < keep.rows; ++r)
+    for (int c = 0; c < keep.cols; ++c)
+      out.at<std::uint8_t>(r, c) = seeded[static_cast<std::size_t>(labels.at<int>(r, c))];
+  return out;
+}
+
+DarkLines find_dark_lines(const cv::Mat& grey, const cv::Mat& mask,
+                          const DarkLineSettings& settings) {
+  const cv::Size size = grey.size();
+  cv::Mat best(size, CV_32F, cv::Scalar(-1e30)), angle(size, CV_32F, cv::Scalar(0)),
+      width(size, CV_32F, cv::Scalar(0));
+  for (double w : settings.widths_px) {
+    // A bar of width w answers the second derivative best at a Gaussian
+    // of about half its width; sigma^2 makes the scales comparable.
+    const double sigma = std::max(0.8, 0.5 * w);
+    cv::Mat g, dxx, dyy, dxy;
+    cv::GaussianBlur(grey, g, cv::Size(0, 0), sigma);
+    cv::Sobel(g, dxx, CV_32F, 2, 0, 3, 0.25);
+    cv::Sobel(g, dyy, CV_32F, 0, 2, 3, 0.25);
+    cv::Sobel(g, dxy, CV_32F, 1, 1, 3, 0.25);
+    cv::Mat half_diff = 0.5 * (dxx - dyy), root;
+    cv::sqrt(half_diff.mul(half_diff) + dxy.mul(dxy), root);
+    // Largest Hessian eigenvalue: positive across a valley of brightness.
+    const cv::Mat response = (0.5 * (dxx + dyy) + root) * (sigma * sigma);
+    cv::Mat across;  // the eigenvector's angle, doubled
+    cv::phase(cv::Mat(dxx - dyy), cv::Mat(2 * dxy), across);
+    for (int r = 0; r < size.height; ++r)
+      for (int c = 0; c < size.width; ++c)
+        if (response.at<float>(r, c) > best.at<float>(r, c)) {
+          best.at<float>(r, c) = response.at<float>(r, c);
+          angle.at<float>(r, c) = 0.5f * across.at<float>(r, c);
+          width.at<float>(r, c) = static_cast<float>(w);
+        }
+  }
+  const auto [median, noise] = robust_level(best, mask);
+  // The brightness the sides are compared with: lightly smoothed (noise).
+  cv::Mat smooth;
+  cv::GaussianBlur(grey, smooth, cv::Size(0, 0), 0.8);
+
+  DarkLines out;
+  out.noise = noise;
+  out.sigmas = cv::Mat(size, CV_32F, cv::Scalar(0));
+  out.contrast = cv::Mat(size, CV_32F, cv::Scalar(0));
+  cv::Mat keep(size, CV_8U, cv::Scalar(0)), seed(size, CV_8U, cv::Scalar(0));
+  const double keep_level = median + settings.keep_sigmas * noise;
+  const double seed_level = median + settings.seed_sigmas * noise;
+  for (int r = 0; r < size.height; ++r)
+    for (int c = 0; c < size.width; ++c) {
+      const float v = best.at<float>(r, c);
+      if (v < keep_level || !mask.at<std::uint8_t>(r, c)) continue;
+      const double nx = std::cos(angle.at<float>(r, c)), ny = std::sin(angle.at<float>(r, c));
+      // Non-maximum suppression across the line.
+      const float a = sample(best, c + nx, r + ny), b = sample(best, c - nx, r - ny);
+      if ((std::isfinite(a) && a > v) || (std::isfinite(b) && b >= v)) continue;
+      // Darker than both sides: a line, not the dark side of a step.
+      const double d = width.at<float>(r, c) + 1.0;
+      const float side_a = sample(smooth, c + d * nx, r + d * ny);
+      const float side_b = sample(smooth, c - d * nx, r - d * ny);
+      if (!std::isfinite(side_a) || !std::isfinite(side_b)) continue;
+      const double contrast = std::min(side_a, side_b) - smooth.at<float>(r, c);
+      if (contrast < settings.min_contrast_grey) continue;
+      keep.at<std::uint8_t>(r, c) = 255;
+      if (v >= seed_level) seed.at<std::uint8_t>(r, c) = 255;
+      out.sigmas.at<float>(r, c) = static_cast<float>((v - median) / noise);
+      out.contrast.at<float>(r, c) = static_cast<float>(contrast);
+    }
+  cv::ximgproc::thinning(hysteresis(keep, seed), out.lines, cv::ximgproc::THINNING_ZHANGSUEN);
+  return out;
+}
+
+SurfaceImage draw_surface(const photogrammetry::SurfaceMesh& mesh, cv::Size size, double scale,
+                          const Eigen::Vector3d& camera_centre, double max_edge_m,
+                          double smoothing_px) {
+  SurfaceImage out;
+  if (!mesh.empty()) out.origin = mesh.vertices[0];
+  cv::Mat normals(size, CV_32FC3, cv::Scalar(0, 0, 0)), points(size, CV_32FC3, cv::Scalar(0, 0, 0));
+  out.mask = cv::Mat(size, CV_8U, cv::Scalar(0));
+  constexpr int kShift = 4;  // sub-pixel corners: 1/16 px
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3d& a = mesh.vertices[t[0]];
+    const Eigen::Vector3d& b = mesh.vertices[t[1]];
+    const Eigen::Vector3d& c = mesh.vertices[t[2]];
+    if ((b - a).norm() > max_edge_m || (c - b).norm() > max_edge_m || (a - c).norm() > max_edge_m)
+      continue;
+    Eigen::Vector3d n = (b - a).cross(c - a);
+    if (n.squaredNorm() == 0) continue;
+    n.normalize();
+    const Eigen::Vector3d centre = (a + b + c) / 3.0;
+    if (n.dot(camera_centre - centre) < 0) n = -n;
+    cv::Point corners[3];
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2f p = mesh.pixels[t[k]];
+      corners[k] = cv::Point(static_cast<int>(std::lround(p.x() * scale * (1 << kShift))),
+                             static_cast<int>(std::lround(p.y() * scale * (1 << kShift))));
+    }
+    const Eigen::Vector3d rel = centre - out.origin;
+    cv::fillConvexPoly(normals, corners, 3, cv::Scalar(n.x(), n.y(), n.z()), cv::LINE_8, kShift);
+    cv::fillConvexPoly(points, corners, 3, cv::Scalar(rel.x(), rel.y(), rel.z()), cv::LINE_8,
+                       kShift);
+    cv::fillConvexPoly(out.mask, corners, 3, cv::Scalar(255), cv::LINE_8, kShift);
+  }
+  // Normalised convolution: smoothing does not pull in the zeros beyond
+  // the surface's edge.
+  cv::Mat weight, blurred_weight;
+  out.mask.convertTo(weight, CV_32F, 1.0 / 255);
+  cv::GaussianBlur(weight, blurred_weight, cv::Size(0, 0), smoothing_px);
+  cv::GaussianBlur(normals, out.normals, cv::Size(0, 0), smoothing_px);
+  cv::GaussianBlur(points, out.points, cv::Size(0, 0), smoothing_px);
+  for (int r = 0; r < size.height; ++r)
+    for (int c = 0; c < size.width; ++c) {
+      cv::Vec3f& n = out.normals.at<cv::Vec3f>(r, c);
+      const float w = blurred_weight.at<float>(r, c);
+      const float len = static_cast<float>(cv::norm(n));
+      if (w > 1e-3f && len > 1e-6f) {
+        n /= len;
+        out.points.at<cv::Vec3f>(r, c) /= w;
+      } else {
+        n = cv::Vec3f(0, 0, 0);
+      }
+    }
+  return out;
+}
+
+Folds find_folds(const SurfaceImage& surface, const FoldSettings& settings) {
+  const cv::Size size = surface.normals.size();
+  cv::Mat gx, gy;
+  cv::Sobel(surface.normals, gx, CV_32F, 1, 0, 3, 0.125);
+  cv::Sobel(surface.normals, gy, CV_32F, 0, 1, 3, 0.125);
+  // Structure tensor of the normal field: how fast, and across which
+  // direction, the normal turns.
+  std::vector<cv::Mat> x, y;
+  cv::split(gx, x);
+  cv::split(gy, y);
+  cv::Mat jxx = x[0].mul(x[0]) + x[1].mul(x[1]) + x[2].mul(x[2]);
+  cv::Mat jyy = y[0].mul(y[0]) + y[1].mul(y[1]) + y[2].mul(y[2]);
+  cv::Mat jxy = x[0].mul(y[0]) + x[1].mul(y[1]) + x[2].mul(y[2]);
+  cv::Mat half_diff = 0.5 * (jxx - jyy), root, strength, across;
+  cv::sqrt(half_diff.mul(half_diff) + jxy.mul(jxy), root);
+  cv::sqrt(cv::max(0.5 * (jxx + jyy) + root, 0.0), strength);
+  cv::phase(cv::Mat(jxx - jyy), cv::Mat(2 * jxy), across);
+
+  // The two sides are read two smoothing widths out, where the smoothed
+  // normal is within 2 % of each side's own; both must be on the surface.
+  const double reach = 2.0 * settings.smoothing_px;
+  cv::Mat inner;
+  const int erode = static_cast<int>(std::ceil(reach)) + 1;
+  cv::erode(surface.mask, inner,
+            cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * erode + 1, 2 * erode + 1)));
+
+  Folds out;
+  out.angle = cv::Mat(size, CV_32F, cv::Scalar(0));
+  out.ridge = cv::Mat(size, CV_8U, cv::Scalar(0));
+  cv::Mat keep(size, CV_8U, cv::Scalar(0)), seed(size, CV_8U, cv::Scalar(0));
+  const double keep_cos = std::cos(settings.keep_deg * M_PI / 180);
+  for (int r = 0; r < size.height; ++r)
+    for (int c = 0; c < size.width; ++c) {
+      if (!inner.at<std::uint8_t>(r, c)) continue;
+      const float v = strength.at<float>(r, c);
+      if (v <= 0) continue;
+      const double ux = std::cos(0.5 * across.at<float>(r, c));
+      const double uy = std::sin(0.5 * across.at<float>(r, c));
+      const float a = sample(strength, c + ux, r + uy), b = sample(strength, c - ux, r - uy);
+      if ((std::isfinite(a) && a > v) || (std::isfinite(b) && b >= v)) continue;
+      if (!masked_in(surface.mask, c + reach * ux, r + reach * uy) ||
+          !masked_in(surface.mask, c - reach * ux, r - reach * uy))
+        continue;
+      const cv::Vec3f na = sample3(surface.normals, c - reach * ux, r - reach * uy);
+      const cv::Vec3f nb = sample3(surface.normals, c + reach * ux, r + reach * uy);
+      const double cosine = std::clamp(static_cast<double>(na.dot(nb)), -1.0, 1.0);
+      if (cosine > keep_cos) continue;
+      const double deg = std::acos(cosine) * 180 / M_PI;
+      const cv::Vec3f pa = sample3(surface.points, c - reach * ux, r - reach * uy);
+      const cv::Vec3f pb = sample3(surface.points, c + reach * ux, r + reach * uy);
+      keep.at<std::uint8_t>(r, c) = 255;
+      if (deg >= settings.seed_deg) seed.at<std::uint8_t>(r, c) = 255;
+      out.angle.at<float>(r, c) = static_cast<float>(deg);
+      // Convex when the normal turns the way one walks across: a ridge.
+      if ((nb - na).dot(pb - pa) > 0) out.ridge.at<std::uint8_t>(r, c) = 255;
+    }
+  cv::ximgproc::thinning(hysteresis(keep, seed), out.lines, cv::ximgproc::THINNING_ZHANGSUEN);
+  return out;
+}
+
+}  // namespace rockface::measure::proposals

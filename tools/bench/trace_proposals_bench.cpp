@@ -1,0 +1,91 @@
+// Trace proposals (issue 25): time, peak memory, precision and recall per
+// preset, on the rendered faces of tests/integration_proposals (the dense
+// face, 12 + 2 joints) at 1200 x 800 and at 6000 x 4000 (24 Mpx, the DSLR's
+// frame), each reconstructed once with the fast preset. Precision and
+// recall are against the true traces within 5 cm.
+//
+// Memory: the process's peak resident set while proposing (VmHWM, reset
+// before each run through /proc/self/clear_refs), and what it adds to the
+// resident set before the run (the model, picker and photograph are
+// already loaded, as on the tablet).
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "tests/integration_proposals/proposal_faces.h"
+
+namespace rm = rockface::measure;
+namespace rt = rockface::testing;
+
+namespace {
+
+double status_mb(const char* field) {
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  while (std::getline(f, line))
+    if (line.rfind(field, 0) == 0) return std::stod(line.substr(std::string(field).size())) / 1024;
+  return 0;
+}
+
+void reset_peak() {
+  std::ofstream("/proc/self/clear_refs") << "5";
+}
+
+struct Face {
+  rt::ProposalFace face;
+  std::unique_ptr<rm::MeshPicker> picker;
+};
+
+// A proposal face at the given frame width (height 2/3 of it).
+const Face& face(int width) {
+  static std::map<int, std::unique_ptr<Face>> faces;
+  auto& f = faces[width];
+  if (!f) {
+    f = std::make_unique<Face>();
+    auto scene = rt::proposal_face_scene(rt::JointDensity::dense);
+    const auto base = rockface::testing::synthetic_face(width, width * 2 / 3, false, 2.0);
+    scene.camera = base.camera;
+    f->face = rt::build_proposal_face_from(rt::JointDensity::dense, scene, rockface::Preset::fast);
+    f->picker = std::make_unique<rm::MeshPicker>(f->face.rec.mesh);
+  }
+  return *f;
+}
+
+void BM_TraceProposals(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  const auto preset = static_cast<rockface::Preset>(state.range(1));
+  const Face& f = face(width);
+  auto options = rm::proposal_options(preset);
+  options.measure.point_sigma = f.face.rec.accuracy.sigma_z;
+  rockface::NoProgress progress;
+  rm::ProposalResult result;
+  const double before = status_mb("VmRSS:");
+  reset_peak();
+  for (auto _ : state) {
+    result = rm::propose_traces(f.face.rec.mesh, *f.picker, f.face.left, f.face.render.images[0],
+                                f.face.facets, options, progress, "bench");
+    benchmark::DoNotOptimize(result);
+  }
+  const double peak = status_mb("VmHWM:");
+  const auto score = rt::score_proposals(f.face, result.proposals, *f.picker, 0.05);
+  state.SetLabel(std::string(rockface::preset_name(preset)) + ", " + std::to_string(width) +
+                 " px wide");
+  state.counters["precision"] = score.precision;
+  state.counters["recall"] = score.recall;
+  state.counters["proposals"] = static_cast<double>(score.proposals);
+  state.counters["work_scale"] = result.pixel_scale;
+  state.counters["peak_MB"] = peak;
+  state.counters["added_MB"] = peak - before;
+  state.counters["mesh_points"] = static_cast<double>(f.face.rec.mesh.size());
+}
+
+}  // namespace
+
+BENCHMARK(BM_TraceProposals)
+    ->ArgsProduct({{1200, 6000}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+BENCHMARK_MAIN();
