@@ -27,8 +27,11 @@ json finite_or_null(double v) {
   return std::isfinite(v) ? json(v) : json(nullptr);
 }
 
+}  // namespace
+
 // The orientation fields of one plane estimate.
-void put_plane(json& j, const measure::PlaneEstimate& p, const Eigen::Vector3d& datum) {
+void put_plane_json(nlohmann::json& j, const measure::PlaneEstimate& p,
+                    const Eigen::Vector3d& datum) {
   j["orientation_known"] = p.known;
   if (p.known) {
     j["dip"] = rad_to_deg(p.orientation.dip);
@@ -45,8 +48,6 @@ void put_plane(json& j, const measure::PlaneEstimate& p, const Eigen::Vector3d& 
   j["rms_m"] = p.fit.rms_off_plane();
   j["centroid"] = vec(p.fit.centroid + datum);
 }
-
-}  // namespace
 
 std::string measures_json(const measure::MeasuredPicks& r, const measure::MeasureContext& c,
                           const std::string& model,
@@ -86,7 +87,7 @@ std::string measures_json(const measure::MeasuredPicks& r, const measure::Measur
       m["cost"] = t.cost;
       m["mean_cost"] = t.mean_cost;
     }
-    put_plane(m, t.m.plane, c.datum);
+    put_plane_json(m, t.m.plane, c.datum);
     m["relief_m"] = t.m.plane.relief_off_face;
     m["length_m"] = t.m.length;
     m["censored"] = t.m.censored;
@@ -103,7 +104,7 @@ std::string measures_json(const measure::MeasuredPicks& r, const measure::Measur
     std::vector<Eigen::Vector2d> px;
     for (const auto& p : a.m.outline) px.push_back(p.pixel);
     m["pixels"] = pixels_json(px);
-    put_plane(m, a.m.plane, c.datum);
+    put_plane_json(m, a.m.plane, c.datum);
     m["area_m2"] = a.m.area;
     m["mesh_vertices"] = a.m.vertices;
     ms.push_back(m);
@@ -116,7 +117,7 @@ std::string measures_json(const measure::MeasuredPicks& r, const measure::Measur
     m["photo"] = p.pick.photo;
     put_pair(m, p.pick.photo);
     m["pixels"] = pixels_json({p.pick.pixel});
-    put_plane(m, p.plane, c.datum);
+    put_plane_json(m, p.plane, c.datum);
     m["point"] = vec(p.point + c.datum);
     ms.push_back(m);
   }
@@ -131,7 +132,7 @@ std::string measures_json(const measure::MeasuredPicks& r, const measure::Measur
     json pairs = json::array();
     for (const int image : jt.face.images) pairs.push_back(image);
     m["pairs"] = pairs;
-    put_plane(m, jt.plane, c.datum);
+    put_plane_json(m, jt.plane, c.datum);
     m["length_m"] = jt.length;
     m["censored"] = jt.censored;
     json points = json::array();
@@ -145,7 +146,7 @@ std::string measures_json(const measure::MeasuredPicks& r, const measure::Measur
     json m;
     m["label"] = jt.label;
     m["traces"] = jt.traces;
-    put_plane(m, jt.plane, c.datum);
+    put_plane_json(m, jt.plane, c.datum);
     joints.push_back(m);
   }
   j["joints"] = joints;

@@ -4,6 +4,9 @@
 #include <map>
 #include <string>
 
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
 #include "core/measure/pick_measurement.h"
 
 namespace rockface::app {
@@ -14,5 +17,11 @@ namespace rockface::app {
 std::string measures_json(const measure::MeasuredPicks& measured,
                           const measure::MeasureContext& context, const std::string& model,
                           const std::map<std::string, std::string>& further_models = {});
+
+// One plane estimate's fields (dip, dipdir, sigma_deg or nulls with the
+// note, fit points, outliers, rms, absolute centroid) into `j`: the same
+// for every measured plane of every file.
+void put_plane_json(nlohmann::json& j, const measure::PlaneEstimate& p,
+                    const Eigen::Vector3d& datum);
 
 }  // namespace rockface::app

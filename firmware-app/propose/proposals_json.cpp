@@ -118,7 +118,7 @@ std::string proposals_json(const ProposeResult& r, Preset preset) {
   j["not_sets"] = not_sets;
   if (r.trace_proposals.is_null()) {
     j["trace_proposals"] = nullptr;
-    j["trace_proposals_note"] = "trace proposals not run by this program";
+    j["trace_proposals_note"] = "trace proposals not asked for";
   } else {
     j["trace_proposals"] = r.trace_proposals;
   }
@@ -148,6 +148,14 @@ std::vector<std::string> proposals_summary(const ProposeResult& r) {
     lines.push_back("not a set (" + orientation_text(c.fisher.plane()) + ", " +
                     std::to_string(c.facet_ids.size()) + " facets): " + c.reason);
   for (const auto& n : f.notes) lines.push_back(n);
+  if (r.trace_proposals.is_object()) {
+    const auto& list = r.trace_proposals.at("proposals");
+    int linked = 0;
+    for (const auto& p : list) linked += !p.at("facet").is_null();
+    lines.push_back(std::to_string(list.size()) + " trace proposals (" + std::to_string(linked) +
+                    " along a facet's edge): accept them on the Mapping screen, or store them "
+                    "from a picks file with `rockface measure`");
+  }
   return lines;
 }
 

@@ -3,6 +3,8 @@
 #include <filesystem>
 
 #include "core/common/error.h"
+#include "core/measure/mesh_picker.h"
+#include "firmware-app/propose/trace_proposals_run.h"
 #include "storage/project_store.h"
 
 namespace rockface::app {
@@ -41,7 +43,17 @@ ProposeResult propose_for_visit(const ProposeRequest& request, Progress& progres
   r.facets = measure::find_facets(r.model.mesh, settings, options, progress);
   r.sets = measure::facet_sets(r.facets);
   for (const auto& f : r.facets.facets) r.outlines[f.id] = f.outline;
-  if (request.propose_traces) r.trace_proposals = request.propose_traces(r.model, r.outlines);
+  if (request.trace_proposals) {
+    const auto view = r.model.views.find("left");
+    const auto photo = r.model.photos.find("left");
+    if (view == r.model.views.end() || photo == r.model.photos.end() || photo->second.empty())
+      throw InputError(r.on, "no left photograph stored with the 3D image: no trace proposals");
+    const measure::MeshPicker picker(r.model.mesh);
+    r.trace_proposals = trace_proposals_json(
+        propose_on_model(r.model.mesh, picker, view->second, photo->second,
+                         proposal_facets(r.facets), request.preset, r.model.point_sigma, progress),
+        r.model.datum);
+  }
   return r;
 }
 

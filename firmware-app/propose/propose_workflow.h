@@ -1,10 +1,9 @@
 #pragma once
 // `rockface propose`'s one workflow, also the tablet's and the tests': a
 // project's visit in (its first pair's 3D image, in the face frame), the
-// planar facets found on it and the joint sets they form out, with the
-// knobs used. Nothing is stored: the geologist accepts proposals by picks
+// planar facets found on it and the joint sets they form, the trace
+// proposals on it, with the knobs used. Nothing is stored: the geologist accepts proposals by picks
 // (`rockface measure`), as for hand-picked ones.
-#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -36,12 +35,9 @@ struct ProposeRequest {
   // them too); checked by check_facet_options.
   std::optional<double> angle_tolerance_deg, min_area_m2, planarity_in_sigmas;
   std::optional<int> smoothing_passes;
-  // The trace proposals (core/measure/proposals/, issue 25's traces): given
-  // the loaded 3D image with its photographs and the facets' outlines, their
-  // JSON for PROPOSALS.json's "trace_proposals". Wired in by the lead; when
-  // empty, PROPOSALS.json says the trace proposals were not run.
-  std::function<nlohmann::json(const LoadedModel& model, const FacetOutlines& outlines)>
-      propose_traces;
+  // The trace proposals (core/measure/proposals/) on the same 3D image,
+  // linked to these facets; off, PROPOSALS.json says they were not run.
+  bool trace_proposals = true;
 };
 
 struct ProposeResult {
@@ -51,7 +47,7 @@ struct ProposeResult {
   measure::FacetSearch facets;
   measure::FacetSets sets;
   FacetOutlines outlines;
-  nlohmann::json trace_proposals;  // null when not run
+  nlohmann::json trace_proposals;  // trace_proposals_json(); null when not run
 };
 
 // InputError naming the project, --visit or the model for a missing file,

@@ -70,8 +70,8 @@ class StoreRockMassRunner final : public ui::RockMassRunner {
 
 // Trace proposals on the Mapping screen's model (issue 25):
 // measure::propose_traces with the preset's knobs and the model's depth
-// precision. Facets are not passed yet: the propose workflow's facets
-// (firmware-app/propose) are the ones to hand in when it is merged.
+// precision, linked to the facets found on the same model (as `rockface
+// propose` does).
 class FieldProposalRunner final : public ui::ProposalRunner {
  public:
   measure::ProposalResult propose(const ui::ProposalInput& input, Progress& progress) override;

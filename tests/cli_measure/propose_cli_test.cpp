@@ -1,7 +1,8 @@
 // `rockface propose` as a user runs it: the real binary on the demo face
 // replayed into a project at the fast preset. The demo face is two nearly
 // coplanar walls (FACE_W, FACE_E, 12 deg apart) with joints drawn on them
-// but no joint faces exposed: facets are found, but no joint set.
+// but no joint faces exposed: facets are found, but no joint set; the
+// joints' dark lines are proposed as traces.
 #include <unistd.h>
 
 #include <filesystem>
@@ -56,7 +57,18 @@ TEST(ProposeCli, FacetsOfTheDemoFaceNoSetPictureReportAndBadVisitByName) {
   // No joint face is exposed: the walls are one surface, not a set.
   EXPECT_TRUE(p.at("sets").empty());
   EXPECT_FALSE(p.at("not_sets").empty());
-  EXPECT_TRUE(p.at("trace_proposals").is_null());
+  // The joints drawn on the walls are proposed as traces, each measured on
+  // the 3D image (points absolute, on the face) with its confidence.
+  const json& t = p.at("trace_proposals");
+  ASSERT_TRUE(t.is_object()) << t.dump();
+  ASSERT_FALSE(t.at("proposals").empty()) << t.dump();
+  for (const auto& q : t.at("proposals")) {
+    EXPECT_GE(q.at("confidence").get<double>(), 0.0) << q.at("id");
+    EXPECT_LE(q.at("confidence").get<double>(), 1.0) << q.at("id");
+    EXPECT_GT(q.at("length_m").get<double>(), 0.0) << q.at("id");
+    ASSERT_GE(q.at("points").size(), 2u) << q.at("id");
+    EXPECT_NEAR(q.at("points")[0][1].get<double>(), 5211880.0, 1.0) << q.at("id");
+  }
 
   r = run_rockface("propose " + project.string() + " --visit 7 --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);

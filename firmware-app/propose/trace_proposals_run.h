@@ -1,0 +1,38 @@
+#pragma once
+// The trace proposals (core/measure/proposals) as the propose workflow and
+// the Mapping screen run them: on a 3D image whose lattice knows its pixels
+// in the left photograph, or only its texture coordinates (a stored model),
+// linked to the facets found on the same image; and their JSON for
+// PROPOSALS.json ("trace_proposals", docs/scene-extensions.md).
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+
+#include "core/common/preset.h"
+#include "core/common/progress.h"
+#include "core/measure/facets/facets.h"
+#include "core/measure/proposals/trace_proposals.h"
+
+namespace rockface::app {
+
+// The facets' outer outlines as the proposals take them.
+std::vector<measure::ProposalFacet> proposal_facets(const measure::FacetSearch& facets);
+
+// propose_traces with the preset's knobs and the model's depth precision
+// (1 sigma, m) for the plane fits, as for a hand trace. A mesh with texture
+// coordinates only gets its lattice's pixels from them (the inverse of
+// firmware-app/records/project_mesh.cpp: u = (x + 0.5) / W,
+// v = 1 - (y + 0.5) / H).
+measure::ProposalResult propose_on_model(const photogrammetry::SurfaceMesh& mesh,
+                                         const measure::MeshPicker& picker,
+                                         const measure::PhotoView& view, const cv::Mat& photo,
+                                         const std::vector<measure::ProposalFacet>& facets,
+                                         Preset preset, double point_sigma_m, Progress& progress);
+
+// {"proposals": [...], "notes": [...], ...}; coordinates absolute (+ datum).
+nlohmann::json trace_proposals_json(const measure::ProposalResult& result,
+                                    const Eigen::Vector3d& datum);
+
+}  // namespace rockface::app
