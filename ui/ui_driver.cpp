@@ -104,7 +104,7 @@ ScriptRun run_ui_script(UiDriver& driver, const UiScript& script,
       out.screenshots.push_back(screenshots_dir / (step.label + ".png"));
   }
   driver.settle();
-  out.status = driver.state().status;
+  out.status = driver.state().statuses.line(static_cast<std::size_t>(driver.state().screen));
   return out;
 }
 
