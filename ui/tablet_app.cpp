@@ -66,7 +66,7 @@ TabletApp::TabletApp(UiOptions options, FieldServices services) {
   } catch (const std::exception& e) {
     state_.statuses.error(static_cast<std::size_t>(Screen::project), e.what());
   }
-  apply_theme(state_.settings.theme, state_.options.scale);
+  apply_theme(state_.settings.theme, state_.options.scale, state_.targets.target_px());
   ImGui_ImplOpenGL3_Init("#version 300 es");
   if (!state_.options.project.empty()) {
     state_.open_project(state_.options.project);
@@ -91,7 +91,7 @@ void TabletApp::build_frame(TouchInput& input, int width, int height, float seco
   state_.gesture = input.gesture();
   if (state_.theme_wanted) {
     // A new font atlas and its GL texture, between two frames.
-    apply_theme(*state_.theme_wanted, state_.options.scale);
+    apply_theme(*state_.theme_wanted, state_.options.scale, state_.targets.target_px());
     ImGui_ImplOpenGL3_DestroyFontsTexture();
     ImGui_ImplOpenGL3_CreateFontsTexture();
     state_.theme_wanted.reset();

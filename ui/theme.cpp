@@ -1,5 +1,6 @@
 #include "ui/theme.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <imgui.h>
@@ -83,7 +84,7 @@ float theme_font_px(Theme theme) {
   return theme == Theme::daylight ? 24.0f : 20.0f;
 }
 
-void apply_theme(Theme theme, float scale) {
+void apply_theme(Theme theme, float scale, float min_target_px) {
   load_font(theme_font_px(theme) * scale);
   ImGuiStyle& style = ImGui::GetStyle();
   style = ImGuiStyle();
@@ -92,7 +93,8 @@ void apply_theme(Theme theme, float scale) {
   else
     ImGui::StyleColorsDark();
   style.ScaleAllSizes(scale);
-  style.FramePadding = ImVec2(14 * scale, 12 * scale);
+  const float font = theme_font_px(theme) * scale;
+  style.FramePadding = ImVec2(14 * scale, std::max(12 * scale, (min_target_px - font) / 2));
   style.ItemSpacing = ImVec2(12 * scale, 10 * scale);
   style.ScrollbarSize = 28 * scale;
   style.GrabMinSize = 28 * scale;

@@ -20,6 +20,8 @@ float theme_font_px(Theme theme);
 // Sets ImGui's style and rebuilds the font atlas for `scale` (1 = a 10"
 // 1280x800 tablet). Outside a frame only (between Render and NewFrame):
 // the caller re-creates the GL font texture after it.
-void apply_theme(Theme theme, float scale);
+// Every frame (button, slider, box) is at least `min_target_px` high: a
+// thumb target at the tablet's DPI.
+void apply_theme(Theme theme, float scale, float min_target_px);
 
 }  // namespace rockface::ui

@@ -20,6 +20,23 @@ ImU32 verdict_colour(BlockVerdict verdict) {
   return IM_COL32(0, 0, 0, 255);
 }
 
+ImU32 verdict_text_colour(BlockVerdict verdict) {
+  if (ImGui::GetStyleColorVec4(ImGuiCol_WindowBg).x < 0.5f) return verdict_colour(verdict);
+  switch (verdict) {
+    case BlockVerdict::moves:
+      return IM_COL32(190, 0, 0, 255);
+    case BlockVerdict::marginal:
+      return IM_COL32(180, 80, 0, 255);
+    case BlockVerdict::holds:
+      return IM_COL32(120, 100, 0, 255);
+    case BlockVerdict::keyed:
+      return IM_COL32(0, 120, 40, 255);
+    case BlockVerdict::infinite:
+      return IM_COL32(90, 90, 90, 255);
+  }
+  return IM_COL32(0, 0, 0, 255);
+}
+
 float TouchTargets::target_px() const {
   return std::max(kTouchTargetPx * scale_, touch_target_px_at(dpi_));
 }
@@ -87,7 +104,10 @@ bool TouchTargets::confirmed_button(const std::string& label, const std::string&
     ImGui::TextUnformatted(question.c_str());
     record_drawn_text(question, std::min(most, ImGui::CalcTextSize(question.c_str()).x), most + 1);
     ImGui::PopTextWrapPos();
-    const std::string yes = "Yes, " + label.substr(0, label.find("##"));
+    std::string verb = label.substr(0, label.find("##"));
+    if (!verb.empty() && verb[0] >= 'A' && verb[0] <= 'Z')
+      verb[0] = static_cast<char>(verb[0] - 'A' + 'a');
+    const std::string yes = "Yes, " + verb;
     if (button(yes)) {
       confirmed = true;
       ImGui::CloseCurrentPopup();
