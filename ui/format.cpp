@@ -15,6 +15,20 @@ std::string printf_text(const char* fmt, double v) {
   return buf;
 }
 
+// `v` to `decimals` places, but never more than six significant digits (a
+// figure the field never measures that finely): fewer places for a large
+// value, and powers of ten beyond a million.
+std::string fixed(double v, int decimals, const char* unit = "") {
+  const double a = std::abs(v);
+  const int whole = a < 1 ? 1 : static_cast<int>(std::floor(std::log10(a))) + 1;
+  char buf[64];
+  if (whole > 6)
+    std::snprintf(buf, sizeof buf, "%.3g%s", v, unit);
+  else
+    std::snprintf(buf, sizeof buf, "%.*f%s", std::max(0, std::min(decimals, 6 - whole)), v, unit);
+  return buf;
+}
+
 // -0.0 and rounding to zero of a small negative value print as "-0.0".
 double no_negative_zero(double v, double step) {
   return std::abs(v) < step / 2 ? 0.0 : v;
@@ -35,7 +49,7 @@ std::string grouped(std::int64_t n) {
 
 std::string text(Angle a) {
   if (!std::isfinite(a.deg)) return unknown();
-  return printf_text("%.1f°", no_negative_zero(a.deg, 0.1));
+  return fixed(no_negative_zero(a.deg, 0.1), 1, "°");
 }
 
 std::string text(Length l) {
@@ -43,16 +57,16 @@ std::string text(Length l) {
   const double m = std::abs(l.m);
   // Millimetres below 10 cm (a residual, a precision, a point spacing),
   // centimetres never (a geologist writes mm or m), metres to 10 km.
-  if (m < 0.01) return printf_text("%.1f mm", no_negative_zero(l.m * 1000, 0.1));
-  if (m < 0.1) return printf_text("%.0f mm", l.m * 1000);
-  if (m < 10) return printf_text("%.2f m", l.m);
-  if (m < 1000) return printf_text("%.1f m", l.m);
-  return printf_text("%.2f km", l.m / 1000);
+  if (m < 0.01) return fixed(no_negative_zero(l.m * 1000, 0.1), 1, " mm");
+  if (m < 0.1) return fixed(l.m * 1000, 0, " mm");
+  if (m < 10) return fixed(l.m, 2, " m");
+  if (m < 1000) return fixed(l.m, 1, " m");
+  return fixed(l.m / 1000, 2, " km");
 }
 
 std::string text(Area a) {
   if (!std::isfinite(a.m2)) return unknown();
-  return printf_text(std::abs(a.m2) < 10 ? "%.2f m²" : "%.1f m²", a.m2);
+  return fixed(a.m2, std::abs(a.m2) < 10 ? 2 : 1, " m²");
 }
 
 std::string text(Volume v) {
@@ -60,24 +74,25 @@ std::string text(Volume v) {
   const double x = std::abs(v.m3);
   // Three significant digits: a block's volume from traces is good to a few
   // per cent at best.
-  if (x < 0.001) return printf_text("%.1f litres", v.m3 * 1000);
-  if (x < 1) return printf_text("%.3f m³", v.m3);
-  if (x < 10) return printf_text("%.2f m³", v.m3);
-  if (x < 100) return printf_text("%.1f m³", v.m3);
-  return grouped(std::llround(v.m3)) + " m³";
+  if (x < 0.001) return fixed(v.m3 * 1000, 1, " litres");
+  if (x < 1) return fixed(v.m3, 3, " m³");
+  if (x < 10) return fixed(v.m3, 2, " m³");
+  if (x < 100) return fixed(v.m3, 1, " m³");
+  return fixed(v.m3, 0, " m³");
 }
 
 std::string text(FactorOfSafety f) {
   if (!std::isfinite(f.value)) return unknown();
   if (f.value > 100) return "over 100";
-  return printf_text("%.2f", f.value);
+  return fixed(f.value, 2, "");
 }
 
 std::string text(Duration d) {
   if (!std::isfinite(d.seconds) || d.seconds < 0) return unknown();
-  if (d.seconds < 1) return printf_text("%.0f ms", d.seconds * 1000);
-  if (d.seconds < 10) return printf_text("%.1f s", d.seconds);
-  if (d.seconds < 60) return printf_text("%.0f s", d.seconds);
+  if (d.seconds < 1) return fixed(d.seconds * 1000, 0, " ms");
+  if (d.seconds < 10) return fixed(d.seconds, 1, " s");
+  if (d.seconds < 60) return fixed(d.seconds, 0, " s");
+  if (d.seconds >= 3600) return fixed(d.seconds / 3600, 1, " h");
   const auto total = std::llround(d.seconds);
   char buf[64];
   std::snprintf(buf, sizeof buf, "%lld min %02lld s", total / 60, total % 60);
@@ -86,15 +101,15 @@ std::string text(Duration d) {
 
 std::string text(Fraction f) {
   if (!std::isfinite(f.value)) return unknown();
-  return printf_text("%.0f %%", f.value * 100);
+  return fixed(f.value * 100, 0, " %");
 }
 
 std::string azimuth(double deg) {
   if (!std::isfinite(deg)) return unknown();
   double d = std::fmod(deg, 360.0);
   if (d < 0) d += 360;
-  if (d >= 359.95) d = 0;  // 359.97 rounds to 360.0, which is 000.0
-  return printf_text("%05.1f°", d);
+  if (d >= 359.95) d = 0;            // 359.97 rounds to 360.0, which is 000.0
+  return printf_text("%05.1f°", d);  // 0 to 360: never more than four digits
 }
 
 std::string dip_and_direction(double dip_deg, double dipdir_deg) {
@@ -107,21 +122,21 @@ std::string plus_minus(Length sigma) {
 
 std::string pixels(double px) {
   if (!std::isfinite(px)) return unknown();
-  return printf_text(std::abs(px) < 10 ? "%.2f px" : "%.0f px", px);
+  return fixed(px, std::abs(px) < 10 ? 2 : 0, " px");
 }
 
 std::string factor(double value) {
   if (!std::isfinite(value)) return unknown();
-  return printf_text("%.4f", value);
+  return fixed(value, 4, "");
 }
 
 std::string one_in(double ratio) {
   if (!std::isfinite(ratio) || ratio <= 0) return unknown();
-  return printf_text("1 : %.1f", 1 / ratio);
+  return "1 : " + fixed(1 / ratio, 1);
 }
 
 std::string count(std::int64_t n) {
-  if (std::abs(n) >= 1000000) return printf_text("%.1f million", static_cast<double>(n) / 1e6);
+  if (std::abs(n) >= 1000000) return fixed(static_cast<double>(n) / 1e6, 1, " million");
   return grouped(n);
 }
 
@@ -151,7 +166,12 @@ std::string without_folders(std::string_view text) {
   while (i < text.size()) {
     const std::size_t end = std::min(text.find(' ', i), text.size());
     const std::string_view word = text.substr(i, end - i);
-    out += word.find('/') == std::string_view::npos ? std::string(word) : file_name(word);
+    // An absolute path (or one from the home folder), perhaps after an
+    // opening bracket or quote; "1/8" and "J1/J2" are not paths.
+    const std::size_t lead = std::min(word.find_first_not_of("(\"'"), word.size());
+    const std::string_view rest = word.substr(lead);
+    const bool path = rest.size() > 1 && (rest[0] == '/' || (rest[0] == '~' && rest[1] == '/'));
+    out += path ? std::string(word.substr(0, lead)) + file_name(rest) : std::string(word);
     if (end < text.size()) out += ' ';
     i = end + 1;
   }

@@ -143,7 +143,11 @@ void draw_map_blocks_panel(AppState& app) {
   if (ImGui::BeginTable("map blocks", 4, flags,
                         ImVec2(0, rows * ImGui::GetTextLineHeightWithSpacing()))) {
     ImGui::TableSetupScrollFreeze(0, 1);
-    for (const char* h : {"Block", "Verdict (margin)", "Mode", "FoS"}) ImGui::TableSetupColumn(h);
+    // Weights, not content: a shortened cell must not shrink its column.
+    ImGui::TableSetupColumn("Block", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("Verdict (margin)", ImGuiTableColumnFlags_WidthStretch, 2.4f);
+    ImGui::TableSetupColumn("Mode", ImGuiTableColumnFlags_WidthStretch, 1.4f);
+    ImGui::TableSetupColumn("FoS", ImGuiTableColumnFlags_WidthStretch, 0.9f);
     ImGui::TableHeadersRow();
     int number = 0;
     for (const auto& b : v.blocks) {

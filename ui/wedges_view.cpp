@@ -38,7 +38,7 @@ void find_wedges(AppState& app) {
 
 void draw_table(AppState& app, const WedgeTable& t) {
   const ImGuiTableFlags flags =
-      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame;
   if (!ImGui::BeginTable("wedges", static_cast<int>(t.columns.size()), flags)) return;
   for (const auto& c : t.columns) ImGui::TableSetupColumn(c.c_str());
   ImGui::TableHeadersRow();

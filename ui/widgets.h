@@ -41,6 +41,7 @@ constexpr ImU32 kTargetColour = IM_COL32(255, 230, 0, 255);
 struct TargetRect {
   ImVec2 min, max;
   bool enabled = true;
+  bool button = false;  // drawn by button(): a touch target of its own
   ImVec2 centre() const { return {(min.x + max.x) / 2, (min.y + max.y) / 2}; }
 };
 

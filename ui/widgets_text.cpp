@@ -4,6 +4,8 @@
 
 #include <imgui_internal.h>
 
+#include "ui/format.h"
+
 namespace rockface::ui {
 
 namespace {
@@ -42,7 +44,12 @@ void whole_text_popup(const std::string& id, std::string_view text) {
   ImGui::EndPopup();
 }
 
-void one_line(std::string_view text) {
+void one_line(std::string_view whole) {
+  // No machine's folders on the screen (an error naming its file names it
+  // by its file name): they mean nothing at the face and end up in
+  // screenshots.
+  const std::string cut = format::without_folders(whole);
+  const std::string_view text = cut;
   const float room = space_left();
   const float width = text_width(text);
   if (width <= room) {
@@ -61,7 +68,9 @@ void one_line(std::string_view text) {
   ImGui::PopID();
 }
 
-void wrapped(std::string_view text) {
+void wrapped(std::string_view whole) {
+  const std::string cut = format::without_folders(whole);
+  const std::string_view text = cut;
   const float room = space_left();
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextUnformatted(text.data(), text.data() + text.size());

@@ -2,6 +2,8 @@
 // marginal rows highlighted), the blocks drawn on the model coloured by
 // verdict, and the report of the block tapped (on the model or in the
 // table). "Run analysis" analyses the visit on the worker.
+#include <utility>
+
 #include <opencv2/imgproc.hpp>
 
 #include "ui/format.h"
@@ -102,8 +104,11 @@ void draw_table(AppState& app) {
                                 ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
   if (!ImGui::BeginTable("blocks", 6, flags, ImVec2(0, 0))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  for (const char* h : {"Block", "Verdict", "Mode", "FoS", "Margin", "Can rotate"})
-    ImGui::TableSetupColumn(h);
+  // Weights, not content: a shortened cell must not shrink its column.
+  for (const auto& [h, weight] :
+       {std::pair{"Block", 1.0f}, std::pair{"Verdict", 1.3f}, std::pair{"Mode", 1.4f},
+        std::pair{"FoS", 0.8f}, std::pair{"Margin", 1.0f}, std::pair{"Can rotate", 1.3f}})
+    ImGui::TableSetupColumn(h, ImGuiTableColumnFlags_WidthStretch, weight);
   ImGui::TableHeadersRow();
   // Rows are touch targets: a full thumb high.
   const float row_height = app.targets.target_px();

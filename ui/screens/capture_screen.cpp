@@ -165,9 +165,8 @@ void draw_guidance(AppState& app) {
   ImGui::SliderFloat("##pole", &c.range_pole_m, 0.5f, 5, "%.2f m");
 }
 
-}  // namespace
-
-void draw_capture_screen(AppState& app) {
+// The camera and the shots: what the geologist taps at the face, first.
+void draw_shots(AppState& app) {
   CaptureState& c = app.capture;
   const bool idle = !app.task.running();
   field("Camera", format::without_folders(c.connection));
@@ -175,11 +174,6 @@ void draw_capture_screen(AppState& app) {
   if (app.targets.button(c.camera ? "Reconnect" : "Connect camera", 0, idle && app.services.camera))
     connect(app);
   if (app.targets.button_in_row("Live view", idle && c.camera)) live_view(app);
-  for (const auto& g : c.guidance) bullet(g);
-
-  ImGui::Separator();
-  draw_guidance(app);
-
   ImGui::Separator();
   const bool can_shoot = idle && c.camera != nullptr;
   if (shoot_button(app, "Shoot left", c.left.has_value(), can_shoot)) shoot(app, true);
@@ -191,23 +185,42 @@ void draw_capture_screen(AppState& app) {
   ImGui::SameLine();
   ImGui::AlignTextToFramePadding();
   label(std::string("Right: ") + shot_state(c.right, c.stored));
-  if (c.left && c.right) {
-    for (const auto& note : camera::check_pair(c.left->exif, c.right->exif)) {
-      if (note.severity == camera::GuidanceNote::Severity::refusal)
-        bullet("Refused: " + note.text);
-      else
-        bullet(note.text);
-    }
-  }
   const bool can_store = idle && c.left && c.right && !c.stored && app.session &&
                          app.session->visit() && !app.session->read_only();
   if (app.targets.button("Store pair and reconstruct", 0, can_store)) store_and_reconstruct(app);
   if (!app.session) note("Open a project to store the pair (Project).");
+  if (c.left && c.right) {
+    for (const auto& n : camera::check_pair(c.left->exif, c.right->exif)) {
+      if (n.severity == camera::GuidanceNote::Severity::refusal)
+        paragraph("Refused: " + n.text, warning_colour());
+      else
+        bullet(n.text);
+    }
+  }
   if (c.live_view_texture && !c.live_view.empty()) {
     const float w = std::min(480 * app.targets.scale(), ImGui::GetContentRegionAvail().x);
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.live_view_texture)),
                  ImVec2(w, w * c.live_view.rows / c.live_view.cols));
   }
+}
+
+}  // namespace
+
+void draw_capture_screen(AppState& app) {
+  // Shots on the left, guidance and the camera's settings beside them (below
+  // them in portrait).
+  const SplitLayout layout = split_for_side_panel(ImGui::GetContentRegionAvail().x * 0.45f, 0.5f);
+  ImGui::BeginChild("capture shots", layout.main);
+  draw_shots(app);
+  ImGui::EndChild();
+  begin_side_panel("capture guidance", layout);
+  draw_guidance(app);
+  if (!app.capture.guidance.empty()) {
+    ImGui::Separator();
+    heading("Camera settings");
+    for (const auto& g : app.capture.guidance) bullet(g);
+  }
+  ImGui::EndChild();
 }
 
 }  // namespace rockface::ui
