@@ -86,7 +86,7 @@ std::string date_time(std::string_view iso);
 // machine's folders mean nothing to the geologist and leak into pictures).
 std::string file_name(std::string_view path);
 
-// Text with absolute paths in it ("replay /home/x/face.scene.json") with
+// Text with absolute paths in it ("replay /…/face.scene.json") with
 // each cut to its file name ("replay face.scene.json"); "1/8" stays.
 std::string without_folders(std::string_view text);
 

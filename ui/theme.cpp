@@ -61,9 +61,10 @@ void tunnel_colours(ImVec4* c) {
   c[ImGuiCol_TableRowBgAlt] = ImVec4(1, 1, 1, 0.05f);
   c[ImGuiCol_Border] = ImVec4(0.55f, 0.55f, 0.55f, 1);
   c[ImGuiCol_Separator] = ImVec4(0.45f, 0.45f, 0.45f, 1);
-  c[ImGuiCol_Header] = ImVec4(0.60f, 0.42f, 0.10f, 0.6f);
-  c[ImGuiCol_HeaderHovered] = ImVec4(0.60f, 0.42f, 0.10f, 0.8f);
-  c[ImGuiCol_HeaderActive] = ImVec4(0.60f, 0.42f, 0.10f, 1);
+  // A selected row: a grey-blue that keeps the verdicts' colours readable.
+  c[ImGuiCol_Header] = ImVec4(0.26f, 0.28f, 0.36f, 1);
+  c[ImGuiCol_HeaderHovered] = ImVec4(0.30f, 0.32f, 0.42f, 1);
+  c[ImGuiCol_HeaderActive] = ImVec4(0.34f, 0.36f, 0.46f, 1);
 }
 
 }  // namespace

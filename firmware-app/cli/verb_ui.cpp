@@ -6,6 +6,7 @@
 
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/services/ui_services.h"
+#include "ui/format.h"
 #include "ui/headless_session.h"
 #include "ui/platform/window_runner.h"
 
@@ -65,6 +66,17 @@ int run_ui(const UiRequest& req) {
     run = ui::run_script_in_window(options, services, script, req.screenshots);
   }
   for (const auto& s : run.screenshots) std::cout << "screenshot " << s.string() << "\n";
+  // What the script cost on each screen (docs/accuracy-cost.md, the UI).
+  int taps = 0;
+  double seconds = 0;
+  for (const auto& u : run.screens) {
+    std::cout << "screen " << u.screen << ": " << u.taps << (u.taps == 1 ? " tap, " : " taps, ")
+              << ui::format::text(ui::format::Duration{u.seconds}) << "\n";
+    taps += u.taps;
+    seconds += u.seconds;
+  }
+  std::cout << "screens in all: " << taps << " taps, "
+            << ui::format::text(ui::format::Duration{seconds}) << "\n";
   std::cout << "status: " << run.status << "\n";
   return 0;
 }

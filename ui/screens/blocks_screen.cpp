@@ -221,7 +221,6 @@ void draw_blocks_screen(AppState& app) {
     draw_rockmass_view(app);  // ui/rockmass_view.h
   } else if (app.selected_block && *app.selected_block < blocks.size()) {
     const BlockView& b = blocks[*app.selected_block];
-    heading("Block " + b.label);
     for (const auto& line : b.summary) paragraph(line);
     draw_motion_controls(app, b);
   } else {

@@ -165,10 +165,15 @@ void draw_controls(AppState& app) {
     for (std::size_t k = 0; k < pairs.size(); ++k) {
       const std::string name = "Pair " + std::to_string(k + 1);
       same_line_if_fits(button_width(name, app.targets.target_px()));
-      if (toggle(name.c_str(), app.session->pair() == k, idle) && app.session->pair() != k) {
-        if (!marker.taps().empty())
-          app.say("The unsaved trace's taps were on the other pair: cleared.");
-        marker.clear();  // its taps were on the other pair's 3D image
+      // The taps of an unsaved trace were on this pair's 3D image: another
+      // pair loses them, so it asks first.
+      const bool current = app.session->pair() == k;
+      const bool chosen = !marker.taps().empty() && !current
+                              ? app.targets.confirmed_button(
+                                    name, "The trace being marked is not saved. Leave it?", idle)
+                              : toggle(name.c_str(), current, idle);
+      if (chosen && !current) {
+        marker.clear();
         app.session->choose_pair(k);
       }
     }

@@ -95,12 +95,14 @@ void draw_visit(const ProjectSession& s) {
               " (" + format::date_time(s.analysis()->created_at) + ").");
   else
     paragraph("Not analysed yet (Blocks).");
-  if (s.model())
+  // The session falls back to an earlier visit's model for the screens;
+  // this line is about this visit's own pairs.
+  if (s.model() && !s.pairs().empty())
     paragraph("3D image: " + format::count(s.model()->vertex_count, "point", "points") + ", " +
               format::count(s.model()->face_count, "triangle", "triangles") +
               ", scaled and oriented by " + format::in_words(s.model()->registration_kind) + ".");
   else
-    paragraph("No 3D image yet (Capture).");
+    paragraph("No 3D image of this visit yet (Capture).");
 }
 
 }  // namespace
@@ -130,25 +132,39 @@ void draw_project_screen(AppState& app) {
     s.begin_visit();
     app.say("Visit " + std::to_string(*s.visit()) + " started: take its stereo pair (Capture).");
   }
-  if (app.targets.button_in_row("Close project", idle)) {
+  // Closing loses an unsaved trace's taps and unstored shots: asked then.
+  const bool unsaved = !app.mapping.marker.taps().empty() ||
+                       ((app.capture.left || app.capture.right) && !app.capture.stored);
+  same_line_if_fits(button_width("Close project", app.targets.target_px()));
+  if (unsaved ? app.targets.confirmed_button(
+                    "Close project", "A trace or shots are not saved yet. Close and lose them?", idle)
+              : app.targets.button("Close project", 0, idle)) {
     app.session.reset();
     app.model_view.clear();
     app.selected_block.reset();
     app.mapping = {};
+    app.capture.left.reset();
+    app.capture.right.reset();
     return;
   }
   ImGui::Separator();
   heading(format::count(static_cast<std::int64_t>(s.visits().size()), "visit", "visits"));
+  ImGui::PushStyleVar(ImGuiStyleVar_ButtonTextAlign, ImVec2(0, 0.5f));
   for (auto it = s.visits().rbegin(); it != s.visits().rend(); ++it) {
     const bool current = s.visit() && *s.visit() == it->id;
     const std::string text = visit_line(*it, current);
     const std::string shown =
         shortened(text, ImGui::GetContentRegionAvail().x - 2 * ImGui::GetStyle().FramePadding.x);
-    if (app.targets.button(shown + "##visit" + std::to_string(it->id), -1, idle)) {
+    const bool tapped = app.targets.button(shown + "##visit" + std::to_string(it->id), -1, idle);
+    // Scripts name a visit by its number, not by its date.
+    app.targets.record("Visit " + std::to_string(it->id), ImGui::GetItemRectMin(),
+                       ImGui::GetItemRectMax());
+    if (tapped) {
       s.choose_visit(it->id);
       break;  // the list was re-read
     }
   }
+  ImGui::PopStyleVar();
   if (s.visit()) {
     ImGui::Separator();
     draw_visit(s);
