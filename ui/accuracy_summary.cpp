@@ -43,7 +43,9 @@ void scale_and_orientation(std::vector<AccuracyLine>& out, const json& reg, cons
     if (const auto d = number(n, "declination_deg"); d && *d != 0)
       v += ", declination " + f::text(f::Angle{*d});
     out.push_back({"North", v});
-  } else if (const std::string v = text_of(reg, "north_source"); !v.empty()) {
+  } else if (const std::string v = text_of(reg, "north_source"); v == "none") {
+    out.push_back({"North", "not oriented: no compass line was given for this pair", true});
+  } else if (!v.empty()) {
     out.push_back({"North", f::in_words(v)});
   } else if (p.is_object() && p.contains("format")) {
     out.push_back({"North", "not oriented to north", true});

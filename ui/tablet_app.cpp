@@ -12,6 +12,12 @@
 
 namespace rockface::ui {
 
+namespace {
+// The task that loads the visit's 3D image for display: said on the Model
+// screen only.
+constexpr const char* kLoadingTitle = "Loading the 3D image";
+}  // namespace
+
 const char* screen_name(Screen screen) {
   switch (screen) {
     case Screen::project:
@@ -118,7 +124,7 @@ void TabletApp::keep_model_loaded() {
     const std::string text = outcome->title + ": " + outcome->message;
     if (outcome->kind == TaskOutcome::Kind::failed)
       state_.statuses.error(where, text);
-    else if (outcome->title != "Loading model" || where == static_cast<std::size_t>(Screen::model))
+    else if (outcome->title != kLoadingTitle || where == static_cast<std::size_t>(Screen::model))
       state_.statuses.say(where, text);
   }
   if (!state_.session || state_.task.running()) return;
@@ -129,11 +135,11 @@ void TabletApp::keep_model_loaded() {
   const std::size_t budget = state_.options.max_display_triangles;
   auto prepared = std::make_shared<PreparedModel>();
   state_.task.start(
-      "Loading model",
+      kLoadingTitle,
       [file, id, budget, prepared](Progress& progress) {
         progress.step("reading the model", 0.1);
         *prepared = prepare_model(file, id, budget);
-        return "model " + std::to_string(id) + " loaded";
+        return "3D image " + std::to_string(id) + " loaded";
       },
       [this, prepared](const TaskOutcome& outcome) {
         if (outcome.kind == TaskOutcome::Kind::done)

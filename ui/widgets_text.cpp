@@ -60,9 +60,13 @@ void one_line(std::string_view whole) {
   const std::string shown = shortened(text, room);
   const std::string id = "##whole" + std::to_string(std::hash<std::string_view>{}(text));
   ImGui::PushID(id.c_str());
-  // A selectable as wide as the text: the tap target that shows the whole.
-  if (ImGui::Selectable((shown + "##short").c_str(), false, 0, ImVec2(text_width(shown), 0)))
+  // A selectable as wide as the text and a thumb high (the theme makes a
+  // frame 9 mm high): the tap target that shows the whole.
+  ImGui::PushStyleVar(ImGuiStyleVar_SelectableTextAlign, ImVec2(0, 0.5f));
+  if (ImGui::Selectable((shown + "##short").c_str(), false, 0,
+                        ImVec2(text_width(shown), ImGui::GetFrameHeight())))
     ImGui::OpenPopup("whole text");
+  ImGui::PopStyleVar();
   record_drawn_text(shown, text_width(shown), room);
   whole_text_popup("whole text", text);
   ImGui::PopID();
