@@ -110,7 +110,8 @@ ScriptRun run_ui_script(UiDriver& driver, const UiScript& script,
     if (use == out.screens.end()) use = out.screens.insert(out.screens.end(), {screen, 0, 0});
     const auto started = std::chrono::steady_clock::now();
     driver.run(step, screenshots_dir, "steps[" + std::to_string(i) + "]");
-    use->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    use->seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     if (step.kind == ScriptStep::Kind::tap) ++use->taps;
     if (step.kind == ScriptStep::Kind::screenshot)
       out.screenshots.push_back(screenshots_dir / (step.label + ".png"));

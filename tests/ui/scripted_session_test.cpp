@@ -3,8 +3,8 @@
 // its reconstruction and cancel it, close; then reopen. What finished is in
 // the store; what was cancelled left nothing half-written.
 #include <algorithm>
-#include <fstream>
 #include <cstdio>
+#include <fstream>
 #include <optional>
 #include <string>
 

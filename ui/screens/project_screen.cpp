@@ -136,9 +136,10 @@ void draw_project_screen(AppState& app) {
   const bool unsaved = !app.mapping.marker.taps().empty() ||
                        ((app.capture.left || app.capture.right) && !app.capture.stored);
   same_line_if_fits(button_width("Close project", app.targets.target_px()));
-  if (unsaved ? app.targets.confirmed_button(
-                    "Close project", "A trace or shots are not saved yet. Close and lose them?", idle)
-              : app.targets.button("Close project", 0, idle)) {
+  if (unsaved
+          ? app.targets.confirmed_button(
+                "Close project", "A trace or shots are not saved yet. Close and lose them?", idle)
+          : app.targets.button("Close project", 0, idle)) {
     app.session.reset();
     app.model_view.clear();
     app.selected_block.reset();
