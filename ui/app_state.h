@@ -85,11 +85,12 @@ struct AppState {
   TouchGesture gesture;  // this frame's two-finger gesture
 
   // Issue 27: each screen's status line; the look, remembered per tablet.
-  StatusLines statuses;                  // ui/status_lines.h, by Screen
-  Screen task_screen = Screen::project;  // the screen that started the running task
-  std::size_t tasks_noted = 0;           // BackgroundTask::started() when last noted
-  UiSettings settings;                   // theme (ui/ui_settings.h)
-  std::optional<Theme> theme_wanted;     // applied between two frames
+  StatusLines statuses;                           // ui/status_lines.h, by Screen
+  Screen task_screen = Screen::project;           // the screen that started the running task
+  std::size_t tasks_noted = 0;                    // BackgroundTask::started() when last noted
+  UiSettings settings;                            // theme (ui/ui_settings.h)
+  std::optional<Theme> theme_wanted;              // applied between two frames
+  std::optional<storage::RecordId> status_visit;  // the visit the messages are about
   // On the current screen's status line: a message, or an error that stays
   // until tapped.
   void say(std::string text);

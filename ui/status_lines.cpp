@@ -24,6 +24,10 @@ void StatusLines::error(std::size_t screen, std::string text) {
   errors.push_back(std::move(text));
 }
 
+void StatusLines::clear_messages() {
+  for (auto& line : lines_) line.message.clear();
+}
+
 void StatusLines::dismiss(std::size_t screen) {
   at(screen).errors.clear();
 }

@@ -14,6 +14,9 @@ class StatusLines {
   // `screen` is the index of a Screen (app_state.h).
   void say(std::size_t screen, std::string text);
   void error(std::size_t screen, std::string text);
+  // Another visit was chosen: the messages were about the last one (the
+  // errors stay until read).
+  void clear_messages();
   // The errors were read (tapped).
   void dismiss(std::size_t screen);
 

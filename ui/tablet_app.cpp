@@ -154,6 +154,12 @@ void TabletApp::build() {
   state_.targets.begin_frame();
   clear_drawn_text();
   keep_model_loaded();
+  // Messages about another visit would mislead: they go with it.
+  const auto visit = state_.session ? state_.session->visit() : std::nullopt;
+  if (visit != state_.status_visit) {
+    if (state_.status_visit) state_.statuses.clear_messages();
+    state_.status_visit = visit;
+  }
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(viewport->Pos);
   ImGui::SetNextWindowSize(viewport->Size);
@@ -216,8 +222,7 @@ void TabletApp::draw_tabs() {
     const std::string name = state_.session->info().name;
     const float wanted = std::min(ImGui::CalcTextSize(name.c_str()).x, 12 * ImGui::GetFontSize());
     same_line_if_fits(wanted);
-    ImGui::AlignTextToFramePadding();
-    label(name);
+    label_in_row(name);
   }
   ImGui::Separator();
 }
@@ -236,12 +241,11 @@ void TabletApp::draw_status_bar() {
     // An error stays until read: "OK" (a touch target) puts it away.
     if (state_.targets.button("OK##errors")) state_.statuses.dismiss(here);
     ImGui::SameLine();
-    ImGui::AlignTextToFramePadding();
     std::string text = errors.back();
     if (errors.size() > 1)
       text =
           format::count(static_cast<std::int64_t>(errors.size()), "error", "errors") + ": " + text;
-    label(text, warning_colour());
+    label_in_row(text, warning_colour());  // shortened: the whole one tap away
     return;
   }
   const TaskStatus status = state_.task.status();
@@ -258,8 +262,7 @@ void TabletApp::draw_status_bar() {
                        text.c_str());
     record_drawn_text(text, ImGui::CalcTextSize(text.c_str()).x, room);
   } else {
-    ImGui::AlignTextToFramePadding();
-    label(state_.statuses.message(here));
+    label_in_row(state_.statuses.message(here));
   }
 }
 

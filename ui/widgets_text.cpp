@@ -63,6 +63,9 @@ void one_line(std::string_view whole) {
   // A selectable as wide as the text and a thumb high (the theme makes a
   // frame 9 mm high): the tap target that shows the whole.
   ImGui::PushStyleVar(ImGuiStyleVar_SelectableTextAlign, ImVec2(0, 0.5f));
+  // Beside buttons ImGui moves text down to their text line; this target is
+  // their height and centres its text itself.
+  ImGui::GetCurrentWindow()->DC.CurrLineTextBaseOffset = 0;
   if (ImGui::Selectable((shown + "##short").c_str(), false, 0,
                         ImVec2(text_width(shown), ImGui::GetFrameHeight())))
     ImGui::OpenPopup("whole text");
@@ -114,6 +117,19 @@ std::string shortened(std::string_view text, float width) {
 
 void label(std::string_view text) {
   one_line(text);
+}
+
+void label_in_row(std::string_view text) {
+  // Plain text is moved down to the buttons' text line; a shortened one is
+  // a selectable of the buttons' height, centred already.
+  if (text_width(format::without_folders(text)) <= space_left()) ImGui::AlignTextToFramePadding();
+  one_line(text);
+}
+
+void label_in_row(std::string_view text, ImU32 colour) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  label_in_row(text);
+  ImGui::PopStyleColor();
 }
 
 void label(std::string_view text, ImU32 colour) {

@@ -18,6 +18,10 @@ namespace rockface::ui {
 // One line; shortened with "…" when wider than the space left on the line,
 // and then tapping it shows the whole text.
 void label(std::string_view text);
+// A label on a row of buttons: centred on the buttons' height (shortened, its
+// tap target is that height).
+void label_in_row(std::string_view text);
+void label_in_row(std::string_view text, ImU32 colour);
 // Same, in a colour (verdicts, warnings).
 void label(std::string_view text, ImU32 colour);
 // Wrapped at the panel's edge.

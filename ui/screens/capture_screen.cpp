@@ -178,13 +178,11 @@ void draw_shots(AppState& app) {
   const bool can_shoot = idle && c.camera != nullptr;
   if (shoot_button(app, "Shoot left", c.left.has_value(), can_shoot)) shoot(app, true);
   ImGui::SameLine();
-  ImGui::AlignTextToFramePadding();
-  label(std::string("Left: ") + shot_state(c.left, c.stored));
+  label_in_row(std::string("Left: ") + shot_state(c.left, c.stored));
   if (shoot_button(app, "Shoot right", c.right.has_value(), can_shoot && c.left.has_value()))
     shoot(app, false);
   ImGui::SameLine();
-  ImGui::AlignTextToFramePadding();
-  label(std::string("Right: ") + shot_state(c.right, c.stored));
+  label_in_row(std::string("Right: ") + shot_state(c.right, c.stored));
   const bool can_store = idle && c.left && c.right && !c.stored && app.session &&
                          app.session->visit() && !app.session->read_only();
   if (app.targets.button("Store pair and reconstruct", 0, can_store)) store_and_reconstruct(app);

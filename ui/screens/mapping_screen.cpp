@@ -160,8 +160,7 @@ void draw_controls(AppState& app) {
   // frame; traces mapped on any of them land in that frame.
   const auto& pairs = app.session->pairs();
   if (pairs.size() > 1) {
-    ImGui::AlignTextToFramePadding();
-    label("3D image:");
+    label_in_row("3D image:");
     for (std::size_t k = 0; k < pairs.size(); ++k) {
       const std::string name = "Pair " + std::to_string(k + 1);
       same_line_if_fits(button_width(name, app.targets.target_px()));
@@ -192,8 +191,7 @@ void draw_controls(AppState& app) {
   const bool can_save =
       idle && marker.points().size() >= 2 && app.session->visit() && !app.session->read_only();
   if (app.targets.button_in_row("Save trace", can_save)) save_trace(app);
-  ImGui::AlignTextToFramePadding();
-  label("Joint:");
+  label_in_row("Joint:");
   std::vector<std::string> labels{""};
   for (const auto& j : app.session->joints()) labels.push_back(j.label);
   for (const auto& joint : labels) {

@@ -28,8 +28,7 @@ std::vector<fs::path> projects_in(const fs::path& folder) {
 }
 
 void draw_theme_choice(AppState& app) {
-  ImGui::AlignTextToFramePadding();
-  label("Screen:");
+  label_in_row("Screen:");
   for (const Theme t : {Theme::daylight, Theme::tunnel}) {
     const bool on = app.settings.theme == t;
     const std::string name = t == Theme::daylight ? "Daylight" : "Tunnel (dark)";
