@@ -34,6 +34,9 @@ void UiDriver::tap(const std::string& label, const std::string& where) {
   const auto target = state().targets.find(label);
   if (!target) throw InputError(where, "nothing labelled \"" + label + "\" on the screen");
   if (!target->enabled) throw InputError(where, "\"" + label + "\" is disabled on the screen");
+  // A finger cannot tap what is scrolled out of view.
+  if (!target->visible)
+    throw InputError(where, "\"" + label + "\" is scrolled out of view on the screen");
   const ImVec2 c = target->centre();
   tap(c.x, c.y);
 }

@@ -80,7 +80,7 @@ bool TouchTargets::button(const std::string& label, float width, bool enabled) {
   // The visible label is what a script names (ImGui's "##id" suffix is not).
   const std::string name = label.substr(0, label.find("##"));
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  rects_[name] = {min, max, enabled, true};
+  rects_[name] = {min, max, enabled, true, ImGui::IsItemVisible()};
   // The label must fit the button and the button the panel.
   const float needed = ImGui::CalcTextSize(name.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
   const float drawn = max.x - min.x;

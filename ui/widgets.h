@@ -42,6 +42,7 @@ struct TargetRect {
   ImVec2 min, max;
   bool enabled = true;
   bool button = false;  // drawn by button(): a touch target of its own
+  bool visible = true;  // not scrolled out of its panel's view
   ImVec2 centre() const { return {(min.x + max.x) / 2, (min.y + max.y) / 2}; }
 };
 

@@ -104,17 +104,8 @@ void draw_visit(const ProjectSession& s) {
     paragraph("No 3D image of this visit yet (Capture).");
 }
 
-}  // namespace
-
-void draw_project_screen(AppState& app) {
-  draw_theme_choice(app);
-  ImGui::Separator();
-  if (!app.session) {
-    draw_chooser(app);
-    return;
-  }
-  ProjectSession& s = *app.session;
-  heading(s.info().name);
+// The project, its visits and the visit chosen; true when it was closed.
+bool draw_project(AppState& app, ProjectSession& s) {
   // The file's name, never its folder: a machine's path means nothing at
   // the face and must not end up in screenshots.
   note("File " + s.file().filename().string() +
@@ -145,7 +136,7 @@ void draw_project_screen(AppState& app) {
     app.mapping = {};
     app.capture.left.reset();
     app.capture.right.reset();
-    return;
+    return true;
   }
   ImGui::Separator();
   heading(format::count(static_cast<std::int64_t>(s.visits().size()), "visit", "visits"));
@@ -169,8 +160,30 @@ void draw_project_screen(AppState& app) {
     ImGui::Separator();
     draw_visit(s);
   }
+  return false;
+}
+
+}  // namespace
+
+void draw_project_screen(AppState& app) {
+  draw_theme_choice(app);
+  ImGui::Separator();
+  if (!app.session) {
+    draw_chooser(app);
+    return;
+  }
+  ProjectSession& s = *app.session;
+  // The project and its visits; the tunnel and the office beside them
+  // (below in portrait), so that a landscape tablet shows both unscrolled.
+  const SplitLayout layout = split_for_side_panel(ImGui::GetContentRegionAvail().x * 0.45f, 0.45f);
+  ImGui::BeginChild("project visits", layout.main);
+  const bool closed = draw_project(app, s);
+  ImGui::EndChild();
+  if (closed) return;
+  begin_side_panel("project tunnel and office", layout);
   draw_tunnel_panel(app);
   draw_office_panel(app);
+  ImGui::EndChild();
 }
 
 }  // namespace rockface::ui
