@@ -106,6 +106,7 @@ void draw_visit(const ProjectSession& s) {
 
 // The project, its visits and the visit chosen; true when it was closed.
 bool draw_project(AppState& app, ProjectSession& s) {
+  heading(s.info().name);
   // The file's name, never its folder: a machine's path means nothing at
   // the face and must not end up in screenshots.
   note("File " + s.file().filename().string() +
@@ -120,6 +121,7 @@ bool draw_project(AppState& app, ProjectSession& s) {
   }
   if (app.targets.button_in_row("New visit", idle && !s.read_only())) {
     s.begin_visit();
+    app.status_visit = s.visit();  // this message is about the new visit
     app.say("Visit " + std::to_string(*s.visit()) + " started: take its stereo pair (Capture).");
   }
   // Closing loses an unsaved trace's taps and unstored shots: asked then.
