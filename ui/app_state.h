@@ -21,9 +21,11 @@
 #include "ui/project_session.h"
 #include "ui/proposals_view.h"
 #include "ui/rockmass_view.h"
+#include "ui/status_lines.h"
 #include "ui/touch_input.h"
 #include "ui/trace_marker.h"
 #include "ui/tunnel_panel.h"
+#include "ui/ui_settings.h"
 #include "ui/wedges_view.h"
 #include "ui/widgets.h"
 
@@ -39,6 +41,11 @@ struct UiOptions {
   // Triangles the model view draws at most (the stored model is decimated
   // for display; picking and measuring use the stored model).
   std::size_t max_display_triangles = 400000;
+  // Issue 27: the tablet's pixel density (0: kScaleOneDpi x scale, the
+  // density the scale stands for; a window takes its screen's) and the
+  // file the tablet's settings are remembered in (empty: not remembered).
+  float dpi = 0;
+  std::filesystem::path settings_file;
 };
 
 // The camera of the Capture screen and the shots of the pair being taken.
@@ -77,13 +84,24 @@ struct AppState {
   RockMassState rockmass;                     // the Blocks screen's Rock mass view
   std::optional<std::size_t> selected_block;  // index into session->blocks()
   MotionPlayback motion;                      // the selected block's motion after failure
-  std::string status;                         // last message for the status bar
   std::string new_project_name = "site";
   TouchGesture gesture;  // this frame's two-finger gesture
   // The Model screen's left photograph with the detected pole targets
   // (issue 27), shown in place of the 3D image when chosen.
   PhotoTargetsView photo_targets;
   bool show_photograph = false;
+
+  // Issue 27: each screen's status line; the look, remembered per tablet.
+  StatusLines statuses;                           // ui/status_lines.h, by Screen
+  Screen task_screen = Screen::project;           // the screen that started the running task
+  std::size_t tasks_noted = 0;                    // BackgroundTask::started() when last noted
+  UiSettings settings;                            // theme (ui/ui_settings.h)
+  std::optional<Theme> theme_wanted;              // applied between two frames
+  std::optional<storage::RecordId> status_visit;  // the visit the messages are about
+  // On the current screen's status line: a message, or an error that stays
+  // until tapped.
+  void say(std::string text);
+  void fail(std::string text);
 
   // Opens a project and loads its model on the worker; errors go to status.
   void open_project(const std::filesystem::path& file);

@@ -32,9 +32,11 @@ bool BackgroundTask::start(std::string title, Work work, Then then) {
   then_ = std::move(then);
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    status_ = TaskStatus{true, false, title, "starting", 0};
+    status_ = TaskStatus{true, false, title, "starting", 0, 0};
     outcome_.reset();
+    started_at_ = std::chrono::steady_clock::now();
   }
+  ++started_;
   cancel_ = false;
   running_ = true;
   thread_ = std::thread([this, title = std::move(title), work = std::move(work)] {
@@ -69,7 +71,11 @@ void BackgroundTask::cancel() {
 
 TaskStatus BackgroundTask::status() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return status_;
+  TaskStatus out = status_;
+  if (out.running)
+    out.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started_at_).count();
+  return out;
 }
 
 std::optional<TaskOutcome> BackgroundTask::take_outcome() {

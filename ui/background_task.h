@@ -5,6 +5,8 @@
 // One task at a time; the worker reports through rockface::Progress and
 // stops at its next step() after cancel().
 #include <atomic>
+#include <chrono>
+#include <cstddef>
 #include <functional>
 #include <mutex>
 #include <optional>
@@ -21,6 +23,7 @@ struct TaskStatus {
   std::string title;  // "Analysis"
   std::string stage;  // last stage the work reported
   double fraction = 0;
+  double seconds = 0;  // since the task started
 };
 
 struct TaskOutcome {
@@ -48,6 +51,9 @@ class BackgroundTask {
   void cancel();
   TaskStatus status() const;
   bool running() const { return running_.load(); }
+  // How many tasks were started so far: the UI notes which screen started
+  // the latest (its outcome is said on that screen's status line).
+  std::size_t started() const { return started_.load(); }
   // The outcome of the last task, once, after running its `then`.
   std::optional<TaskOutcome> take_outcome();
   // Blocks until the running task (if any) has finished: headless scripts
@@ -62,6 +68,8 @@ class BackgroundTask {
   std::thread thread_;
   std::atomic<bool> running_{false};
   std::atomic<bool> cancel_{false};
+  std::atomic<std::size_t> started_{0};
+  std::chrono::steady_clock::time_point started_at_;
   TaskStatus status_;
   std::optional<TaskOutcome> outcome_;
   Then then_;

@@ -11,12 +11,13 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "ui/block_verdict.h"
+#include "ui/format.h"
 
 namespace rockface::ui {
 
 namespace {
 
-std::string format(const char* fmt, double a, double b = 0, double c = 0) {
+std::string printed(const char* fmt, double a, double b = 0, double c = 0) {
   char buf[160];
   std::snprintf(buf, sizeof buf, fmt, a, b, c);
   return buf;
@@ -60,13 +61,14 @@ void add_mode(std::vector<std::string>& lines, const storage::BlockResult& b,
     if (!planes.empty()) line += " on " + planes;
     if (const auto d = vector3(*mode, "direction"); d && d->norm() > 0) {
       const auto o = geometry::line_orientation(*d);
-      line += format(", towards %03.0f / %.0f (trend / plunge)", rad_to_deg(o.trend),
-                     rad_to_deg(o.plunge));
+      line += ", towards " + format::azimuth(rad_to_deg(o.trend)) + " trend, " +
+              format::text(format::Angle{rad_to_deg(o.plunge)}) + " plunge";
     }
   }
   lines.push_back(line);
   if (b.fos) {
-    std::string fos = format("Factor of safety %.2f (limit equilibrium", *b.fos);
+    std::string fos =
+        "Factor of safety " + format::text(format::FactorOfSafety{*b.fos}) + " (limit equilibrium";
     fos += *b.fos < 1 ? "): it slides" : ")";
     lines.push_back(fos);
   }
@@ -92,7 +94,8 @@ void add_rotation(std::vector<std::string>& lines, const nlohmann::json& report)
   std::string line = "Rotation: " + std::to_string(corners_free) + " of " +
                      std::to_string(corners) + " corners and " + std::to_string(edges_free) +
                      " of " + std::to_string(edges) + " edges can rotate";
-  if (least_margin) line += format(" (least corner margin %.1f deg)", *least_margin);
+  if (least_margin)
+    line += " (least corner margin " + format::text(format::Angle{*least_margin}) + ")";
   lines.push_back(line);
 }
 
@@ -104,7 +107,7 @@ void add_remote_axis(std::vector<std::string>& lines, const nlohmann::json& repo
   if (starts && *starts == 0)
     line = "Remote axis: not searched, the block already rotates about a corner or an edge";
   else if (starts && hits)
-    line += format(" (%.0f of %.0f starts)", *hits, *starts);
+    line += printed(" (%.0f of %.0f starts)", *hits, *starts);
   lines.push_back(line);
 }
 
@@ -113,7 +116,7 @@ void add_mechanics(std::vector<std::string>& lines, const nlohmann::json& report
   if (!m) return;
   std::string line = "Equilibrium path: ";
   if (const auto fos = number(*m, "fos_limit_point"))
-    line += format("limit point at load factor %.2f", *fos);
+    line += printed("limit point at load factor %.2f", *fos);
   else if (const auto* outcome = field(*m, "outcome"); outcome && outcome->is_string())
     line += outcome->get<std::string>();  // e.g. "no limit point within the step budget"
   else
@@ -136,20 +139,25 @@ std::vector<std::string> block_summary(const storage::BlockResult& b,
   if (!b.source.empty()) what += ", from " + b.source;
   lines.push_back(what);
   if (const auto margin = number(report, "margin_deg"))
-    lines.push_back(format("Margin %.1f deg", *margin));
+    lines.push_back("Margin " + format::text(format::Angle{*margin}));
   add_mode(lines, b, report);
   const auto volume = number(report, "volume"), mass = number(report, "mass");
   if (volume && mass)
-    lines.push_back(format("Volume %.3f m3, mass %.2f t", *volume, *mass / 1000.0));
+    lines.push_back("Volume " + format::text(format::Volume{*volume}) +
+                    printed(", mass %.2f t", *mass / 1000.0));
   else if (volume)
-    lines.push_back(format("Volume %.3f m3", *volume));
+    lines.push_back("Volume " + format::text(format::Volume{*volume}));
   add_rotation(lines, report);
   add_remote_axis(lines, report);
   add_mechanics(lines, report);
   if (const auto* areas = field(report, "face_areas"); areas && areas->is_object()) {
-    std::string line = "Faces (m2):";
+    std::string line = "Face areas:";
+    std::string sep = " ";
     for (const auto& [name, area] : areas->items())
-      if (area.is_number()) line += " " + name + format(" %.2f", area.get<double>());
+      if (area.is_number()) {
+        line += sep + name + " " + format::text(format::Area{area.get<double>()});
+        sep = ", ";
+      }
     lines.push_back(line);
   }
   return lines;

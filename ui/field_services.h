@@ -190,6 +190,17 @@ class ProposalRunner {
   virtual measure::ProposalResult propose(const ProposalInput& input, Progress& progress) = 0;
 };
 
+// Issue 27: the field report of a visit, written from the tablet (the
+// Blocks screen's "Field report"), as `rockface report` writes it.
+class FieldReportRunner {
+ public:
+  virtual ~FieldReportRunner() = default;
+  // Writes the PDF; returns what it holds in words ("3 blocks, 2 joints").
+  // Throws rockface::Error saying why (no such visit, cannot write).
+  virtual std::string write(const std::filesystem::path& project, storage::RecordId visit_id,
+                            const std::filesystem::path& pdf, Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
@@ -200,6 +211,8 @@ struct FieldServices {
   SyncRunner* sync = nullptr;                      // null: no office server on this tablet
   RockMassRunner* rockmass = nullptr;              // null: the Blocks screen shows no rock mass
   ProposalRunner* proposals = nullptr;             // null: the Mapping screen proposes no traces
+  // Issue 27.
+  FieldReportRunner* field_report = nullptr;  // null: no Field report button
 };
 
 }  // namespace rockface::ui

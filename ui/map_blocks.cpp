@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "ui/app_state.h"
+#include "ui/format.h"
 #include "ui/widgets.h"
 
 namespace rockface::ui {
@@ -139,26 +140,31 @@ void draw_map_blocks_panel(AppState& app) {
   if (!app.services.trace_map) return;
   const MapBlocksState& m = app.mapping.blocks;
   ImGui::Separator();
-  ImGui::TextUnformatted("Blocks on the map");
+  heading("Blocks on the map");
   if (!m.problem.empty()) {
-    ImGui::TextWrapped("No blocks: %s", m.problem.c_str());
+    paragraph("No blocks: " + m.problem);
     return;
   }
   if (!m.verdicts) {
-    ImGui::TextWrapped("Updating after the last trace ...");
+    paragraph("Updating after the last trace …");
     return;
   }
   const MapVerdicts& v = *m.verdicts;
-  ImGui::TextWrapped("%s, from %d traces.", blocks_in_words(v).c_str(), v.traces);
-  ImGui::TextWrapped("Updated in %.0f ms (%d of %d regions computed again).", v.milliseconds,
-                     v.recomputed, v.recomputed + v.reused);
+  paragraph(blocks_in_words(v) + ", from " + format::count(v.traces, "trace", "traces") + ".");
+  note("Updated in " + format::text(format::Duration{v.milliseconds / 1000}) + " (" +
+       format::count(v.recomputed) + " of " +
+       format::count(v.recomputed + v.reused, "region", "regions") + " computed again).");
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
-                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
+                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
   const float rows = std::min<float>(6.5f, 1.5f + static_cast<float>(v.blocks.size()));
   if (ImGui::BeginTable("map blocks", 4, flags,
                         ImVec2(0, rows * ImGui::GetTextLineHeightWithSpacing()))) {
     ImGui::TableSetupScrollFreeze(0, 1);
-    for (const char* h : {"block", "verdict", "mode", "FoS"}) ImGui::TableSetupColumn(h);
+    // Weights, not content: a shortened cell must not shrink its column.
+    ImGui::TableSetupColumn("Block", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("Verdict (margin)", ImGuiTableColumnFlags_WidthStretch, 2.4f);
+    ImGui::TableSetupColumn("Mode", ImGuiTableColumnFlags_WidthStretch, 1.4f);
+    ImGui::TableSetupColumn("FoS", ImGuiTableColumnFlags_WidthStretch, 0.9f);
     ImGui::TableHeadersRow();
     int number = 0;
     for (const auto& b : v.blocks) {
@@ -166,22 +172,21 @@ void draw_map_blocks_panel(AppState& app) {
       if (b.verdict == BlockVerdict::infinite) continue;
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::Text("TB%d", number);
+      label("TB" + std::to_string(number));
       ImGui::TableNextColumn();
-      ImGui::PushStyleColor(ImGuiCol_Text, verdict_colour(b.verdict));
-      ImGui::Text("%s (%.1f°)", verdict_name(b.verdict), b.margin_deg);
-      ImGui::PopStyleColor();
+      label(std::string(verdict_name(b.verdict)) + " (" +
+                format::text(format::Angle{b.margin_deg}) + ")",
+            verdict_text_colour(b.verdict));
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(b.mode.c_str());
+      label(b.mode);
       ImGui::TableNextColumn();
-      if (b.factor_of_safety && std::isfinite(*b.factor_of_safety))
-        ImGui::Text("%.2f", *b.factor_of_safety);
-      else
-        ImGui::TextUnformatted("-");
+      label(b.factor_of_safety && std::isfinite(*b.factor_of_safety)
+                ? format::text(format::FactorOfSafety{*b.factor_of_safety})
+                : format::unknown());
     }
     ImGui::EndTable();
   }
-  for (const auto& n : v.notes) ImGui::TextWrapped("%s", n.c_str());
+  for (const auto& n : v.notes) note(n);
 }
 
 }  // namespace rockface::ui

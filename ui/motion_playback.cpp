@@ -93,7 +93,7 @@ void draw_motion_controls(AppState& app, const BlockView& block) {
     }
   }
   ImGui::Separator();
-  ImGui::TextWrapped("Motion after failure (%s)", d.trigger.c_str());
+  paragraph("Motion after failure (" + d.trigger + ")");
   if (app.targets.button(m.playing ? "Pause motion" : "Play motion")) {
     if (!m.playing && m.time >= end) m.time = 0;
     m.playing = !m.playing;
@@ -106,7 +106,7 @@ void draw_motion_controls(AppState& app, const BlockView& block) {
     m.playing = false;
   }
   app.targets.record("motion time", ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
-  for (const auto& e : d.events) ImGui::BulletText("%s", storage::event_text(e).c_str());
+  for (const auto& e : d.events) bullet(storage::event_text(e));
 }
 
 }  // namespace rockface::ui

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include "ui/app_state.h"
+#include "ui/format.h"
 
 namespace rockface::ui {
 
@@ -54,32 +55,32 @@ void draw_office_panel(AppState& app) {
   reload(app);
   OfficeState& o = app.office;
   ImGui::Separator();
-  ImGui::TextUnformatted("Office server");
+  heading("Office server");
   if (app.session->read_only()) {
-    ImGui::TextDisabled("A read-only project is not synced.");
+    note("A read-only project is not synced.");
     return;
   }
   if (!o.error.empty())
-    ImGui::TextWrapped("The sync record could not be read: %s", o.error.c_str());
+    paragraph("The sync record could not be read: " + o.error, warning_colour());
   if (o.overview) {
     const SyncOverview& v = *o.overview;
-    ImGui::Text("Syncs to %s%s%s", v.server.c_str(), v.tunnel.empty() ? "" : ", tunnel ",
-                v.tunnel.c_str());
+    paragraph("Syncs to " + v.server + (v.tunnel.empty() ? "" : ", tunnel " + v.tunnel));
     if (v.ever_synced)
-      ImGui::Text(
-          "Last sync: %s  %s",
-          v.last_sync_at.empty() ? "not completed yet" : v.last_sync_at.substr(0, 16).c_str(),
-          v.last_outcome.c_str());
+      paragraph("Last sync: " +
+                (v.last_sync_at.empty() ? std::string("not completed yet")
+                                        : format::date_time(v.last_sync_at)) +
+                (v.last_outcome.empty() ? "" : ", " + v.last_outcome));
     else
-      ImGui::TextUnformatted("Never synced.");
+      label("Never synced.");
     if (v.records_waiting == 0)
-      ImGui::TextUnformatted("Nothing waits to go up.");
+      label("Nothing waits to go up.");
     else
-      ImGui::Text("Waiting to go up: %d records of %d visits", v.records_waiting, v.visits_waiting);
+      paragraph("Waiting to go up: " + format::count(v.records_waiting, "record", "records") +
+                " of " + format::count(v.visits_waiting, "visit", "visits"));
   }
   const bool idle = !app.task.running();
   if (app.targets.button("Sync", 0, idle)) start_sync(app);
-  for (const auto& line : o.lines) ImGui::TextWrapped("%s", line.c_str());
+  for (const auto& line : o.lines) paragraph(line);
 }
 
 }  // namespace rockface::ui

@@ -58,31 +58,34 @@ void number(AppState& app, const char* label, const char* unit, std::optional<do
   ImGui::SameLine();
   if (value) {
     ImGui::SetNextItemWidth(120 * app.targets.scale());
-    ImGui::InputDouble(label, &*value, 0, 0, "%.3g");
+    ImGui::InputDouble("##value", &*value, 0, 0, "%.3g");
     ImGui::SameLine();
-    ImGui::TextDisabled("%s", unit);
+    ui::label(std::string(label) + (*unit ? std::string(" (") + unit + ")" : ""));
   } else {
-    ImGui::TextDisabled("%s: not entered", label);
+    ui::label(std::string(label) + ": not entered", ImGui::GetColorU32(ImGuiCol_TextDisabled));
   }
   ImGui::PopID();
 }
 
 // One choice of the form among the sheet's words, or "not entered".
 template <class E>
-void choice(const char* label, std::optional<E>& value, const std::vector<std::string>& words) {
+void choice(const char* title, std::optional<E>& value, const std::vector<std::string>& words) {
   const std::string shown = value ? words[static_cast<int>(*value)] : "not entered";
-  if (ImGui::BeginCombo(label, shown.c_str())) {
+  label(title);
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo((std::string("##") + title).c_str(), shown.c_str())) {
     if (ImGui::Selectable("not entered", !value)) value.reset();
     for (std::size_t i = 0; i < words.size(); ++i)
       if (ImGui::Selectable(words[i].c_str(), value && static_cast<std::size_t>(*value) == i))
         value = static_cast<E>(i);
     ImGui::EndCombo();
   }
+  record_drawn_text(shown, ImGui::CalcTextSize(shown.c_str()).x, ImGui::GetItemRectSize().x);
 }
 
 void draw_form(AppState& app) {
   rockmass::ClassificationForm& f = app.rockmass.form;
-  ImGui::TextDisabled("RMR89: intact rock, joint condition, groundwater");
+  note("RMR89: intact rock, joint condition, groundwater");
   number(app, "UCS", "MPa", f.ucs_mpa, 100);
   number(app, "Is50", "MPa", f.is50_mpa, 4);
   number(app, "aperture", "mm", f.aperture_mm, 0.5);
@@ -94,7 +97,7 @@ void draw_form(AppState& app) {
   choice("groundwater", f.groundwater, rockmass::groundwater_words());
   number(app, "inflow per 10 m (instead)", "l/min", f.inflow_l_per_min, 0);
   choice("orientation (without a tunnel)", f.orientation, rockmass::orientation_words());
-  ImGui::TextDisabled("Q: Barton 2002 tables");
+  note("Q: Barton 2002 tables");
   number(app, "Jr", "", f.jr, 1.5);
   number(app, "Ja", "", f.ja, 1);
   number(app, "Jw", "", f.jw, 1);
@@ -107,15 +110,14 @@ void draw_form(AppState& app) {
 
 void draw_rockmass_view(AppState& app) {
   if (!app.session || !app.session->visit()) {
-    ImGui::TextWrapped("Open a project with a visit first.");
+    paragraph("Open a project with a visit first.");
     return;
   }
   reload(app);
   RockMassState& r = app.rockmass;
   const bool idle = !app.task.running() && app.services.rockmass;
   if (app.targets.button("Rock mass figures", 0, idle)) compute(app, std::nullopt);
-  ImGui::SameLine();
-  if (app.targets.button("Save form", 0, idle && !app.session->read_only())) {
+  if (app.targets.button_in_row("Save form", idle && !app.session->read_only())) {
     // Refused by name here, before the worker: the geologist sees at once
     // which value is off its table.
     try {
@@ -127,11 +129,9 @@ void draw_rockmass_view(AppState& app) {
     }
   }
   if (!r.refusal.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(230, 60, 40, 255));
-    ImGui::TextWrapped("Refused: %s", r.refusal.c_str());
-    ImGui::PopStyleColor();
+    paragraph("Refused: " + r.refusal, warning_colour());
   }
-  for (const auto& line : r.lines) ImGui::TextWrapped("%s", line.c_str());
+  for (const auto& line : r.lines) paragraph(line);
   if (ImGui::CollapsingHeader("Entered on site (form)", ImGuiTreeNodeFlags_DefaultOpen))
     draw_form(app);
 }

@@ -2,12 +2,21 @@
 
 #include <GLES3/gl3.h>
 
+#include <algorithm>
+
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
+#include "ui/format.h"
 #include "ui/screens/screens.h"
 
 namespace rockface::ui {
+
+namespace {
+// The task that loads the visit's 3D image for display: said on the Model
+// screen only.
+constexpr const char* kLoadingTitle = "Loading the 3D image";
+}  // namespace
 
 const char* screen_name(Screen screen) {
   switch (screen) {
@@ -25,16 +34,26 @@ const char* screen_name(Screen screen) {
   return "?";
 }
 
+void AppState::say(std::string text) {
+  statuses.say(static_cast<std::size_t>(screen), std::move(text));
+}
+
+void AppState::fail(std::string text) {
+  statuses.error(static_cast<std::size_t>(screen), std::move(text));
+}
+
 void AppState::open_project(const std::filesystem::path& file) {
   try {
     session = ProjectSession::open(file);
     model_view.clear();
     selected_block.reset();
     mapping = {};
-    status = "opened " + file.string();
-    if (session->read_only()) status += " (read-only: " + session->read_only_reason() + ")";
+    // The file's name only: its folders are the machine's business.
+    std::string text = "Opened " + format::file_name(file.string());
+    if (session->read_only()) text += " (read-only: " + session->read_only_reason() + ")";
+    say(text);
   } catch (const std::exception& e) {
-    status = e.what();
+    fail(e.what());
   }
 }
 
@@ -42,11 +61,18 @@ TabletApp::TabletApp(UiOptions options, FieldServices services) {
   state_.options = std::move(options);
   state_.services = services;
   state_.targets.set_scale(state_.options.scale);
+  state_.targets.set_dpi(state_.options.dpi > 0 ? state_.options.dpi
+                                                : kScaleOneDpi * state_.options.scale);
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the layout is fixed; nothing to remember
   io.ConfigFlags |= ImGuiConfigFlags_IsTouchScreen;
-  apply_daylight_theme(state_.options.scale);
+  try {
+    state_.settings = load_ui_settings(state_.options.settings_file);
+  } catch (const std::exception& e) {
+    state_.statuses.error(static_cast<std::size_t>(Screen::project), e.what());
+  }
+  apply_theme(state_.settings.theme, state_.options.scale, state_.targets.target_px());
   ImGui_ImplOpenGL3_Init("#version 300 es");
   if (!state_.options.project.empty()) {
     state_.open_project(state_.options.project);
@@ -69,6 +95,13 @@ void TabletApp::build_frame(TouchInput& input, int width, int height, float seco
   io.DeltaTime = seconds_since_last > 0 ? seconds_since_last : 1.0f / 60;
   input.apply(io);
   state_.gesture = input.gesture();
+  if (state_.theme_wanted) {
+    // A new font atlas and its GL texture, between two frames.
+    apply_theme(*state_.theme_wanted, state_.options.scale, state_.targets.target_px());
+    ImGui_ImplOpenGL3_DestroyFontsTexture();
+    ImGui_ImplOpenGL3_CreateFontsTexture();
+    state_.theme_wanted.reset();
+  }
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();
   build();
@@ -78,7 +111,8 @@ void TabletApp::build_frame(TouchInput& input, int width, int height, float seco
 void TabletApp::draw() {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   glViewport(0, 0, static_cast<int>(size.x), static_cast<int>(size.y));
-  glClearColor(1, 1, 1, 1);
+  const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+  glClearColor(bg.x, bg.y, bg.z, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
@@ -86,7 +120,12 @@ void TabletApp::draw() {
 void TabletApp::keep_model_loaded() {
   // Take what the worker finished (runs its `then` here, on the UI thread).
   if (const auto outcome = state_.task.take_outcome()) {
-    state_.status = outcome->title + ": " + outcome->message;
+    const auto where = static_cast<std::size_t>(state_.task_screen);
+    const std::string text = outcome->title + ": " + outcome->message;
+    if (outcome->kind == TaskOutcome::Kind::failed)
+      state_.statuses.error(where, text);
+    else if (outcome->title != kLoadingTitle || where == static_cast<std::size_t>(Screen::model))
+      state_.statuses.say(where, text);
   }
   if (!state_.session || state_.task.running()) return;
   const auto& wanted = state_.session->model();
@@ -96,21 +135,31 @@ void TabletApp::keep_model_loaded() {
   const std::size_t budget = state_.options.max_display_triangles;
   auto prepared = std::make_shared<PreparedModel>();
   state_.task.start(
-      "Loading model",
+      kLoadingTitle,
       [file, id, budget, prepared](Progress& progress) {
         progress.step("reading the model", 0.1);
         *prepared = prepare_model(file, id, budget);
-        return "model " + std::to_string(id) + " loaded";
+        return "3D image " + std::to_string(id) + " loaded";
       },
       [this, prepared](const TaskOutcome& outcome) {
         if (outcome.kind == TaskOutcome::Kind::done)
           state_.model_view.install(std::move(*prepared));
       });
+  // The model is the Model screen's business, whichever screen is open.
+  state_.task_screen = Screen::model;
+  state_.tasks_noted = state_.task.started();
 }
 
 void TabletApp::build() {
   state_.targets.begin_frame();
+  clear_drawn_text();
   keep_model_loaded();
+  // Messages about another visit would mislead: they go with it.
+  const auto visit = state_.session ? state_.session->visit() : std::nullopt;
+  if (visit != state_.status_visit) {
+    if (state_.status_visit) state_.statuses.clear_messages();
+    state_.status_visit = visit;
+  }
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(viewport->Pos);
   ImGui::SetNextWindowSize(viewport->Size);
@@ -118,8 +167,9 @@ void TabletApp::build() {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
   draw_tabs();
-  const float status_height =
-      kTouchTargetPx * state_.options.scale + 2 * ImGui::GetStyle().ItemSpacing.y;
+  float status_height = state_.targets.target_px() + 2 * ImGui::GetStyle().ItemSpacing.y;
+  if (state_.session && state_.session->read_only())
+    status_height += ImGui::GetTextLineHeightWithSpacing();
   ImGui::BeginChild("screen", ImVec2(0, -status_height));
   switch (state_.screen) {
     case Screen::project:
@@ -139,47 +189,80 @@ void TabletApp::build() {
       break;
   }
   ImGui::EndChild();
+  // A task started while drawing this screen: its outcome is said here.
+  if (state_.task.started() != state_.tasks_noted) {
+    state_.tasks_noted = state_.task.started();
+    state_.task_screen = state_.screen;
+  }
   draw_status_bar();
   ImGui::End();
 }
 
 void TabletApp::draw_tabs() {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  // Five tabs share the width (portrait too), each at least a touch target.
+  const float room = ImGui::GetContentRegionAvail().x;
+  const float tab =
+      std::max(state_.targets.target_px(),
+               std::min(150 * state_.options.scale, (room - 4 * style.ItemSpacing.x) / 5));
+  bool first = true;
   for (Screen s :
        {Screen::project, Screen::capture, Screen::model, Screen::mapping, Screen::blocks}) {
+    if (!first) same_line_if_fits(tab);
+    first = false;
     const bool current = s == state_.screen;
     if (current)
       ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    if (state_.targets.button(screen_name(s), 150 * state_.options.scale)) state_.screen = s;
+    if (state_.targets.button(screen_name(s), tab)) state_.screen = s;
     if (current) ImGui::PopStyleColor();
-    ImGui::SameLine();
   }
-  if (state_.session)
-    ImGui::Text("%s", state_.session->info().name.c_str());
-  else
-    ImGui::NewLine();
+  // The project's name at the right of the tabs (below them when they fill
+  // the line): shortened to its place, the whole name one tap away.
+  if (state_.session) {
+    const std::string name = state_.session->info().name;
+    const float wanted = std::min(ImGui::CalcTextSize(name.c_str()).x, 12 * ImGui::GetFontSize());
+    same_line_if_fits(wanted);
+    label_in_row(name);
+  }
   ImGui::Separator();
 }
 
 void TabletApp::draw_status_bar() {
   ImGui::Separator();
+  const float s = state_.options.scale;
   if (state_.session && state_.session->read_only()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(200, 0, 0, 255));
-    ImGui::Text("Read-only: %s", state_.session->read_only_reason().c_str());
-    ImGui::PopStyleColor();
-    state_.targets.record("read-only notice", ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    label("Read-only: " + state_.session->read_only_reason(), warning_colour());
+    state_.targets.record("read-only notice", at, ImGui::GetItemRectMax());
+  }
+  const auto here = static_cast<std::size_t>(state_.screen);
+  const auto& errors = state_.statuses.errors(here);
+  if (!errors.empty()) {
+    // An error stays until read: "OK" (a touch target) puts it away.
+    if (state_.targets.button("OK##errors")) state_.statuses.dismiss(here);
     ImGui::SameLine();
+    std::string text = errors.back();
+    if (errors.size() > 1)
+      text =
+          format::count(static_cast<std::int64_t>(errors.size()), "error", "errors") + ": " + text;
+    label_in_row(text, warning_colour());  // shortened: the whole one tap away
+    return;
   }
   const TaskStatus status = state_.task.status();
   if (status.running) {
-    if (state_.targets.button("Cancel", 160 * state_.options.scale, !status.cancelling))
-      state_.task.cancel();
+    if (state_.targets.button("Cancel", 160 * s, !status.cancelling)) state_.task.cancel();
     ImGui::SameLine();
-    const std::string text =
-        status.title + ": " + status.stage + (status.cancelling ? " (cancelling)" : "");
-    ImGui::ProgressBar(static_cast<float>(status.fraction),
-                       ImVec2(-1, kTouchTargetPx * state_.options.scale), text.c_str());
+    std::string text = status.title + ": " + status.stage + " (" +
+                       format::text(format::Fraction{status.fraction}) + ", " +
+                       format::text(format::Duration{status.seconds}) + ")";
+    if (status.cancelling) text += ", cancelling";
+    const float room = ImGui::GetContentRegionAvail().x;
+    text = shortened(text, room - 2 * ImGui::GetStyle().FramePadding.x);
+    ImGui::ProgressBar(static_cast<float>(status.fraction), ImVec2(-1, state_.targets.target_px()),
+                       text.c_str());
+    record_drawn_text(text, ImGui::CalcTextSize(text.c_str()).x, room);
   } else {
-    ImGui::TextWrapped("%s", state_.status.c_str());
+    label_in_row(state_.statuses.message(here));
   }
 }
 

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "ui/app_state.h"
+#include "ui/format.h"
 
 namespace rockface::ui {
 
@@ -97,21 +98,21 @@ void draw_typed_placement(AppState& app) {
   TunnelState& t = app.tunnel;
   if (t.record && !t.record->stations.empty() && t.typed_chainage == 0)
     t.typed_chainage = t.record->stations.front().chainage;
-  const float w = 150 * app.targets.scale();
-  ImGui::TextWrapped("Range pole's lower target (m):");
-  ImGui::SetNextItemWidth(w);
-  ImGui::InputDouble("chainage", &t.typed_chainage, 0.1, 1.0, "%.2f");
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(w);
-  ImGui::InputDouble("offset right", &t.typed_offset, 0.1, 1.0, "%.2f");
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(w);
-  ImGui::InputDouble("height above axis", &t.typed_height, 0.1, 1.0, "%.2f");
+  const float w = std::min(220 * app.targets.scale(), ImGui::GetContentRegionAvail().x * 0.5f);
+  paragraph("Where the range pole's lower target stands:");
+  for (auto [name, value] : {std::pair{"Chainage (m)", &t.typed_chainage},
+                             std::pair{"Offset right of the axis (m)", &t.typed_offset},
+                             std::pair{"Height above the axis (m)", &t.typed_height}}) {
+    ImGui::SetNextItemWidth(w);
+    ImGui::InputDouble((std::string("##") + name).c_str(), value, 0.1, 1.0, "%.2f");
+    ImGui::SameLine();
+    label(name);
+  }
   const bool can = !app.task.running() && app.services.tunnel && !app.session->read_only() &&
                    !app.session->pairs().empty() && app.session->measurements().empty();
   if (app.targets.button("Place this visit", 0, can)) place(app);
   if (!app.session->measurements().empty())
-    ImGui::TextDisabled("(placing moves the 3D image: only before mapping on it)");
+    note("(placing moves the 3D image: only before mapping on it)");
 }
 
 }  // namespace
@@ -122,34 +123,34 @@ void draw_tunnel_panel(AppState& app) {
   TunnelState& t = app.tunnel;
   ImGui::Separator();
   if (!t.record) {
-    ImGui::TextDisabled("No tunnel in this project (a replay of a scene with a tunnel adds one).");
-    for (const auto& line : t.lines) ImGui::TextWrapped("%s", line.c_str());
+    note("No tunnel in this project (a replay of a scene with a tunnel adds one).");
+    for (const auto& line : t.lines) paragraph(line);
     return;
   }
   const auto& r = *t.record;
   const std::string from = r.stations.empty() ? "?" : fixed(r.stations.front().chainage, 1);
   const std::string to = r.stations.empty() ? "?" : fixed(r.stations.back().chainage, 1);
-  ImGui::TextWrapped("Tunnel %s: chainage %s to %s m, drive %s", r.name.c_str(), from.c_str(),
-                     to.c_str(), tunnel::drive_name(r.drive));
-  ImGui::TextWrapped("Design profile %s m around, %s m2; underbreak tolerance %s cm",
-                     fixed(r.profile.perimeter(), 2).c_str(), fixed(r.profile.area(), 1).c_str(),
-                     fixed(r.underbreak_tolerance_m * 100, 0).c_str());
+  heading("Tunnel " + r.name);
+  paragraph("Chainage " + from + " to " + to + " m, drive " + tunnel::drive_name(r.drive));
+  paragraph("Design profile " + format::text(format::Length{r.profile.perimeter()}) + " around, " +
+            format::text(format::Area{r.profile.area()}) + "; underbreak tolerance " +
+            format::text(format::Length{r.underbreak_tolerance_m}));
   if (t.placement) {
     const auto& p = *t.placement;
-    ImGui::TextWrapped("This visit: face at chainage %s, %s m %s of the axis; placed by %s.",
-                       fixed(p.chainage, 2).c_str(), fixed(std::abs(p.offset_m), 2).c_str(),
-                       p.offset_m >= 0 ? "right" : "left", method_words(p.method));
-    if (p.rms_m) ImGui::TextWrapped("Target residual rms %s mm", fixed(*p.rms_m * 1000, 1).c_str());
+    paragraph("This visit: face at chainage " + fixed(p.chainage, 2) + " m, " +
+              format::text(format::Length{std::abs(p.offset_m)}) + " " +
+              (p.offset_m >= 0 ? "right" : "left") + " of the axis; placed by " +
+              method_words(p.method) + ".");
+    if (p.rms_m) paragraph("Target residual: " + format::text(format::Length{*p.rms_m}) + " rms");
   } else if (app.session->visit()) {
-    ImGui::TextWrapped("This visit is not placed in the tunnel yet.");
+    paragraph("This visit is not placed in the tunnel yet.");
     draw_typed_placement(app);
   }
   const bool idle = !app.task.running() && app.services.tunnel;
   if (app.targets.button("Excavation of this round", 0, idle && t.placement.has_value()))
     show(app, "excavation");
-  ImGui::SameLine();
-  if (app.targets.button("Sets along the drive", 0, idle)) show(app, "drive");
-  for (const auto& line : t.lines) ImGui::TextWrapped("%s", line.c_str());
+  if (app.targets.button_in_row("Sets along the drive", idle)) show(app, "drive");
+  for (const auto& line : t.lines) paragraph(line);
   t.picture.draw(ImGui::GetContentRegionAvail().x);
 }
 

@@ -1,5 +1,8 @@
 #include "ui/ui_driver.h"
 
+#include <algorithm>
+#include <chrono>
+
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
@@ -31,6 +34,9 @@ void UiDriver::tap(const std::string& label, const std::string& where) {
   const auto target = state().targets.find(label);
   if (!target) throw InputError(where, "nothing labelled \"" + label + "\" on the screen");
   if (!target->enabled) throw InputError(where, "\"" + label + "\" is disabled on the screen");
+  // A finger cannot tap what is scrolled out of view.
+  if (!target->visible)
+    throw InputError(where, "\"" + label + "\" is scrolled out of view on the screen");
   const ImVec2 c = target->centre();
   tap(c.x, c.y);
 }
@@ -99,12 +105,22 @@ ScriptRun run_ui_script(UiDriver& driver, const UiScript& script,
   driver.settle();  // the project given on the command line loads first
   for (std::size_t i = 0; i < script.steps.size(); ++i) {
     const ScriptStep& step = script.steps[i];
+    // A step counts on the screen it starts on (a tab's tap on the screen
+    // the finger left).
+    const std::string screen = screen_name(driver.state().screen);
+    auto use = std::find_if(out.screens.begin(), out.screens.end(),
+                            [&](const ScreenUse& u) { return u.screen == screen; });
+    if (use == out.screens.end()) use = out.screens.insert(out.screens.end(), {screen, 0, 0});
+    const auto started = std::chrono::steady_clock::now();
     driver.run(step, screenshots_dir, "steps[" + std::to_string(i) + "]");
+    use->seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (step.kind == ScriptStep::Kind::tap) ++use->taps;
     if (step.kind == ScriptStep::Kind::screenshot)
       out.screenshots.push_back(screenshots_dir / (step.label + ".png"));
   }
   driver.settle();
-  out.status = driver.state().status;
+  out.status = driver.state().statuses.line(static_cast<std::size_t>(driver.state().screen));
   return out;
 }
 

@@ -46,9 +46,19 @@ class UiDriver {
   void frames_until_input_consumed();
 };
 
+// What a script cost on each screen: the taps made there and the time
+// spent there (waiting for the worker included), in the order the screens
+// were first used.
+struct ScreenUse {
+  std::string screen;
+  int taps = 0;
+  double seconds = 0;
+};
+
 struct ScriptRun {
   std::vector<std::filesystem::path> screenshots;
   std::string status;  // the status bar at the end
+  std::vector<ScreenUse> screens;
 };
 
 // Runs a whole script on a driver. Throws InputError for a bad step; the

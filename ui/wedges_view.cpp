@@ -38,18 +38,18 @@ void find_wedges(AppState& app) {
 
 void draw_table(AppState& app, const WedgeTable& t) {
   const ImGuiTableFlags flags =
-      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame;
   if (!ImGui::BeginTable("wedges", static_cast<int>(t.columns.size()), flags)) return;
   for (const auto& c : t.columns) ImGui::TableSetupColumn(c.c_str());
   ImGui::TableHeadersRow();
-  const float row_height = kTouchTargetPx * app.targets.scale() * 0.6f;
+  const float row_height = app.targets.target_px();
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     ImGui::TableNextRow(0, row_height);
     if (i < t.marginal.size() && t.marginal[i])
       ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(255, 200, 120, 255));
     for (std::size_t c = 0; c < t.rows[i].size(); ++c) {
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(t.rows[i][c].c_str());
+      label(t.rows[i][c]);
       if (c == 0)
         app.targets.record("wedge " + t.rows[i][0], ImGui::GetItemRectMin(),
                            ImGui::GetItemRectMax());
@@ -71,27 +71,24 @@ void draw_wedges_view(AppState& app) {
     w.picture.clear();
   }
   const bool can = app.services.wedges && app.session->visit() && !app.task.running();
-  if (app.targets.button("Find wedges", 0, can)) find_wedges(app);
-  ImGui::SameLine();
-  ImGui::TextWrapped(
+  if (app.targets.button_in_row("Find wedges", can)) find_wedges(app);
+  paragraph(
       "Wedges that the visit's sets form around the tunnel's design section, "
       "each at its largest (joints of unlimited persistence).");
-  if (!app.services.wedges) ImGui::TextDisabled("No wedge analysis in this build.");
-  if (!w.message.empty()) ImGui::TextWrapped("%s", w.message.c_str());
+  if (!app.services.wedges) note("No wedge analysis in this build.");
+  if (!w.message.empty()) paragraph(w.message);
   if (!w.table) return;
   const WedgeTable& t = *w.table;
-  for (const auto& line : t.lines) ImGui::TextWrapped("%s", line.c_str());
-  const ImVec2 avail = ImGui::GetContentRegionAvail();
-  const float side = 0.4f * avail.x;
-  ImGui::BeginChild("wedge table", ImVec2(avail.x - side, 0));
+  for (const auto& line : t.lines) paragraph(line);
+  const SplitLayout layout = split_for_side_panel(0.4f * ImGui::GetContentRegionAvail().x);
+  ImGui::BeginChild("wedge table", layout.main);
   if (t.rows.empty())
-    ImGui::TextWrapped("No removable wedge.");
+    paragraph("No removable wedge.");
   else
     draw_table(app, t);
-  for (const auto& n : t.notes) ImGui::TextWrapped("%s", n.c_str());
+  for (const auto& n : t.notes) paragraph(n);
   ImGui::EndChild();
-  ImGui::SameLine();
-  ImGui::BeginChild("wedge picture", ImVec2(0, 0), true);
+  begin_side_panel("wedge picture", layout, true);
   w.picture.draw(ImGui::GetContentRegionAvail().x);
   ImGui::EndChild();
 }

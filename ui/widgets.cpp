@@ -1,49 +1,8 @@
 #include "ui/widgets.h"
 
-#include <filesystem>
+#include <algorithm>
 
 namespace rockface::ui {
-
-namespace {
-// A font with the degree sign and good hinting; Debian's fonts-dejavu-core.
-constexpr const char* kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-// Body text of 20 px at scale 1: readable at arm's length on a 10" tablet.
-constexpr float kFontPx = 20;
-}  // namespace
-
-void apply_daylight_theme(float scale) {
-  ImGuiIO& io = ImGui::GetIO();
-  io.Fonts->Clear();
-  if (std::filesystem::exists(kFontFile)) {
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2013, 0x2014, 0x2190, 0x2193, 0};
-    io.Fonts->AddFontFromFileTTF(kFontFile, kFontPx * scale, nullptr, ranges);
-  } else {
-    ImFontConfig config;
-    config.SizePixels = kFontPx * scale;
-    io.Fonts->AddFontDefault(&config);
-  }
-  ImGui::StyleColorsLight();
-  ImGuiStyle& style = ImGui::GetStyle();
-  style.ScaleAllSizes(scale);
-  style.FramePadding = ImVec2(14 * scale, 12 * scale);
-  style.ItemSpacing = ImVec2(12 * scale, 10 * scale);
-  style.ScrollbarSize = 28 * scale;
-  style.GrabMinSize = 28 * scale;
-  style.FrameRounding = 6 * scale;
-  style.WindowRounding = 0;
-  // Black on white and saturated accents: sunlight washes out greys.
-  ImVec4* c = style.Colors;
-  c[ImGuiCol_Text] = ImVec4(0, 0, 0, 1);
-  c[ImGuiCol_WindowBg] = ImVec4(1, 1, 1, 1);
-  c[ImGuiCol_FrameBg] = ImVec4(0.86f, 0.86f, 0.86f, 1);
-  c[ImGuiCol_SliderGrab] = ImVec4(0.1f, 0.45f, 0.9f, 1);
-  c[ImGuiCol_Button] = ImVec4(0.80f, 0.86f, 0.95f, 1);
-  c[ImGuiCol_ButtonHovered] = ImVec4(0.65f, 0.76f, 0.93f, 1);
-  c[ImGuiCol_ButtonActive] = ImVec4(0.35f, 0.55f, 0.90f, 1);
-  c[ImGuiCol_PlotHistogram] = ImVec4(0.1f, 0.45f, 0.9f, 1);
-  c[ImGuiCol_TableHeaderBg] = ImVec4(0.85f, 0.85f, 0.85f, 1);
-  c[ImGuiCol_Border] = ImVec4(0.3f, 0.3f, 0.3f, 1);
-}
 
 ImU32 verdict_colour(BlockVerdict verdict) {
   switch (verdict) {
@@ -61,14 +20,103 @@ ImU32 verdict_colour(BlockVerdict verdict) {
   return IM_COL32(0, 0, 0, 255);
 }
 
+ImU32 verdict_text_colour(BlockVerdict verdict) {
+  if (ImGui::GetStyleColorVec4(ImGuiCol_WindowBg).x < 0.5f) return verdict_colour(verdict);
+  switch (verdict) {
+    case BlockVerdict::moves:
+      return IM_COL32(190, 0, 0, 255);
+    case BlockVerdict::marginal:
+      return IM_COL32(180, 80, 0, 255);
+    case BlockVerdict::holds:
+      return IM_COL32(120, 100, 0, 255);
+    case BlockVerdict::keyed:
+      return IM_COL32(0, 120, 40, 255);
+    case BlockVerdict::infinite:
+      return IM_COL32(90, 90, 90, 255);
+  }
+  return IM_COL32(0, 0, 0, 255);
+}
+
+float TouchTargets::target_px() const {
+  return std::max(kTouchTargetPx * scale_, touch_target_px_at(dpi_));
+}
+
+float button_width(const std::string& label, float target_px) {
+  const std::string shown = label.substr(0, label.find("##"));
+  const float text = ImGui::CalcTextSize(shown.c_str()).x;
+  return std::max(target_px, text + 2 * ImGui::GetStyle().FramePadding.x);
+}
+
+void same_line_if_fits(float width) {
+  const float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
+  const float edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (right <= edge) ImGui::SameLine();
+}
+
+SplitLayout split_for_side_panel(float side_px, float below) {
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  SplitLayout out;
+  out.stacked = avail.y > avail.x;
+  if (out.stacked)
+    out.main = ImVec2(avail.x, avail.y * (1 - below));
+  else
+    out.main = ImVec2(std::max(avail.x - side_px, avail.x * 0.4f), avail.y);
+  return out;
+}
+
+void begin_side_panel(const char* id, const SplitLayout& layout, bool border) {
+  if (!layout.stacked) ImGui::SameLine();
+  ImGui::BeginChild(id, ImVec2(0, 0), border);
+}
+
 bool TouchTargets::button(const std::string& label, float width, bool enabled) {
+  const float side = target_px();
+  const float room = ImGui::GetContentRegionAvail().x;
+  // A fitted button is never narrower than it is high: a square thumb target.
+  if (width == 0) width = button_width(label, side);
   if (!enabled) ImGui::BeginDisabled();
-  const bool pressed = ImGui::Button(label.c_str(), ImVec2(width, kTouchTargetPx * scale_));
+  const bool pressed = ImGui::Button(label.c_str(), ImVec2(width, side));
   if (!enabled) ImGui::EndDisabled();
   // The visible label is what a script names (ImGui's "##id" suffix is not).
   const std::string name = label.substr(0, label.find("##"));
-  rects_[name] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax(), enabled};
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  rects_[name] = {min, max, enabled, true, ImGui::IsItemVisible()};
+  // The label must fit the button and the button the panel.
+  const float needed = ImGui::CalcTextSize(name.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
+  const float drawn = max.x - min.x;
+  record_drawn_text(name, std::max(needed, drawn), std::min(room, drawn));
   return pressed && enabled;
+}
+
+bool TouchTargets::button_in_row(const std::string& label, bool enabled) {
+  same_line_if_fits(button_width(label, target_px()));
+  return button(label, 0, enabled);
+}
+
+bool TouchTargets::confirmed_button(const std::string& label, const std::string& question,
+                                    bool enabled) {
+  const std::string popup = "confirm " + label;
+  if (button(label, 0, enabled)) ImGui::OpenPopup(popup.c_str());
+  bool confirmed = false;
+  if (ImGui::BeginPopup(popup.c_str())) {
+    const float most = ImGui::GetMainViewport()->Size.x * 0.6f;
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + most);
+    ImGui::TextUnformatted(question.c_str());
+    record_drawn_text(question, std::min(most, ImGui::CalcTextSize(question.c_str()).x), most + 1);
+    ImGui::PopTextWrapPos();
+    std::string verb = label.substr(0, label.find("##"));
+    if (!verb.empty() && verb[0] >= 'A' && verb[0] <= 'Z')
+      verb[0] = static_cast<char>(verb[0] - 'A' + 'a');
+    const std::string yes = "Yes, " + verb;
+    if (button(yes)) {
+      confirmed = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (button("Keep")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  return confirmed;
 }
 
 std::optional<TargetRect> TouchTargets::find(const std::string& label) const {

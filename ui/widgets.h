@@ -1,6 +1,6 @@
 #pragma once
-// The look and the touch targets of the tablet UI: a light, high-contrast
-// theme readable in daylight, thumb-sized buttons, and a record of where
+// The touch targets of the tablet UI: thumb-sized buttons (at least 9 mm at
+// the tablet's DPI), rows of buttons that wrap, and a record of where
 // every named button was drawn this frame, so that headless scripts (and
 // tests) can tap a button by its label instead of by a pixel that moves when
 // the layout changes.
@@ -11,6 +11,8 @@
 #include <imgui.h>
 
 #include "ui/block_view.h"
+#include "ui/theme.h"
+#include "ui/widgets_text.h"
 
 namespace rockface::ui {
 
@@ -18,11 +20,19 @@ namespace rockface::ui {
 // 1280x800 tablet (about 150 px per inch) is 9.5 mm, above the 9 mm
 // usually asked for a thumb.
 constexpr float kTouchTargetPx = 56;
-
-// Sets ImGui's style and font for `scale` (1 = a 1280x800 tablet).
-void apply_daylight_theme(float scale);
+// The pixel density scale 1 stands for (a 10" 1280 x 800 tablet).
+constexpr float kScaleOneDpi = 150;
+// The smallest touch target a gloved thumb hits, mm.
+constexpr float kTouchTargetMm = 9;
+// Pixels of kTouchTargetMm at `dpi`.
+inline float touch_target_px_at(float dpi) {
+  return kTouchTargetMm / 25.4f * dpi;
+}
 
 ImU32 verdict_colour(BlockVerdict verdict);
+// The verdict's colour for text on the current theme's background (the
+// yellow of "holds" is unreadable on daylight white: darker there).
+ImU32 verdict_text_colour(BlockVerdict verdict);
 // Colour of traces marked on the model (magenta: no rock has it).
 constexpr ImU32 kTraceColour = IM_COL32(255, 0, 200, 255);
 constexpr ImU32 kPendingTraceColour = IM_COL32(0, 170, 255, 255);
@@ -31,6 +41,8 @@ constexpr ImU32 kTargetColour = IM_COL32(255, 230, 0, 255);
 struct TargetRect {
   ImVec2 min, max;
   bool enabled = true;
+  bool button = false;  // drawn by button(): a touch target of its own
+  bool visible = true;  // not scrolled out of its panel's view
   ImVec2 centre() const { return {(min.x + max.x) / 2, (min.y + max.y) / 2}; }
 };
 
@@ -39,15 +51,45 @@ class TouchTargets {
   void begin_frame() { rects_.clear(); }
   // A thumb-sized button; width 0 fits the label. Records where it is.
   bool button(const std::string& label, float width = 0, bool enabled = true);
+  // The same, on the line of the previous item when it fits there, else on
+  // the next line: rows of buttons that wrap in portrait.
+  bool button_in_row(const std::string& label, bool enabled = true);
+  // A button whose action loses work: the first tap asks `question` with
+  // "Yes, <verb>" and "Keep" (both touch targets); true once confirmed.
+  bool confirmed_button(const std::string& label, const std::string& question, bool enabled = true);
+  // Edge of a touch target in pixels: the larger of kTouchTargetPx at the
+  // UI scale and 9 mm at the tablet's DPI.
+  float target_px() const;
   // Records an area drawn by other means (the model view).
   void record(const std::string& label, ImVec2 min, ImVec2 max) { rects_[label] = {min, max}; }
   std::optional<TargetRect> find(const std::string& label) const;
   float scale() const { return scale_; }
   void set_scale(float s) { scale_ = s; }
+  float dpi() const { return dpi_; }
+  void set_dpi(float dpi) { dpi_ = dpi; }
+  // Every button drawn this frame (the walk checks their size).
+  const std::map<std::string, TargetRect>& all() const { return rects_; }
 
  private:
   std::map<std::string, TargetRect> rects_;
   float scale_ = 1;
+  float dpi_ = kScaleOneDpi;
 };
+
+// The width a button of `label` takes (its text and padding, at least a
+// touch target).
+float button_width(const std::string& label, float target_px);
+// The main area (the 3D image) and a side panel of `side_px`: beside it in
+// landscape, below it in portrait (the panel then gets `below` of the height).
+struct SplitLayout {
+  ImVec2 main;
+  bool stacked = false;  // portrait: the panel is below, not beside
+};
+SplitLayout split_for_side_panel(float side_px, float below = 0.45f);
+// Starts the side panel after the main area (SameLine in landscape).
+void begin_side_panel(const char* id, const SplitLayout& layout, bool border = false);
+
+// SameLine() when an item `width` px wide fits after the previous item.
+void same_line_if_fits(float width);
 
 }  // namespace rockface::ui

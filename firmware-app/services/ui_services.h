@@ -77,6 +77,13 @@ class FieldProposalRunner final : public ui::ProposalRunner {
   measure::ProposalResult propose(const ui::ProposalInput& input, Progress& progress) override;
 };
 
+// Issue 27: the field report from the tablet, as `rockface report` writes it.
+class StoreFieldReportRunner final : public ui::FieldReportRunner {
+ public:
+  std::string write(const std::filesystem::path& project, storage::RecordId visit_id,
+                    const std::filesystem::path& pdf, Progress& progress) override;
+};
+
 // source: a scene with an imaging section, a folder of captures, or empty
 // (the first DSLR libgphoto2 finds).
 class FieldCameraConnector final : public ui::CameraConnector {

@@ -63,16 +63,18 @@ TEST(BlockView, SummaryStatesVerdictModeDirectionSizeAndRotationInWords) {
   std::string text;
   for (const auto& l : lines) text += l + "\n";
   EXPECT_NE(text.find("Block TB3: moves"), std::string::npos) << text;
-  EXPECT_NE(text.find("Margin 4.5 deg"), std::string::npos) << text;
+  EXPECT_NE(text.find("Margin 4.5°"), std::string::npos) << text;
   // Direction (0, -1, -1)/sqrt 2: due south (trend 180), plunging 45 degrees.
-  EXPECT_NE(text.find("Mode: sliding on J1, J2, towards 180 / 45"), std::string::npos) << text;
+  EXPECT_NE(text.find("Mode: sliding on J1, J2, towards 180.0° trend, 45.0° plunge"),
+            std::string::npos)
+      << text;
   EXPECT_NE(text.find("Factor of safety 0.49"), std::string::npos) << text;
-  EXPECT_NE(text.find("Volume 1.250 m3, mass 3.40 t"), std::string::npos) << text;
-  EXPECT_NE(text.find("1 of 2 corners and 0 of 1 edges can rotate (least corner margin 4.1"),
+  EXPECT_NE(text.find("Volume 1.25 m³, mass 3.40 t"), std::string::npos) << text;
+  EXPECT_NE(text.find("1 of 2 corners and 0 of 1 edges can rotate (least corner margin 4.1°)"),
             std::string::npos)
       << text;
   EXPECT_NE(text.find("Remote axis: found (9 of 64 starts)"), std::string::npos) << text;
-  EXPECT_NE(text.find("J1 2.50"), std::string::npos) << text;
+  EXPECT_NE(text.find("Face areas: J1 2.50 m²"), std::string::npos) << text;
   // The equilibrium path, when the scene asked for it: its limit point, or why there is none.
   b.report_json = R"({"mechanics": {"fos_limit_point": 0.71, "stability": "divergence"}})";
   EXPECT_EQ(make_block_view(b, Eigen::Vector3d::Zero()).summary.back(),

@@ -51,29 +51,39 @@ inline const std::filesystem::path& demo_project() {
   return project;
 }
 
-// The demo face photographed as two stereo pairs (the second 1.2 m west of
-// the first, as in replay_face_picks_test.cpp), replayed at the fast
-// preset: a visit with two 3D images in one face frame. Made once per test
-// binary, only by the tests that ask for it.
-inline const std::filesystem::path& two_pair_project() {
-  static const std::filesystem::path project = [] {
-    std::ifstream in(demo_scene());
-    nlohmann::json scene = nlohmann::json::parse(in);
-    const nlohmann::json first = scene["imaging"]["stations"];
+// The demo face photographed as `pairs` stereo pairs (each further pair
+// `step_m` west of the one before; 1.2 m as in replay_face_picks_test.cpp
+// for two; closer for three, whose third pair must still see the lit face
+// and the pole), replayed
+// at the fast preset: a visit with several 3D images in one face frame.
+// Made once per test binary and pair count, only by the tests that ask.
+inline std::filesystem::path replay_of_pairs(int pairs, double step_m, const std::string& name) {
+  std::ifstream in(demo_scene());
+  nlohmann::json scene = nlohmann::json::parse(in);
+  const nlohmann::json first = scene["imaging"]["stations"];
+  for (int k = 1; k < pairs; ++k)
     for (auto st : first) {
-      st["position"][0] = st["position"][0].get<double>() - 1.2;
-      st["look_at"][0] = st["look_at"][0].get<double>() - 1.2;
+      st["position"][0] = st["position"][0].get<double>() - step_m * k;
+      st["look_at"][0] = st["look_at"][0].get<double>() - step_m * k;
       scene["imaging"]["stations"].push_back(st);
     }
-    const auto file = ui_test_dir() / "two-pairs.scene.json";
-    std::ofstream(file) << scene.dump(2);
-    const auto p = ui_test_dir() / "two-pairs.rockface";
-    if (run_rockface_logged("replay " + file.string() + " --preset fast --project " + p.string(),
-                            ui_test_dir() / "replay-two-pairs.txt") != 0)
-      throw std::runtime_error("rockface replay of the two-pair demo failed: see " +
-                               (ui_test_dir() / "replay-two-pairs.txt").string());
-    return p;
-  }();
+  const auto file = ui_test_dir() / (name + ".scene.json");
+  std::ofstream(file) << scene.dump(2);
+  const auto p = ui_test_dir() / (name + ".rockface");
+  if (run_rockface_logged("replay " + file.string() + " --preset fast --project " + p.string(),
+                          ui_test_dir() / ("replay-" + name + ".txt")) != 0)
+    throw std::runtime_error("rockface replay of the " + name + " demo failed: see " +
+                             (ui_test_dir() / ("replay-" + name + ".txt")).string());
+  return p;
+}
+
+inline const std::filesystem::path& two_pair_project() {
+  static const std::filesystem::path project = replay_of_pairs(2, 1.2, "two-pairs");
+  return project;
+}
+
+inline const std::filesystem::path& three_pair_project() {
+  static const std::filesystem::path project = replay_of_pairs(3, 0.7, "three-pairs");
   return project;
 }
 

@@ -3,8 +3,10 @@
 // its reconstruction and cancel it, close; then reopen. What finished is in
 // the store; what was cancelled left nothing half-written.
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <optional>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -151,6 +153,57 @@ TEST(UiSession, TheAnalysisJoinsPiecesOfATraceStoredFromTwoPairs) {
   // (pair 1); those two, on one pair, are joined only through it: one
   // trace, named after the first stored piece.
   EXPECT_EQ(detail, label + " = " + label + " X1 X2");
+}
+
+// Issue 27: a whole visit in few taps, the committed script that also makes
+// the README's pictures (docs/ui-visit.steps.json, 1280 x 800): new visit,
+// both shots, the 3D image, three traces (the third semi-automatic, from
+// its two ends), the analysis and the field report. Each step is stored;
+// the taps and the time on each screen are printed for
+// docs/accuracy-cost.md.
+TEST(UiSession, AWholeVisitInFewTaps) {
+  const fs::path project = copy_of_demo("visit");
+  const fs::path shots = ui_test_dir() / "visit";
+  const fs::path settings = ui_test_dir() / "visit-settings.json";
+  const fs::path log = ui_test_dir() / "visit.txt";
+  ASSERT_EQ(run_rockface_logged("ui --project " + project.string() + " --camera " + demo_scene() +
+                                    " --settings " + settings.string() +
+                                    " --max-triangles 20000 --headless --script " +
+                                    std::string(ROCKFACE_SOURCE_DIR) +
+                                    "/docs/ui-visit.steps.json --screenshots " + shots.string(),
+                                log),
+            0)
+      << slurp(log);
+  const std::string out = slurp(log);
+  std::printf("%s", out.c_str());
+  auto store = rockface::storage::ProjectStore::open(project);
+  const auto visits = store.list_visits();
+  ASSERT_EQ(visits.size(), 2u);  // the demo's and the new one
+  const auto visit = visits.back().id;
+  EXPECT_EQ(store.list_captures(visit).size(), 1u);
+  EXPECT_EQ(store.list_models().size(), 2u);  // the new visit's 3D image
+  std::vector<rockface::storage::Measurement> traces;
+  for (const auto& m : store.list_measurements(visit))
+    if (m.kind == rockface::storage::Measurement::Kind::trace) traces.push_back(m);
+  ASSERT_EQ(traces.size(), 3u);
+  EXPECT_EQ(traces[0].points.size(), 3u);  // tapped point by point
+  EXPECT_EQ(traces[1].points.size(), 4u);
+  // The semi-automatic one follows the joint between its two ends: many
+  // more points than taps.
+  EXPECT_GT(traces[2].points.size(), 10u);
+  EXPECT_EQ(store.list_analyses(visit).size(), 1u);
+  EXPECT_TRUE(fs::exists(project.parent_path() / ("visit-visit-" + std::to_string(visit) + ".pdf")))
+      << out;
+  // Few taps: every screen's count is printed, and the whole visit (with the
+  // README's last picture of the demo visit's blocks: 4 taps) takes at most
+  // 30.
+  for (const char* screen : {"Project", "Capture", "Model", "Mapping", "Blocks"})
+    EXPECT_NE(out.find(std::string("screen ") + screen + ": "), std::string::npos) << screen;
+  const auto at = out.find("screens in all: ");
+  ASSERT_NE(at, std::string::npos) << out;
+  EXPECT_LE(std::stoi(out.substr(at + 16)), 30) << out;
+  for (const char* picture : {"ui-project", "ui-capture", "ui-model", "ui-mapping", "ui-blocks"})
+    EXPECT_TRUE(fs::exists(shots / (std::string(picture) + ".png"))) << picture;
 }
 
 }  // namespace

@@ -22,8 +22,11 @@ TEST(UiWindow, ScriptInAWindowDrawsWhatHeadlessDraws) {
   const fs::path script = dir / "steps.json";
   std::ofstream(script) << R"({"viewport": [800, 500], "steps": [
       {"tap": "Blocks"}, {"tap": "row TB1"}, {"screenshot": "blocks"}]})";
+  // One density for both: a window takes its screen's (Xvfb's) unless told,
+  // and the touch targets' size follows it.
   const std::string common = "ui --project " + demo_project().string() +
-                             " --scale 0.6 --max-triangles 20000 --script " + script.string();
+                             " --scale 0.6 --dpi 90 --max-triangles 20000 --script " +
+                             script.string();
   ASSERT_EQ(run_rockface_logged(common + " --headless --screenshots " + (dir / "headless").string(),
                                 dir / "headless.txt"),
             0);

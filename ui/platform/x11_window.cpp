@@ -63,6 +63,13 @@ struct X11Window {
     XIEventMask mask{XIAllMasterDevices, static_cast<int>(sizeof bits), bits};
     touch = XISelectEvents(display, window, &mask, 1) == 0;
   }
+  // The screen's pixels per inch from its size in millimetres (what the X
+  // server knows of the panel); 0 when it does not say.
+  float dpi() const {
+    const int screen = DefaultScreen(display);
+    const int mm = DisplayWidthMM(display, screen);
+    return mm > 0 ? DisplayWidth(display, screen) * 25.4f / mm : 0;
+  }
   X11Window(const X11Window&) = delete;
   X11Window& operator=(const X11Window&) = delete;
   ~X11Window() {
@@ -73,13 +80,20 @@ struct X11Window {
 
 // Frames go into a framebuffer of the window's size and are copied to the
 // window, so that a screenshot reads what was shown.
+// Touch targets of 9 mm need the screen's density: the window's, unless
+// --dpi gave one.
+UiOptions with_screen_dpi(UiOptions options, const X11Window& x) {
+  if (options.dpi <= 0) options.dpi = x.dpi();
+  return options;
+}
+
 class WindowSession final : public UiDriver {
  public:
   WindowSession(const UiOptions& options, const FieldServices& services, int width, int height)
       : x_(width, height),
         egl_(EglContext::on_x11_window(x_.display, x_.window)),
         target_(std::make_unique<Framebuffer>(width, height)),
-        app_(std::make_unique<TabletApp>(options, services)),
+        app_(std::make_unique<TabletApp>(with_screen_dpi(options, x_), services)),
         width_(width),
         height_(height),
         last_(std::chrono::steady_clock::now()) {}

@@ -2,8 +2,11 @@
 // marginal rows highlighted), the blocks drawn on the model coloured by
 // verdict, and the report of the block tapped (on the model or in the
 // table). "Run analysis" analyses the visit on the worker.
+#include <utility>
+
 #include <opencv2/imgproc.hpp>
 
+#include "ui/format.h"
 #include "ui/motion_playback.h"
 #include "ui/overlay_legend.h"
 #include "ui/screens/screens.h"
@@ -78,51 +81,49 @@ void draw_blocks_on_model(AppState& app, std::optional<ImVec2> tap) {
   if (tap) app.selected_block = tapped;
 }
 
+// The mode in words for the table: a block that cannot move has none.
+std::string mode_cell(const BlockView& b) {
+  if (!b.finite || !b.removable || b.mode.empty() || b.mode == "none") return format::unknown();
+  return b.mode;
+}
+
 void draw_table(AppState& app) {
   const auto& blocks = app.session->blocks();
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
-                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
-  if (!ImGui::BeginTable("blocks", 9, flags, ImVec2(0, 0))) return;
+                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
+  if (!ImGui::BeginTable("blocks", 6, flags, ImVec2(0, 0))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  for (const char* h :
-       {"block", "from", "finite", "removable", "mode", "FoS", "rotatable", "margin", "verdict"})
-    ImGui::TableSetupColumn(h);
+  // Weights, not content: a shortened cell must not shrink its column.
+  for (const auto& [h, weight] :
+       {std::pair{"Block", 1.0f}, std::pair{"Verdict", 1.3f}, std::pair{"Mode", 1.4f},
+        std::pair{"FoS", 0.8f}, std::pair{"Margin", 1.0f}, std::pair{"Can rotate", 1.3f}})
+    ImGui::TableSetupColumn(h, ImGuiTableColumnFlags_WidthStretch, weight);
   ImGui::TableHeadersRow();
-  const float row_height = kTouchTargetPx * app.targets.scale() * 0.8f;
+  // Rows are touch targets: a full thumb high.
+  const float row_height = app.targets.target_px();
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     const BlockView& b = blocks[i];
     ImGui::TableNextRow(0, row_height);
     if (b.marginal) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(255, 200, 120, 255));
     ImGui::TableNextColumn();
     const bool selected = app.selected_block && *app.selected_block == i;
-    if (ImGui::Selectable(b.label.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns,
-                          ImVec2(0, row_height)))
+    if (ImGui::Selectable(("##row" + b.label).c_str(), selected,
+                          ImGuiSelectableFlags_SpanAllColumns, ImVec2(0, row_height)))
       app.selected_block = i;
     app.targets.record("row " + b.label, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+    ImGui::SameLine();
+    label(b.label);
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(b.source.c_str());
+    label(b.marginal ? "marginal" : verdict_name(b.verdict),
+          b.marginal ? IM_COL32(0, 0, 0, 255) : verdict_text_colour(b.verdict));
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(b.finite ? "yes" : "no");
+    label(mode_cell(b));
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(b.removable ? "yes" : "no");
+    label(b.fos ? format::text(format::FactorOfSafety{*b.fos}) : format::unknown());
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(b.mode.c_str());
+    label(b.margin_deg ? format::text(format::Angle{*b.margin_deg}) : format::unknown());
     ImGui::TableNextColumn();
-    if (b.fos)
-      ImGui::Text("%.2f", *b.fos);
-    else
-      ImGui::TextUnformatted("-");
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(!b.rotatable ? "-" : *b.rotatable ? "yes" : "no");
-    ImGui::TableNextColumn();
-    if (b.margin_deg)
-      ImGui::Text("%.1f°", *b.margin_deg);
-    else
-      ImGui::TextUnformatted("-");
-    ImGui::TableNextColumn();
-    ImGui::PushStyleColor(ImGuiCol_Text, verdict_colour(b.verdict) | 0xFF000000);
-    ImGui::TextUnformatted(b.marginal ? "MARGINAL" : verdict_name(b.verdict));
-    ImGui::PopStyleColor();
+    label(!b.rotatable ? format::unknown() : *b.rotatable ? "yes" : "no");
   }
   ImGui::EndTable();
 }
@@ -144,39 +145,55 @@ void start_analysis(AppState& app) {
       });
 }
 
+// The visit's field report, a PDF beside the project file
+// (NAME-visit-N.pdf); written again over the last one.
+void draw_field_report_button(AppState& app) {
+  FieldReportRunner* runner = app.services.field_report;
+  if (!runner) return;
+  const bool can = app.session->visit() && !app.task.running();
+  if (!app.targets.button_in_row("Field report", can)) return;
+  const auto file = app.session->file();
+  const auto visit = *app.session->visit();
+  const auto pdf =
+      file.parent_path() / (file.stem().string() + "-visit-" + std::to_string(visit) + ".pdf");
+  app.task.start("Field report", [runner, file, visit, pdf](Progress& progress) {
+    const std::string holds = runner->write(file, visit, pdf, progress);
+    return pdf.filename().string() + " written (" + holds + ")";
+  });
+}
+
 }  // namespace
 
 void draw_blocks_screen(AppState& app) {
   if (!app.session) {
-    ImGui::TextWrapped("Open a project first (Project).");
+    paragraph("Open a project first (Project).");
     return;
   }
   // The Wedges view (wedges around the excavation) in place of the blocks.
   if (app.targets.button(app.wedges.open ? "Blocks view" : "Wedges view", 0, true))
     app.wedges.open = !app.wedges.open;
-  ImGui::SameLine();
   if (app.wedges.open) {
     draw_wedges_view(app);
     return;
   }
   const bool can_run = app.services.analysis && app.session->visit() && !app.session->read_only() &&
                        !app.task.running();
-  if (app.targets.button("Run analysis", 0, can_run)) start_analysis(app);
-  ImGui::SameLine();
-  if (app.targets.button(app.rockmass.open ? "Block report" : "Rock mass", 0,
-                         app.services.rockmass != nullptr))
+  if (app.targets.button_in_row("Run analysis", can_run)) start_analysis(app);
+  if (app.targets.button_in_row(app.rockmass.open ? "Block report" : "Rock mass",
+                                app.services.rockmass != nullptr))
     app.rockmass.open = !app.rockmass.open;
-  ImGui::SameLine();
+  // Issue 27: the field report of the visit, written from the tablet.
+  draw_field_report_button(app);
   if (const auto& a = app.session->analysis())
-    ImGui::Text("Analysis %lld (%s, %s): %zu blocks", static_cast<long long>(a->id),
-                a->preset.c_str(), a->created_at.substr(0, 19).c_str(), a->blocks.size());
+    label("Analysis " + std::to_string(a->id) + " (" + a->preset + " preset, " +
+          format::date_time(a->created_at) +
+          "): " + format::count(static_cast<std::int64_t>(a->blocks.size()), "block", "blocks"));
   else
-    ImGui::TextUnformatted("No analysis of this visit yet.");
+    label("No analysis of this visit yet: Run analysis.");
 
-  const ImVec2 avail = ImGui::GetContentRegionAvail();
-  const float side = 380 * app.targets.scale();
-  const float model_height = avail.y * 0.55f;
-  ImGui::BeginChild("blocks left", ImVec2(avail.x - side, 0));
+  const SplitLayout layout = split_for_side_panel(380 * app.targets.scale(), 0.4f);
+  const float model_height = layout.main.y * (layout.stacked ? 0.6f : 0.55f);
+  ImGui::BeginChild("blocks left", layout.main);
   if (app.model_view.has_model()) {
     add_blocks_to_overlay(app);  // ui/overlay_blocks.h: on the surface, depth-tested
     const auto interaction =
@@ -189,19 +206,16 @@ void draw_blocks_screen(AppState& app) {
   }
   draw_table(app);
   ImGui::EndChild();
-  ImGui::SameLine();
-  ImGui::BeginChild("block report", ImVec2(0, 0), true);
+  begin_side_panel("block report", layout, true);
   const auto& blocks = app.session->blocks();
   if (app.rockmass.open) {
     draw_rockmass_view(app);  // ui/rockmass_view.h
   } else if (app.selected_block && *app.selected_block < blocks.size()) {
     const BlockView& b = blocks[*app.selected_block];
-    for (const auto& line : b.summary) ImGui::TextWrapped("%s", line.c_str());
+    for (const auto& line : b.summary) paragraph(line);
     draw_motion_controls(app, b);
-    if (ImGui::CollapsingHeader("Full report (JSON)"))
-      ImGui::TextWrapped("%s", b.report_text.c_str());
   } else {
-    ImGui::TextWrapped("Tap a block on the model or in the table to see its report.");
+    paragraph("Tap a block on the model or in the table to see its report.");
   }
   ImGui::EndChild();
 }

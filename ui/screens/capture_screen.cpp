@@ -9,6 +9,7 @@
 
 #include "camera/capture_guidance.h"
 #include "storage/project_store.h"
+#include "ui/format.h"
 #include "ui/screens/screens.h"
 
 namespace rockface::ui {
@@ -38,7 +39,7 @@ void connect(AppState& app) {
           for (const char* key : kKeySettings)
             if (s.name == key) snapshot->settings.push_back(s);
         *slot = std::move(cam);
-        return "connected: " + snapshot->model;
+        return "connected to " + snapshot->model;
       },
       [&app, snapshot, slot](const TaskOutcome& outcome) {
         if (outcome.kind != TaskOutcome::Kind::done) {
@@ -123,7 +124,7 @@ void store_and_reconstruct(AppState& app) {
         const storage::RecordId id = store.save_capture(capture);
         if (!runner) return "pair stored as capture " + std::to_string(id);
         const storage::RecordId model = runner->reconstruct(file, id, Preset::fast, progress);
-        return "pair stored, model " + std::to_string(model) + " saved";
+        return "pair stored, 3D image " + std::to_string(model) + " saved (Model)";
       },
       [&app](const TaskOutcome&) {
         if (!app.session) return;
@@ -135,57 +136,89 @@ void store_and_reconstruct(AppState& app) {
 
 const char* shot_state(const std::optional<camera::Capture>& shot, bool stored) {
   if (!shot) return "not taken";
-  return stored ? "captured, STORED" : "captured, not stored yet";
+  return stored ? "taken and stored" : "taken, not stored yet";
+}
+
+// A shot taken but not stored is lost by shooting it again: asked first.
+bool shoot_button(AppState& app, const char* label, bool taken, bool enabled) {
+  if (taken && !app.capture.stored)
+    return app.targets.confirmed_button(label, "The shot taken is not stored yet. Take it again?",
+                                        enabled);
+  return app.targets.button(label, 0, enabled);
+}
+
+void draw_guidance(AppState& app) {
+  CaptureState& c = app.capture;
+  const float s = app.targets.scale();
+  heading("Stereo guidance");
+  label("Distance to the face");
+  ImGui::SetNextItemWidth(std::min(400 * s, ImGui::GetContentRegionAvail().x));
+  ImGui::SliderFloat("##distance", &c.distance_m, 2, 100, "%.0f m");
+  const camera::BaseLengthHint hint = camera::base_length_hint(c.distance_m);
+  bullet("Walk " + format::text(format::Length{hint.min_m}) + " to " +
+         format::text(format::Length{hint.max_m}) +
+         " between the shots (1/8 to 1/5 of the distance).");
+  bullet("Same focal length, focus and aperture for both shots; no flash.");
+  bullet("The range pole (both targets) in view of both shots.");
+  label("Range pole: distance between its target centres");
+  ImGui::SetNextItemWidth(std::min(400 * s, ImGui::GetContentRegionAvail().x));
+  ImGui::SliderFloat("##pole", &c.range_pole_m, 0.5f, 5, "%.2f m");
+}
+
+// The camera and the shots: what the geologist taps at the face, first.
+void draw_shots(AppState& app) {
+  CaptureState& c = app.capture;
+  const bool idle = !app.task.running();
+  field("Camera", format::without_folders(c.connection));
+  if (app.services.camera) note(format::without_folders(app.services.camera->describe()));
+  if (app.targets.button(c.camera ? "Reconnect" : "Connect camera", 0, idle && app.services.camera))
+    connect(app);
+  if (app.targets.button_in_row("Live view", idle && c.camera)) live_view(app);
+  ImGui::Separator();
+  const bool can_shoot = idle && c.camera != nullptr;
+  if (shoot_button(app, "Shoot left", c.left.has_value(), can_shoot)) shoot(app, true);
+  ImGui::SameLine();
+  label_in_row(std::string("Left: ") + shot_state(c.left, c.stored));
+  if (shoot_button(app, "Shoot right", c.right.has_value(), can_shoot && c.left.has_value()))
+    shoot(app, false);
+  ImGui::SameLine();
+  label_in_row(std::string("Right: ") + shot_state(c.right, c.stored));
+  const bool can_store = idle && c.left && c.right && !c.stored && app.session &&
+                         app.session->visit() && !app.session->read_only();
+  if (app.targets.button("Store pair and reconstruct", 0, can_store)) store_and_reconstruct(app);
+  if (!app.session) note("Open a project to store the pair (Project).");
+  if (c.left && c.right) {
+    for (const auto& n : camera::check_pair(c.left->exif, c.right->exif)) {
+      if (n.severity == camera::GuidanceNote::Severity::refusal)
+        paragraph("Refused: " + n.text, warning_colour());
+      else
+        bullet(n.text);
+    }
+  }
+  if (c.live_view_texture && !c.live_view.empty()) {
+    const float w = std::min(480 * app.targets.scale(), ImGui::GetContentRegionAvail().x);
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.live_view_texture)),
+                 ImVec2(w, w * c.live_view.rows / c.live_view.cols));
+  }
 }
 
 }  // namespace
 
 void draw_capture_screen(AppState& app) {
-  CaptureState& c = app.capture;
-  const bool idle = !app.task.running();
-  ImGui::Text("Camera: %s", c.connection.c_str());
-  if (app.services.camera) ImGui::TextDisabled("%s", app.services.camera->describe().c_str());
-  if (app.targets.button(c.camera ? "Reconnect" : "Connect camera", 0, idle && app.services.camera))
-    connect(app);
-  ImGui::SameLine();
-  if (app.targets.button("Live view", 0, idle && c.camera)) live_view(app);
-  for (const auto& g : c.guidance) ImGui::BulletText("%s", g.c_str());
-
-  ImGui::Separator();
-  ImGui::TextUnformatted("Stereo guidance");
-  ImGui::SetNextItemWidth(400 * app.targets.scale());
-  ImGui::SliderFloat("distance to the face (m)", &c.distance_m, 2, 100, "%.0f");
-  const camera::BaseLengthHint hint = camera::base_length_hint(c.distance_m);
-  ImGui::BulletText("walk %.1f to %.1f m between the shots (1/8 to 1/5 of the distance)",
-                    hint.min_m, hint.max_m);
-  ImGui::BulletText("same focal length, focus and aperture for both shots; no flash");
-  ImGui::BulletText("the range pole (both targets) in view of both shots");
-  ImGui::SetNextItemWidth(400 * app.targets.scale());
-  ImGui::SliderFloat("range pole target spacing (m)", &c.range_pole_m, 0.5f, 5, "%.2f");
-
-  ImGui::Separator();
-  const bool can_shoot = idle && c.camera != nullptr;
-  if (app.targets.button("Shoot left", 0, can_shoot)) shoot(app, true);
-  ImGui::SameLine();
-  ImGui::Text("left: %s", shot_state(c.left, c.stored));
-  if (app.targets.button("Shoot right", 0, can_shoot && c.left.has_value())) shoot(app, false);
-  ImGui::SameLine();
-  ImGui::Text("right: %s", shot_state(c.right, c.stored));
-  if (c.left && c.right) {
-    for (const auto& note : camera::check_pair(c.left->exif, c.right->exif))
-      ImGui::BulletText("%s%s",
-                        note.severity == camera::GuidanceNote::Severity::refusal ? "REFUSED: " : "",
-                        note.text.c_str());
+  // Shots on the left, guidance and the camera's settings beside them (below
+  // them in portrait).
+  const SplitLayout layout = split_for_side_panel(ImGui::GetContentRegionAvail().x * 0.45f, 0.5f);
+  ImGui::BeginChild("capture shots", layout.main);
+  draw_shots(app);
+  ImGui::EndChild();
+  begin_side_panel("capture guidance", layout);
+  draw_guidance(app);
+  if (!app.capture.guidance.empty()) {
+    ImGui::Separator();
+    heading("Camera settings");
+    for (const auto& g : app.capture.guidance) bullet(g);
   }
-  const bool can_store = idle && c.left && c.right && !c.stored && app.session &&
-                         app.session->visit() && !app.session->read_only();
-  if (app.targets.button("Store pair and reconstruct", 0, can_store)) store_and_reconstruct(app);
-  if (!app.session) ImGui::TextDisabled("open a project to store the pair");
-  if (c.live_view_texture && !c.live_view.empty()) {
-    const float w = 480 * app.targets.scale();
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.live_view_texture)),
-                 ImVec2(w, w * c.live_view.rows / c.live_view.cols));
-  }
+  ImGui::EndChild();
 }
 
 }  // namespace rockface::ui

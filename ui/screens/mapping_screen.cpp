@@ -14,6 +14,7 @@
 #include "ui/overlay_legend.h"
 #include "ui/overlay_traces.h"
 #include "ui/proposals_view.h"
+#include "ui/format.h"
 #include "ui/screens/screens.h"
 #include "ui/stereonet_view.h"
 
@@ -90,19 +91,20 @@ void save_trace(AppState& app) {
 
 void draw_fit(const TraceMarker& marker) {
   if (const auto& plane = marker.plane(); plane && plane->known) {
-    ImGui::Text("dip %.1f°  dip direction %05.1f°", rad_to_deg(plane->orientation.dip),
-                rad_to_deg(plane->orientation.dipdir));
-    ImGui::Text("uncertainty ± %.1f° (1 sigma), %zu points", rad_to_deg(plane->sigma),
-                marker.points().size());
-    if (!plane->problem.empty()) ImGui::TextWrapped("%s", plane->problem.c_str());
+    heading("Dip / dip direction " +
+            format::dip_and_direction(rad_to_deg(plane->orientation.dip),
+                                      rad_to_deg(plane->orientation.dipdir)));
+    paragraph("± " + format::text(format::Angle{rad_to_deg(plane->sigma)}) + " (1σ), from " +
+              format::count(static_cast<std::int64_t>(marker.points().size()), "point", "points"));
+    if (!plane->problem.empty()) paragraph(plane->problem);
   } else if (plane) {
-    ImGui::TextWrapped("%s", plane->problem.c_str());
+    paragraph(plane->problem);
   } else if (!marker.problem().empty()) {
-    ImGui::TextWrapped("%s", marker.problem().c_str());
+    paragraph(marker.problem());
   } else {
-    ImGui::TextWrapped(marker.mode() == TraceMarker::Mode::points
-                           ? "Tap points along a trace (3 or more)."
-                           : "Tap the two ends of a trace.");
+    paragraph(marker.mode() == TraceMarker::Mode::points
+                  ? "Tap points along a trace (3 or more)."
+                  : "Tap the two ends of a trace: the trace between them is found on the image.");
   }
 }
 
@@ -120,36 +122,44 @@ void draw_controls(AppState& app) {
   // frame; traces mapped on any of them land in that frame.
   const auto& pairs = app.session->pairs();
   if (pairs.size() > 1) {
-    ImGui::TextUnformatted("3D image:");
+    label_in_row("3D image:");
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-      ImGui::SameLine();
-      const std::string label = "Pair " + std::to_string(k + 1);
-      if (toggle(label.c_str(), app.session->pair() == k, idle) && app.session->pair() != k) {
-        marker.clear();  // its taps were on the other pair's 3D image
+      const std::string name = "Pair " + std::to_string(k + 1);
+      same_line_if_fits(button_width(name, app.targets.target_px()));
+      // The taps of an unsaved trace were on this pair's 3D image: another
+      // pair loses them, so it asks first.
+      const bool current = app.session->pair() == k;
+      const bool chosen = !marker.taps().empty() && !current
+                              ? app.targets.confirmed_button(
+                                    name, "The trace being marked is not saved. Leave it?", idle)
+                              : toggle(name.c_str(), current, idle);
+      if (chosen && !current) {
+        marker.clear();
         app.session->choose_pair(k);
       }
     }
   }
   if (toggle("Tap points", marker.mode() == TraceMarker::Mode::points))
     marker.set_mode(TraceMarker::Mode::points);
-  ImGui::SameLine();
+  same_line_if_fits(button_width("Two taps", app.targets.target_px()));
   if (toggle("Two taps", marker.mode() == TraceMarker::Mode::two_taps))
     marker.set_mode(TraceMarker::Mode::two_taps);
   if (app.targets.button("Undo", 0, !marker.taps().empty())) marker.undo(context);
-  ImGui::SameLine();
-  if (app.targets.button("Clear", 0, !marker.taps().empty())) marker.clear();
-  ImGui::SameLine();
+  // Clear loses every tap of the trace: asked first (Undo takes one back).
+  same_line_if_fits(button_width("Clear", app.targets.target_px()));
+  if (app.targets.confirmed_button("Clear", "Clear every tap of this trace?",
+                                   !marker.taps().empty()))
+    marker.clear();
   const bool can_save =
       idle && marker.points().size() >= 2 && app.session->visit() && !app.session->read_only();
-  if (app.targets.button("Save trace", 0, can_save)) save_trace(app);
-  ImGui::TextUnformatted("Joint:");
+  if (app.targets.button_in_row("Save trace", can_save)) save_trace(app);
+  label_in_row("Joint:");
   std::vector<std::string> labels{""};
   for (const auto& j : app.session->joints()) labels.push_back(j.label);
-  for (const auto& label : labels) {
-    ImGui::SameLine();
-    if (toggle((label.empty() ? std::string("none") : label).c_str(),
-               app.mapping.joint_label == label))
-      app.mapping.joint_label = label;
+  for (const auto& joint : labels) {
+    const std::string name = joint.empty() ? std::string("none") : joint;
+    same_line_if_fits(button_width(name, app.targets.target_px()));
+    if (toggle(name.c_str(), app.mapping.joint_label == joint)) app.mapping.joint_label = joint;
   }
   draw_fit(marker);
 }
@@ -194,13 +204,12 @@ bool store_trace(AppState& app, storage::Measurement m) {
 
 void draw_mapping_screen(AppState& app) {
   if (!require_model(app)) return;
-  const float side = 400 * app.targets.scale();
-  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const SplitLayout layout = split_for_side_panel(400 * app.targets.scale());
   ImGui::BeginGroup();
   add_traces_to_overlay(app);
   add_map_blocks_to_overlay(app);
   drag_proposal_ends(app);  // before the model: a dragged handle does not turn it
-  const auto interaction = app.model_view.draw(ImVec2(avail.x - side, avail.y), app.gesture);
+  const auto interaction = app.model_view.draw(layout.main, app.gesture);
   if (interaction.tap && !tap_proposal(app, *interaction.tap)) {
     const ScreenRay r = app.model_view.ray_at(*interaction.tap);
     app.mapping.marker.tap({r.origin, r.direction}, trace_context(app));
@@ -213,8 +222,7 @@ void draw_mapping_screen(AppState& app) {
   draw_proposals_on_model(app);
   ImGui::PopClipRect();
   ImGui::EndGroup();
-  ImGui::SameLine();
-  ImGui::BeginChild("mapping side", ImVec2(0, 0));
+  begin_side_panel("mapping side", layout);
   draw_controls(app);
   draw_proposal_panel(app);
   draw_map_blocks_panel(app);

@@ -1,39 +1,35 @@
 // Model: the reconstructed, textured 3D image with orbit / pan / pinch-zoom,
-// the range pole targets and the accuracy report on it.
+// the range pole targets and the accuracy of the 3D image in words.
 #include <nlohmann/json.hpp>
 
 #include "ui/overlay_legend.h"
+#include "ui/accuracy_summary.h"
+#include "ui/format.h"
 #include "ui/screens/screens.h"
 
 namespace rockface::ui {
 
 namespace {
 
-// The accuracy figures the reconstruction stored with the registration
-// (firmware-app writes them into parameters_json).
 void draw_accuracy(const storage::Model& model) {
-  const storage::Registration& r = model.registration;
-  ImGui::Text("Registration: %s", r.kind.c_str());
-  ImGui::Text("Scale %.4f   RMS %.1f mm", r.scale, r.rms_m * 1000);
-  const auto p =
-      nlohmann::json::parse(r.parameters_json.empty() ? "{}" : r.parameters_json, nullptr, false);
-  if (p.is_object()) {
-    for (const auto& [key, value] : p.items()) {
-      if (key == "targets") continue;
-      ImGui::Text("%s: %s", key.c_str(),
-                  value.is_string() ? value.get<std::string>().c_str() : value.dump().c_str());
-    }
+  heading("Accuracy");
+  for (const AccuracyLine& line : accuracy_lines(model)) {
+    const std::string text = line.title + ": " + line.value;
+    if (line.warning)
+      paragraph(text, warning_colour());
+    else
+      paragraph(text);
   }
-  if (!model.residuals.empty() && ImGui::BeginTable("residuals", 2, ImGuiTableFlags_Borders)) {
-    ImGui::TableSetupColumn("control");
-    ImGui::TableSetupColumn("residual (mm)");
+  if (model.residuals.size() >= 3 && ImGui::BeginTable("residuals", 2, ImGuiTableFlags_Borders)) {
+    ImGui::TableSetupColumn("Control point");
+    ImGui::TableSetupColumn("Residual");
     ImGui::TableHeadersRow();
     for (const auto& res : model.residuals) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(res.label.c_str());
+      label(res.label);
       ImGui::TableNextColumn();
-      ImGui::Text("%.1f", res.residual.norm() * 1000);
+      label(format::text(format::Length{res.residual.norm()}));
     }
     ImGui::EndTable();
   }
@@ -62,17 +58,17 @@ void draw_targets(AppState& app, const storage::Model& model) {
 
 bool require_model(AppState& app) {
   if (!app.session) {
-    ImGui::TextWrapped("Open a project first (Project).");
+    paragraph("Open a project first (Project).");
     return false;
   }
   if (!app.session->model()) {
-    ImGui::TextWrapped(
-        "This project has no model yet: capture a stereo pair and reconstruct it "
-        "(Capture).");
+    paragraph(
+        "This visit has no 3D image yet: take a stereo pair and store it (Capture); the 3D image "
+        "is made from it.");
     return false;
   }
   if (!app.model_view.has_model()) {
-    ImGui::TextWrapped("Loading the model ...");
+    paragraph("Loading the 3D image …");
     return false;
   }
   return true;
@@ -80,29 +76,31 @@ bool require_model(AppState& app) {
 
 void draw_model_screen(AppState& app) {
   if (!require_model(app)) return;
-  const float side = 360 * app.targets.scale();
-  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const SplitLayout layout = split_for_side_panel(380 * app.targets.scale());
   ImGui::BeginGroup();
   if (app.show_photograph) {  // ui/overlay_photo_targets.h
     app.photo_targets.draw(app.model_view.model_id(), *app.model_view.model(),
-                           app.model_view.photo(), ImVec2(avail.x - side, avail.y),
-                           app.targets.scale());
+                           app.model_view.photo(), layout.main, app.targets.scale());
   } else {
-    app.model_view.draw(ImVec2(avail.x - side, avail.y), app.gesture);
+    app.model_view.draw(layout.main, app.gesture);
     ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
     draw_targets(app, *app.model_view.model());
     draw_model_overlays(app, ModelScreen::model);  // ui/overlay_legend.h
     ImGui::PopClipRect();
   }
   ImGui::EndGroup();
-  ImGui::SameLine();
-  ImGui::BeginChild("model side", ImVec2(0, 0));
+  begin_side_panel("model side", layout);
   const DisplayMesh& mesh = app.model_view.display_mesh();
   const storage::Model& model = *app.model_view.model();
-  ImGui::Text("Model %lld (%s)", static_cast<long long>(model.id), model.preset.c_str());
   const photogrammetry::SurfaceMesh& surface = *app.model_view.surface();
-  ImGui::Text("%zu vertices, %zu triangles", surface.vertices.size(), surface.triangles.size());
-  ImGui::Text("shown: %zu triangles", mesh.triangle_count());
+  heading("3D image " + std::to_string(model.id) + " (" + model.preset + " preset)");
+  paragraph(
+      format::count(static_cast<std::int64_t>(surface.vertices.size()), "point", "points") + ", " +
+      format::count(static_cast<std::int64_t>(surface.triangles.size()), "triangle", "triangles") +
+      (mesh.triangle_count() < surface.triangles.size()
+           ? " (" + format::count(static_cast<std::int64_t>(mesh.triangle_count())) +
+                 " drawn; measuring uses them all)"
+           : std::string()));
   if (app.targets.button("Reset view", -1))
     app.model_view.camera().frame(mesh.centre, mesh.radius, mesh.mean_normal);
   if (app.targets.button(app.show_photograph ? "3D image" : "Photograph", -1))

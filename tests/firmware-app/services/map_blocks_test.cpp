@@ -139,7 +139,9 @@ TEST(MapBlocks, TheMappingScreenShowsTheBlocksAndUpdatesThemAfterASavedTrace) {
   s.settle();
   ASSERT_TRUE(blocks.verdicts) << blocks.problem;
   EXPECT_EQ(blocks.verdicts->traces, before + 1);
-  EXPECT_NE(s.state().status.find("updated in"), std::string::npos) << s.state().status;
+  // Said on the Mapping screen's own status line.
+  const std::string said = s.state().statuses.line(static_cast<std::size_t>(ui::Screen::mapping));
+  EXPECT_NE(said.find("updated in"), std::string::npos) << said;
   const storage::RecordId visit = *s.state().session->visit();
   expect_same_as_full_analysis(file, visit, *blocks.verdicts);
 }

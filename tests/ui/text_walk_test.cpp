@@ -1,0 +1,218 @@
+// Every screen of the demo project and of a visit photographed as three
+// pairs, walked with the field services of the `rockface` program at the
+// sizes of two tablets (1280 x 800 at 150 dpi, 1920 x 1200 at 225 dpi), in
+// portrait, and in the tunnel theme. Every string drawn in every frame of
+// the walk (ui/widgets_text.h records them) must fit the space it had, not
+// look like a report key or JSON, and carry no number of more than six
+// significant digits; every button is a 9 mm thumb target at the tablet's
+// density; no string shows a machine's folder.
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "firmware-app/services/ui_services.h"
+#include "tests/ui/demo_project.h"
+#include "ui/headless_session.h"
+#include "ui/text_check.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rockface::ui;
+
+// The model view's cost grows with triangles, and what is checked is text.
+constexpr std::size_t kTriangles = 20000;
+
+struct Tablet {
+  int width, height;
+  float scale;  // the layout of a 10" 1280 x 800 tablet at this density
+  Theme theme;
+  std::string name;
+};
+
+// The services `rockface ui` composes (firmware-app/cli/verb_ui.cpp).
+struct Services {
+  rockface::app::StoreReconstructionRunner reconstruction;
+  rockface::app::StoreAnalysisRunner analysis;
+  rockface::app::FieldCameraConnector camera{rockface::test::demo_scene()};
+  rockface::app::StoreTunnelRunner tunnel;
+  rockface::app::StoreTraceMapRunner trace_map;
+  rockface::app::StoreWedgeRunner wedges;
+  rockface::app::StoreRockMassRunner rockmass;
+  rockface::app::StoreFieldReportRunner field_report;
+  FieldServices all() {
+    FieldServices s;
+    s.reconstruction = &reconstruction;
+    s.analysis = &analysis;
+    s.camera = &camera;
+    s.tunnel = &tunnel;
+    s.trace_map = &trace_map;
+    s.wedges = &wedges;
+    s.rockmass = &rockmass;
+    s.field_report = &field_report;
+    return s;  // no office server: its panel needs a PostgreSQL server
+  }
+};
+
+class Walk {
+ public:
+  Walk(const fs::path& project, const Tablet& tablet) : tablet_(tablet) {
+    const fs::path settings = rockface::test::ui_test_dir() / ("walk-" + tablet.name + ".json");
+    save_ui_settings(settings, UiSettings{tablet.theme});
+    UiOptions options;
+    options.project = project;
+    options.scale = tablet.scale;
+    options.max_display_triangles = kTriangles;
+    options.settings_file = settings;
+    session_ =
+        std::make_unique<HeadlessSession>(options, services_.all(), tablet.width, tablet.height);
+    session_->settle();
+    check("opening");
+  }
+
+  HeadlessSession& s() { return *session_; }
+
+  // Checks the last frame's strings and buttons.
+  void check(const std::string& where) {
+    const AppState& app = session_->state();
+    const std::string at = tablet_.name + ", " + screen_name(app.screen) + " (" + where + ")";
+    for (const DrawnText& d : drawn_text()) {
+      if (const std::string why = text_problem(d); !why.empty()) problems_.insert(at + ": " + why);
+      for (const char* folder : {"/work/", "/home/", "/tmp/"})
+        if (d.text.find(folder) != std::string::npos)
+          problems_.insert(at + ": \"" + d.text + "\" shows a machine's folder");
+      ++strings_;
+    }
+    // 9 mm at the density the scale stands for, less half a pixel of
+    // ImGui's rounding of item rectangles.
+    const float least = touch_target_px_at(app.targets.dpi()) - 0.5f;
+    for (const auto& [label, rect] : app.targets.all()) {
+      if (!rect.button) continue;
+      const float w = rect.max.x - rect.min.x, h = rect.max.y - rect.min.y;
+      if (std::min(w, h) < least)
+        problems_.insert(at + ": button \"" + label + "\" is " + std::to_string(w) + " x " +
+                         std::to_string(h) + " px, under 9 mm (" + std::to_string(least) + " px)");
+    }
+  }
+
+  void tap(const std::string& label, const std::string& where = "") {
+    session_->tap(label);
+    session_->frame();
+    check(where.empty() ? "after " + label : where);
+  }
+  void tap_and_wait(const std::string& label) {
+    session_->tap(label);
+    session_->settle();
+    check("after " + label);
+  }
+
+  // The strings checked so far (a walk that saw nothing proves nothing).
+  int strings() const { return strings_; }
+  const std::set<std::string>& problems() const { return problems_; }
+
+ private:
+  Tablet tablet_;
+  Services services_;
+  std::unique_ptr<HeadlessSession> session_;
+  std::set<std::string> problems_;
+  int strings_ = 0;
+};
+
+// Every screen and view the geologist reaches from the tabs.
+void walk_every_screen(Walk& w) {
+  AppState& app = w.s().state();
+  w.tap("Project");
+  // The project's name, shortened at the top right, is one tap from whole.
+  w.tap("Capture");
+  w.tap_and_wait("Connect camera");
+  w.tap_and_wait("Shoot left");
+  w.tap_and_wait("Shoot right");
+  w.tap("Model");
+  w.tap("Mapping");
+  for (std::size_t k = 0; k < app.session->pairs().size(); ++k) {
+    const std::string pair = "Pair " + std::to_string(k + 1);
+    if (app.targets.find(pair)) w.tap_and_wait(pair);
+  }
+  // A trace being marked: its live fit in words.
+  const ModelView& view = app.model_view;
+  if (const auto centre = view.to_screen(view.display_mesh().centre)) {
+    for (int i = 0; i < 4; ++i) w.s().tap(centre->x - 60 + 40 * i, centre->y - 30 + 20 * i);
+    w.s().frame();
+    w.check("a trace of four taps");
+  }
+  w.tap("Blocks");
+  const auto& blocks = app.session->blocks();
+  ASSERT_FALSE(blocks.empty());
+  w.tap("row " + blocks.front().label, "a block's report");
+  w.tap("Rock mass");
+  w.tap_and_wait("Rock mass figures");
+  w.tap("Block report");
+  w.tap("Wedges view");
+  w.tap_and_wait("Find wedges");
+  w.tap("Blocks view");
+}
+
+void expect_clean(const Walk& w) {
+  EXPECT_GT(w.strings(), 200) << "the walk saw too few strings to mean anything";
+  std::string all;
+  for (const auto& p : w.problems()) all += p + "\n";
+  EXPECT_TRUE(w.problems().empty()) << w.problems().size() << " problems:\n" << all;
+}
+
+const std::vector<Tablet>& tablets() {
+  static const std::vector<Tablet> t = {
+      {1280, 800, 1.0f, Theme::daylight, "1280x800"},
+      {1920, 1200, 1.5f, Theme::daylight, "1920x1200"},
+  };
+  return t;
+}
+
+TEST(UiTextWalk, TheDemoProjectReadsCleanOnBothTablets) {
+  for (const Tablet& tablet : tablets()) {
+    Walk w(rockface::test::copy_of_demo("walk-demo-" + tablet.name), tablet);
+    walk_every_screen(w);
+    expect_clean(w);
+  }
+}
+
+TEST(UiTextWalk, AThreePairVisitReadsCleanOnBothTablets) {
+  for (const Tablet& tablet : tablets()) {
+    const fs::path project =
+        rockface::test::ui_test_dir() / ("walk-three-pairs-" + tablet.name + ".rockface");
+    fs::copy_file(rockface::test::three_pair_project(), project,
+                  fs::copy_options::overwrite_existing);
+    Walk w(project, tablet);
+    ASSERT_EQ(w.s().state().session->pairs().size(), 3u);
+    walk_every_screen(w);
+    expect_clean(w);
+  }
+}
+
+TEST(UiTextWalk, PortraitAndTheTunnelThemeReadClean) {
+  for (const Tablet& tablet : {Tablet{800, 1280, 1.0f, Theme::daylight, "portrait"},
+                               Tablet{1280, 800, 1.0f, Theme::tunnel, "tunnel"}}) {
+    Walk w(rockface::test::copy_of_demo("walk-" + tablet.name), tablet);
+    walk_every_screen(w);
+    expect_clean(w);
+  }
+}
+
+// The checks themselves: what they must catch.
+TEST(UiTextWalk, TheChecksCatchKeysJsonLongNumbersAndOverflow) {
+  EXPECT_TRUE(looks_like_key("sigma_z: 0.014"));
+  EXPECT_TRUE(looks_like_key("dense: image_scale: 1"));
+  EXPECT_FALSE(looks_like_key("Point precision: ± 14 mm"));
+  EXPECT_FALSE(looks_like_key("FACE_E 0.49 m²"));  // an upper-case face name is not a key
+  EXPECT_TRUE(looks_like_json(R"(dense: {"image_scale":1.0})"));
+  EXPECT_FALSE(looks_like_json("{J1, J2}"));
+  EXPECT_EQ(overlong_number("R 0.98327071179"), "0.98327071179");
+  EXPECT_EQ(overlong_number("1,234,567 points"), "1,234,567");
+  EXPECT_FALSE(overlong_number("150,327 points, 0.0021 m, 2026-11-26 03:45"));
+  EXPECT_TRUE(text_problem({"fits", 100, 100, "panel"}).empty());
+  EXPECT_NE(text_problem({"too wide", 140, 100, "panel"}).find("140 px wide in 100 px"),
+            std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,80 @@
+#include "ui/text_check.h"
+
+#include <cctype>
+#include <cstdio>
+
+namespace rockface::ui {
+
+namespace {
+
+bool lower(char c) {
+  return c >= 'a' && c <= 'z';
+}
+bool digit(char c) {
+  return c >= '0' && c <= '9';
+}
+
+}  // namespace
+
+bool looks_like_key(std::string_view t) {
+  // [a-z]+_[a-z_]+: at any position, by hand (std::regex is slow and this
+  // runs on every string of every frame of the walk).
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!lower(t[i]) || (i > 0 && lower(t[i - 1]))) continue;
+    std::size_t j = i;
+    while (j < t.size() && lower(t[j])) ++j;
+    if (j >= t.size() || t[j] != '_') continue;
+    std::size_t k = j + 1;
+    while (k < t.size() && (lower(t[k]) || t[k] == '_')) ++k;
+    if (k > j + 1 && k < t.size() && t[k] == ':') return true;
+  }
+  return false;
+}
+
+bool looks_like_json(std::string_view t) {
+  return t.find("{\"") != std::string_view::npos;
+}
+
+std::optional<std::string> overlong_number(std::string_view t, int max_digits) {
+  for (std::size_t i = 0; i < t.size();) {
+    if (!digit(t[i])) {
+      ++i;
+      continue;
+    }
+    // One number: digits, thousands commas between digit groups, one point.
+    std::size_t j = i;
+    int significant = 0;
+    bool leading = true;
+    while (j < t.size()) {
+      const char c = t[j];
+      if (digit(c)) {
+        if (c != '0') leading = false;
+        if (!leading) ++significant;
+        ++j;
+      } else if ((c == ',' || c == '.') && j + 1 < t.size() && digit(t[j + 1])) {
+        ++j;
+      } else {
+        break;
+      }
+    }
+    if (significant > max_digits) return std::string(t.substr(i, j - i));
+    i = j;
+  }
+  return std::nullopt;
+}
+
+std::string text_problem(const DrawnText& d, float slack_px) {
+  std::string why;
+  auto add = [&](const std::string& s) { why += (why.empty() ? "" : "; ") + s; };
+  if (d.width > d.available + slack_px) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.0f px wide in %.0f px", d.width, d.available);
+    add(buf);
+  }
+  if (looks_like_key(d.text)) add("looks like a report key");
+  if (looks_like_json(d.text)) add("looks like JSON");
+  if (const auto n = overlong_number(d.text)) add("the number " + *n + " has too many digits");
+  return why.empty() ? why : "\"" + d.text + "\" in " + d.panel + ": " + why;
+}
+
+}  // namespace rockface::ui
