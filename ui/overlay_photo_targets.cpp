@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ui/widgets.h"
+#include "ui/widgets_text.h"
 
 namespace rockface::ui {
 
@@ -45,7 +46,7 @@ void PhotoTargetsView::draw(storage::RecordId model_id, const storage::Model& mo
                             const cv::Mat& photo_bgr, ImVec2 size, float scale) {
   rings_.clear();
   if (photo_bgr.empty()) {
-    ImGui::TextWrapped("This 3D image has no photograph stored with it.");
+    paragraph("This 3D image has no photograph stored with it.");
     return;
   }
   if (model_id != model_id_ || texture_.empty()) {

@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/units.h"
 #include "core/measure/least_cost_trace.h"
+#include "ui/format.h"
 #include "ui/picture_texture.h"
 #include "ui/screens/screens.h"
+#include "ui/widgets_text.h"
 
 namespace rockface::ui {
 
@@ -36,7 +39,45 @@ bool current(const AppState& app) {
 }
 
 bool shown(const ProposalsState& s, const measure::TraceProposal& p) {
-  return !s.rejected.count(p.id) && !s.accepted.count(p.id);
+  return !s.rejected.count(p.id) && !s.accepted.count(p.id) && !s.mapped.count(p.id);
+}
+
+// A proposal lies along a stored trace when most of its points are within
+// the proposals' own facet tolerance (5 cm: a trace's width on the rock and
+// the tap's spread) of that trace's polyline.
+bool along_stored_trace(const measure::TraceProposal& p,
+                        const std::vector<storage::Measurement>& traces) {
+  constexpr double kNear = 0.05, kShare = 0.6;
+  if (p.trace.points.empty()) return false;
+  for (const auto& t : traces) {
+    if (t.points.size() < 2) continue;
+    std::size_t near = 0;
+    for (const Eigen::Vector3d& q : p.trace.points) {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 1; i < t.points.size(); ++i) {
+        const Eigen::Vector3d a = t.points[i - 1], d = t.points[i] - a;
+        const double along =
+            d.squaredNorm() > 0 ? std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+        best = std::min(best, (a + along * d - q).norm());
+      }
+      near += best <= kNear;
+    }
+    if (static_cast<double>(near) >= kShare * static_cast<double>(p.trace.points.size()))
+      return true;
+  }
+  return false;
+}
+
+void mark_mapped(AppState& app) {
+  ProposalsState& s = app.mapping.proposals;
+  s.mapped.clear();
+  if (!s.result || !app.session) return;
+  std::vector<storage::Measurement> traces;
+  for (const auto& m : app.session->measurements())
+    if (m.kind == storage::Measurement::Kind::trace && m.model_id == s.model_id)
+      traces.push_back(m);
+  for (const auto& p : s.result->proposals)
+    if (along_stored_trace(p, traces)) s.mapped.insert(p.id);
 }
 
 // The model's depth precision, as for a hand trace (mapping_screen.cpp).
@@ -86,6 +127,7 @@ void find_traces(AppState& app) {
         s.ends.reset();
         s.corrected.reset();
         s.photo_stale = true;
+        mark_mapped(app);
       });
 }
 
@@ -178,20 +220,23 @@ void draw_photo(AppState& app) {
 void draw_selected(AppState& app, const measure::TraceProposal& p) {
   ProposalsState& s = app.mapping.proposals;
   const bool can_store = !app.task.running() && app.session->visit() && !app.session->read_only();
-  ImGui::Text("%s: %.0f %% sure, %s, %.2f m", p.id.c_str(), 100 * p.confidence,
-              measure::proposal_cue_name(p.cue), p.trace.length);
+  paragraph(p.id + ": " + format::text(format::Fraction{p.confidence}) + " sure, " +
+            measure::proposal_cue_name(p.cue) + ", " +
+            format::text(format::Length{p.trace.length}));
   if (p.trace.plane.known)
-    ImGui::Text("dip %.1f°  dip direction %05.1f°  ± %.1f°",
-                rad_to_deg(p.trace.plane.orientation.dip),
-                rad_to_deg(p.trace.plane.orientation.dipdir), rad_to_deg(p.trace.plane.sigma));
+    paragraph(format::dip_and_direction(rad_to_deg(p.trace.plane.orientation.dip),
+                                        rad_to_deg(p.trace.plane.orientation.dipdir)) +
+              " ± " + format::text(format::Angle{rad_to_deg(p.trace.plane.sigma)}));
   else
-    ImGui::TextWrapped("%s", p.trace.plane.problem.c_str());
+    paragraph(p.trace.plane.problem);
   if (p.cue != measure::ProposalCue::fold)
-    ImGui::Text("dark line %.0f grey levels darker than its sides", p.contrast_grey);
+    paragraph("dark line " + format::count(std::lround(p.contrast_grey)) +
+              " grey levels darker than its sides");
   if (p.fold_fraction > 0)
-    ImGui::Text("%s of %.0f° along %.0f %% of it", p.ridge ? "ridge" : "valley", p.fold_deg,
-                100 * p.fold_fraction);
-  if (p.facet_id) ImGui::Text("on the edge of facet %d", *p.facet_id);
+    paragraph(std::string(p.ridge ? "ridge" : "valley") + " of " +
+              format::text(format::Angle{p.fold_deg}) + " along " +
+              format::text(format::Fraction{p.fold_fraction}) + " of it");
+  if (p.facet_id) paragraph("on the edge of facet F" + std::to_string(*p.facet_id));
   if (!s.ends) {
     if (app.targets.button("Accept", 0, can_store) &&
         store_trace(app, trace_record(app, p.trace, "proposed"))) {
@@ -212,10 +257,10 @@ void draw_selected(AppState& app, const measure::TraceProposal& p) {
     }
     return;
   }
-  ImGui::TextWrapped(
+  paragraph(
       "Drag the two ends where the trace really ends: it is traced again along "
       "the dark line between them.");
-  if (!s.correction_problem.empty()) ImGui::TextWrapped("%s", s.correction_problem.c_str());
+  if (!s.correction_problem.empty()) paragraph(s.correction_problem);
   if (app.targets.button("Save correction", 0, can_store && s.corrected.has_value()) &&
       store_trace(app, trace_record(app, *s.corrected, "corrected"))) {
     s.accepted.insert(p.id);
@@ -243,19 +288,22 @@ void draw_proposal_panel(AppState& app) {
   if (app.targets.button("Find traces", 0, ready && !app.task.running())) find_traces(app);
   if (!ready) {
     ImGui::SameLine();
-    ImGui::TextWrapped("needs the model's photograph and camera");
+    label_in_row("needs the model's photograph and camera");
   }
-  if (!s.problem.empty()) ImGui::TextWrapped("%s", s.problem.c_str());
+  if (!s.problem.empty()) paragraph(s.problem);
   if (!current(app)) return;
   const auto& proposals = s.result->proposals;
   std::size_t left = 0;
   for (const auto& p : proposals) left += shown(s, p);
-  ImGui::Text("%zu proposed traces to decide; %zu accepted, %zu rejected", left, s.accepted.size(),
-              s.rejected.size());
+  paragraph(format::count(static_cast<std::int64_t>(left), "proposed trace", "proposed traces") +
+            " to decide; " + format::count(static_cast<std::int64_t>(s.accepted.size())) +
+            " accepted, " + format::count(static_cast<std::int64_t>(s.rejected.size())) +
+            " rejected, " + format::count(static_cast<std::int64_t>(s.mapped.size())) +
+            " already mapped");
   if (s.selected && *s.selected < proposals.size()) {
     draw_selected(app, proposals[*s.selected]);
   } else {
-    ImGui::TextWrapped(
+    paragraph(
         "Tap a proposed trace on the model (or its name) to accept, correct or "
         "reject it.");
   }
@@ -268,9 +316,10 @@ void draw_proposal_panel(AppState& app) {
       s.photo_stale = true;
     }
     ImGui::SameLine();
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(confidence_colour(p.confidence)),
-                       "%.0f %%  %.1f m  %s", 100 * p.confidence, p.trace.length,
-                       measure::proposal_cue_name(p.cue));
+    label_in_row(format::text(format::Fraction{p.confidence}) + "  " +
+                     format::text(format::Length{p.trace.length}) + "  " +
+                     measure::proposal_cue_name(p.cue),
+                 confidence_colour(p.confidence));
   }
   draw_photo(app);
 }

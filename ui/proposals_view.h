@@ -33,8 +33,11 @@ struct ProposalsState {
   storage::RecordId model_id = 0;  // the model the proposals were found on
   std::shared_ptr<const measure::ProposalResult> result;
   std::set<std::string> rejected, accepted;  // hidden for the session
-  std::optional<std::size_t> selected;       // index into result->proposals
-  std::string problem;                       // why there are none (the runner's error)
+  // Hidden too: proposals that lie along a trace already stored on this
+  // model (the geologist mapped it by hand or accepted it before).
+  std::set<std::string> mapped;
+  std::optional<std::size_t> selected;  // index into result->proposals
+  std::string problem;                  // why there are none (the runner's error)
   // Correcting the selected proposal: its ends on the model (dragged), the
   // handle being dragged (0, 1) or -1, and the path traced between them.
   std::optional<std::array<Eigen::Vector3d, 2>> ends;
