@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -91,6 +92,27 @@ inline std::filesystem::path copy_of_demo(const std::string& name) {
   const auto to = ui_test_dir() / (name + ".rockface");
   std::filesystem::copy_file(demo_project(), to, std::filesystem::copy_options::overwrite_existing);
   return to;
+}
+
+// The whole text of a file.
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream f(p);
+  return {std::istreambuf_iterator<char>(f), {}};
+}
+
+// `rockface ui --headless --script` on `project` with the demo scene's mock
+// camera, a small viewport and a decimated model (CI's budget): the steps
+// (a JSON array) go to NAME.json, screenshots to NAME/, the log to NAME.txt
+// in ui_test_dir(). Returns the exit code.
+inline int run_demo_script(const std::filesystem::path& project, const std::string& steps,
+                           const std::string& name) {
+  const std::filesystem::path script = ui_test_dir() / (name + ".json");
+  std::ofstream(script) << R"({"viewport": [800, 500], "steps": )" << steps << "}";
+  return run_rockface_logged("ui --project " + project.string() + " --camera " + demo_scene() +
+                                 " --scale 0.6 --max-triangles 20000 --headless --script " +
+                                 script.string() + " --screenshots " +
+                                 (ui_test_dir() / name).string(),
+                             ui_test_dir() / (name + ".txt"));
 }
 
 }  // namespace rockface::test

@@ -21,21 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace rockface::test;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  return {std::istreambuf_iterator<char>(f), {}};
-}
-
-int run_script(const fs::path& project, const std::string& steps, const std::string& name) {
-  const fs::path script = ui_test_dir() / (name + ".json");
-  std::ofstream(script) << R"({"viewport": [800, 500], "steps": )" << steps << "}";
-  return run_rockface_logged("ui --project " + project.string() + " --camera " + demo_scene() +
-                                 " --scale 0.6 --max-triangles 20000 --headless --script " +
-                                 script.string() + " --screenshots " +
-                                 (ui_test_dir() / name).string(),
-                             ui_test_dir() / (name + ".txt"));
-}
-
 TEST(UiProposals, AnAcceptedProposalIsStoredAndAnalysedLikeAHandTrace) {
   const fs::path project = copy_of_demo("proposals");
   std::size_t measurements = 0, analyses = 0;
@@ -44,12 +29,12 @@ TEST(UiProposals, AnAcceptedProposalIsStoredAndAnalysedLikeAHandTrace) {
     measurements = store.list_measurements().size();
     analyses = store.list_analyses().size();
   }
-  ASSERT_EQ(run_script(project, R"([
+  ASSERT_EQ(run_demo_script(project, R"([
       {"tap": "Mapping"}, {"wait": "task"}, {"tap": "Find traces"}, {"wait": "task"}, {"frames": 2},
       {"screenshot": "proposals"}, {"tap": "proposal P3"}, {"frames": 1},
       {"screenshot": "selected"}, {"tap": "Accept"}, {"wait": "task"},
       {"tap": "Blocks"}, {"tap": "Run analysis"}, {"wait": "task"}])",
-                       "accept"),
+                            "accept"),
             0)
       << slurp(ui_test_dir() / "accept.txt");
   const std::string out = slurp(ui_test_dir() / "accept.txt");
@@ -96,11 +81,11 @@ TEST(UiProposals, ARejectedProposalStoresNothing) {
     auto store = rockface::storage::ProjectStore::open(project);
     measurements = store.list_measurements().size();
   }
-  ASSERT_EQ(run_script(project, R"([
+  ASSERT_EQ(run_demo_script(project, R"([
       {"tap": "Mapping"}, {"wait": "task"}, {"tap": "Find traces"}, {"wait": "task"}, {"frames": 2},
       {"tap": "P3"}, {"frames": 1}, {"tap": "Reject"}, {"frames": 2},
       {"screenshot": "rejected"}])",
-                       "reject"),
+                            "reject"),
             0)
       << slurp(ui_test_dir() / "reject.txt");
   auto store = rockface::storage::ProjectStore::open(project);

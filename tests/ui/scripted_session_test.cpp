@@ -18,21 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace rockface::test;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  return {std::istreambuf_iterator<char>(f), {}};
-}
-
-int run_script(const fs::path& project, const std::string& steps, const std::string& name) {
-  const fs::path script = ui_test_dir() / (name + ".json");
-  std::ofstream(script) << R"({"viewport": [800, 500], "steps": )" << steps << "}";
-  return run_rockface_logged("ui --project " + project.string() + " --camera " + demo_scene() +
-                                 " --scale 0.6 --max-triangles 20000 --headless --script " +
-                                 script.string() + " --screenshots " +
-                                 (ui_test_dir() / name).string(),
-                             ui_test_dir() / (name + ".txt"));
-}
-
 TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
   const fs::path project = copy_of_demo("session");
   std::size_t analyses = 0, captures = 0, models = 0, measurements = 0;
@@ -45,7 +30,7 @@ TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
   }
   // The taps lie on the face in the 800 x 500 layout at scale 0.6 (the
   // model panel's middle).
-  ASSERT_EQ(run_script(project, R"([
+  ASSERT_EQ(run_demo_script(project, R"([
       {"tap": "Mapping"}, {"tap": [250, 230]}, {"tap": [280, 250]}, {"tap": [310, 270]},
       {"screenshot": "mapping"}, {"tap": "Save trace"}, {"wait": "task"},
       {"tap": "Blocks"}, {"tap": "Run analysis"}, {"wait": "task"}, {"screenshot": "blocks"},
@@ -53,7 +38,7 @@ TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
       {"tap": "Shoot left"}, {"wait": "task"}, {"tap": "Shoot right"}, {"wait": "task"},
       {"tap": "Store pair and reconstruct"}, {"frames": 2}, {"tap": "Cancel"}, {"wait": "task"},
       {"screenshot": "capture"}, {"tap": "Project"}, {"tap": "Close project"}])",
-                       "first"),
+                            "first"),
             0)
       << slurp(ui_test_dir() / "first.txt");
   const std::string out = slurp(ui_test_dir() / "first.txt");
@@ -75,10 +60,10 @@ TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
   }
 
   // Reopen: the Blocks table holds the stored analysis (a row can be tapped).
-  ASSERT_EQ(
-      run_script(project, R"([{"tap": "Blocks"}, {"tap": "row TB1"}, {"screenshot": "reopened"}])",
-                 "second"),
-      0)
+  ASSERT_EQ(run_demo_script(
+                project, R"([{"tap": "Blocks"}, {"tap": "row TB1"}, {"screenshot": "reopened"}])",
+                "second"),
+            0)
       << slurp(ui_test_dir() / "second.txt");
   EXPECT_TRUE(fs::exists(ui_test_dir() / "second" / "reopened.png"));
 }
@@ -138,9 +123,10 @@ TEST(UiSession, TheAnalysisJoinsPiecesOfATraceStoredFromTwoPairs) {
     b.points = along(whole->points, 0.4, 1.0, 0.05);
     store.save_measurements(*visit, {a, b});
   }
-  ASSERT_EQ(run_script(project, R"([{"tap": "Blocks"}, {"tap": "Run analysis"}, {"wait": "task"}])",
-                       "pieces"),
-            0)
+  ASSERT_EQ(
+      run_demo_script(project, R"([{"tap": "Blocks"}, {"tap": "Run analysis"}, {"wait": "task"}])",
+                      "pieces"),
+      0)
       << slurp(ui_test_dir() / "pieces.txt");
   auto store = rockface::storage::ProjectStore::open(project);
   const auto runs = store.list_analyses();
