@@ -33,27 +33,8 @@ int run_ui(const UiRequest& req) {
   options.settings_file =
       req.settings.empty() ? ui::default_settings_file() : std::filesystem::path(req.settings);
   options.max_display_triangles = req.max_triangles;
-  StoreReconstructionRunner reconstruction;
-  StoreAnalysisRunner analysis;
-  FieldCameraConnector camera(req.camera);
-  StoreTunnelRunner tunnel;
-  StoreTraceMapRunner trace_map;
-  StoreWedgeRunner wedges;
-  ui::FieldServices services;
-  services.reconstruction = &reconstruction;
-  services.analysis = &analysis;
-  services.camera = &camera;
-  services.tunnel = &tunnel;
-  services.trace_map = &trace_map;
-  services.wedges = &wedges;
-  StoreSyncRunner sync;
-  services.sync = &sync;
-  StoreRockMassRunner rockmass;
-  services.rockmass = &rockmass;
-  FieldProposalRunner proposals;
-  services.proposals = &proposals;
-  StoreFieldReportRunner field_report;
-  services.field_report = &field_report;
+  FieldRunners runners(req.camera);
+  const ui::FieldServices services = runners.services();
   if (req.script.empty()) {
     ui::run_in_window(options, services);
     return 0;

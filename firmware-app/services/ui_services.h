@@ -96,4 +96,35 @@ class FieldCameraConnector final : public ui::CameraConnector {
   std::string source_;
 };
 
+// Every runner of the tablet, owned in one place: what `rockface ui`
+// hands the UI, and what tests that walk the real program use.
+struct FieldRunners {
+  explicit FieldRunners(std::string camera_source) : camera(std::move(camera_source)) {}
+  StoreReconstructionRunner reconstruction;
+  StoreAnalysisRunner analysis;
+  FieldCameraConnector camera;
+  StoreTunnelRunner tunnel;
+  StoreTraceMapRunner trace_map;
+  StoreWedgeRunner wedges;
+  StoreSyncRunner sync;
+  StoreRockMassRunner rockmass;
+  FieldProposalRunner proposals;
+  StoreFieldReportRunner field_report;
+
+  ui::FieldServices services() {
+    ui::FieldServices s;
+    s.reconstruction = &reconstruction;
+    s.analysis = &analysis;
+    s.camera = &camera;
+    s.tunnel = &tunnel;
+    s.trace_map = &trace_map;
+    s.wedges = &wedges;
+    s.sync = &sync;
+    s.rockmass = &rockmass;
+    s.proposals = &proposals;
+    s.field_report = &field_report;
+    return s;
+  }
+};
+
 }  // namespace rockface::app

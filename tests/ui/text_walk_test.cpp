@@ -32,27 +32,14 @@ struct Tablet {
   std::string name;
 };
 
-// The services `rockface ui` composes (firmware-app/cli/verb_ui.cpp).
+// The services `rockface ui` composes (app::FieldRunners), without the
+// office server: its panel needs a PostgreSQL server (tests/office taps it).
 struct Services {
-  rockface::app::StoreReconstructionRunner reconstruction;
-  rockface::app::StoreAnalysisRunner analysis;
-  rockface::app::FieldCameraConnector camera{rockface::test::demo_scene()};
-  rockface::app::StoreTunnelRunner tunnel;
-  rockface::app::StoreTraceMapRunner trace_map;
-  rockface::app::StoreWedgeRunner wedges;
-  rockface::app::StoreRockMassRunner rockmass;
-  rockface::app::StoreFieldReportRunner field_report;
+  rockface::app::FieldRunners runners{rockface::test::demo_scene()};
   FieldServices all() {
-    FieldServices s;
-    s.reconstruction = &reconstruction;
-    s.analysis = &analysis;
-    s.camera = &camera;
-    s.tunnel = &tunnel;
-    s.trace_map = &trace_map;
-    s.wedges = &wedges;
-    s.rockmass = &rockmass;
-    s.field_report = &field_report;
-    return s;  // no office server: its panel needs a PostgreSQL server
+    FieldServices s = runners.services();
+    s.sync = nullptr;
+    return s;
   }
 };
 
