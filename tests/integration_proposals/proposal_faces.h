@@ -125,10 +125,9 @@ inline ProposalFace build_proposal_face_from(JointDensity density, camera::Synth
   f.left = measure::left_view(f.rec.model_to_world, f.render.intrinsics);
   // The scene frame onto the 3D image's: the similarity between the true
   // surface point (the renderer's depth) and the mesh vertex at the same
-  // pixels. The registration's own error (a few cm, and the origin: the
-  // compass turns the model about the reference line's first point, not
-  // the lower target) is the reconstruction tests' subject; here the
-  // proposals are judged on the 3D image they were found on.
+  // pixels. The registration's own error (a few cm) is the reconstruction
+  // tests' subject; here the proposals are judged on the 3D image they
+  // were found on.
   const auto& pose = f.render.poses[0];
   std::vector<Eigen::Vector3d> truth_pts, mesh_pts;
   for (std::size_t k = 0; k < f.rec.mesh.size(); k += 13) {

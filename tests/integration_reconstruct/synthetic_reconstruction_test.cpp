@@ -51,6 +51,10 @@ void expect_registered(const Outcome& out) {
   // Targets ~38 px across, edges located along ~200 rays: the corrected
   // centre is good to ~0.02 px (noise and blur included).
   EXPECT_LT(o.worst_target_px, 0.05);
+  // registration.h: the lower target is the frame's origin, compass or not.
+  // The pole registration puts it there exactly and north turns about the
+  // vertical through it: only rounding is left (~1e-15 m at metres).
+  EXPECT_LT(o.lower_target_offset_m, 1e-9);
   EXPECT_TRUE(out.result.scaled);
   EXPECT_EQ(out.result.north_source, "compass");
 }

@@ -28,6 +28,7 @@ struct TruthComparison {
   double north_error_deg = 0;  // rotation about the vertical
   double vertical_error_deg = 0;
   double pole_length_error_m = 0;
+  double lower_target_offset_m = 0;  // the registered lower target's distance from the origin
   double rotation_error_deg = 0, direction_error_deg = 0;  // relative orientation
   double worst_target_px = 0;        // found target centre against the projected true centre
   std::size_t facet_points_min = 0;  // fewest points measured on a facet
@@ -157,6 +158,7 @@ inline TruthComparison compare_with_truth(const camera::SyntheticScene& scene,
     const Eigen::Vector3d lower = result.model_to_world.apply(tg->model[0]);
     const Eigen::Vector3d upper = result.model_to_world.apply(tg->model[1]);
     out.pole_length_error_m = (upper - lower).norm() - scene.range_pole->length;
+    out.lower_target_offset_m = lower.norm();
   }
   std::printf(
       "relative orientation: rotation error %.4f deg (sigma %.4f), base direction %.4f deg "

@@ -185,8 +185,11 @@ ReconstructionResult reconstruct(const cv::Mat& left_image, const cv::Mat& right
                                                    "--reference-line first point"));
       const Eigen::Vector3d b = T.apply(
           surface_at(out.mesh, sources.north->to_px, pick_radius, "--reference-line second point"));
+      // About the vertical through the frame's origin (the lower target, or
+      // the left camera without a pole), so the origin stays where
+      // registration.h says it is.
       const Similarity north =
-          north_rotation(a, b, sources.north->azimuth_deg, sources.north->declination_deg, a);
+          north_rotation(a, b, sources.north->azimuth_deg, sources.north->declination_deg);
       out.north_rotation_deg = rad_to_deg(Eigen::AngleAxisd(north.R).angle()) *
                                (Eigen::AngleAxisd(north.R).axis().z() < 0 ? -1 : 1);
       T = T.then(north);
