@@ -74,7 +74,11 @@ class MapEdits : public ::testing::Test {
 
   // `rockface measure` on the project's visit with `picks` (rockface-picks/1
   // without its format line): the new visit it stores.
+  // The session is closed first: a second program writing the project while
+  // the UI holds it open left the file damaged in this suite (2 runs of 2;
+  // see the branch's report), which is not what is tested here.
   storage::RecordId measure(const nlohmann::json& picks, const std::string& name) {
+    session_.reset();
     nlohmann::json file = picks;
     file["format"] = "rockface-picks/1";
     const fs::path path = ui_test_dir() / (name + ".picks.json");
@@ -155,10 +159,29 @@ TEST_F(MapEdits, TheFaceOutlineIsStoredAsRockfaceMeasureStoresAnAreaPick) {
 TEST_F(MapEdits, ASavedTraceGetsTheJointRockfaceMeasureMakesOfIt) {
   open(copy_of_demo("trace-joint"));
   ui().tap("Mapping");
-  for (int i = 0; i < 4; ++i) tap(around_centre(-100 + 66 * i, -50 + 33 * i));
-  ASSERT_EQ(app().mapping.marker.taps().size(), 4u) << app().mapping.marker.problem();
+  // Taps along the demo's joint J1 where it crosses from one face to the
+  // next (its traces T2 then T1, one per face: each alone is straight, a
+  // line on its face, so that no plane is known; across the edge it is).
+  const Measurement* first = nullptr;
+  const Measurement* second = nullptr;
+  for (const auto& m : app().session->measurements()) {
+    if (m.label == "T2") first = &m;
+    if (m.label == "T1") second = &m;
+  }
+  ASSERT_TRUE(first && second);
+  std::vector<Eigen::Vector3d> along;
+  for (const double f : {0.0, 0.5, 0.9})
+    along.push_back(first->points[static_cast<std::size_t>(f * (first->points.size() - 1))]);
+  for (const double f : {0.3, 0.7, 1.0})
+    along.push_back(second->points[static_cast<std::size_t>(f * (second->points.size() - 1))]);
+  for (const auto& p : along) {
+    const auto at = app().model_view.to_screen(p);
+    ASSERT_TRUE(at);
+    tap(*at);
+  }
+  ASSERT_EQ(app().mapping.marker.taps().size(), along.size()) << app().mapping.marker.problem();
   ASSERT_TRUE(app().mapping.marker.plane() && app().mapping.marker.plane()->known)
-      << "four taps across the demo's relief give a plane";
+      << app().mapping.marker.plane()->problem;
   ui().tap("Save trace");
   ui().settle();
   const auto traces = stored(Measurement::Kind::trace, visit_);
@@ -169,10 +192,25 @@ TEST_F(MapEdits, ASavedTraceGetsTheJointRockfaceMeasureMakesOfIt) {
   const std::string said = app().statuses.message(static_cast<std::size_t>(ui::Screen::mapping));
   EXPECT_NE(said.find("joint " + tablet.label), std::string::npos) << said;
 
+  // Taken back (asked first): the trace and its joint leave the visit, and
+  // the map's blocks are updated without it.
+  const std::string undo = "Undo " + tablet.label;
+  ui().tap(undo);
+  ASSERT_EQ(stored(Measurement::Kind::trace, visit_).size(), traces.size())
+      << "nothing goes before Yes";
+  ui().tap("Yes, undo " + tablet.label);
+  ui().settle();
+  EXPECT_EQ(stored(Measurement::Kind::trace, visit_).size(), traces.size() - 1);
+  EXPECT_FALSE(joint(tablet.label, visit_));
+  EXPECT_FALSE(app().mapping.blocks.stale);
+  std::size_t deleted = 0;
+  for (const auto& a : storage::ProjectStore::open(project_).list_actions(visit_))
+    deleted += a.action == "measurement deleted" && a.detail == tablet.label;
+  EXPECT_EQ(deleted, 1u);
+
   // The verb, given the stored trace's points (absolute, as a picks file
   // holds them).
-  auto store = storage::ProjectStore::open(project_);
-  const Eigen::Vector3d datum = store.project().datum;
+  const Eigen::Vector3d datum = storage::ProjectStore::open(project_).project().datum;
   nlohmann::json points = nlohmann::json::array();
   for (const auto& p : tablet.points) {
     const Eigen::Vector3d a = datum + p;
@@ -190,29 +228,14 @@ TEST_F(MapEdits, ASavedTraceGetsTheJointRockfaceMeasureMakesOfIt) {
   EXPECT_NEAR(*tablet_joint->persistence_m, *verb_joint->persistence_m, kSameMetres);
   EXPECT_EQ(tablet_joint->source, verb_joint->source);
   EXPECT_EQ(tablet_joint->type, verb_joint->type);
-  // The trace record itself is the verb's too.
+  // The trace record itself is the verb's too (the tablet's as it was
+  // stored, before it was taken back).
   const Measurement verb = stored(Measurement::Kind::trace, measured_visit).front();
   ASSERT_TRUE(verb.sigma_deg && tablet.sigma_deg);
   EXPECT_NEAR(*tablet.sigma_deg, *verb.sigma_deg, kSameDegrees);
   ASSERT_TRUE(verb.trace_length_m && tablet.trace_length_m);
   EXPECT_NEAR(*tablet.trace_length_m, *verb.trace_length_m, kSameMetres);
   EXPECT_EQ(tablet.censored, verb.censored);
-
-  // Taken back (asked first): the trace and its joint leave the visit, and
-  // the map's blocks are updated without it.
-  const std::string undo = "Undo " + tablet.label;
-  ui().tap(undo);
-  ASSERT_EQ(stored(Measurement::Kind::trace, visit_).size(), traces.size())
-      << "nothing goes before Yes";
-  ui().tap("Yes, undo " + tablet.label);
-  ui().settle();
-  EXPECT_EQ(stored(Measurement::Kind::trace, visit_).size(), traces.size() - 1);
-  EXPECT_FALSE(joint(tablet.label, visit_));
-  EXPECT_FALSE(app().mapping.blocks.stale);
-  std::size_t deleted = 0;
-  for (const auto& a : storage::ProjectStore::open(project_).list_actions(visit_))
-    deleted += a.action == "measurement deleted" && a.detail == tablet.label;
-  EXPECT_EQ(deleted, 1u);
 }
 
 TEST_F(MapEdits, AStraightTraceSaysItsPlaneIsUnknownAndMakesNoJoint) {
