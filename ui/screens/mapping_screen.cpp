@@ -161,6 +161,9 @@ void save_outline(AppState& app) {
   store_map_edit(app, std::move(edit), "Saving the face outline", [](AppState& a) {
     a.mapping.outline.clear();
     a.mapping.outlining = false;
+    // The errors said here were the map's without a face ("no surface
+    // patches"): read, now that it has one.
+    a.statuses.dismiss(static_cast<std::size_t>(Screen::mapping));
   });
 }
 
@@ -182,10 +185,11 @@ void draw_outline_controls(AppState& app) {
     if (app.targets.button_in_row("Save outline", can_save)) save_outline(app);
   } else {
     same_line_if_fits(button_width("Replace outline", app.targets.target_px()));
-    if (app.targets.confirmed_button("Replace outline",
-                                     "The visit's face outline " + stored.front()->label +
-                                         " is replaced by this one. Replace it?",
-                                     can_save))
+    std::string names;
+    for (const auto* m : stored) names += (names.empty() ? "" : ", ") + m->label;
+    if (app.targets.confirmed_button(
+            "Replace outline",
+            "The visit's face (" + names + ") is replaced by this outline. Replace it?", can_save))
       save_outline(app);
   }
   if (!outline.problem().empty())
