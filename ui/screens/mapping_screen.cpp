@@ -221,6 +221,22 @@ void draw_undo_saved_trace(AppState& app) {
   }
 }
 
+// Issue 27: the face's outline and the undo of the last saved trace, in a
+// row of their own below the proposals (whose Accept / Reject stay where
+// the geologist had them). The runner measures and stores both: without
+// one (a test's services) neither is offered.
+void draw_face_and_undo(AppState& app) {
+  if (!app.services.trace_map) return;
+  ImGui::Separator();
+  const bool outlining = app.mapping.outlining;
+  if (outlining)
+    ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+  const bool pressed = app.targets.button("Outline the face");
+  if (outlining) ImGui::PopStyleColor();
+  if (pressed) app.mapping.outlining = !outlining;
+  draw_undo_saved_trace(app);
+}
+
 void draw_fit(const TraceMarker& marker) {
   if (const auto& plane = marker.plane(); plane && plane->known) {
     heading("Dip / dip direction " +
@@ -282,12 +298,6 @@ void draw_controls(AppState& app) {
     app.mapping.outlining = false;
   }
   // Issue 27: the face's outline, marked with the same taps as a trace.
-  // The runner measures and stores it: without one (a test's services)
-  // there is no outline, nor undo of a saved trace.
-  if (app.services.trace_map) {
-    same_line_if_fits(button_width("Outline the face", app.targets.target_px()));
-    if (toggle("Outline the face", outlining)) app.mapping.outlining = true;
-  }
   if (app.mapping.outlining) {
     draw_outline_controls(app);
     return;
@@ -301,7 +311,6 @@ void draw_controls(AppState& app) {
   const bool can_save =
       idle && marker.points().size() >= 2 && app.session->visit() && !app.session->read_only();
   if (app.targets.button_in_row("Save trace", can_save)) save_trace(app);
-  draw_undo_saved_trace(app);
   label_in_row("Joint:");
   std::vector<std::string> labels{""};
   for (const auto& j : app.session->joints()) labels.push_back(j.label);
@@ -396,6 +405,7 @@ void draw_mapping_screen(AppState& app) {
   begin_side_panel("mapping side", layout);
   draw_controls(app);
   draw_proposal_panel(app);
+  draw_face_and_undo(app);
   draw_map_blocks_panel(app);
   std::vector<StereonetPlane> planes;
   for (const auto& j : app.session->joints())
