@@ -118,6 +118,19 @@ class ProjectStore {
   std::vector<JointSet> list_joint_sets(RecordId visit_id);
   std::vector<Joint> list_joints(std::optional<RecordId> visit_id = {});
 
+  // ---- deletions (issue 27: undo on the tablet; storage/project_store_deletions.cpp) ----
+  // A change is a new row; these remove rows the geologist took back. A
+  // removed row goes to the office as a deleted revision on the next sync
+  // (storage/office: the sync compares the rows with what it sent).
+  // Deletes one measurement and the joints fitted from it, in one
+  // transaction; InputError when there is no such measurement.
+  void delete_measurement(RecordId measurement_id);
+  // Deletes joints and joint sets of one visit, in one transaction;
+  // InputError naming the row when one is not the visit's, or when a set to
+  // delete is still named by a joint that stays.
+  void delete_joints(RecordId visit_id, const std::vector<RecordId>& joint_ids,
+                     const std::vector<RecordId>& set_ids);
+
   // One block analysis with its preset, effects and every block, in one
   // transaction.
   RecordId save_analysis(const AnalysisRun& run);

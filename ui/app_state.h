@@ -12,6 +12,7 @@
 #include <opencv2/core.hpp>
 
 #include "ui/background_task.h"
+#include "ui/face_outline.h"
 #include "ui/field_services.h"
 #include "ui/map_blocks.h"
 #include "ui/model_view.h"
@@ -66,6 +67,10 @@ struct MappingState {
   std::string joint_label;   // joint (set) the next trace is assigned to; empty: none
   MapBlocksState blocks;     // the blocks the saved traces cut out, updated after each edit
   ProposalsState proposals;  // trace proposals to accept, correct or reject (issue 25)
+  // Issue 27: "Outline the face": taps mark the mapped face's corners
+  // instead of a trace while `outlining`.
+  FaceOutline outline;
+  bool outlining = false;
 };
 
 struct AppState {

@@ -103,6 +103,25 @@ struct MapVerdicts {
   std::vector<std::string> notes;  // what the map left out, in words
 };
 
+// Issue 27: one edit of the Mapping screen. The measuring runs on the
+// worker over the model the screen holds (no second load).
+struct MapEdit {
+  storage::RecordId visit_id = 0;
+  const measure::MeshPicker* picker = nullptr;  // the 3D image on display (face frame)
+  measure::MeasureSettings settings;            // its point precision
+  // A trace to store: its points, photograph pixels, model, joint, origin.
+  std::optional<storage::Measurement> trace;
+  // The face's outline: its corners in the left photograph (the one the
+  // model is textured with, seen through `view`), measured by the runner as
+  // `rockface measure` measures an area pick and stored as the visit's
+  // mapped face in place of the one stored; with that photograph's model
+  // and capture. Empty: no outline.
+  std::vector<Eigen::Vector2d> outline;
+  const measure::PhotoView* view = nullptr;
+  std::optional<storage::RecordId> outline_model_id, outline_capture_id;
+  std::optional<storage::RecordId> remove_trace;  // a stored trace taken back
+};
+
 class TraceMapRunner {
  public:
   virtual ~TraceMapRunner() = default;
@@ -112,6 +131,12 @@ class TraceMapRunner {
   // why (no surface patches, a bad trace).
   virtual MapVerdicts update(const std::filesystem::path& project, storage::RecordId visit_id,
                              Progress& progress) = 0;
+  // Issue 27: stores an edit of the map (MapEdit) as `rockface measure`
+  // stores picks, then remakes the visit's joint table from its traces as
+  // the verb makes it; returns what was stored in words. Throws
+  // rockface::InputError naming what is wrong (a degenerate outline).
+  virtual std::string store(const std::filesystem::path& project, const MapEdit& edit,
+                            Progress& progress) = 0;
 };
 
 // The wedges around the excavation (issue 23) for the Blocks screen's

@@ -2,11 +2,21 @@
 // (storage::load_scene_source, the same scene the Blocks screen analyses),
 // through one MapVerdictSession kept while the visit and everything but its
 // traces stay the same, so that an edit recomputes only what it touched.
+// Issue 27: the edits of the map (a trace saved or taken back, the face
+// outlined) are stored here too, as `rockface measure` stores picks, with
+// the visit's joint table remade from its traces as the verb makes it.
+#include <cstdio>
 #include <mutex>
+#include <set>
 #include <sstream>
 
+#include "core/common/error.h"
+#include "core/measure/pick_measurement.h"
+#include "core/photogrammetry/reconstruction/preset.h"
 #include "firmware-app/analysis/analysis_input.h"
 #include "firmware-app/analysis/map_verdicts.h"
+#include "firmware-app/measure/measure_records.h"
+#include "firmware-app/measure/visit_trace_joints.h"
 #include "firmware-app/services/ui_services.h"
 #include "storage/export_scene_json.h"
 #include "storage/project_store.h"
@@ -67,6 +77,241 @@ ui::MapVerdicts StoreTraceMapRunner::update(const std::filesystem::path& project
   }
   progress.step("updating the blocks", 0.2);
   return cache_->session->update(input, progress);
+}
+
+namespace {
+
+// A joint this runner (or `rockface measure`) made of one trace: remade
+// from the traces at every edit. Other joints (the scene's, a joint fitted
+// to several traces by `rockface replay`, one typed in) are the
+// geologist's and stay as they are.
+bool made_of_one_trace(const storage::Joint& j) {
+  return j.type == "trace" && j.source == "trace " + j.label;
+}
+
+// The traces a joint that stays was fitted from ("traces T1 T2"): they have
+// their joint already.
+std::set<std::string> traces_named_by(const storage::Joint& j) {
+  std::set<std::string> out;
+  std::istringstream words(j.source);
+  std::string word;
+  words >> word;
+  if (word != "trace" && word != "traces") return out;
+  while (words >> word) out.insert(word);
+  return out;
+}
+
+bool same_joint(const storage::Joint& a, const storage::Joint& b) {
+  return a.label == b.label && a.set_label == b.set_label && a.dip_deg == b.dip_deg &&
+         a.dipdir_deg == b.dipdir_deg && a.point == b.point &&
+         a.measurement_id == b.measurement_id && a.source == b.source && a.type == b.type &&
+         a.persistence_m == b.persistence_m;
+}
+
+bool same_set(const storage::JointSet& a, const storage::JointSet& b) {
+  return a.label == b.label && a.dip_deg == b.dip_deg && a.dipdir_deg == b.dipdir_deg &&
+         a.fisher_k == b.fisher_k && a.count == b.count && a.alpha95_deg == b.alpha95_deg &&
+         a.spacing_m == b.spacing_m && a.mean_trace_length_m == b.mean_trace_length_m &&
+         a.censored_traces == b.censored_traces && a.persistence_m == b.persistence_m;
+}
+
+std::string degrees(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f°", v);
+  return text;
+}
+
+// The visit's joint table remade from its stored traces (visit_trace_joints.h):
+// the one-trace joints and the sets replaced where they changed (a row
+// that stays the same is not rewritten, so the office gets only the
+// change). Returns the joint of `trace` in words, or why it has none.
+std::string remake_trace_joints(storage::ProjectStore& store, storage::RecordId visit,
+                                const measure::MeshPicker& picker,
+                                const measure::MeasureSettings& settings,
+                                const std::string& trace) {
+  const auto old_joints = store.list_joints(visit);
+  const auto old_sets = store.list_joint_sets(visit);
+  std::set<std::string> covered, kept_labels;
+  bool kept_name_sets = false;
+  for (const auto& j : old_joints)
+    if (!made_of_one_trace(j)) {
+      const auto named = traces_named_by(j);
+      covered.insert(named.begin(), named.end());
+      kept_labels.insert(j.label);
+      kept_name_sets = kept_name_sets || !j.set_label.empty();
+    }
+  std::vector<storage::Measurement> traces;
+  for (const auto& m : store.list_measurements(visit))
+    if (m.kind == storage::Measurement::Kind::trace && !covered.count(m.label)) traces.push_back(m);
+  TraceJointTable table = trace_joint_table(traces, picker, settings, visit);
+  std::vector<storage::Joint> joints;
+  for (auto& j : table.joints) {
+    if (kept_labels.count(j.label)) {
+      table.without_joint.push_back(j.label + ": the visit has a joint " + j.label + " already");
+      continue;
+    }
+    // Sets that other joints name are the geologist's: left as they are,
+    // and the traces' joints join none.
+    if (kept_name_sets) j.set_label.clear();
+    joints.push_back(std::move(j));
+  }
+  std::vector<storage::JointSet> sets = kept_name_sets ? old_sets : table.sets;
+  bool sets_changed = sets.size() != old_sets.size();
+  for (std::size_t k = 0; !sets_changed && k < sets.size(); ++k)
+    sets_changed = !same_set(sets[k], old_sets[k]);
+  // What goes: the one-trace joints that changed (all of them when the sets
+  // change: they name the sets' rows), and the changed sets.
+  std::vector<storage::RecordId> joints_going, sets_going;
+  std::vector<storage::Joint> joints_coming;
+  for (const auto& old : old_joints) {
+    if (!made_of_one_trace(old)) continue;
+    const bool stays =
+        !sets_changed && std::any_of(joints.begin(), joints.end(),
+                                     [&](const storage::Joint& j) { return same_joint(j, old); });
+    if (!stays) joints_going.push_back(old.id);
+  }
+  for (const auto& j : joints) {
+    const bool there =
+        !sets_changed && std::any_of(old_joints.begin(), old_joints.end(),
+                                     [&](const storage::Joint& old) { return same_joint(j, old); });
+    if (!there) joints_coming.push_back(j);
+  }
+  if (sets_changed)
+    for (const auto& s : old_sets) sets_going.push_back(s.id);
+  if (!joints_going.empty() || !sets_going.empty())
+    store.delete_joints(visit, joints_going, sets_going);
+  if (!joints_coming.empty() || sets_changed)
+    store.save_joints(visit, sets_changed ? sets : std::vector<storage::JointSet>{}, joints_coming);
+
+  if (trace.empty()) return {};
+  for (const auto& j : joints)
+    if (j.label == trace)
+      return "joint " + j.label + " " + degrees(j.dip_deg) + " / " + degrees(j.dipdir_deg) +
+             (j.set_label.empty() ? std::string() : " in set " + j.set_label);
+  for (const auto& w : table.without_joint)
+    if (w.rfind(trace + ": ", 0) == 0) return "no joint (" + w.substr(trace.size() + 2) + ")";
+  return "no joint";
+}
+
+// The face outline (a mapped surface) of the visit: its areas that are no
+// free face and that no joint was measured from.
+std::vector<storage::Measurement> face_outlines(storage::ProjectStore& store,
+                                                storage::RecordId visit) {
+  std::set<std::string> joint_areas;
+  for (const auto& j : store.list_joints(visit))
+    if (j.type == "area") joint_areas.insert(j.source.substr(j.source.find(' ') + 1));
+  std::vector<storage::Measurement> out;
+  for (const auto& m : store.list_measurements(visit))
+    if (m.kind == storage::Measurement::Kind::area && m.rock_side.empty() &&
+        !joint_areas.count(m.label))
+      out.push_back(m);
+  return out;
+}
+
+std::string next_label(storage::ProjectStore& store, storage::RecordId visit, char letter) {
+  int n = 0;
+  for (const auto& m : store.list_measurements(visit))
+    if (m.label.size() > 1 && m.label[0] == letter) n = std::max(n, std::atoi(m.label.c_str() + 1));
+  return std::string(1, letter) + std::to_string(n + 1);
+}
+
+// The outline measured and stored as `rockface measure` measures and
+// stores an area pick (measure_area, measurement_records), after checking
+// that it is an outline: 3 corners or more, every one on the surface.
+storage::Measurement outline_record(const ui::MapEdit& edit,
+                                    const measure::MeasureSettings& settings,
+                                    const std::string& label, double& area_m2) {
+  const std::string where = "face outline";
+  if (edit.outline.size() < 3)
+    throw InputError(where, "needs 3 or more corners, got " + std::to_string(edit.outline.size()));
+  if (!edit.view) throw InputError(where, "no photograph's camera to measure it from");
+  measure::MeasuredPicks one;
+  one.areas.push_back(
+      {measure::measure_area(*edit.picker, *edit.view, label, edit.outline, settings, where), ""});
+  const measure::AreaMeasurement& a = one.areas.back().m;
+  if (a.outline_points.size() != a.outline.size())
+    throw InputError(where, std::to_string(a.outline.size() - a.outline_points.size()) +
+                                " of its " + std::to_string(a.outline.size()) +
+                                " corners have no surface under them");
+  area_m2 = a.area;
+  // A mapped surface, not a free face: no rock side (the analysis takes it
+  // as a patch of the face, SCENE.md surface.patches).
+  return measurement_records(one, edit.visit_id, {edit.outline_model_id, edit.outline_capture_id})
+      .front();
+}
+
+// The settings `rockface measure` measures the visit with
+// (measure_models.cpp): the point precision the screen has (the
+// reconstruction's), and the correlation length of the first pair's model
+// (its mesh's edge times its preset's matching window).
+measure::MeasureSettings measure_settings(storage::ProjectStore& store, storage::RecordId visit,
+                                          const ui::MapEdit& edit) {
+  measure::MeasureSettings settings = edit.settings;
+  const auto models = store.list_visit_models(visit);
+  const Preset preset =
+      models.empty() || models.front().preset.empty()
+          ? Preset::standard
+          : parse_preset(models.front().preset, "model " + std::to_string(models.front().id));
+  settings.correlation_length = edit.picker->mesh().median_edge_length() *
+                                photogrammetry::reconstruction_preset(preset).sgbm_block_size;
+  return settings;
+}
+
+std::string area_words(double m2) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.1f m²", m2);
+  return text;
+}
+
+}  // namespace
+
+std::string StoreTraceMapRunner::store(const std::filesystem::path& project,
+                                       const ui::MapEdit& edit, Progress& progress) {
+  if (!edit.picker) throw InputError("map edit", "no 3D image on display to measure on");
+  std::lock_guard<std::mutex> lock(cache_->mutex);
+  progress.step("storing", 0.05);
+  storage::ProjectStore store = storage::ProjectStore::open(project);
+  if (store.read_only())
+    throw InputError(project.filename().string(), "cannot store: " + store.read_only_reason());
+  const storage::RecordId visit = edit.visit_id;
+  const measure::MeasureSettings settings = measure_settings(store, visit, edit);
+  std::vector<std::string> said;
+  std::string trace;  // the trace whose joint is told
+  if (!edit.outline.empty()) {
+    // Checked and measured before anything is deleted: a refused outline
+    // leaves the stored one.
+    const std::string label = next_label(store, visit, 'F');
+    double area = 0;
+    const storage::Measurement record = outline_record(edit, settings, label, area);
+    for (const auto& old : face_outlines(store, visit)) store.delete_measurement(old.id);
+    store.save_measurements(visit, {record});
+    said.push_back("face outline " + label + " stored: " + std::to_string(edit.outline.size()) +
+                   " corners, " + area_words(area));
+  }
+  if (edit.remove_trace) {
+    std::string label;
+    for (const auto& m : store.list_measurements(visit))
+      if (m.id == *edit.remove_trace && m.kind == storage::Measurement::Kind::trace)
+        label = m.label;
+    if (label.empty())
+      throw InputError("trace " + std::to_string(*edit.remove_trace),
+                       "no such trace in visit " + std::to_string(visit));
+    store.delete_measurement(*edit.remove_trace);
+    said.push_back("trace " + label + " and its joint removed");
+  }
+  if (edit.trace) {
+    storage::Measurement record = measured_trace_record(*edit.trace, *edit.picker, settings);
+    record.visit_id = visit;
+    store.save_measurements(visit, {record});
+    trace = record.label;
+    said.push_back("trace " + record.label + " saved");
+  }
+  progress.step("remaking the joints", 0.5);
+  const std::string joint = remake_trace_joints(store, visit, *edit.picker, settings, trace);
+  if (!joint.empty()) said.back() += ": " + joint;
+  std::string out;
+  for (const auto& s : said) out += (out.empty() ? "" : "; ") + s;
+  return out;
 }
 
 }  // namespace rockface::app

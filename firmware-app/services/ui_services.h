@@ -41,6 +41,8 @@ class StoreTraceMapRunner final : public ui::TraceMapRunner {
   ~StoreTraceMapRunner() override;
   ui::MapVerdicts update(const std::filesystem::path& project, storage::RecordId visit_id,
                          Progress& progress) override;
+  std::string store(const std::filesystem::path& project, const ui::MapEdit& edit,
+                    Progress& progress) override;
 
  private:
   struct Cache;

@@ -232,6 +232,67 @@ TEST(OfficeSync, ARecordGoneFromTheTabletGoesUpAsADeletedRevision) {
   EXPECT_EQ(count.column_int(0), 0);
 }
 
+// Issue 27: the tablet's undo of a saved trace (ProjectStore::
+// delete_measurement) takes the trace and the joint fitted from it; both go
+// up as deleted revisions, with the action that says so, and a second sync
+// sends nothing.
+TEST(OfficeSync, ATraceTakenBackOnTheTabletGoesUpDeletedWithItsJoint) {
+  const std::string db = fresh_database();
+  storage::test::TempDir dir("office-taken-back");
+  TabletProject a;
+  make_tablet_project(dir / "a.rockface", a);
+  std::string trace_uuid, joint_uuid;
+  storage::RecordId trace_id = 0;
+  {
+    auto store = storage::ProjectStore::open(dir / "a.rockface");
+    const auto visit = *store.latest_visit();
+    storage::Measurement t = store.list_measurements(visit).front();
+    t.id = 0;
+    t.label = "T99";
+    trace_id = store.save_measurements(visit, {t}).front();
+    storage::Joint j;
+    j.label = "T99";
+    j.dip_deg = 60;
+    j.dipdir_deg = 120;
+    j.measurement_id = trace_id;
+    j.source = "trace T99";
+    j.type = "trace";
+    store.save_joints(visit, {}, {j});
+  }
+  NoProgress none;
+  sync_project(dir / "a.rockface", as_role(db, "tablet_a"), small_chunks(), none);
+  {
+    storage::sqlite::Connection c(dir / "a.rockface",
+                                  storage::sqlite::Connection::Access::read_only);
+    storage::sqlite::Statement m(c, "SELECT uuid FROM measurement WHERE id = ?", "reading");
+    m.bind(1, trace_id);
+    ASSERT_TRUE(m.step());
+    trace_uuid = m.column_text(0);
+    storage::sqlite::Statement j(c, "SELECT uuid FROM joint WHERE measurement_id = ?", "reading");
+    j.bind(1, trace_id);
+    ASSERT_TRUE(j.step());
+    joint_uuid = j.column_text(0);
+  }
+  storage::ProjectStore::open(dir / "a.rockface").delete_measurement(trace_id);
+  EXPECT_EQ(storage::office::sync_status(dir / "a.rockface").records_waiting, 3)
+      << "the trace's deletion, its joint's, and the action saying so";
+  EXPECT_EQ(
+      sync_project(dir / "a.rockface", as_role(db, "tablet_a"), small_chunks(), none).records_sent,
+      3);
+  storage::office::Connection c(as_superuser(db));
+  for (const auto& [kind, uuid] :
+       {std::pair<std::string, std::string>{"measurement", trace_uuid}, {"joint", joint_uuid}}) {
+    const auto history = c.query(
+        "SELECT deleted FROM rockface.record WHERE kind = $1 AND uuid = $2::uuid ORDER BY "
+        "revision",
+        {storage::office::Param::of(kind), storage::office::Param::of(uuid)}, "reading history");
+    ASSERT_EQ(history.rows(), 2) << kind << ": as synced, then deleted";
+    EXPECT_EQ(history.text(1, 0), "t") << kind;
+  }
+  EXPECT_EQ(storage::office::sync_status(dir / "a.rockface").records_waiting, 0);
+  expect_server_holds(as_superuser(db), dir / "a.rockface");
+}
+
 TEST(OfficeSync, APullSaysWhenTheTabletsCarryDifferentDesignsOfTheTunnel) {
   const std::string db = fresh_database();
   storage::test::TempDir dir("office-two-designs");

@@ -2,19 +2,23 @@
 // for a semi-automatic trace; undo; assign it to a joint; the dip / dip
 // direction and its uncertainty update with every tap, and the stereonet
 // beside the model shows it with the visit's joints and stored traces.
-// Saving a trace stores it at once (on the worker).
+// Saving a trace stores it at once (on the worker), with its joint when its
+// plane is known (issue 27); the last saved trace can be taken back. "Outline
+// the face" marks the mapped face's corners, stored as the visit's area.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/error.h"
 #include "core/common/units.h"
 #include "storage/project_store.h"
+#include "ui/format.h"
 #include "ui/overlay_legend.h"
 #include "ui/overlay_traces.h"
 #include "ui/proposals_view.h"
-#include "ui/format.h"
 #include "ui/screens/screens.h"
 #include "ui/stereonet_view.h"
 
@@ -23,6 +27,8 @@ namespace rockface::ui {
 namespace {
 
 constexpr ImU32 kJointColour = IM_COL32(0, 90, 200, 255);
+// The face outline stored for the visit (the mapped face the analysis takes).
+constexpr ImU32 kOutlineColour = IM_COL32(255, 200, 0, 255);
 
 TraceContext trace_context(const AppState& app) {
   TraceContext c;
@@ -89,6 +95,148 @@ void save_trace(AppState& app) {
   store_trace(app, std::move(m));
 }
 
+MapEdit map_edit(const AppState& app) {
+  MapEdit edit;
+  edit.visit_id = app.session->visit().value_or(0);
+  edit.picker = app.model_view.picker();
+  edit.settings = trace_context(app).settings;
+  return edit;
+}
+
+// The visit's stored face outlines: its areas that are no free face and
+// that no joint was measured from (as the runner replaces them).
+std::vector<const storage::Measurement*> stored_outlines(const ProjectSession& session) {
+  std::vector<const storage::Measurement*> out;
+  for (const auto& m : session.measurements()) {
+    if (m.kind != storage::Measurement::Kind::area || !m.rock_side.empty()) continue;
+    const bool joint_face =
+        std::any_of(session.joints().begin(), session.joints().end(),
+                    [&](const storage::Joint& j) { return j.source == "area " + m.label; });
+    if (!joint_face) out.push_back(&m);
+  }
+  return out;
+}
+
+// The last trace saved on the visit: the one "Undo" takes back.
+const storage::Measurement* last_saved_trace(const ProjectSession& session) {
+  const storage::Measurement* last = nullptr;
+  for (const auto& m : session.measurements())
+    if (m.kind == storage::Measurement::Kind::trace && (!last || m.id > last->id)) last = &m;
+  return last;
+}
+
+// The corners tapped so far joined in order (closed once three), and the
+// stored outline, drawn over the model.
+void draw_outline(AppState& app) {
+  const float s = app.targets.scale();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  auto polygon = [&](const std::vector<Eigen::Vector3d>& points, ImU32 colour, bool closed,
+                     float width) {
+    std::vector<ImVec2> screen;
+    for (const auto& p : points)
+      if (const auto q = app.model_view.to_screen(p)) screen.push_back(*q);
+    if (screen.size() >= 2)
+      draw->AddPolyline(screen.data(), static_cast<int>(screen.size()), colour,
+                        closed && screen.size() >= 3 ? ImDrawFlags_Closed : ImDrawFlags_None,
+                        width * s);
+    return screen;
+  };
+  for (const auto* m : stored_outlines(*app.session)) polygon(m->points, kOutlineColour, true, 3);
+  const auto corners = polygon(app.mapping.outline.corners(), kPendingTraceColour, true, 3);
+  for (const auto& q : corners) draw->AddCircleFilled(q, 7 * s, kPendingTraceColour, 16);
+}
+
+void save_outline(AppState& app) {
+  MapEdit edit = map_edit(app);
+  try {
+    edit.outline = app.mapping.outline.corner_pixels(trace_context(app));
+  } catch (const InputError& e) {
+    app.fail(e.what());  // refused by name; the corners stay to be mended
+    return;
+  }
+  const storage::Model* model = app.model_view.model();
+  edit.view = app.model_view.left_view() ? &*app.model_view.left_view() : nullptr;
+  edit.outline_model_id = app.model_view.model_id();
+  if (model) edit.outline_capture_id = model->texture_capture_id;
+  store_map_edit(app, std::move(edit), "Saving the face outline", [](AppState& a) {
+    a.mapping.outline.clear();
+    a.mapping.outlining = false;
+    // The errors said here were the map's without a face ("no surface
+    // patches"): read, now that it has one.
+    a.statuses.dismiss(static_cast<std::size_t>(Screen::mapping));
+  });
+}
+
+// "Outline the face": Undo takes back the last corner, Clear all of them;
+// Save outline closes the polygon (Replace outline, asked first, when the
+// visit has one).
+void draw_outline_controls(AppState& app) {
+  FaceOutline& outline = app.mapping.outline;
+  const bool idle = !app.task.running();
+  if (app.targets.button("Undo", 0, !outline.corners().empty())) outline.undo();
+  same_line_if_fits(button_width("Clear", app.targets.target_px()));
+  if (app.targets.confirmed_button("Clear", "Clear every corner of this outline?",
+                                   !outline.corners().empty()))
+    outline.clear();
+  const bool can_save =
+      idle && outline.corners().size() >= 3 && app.session->visit() && !app.session->read_only();
+  const auto stored = stored_outlines(*app.session);
+  if (stored.empty()) {
+    if (app.targets.button_in_row("Save outline", can_save)) save_outline(app);
+  } else {
+    same_line_if_fits(button_width("Replace outline", app.targets.target_px()));
+    std::string names;
+    for (const auto* m : stored) names += (names.empty() ? "" : ", ") + m->label;
+    if (app.targets.confirmed_button(
+            "Replace outline",
+            "The visit's face (" + names + ") is replaced by this outline. Replace it?", can_save))
+      save_outline(app);
+  }
+  if (!outline.problem().empty())
+    paragraph(outline.problem());
+  else if (outline.corners().size() < 3)
+    paragraph(
+        "Tap the corners of the mapped face on the image (3 or more), then Save outline. " +
+        format::count(static_cast<std::int64_t>(outline.corners().size()), "corner", "corners") +
+        " so far.");
+  else
+    paragraph(
+        format::count(static_cast<std::int64_t>(outline.corners().size()), "corner", "corners") +
+        ": the polygon closes from the last corner to the first.");
+}
+
+// Takes back the last saved trace (asked first: the trace and its joint
+// are gone from the visit).
+void draw_undo_saved_trace(AppState& app) {
+  const storage::Measurement* last = last_saved_trace(*app.session);
+  if (!last || app.session->read_only() || !app.services.trace_map) return;
+  const std::string name = "Undo " + last->label;
+  same_line_if_fits(button_width(name, app.targets.target_px()));
+  if (app.targets.confirmed_button(
+          name, "Take back trace " + last->label + "? The trace and its joint leave the visit.",
+          !app.task.running())) {
+    MapEdit edit = map_edit(app);
+    edit.remove_trace = last->id;
+    store_map_edit(app, std::move(edit), "Taking back trace " + last->label, {});
+  }
+}
+
+// Issue 27: the face's outline and the undo of the last saved trace, in a
+// row of their own below the proposals (whose Accept / Reject stay where
+// the geologist had them). The runner measures and stores both: without
+// one (a test's services) neither is offered.
+void draw_face_and_undo(AppState& app) {
+  if (!app.services.trace_map) return;
+  ImGui::Separator();
+  const bool outlining = app.mapping.outlining;
+  if (outlining)
+    ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+  const bool pressed = app.targets.button("Outline the face");
+  if (outlining) ImGui::PopStyleColor();
+  if (pressed) app.mapping.outlining = !outlining;
+  draw_undo_saved_trace(app);
+}
+
 void draw_fit(const TraceMarker& marker) {
   if (const auto& plane = marker.plane(); plane && plane->known) {
     heading("Dip / dip direction " +
@@ -139,11 +287,21 @@ void draw_controls(AppState& app) {
       }
     }
   }
-  if (toggle("Tap points", marker.mode() == TraceMarker::Mode::points))
+  const bool outlining = app.mapping.outlining;
+  if (toggle("Tap points", !outlining && marker.mode() == TraceMarker::Mode::points)) {
     marker.set_mode(TraceMarker::Mode::points);
+    app.mapping.outlining = false;
+  }
   same_line_if_fits(button_width("Two taps", app.targets.target_px()));
-  if (toggle("Two taps", marker.mode() == TraceMarker::Mode::two_taps))
+  if (toggle("Two taps", !outlining && marker.mode() == TraceMarker::Mode::two_taps)) {
     marker.set_mode(TraceMarker::Mode::two_taps);
+    app.mapping.outlining = false;
+  }
+  // Issue 27: the face's outline, marked with the same taps as a trace.
+  if (app.mapping.outlining) {
+    draw_outline_controls(app);
+    return;
+  }
   if (app.targets.button("Undo", 0, !marker.taps().empty())) marker.undo(context);
   // Clear loses every tap of the trace: asked first (Undo takes one back).
   same_line_if_fits(button_width("Clear", app.targets.target_px()));
@@ -166,33 +324,40 @@ void draw_controls(AppState& app) {
 
 }  // namespace
 
-// Stores a trace as the Save trace button does (a hand trace, an accepted or
-// a corrected proposal: proposals_view.h), then updates the map's blocks.
-bool store_trace(AppState& app, storage::Measurement m) {
-  if (m.label.empty()) m.label = next_trace_label(*app.session);
+// Stores an edit of the map on the worker (the runner measures and stores
+// it as `rockface measure` would, with the visit's joints), then updates the
+// map's blocks in the same task: the geologist sees what the edit closed or
+// opened before the next tap. `then` runs once it is stored.
+bool store_map_edit(AppState& app, MapEdit edit, const std::string& title,
+                    std::function<void(AppState&)> then) {
   const auto file = app.session->file();
   const FieldServices services = app.services;
-  // The blocks are updated in the same task, right after the trace is
-  // stored: the geologist sees what the trace closed before the next tap.
   auto blocks = std::make_shared<std::shared_ptr<const MapVerdicts>>();
   auto problem = std::make_shared<std::string>();
+  const storage::RecordId visit = edit.visit_id;
   return app.task.start(
-      "Saving trace",
-      [file, m, services, blocks, problem](Progress& progress) {
-        storage::ProjectStore store = storage::ProjectStore::open(file);
-        store.save_measurements(m.visit_id, {m});
-        std::string done = "trace " + m.label + " saved";
+      title,
+      [file, edit = std::move(edit), services, blocks, problem](Progress& progress) {
+        std::string done;
+        if (services.trace_map) {
+          done = services.trace_map->store(file, edit, progress);
+        } else if (edit.trace) {
+          // No runner (a test's services): the trace alone, as tapped.
+          storage::ProjectStore store = storage::ProjectStore::open(file);
+          store.save_measurements(edit.visit_id, {*edit.trace});
+          done = "trace " + edit.trace->label + " saved";
+        }
         try {
-          *blocks = update_map_blocks(services, file, m.visit_id, progress);
+          *blocks = update_map_blocks(services, file, edit.visit_id, progress);
         } catch (const std::exception& e) {
-          *problem = e.what();  // the trace is stored; the map says why it has no blocks
+          *problem = e.what();  // the edit is stored; the map says why it has no blocks
         }
         if (*blocks) done += "; " + map_blocks_summary(**blocks);
         return done;
       },
-      [&app, visit = m.visit_id, blocks, problem](const TaskOutcome& outcome) {
+      [&app, visit, blocks, problem, then = std::move(then)](const TaskOutcome& outcome) {
         if (outcome.kind != TaskOutcome::Kind::done) return;
-        app.mapping.marker.clear();
+        if (then) then(app);
         if (app.session) app.session->refresh();
         MapBlocksState& state = app.mapping.blocks;
         if (state.visit != visit) return;
@@ -200,6 +365,17 @@ bool store_trace(AppState& app, storage::Measurement m) {
         state.problem = *problem;
         state.stale = !*blocks && problem->empty();
       });
+}
+
+// Stores a trace as the Save trace button does (a hand trace, an accepted or
+// a corrected proposal: proposals_view.h), then updates the map's blocks.
+bool store_trace(AppState& app, storage::Measurement m) {
+  if (m.label.empty()) m.label = next_trace_label(*app.session);
+  MapEdit edit = map_edit(app);
+  edit.visit_id = m.visit_id;
+  edit.trace = std::move(m);
+  return store_map_edit(app, std::move(edit), "Saving trace",
+                        [](AppState& a) { a.mapping.marker.clear(); });
 }
 
 void draw_mapping_screen(AppState& app) {
@@ -210,13 +386,17 @@ void draw_mapping_screen(AppState& app) {
   add_map_blocks_to_overlay(app);
   drag_proposal_ends(app);  // before the model: a dragged handle does not turn it
   const auto interaction = app.model_view.draw(layout.main, app.gesture);
-  if (interaction.tap && !tap_proposal(app, *interaction.tap)) {
+  if (interaction.tap && app.mapping.outlining) {
+    const ScreenRay r = app.model_view.ray_at(*interaction.tap);
+    app.mapping.outline.tap({r.origin, r.direction}, app.model_view.picker());
+  } else if (interaction.tap && !tap_proposal(app, *interaction.tap)) {
     const ScreenRay r = app.model_view.ray_at(*interaction.tap);
     app.mapping.marker.tap({r.origin, r.direction}, trace_context(app));
   }
   refresh_map_blocks(app);
   ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
   draw_map_blocks_on_model(app);
+  draw_outline(app);  // under the trace's taps
   draw_traces(app);
   draw_model_overlays(app, ModelScreen::mapping);  // ui/overlay_legend.h
   draw_proposals_on_model(app);
@@ -225,6 +405,7 @@ void draw_mapping_screen(AppState& app) {
   begin_side_panel("mapping side", layout);
   draw_controls(app);
   draw_proposal_panel(app);
+  draw_face_and_undo(app);
   draw_map_blocks_panel(app);
   std::vector<StereonetPlane> planes;
   for (const auto& j : app.session->joints())

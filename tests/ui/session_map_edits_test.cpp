@@ -1,0 +1,316 @@
+// Issue 27: the Mapping screen's edits stored as `rockface measure` stores
+// picks, on the demo project with the program's own runners: the face
+// outlined by taps is the area record the verb makes of the same polygon;
+// a saved trace gets the joint the verb makes of the same trace (a straight
+// one says why it has none); a saved trace taken back leaves with its
+// joint; a degenerate outline is refused by name and leaves the stored one.
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/common/error.h"
+#include "core/common/progress.h"
+#include "firmware-app/services/ui_services.h"
+#include "storage/project_store.h"
+#include "tests/ui/demo_project.h"
+#include "ui/headless_session.h"
+#include "ui/model_view.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rockface;
+using namespace rockface::test;
+using storage::Measurement;
+
+// Small viewport and a decimated display model (the software renderer's
+// cost); measuring uses the stored model at full resolution either way.
+constexpr int kWidth = 800, kHeight = 500;
+constexpr float kScale = 0.6f;
+constexpr std::size_t kTriangles = 20000;
+
+class MapEdits : public ::testing::Test {
+ protected:
+  void open(const fs::path& project) {
+    project_ = project;
+    ui::UiOptions options;
+    options.project = project;
+    options.scale = kScale;
+    options.max_display_triangles = kTriangles;
+    session_ = std::make_unique<ui::HeadlessSession>(options, runners_.services(), kWidth, kHeight);
+    session_->settle();
+    ASSERT_TRUE(app().model_view.has_model());
+    visit_ = *app().session->visit();
+  }
+  ui::AppState& app() { return session_->state(); }
+  ui::HeadlessSession& ui() { return *session_; }
+
+  // Points on the face around the model's centre, in screen pixels.
+  ImVec2 around_centre(float dx, float dy) {
+    const auto c = app().model_view.to_screen(app().model_view.display_mesh().centre);
+    EXPECT_TRUE(c);
+    return {c->x + dx * kScale, c->y + dy * kScale};
+  }
+  void tap(ImVec2 at) { ui().tap(at.x, at.y); }
+
+  std::vector<Measurement> stored(Measurement::Kind kind, std::optional<storage::RecordId> visit) {
+    auto store = storage::ProjectStore::open(project_);
+    std::vector<Measurement> out;
+    for (const auto& m : store.list_measurements(visit))
+      if (m.kind == kind) out.push_back(m);
+    return out;
+  }
+  std::optional<storage::Joint> joint(const std::string& label,
+                                      std::optional<storage::RecordId> visit) {
+    auto store = storage::ProjectStore::open(project_);
+    for (const auto& j : store.list_joints(visit))
+      if (j.label == label) return j;
+    return std::nullopt;
+  }
+
+  // `rockface measure` on the project's visit with `picks` (rockface-picks/1
+  // without its format line): the new visit it stores.
+  // The session is closed first: a second program writing the project while
+  // the UI holds it open left the file damaged in this suite (2 runs of 2;
+  // see the branch's report), which is not what is tested here.
+  storage::RecordId measure(const nlohmann::json& picks, const std::string& name) {
+    session_.reset();
+    nlohmann::json file = picks;
+    file["format"] = "rockface-picks/1";
+    const fs::path path = ui_test_dir() / (name + ".picks.json");
+    std::ofstream(path) << file.dump(2);
+    const fs::path log = ui_test_dir() / (name + ".txt");
+    EXPECT_EQ(run_rockface_logged("measure " + project_.string() + " --visit " +
+                                      std::to_string(visit_) + " --traces " + path.string() +
+                                      " --out " + (ui_test_dir() / (name + ".json")).string(),
+                                  log),
+              0)
+        << slurp(log);
+    auto store = storage::ProjectStore::open(project_);
+    return *store.latest_visit();
+  }
+
+  app::FieldRunners runners_{""};
+  std::unique_ptr<ui::HeadlessSession> session_;
+  fs::path project_;
+  storage::RecordId visit_ = 0;
+};
+
+// The same code on the same stored mesh: equal but for the rounding of a
+// coordinate carried through the datum and back (~1e-12 m at the demo's
+// datum), far under what a pick resolves.
+constexpr double kSameMetres = 1e-9;
+constexpr double kSameDegrees = 1e-6;
+
+TEST_F(MapEdits, TheFaceOutlineIsStoredAsRockfaceMeasureStoresAnAreaPick) {
+  open(copy_of_demo("outline"));
+  ASSERT_FALSE(stored(Measurement::Kind::area, visit_).empty()) << "the demo has its face";
+  ui().tap("Mapping");
+  ui().tap("Outline the face");
+  for (const ImVec2 at : {around_centre(-90, -60), around_centre(90, -60), around_centre(90, 60),
+                          around_centre(-90, 60)})
+    tap(at);
+  ASSERT_EQ(app().mapping.outline.corners().size(), 4u) << app().mapping.outline.problem();
+  // The demo visit has its face already: replacing it is asked first.
+  ui().tap("Replace outline");
+  ui().tap("Yes, replace outline");
+  ui().settle();
+  const auto areas = stored(Measurement::Kind::area, visit_);
+  ASSERT_EQ(areas.size(), 1u) << "the outline replaces the visit's face";
+  const Measurement& outline = areas.front();
+  EXPECT_EQ(outline.label, "F1");
+  EXPECT_TRUE(outline.rock_side.empty()) << "a mapped surface, not a free face";
+  ASSERT_EQ(outline.points.size(), 4u);
+  ASSERT_EQ(outline.pixels.size(), 4u);
+  EXPECT_EQ(outline.photo, "left");
+  EXPECT_FALSE(joint("F1", visit_)) << "the face is no joint";
+  EXPECT_FALSE(app().mapping.outlining) << "stored: the screen is back to traces";
+
+  // The verb, given the same polygon in the same photograph.
+  nlohmann::json polygon = nlohmann::json::array();
+  for (const auto& p : outline.pixels) polygon.push_back({p.x(), p.y()});
+  const auto measured_visit = measure(
+      {{"areas", {{{"id", "F1"}, {"photo", "left"}, {"polygon", polygon}}}}}, "outline-measure");
+  const auto by_verb = stored(Measurement::Kind::area, measured_visit);
+  ASSERT_EQ(by_verb.size(), 1u);
+  const Measurement& verb = by_verb.front();
+  ASSERT_EQ(verb.points.size(), outline.points.size());
+  for (std::size_t k = 0; k < verb.points.size(); ++k)
+    EXPECT_LT((verb.points[k] - outline.points[k]).norm(), kSameMetres) << "corner " << k + 1;
+  ASSERT_TRUE(verb.dip_deg && outline.dip_deg);
+  EXPECT_NEAR(*outline.dip_deg, *verb.dip_deg, kSameDegrees);
+  EXPECT_NEAR(*outline.dipdir_deg, *verb.dipdir_deg, kSameDegrees);
+  ASSERT_TRUE(verb.sigma_deg && outline.sigma_deg);
+  EXPECT_NEAR(*outline.sigma_deg, *verb.sigma_deg, kSameDegrees);
+  EXPECT_NEAR(outline.fit_rms_m, verb.fit_rms_m, kSameMetres);
+  EXPECT_EQ(outline.model_id, verb.model_id);
+  EXPECT_EQ(outline.photo_capture_id, verb.photo_capture_id);
+  EXPECT_EQ(outline.note, verb.note);
+
+  // The analysis takes the outline as the mapped face.
+  NoProgress none;
+  runners_.analysis.analyse(project_, visit_, none);
+}
+
+TEST_F(MapEdits, ASavedTraceGetsTheJointRockfaceMeasureMakesOfIt) {
+  open(copy_of_demo("trace-joint"));
+  ui().tap("Mapping");
+  // Taps along the demo's joint J1 where it crosses from one face to the
+  // next (its traces T2 then T1, one per face: each alone is straight, a
+  // line on its face, so that no plane is known; across the edge it is).
+  const Measurement* first = nullptr;
+  const Measurement* second = nullptr;
+  for (const auto& m : app().session->measurements()) {
+    if (m.label == "T2") first = &m;
+    if (m.label == "T1") second = &m;
+  }
+  ASSERT_TRUE(first && second);
+  std::vector<Eigen::Vector3d> along;
+  for (const double f : {0.0, 0.5, 0.9})
+    along.push_back(first->points[static_cast<std::size_t>(f * (first->points.size() - 1))]);
+  for (const double f : {0.3, 0.7, 1.0})
+    along.push_back(second->points[static_cast<std::size_t>(f * (second->points.size() - 1))]);
+  for (const auto& p : along) {
+    const auto at = app().model_view.to_screen(p);
+    ASSERT_TRUE(at);
+    tap(*at);
+  }
+  ASSERT_EQ(app().mapping.marker.taps().size(), along.size()) << app().mapping.marker.problem();
+  ASSERT_TRUE(app().mapping.marker.plane() && app().mapping.marker.plane()->known)
+      << app().mapping.marker.plane()->problem;
+  ui().tap("Save trace");
+  ui().settle();
+  const auto traces = stored(Measurement::Kind::trace, visit_);
+  const Measurement tablet = traces.back();
+  const auto tablet_joint = joint(tablet.label, visit_);
+  ASSERT_TRUE(tablet_joint) << "joint " << tablet.label;
+  EXPECT_EQ(tablet_joint->measurement_id, tablet.id);
+  const std::string said = app().statuses.message(static_cast<std::size_t>(ui::Screen::mapping));
+  EXPECT_NE(said.find("joint " + tablet.label), std::string::npos) << said;
+
+  // Taken back (asked first): the trace and its joint leave the visit, and
+  // the map's blocks are updated without it.
+  const std::string undo = "Undo " + tablet.label;
+  ui().tap(undo);
+  ASSERT_EQ(stored(Measurement::Kind::trace, visit_).size(), traces.size())
+      << "nothing goes before Yes";
+  ui().tap("Yes, undo " + tablet.label);
+  ui().settle();
+  EXPECT_EQ(stored(Measurement::Kind::trace, visit_).size(), traces.size() - 1);
+  EXPECT_FALSE(joint(tablet.label, visit_));
+  EXPECT_FALSE(app().mapping.blocks.stale);
+  std::size_t deleted = 0;
+  for (const auto& a : storage::ProjectStore::open(project_).list_actions(visit_))
+    deleted += a.action == "measurement deleted" && a.detail == tablet.label;
+  EXPECT_EQ(deleted, 1u);
+
+  // The verb, given the stored trace's points (absolute, as a picks file
+  // holds them).
+  const Eigen::Vector3d datum = storage::ProjectStore::open(project_).project().datum;
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& p : tablet.points) {
+    const Eigen::Vector3d a = datum + p;
+    points.push_back({a.x(), a.y(), a.z()});
+  }
+  const auto measured_visit =
+      measure({{"traces", {{{"id", tablet.label}, {"points", points}}}}}, "trace-measure");
+  const auto verb_joint = joint(tablet.label, measured_visit);
+  ASSERT_TRUE(verb_joint);
+  EXPECT_NEAR(tablet_joint->dip_deg, verb_joint->dip_deg, kSameDegrees);
+  EXPECT_NEAR(tablet_joint->dipdir_deg, verb_joint->dipdir_deg, kSameDegrees);
+  ASSERT_TRUE(tablet_joint->point && verb_joint->point);
+  EXPECT_LT((*tablet_joint->point - *verb_joint->point).norm(), kSameMetres);
+  ASSERT_TRUE(tablet_joint->persistence_m && verb_joint->persistence_m);
+  EXPECT_NEAR(*tablet_joint->persistence_m, *verb_joint->persistence_m, kSameMetres);
+  EXPECT_EQ(tablet_joint->source, verb_joint->source);
+  EXPECT_EQ(tablet_joint->type, verb_joint->type);
+  // The trace record itself is the verb's too (the tablet's as it was
+  // stored, before it was taken back).
+  const Measurement verb = stored(Measurement::Kind::trace, measured_visit).front();
+  ASSERT_TRUE(verb.sigma_deg && tablet.sigma_deg);
+  EXPECT_NEAR(*tablet.sigma_deg, *verb.sigma_deg, kSameDegrees);
+  ASSERT_TRUE(verb.trace_length_m && tablet.trace_length_m);
+  EXPECT_NEAR(*tablet.trace_length_m, *verb.trace_length_m, kSameMetres);
+  EXPECT_EQ(tablet.censored, verb.censored);
+}
+
+TEST_F(MapEdits, AStraightTraceSaysItsPlaneIsUnknownAndMakesNoJoint) {
+  open(copy_of_demo("straight"));
+  ui().tap("Mapping");
+  // Two taps: a line, no plane.
+  tap(around_centre(-80, 0));
+  tap(around_centre(80, 0));
+  ASSERT_EQ(app().mapping.marker.points().size(), 2u);
+  ui().tap("Save trace");
+  ui().settle();
+  const Measurement tablet = stored(Measurement::Kind::trace, visit_).back();
+  EXPECT_FALSE(tablet.dip_deg);
+  EXPECT_FALSE(joint(tablet.label, visit_));
+  const std::string said = app().statuses.message(static_cast<std::size_t>(ui::Screen::mapping));
+  EXPECT_NE(said.find("no joint (orientation unknown"), std::string::npos) << said;
+}
+
+TEST_F(MapEdits, ADegenerateOutlineIsRefusedByNameAndTheStoredOneStays) {
+  open(copy_of_demo("degenerate"));
+  const auto before = stored(Measurement::Kind::area, visit_);
+  ui().tap("Mapping");
+  ui().tap("Outline the face");
+  // A tap beside the face (the panel's corner: background): no corner.
+  const ImVec2 corner = app().model_view.panel_min();
+  tap({corner.x + 3, corner.y + 3});
+  EXPECT_TRUE(app().mapping.outline.corners().empty());
+  EXPECT_EQ(app().mapping.outline.problem().rfind("corner 1: no surface under the tap", 0), 0u)
+      << app().mapping.outline.problem();
+  // Two corners do not close.
+  tap(around_centre(-60, 0));
+  tap(around_centre(60, 0));
+  ui::TraceContext context;
+  context.picker = app().model_view.picker();
+  context.photo_view = &*app().model_view.left_view();
+  try {
+    app().mapping.outline.corner_pixels(context);
+    ADD_FAILURE() << "two corners closed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face outline: needs 3 or more corners to close, has 2"),
+              std::string::npos)
+        << e.what();
+  }
+  // The runner refuses the same, and three corners on one line (no surface
+  // inside), naming the outline; the stored face stays.
+  ui::MapEdit edit;
+  edit.visit_id = visit_;
+  edit.picker = app().model_view.picker();
+  edit.view = context.photo_view;
+  NoProgress none;
+  const auto pixels = measure::project_to_view(
+      *context.photo_view,
+      {app().mapping.outline.corners()[0], app().mapping.outline.corners()[1]});
+  edit.outline = pixels;
+  try {
+    runners_.trace_map.store(project_, edit, none);
+    ADD_FAILURE() << "two corners stored";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face outline: needs 3 or more corners"),
+              std::string::npos)
+        << e.what();
+  }
+  edit.outline = {pixels[0], 0.5 * (pixels[0] + pixels[1]), pixels[1]};
+  try {
+    runners_.trace_map.store(project_, edit, none);
+    ADD_FAILURE() << "a line stored as an outline";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face outline"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no surface of the 3D image under the polygon"),
+              std::string::npos)
+        << e.what();
+  }
+  const auto after = stored(Measurement::Kind::area, visit_);
+  ASSERT_EQ(after.size(), before.size());
+  for (std::size_t k = 0; k < after.size(); ++k) EXPECT_EQ(after[k].id, before[k].id);
+}
+
+}  // namespace
