@@ -79,7 +79,7 @@ struct MultiImageOptions {
   // 10 m, 16 mm for a 24 Mpx camera with a 24 mm lens), not the
   // reconstruction's resolution, and SIFT's time falls with the pixels
   // (face_merge_bench's BM_MergeFeatureWidth: 1200 -> 600 px, the same truth
-  // RMS, a quarter of SIFT's time, 1,000+ tie points still).
+  // RMS within 0.03 mm, 40 % of SIFT's time, 1,000+ tie points still).
   int feature_max_width = 600;
   // RANSAC samples at most (fewer when the inlier ratio found allows:
   // multi_image_registration_fit.h).
