@@ -1,20 +1,19 @@
 #include "core/photogrammetry/estimators/multi_image_registration.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <mutex>
 #include <numeric>
 #include <optional>
-#include <random>
 #include <tuple>
 
 #include <Eigen/Geometry>
-#include <opencv2/flann.hpp>
-#include <opencv2/surface_matching.hpp>
 
 #include "core/common/error.h"
 #include "core/common/parallel.h"
+#include "core/photogrammetry/estimators/multi_image_registration_fit.h"
 #include "core/photogrammetry/matching/feature_matching.h"
 #include "core/photogrammetry/matching/guided_matching.h"
 #include "core/photogrammetry/matching/image_overlap.h"
@@ -24,195 +23,33 @@ namespace rockface::photogrammetry {
 
 namespace {
 
-// Area-weighted vertex normals of the lattice mesh, unit length (zero where
-// a vertex has no triangle).
-std::vector<Eigen::Vector3d> vertex_normals(const SurfaceMesh& mesh) {
-  std::vector<Eigen::Vector3d> n(mesh.size(), Eigen::Vector3d::Zero());
-  for (const auto& t : mesh.triangles) {
-    const Eigen::Vector3d a = mesh.vertices[t[1]] - mesh.vertices[t[0]];
-    const Eigen::Vector3d b = mesh.vertices[t[2]] - mesh.vertices[t[0]];
-    const Eigen::Vector3d c = a.cross(b);
-    for (int k : t) n[k] += c;
-  }
-  for (auto& v : n)
-    if (v.norm() > 0) v.normalize();
-  return n;
+Similarity identity() {
+  return {};
 }
-
-// A thinned set of surface points (with normals) of one image, in the face frame.
-struct SurfaceSample {
-  std::vector<Eigen::Vector3d> points, normals;
-};
-
-SurfaceSample sample_surface(const SurfaceMesh& mesh, const std::vector<Eigen::Vector3d>& normals,
-                             const Similarity& to_face, std::size_t max_points) {
-  SurfaceSample s;
-  const std::size_t stride =
-      std::max<std::size_t>(1, mesh.size() / std::max<std::size_t>(1, max_points));
-  for (std::size_t i = 0; i < mesh.size(); i += stride) {
-    if (normals[i].squaredNorm() == 0) continue;
-    s.points.push_back(to_face.apply(mesh.vertices[i]));
-    s.normals.push_back(to_face.R * normals[i]);
-  }
-  return s;
-}
-
-// Exact nearest neighbours in 3D (cv::flann single kd-tree).
-class NearestPoint {
- public:
-  explicit NearestPoint(const std::vector<Eigen::Vector3d>& points)
-      : data_(static_cast<int>(points.size()), 3, CV_32F) {
-    for (int i = 0; i < data_.rows; ++i)
-      for (int k = 0; k < 3; ++k) data_.at<float>(i, k) = static_cast<float>(points[i](k));
-    index_.build(data_, cv::flann::KDTreeIndexParams(1), cvflann::FLANN_DIST_L2);
-  }
-  // Index of the nearest point and its distance.
-  std::pair<int, double> nearest(const Eigen::Vector3d& q) const {
-    cv::Mat query(1, 3, CV_32F), idx(1, 1, CV_32S), dist(1, 1, CV_32F);
-    for (int k = 0; k < 3; ++k) query.at<float>(0, k) = static_cast<float>(q(k));
-    index_.knnSearch(query, idx, dist, 1, cv::flann::SearchParams(32));
-    return {idx.at<int>(0, 0), std::sqrt(static_cast<double>(dist.at<float>(0, 0)))};
-  }
-
- private:
-  cv::Mat data_;
-  mutable cv::flann::Index index_;
-};
-
-Similarity from_umeyama(const Eigen::Matrix3Xd& src, const Eigen::Matrix3Xd& dst) {
-  const Eigen::Matrix4d T = Eigen::umeyama(src, dst, true);
-  const Eigen::Matrix3d sR = T.topLeftCorner<3, 3>();
-  Similarity s;
-  s.scale = std::cbrt(sR.determinant());
-  s.R = sR / s.scale;
-  s.t = T.topRightCorner<3, 1>();
-  return s;
-}
-
-struct TiePoints {
-  std::vector<Eigen::Vector3d> reference;  // face frame
-  std::vector<Eigen::Vector3d> slave;      // slave's own frame
-};
 
 // The same surface points, each in its own image's frame.
 struct RawTiePoints {
   std::vector<Eigen::Vector3d> reference, slave;
   TiePoints in_face(const Similarity& reference_to_face) const {
     TiePoints t{{}, slave};
+    t.reference.reserve(reference.size());
     for (const auto& p : reference) t.reference.push_back(reference_to_face.apply(p));
     return t;
   }
 };
 
-struct TieFit {
-  Similarity slave_to_face;
-  std::vector<int> inliers;
+// A placed image as the reference of others: its surface sample in the face
+// frame and the index of its points, made once, whichever image needs it first.
+struct ReferenceSurface {
+  SurfaceSample sample;
+  std::optional<NearestWithin> near;
+  std::once_flag made;
 };
 
-// Robust similarity: 3-point Umeyama samples, the largest consensus, then
-// Umeyama over all of it.
-TieFit fit_tie_points(const TiePoints& tie, double inlier_m, int iterations, std::uint64_t seed) {
-  TieFit best;
-  const int n = static_cast<int>(tie.slave.size());
-  if (n < 3) return best;
-  std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> pick(0, n - 1);
-  auto consensus = [&](const Similarity& s) {
-    std::vector<int> in;
-    for (int k = 0; k < n; ++k)
-      if ((s.apply(tie.slave[k]) - tie.reference[k]).norm() < inlier_m) in.push_back(k);
-    return in;
-  };
-  for (int it = 0; it < iterations; ++it) {
-    const int a = pick(rng), b = pick(rng), c = pick(rng);
-    if (a == b || b == c || a == c) continue;
-    Eigen::Matrix3d src, dst;
-    src << tie.slave[a], tie.slave[b], tie.slave[c];
-    dst << tie.reference[a], tie.reference[b], tie.reference[c];
-    // A sliver sample fixes no rotation about its long side.
-    const double area = (dst.col(1) - dst.col(0)).cross(dst.col(2) - dst.col(0)).norm();
-    if (area < 4 * inlier_m * inlier_m) continue;
-    const Similarity s = from_umeyama(src, dst);
-    if (!(s.scale > 0) || !std::isfinite(s.scale)) continue;
-    std::vector<int> in = consensus(s);
-    if (in.size() > best.inliers.size()) best = {s, std::move(in)};
-  }
-  // Refit on the consensus twice (the refit may gain or lose border points).
-  for (int round = 0; round < 2 && best.inliers.size() >= 3; ++round) {
-    Eigen::Matrix3Xd src(3, best.inliers.size()), dst(3, best.inliers.size());
-    for (std::size_t k = 0; k < best.inliers.size(); ++k) {
-      src.col(k) = tie.slave[best.inliers[k]];
-      dst.col(k) = tie.reference[best.inliers[k]];
-    }
-    best.slave_to_face = from_umeyama(src, dst);
-    std::vector<int> in = consensus(best.slave_to_face);
-    if (in.size() < 3) break;
-    best.inliers = std::move(in);
-  }
-  return best;
-}
-
-// Point-to-plane distances of the slave sample to the reference surface
-// where the two overlap (nearest reference point within `overlap_m`).
-struct OverlapFit {
-  std::vector<int> slave, reference;  // sample indices of the overlapping pairs
-  double rms = 0;
-};
-
-OverlapFit overlap(const SurfaceSample& slave, const SurfaceSample& reference,
-                   const NearestPoint& tree, double overlap_m) {
-  OverlapFit o;
-  double sum2 = 0;
-  for (std::size_t i = 0; i < slave.points.size(); ++i) {
-    const auto [j, d] = tree.nearest(slave.points[i]);
-    if (j < 0 || d > overlap_m) continue;
-    const double e = (slave.points[i] - reference.points[j]).dot(reference.normals[j]);
-    sum2 += e * e;
-    o.slave.push_back(static_cast<int>(i));
-    o.reference.push_back(j);
-  }
-  if (!o.slave.empty()) o.rms = std::sqrt(sum2 / static_cast<double>(o.slave.size()));
-  return o;
-}
-
-cv::Mat point_cloud(const SurfaceSample& s, const std::vector<int>& rows) {
-  cv::Mat pc(static_cast<int>(rows.size()), 6, CV_32F);
-  for (int r = 0; r < pc.rows; ++r) {
-    const int i = rows[r];
-    for (int k = 0; k < 3; ++k) {
-      pc.at<float>(r, k) = static_cast<float>(s.points[i](k));
-      pc.at<float>(r, 3 + k) = static_cast<float>(s.normals[i](k));
-    }
-  }
-  return pc;
-}
-
-std::vector<int> unique_sorted(std::vector<int> v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-  return v;
-}
-
-// Rigid point-to-plane ICP of the overlapping slave points onto the
-// reference points; returns the rigid motion in the face frame.
-Similarity icp_refinement(const SurfaceSample& slave, const SurfaceSample& reference,
-                          const OverlapFit& o, const MultiImageOptions& options) {
-  const cv::Mat src = point_cloud(slave, o.slave);
-  const cv::Mat dst = point_cloud(reference, unique_sorted(o.reference));
-  cv::ppf_match_3d::ICP icp(options.icp_iterations, 0.005f, 2.5f, options.icp_levels);
-  double residual = 0;
-  cv::Matx44d pose;
-  icp.registerModelToScene(src, dst, residual, pose);
-  Similarity rigid;
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) rigid.R(r, c) = pose(r, c);
-    rigid.t(r) = pose(r, 3);
-  }
-  return rigid;
-}
-
-Similarity identity() {
-  return {};
+// Wall seconds since `from`.
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point from) {
+  return std::chrono::duration<double>(Clock::now() - from).count();
 }
 
 }  // namespace
@@ -223,45 +60,75 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
                                       const MultiImageOptions& options, Progress& progress) {
   if (images.empty()) throw InputError("3D images", "none given");
   const std::size_t n = images.size();
+  const Clock::time_point started = Clock::now();
   FaceRegistration out;
   out.images.resize(n);
+  MergeTimes& times = out.times;
+  times.match_s.assign(n, 0.0);
+  times.ransac_s.assign(n, 0.0);
+  times.surface_s.assign(n, 0.0);
   std::vector<bool> placed(n, false);
-  std::vector<std::vector<Eigen::Vector3d>> normals(n);
-  std::vector<PixelLookup> grids;
-  std::vector<double> spacing(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (images[i].mesh.size() < 3)
       throw InputError(images[i].name, "the 3D image has no surface to register");
-    normals[i] = vertex_normals(images[i].mesh);
-    grids.emplace_back(images[i].mesh);
-    spacing[i] = images[i].mesh.median_edge_length();
     out.images[i].name = images[i].name;
   }
   out.images[0].to_face = identity();
   placed[0] = true;
 
-  // SIFT is detected once per photograph (each at its own working scale),
-  // all before the first match, on all cores.
+  // What each image needs, made once per image and all images side by side
+  // on all cores: its SIFT features (at the width the registration needs:
+  // MultiImageOptions::feature_max_width), and its surface normals, pixel
+  // lookup, lattice spacing and thumbnail.
+  std::vector<std::vector<Eigen::Vector3d>> normals(n);
+  std::vector<std::optional<PixelLookup>> grids(n);
+  std::vector<double> spacing(n);
   std::vector<ImageFeatures> features(n);
-  parallel_for(n, [&](std::size_t i) {
-    features[i] =
-        detect_features(images[i].photograph,
-                        working_scale(images[i].photograph.cols, preset.feature_max_width), preset);
+  std::vector<Thumbnail> thumbnails(n);
+  const int feature_width =
+      options.feature_max_width > 0 ? options.feature_max_width : preset.feature_max_width;
+  // Two tasks per image, SIFT first (the longest first packs the cores
+  // best: five images on two cores then take 2.5 rounds, not the 3 that one
+  // task per image took).
+  std::vector<double> task_s(2 * n);
+  parallel_for(2 * n, [&](std::size_t task) {
+    const std::size_t i = task % n;
+    const Clock::time_point t0 = Clock::now();
+    if (task < n) {
+      features[i] = detect_features(
+          images[i].photograph, working_scale(images[i].photograph.cols, feature_width), preset);
+    } else {
+      normals[i] = vertex_normals(images[i].mesh);
+      grids[i].emplace(images[i].mesh);
+      spacing[i] = images[i].mesh.median_edge_length();
+      thumbnails[i] = make_thumbnail(images[i].photograph);
+    }
+    task_s[task] = seconds_since(t0);
   });
+  // The stage's wall time shared by its parts' thread times.
+  const double prepared = seconds_since(started);
+  const double features_sum = std::accumulate(task_s.begin(), task_s.begin() + n, 0.0);
+  const double prepare_sum = std::accumulate(task_s.begin() + n, task_s.end(), 0.0);
+  times.prepare_s = prepared * prepare_sum / std::max(1e-9, prepare_sum + features_sum);
+  times.features_s = prepared - times.prepare_s;
+  Clock::time_point stage = Clock::now();
+
   // Which images overlap, from thumbnails (image_overlap.h): a new image is
   // matched first against the placed image that overlaps it most, and
   // against the others only while that gives too few tie points. Matching
   // every unplaced image against every placed one made the merge grow with
-  // the square of the number of images.
-  std::vector<Thumbnail> thumbnails;
-  for (const auto& image : images) thumbnails.push_back(make_thumbnail(image.photograph));
+  // the square of the number of images. Every pair once, on all cores.
   std::vector<std::vector<CoarseOverlap>> coarse(n, std::vector<CoarseOverlap>(n));
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      coarse[i][j] = coarse_overlap(thumbnails[i], thumbnails[j]);
-      coarse[j][i] = coarse[i][j];
-      coarse[j][i].shift_px = -coarse[i][j].shift_px;
-    }
+    for (std::size_t j = i + 1; j < n; ++j) pairs.emplace_back(i, j);
+  parallel_for(pairs.size(), [&](std::size_t k) {
+    const auto [i, j] = pairs[k];
+    coarse[i][j] = coarse_overlap(thumbnails[i], thumbnails[j]);
+    coarse[j][i] = coarse[i][j];
+    coarse[j][i].shift_px = -coarse[i][j].shift_px;
+  });
+  times.thumbnails_s = seconds_since(stage);
 
   // Tie points of a (placed, slave) pair, matched once each way: guided by
   // the pair's coarse shift where it was found clearly (guided_matching.h),
@@ -286,8 +153,8 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
                                 options.guide_window * images[ref].photograph.cols, preset)
                  : match_detected(features[ref], features[slave], preset);
       for (std::size_t k = 0; k < m.size(); ++k) {
-        const int a = grids[ref].nearest(m.left[k]);
-        const int b = grids[slave].nearest(m.right[k]);
+        const int a = grids[ref]->nearest(m.left[k]);
+        const int b = grids[slave]->nearest(m.right[k]);
         if (a < 0 || b < 0) continue;
         raw->reference.push_back(images[ref].mesh.vertices[a]);
         raw->slave.push_back(images[slave].mesh.vertices[b]);
@@ -295,6 +162,10 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     }
     return raw->in_face(out.images[ref].to_face);
   };
+  // The overlap distance of a reference depends on that image alone
+  // (its sigma_z, lattice spacing and scale), so its index serves every
+  // image registered to it.
+  std::vector<ReferenceSurface> references(n);
   std::vector<std::string> tried(n);  // what each slave was tried against
   std::vector<char> failed(n, 0);     // against every image placed when it was tried
 
@@ -305,6 +176,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     int reference = -1, tie_points = 0;
     bool guided = false;
     double surface_rms_before_icp_m = 0;
+    double match_s = 0, ransac_s = 0, surface_s = 0;  // MergeTimes
     // The residuals through to_face, in face units before ground control
     // (ImageResidual); the final transform moves slave and reference alike.
     double overlap = 0, surface_rms_m = 0, tie_rms_m = 0;
@@ -326,11 +198,21 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       const double inlier_m =
           options.inlier_sigmas * images[j].sigma_z * scale + spacing[j] * scale;
       bool guided = coarse[j][i].response >= options.guide_min_response;
-      TieFit fit = fit_tie_points(tie_points(j, i, guided), inlier_m, options.ransac_iterations,
-                                  options.seed + i * 7919 + j);
+      Clock::time_point t0 = Clock::now();
+      TiePoints tie = tie_points(j, i, guided);
+      result.match_s += seconds_since(t0);
+      t0 = Clock::now();
+      TieFit fit =
+          fit_tie_points(tie, inlier_m, options.ransac_iterations, options.seed + i * 7919 + j);
+      result.ransac_s += seconds_since(t0);
       if (guided && static_cast<int>(fit.inliers.size()) < options.enough_tie_points) {
-        TieFit all = fit_tie_points(tie_points(j, i, false), inlier_m, options.ransac_iterations,
-                                    options.seed + i * 7919 + j);
+        t0 = Clock::now();
+        tie = tie_points(j, i, false);
+        result.match_s += seconds_since(t0);
+        t0 = Clock::now();
+        TieFit all =
+            fit_tie_points(tie, inlier_m, options.ransac_iterations, options.seed + i * 7919 + j);
+        result.ransac_s += seconds_since(t0);
         if (all.inliers.size() > fit.inliers.size()) {
           fit = std::move(all);
           guided = false;
@@ -350,14 +232,20 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     result.ok = true;
     result.tie_points = static_cast<int>(best.inliers.size());
     // Refine on the overlapping surface.
+    const Clock::time_point surface_started = Clock::now();
     const std::size_t j = static_cast<std::size_t>(result.reference);
-    const SurfaceSample reference =
-        sample_surface(images[j].mesh, normals[j], out.images[j].to_face, options.icp_max_points);
-    const NearestPoint tree(reference.points);
     const double overlap_m = options.overlap_distance_factor * best_inlier_m;
+    ReferenceSurface& ref = references[j];
+    std::call_once(ref.made, [&] {
+      ref.sample =
+          sample_surface(images[j].mesh, normals[j], out.images[j].to_face, options.icp_max_points);
+      ref.near.emplace(ref.sample.points, overlap_m);
+    });
+    const SurfaceSample& reference = ref.sample;
+    const NearestWithin& near = *ref.near;
     const SurfaceSample before =
         sample_surface(images[i].mesh, normals[i], best.slave_to_face, options.icp_max_points);
-    const OverlapFit o = overlap(before, reference, tree, overlap_m);
+    const OverlapFit o = overlap(before, reference, near);
     result.surface_rms_before_icp_m = o.rms;
     result.to_face = best.slave_to_face;
     result.surface_rms_m = o.rms;
@@ -365,11 +253,11 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
                                            : static_cast<double>(o.slave.size()) /
                                                  static_cast<double>(before.points.size());
     if (o.slave.size() >= 100) {
-      const Similarity rigid = icp_refinement(before, reference, o, options);
+      const Similarity rigid =
+          icp_refinement(before, reference, o, options.icp_iterations, options.icp_levels);
       const Similarity refined = best.slave_to_face.then(rigid);
-      const SurfaceSample after =
-          sample_surface(images[i].mesh, normals[i], refined, options.icp_max_points);
-      const OverlapFit o2 = overlap(after, reference, tree, overlap_m);
+      const SurfaceSample after = moved(before, rigid);
+      const OverlapFit o2 = overlap(after, reference, near);
       // ICP is kept only when it brings the surfaces closer over no less overlap.
       if (o2.rms < o.rms && o2.slave.size() + o.slave.size() / 10 >= o.slave.size()) {
         result.to_face = refined;
@@ -392,6 +280,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       }
     }
     result.tie_rms_m = count ? std::sqrt(sum2 / count) : 0.0;
+    result.surface_s = seconds_since(surface_started);
     return result;
   };
 
@@ -439,11 +328,16 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     }
     progress.step("registering " + images[wave.front()].name, static_cast<double>(done) / n);
     std::vector<Placement> results(wave.size());
+    const Clock::time_point wave_started = Clock::now();
     parallel_for(wave.size(), [&](std::size_t k) { results[k] = place(wave[k]); });
+    times.waves_s.push_back(seconds_since(wave_started));
     bool progressed = false;
     for (std::size_t k = 0; k < wave.size(); ++k) {
       const std::size_t i = wave[k];
       tried[i] = results[k].tried;
+      times.match_s[i] += results[k].match_s;
+      times.ransac_s[i] += results[k].ransac_s;
+      times.surface_s[i] += results[k].surface_s;
       if (!results[k].ok) {
         failed[i] = 1;  // an image placed later may overlap it
         continue;
@@ -472,7 +366,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       const std::string where = "control point " + cp.id;
       if (cp.image < 0 || static_cast<std::size_t>(cp.image) >= n)
         throw InputError(where, "names image " + std::to_string(cp.image) + ", which is not given");
-      const int v = grids[cp.image].nearest(cp.pixel);
+      const int v = grids[static_cast<std::size_t>(cp.image)]->nearest(cp.pixel);
       if (v < 0)
         throw InputError(where,
                          "no reconstructed surface at its pixel in " + images[cp.image].name);
@@ -497,6 +391,17 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     r.surface_rms_m *= to_final;
     r.tie_rms_m *= to_final;
   }
+  // Each image's working data (normals and pixel lookup of ~1 M vertices,
+  // features, surface index) freed side by side: on one thread, at the
+  // function's end, this took as long as a registration.
+  parallel_for(n, [&](std::size_t i) {
+    normals[i] = {};
+    grids[i].reset();
+    features[i] = {};
+    references[i].near.reset();
+    references[i].sample = {};
+  });
+  times.total_s = seconds_since(started);
   progress.step("done", 1.0);
   return out;
 }

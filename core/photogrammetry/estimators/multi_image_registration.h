@@ -72,6 +72,17 @@ struct MultiImageOptions {
   // from being placed (its best overlap with a placed image is at least
   // as good); every other image with a placed neighbour goes now.
   double wave_share = 0.8;
+  // SIFT for the tie points is detected on photographs reduced to at most
+  // this width (0: the preset's feature_max_width). The tie points only seed
+  // the ICP on the dense surfaces: they need a pixel at the face well within
+  // the inlier distance below (~4 cm: 9 mm at 600 px on the bench's face at
+  // 10 m, 16 mm for a 24 Mpx camera with a 24 mm lens), not the
+  // reconstruction's resolution, and SIFT's time falls with the pixels
+  // (face_merge_bench's BM_MergeFeatureWidth: 1200 -> 600 px, the same truth
+  // RMS within 0.03 mm, 40 % of SIFT's time, 1,000+ tie points still).
+  int feature_max_width = 600;
+  // RANSAC samples at most (fewer when the inlier ratio found allows:
+  // multi_image_registration_fit.h).
   int ransac_iterations = 400;
   // Tie-point inlier distance, in units of the reference image's predicted
   // depth precision sigma_z plus one point spacing (the vertex picked at a
@@ -99,8 +110,23 @@ struct ImageResidual {
   Similarity to_face;                   // its frame -> face frame (after ground control, if any)
 };
 
+// Where the merge's wall time went, in seconds (the benchmark and
+// docs/accuracy-cost.md read it; nothing else depends on it).
+struct MergeTimes {
+  double prepare_s = 0;         // normals, pixel lookups and lattice spacing of every surface
+  double features_s = 0;        // SIFT on every photograph (and what overlaps it in time)
+  double thumbnails_s = 0;      // thumbnails and their phase correlation
+  std::vector<double> waves_s;  // each wave of registrations, side by side
+  // Per registered image (zero for the master), summed over the placed
+  // images the registration tried: SIFT matching and lifting to 3D,
+  // RANSAC, and the surface stage (samples, kd-tree, overlap, ICP).
+  std::vector<double> match_s, ransac_s, surface_s;
+  double total_s = 0;
+};
+
 struct FaceRegistration {
   std::vector<ImageResidual> images;  // one per input image, same order
+  MergeTimes times;
   // Ground control: the face frame is then datum-relative world, absolute =
   // face + datum; without ground control the datum is zero.
   std::optional<ControlPointRegistration> control_points;

@@ -30,12 +30,20 @@ PixelLookup::PixelLookup(const SurfaceMesh& mesh)
     cols_ = std::max(cols_, static_cast<int>(p.x() / cell_) + 1);
     rows_ = std::max(rows_, static_cast<int>(p.y() / cell_) + 1);
   }
-  buckets_.resize(static_cast<std::size_t>(cols_) * rows_);
+  // Counting sort of the vertices by bucket, in index order within a bucket.
+  starts_.assign(static_cast<std::size_t>(cols_) * rows_ + 1, 0);
+  auto bucket_of = [&](const Eigen::Vector2f& p) {
+    return index(static_cast<int>(p.x() / cell_), static_cast<int>(p.y() / cell_));
+  };
+  for (const auto& p : mesh.pixels)
+    if (p.x() >= 0 && p.y() >= 0) ++starts_[bucket_of(p) + 1];
+  for (std::size_t b = 1; b < starts_.size(); ++b) starts_[b] += starts_[b - 1];
+  vertices_.resize(static_cast<std::size_t>(starts_.back()));
+  std::vector<int> fill(starts_.begin(), starts_.end() - 1);
   for (std::size_t i = 0; i < mesh.pixels.size(); ++i) {
     const auto& p = mesh.pixels[i];
     if (p.x() < 0 || p.y() < 0) continue;
-    buckets_[index(static_cast<int>(p.x() / cell_), static_cast<int>(p.y() / cell_))].push_back(
-        static_cast<int>(i));
+    vertices_[static_cast<std::size_t>(fill[bucket_of(p)]++)] = static_cast<int>(i);
   }
 }
 
@@ -47,7 +55,8 @@ int PixelLookup::nearest(const Eigen::Vector2d& pixel) const {
   int found = -1;
   for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, rows_ - 1); ++y)
     for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, cols_ - 1); ++x)
-      for (int i : buckets_[index(x, y)]) {
+      for (int k = starts_[index(x, y)]; k < starts_[index(x, y) + 1]; ++k) {
+        const int i = vertices_[static_cast<std::size_t>(k)];
         const double d2 = (mesh_->pixels[i] - p).squaredNorm();
         if (d2 <= best) {
           best = d2;

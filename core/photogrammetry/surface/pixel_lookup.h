@@ -28,7 +28,10 @@ class PixelLookup {
   const SurfaceMesh* mesh_;
   double cell_ = 1;
   int cols_ = 0, rows_ = 0;
-  std::vector<std::vector<int>> buckets_;
+  // The vertices by bucket, flat: bucket b holds vertices_[starts_[b] ..
+  // starts_[b + 1]) (one allocation, not one per bucket: a 1 Mpx lattice has
+  // ~0.4 M buckets, and making and freeing them was most of the lookup's cost).
+  std::vector<int> starts_, vertices_;
 };
 
 }  // namespace rockface::photogrammetry
