@@ -233,7 +233,7 @@ void TabletApp::draw_status_bar() {
   if (state_.session && state_.session->read_only()) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     label("Read-only: " + state_.session->read_only_reason(), warning_colour());
-    state_.targets.record("read-only notice", at, ImGui::GetItemRectMax());
+    state_.targets.record_area("read-only notice", at, ImGui::GetItemRectMax());
   }
   const auto here = static_cast<std::size_t>(state_.screen);
   const auto& errors = state_.statuses.errors(here);

@@ -1,6 +1,9 @@
 #include "ui/widgets.h"
 
 #include <algorithm>
+#include <cstdio>
+
+#include <imgui_internal.h>
 
 namespace rockface::ui {
 
@@ -35,6 +38,55 @@ ImU32 verdict_text_colour(BlockVerdict verdict) {
       return IM_COL32(90, 90, 90, 255);
   }
   return IM_COL32(0, 0, 0, 255);
+}
+
+namespace {
+TouchTargets*& frame_targets() {
+  static TouchTargets* targets = nullptr;
+  return targets;
+}
+}  // namespace
+
+void TouchTargets::begin_frame() {
+  rects_.clear();
+  frame_targets() = this;
+}
+
+void TouchTargets::record(const std::string& label, ImVec2 min, ImVec2 max, bool enabled) {
+  // Visible when any of it is inside the panel it is drawn in (a marker
+  // drawn beyond the model view's edge is not).
+  const bool in_window = ImGui::GetCurrentContext() && ImGui::GetCurrentContext()->CurrentWindow;
+  const bool visible = !in_window || ImGui::IsRectVisible(min, max);
+  rects_[label] = {min, max, enabled, false, visible};
+}
+
+void TouchTargets::record_area(const std::string& label, ImVec2 min, ImVec2 max) {
+  TargetRect r{min, max};
+  r.touch = false;
+  rects_[label] = r;
+}
+
+void record_touch_target(const std::string& label, ImVec2 min, ImVec2 max) {
+  if (frame_targets()) frame_targets()->record(label, min, max);
+}
+
+float touch_target_px() {
+  return frame_targets() ? frame_targets()->target_px() : ImGui::GetFrameHeight();
+}
+
+std::vector<std::string> small_touch_targets(const TouchTargets& targets, float slack_px) {
+  std::vector<std::string> out;
+  const float least = touch_target_px_at(targets.dpi());
+  for (const auto& [label, r] : targets.all()) {
+    if (!r.touch || !r.visible) continue;
+    const float w = r.max.x - r.min.x, h = r.max.y - r.min.y;
+    if (std::min(w, h) + slack_px >= least) continue;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%.0f x %.0f px, under 9 mm (%.0f px at %.0f dpi)", w, h, least,
+                  targets.dpi());
+    out.push_back("touch target \"" + label + "\" is " + buf);
+  }
+  return out;
 }
 
 float TouchTargets::target_px() const {
