@@ -163,7 +163,9 @@ void draw_map_blocks_panel(AppState& app) {
     ImGui::TableSetupScrollFreeze(0, 1);
     // Weights, not content: a shortened cell must not shrink its column.
     ImGui::TableSetupColumn("Block", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-    ImGui::TableSetupColumn("Verdict (margin)", ImGuiTableColumnFlags_WidthStretch, 2.4f);
+    // "Verdict (margin)" does not fit the side panel's column: the note
+    // below the table says what the angle in brackets is.
+    ImGui::TableSetupColumn("Verdict", ImGuiTableColumnFlags_WidthStretch, 2.4f);
     ImGui::TableSetupColumn("Mode", ImGuiTableColumnFlags_WidthStretch, 1.4f);
     ImGui::TableSetupColumn("FoS", ImGuiTableColumnFlags_WidthStretch, 0.9f);
     table_headers_row();
@@ -186,6 +188,9 @@ void draw_map_blocks_panel(AppState& app) {
                 : format::unknown());
     }
     ImGui::EndTable();
+    note(
+        "The angle beside each verdict is its margin: how far the block is from the other "
+        "verdict.");
   }
   for (const auto& n : v.notes) note(n);
 }

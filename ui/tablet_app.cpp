@@ -195,6 +195,9 @@ void TabletApp::build() {
     state_.task_screen = state_.screen;
   }
   draw_status_bar();
+  // Every panel has begun: their scroll bars are known (recorded in the
+  // whole screen's window: its clip is the screen).
+  record_scroll_bars(state_.targets);
   ImGui::End();
 }
 
@@ -256,11 +259,7 @@ void TabletApp::draw_status_bar() {
                        format::text(format::Fraction{status.fraction}) + ", " +
                        format::text(format::Duration{status.seconds}) + ")";
     if (status.cancelling) text += ", cancelling";
-    const float room = ImGui::GetContentRegionAvail().x;
-    text = shortened(text, room - 2 * ImGui::GetStyle().FramePadding.x);
-    ImGui::ProgressBar(static_cast<float>(status.fraction), ImVec2(-1, state_.targets.target_px()),
-                       text.c_str());
-    record_drawn_text(text, ImGui::CalcTextSize(text.c_str()).x, room);
+    progress_bar(static_cast<float>(status.fraction), text, state_.targets.target_px());
   } else {
     label_in_row(state_.statuses.message(here));
   }

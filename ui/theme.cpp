@@ -97,8 +97,10 @@ void apply_theme(Theme theme, float scale, float min_target_px) {
   const float font = theme_font_px(theme) * scale;
   style.FramePadding = ImVec2(14 * scale, std::max(12 * scale, (min_target_px - font) / 2));
   style.ItemSpacing = ImVec2(12 * scale, 10 * scale);
-  style.ScrollbarSize = 28 * scale;
-  style.GrabMinSize = 28 * scale;
+  // A panel scrolls only by its scroll bar on a touch screen (ImGui has no
+  // drag to scroll): the bar and its grab are thumb targets too.
+  style.ScrollbarSize = std::max(28 * scale, min_target_px);
+  style.GrabMinSize = std::max(28 * scale, min_target_px);
   style.FrameRounding = 6 * scale;
   style.WindowRounding = 0;
   style.FrameBorderSize = theme == Theme::daylight ? 1.0f : 0.0f;

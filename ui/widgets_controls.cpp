@@ -76,6 +76,9 @@ std::optional<std::size_t> choice(TouchTargets& targets, const std::string& name
                                   std::optional<std::size_t> current) {
   std::optional<std::size_t> tapped;
   ImGui::SetNextItemWidth(-1);
+  // Where the frame goes: once open, ImGui's last item is the list's window.
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float width = ImGui::CalcItemWidth();
   const bool open = ImGui::BeginCombo(("##" + name).c_str(), shown.c_str());
   // Recorded after the list (whose items are a window of their own): the
   // last item is then the combo's frame.
@@ -90,7 +93,7 @@ std::optional<std::size_t> choice(TouchTargets& targets, const std::string& name
     record_frame();
     return tapped;
   }
-  const ImVec2 frame_min = ImGui::GetItemRectMin(), frame_max = ImGui::GetItemRectMax();
+  const ImVec2 frame_min = at, frame_max(at.x + width, at.y + ImGui::GetFrameHeight());
   const float side = targets.target_px();
   for (std::size_t i = 0; i < items.size(); ++i) {
     const float room = ImGui::GetContentRegionAvail().x;

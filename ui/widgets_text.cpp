@@ -103,6 +103,13 @@ void record_drawn_text(std::string_view text, float width, float available) {
   log().push_back({std::string(text), width, available, panel_name()});
 }
 
+void progress_bar(float fraction, std::string_view whole, float height) {
+  const float room = space_left();
+  const std::string text = shortened(whole, room - 2 * ImGui::GetStyle().FramePadding.x);
+  ImGui::ProgressBar(fraction, ImVec2(-1, height), text.c_str());
+  record_drawn_text(text, text_width(text), room);
+}
+
 void label_on_picture(ImDrawList* draw, ImVec2 at, ImU32 colour, std::string_view text) {
   draw->AddText(at, colour, text.data(), text.data() + text.size());
   record_drawn_text(text, text_width(text), draw->GetClipRectMax().x - at.x);

@@ -5,11 +5,15 @@
 // wrappers draw. A bare ImGui context (no GL): the font atlas is built on
 // the CPU and draw data read back as ImGui::Render leaves it.
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
 
 #include <gtest/gtest.h>
 #include <imgui.h>
 
 #include "core/measure/mesh_picker.h"
+#include "tests/support/test_paths.h"
 #include "ui/text_check.h"
 #include "ui/text_coverage.h"
 #include "ui/trace_marker.h"
@@ -228,6 +232,42 @@ TEST(TraceMarkerWords, ATapOffTheSurfaceSaysSoAndKeepsNoTap) {
   EXPECT_EQ(marker.taps().size(), 1u);
   EXPECT_EQ(marker.problem(), "This tap is off the 3D surface: tap on the rock.");
   EXPECT_FALSE(marker.detail().empty());
+}
+
+}  // namespace
+
+namespace {
+
+// Code the walk does not reach (a tunnel visit's panel, the office panel)
+// is held to the same rule by reading it: no screen calls ImGui's text and
+// control widgets directly, only the recording wrappers of ui/widgets*.
+TEST(TextCoverage, NoScreenDrawsTextOrControlsPastTheWrappers) {
+  namespace fs = std::filesystem;
+  const std::regex direct(
+      R"(ImGui::(Text|TextUnformatted|TextColored|TextWrapped|TextDisabled|LabelText|BulletText|)"
+      R"(TableHeadersRow|TableHeader|SliderFloat|SliderInt|SliderAngle|DragFloat|DragInt|Checkbox|)"
+      R"(BeginCombo|Combo|InputText|InputDouble|InputFloat|InputInt|CollapsingHeader|Selectable|)"
+      R"(Button|SmallButton|ProgressBar|RadioButton|MenuItem|SetTooltip|TreeNode|BeginTabItem|)"
+      R"(BeginPopupModal)\(|->AddText\()");
+  // The dark halo of a label on the 3D image: copies of a label recorded
+  // once through label_on_picture (the glyph check counts a halo once).
+  const std::regex halo(R"(if \(dx \|\| dy\) draw->AddText\()");
+  const fs::path ui = fs::path(ROCKFACE_SOURCE_DIR) / "ui";
+  int files = 0;
+  std::string found;
+  for (const auto& entry : fs::recursive_directory_iterator(ui)) {
+    if (entry.path().extension() != ".cpp" && entry.path().extension() != ".h") continue;
+    if (entry.path().filename().string().rfind("widgets", 0) == 0) continue;
+    ++files;
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+      if (std::regex_search(line, direct) && !std::regex_search(line, halo))
+        found += entry.path().lexically_relative(ui).string() + ":" + std::to_string(n) + ": " +
+                 line + "\n";
+  }
+  EXPECT_GT(files, 50) << "ui/ not found at " << ui;
+  EXPECT_TRUE(found.empty()) << "ImGui drawn past the recording wrappers:\n" << found;
 }
 
 }  // namespace
