@@ -162,10 +162,10 @@ void draw_map_blocks_panel(AppState& app) {
                         ImVec2(0, rows * ImGui::GetTextLineHeightWithSpacing()))) {
     ImGui::TableSetupScrollFreeze(0, 1);
     // Weights, not content: a shortened cell must not shrink its column.
-    ImGui::TableSetupColumn("Block", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("Block", ImGuiTableColumnFlags_WidthStretch, 1.2f);
     // "Verdict (margin)" does not fit the side panel's column: the note
     // below the table says what the angle in brackets is.
-    ImGui::TableSetupColumn("Verdict", ImGuiTableColumnFlags_WidthStretch, 2.4f);
+    ImGui::TableSetupColumn("Verdict", ImGuiTableColumnFlags_WidthStretch, 2.2f);
     ImGui::TableSetupColumn("Mode", ImGuiTableColumnFlags_WidthStretch, 1.4f);
     ImGui::TableSetupColumn("FoS", ImGuiTableColumnFlags_WidthStretch, 0.9f);
     table_headers_row();
