@@ -46,6 +46,27 @@ TouchTargets*& frame_targets() {
   static TouchTargets* targets = nullptr;
   return targets;
 }
+
+// A target as drawn in the current panel: the part of it inside the
+// panel's view (a row half scrolled away, a marker beyond the model view's
+// edge) is where a finger reaches it; none of it, and it is not visible.
+TargetRect in_view(ImVec2 min, ImVec2 max, bool enabled, bool button) {
+  TargetRect r;
+  r.min = min;
+  r.max = max;
+  r.enabled = enabled;
+  r.button = button;
+  r.shown_min = min;
+  r.shown_max = max;
+  const ImGuiContext* g = ImGui::GetCurrentContext();
+  if (!g || !g->CurrentWindow) return r;
+  const ImRect clip = g->CurrentWindow->ClipRect;
+  r.shown_min = ImVec2(std::max(min.x, clip.Min.x), std::max(min.y, clip.Min.y));
+  r.shown_max = ImVec2(std::min(max.x, clip.Max.x), std::min(max.y, clip.Max.y));
+  r.visible = r.shown_max.x > r.shown_min.x && r.shown_max.y > r.shown_min.y;
+  return r;
+}
+
 }  // namespace
 
 void TouchTargets::begin_frame() {
@@ -54,15 +75,11 @@ void TouchTargets::begin_frame() {
 }
 
 void TouchTargets::record(const std::string& label, ImVec2 min, ImVec2 max, bool enabled) {
-  // Visible when any of it is inside the panel it is drawn in (a marker
-  // drawn beyond the model view's edge is not).
-  const bool in_window = ImGui::GetCurrentContext() && ImGui::GetCurrentContext()->CurrentWindow;
-  const bool visible = !in_window || ImGui::IsRectVisible(min, max);
-  rects_[label] = {min, max, enabled, false, visible};
+  rects_[label] = in_view(min, max, enabled, false);
 }
 
 void TouchTargets::record_area(const std::string& label, ImVec2 min, ImVec2 max) {
-  TargetRect r{min, max};
+  TargetRect r = in_view(min, max, true, false);
   r.touch = false;
   rects_[label] = r;
 }
@@ -146,7 +163,7 @@ bool TouchTargets::button(const std::string& label, float width, bool enabled) {
   // The visible label is what a script names (ImGui's "##id" suffix is not).
   const std::string name = label.substr(0, label.find("##"));
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  rects_[name] = {min, max, enabled, true, ImGui::IsItemVisible()};
+  rects_[name] = in_view(min, max, enabled, true);
   // The label must fit the button and the button the panel.
   const float needed = ImGui::CalcTextSize(name.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
   const float drawn = max.x - min.x;

@@ -47,7 +47,13 @@ struct TargetRect {
   // A finger taps it (a button, a row, a slider, a marker on the model):
   // the walk holds it to 9 mm. An area only shown (a notice, a cell) is not.
   bool touch = true;
+  // The part inside its panel's view (the whole when drawn outside a
+  // panel): where a finger can tap it.
+  ImVec2 shown_min, shown_max;
   ImVec2 centre() const { return {(min.x + max.x) / 2, (min.y + max.y) / 2}; }
+  ImVec2 shown_centre() const {
+    return {(shown_min.x + shown_max.x) / 2, (shown_min.y + shown_max.y) / 2};
+  }
 };
 
 class TouchTargets {
