@@ -195,9 +195,6 @@ void TabletApp::build() {
     state_.task_screen = state_.screen;
   }
   draw_status_bar();
-  // Every panel has begun: their scroll bars are known (recorded in the
-  // whole screen's window: its clip is the screen).
-  record_scroll_bars(state_.targets);
   ImGui::End();
 }
 

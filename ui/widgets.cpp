@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <tuple>
 
 #include <imgui_internal.h>
 
@@ -86,19 +85,6 @@ void TouchTargets::record_area(const std::string& label, ImVec2 min, ImVec2 max)
 
 void record_touch_target(const std::string& label, ImVec2 min, ImVec2 max) {
   if (frame_targets()) frame_targets()->record(label, min, max);
-}
-
-void record_scroll_bars(TouchTargets& targets) {
-  for (ImGuiWindow* window : ImGui::GetCurrentContext()->Windows) {
-    if (!window->Active || window->Hidden) continue;
-    for (const auto& [shown, axis, name] :
-         {std::tuple{window->ScrollbarY, ImGuiAxis_Y, "scroll bar of "},
-          std::tuple{window->ScrollbarX, ImGuiAxis_X, "horizontal scroll bar of "}}) {
-      if (!shown) continue;
-      const ImRect bar = ImGui::GetWindowScrollbarRect(window, axis);
-      targets.record(name + std::string(window->Name), bar.Min, bar.Max);
-    }
-  }
 }
 
 float touch_target_px() {

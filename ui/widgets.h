@@ -101,11 +101,6 @@ void record_touch_target(const std::string& label, ImVec2 min, ImVec2 max);
 // none began a frame.
 float touch_target_px();
 
-// Records the scroll bars shown this frame as touch targets ("scroll bar
-// of <panel>"): on a touch screen they are how a panel scrolls. Call after
-// every panel of the frame has begun.
-void record_scroll_bars(TouchTargets& targets);
-
 // The touch targets of `targets` a finger can reach (not scrolled out of
 // view) that are smaller than 9 mm at its DPI, each in words with its size;
 // `slack_px` is ImGui's rounding of item rectangles.
