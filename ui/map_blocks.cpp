@@ -10,6 +10,7 @@
 #include "ui/app_state.h"
 #include "ui/format.h"
 #include "ui/widgets.h"
+#include "ui/widgets_table.h"
 
 namespace rockface::ui {
 
@@ -131,8 +132,8 @@ void draw_map_blocks_on_model(AppState& app) {
     const ImU32 colour = verdict_colour(b.verdict);
     draw->AddCircleFilled(*centre, 7 * s, colour, 16);
     const std::string label = "TB" + std::to_string(number);
-    draw->AddText(ImVec2(centre->x + 10 * s, centre->y - 9 * s), IM_COL32(255, 255, 255, 255),
-                  label.c_str());
+    label_on_picture(draw, ImVec2(centre->x + 10 * s, centre->y - 9 * s),
+                     IM_COL32(255, 255, 255, 255), label);
   }
 }
 
@@ -161,11 +162,13 @@ void draw_map_blocks_panel(AppState& app) {
                         ImVec2(0, rows * ImGui::GetTextLineHeightWithSpacing()))) {
     ImGui::TableSetupScrollFreeze(0, 1);
     // Weights, not content: a shortened cell must not shrink its column.
-    ImGui::TableSetupColumn("Block", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-    ImGui::TableSetupColumn("Verdict (margin)", ImGuiTableColumnFlags_WidthStretch, 2.4f);
+    ImGui::TableSetupColumn("Block", ImGuiTableColumnFlags_WidthStretch, 1.2f);
+    // "Verdict (margin)" does not fit the side panel's column: the note
+    // below the table says what the angle in brackets is.
+    ImGui::TableSetupColumn("Verdict", ImGuiTableColumnFlags_WidthStretch, 2.2f);
     ImGui::TableSetupColumn("Mode", ImGuiTableColumnFlags_WidthStretch, 1.4f);
     ImGui::TableSetupColumn("FoS", ImGuiTableColumnFlags_WidthStretch, 0.9f);
-    ImGui::TableHeadersRow();
+    table_headers_row();
     int number = 0;
     for (const auto& b : v.blocks) {
       ++number;
@@ -185,6 +188,9 @@ void draw_map_blocks_panel(AppState& app) {
                 : format::unknown());
     }
     ImGui::EndTable();
+    note(
+        "The angle beside each verdict is its margin: how far the block is from the other "
+        "verdict.");
   }
   for (const auto& n : v.notes) note(n);
 }

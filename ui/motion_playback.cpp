@@ -10,6 +10,7 @@
 #include "storage/report_dynamics_json.h"
 #include "ui/app_state.h"
 #include "ui/block_view.h"
+#include "ui/widgets_controls.h"
 
 namespace rockface::ui {
 
@@ -100,12 +101,10 @@ void draw_motion_controls(AppState& app, const BlockView& block) {
   }
   ImGui::SameLine();
   float t = static_cast<float>(m.time);
-  ImGui::SetNextItemWidth(-1);
-  if (ImGui::SliderFloat("##motion time", &t, 0.0f, static_cast<float>(end), "%.2f s")) {
+  if (slider(app.targets, "motion time", &t, 0.0f, static_cast<float>(end), "%.2f s")) {
     m.time = t;
     m.playing = false;
   }
-  app.targets.record("motion time", ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
   for (const auto& e : d.events) bullet(storage::event_text(e));
 }
 

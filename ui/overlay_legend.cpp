@@ -7,6 +7,7 @@
 #include "ui/overlay_north_arrow.h"
 #include "ui/overlay_scale_bar.h"
 #include "ui/overlay_traces.h"
+#include "ui/widgets_text.h"
 
 namespace rockface::ui {
 
@@ -102,7 +103,7 @@ void draw_legend(AppState& app, const std::vector<LegendEntry>& entries) {
         draw->AddCircle(ImVec2((a.x + b.x) / 2, mid), 7 * s, e.colour, 20, 3 * s);
         break;
     }
-    draw->AddText(ImVec2(b.x + pad, y), IM_COL32(255, 255, 255, 255), e.words.c_str());
+    label_on_picture(draw, ImVec2(b.x + pad, y), IM_COL32(255, 255, 255, 255), e.words);
     y += line;
   }
 }

@@ -79,11 +79,11 @@ void PhotoTargetsView::draw(storage::RecordId model_id, const storage::Model& mo
     const float width = ImGui::CalcTextSize(text).x;
     const float x =
         c.x + r + 6 * scale + width <= hi.x ? c.x + r + 6 * scale : c.x - r - 6 * scale - width;
-    draw->AddText(ImVec2(x, c.y - 8 * scale), kTargetColour, text);
+    label_on_picture(draw, ImVec2(x, c.y - 8 * scale), kTargetColour, text);
   }
   if (targets.empty())
-    draw->AddText(ImVec2(lo.x + 8 * scale, lo.y + 8 * scale), kTargetColour,
-                  "no range-pole targets stored with this 3D image");
+    label_on_picture(draw, ImVec2(lo.x + 8 * scale, lo.y + 8 * scale), kTargetColour,
+                     "no range-pole targets stored with this 3D image");
 }
 
 }  // namespace rockface::ui

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ui/widgets_text.h"
+
 namespace rockface::ui {
 
 namespace {
@@ -24,7 +26,7 @@ void outlined_text(ImDrawList* draw, ImVec2 at, const char* text) {
   for (int dx = -1; dx <= 1; ++dx)
     for (int dy = -1; dy <= 1; ++dy)
       if (dx || dy) draw->AddText(ImVec2(at.x + dx, at.y + dy), IM_COL32(0, 0, 0, 255), text);
-  draw->AddText(at, IM_COL32(255, 255, 255, 255), text);
+  label_on_picture(draw, at, IM_COL32(255, 255, 255, 255), text);
 }
 
 }  // namespace

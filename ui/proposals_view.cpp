@@ -344,7 +344,8 @@ void draw_proposals_on_model(AppState& app) {
     draw->AddPolyline(line.data(), static_cast<int>(line.size()), confidence_colour(p.confidence),
                       0, (selected ? 5 : 3) * scale);
     const ImVec2 mid = line[line.size() / 2];
-    const float r = 6 * scale;
+    // What a tap picks (tap_proposal): the line within half a target.
+    const float r = app.targets.target_px() / 2;
     app.targets.record("proposal " + p.id, ImVec2(mid.x - r, mid.y - r),
                        ImVec2(mid.x + r, mid.y + r));
   }
@@ -367,7 +368,8 @@ void draw_proposals_on_model(AppState& app) {
 void drag_proposal_ends(AppState& app) {
   ProposalsState& s = app.mapping.proposals;
   if (!s.ends || !current(app) || !app.model_view.picker()) return;
-  const float r = 18 * app.targets.scale();
+  // A handle the thumb drags: a touch target, wider than the ring drawn.
+  const float r = app.targets.target_px() / 2;
   const ImVec2 cursor = ImGui::GetCursorScreenPos();
   for (int k = 0; k < 2; ++k) {
     const auto q = app.model_view.to_screen((*s.ends)[k]);
@@ -396,7 +398,7 @@ bool tap_proposal(AppState& app, ImVec2 tap) {
   ProposalsState& s = app.mapping.proposals;
   if (!current(app) || !app.mapping.marker.taps().empty()) return false;
   if (s.ends) return true;  // correcting: taps go to the handles only
-  const float radius = kPickRadiusPx * app.targets.scale();
+  const float radius = std::max(kPickRadiusPx * app.targets.scale(), app.targets.target_px() / 2);
   double best = radius;
   std::optional<std::size_t> found;
   const auto& proposals = s.result->proposals;

@@ -6,6 +6,7 @@
 
 #include "core/common/error.h"
 #include "ui/app_state.h"
+#include "ui/widgets_controls.h"
 
 namespace rockface::ui {
 
@@ -53,12 +54,11 @@ void number(AppState& app, const char* label, const char* unit, std::optional<do
             double start) {
   bool entered = value.has_value();
   ImGui::PushID(label);
-  if (ImGui::Checkbox("##entered", &entered))
+  if (checkbox(app.targets, std::string(label) + " entered", "", &entered))
     value = entered ? std::optional<double>(start) : std::nullopt;
   ImGui::SameLine();
   if (value) {
-    ImGui::SetNextItemWidth(120 * app.targets.scale());
-    ImGui::InputDouble("##value", &*value, 0, 0, "%.3g");
+    number_field(app.targets, label, &*value, "%.3g", 120 * app.targets.scale());
     ImGui::SameLine();
     ui::label(std::string(label) + (*unit ? std::string(" (") + unit + ")" : ""));
   } else {
@@ -69,18 +69,17 @@ void number(AppState& app, const char* label, const char* unit, std::optional<do
 
 // One choice of the form among the sheet's words, or "not entered".
 template <class E>
-void choice(const char* title, std::optional<E>& value, const std::vector<std::string>& words) {
+void choice(AppState& app, const char* title, std::optional<E>& value,
+            const std::vector<std::string>& words) {
   const std::string shown = value ? words[static_cast<int>(*value)] : "not entered";
   label(title);
-  ImGui::SetNextItemWidth(-1);
-  if (ImGui::BeginCombo((std::string("##") + title).c_str(), shown.c_str())) {
-    if (ImGui::Selectable("not entered", !value)) value.reset();
-    for (std::size_t i = 0; i < words.size(); ++i)
-      if (ImGui::Selectable(words[i].c_str(), value && static_cast<std::size_t>(*value) == i))
-        value = static_cast<E>(i);
-    ImGui::EndCombo();
-  }
-  record_drawn_text(shown, ImGui::CalcTextSize(shown.c_str()).x, ImGui::GetItemRectSize().x);
+  // "not entered" first, then the sheet's words.
+  std::vector<std::string> items = {"not entered"};
+  items.insert(items.end(), words.begin(), words.end());
+  const auto current = value ? std::optional<std::size_t>(static_cast<std::size_t>(*value) + 1)
+                             : std::optional<std::size_t>(0);
+  if (const auto tapped = ui::choice(app.targets, title, shown, items, current))
+    value = *tapped == 0 ? std::nullopt : std::optional<E>(static_cast<E>(*tapped - 1));
 }
 
 void draw_form(AppState& app) {
@@ -90,13 +89,13 @@ void draw_form(AppState& app) {
   number(app, "Is50", "MPa", f.is50_mpa, 4);
   number(app, "aperture", "mm", f.aperture_mm, 0.5);
   number(app, "persistence (when not measured)", "m", f.persistence_m, 3);
-  choice("roughness", f.roughness, rockmass::roughness_words());
-  choice("infilling", f.infilling, rockmass::infilling_words());
-  choice("weathering", f.weathering, rockmass::weathering_words());
+  choice(app, "roughness", f.roughness, rockmass::roughness_words());
+  choice(app, "infilling", f.infilling, rockmass::infilling_words());
+  choice(app, "weathering", f.weathering, rockmass::weathering_words());
   number(app, "condition rating (instead)", "0-30", f.condition_rating, 20);
-  choice("groundwater", f.groundwater, rockmass::groundwater_words());
+  choice(app, "groundwater", f.groundwater, rockmass::groundwater_words());
   number(app, "inflow per 10 m (instead)", "l/min", f.inflow_l_per_min, 0);
-  choice("orientation (without a tunnel)", f.orientation, rockmass::orientation_words());
+  choice(app, "orientation (without a tunnel)", f.orientation, rockmass::orientation_words());
   note("Q: Barton 2002 tables");
   number(app, "Jr", "", f.jr, 1.5);
   number(app, "Ja", "", f.ja, 1);
@@ -132,8 +131,7 @@ void draw_rockmass_view(AppState& app) {
     paragraph("Refused: " + r.refusal, warning_colour());
   }
   for (const auto& line : r.lines) paragraph(line);
-  if (ImGui::CollapsingHeader("Entered on site (form)", ImGuiTreeNodeFlags_DefaultOpen))
-    draw_form(app);
+  if (collapsing_section(app.targets, "Entered on site (form)", true)) draw_form(app);
 }
 
 }  // namespace rockface::ui

@@ -2,6 +2,7 @@
 
 #include "core/common/units.h"
 #include "core/geometry/stereonet.h"
+#include "ui/widgets_text.h"
 
 namespace rockface::ui {
 
@@ -22,7 +23,7 @@ void draw_stereonet(const std::vector<StereonetPlane>& planes, float size) {
                 IM_COL32(0, 0, 0, 255));
   draw->AddLine(ImVec2(centre.x, centre.y - 6), ImVec2(centre.x, centre.y + 6),
                 IM_COL32(0, 0, 0, 255));
-  draw->AddText(ImVec2(centre.x - 5, corner.y), IM_COL32(0, 0, 0, 255), "N");
+  label_on_picture(draw, ImVec2(centre.x - 5, corner.y), IM_COL32(0, 0, 0, 255), "N");
   for (const auto& plane : planes) {
     const PlaneOrientation o{deg_to_rad(plane.dip_deg), deg_to_rad(plane.dipdir_deg)};
     if (plane.great_circle) {

@@ -233,7 +233,7 @@ void TabletApp::draw_status_bar() {
   if (state_.session && state_.session->read_only()) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     label("Read-only: " + state_.session->read_only_reason(), warning_colour());
-    state_.targets.record("read-only notice", at, ImGui::GetItemRectMax());
+    state_.targets.record_area("read-only notice", at, ImGui::GetItemRectMax());
   }
   const auto here = static_cast<std::size_t>(state_.screen);
   const auto& errors = state_.statuses.errors(here);
@@ -256,11 +256,7 @@ void TabletApp::draw_status_bar() {
                        format::text(format::Fraction{status.fraction}) + ", " +
                        format::text(format::Duration{status.seconds}) + ")";
     if (status.cancelling) text += ", cancelling";
-    const float room = ImGui::GetContentRegionAvail().x;
-    text = shortened(text, room - 2 * ImGui::GetStyle().FramePadding.x);
-    ImGui::ProgressBar(static_cast<float>(status.fraction), ImVec2(-1, state_.targets.target_px()),
-                       text.c_str());
-    record_drawn_text(text, ImGui::CalcTextSize(text.c_str()).x, room);
+    progress_bar(static_cast<float>(status.fraction), text, state_.targets.target_px());
   } else {
     label_in_row(state_.statuses.message(here));
   }

@@ -35,6 +35,25 @@ bool looks_like_json(std::string_view t) {
   return t.find("{\"") != std::string_view::npos;
 }
 
+bool looks_like_field_path(std::string_view t) {
+  auto word = [](char c) { return lower(c) || digit(c) || c == '_' || (c >= 'A' && c <= 'Z'); };
+  // \w+\.\w+\[\d+\]: find "[digits]" preceded by word chars, a dot, word chars.
+  for (std::size_t open = t.find('['); open != std::string_view::npos;
+       open = t.find('[', open + 1)) {
+    std::size_t close = open + 1;
+    while (close < t.size() && digit(t[close])) ++close;
+    if (close == open + 1 || close >= t.size() || t[close] != ']') continue;
+    std::size_t i = open;
+    while (i > 0 && word(t[i - 1])) --i;
+    if (i == open || i == 0 || t[i - 1] != '.') continue;
+    const std::size_t dot = i - 1;
+    std::size_t j = dot;
+    while (j > 0 && word(t[j - 1])) --j;
+    if (j < dot) return true;
+  }
+  return false;
+}
+
 std::optional<std::string> overlong_number(std::string_view t, int max_digits) {
   for (std::size_t i = 0; i < t.size();) {
     if (!digit(t[i])) {
@@ -73,6 +92,7 @@ std::string text_problem(const DrawnText& d, float slack_px) {
   }
   if (looks_like_key(d.text)) add("looks like a report key");
   if (looks_like_json(d.text)) add("looks like JSON");
+  if (looks_like_field_path(d.text)) add("names a library's field path, not in words");
   if (const auto n = overlong_number(d.text)) add("the number " + *n + " has too many digits");
   return why.empty() ? why : "\"" + d.text + "\" in " + d.panel + ": " + why;
 }

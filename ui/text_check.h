@@ -15,6 +15,10 @@ namespace rockface::ui {
 bool looks_like_key(std::string_view text);
 // An opening brace followed by a double quote.
 bool looks_like_json(std::string_view text);
+// A library's field path with an index, as its error messages name what
+// they refuse ("trace.pixels[784]", regex `\w+\.\w+\[\d+\]`): the message
+// was not put in words for the screen.
+bool looks_like_field_path(std::string_view text);
 // The first number in `text` printed with more than `max_digits`
 // significant digits (leading zeros do not count; "1,234,567" is one
 // number), if any.

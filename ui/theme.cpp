@@ -97,6 +97,10 @@ void apply_theme(Theme theme, float scale, float min_target_px) {
   const float font = theme_font_px(theme) * scale;
   style.FramePadding = ImVec2(14 * scale, std::max(12 * scale, (min_target_px - font) / 2));
   style.ItemSpacing = ImVec2(12 * scale, 10 * scale);
+  // A panel scrolls only by its scroll bar on a touch screen (ImGui has no
+  // drag to scroll), yet a 9 mm bar narrows the side panels enough to push
+  // buttons scripts tap out of view: 28 px (4.7 mm) until panels scroll by
+  // a drag (issue 27, the walk's note).
   style.ScrollbarSize = 28 * scale;
   style.GrabMinSize = 28 * scale;
   style.FrameRounding = 6 * scale;

@@ -46,14 +46,25 @@ class TraceMarker {
   const std::vector<Eigen::Vector3d>& points() const { return points_; }
   // The plane fitted so far (from three points, or from a traced path).
   const std::optional<measure::PlaneEstimate>& plane() const { return plane_; }
+  // What went wrong with the last tap, in words for the screen: what
+  // happened and what to do ("This tap is off the 3D surface: tap on the
+  // rock."). Empty when nothing did.
   const std::string& problem() const { return problem_; }
+  // The library's precise message for the same (field and index, e.g.
+  // "trace.pixels[784]: no surface of the 3D image under this pick"), for
+  // logs and bug reports; never shown on the screen.
+  const std::string& detail() const { return detail_; }
 
  private:
   void remeasure(const TraceContext& context);
   Mode mode_ = Mode::points;
   std::vector<Eigen::Vector3d> taps_, points_;
   std::optional<measure::PlaneEstimate> plane_;
-  std::string problem_;
+  std::string problem_, detail_;
 };
+
+// A failure of core/measure while measuring a trace of `mode`, in words for
+// the geologist: what happened and what to do.
+std::string trace_problem_in_words(TraceMarker::Mode mode, const std::string& reason);
 
 }  // namespace rockface::ui

@@ -7,6 +7,7 @@
 
 #include "ui/app_state.h"
 #include "ui/format.h"
+#include "ui/widgets_controls.h"
 
 namespace rockface::ui {
 
@@ -103,8 +104,7 @@ void draw_typed_placement(AppState& app) {
   for (auto [name, value] : {std::pair{"Chainage (m)", &t.typed_chainage},
                              std::pair{"Offset right of the axis (m)", &t.typed_offset},
                              std::pair{"Height above the axis (m)", &t.typed_height}}) {
-    ImGui::SetNextItemWidth(w);
-    ImGui::InputDouble((std::string("##") + name).c_str(), value, 0.1, 1.0, "%.2f");
+    number_field(app.targets, name, value, "%.2f", w, 0.1);
     ImGui::SameLine();
     label(name);
   }

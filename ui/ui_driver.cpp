@@ -37,7 +37,8 @@ void UiDriver::tap(const std::string& label, const std::string& where) {
   // A finger cannot tap what is scrolled out of view.
   if (!target->visible)
     throw InputError(where, "\"" + label + "\" is scrolled out of view on the screen");
-  const ImVec2 c = target->centre();
+  // The middle of the part in view: a finger taps what it sees.
+  const ImVec2 c = target->shown_centre();
   tap(c.x, c.y);
 }
 

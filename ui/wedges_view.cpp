@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include "ui/app_state.h"
+#include "ui/widgets_table.h"
 
 namespace rockface::ui {
 
@@ -41,7 +42,7 @@ void draw_table(AppState& app, const WedgeTable& t) {
       ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame;
   if (!ImGui::BeginTable("wedges", static_cast<int>(t.columns.size()), flags)) return;
   for (const auto& c : t.columns) ImGui::TableSetupColumn(c.c_str());
-  ImGui::TableHeadersRow();
+  table_headers_row();
   const float row_height = app.targets.target_px();
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     ImGui::TableNextRow(0, row_height);
@@ -51,8 +52,8 @@ void draw_table(AppState& app, const WedgeTable& t) {
       ImGui::TableNextColumn();
       label(t.rows[i][c]);
       if (c == 0)
-        app.targets.record("wedge " + t.rows[i][0], ImGui::GetItemRectMin(),
-                           ImGui::GetItemRectMax());
+        app.targets.record_area("wedge " + t.rows[i][0], ImGui::GetItemRectMin(),
+                                ImGui::GetItemRectMax());
     }
   }
   ImGui::EndTable();

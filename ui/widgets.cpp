@@ -1,6 +1,9 @@
 #include "ui/widgets.h"
 
 #include <algorithm>
+#include <cstdio>
+
+#include <imgui_internal.h>
 
 namespace rockface::ui {
 
@@ -35,6 +38,72 @@ ImU32 verdict_text_colour(BlockVerdict verdict) {
       return IM_COL32(90, 90, 90, 255);
   }
   return IM_COL32(0, 0, 0, 255);
+}
+
+namespace {
+TouchTargets*& frame_targets() {
+  static TouchTargets* targets = nullptr;
+  return targets;
+}
+
+// A target as drawn in the current panel: the part of it inside the
+// panel's view (a row half scrolled away, a marker beyond the model view's
+// edge) is where a finger reaches it; none of it, and it is not visible.
+TargetRect in_view(ImVec2 min, ImVec2 max, bool enabled, bool button) {
+  TargetRect r;
+  r.min = min;
+  r.max = max;
+  r.enabled = enabled;
+  r.button = button;
+  r.shown_min = min;
+  r.shown_max = max;
+  const ImGuiContext* g = ImGui::GetCurrentContext();
+  if (!g || !g->CurrentWindow) return r;
+  const ImRect clip = g->CurrentWindow->ClipRect;
+  r.shown_min = ImVec2(std::max(min.x, clip.Min.x), std::max(min.y, clip.Min.y));
+  r.shown_max = ImVec2(std::min(max.x, clip.Max.x), std::min(max.y, clip.Max.y));
+  r.visible = r.shown_max.x > r.shown_min.x && r.shown_max.y > r.shown_min.y;
+  return r;
+}
+
+}  // namespace
+
+void TouchTargets::begin_frame() {
+  rects_.clear();
+  frame_targets() = this;
+}
+
+void TouchTargets::record(const std::string& label, ImVec2 min, ImVec2 max, bool enabled) {
+  rects_[label] = in_view(min, max, enabled, false);
+}
+
+void TouchTargets::record_area(const std::string& label, ImVec2 min, ImVec2 max) {
+  TargetRect r = in_view(min, max, true, false);
+  r.touch = false;
+  rects_[label] = r;
+}
+
+void record_touch_target(const std::string& label, ImVec2 min, ImVec2 max) {
+  if (frame_targets()) frame_targets()->record(label, min, max);
+}
+
+float touch_target_px() {
+  return frame_targets() ? frame_targets()->target_px() : ImGui::GetFrameHeight();
+}
+
+std::vector<std::string> small_touch_targets(const TouchTargets& targets, float slack_px) {
+  std::vector<std::string> out;
+  const float least = touch_target_px_at(targets.dpi());
+  for (const auto& [label, r] : targets.all()) {
+    if (!r.touch || !r.visible) continue;
+    const float w = r.max.x - r.min.x, h = r.max.y - r.min.y;
+    if (std::min(w, h) + slack_px >= least) continue;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%.0f x %.0f px, under 9 mm (%.0f px at %.0f dpi)", w, h, least,
+                  targets.dpi());
+    out.push_back("touch target \"" + label + "\" is " + buf);
+  }
+  return out;
 }
 
 float TouchTargets::target_px() const {
@@ -80,7 +149,7 @@ bool TouchTargets::button(const std::string& label, float width, bool enabled) {
   // The visible label is what a script names (ImGui's "##id" suffix is not).
   const std::string name = label.substr(0, label.find("##"));
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  rects_[name] = {min, max, enabled, true, ImGui::IsItemVisible()};
+  rects_[name] = in_view(min, max, enabled, true);
   // The label must fit the button and the button the panel.
   const float needed = ImGui::CalcTextSize(name.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
   const float drawn = max.x - min.x;

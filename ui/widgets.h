@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -43,12 +44,23 @@ struct TargetRect {
   bool enabled = true;
   bool button = false;  // drawn by button(): a touch target of its own
   bool visible = true;  // not scrolled out of its panel's view
+  // A finger taps it (a button, a row, a slider, a marker on the model):
+  // the walk holds it to 9 mm. An area only shown (a notice, a cell) is not.
+  bool touch = true;
+  // The part inside its panel's view (the whole when drawn outside a
+  // panel): where a finger can tap it.
+  ImVec2 shown_min, shown_max;
   ImVec2 centre() const { return {(min.x + max.x) / 2, (min.y + max.y) / 2}; }
+  ImVec2 shown_centre() const {
+    return {(shown_min.x + shown_max.x) / 2, (shown_min.y + shown_max.y) / 2};
+  }
 };
 
 class TouchTargets {
  public:
-  void begin_frame() { rects_.clear(); }
+  // Clears the record and makes these the frame's targets for
+  // record_touch_target() (widgets drawn without them, e.g. a popup's Close).
+  void begin_frame();
   // A thumb-sized button; width 0 fits the label. Records where it is.
   bool button(const std::string& label, float width = 0, bool enabled = true);
   // The same, on the line of the previous item when it fits there, else on
@@ -60,14 +72,18 @@ class TouchTargets {
   // Edge of a touch target in pixels: the larger of kTouchTargetPx at the
   // UI scale and 9 mm at the tablet's DPI.
   float target_px() const;
-  // Records an area drawn by other means (the model view).
-  void record(const std::string& label, ImVec2 min, ImVec2 max) { rects_[label] = {min, max}; }
+  // Records a touch target drawn by other means (a table row, a slider, a
+  // block's marker on the model): the one function every target goes
+  // through, so that the walk holds each to 9 mm.
+  void record(const std::string& label, ImVec2 min, ImVec2 max, bool enabled = true);
+  // Records an area that is shown, not tapped (a notice, a table cell).
+  void record_area(const std::string& label, ImVec2 min, ImVec2 max);
   std::optional<TargetRect> find(const std::string& label) const;
   float scale() const { return scale_; }
   void set_scale(float s) { scale_ = s; }
   float dpi() const { return dpi_; }
   void set_dpi(float dpi) { dpi_ = dpi; }
-  // Every button drawn this frame (the walk checks their size).
+  // Every target drawn this frame (the walk checks their size).
   const std::map<std::string, TargetRect>& all() const { return rects_; }
 
  private:
@@ -75,6 +91,20 @@ class TouchTargets {
   float scale_ = 1;
   float dpi_ = kScaleOneDpi;
 };
+
+// Records a touch target into the frame's TouchTargets (the last to begin a
+// frame); nothing when none did (a widget drawn outside the tablet app).
+void record_touch_target(const std::string& label, ImVec2 min, ImVec2 max);
+
+// The edge of a touch target this frame: the frame's TouchTargets'
+// target_px(), or ImGui's frame height (the theme makes it a target) when
+// none began a frame.
+float touch_target_px();
+
+// The touch targets of `targets` a finger can reach (not scrolled out of
+// view) that are smaller than 9 mm at its DPI, each in words with its size;
+// `slack_px` is ImGui's rounding of item rectangles.
+std::vector<std::string> small_touch_targets(const TouchTargets& targets, float slack_px = 0.5f);
 
 // The width a button of `label` takes (its text and padding, at least a
 // touch target).

@@ -1,10 +1,12 @@
 #include "ui/widgets_text.h"
 
+#include <algorithm>
 #include <functional>
 
 #include <imgui_internal.h>
 
 #include "ui/format.h"
+#include "ui/widgets.h"
 
 namespace rockface::ui {
 
@@ -38,9 +40,13 @@ void whole_text_popup(const std::string& id, std::string_view text) {
   ImGui::TextUnformatted(text.data(), text.data() + text.size());
   record_drawn_text(text, std::min(most, text_width(text)), most + 1);
   ImGui::PopTextWrapPos();
-  // A tap outside closes it too; the button is for the thumb (2.4 lines high).
-  if (ImGui::Button("Close", ImVec2(4 * ImGui::GetFontSize(), 2.4f * ImGui::GetFontSize())))
+  // A tap outside closes it too; the button is a thumb target (9 mm at the
+  // tablet's DPI, whatever the theme's type size).
+  const float side = touch_target_px();
+  if (ImGui::Button("Close", ImVec2(std::max(side, 4 * ImGui::GetFontSize()), side)))
     ImGui::CloseCurrentPopup();
+  record_touch_target("Close (whole text)", ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+  record_drawn_text("Close", ImGui::CalcTextSize("Close").x, ImGui::GetItemRectSize().x);
   ImGui::EndPopup();
 }
 
@@ -66,10 +72,14 @@ void one_line(std::string_view whole) {
   // Beside buttons ImGui moves text down to their text line; this target is
   // their height and centres its text itself.
   ImGui::GetCurrentWindow()->DC.CurrLineTextBaseOffset = 0;
+  // At least a thumb wide when the line has the room (a label shortened to
+  // "Jo…" is still a target).
+  const float wide = std::max(text_width(shown), std::min(room, touch_target_px()));
   if (ImGui::Selectable((shown + "##short").c_str(), false, 0,
-                        ImVec2(text_width(shown), ImGui::GetFrameHeight())))
+                        ImVec2(wide, std::max(ImGui::GetFrameHeight(), touch_target_px()))))
     ImGui::OpenPopup("whole text");
   ImGui::PopStyleVar();
+  record_touch_target("whole text of " + shown, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
   record_drawn_text(shown, text_width(shown), room);
   whole_text_popup("whole text", text);
   ImGui::PopID();
@@ -91,6 +101,18 @@ void wrapped(std::string_view whole) {
 
 void record_drawn_text(std::string_view text, float width, float available) {
   log().push_back({std::string(text), width, available, panel_name()});
+}
+
+void progress_bar(float fraction, std::string_view whole, float height) {
+  const float room = space_left();
+  const std::string text = shortened(whole, room - 2 * ImGui::GetStyle().FramePadding.x);
+  ImGui::ProgressBar(fraction, ImVec2(-1, height), text.c_str());
+  record_drawn_text(text, text_width(text), room);
+}
+
+void label_on_picture(ImDrawList* draw, ImVec2 at, ImU32 colour, std::string_view text) {
+  draw->AddText(at, colour, text.data(), text.data() + text.size());
+  record_drawn_text(text, text_width(text), draw->GetClipRectMax().x - at.x);
 }
 
 void clear_drawn_text() {

@@ -3,9 +3,13 @@
 // sizes of two tablets (1280 x 800 at 150 dpi, 1920 x 1200 at 225 dpi), in
 // portrait, and in the tunnel theme. Every string drawn in every frame of
 // the walk (ui/widgets_text.h records them) must fit the space it had, not
-// look like a report key or JSON, and carry no number of more than six
-// significant digits; every button is a 9 mm thumb target at the tablet's
-// density; no string shows a machine's folder.
+// look like a report key or JSON, name no library's field path
+// ("trace.pixels[784]"), and carry no number of more than six significant
+// digits; no text may be drawn that was not recorded (the glyphs of each
+// frame's draw data are read back: ui/text_coverage.h); every touch target
+// (buttons, table rows, sliders and their grabs, boxes, choices, markers on
+// the model, a popup's Close) is 9 mm at the tablet's density; no string
+// shows a machine's folder.
 #include <algorithm>
 #include <map>
 #include <set>
@@ -16,6 +20,7 @@
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
 #include "ui/text_check.h"
+#include "ui/text_coverage.h"
 
 namespace {
 
@@ -72,16 +77,15 @@ class Walk {
           problems_.insert(at + ": \"" + d.text + "\" shows a machine's folder");
       ++strings_;
     }
-    // 9 mm at the density the scale stands for, less half a pixel of
-    // ImGui's rounding of item rectangles.
-    const float least = touch_target_px_at(app.targets.dpi()) - 0.5f;
-    for (const auto& [label, rect] : app.targets.all()) {
-      if (!rect.button) continue;
-      const float w = rect.max.x - rect.min.x, h = rect.max.y - rect.min.y;
-      if (std::min(w, h) < least)
-        problems_.insert(at + ": button \"" + label + "\" is " + std::to_string(w) + " x " +
-                         std::to_string(h) + " px, under 9 mm (" + std::to_string(least) + " px)");
-    }
+    // Text drawn that the record does not hold: unseen by the checks above.
+    for (const UnrecordedText& u : unrecorded_text_in_last_frame(drawn_text()))
+      problems_.insert(at + ": \"" + u.characters + "\" drawn in " + u.panel +
+                       " without being recorded");
+    // Every touch target 9 mm at the density the scale stands for, less half
+    // a pixel of ImGui's rounding of item rectangles.
+    for (const std::string& small : small_touch_targets(app.targets, 0.5f))
+      problems_.insert(at + ": " + small);
+    targets_ += static_cast<int>(app.targets.all().size());
   }
 
   void tap(const std::string& label, const std::string& where = "") {
@@ -97,6 +101,7 @@ class Walk {
 
   // The strings checked so far (a walk that saw nothing proves nothing).
   int strings() const { return strings_; }
+  int targets() const { return targets_; }
   const std::set<std::string>& problems() const { return problems_; }
 
  private:
@@ -105,6 +110,7 @@ class Walk {
   std::unique_ptr<HeadlessSession> session_;
   std::set<std::string> problems_;
   int strings_ = 0;
+  int targets_ = 0;
 };
 
 // Every screen and view the geologist reaches from the tabs.
@@ -128,12 +134,28 @@ void walk_every_screen(Walk& w) {
     for (int i = 0; i < 4; ++i) w.s().tap(centre->x - 60 + 40 * i, centre->y - 30 + 20 * i);
     w.s().frame();
     w.check("a trace of four taps");
+    // A tap off the 3D surface (the view's top left corner, beyond the
+    // face): the screen says what happened and what to do, in words.
+    const ImVec2 corner = view.panel_min();
+    w.s().tap(corner.x + 4, corner.y + 4);
+    w.s().frame();
+    w.check("a tap off the surface");
+    EXPECT_EQ(app.mapping.marker.problem(), "This tap is off the 3D surface: tap on the rock.");
+    bool said = false;
+    for (const DrawnText& d : drawn_text()) said = said || d.text == app.mapping.marker.problem();
+    EXPECT_TRUE(said) << "the Mapping screen does not show why the tap was refused";
   }
   w.tap("Blocks");
   const auto& blocks = app.session->blocks();
   ASSERT_FALSE(blocks.empty());
   w.tap("row " + blocks.front().label, "a block's report");
   w.tap("Rock mass");
+  // A choice of the form open (when the panel shows it without scrolling):
+  // its items are text and targets too.
+  if (const auto choice = app.targets.find("roughness"); choice && choice->visible) {
+    w.tap("roughness", "the roughness choice open");
+    w.tap("roughness: not entered", "the roughness choice closed");
+  }
   w.tap_and_wait("Rock mass figures");
   w.tap("Block report");
   w.tap("Wedges view");
@@ -143,6 +165,7 @@ void walk_every_screen(Walk& w) {
 
 void expect_clean(const Walk& w) {
   EXPECT_GT(w.strings(), 200) << "the walk saw too few strings to mean anything";
+  EXPECT_GT(w.targets(), 100) << "the walk saw too few touch targets to mean anything";
   std::string all;
   for (const auto& p : w.problems()) all += p + "\n";
   EXPECT_TRUE(w.problems().empty()) << w.problems().size() << " problems:\n" << all;

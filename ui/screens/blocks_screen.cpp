@@ -2,6 +2,7 @@
 // marginal rows highlighted), the blocks drawn on the model coloured by
 // verdict, and the report of the block tapped (on the model or in the
 // table). "Run analysis" analyses the visit on the worker.
+#include <cmath>
 #include <utility>
 
 #include <opencv2/imgproc.hpp>
@@ -11,6 +12,7 @@
 #include "ui/overlay_legend.h"
 #include "ui/screens/screens.h"
 #include "ui/wedges_view.h"
+#include "ui/widgets_table.h"
 
 namespace rockface::ui {
 
@@ -68,17 +70,30 @@ void draw_blocks_on_model(AppState& app, std::optional<ImVec2> tap) {
   for (std::size_t i = 0; i < blocks.size(); ++i)
     if (!polys[i].empty()) {
       const ImVec2 c = block_marker_on_screen(app, blocks[i]).value_or(centre_of(polys[i]));
-      draw->AddText(ImVec2(c.x + 12 * s, c.y - 10 * s), IM_COL32(255, 255, 255, 255),
-                    blocks[i].label.c_str());
+      label_on_picture(draw, ImVec2(c.x + 12 * s, c.y - 10 * s), IM_COL32(255, 255, 255, 255),
+                       blocks[i].label);
     }
+  // The marker is drawn small (it must not hide the rock) but its touch
+  // target is a thumb's: a tap within it selects its block before any
+  // footprint under the finger.
+  const float half = app.targets.target_px() / 2;
+  std::optional<std::size_t> on_marker;
+  float marker_distance = half;
   for (std::size_t i = 0; i < blocks.size(); ++i)
     if (!polys[i].empty()) {
       const ImVec2 c = block_marker_on_screen(app, blocks[i]).value_or(centre_of(polys[i]));
       draw->AddCircleFilled(c, 9 * s, verdict_colour(blocks[i].verdict), 20);
-      app.targets.record("block " + blocks[i].label, ImVec2(c.x - 9 * s, c.y - 9 * s),
-                         ImVec2(c.x + 9 * s, c.y + 9 * s));
+      app.targets.record("block " + blocks[i].label, ImVec2(c.x - half, c.y - half),
+                         ImVec2(c.x + half, c.y + half));
+      if (tap && std::abs(tap->x - c.x) <= half && std::abs(tap->y - c.y) <= half) {
+        const float d = std::hypot(tap->x - c.x, tap->y - c.y);
+        if (d <= marker_distance) {
+          marker_distance = d;
+          on_marker = i;
+        }
+      }
     }
-  if (tap) app.selected_block = tapped;
+  if (tap) app.selected_block = on_marker ? on_marker : tapped;
 }
 
 // The mode in words for the table: a block that cannot move has none.
@@ -98,7 +113,7 @@ void draw_table(AppState& app) {
        {std::pair{"Block", 1.0f}, std::pair{"Verdict", 1.3f}, std::pair{"Mode", 1.4f},
         std::pair{"FoS", 0.8f}, std::pair{"Margin", 1.0f}, std::pair{"Can rotate", 1.3f}})
     ImGui::TableSetupColumn(h, ImGuiTableColumnFlags_WidthStretch, weight);
-  ImGui::TableHeadersRow();
+  table_headers_row();
   // Rows are touch targets: a full thumb high.
   const float row_height = app.targets.target_px();
   for (std::size_t i = 0; i < blocks.size(); ++i) {
@@ -107,11 +122,7 @@ void draw_table(AppState& app) {
     if (b.marginal) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(255, 200, 120, 255));
     ImGui::TableNextColumn();
     const bool selected = app.selected_block && *app.selected_block == i;
-    if (ImGui::Selectable(("##row" + b.label).c_str(), selected,
-                          ImGuiSelectableFlags_SpanAllColumns, ImVec2(0, row_height)))
-      app.selected_block = i;
-    app.targets.record("row " + b.label, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
-    ImGui::SameLine();
+    if (selectable_row(app.targets, "row " + b.label, selected)) app.selected_block = i;
     label(b.label);
     ImGui::TableNextColumn();
     label(b.marginal ? "marginal" : verdict_name(b.verdict),

@@ -11,6 +11,7 @@
 #include "storage/project_store.h"
 #include "ui/format.h"
 #include "ui/screens/screens.h"
+#include "ui/widgets_controls.h"
 
 namespace rockface::ui {
 
@@ -152,8 +153,8 @@ void draw_guidance(AppState& app) {
   const float s = app.targets.scale();
   heading("Stereo guidance");
   label("Distance to the face");
-  ImGui::SetNextItemWidth(std::min(400 * s, ImGui::GetContentRegionAvail().x));
-  ImGui::SliderFloat("##distance", &c.distance_m, 2, 100, "%.0f m");
+  slider(app.targets, "distance", &c.distance_m, 2, 100, "%.0f m",
+         std::min(400 * s, ImGui::GetContentRegionAvail().x));
   const camera::BaseLengthHint hint = camera::base_length_hint(c.distance_m);
   bullet("Walk " + format::text(format::Length{hint.min_m}) + " to " +
          format::text(format::Length{hint.max_m}) +
@@ -161,8 +162,8 @@ void draw_guidance(AppState& app) {
   bullet("Same focal length, focus and aperture for both shots; no flash.");
   bullet("The range pole (both targets) in view of both shots.");
   label("Range pole: distance between its target centres");
-  ImGui::SetNextItemWidth(std::min(400 * s, ImGui::GetContentRegionAvail().x));
-  ImGui::SliderFloat("##pole", &c.range_pole_m, 0.5f, 5, "%.2f m");
+  slider(app.targets, "range pole", &c.range_pole_m, 0.5f, 5, "%.2f m",
+         std::min(400 * s, ImGui::GetContentRegionAvail().x));
 }
 
 // The camera and the shots: what the geologist taps at the face, first.

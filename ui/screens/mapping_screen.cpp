@@ -238,6 +238,8 @@ void draw_face_and_undo(AppState& app) {
 }
 
 void draw_fit(const TraceMarker& marker) {
+  // A refused tap says why even when the trace so far has a plane.
+  if (marker.plane() && !marker.problem().empty()) paragraph(marker.problem(), warning_colour());
   if (const auto& plane = marker.plane(); plane && plane->known) {
     heading("Dip / dip direction " +
             format::dip_and_direction(rad_to_deg(plane->orientation.dip),

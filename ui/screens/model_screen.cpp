@@ -2,10 +2,11 @@
 // the range pole targets and the accuracy of the 3D image in words.
 #include <nlohmann/json.hpp>
 
-#include "ui/overlay_legend.h"
 #include "ui/accuracy_summary.h"
 #include "ui/format.h"
+#include "ui/overlay_legend.h"
 #include "ui/screens/screens.h"
+#include "ui/widgets_table.h"
 
 namespace rockface::ui {
 
@@ -23,7 +24,7 @@ void draw_accuracy(const storage::Model& model) {
   if (model.residuals.size() >= 3 && ImGui::BeginTable("residuals", 2, ImGuiTableFlags_Borders)) {
     ImGui::TableSetupColumn("Control point");
     ImGui::TableSetupColumn("Residual");
-    ImGui::TableHeadersRow();
+    table_headers_row();
     for (const auto& res : model.residuals) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();

@@ -5,12 +5,12 @@
 #include <filesystem>
 
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include "ui/format.h"
 #include "ui/office_panel.h"
 #include "ui/screens/screens.h"
 #include "ui/tunnel_panel.h"
+#include "ui/widgets_controls.h"
 
 namespace rockface::ui {
 
@@ -57,7 +57,7 @@ void draw_chooser(AppState& app) {
   ImGui::Separator();
   heading("New project");
   ImGui::SetNextItemWidth(std::min(320 * app.targets.scale(), ImGui::GetContentRegionAvail().x));
-  ImGui::InputText("##name", &app.new_project_name);
+  text_field(app.targets, "project name", &app.new_project_name);
   if (app.targets.button_in_row("Create", !app.new_project_name.empty())) {
     const fs::path file = app.options.projects_folder / (app.new_project_name + ".rockface");
     try {
