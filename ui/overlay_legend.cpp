@@ -6,6 +6,7 @@
 #include "ui/app_state.h"
 #include "ui/overlay_north_arrow.h"
 #include "ui/overlay_scale_bar.h"
+#include "ui/overlay_text.h"
 #include "ui/overlay_traces.h"
 
 namespace rockface::ui {
@@ -102,7 +103,8 @@ void draw_legend(AppState& app, const std::vector<LegendEntry>& entries) {
         draw->AddCircle(ImVec2((a.x + b.x) / 2, mid), 7 * s, e.colour, 20, 3 * s);
         break;
     }
-    draw->AddText(ImVec2(b.x + pad, y), IM_COL32(255, 255, 255, 255), e.words.c_str());
+    draw_text(draw, ImVec2(b.x + pad, y), IM_COL32(255, 255, 255, 255), e.words,
+              app.model_view.text_area());
     y += line;
   }
 }

@@ -18,7 +18,6 @@
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
 #include "ui/overlay_blocks.h"
-#include "ui/overlay_photo_targets.h"
 #include "ui/overlay_traces.h"
 
 namespace {
@@ -279,46 +278,6 @@ TEST(OverlayBlocks, AFootprintPastTheImageIsClippedAndItsOpenSideDashed) {
   bool dashed = false;
   for (const auto& l : scene.lines) dashed = dashed || l.dashed;
   EXPECT_TRUE(dashed);
-}
-
-}  // namespace
-
-namespace {
-
-// The Model screen's photograph: a ring where the detector found each of the
-// range pole's targets, at the stored pixel.
-TEST(OverlayPhotoTargets, TheDetectedTargetsAreRingedOnThePhotograph) {
-  UiOptions options;
-  options.project = demo_project();
-  options.max_display_triangles = kTriangles;
-  HeadlessSession s(options, FieldServices{}, 1280, 800);
-  s.settle();
-  s.tap("Model");
-  s.tap("Photograph");
-  s.frame();
-  const auto targets = detected_targets(*s.state().model_view.model());
-  ASSERT_EQ(targets.size(), 2u) << "the demo's pole has two targets";
-  const auto& rings = s.state().photo_targets.rings();
-  ASSERT_EQ(rings.size(), targets.size());
-  const cv::Mat shot = s.screenshot();
-  const ImU32 c = kTargetColour;
-  const cv::Vec3b yellow((c >> IM_COL32_B_SHIFT) & 0xFF, (c >> IM_COL32_G_SHIFT) & 0xFF,
-                         (c >> IM_COL32_R_SHIFT) & 0xFF);
-  for (const auto& [centre, radius] : rings) {
-    // The ring is drawn 3 px wide: its colour on most of its circle (the
-    // rest antialiased where it crosses pixel boundaries).
-    int on = 0;
-    for (int k = 0; k < 36; ++k) {
-      const double a = k * M_PI / 18;
-      const int x = static_cast<int>(std::lround(centre.x + radius * std::cos(a)));
-      const int y = static_cast<int>(std::lround(centre.y + radius * std::sin(a)));
-      on += shot.at<cv::Vec3b>(y, x) == yellow;
-    }
-    EXPECT_GT(on, 18) << "ring at " << centre.x << ", " << centre.y;
-  }
-  // Back to the 3D image.
-  s.tap("3D image");
-  EXPECT_FALSE(s.state().show_photograph);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "firmware-app/services/ui_services.h"
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
+#include "ui/overlay_text.h"
 #include "ui/text_check.h"
 
 namespace {
@@ -72,6 +73,10 @@ class Walk {
           problems_.insert(at + ": \"" + d.text + "\" shows a machine's folder");
       ++strings_;
     }
+    // Words drawn straight onto a picture (ui/overlay_text.h) lie inside it.
+    for (const PlacedText& p : placed_texts())
+      if (const std::string why = placement_problem(p); !why.empty())
+        problems_.insert(at + ": " + why);
     // 9 mm at the density the scale stands for, less half a pixel of
     // ImGui's rounding of item rectangles.
     const float least = touch_target_px_at(app.targets.dpi()) - 0.5f;
@@ -117,6 +122,8 @@ void walk_every_screen(Walk& w) {
   w.tap_and_wait("Shoot left");
   w.tap_and_wait("Shoot right");
   w.tap("Model");
+  w.tap("Photograph");  // the targets' rings and labels on the photograph
+  w.tap("3D image");
   w.tap("Mapping");
   for (std::size_t k = 0; k < app.session->pairs().size(); ++k) {
     const std::string pair = "Pair " + std::to_string(k + 1);
