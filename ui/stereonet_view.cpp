@@ -10,6 +10,10 @@ namespace rockface::ui {
 
 void draw_stereonet(const std::vector<StereonetPlane>& planes, float size) {
   using namespace geometry;
+  // At the foot of a full panel the room left below is nothing or less:
+  // the net then takes the panel's width (or sixteen lines) and the panel
+  // scrolls to it.
+  size = std::max(size, std::min(ImGui::GetContentRegionAvail().x, 16 * ImGui::GetFontSize()));
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 corner = ImGui::GetCursorScreenPos();
   // Room above the circle for the N, at any type size.
