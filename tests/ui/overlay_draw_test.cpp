@@ -19,6 +19,7 @@
 #include "ui/headless_session.h"
 #include "ui/overlay_blocks.h"
 #include "ui/overlay_traces.h"
+#include "ui/widgets.h"
 
 namespace {
 
@@ -278,6 +279,44 @@ TEST(OverlayBlocks, AFootprintPastTheImageIsClippedAndItsOpenSideDashed) {
   bool dashed = false;
   for (const auto& l : scene.lines) dashed = dashed || l.dashed;
   EXPECT_TRUE(dashed);
+}
+
+}  // namespace
+
+namespace {
+
+// A block's marker on the Blocks screen is a thumb's target (9 mm at the
+// tablet's density; here an 8" 1920 x 1200 tablet at 300 dpi, where 9 mm,
+// 106 px, is more than the layout's 56 px x scale), and a tap anywhere on
+// it selects its block.
+TEST(OverlayBlocks, ABlockMarkerIsANineMillimetreTargetThatSelectsItsBlock) {
+  UiOptions options;
+  options.project = demo_project();
+  options.max_display_triangles = kTriangles;
+  options.scale = 1.5f;
+  options.dpi = 300;
+  HeadlessSession s(options, FieldServices{}, 1920, 1200);
+  s.settle();
+  s.tap("Blocks");
+  s.frame();
+  const auto& blocks = s.state().session->blocks();
+  ASSERT_FALSE(blocks.empty());
+  // ImGui rounds nothing here (the rectangle is ours): the marker is the
+  // target's size to float precision.
+  const float least = touch_target_px_at(300);
+  for (const auto& b : blocks) {
+    const auto marker = s.state().targets.find("block " + b.label);
+    ASSERT_TRUE(marker) << b.label;
+    EXPECT_GE(marker->max.x - marker->min.x, least - 1e-3f) << b.label;
+    EXPECT_GE(marker->max.y - marker->min.y, least - 1e-3f) << b.label;
+  }
+  // Near the marker's rim (0.45 of its width from the centre, on the
+  // diagonal: inside the ring): its block is selected.
+  const auto marker = *s.state().targets.find("block " + blocks.front().label);
+  const float off = 0.45f * (marker.max.x - marker.min.x) / std::sqrt(2.0f);
+  s.tap(marker.centre().x + off, marker.centre().y - off);
+  ASSERT_TRUE(s.state().selected_block);
+  EXPECT_EQ(*s.state().selected_block, 0u);
 }
 
 }  // namespace

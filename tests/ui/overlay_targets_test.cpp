@@ -88,6 +88,11 @@ TEST(OverlayTargets, ThePhotographRingsEachTargetAtItsDetectedPixel) {
       on_circle += shot.at<cv::Vec3b>(y, x) == yellow;
     }
     ASSERT_GT(n, 20) << targets[i].which << ": no ring in the picture";
+    std::printf(
+        "%s target: ring at (%.2f, %.2f) px on the screen, its %d pixels centred %.2f, "
+        "%.2f px from it\n",
+        targets[i].which.c_str(), expected.x, expected.y, n, sx / n - expected.x,
+        sy / n - expected.y);
     EXPECT_GT(on_circle, 18) << targets[i].which << ": the ring's colour on half its circle";
     EXPECT_NEAR(sx / n, expected.x, 0.35) << targets[i].which;
     EXPECT_NEAR(sy / n, expected.y, 0.35) << targets[i].which;
