@@ -9,6 +9,7 @@
 
 #include "ui/app_state.h"
 #include "ui/format.h"
+#include "ui/overlay_text.h"
 #include "ui/widgets.h"
 #include "ui/widgets_table.h"
 
@@ -132,8 +133,10 @@ void draw_map_blocks_on_model(AppState& app) {
     const ImU32 colour = verdict_colour(b.verdict);
     draw->AddCircleFilled(*centre, 7 * s, colour, 16);
     const std::string label = "TB" + std::to_string(number);
-    label_on_picture(draw, ImVec2(centre->x + 10 * s, centre->y - 9 * s),
-                     IM_COL32(255, 255, 255, 255), label);
+    if (const auto at = label_beside(*centre, 7 * s, ImGui::CalcTextSize(label.c_str()),
+                                     app.model_view.text_area()))
+      draw_text(draw, *at, IM_COL32(255, 255, 255, 255), label, app.model_view.text_area(),
+                TextHalo::dark);
   }
 }
 

@@ -145,4 +145,11 @@ unsigned ModelRenderer::render(const OrbitCamera& camera, const OverlayScene& ov
   return target_->texture();
 }
 
+cv::Mat ModelRenderer::read_bgr() const {
+  if (!target_) return {};
+  cv::Mat pixels = target_->read_bgr();
+  Framebuffer::unbind();
+  return pixels;
+}
+
 }  // namespace rockface::ui

@@ -28,6 +28,10 @@ class ModelRenderer {
   // resized as needed) and returns its colour texture.
   // The overlay is drawn after the model, depth-tested against it.
   unsigned render(const OrbitCamera& camera, const OverlayScene& overlay = {});
+  // The last render's pixels, BGR, top row first (the rows of
+  // OrbitCamera::project); empty before the first render. For tests: the
+  // depth test is checked on what the GPU drew, not on a model of it.
+  cv::Mat read_bgr() const;
 
  private:
   unsigned program_ = 0, vertex_array_ = 0, texture_ = 0;

@@ -53,6 +53,7 @@ PreparedModel prepare_model(const std::filesystem::path& project, storage::Recor
   auto surface = std::make_shared<photogrammetry::SurfaceMesh>(surface_of(std::move(model->mesh)));
   model->mesh = {};
   out.picker = std::make_shared<measure::MeshPicker>(*surface);
+  out.targets = locate_targets(*model, out.left_view, *surface, *out.picker);
   out.surface = std::move(surface);
   out.model = std::move(model);
   return out;
@@ -67,6 +68,7 @@ void ModelView::install(PreparedModel prepared) {
   surface_ = std::move(prepared.surface);
   left_view_ = std::move(prepared.left_view);
   photo_ = std::move(prepared.photo_bgr);
+  targets_ = std::move(prepared.targets);
   mesh_ = std::move(prepared.mesh);
   drape_ = std::move(prepared.drape);
   drape_cache_.clear();
@@ -81,6 +83,7 @@ void ModelView::clear() {
   surface_.reset();
   left_view_.reset();
   photo_ = cv::Mat();
+  targets_.clear();
   model_.reset();
   mesh_ = {};
   drape_.reset();

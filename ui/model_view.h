@@ -19,6 +19,8 @@
 #include "ui/overlay_blocks.h"
 #include "ui/overlay_drape.h"
 #include "ui/overlay_scene.h"
+#include "ui/overlay_targets.h"
+#include "ui/overlay_text.h"
 #include "ui/touch_input.h"
 
 namespace rockface::ui {
@@ -35,6 +37,7 @@ struct PreparedModel {
   DisplayMesh mesh;
   std::shared_ptr<const SurfaceDrape> drape;  // on `mesh`: overlays are laid on what is drawn
   cv::Mat photo_bgr;                          // the texture photograph (full size); empty when none
+  std::vector<TargetOnModel> targets;         // the range pole's, located on `surface`
 };
 
 // Worker side: opens its own store on `project`.
@@ -53,6 +56,8 @@ class ModelView {
   const measure::MeshPicker* picker() const { return picker_.get(); }
   const std::optional<measure::PhotoView>& left_view() const { return left_view_; }
   const cv::Mat& photo() const { return photo_; }
+  // The range pole's targets located on the mesh (ui/overlay_targets.h).
+  const std::vector<TargetOnModel>& targets() const { return targets_; }
   const DisplayMesh& display_mesh() const { return mesh_; }
   // The drawn surface that overlays are laid on; null without a model.
   const SurfaceDrape* drape() const { return drape_.get(); }
@@ -86,6 +91,8 @@ class ModelView {
   ScreenRay ray_at(ImVec2 screen) const;
   ImVec2 panel_min() const { return panel_min_; }
   ImVec2 panel_max() const { return panel_max_; }
+  // The panel as the area that words drawn on the 3D image belong to.
+  TextArea text_area() const { return {panel_min_, panel_max_, "3D image"}; }
   OrbitCamera& camera() { return camera_; }
   const OrbitCamera& camera() const { return camera_; }
 
@@ -96,6 +103,7 @@ class ModelView {
   std::shared_ptr<const measure::MeshPicker> picker_;
   std::optional<measure::PhotoView> left_view_;
   cv::Mat photo_;
+  std::vector<TargetOnModel> targets_;
   DisplayMesh mesh_;
   std::shared_ptr<const SurfaceDrape> drape_;
   DrapeCache drape_cache_;

@@ -6,6 +6,7 @@
 #include "ui/app_state.h"
 #include "ui/overlay_north_arrow.h"
 #include "ui/overlay_scale_bar.h"
+#include "ui/overlay_text.h"
 #include "ui/overlay_traces.h"
 #include "ui/widgets_text.h"
 
@@ -70,15 +71,20 @@ std::vector<LegendEntry> blocks_legend(const AppState& app) {
   return out;
 }
 
-void draw_legend(AppState& app, const std::vector<LegendEntry>& entries) {
+void draw_legend(AppState& app, const std::vector<LegendEntry>& entries,
+                 std::optional<std::pair<ImVec2, ImVec2>> keep_clear) {
   if (entries.empty()) return;
   const float s = app.targets.scale();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float swatch = 28 * s, pad = 8 * s;
   float width = 0;
   for (const auto& e : entries) width = std::max(width, ImGui::CalcTextSize(e.words.c_str()).x);
-  const ImVec2 hi(app.model_view.panel_max().x - 10 * s, app.model_view.panel_max().y - 10 * s);
-  const ImVec2 lo(hi.x - width - swatch - 3 * pad, hi.y - line * entries.size() - 2 * pad);
+  ImVec2 hi(app.model_view.panel_max().x - 10 * s, app.model_view.panel_max().y - 10 * s);
+  const float w = width + swatch + 3 * pad, h = line * entries.size() + 2 * pad;
+  // Over the scale bar's words the legend would hide them: above it then.
+  if (keep_clear && hi.x - w < keep_clear->second.x && hi.y - h < keep_clear->second.y)
+    hi.y = std::min(hi.y, keep_clear->first.y - 6 * s);
+  const ImVec2 lo(hi.x - w, hi.y - h);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(lo, hi, IM_COL32(0, 0, 0, 170), 4 * s);
   app.model_view.add_flat_mark("legend", lo, hi);
@@ -103,7 +109,8 @@ void draw_legend(AppState& app, const std::vector<LegendEntry>& entries) {
         draw->AddCircle(ImVec2((a.x + b.x) / 2, mid), 7 * s, e.colour, 20, 3 * s);
         break;
     }
-    label_on_picture(draw, ImVec2(b.x + pad, y), IM_COL32(255, 255, 255, 255), e.words);
+    draw_text(draw, ImVec2(b.x + pad, y), IM_COL32(255, 255, 255, 255), e.words,
+              app.model_view.text_area());
     y += line;
   }
 }
@@ -111,19 +118,16 @@ void draw_legend(AppState& app, const std::vector<LegendEntry>& entries) {
 void draw_model_overlays(AppState& app, ModelScreen screen) {
   if (!app.model_view.has_model()) return;
   const float s = app.targets.scale();
-  switch (screen) {
-    case ModelScreen::model:
-      draw_legend(app, model_legend(app));
-      break;
-    case ModelScreen::mapping:
-      draw_legend(app, mapping_legend(app));
-      break;
-    case ModelScreen::blocks:
-      draw_legend(app, blocks_legend(app));
-      return;  // a smaller panel: the legend only
+  if (screen == ModelScreen::blocks) {  // a smaller panel: the legend only
+    draw_legend(app, blocks_legend(app));
+    return;
   }
+  // The scale bar first: the legend keeps clear of it.
   const DrawnRect bar = draw_scale_bar(app.model_view, s);
   app.model_view.add_flat_mark("scale bar", bar.min, bar.max);
+  const auto clear =
+      bar.min.x <= bar.max.x ? std::optional(std::pair(bar.min, bar.max)) : std::nullopt;
+  draw_legend(app, screen == ModelScreen::model ? model_legend(app) : mapping_legend(app), clear);
   const DrawnRect arrow = draw_north_arrow(app.model_view, s);
   app.model_view.add_flat_mark("north arrow", arrow.min, arrow.max);
 }

@@ -6,20 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/units.h"
-#include "ui/widgets_text.h"
+#include "ui/overlay_text.h"
 
 namespace rockface::ui {
-
-namespace {
-
-void outlined_text(ImDrawList* draw, ImVec2 at, const char* text) {
-  for (int dx = -1; dx <= 1; ++dx)
-    for (int dy = -1; dy <= 1; ++dy)
-      if (dx || dy) draw->AddText(ImVec2(at.x + dx, at.y + dy), IM_COL32(0, 0, 0, 255), text);
-  label_on_picture(draw, at, IM_COL32(255, 255, 255, 255), text);
-}
-
-}  // namespace
 
 bool model_is_oriented(const storage::Model& model) {
   if (model.registration.kind == "none") return false;
@@ -55,7 +44,8 @@ DrawnRect draw_north_arrow(const ModelView& view, float scale) {
   const ImVec2 centre(view.panel_min().x + pad + r, view.panel_min().y + pad + r);
   if (!model_is_oriented(*view.model())) {
     const ImVec2 at(view.panel_min().x + pad, view.panel_min().y + pad);
-    outlined_text(draw, at, "not oriented: no north");
+    draw_text(draw, at, IM_COL32(255, 255, 255, 255), "not oriented: no north", view.text_area(),
+              TextHalo::dark);
     drawn.add_text(at, "not oriented: no north");
     return drawn;
   }
@@ -80,13 +70,15 @@ DrawnRect draw_north_arrow(const ModelView& view, float scale) {
                 IM_COL32(255, 255, 255, 255), 5 * scale);
   draw->AddLine(centre, ImVec2(centre.x + side.x(), centre.y + side.y()),
                 IM_COL32(255, 255, 255, 160), 2 * scale);
-  outlined_text(draw, ImVec2(head.x - 4 * scale, head.y - 8 * scale), "N");
+  draw_text(draw, ImVec2(head.x - 4 * scale, head.y - 8 * scale), IM_COL32(255, 255, 255, 255), "N",
+            view.text_area(), TextHalo::dark);
   char text[64];
   if (const auto azimuth = view_azimuth_deg(view))
     std::snprintf(text, sizeof text, "looking %03.0f°", std::fmod(std::round(*azimuth), 360.0));
   else
     std::snprintf(text, sizeof text, "looking straight down");
-  outlined_text(draw, ImVec2(view.panel_min().x + pad, centre.y + r + 8 * scale), text);
+  draw_text(draw, ImVec2(view.panel_min().x + pad, centre.y + r + 8 * scale),
+            IM_COL32(255, 255, 255, 255), text, view.text_area(), TextHalo::dark);
   drawn.add_text(ImVec2(view.panel_min().x + pad, centre.y + r + 8 * scale), text);
   // Seen end-on the needle is short: say where north is.
   if (north.norm() < 0.3f * longest) {
@@ -95,7 +87,7 @@ DrawnRect draw_north_arrow(const ModelView& view, float scale) {
     const ImVec2 at(view.panel_min().x + pad,
                     centre.y + r + 8 * scale + ImGui::GetTextLineHeightWithSpacing());
     const char* words = into ? "north: into the view" : "north: out of the view";
-    outlined_text(draw, at, words);
+    draw_text(draw, at, IM_COL32(255, 255, 255, 255), words, view.text_area(), TextHalo::dark);
     drawn.add_text(at, words);
   }
   return drawn;

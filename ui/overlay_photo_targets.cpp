@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "ui/overlay_text.h"
 #include "ui/widgets.h"
 #include "ui/widgets_text.h"
 
@@ -63,10 +64,15 @@ void PhotoTargetsView::draw(storage::RecordId model_id, const storage::Model& mo
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
   const float k = (hi.x - lo.x) / static_cast<float>(photo_width_);  // screen px per photo px
   ImDrawList* draw = ImGui::GetWindowDrawList();
+  const TextArea area{lo, hi, "photograph"};
+  image_min_ = lo;
+  photo_px_ = k;
   const auto targets = detected_targets(model);
   for (const auto& t : targets) {
-    const ImVec2 c(lo.x + static_cast<float>(t.pixel.x()) * k,
-                   lo.y + static_cast<float>(t.pixel.y()) * k);
+    // OpenCV's pixel coordinates name pixel centres: pixel (0, 0) covers
+    // [-0.5, 0.5] and its left edge is the picture's.
+    const ImVec2 c(lo.x + static_cast<float>(t.pixel.x() + 0.5) * k,
+                   lo.y + static_cast<float>(t.pixel.y() + 0.5) * k);
     // The target's own size, but never smaller than a fingertip's mark.
     const float r = std::max(static_cast<float>(t.diameter_px) * k * 0.5f + 4 * scale, 10 * scale);
     draw->AddCircle(c, r + 2 * scale, IM_COL32(0, 0, 0, 255), 32, 2 * scale);
@@ -76,14 +82,12 @@ void PhotoTargetsView::draw(storage::RecordId model_id, const storage::Model& mo
     std::snprintf(text, sizeof text, "%s target (%.0f, %.0f) px", t.which.c_str(), t.pixel.x(),
                   t.pixel.y());
     // Beside the ring, on the side with room for the words.
-    const float width = ImGui::CalcTextSize(text).x;
-    const float x =
-        c.x + r + 6 * scale + width <= hi.x ? c.x + r + 6 * scale : c.x - r - 6 * scale - width;
-    label_on_picture(draw, ImVec2(x, c.y - 8 * scale), kTargetColour, text);
+    if (const auto at = label_beside(c, r + 2 * scale, ImGui::CalcTextSize(text), area))
+      draw_text(draw, *at, kTargetColour, text, area, TextHalo::dark);
   }
   if (targets.empty())
-    label_on_picture(draw, ImVec2(lo.x + 8 * scale, lo.y + 8 * scale), kTargetColour,
-                     "no range-pole targets stored with this 3D image");
+    draw_text(draw, ImVec2(lo.x + 8 * scale, lo.y + 8 * scale), kTargetColour,
+              "no range-pole targets stored with this 3D image", area, TextHalo::dark);
 }
 
 }  // namespace rockface::ui

@@ -34,12 +34,19 @@ class PhotoTargetsView {
             ImVec2 size, float scale);
   // Where the last draw put each ring (screen px, centre and radius), for tests.
   const std::vector<std::pair<ImVec2, float>>& rings() const { return rings_; }
+  // Where the last draw put the photograph's top left corner (screen px), and
+  // screen px per photograph px: a photograph pixel p (OpenCV:
+  // centres at whole numbers) is at min + (p + 0.5) * scale.
+  ImVec2 image_min() const { return image_min_; }
+  float screen_px_per_photo_px() const { return photo_px_; }
 
  private:
   PictureTexture texture_;
   storage::RecordId model_id_ = 0;
   int photo_width_ = 0;
   std::vector<std::pair<ImVec2, float>> rings_;
+  ImVec2 image_min_{0, 0};
+  float photo_px_ = 0;
 };
 
 }  // namespace rockface::ui

@@ -1,16 +1,23 @@
 #include "ui/stereonet_view.h"
 
+#include <algorithm>
+
 #include "core/common/units.h"
 #include "core/geometry/stereonet.h"
-#include "ui/widgets_text.h"
+#include "ui/overlay_text.h"
 
 namespace rockface::ui {
 
 void draw_stereonet(const std::vector<StereonetPlane>& planes, float size) {
   using namespace geometry;
+  // At the foot of a full panel the room left below is nothing or less:
+  // the net then takes the panel's width (or sixteen lines) and the panel
+  // scrolls to it.
+  size = std::max(size, std::min(ImGui::GetContentRegionAvail().x, 16 * ImGui::GetFontSize()));
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 corner = ImGui::GetCursorScreenPos();
-  const float radius = size / 2 - 16;
+  // Room above the circle for the N, at any type size.
+  const float radius = size / 2 - std::max(16.0f, ImGui::GetTextLineHeight() + 2);
   const ImVec2 centre(corner.x + size / 2, corner.y + size / 2);
   // Unit-circle coordinates (x east, y north) to screen (y down).
   auto at = [&](const Eigen::Vector2d& p) {
@@ -23,7 +30,9 @@ void draw_stereonet(const std::vector<StereonetPlane>& planes, float size) {
                 IM_COL32(0, 0, 0, 255));
   draw->AddLine(ImVec2(centre.x, centre.y - 6), ImVec2(centre.x, centre.y + 6),
                 IM_COL32(0, 0, 0, 255));
-  label_on_picture(draw, ImVec2(centre.x - 5, corner.y), IM_COL32(0, 0, 0, 255), "N");
+  draw_text(draw, ImVec2(centre.x - ImGui::CalcTextSize("N").x / 2, corner.y),
+            IM_COL32(0, 0, 0, 255), "N",
+            {corner, ImVec2(corner.x + size, corner.y + size), "stereonet"});
   for (const auto& plane : planes) {
     const PlaneOrientation o{deg_to_rad(plane.dip_deg), deg_to_rad(plane.dipdir_deg)};
     if (plane.great_circle) {

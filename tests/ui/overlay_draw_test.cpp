@@ -18,8 +18,8 @@
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
 #include "ui/overlay_blocks.h"
-#include "ui/overlay_photo_targets.h"
 #include "ui/overlay_traces.h"
+#include "ui/widgets.h"
 
 namespace {
 
@@ -285,40 +285,38 @@ TEST(OverlayBlocks, AFootprintPastTheImageIsClippedAndItsOpenSideDashed) {
 
 namespace {
 
-// The Model screen's photograph: a ring where the detector found each of the
-// range pole's targets, at the stored pixel.
-TEST(OverlayPhotoTargets, TheDetectedTargetsAreRingedOnThePhotograph) {
+// A block's marker on the Blocks screen is a thumb's target (9 mm at the
+// tablet's density; here an 8" 1920 x 1200 tablet at 300 dpi, where 9 mm,
+// 106 px, is more than the layout's 56 px x scale), and a tap anywhere on
+// it selects its block.
+TEST(OverlayBlocks, ABlockMarkerIsANineMillimetreTargetThatSelectsItsBlock) {
   UiOptions options;
   options.project = demo_project();
   options.max_display_triangles = kTriangles;
-  HeadlessSession s(options, FieldServices{}, 1280, 800);
+  options.scale = 1.5f;
+  options.dpi = 300;
+  HeadlessSession s(options, FieldServices{}, 1920, 1200);
   s.settle();
-  s.tap("Model");
-  s.tap("Photograph");
+  s.tap("Blocks");
   s.frame();
-  const auto targets = detected_targets(*s.state().model_view.model());
-  ASSERT_EQ(targets.size(), 2u) << "the demo's pole has two targets";
-  const auto& rings = s.state().photo_targets.rings();
-  ASSERT_EQ(rings.size(), targets.size());
-  const cv::Mat shot = s.screenshot();
-  const ImU32 c = kTargetColour;
-  const cv::Vec3b yellow((c >> IM_COL32_B_SHIFT) & 0xFF, (c >> IM_COL32_G_SHIFT) & 0xFF,
-                         (c >> IM_COL32_R_SHIFT) & 0xFF);
-  for (const auto& [centre, radius] : rings) {
-    // The ring is drawn 3 px wide: its colour on most of its circle (the
-    // rest antialiased where it crosses pixel boundaries).
-    int on = 0;
-    for (int k = 0; k < 36; ++k) {
-      const double a = k * M_PI / 18;
-      const int x = static_cast<int>(std::lround(centre.x + radius * std::cos(a)));
-      const int y = static_cast<int>(std::lround(centre.y + radius * std::sin(a)));
-      on += shot.at<cv::Vec3b>(y, x) == yellow;
-    }
-    EXPECT_GT(on, 18) << "ring at " << centre.x << ", " << centre.y;
+  const auto& blocks = s.state().session->blocks();
+  ASSERT_FALSE(blocks.empty());
+  // ImGui rounds nothing here (the rectangle is ours): the marker is the
+  // target's size to float precision.
+  const float least = touch_target_px_at(300);
+  for (const auto& b : blocks) {
+    const auto marker = s.state().targets.find("block " + b.label);
+    ASSERT_TRUE(marker) << b.label;
+    EXPECT_GE(marker->max.x - marker->min.x, least - 1e-3f) << b.label;
+    EXPECT_GE(marker->max.y - marker->min.y, least - 1e-3f) << b.label;
   }
-  // Back to the 3D image.
-  s.tap("3D image");
-  EXPECT_FALSE(s.state().show_photograph);
+  // Near the marker's rim (0.45 of its width from the centre, on the
+  // diagonal: inside the ring): its block is selected.
+  const auto marker = *s.state().targets.find("block " + blocks.front().label);
+  const float off = 0.45f * (marker.max.x - marker.min.x) / std::sqrt(2.0f);
+  s.tap(marker.centre().x + off, marker.centre().y - off);
+  ASSERT_TRUE(s.state().selected_block);
+  EXPECT_EQ(*s.state().selected_block, 0u);
 }
 
 }  // namespace

@@ -257,7 +257,11 @@ TEST(TextCoverage, NoScreenDrawsTextOrControlsPastTheWrappers) {
   std::string found;
   for (const auto& entry : fs::recursive_directory_iterator(ui)) {
     if (entry.path().extension() != ".cpp" && entry.path().extension() != ".h") continue;
-    if (entry.path().filename().string().rfind("widgets", 0) == 0) continue;
+    // The recorders themselves: ui/widgets* and ui/overlay_text (words drawn
+    // onto a picture, recorded with the box they must lie in).
+    if (entry.path().filename().string().rfind("widgets", 0) == 0 ||
+        entry.path().filename() == "overlay_text.cpp")
+      continue;
     ++files;
     std::ifstream in(entry.path());
     std::string line;

@@ -19,6 +19,7 @@
 #include "firmware-app/services/ui_services.h"
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
+#include "ui/overlay_text.h"
 #include "ui/text_check.h"
 #include "ui/text_coverage.h"
 
@@ -81,6 +82,10 @@ class Walk {
     for (const UnrecordedText& u : unrecorded_text_in_last_frame(drawn_text()))
       problems_.insert(at + ": \"" + u.characters + "\" drawn in " + u.panel +
                        " without being recorded");
+    // Words drawn straight onto a picture (ui/overlay_text.h) lie inside it.
+    for (const PlacedText& p : placed_texts())
+      if (const std::string why = placement_problem(p); !why.empty())
+        problems_.insert(at + ": " + why);
     // Every touch target 9 mm at the density the scale stands for, less half
     // a pixel of ImGui's rounding of item rectangles.
     for (const std::string& small : small_touch_targets(app.targets, 0.5f))
@@ -123,6 +128,8 @@ void walk_every_screen(Walk& w) {
   w.tap_and_wait("Shoot left");
   w.tap_and_wait("Shoot right");
   w.tap("Model");
+  w.tap("Photograph");  // the targets' rings and labels on the photograph
+  w.tap("3D image");
   w.tap("Mapping");
   for (std::size_t k = 0; k < app.session->pairs().size(); ++k) {
     const std::string pair = "Pair " + std::to_string(k + 1);

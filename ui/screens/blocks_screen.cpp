@@ -10,6 +10,7 @@
 #include "ui/format.h"
 #include "ui/motion_playback.h"
 #include "ui/overlay_legend.h"
+#include "ui/overlay_text.h"
 #include "ui/screens/screens.h"
 #include "ui/wedges_view.h"
 #include "ui/widgets_table.h"
@@ -42,24 +43,37 @@ float area_of(const std::vector<ImVec2>& polygon) {
   return static_cast<float>(cv::contourArea(contour));
 }
 
-// Blocks on the model: translucent footprint, solid outline and a solid
-// marker of the verdict's colour at the footprint's centre (what tests
-// count). A tap selects the smallest block under the finger.
+// Blocks on the model: translucent footprint, solid outline and a marker
+// of the verdict's colour at the footprint's centre: a solid dot (what tests
+// count) in a ring as wide as a gloved thumb (9 mm at the tablet's DPI), the
+// marker's touch target. A tap on a marker selects its block; elsewhere the
+// smallest block under the finger.
 void draw_blocks_on_model(AppState& app, std::optional<ImVec2> tap) {
   const auto& blocks = app.session->blocks();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float s = app.targets.scale();
+  const float half = 0.5f * app.targets.target_px();
   std::optional<std::size_t> tapped;
   float tapped_area = 0;
   // Footprints first, then labels, then markers: a later block's
   // translucent fill never tints an earlier block's marker.
   std::vector<std::vector<ImVec2>> polys(blocks.size());
+  std::vector<ImVec2> markers(blocks.size());
+  std::optional<std::size_t> on_marker;
+  float nearest = half * half;
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     polys[i] = outline(app, blocks[i]);
     const std::vector<ImVec2>& poly = polys[i];
     if (poly.empty()) continue;
+    markers[i] = block_marker_on_screen(app, blocks[i]).value_or(centre_of(poly));
     // Tinted and outlined on the surface by the renderer (add_blocks_to_overlay).
-    if (tap && contains(poly, *tap)) {
+    if (!tap) continue;
+    const float dx = tap->x - markers[i].x, dy = tap->y - markers[i].y;
+    if (dx * dx + dy * dy <= nearest) {
+      nearest = dx * dx + dy * dy;
+      on_marker = i;
+    }
+    if (contains(poly, *tap)) {
       const float a = area_of(poly);
       if (!tapped || a < tapped_area) {
         tapped = i;
@@ -67,31 +81,23 @@ void draw_blocks_on_model(AppState& app, std::optional<ImVec2> tap) {
       }
     }
   }
+  if (on_marker) tapped = on_marker;
+  const TextArea area = app.model_view.text_area();
   for (std::size_t i = 0; i < blocks.size(); ++i)
     if (!polys[i].empty()) {
-      const ImVec2 c = block_marker_on_screen(app, blocks[i]).value_or(centre_of(polys[i]));
-      label_on_picture(draw, ImVec2(c.x + 12 * s, c.y - 10 * s), IM_COL32(255, 255, 255, 255),
-                       blocks[i].label);
+      const std::string& label = blocks[i].label;
+      if (const auto at = label_beside(markers[i], half, ImGui::CalcTextSize(label.c_str()), area))
+        draw_text(draw, *at, IM_COL32(255, 255, 255, 255), label, area, TextHalo::dark);
     }
-  // The marker is drawn small (it must not hide the rock) but its touch
-  // target is a thumb's: a tap within it selects its block before any
-  // footprint under the finger.
-  const float half = app.targets.target_px() / 2;
-  std::optional<std::size_t> on_marker;
-  float marker_distance = half;
   for (std::size_t i = 0; i < blocks.size(); ++i)
     if (!polys[i].empty()) {
-      const ImVec2 c = block_marker_on_screen(app, blocks[i]).value_or(centre_of(polys[i]));
-      draw->AddCircleFilled(c, 9 * s, verdict_colour(blocks[i].verdict), 20);
+      const ImVec2 c = markers[i];
+      const ImU32 colour = verdict_colour(blocks[i].verdict);
+      draw->AddCircleFilled(c, half, (colour & 0x00FFFFFFu) | (90u << 24), 40);
+      draw->AddCircle(c, half - 1.5f * s, colour, 40, 3 * s);
+      draw->AddCircleFilled(c, 9 * s, colour, 20);
       app.targets.record("block " + blocks[i].label, ImVec2(c.x - half, c.y - half),
                          ImVec2(c.x + half, c.y + half));
-      if (tap && std::abs(tap->x - c.x) <= half && std::abs(tap->y - c.y) <= half) {
-        const float d = std::hypot(tap->x - c.x, tap->y - c.y);
-        if (d <= marker_distance) {
-          marker_distance = d;
-          on_marker = i;
-        }
-      }
     }
   if (tap) app.selected_block = on_marker ? on_marker : tapped;
 }

@@ -1,10 +1,12 @@
 // Model: the reconstructed, textured 3D image with orbit / pan / pinch-zoom,
 // the range pole targets and the accuracy of the 3D image in words.
-#include <nlohmann/json.hpp>
+#include <cctype>
+#include <cstdio>
 
 #include "ui/accuracy_summary.h"
 #include "ui/format.h"
 #include "ui/overlay_legend.h"
+#include "ui/overlay_targets.h"
 #include "ui/screens/screens.h"
 #include "ui/widgets_table.h"
 
@@ -36,23 +38,27 @@ void draw_accuracy(const storage::Model& model) {
   }
 }
 
-// The range pole's targets where the registration put them.
-void draw_targets(AppState& app, const storage::Model& model) {
-  const auto p = nlohmann::json::parse(
-      model.registration.parameters_json.empty() ? "{}" : model.registration.parameters_json,
-      nullptr, false);
-  if (!p.is_object() || !p.contains("targets")) return;
-  ImDrawList* draw = ImGui::GetWindowDrawList();
-  const float r = 14 * app.targets.scale();
-  for (const auto& t : p["targets"]) {
-    if (!t.is_array() || t.size() != 3) continue;
-    const auto at =
-        app.model_view.to_screen({t[0].get<double>(), t[1].get<double>(), t[2].get<double>()});
-    if (!at) continue;
-    draw->AddCircle(*at, r, kTargetColour, 24, 4 * app.targets.scale());
-    draw->AddLine(ImVec2(at->x - r, at->y), ImVec2(at->x + r, at->y), kTargetColour, 2);
-    draw->AddLine(ImVec2(at->x, at->y - r), ImVec2(at->x, at->y + r), kTargetColour, 2);
+// Where the range pole's targets were found, and whether the 3D image shows
+// them (the rings on the image and on the photograph).
+void draw_targets_in_words(const AppState& app) {
+  const auto& targets = app.model_view.targets();
+  if (targets.empty()) return;
+  heading("Range-pole targets");
+  for (const TargetOnModel& t : targets) {
+    char pixel[64];
+    std::snprintf(pixel, sizeof pixel, "(%.0f, %.0f)", t.detected.pixel.x(), t.detected.pixel.y());
+    std::string found = (t.detected.which.empty() ? std::string("range-pole") : t.detected.which) +
+                        " target: found at pixel " + pixel + " of the left photograph";
+    found[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(found[0])));
+    if (!t.point)
+      paragraph(found + "; not on the 3D image: " + t.why_not);
+    else if (t.on_surface)
+      paragraph(found + ", ringed on the 3D image");
+    else
+      paragraph(found +
+                ", ringed on the face behind it (the pole itself is left out of the 3D image)");
   }
+  ImGui::Separator();
 }
 
 }  // namespace
@@ -83,9 +89,10 @@ void draw_model_screen(AppState& app) {
     app.photo_targets.draw(app.model_view.model_id(), *app.model_view.model(),
                            app.model_view.photo(), layout.main, app.targets.scale());
   } else {
+    add_targets_to_overlay(app.model_view, app.targets.scale());  // ui/overlay_targets.h
     app.model_view.draw(layout.main, app.gesture);
     ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
-    draw_targets(app, *app.model_view.model());
+    draw_target_labels(app.model_view, app.targets.scale());
     draw_model_overlays(app, ModelScreen::model);  // ui/overlay_legend.h
     ImGui::PopClipRect();
   }
@@ -107,6 +114,7 @@ void draw_model_screen(AppState& app) {
   if (app.targets.button(app.show_photograph ? "3D image" : "Photograph", -1))
     app.show_photograph = !app.show_photograph;
   ImGui::Separator();
+  draw_targets_in_words(app);
   draw_accuracy(model);
   ImGui::EndChild();
 }
