@@ -20,7 +20,7 @@ nlohmann::json registration_of(const storage::Model& model) {
 }
 
 // Text with a dark halo: readable on rock and on the dark background.
-void outlined_text(ImDrawList* draw, ImVec2 at, const char* text) {
+void outlined_label(ImDrawList* draw, ImVec2 at, const char* text) {
   for (int dx = -1; dx <= 1; ++dx)
     for (int dy = -1; dy <= 1; ++dy)
       if (dx || dy) draw->AddText(ImVec2(at.x + dx, at.y + dy), IM_COL32(0, 0, 0, 255), text);
@@ -55,7 +55,7 @@ DrawnRect draw_scale_bar(const ModelView& view, float scale) {
   const ImVec2 at(lo.x + pad, hi.y - pad - ImGui::GetTextLineHeight() - 10 * scale);
   if (!model_is_scaled(*view.model())) {
     const char* words = "not to scale (no range pole or control points)";
-    outlined_text(draw, at, words);
+    outlined_label(draw, at, words);
     drawn.add_text(at, words);
     return drawn;
   }
@@ -93,7 +93,7 @@ DrawnRect draw_scale_bar(const ModelView& view, float scale) {
   else
     std::snprintf(text, sizeof text, "%g mm (at the middle of the view)", length * 1000);
   const ImVec2 text_at(at.x, y - h - ImGui::GetTextLineHeight() - 2 * scale);
-  outlined_text(draw, text_at, text);
+  outlined_label(draw, text_at, text);
   drawn.add_text(text_at, text);
   drawn.add(ImVec2(at.x - 1, y - h - 1), ImVec2(at.x + px + 1, y + 1));
   return drawn;
