@@ -12,11 +12,7 @@ if [ "${CI:-}" = "true" ]; then
   extra+=(-DROCKFACE_WERROR=ON)
   if [ "$preset" = "release" ]; then
     extra+=(-DROCKFACE_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG"
-      "-DCMAKE_C_FLAGS_RELEASE=-O2 -DNDEBUG"
-      # the libraries as unity builds, as the demo preset builds them: CI
-      # then fails when a new file repeats a name of another file's
-      # anonymous namespace in the same library (tests stay file by file)
-      -DCMAKE_UNITY_BUILD=ON)
+      "-DCMAKE_C_FLAGS_RELEASE=-O2 -DNDEBUG")
   fi
 fi
 cmake --preset "$preset" "${extra[@]}" >/dev/null
