@@ -72,7 +72,7 @@ for target in $(cut -f1 <<<"$pairs" | sort -u); do
         bad = 0
         for (n in count)
           if (count[n] > 1) {
-            printf "check-unity-names: %s: \"%s\" is declared in more than one file'"'"'s anonymous namespace:%s\n", target, n, files[n]
+            printf "check-unity-names: %s: \"%s\" is declared in more than one file'"'"'s anonymous namespace (or static):%s\n", target, n, files[n]
             bad = 1
           }
         exit bad
