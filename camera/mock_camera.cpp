@@ -21,13 +21,13 @@ using Kind = CameraError::Kind;
 
 namespace {
 
-std::string lower(std::string s) {
+std::string lowercase(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
   return s;
 }
 
 bool is_jpeg(const fs::path& p) {
-  const std::string ext = lower(p.extension().string());
+  const std::string ext = lowercase(p.extension().string());
   return ext == ".jpg" || ext == ".jpeg";
 }
 

@@ -23,7 +23,7 @@ std::string csv_field(const std::string& text) {
   return quoted + "\"";
 }
 
-std::string number(double value, int decimals) {
+std::string fixed_decimals(double value, int decimals) {
   char text[64];
   std::snprintf(text, sizeof(text), "%.*f", decimals, value);
   return text;
@@ -121,16 +121,17 @@ void write_joints_csv(std::ostream& out, const std::vector<Joint>& joints,
   for (const auto& j : joints) {
     // Angles to 1e-3 degree and positions to 0.1 mm: finer than any field
     // measurement, so the CSV loses nothing a stereonet program could use.
-    out << csv_field(j.label) << ',' << number(j.dip_deg, 3) << ',' << number(j.dipdir_deg, 3)
-        << ',' << csv_field(j.set_label) << ',';
+    out << csv_field(j.label) << ',' << fixed_decimals(j.dip_deg, 3) << ','
+        << fixed_decimals(j.dipdir_deg, 3) << ',' << csv_field(j.set_label) << ',';
     if (j.point) {
       const Eigen::Vector3d p = datum + *j.point;
-      out << number(p.x(), 4) << ',' << number(p.y(), 4) << ',' << number(p.z(), 4);
+      out << fixed_decimals(p.x(), 4) << ',' << fixed_decimals(p.y(), 4) << ','
+          << fixed_decimals(p.z(), 4);
     } else {
       out << ",,";
     }
     out << ',' << j.visit_id << ',' << csv_field(j.source) << ',' << csv_field(j.type) << ',';
-    if (j.persistence_m) out << number(*j.persistence_m, 3);
+    if (j.persistence_m) out << fixed_decimals(*j.persistence_m, 3);
     out << '\n';
   }
 }

@@ -17,7 +17,7 @@ constexpr std::uint32_t kHasTexcoords = 1u << 0;
 constexpr std::uint32_t kHasColours = 1u << 1;
 
 template <typename T>
-void put(std::vector<std::uint8_t>& out, const T& value) {
+void append_bytes(std::vector<std::uint8_t>& out, const T& value) {
   const auto* p = reinterpret_cast<const std::uint8_t*>(&value);
   out.insert(out.end(), p, p + sizeof(T));
 }
@@ -68,18 +68,18 @@ std::vector<std::uint8_t> encode_mesh(const Mesh& mesh) {
 
   std::vector<std::uint8_t> out(std::begin(kMeshMagic), std::end(kMeshMagic));
   out.reserve(8 + 4 + 16 + nv * (24 + 8 + 3) + mesh.faces.size() * 12);
-  put(out, flags);
-  put(out, static_cast<std::uint64_t>(nv));
-  put(out, static_cast<std::uint64_t>(mesh.faces.size()));
+  append_bytes(out, flags);
+  append_bytes(out, static_cast<std::uint64_t>(nv));
+  append_bytes(out, static_cast<std::uint64_t>(mesh.faces.size()));
   for (const auto& v : mesh.vertices) {
-    put(out, v.x());
-    put(out, v.y());
-    put(out, v.z());
+    append_bytes(out, v.x());
+    append_bytes(out, v.y());
+    append_bytes(out, v.z());
   }
   for (const auto& f : mesh.faces)
-    for (std::int32_t i : f) put(out, i);
-  for (const auto& t : mesh.texcoords) put(out, t);
-  for (const auto& c : mesh.colours) put(out, c);
+    for (std::int32_t i : f) append_bytes(out, i);
+  for (const auto& t : mesh.texcoords) append_bytes(out, t);
+  for (const auto& c : mesh.colours) append_bytes(out, c);
   return out;
 }
 
@@ -128,9 +128,9 @@ std::vector<std::uint8_t> encode_points(const std::vector<Eigen::Vector3d>& poin
   std::vector<std::uint8_t> out;
   out.reserve(points.size() * 24);
   for (const auto& p : points) {
-    put(out, p.x());
-    put(out, p.y());
-    put(out, p.z());
+    append_bytes(out, p.x());
+    append_bytes(out, p.y());
+    append_bytes(out, p.z());
   }
   return out;
 }

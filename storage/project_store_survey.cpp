@@ -369,7 +369,7 @@ RecordId ProjectStore::save_analysis(const AnalysisRun& run) {
 }
 
 namespace {
-AnalysisRun read_analysis(const Statement& st, const std::string& file) {
+AnalysisRun read_analysis_row(const Statement& st, const std::string& file) {
   RowReader row(st);
   AnalysisRun a;
   a.id = row.next_int64();
@@ -397,7 +397,7 @@ AnalysisRun ProjectStore::load_analysis(RecordId id) {
   st.bind(1, id);
   if (!st.step())
     throw InputError(file_.string(), "no analysis " + std::to_string(id) + " in this project");
-  AnalysisRun a = read_analysis(st, file_.string());
+  AnalysisRun a = read_analysis_row(st, file_.string());
   Statement blocks(db_,
                    "SELECT id, label, source, code, volume_m3, finite, removable, marginal, mode, "
                    "fos, report_json FROM block WHERE analysis_id = ? ORDER BY id",
@@ -429,7 +429,7 @@ std::vector<AnalysisRun> ProjectStore::list_analyses(std::optional<RecordId> vis
                "listing analyses");
   st.bind(1, visit_id);
   std::vector<AnalysisRun> out;
-  while (st.step()) out.push_back(read_analysis(st, file_.string()));
+  while (st.step()) out.push_back(read_analysis_row(st, file_.string()));
   return out;
 }
 

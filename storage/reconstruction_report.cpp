@@ -6,10 +6,10 @@ namespace rockface::storage {
 
 namespace {
 
-nlohmann::json vec(const Eigen::Vector3d& v) {
+nlohmann::json json_vec(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
 }
-nlohmann::json vec(const Eigen::Vector2d& v) {
+nlohmann::json json_vec(const Eigen::Vector2d& v) {
   return {v.x(), v.y()};
 }
 
@@ -59,38 +59,40 @@ std::string reconstruction_report_json(const photogrammetry::ReconstructionResul
                       {"median_intersection_angle_deg", ro.median_intersection_deg},
                       {"tie_point_coverage", ro.overlap_fraction},
                       {"R", R},
-                      {"t", vec(ro.t)}};
+                      {"t", json_vec(ro.t)}};
   json reg;
   reg["scaled"] = r.scaled;
   reg["scale_source"] = r.scale_source;
   reg["vertical_source"] = r.vertical_source;
   reg["north_source"] = r.north_source;
   reg["scale"] = r.model_to_world.scale;
-  reg["datum"] = vec(r.datum);
+  reg["datum"] = json_vec(r.datum);
   if (r.targets) {
     json targets = json::array();
     const char* names[2] = {"lower", "upper"};
     for (int k = 0; k < 2; ++k)
       targets.push_back(
           {{"which", names[k]},
-           {"left_px", vec(r.targets->left[k].centre_px)},
-           {"right_px", vec(r.targets->right[k].centre_px)},
-           {"left_ellipse_centre_px", vec(r.targets->left[k].ellipse_centre)},
+           {"left_px", json_vec(r.targets->left[k].centre_px)},
+           {"right_px", json_vec(r.targets->right[k].centre_px)},
+           {"left_ellipse_centre_px", json_vec(r.targets->left[k].ellipse_centre)},
            {"diameter_px",
             std::min(r.targets->left[k].diameter_px, r.targets->right[k].diameter_px)},
-           {"world", vec(Eigen::Vector3d(r.model_to_world.apply(r.targets->model[k]) + r.datum))}});
+           {"world",
+            json_vec(Eigen::Vector3d(r.model_to_world.apply(r.targets->model[k]) + r.datum))}});
     reg["range_pole"] = {{"length_m", c.range_pole_m.value_or(0.0)}, {"targets", targets}};
   }
   if (c.north)
     reg["north"] = {{"azimuth_deg", c.north->azimuth_deg},
                     {"declination_deg", c.north->declination_deg},
-                    {"reference_line_px", {vec(c.north->from_px), vec(c.north->to_px)}},
+                    {"reference_line_px", {json_vec(c.north->from_px), json_vec(c.north->to_px)}},
                     {"rotation_about_vertical_deg", r.north_rotation_deg.value_or(0.0)}};
   if (c.baseline_m) reg["baseline_m"] = *c.baseline_m;
   if (r.control_points) {
     json res = json::array();
     for (const auto& p : r.control_points->residuals)
-      res.push_back({{"id", p.id}, {"residual_m", vec(p.residual)}, {"distance_m", p.distance}});
+      res.push_back(
+          {{"id", p.id}, {"residual_m", json_vec(p.residual)}, {"distance_m", p.distance}});
     reg["control_points"] = {{"rms_m", r.control_points->rms_m},
                              {"worst", r.control_points->worst_id},
                              {"worst_m", r.control_points->worst_m},
@@ -126,12 +128,13 @@ std::string face_registration_json(const photogrammetry::FaceRegistration& face)
   if (face.control_points) {
     json res = json::array();
     for (const auto& p : face.control_points->residuals)
-      res.push_back({{"id", p.id}, {"residual_m", vec(p.residual)}, {"distance_m", p.distance}});
+      res.push_back(
+          {{"id", p.id}, {"residual_m", json_vec(p.residual)}, {"distance_m", p.distance}});
     j["control_points"] = {{"rms_m", face.control_points->rms_m},
                            {"worst", face.control_points->worst_id},
                            {"worst_m", face.control_points->worst_m},
                            {"residuals", res}};
-    j["datum"] = vec(face.datum);
+    j["datum"] = json_vec(face.datum);
   }
   return j.dump(2) + "\n";
 }

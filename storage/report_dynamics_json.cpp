@@ -10,7 +10,7 @@ namespace {
 using ordered = nlohmann::ordered_json;
 using nlohmann::json;
 
-double tidy(double v) {
+double tidy_dynamics(double v) {
   // 9 significant digits: far beyond what the integration gives.
   if (!std::isfinite(v)) return 0;
   char buf[32];
@@ -18,8 +18,8 @@ double tidy(double v) {
   return std::strtod(buf, nullptr);
 }
 
-ordered vec(const Eigen::Vector3d& v) {
-  return ordered::array({tidy(v(0)), tidy(v(1)), tidy(v(2))});
+ordered vec_dynamics(const Eigen::Vector3d& v) {
+  return ordered::array({tidy_dynamics(v(0)), tidy_dynamics(v(1)), tidy_dynamics(v(2))});
 }
 
 Eigen::Vector3d vec3(const json& j) {
@@ -40,14 +40,14 @@ ordered dynamics_to_json(const ReportDynamics& d) {
   j["trigger"] = d.trigger;
   j["outcome"] = d.outcome;
   ordered friction = ordered::object();
-  for (const auto& [plane, deg] : d.friction_deg) friction[plane] = tidy(deg);
+  for (const auto& [plane, deg] : d.friction_deg) friction[plane] = tidy_dynamics(deg);
   j["friction_deg"] = friction;
   j["cohesion"] = "lost";
-  if (d.strength_divisor != 1) j["strength_divisor"] = tidy(d.strength_divisor);
+  if (d.strength_divisor != 1) j["strength_divisor"] = tidy_dynamics(d.strength_divisor);
   ordered events = ordered::array();
   for (const auto& e : d.events) {
     ordered o;
-    o["time_s"] = tidy(e.time_s);
+    o["time_s"] = tidy_dynamics(e.time_s);
     o["kind"] = e.kind;
     o["event"] = e.what;
     o["planes"] = e.planes;
@@ -58,45 +58,48 @@ ordered dynamics_to_json(const ReportDynamics& d) {
   ordered path = ordered::array();
   for (const auto& s : d.path) {
     ordered o;
-    o["t"] = tidy(s.time_s);
-    o["position"] = vec(s.position);
-    o["orientation"] = ordered::array({tidy(s.orientation(0)), tidy(s.orientation(1)),
-                                       tidy(s.orientation(2)), tidy(s.orientation(3))});
-    o["velocity"] = vec(s.velocity);
-    o["angular_velocity"] = vec(s.angular_velocity);
-    o["energy"] = {{"kinetic_translational", tidy(s.kinetic_translational)},
-                   {"kinetic_rotational", tidy(s.kinetic_rotational)},
-                   {"work", tidy(s.work)},
-                   {"dissipated", tidy(s.dissipated)}};
+    o["t"] = tidy_dynamics(s.time_s);
+    o["position"] = vec_dynamics(s.position);
+    o["orientation"] =
+        ordered::array({tidy_dynamics(s.orientation(0)), tidy_dynamics(s.orientation(1)),
+                        tidy_dynamics(s.orientation(2)), tidy_dynamics(s.orientation(3))});
+    o["velocity"] = vec_dynamics(s.velocity);
+    o["angular_velocity"] = vec_dynamics(s.angular_velocity);
+    o["energy"] = {{"kinetic_translational", tidy_dynamics(s.kinetic_translational)},
+                   {"kinetic_rotational", tidy_dynamics(s.kinetic_rotational)},
+                   {"work", tidy_dynamics(s.work)},
+                   {"dissipated", tidy_dynamics(s.dissipated)}};
     path.push_back(o);
   }
   j["path"] = path;
   if (d.landing) {
     const ReportLanding& l = *d.landing;
     ordered o;
-    o["time_s"] = tidy(l.time_s);
-    o["point"] = vec(l.point);
-    o["centroid"] = vec(l.centroid);
-    o["speed"] = tidy(l.speed);
-    o["corner_speed"] = tidy(l.corner_speed);
-    o["angular_speed"] = tidy(l.angular_speed);
-    o["kinetic_energy"] = tidy(l.kinetic_translational + l.kinetic_rotational);
-    o["kinetic_translational"] = tidy(l.kinetic_translational);
-    o["kinetic_rotational"] = tidy(l.kinetic_rotational);
-    o["distance_from_start"] = tidy(l.distance_from_start);
+    o["time_s"] = tidy_dynamics(l.time_s);
+    o["point"] = vec_dynamics(l.point);
+    o["centroid"] = vec_dynamics(l.centroid);
+    o["speed"] = tidy_dynamics(l.speed);
+    o["corner_speed"] = tidy_dynamics(l.corner_speed);
+    o["angular_speed"] = tidy_dynamics(l.angular_speed);
+    o["kinetic_energy"] = tidy_dynamics(l.kinetic_translational + l.kinetic_rotational);
+    o["kinetic_translational"] = tidy_dynamics(l.kinetic_translational);
+    o["kinetic_rotational"] = tidy_dynamics(l.kinetic_rotational);
+    o["distance_from_start"] = tidy_dynamics(l.distance_from_start);
     if (l.distance_from_face) {
-      o["distance_from_face"] = tidy(*l.distance_from_face);
+      o["distance_from_face"] = tidy_dynamics(*l.distance_from_face);
       o["face"] = l.face;
     }
     j["landing"] = o;
   }
-  if (d.floor) j["floor"] = {{"point", vec(d.floor->first)}, {"normal", vec(d.floor->second)}};
-  j["numerics"] = {{"duration_s", tidy(d.duration_s)},
-                   {"sample_s", tidy(d.sample_s)},
-                   {"end_time_s", tidy(d.end_time_s)},
+  if (d.floor)
+    j["floor"] = {{"point", vec_dynamics(d.floor->first)},
+                  {"normal", vec_dynamics(d.floor->second)}};
+  j["numerics"] = {{"duration_s", tidy_dynamics(d.duration_s)},
+                   {"sample_s", tidy_dynamics(d.sample_s)},
+                   {"end_time_s", tidy_dynamics(d.end_time_s)},
                    {"abs_tol", d.abs_tol},
                    {"rel_tol", d.rel_tol},
-                   {"max_step_s", tidy(d.max_step_s)},
+                   {"max_step_s", tidy_dynamics(d.max_step_s)},
                    {"steps", d.steps},
                    {"rejected_steps", d.rejected_steps},
                    {"evaluations", d.evaluations},

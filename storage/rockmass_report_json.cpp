@@ -12,21 +12,21 @@ using namespace rockmass;
 namespace {
 
 // Six significant digits: the figures are measurements, not bit patterns.
-double tidy(double v) {
+double tidy_rockmass(double v) {
   if (v == 0 || !std::isfinite(v)) return v;
   const double scale = std::pow(10.0, 5 - std::floor(std::log10(std::abs(v))));
   return std::round(v * scale) / scale;
 }
 json opt(const std::optional<double>& v) {
-  return v ? json(tidy(*v)) : json(nullptr);
+  return v ? json(tidy_rockmass(*v)) : json(nullptr);
 }
-json vec(const Eigen::Vector3d& v) {
-  return {tidy(v.x()), tidy(v.y()), tidy(v.z())};
+json vec_rockmass(const Eigen::Vector3d& v) {
+  return {tidy_rockmass(v.x()), tidy_rockmass(v.y()), tidy_rockmass(v.z())};
 }
 
 json histogram(const Histogram& h) {
   json edges = json::array();
-  for (double e : h.edges) edges.push_back(tidy(e));
+  for (double e : h.edges) edges.push_back(tidy_rockmass(e));
   return {{"edges", edges}, {"counts", h.counts}};
 }
 
@@ -35,7 +35,7 @@ json rating(const Rating& r) {
             {"rating", opt(r.rating)},
             {"source", words(r.source)},
             {"table", r.table}};
-  if (r.value) j["value"] = tidy(*r.value);
+  if (r.value) j["value"] = tidy_rockmass(*r.value);
   if (!r.unit.empty()) j["unit"] = r.unit;
   if (!r.value_words.empty()) j["value_words"] = r.value_words;
   if (!r.note.empty()) j["note"] = r.note;
@@ -43,16 +43,19 @@ json rating(const Rating& r) {
 }
 
 json total(const Total& t) {
-  return {{"value", opt(t.value)},      {"complete", t.value.has_value()},
-          {"partial", tidy(t.partial)}, {"lowest", tidy(t.lowest)},
-          {"highest", tidy(t.highest)}, {"missing", t.missing}};
+  return {{"value", opt(t.value)},
+          {"complete", t.value.has_value()},
+          {"partial", tidy_rockmass(t.partial)},
+          {"lowest", tidy_rockmass(t.lowest)},
+          {"highest", tidy_rockmass(t.highest)},
+          {"missing", t.missing}};
 }
 
 json shape(const std::optional<BlockShape>& s) {
   if (!s) return nullptr;
-  return {{"alpha2", tidy(s->alpha2)},
-          {"alpha3", tidy(s->alpha3)},
-          {"beta", tidy(s->beta)},
+  return {{"alpha2", tidy_rockmass(s->alpha2)},
+          {"alpha3", tidy_rockmass(s->alpha3)},
+          {"beta", tidy_rockmass(s->beta)},
           {"words", s->words}};
 }
 
@@ -61,10 +64,10 @@ json shape(const std::optional<BlockShape>& s) {
 json rockmass_report_json(const RockMassFigures& f) {
   json j;
   j["format"] = "rockface-rockmass/1";
-  j["window"] = {{"area_m2", tidy(f.window.area_m2)},
-                 {"normal", vec(f.window.normal)},
-                 {"horizontal", vec(f.window.h)},
-                 {"up", vec(f.window.v)}};
+  j["window"] = {{"area_m2", tidy_rockmass(f.window.area_m2)},
+                 {"normal", vec_rockmass(f.window.normal)},
+                 {"horizontal", vec_rockmass(f.window.h)},
+                 {"up", vec_rockmass(f.window.v)}};
   j["traces"] = {{"count", f.assigned.set_of.size()},
                  {"random", f.assigned.random.size()},
                  {"assigned_by", f.assigned.how}};
@@ -72,7 +75,7 @@ json rockmass_report_json(const RockMassFigures& f) {
   for (std::size_t k = 0; k < f.spacings.size(); ++k) {
     const auto& s = f.spacings[k];
     json gaps = json::array();
-    for (double g : s.gaps_m) gaps.push_back(tidy(g));
+    for (double g : s.gaps_m) gaps.push_back(tidy_rockmass(g));
     json set = {{"label", s.label},
                 {"traces", s.traces},
                 {"discontinuities", s.discontinuities},
@@ -90,9 +93,9 @@ json rockmass_report_json(const RockMassFigures& f) {
                   {"histogram", histogram(s.histogram)},
                   {"apparent_on_face_m", opt(s.apparent_on_face_m)}}},
                 {"terzaghi",
-                 {{"face_angle_deg", tidy(s.face_angle_deg)},
-                  {"weight", tidy(s.terzaghi_weight)},
-                  {"weighted_count", tidy(s.weighted_count)},
+                 {{"face_angle_deg", tidy_rockmass(s.face_angle_deg)},
+                  {"weight", tidy_rockmass(s.terzaghi_weight)},
+                  {"weighted_count", tidy_rockmass(s.weighted_count)},
                   {"blind_zone", s.in_blind_zone}}}};
     if (k < f.persistence.size()) {
       const auto& p = f.persistence[k];
@@ -116,17 +119,17 @@ json rockmass_report_json(const RockMassFigures& f) {
     for (const auto& s : d.sets)
       per_set.push_back({{"label", s.label},
                          {"crossings", s.crossings},
-                         {"cos_delta", tidy(s.cos_delta)},
+                         {"cos_delta", tidy_rockmass(s.cos_delta)},
                          {"blind_zone", s.in_blind_zone},
                          {"apparent_spacing_m", opt(s.apparent_m)},
                          {"terzaghi_spacing_m", opt(s.corrected_m)}});
     dirs.push_back({{"name", d.name},
                     {"angle_deg", d.angle_deg},
-                    {"direction", vec(d.direction)},
+                    {"direction", vec_rockmass(d.direction)},
                     {"lines", d.lines},
-                    {"length_m", tidy(d.length_m)},
+                    {"length_m", tidy_rockmass(d.length_m)},
                     {"crossings", d.crossings},
-                    {"frequency_per_m", tidy(d.frequency_per_m)},
+                    {"frequency_per_m", tidy_rockmass(d.frequency_per_m)},
                     {"rqd_percent", opt(d.rqd_percent)},
                     {"priest_hudson_from_frequency", opt(d.priest_hudson_from_frequency)},
                     {"frequency_from_sets_per_m", opt(d.frequency_from_sets_per_m)},
@@ -138,16 +141,16 @@ json rockmass_report_json(const RockMassFigures& f) {
               {"lowest_percent", opt(f.scanlines.lowest_percent)},
               {"priest_hudson_from_spacing", opt(f.scanlines.priest_hudson_from_spacing)}};
   j["jv"] = {{"per_m3", opt(f.jv.jv)},
-             {"from_sets", tidy(f.jv.from_sets)},
-             {"from_random", tidy(f.jv.from_random)},
+             {"from_sets", tidy_rockmass(f.jv.from_sets)},
+             {"from_random", tidy_rockmass(f.jv.from_random)},
              {"sets_used", f.jv.sets_used},
              {"random_traces", f.jv.random_traces},
-             {"window_area_m2", tidy(f.jv.window_area_m2)},
+             {"window_area_m2", tidy_rockmass(f.jv.window_area_m2)},
              {"rqd_palmstrom", opt(f.jv.rqd_palmstrom)},
              {"sets_without_spacing", f.jv.sets_without_spacing}};
   const auto& b = f.blocks;
   json volumes = json::array();
-  for (double v : b.volumes_m3) volumes.push_back(tidy(v));
+  for (double v : b.volumes_m3) volumes.push_back(tidy_rockmass(v));
   j["blocks"] = {{"finite_blocks", b.finite_blocks},
                  {"volumes_m3", volumes},
                  {"histogram", histogram(b.histogram)},
@@ -168,7 +171,7 @@ json rockmass_report_json(const RockMassFigures& f) {
     drive.push_back({{"label", d.label},
                      {"class", words(d.cls)},
                      {"words", d.words},
-                     {"margin_deg", tidy(d.margin_deg)},
+                     {"margin_deg", tidy_rockmass(d.margin_deg)},
                      {"marginal", d.marginal}});
   const Rmr89& r = f.rmr;
   j["rmr89"] = {{"strength", rating(r.strength)},

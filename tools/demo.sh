@@ -8,7 +8,8 @@
 # scene's and the table of blocks with their verdicts.
 #
 # It builds only what it runs: the rockface program, optimised, without the
-# tests, the benchmarks or debug information (CMake preset "demo", build/demo).
+# tests, the benchmarks or debug information, each library as a unity build
+# (CMake preset "demo", build/demo).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh --demo

@@ -35,6 +35,9 @@ if [ "${1:-}" != "--demo" ]; then
     xvfb xauth
     # tests and benchmarks
     libgtest-dev libgmock-dev libbenchmark-dev
+    # CI's check that no name repeats in one library's anonymous namespaces
+    # (tools/check-unity-names.sh: the demo's unity build)
+    universal-ctags
     # the report tests read the PDF back (pdftotext, pdftoppm)
     poppler-utils
     # the office tests: a real PostgreSQL server (initdb, pg_ctl) and openssl

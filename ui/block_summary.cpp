@@ -29,7 +29,7 @@ const nlohmann::json* field(const nlohmann::json& obj, const char* key) {
   return it == obj.end() || it->is_null() ? nullptr : &*it;
 }
 
-std::optional<double> number(const nlohmann::json& obj, const char* key) {
+std::optional<double> number_field(const nlohmann::json& obj, const char* key) {
   const auto* v = field(obj, key);
   if (!v || !v->is_number()) return std::nullopt;
   return v->get<double>();
@@ -83,7 +83,7 @@ void add_rotation(std::vector<std::string>& lines, const nlohmann::json& report)
     for (const auto& c : *cs) {
       ++corners;
       if (c.value("rotatable", false)) ++corners_free;
-      if (const auto m = number(c, "margin_deg"))
+      if (const auto m = number_field(c, "margin_deg"))
         least_margin = least_margin ? std::min(*least_margin, *m) : *m;
     }
   if (const auto* es = field(*rotation, "edges"); es && es->is_array())
@@ -102,7 +102,7 @@ void add_rotation(std::vector<std::string>& lines, const nlohmann::json& report)
 void add_remote_axis(std::vector<std::string>& lines, const nlohmann::json& report) {
   const auto* axis = field(report, "remote_axis");
   if (!axis) return;
-  const auto starts = number(*axis, "starts"), hits = number(*axis, "hits");
+  const auto starts = number_field(*axis, "starts"), hits = number_field(*axis, "hits");
   std::string line = axis->value("found", false) ? "Remote axis: found" : "Remote axis: none found";
   if (starts && *starts == 0)
     line = "Remote axis: not searched, the block already rotates about a corner or an edge";
@@ -115,7 +115,7 @@ void add_mechanics(std::vector<std::string>& lines, const nlohmann::json& report
   const auto* m = field(report, "mechanics");
   if (!m) return;
   std::string line = "Equilibrium path: ";
-  if (const auto fos = number(*m, "fos_limit_point"))
+  if (const auto fos = number_field(*m, "fos_limit_point"))
     line += printed("limit point at load factor %.2f", *fos);
   else if (const auto* outcome = field(*m, "outcome"); outcome && outcome->is_string())
     line += outcome->get<std::string>();  // e.g. "no limit point within the step budget"
@@ -138,10 +138,10 @@ std::vector<std::string> block_summary(const storage::BlockResult& b,
                      (b.removable ? "removable" : "not removable");
   if (!b.source.empty()) what += ", from " + b.source;
   lines.push_back(what);
-  if (const auto margin = number(report, "margin_deg"))
+  if (const auto margin = number_field(report, "margin_deg"))
     lines.push_back("Margin " + format::text(format::Angle{*margin}));
   add_mode(lines, b, report);
-  const auto volume = number(report, "volume"), mass = number(report, "mass");
+  const auto volume = number_field(report, "volume"), mass = number_field(report, "mass");
   if (volume && mass)
     lines.push_back("Volume " + format::text(format::Volume{*volume}) +
                     printed(", mass %.2f t", *mass / 1000.0));

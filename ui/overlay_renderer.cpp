@@ -12,7 +12,7 @@ namespace rockface::ui {
 
 namespace {
 
-constexpr const char* kVertexShader = R"(#version 300 es
+constexpr const char* kOverlayVertexShader = R"(#version 300 es
 layout(location = 0) in vec4 clip;
 layout(location = 1) in vec4 colour;
 layout(location = 2) in float along;
@@ -27,7 +27,7 @@ void main() {
 
 // along < 0: solid; else the length along the line on the screen (px),
 // dashed 12 px on, 8 px off.
-constexpr const char* kFragmentShader = R"(#version 300 es
+constexpr const char* kOverlayFragmentShader = R"(#version 300 es
 precision mediump float;
 in vec4 v_colour;
 in float v_along;
@@ -126,7 +126,7 @@ class Batch {
 }  // namespace
 
 OverlayRenderer::OverlayRenderer() {
-  program_ = link_gles_program(kVertexShader, kFragmentShader, "overlay");
+  program_ = link_gles_program(kOverlayVertexShader, kOverlayFragmentShader, "overlay");
   glGenVertexArrays(1, &vertex_array_);
   glGenBuffers(1, &buffer_);
 }

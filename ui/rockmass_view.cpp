@@ -31,7 +31,7 @@ void compute(AppState& app, std::optional<rockmass::ClassificationForm> save) {
       });
 }
 
-void reload(AppState& app) {
+void reload_rockmass(AppState& app) {
   RockMassState& r = app.rockmass;
   ProjectSession& s = *app.session;
   if (r.loaded && r.file == s.file() && r.visit == s.visit()) return;
@@ -50,8 +50,8 @@ void reload(AppState& app) {
 }
 
 // One number of the form: a box to say it was entered, and its value.
-void number(AppState& app, const char* label, const char* unit, std::optional<double>& value,
-            double start) {
+void number_entry(AppState& app, const char* label, const char* unit, std::optional<double>& value,
+                  double start) {
   bool entered = value.has_value();
   ImGui::PushID(label);
   if (checkbox(app.targets, std::string(label) + " entered", "", &entered))
@@ -85,24 +85,24 @@ void choice(AppState& app, const char* title, std::optional<E>& value,
 void draw_form(AppState& app) {
   rockmass::ClassificationForm& f = app.rockmass.form;
   note("RMR89: intact rock, joint condition, groundwater");
-  number(app, "UCS", "MPa", f.ucs_mpa, 100);
-  number(app, "Is50", "MPa", f.is50_mpa, 4);
-  number(app, "aperture", "mm", f.aperture_mm, 0.5);
-  number(app, "persistence (when not measured)", "m", f.persistence_m, 3);
+  number_entry(app, "UCS", "MPa", f.ucs_mpa, 100);
+  number_entry(app, "Is50", "MPa", f.is50_mpa, 4);
+  number_entry(app, "aperture", "mm", f.aperture_mm, 0.5);
+  number_entry(app, "persistence (when not measured)", "m", f.persistence_m, 3);
   choice(app, "roughness", f.roughness, rockmass::roughness_words());
   choice(app, "infilling", f.infilling, rockmass::infilling_words());
   choice(app, "weathering", f.weathering, rockmass::weathering_words());
-  number(app, "condition rating (instead)", "0-30", f.condition_rating, 20);
+  number_entry(app, "condition rating (instead)", "0-30", f.condition_rating, 20);
   choice(app, "groundwater", f.groundwater, rockmass::groundwater_words());
-  number(app, "inflow per 10 m (instead)", "l/min", f.inflow_l_per_min, 0);
+  number_entry(app, "inflow per 10 m (instead)", "l/min", f.inflow_l_per_min, 0);
   choice(app, "orientation (without a tunnel)", f.orientation, rockmass::orientation_words());
   note("Q: Barton 2002 tables");
-  number(app, "Jr", "", f.jr, 1.5);
-  number(app, "Ja", "", f.ja, 1);
-  number(app, "Jw", "", f.jw, 1);
-  number(app, "SRF", "", f.srf, 1);
-  number(app, "ESR", "", f.esr, 1);
-  number(app, "span", "m", f.span_m, 10);
+  number_entry(app, "Jr", "", f.jr, 1.5);
+  number_entry(app, "Ja", "", f.ja, 1);
+  number_entry(app, "Jw", "", f.jw, 1);
+  number_entry(app, "SRF", "", f.srf, 1);
+  number_entry(app, "ESR", "", f.esr, 1);
+  number_entry(app, "span", "m", f.span_m, 10);
 }
 
 }  // namespace
@@ -112,7 +112,7 @@ void draw_rockmass_view(AppState& app) {
     paragraph("Open a project with a visit first.");
     return;
   }
-  reload(app);
+  reload_rockmass(app);
   RockMassState& r = app.rockmass;
   const bool idle = !app.task.running() && app.services.rockmass;
   if (app.targets.button("Rock mass figures", 0, idle)) compute(app, std::nullopt);

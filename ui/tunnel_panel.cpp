@@ -13,7 +13,7 @@ namespace rockface::ui {
 
 namespace {
 
-std::string fixed(double v, int decimals) {
+std::string fixed_digits(double v, int decimals) {
   char text[48];
   std::snprintf(text, sizeof text, "%.*f", decimals, v);
   return text;
@@ -25,7 +25,7 @@ const char* method_words(storage::VisitPlacement::Method m) {
              : "range pole position and compass line";
 }
 
-void reload(AppState& app) {
+void reload_tunnel(AppState& app) {
   TunnelState& t = app.tunnel;
   ProjectSession& s = *app.session;
   if (t.loaded && t.file == s.file() && t.visit == s.visit()) return;
@@ -119,7 +119,7 @@ void draw_typed_placement(AppState& app) {
 
 void draw_tunnel_panel(AppState& app) {
   if (!app.session) return;
-  reload(app);
+  reload_tunnel(app);
   TunnelState& t = app.tunnel;
   ImGui::Separator();
   if (!t.record) {
@@ -128,8 +128,8 @@ void draw_tunnel_panel(AppState& app) {
     return;
   }
   const auto& r = *t.record;
-  const std::string from = r.stations.empty() ? "?" : fixed(r.stations.front().chainage, 1);
-  const std::string to = r.stations.empty() ? "?" : fixed(r.stations.back().chainage, 1);
+  const std::string from = r.stations.empty() ? "?" : fixed_digits(r.stations.front().chainage, 1);
+  const std::string to = r.stations.empty() ? "?" : fixed_digits(r.stations.back().chainage, 1);
   heading("Tunnel " + r.name);
   paragraph("Chainage " + from + " to " + to + " m, drive " + tunnel::drive_name(r.drive));
   paragraph("Design profile " + format::text(format::Length{r.profile.perimeter()}) + " around, " +
@@ -137,7 +137,7 @@ void draw_tunnel_panel(AppState& app) {
             format::text(format::Length{r.underbreak_tolerance_m}));
   if (t.placement) {
     const auto& p = *t.placement;
-    paragraph("This visit: face at chainage " + fixed(p.chainage, 2) + " m, " +
+    paragraph("This visit: face at chainage " + fixed_digits(p.chainage, 2) + " m, " +
               format::text(format::Length{std::abs(p.offset_m)}) + " " +
               (p.offset_m >= 0 ? "right" : "left") + " of the axis; placed by " +
               method_words(p.method) + ".");

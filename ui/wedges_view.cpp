@@ -37,7 +37,7 @@ void find_wedges(AppState& app) {
       });
 }
 
-void draw_table(AppState& app, const WedgeTable& t) {
+void draw_wedge_table(AppState& app, const WedgeTable& t) {
   const ImGuiTableFlags flags =
       ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame;
   if (!ImGui::BeginTable("wedges", static_cast<int>(t.columns.size()), flags)) return;
@@ -86,7 +86,7 @@ void draw_wedges_view(AppState& app) {
   if (t.rows.empty())
     paragraph("No removable wedge.");
   else
-    draw_table(app, t);
+    draw_wedge_table(app, t);
   for (const auto& n : t.notes) paragraph(n);
   ImGui::EndChild();
   begin_side_panel("wedge picture", layout, true);

@@ -2,16 +2,11 @@
 
 #include "core/blocks/face_frame.h"
 #include "core/blocks/tolerances.h"
+#include "core/geometry/cross2.h"
 
 namespace rockface::blocks {
 
-namespace {
-
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
-}  // namespace
+using geometry::cross2;
 
 bool face_is_convex(const Polyhedron& block, int f) {
   const FaceFrame fr = face_frame(block, f);

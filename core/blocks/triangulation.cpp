@@ -6,14 +6,13 @@
 #include "core/blocks/face_frame.h"
 #include "core/blocks/tolerances.h"
 #include "core/common/error.h"
+#include "core/geometry/cross2.h"
 
 namespace rockface::blocks {
 
-namespace {
+using geometry::cross2;
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
+namespace {
 
 // Whether p lies inside or on triangle (a, b, c) (counter-clockwise), with
 // the edges widened by tol.

@@ -1,15 +1,14 @@
 #include "core/faces/convex_partition.h"
+#include "core/geometry/cross2.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace rockface::faces {
 
-namespace {
+using geometry::cross2;
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
+namespace {
 
 // Sine of the turn at b (a -> b -> c), positive to the left.
 double turn(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {

@@ -8,14 +8,13 @@
 #include "core/common/error.h"
 #include "core/faces/convex_partition.h"
 #include "core/faces/tolerances.h"
+#include "core/geometry/cross2.h"
 
 namespace rockface::faces {
 
-namespace {
+using geometry::cross2;
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
+namespace {
 
 // Whether closed segments ab and cd share a point.
 bool segments_meet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,

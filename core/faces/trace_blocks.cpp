@@ -12,8 +12,11 @@
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/faces/tolerances.h"
+#include "core/geometry/cross2.h"
 
 namespace rockface::faces {
+
+using geometry::cross2;
 
 namespace {
 
@@ -28,14 +31,10 @@ HalfSpace opposite(HalfSpace h) {
   return h == HalfSpace::Upper ? HalfSpace::Lower : HalfSpace::Upper;
 }
 
-double sweep(double from, double to, double total) {
+double sweep_ccw(double from, double to, double total) {
   double d = std::fmod(to - from, total);
   if (d < 0) d += total;
   return d;
-}
-
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
 }
 
 // The part of a convex polygon where n . x >= c (keep) or <= c.
@@ -65,7 +64,7 @@ double perimeter_of(const std::vector<Eigen::Vector2d>& poly) {
   return p;
 }
 
-std::string fmt(double v) {
+std::string fmt3(double v) {
   std::ostringstream s;
   s.precision(3);
   s << v;
@@ -244,7 +243,7 @@ std::optional<TraceBlock> trace_block(const FreeSurface& surface, const TraceNet
       if (pg.plane.source == TracePlaneSource::Fitted) {
         block.uncertainty = std::max(block.uncertainty, pg.plane.uncertainty);
         block.notes.push_back("plane " + pg.name + " is fitted to its trace (uncertainty " +
-                              fmt(rad_to_deg(pg.plane.uncertainty)) + " degrees)");
+                              fmt3(rad_to_deg(pg.plane.uncertainty)) + " degrees)");
       }
     }
     const int n_joints = static_cast<int>(block.planes.size());
@@ -294,7 +293,8 @@ std::optional<TraceBlock> trace_block(const FreeSurface& surface, const TraceNet
         joint_sides[plane_of_group[g]].insert(s > 0 ? HalfSpace::Upper : HalfSpace::Lower);
         if (edges[nx / 2].group == g) continue;  // the same joint goes on: no corner
         const AroundVertex& av = net.around()[net.target(h)];
-        const double corner = sweep(av.angle[net.slot(nx)], av.angle[net.slot(h ^ 1)], av.total);
+        const double corner =
+            sweep_ccw(av.angle[net.slot(nx)], av.angle[net.slot(h ^ 1)], av.total);
         if (corner > std::numbers::pi + kReflexCornerRad) reflex = true;
       }
     bool rock_convex = true;
@@ -544,7 +544,7 @@ std::optional<TraceBlock> trace_block(const FreeSurface& surface, const TraceNet
           double volume = 0;
           for (const auto& c : cells) volume += blocks::mass_properties(c, options.density).volume;
           block.notes.push_back("finite as the union of " + std::to_string(cells.size()) +
-                                " bounded convex pieces (" + fmt(volume) +
+                                " bounded convex pieces (" + fmt3(volume) +
                                 " m^3); removability from the joint faces of its boundary; "
                                 "no mode or factor of safety without one polyhedron");
         }

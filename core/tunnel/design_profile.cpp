@@ -7,17 +7,15 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/units.h"
+#include "core/geometry/cross2.h"
 #include "core/tunnel/tolerances.h"
 
 namespace rockface::tunnel {
 
+using geometry::cross2;
+
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
 
 std::string point_text(const Eigen::Vector2d& p) {
   std::ostringstream s;

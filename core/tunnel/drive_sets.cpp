@@ -7,14 +7,13 @@
 #include <set>
 #include <sstream>
 
+#include "core/common/degrees_per_radian.h"
 #include "core/common/error.h"
 #include "core/geometry/orientation.h"
 
 namespace rockface::tunnel {
 
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // Resultant length of N unit poles with Fisher K: K = (N - 1) / (N - R).
 double resultant_of(double k, int n) {
@@ -28,11 +27,11 @@ double alpha95_of(double n, double r) {
   if (r >= n) return 0;
   const double c = 1 - (n - r) / r * (std::pow(20.0, 1 / (n - 1)) - 1);
   if (c <= -1) return 180;
-  return std::acos(std::min(1.0, c)) * kDeg;
+  return std::acos(std::min(1.0, c)) * kDegPerRad;
 }
 
 double axial_angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::acos(std::min(1.0, std::abs(a.dot(b)))) * kDeg;
+  return std::acos(std::min(1.0, std::abs(a.dot(b)))) * kDegPerRad;
 }
 
 Eigen::Vector3d upward(Eigen::Vector3d n) {
@@ -170,8 +169,8 @@ DriveSets track_sets_along_drive(std::vector<VisitSets> visits, const DriveSetOp
           obs.normal.dot(l.last) < 0 ? Eigen::Vector3d(-obs.normal) : obs.normal;
       pt.normal = upward(m);
       const geometry::PlaneOrientation o = geometry::plane_orientation(m);
-      pt.dip_deg = o.dip * kDeg;
-      pt.dipdir_deg = o.dipdir * kDeg;
+      pt.dip_deg = o.dip * kDegPerRad;
+      pt.dipdir_deg = o.dipdir * kDegPerRad;
       pt.fisher_k = obs.fisher_k;
       pt.count = obs.count;
       pt.alpha95_deg = fisher_alpha95_deg(obs.fisher_k, obs.count);

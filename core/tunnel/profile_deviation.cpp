@@ -8,13 +8,13 @@
 
 #include "core/common/error.h"
 #include "core/common/parallel.h"
+#include "core/common/units.h"
 #include "core/tunnel/mesh_raycast.h"
 
 namespace rockface::tunnel {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr std::uint8_t kSeen = 0, kNotSeen = 1, kExcluded = 2;
 
 enum class Region : std::uint8_t { roof, wall, floor };

@@ -5,13 +5,13 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/common/degrees_per_radian.h"
 #include "core/common/error.h"
 
 namespace rockface::tunnel {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 // How far past a boundary the class is probed (degrees): far below any
 // measurement's resolution, far above rounding.
 constexpr double kProbeDeg = 1e-6;
@@ -100,9 +100,9 @@ StrikeVsDrive strike_vs_drive(const geometry::PlaneOrientation& plane, double dr
     throw InputError("plane", "dip must be in [0, 90] degrees and the dip direction finite");
   if (!std::isfinite(drive_trend)) throw InputError("drive_trend", "must be finite");
   StrikeVsDrive r;
-  r.dip_deg = std::clamp(plane.dip * kDeg, 0.0, 90.0);
+  r.dip_deg = std::clamp(plane.dip * kDegPerRad, 0.0, 90.0);
   // Angle between the dip direction and the drive, in [0, 180].
-  double delta = std::fmod(std::abs(plane.dipdir - drive_trend) * kDeg, 360.0);
+  double delta = std::fmod(std::abs(plane.dipdir - drive_trend) * kDegPerRad, 360.0);
   if (delta > 180) delta = 360 - delta;
   r.with_dip = delta < 90;
   // The strike is normal to the dip direction.

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/common/degrees_per_radian.h"
 #include "core/common/error.h"
 #include "core/geometry/cone.h"
 #include "core/geometry/orientation.h"
@@ -25,9 +26,6 @@
 namespace rockface::tunnel {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = 180.0 / kPi;
 
 std::string fixed1(double v) {
   std::ostringstream s;
@@ -326,7 +324,7 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
               out.none.push_back({code, ids, -pv.removable.margin,
                                   "opens toward the tunnel but is not removable from the face: "
                                   "its pyramid reaches into the rock ahead (by " +
-                                      fixed1(pv.removable.margin * kDeg) + " deg)"});
+                                      fixed1(pv.removable.margin * kDegPerRad) + " deg)"});
               continue;
             }
             const auto tri = face_unit_triangle(edges, frame);
@@ -359,7 +357,7 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
             const Eigen::Vector2d centre =
                 fit.offset + fit.scale * (tri[0] + tri[1] + tri[2]) / 3.0;
             w.position_deg =
-                std::atan2(centre.y() - ctx.centre.y(), centre.x() - ctx.centre.x()) * kDeg;
+                std::atan2(centre.y() - ctx.centre.y(), centre.x() - ctx.centre.x()) * kDegPerRad;
             w.trace_lengths = traces_of(w.block);
             analyse_wedge(ctx, w, planes, apex);
             out.wedges.push_back(std::move(w));
@@ -372,7 +370,7 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
           if (!sector.pointed) {
             out.none.push_back(
                 {code, ids, sector.margin,
-                 "seen along the axis its pyramid spans " + fixed1(sector.span * kDeg) +
+                 "seen along the axis its pyramid spans " + fixed1(sector.span * kDegPerRad) +
                      " deg (180 or more): the wedge would run along the tunnel without end"});
             continue;
           }
@@ -464,7 +462,7 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
           for (const auto& piece : base) w.outline.push_back(piece.b);
           w.segments.assign(segs.begin(), segs.end());
           w.position_deg =
-              std::atan2(centre.y() - ctx.centre.y(), centre.x() - ctx.centre.x()) * kDeg;
+              std::atan2(centre.y() - ctx.centre.y(), centre.x() - ctx.centre.x()) * kDegPerRad;
           w.place = place_of(w.position_deg);
           w.notes.insert(w.notes.end(), w.corners.begin(), w.corners.end());
           analyse_wedge(ctx, w, planes, apex);

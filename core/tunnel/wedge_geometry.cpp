@@ -8,9 +8,13 @@
 #include <stdexcept>
 
 #include "core/blocks/construction.h"
+#include "core/common/units.h"
+#include "core/geometry/cross2.h"
 #include "core/tunnel/tolerances.h"
 
 namespace rockface::tunnel {
+
+using geometry::cross2;
 
 namespace {
 
@@ -20,12 +24,6 @@ std::string plane_name(char letter, std::size_t number) {
   std::string s(1, letter);
   s += std::to_string(number);
   return s;
-}
-
-constexpr double kPi = std::numbers::pi;
-
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
 }
 
 Eigen::Vector3d to3(const TunnelFrame& f, const Eigen::Vector2d& uv) {

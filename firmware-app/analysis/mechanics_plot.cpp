@@ -14,7 +14,7 @@ namespace rockface::app {
 
 namespace {
 
-std::string number(double v) {
+std::string number3g(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", v);
   return buf;
@@ -50,14 +50,14 @@ cv::Mat draw(const storage::ReportMechanics& m, int width, int height) {
              cv::LINE_AA);
   for (const auto& p : m.path) cv::circle(img, at(p[1], p[0]), 2, curve, cv::FILLED);
   const double font = 0.4;
-  cv::putText(img, "displacement (m), max " + number(dmax), {left, height - 10},
+  cv::putText(img, "displacement (m), max " + number3g(dmax), {left, height - 10},
               cv::FONT_HERSHEY_SIMPLEX, font, axis, 1, cv::LINE_AA);
-  cv::putText(img, number(lmax), {2, top + 10}, cv::FONT_HERSHEY_SIMPLEX, font, axis, 1,
+  cv::putText(img, number3g(lmax), {2, top + 10}, cv::FONT_HERSHEY_SIMPLEX, font, axis, 1,
               cv::LINE_AA);
   cv::putText(img, "lambda", {2, origin.y - h / 2}, cv::FONT_HERSHEY_SIMPLEX, font, axis, 1,
               cv::LINE_AA);
   if (m.fos_limit_point)
-    cv::putText(img, "FoS " + number(*m.fos_limit_point),
+    cv::putText(img, "FoS " + number3g(*m.fos_limit_point),
                 at(0.05 * dmax, *m.fos_limit_point) + cv::Point(4, -4), cv::FONT_HERSHEY_SIMPLEX,
                 font, limit, 1, cv::LINE_AA);
   return img;

@@ -39,7 +39,7 @@ VerbRun setup_analyse(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar reg{
+const VerbRegistrar analyse_verb{
     "analyse", "geometric and mechanical analysis of a scene; report on stdout or to a file",
     setup_analyse};
 

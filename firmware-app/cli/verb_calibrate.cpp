@@ -56,8 +56,8 @@ VerbRun setup_calibrate(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar reg{"calibrate", "camera calibration from views of a chessboard or circle grid",
-                        setup_calibrate};
+const VerbRegistrar calibrate_verb{
+    "calibrate", "camera calibration from views of a chessboard or circle grid", setup_calibrate};
 
 }  // namespace
 }  // namespace rockface::app

@@ -53,7 +53,7 @@ VerbRun setup_drive(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar registrar{
+const VerbRegistrar drive_verb{
     "drive",
     "the joint sets along the tunnel's drive: each set's orientation and Fisher K per visit "
     "against chainage, sets that appear, vanish or turn flagged",

@@ -15,8 +15,8 @@
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/measure/joined_traces.h"
-#include "firmware-app/measure/measure_workflow.h"
 #include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/measure/measure_workflow.h"
 
 namespace rockface::app {
 namespace {
@@ -41,7 +41,7 @@ void parse_sets(const std::string& text, MeasureRequest& request) {
     throw InputError("--sets", text + " is outside [1, 12]");
 }
 
-int run(MeasureOptions& o) {
+int run_measure(MeasureOptions& o) {
   parse_sets(o.sets, o.request);
   const std::string project = o.request.on.source;
   o.request.stored = [&](storage::RecordId visit) {
@@ -87,11 +87,11 @@ VerbRun setup_measure(CLI::App& sub) {
                  "precision of a picked point, m (default: the reconstruction's sigma_Z)");
   sub.add_option("--friction", r.friction_deg,
                  "friction angle for the stereonet's sliding overlay, degrees (default 30)");
-  return [o] { return run(*o); };
+  return [o] { return run_measure(*o); };
 }
 
-const VerbRegistrar reg{"measure", "measure traces, areas and points picked on a 3D image",
-                        setup_measure};
+const VerbRegistrar measure_verb{"measure", "measure traces, areas and points picked on a 3D image",
+                                 setup_measure};
 
 }  // namespace
 }  // namespace rockface::app

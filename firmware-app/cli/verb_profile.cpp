@@ -48,7 +48,7 @@ VerbRun setup_profile(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar registrar{
+const VerbRegistrar profile_verb{
     "profile",
     "the excavation of a visit's round against the tunnel's design profile: over- and "
     "underbreak per cross-section, volumes, the deepest underbreak, a developed view",

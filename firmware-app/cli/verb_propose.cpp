@@ -84,7 +84,7 @@ VerbRun setup_propose(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar registrar{
+const VerbRegistrar propose_verb{
     "propose",
     "planar facets found on a visit's 3D image and the joint sets they form (Fisher K, "
     "spacing), proposed for the geologist to accept by picks",

@@ -27,7 +27,7 @@ VerbRun setup_pull(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar registrar{
+const VerbRegistrar pull_verb{
     "pull",
     "build a project from the site's PostgreSQL server: every tablet's visits of a tunnel, each "
     "photograph and mesh checked against its SHA-256",

@@ -12,7 +12,7 @@ namespace rockface::app {
 namespace {
 
 // Stage names on stderr as they change: a 24 Mpx pair takes a while.
-class StderrProgress final : public Progress {
+class StageProgress final : public Progress {
  public:
   void report(std::string_view stage, double) override {
     const std::string s(stage.substr(0, stage.find(':')));
@@ -25,8 +25,8 @@ class StderrProgress final : public Progress {
   std::string last_;
 };
 
-int run(const PairReconstructionRequest& o) {
-  StderrProgress progress;
+int run_reconstruct(const PairReconstructionRequest& o) {
+  StageProgress progress;
   const photogrammetry::ReconstructionResult result = reconstruct_pair_files(o, progress);
   const char* unit = result.scaled ? "m" : "base lengths";
   std::printf(
@@ -69,12 +69,12 @@ VerbRun setup_reconstruct(CLI::App& sub) {
   sub.add_option("--baseline", o->baseline, "measured distance between the camera stations, m");
   sub.add_option("--out", o->out, "the 3D image: MODEL.ply or MODEL.obj")->required();
   sub.add_option("--report", o->report, "accuracy report (rockface-reconstruction/1 JSON)");
-  return [o] { return run(*o); };
+  return [o] { return run_reconstruct(*o); };
 }
 
-const VerbRegistrar reg{"reconstruct",
-                        "two-view reconstruction: a scaled, oriented 3D image from a stereo pair",
-                        setup_reconstruct};
+const VerbRegistrar reconstruct_verb{
+    "reconstruct", "two-view reconstruction: a scaled, oriented 3D image from a stereo pair",
+    setup_reconstruct};
 
 }  // namespace
 }  // namespace rockface::app

@@ -30,10 +30,11 @@ VerbRun setup_render(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar reg{"render",
-                        "the synthetic mock camera: both images of a scene with poses, depth, "
-                        "target centres and true traces",
-                        setup_render};
+const VerbRegistrar render_verb{
+    "render",
+    "the synthetic mock camera: both images of a scene with poses, depth, "
+    "target centres and true traces",
+    setup_render};
 
 }  // namespace
 }  // namespace rockface::app

@@ -76,7 +76,7 @@ VerbRun setup_replay(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar reg{
+const VerbRegistrar replay_verb{
     "replay", "the field workflow, headless, through the mock camera, stored in a project",
     setup_replay};
 

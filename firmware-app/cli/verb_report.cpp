@@ -45,7 +45,7 @@ VerbRun setup_report(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar registrar{
+const VerbRegistrar report_verb{
     "report",
     "the field report of a visit as a PDF: face with traces and blocks, stereonet, "
     "joint sets, blocks, accuracy, camera and preset",

@@ -51,7 +51,7 @@ VerbRun setup_rockmass(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar registrar{
+const VerbRegistrar rockmass_verb{
     "rockmass",
     "the rock mass of a visit in figures (spacing, RQD, Jv, block sizes, persistence) and its "
     "RMR89 and Q, each rating measured or entered",

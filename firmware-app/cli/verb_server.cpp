@@ -54,7 +54,7 @@ VerbRun setup_server(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar registrar{
+const VerbRegistrar server_verb{
     "server",
     "set up the site's PostgreSQL server: init (schema, roles, policies), add-tunnel, add-tablet, "
     "add-office, add-admin",

@@ -47,7 +47,7 @@ VerbRun setup_sync(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar registrar{
+const VerbRegistrar sync_verb{
     "sync",
     "send the project's visits (captures, photographs, models, measurements, traces, analyses, "
     "the tunnel) to the site's PostgreSQL server; only what changed goes up",

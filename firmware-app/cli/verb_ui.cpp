@@ -99,7 +99,7 @@ VerbRun setup_ui(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar reg{
+const VerbRegistrar ui_verb{
     "ui", "the tablet UI (a window; a script of taps replayed in it or headless)", setup_ui};
 
 }  // namespace

@@ -53,7 +53,7 @@ VerbRun setup_wedges(CLI::App& sub) {
   };
 }
 
-const VerbRegistrar registrar{
+const VerbRegistrar wedges_verb{
     "wedges",
     "the removable wedges that the joint sets form around the excavation (roof, walls, floor, "
     "face): size, apex, mode and factor of safety with water, seismic, bolts and shotcrete",

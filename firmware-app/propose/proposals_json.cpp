@@ -13,11 +13,11 @@ namespace {
 
 using nlohmann::json;
 
-json vec(const Eigen::Vector3d& v) {
+json proposal_vec(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
 }
 
-json finite_or_null(double v) {
+json finite_or_null_json(double v) {
   return std::isfinite(v) ? json(v) : json(nullptr);
 }
 
@@ -42,7 +42,7 @@ std::string proposals_json(const ProposeResult& r, Preset preset) {
   j["format"] = "rockface-proposals/1";
   j["visit"] = r.visit;
   j["model"] = r.on;
-  j["datum"] = vec(datum);
+  j["datum"] = proposal_vec(datum);
   j["preset"] = std::string(preset_name(preset));
   json knobs;
   knobs["angle_tolerance_deg"] = f.options.angle_tolerance_deg;
@@ -65,7 +65,7 @@ std::string proposals_json(const ProposeResult& r, Preset preset) {
     m["dipdir"] = rad_to_deg(x.plane.orientation.dipdir);
     m["sigma_deg"] = rad_to_deg(x.plane.sigma);
     m["area_m2"] = x.area;
-    m["centroid"] = vec(x.centroid + datum);
+    m["centroid"] = proposal_vec(x.centroid + datum);
     m["rms_m"] = x.plane.fit.rms_off_plane();
     m["fit_points"] = x.plane.fit.count;
     m["outliers"] = x.plane.outliers;
@@ -76,7 +76,7 @@ std::string proposals_json(const ProposeResult& r, Preset preset) {
     const int s = r.sets.set_of.empty() ? -1 : r.sets.set_of[i];
     m["set"] = s >= 0 ? json(r.sets.sets[s].summary.label) : json(nullptr);
     json outline = json::array();
-    for (const auto& p : x.outline) outline.push_back(vec(p + datum));
+    for (const auto& p : x.outline) outline.push_back(proposal_vec(p + datum));
     m["outline"] = outline;
     m["holes"] = x.holes;
     facets.push_back(m);
@@ -90,8 +90,8 @@ std::string proposals_json(const ProposeResult& r, Preset preset) {
     m["dip"] = rad_to_deg(o.dip);
     m["dipdir"] = rad_to_deg(o.dipdir);
     m["count"] = s.summary.fisher.count;
-    m["fisher_k"] = finite_or_null(s.summary.fisher.kappa);
-    m["alpha95_deg"] = finite_or_null(rad_to_deg(s.summary.fisher.alpha95));
+    m["fisher_k"] = finite_or_null_json(s.summary.fisher.kappa);
+    m["alpha95_deg"] = finite_or_null_json(rad_to_deg(s.summary.fisher.alpha95));
     m["spacing_m"] = s.summary.spacing ? json(*s.summary.spacing) : json(nullptr);
     m["spacing_gaps"] = s.summary.spacing_gaps;
     m["planes"] = s.planes;

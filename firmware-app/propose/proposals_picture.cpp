@@ -18,7 +18,7 @@ const cv::Scalar kSetColours[] = {{0, 159, 230}, {233, 180, 86}, {115, 158, 0}, 
                                   {178, 114, 0}, {0, 94, 213},   {167, 121, 204}, {0, 0, 0}};
 const cv::Scalar kNoSet(170, 170, 170);
 
-std::string fixed(double v, int digits) {
+std::string fixed_digits(double v, int digits) {
   std::ostringstream s;
   s.setf(std::ios::fixed);
   s.precision(digits);
@@ -101,12 +101,13 @@ cv::Mat proposals_picture(const ProposeResult& r, int max_width) {
     const auto o = set.summary.fisher.plane();
     rows.emplace_back(
         kSetColours[s % 8],
-        set.summary.label + "  " + fixed(rad_to_deg(o.dip), 0) + "/" +
-            fixed(rad_to_deg(o.dipdir), 0) + "  K " +
-            (std::isfinite(set.summary.fisher.kappa) ? fixed(set.summary.fisher.kappa, 0)
+        set.summary.label + "  " + fixed_digits(rad_to_deg(o.dip), 0) + "/" +
+            fixed_digits(rad_to_deg(o.dipdir), 0) + "  K " +
+            (std::isfinite(set.summary.fisher.kappa) ? fixed_digits(set.summary.fisher.kappa, 0)
                                                      : std::string("inf")) +
-            "  spacing " + (set.summary.spacing ? fixed(*set.summary.spacing, 2) + " m" : "-") +
-            "  " + std::to_string(set.facet_ids.size()) + " facets");
+            "  spacing " +
+            (set.summary.spacing ? fixed_digits(*set.summary.spacing, 2) + " m" : "-") + "  " +
+            std::to_string(set.facet_ids.size()) + " facets");
   }
   int unset = 0;
   for (int s : r.sets.set_of) unset += s < 0;

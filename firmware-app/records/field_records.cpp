@@ -8,7 +8,7 @@ namespace rockface::app {
 
 namespace {
 
-nlohmann::json vec(const Eigen::Vector3d& v) {
+nlohmann::json record_vec(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
 }
 
@@ -34,7 +34,7 @@ storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
   if (rec.targets) {
     p["targets"] = nlohmann::json::array();
     for (const auto& t : rec.targets->model)
-      p["targets"].push_back(vec(rec.model_to_world.apply(t)));
+      p["targets"].push_back(record_vec(rec.model_to_world.apply(t)));
   }
   if (rec.control_points) {
     r.rms_m = rec.control_points->rms_m;

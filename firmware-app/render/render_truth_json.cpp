@@ -12,7 +12,7 @@ using json = nlohmann::json;
 
 namespace {
 
-json vec(const Eigen::Vector3d& v) {
+json truth_vec(const Eigen::Vector3d& v) {
   return json::array({v.x(), v.y(), v.z()});
 }
 json pixel(const Eigen::Vector2d& p) {
@@ -24,12 +24,13 @@ void add_tunnel_lighting(json& out, const camera::SyntheticEffects& e,
                          const Eigen::Vector3d& origin) {
   auto region = [&](const camera::SyntheticRegion& r) {
     json poly = json::array();
-    for (const auto& x : r.polygon) poly.push_back(vec(x + origin));
+    for (const auto& x : r.polygon) poly.push_back(truth_vec(x + origin));
     return json{{"id", r.id}, {"polygon", poly}};
   };
   if (e.flash) out["flash"] = {{"intensity", e.flash->intensity}};
   for (const auto& l : e.lamps)
-    out["lamps"].push_back({{"position", vec(l.position + origin)}, {"intensity", l.intensity}});
+    out["lamps"].push_back(
+        {{"position", truth_vec(l.position + origin)}, {"intensity", l.intensity}});
   if (e.vignetting) out["vignetting"] = *e.vignetting;
   if (e.sensor)
     out["sensor"] = {{"iso", e.sensor->iso},
@@ -63,7 +64,7 @@ std::string render_truth_json(const camera::SyntheticScene& scene, const camera:
   json doc = json::object();
   doc["format"] = "rockface-render-truth/1";
   doc["scene"] = scene_name;
-  doc["datum"] = vec(origin);
+  doc["datum"] = truth_vec(origin);
   const auto& c = r.intrinsics;
   doc["intrinsics"] = {
       {"width", c.width}, {"height", c.height},        {"fx", c.fx}, {"fy", c.fy}, {"cx", c.cx},
@@ -75,14 +76,14 @@ std::string render_truth_json(const camera::SyntheticScene& scene, const camera:
     for (int i = 0; i < 3; ++i)
       rotation.push_back(json::array({r.poses[s].R(i, 0), r.poses[s].R(i, 1), r.poses[s].R(i, 2)}));
     cameras.push_back({{"station", names[s]},
-                       {"position", vec(r.poses[s].centre + origin)},
-                       {"look_at", vec(scene.stations[s].look_at + origin)},
+                       {"position", truth_vec(r.poses[s].centre + origin)},
+                       {"look_at", truth_vec(scene.stations[s].look_at + origin)},
                        {"rotation_world_to_camera", rotation},
                        {"image", std::string(names[s]) + ".png"}});
   }
   doc["cameras"] = cameras;
   if (scene.range_pole) {
-    doc["range_pole"] = {{"base", vec(scene.range_pole->base + origin)},
+    doc["range_pole"] = {{"base", truth_vec(scene.range_pole->base + origin)},
                          {"length", scene.range_pole->length},
                          {"target_diameter", scene.range_pole->target_diameter},
                          {"target_design",
@@ -93,8 +94,8 @@ std::string render_truth_json(const camera::SyntheticScene& scene, const camera:
     for (size_t t = 0; t < r.targets.size(); ++t) {
       const auto& target = r.targets[t];
       targets.push_back({{"id", ids[t % 2]},
-                         {"centre", vec(target.centre + origin)},
-                         {"normal", vec(target.normal)},
+                         {"centre", truth_vec(target.centre + origin)},
+                         {"normal", truth_vec(target.normal)},
                          {"left", pixel(target.image[0])},
                          {"right", pixel(target.image[1])},
                          {"visible", json::array({target.visible[0], target.visible[1]})}});
@@ -105,8 +106,8 @@ std::string render_truth_json(const camera::SyntheticScene& scene, const camera:
     const Eigen::Vector3d d = scene.reference_line->second - scene.reference_line->first;
     double azimuth = rad_to_deg(std::atan2(d.x(), d.y()));
     if (azimuth < 0) azimuth += 360;
-    json line = {{"from", vec(scene.reference_line->first + origin)},
-                 {"to", vec(scene.reference_line->second + origin)},
+    json line = {{"from", truth_vec(scene.reference_line->first + origin)},
+                 {"to", truth_vec(scene.reference_line->second + origin)},
                  {"azimuth_deg", azimuth}};
     if (r.reference_line_left)
       line["left"] =
@@ -117,10 +118,11 @@ std::string render_truth_json(const camera::SyntheticScene& scene, const camera:
   for (const auto& t : r.traces) {
     json left = json::array();
     for (const auto& p : t.left_image) left.push_back(pixel(p));
-    traces.push_back({{"joint", t.joint},
-                      {"patch", t.patch},
-                      {"world", json::array({vec(t.world[0] + origin), vec(t.world[1] + origin)})},
-                      {"left_image", left}});
+    traces.push_back(
+        {{"joint", t.joint},
+         {"patch", t.patch},
+         {"world", json::array({truth_vec(t.world[0] + origin), truth_vec(t.world[1] + origin)})},
+         {"left_image", left}});
   }
   doc["traces"] = traces;
   doc["depth"] = {{"file", "depth-left.pfm"},

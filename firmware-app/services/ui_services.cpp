@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-cv::Mat decode(const storage::ImageBlob& blob, const std::string& where) {
+cv::Mat decode_stored(const storage::ImageBlob& blob, const std::string& where) {
   cv::Mat image = cv::imdecode(blob.bytes, cv::IMREAD_COLOR);
   if (image.empty()) throw InputError(where, "the stored image cannot be decoded");
   return image;
@@ -41,8 +41,8 @@ storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project
     throw InputError(where, "no calibration of the camera in the project (calibrate first)");
   const photogrammetry::CameraIntrinsics k =
       store.load_calibration(*capture.calibration_id).intrinsics;
-  const cv::Mat left = decode(capture.left, where + " left");
-  const cv::Mat right = decode(capture.right, where + " right");
+  const cv::Mat left = decode_stored(capture.left, where + " left");
+  const cv::Mat right = decode_stored(capture.right, where + " right");
   photogrammetry::RegistrationSources sources;
   if (const auto it = capture.settings.find("range_pole_m"); it != capture.settings.end())
     sources.range_pole_m = std::stod(it->second);

@@ -2,15 +2,12 @@
 
 #include <numbers>
 
+#include "core/common/degrees_per_radian.h"
 #include "firmware-app/wedges/wedges_json.h"
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/field_report/wedge_pictures.h"
 
 namespace rockface::app {
-
-namespace {
-constexpr double kDeg = 180.0 / std::numbers::pi;
-}
 
 void add_wedges_to_report(storage::ProjectStore& store, storage::FieldReport& report) {
   std::string why;
@@ -37,7 +34,8 @@ void add_wedges_to_report(storage::ProjectStore& store, storage::FieldReport& re
         {x.id, tunnel::wedge_place_name(x.place), x.code, storage::report_number(x.mass.volume, 3),
          storage::report_number(x.weight / 1000, 1), storage::report_number(x.apex_height, 2),
          storage::report_number(x.bolt_length_to_apex, 2),
-         storage::report_number(x.removable.margin * kDeg, 1) + (x.removable.marginal ? " ?" : ""),
+         storage::report_number(x.removable.margin * kDegPerRad, 1) +
+             (x.removable.marginal ? " ?" : ""),
          wedge_mode_words(x), wedge_fos_text(x.fos), wedge_fos_text(x.fos_supported)});
   for (const auto& x : r->analysis.wedges)
     for (const auto& c : x.corners) w.notes.push_back(x.id + " " + c);

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/degrees_per_radian.h"
 #include "storage/field_report/field_report.h"
 
 namespace rockface::app {
@@ -13,19 +14,18 @@ namespace rockface::app {
 namespace {
 
 using nlohmann::json;
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
-double round_to(double v, double step) {
+double round_to_step(double v, double step) {
   return std::round(v / step) * step;
 }
 
 json vec3(const Eigen::Vector3d& v, double step) {
-  return {round_to(v.x(), step), round_to(v.y(), step), round_to(v.z(), step)};
+  return {round_to_step(v.x(), step), round_to_step(v.y(), step), round_to_step(v.z(), step)};
 }
 
 json number_or_null(const std::optional<double>& v, double step) {
   if (!v || !std::isfinite(*v)) return nullptr;  // JSON has no infinity
-  return round_to(*v, step);
+  return round_to_step(*v, step);
 }
 
 const char* places_text(const tunnel::SupportPlaces& p, std::string& out) {
@@ -41,24 +41,24 @@ json wedge_json(const tunnel::Wedge& w, const std::vector<WedgeSetInput>& sets) 
   json j;
   j["id"] = w.id;
   j["place"] = tunnel::wedge_place_name(w.place);
-  j["position_deg"] = round_to(w.position_deg, 0.1);
+  j["position_deg"] = round_to_step(w.position_deg, 0.1);
   j["code"] = w.code;
   j["sets"] = w.sets;
-  j["volume_m3"] = round_to(w.mass.volume, 1e-4);
-  j["mass_kg"] = round_to(w.mass.mass, 0.1);
-  j["weight_n"] = round_to(w.weight, 1);
+  j["volume_m3"] = round_to_step(w.mass.volume, 1e-4);
+  j["mass_kg"] = round_to_step(w.mass.mass, 0.1);
+  j["weight_n"] = round_to_step(w.weight, 1);
   j["apex"] = vec3(w.apex, 0.001);
-  j["apex_height_m"] = round_to(w.apex_height, 0.001);
-  j["bolt_length_to_apex_m"] = round_to(w.bolt_length_to_apex, 0.001);
-  j["face_area_m2"] = round_to(w.face_area, 1e-4);
-  j["face_perimeter_m"] = round_to(w.face_perimeter, 0.001);
+  j["apex_height_m"] = round_to_step(w.apex_height, 0.001);
+  j["bolt_length_to_apex_m"] = round_to_step(w.bolt_length_to_apex, 0.001);
+  j["face_area_m2"] = round_to_step(w.face_area, 1e-4);
+  j["face_perimeter_m"] = round_to_step(w.face_perimeter, 0.001);
   json traces = json::object();
-  for (const auto& [id, len] : w.trace_lengths) traces[id] = round_to(len, 0.001);
+  for (const auto& [id, len] : w.trace_lengths) traces[id] = round_to_step(len, 0.001);
   j["trace_lengths_m"] = traces;
   j["scaled"] = w.scaled;
-  if (w.scaled) j["scale"] = round_to(w.scale, 1e-4);
+  if (w.scaled) j["scale"] = round_to_step(w.scale, 1e-4);
   j["removable"] = w.removable.value;
-  j["margin_deg"] = round_to(w.removable.margin * kDeg, 0.01);
+  j["margin_deg"] = round_to_step(w.removable.margin * kDegPerRad, 0.01);
   j["marginal"] = w.removable.marginal;
   if (w.mode) {
     json m;
@@ -69,7 +69,7 @@ json wedge_json(const tunnel::Wedge& w, const std::vector<WedgeSetInput>& sets) 
         if (bp.index == p && bp.kind == blocks::PlaneKind::Joint) planes.push_back(bp.name);
     m["planes"] = planes;
     m["direction"] = vec3(w.mode->direction, 1e-4);
-    m["margin_deg"] = round_to(w.mode->margin * kDeg, 0.01);
+    m["margin_deg"] = round_to_step(w.mode->margin * kDegPerRad, 0.01);
     m["marginal"] = w.mode->marginal;
     j["mode"] = m;
     j["fos"] = number_or_null(w.fos, 0.001);
@@ -80,27 +80,27 @@ json wedge_json(const tunnel::Wedge& w, const std::vector<WedgeSetInput>& sets) 
     json b;
     b["on_face"] = w.bolts.size();
     b["anchored"] = w.bolts_anchored;
-    b["force_n"] = round_to(w.bolt_force, 1);
+    b["force_n"] = round_to_step(w.bolt_force, 1);
     json list = json::array();
     for (const auto& bolt : w.bolts)
       list.push_back({{"head", vec3(bolt.head, 0.001)},
                       {"direction", vec3(bolt.direction, 1e-4)},
-                      {"depth_in_wedge_m", round_to(bolt.depth_in_wedge, 0.001)},
-                      {"anchorage_m", round_to(bolt.anchorage, 0.001)},
-                      {"force_n", round_to(bolt.force, 1)}});
+                      {"depth_in_wedge_m", round_to_step(bolt.depth_in_wedge, 0.001)},
+                      {"anchorage_m", round_to_step(bolt.anchorage, 0.001)},
+                      {"force_n", round_to_step(bolt.force, 1)}});
     b["list"] = list;
     j["bolts"] = b;
   }
-  if (w.shotcrete_force > 0) j["shotcrete_force_n"] = round_to(w.shotcrete_force, 1);
-  if (w.support_pressure > 0) j["support_pressure_pa"] = round_to(w.support_pressure, 1);
-  j["weight_pressure_pa"] = round_to(w.weight_pressure, 1);
+  if (w.shotcrete_force > 0) j["shotcrete_force_n"] = round_to_step(w.shotcrete_force, 1);
+  if (w.support_pressure > 0) j["support_pressure_pa"] = round_to_step(w.support_pressure, 1);
+  j["weight_pressure_pa"] = round_to_step(w.weight_pressure, 1);
   json segs = json::array();
   for (auto s : w.segments) segs.push_back(s + 1);
   j["profile_segments"] = segs;
   j["corners"] = w.corners;
   json outline = json::array();
   for (const auto& p : w.outline)
-    outline.push_back({round_to(p.x(), 0.001), round_to(p.y(), 0.001)});
+    outline.push_back({round_to_step(p.x(), 0.001), round_to_step(p.y(), 0.001)});
   j["section_outline"] = outline;
   json vertices = json::array();
   for (int v = 0; v < static_cast<int>(w.block.vertices().size()); ++v)
@@ -150,23 +150,23 @@ std::string wedges_json(const WedgeRun& run, const tunnel::WedgeAnalysis& a) {
   j["preset"] = std::string(preset_name(run.preset));
   j["profile"] = {{"source", run.profile_source},
                   {"name", run.profile.name()},
-                  {"perimeter_m", round_to(run.profile.perimeter(), 0.001)},
-                  {"area_m2", round_to(run.profile.area(), 0.001)},
+                  {"perimeter_m", round_to_step(run.profile.perimeter(), 0.001)},
+                  {"area_m2", round_to_step(run.profile.area(), 0.001)},
                   {"segments", run.profile.segments().size()},
                   {"chords_sagitta_m", run.options.sagitta_m},
                   {"convex_hull_used", a.section.hull_used}};
-  j["axis"] = {{"trend", round_to(run.trend_deg, 0.01)},
-               {"plunge", round_to(run.plunge_deg, 0.01)}};
+  j["axis"] = {{"trend", round_to_step(run.trend_deg, 0.01)},
+               {"plunge", round_to_step(run.plunge_deg, 0.01)}};
   j["origin"] = vec3(run.frame.origin + run.datum, 0.001);
-  if (run.chainage) j["chainage"] = round_to(*run.chainage, 0.001);
+  if (run.chainage) j["chainage"] = round_to_step(*run.chainage, 0.001);
   json sets = json::array();
   for (const auto& s : run.sets) {
     json x{{"id", s.id},
-           {"dip", round_to(s.dip_deg, 0.1)},
-           {"dipdir", round_to(s.dipdir_deg, 0.1)},
+           {"dip", round_to_step(s.dip_deg, 0.1)},
+           {"dipdir", round_to_step(s.dipdir_deg, 0.1)},
            {"cohesion_pa", s.cohesion_pa},
            {"source", s.source}};
-    x["friction_deg"] = s.friction_deg ? json(round_to(*s.friction_deg, 0.1)) : json(nullptr);
+    x["friction_deg"] = s.friction_deg ? json(round_to_step(*s.friction_deg, 0.1)) : json(nullptr);
     sets.push_back(x);
   }
   j["sets"] = sets;
@@ -196,7 +196,7 @@ std::string wedges_json(const WedgeRun& run, const tunnel::WedgeAnalysis& a) {
   for (const auto& n : a.none)
     none.push_back({{"code", n.code},
                     {"sets", n.sets},
-                    {"margin_deg", round_to(n.margin * kDeg, 0.01)},
+                    {"margin_deg", round_to_step(n.margin * kDegPerRad, 0.01)},
                     {"reason", n.reason}});
   j["no_wedge"] = none;
   j["notes"] = a.notes;
@@ -228,7 +228,7 @@ std::vector<std::string> wedges_summary(const WedgeRun& run, const tunnel::Wedge
         storage::report_number(w.weight / 1000, 1).c_str(),
         storage::report_number(w.apex_height, 2).c_str(),
         storage::report_number(w.bolt_length_to_apex, 2).c_str(),
-        (storage::report_number(w.removable.margin * kDeg, 1) + " deg" +
+        (storage::report_number(w.removable.margin * kDegPerRad, 1) + " deg" +
          (w.removable.marginal ? "?" : ""))
             .c_str(),
         wedge_mode_words(w).c_str(), wedge_fos_text(w.fos).c_str(),

@@ -1,5 +1,6 @@
 #include "storage/field_report/tunnel_pictures.h"
 #include "storage/field_report/field_report.h"
+#include "storage/field_report/picture_style.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,16 +14,8 @@ namespace rockface::storage {
 
 namespace {
 
-const cv::Scalar kInk{30, 30, 30};
-const cv::Scalar kPaper{255, 255, 255};
 const cv::Scalar kNotSeen{205, 205, 205};
 const cv::Scalar kNotRock{95, 95, 95};
-constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
-
-void text(cv::Mat& img, const std::string& s, cv::Point at, double scale = 0.5,
-          const cv::Scalar& colour = kInk, int thickness = 1) {
-  cv::putText(img, s, at, kFont, scale, colour, thickness, cv::LINE_AA);
-}
 
 int text_width(const std::string& s, double scale = 0.5) {
   int base = 0;
@@ -46,8 +39,8 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
   const std::size_t rows = view.chainage.size(), cols = view.s.size();
   if (rows == 0 || cols == 0) {
     cv::Mat img(160, width_px, CV_8UC3, kPaper);
-    text(img, "Excavation against the design: nothing to show", {20, 50}, 0.6);
-    text(img, dev.message, {20, 90}, 0.45);
+    draw_label(img, "Excavation against the design: nothing to show", {20, 50}, 0.6);
+    draw_label(img, dev.message, {20, 90}, 0.45);
     return img;
   }
   const double perimeter = profile.perimeter();
@@ -126,25 +119,26 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
     const double s = profile.ray_hit(n.angle).s;
     const int x = x_of(s);
     cv::line(img, {x, top + h}, {x, top + h + 8}, kInk, 2);
-    text(img, n.name,
-         {std::clamp(x - text_width(n.name, 0.45) / 2, 2, img.cols - 90), top + h + 40}, 0.45);
+    draw_label(img, n.name,
+               {std::clamp(x - text_width(n.name, 0.45) / 2, 2, img.cols - 90), top + h + 40},
+               0.45);
   }
   for (int m = 0; m <= static_cast<int>(perimeter); ++m) {
     const int x = x_of(m);
     cv::line(img, {x, top + h}, {x, top + h + 4}, kInk, 1);
-    if (m % 2 == 0) text(img, std::to_string(m), {x - 4, top + h + 20}, 0.38);
+    if (m % 2 == 0) draw_label(img, std::to_string(m), {x - 4, top + h + 20}, 0.38);
   }
-  text(img, "m along the design line",
-       {left + w - text_width("m along the design line", 0.4), top + h + 20 + 34}, 0.4);
+  draw_label(img, "m along the design line",
+             {left + w - text_width("m along the design line", 0.4), top + h + 20 + 34}, 0.4);
   // Chainage up the side, the face at the top.
   const int ticks = std::min<int>(6, static_cast<int>(rows));
   for (int k = 0; k < ticks; ++k) {
     const std::size_t i = ticks == 1 ? 0 : k * (rows - 1) / (ticks - 1);
     const int y = top + h - static_cast<int>(std::lround((i + 0.5) * h / rows));
     cv::line(img, {left - 5, y}, {left, y}, kInk, 1);
-    text(img, report_number(view.chainage[i], 2), {6, y + 5}, 0.42);
+    draw_label(img, report_number(view.chainage[i], 2), {6, y + 5}, 0.42);
   }
-  text(img, "chainage (m), face at the top", {6, top - 8}, 0.42);
+  draw_label(img, "chainage (m), face at the top", {6, top - 8}, 0.42);
 
   // Colour scale, cm.
   const int bar_y = top + h + 66, bar_w = std::min(w, 420), bar_x = left;
@@ -153,9 +147,9 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
              deviation_colour(2.0 * x / (bar_w - 1) - 1), 1);
   cv::rectangle(img, {bar_x, bar_y}, {bar_x + bar_w, bar_y + 14}, kInk, 1);
   const int cm = static_cast<int>(std::lround(extent * 100));
-  text(img, "-" + std::to_string(cm) + " cm under", {bar_x, bar_y + 32}, 0.4);
-  text(img, "0", {bar_x + bar_w / 2 - 4, bar_y + 32}, 0.4);
-  text(img, "+" + std::to_string(cm) + " cm over", {bar_x + bar_w - 80, bar_y + 32}, 0.4);
+  draw_label(img, "-" + std::to_string(cm) + " cm under", {bar_x, bar_y + 32}, 0.4);
+  draw_label(img, "0", {bar_x + bar_w / 2 - 4, bar_y + 32}, 0.4);
+  draw_label(img, "+" + std::to_string(cm) + " cm over", {bar_x + bar_w - 80, bar_y + 32}, 0.4);
   const int tol_x =
       bar_x +
       static_cast<int>(std::lround((0.5 - dev.underbreak_tolerance_m / extent / 2) * bar_w));
@@ -163,20 +157,20 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
   const std::string legend = "black outline: underbreak beyond " +
                              report_number(dev.underbreak_tolerance_m * 100, 0) +
                              " cm;  hatched: not seen;  dark: range pole";
-  text(img, legend, {bar_x, bar_y + 54}, 0.4);
+  draw_label(img, legend, {bar_x, bar_y + 54}, 0.4);
 
   const std::string title = "Round ch " + report_number(view.chainage.front(), 2) + " to " +
                             report_number(view.chainage.back(), 2) + ": overbreak " +
                             report_number(dev.overbreak_volume_m3, 2) + " m3, underbreak " +
                             report_number(dev.underbreak_volume_m3, 2) + " m3, seen " +
                             report_number(dev.seen_fraction * 100, 0) + " %";
-  text(img, title, {6, 20}, 0.5);
+  draw_label(img, title, {6, 20}, 0.5);
   if (dev.has_underbreak)
-    text(img,
-         "deepest underbreak " + report_number(dev.max_underbreak_m * 100, 1) + " cm at ch " +
-             report_number(dev.max_underbreak.chainage, 2) + ", " +
-             report_number(dev.max_underbreak.s, 2) + " m along the line (x)",
-         {6, 42}, 0.42);
+    draw_label(img,
+               "deepest underbreak " + report_number(dev.max_underbreak_m * 100, 1) + " cm at ch " +
+                   report_number(dev.max_underbreak.chainage, 2) + ", " +
+                   report_number(dev.max_underbreak.s, 2) + " m along the line (x)",
+               {6, 42}, 0.42);
   return img;
 }
 
@@ -192,9 +186,9 @@ cv::Mat drive_picture(const tunnel::DriveSets& drive, int width_px, int height_p
   const int left = 70, right = 190, top = 40, gap = 50, bottom = 50;
   const int w = width_px - left - right;
   const int ph = (height_px - top - gap - bottom) / 2;
-  text(img, "Joint sets along the drive", {8, 24}, 0.6);
+  draw_label(img, "Joint sets along the drive", {8, 24}, 0.6);
   if (drive.visits.empty()) {
-    text(img, "no visit is placed in the tunnel", {left, top + 40}, 0.5);
+    draw_label(img, "no visit is placed in the tunnel", {left, top + 40}, 0.5);
     return img;
   }
   double c0 = drive.visits.front().chainage, c1 = c0;
@@ -225,9 +219,9 @@ cv::Mat drive_picture(const tunnel::DriveSets& drive, int width_px, int height_p
     for (double v = p.lo; v <= p.hi + 1e-9; v += step) {
       const int y = p.y0 + ph - static_cast<int>(std::lround((v - p.lo) / (p.hi - p.lo) * ph));
       cv::line(img, {left, y}, {left + w, y}, cv::Scalar(225, 225, 225), 1);
-      text(img, report_number(v, 0), {left - 40, y + 5}, 0.4);
+      draw_label(img, report_number(v, 0), {left - 40, y + 5}, 0.4);
     }
-    text(img, p.label, {left, p.y0 - 6}, 0.45);
+    draw_label(img, p.label, {left, p.y0 - 6}, 0.45);
   }
   // Chainage ticks on both panels' bottom.
   const double span = c1 - c0;
@@ -235,9 +229,9 @@ cv::Mat drive_picture(const tunnel::DriveSets& drive, int width_px, int height_p
   for (double c = std::ceil(c0 / tick) * tick; c <= c1; c += tick) {
     const int x = x_of(c);
     for (const auto& p : panels) cv::line(img, {x, p.y0 + ph}, {x, p.y0 + ph + 4}, kInk, 1);
-    text(img, report_number(c, tick < 1 ? 1 : 0), {x - 12, panels[1].y0 + ph + 20}, 0.4);
+    draw_label(img, report_number(c, tick < 1 ? 1 : 0), {x - 12, panels[1].y0 + ph + 20}, 0.4);
   }
-  text(img, "chainage (m)", {left + w - 100, panels[1].y0 + ph + 40}, 0.42);
+  draw_label(img, "chainage (m)", {left + w - 100, panels[1].y0 + ph + 40}, 0.42);
 
   int legend_y = top + 10;
   for (const auto& track : drive.tracks) {
@@ -270,7 +264,7 @@ cv::Mat drive_picture(const tunnel::DriveSets& drive, int width_px, int height_p
       const char* mark = e.kind == tunnel::TrackEvent::Kind::appears    ? "new"
                          : e.kind == tunnel::TrackEvent::Kind::vanishes ? "gone"
                                                                         : "turns";
-      text(img, mark, {x + 6, panels[1].y0 + 14 + 14 * (track.id % 4)}, 0.4, colour);
+      draw_label(img, mark, {x + 6, panels[1].y0 + 14 + 14 * (track.id % 4)}, 0.4, colour);
       cv::line(img, {x, panels[1].y0}, {x, panels[1].y0 + ph}, colour, 1, cv::LINE_4);
     }
     const auto& m = track.points.back();
@@ -278,18 +272,18 @@ cv::Mat drive_picture(const tunnel::DriveSets& drive, int width_px, int height_p
                         "/" + report_number(m.dipdir_deg, 0);
     cv::rectangle(img, {left + w + 14, legend_y - 10}, {left + w + 26, legend_y + 2}, colour,
                   cv::FILLED);
-    text(img, entry, {left + w + 32, legend_y}, 0.42);
+    draw_label(img, entry, {left + w + 32, legend_y}, 0.42);
     legend_y += 18;
     std::string flags;
     if (track.appears) flags += "new ";
     if (track.turns) flags += "turns ";
     if (track.vanishes) flags += "gone";
     if (!flags.empty()) {
-      text(img, "  " + flags, {left + w + 32, legend_y}, 0.38, colour);
+      draw_label(img, "  " + flags, {left + w + 32, legend_y}, 0.38, colour);
       legend_y += 18;
     }
   }
-  text(img, "ringed: turned beyond its cone", {left + w + 14, top + 2 * ph + gap}, 0.36);
+  draw_label(img, "ringed: turned beyond its cone", {left + w + 14, top + 2 * ph + gap}, 0.36);
   return img;
 }
 

@@ -8,15 +8,13 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/blocks/mass_properties.h"
+#include "storage/field_report/picture_style.h"
 
 namespace rockface::storage {
 
 namespace {
 
-const cv::Scalar kInk{30, 30, 30};
-const cv::Scalar kPaper{255, 255, 255};
 const cv::Scalar kRock{200, 200, 200};
-constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
 
 cv::Scalar place_colour(tunnel::WedgePlace p, int k) {
   static const cv::Scalar roof[] = {{60, 60, 220}, {40, 120, 240}, {90, 90, 200}};
@@ -38,11 +36,6 @@ cv::Scalar set_colour(int index) {
   static const cv::Scalar c[] = {{50, 50, 210},  {200, 110, 30}, {40, 160, 40}, {170, 60, 170},
                                  {30, 160, 200}, {140, 140, 30}, {90, 90, 90},  {200, 60, 100}};
   return c[((index % 8) + 8) % 8];
-}
-
-void text(cv::Mat& img, const std::string& s, cv::Point at, double scale = 0.5,
-          const cv::Scalar& colour = kInk) {
-  cv::putText(img, s, at, kFont, scale, colour, 1, cv::LINE_AA);
 }
 
 void dashed(cv::Mat& img, cv::Point2d a, cv::Point2d b, const cv::Scalar& c) {
@@ -96,7 +89,7 @@ cv::Mat wedge_section_picture(const tunnel::WedgeAnalysis& a, int width_px) {
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (const auto& p : w.outline) c += p;
     c /= static_cast<double>(w.outline.size());
-    text(img, w.id, to_px(c) + cv::Point2d(-10, 5), 0.5);
+    draw_label(img, w.id, to_px(c) + cv::Point2d(-10, 5), 0.5);
   }
   cv::polylines(img, std::vector<std::vector<cv::Point>>{hole}, true, kInk, 2, cv::LINE_AA);
   for (const auto& w : a.wedges) {
@@ -104,18 +97,18 @@ cv::Mat wedge_section_picture(const tunnel::WedgeAnalysis& a, int width_px) {
     for (int i = 0; i < 3; ++i)
       dashed(img, to_px(w.outline[i]), to_px(w.outline[(i + 1) % 3]), place_colour(w.place, 0));
     const Eigen::Vector2d c = (w.outline[0] + w.outline[1] + w.outline[2]) / 3.0;
-    text(img, w.id, to_px(c) + cv::Point2d(-10, 5), 0.45, place_colour(w.place, 0));
+    draw_label(img, w.id, to_px(c) + cv::Point2d(-10, 5), 0.45, place_colour(w.place, 0));
   }
   cv::rectangle(img, {0, 0}, {width_px, top - 10}, kPaper, cv::FILLED);
-  text(img, "Wedges around the excavation, looking along the drive (face wedges dashed)", {12, 26},
-       0.55);
+  draw_label(img, "Wedges around the excavation, looking along the drive (face wedges dashed)",
+             {12, 26}, 0.55);
   // A one- or five-metre scale bar.
   const double bar_m = span > 12 ? 5 : 1;
   const cv::Point b0(margin, height - 14),
       b1(margin + static_cast<int>(bar_m * scale), height - 14);
   cv::line(img, b0, b1, kInk, 3);
-  text(img, std::to_string(static_cast<int>(bar_m)) + " m", b1 + cv::Point(8, 4), 0.45);
-  if (a.wedges.empty()) text(img, "no removable wedge", {margin, top + 20}, 0.6);
+  draw_label(img, std::to_string(static_cast<int>(bar_m)) + " m", b1 + cv::Point(8, 4), 0.45);
+  if (a.wedges.empty()) draw_label(img, "no removable wedge", {margin, top + 20}, 0.6);
   return img;
 }
 
@@ -128,8 +121,8 @@ cv::Mat wedge_perspective_picture(const tunnel::WedgeAnalysis& a, int count, int
   const int n = std::max(1, static_cast<int>(largest.size()));
   const int cell = width_px / n, height = cell + 40;
   cv::Mat img(height, width_px, CV_8UC3, kPaper);
-  text(img, "The largest wedges in perspective (joint faces by set, excavation face grey)",
-       {12, 24}, 0.5);
+  draw_label(img, "The largest wedges in perspective (joint faces by set, excavation face grey)",
+             {12, 24}, 0.5);
   const tunnel::TunnelFrame& f = a.frame;
   // Seen from behind, below and to the left of the wedge, looking at it.
   const Eigen::Vector3d view =
@@ -175,9 +168,9 @@ cv::Mat wedge_perspective_picture(const tunnel::WedgeAnalysis& a, int count, int
     char label[128];
     std::snprintf(label, sizeof label, "%s %s, %.2f m3", w.id.c_str(),
                   tunnel::wedge_place_name(w.place), w.mass.volume);
-    text(img, label, {c * cell + 10, height - 12}, 0.45);
+    draw_label(img, label, {c * cell + 10, height - 12}, 0.45);
   }
-  if (largest.empty()) text(img, "no removable wedge", {12, 70}, 0.6);
+  if (largest.empty()) draw_label(img, "no removable wedge", {12, 70}, 0.6);
   return img;
 }
 

@@ -125,7 +125,7 @@ struct RingStats {
   bool inside_image = true;
 };
 
-double median(std::vector<double> v) {
+double median_of(std::vector<double> v) {
   if (v.empty()) return 0;
   auto m = v.begin() + v.size() / 2;
   std::nth_element(v.begin(), m, v.end());
@@ -208,8 +208,8 @@ RingStats ring_stats(const cv::Mat& g, const cv::RotatedRect& e, const TargetDet
     whites.push_back(r.white);
     blacks.push_back(r.black);
   }
-  s.white = median(whites);
-  s.black = median(blacks);
+  s.white = median_of(whites);
+  s.black = median_of(blacks);
   s.printed_rays = static_cast<double>(printed) / kRingRays;
   if (s.printed_rays < kMinPrintedRays) return s;  // no target: its ring's width is moot
   std::vector<double> outers;
@@ -219,7 +219,7 @@ RingStats ring_stats(const cv::Mat& g, const cv::RotatedRect& e, const TargetDet
     const double outer = ring_outer_edge(g, e, r.u, r.f_black, r.black, rise, r.step, r.radius);
     if (outer > 0) outers.push_back(outer);
   }
-  if (outers.size() >= kRingRays / 2) s.ring_ratio = median(outers);
+  if (outers.size() >= kRingRays / 2) s.ring_ratio = median_of(outers);
   return s;
 }
 
@@ -301,7 +301,7 @@ Edge subpixel_edge(const cv::Mat& g, const Candidate& c, const TargetDetectorOpt
     }
     if (found_mid && at_high >= 0 && at_low >= 0) widths.push_back(at_low - at_high);
   }
-  edge.median_width_px = widths.empty() ? 1e9 : median(widths);
+  edge.median_width_px = widths.empty() ? 1e9 : median_of(widths);
   return edge;
 }
 
@@ -330,7 +330,7 @@ EllipseFit robust_ellipse_fit(const std::vector<cv::Point2f>& points) {
   fit.ellipse = cv::fitEllipse(points);
   std::vector<double> residuals;
   for (const auto& p : points) residuals.push_back(ellipse_residual(p, fit.ellipse));
-  const double limit = std::max(kOutlierPx, kOutlierFactor * median(residuals));
+  const double limit = std::max(kOutlierPx, kOutlierFactor * median_of(residuals));
   std::vector<cv::Point2f> inliers;
   for (std::size_t i = 0; i < points.size(); ++i)
     if (residuals[i] <= limit) inliers.push_back(points[i]);
