@@ -14,7 +14,7 @@ struct FrameLog {
   std::vector<PlacedText> placed;
 };
 
-FrameLog& log() {
+FrameLog& placed_log() {
   static FrameLog l;
   return l;
 }
@@ -41,7 +41,7 @@ void draw_text(ImDrawList* draw, ImVec2 at, ImU32 colour, std::string_view text,
   // The text rules: its width against the room from where it starts to the
   // picture's right edge.
   record_drawn_text(text, size.x + 2 * grow, area.max.x - (at.x - grow));
-  FrameLog& l = log();
+  FrameLog& l = placed_log();
   if (l.frame != ImGui::GetFrameCount()) {
     l.frame = ImGui::GetFrameCount();
     l.placed.clear();
@@ -51,7 +51,7 @@ void draw_text(ImDrawList* draw, ImVec2 at, ImU32 colour, std::string_view text,
 }
 
 std::vector<PlacedText> placed_texts() {
-  const FrameLog& l = log();
+  const FrameLog& l = placed_log();
   if (l.frame != ImGui::GetFrameCount()) return {};
   return l.placed;
 }

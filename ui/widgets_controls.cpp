@@ -15,7 +15,7 @@ namespace {
 // ImGui 1.86 insets a slider's grab by this from its frame (SliderBehaviorT).
 constexpr float kGrabPaddingPx = 2;
 
-std::string printed(const char* format, double value) {
+std::string value_text(const char* format, double value) {
   char buf[128];
   std::snprintf(buf, sizeof buf, format, value);
   return buf;
@@ -54,7 +54,7 @@ bool slider(TouchTargets& targets, const std::string& name, float* value, float 
   const float fraction = hi > lo ? (*value - lo) / (hi - lo) : 0.0f;
   const GrabRect grab = slider_grab(min, max, fraction, side);
   targets.record(name + " grab", grab.min, grab.max);
-  record_in_frame(printed(format, *value));
+  record_in_frame(value_text(format, *value));
   return changed;
 }
 
@@ -138,7 +138,7 @@ bool number_field(TouchTargets& targets, const std::string& name, double* value,
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   if (step <= 0) {
     targets.record(name, min, max);
-    record_in_frame(printed(format, *value));
+    record_in_frame(value_text(format, *value));
     return changed;
   }
   // ImGui 1.86's InputScalar: the field, then "-" and "+" squares of the
@@ -149,7 +149,7 @@ bool number_field(TouchTargets& targets, const std::string& name, double* value,
   targets.record(name + " -", ImVec2(minus, min.y), ImVec2(minus + button, max.y));
   targets.record(name + " +", ImVec2(plus, min.y), max);
   const float room = minus - gap - min.x - 2 * ImGui::GetStyle().FramePadding.x;
-  const std::string shown = printed(format, *value);
+  const std::string shown = value_text(format, *value);
   record_drawn_text(shown, ImGui::CalcTextSize(shown.c_str()).x, room);
   for (const char* sign : {"-", "+"}) record_drawn_text(sign, ImGui::CalcTextSize(sign).x, button);
   return changed;

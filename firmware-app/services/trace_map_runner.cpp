@@ -115,7 +115,7 @@ bool same_set(const storage::JointSet& a, const storage::JointSet& b) {
          a.censored_traces == b.censored_traces && a.persistence_m == b.persistence_m;
 }
 
-std::string degrees(double v) {
+std::string angle_words(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f°", v);
   return text;
@@ -186,7 +186,7 @@ std::string remake_trace_joints(storage::ProjectStore& store, storage::RecordId 
   if (trace.empty()) return {};
   for (const auto& j : joints)
     if (j.label == trace)
-      return "joint " + j.label + " " + degrees(j.dip_deg) + " / " + degrees(j.dipdir_deg) +
+      return "joint " + j.label + " " + angle_words(j.dip_deg) + " / " + angle_words(j.dipdir_deg) +
              (j.set_label.empty() ? std::string() : " in set " + j.set_label);
   for (const auto& w : table.without_joint)
     if (w.rfind(trace + ": ", 0) == 0) return "no joint (" + w.substr(trace.size() + 2) + ")";
