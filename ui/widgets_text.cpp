@@ -110,11 +110,6 @@ void progress_bar(float fraction, std::string_view whole, float height) {
   record_drawn_text(text, text_width(text), room);
 }
 
-void label_on_picture(ImDrawList* draw, ImVec2 at, ImU32 colour, std::string_view text) {
-  draw->AddText(at, colour, text.data(), text.data() + text.size());
-  record_drawn_text(text, text_width(text), draw->GetClipRectMax().x - at.x);
-}
-
 void clear_drawn_text() {
   log().clear();
 }

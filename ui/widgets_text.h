@@ -44,10 +44,6 @@ void progress_bar(float fraction, std::string_view text, float height);
 // bar's text) with its width and the width it had.
 void record_drawn_text(std::string_view text, float width, float available);
 
-// Text drawn on a picture (the 3D image, the stereonet) at `at`, recorded
-// with the room to the picture's right edge (the draw list's clip rect).
-void label_on_picture(ImDrawList* draw, ImVec2 at, ImU32 colour, std::string_view text);
-
 // The strings drawn since the frame began (TabletApp clears it per frame).
 void clear_drawn_text();
 const std::vector<DrawnText>& drawn_text();

@@ -21,6 +21,7 @@
 #include "storage/export_scene_json.h"
 #include "storage/project_store.h"
 #include "storage/scene.h"
+#include "ui/format.h"
 
 namespace rockface::app {
 
@@ -115,12 +116,6 @@ bool same_set(const storage::JointSet& a, const storage::JointSet& b) {
          a.censored_traces == b.censored_traces && a.persistence_m == b.persistence_m;
 }
 
-std::string angle_words(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f°", v);
-  return text;
-}
-
 // The visit's joint table remade from its stored traces (visit_trace_joints.h):
 // the one-trace joints and the sets replaced where they changed (a row
 // that stays the same is not rewritten, so the office gets only the
@@ -186,7 +181,7 @@ std::string remake_trace_joints(storage::ProjectStore& store, storage::RecordId 
   if (trace.empty()) return {};
   for (const auto& j : joints)
     if (j.label == trace)
-      return "joint " + j.label + " " + angle_words(j.dip_deg) + " / " + angle_words(j.dipdir_deg) +
+      return "joint " + j.label + " " + ui::format::dip_and_direction(j.dip_deg, j.dipdir_deg) +
              (j.set_label.empty() ? std::string() : " in set " + j.set_label);
   for (const auto& w : table.without_joint)
     if (w.rfind(trace + ": ", 0) == 0) return "no joint (" + w.substr(trace.size() + 2) + ")";

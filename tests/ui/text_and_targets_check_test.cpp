@@ -14,6 +14,7 @@
 
 #include "core/measure/mesh_picker.h"
 #include "tests/support/test_paths.h"
+#include "ui/overlay_text.h"
 #include "ui/text_check.h"
 #include "ui/text_coverage.h"
 #include "ui/trace_marker.h"
@@ -127,10 +128,9 @@ TEST(TextCoverage, AHaloedLabelOnAPictureCountsOnce) {
   Frame f;
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 at(300, 300);
-  for (int dx = -1; dx <= 1; ++dx)
-    for (int dy = -1; dy <= 1; ++dy)
-      if (dx || dy) draw->AddText(ImVec2(at.x + dx, at.y + dy), IM_COL32(0, 0, 0, 255), "5 m");
-  label_on_picture(draw, at, IM_COL32(255, 255, 255, 255), "5 m");
+  // draw_text's dark halo: eight copies one pixel around the label.
+  draw_text(draw, at, IM_COL32(255, 255, 255, 255), "5 m", {ImVec2(0, 0), ImVec2(1280, 800)},
+            TextHalo::dark);
   // A second, separate "5 m" drawn unrecorded is still caught.
   draw->AddText(ImVec2(600, 300), IM_COL32(0, 0, 0, 255), "5 m");
   EXPECT_EQ(without_spaces(f.unrecorded()), "5m");
@@ -250,7 +250,7 @@ TEST(TextCoverage, NoScreenDrawsTextOrControlsPastTheWrappers) {
       R"(Button|SmallButton|ProgressBar|RadioButton|MenuItem|SetTooltip|TreeNode|BeginTabItem|)"
       R"(BeginPopupModal)\(|->AddText\()");
   // The dark halo of a label on the 3D image: copies of a label recorded
-  // once through label_on_picture (the glyph check counts a halo once).
+  // once through draw_text (the glyph check counts a halo once).
   const std::regex halo(R"(if \(dx \|\| dy\) draw->AddText\()");
   const fs::path ui = fs::path(ROCKFACE_SOURCE_DIR) / "ui";
   int files = 0;
