@@ -130,7 +130,9 @@ void walk_every_screen(Walk& w) {
   w.tap("Model");
   w.tap("Photograph");  // the targets' rings and labels on the photograph
   w.tap("3D image");
-  w.tap("Mapping");
+  // The Model tab's load of the 3D image may still run on the worker, and
+  // the pair buttons are disabled until it is done.
+  w.tap_and_wait("Mapping");
   for (std::size_t k = 0; k < app.session->pairs().size(); ++k) {
     const std::string pair = "Pair " + std::to_string(k + 1);
     if (app.targets.find(pair)) w.tap_and_wait(pair);
