@@ -60,6 +60,20 @@ void require_two_distinct(const Reader& r, const std::vector<V>& v, const std::s
   r.fail(path, "all " + std::to_string(v.size()) + " picks are the same point: a one-point trace");
 }
 
+// A compass reading of a trace's joint (issue 27): dip [0, 90] and dip
+// direction [0, 360] in degrees, as a Clar compass reads them.
+measure::CompassReading compass(const Reader& r, const json& v, const std::string& path) {
+  if (!v.is_object()) r.fail(path, "must be an object {\"dip\": .., \"dip_direction\": ..}");
+  measure::CompassReading reading;
+  reading.dip_deg = r.number_in(r.require(v, path, "dip"), path + ".dip", 0, 90);
+  reading.dip_direction_deg =
+      r.number_in(r.require(v, path, "dip_direction"), path + ".dip_direction", 0, 360);
+  for (const auto& [key, value] : v.items())
+    if (key != "dip" && key != "dip_direction")
+      r.fail(path + "." + key, "is not a field of a compass reading (dip, dip_direction)");
+  return reading;
+}
+
 }  // namespace
 
 Picks read_picks(const json& object, const std::string& source, const std::string& base) {
@@ -124,6 +138,8 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
             r.fail(path + ".cost", "\"" + pick.cost + "\" is not darkness, gradient or curvature");
         }
       }
+      if (auto* c = r.optional(t, path, "compass"))
+        pick.compass = compass(r, *c, path + ".compass");
       picks.traces.push_back(std::move(pick));
     }
   }

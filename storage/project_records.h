@@ -186,6 +186,11 @@ struct Measurement {
   // trace proposal accepted as found) or "corrected" (a proposal redrawn by
   // least-cost tracing between its dragged ends). Areas and points: "hand".
   std::string origin = "hand";
+  // trace (issue 27, schema 9): a compass reading of its joint, degrees, when
+  // its plane (dip_deg / dipdir_deg) is that reading; compass_off_deg: the
+  // larger angle by which the trace (its line, its fitted plane) leaves the
+  // plane read (core/measure/compass_reading.h; the note says it in words).
+  std::optional<double> compass_dip_deg, compass_dipdir_deg, compass_off_deg;
 };
 
 struct JointSet {

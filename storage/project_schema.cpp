@@ -443,13 +443,24 @@ ALTER TABLE measurement ADD COLUMN origin TEXT NOT NULL DEFAULT 'hand'
   CHECK (origin IN ('hand', 'proposed', 'corrected'));
 )sql";
 
+// Version 9: a trace's compass reading (issue 27): the dip and dip direction
+// a Clar compass read on the joint where the trace runs (the trace's plane
+// then), and the angle by which the trace leaves that plane. Columns only:
+// no earlier trace had a reading.
+constexpr const char* kVersion8To9 = R"sql(
+ALTER TABLE measurement ADD COLUMN compass_dip REAL CHECK (compass_dip BETWEEN 0 AND 90);
+ALTER TABLE measurement ADD COLUMN compass_dipdir REAL
+  CHECK (compass_dipdir >= 0 AND compass_dipdir <= 360);
+ALTER TABLE measurement ADD COLUMN compass_off_deg REAL;
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
 constexpr Step kSteps[] = {{2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4},
                            {5, kVersion4To5}, {6, kVersion5To6}, {7, kVersion6To7},
-                           {8, kVersion7To8}};
+                           {8, kVersion7To8}, {9, kVersion8To9}};
 
 }  // namespace
 

@@ -20,6 +20,8 @@
 //   6  a UUID on every record, made when it is created, and the record of
 //      what was synced to the office server (issue 24).
 //   7  the rock-mass classification form entered per visit (issue 23).
+//   8  where a trace came from: by hand, a proposal, a corrected one (issue 25).
+//   9  a trace's compass reading and how far the trace leaves it (issue 27).
 #include <cstdint>
 
 #include "storage/project_sqlite.h"
@@ -28,7 +30,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 8;
+constexpr int kCurrentVersion = 9;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then

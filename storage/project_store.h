@@ -125,6 +125,12 @@ class ProjectStore {
   // Deletes one measurement and the joints fitted from it, in one
   // transaction; InputError when there is no such measurement.
   void delete_measurement(RecordId measurement_id);
+  // Issue 27: a stored trace's plane as measured again with its compass
+  // reading given or cleared (`measured`: its dip, dip direction, sigma, fit
+  // RMS, note and compass fields), in place: the trace keeps its id and
+  // UUID (the office gets a new revision of it). Logged; InputError when
+  // there is no such trace or the values are not an orientation.
+  void set_trace_plane(RecordId measurement_id, const Measurement& measured);
   // Deletes joints and joint sets of one visit, in one transaction;
   // InputError naming the row when one is not the visit's, or when a set to
   // delete is still named by a joint that stays.

@@ -71,13 +71,22 @@ std::vector<RecordId> ProjectStore::save_measurements(
                        "must be 'hand', 'proposed' or 'corrected', not '" + m.origin + "'");
     if (m.origin != "hand" && m.kind != Measurement::Kind::trace)
       throw InputError(where + ".origin", "only a trace is proposed or corrected");
+    if (m.compass_dip_deg.has_value() != m.compass_dipdir_deg.has_value())
+      throw InputError(where + ".compass", "dip and dip direction must be given together");
+    if (m.compass_dip_deg) {
+      if (m.kind != Measurement::Kind::trace)
+        throw InputError(where + ".compass", "only a trace carries a compass reading");
+      require_orientation(*m.compass_dip_deg, *m.compass_dipdir_deg, where + ".compass");
+    }
+    if (m.compass_off_deg) require_finite(*m.compass_off_deg, where + ".compass_off_deg");
   }
   WriteTransaction tx(db_, doing);
   Statement st(db_,
                "INSERT INTO measurement (visit_id, model_id, kind, label, joint_label, points, "
                "dip, dipdir, fit_rms_m, rock_side, created_at, photo, photo_capture_id, pixels, "
-               "sigma_deg, trace_length_m, censored, note, origin) VALUES (?, ?, ?, ?, ?, ?, ?, ?, "
-               "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+               "sigma_deg, trace_length_m, censored, note, origin, compass_dip, compass_dipdir, "
+               "compass_off_deg) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+               "?, ?, ?)",
                doing);
   std::vector<RecordId> ids;
   std::string labels;
@@ -102,7 +111,10 @@ std::vector<RecordId> ProjectStore::save_measurements(
         .bind(16, m.trace_length_m)
         .bind(17, m.censored)
         .bind(18, m.note)
-        .bind(19, m.origin);
+        .bind(19, m.origin)
+        .bind(20, m.compass_dip_deg)
+        .bind(21, m.compass_dipdir_deg)
+        .bind(22, m.compass_off_deg);
     st.run();
     ids.push_back(db_.last_insert_id());
     labels += (labels.empty() ? "" : " ") + m.label;
@@ -114,12 +126,14 @@ std::vector<RecordId> ProjectStore::save_measurements(
 }
 
 std::vector<Measurement> ProjectStore::list_measurements(std::optional<RecordId> visit_id) {
-  Statement st(db_,
-               "SELECT id, visit_id, model_id, kind, label, joint_label, points, dip, dipdir, "
-               "fit_rms_m, rock_side, created_at, photo, photo_capture_id, pixels, sigma_deg, "
-               "trace_length_m, censored, note, origin FROM measurement WHERE (?1 IS NULL OR "
-               "visit_id = ?1) ORDER BY id",
-               "listing measurements");
+  Statement st(
+      db_,
+      "SELECT id, visit_id, model_id, kind, label, joint_label, points, dip, dipdir, "
+      "fit_rms_m, rock_side, created_at, photo, photo_capture_id, pixels, sigma_deg, "
+      "trace_length_m, censored, note, origin, compass_dip, compass_dipdir, compass_off_deg "
+      "FROM measurement WHERE (?1 IS NULL OR "
+      "visit_id = ?1) ORDER BY id",
+      "listing measurements");
   st.bind(1, visit_id);
   std::vector<Measurement> out;
   while (st.step()) {
@@ -146,6 +160,9 @@ std::vector<Measurement> ProjectStore::list_measurements(std::optional<RecordId>
     m.censored = row.next_bool();
     m.note = row.next_text();
     m.origin = row.next_text();
+    m.compass_dip_deg = row.next_optional_double();
+    m.compass_dipdir_deg = row.next_optional_double();
+    m.compass_off_deg = row.next_optional_double();
     out.push_back(std::move(m));
   }
   return out;

@@ -12,6 +12,7 @@
 #include <opencv2/core.hpp>
 
 #include "ui/background_task.h"
+#include "ui/compass_entry.h"
 #include "ui/face_outline.h"
 #include "ui/field_services.h"
 #include "ui/map_blocks.h"
@@ -71,6 +72,8 @@ struct MappingState {
   // instead of a trace while `outlining`.
   FaceOutline outline;
   bool outlining = false;
+  // Issue 27: a compass reading for the trace being marked or a saved one.
+  CompassEntry compass;
 };
 
 struct AppState {

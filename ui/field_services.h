@@ -19,6 +19,7 @@
 #include "camera/camera.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
+#include "core/measure/compass_reading.h"
 #include "core/measure/proposals/trace_proposals.h"
 #include "core/rockmass/classification_form.h"
 #include "storage/project_records.h"
@@ -108,6 +109,8 @@ struct MapVerdicts {
 struct MapEdit {
   storage::RecordId visit_id = 0;
   const measure::MeshPicker* picker = nullptr;  // the 3D image on display (face frame)
+  std::optional<storage::RecordId> model_id;    // its model: a trace of another pair's is
+                                                // measured on that pair's 3D image (issue 27)
   measure::MeasureSettings settings;            // its point precision
   // A trace to store: its points, photograph pixels, model, joint, origin.
   std::optional<storage::Measurement> trace;
@@ -120,6 +123,11 @@ struct MapEdit {
   const measure::PhotoView* view = nullptr;
   std::optional<storage::RecordId> outline_model_id, outline_capture_id;
   std::optional<storage::RecordId> remove_trace;  // a stored trace taken back
+  // Issue 27: a compass reading given (or, with `compass` empty, cleared)
+  // for the stored trace `compass_trace`: its plane and joint remade. A trace
+  // to store (`trace`) carries its reading in its compass fields.
+  std::optional<storage::RecordId> compass_trace;
+  std::optional<measure::CompassReading> compass;
 };
 
 class TraceMapRunner {

@@ -126,7 +126,10 @@ MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& c,
     if (!t.points.empty()) {
       std::vector<Eigen::Vector3d> relative;
       for (const auto& p : t.points) relative.push_back(p - c.datum);
-      mt.m = measure_trace_points(*c.picker, t.id, relative, c.settings, where);
+      // A further pair's trace given by its points (a visit's stored trace
+      // measured again) lies on that pair's 3D image, as its taps would.
+      const MeshPicker& on = t.pair > 1 ? picker_of(c, pair_photo(t.pair, "left")) : *c.picker;
+      mt.m = measure_trace_points(on, t.id, relative, c.settings, where);
     } else if (!t.pixels.empty()) {
       const PhotoView& view = view_of(c, t.photo, where);
       require_in_image(view, t.pixels, where + ".pixels");
@@ -164,6 +167,8 @@ MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& c,
       mt.mean_cost = path.mean_cost;
       mt.m = measure_trace(*c.picker, view, t.id, on_surface, c.settings, where);
     }
+    // A compass reading gives the plane (and says how the trace lies in it).
+    if (t.compass) mt.compass = apply_compass_reading(mt.m, *t.compass, where + ".compass");
     out.traces.push_back(std::move(mt));
   }
   for (const auto& a : picks.areas) {

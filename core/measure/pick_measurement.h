@@ -11,6 +11,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "core/measure/compass_reading.h"
 #include "core/measure/joint_sets.h"
 #include "core/measure/mesh_picker.h"
 #include "core/measure/photo_view.h"
@@ -39,6 +40,8 @@ struct MeasuredTrace {
   double mean_cost = 0;               // semi-automatic: per pixel step, [0, 1]
   std::vector<Eigen::Vector2d> taps;  // what was picked (the ends for semi-automatic)
   std::string origin = "hand";        // as picked: "hand" | "proposed" | "corrected"
+  // Its plane is a compass reading (the pick's): how the trace lies in it.
+  std::optional<CompassCheck> compass;
 };
 
 struct MeasuredArea {

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include <Eigen/Core>
+
+#include "core/measure/compass_reading.h"
 namespace rockface::measure {
 
 struct TracePick {
@@ -31,6 +33,10 @@ struct TracePick {
   // "proposed" (a trace proposal accepted as found: `rockface propose`),
   // "corrected" (a proposal redrawn between its dragged ends).
   std::string origin = "hand";
+  // A compass reading of the joint where the trace runs (issue 27): its
+  // plane is then the reading's, checked against the trace
+  // (compass_reading.h). Field `compass` {dip, dip_direction}.
+  std::optional<CompassReading> compass;
 };
 
 struct AreaPick {

@@ -67,4 +67,18 @@ inline constexpr double kSameDiscontinuityM = 0.05;
 inline constexpr double kFaceParallelDeg = 15.0;
 inline constexpr double kFaceShare = 0.5;
 
+// Compass readings of a trace (compass_reading.h, issue 27). A Clar compass
+// laid on the exposed joint reads its dip and dip direction to 1-2 degrees
+// (the paragraph of kMaxPlaneSigmaDeg): the reading's plane is given the
+// larger of the two as its one-sigma uncertainty.
+inline constexpr double kCompassSigmaDeg = 2.0;
+// The trace must lie in the plane read: its line (and the plane fitted to
+// it, where it has one) may leave that plane by the compass's own error
+// (2 degrees), the direction of a short trace on the 3D image (a 1 m trace
+// with 1 cm point precision: ~1 degree) and a joint's waviness over the
+// metre the compass does not span (a few degrees; ISRM first-order
+// roughness angles are typically 5-10 degrees); beyond this the reading or
+// the trace is taken for the wrong joint and the measurement is marginal.
+inline constexpr double kMaxTraceOffCompassDeg = 10.0;
+
 }  // namespace rockface::measure

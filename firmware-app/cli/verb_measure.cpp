@@ -54,6 +54,12 @@ int run_measure(MeasureOptions& o) {
             << measured.areas.size() << " areas, " << measured.points.size() << " points; "
             << measured.sets.size() << " joint sets\n";
   for (const auto& j : measured.joined) std::cout << measure::joined_note(j) << "\n";
+  // Issue 27: a plane given as a compass reading, and how the trace lies in it.
+  for (const auto& t : measured.traces)
+    if (t.compass)
+      std::printf("%s: compass %.1f/%.1f%s: %s\n", t.m.id.c_str(), t.compass->reading.dip_deg,
+                  t.compass->reading.dip_direction_deg, t.compass->marginal() ? " (marginal)" : "",
+                  t.m.plane.problem.c_str());
   for (const auto& s : measured.sets) {
     const auto pl = s.fisher.plane();
     std::printf("set %s: %zu planes, mean %.1f/%.1f, K %.1f, alpha95 %.1f deg\n", s.label.c_str(),

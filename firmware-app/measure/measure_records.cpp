@@ -56,6 +56,12 @@ std::vector<storage::Measurement> measurement_records(
     photo(m, t.m.picks);
     m.trace_length_m = t.m.length;
     m.censored = t.m.censored;
+    if (t.compass) {  // issue 27: the plane is this reading (360 stored as 0, both north)
+      m.compass_dip_deg = t.compass->reading.dip_deg;
+      m.compass_dipdir_deg = std::fmod(t.compass->reading.dip_direction_deg, 360.0);
+      m.compass_off_deg =
+          std::max(t.compass->trace_off_deg, t.compass->fitted_off_deg.value_or(0.0));
+    }
     out.push_back(std::move(m));
   }
   for (const auto& a : r.areas) {
@@ -105,7 +111,7 @@ std::vector<storage::Joint> joint_records(const measure::MeasuredPicks& r,
                                           storage::RecordId visit_id) {
   std::vector<storage::Joint> out;
   auto add = [&](const std::string& id, const char* type, const measure::PlaneEstimate& plane,
-                 std::optional<double> persistence) {
+                 std::optional<double> persistence, bool compass = false) {
     if (!plane.known) return;
     storage::Joint j;
     j.visit_id = visit_id;
@@ -114,12 +120,14 @@ std::vector<storage::Joint> joint_records(const measure::MeasuredPicks& r,
     j.dip_deg = rad_to_deg(plane.orientation.dip);
     j.dipdir_deg = rad_to_deg(plane.orientation.dipdir);
     j.point = plane.fit.centroid;
-    j.source = std::string(type) + " " + id;
+    // A plane read with a compass says so (the field report's source column).
+    j.source = std::string(type) + " " + id + (compass ? " (compass)" : "");
     j.type = type;
     j.persistence_m = persistence;
     out.push_back(std::move(j));
   };
-  for (const auto& t : r.traces) add(t.m.id, "trace", t.m.plane, opt(t.m.length, true));
+  for (const auto& t : r.traces)
+    add(t.m.id, "trace", t.m.plane, opt(t.m.length, true), t.compass.has_value());
   for (const auto& a : r.areas)
     if (a.rock_side.empty()) add(a.m.id, "area", a.m.plane, std::nullopt);
   for (const auto& p : r.points) add(p.id, "point", p.plane, std::nullopt);

@@ -153,7 +153,8 @@ MeasureOutcome measure_picks_file(const MeasureRequest& r) {
   std::map<std::string, std::string> further_models;
   for (const auto& f : further)
     for (const auto& [name, view] : f.views) further_models[name] = f.name;
-  storage::write_text_atomically(r.out, measures_json(measured, context, model.name, further_models));
+  storage::write_text_atomically(r.out,
+                                 measures_json(measured, context, model.name, further_models));
   if (!png.empty() && !cv::imwrite(r.png, png)) throw Error(r.png + ": cannot write the picture");
   if (!r.csv.empty()) {
     std::ostringstream csv;

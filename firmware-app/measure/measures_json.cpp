@@ -74,6 +74,17 @@ std::string measures_json(const measure::MeasuredPicks& r, const measure::Measur
     m["method"] = !t.cost.empty() ? "semi_automatic" : t.taps.empty() ? "points" : "taps";
     m["joint"] = t.joint;
     m["origin"] = t.origin;  // hand | proposed | corrected (issue 25)
+    if (t.compass) {  // issue 27: its plane is a compass reading, and how the trace lies in it
+      json c;
+      c["dip"] = t.compass->reading.dip_deg;
+      c["dip_direction"] = t.compass->reading.dip_direction_deg;
+      c["trace_off_deg"] = t.compass->trace_off_deg;
+      c["fitted_off_deg"] =
+          t.compass->fitted_off_deg ? json(*t.compass->fitted_off_deg) : json(nullptr);
+      c["margin_deg"] = t.compass->margin_deg;
+      c["marginal"] = t.compass->marginal();
+      m["compass"] = c;
+    }
     m["set"] = r.set_of(t.m.id);
     m["photo"] = t.m.picks.empty() ? json("") : json(t.m.picks.front().photo);
     put_pair(m, m["photo"].get<std::string>());

@@ -17,6 +17,7 @@
 #include "firmware-app/analysis/map_verdicts.h"
 #include "firmware-app/measure/measure_records.h"
 #include "firmware-app/measure/visit_trace_joints.h"
+#include "firmware-app/records/project_mesh.h"
 #include "firmware-app/services/ui_services.h"
 #include "storage/export_scene_json.h"
 #include "storage/project_store.h"
@@ -46,8 +47,18 @@ std::string session_key(const AnalysisInput& input, const nlohmann::json& scene)
 
 }  // namespace
 
+// A pair's 3D image loaded from the store, for measuring its traces.
+struct LoadedPicker {
+  photogrammetry::SurfaceMesh surface;
+  std::unique_ptr<measure::MeshPicker> picker;  // points into `surface`
+};
+
 struct StoreTraceMapRunner::Cache {
   std::mutex mutex;
+  // The visit's other pairs' 3D images (issue 27: each trace is measured on
+  // its own pair's), by project and model, loaded once.
+  std::map<std::pair<std::filesystem::path, storage::RecordId>, std::unique_ptr<LoadedPicker>>
+      pickers;
   std::filesystem::path project;
   storage::RecordId visit_id = 0;
   std::string key;  // the scene without its traces: what the session was built for
@@ -87,7 +98,8 @@ namespace {
 // to several traces by `rockface replay`, one typed in) are the
 // geologist's and stay as they are.
 bool made_of_one_trace(const storage::Joint& j) {
-  return j.type == "trace" && j.source == "trace " + j.label;
+  return j.type == "trace" &&
+         (j.source == "trace " + j.label || j.source == "trace " + j.label + " (compass)");
 }
 
 // The traces a joint that stays was fitted from ("traces T1 T2"): they have
@@ -120,10 +132,10 @@ bool same_set(const storage::JointSet& a, const storage::JointSet& b) {
 // the one-trace joints and the sets replaced where they changed (a row
 // that stays the same is not rewritten, so the office gets only the
 // change). Returns the joint of `trace` in words, or why it has none.
-std::string remake_trace_joints(storage::ProjectStore& store, storage::RecordId visit,
-                                const measure::MeshPicker& picker,
-                                const measure::MeasureSettings& settings,
-                                const std::string& trace) {
+std::string remake_trace_joints(
+    storage::ProjectStore& store, storage::RecordId visit, const measure::MeshPicker& picker,
+    const std::map<storage::RecordId, const measure::MeshPicker*>& pickers,
+    const measure::MeasureSettings& settings, const std::string& trace) {
   const auto old_joints = store.list_joints(visit);
   const auto old_sets = store.list_joint_sets(visit);
   std::set<std::string> covered, kept_labels;
@@ -138,7 +150,7 @@ std::string remake_trace_joints(storage::ProjectStore& store, storage::RecordId 
   std::vector<storage::Measurement> traces;
   for (const auto& m : store.list_measurements(visit))
     if (m.kind == storage::Measurement::Kind::trace && !covered.count(m.label)) traces.push_back(m);
-  TraceJointTable table = trace_joint_table(traces, picker, settings, visit);
+  TraceJointTable table = trace_joint_table(traces, picker, settings, visit, pickers);
   std::vector<storage::Joint> joints;
   for (auto& j : table.joints) {
     if (kept_labels.count(j.label)) {
@@ -180,9 +192,21 @@ std::string remake_trace_joints(storage::ProjectStore& store, storage::RecordId 
 
   if (trace.empty()) return {};
   for (const auto& j : joints)
-    if (j.label == trace)
-      return "joint " + j.label + " " + ui::format::dip_and_direction(j.dip_deg, j.dipdir_deg) +
-             (j.set_label.empty() ? std::string() : " in set " + j.set_label);
+    if (j.label == trace) {
+      std::string said = "joint " + j.label + " " +
+                         ui::format::dip_and_direction(j.dip_deg, j.dipdir_deg) +
+                         (j.set_label.empty() ? std::string() : " in set " + j.set_label);
+      // Issue 27: a plane read with a compass says so, and a trace that
+      // leaves it beyond the tolerance says to check the reading.
+      if (made_of_one_trace(j) && j.source != "trace " + j.label) {
+        said += " (compass)";
+        for (const auto& m : traces)
+          if (m.label == trace && m.compass_off_deg &&
+              *m.compass_off_deg > measure::kMaxTraceOffCompassDeg)
+            said += ": " + m.note;
+      }
+      return said;
+    }
   for (const auto& w : table.without_joint)
     if (w.rfind(trace + ": ", 0) == 0) return "no joint (" + w.substr(trace.size() + 2) + ")";
   return "no joint";
@@ -252,6 +276,40 @@ measure::MeasureSettings measure_settings(storage::ProjectStore& store, storage:
   return settings;
 }
 
+// The 3D image of each pair whose traces the visit holds, by model id: the
+// one on display for its own model, the others loaded from the store once.
+std::map<storage::RecordId, const measure::MeshPicker*> visit_pickers(
+    storage::ProjectStore& store, storage::RecordId visit, const ui::MapEdit& edit,
+    const std::filesystem::path& project,
+    std::map<std::pair<std::filesystem::path, storage::RecordId>, std::unique_ptr<LoadedPicker>>&
+        cache) {
+  std::map<storage::RecordId, const measure::MeshPicker*> out;
+  if (edit.model_id) out[*edit.model_id] = edit.picker;
+  for (const auto& m : store.list_measurements(visit)) {
+    if (m.kind != storage::Measurement::Kind::trace || !m.model_id || out.count(*m.model_id))
+      continue;
+    auto& loaded = cache[{project, *m.model_id}];
+    if (!loaded) {
+      loaded = std::make_unique<LoadedPicker>();
+      // As the tablet's model view picks on it: the stored mesh, whole.
+      loaded->surface = surface_mesh(store.load_model(*m.model_id).mesh, 0, 0);
+      loaded->picker = std::make_unique<measure::MeshPicker>(loaded->surface);
+    }
+    out[*m.model_id] = loaded->picker.get();
+  }
+  return out;
+}
+
+// The 3D image a stored trace lies on: its pair's.
+const measure::MeshPicker& picker_of_trace(
+    const storage::Measurement& m, const ui::MapEdit& edit,
+    const std::map<storage::RecordId, const measure::MeshPicker*>& pickers) {
+  if (m.model_id)
+    if (const auto p = pickers.find(*m.model_id); p != pickers.end() && p->second)
+      return *p->second;
+  return *edit.picker;
+}
+
 std::string area_words(double m2) {
   char text[48];
   std::snprintf(text, sizeof text, "%.1f m²", m2);
@@ -272,6 +330,7 @@ std::string StoreTraceMapRunner::store(const std::filesystem::path& project,
   const measure::MeasureSettings settings = measure_settings(store, visit, edit);
   std::vector<std::string> said;
   std::string trace;  // the trace whose joint is told
+  const auto pickers = visit_pickers(store, visit, edit, project, cache_->pickers);
   if (!edit.outline.empty()) {
     // Checked and measured before anything is deleted: a refused outline
     // leaves the stored one.
@@ -294,6 +353,30 @@ std::string StoreTraceMapRunner::store(const std::filesystem::path& project,
     store.delete_measurement(*edit.remove_trace);
     said.push_back("trace " + label + " and its joint removed");
   }
+  if (edit.compass_trace) {
+    // Issue 27: a saved trace's compass reading given or cleared: the trace
+    // measured again with it (as `rockface measure` would with the reading
+    // in its picks), in place; its joint is remade below.
+    std::optional<storage::Measurement> stored;
+    for (const auto& m : store.list_measurements(visit))
+      if (m.id == *edit.compass_trace && m.kind == storage::Measurement::Kind::trace) stored = m;
+    if (!stored)
+      throw InputError("trace " + std::to_string(*edit.compass_trace),
+                       "no such trace in visit " + std::to_string(visit));
+    storage::Measurement tapped = *stored;
+    tapped.compass_dip_deg.reset();
+    tapped.compass_dipdir_deg.reset();
+    if (edit.compass) {
+      tapped.compass_dip_deg = edit.compass->dip_deg;
+      tapped.compass_dipdir_deg = edit.compass->dip_direction_deg;
+    }
+    const storage::Measurement measured =
+        measured_trace_record(tapped, picker_of_trace(*stored, edit, pickers), settings);
+    store.set_trace_plane(stored->id, measured);
+    trace = stored->label;
+    said.push_back(edit.compass ? "compass reading of " + trace + " saved"
+                                : "compass reading of " + trace + " cleared");
+  }
   if (edit.trace) {
     storage::Measurement record = measured_trace_record(*edit.trace, *edit.picker, settings);
     record.visit_id = visit;
@@ -302,7 +385,8 @@ std::string StoreTraceMapRunner::store(const std::filesystem::path& project,
     said.push_back("trace " + record.label + " saved");
   }
   progress.step("remaking the joints", 0.5);
-  const std::string joint = remake_trace_joints(store, visit, *edit.picker, settings, trace);
+  const std::string joint =
+      remake_trace_joints(store, visit, *edit.picker, pickers, settings, trace);
   if (!joint.empty()) said.back() += ": " + joint;
   std::string out;
   for (const auto& s : said) out += (out.empty() ? "" : "; ") + s;

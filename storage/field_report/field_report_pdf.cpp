@@ -301,6 +301,12 @@ void joint_section(PdfPages& pdf, const FieldReport& r) {
              {"set", 40},
              {"source", 120}},
             rows);
+  // Issue 27: a plane read with a compass on the tablet, not fitted.
+  if (std::any_of(r.joints.begin(), r.joints.end(), [](const auto& j) {
+        return j.source.find("(compass)") != std::string::npos;
+      }))
+    pdf.line("(compass): the dip and dip direction read with a compass on the joint where the "
+             "trace runs; the trace is checked to lie in that plane");
   pdf.heading("Joint sets");
   if (r.sets.empty()) {
     pdf.line("no set: fewer than two joints, or none close enough to form one");

@@ -385,5 +385,79 @@ TEST(OfficeSync, AClientOlderThanTheServersSchemaIsRefusedByName) {
   EXPECT_EQ(c.query("SELECT count(*) FROM rockface.record", {}, "counting").int64(0, 0), 0);
 }
 
+// Issue 27: a trace's compass reading (schema 9) goes to the office with its
+// trace and comes back on a pull; a reading given again on the tablet goes
+// up as a new revision of the same trace.
+std::optional<storage::Measurement> trace_named(storage::ProjectStore& store,
+                                                const std::string& label) {
+  for (const auto& m : store.list_measurements())
+    if (m.kind == storage::Measurement::Kind::trace && m.label == label) return m;
+  return std::nullopt;
+}
+
+TEST(OfficeSync, ACompassReadingGoesUpWithItsTraceAndComesBack) {
+  const std::string db = fresh_database();
+  storage::test::TempDir dir("office-compass");
+  TabletProject a;
+  a.visits = 1;
+  make_tablet_project(dir / "a.rockface", a);
+  storage::RecordId trace_id = 0;
+  {
+    auto store = storage::ProjectStore::open(dir / "a.rockface");
+    const auto visit = *store.latest_visit();
+    storage::Measurement t = store.list_measurements(visit).front();
+    ASSERT_EQ(t.kind, storage::Measurement::Kind::trace);
+    t.id = 0;
+    t.label = "T77";
+    t.dip_deg = 74;
+    t.dipdir_deg = 111;
+    t.compass_dip_deg = 74;
+    t.compass_dipdir_deg = 111;
+    t.compass_off_deg = 1.25;
+    trace_id = store.save_measurements(visit, {t}).front();
+  }
+  NoProgress none;
+  sync_project(dir / "a.rockface", as_role(db, "tablet_a"), {}, none);
+  expect_server_holds(as_superuser(db), dir / "a.rockface");
+  storage::office::pull_tunnel(as_role(db, "office_reader"), "Main drive", dir / "p.rockface",
+                               none);
+  {
+    auto pulled = storage::ProjectStore::open(dir / "p.rockface");
+    const auto back = trace_named(pulled, "T77");
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->compass_dip_deg, 74);
+    EXPECT_EQ(back->compass_dipdir_deg, 111);
+    EXPECT_EQ(back->compass_off_deg, 1.25);
+  }
+
+  // Given again on the tablet: the same trace, a new revision on the server.
+  {
+    auto store = storage::ProjectStore::open(dir / "a.rockface");
+    storage::Measurement t = *trace_named(store, "T77");
+    t.compass_dip_deg = 73;
+    t.dip_deg = 73;
+    store.set_trace_plane(trace_id, t);
+  }
+  EXPECT_GE(sync_project(dir / "a.rockface", as_role(db, "tablet_a"), {}, none).records_sent, 1);
+  expect_server_holds(as_superuser(db), dir / "a.rockface");
+  std::string uuid;
+  {
+    storage::sqlite::Connection c(dir / "a.rockface",
+                                  storage::sqlite::Connection::Access::read_only);
+    storage::sqlite::Statement m(c, "SELECT uuid FROM measurement WHERE id = ?", "reading");
+    m.bind(1, trace_id);
+    ASSERT_TRUE(m.step());
+    uuid = m.column_text(0);
+  }
+  storage::office::Connection c(as_superuser(db));
+  const auto history = c.query(
+      "SELECT body->'row'->>'compass_dip' FROM rockface.record WHERE kind = 'measurement' AND "
+      "uuid = $1::uuid ORDER BY revision",
+      {storage::office::Param::of(uuid)}, "reading history");
+  ASSERT_EQ(history.rows(), 2) << "as synced, then with the new reading";
+  EXPECT_EQ(std::stod(history.text(0, 0)), 74);
+  EXPECT_EQ(std::stod(history.text(1, 0)), 73);
+}
+
 }  // namespace
 }  // namespace rockface::office_test

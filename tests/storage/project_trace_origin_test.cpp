@@ -73,7 +73,7 @@ TEST(ProjectTraceOrigin, ASchema7ProjectIsUpgradedWithItsTracesByHand) {
     EXPECT_EQ(schema::version_of(db), 7);
   }
   auto store = ProjectStore::open(file);
-  EXPECT_EQ(store.schema_version(), 8);
+  EXPECT_GE(store.schema_version(), 8);  // and on to the current one
   const auto back = store.list_measurements(1);
   ASSERT_EQ(back.size(), 1u);
   EXPECT_EQ(back[0].origin, "hand");

@@ -200,17 +200,27 @@ TEST(UiSession, AWholeVisitInFewTaps) {
   EXPECT_EQ(joints.size(), known);
   // The two tapped traces cross the demo face's one fold (so their planes
   // are known: joints); the semi-automatic one does not (a straight line
-  // on one flat face: no plane, no joint, said in words).
-  EXPECT_EQ(known, 2u);
-  EXPECT_FALSE(traces[2].dip_deg);
+  // on one flat face), so the geologist gave it the compass reading of its
+  // joint, J2 (the scene's 75° / 110°, read as 74° / 111°): its joint is
+  // that reading, and says so.
+  EXPECT_EQ(known, 3u);
+  ASSERT_TRUE(traces[2].dip_deg && traces[2].compass_dip_deg && traces[2].compass_dipdir_deg);
+  EXPECT_EQ(*traces[2].compass_dip_deg, 74);
+  EXPECT_EQ(*traces[2].compass_dipdir_deg, 111);
+  // The stored plane is the reading (degrees to radians and back: ~1e-14).
+  EXPECT_NEAR(*traces[2].dip_deg, 74, 1e-9);
+  EXPECT_NEAR(*traces[2].dipdir_deg, 111, 1e-9);
+  for (const auto& j : joints)
+    if (j.label == traces[2].label) EXPECT_EQ(j.source, "trace " + j.label + " (compass)");
   // The analysis of the visit made only on the tablet, with its face and
-  // joints. No finite block yet: the demo face is flat but for one fold, so
-  // the third joint's trace can give no plane, and the tablet has no other
-  // way to give a joint's orientation (see docs/accuracy-cost.md, issue 27).
+  // joints: J1, J2 and J3 cut the demo's keyblock out of the outlined face.
   const auto runs = store.list_analyses(visit);
   ASSERT_EQ(runs.size(), 1u);
   const auto run = store.load_analysis(runs[0].id);
   for (const auto& b : run.blocks) EXPECT_FALSE(b.mode.empty()) << b.label;
+  const auto finite =
+      std::count_if(run.blocks.begin(), run.blocks.end(), [](const auto& b) { return b.finite; });
+  EXPECT_GE(finite, 1) << "no finite block from the tablet's visit";
   // The field report holds them: each block's row and each joint's line
   // (pdftotext, as the report verb's tests read it).
   const fs::path pdf = project.parent_path() / ("visit-visit-" + std::to_string(visit) + ".pdf");
@@ -240,13 +250,16 @@ TEST(UiSession, AWholeVisitInFewTaps) {
     EXPECT_TRUE(has_line_starting({j.label, fixed1(j.dip_deg), fixed1(j.dipdir_deg)}))
         << j.label << " not in\n"
         << report;
+  // The joint read with a compass says so in the report's joints table.
+  EXPECT_NE(report.find("trace " + traces[2].label + " (compass)"), std::string::npos) << report;
   // Few taps: every screen's count is printed, and the whole visit takes at
-  // most 30.
+  // most 37 (30 before issue 27's compass reading: 7 more taps, the two
+  // fields and five keys).
   for (const char* screen : {"Project", "Capture", "Model", "Mapping", "Blocks"})
     EXPECT_NE(out.find(std::string("screen ") + screen + ": "), std::string::npos) << screen;
   const auto at = out.find("screens in all: ");
   ASSERT_NE(at, std::string::npos) << out;
-  EXPECT_LE(std::stoi(out.substr(at + 16)), 30) << out;
+  EXPECT_LE(std::stoi(out.substr(at + 16)), 37) << out;
   for (const char* picture : {"ui-project", "ui-capture", "ui-model", "ui-mapping", "ui-blocks"})
     EXPECT_TRUE(fs::exists(shots / (std::string(picture) + ".png"))) << picture;
 }

@@ -3,7 +3,9 @@
 // outlined by taps is the area record the verb makes of the same polygon;
 // a saved trace gets the joint the verb makes of the same trace (a straight
 // one says why it has none); a saved trace taken back leaves with its
-// joint; a degenerate outline is refused by name and leaves the stored one.
+// joint; a degenerate outline is refused by name and leaves the stored one;
+// a compass reading typed for a trace gives the verb's joint of a pick with
+// that reading (issue 27).
 #include <unistd.h>
 
 #include <cstdio>
@@ -14,6 +16,8 @@
 
 #include "core/common/error.h"
 #include "core/common/progress.h"
+#include "firmware-app/measure/visit_trace_joints.h"
+#include "firmware-app/records/project_mesh.h"
 #include "firmware-app/services/ui_services.h"
 #include "storage/project_store.h"
 #include "tests/ui/demo_project.h"
@@ -252,6 +256,154 @@ TEST_F(MapEdits, AStraightTraceSaysItsPlaneIsUnknownAndMakesNoJoint) {
   EXPECT_FALSE(joint(tablet.label, visit_));
   const std::string said = app().statuses.message(static_cast<std::size_t>(ui::Screen::mapping));
   EXPECT_NE(said.find("no joint (orientation unknown"), std::string::npos) << said;
+}
+
+// Issue 27: a straight trace (no plane of its own) given a compass reading
+// on the Mapping screen's keypad gets the joint `rockface measure` makes of
+// the same trace with `compass` in its pick; the reading cleared (asked
+// first) takes the joint away, and given again to the saved trace brings it
+// back.
+TEST_F(MapEdits, ACompassReadingTypedOnTheTabletIsTheVerbsPickWithCompass) {
+  open(copy_of_demo("compass"));
+  ui().tap("Mapping");
+  tap(around_centre(-80, 0));
+  tap(around_centre(80, 0));
+  ASSERT_EQ(app().mapping.marker.points().size(), 2u);
+  for (const char* key : {"Dip", "7", "4", "Dip direction", "1", "1", "1"}) ui().tap(key);
+  EXPECT_EQ(app().mapping.compass.dip(), 74);
+  EXPECT_EQ(app().mapping.compass.dip_direction(), 111);
+  ui().tap("Save trace");
+  ui().settle();
+  const Measurement tablet = stored(Measurement::Kind::trace, visit_).back();
+  ASSERT_TRUE(tablet.compass_dip_deg && tablet.compass_dipdir_deg && tablet.compass_off_deg);
+  EXPECT_EQ(*tablet.compass_dip_deg, 74);
+  EXPECT_EQ(*tablet.compass_dipdir_deg, 111);
+  ASSERT_TRUE(tablet.dip_deg && tablet.dipdir_deg);
+  const auto tablet_joint = joint(tablet.label, visit_);
+  ASSERT_TRUE(tablet_joint) << tablet.note;
+  EXPECT_EQ(tablet_joint->source, "trace " + tablet.label + " (compass)");
+  const std::string said = app().statuses.message(static_cast<std::size_t>(ui::Screen::mapping));
+  EXPECT_NE(said.find("joint " + tablet.label + " 74.0° / 111.0°"), std::string::npos) << said;
+  EXPECT_NE(said.find("(compass)"), std::string::npos) << said;
+  EXPECT_FALSE(app().mapping.compass.given()) << "the reading went with the trace";
+
+  // Cleared on the saved trace (asked first): no plane, no joint.
+  ui().tap("Clear reading");
+  EXPECT_TRUE(stored(Measurement::Kind::trace, visit_).back().compass_dip_deg)
+      << "nothing goes before Yes";
+  ui().tap("Yes, clear reading");
+  ui().settle();
+  const Measurement cleared = stored(Measurement::Kind::trace, visit_).back();
+  EXPECT_EQ(cleared.id, tablet.id);
+  EXPECT_FALSE(cleared.compass_dip_deg);
+  EXPECT_FALSE(cleared.dip_deg);
+  EXPECT_FALSE(joint(tablet.label, visit_));
+  // Given again to the saved trace: the same joint as at first.
+  for (const char* key : {"Dip", "7", "4", "Dip direction", "1", "1", "1"}) ui().tap(key);
+  ui().tap("Save reading");
+  ui().settle();
+  const Measurement again = stored(Measurement::Kind::trace, visit_).back();
+  EXPECT_EQ(again.compass_dip_deg, tablet.compass_dip_deg);
+  EXPECT_EQ(again.note, tablet.note);
+  const auto again_joint = joint(tablet.label, visit_);
+  ASSERT_TRUE(again_joint);
+  EXPECT_EQ(again_joint->dip_deg, tablet_joint->dip_deg);
+
+  // The verb, given the stored trace's points and the same reading.
+  const Eigen::Vector3d datum = storage::ProjectStore::open(project_).project().datum;
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& p : tablet.points) {
+    const Eigen::Vector3d a = datum + p;
+    points.push_back({a.x(), a.y(), a.z()});
+  }
+  const auto measured_visit =
+      measure({{"traces",
+                {{{"id", tablet.label},
+                  {"points", points},
+                  {"compass", {{"dip", 74.0}, {"dip_direction", 111.0}}}}}}},
+              "compass-measure");
+  const auto verb_joint = joint(tablet.label, measured_visit);
+  ASSERT_TRUE(verb_joint);
+  // Both are the reading itself, through the same centroid: equal but for
+  // rounding (1e-9, see kSameMetres).
+  EXPECT_NEAR(tablet_joint->dip_deg, verb_joint->dip_deg, 1e-9);
+  EXPECT_NEAR(tablet_joint->dipdir_deg, verb_joint->dipdir_deg, 1e-9);
+  ASSERT_TRUE(tablet_joint->point && verb_joint->point);
+  EXPECT_LT((*tablet_joint->point - *verb_joint->point).norm(), kSameMetres);
+  EXPECT_EQ(tablet_joint->source, verb_joint->source);
+  const Measurement verb = stored(Measurement::Kind::trace, measured_visit).front();
+  ASSERT_TRUE(verb.compass_off_deg && verb.sigma_deg && tablet.sigma_deg);
+  // The angle off the plane read, from the same points: equal to rounding.
+  EXPECT_NEAR(*tablet.compass_off_deg, *verb.compass_off_deg, 1e-9);
+  EXPECT_NEAR(*tablet.sigma_deg, *verb.sigma_deg, 1e-9);
+  EXPECT_EQ(tablet.note, verb.note);
+}
+
+// Issue 27: in a visit of two pairs each saved trace is measured on its own
+// pair's 3D image (its record's model), whichever pair is on display: a
+// trace saved on pair 2 (with a compass reading, so that it has a joint)
+// keeps that joint when pair 1 is on display and the joints are remade;
+// and the visit's joint table routes it to pair 2's mesh, exactly as
+// measuring it alone on that mesh.
+TEST_F(MapEdits, ATraceOfAFurtherPairIsMeasuredOnItsOwnPair) {
+  const fs::path project = ui_test_dir() / "compass-two-pairs.rockface";
+  fs::copy_file(two_pair_project(), project, fs::copy_options::overwrite_existing);
+  open(project);
+  const auto pairs = app().session->pairs();
+  ASSERT_EQ(pairs.size(), 2u);
+  ui().tap("Mapping");
+  ui().tap("Pair 2");
+  ui().settle();
+  ASSERT_EQ(app().model_view.model_id(), pairs[1].id);
+  for (int i = 0; i < 4; ++i) tap(around_centre(-100.0f + 66.0f * i, -50.0f + 33.0f * i));
+  ASSERT_EQ(app().mapping.marker.taps().size(), 4u) << app().mapping.marker.problem();
+  for (const char* key : {"Dip", "7", "4", "Dip direction", "1", "1", "1"}) ui().tap(key);
+  ui().tap("Save trace");
+  ui().settle();
+  const Measurement on_two = stored(Measurement::Kind::trace, visit_).back();
+  EXPECT_EQ(on_two.model_id, pairs[1].id);
+  const auto joint_two = joint(on_two.label, visit_);
+  ASSERT_TRUE(joint_two) << on_two.note;
+
+  // Pair 1 on display; a trace saved there remakes the visit's joints.
+  ui().tap("Pair 1");
+  ui().settle();
+  ASSERT_EQ(app().model_view.model_id(), pairs[0].id);
+  tap(around_centre(-80, 0));
+  tap(around_centre(80, 0));
+  ui().tap("Save trace");
+  ui().settle();
+  const auto after = joint(on_two.label, visit_);
+  ASSERT_TRUE(after);
+  EXPECT_EQ(after->dip_deg, joint_two->dip_deg);
+  EXPECT_EQ(after->point, joint_two->point);
+  EXPECT_EQ(after->persistence_m, joint_two->persistence_m);
+
+  // The routing itself, on the stored meshes: measured in the visit's
+  // table (pair 1's mesh the default) it is what pair 2's mesh alone gives.
+  session_.reset();
+  auto store = storage::ProjectStore::open(project_);
+  const auto one = app::surface_mesh(store.load_model(pairs[0].id).mesh, 0, 0);
+  const auto two = app::surface_mesh(store.load_model(pairs[1].id).mesh, 0, 0);
+  const measure::MeshPicker first(one), second(two);
+  Measurement plain = on_two;  // without its reading: the plane from the trace and the meshes
+  plain.compass_dip_deg.reset();
+  plain.compass_dipdir_deg.reset();
+  measure::MeasureSettings settings;
+  settings.point_sigma = 0.01;
+  const auto routed = app::trace_joint_table({plain}, first, settings, visit_,
+                                             {{pairs[0].id, &first}, {pairs[1].id, &second}});
+  const auto alone = app::trace_joint_table({plain}, second, settings, visit_);
+  ASSERT_EQ(routed.joints.size(), alone.joints.size());
+  for (std::size_t k = 0; k < routed.joints.size(); ++k) {
+    EXPECT_EQ(routed.joints[k].dip_deg, alone.joints[k].dip_deg);
+    EXPECT_EQ(routed.joints[k].dipdir_deg, alone.joints[k].dipdir_deg);
+  }
+  EXPECT_EQ(routed.without_joint, alone.without_joint);
+  const auto on_first = app::trace_joint_table({plain}, first, settings, visit_);
+  std::printf("pair 2's trace %s: on its own mesh %s; on pair 1's %s\n", plain.label.c_str(),
+              alone.joints.empty() ? alone.without_joint.front().c_str() : "a joint",
+              on_first.joints.empty() ? on_first.without_joint.front().c_str() : "a joint");
 }
 
 TEST_F(MapEdits, ADegenerateOutlineIsRefusedByNameAndTheStoredOneStays) {

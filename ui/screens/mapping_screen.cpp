@@ -19,6 +19,7 @@
 #include "ui/overlay_legend.h"
 #include "ui/overlay_traces.h"
 #include "ui/proposals_view.h"
+#include "ui/screens/mapping_compass.h"
 #include "ui/screens/screens.h"
 #include "ui/stereonet_view.h"
 
@@ -92,16 +93,24 @@ void save_trace(AppState& app) {
     m.dipdir_deg = rad_to_deg(marker.plane()->orientation.dipdir);
     m.fit_rms_m = marker.plane()->fit.rms_off_plane();
   }
+  // Issue 27: the compass reading typed for it, if any (refused by name).
+  if (!attach_compass_reading(app, m)) return;
   store_trace(app, std::move(m));
 }
 
+}  // namespace
+
+// Declared in mapping_compass.h: every edit of the map starts here.
 MapEdit map_edit(const AppState& app) {
   MapEdit edit;
   edit.visit_id = app.session->visit().value_or(0);
   edit.picker = app.model_view.picker();
+  edit.model_id = app.model_view.model_id();  // issue 27: each trace on its own pair
   edit.settings = trace_context(app).settings;
   return edit;
 }
+
+namespace {
 
 // The visit's stored face outlines: its areas that are no free face and
 // that no joint was measured from (as the runner replaces them).
@@ -376,8 +385,11 @@ bool store_trace(AppState& app, storage::Measurement m) {
   MapEdit edit = map_edit(app);
   edit.visit_id = m.visit_id;
   edit.trace = std::move(m);
-  return store_map_edit(app, std::move(edit), "Saving trace",
-                        [](AppState& a) { a.mapping.marker.clear(); });
+  return store_map_edit(app, std::move(edit), "Saving trace", [](AppState& a) {
+    a.mapping.marker.clear();
+    // Issue 27: the reading went with the trace (one for a saved trace stays).
+    if (!a.mapping.compass.trace) a.mapping.compass.clear();
+  });
 }
 
 void draw_mapping_screen(AppState& app) {
@@ -408,6 +420,7 @@ void draw_mapping_screen(AppState& app) {
   draw_controls(app);
   draw_proposal_panel(app);
   draw_face_and_undo(app);
+  if (!app.mapping.outlining) draw_compass_entry(app);  // issue 27
   draw_map_blocks_panel(app);
   std::vector<StereonetPlane> planes;
   for (const auto& j : app.session->joints())

@@ -1,0 +1,176 @@
+// The Mapping screen's compass reading (issue 27): a geologist holds a Clar
+// compass on the exposed joint where a trace runs and types the dip and dip
+// direction read, on keys a gloved thumb hits (9 mm).
+#include "ui/screens/mapping_compass.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "ui/format.h"
+#include "ui/screens/screens.h"
+#include "ui/widgets_controls.h"
+#include "ui/widgets_text.h"
+
+namespace rockface::ui {
+
+namespace {
+
+using Field = CompassEntry::Field;
+
+bool toggle(AppState& app, const std::string& label, bool on, bool enabled = true) {
+  if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+  const bool pressed = app.targets.button(label, 0, enabled);
+  if (on) ImGui::PopStyleColor();
+  return pressed;
+}
+
+std::vector<const storage::Measurement*> saved_traces(const ProjectSession& session) {
+  std::vector<const storage::Measurement*> out;
+  for (const auto& m : session.measurements())
+    if (m.kind == storage::Measurement::Kind::trace) out.push_back(&m);
+  return out;
+}
+
+std::string reading_words(const measure::CompassReading& r) {
+  return format::dip_and_direction(r.dip_deg, r.dip_direction_deg);
+}
+
+// One field: its toggle (the keypad types into it while on) and its value
+// with - / + steps of a degree.
+void draw_field(AppState& app, const std::string& label, Field field) {
+  CompassEntry& e = app.mapping.compass;
+  if (toggle(app, label, e.typing() == field)) e.choose(e.typing() == field ? Field::none : field);
+  ImGui::SameLine();
+  double* value = e.value(field);
+  double stepped = *value;
+  if (number_field(app.targets, "Compass " + label, &stepped, "%.1f°",
+                   ImGui::GetContentRegionAvail().x, 1.0))
+    e.set(field, stepped);
+}
+
+// The keypad: digits, the point and Back, each a thumb target.
+void draw_keypad(AppState& app) {
+  CompassEntry& e = app.mapping.compass;
+  const char* rows[4][3] = {{"7", "8", "9"}, {"4", "5", "6"}, {"1", "2", "3"}, {".", "0", "Back"}};
+  for (const auto& row : rows)
+    for (int k = 0; k < 3; ++k) {
+      if (k > 0) same_line_if_fits(button_width(row[k], app.targets.target_px()));
+      if (app.targets.button(row[k], k == 2 && row[k][1] ? 0 : app.targets.target_px()))
+        e.key(row[k][1] ? '\b' : row[k][0]);
+    }
+}
+
+// Save reading / Clear reading of a saved trace: stored at once by the
+// map's runner; each that replaces or drops a stored reading asks first.
+void draw_saved_trace_actions(AppState& app, const storage::Measurement& trace) {
+  CompassEntry& e = app.mapping.compass;
+  const bool can = !app.task.running() && !app.session->read_only() && app.services.trace_map;
+  const auto stored = compass_of(trace);
+  const auto reading = e.reading();
+  auto store = [&](std::optional<measure::CompassReading> r, const std::string& title) {
+    MapEdit edit = map_edit(app);
+    edit.compass_trace = trace.id;
+    edit.compass = r;
+    store_map_edit(app, std::move(edit), title, [](AppState& a) { a.mapping.compass.clear(); });
+  };
+  const bool save_enabled = can && reading.has_value();
+  if (stored && reading) {
+    if (app.targets.confirmed_button("Save reading",
+                                     "Replace " + trace.label + "'s reading " +
+                                         reading_words(*stored) + " with " +
+                                         reading_words(*reading) + "?",
+                                     save_enabled))
+      store(reading, "Saving the compass reading of " + trace.label);
+  } else if (app.targets.button("Save reading", 0, save_enabled)) {
+    store(reading, "Saving the compass reading of " + trace.label);
+  }
+  same_line_if_fits(button_width("Clear reading", app.targets.target_px()));
+  if (app.targets.confirmed_button("Clear reading",
+                                   "Clear " + trace.label + "'s compass reading? Its joint then " +
+                                       "comes from the trace alone, or goes.",
+                                   can && stored.has_value()))
+    store(std::nullopt, "Clearing the compass reading of " + trace.label);
+  if (stored) paragraph(trace.label + ": " + trace.note);
+}
+
+}  // namespace
+
+void draw_compass_entry(AppState& app) {
+  CompassEntry& e = app.mapping.compass;
+  ImGui::Separator();
+  heading("Compass reading");
+  const bool marking = !app.mapping.marker.taps().empty();
+  const storage::Measurement* trace = nullptr;
+  if (marking) {
+    // The trace being marked takes the reading: one for a saved trace goes.
+    if (e.trace) {
+      e.clear();
+      e.trace.reset();
+    }
+    paragraph("For the trace being marked: saved with it.");
+  } else {
+    const auto traces = saved_traces(*app.session);
+    if (traces.empty() || !app.services.trace_map) {
+      if (e.trace) {
+        e.clear();
+        e.trace.reset();
+      }
+      paragraph(
+          "Mark a trace, or save one, to give it the dip and dip direction read with a "
+          "compass on its joint.");
+      return;
+    }
+    auto found = std::find_if(traces.begin(), traces.end(),
+                              [&](const auto* m) { return e.trace && m->id == *e.trace; });
+    if (found == traces.end()) {  // the newest saved trace, at first
+      found = traces.end() - 1;
+      e.clear();
+      e.trace = (*found)->id;
+      if (const auto r = compass_of(**found)) e.show(*r);
+    }
+    trace = *found;
+    // Until the geologist types, the fields show the trace's stored reading.
+    if (!e.given() && e.typing() == Field::none) {
+      const auto id = e.trace;
+      if (const auto r = compass_of(*trace))
+        e.show(*r);
+      else
+        e.clear();
+      e.trace = id;
+    }
+    std::vector<std::string> items;
+    for (const auto* m : traces) items.push_back("Trace " + m->label);
+    const auto at = static_cast<std::size_t>(found - traces.begin());
+    if (const auto chosen = choice(app.targets, "Compass trace", items[at], items, at);
+        chosen && *chosen != at) {
+      e.clear();
+      e.trace = traces[*chosen]->id;
+      if (const auto r = compass_of(*traces[*chosen])) e.show(*r);
+      trace = traces[*chosen];
+    }
+  }
+  draw_field(app, "Dip", Field::dip);
+  draw_field(app, "Dip direction", Field::dip_direction);
+  if (e.typing() != Field::none) draw_keypad(app);
+  if (e.given() && !e.problem().empty()) paragraph(e.problem(), warning_colour());
+  if (trace) {
+    draw_saved_trace_actions(app, *trace);
+  } else if (e.given()) {
+    if (app.targets.button("Clear reading")) e.clear();
+    if (const auto r = e.reading()) paragraph("Saved with the trace: " + reading_words(*r) + ".");
+  }
+}
+
+bool attach_compass_reading(AppState& app, storage::Measurement& m) {
+  const CompassEntry& e = app.mapping.compass;
+  if (e.trace || !e.given()) return true;
+  if (!e.problem().empty()) {
+    app.fail(e.problem());
+    return false;
+  }
+  m.compass_dip_deg = e.dip();
+  m.compass_dipdir_deg = e.dip_direction() == 360 ? 0.0 : e.dip_direction();  // both north
+  return true;
+}
+
+}  // namespace rockface::ui
