@@ -40,6 +40,8 @@ class CompassEntry {
 
   // The saved trace the reading is for; none: the trace being marked.
   std::optional<storage::RecordId> trace;
+  // The Mapping screen shows the compass panel.
+  bool open = false;
 
  private:
   double dip_ = 0, dip_direction_ = 0;

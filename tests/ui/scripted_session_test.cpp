@@ -211,7 +211,9 @@ TEST(UiSession, AWholeVisitInFewTaps) {
   EXPECT_NEAR(*traces[2].dip_deg, 74, 1e-9);
   EXPECT_NEAR(*traces[2].dipdir_deg, 111, 1e-9);
   for (const auto& j : joints)
-    if (j.label == traces[2].label) EXPECT_EQ(j.source, "trace " + j.label + " (compass)");
+    if (j.label == traces[2].label) {
+      EXPECT_EQ(j.source, "trace " + j.label + " (compass)");
+    }
   // The analysis of the visit made only on the tablet, with its face and
   // joints: J1, J2 and J3 cut the demo's keyblock out of the outlined face.
   const auto runs = store.list_analyses(visit);

@@ -269,7 +269,7 @@ TEST_F(MapEdits, ACompassReadingTypedOnTheTabletIsTheVerbsPickWithCompass) {
   tap(around_centre(-80, 0));
   tap(around_centre(80, 0));
   ASSERT_EQ(app().mapping.marker.points().size(), 2u);
-  for (const char* key : {"Dip", "7", "4", "Dip direction", "1", "1", "1"}) ui().tap(key);
+  for (const char* key : {"Compass", "7", "4", "Dip direction", "1", "1", "1"}) ui().tap(key);
   EXPECT_EQ(app().mapping.compass.dip(), 74);
   EXPECT_EQ(app().mapping.compass.dip_direction(), 111);
   ui().tap("Save trace");
@@ -288,6 +288,7 @@ TEST_F(MapEdits, ACompassReadingTypedOnTheTabletIsTheVerbsPickWithCompass) {
   EXPECT_FALSE(app().mapping.compass.given()) << "the reading went with the trace";
 
   // Cleared on the saved trace (asked first): no plane, no joint.
+  ui().tap("Compass");
   ui().tap("Clear reading");
   EXPECT_TRUE(stored(Measurement::Kind::trace, visit_).back().compass_dip_deg)
       << "nothing goes before Yes";
@@ -357,7 +358,7 @@ TEST_F(MapEdits, ATraceOfAFurtherPairIsMeasuredOnItsOwnPair) {
   ASSERT_EQ(app().model_view.model_id(), pairs[1].id);
   for (int i = 0; i < 4; ++i) tap(around_centre(-100.0f + 66.0f * i, -50.0f + 33.0f * i));
   ASSERT_EQ(app().mapping.marker.taps().size(), 4u) << app().mapping.marker.problem();
-  for (const char* key : {"Dip", "7", "4", "Dip direction", "1", "1", "1"}) ui().tap(key);
+  for (const char* key : {"Compass", "7", "4", "Dip direction", "1", "1", "1"}) ui().tap(key);
   ui().tap("Save trace");
   ui().settle();
   const Measurement on_two = stored(Measurement::Kind::trace, visit_).back();

@@ -35,11 +35,12 @@ std::string reading_words(const measure::CompassReading& r) {
   return format::dip_and_direction(r.dip_deg, r.dip_direction_deg);
 }
 
-// One field: its toggle (the keypad types into it while on) and its value
-// with - / + steps of a degree.
+// One field: its button (the keypad types into the field chosen) and its
+// value with - / + steps of a degree.
 void draw_field(AppState& app, const std::string& label, Field field) {
   CompassEntry& e = app.mapping.compass;
-  if (toggle(app, label, e.typing() == field)) e.choose(e.typing() == field ? Field::none : field);
+  // Tapped again, the field is typed afresh.
+  if (toggle(app, label, e.typing() == field)) e.choose(field);
   ImGui::SameLine();
   double* value = e.value(field);
   double stepped = *value;
@@ -48,15 +49,17 @@ void draw_field(AppState& app, const std::string& label, Field field) {
     e.set(field, stepped);
 }
 
-// The keypad: digits, the point and Back, each a thumb target.
+// The keypad: digits, the point and Back, each a thumb target, in three
+// rows of four (the panel's height is what the geologist sees at once).
 void draw_keypad(AppState& app) {
   CompassEntry& e = app.mapping.compass;
-  const char* rows[4][3] = {{"7", "8", "9"}, {"4", "5", "6"}, {"1", "2", "3"}, {".", "0", "Back"}};
+  const char* rows[3][4] = {{"7", "8", "9", "Back"}, {"4", "5", "6", "."}, {"1", "2", "3", "0"}};
   for (const auto& row : rows)
-    for (int k = 0; k < 3; ++k) {
-      if (k > 0) same_line_if_fits(button_width(row[k], app.targets.target_px()));
-      if (app.targets.button(row[k], k == 2 && row[k][1] ? 0 : app.targets.target_px()))
-        e.key(row[k][1] ? '\b' : row[k][0]);
+    for (int k = 0; k < 4; ++k) {
+      const bool back = row[k][1] != 0;
+      const float width = back ? 0.0f : app.targets.target_px();
+      if (k > 0) same_line_if_fits(back ? button_width(row[k], width) : width);
+      if (app.targets.button(row[k], width)) e.key(back ? '\b' : row[k][0]);
     }
 }
 
@@ -90,15 +93,23 @@ void draw_saved_trace_actions(AppState& app, const storage::Measurement& trace) 
                                        "comes from the trace alone, or goes.",
                                    can && stored.has_value()))
     store(std::nullopt, "Clearing the compass reading of " + trace.label);
-  if (stored) paragraph(trace.label + ": " + trace.note);
+  if (stored && !trace.note.empty()) paragraph(trace.label + ": " + trace.note);
 }
 
 }  // namespace
 
-void draw_compass_entry(AppState& app) {
+void draw_compass_button(AppState& app) {
+  same_line_if_fits(button_width("Compass", app.targets.target_px()));
+  if (app.targets.button("Compass")) {
+    CompassEntry& e = app.mapping.compass;
+    e.open = true;
+    if (e.typing() == Field::none) e.choose(Field::dip);
+  }
+}
+
+bool draw_compass_panel(AppState& app) {
   CompassEntry& e = app.mapping.compass;
-  ImGui::Separator();
-  heading("Compass reading");
+  if (!e.open || app.mapping.outlining) return false;
   const bool marking = !app.mapping.marker.taps().empty();
   const storage::Measurement* trace = nullptr;
   if (marking) {
@@ -106,19 +117,17 @@ void draw_compass_entry(AppState& app) {
     if (e.trace) {
       e.clear();
       e.trace.reset();
+      e.choose(Field::dip);
     }
-    paragraph("For the trace being marked: saved with it.");
+    paragraph("Compass reading of the trace being marked, saved with it:");
   } else {
     const auto traces = saved_traces(*app.session);
     if (traces.empty() || !app.services.trace_map) {
-      if (e.trace) {
-        e.clear();
-        e.trace.reset();
-      }
       paragraph(
           "Mark a trace, or save one, to give it the dip and dip direction read with a "
           "compass on its joint.");
-      return;
+      if (app.targets.button("Done")) e.open = false;
+      return true;
     }
     auto found = std::find_if(traces.begin(), traces.end(),
                               [&](const auto* m) { return e.trace && m->id == *e.trace; });
@@ -126,17 +135,6 @@ void draw_compass_entry(AppState& app) {
       found = traces.end() - 1;
       e.clear();
       e.trace = (*found)->id;
-      if (const auto r = compass_of(**found)) e.show(*r);
-    }
-    trace = *found;
-    // Until the geologist types, the fields show the trace's stored reading.
-    if (!e.given() && e.typing() == Field::none) {
-      const auto id = e.trace;
-      if (const auto r = compass_of(*trace))
-        e.show(*r);
-      else
-        e.clear();
-      e.trace = id;
     }
     std::vector<std::string> items;
     for (const auto* m : traces) items.push_back("Trace " + m->label);
@@ -145,20 +143,40 @@ void draw_compass_entry(AppState& app) {
         chosen && *chosen != at) {
       e.clear();
       e.trace = traces[*chosen]->id;
-      if (const auto r = compass_of(*traces[*chosen])) e.show(*r);
-      trace = traces[*chosen];
+      found = traces.begin() + static_cast<std::ptrdiff_t>(*chosen);
+    }
+    trace = *found;
+    // Until the geologist types, the fields show the trace's stored reading.
+    if (!e.given()) {
+      const auto id = e.trace;
+      const auto field = e.typing();
+      if (const auto r = compass_of(*trace))
+        e.show(*r);
+      else
+        e.clear();
+      e.trace = id;
+      e.choose(field == Field::none ? Field::dip : field);
     }
   }
   draw_field(app, "Dip", Field::dip);
   draw_field(app, "Dip direction", Field::dip_direction);
-  if (e.typing() != Field::none) draw_keypad(app);
   if (e.given() && !e.problem().empty()) paragraph(e.problem(), warning_colour());
   if (trace) {
     draw_saved_trace_actions(app, *trace);
-  } else if (e.given()) {
-    if (app.targets.button("Clear reading")) e.clear();
-    if (const auto r = e.reading()) paragraph("Saved with the trace: " + reading_words(*r) + ".");
+  } else {
+    const bool can_save = !app.task.running() && app.mapping.marker.points().size() >= 2 &&
+                          app.session->visit() && !app.session->read_only();
+    if (app.targets.button("Save trace", 0, can_save)) save_trace(app);
+    same_line_if_fits(button_width("Clear reading", app.targets.target_px()));
+    if (app.targets.button("Clear reading", 0, e.given())) {
+      e.clear();
+      e.choose(Field::dip);
+    }
   }
+  same_line_if_fits(button_width("Done", app.targets.target_px()));
+  if (app.targets.button("Done")) e.open = false;
+  draw_keypad(app);
+  return true;
 }
 
 bool attach_compass_reading(AppState& app, storage::Measurement& m) {

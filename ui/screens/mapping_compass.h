@@ -7,9 +7,14 @@
 
 namespace rockface::ui {
 
-// The block of the side panel: which trace, dip and dip direction with
-// their keypad, and Save reading / Clear reading for a saved trace.
-void draw_compass_entry(AppState& app);
+// "Compass", in the row of Outline the face: opens the compass panel.
+void draw_compass_button(AppState& app);
+// The compass panel in place of the side panel's other controls while it is
+// open (all of it in view at once: keys a gloved thumb hits take room):
+// which trace, dip and dip direction with their keypad, Save trace for the
+// trace being marked or Save reading / Clear reading for a saved one, and
+// Done. False (nothing drawn) when it is closed.
+bool draw_compass_panel(AppState& app);
 
 // The reading typed for the trace being marked, put on its record by Save
 // trace. False, with the reason on the status line, when what was typed is
@@ -19,5 +24,7 @@ bool attach_compass_reading(AppState& app, storage::Measurement& m);
 // An edit of the map on the 3D image on display (its picker, model and the
 // point precision the screen measures with); mapping_screen.cpp.
 MapEdit map_edit(const AppState& app);
+// Save trace of the trace being marked (with its reading); mapping_screen.cpp.
+void save_trace(AppState& app);
 
 }  // namespace rockface::ui

@@ -66,6 +66,9 @@ std::string next_trace_label(const ProjectSession& session) {
   return "T" + std::to_string(n + 1);
 }
 
+}  // namespace
+
+// Declared in mapping_compass.h (the compass panel saves the trace too).
 void save_trace(AppState& app) {
   const TraceMarker& marker = app.mapping.marker;
   storage::Measurement m;
@@ -97,8 +100,6 @@ void save_trace(AppState& app) {
   if (!attach_compass_reading(app, m)) return;
   store_trace(app, std::move(m));
 }
-
-}  // namespace
 
 // Declared in mapping_compass.h: every edit of the map starts here.
 MapEdit map_edit(const AppState& app) {
@@ -244,6 +245,7 @@ void draw_face_and_undo(AppState& app) {
   if (outlining) ImGui::PopStyleColor();
   if (pressed) app.mapping.outlining = !outlining;
   draw_undo_saved_trace(app);
+  draw_compass_button(app);  // issue 27
 }
 
 void draw_fit(const TraceMarker& marker) {
@@ -388,7 +390,10 @@ bool store_trace(AppState& app, storage::Measurement m) {
   return store_map_edit(app, std::move(edit), "Saving trace", [](AppState& a) {
     a.mapping.marker.clear();
     // Issue 27: the reading went with the trace (one for a saved trace stays).
-    if (!a.mapping.compass.trace) a.mapping.compass.clear();
+    if (!a.mapping.compass.trace) {
+      a.mapping.compass.clear();
+      a.mapping.compass.open = false;
+    }
   });
 }
 
@@ -417,10 +422,14 @@ void draw_mapping_screen(AppState& app) {
   ImGui::PopClipRect();
   ImGui::EndGroup();
   begin_side_panel("mapping side", layout);
+  // Issue 27: the compass panel, while open, in place of the controls.
+  if (draw_compass_panel(app)) {
+    ImGui::EndChild();
+    return;
+  }
   draw_controls(app);
   draw_proposal_panel(app);
   draw_face_and_undo(app);
-  if (!app.mapping.outlining) draw_compass_entry(app);  // issue 27
   draw_map_blocks_panel(app);
   std::vector<StereonetPlane> planes;
   for (const auto& j : app.session->joints())
