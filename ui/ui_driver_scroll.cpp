@@ -27,17 +27,21 @@ bool inside(ImVec2 p, ImVec2 min, ImVec2 max) {
   return p.x >= min.x && p.x < max.x && p.y >= min.y && p.y < max.y;
 }
 
-// A start point that is no control taking drags and in no other panel
-// that scrolls within `v` (that panel would take the drag).
+bool same_panel(const ScrollView& a, const ScrollView& b) {
+  return a.inner_min.x == b.inner_min.x && a.inner_min.y == b.inner_min.y &&
+         a.inner_max.x == b.inner_max.x && a.inner_max.y == b.inner_max.y;
+}
+
+// A start point that is no control taking drags and in no panel nested in
+// `v` that scrolls too (that panel would take the drag).
 bool free_start(ImVec2 p, const ScrollView& v, const TouchTargets& all) {
   for (const auto& [label, r] : all.all()) {
     if (r.drags && r.visible && inside(p, r.shown_min, r.shown_max)) return false;
-    for (const ScrollView& w : r.views) {
-      const bool same = w.inner_min.x == v.inner_min.x && w.inner_min.y == v.inner_min.y &&
-                        w.inner_max.x == v.inner_max.x && w.inner_max.y == v.inner_max.y;
-      if (same) break;  // the panels from here out hold `v`
-      if (w.scrolls && !w.clip_empty() && inside(p, w.clip_min, w.clip_max)) return false;
-    }
+    const auto in_v = std::find_if(r.views.begin(), r.views.end(),
+                                   [&](const ScrollView& w) { return same_panel(w, v); });
+    if (in_v == r.views.end()) continue;  // drawn elsewhere (another panel, a popup)
+    for (auto w = r.views.begin(); w != in_v; ++w)
+      if (w->scrolls && !w->clip_empty() && inside(p, w->clip_min, w->clip_max)) return false;
   }
   return true;
 }
@@ -54,6 +58,21 @@ bool shown_whole(const TargetRect& t) {
   const float can_w = std::min(t.max.x - t.min.x, v.inner_max.x - v.inner_min.x);
   const float can_h = std::min(t.max.y - t.min.y, v.inner_max.y - v.inner_min.y);
   return w + 2 * kRoundingPx >= can_w && h + 2 * kRoundingPx >= can_h;
+}
+
+bool scrolled_out_of_view(const TargetRect& t) {
+  ImVec2 lo = t.min, hi = t.max;
+  for (const ScrollView& v : t.views) {
+    const bool out = needed(lo.y, hi.y, v.inner_min.y, v.inner_max.y) != 0 ||
+                     needed(lo.x, hi.x, v.inner_min.x, v.inner_max.x) != 0;
+    if (out && v.scrolls) return true;
+    if (out) return false;
+    if (v.clip_empty()) {
+      lo = v.inner_min;
+      hi = v.inner_max;
+    }
+  }
+  return false;
 }
 
 std::optional<DragPlan> drag_toward(const TargetRect& t, const TouchTargets& all, int attempt) {
@@ -73,7 +92,15 @@ std::optional<DragPlan> drag_toward(const TargetRect& t, const TouchTargets& all
     // content's move, at most across the panel's part on the screen.
     const float room_y = std::max(0.0f, v.clip_max.y - v.clip_min.y - 2 * kInsetPx);
     const float room_x = std::max(0.0f, v.clip_max.x - v.clip_min.x - 2 * kInsetPx);
-    const float fy = std::clamp(-dy, -room_y, room_y), fx = std::clamp(-dx, -room_x, room_x);
+    // A move within the slop is a tap: past it by a pixel or two at least
+    // (the content then moves a little further than needed, which a
+    // target smaller than the panel allows).
+    const float least = all.drag_slop_px() + 2;
+    auto finger = [&](float content, float room) {
+      const float f = std::clamp(-content, -room, room);
+      return std::copysign(std::min(std::max(std::fabs(f), least), room), f);
+    };
+    const float fy = finger(dy, room_y), fx = finger(dx, room_x);
     // One axis a drag, the vertical first. It starts on the side the finger
     // moves away from, so that the whole move fits the panel.
     const bool vertical = dy != 0;

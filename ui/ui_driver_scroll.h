@@ -17,6 +17,11 @@ namespace rockface::ui {
 // or a panel's whole height or width of it when it is taller or wider.
 bool shown_whole(const TargetRect& t);
 
+// Whether a drag can bring `t` (further) into view: a panel it lies in
+// scrolls and does not show all of it. A target cut only by what no drag
+// moves (the 3D image's edge, a panel that does not scroll) is not.
+bool scrolled_out_of_view(const TargetRect& t);
+
 struct DragPlan {
   Eigen::Vector2f from, to;
 };

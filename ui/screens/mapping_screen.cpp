@@ -387,7 +387,9 @@ void draw_mapping_screen(AppState& app) {
   add_traces_to_overlay(app);
   add_map_blocks_to_overlay(app);
   drag_proposal_ends(app);  // before the model: a dragged handle does not turn it
-  const auto interaction = app.model_view.draw(layout.main, app.gesture);
+  auto interaction = app.model_view.draw(layout.main, app.gesture);
+  // Issue 27 (touch): a tap on a block's marker selects the block.
+  if (interaction.tap && tap_map_block(app, *interaction.tap)) interaction.tap.reset();
   if (interaction.tap && app.mapping.outlining) {
     const ScreenRay r = app.model_view.ray_at(*interaction.tap);
     app.mapping.outline.tap({r.origin, r.direction}, app.model_view.picker());
