@@ -46,10 +46,13 @@ void UiDriver::tap(const std::string& label, const std::string& where) {
   if (!target) throw InputError(where, "nothing labelled \"" + label + "\" on the screen");
   if (!target->enabled) throw InputError(where, "\"" + label + "\" is disabled on the screen");
   // A finger scrolls what is out of view into view first.
-  if (!shown_whole(*target)) {
+  if (!shown_whole(*target) && scrolled_out_of_view(*target)) {
     bring_into_view(label, where);
     target = state().targets.find(label);
   }
+  // Cut by what no drag moves (the 3D image's edge): what shows is tapped.
+  if (!target || !target->visible)
+    throw InputError(where, "\"" + label + "\" is out of view on the screen");
   // The middle of the part in view: a finger taps what it sees.
   const ImVec2 c = target->shown_centre();
   tap(c.x, c.y);
@@ -64,7 +67,8 @@ int UiDriver::bring_into_view(const std::string& label, const std::string& where
   while (drags < kMostDrags) {
     const auto target = state().targets.find(label);
     if (!target) throw InputError(where, "nothing labelled \"" + label + "\" on the screen");
-    if (shown_whole(*target)) return drags;
+    // Whole in view, or cut only by what no drag moves.
+    if (shown_whole(*target) || !scrolled_out_of_view(*target)) return drags;
     // Every start point tried without moving it: the drags do not reach it.
     const auto plan =
         stuck < kStartPoints ? drag_toward(*target, state().targets, stuck) : std::nullopt;

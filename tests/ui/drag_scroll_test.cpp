@@ -52,6 +52,7 @@ class ListPanel : public ::testing::Test {
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize);
     ImGui::Begin("screen", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
+    if (const auto t = choice(targets, "pick", "item a", choice_items, 0)) chosen.push_back(*t);
     ImGui::BeginChild("list", ImVec2(300, kListHeight));
     for (int i = 0; i < kItems; ++i) {
       if (i == 3) slider(targets, "level", &level, 0, 1, "%.2f", 250);
@@ -93,6 +94,9 @@ class ListPanel : public ::testing::Test {
   TouchInput input;
   TouchTargets targets;
   std::vector<int> pressed;
+  std::vector<std::size_t> chosen;
+  const std::vector<std::string> choice_items = {"a", "b", "c", "d", "e", "f",
+                                                 "g", "h", "i", "j", "k", "l"};
   float level = 0.5f, scroll = 0, scroll_max = 0;
   ImRect bar;
 };
@@ -103,9 +107,10 @@ TEST_F(ListPanel, ADragOnAButtonScrollsTheListAndPressesNothing) {
   drag(at, ImVec2(at.x, at.y - 200), 10);
   EXPECT_NEAR(scroll, 200, kScrollRoundingPx) << "the content follows the finger";
   EXPECT_TRUE(pressed.empty()) << "the button under the finger was pressed by a drag";
-  // And back down past the top, from the panel's empty right side (the
-  // slider now lies under y = 50): the list stops at its start.
-  drag(ImVec2(270, 50), ImVec2(270, 380), 10);
+  // And back down past the top, from the panel's empty right side near its
+  // top (the slider now lies there): the list stops at its start.
+  const float top = targets.find("item 4")->views.front().clip_min.y;
+  drag(ImVec2(270, top + 10), ImVec2(270, top + 380), 10);
   EXPECT_EQ(scroll, 0);
   EXPECT_TRUE(pressed.empty());
 }
@@ -141,6 +146,28 @@ TEST_F(ListPanel, TheScrollBarIsAThinIndicatorThatATapDoesNotMove) {
   drag(low, ImVec2(low.x, low.y - 150), 10);
   EXPECT_NEAR(scroll, 150, kScrollRoundingPx);
   EXPECT_TRUE(pressed.empty());
+}
+
+TEST_F(ListPanel, AnOpenChoicesListScrollsByADragAndChoosesNothing) {
+  const ImVec2 frame = centre_of("pick");
+  drag(frame, frame, 1);  // a tap opens the list
+  const auto last = targets.find("pick: l");
+  ASSERT_TRUE(last) << "the choice did not open";
+  ASSERT_FALSE(last->visible) << "the list must be longer than it shows";
+  const auto first = targets.find("pick: a");
+  ASSERT_TRUE(first && first->visible && !first->views.empty());
+  // Up from the list's lower edge, across its whole height: the last item
+  // comes into view and the item the finger went down on is not chosen.
+  const ScrollView& list = first->views.front();
+  const float x = (list.clip_min.x + list.clip_max.x) / 2;
+  for (int k = 0; k < 4 && !targets.find("pick: l")->visible; ++k)
+    drag(ImVec2(x, list.clip_max.y - 4), ImVec2(x, list.clip_min.y + 4), 10);
+  EXPECT_TRUE(targets.find("pick: l")->visible) << "the list's last item never came into view";
+  EXPECT_TRUE(chosen.empty()) << "a drag chose an item of the list";
+  // A tap on it chooses it.
+  drag(centre_of("pick: l"), centre_of("pick: l"), 1);
+  ASSERT_EQ(chosen.size(), 1u);
+  EXPECT_EQ(chosen[0], 11u);
 }
 
 }  // namespace
