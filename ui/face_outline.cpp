@@ -58,4 +58,25 @@ std::vector<Eigen::Vector2d> FaceOutline::corner_pixels(const TraceContext& cont
   return pixels;
 }
 
+std::vector<OverlayLine> outline_on_surface(const SurfaceDrape& drape, DrapeCache& cache,
+                                            const std::string& what,
+                                            const std::vector<Eigen::Vector3d>& corners,
+                                            std::uint32_t rgba, float width_px) {
+  std::vector<OverlayLine> out;
+  if (corners.size() < 2) return out;
+  for (const auto& run : cache.runs(drape, corners, corners.size() >= 3, kOutlineEdgeSag))
+    out.push_back({what, run, rgba, width_px, false});
+  return out;
+}
+
+bool corner_in_sight(const measure::MeshPicker& picker, const ScreenRay& ray,
+                     const Eigen::Vector3d& corner, double tolerance) {
+  const auto hit = picker.pick({ray.origin, ray.direction});
+  if (!hit) return false;
+  // Along the ray: the surface met first lies no nearer than the corner.
+  const double to_corner = (corner - ray.origin).dot(ray.direction.normalized());
+  const double to_hit = (hit->point - ray.origin).dot(ray.direction.normalized());
+  return to_hit >= to_corner - tolerance;
+}
+
 }  // namespace rockface::ui

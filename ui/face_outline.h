@@ -7,12 +7,17 @@
 // one the model is textured with), then core/measure's measure_area on the
 // worker (FieldServices::trace_map). The analysis takes it as the visit's
 // mapped face (the free surface).
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include <imgui.h>
 #include <Eigen/Core>
 
 #include "core/measure/plane_measurement.h"
+#include "ui/orbit_camera.h"
+#include "ui/overlay_drape.h"
+#include "ui/overlay_scene.h"
 #include "ui/trace_marker.h"
 
 namespace rockface::ui {
@@ -39,5 +44,32 @@ class FaceOutline {
   std::vector<Eigen::Vector3d> corners_;
   std::string problem_;
 };
+
+// Drawing an outline on the 3D image (issue 27): its edges are laid on the
+// drawn surface as the traces are (ui/overlay_drape.h), so the renderer
+// depth-tests them against the model (a ridge in front hides them) and
+// cuts them where they leave the mapped area, never a straight line across
+// the screen. Three corners or more close the polygon.
+
+// A straight edge between two corners on patches of the face that meet at a
+// bend leaves the surface by up to half its length times sin(bend / 2):
+// 0.05 of its length allows bends up to 11 degrees, as a block's footprint
+// (ui/overlay_blocks.cpp); a sharper bend cuts the edge there, which shows
+// the geologist that the edge does not follow the rock.
+constexpr double kOutlineEdgeSag = 0.05;
+
+// The outline's lines on the surface (one per run), for an OverlayScene.
+std::vector<OverlayLine> outline_on_surface(const SurfaceDrape& drape, DrapeCache& cache,
+                                            const std::string& what,
+                                            const std::vector<Eigen::Vector3d>& corners,
+                                            std::uint32_t rgba, float width_px);
+
+// Whether a corner on the surface is the first surface a ray from the eye
+// toward it meets (`ray` through the corner's pixel): a corner behind a
+// ridge is not, and its dot is not drawn. `tolerance` (m): how far in front
+// of the corner the ray may meet the surface and still be the corner's own
+// (the ray through the rounded pixel meets a slanting face a little apart).
+bool corner_in_sight(const measure::MeshPicker& picker, const ScreenRay& ray,
+                     const Eigen::Vector3d& corner, double tolerance);
 
 }  // namespace rockface::ui

@@ -6,6 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "storage/project_store.h"
+#include "ui/widgets_scroll.h"
 
 namespace rockface::ui {
 
@@ -104,6 +105,9 @@ ModelView::Interaction ModelView::draw(ImVec2 size, const TouchGesture& gesture)
   panel_min_ = ImGui::GetCursorScreenPos();
   panel_max_ = ImVec2(panel_min_.x + size.x, panel_min_.y + size.y);
   ImGui::InvisibleButton("##model", size);
+  // Issue 27 (touch): a drag on the 3D image turns it (or takes a trace's
+  // taps), never scrolls the panel around it.
+  last_item_takes_drags();
   const ImGuiIO& io = ImGui::GetIO();
   const float slop = kTapSlopPx;
   if (ImGui::IsItemActive() && io.MouseDragMaxDistanceSqr[0] > slop * slop)

@@ -178,15 +178,17 @@ std::vector<std::vector<Eigen::Vector3d>> SurfaceDrape::drape(
 }
 
 const DrapeCache::Runs& DrapeCache::runs(const SurfaceDrape& drape,
-                                         const std::vector<Eigen::Vector3d>& line, bool closed) {
+                                         const std::vector<Eigen::Vector3d>& line, bool closed,
+                                         double sag) {
   std::vector<double> key;
-  key.reserve(3 * line.size() + 1);
+  key.reserve(3 * line.size() + 2);
   key.push_back(closed ? 1 : 0);
+  key.push_back(sag);
   for (const auto& p : line) key.insert(key.end(), {p.x(), p.y(), p.z()});
   // A pending trace changes with every tap: old entries go when many pile up.
   if (cache_.size() > 512 && !cache_.count(key)) cache_.clear();
   auto [it, made] = cache_.try_emplace(std::move(key));
-  if (made) it->second = drape.drape(line, closed);
+  if (made) it->second = drape.drape(line, closed, sag);
   return it->second;
 }
 

@@ -90,8 +90,10 @@ class SurfaceDrape {
 class DrapeCache {
  public:
   using Runs = std::vector<std::vector<Eigen::Vector3d>>;
-  const Runs& runs(const SurfaceDrape& drape, const std::vector<Eigen::Vector3d>& line,
-                   bool closed);
+  // `sag` as SurfaceDrape::drape's (a polygon's straight edges between
+  // corners on a bent surface).
+  const Runs& runs(const SurfaceDrape& drape, const std::vector<Eigen::Vector3d>& line, bool closed,
+                   double sag = 0);
   void clear() { cache_.clear(); }
 
  private:

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <imgui_internal.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -377,8 +378,9 @@ void drag_proposal_ends(AppState& app) {
     ImGui::SetCursorScreenPos(ImVec2(q->x - r, q->y - r));
     ImGui::PushID(k);
     ImGui::InvisibleButton("##proposal end", ImVec2(2 * r, 2 * r));
-    app.targets.record(k == 0 ? "proposal start" : "proposal end", ImGui::GetItemRectMin(),
-                       ImGui::GetItemRectMax());
+    // Dragged along the trace: a drag on it never scrolls (issue 27, touch).
+    app.targets.record_dragged(k == 0 ? "proposal start" : "proposal end", ImGui::GetItemRectMin(),
+                               ImGui::GetItemRectMax(), ImGui::GetItemID());
     if (ImGui::IsItemActivated()) s.dragging = k;
     if (ImGui::IsItemActive() && s.dragging == k) {
       const ScreenRay ray = app.model_view.ray_at(ImGui::GetIO().MousePos);

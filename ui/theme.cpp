@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "ui/widgets_scroll.h"
+
 namespace rockface::ui {
 
 namespace {
@@ -97,11 +99,10 @@ void apply_theme(Theme theme, float scale, float min_target_px) {
   const float font = theme_font_px(theme) * scale;
   style.FramePadding = ImVec2(14 * scale, std::max(12 * scale, (min_target_px - font) / 2));
   style.ItemSpacing = ImVec2(12 * scale, 10 * scale);
-  // A panel scrolls only by its scroll bar on a touch screen (ImGui has no
-  // drag to scroll), yet a 9 mm bar narrows the side panels enough to push
-  // buttons scripts tap out of view: 28 px (4.7 mm) until panels scroll by
-  // a drag (issue 27, the walk's note).
-  style.ScrollbarSize = 28 * scale;
+  // Panels scroll by a drag of the finger (ui/widgets_scroll.h): the scroll
+  // bar is a thin indicator of where the content is, not a touch target
+  // (issue 27), and leaves the panels' width to their buttons.
+  style.ScrollbarSize = kScrollIndicatorPx * scale;
   style.GrabMinSize = 28 * scale;
   style.FrameRounding = 6 * scale;
   style.WindowRounding = 0;

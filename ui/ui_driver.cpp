@@ -6,8 +6,19 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
+#include "ui/ui_driver_scroll.h"
 
 namespace rockface::ui {
+
+namespace {
+
+// Frames a scripted drag takes: enough that the slop is crossed on a frame
+// of its own before the finger goes on.
+constexpr int kDragFrames = 6;
+// Start points drag_toward() tries across a panel.
+constexpr int kStartPoints = 7;
+
+}  // namespace
 
 void UiDriver::settle() {
   // The outcome is taken inside a frame; a `then` may start another task.
@@ -31,15 +42,49 @@ void UiDriver::tap(float x, float y) {
 }
 
 void UiDriver::tap(const std::string& label, const std::string& where) {
-  const auto target = state().targets.find(label);
+  auto target = state().targets.find(label);
   if (!target) throw InputError(where, "nothing labelled \"" + label + "\" on the screen");
   if (!target->enabled) throw InputError(where, "\"" + label + "\" is disabled on the screen");
-  // A finger cannot tap what is scrolled out of view.
-  if (!target->visible)
-    throw InputError(where, "\"" + label + "\" is scrolled out of view on the screen");
+  // A finger scrolls what is out of view into view first.
+  if (!shown_whole(*target) && scrolled_out_of_view(*target)) {
+    bring_into_view(label, where);
+    target = state().targets.find(label);
+  }
+  // Cut by what no drag moves (the 3D image's edge): what shows is tapped.
+  if (!target || !target->visible)
+    throw InputError(where, "\"" + label + "\" is out of view on the screen");
   // The middle of the part in view: a finger taps what it sees.
   const ImVec2 c = target->shown_centre();
   tap(c.x, c.y);
+}
+
+int UiDriver::bring_into_view(const std::string& label, const std::string& where) {
+  int drags = 0;
+  // Each drag moves the content by at most the panel's height; a long list
+  // takes a few. More than this and the drags are not moving it.
+  constexpr int kMostDrags = 24;
+  int stuck = 0;
+  while (drags < kMostDrags) {
+    const auto target = state().targets.find(label);
+    if (!target) throw InputError(where, "nothing labelled \"" + label + "\" on the screen");
+    // Whole in view, or cut only by what no drag moves.
+    if (shown_whole(*target) || !scrolled_out_of_view(*target)) return drags;
+    // Every start point tried without moving it: the drags do not reach it.
+    const auto plan =
+        stuck < kStartPoints ? drag_toward(*target, state().targets, stuck) : std::nullopt;
+    if (!plan) throw InputError(where, "\"" + label + "\" cannot be scrolled into view by a drag");
+    drag(plan->from, plan->to, kDragFrames);
+    ++drags;
+    const auto after = state().targets.find(label);
+    // The same place after the drag: try the next start point.
+    if (after && std::abs(after->min.x - target->min.x) < 0.5f &&
+        std::abs(after->min.y - target->min.y) < 0.5f)
+      ++stuck;
+    else
+      stuck = 0;
+  }
+  throw InputError(where, "\"" + label + "\" is still out of view after " +
+                              std::to_string(kMostDrags) + " drags");
 }
 
 void UiDriver::drag(Eigen::Vector2f from, Eigen::Vector2f to, int frames) {

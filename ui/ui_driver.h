@@ -30,10 +30,21 @@ class UiDriver {
   void settle();
   // Input, each followed by the frames ImGui needs to see it.
   void tap(float x, float y);
-  // Taps the centre of a target drawn in the last frame; throws InputError
-  // (naming `where`) when there is none or it is disabled.
+  // Taps the centre of a target drawn in the last frame, first dragging
+  // its panels until it is in view as a finger would (bring_into_view);
+  // throws InputError (naming `where`) when there is none, it is disabled,
+  // or no drag brings it into view.
   void tap(const std::string& label, const std::string& where = "tap");
+  // One finger down at `from`, moved to `to` over `frames` frames, up: on a
+  // panel that scrolls, a drag scrolls it (ui/widgets_scroll.h); on the 3D
+  // image it turns the model.
   void drag(Eigen::Vector2f from, Eigen::Vector2f to, int frames);
+  // Drags the panels a target lies in (innermost first, each inside its
+  // part on the screen, never from a control that takes drags itself) until
+  // the whole target shows, or as much as its panel can show; the drags
+  // made. Throws InputError naming `where` when there is no such target or
+  // no drag moves it into view.
+  int bring_into_view(const std::string& label, const std::string& where = "scroll");
   void pinch(Eigen::Vector2f centre, float from, float to, int frames);
 
   // Runs a script step; screenshots go to `dir` as NAME.png.

@@ -59,6 +59,18 @@ TargetRect in_view(ImVec2 min, ImVec2 max, bool enabled, bool button) {
   r.shown_max = max;
   const ImGuiContext* g = ImGui::GetCurrentContext();
   if (!g || !g->CurrentWindow) return r;
+  // The panels it lies in, out to a popup or the top window.
+  for (const ImGuiWindow* w = g->CurrentWindow; w;
+       w = (w->Flags & ImGuiWindowFlags_ChildWindow) ? w->ParentWindow : nullptr) {
+    ScrollView v;
+    v.inner_min = w->InnerRect.Min;
+    v.inner_max = w->InnerRect.Max;
+    // Clipped by the panels around it already (ImGui's Begin).
+    v.clip_min = w->InnerClipRect.Min;
+    v.clip_max = w->InnerClipRect.Max;
+    v.scrolls = w->ScrollMax.y > 0 || w->ScrollMax.x > 0;
+    r.views.push_back(v);
+  }
   const ImRect clip = g->CurrentWindow->ClipRect;
   r.shown_min = ImVec2(std::max(min.x, clip.Min.x), std::max(min.y, clip.Min.y));
   r.shown_max = ImVec2(std::min(max.x, clip.Max.x), std::min(max.y, clip.Max.y));
@@ -71,6 +83,18 @@ TargetRect in_view(ImVec2 min, ImVec2 max, bool enabled, bool button) {
 void TouchTargets::begin_frame() {
   rects_.clear();
   frame_targets() = this;
+  drag_scroll_.update(drag_slop_px());
+}
+
+void TouchTargets::record_dragged(const std::string& label, ImVec2 min, ImVec2 max, unsigned id) {
+  TargetRect r = in_view(min, max, true, false);
+  r.drags = true;
+  rects_[label] = r;
+  drag_scroll_.takes_drags(id);
+}
+
+void last_item_takes_drags() {
+  if (frame_targets()) frame_targets()->drag_scroll().takes_drags(ImGui::GetItemID());
 }
 
 void TouchTargets::record(const std::string& label, ImVec2 min, ImVec2 max, bool enabled) {

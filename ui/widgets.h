@@ -13,6 +13,7 @@
 
 #include "ui/block_view.h"
 #include "ui/theme.h"
+#include "ui/widgets_scroll.h"
 #include "ui/widgets_text.h"
 
 namespace rockface::ui {
@@ -39,6 +40,18 @@ constexpr ImU32 kTraceColour = IM_COL32(255, 0, 200, 255);
 constexpr ImU32 kPendingTraceColour = IM_COL32(0, 170, 255, 255);
 constexpr ImU32 kTargetColour = IM_COL32(255, 230, 0, 255);
 
+// A panel a target is drawn in, as a finger sees it: `inner` is the panel's
+// content area on the screen (where its content shows when the panel itself
+// is in view), `clip` the part of it on the screen now (inside every panel
+// it lies in). Innermost first; a drag inside `clip` scrolls it
+// (ui/widgets_scroll.h).
+struct ScrollView {
+  ImVec2 inner_min, inner_max;
+  ImVec2 clip_min, clip_max;
+  bool scrolls = false;  // its content is taller or wider than the panel
+  bool clip_empty() const { return clip_max.x <= clip_min.x || clip_max.y <= clip_min.y; }
+};
+
 struct TargetRect {
   ImVec2 min, max;
   bool enabled = true;
@@ -50,6 +63,11 @@ struct TargetRect {
   // The part inside its panel's view (the whole when drawn outside a
   // panel): where a finger can tap it.
   ImVec2 shown_min, shown_max;
+  // It takes drags itself (a slider, the 3D image's handles): a drag begun
+  // on it does not scroll its panel.
+  bool drags = false;
+  // The panels it lies in, innermost first (empty outside a panel).
+  std::vector<ScrollView> views;
   ImVec2 centre() const { return {(min.x + max.x) / 2, (min.y + max.y) / 2}; }
   ImVec2 shown_centre() const {
     return {(shown_min.x + shown_max.x) / 2, (shown_min.y + shown_max.y) / 2};
@@ -59,7 +77,9 @@ struct TargetRect {
 class TouchTargets {
  public:
   // Clears the record and makes these the frame's targets for
-  // record_touch_target() (widgets drawn without them, e.g. a popup's Close).
+  // record_touch_target() (widgets drawn without them, e.g. a popup's Close);
+  // in a frame (after ImGui::NewFrame, before the first window), a finger's
+  // drag scrolls the panel under it (ui/widgets_scroll.h).
   void begin_frame();
   // A thumb-sized button; width 0 fits the label. Records where it is.
   bool button(const std::string& label, float width = 0, bool enabled = true);
@@ -78,11 +98,18 @@ class TouchTargets {
   void record(const std::string& label, ImVec2 min, ImVec2 max, bool enabled = true);
   // Records an area that is shown, not tapped (a notice, a table cell).
   void record_area(const std::string& label, ImVec2 min, ImVec2 max);
+  // Records a target that takes drags itself (a slider, a handle dragged
+  // on the model, a step button that repeats while held): a drag begun on
+  // ImGui item `id` is left to it and scrolls nothing.
+  void record_dragged(const std::string& label, ImVec2 min, ImVec2 max, unsigned id);
   std::optional<TargetRect> find(const std::string& label) const;
   float scale() const { return scale_; }
   void set_scale(float s) { scale_ = s; }
   float dpi() const { return dpi_; }
   void set_dpi(float dpi) { dpi_ = dpi; }
+  // Edge of the slop between a tap and a drag, pixels at the DPI.
+  float drag_slop_px() const { return kDragSlopMm / 25.4f * dpi_; }
+  DragScroll& drag_scroll() { return drag_scroll_; }
   // Every target drawn this frame (the walk checks their size).
   const std::map<std::string, TargetRect>& all() const { return rects_; }
 
@@ -90,6 +117,7 @@ class TouchTargets {
   std::map<std::string, TargetRect> rects_;
   float scale_ = 1;
   float dpi_ = kScaleOneDpi;
+  DragScroll drag_scroll_;
 };
 
 // Records a touch target into the frame's TouchTargets (the last to begin a

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 #include <imgui_stdlib.h>
 
 #include "ui/widgets_text.h"
@@ -50,10 +51,12 @@ bool slider(TouchTargets& targets, const std::string& name, float* value, float 
   const bool changed = ImGui::SliderFloat(("##" + name).c_str(), value, lo, hi, format);
   ImGui::PopStyleVar(2);
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  targets.record(name, min, max);
+  // A slider is dragged: a drag begun on it moves it, never its panel.
+  const unsigned id = ImGui::GetItemID();
+  targets.record_dragged(name, min, max, id);
   const float fraction = hi > lo ? (*value - lo) / (hi - lo) : 0.0f;
   const GrabRect grab = slider_grab(min, max, fraction, side);
-  targets.record(name + " grab", grab.min, grab.max);
+  targets.record_dragged(name + " grab", grab.min, grab.max, id);
   record_in_frame(value_text(format, *value));
   return changed;
 }
@@ -146,8 +149,15 @@ bool number_field(TouchTargets& targets, const std::string& name, double* value,
   const float button = ImGui::GetFrameHeight(), gap = ImGui::GetStyle().ItemInnerSpacing.x;
   const float plus = max.x - button, minus = plus - gap - button;
   targets.record(name, min, ImVec2(minus - gap, max.y));
-  targets.record(name + " -", ImVec2(minus, min.y), ImVec2(minus + button, max.y));
-  targets.record(name + " +", ImVec2(plus, min.y), max);
+  // The steps repeat while held (pressed as the finger lands): a drag
+  // begun on one is left to it, so it never both steps and scrolls. Their
+  // ids as InputScalar makes them, under the field's label.
+  ImGui::PushID(("##" + name).c_str());
+  const unsigned minus_id = ImGui::GetID("-"), plus_id = ImGui::GetID("+");
+  ImGui::PopID();
+  targets.record_dragged(name + " -", ImVec2(minus, min.y), ImVec2(minus + button, max.y),
+                         minus_id);
+  targets.record_dragged(name + " +", ImVec2(plus, min.y), max, plus_id);
   const float room = minus - gap - min.x - 2 * ImGui::GetStyle().FramePadding.x;
   const std::string shown = value_text(format, *value);
   record_drawn_text(shown, ImGui::CalcTextSize(shown.c_str()).x, room);

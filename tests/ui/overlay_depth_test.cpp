@@ -14,6 +14,7 @@
 
 #include "core/measure/mesh_picker.h"
 #include "ui/display_mesh.h"
+#include "ui/face_outline.h"
 #include "ui/model_renderer.h"
 #include "ui/orbit_camera.h"
 #include "ui/overlay_drape.h"
@@ -152,6 +153,109 @@ TEST(OverlayDepth, ATraceBehindARidgeIsHiddenWhereTheRidgeIsInFront) {
       if (hidden_at(x + 0.5f, y + 0.5f) == 1) ++through;
     }
   EXPECT_EQ(through, 0) << through << " trace pixels drawn over the fin";
+}
+
+// The face's outline (issue 27) is laid on the surface as the traces are:
+// its edges are depth-tested (the fin hides the part behind it), a corner
+// behind the fin is not in sight (its dot is not drawn), and an edge to a
+// corner beyond the 3D image is cut where the surface ends, never drawn in
+// the air. The same wall, camera and real renderers as above.
+TEST(OverlayDepth, AFaceOutlineLiesOnTheSurfaceHiddenBehindTheRidgeAndCutAtItsEdge) {
+  auto egl = EglContext::surfaceless();
+  const Scene scene = wall_with_fin();
+  ModelRenderer renderer;
+  renderer.upload(scene.mesh, cv::Mat());
+  OrbitCamera camera;
+  camera.set_viewport(kWidth, kHeight);
+  camera.frame(scene.mesh.centre, scene.mesh.radius, Eigen::Vector3d(-1, -1, 0.25));
+  const SurfaceDrape drape(scene.mesh);
+  DrapeCache cache;
+  const rockface::measure::MeshPicker picker(scene.surface);
+
+  // Corners tapped on the wall right of the fin, the lower left one behind
+  // it, and one beyond the wall's right edge (x = 1).
+  const std::vector<Eigen::Vector3d> corners = {
+      {0.3, 0, -0.8}, {0.3, 0, 0.8}, {1.4, 0, 0.8}, {0.8, 0, -0.8}};
+  constexpr std::uint32_t kOutlineRgba = 0xFF00C8FFu;  // IM_COL32(255, 200, 0, 255)
+  const cv::Vec3b kOutlineBgr(0, 200, 255);
+  const auto lines = outline_on_surface(drape, cache, "face outline", corners, kOutlineRgba, 4);
+  ASSERT_FALSE(lines.empty());
+  // Every drawn vertex lies on the wall: on its plane (y = 0 to 1e-6 m: the
+  // display mesh holds its positions as floats, 6e-8 m apart at 1 m) and
+  // within it (x <= 1 plus the drape's tolerance, the most a vertex may
+  // stand off the drawn surface).
+  for (const auto& l : lines)
+    for (const auto& p : l.points) {
+      EXPECT_NEAR(p.y(), 0, 1e-6) << "an outline vertex off the wall's plane";
+      EXPECT_LE(p.x(), 1 + drape.tolerance()) << "an outline vertex beyond the wall's edge";
+    }
+  OverlayScene overlay;
+  overlay.lines = lines;
+  renderer.render(camera, overlay);
+  const cv::Mat shot = renderer.read_bgr();
+
+  auto hidden_at = [&](float x, float y) {
+    const ScreenRay ray = camera.ray(x, y);
+    const auto hit = picker.pick({ray.origin, ray.direction});
+    if (!hit) return -1;
+    return hit->point.y() < -0.005 ? 1 : 0;  // the fin, as in the test above
+  };
+  // Samples along every drawn edge, asserted where the 4 px ribbon's
+  // neighbours agree (the rasteriser's rounding at the fin's outline).
+  int hidden = 0, visible = 0, wrong = 0;
+  for (const auto& l : lines)
+    for (std::size_t i = 1; i < l.points.size(); ++i)
+      for (int k = 0; k < 20; ++k) {
+        const Eigen::Vector3d p = l.points[i - 1] + (l.points[i] - l.points[i - 1]) * (k / 20.0);
+        const Eigen::Vector3d q = camera.project(p);
+        const float x = static_cast<float>(q.x()), y = static_cast<float>(q.y());
+        if (x < 5 || y < 5 || x > kWidth - 6 || y > kHeight - 6) continue;
+        const int verdict = hidden_at(x + 0.5f, y + 0.5f);
+        bool agreed = verdict >= 0;
+        for (const auto& [dx, dy] :
+             {std::pair{-4, 0}, std::pair{4, 0}, std::pair{0, -4}, std::pair{0, 4}})
+          agreed = agreed && hidden_at(x + 0.5f + dx, y + 0.5f + dy) == verdict;
+        if (!agreed) continue;
+        const cv::Vec3b seen = shot.at<cv::Vec3b>(static_cast<int>(y), static_cast<int>(x));
+        const bool ok = verdict == 1 ? seen == kFinBgr : seen == kOutlineBgr;
+        (verdict == 1 ? hidden : visible)++;
+        if (!ok && ++wrong <= 5)
+          ADD_FAILURE() << (verdict == 1 ? "behind the fin" : "in the open") << " at "
+                        << p.transpose() << ": pixel (" << x << ", " << y << ") is " << seen;
+      }
+  std::printf("outline samples asserted: %d hidden behind the fin, %d visible\n", hidden, visible);
+  EXPECT_GT(hidden, 20);  // the lower part of the left edge and of the bottom edge
+  EXPECT_GT(visible, 50);
+  EXPECT_EQ(wrong, 0);
+  // No pixel of the outline shows through the fin, and none lies off the
+  // wall farther than the ribbon's half width and a pixel of rounding (3 px).
+  int through = 0, off = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      if (shot.at<cv::Vec3b>(y, x) != kOutlineBgr) continue;
+      const int verdict = hidden_at(x + 0.5f, y + 0.5f);
+      if (verdict == 1) ++through;
+      if (verdict >= 0) continue;
+      bool near_wall = false;
+      for (int dy = -3; dy <= 3 && !near_wall; ++dy)
+        for (int dx = -3; dx <= 3 && !near_wall; ++dx)
+          near_wall = hidden_at(x + 0.5f + dx, y + 0.5f + dy) >= 0;
+      if (!near_wall) ++off;
+    }
+  EXPECT_EQ(through, 0) << through << " outline pixels drawn over the fin";
+  EXPECT_EQ(off, 0) << off << " outline pixels drawn off the wall";
+
+  // The corners' dots: drawn only where the corner is in sight. The lower
+  // left corner is behind the fin; the upper left is in the open. The
+  // tolerance is the drape's, as the Mapping screen's.
+  auto in_sight = [&](const Eigen::Vector3d& c) {
+    const Eigen::Vector3d q = camera.project(c);
+    return corner_in_sight(picker, camera.ray(static_cast<float>(q.x()), static_cast<float>(q.y())),
+                           c, drape.tolerance());
+  };
+  EXPECT_FALSE(in_sight(corners[0])) << "a corner behind the fin is drawn";
+  EXPECT_TRUE(in_sight(corners[1]));
+  EXPECT_TRUE(in_sight(corners[3]));
 }
 
 }  // namespace

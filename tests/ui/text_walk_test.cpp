@@ -10,18 +10,29 @@
 // (buttons, table rows, sliders and their grabs, boxes, choices, markers on
 // the model, a popup's Close) is 9 mm at the tablet's density; no string
 // shows a machine's folder.
+//
+// Panels scroll by a drag of the finger (ui/widgets_scroll.h): on every
+// screen the walk drags each panel until every target scrolled out of view
+// has been in view (an open choice's list too), checking each frame there.
+// The scroll bars are skipped: they are thin position indicators, not
+// touch targets (a tap on one moves nothing: tests/ui/drag_scroll_test.cpp).
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <set>
 
 #include <gtest/gtest.h>
 
+#include "core/common/error.h"
+#include "core/rockmass/classification_form.h"
 #include "firmware-app/services/ui_services.h"
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
+#include "ui/map_blocks.h"
 #include "ui/overlay_text.h"
 #include "ui/text_check.h"
 #include "ui/text_coverage.h"
+#include "ui/ui_driver_scroll.h"
 
 namespace {
 
@@ -91,6 +102,34 @@ class Walk {
     for (const std::string& small : small_touch_targets(app.targets, 0.5f))
       problems_.insert(at + ": " + small);
     targets_ += static_cast<int>(app.targets.all().size());
+    for (const auto& [label, r] : app.targets.all())
+      if (r.touch && shown_whole(r)) seen_whole_.insert(label);
+  }
+
+  // Brings every touch target of the screen that a drag can reach into
+  // view, as a finger scrolls its panel, and checks the frame there. A
+  // target cut only by the 3D image's edge is no drag's business.
+  void sweep(const std::string& where) {
+    std::set<std::string> tried;
+    for (;;) {
+      std::string next;
+      for (const auto& [label, r] : session_->state().targets.all())
+        if (r.touch && !shown_whole(r) && scrolled_out_of_view(r) && !tried.count(label) &&
+            !seen_whole_.count(label)) {
+          next = label;
+          break;
+        }
+      if (next.empty()) return;
+      tried.insert(next);
+      try {
+        drags_ += session_->bring_into_view(next, where);
+      } catch (const rockface::InputError& e) {
+        problems_.insert(std::string(tablet_.name) + " (" + where + "): " + e.what());
+        continue;
+      }
+      session_->frame();
+      check(where + ", dragged to " + next);
+    }
   }
 
   void tap(const std::string& label, const std::string& where = "") {
@@ -107,6 +146,12 @@ class Walk {
   // The strings checked so far (a walk that saw nothing proves nothing).
   int strings() const { return strings_; }
   int targets() const { return targets_; }
+  // The drags made to bring targets into view, and every touch target seen
+  // whole at a check.
+  int drags() const { return drags_; }
+  void count_map_block_tap() { ++map_block_taps_; }
+  int map_block_taps() const { return map_block_taps_; }
+  const std::set<std::string>& seen_whole() const { return seen_whole_; }
   const std::set<std::string>& problems() const { return problems_; }
 
  private:
@@ -116,26 +161,50 @@ class Walk {
   std::set<std::string> problems_;
   int strings_ = 0;
   int targets_ = 0;
+  int drags_ = 0;
+  int map_block_taps_ = 0;
+  std::set<std::string> seen_whole_;
 };
 
 // Every screen and view the geologist reaches from the tabs.
 void walk_every_screen(Walk& w) {
   AppState& app = w.s().state();
   w.tap("Project");
+  w.sweep("the project screen");
   // The project's name, shortened at the top right, is one tap from whole.
   w.tap("Capture");
   w.tap_and_wait("Connect camera");
   w.tap_and_wait("Shoot left");
   w.tap_and_wait("Shoot right");
+  w.sweep("the capture screen");
   w.tap("Model");
   w.tap("Photograph");  // the targets' rings and labels on the photograph
   w.tap("3D image");
+  w.sweep("the model screen");
   // The Model tab's load of the 3D image may still run on the worker, and
   // the pair buttons are disabled until it is done.
   w.tap_and_wait("Mapping");
   for (std::size_t k = 0; k < app.session->pairs().size(); ++k) {
     const std::string pair = "Pair " + std::to_string(k + 1);
     if (app.targets.find(pair)) w.tap_and_wait(pair);
+  }
+  w.sweep("the mapping screen");
+  // A block's marker on the 3D image is a touch target: a tap selects the
+  // block and its verdict is shown in words (beside it and in the panel);
+  // a second tap takes the selection back.
+  for (const auto& [label, r] : std::map<std::string, TargetRect>(app.targets.all())) {
+    if (label.rfind("map block ", 0) != 0 || !r.visible) continue;
+    w.tap(label, "a block on the map selected");
+    const std::string words = selected_map_block_in_words(app.mapping.blocks);
+    EXPECT_EQ(words.rfind(label.substr(10) + " ", 0), 0u)
+        << label << " selected no block: " << words;
+    bool shown = false;
+    for (const DrawnText& d : drawn_text()) shown = shown || d.text == words + ".";
+    EXPECT_TRUE(shown) << "the Mapping screen does not show " << label << "'s verdict";
+    w.tap(label, "a block on the map unselected");
+    EXPECT_TRUE(selected_map_block_in_words(app.mapping.blocks).empty());
+    w.count_map_block_tap();
+    break;
   }
   // A trace being marked: its live fit in words.
   const ModelView& view = app.model_view;
@@ -157,24 +226,35 @@ void walk_every_screen(Walk& w) {
   w.tap("Blocks");
   const auto& blocks = app.session->blocks();
   ASSERT_FALSE(blocks.empty());
+  w.sweep("the blocks screen");
   w.tap("row " + blocks.front().label, "a block's report");
+  w.sweep("a block's report");
   w.tap("Rock mass");
-  // A choice of the form open (when the panel shows it without scrolling):
-  // its items are text and targets too.
-  if (const auto choice = app.targets.find("roughness"); choice && choice->visible) {
-    w.tap("roughness", "the roughness choice open");
-    w.tap("roughness: not entered", "the roughness choice closed");
-  }
+  w.sweep("the rock mass form");
+  // A choice of the form open: its list scrolls by a drag like any panel,
+  // and every item in it is brought into view and checked.
+  w.tap("roughness", "the roughness choice open");
+  w.sweep("the roughness choice open");
+  std::vector<std::string> items = {"not entered"};
+  for (const std::string& word : rockface::rockmass::roughness_words()) items.push_back(word);
+  for (const std::string& item : items)
+    EXPECT_TRUE(w.seen_whole().count("roughness: " + item))
+        << "the walk never saw the roughness choice's item \"" << item << "\" in view";
+  w.tap("roughness: not entered", "the roughness choice closed");
   w.tap_and_wait("Rock mass figures");
   w.tap("Block report");
   w.tap("Wedges view");
   w.tap_and_wait("Find wedges");
+  w.sweep("the wedges");
   w.tap("Blocks view");
 }
 
 void expect_clean(const Walk& w) {
   EXPECT_GT(w.strings(), 200) << "the walk saw too few strings to mean anything";
   EXPECT_GT(w.targets(), 100) << "the walk saw too few touch targets to mean anything";
+  // The open choice's list at least is longer than it shows.
+  EXPECT_GT(w.drags(), 0) << "no panel was dragged: what is scrolled out of view went unseen";
+  std::printf("drags to bring targets into view: %d\n", w.drags());
   std::string all;
   for (const auto& p : w.problems()) all += p + "\n";
   EXPECT_TRUE(w.problems().empty()) << w.problems().size() << " problems:\n" << all;
@@ -193,6 +273,8 @@ TEST(UiTextWalk, TheDemoProjectReadsCleanOnBothTablets) {
     Walk w(rockface::test::copy_of_demo("walk-demo-" + tablet.name), tablet);
     walk_every_screen(w);
     expect_clean(w);
+    // The demo's traces close finite blocks on the map: one was tapped.
+    EXPECT_EQ(w.map_block_taps(), 1) << "no block's marker on the Mapping screen was tapped";
   }
 }
 

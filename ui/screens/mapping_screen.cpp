@@ -135,25 +135,35 @@ const storage::Measurement* last_saved_trace(const ProjectSession& session) {
   return last;
 }
 
-// The corners tapped so far joined in order (closed once three), and the
-// stored outline, drawn over the model.
-void draw_outline(AppState& app) {
-  const float s = app.targets.scale();
-  ImDrawList* draw = ImGui::GetWindowDrawList();
-  auto polygon = [&](const std::vector<Eigen::Vector3d>& points, ImU32 colour, bool closed,
-                     float width) {
-    std::vector<ImVec2> screen;
-    for (const auto& p : points)
-      if (const auto q = app.model_view.to_screen(p)) screen.push_back(*q);
-    if (screen.size() >= 2)
-      draw->AddPolyline(screen.data(), static_cast<int>(screen.size()), colour,
-                        closed && screen.size() >= 3 ? ImDrawFlags_Closed : ImDrawFlags_None,
-                        width * s);
-    return screen;
+// Issue 27 (touch): the stored outline and the corners tapped so far
+// joined in order (closed once three), laid on the surface and depth-tested
+// by the renderer like the traces (ui/face_outline.h).
+void add_outlines_to_overlay(AppState& app) {
+  const SurfaceDrape* drape = app.model_view.drape();
+  if (!drape || !app.session) return;
+  const float width = 3 * app.targets.scale();
+  auto add = [&](const std::string& what, const std::vector<Eigen::Vector3d>& corners,
+                 ImU32 colour) {
+    for (auto& line :
+         outline_on_surface(*drape, app.model_view.drape_cache(), what, corners, colour, width))
+      app.model_view.overlay().lines.push_back(std::move(line));
   };
-  for (const auto* m : stored_outlines(*app.session)) polygon(m->points, kOutlineColour, true, 3);
-  const auto corners = polygon(app.mapping.outline.corners(), kPendingTraceColour, true, 3);
-  for (const auto& q : corners) draw->AddCircleFilled(q, 7 * s, kPendingTraceColour, 16);
+  for (const auto* m : stored_outlines(*app.session))
+    add("face outline " + m->label, m->points, kOutlineColour);
+  add("face outline being marked", app.mapping.outline.corners(), kPendingTraceColour);
+}
+
+// The corners tapped so far, over the model where each is in sight (one
+// behind a ridge is not drawn).
+void draw_outline(AppState& app) {
+  const measure::MeshPicker* picker = app.model_view.picker();
+  const SurfaceDrape* drape = app.model_view.drape();
+  if (!picker || !drape) return;
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (const auto& p : app.mapping.outline.corners())
+    if (const auto q = app.model_view.to_screen(p))
+      if (corner_in_sight(*picker, app.model_view.ray_at(*q), p, drape->tolerance()))
+        draw->AddCircleFilled(*q, 7 * app.targets.scale(), kPendingTraceColour, 16);
 }
 
 void save_outline(AppState& app) {
@@ -403,8 +413,11 @@ void draw_mapping_screen(AppState& app) {
   ImGui::BeginGroup();
   add_traces_to_overlay(app);
   add_map_blocks_to_overlay(app);
-  drag_proposal_ends(app);  // before the model: a dragged handle does not turn it
-  const auto interaction = app.model_view.draw(layout.main, app.gesture);
+  add_outlines_to_overlay(app);  // issue 27 (touch): on the surface
+  drag_proposal_ends(app);       // before the model: a dragged handle does not turn it
+  auto interaction = app.model_view.draw(layout.main, app.gesture);
+  // Issue 27 (touch): a tap on a block's marker selects the block.
+  if (interaction.tap && tap_map_block(app, *interaction.tap)) interaction.tap.reset();
   if (interaction.tap && app.mapping.outlining) {
     const ScreenRay r = app.model_view.ray_at(*interaction.tap);
     app.mapping.outline.tap({r.origin, r.direction}, app.model_view.picker());
