@@ -6,8 +6,6 @@ set -euo pipefail
 packages=(
   # toolchain
   g++ cmake ninja-build pkg-config
-  # compiler cache: CI runs on the session's machine, which keeps ~/.cache
-  ccache
   # libraries (DESIGN.md: Eigen, OpenCV, libgphoto2, SQLite; header-only helpers)
   libeigen3-dev libopencv-dev libgphoto2-dev libexif-dev libsqlite3-dev nlohmann-json3-dev libcli11-dev
   # OpenCV's contrib modules: ximgproc's thinning for trace proposals (issue 25)
@@ -31,6 +29,9 @@ packages=(
 # machine").
 if [ "${1:-}" != "--demo" ]; then
   packages+=(
+    # compiler cache: CI runs on the session's machine, which keeps
+    # ~/.cache; the demo's one build from nothing would only pay its misses
+    ccache
     # the UI's window test: a virtual X server
     xvfb xauth
     # tests and benchmarks
