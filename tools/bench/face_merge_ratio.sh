@@ -18,4 +18,4 @@ cmake --build "$dir" --target face_merge_ratio_bench -j "$(nproc)" >/dev/null
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs);" \
   "load average now: $(cut -d' ' -f1-3 /proc/loadavg)"
 "$dir/bench/face_merge_ratio_bench" --benchmark_filter='BM_MergeInterleaved/rounds:9/width:600' \
-  --benchmark_counters_tabular=true 2>&1 | grep -v '^\*\*\*WARNING'
+  --benchmark_counters_tabular=true 2>&1 | grep --line-buffered -v '^\*\*\*WARNING'
