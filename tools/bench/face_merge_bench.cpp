@@ -20,14 +20,9 @@
 // directory): reading the visit from the project, and writing the PDF.
 #include <unistd.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
-#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <string>
