@@ -9,6 +9,8 @@
 #include <optional>
 #include <tuple>
 
+#include <time.h>
+
 #include <Eigen/Geometry>
 
 #include "core/common/error.h"
@@ -52,6 +54,30 @@ double seconds_since(Clock::time_point from) {
   return std::chrono::duration<double>(Clock::now() - from).count();
 }
 
+// CPU seconds of the calling thread, or of the whole process.
+double cpu_seconds(clockid_t clock) {
+  timespec t{};
+  clock_gettime(clock, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+double thread_cpu() {
+  return cpu_seconds(CLOCK_THREAD_CPUTIME_ID);
+}
+double process_cpu() {
+  return cpu_seconds(CLOCK_PROCESS_CPUTIME_ID);
+}
+
+// f(), its wall and thread CPU seconds added to wall and cpu.
+template <class F>
+auto timed(double& wall, double& cpu, F&& f) {
+  const Clock::time_point t0 = Clock::now();
+  const double c0 = thread_cpu();
+  auto r = f();
+  wall += seconds_since(t0);
+  cpu += thread_cpu() - c0;
+  return r;
+}
+
 }  // namespace
 
 FaceRegistration register_face_images(const std::vector<FaceImage>& images,
@@ -61,12 +87,17 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
   if (images.empty()) throw InputError("3D images", "none given");
   const std::size_t n = images.size();
   const Clock::time_point started = Clock::now();
+  const double cpu_started = process_cpu();
   FaceRegistration out;
   out.images.resize(n);
   MergeTimes& times = out.times;
   times.match_s.assign(n, 0.0);
   times.ransac_s.assign(n, 0.0);
   times.surface_s.assign(n, 0.0);
+  times.match_cpu_s.assign(n, 0.0);
+  times.ransac_cpu_s.assign(n, 0.0);
+  times.surface_cpu_s.assign(n, 0.0);
+  times.wave.assign(n, -1);
   std::vector<bool> placed(n, false);
   for (std::size_t i = 0; i < n; ++i) {
     if (images[i].mesh.size() < 3)
@@ -111,7 +142,9 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
   const double prepare_sum = std::accumulate(task_s.begin() + n, task_s.end(), 0.0);
   times.prepare_s = prepared * prepare_sum / std::max(1e-9, prepare_sum + features_sum);
   times.features_s = prepared - times.prepare_s;
+  times.features_cpu_s = process_cpu() - cpu_started;
   Clock::time_point stage = Clock::now();
+  double stage_cpu = process_cpu();
 
   // Which images overlap, from thumbnails (image_overlap.h): a new image is
   // matched first against the placed image that overlaps it most, and
@@ -129,6 +162,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     coarse[j][i].shift_px = -coarse[i][j].shift_px;
   });
   times.thumbnails_s = seconds_since(stage);
+  times.thumbnails_cpu_s = process_cpu() - stage_cpu;
 
   // Tie points of a (placed, slave) pair, matched once each way: guided by
   // the pair's coarse shift where it was found clearly (guided_matching.h),
@@ -177,6 +211,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     bool guided = false;
     double surface_rms_before_icp_m = 0;
     double match_s = 0, ransac_s = 0, surface_s = 0;  // MergeTimes
+    double match_cpu_s = 0, ransac_cpu_s = 0, surface_cpu_s = 0;
     // The residuals through to_face, in face units before ground control
     // (ImageResidual); the final transform moves slave and reference alike.
     double overlap = 0, surface_rms_m = 0, tie_rms_m = 0;
@@ -198,21 +233,18 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       const double inlier_m =
           options.inlier_sigmas * images[j].sigma_z * scale + spacing[j] * scale;
       bool guided = coarse[j][i].response >= options.guide_min_response;
-      Clock::time_point t0 = Clock::now();
-      TiePoints tie = tie_points(j, i, guided);
-      result.match_s += seconds_since(t0);
-      t0 = Clock::now();
-      TieFit fit =
-          fit_tie_points(tie, inlier_m, options.ransac_iterations, options.seed + i * 7919 + j);
-      result.ransac_s += seconds_since(t0);
+      TiePoints tie =
+          timed(result.match_s, result.match_cpu_s, [&] { return tie_points(j, i, guided); });
+      TieFit fit = timed(result.ransac_s, result.ransac_cpu_s, [&] {
+        return fit_tie_points(tie, inlier_m, options.ransac_iterations,
+                              options.seed + i * 7919 + j);
+      });
       if (guided && static_cast<int>(fit.inliers.size()) < options.enough_tie_points) {
-        t0 = Clock::now();
-        tie = tie_points(j, i, false);
-        result.match_s += seconds_since(t0);
-        t0 = Clock::now();
-        TieFit all =
-            fit_tie_points(tie, inlier_m, options.ransac_iterations, options.seed + i * 7919 + j);
-        result.ransac_s += seconds_since(t0);
+        tie = timed(result.match_s, result.match_cpu_s, [&] { return tie_points(j, i, false); });
+        TieFit all = timed(result.ransac_s, result.ransac_cpu_s, [&] {
+          return fit_tie_points(tie, inlier_m, options.ransac_iterations,
+                                options.seed + i * 7919 + j);
+        });
         if (all.inliers.size() > fit.inliers.size()) {
           fit = std::move(all);
           guided = false;
@@ -233,6 +265,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     result.tie_points = static_cast<int>(best.inliers.size());
     // Refine on the overlapping surface.
     const Clock::time_point surface_started = Clock::now();
+    const double surface_cpu = thread_cpu();
     const std::size_t j = static_cast<std::size_t>(result.reference);
     const double overlap_m = options.overlap_distance_factor * best_inlier_m;
     ReferenceSurface& ref = references[j];
@@ -281,6 +314,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     }
     result.tie_rms_m = count ? std::sqrt(sum2 / count) : 0.0;
     result.surface_s = seconds_since(surface_started);
+    result.surface_cpu_s = thread_cpu() - surface_cpu;
     return result;
   };
 
@@ -329,8 +363,10 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     progress.step("registering " + images[wave.front()].name, static_cast<double>(done) / n);
     std::vector<Placement> results(wave.size());
     const Clock::time_point wave_started = Clock::now();
+    const double wave_cpu = process_cpu();
     parallel_for(wave.size(), [&](std::size_t k) { results[k] = place(wave[k]); });
     times.waves_s.push_back(seconds_since(wave_started));
+    times.waves_cpu_s.push_back(process_cpu() - wave_cpu);
     bool progressed = false;
     for (std::size_t k = 0; k < wave.size(); ++k) {
       const std::size_t i = wave[k];
@@ -338,6 +374,9 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       times.match_s[i] += results[k].match_s;
       times.ransac_s[i] += results[k].ransac_s;
       times.surface_s[i] += results[k].surface_s;
+      times.match_cpu_s[i] += results[k].match_cpu_s;
+      times.ransac_cpu_s[i] += results[k].ransac_cpu_s;
+      times.surface_cpu_s[i] += results[k].surface_cpu_s;
       if (!results[k].ok) {
         failed[i] = 1;  // an image placed later may overlap it
         continue;
@@ -350,6 +389,7 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
       r.surface_rms_m = results[k].surface_rms_m;
       r.tie_rms_m = results[k].tie_rms_m;
       r.to_face = results[k].to_face;
+      times.wave[i] = static_cast<int>(times.waves_s.size()) - 1;
       placed[i] = true;
       ++done;
       progressed = true;
@@ -394,6 +434,8 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
   // Each image's working data (normals and pixel lookup of ~1 M vertices,
   // features, surface index) freed side by side: on one thread, at the
   // function's end, this took as long as a registration.
+  stage = Clock::now();
+  stage_cpu = process_cpu();
   parallel_for(n, [&](std::size_t i) {
     normals[i] = {};
     grids[i].reset();
@@ -401,7 +443,10 @@ FaceRegistration register_face_images(const std::vector<FaceImage>& images,
     references[i].near.reset();
     references[i].sample = {};
   });
+  times.release_s = seconds_since(stage);
+  times.release_cpu_s = process_cpu() - stage_cpu;
   times.total_s = seconds_since(started);
+  times.total_cpu_s = process_cpu() - cpu_started;
   progress.step("done", 1.0);
   return out;
 }

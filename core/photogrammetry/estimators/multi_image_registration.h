@@ -110,18 +110,32 @@ struct ImageResidual {
   Similarity to_face;                   // its frame -> face frame (after ground control, if any)
 };
 
-// Where the merge's wall time went, in seconds (the benchmark and
-// docs/accuracy-cost.md read it; nothing else depends on it).
+// Where the merge's time went, in seconds (the benchmark and
+// docs/accuracy-cost.md read it; nothing else depends on it). Wall times
+// say how long a stage took on this machine as loaded; CPU times say how
+// much work it was, which a shared machine does not change: the wall time
+// of two registrations side by side on a core the machine shares also
+// holds the time the other one (or another process) had the core.
 struct MergeTimes {
   double prepare_s = 0;         // normals, pixel lookups and lattice spacing of every surface
   double features_s = 0;        // SIFT on every photograph (and what overlaps it in time)
   double thumbnails_s = 0;      // thumbnails and their phase correlation
   std::vector<double> waves_s;  // each wave of registrations, side by side
+  std::vector<int> wave;        // per image, the wave that placed it (-1: the master)
+  double release_s = 0;         // the working data freed
   // Per registered image (zero for the master), summed over the placed
   // images the registration tried: SIFT matching and lifting to 3D,
-  // RANSAC, and the surface stage (samples, kd-tree, overlap, ICP).
+  // RANSAC, and the surface stage (samples, index, overlap, ICP). Wall
+  // time, and the CPU time of the thread that ran it (each registration
+  // runs on one thread, its stages on no other).
   std::vector<double> match_s, ransac_s, surface_s;
-  double total_s = 0;
+  std::vector<double> match_cpu_s, ransac_cpu_s, surface_cpu_s;
+  // CPU time of the process (every thread, OpenCV's workers in SIFT
+  // included) in each phase: preparation and SIFT, thumbnails, each wave,
+  // the release; and in the whole merge.
+  double features_cpu_s = 0, thumbnails_cpu_s = 0, release_cpu_s = 0;
+  std::vector<double> waves_cpu_s;
+  double total_s = 0, total_cpu_s = 0;
 };
 
 struct FaceRegistration {

@@ -66,11 +66,11 @@ NearestWithin::NearestWithin(const std::vector<Eigen::Vector3d>& points, double 
   std::sort(sorted_.begin(), sorted_.end());
 }
 
-std::uint64_t NearestWithin::key(const Eigen::Vector3d& p, int dx, int dy, int dz) const {
+std::uint64_t NearestWithin::key(const Eigen::Vector3d& p) const {
   const Eigen::Vector3d c = (p - origin_) / radius_;
-  const std::int64_t x = static_cast<std::int64_t>(std::floor(c.x())) + dx;
-  const std::int64_t y = static_cast<std::int64_t>(std::floor(c.y())) + dy;
-  const std::int64_t z = static_cast<std::int64_t>(std::floor(c.z())) + dz;
+  const std::int64_t x = static_cast<std::int64_t>(std::floor(c.x()));
+  const std::int64_t y = static_cast<std::int64_t>(std::floor(c.y()));
+  const std::int64_t z = static_cast<std::int64_t>(std::floor(c.z()));
   if (x < 0 || y < 0 || z < 0 || x >= kCellRange || y >= kCellRange || z >= kCellRange)
     return std::numeric_limits<std::uint64_t>::max();  // no point has this key
   return (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) |
@@ -81,20 +81,35 @@ std::pair<int, double> NearestWithin::nearest(const Eigen::Vector3d& q) const {
   double best = radius_ * radius_;
   int found = -1;
   if (sorted_.empty()) return {found, radius_};
-  for (int dx = -1; dx <= 1; ++dx)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dz = -1; dz <= 1; ++dz) {
-        const std::uint64_t k = key(q, dx, dy, dz);
-        auto it = std::lower_bound(sorted_.begin(), sorted_.end(),
-                                   std::make_pair(k, std::numeric_limits<int>::min()));
-        for (; it != sorted_.end() && it->first == k; ++it) {
-          const double d2 = ((*points_)[static_cast<std::size_t>(it->second)] - q).squaredNorm();
-          if (d2 < best || (d2 == best && found >= 0 && it->second < found)) {
-            best = d2;
-            found = it->second;
-          }
+  const Eigen::Vector3d c = (q - origin_) / radius_;
+  const std::int64_t cx = static_cast<std::int64_t>(std::floor(c.x()));
+  const std::int64_t cy = static_cast<std::int64_t>(std::floor(c.y()));
+  const std::int64_t cz = static_cast<std::int64_t>(std::floor(c.z()));
+  // The three cells along z of one (x, y) column have consecutive keys (z
+  // is the key's low part), so one search finds all three: 9 searches, not
+  // 27, and the points visited in the same order.
+  const std::int64_t z0 = std::max<std::int64_t>(cz - 1, 0);
+  const std::int64_t z1 = std::min<std::int64_t>(cz + 1, kCellRange - 1);
+  if (z0 > z1) return {found, radius_};
+  for (std::int64_t x = cx - 1; x <= cx + 1; ++x) {
+    if (x < 0 || x >= kCellRange) continue;
+    for (std::int64_t y = cy - 1; y <= cy + 1; ++y) {
+      if (y < 0 || y >= kCellRange) continue;
+      const std::uint64_t column =
+          (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21);
+      const std::uint64_t from = column | static_cast<std::uint64_t>(z0);
+      const std::uint64_t to = column | static_cast<std::uint64_t>(z1);
+      auto it = std::lower_bound(sorted_.begin(), sorted_.end(),
+                                 std::make_pair(from, std::numeric_limits<int>::min()));
+      for (; it != sorted_.end() && it->first <= to; ++it) {
+        const double d2 = ((*points_)[static_cast<std::size_t>(it->second)] - q).squaredNorm();
+        if (d2 < best || (d2 == best && found >= 0 && it->second < found)) {
+          best = d2;
+          found = it->second;
         }
       }
+    }
+  }
   return {found, std::sqrt(best)};
 }
 

@@ -32,7 +32,8 @@ SurfaceSample sample_surface(const SurfaceMesh& mesh, const std::vector<Eigen::V
 SurfaceSample moved(const SurfaceSample& sample, const Similarity& rigid);
 
 // Exact nearest neighbour in 3D among points closer than a fixed radius: a
-// hash of cubic cells one radius wide, searched 3 x 3 x 3 around the query.
+// hash of cubic cells one radius wide, searched 3 x 3 x 3 around the query
+// (nine searches of the sorted keys: a column of three cells is one range).
 // Deterministic (flann's randomised kd-tree, used before, was neither exact
 // nor the same from run to run: the merge's residuals scattered with it).
 class NearestWithin {
@@ -44,7 +45,7 @@ class NearestWithin {
   double radius() const { return radius_; }
 
  private:
-  std::uint64_t key(const Eigen::Vector3d& p, int dx = 0, int dy = 0, int dz = 0) const;
+  std::uint64_t key(const Eigen::Vector3d& p) const;
   const std::vector<Eigen::Vector3d>* points_;
   double radius_;
   Eigen::Vector3d origin_;

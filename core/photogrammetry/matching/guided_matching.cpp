@@ -54,33 +54,26 @@ class KeypointGrid {
   std::unordered_map<long long, std::vector<std::size_t>> cells_;
 };
 
-// For each query keypoint: its best candidate if it passes the ratio test, else -1.
-std::vector<int> guided_ratio_matches(const cv::Mat& query, const std::vector<Eigen::Vector2d>& at,
-                                      const cv::Mat& train, const KeypointGrid& grid,
-                                      const Eigen::Vector2d& shift, double window, double ratio) {
-  std::vector<int> best(static_cast<std::size_t>(query.rows), -1);
-  if (query.rows == 0 || train.rows < 2) return best;
-  using Row = Eigen::Map<const Eigen::Matrix<float, 1, Eigen::Dynamic>>;
-  for (int i = 0; i < query.rows; ++i) {
-    const Row q(query.ptr<float>(i), query.cols);
-    float d1 = std::numeric_limits<float>::infinity(), d2 = d1;
-    int b1 = -1;
-    grid.near(at[static_cast<std::size_t>(i)] + shift, window, [&](std::size_t j) {
-      const float d = (q - Row(train.ptr<float>(static_cast<int>(j)), train.cols)).squaredNorm();
-      if (d < d1) {
-        d2 = d1;
-        d1 = d;
-        b1 = static_cast<int>(j);
-      } else if (d < d2) {
-        d2 = d;
-      }
-    });
-    // The ratio of distances, as BFMatcher's knnMatch gives them (L2, not squared).
-    if (b1 >= 0 && std::isfinite(d2) && std::sqrt(d1) < ratio * std::sqrt(d2))
-      best[static_cast<std::size_t>(i)] = b1;
+// The nearest and second-nearest candidate of one keypoint (squared
+// distances), as the candidates are offered.
+struct NearestTwo {
+  float d1 = std::numeric_limits<float>::infinity(), d2 = d1;
+  int b1 = -1;
+  void offer(float d, int j) {
+    if (d < d1) {
+      d2 = d1;
+      d1 = d;
+      b1 = j;
+    } else if (d < d2) {
+      d2 = d;
+    }
   }
-  return best;
-}
+  // Its best candidate if it passes the ratio test (of distances, as
+  // BFMatcher's knnMatch gives them: L2, not squared), else -1.
+  int passing(double ratio) const {
+    return b1 >= 0 && std::isfinite(d2) && std::sqrt(d1) < ratio * std::sqrt(d2) ? b1 : -1;
+  }
+};
 
 }  // namespace
 
@@ -93,11 +86,30 @@ FeatureMatches match_guided(const ImageFeatures& left, const ImageFeatures& righ
   if (left.descriptors.empty() || right.descriptors.empty()) return out;
   CV_Assert(left.descriptors.type() == CV_32F && right.descriptors.type() == CV_32F);
   const auto pl = full_positions(left), pr = full_positions(right);
-  const KeypointGrid grid_left(pl, window_px), grid_right(pr, window_px);
-  const std::vector<int> lr = guided_ratio_matches(
-      left.descriptors, pl, right.descriptors, grid_right, shift_px, window_px, preset.ratio_test);
-  const std::vector<int> rl = guided_ratio_matches(
-      right.descriptors, pr, left.descriptors, grid_left, -shift_px, window_px, preset.ratio_test);
+  // A left keypoint i and a right one j are candidates of each other when
+  // j lies within the window around where the shift puts i (the same
+  // condition as i within the window around j moved back), so each
+  // candidate pair's distance is computed once and offered to both: the
+  // left-to-right and right-to-left searches of the mutual check in one
+  // pass, half the descriptor distances of two.
+  const KeypointGrid grid_right(pr, window_px);
+  std::vector<NearestTwo> from_left(pl.size()), from_right(pr.size());
+  const cv::Mat& ld = left.descriptors;
+  const cv::Mat& rd = right.descriptors;
+  using Row = Eigen::Map<const Eigen::Matrix<float, 1, Eigen::Dynamic>>;
+  for (int i = 0; i < ld.rows; ++i) {
+    const Row q(ld.ptr<float>(i), ld.cols);
+    NearestTwo& mine = from_left[static_cast<std::size_t>(i)];
+    grid_right.near(pl[static_cast<std::size_t>(i)] + shift_px, window_px, [&](std::size_t j) {
+      const int k = static_cast<int>(j);
+      const float d = (q - Row(rd.ptr<float>(k), rd.cols)).squaredNorm();
+      mine.offer(d, k);
+      from_right[j].offer(d, i);
+    });
+  }
+  std::vector<int> lr(pl.size()), rl(pr.size());
+  for (std::size_t i = 0; i < pl.size(); ++i) lr[i] = from_left[i].passing(preset.ratio_test);
+  for (std::size_t j = 0; j < pr.size(); ++j) rl[j] = from_right[j].passing(preset.ratio_test);
   for (std::size_t i = 0; i < lr.size(); ++i) {
     const int j = lr[i];
     if (j < 0 || rl[static_cast<std::size_t>(j)] != static_cast<int>(i)) continue;  // mutual

@@ -6,7 +6,8 @@
 // keypoints each, a window of a tenth of the frame) that is ~30 times fewer
 // descriptor distances than brute force, and the same tie points where the
 // shift holds: Lowe's ratio test and the mutual check as in
-// match_detected(), among the window's candidates.
+// match_detected(), among the window's candidates. Both directions of the
+// mutual check share one pass (a pair's distance is computed once).
 #include <Eigen/Core>
 
 #include "core/photogrammetry/matching/feature_matching.h"
