@@ -355,6 +355,9 @@ TEST_F(MapEdits, ATraceOfAFurtherPairIsMeasuredOnItsOwnPair) {
   const auto pairs = app().session->pairs();
   ASSERT_EQ(pairs.size(), 2u);
   ui().tap("Mapping");
+  // The Mapping screen loads pair 1's 3D image on the worker; its pair
+  // buttons stay disabled until that is done.
+  ui().settle();
   ui().tap("Pair 2");
   ui().settle();
   ASSERT_EQ(app().model_view.model_id(), pairs[1].id);
