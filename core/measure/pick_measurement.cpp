@@ -1,13 +1,17 @@
 #include "core/measure/pick_measurement.h"
 
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/units.h"
 #include "core/measure/joined_traces.h"
 #include "core/measure/least_cost_trace.h"
 #include "core/measure/pair_photo.h"
+#include "core/measure/tolerances.h"
 
 namespace rockface::measure {
 
@@ -204,6 +208,37 @@ MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& c,
       }
     if (normals.size() != points.size()) normals.clear();
     j.plane = fit_trace_plane(points, normals, c.settings);
+    // Readings of the joint itself win over its traces' points (issue 27),
+    // as they do for a trace: a joint marked by straight traces on a flat
+    // face has no plane of its own, and a geologist who held a compass on
+    // it has one. Several readings: their mean normal (each upward), the
+    // compass's sigma; the points still place the plane (their centroid).
+    Eigen::Vector3d read_normal = Eigen::Vector3d::Zero();
+    std::vector<std::string> read_by;
+    for (const auto& t : out.traces)
+      if (t.joint == j.label && t.compass) {
+        read_normal += t.m.plane.fit.normal;
+        read_by.push_back(t.m.id);
+      }
+    if (!read_by.empty()) {
+      const bool fitted = j.plane.known;
+      const Eigen::Vector3d fitted_normal = j.plane.fit.normal;
+      j.plane.known = true;
+      j.plane.fit.normal = read_normal.normalized();
+      j.plane.orientation = geometry::plane_orientation(j.plane.fit.normal);
+      j.plane.sigma = deg_to_rad(kCompassSigmaDeg);
+      std::string by;
+      for (const auto& id : read_by) by += (by.empty() ? "" : ", ") + id;
+      j.plane.problem = "orientation from the compass reading of " + by;
+      if (fitted) {
+        const double apart =
+            rad_to_deg(std::acos(std::min(1.0, std::abs(fitted_normal.dot(j.plane.fit.normal)))));
+        char text[96];
+        std::snprintf(text, sizeof text, "; the plane fitted to its traces is %.1f deg from it",
+                      apart);
+        j.plane.problem += text;
+      }
+    }
   }
 
   // Pieces of one trace tapped in different pairs' photographs are one

@@ -39,7 +39,12 @@ void print_joint_comparisons(const std::vector<JointComparison>& joints) {
             << "traces\n";
   for (const auto& j : joints) {
     std::string traces;
-    for (const auto& t : j.traces) traces += (traces.empty() ? "" : " ") + t;
+    for (const auto& t : j.traces) {
+      traces += (traces.empty() ? "" : " ") + t;
+      // The plane a geologist read with a compass on this trace's joint.
+      for (const auto& read : j.compass_read)
+        if (read == t) traces += " (compass)";
+    }
     char sigma[16], apart[16];
     std::snprintf(sigma, sizeof sigma, " (%.1f)", j.sigma);
     std::snprintf(apart, sizeof apart, "%.1f deg", j.angle);

@@ -78,6 +78,8 @@ std::vector<JointComparison> joint_comparisons(const storage::Scene& scene,
       c.traces = m.traces;
       c.measured = m.plane.known;
       c.problem = m.plane.problem;
+      for (const auto& t : measured.traces)
+        if (t.joint == j.id && t.compass) c.compass_read.push_back(t.m.id);
       if (c.measured) {
         c.dip = rad_to_deg(m.plane.orientation.dip);
         c.dipdir = rad_to_deg(m.plane.orientation.dipdir);

@@ -27,6 +27,7 @@ struct JointComparison {
   double dip = 0, dipdir = 0, sigma = 0;   // degrees, when measured
   double angle = 0;                        // degrees between the two planes, when measured
   std::vector<std::string> traces;
+  std::vector<std::string> compass_read;  // its traces whose compass reading gave the plane
   std::string problem;
 };
 

@@ -158,3 +158,40 @@ TEST(CompassReading, MeasurePicksTakesTheReadingOfAPick) {
   EXPECT_NEAR(rad_to_deg(measured.traces[0].m.plane.orientation.dip), 85, 1e-9);
   EXPECT_EQ(measured.poles.size(), 1u) << "the read plane is a pole of the sets";
 }
+
+// A joint marked by a straight trace (no plane from its points) takes the
+// reading of its trace, as the demo's J2 does: the replay and the analysis
+// read the joint's plane, not the trace's.
+TEST(CompassReading, AJointMarkedByAReadTraceTakesTheReading) {
+  StraightTrace s;
+  s.settings.point_sigma = 0.005;
+  const auto seg = s.face.trace_on(s.joint, 1);
+  ASSERT_TRUE(seg);
+  rm::Picks picks;
+  rm::TracePick pick;
+  pick.id = "T2";
+  pick.joint = "J2";
+  pick.where = "traces[0]";
+  pick.points = {(*seg)[0] + 0.05 * ((*seg)[1] - (*seg)[0]),
+                 (*seg)[1] - 0.05 * ((*seg)[1] - (*seg)[0])};
+  picks.traces.push_back(pick);
+  rm::MeasureContext context;
+  context.picker = &s.picker;
+  context.settings = s.settings;
+  {
+    const auto unread = rm::measure_picks(picks, context, std::nullopt);
+    ASSERT_EQ(unread.joints.size(), 1u);
+    EXPECT_FALSE(unread.joints[0].plane.known) << "a straight trace alone gives no plane";
+  }
+  picks.traces[0].compass = rm::CompassReading{85, 270};
+  const auto measured = rm::measure_picks(picks, context, std::nullopt);
+  ASSERT_EQ(measured.joints.size(), 1u);
+  const auto& j = measured.joints[0].plane;
+  ASSERT_TRUE(j.known) << j.problem;
+  // The reading itself, only turned through a unit normal and back: to
+  // rounding (1e-9 deg).
+  EXPECT_NEAR(rad_to_deg(j.orientation.dip), 85, 1e-9);
+  EXPECT_NEAR(rad_to_deg(j.orientation.dipdir), 270, 1e-9);
+  EXPECT_NEAR(rad_to_deg(j.sigma), rm::kCompassSigmaDeg, 1e-12);
+  EXPECT_NE(j.problem.find("compass reading of T2"), std::string::npos) << j.problem;
+}
