@@ -84,9 +84,7 @@ void check_outline(const std::vector<Eigen::Vector2d>& p, const std::string& whe
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!p[i].allFinite())
       throw InputError(where, "corner " + std::to_string(i + 1) + " is not a finite pixel");
-  if (std::abs(polygon_area(p)) < kMinOutlinePx2)
-    throw InputError(where, "its " + std::to_string(p.size()) +
-                                " corners enclose no area (they lie on one line)");
+  // Crossing edges first: a bow-tie's two halves cancel in the area.
   const std::size_t n = p.size();
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 2; j < n; ++j) {
@@ -97,6 +95,9 @@ void check_outline(const std::vector<Eigen::Vector2d>& p, const std::string& whe
                                     std::to_string((j + 1) % n + 1) +
                                     "): tap the corners in order around the face");
     }
+  if (std::abs(polygon_area(p)) < kMinOutlinePx2)
+    throw InputError(where, "its " + std::to_string(p.size()) +
+                                " corners enclose no area (they lie on one line)");
 }
 
 // measure_area's verdict on an area's plane: known unless a sliver or too
@@ -177,12 +178,23 @@ std::vector<Eigen::Vector2d> clip_polygon(const std::vector<Eigen::Vector2d>& po
 
 OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, const std::string& id,
                             const std::vector<Eigen::Vector2d>& polygon,
-                            const MeasureSettings& settings, const FacetOptions& options,
-                            const std::string& where) {
+                            const MeasureSettings& measured, const FacetOptions& options,
+                            double snap_tolerance, const std::string& where) {
   check_outline(polygon, where);
   check_facet_options(options);
+  if (!(snap_tolerance > 0))
+    throw InputError(where, "the snap tolerance must be a positive length (m), got " +
+                                std::to_string(snap_tolerance));
+  // The point precision the pieces are judged with: the stated one, or
+  // finer where the analysis needs it (the planarity gate then is half the
+  // snap tolerance). A model's predicted sigma_Z (14 mm for the demo's fast
+  // preset) would let a 12-degree fold two metres wide pass as one plane
+  // whose edges and fold lie 5-6 cm off it, beyond the snap tolerance.
+  MeasureSettings settings = measured;
+  settings.point_sigma =
+      std::min(measured.point_sigma, 0.5 * snap_tolerance / options.planarity_in_sigmas);
   OutlinePieces out;
-  AreaMeasurement whole = measure_area(picker, view, id, polygon, settings, where);
+  AreaMeasurement whole = measure_area(picker, view, id, polygon, measured, where);
   if (whole.outline_points.size() != whole.outline.size())
     throw InputError(where, std::to_string(whole.outline.size() - whole.outline_points.size()) +
                                 " of its " + std::to_string(whole.outline.size()) +
@@ -264,7 +276,7 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
     estimates.assign(planes.size(), PlaneEstimate{});
     for (std::size_t k = 0; k < planes.size(); ++k)
       if (parts.points[k].size() >= 3) {
-        estimates[k] = plane_of_points(parts.points[k], settings);
+        estimates[k] = plane_of_points(parts.points[k], measured);
         if (pass < kRefinePasses) planes[k] = estimates[k].fit.plane();
       }
     if (pass < kRefinePasses) continue;
@@ -394,7 +406,7 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
     a.vertices = parts.points[k].size();
     a.area = parts.area[k];
     a.plane = estimates[k];
-    judge_area_plane(a.plane, settings);
+    judge_area_plane(a.plane, measured);
     if (n > 2) {
       std::size_t in = 0, all = 0;
       for (const auto& q : seen_at[k])

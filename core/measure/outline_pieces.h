@@ -40,13 +40,17 @@ struct OutlinePieces {
 
 // The outline `polygon` (pixels of `view`, 3 or more corners) split into
 // flat pieces. `options`: the facet finder's knobs (facet_options(preset));
-// its planarity_in_sigmas and min_area_m2 also judge each piece. Throws
+// its planarity_in_sigmas and min_area_m2 also judge each piece.
+// `snap_tolerance` (m): how far off a patch the analysis still takes a
+// trace's point to lie on it (SCENE.md analysis.snap_tolerance, 0.05 m): a
+// piece is held to an RMS of half of it (95 % of a normal spread then lies
+// within it), however coarse the stated point precision. Throws
 // InputError naming `where` for a degenerate outline (fewer than 3 corners,
 // corners on one line, edges that cross) or one with no surface under it.
 OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, const std::string& id,
                             const std::vector<Eigen::Vector2d>& polygon,
                             const MeasureSettings& settings, const FacetOptions& options,
-                            const std::string& where);
+                            double snap_tolerance, const std::string& where);
 
 // The outline cut by the half-plane of pixels p with
 // (p - a) x d >= 0 (cross product's z), Sutherland-Hodgman: a polygon that

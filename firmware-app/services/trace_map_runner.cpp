@@ -252,8 +252,11 @@ std::vector<storage::Measurement> outline_records(const ui::MapEdit& edit,
   if (edit.outline.size() < 3)
     throw InputError(where, "needs 3 or more corners, got " + std::to_string(edit.outline.size()));
   if (!edit.view) throw InputError(where, "no photograph's camera to measure it from");
-  measure::OutlinePieces split = measure::split_outline(*edit.picker, *edit.view, label,
-                                                        edit.outline, settings, options, where);
+  // The pieces held to the analysis' default snap tolerance (the scene the
+  // visit exports leaves it at its default).
+  measure::OutlinePieces split =
+      measure::split_outline(*edit.picker, *edit.view, label, edit.outline, settings, options,
+                             storage::SceneAnalysis{}.snap_tolerance, where);
   std::string& said = split.pieces.front().plane.problem;
   for (const auto& note : split.notes) said += (said.empty() ? "" : "; ") + note;
   measure::MeasuredPicks picks;

@@ -15,6 +15,7 @@ using namespace rockface;
 using rockface::test::FoldedFace;
 
 constexpr double kNoise = 0.005;  // m along the rays: a stereo model's sigma_Z at 10 m
+constexpr double kSnap = 0.05;    // m: the analysis' snap tolerance (SCENE.md)
 
 // Two walls y = 10 + 0.3 z + b x with b = -0.105 West of x = 0 and +0.105
 // East of it: each turned 6 degrees about the vertical, 12 degrees apart,
@@ -72,7 +73,7 @@ TEST(OutlinePieces, AFoldedFaceGivesTwoPiecesInItsTwoPlanesMeetingAlongTheFold) 
   const measure::MeshPicker picker(f.mesh);
   const auto options = measure::facet_options(Preset::standard);
   const auto split = measure::split_outline(picker, f.view, "F1", outline_of(f), settings(),
-                                            options, "face outline");
+                                            options, kSnap, "face outline");
   ASSERT_EQ(split.pieces.size(), 2u);
   for (const auto& n : split.notes) ADD_FAILURE() << "unexpected note: " << n;
   EXPECT_EQ(split.pieces[0].id, "F1a");
@@ -144,7 +145,7 @@ TEST(OutlinePieces, AFlatFaceStaysOnePieceMeasuredAsAnArea) {
   const auto polygon = outline_of(f);
   const auto split =
       measure::split_outline(picker, f.view, "F1", polygon, settings(),
-                             measure::facet_options(Preset::standard), "face outline");
+                             measure::facet_options(Preset::standard), kSnap, "face outline");
   ASSERT_EQ(split.pieces.size(), 1u);
   EXPECT_TRUE(split.notes.empty());
   const auto area =
@@ -164,7 +165,8 @@ TEST(OutlinePieces, ADegenerateOutlineIsRefusedByName) {
   const auto options = measure::facet_options(Preset::standard);
   auto refused = [&](const std::vector<Eigen::Vector2d>& polygon, const std::string& why) {
     try {
-      measure::split_outline(picker, f.view, "F1", polygon, settings(), options, "face outline");
+      measure::split_outline(picker, f.view, "F1", polygon, settings(), options, kSnap,
+                             "face outline");
       ADD_FAILURE() << "accepted: " << why;
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("face outline"), std::string::npos) << e.what();
