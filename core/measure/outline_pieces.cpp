@@ -112,6 +112,24 @@ void judge_area_plane(PlaneEstimate& e, const MeasureSettings& settings) {
     e.known = true;
 }
 
+// A patch of the free surface turns counter-clockwise seen from outside
+// the rock (SCENE.md: its polygon's Newell normal is its outward normal,
+// core/faces/free_surface.cpp): the corners are put in that order, seen
+// from the camera, whichever way round the geologist tapped them.
+void wind_toward_camera(AreaMeasurement& a, const PhotoView& view) {
+  const auto& p = a.outline_points;
+  if (p.size() < 3 || p.size() != a.outline.size()) return;
+  Eigen::Vector3d newell = Eigen::Vector3d::Zero(), centroid = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    newell += p[i].cross(p[(i + 1) % p.size()]);
+    centroid += p[i];
+  }
+  centroid /= static_cast<double>(p.size());
+  if (newell.dot(view.pose.centre - centroid) >= 0) return;
+  std::reverse(a.outline.begin(), a.outline.end());
+  std::reverse(a.outline_points.begin(), a.outline_points.end());
+}
+
 double outline_angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return rad_to_deg(std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized())))));
 }
@@ -207,6 +225,7 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
     if (!why.empty())
       out.notes.push_back("the face outline stays one piece, " + why + "; " +
                           bent.substr(bent.find(':') + 2));
+    wind_toward_camera(whole, view);
     out.pieces.push_back(std::move(whole));
     return out;
   };
@@ -421,6 +440,7 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
             " % of its points: its part of the face is not bounded by straight "
             "fold lines");
     }
+    wind_toward_camera(a, view);
     out.pieces.push_back(std::move(a));
   }
   if (out.pieces.size() < 2) {

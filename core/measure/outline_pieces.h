@@ -30,7 +30,9 @@ namespace rockface::measure {
 struct OutlinePieces {
   // Largest first. One piece: the outline as measure_area measures it, with
   // `id` as given; several: ids `id` + "a", "b", ... Each piece's RMS off
-  // its plane (plane.fit.rms_off_plane()) is its margin as a plane.
+  // its plane (plane.fit.rms_off_plane()) is its margin as a plane. Its
+  // corners turn counter-clockwise seen from the camera (from outside the
+  // rock, as SCENE.md's surface patches do), whichever way they were tapped.
   std::vector<AreaMeasurement> pieces;
   // What a geologist should know, in words: a part too small or too rough
   // to be a plane (and where its area went), why a folded outline stayed

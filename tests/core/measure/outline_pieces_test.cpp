@@ -2,6 +2,8 @@
 // covers (core/measure/outline_pieces.h), on a synthetic folded face: two
 // walls 12 degrees apart meeting along a vertical-ish fold (the demo face's
 // shape), seen by a pinhole camera, with depth noise along the rays.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
@@ -57,6 +59,18 @@ double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return rad_to_deg(std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized())))));
 }
 
+// Whether a piece's corners turn counter-clockwise seen from the camera
+// (its Newell normal toward the camera: out of the rock, SCENE.md).
+bool wound_toward_camera(const measure::AreaMeasurement& a, const FoldedFace& f) {
+  Eigen::Vector3d newell = Eigen::Vector3d::Zero(), centroid = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < a.outline_points.size(); ++i) {
+    newell += a.outline_points[i].cross(a.outline_points[(i + 1) % a.outline_points.size()]);
+    centroid += a.outline_points[i];
+  }
+  centroid /= static_cast<double>(a.outline_points.size());
+  return newell.dot(f.view.pose.centre - centroid) > 0;
+}
+
 bool inside(const std::vector<measure::PhotoPixel>& poly, const Eigen::Vector2d& q) {
   bool in = false;
   for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
@@ -93,6 +107,7 @@ TEST(OutlinePieces, AFoldedFaceGivesTwoPiecesInItsTwoPlanesMeetingAlongTheFold) 
     EXPECT_LT(piece.plane.fit.rms_off_plane(), 1.5 * kNoise) << piece.id;
     EXPECT_GE(piece.outline.size(), 3u);
     EXPECT_EQ(piece.outline.size(), piece.outline_points.size());
+    EXPECT_TRUE(wound_toward_camera(piece, f)) << piece.id;
   }
   // The two walls, 11.5 degrees apart (each turned 6 degrees about the
   // vertical, leaning back 17 degrees): within twice the per-piece error.
@@ -142,7 +157,9 @@ TEST(OutlinePieces, AFoldedFaceGivesTwoPiecesInItsTwoPlanesMeetingAlongTheFold) 
 TEST(OutlinePieces, AFlatFaceStaysOnePieceMeasuredAsAnArea) {
   const FoldedFace f = two_walls(0.0);  // both walls in one plane
   const measure::MeshPicker picker(f.mesh);
-  const auto polygon = outline_of(f);
+  // Tapped clockwise as seen from the camera: stored the other way round.
+  auto polygon = outline_of(f);
+  std::reverse(polygon.begin(), polygon.end());
   const auto split =
       measure::split_outline(picker, f.view, "F1", polygon, settings(),
                              measure::facet_options(Preset::standard), kSnap, "face outline");
@@ -156,6 +173,8 @@ TEST(OutlinePieces, AFlatFaceStaysOnePieceMeasuredAsAnArea) {
   // The same computation on the same points: equal.
   EXPECT_EQ(piece.plane.fit.normal, area.plane.fit.normal);
   EXPECT_EQ(piece.area, area.area);
+  EXPECT_TRUE(wound_toward_camera(piece, f));
+  EXPECT_FALSE(wound_toward_camera(area, f)) << "measure_area keeps the tapped order";
 }
 
 TEST(OutlinePieces, ADegenerateOutlineIsRefusedByName) {
