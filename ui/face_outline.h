@@ -4,9 +4,10 @@
 // trace (a tap with no surface under it is refused), takes the last one
 // back, and closes the polygon. Closed, it is measured as `rockface
 // measure` measures an area pick: the corners in the left photograph (the
-// one the model is textured with), then core/measure's measure_area on the
-// worker (FieldServices::trace_map). The analysis takes it as the visit's
-// mapped face (the free surface).
+// one the model is textured with), then, on the worker
+// (FieldServices::trace_map), split into the flat pieces of the 3D image it
+// covers (core/measure/outline_pieces.h), each an area as measure_area
+// makes it. The analysis takes the pieces as the visit's mapped face.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -115,10 +115,11 @@ struct MapEdit {
   // A trace to store: its points, photograph pixels, model, joint, origin.
   std::optional<storage::Measurement> trace;
   // The face's outline: its corners in the left photograph (the one the
-  // model is textured with, seen through `view`), measured by the runner as
-  // `rockface measure` measures an area pick and stored as the visit's
-  // mapped face in place of the one stored; with that photograph's model
-  // and capture. Empty: no outline.
+  // model is textured with, seen through `view`), split by the runner into
+  // the flat pieces of the 3D image it covers (core/measure/outline_pieces.h),
+  // each measured as `rockface measure` measures an area pick, and stored
+  // as the visit's mapped face in place of the one stored; with that
+  // photograph's model and capture. Empty: no outline.
   std::vector<Eigen::Vector2d> outline;
   const measure::PhotoView* view = nullptr;
   std::optional<storage::RecordId> outline_model_id, outline_capture_id;

@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/measure/facets/facet_options.h"
+#include "core/measure/outline_pieces.h"
 #include "core/measure/pick_measurement.h"
 #include "core/photogrammetry/reconstruction/preset.h"
 #include "firmware-app/analysis/analysis_input.h"
@@ -20,6 +22,7 @@
 #include "firmware-app/records/project_mesh.h"
 #include "firmware-app/services/ui_services.h"
 #include "storage/export_scene_json.h"
+#include "storage/face_outline_words.h"
 #include "storage/project_store.h"
 #include "storage/scene.h"
 #include "ui/format.h"
@@ -235,28 +238,46 @@ std::string next_label(storage::ProjectStore& store, storage::RecordId visit, ch
 }
 
 // The outline measured and stored as `rockface measure` measures and
-// stores an area pick (measure_area, measurement_records), after checking
-// that it is an outline: 3 corners or more, every one on the surface.
-storage::Measurement outline_record(const ui::MapEdit& edit,
-                                    const measure::MeasureSettings& settings,
-                                    const std::string& label, double& area_m2) {
+// stores area picks (measurement_records), as the flat pieces of the 3D
+// image it covers (core/measure/outline_pieces.h: a folded face is several
+// planes, and the analysis snaps traces onto its patches within
+// centimetres): one area row per piece, F1a, F1b, ... (a flat face: one
+// row, F1). What the split says in words (a part too small or too rough to
+// be a plane) is kept in the largest piece's note.
+std::vector<storage::Measurement> outline_records(const ui::MapEdit& edit,
+                                                  const measure::MeasureSettings& settings,
+                                                  const measure::FacetOptions& options,
+                                                  const std::string& label, double& area_m2) {
   const std::string where = "face outline";
   if (edit.outline.size() < 3)
     throw InputError(where, "needs 3 or more corners, got " + std::to_string(edit.outline.size()));
   if (!edit.view) throw InputError(where, "no photograph's camera to measure it from");
-  measure::MeasuredPicks one;
-  one.areas.push_back(
-      {measure::measure_area(*edit.picker, *edit.view, label, edit.outline, settings, where), ""});
-  const measure::AreaMeasurement& a = one.areas.back().m;
-  if (a.outline_points.size() != a.outline.size())
-    throw InputError(where, std::to_string(a.outline.size() - a.outline_points.size()) +
-                                " of its " + std::to_string(a.outline.size()) +
-                                " corners have no surface under them");
-  area_m2 = a.area;
-  // A mapped surface, not a free face: no rock side (the analysis takes it
-  // as a patch of the face, SCENE.md surface.patches).
-  return measurement_records(one, edit.visit_id, {edit.outline_model_id, edit.outline_capture_id})
-      .front();
+  // The pieces held to the analysis' default snap tolerance (the scene the
+  // visit exports leaves it at its default).
+  measure::OutlinePieces split =
+      measure::split_outline(*edit.picker, *edit.view, label, edit.outline, settings, options,
+                             storage::SceneAnalysis{}.snap_tolerance, where);
+  std::string& said = split.pieces.front().plane.problem;
+  for (const auto& note : split.notes) said += (said.empty() ? "" : "; ") + note;
+  measure::MeasuredPicks picks;
+  area_m2 = 0;
+  for (auto& a : split.pieces) {
+    area_m2 += a.area;
+    // A mapped surface, not a free face: no rock side (the analysis takes
+    // each piece as a patch of the face, SCENE.md surface.patches).
+    picks.areas.push_back({std::move(a), ""});
+  }
+  return measurement_records(picks, edit.visit_id,
+                             {edit.outline_model_id, edit.outline_capture_id});
+}
+
+// The preset the visit's first pair was reconstructed with (standard when
+// none is stored).
+Preset visit_preset(storage::ProjectStore& store, storage::RecordId visit) {
+  const auto models = store.list_visit_models(visit);
+  return models.empty() || models.front().preset.empty()
+             ? Preset::standard
+             : parse_preset(models.front().preset, "model " + std::to_string(models.front().id));
 }
 
 // The settings `rockface measure` measures the visit with
@@ -266,11 +287,7 @@ storage::Measurement outline_record(const ui::MapEdit& edit,
 measure::MeasureSettings measure_settings(storage::ProjectStore& store, storage::RecordId visit,
                                           const ui::MapEdit& edit) {
   measure::MeasureSettings settings = edit.settings;
-  const auto models = store.list_visit_models(visit);
-  const Preset preset =
-      models.empty() || models.front().preset.empty()
-          ? Preset::standard
-          : parse_preset(models.front().preset, "model " + std::to_string(models.front().id));
+  const Preset preset = visit_preset(store, visit);
   settings.correlation_length = edit.picker->mesh().median_edge_length() *
                                 photogrammetry::reconstruction_preset(preset).sgbm_block_size;
   return settings;
@@ -336,11 +353,15 @@ std::string StoreTraceMapRunner::store(const std::filesystem::path& project,
     // leaves the stored one.
     const std::string label = next_label(store, visit, 'F');
     double area = 0;
-    const storage::Measurement record = outline_record(edit, settings, label, area);
+    // The facet finder's knobs of the visit's preset: its angle, its
+    // smallest facet and its planarity gate judge the pieces too.
+    const std::vector<storage::Measurement> records = outline_records(
+        edit, settings, measure::facet_options(visit_preset(store, visit)), label, area);
     for (const auto& old : face_outlines(store, visit)) store.delete_measurement(old.id);
-    store.save_measurements(visit, {record});
-    said.push_back("face outline " + label + " stored: " + std::to_string(edit.outline.size()) +
-                   " corners, " + area_words(area));
+    store.save_measurements(visit, records);
+    said.push_back(storage::face_outline_words(records, {}).front() + "; " +
+                   std::to_string(edit.outline.size()) + " corners, " + area_words(area) +
+                   " stored");
   }
   if (edit.remove_trace) {
     std::string label;

@@ -14,6 +14,7 @@
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
 #include "storage/export_scene_json.h"
+#include "storage/face_outline_words.h"
 #include "storage/report_dynamics_json.h"
 
 namespace rockface::storage {
@@ -262,6 +263,9 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
     r.traces.emplace_back(label, t.points);
   }
   joints_and_sets(store, r);
+  // Issue 27: the mapped face as the geologist outlined it, in its flat
+  // pieces (storage/face_outline_words.h).
+  r.face_outlines = face_outline_words(stored, store.list_joints(visit_id));
 
   const auto runs = store.list_analyses(visit_id);
   if (!runs.empty()) {

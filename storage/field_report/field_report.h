@@ -150,6 +150,10 @@ struct FieldReport {
   // How the stored traces came (issue 25): tapped by hand, proposals
   // accepted as found, proposals corrected by least-cost tracing.
   int traces_by_hand = 0, traces_proposed = 0, traces_corrected = 0;
+  // Issue 27: each face outline in words, its flat pieces, how far apart
+  // and their RMS ("face outline F1: 2 flat pieces, 12.0° apart, RMS 6 mm /
+  // 7 mm"; storage/face_outline_words.h).
+  std::vector<std::string> face_outlines;
 
   ReportedAccuracy accuracy;
   std::vector<ReportedJoint> joints;

@@ -483,6 +483,7 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
     pdf.image(face_picture(r), PdfPages::text_width(), 0.55 * kPageH);
     pdf.line("traces yellow; blocks: removable red, marginal orange, keyed green", kSmall);
   }
+  for (const auto& outline : r.face_outlines) pdf.line(outline, kSmall);
   if (r.traces_proposed + r.traces_corrected > 0)
     pdf.line(std::to_string(r.traces_by_hand + r.traces_proposed + r.traces_corrected) +
                  " traces: " + std::to_string(r.traces_by_hand) + " tapped by hand, " +

@@ -180,14 +180,20 @@ TEST(UiSession, AWholeVisitInFewTaps) {
   // The semi-automatic one follows the joint between its two ends: many
   // more points than taps.
   EXPECT_GT(traces[2].points.size(), 10u);
-  // The face outlined on the tablet is the visit's mapped face (one area,
-  // no free face), and each trace with a known plane has its joint.
+  // The face outlined on the tablet is the visit's mapped face, stored as
+  // the flat pieces of the 3D image it covers (issue 27): the demo face is
+  // folded, two walls 11.5° apart, and the four corners span the fold, so
+  // two areas, F1a and F1b, no free face.
   std::vector<rockface::storage::Measurement> areas;
   for (const auto& m : store.list_measurements(visit))
     if (m.kind == rockface::storage::Measurement::Kind::area) areas.push_back(m);
-  ASSERT_EQ(areas.size(), 1u);
-  EXPECT_TRUE(areas[0].rock_side.empty());
-  EXPECT_GE(areas[0].points.size(), 3u);
+  ASSERT_EQ(areas.size(), 2u);
+  EXPECT_EQ(areas[0].label, "F1a");
+  EXPECT_EQ(areas[1].label, "F1b");
+  for (const auto& a : areas) {
+    EXPECT_TRUE(a.rock_side.empty()) << a.label;
+    EXPECT_GE(a.points.size(), 3u) << a.label;
+  }
   const auto joints = store.list_joints(visit);
   std::size_t known = 0;
   for (const auto& t : traces) {
@@ -214,17 +220,19 @@ TEST(UiSession, AWholeVisitInFewTaps) {
     if (j.label == traces[2].label) {
       EXPECT_EQ(j.source, "trace " + j.label + " (compass)");
     }
-  // The analysis of the visit made only on the tablet, with its face and
-  // its three joints. Still no finite block: the face outlined in four
-  // corners is one plane patch, and the demo face is folded (~0.3 m), so
-  // the traces lie more than the 0.05 m snap tolerance off that patch and
-  // the trace map leaves them out (the analysis says so in its notes; see
-  // docs/accuracy-cost.md, issue 27). What is missing is an outline stored
-  // as the planar pieces of the 3D image it covers.
+  // The analysis of the visit made only on the tablet, with its face (the
+  // two flat pieces) and its three joints: the traces lie on the pieces
+  // (within the 0.05 m snap tolerance), so the trace map has them and the
+  // three joints cut the face into at least one finite block.
   const auto runs = store.list_analyses(visit);
   ASSERT_EQ(runs.size(), 1u);
   const auto run = store.load_analysis(runs[0].id);
-  for (const auto& b : run.blocks) EXPECT_FALSE(b.mode.empty()) << b.label;
+  std::size_t finite = 0;
+  for (const auto& b : run.blocks) {
+    EXPECT_FALSE(b.mode.empty()) << b.label;
+    finite += b.finite;
+  }
+  EXPECT_GE(finite, 1u) << out;
   // The field report holds them: each block's row and each joint's line
   // (pdftotext, as the report verb's tests read it).
   const fs::path pdf = project.parent_path() / ("visit-visit-" + std::to_string(visit) + ".pdf");
@@ -243,8 +251,31 @@ TEST(UiSession, AWholeVisitInFewTaps) {
     }
     return false;
   };
-  for (const auto& b : run.blocks)
-    EXPECT_TRUE(has_line_starting({b.label, b.source})) << b.label << " not in\n" << report;
+  // Each block's row, and for a finite block its volume (m³ to 3 decimals,
+  // as the report prints it) and its verdict on that row.
+  auto line_starting = [&](const std::vector<std::string>& words) {
+    std::istringstream lines(report);
+    for (std::string line; std::getline(lines, line);) {
+      std::istringstream in(line);
+      std::vector<std::string> w;
+      for (std::string x; in >> x;) w.push_back(x);
+      if (w.size() >= words.size() && std::equal(words.begin(), words.end(), w.begin()))
+        return line;
+    }
+    return std::string();
+  };
+  for (const auto& b : run.blocks) {
+    const std::string row = line_starting({b.label, b.source});
+    ASSERT_FALSE(row.empty()) << b.label << " not in\n" << report;
+    if (!b.finite) continue;
+    char volume[32];
+    std::snprintf(volume, sizeof volume, "%.3f", b.volume_m3);
+    EXPECT_NE(row.find(volume), std::string::npos) << b.label << ": " << row;
+    EXPECT_NE(row.find(b.removable ? "removable" : "finite, keyed"), std::string::npos)
+        << b.label << ": " << row;
+  }
+  // The face outline in words, its two flat pieces.
+  EXPECT_NE(report.find("face outline F1: 2 flat pieces, "), std::string::npos) << report;
   auto fixed1 = [](double v) {
     char s[32];
     std::snprintf(s, sizeof s, "%.1f", v);

@@ -1,6 +1,7 @@
 // Issue 27: the Mapping screen's edits stored as `rockface measure` stores
 // picks, on the demo project with the program's own runners: the face
-// outlined by taps is the area record the verb makes of the same polygon;
+// outlined by taps is stored as its flat pieces (the demo face is folded),
+// each the area record the verb makes of the piece's polygon;
 // a saved trace gets the joint the verb makes of the same trace (a straight
 // one says why it has none); a saved trace taken back leaves with its
 // joint; a degenerate outline is refused by name and leaves the stored one;
@@ -8,6 +9,7 @@
 // that reading (issue 27).
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -19,6 +21,7 @@
 #include "firmware-app/measure/visit_trace_joints.h"
 #include "firmware-app/records/project_mesh.h"
 #include "firmware-app/services/ui_services.h"
+#include "storage/export_scene_json.h"
 #include "storage/project_store.h"
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
@@ -110,7 +113,33 @@ class MapEdits : public ::testing::Test {
 constexpr double kSameMetres = 1e-9;
 constexpr double kSameDegrees = 1e-6;
 
-TEST_F(MapEdits, TheFaceOutlineIsStoredAsRockfaceMeasureStoresAnAreaPick) {
+// The unit normal of a plane given by dip / dip direction (degrees).
+Eigen::Vector3d normal_of(double dip_deg, double dipdir_deg) {
+  const double d = dip_deg * M_PI / 180, a = dipdir_deg * M_PI / 180;
+  return {std::sin(d) * std::sin(a), std::sin(d) * std::cos(a), std::cos(d)};
+}
+double degrees_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized())))) * 180 / M_PI;
+}
+// The demo scene's patch `id`: its plane's normal (the polygon's corners'
+// Newell normal; the demo's patches are exact planes).
+Eigen::Vector3d demo_patch_normal(const std::string& id) {
+  std::ifstream in(demo_scene());
+  const auto scene = nlohmann::json::parse(in);
+  for (const auto& p : scene["surface"]["patches"])
+    if (p["id"] == id) {
+      std::vector<Eigen::Vector3d> c;
+      for (const auto& x : p["polygon"]) c.emplace_back(x[0], x[1], x[2]);
+      Eigen::Vector3d n = Eigen::Vector3d::Zero();
+      for (std::size_t k = 0; k < c.size(); ++k)
+        n += (c[k] - c[0]).cross(c[(k + 1) % c.size()] - c[0]);
+      return n.normalized();
+    }
+  ADD_FAILURE() << "no patch " << id << " in the demo scene";
+  return Eigen::Vector3d::UnitZ();
+}
+
+TEST_F(MapEdits, TheFaceOutlineIsStoredAsItsFlatPiecesEachAsRockfaceMeasureStoresAnArea) {
   open(copy_of_demo("outline"));
   ASSERT_FALSE(stored(Measurement::Kind::area, visit_).empty()) << "the demo has its face";
   ui().tap("Mapping");
@@ -123,39 +152,74 @@ TEST_F(MapEdits, TheFaceOutlineIsStoredAsRockfaceMeasureStoresAnAreaPick) {
   ui().tap("Replace outline");
   ui().tap("Yes, replace outline");
   ui().settle();
+  const std::string said = app().statuses.message(static_cast<std::size_t>(ui::Screen::mapping));
+  // The demo face is folded (two walls, FACE_W and FACE_E): the outline
+  // across its fold is stored as its two flat pieces, replacing the visit's
+  // face (both of the demo's patches).
   const auto areas = stored(Measurement::Kind::area, visit_);
-  ASSERT_EQ(areas.size(), 1u) << "the outline replaces the visit's face";
-  const Measurement& outline = areas.front();
-  EXPECT_EQ(outline.label, "F1");
-  EXPECT_TRUE(outline.rock_side.empty()) << "a mapped surface, not a free face";
-  ASSERT_EQ(outline.points.size(), 4u);
-  ASSERT_EQ(outline.pixels.size(), 4u);
-  EXPECT_EQ(outline.photo, "left");
-  EXPECT_FALSE(joint("F1", visit_)) << "the face is no joint";
+  ASSERT_EQ(areas.size(), 2u) << said;
+  EXPECT_EQ(areas[0].label, "F1a");
+  EXPECT_EQ(areas[1].label, "F1b");
+  EXPECT_NE(said.find("face outline F1: 2 flat pieces, "), std::string::npos) << said;
+  EXPECT_NE(said.find("° apart, RMS "), std::string::npos) << said;
+  for (const auto& piece : areas) {
+    EXPECT_TRUE(piece.rock_side.empty()) << "a mapped surface, not a free face";
+    ASSERT_GE(piece.points.size(), 3u);
+    EXPECT_EQ(piece.pixels.size(), piece.points.size());
+    EXPECT_EQ(piece.photo, "left");
+    ASSERT_TRUE(piece.dip_deg && piece.dipdir_deg) << piece.label << ": " << piece.note;
+    EXPECT_FALSE(joint(piece.label, visit_)) << "the face is no joint";
+  }
   EXPECT_FALSE(app().mapping.outlining) << "stored: the screen is back to traces";
+  // The two pieces are the demo's two walls: as far apart as FACE_W and
+  // FACE_E (11.5°). Expected error: each piece's plane is fitted to
+  // thousands of points of the fast preset's 3D image (sigma_Z a few mm over
+  // metres: hundredths of a degree), and its points near the fold may go to
+  // the other wall (a band a few sigmas wide: tenths of a degree); 1° says
+  // the pieces are the walls, not two facets of one of them.
+  const double walls = degrees_between(demo_patch_normal("FACE_W"), demo_patch_normal("FACE_E"));
+  const double pieces = degrees_between(normal_of(*areas[0].dip_deg, *areas[0].dipdir_deg),
+                                        normal_of(*areas[1].dip_deg, *areas[1].dipdir_deg));
+  EXPECT_NEAR(pieces, walls, 1.0) << said;
+  // Each piece's corners lie in its plane; the pieces share their common
+  // edge (two corners each, the same pixels' rays met with both planes on
+  // their common line: equal to rounding).
+  std::size_t shared = 0;
+  for (const auto& p : areas[0].points)
+    for (const auto& q : areas[1].points) shared += (p - q).norm() < 1e-6;
+  EXPECT_EQ(shared, 2u);
 
-  // The verb, given the same polygon in the same photograph.
-  nlohmann::json polygon = nlohmann::json::array();
-  for (const auto& p : outline.pixels) polygon.push_back({p.x(), p.y()});
-  const auto measured_visit = measure(
-      {{"areas", {{{"id", "F1"}, {"photo", "left"}, {"polygon", polygon}}}}}, "outline-measure");
+  // The verb, given each piece's polygon in the same photograph: the record
+  // it stores is of the same kind and form, its plane that of every point
+  // inside the polygon where the piece's is of the points nearest its
+  // plane: they differ in the band along the fold only, under 1°.
+  nlohmann::json picks = nlohmann::json::array();
+  for (const auto& piece : areas) {
+    nlohmann::json polygon = nlohmann::json::array();
+    for (const auto& p : piece.pixels) polygon.push_back({p.x(), p.y()});
+    picks.push_back({{"id", piece.label}, {"photo", "left"}, {"polygon", polygon}});
+  }
+  const auto measured_visit = measure({{"areas", picks}}, "outline-measure");
   const auto by_verb = stored(Measurement::Kind::area, measured_visit);
-  ASSERT_EQ(by_verb.size(), 1u);
-  const Measurement& verb = by_verb.front();
-  ASSERT_EQ(verb.points.size(), outline.points.size());
-  for (std::size_t k = 0; k < verb.points.size(); ++k)
-    EXPECT_LT((verb.points[k] - outline.points[k]).norm(), kSameMetres) << "corner " << k + 1;
-  ASSERT_TRUE(verb.dip_deg && outline.dip_deg);
-  EXPECT_NEAR(*outline.dip_deg, *verb.dip_deg, kSameDegrees);
-  EXPECT_NEAR(*outline.dipdir_deg, *verb.dipdir_deg, kSameDegrees);
-  ASSERT_TRUE(verb.sigma_deg && outline.sigma_deg);
-  EXPECT_NEAR(*outline.sigma_deg, *verb.sigma_deg, kSameDegrees);
-  EXPECT_NEAR(outline.fit_rms_m, verb.fit_rms_m, kSameMetres);
-  EXPECT_EQ(outline.model_id, verb.model_id);
-  EXPECT_EQ(outline.photo_capture_id, verb.photo_capture_id);
-  EXPECT_EQ(outline.note, verb.note);
+  ASSERT_EQ(by_verb.size(), areas.size());
+  for (std::size_t k = 0; k < areas.size(); ++k) {
+    const Measurement &verb = by_verb[k], &piece = areas[k];
+    EXPECT_EQ(verb.label, piece.label);
+    ASSERT_TRUE(verb.dip_deg && verb.dipdir_deg);
+    EXPECT_LT(degrees_between(normal_of(*verb.dip_deg, *verb.dipdir_deg),
+                              normal_of(*piece.dip_deg, *piece.dipdir_deg)),
+              1.0)
+        << piece.label;
+    EXPECT_EQ(verb.model_id, piece.model_id);
+    EXPECT_EQ(verb.photo_capture_id, piece.photo_capture_id);
+    EXPECT_EQ(verb.pixels.size(), piece.pixels.size());
+  }
 
-  // The analysis takes the outline as the mapped face.
+  // The analysis takes the pieces as the mapped face: two patches.
+  auto store = storage::ProjectStore::open(project_);
+  const auto scene = storage::make_scene_json(storage::load_scene_source(store, visit_));
+  ASSERT_EQ(scene["surface"]["patches"].size(), 2u);
+  EXPECT_EQ(scene["surface"]["patches"][0]["id"], "F1a");
   NoProgress none;
   runners_.analysis.analyse(project_, visit_, none);
 }
@@ -437,7 +501,7 @@ TEST_F(MapEdits, ADegenerateOutlineIsRefusedByNameAndTheStoredOneStays) {
               std::string::npos)
         << e.what();
   }
-  // The runner refuses the same, and three corners on one line (no surface
+  // The runner refuses the same, and three corners on one line (no area
   // inside), naming the outline; the stored face stays.
   ui::MapEdit edit;
   edit.visit_id = visit_;
@@ -462,7 +526,7 @@ TEST_F(MapEdits, ADegenerateOutlineIsRefusedByNameAndTheStoredOneStays) {
     ADD_FAILURE() << "a line stored as an outline";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("face outline"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("no surface of the 3D image under the polygon"),
+    EXPECT_NE(std::string(e.what()).find("corners enclose no area (they lie on one line)"),
               std::string::npos)
         << e.what();
   }
