@@ -6,6 +6,7 @@
 // impossible reading is refused by its field.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -135,22 +136,40 @@ TEST(CompassReading, AnImpossibleReadingIsRefusedByItsField) {
   EXPECT_NEAR(rad_to_deg(t.plane.orientation.dipdir), 0, 1e-9);
 }
 
-TEST(CompassReading, MeasurePicksTakesTheReadingOfAPick) {
-  StraightTrace s;
-  s.settings.point_sigma = 0.005;
+namespace {
+
+// A pick "T2" given by its points along the straight trace (5 % in from its
+// ends), for measure_picks; none when the face has no such trace.
+std::optional<rm::TracePick> pick_along(const StraightTrace& s, const std::string& joint) {
   const auto seg = s.face.trace_on(s.joint, 1);
-  ASSERT_TRUE(seg);
-  rm::Picks picks;
+  if (!seg) return std::nullopt;
   rm::TracePick pick;
   pick.id = "T2";
+  pick.joint = joint;
   pick.where = "traces[0]";
   pick.points = {(*seg)[0] + 0.05 * ((*seg)[1] - (*seg)[0]),
                  (*seg)[1] - 0.05 * ((*seg)[1] - (*seg)[0])};
-  pick.compass = rm::CompassReading{85, 270};
-  picks.traces.push_back(pick);
+  return pick;
+}
+
+rm::MeasureContext context_of(const StraightTrace& s) {
   rm::MeasureContext context;
   context.picker = &s.picker;
   context.settings = s.settings;
+  return context;
+}
+
+}  // namespace
+
+TEST(CompassReading, MeasurePicksTakesTheReadingOfAPick) {
+  StraightTrace s;
+  s.settings.point_sigma = 0.005;
+  auto pick = pick_along(s, "");
+  ASSERT_TRUE(pick);
+  pick->compass = rm::CompassReading{85, 270};
+  rm::Picks picks;
+  picks.traces.push_back(*pick);
+  const rm::MeasureContext context = context_of(s);
   const auto measured = rm::measure_picks(picks, context, std::nullopt);
   ASSERT_EQ(measured.traces.size(), 1u);
   ASSERT_TRUE(measured.traces[0].compass);
@@ -165,19 +184,11 @@ TEST(CompassReading, MeasurePicksTakesTheReadingOfAPick) {
 TEST(CompassReading, AJointMarkedByAReadTraceTakesTheReading) {
   StraightTrace s;
   s.settings.point_sigma = 0.005;
-  const auto seg = s.face.trace_on(s.joint, 1);
-  ASSERT_TRUE(seg);
+  const auto pick = pick_along(s, "J2");
+  ASSERT_TRUE(pick);
   rm::Picks picks;
-  rm::TracePick pick;
-  pick.id = "T2";
-  pick.joint = "J2";
-  pick.where = "traces[0]";
-  pick.points = {(*seg)[0] + 0.05 * ((*seg)[1] - (*seg)[0]),
-                 (*seg)[1] - 0.05 * ((*seg)[1] - (*seg)[0])};
-  picks.traces.push_back(pick);
-  rm::MeasureContext context;
-  context.picker = &s.picker;
-  context.settings = s.settings;
+  picks.traces.push_back(*pick);
+  const rm::MeasureContext context = context_of(s);
   {
     const auto unread = rm::measure_picks(picks, context, std::nullopt);
     ASSERT_EQ(unread.joints.size(), 1u);
