@@ -35,6 +35,7 @@ class Frame {
     targets.set_dpi(kScaleOneDpi);
     apply_theme(Theme::daylight, 1.0f, targets.target_px());
     ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // no imgui.ini left in the working folder
     unsigned char* pixels = nullptr;
     int w = 0, h = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);

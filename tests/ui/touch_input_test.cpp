@@ -13,7 +13,10 @@ using rockface::ui::TouchInput;
 
 class TouchInputTest : public ::testing::Test {
  protected:
-  void SetUp() override { ImGui::CreateContext(); }
+  void SetUp() override {
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working folder
+  }
   void TearDown() override { ImGui::DestroyContext(); }
   ImGuiIO& io() { return ImGui::GetIO(); }
 };
