@@ -43,6 +43,13 @@ void UiDriver::tap(float x, float y) {
 
 void UiDriver::tap(const std::string& label, const std::string& where) {
   auto target = state().targets.find(label);
+  // A finger waits for the progress bar: what the worker's task disables
+  // (Save while the blocks are updated) is tapped once it is done, so that a
+  // script does not depend on how fast the machine runs the task.
+  if (target && !target->enabled && state().task.running()) {
+    settle();
+    target = state().targets.find(label);
+  }
   if (!target) throw InputError(where, "nothing labelled \"" + label + "\" on the screen");
   if (!target->enabled) throw InputError(where, "\"" + label + "\" is disabled on the screen");
   // A finger scrolls what is out of view into view first.

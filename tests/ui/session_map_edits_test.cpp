@@ -54,6 +54,13 @@ class MapEdits : public ::testing::Test {
     visit_ = *app().session->visit();
   }
   ui::AppState& app() { return session_->state(); }
+  // The Mapping screen's first frame updates the map's blocks on the
+  // worker: the taps that follow are on the settled screen, not racing the
+  // worker (a block's marker appearing between two taps takes the second).
+  void to_mapping() {
+    ui().tap("Mapping");
+    ui().settle();
+  }
   ui::HeadlessSession& ui() { return *session_; }
 
   // Points on the face around the model's centre, in screen pixels.
@@ -142,7 +149,7 @@ Eigen::Vector3d demo_patch_normal(const std::string& id) {
 TEST_F(MapEdits, TheFaceOutlineIsStoredAsItsFlatPiecesEachAsRockfaceMeasureStoresAnArea) {
   open(copy_of_demo("outline"));
   ASSERT_FALSE(stored(Measurement::Kind::area, visit_).empty()) << "the demo has its face";
-  ui().tap("Mapping");
+  to_mapping();
   ui().tap("Outline the face");
   for (const ImVec2 at : {around_centre(-90, -60), around_centre(90, -60), around_centre(90, 60),
                           around_centre(-90, 60)})
@@ -226,7 +233,7 @@ TEST_F(MapEdits, TheFaceOutlineIsStoredAsItsFlatPiecesEachAsRockfaceMeasureStore
 
 TEST_F(MapEdits, ASavedTraceGetsTheJointRockfaceMeasureMakesOfIt) {
   open(copy_of_demo("trace-joint"));
-  ui().tap("Mapping");
+  to_mapping();
   // Taps along the demo's joint J1 where it crosses from one face to the
   // next (its traces T2 then T1, one per face: each alone is straight, a
   // line on its face, so that no plane is known; across the edge it is).
@@ -308,7 +315,7 @@ TEST_F(MapEdits, ASavedTraceGetsTheJointRockfaceMeasureMakesOfIt) {
 
 TEST_F(MapEdits, AStraightTraceSaysItsPlaneIsUnknownAndMakesNoJoint) {
   open(copy_of_demo("straight"));
-  ui().tap("Mapping");
+  to_mapping();
   // Two taps: a line, no plane.
   tap(around_centre(-80, 0));
   tap(around_centre(80, 0));
@@ -329,7 +336,7 @@ TEST_F(MapEdits, AStraightTraceSaysItsPlaneIsUnknownAndMakesNoJoint) {
 // back.
 TEST_F(MapEdits, ACompassReadingTypedOnTheTabletIsTheVerbsPickWithCompass) {
   open(copy_of_demo("compass"));
-  ui().tap("Mapping");
+  to_mapping();
   tap(around_centre(-80, 0));
   tap(around_centre(80, 0));
   ASSERT_EQ(app().mapping.marker.points().size(), 2u);
@@ -418,10 +425,9 @@ TEST_F(MapEdits, ATraceOfAFurtherPairIsMeasuredOnItsOwnPair) {
   open(project);
   const auto pairs = app().session->pairs();
   ASSERT_EQ(pairs.size(), 2u);
-  ui().tap("Mapping");
   // The Mapping screen loads pair 1's 3D image on the worker; its pair
   // buttons stay disabled until that is done.
-  ui().settle();
+  to_mapping();
   ui().tap("Pair 2");
   ui().settle();
   ASSERT_EQ(app().model_view.model_id(), pairs[1].id);
@@ -479,7 +485,7 @@ TEST_F(MapEdits, ATraceOfAFurtherPairIsMeasuredOnItsOwnPair) {
 TEST_F(MapEdits, ADegenerateOutlineIsRefusedByNameAndTheStoredOneStays) {
   open(copy_of_demo("degenerate"));
   const auto before = stored(Measurement::Kind::area, visit_);
-  ui().tap("Mapping");
+  to_mapping();
   ui().tap("Outline the face");
   // A tap beside the face (the panel's corner: background): no corner.
   const ImVec2 corner = app().model_view.panel_min();
