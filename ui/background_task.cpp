@@ -27,7 +27,7 @@ BackgroundTask::~BackgroundTask() {
 }
 
 bool BackgroundTask::start(std::string title, Work work, Then then) {
-  if (running_.load()) return false;
+  if (running()) return false;
   join_finished();
   then_ = std::move(then);
   {
@@ -56,6 +56,7 @@ bool BackgroundTask::start(std::string title, Work work, Then then) {
       std::lock_guard<std::mutex> lock(mutex_);
       status_.running = false;
       outcome_ = std::move(outcome);
+      outcome_pending_ = true;  // before running_ goes false: never both false with it untaken
     }
     running_ = false;
   });
@@ -86,7 +87,10 @@ std::optional<TaskOutcome> BackgroundTask::take_outcome() {
   }
   if (!outcome) return outcome;
   join_finished();
-  if (then_) std::exchange(then_, nullptr)(*outcome);
+  // Idle again before `then` runs: a `then` may start the next task.
+  auto then = std::exchange(then_, nullptr);
+  outcome_pending_ = false;
+  if (then) then(*outcome);
   return outcome;
 }
 

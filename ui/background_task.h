@@ -46,11 +46,15 @@ class BackgroundTask {
   BackgroundTask& operator=(const BackgroundTask&) = delete;
   ~BackgroundTask();  // cancels and joins a running task
 
-  // False (and nothing started) while another task runs.
+  // False (and nothing started) while another task runs or its outcome
+  // waits to be taken.
   bool start(std::string title, Work work, Then then = {});
   void cancel();
   TaskStatus status() const;
-  bool running() const { return running_.load(); }
+  // Busy until the last task's outcome is taken: a task started between
+  // the worker's end and the frame that takes its outcome would otherwise
+  // drop that outcome and its `then` (a saved trace's screen update).
+  bool running() const { return running_.load() || outcome_pending_.load(); }
   // How many tasks were started so far: the UI notes which screen started
   // the latest (its outcome is said on that screen's status line).
   std::size_t started() const { return started_.load(); }
@@ -67,6 +71,7 @@ class BackgroundTask {
   mutable std::mutex mutex_;
   std::thread thread_;
   std::atomic<bool> running_{false};
+  std::atomic<bool> outcome_pending_{false};
   std::atomic<bool> cancel_{false};
   std::atomic<std::size_t> started_{0};
   std::chrono::steady_clock::time_point started_at_;
