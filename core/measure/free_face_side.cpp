@@ -19,7 +19,9 @@ std::string degrees(double v) {
   return text;
 }
 
-std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+std::string quoted(const std::string& s) {
+  return "\"" + s + "\"";
+}
 
 // The angle (degrees) at which the sight line from p to the camera centre
 // meets the plane, positive on the side `outward` points to.
@@ -112,16 +114,17 @@ FreeFaceSide free_face_side(AreaMeasurement& a, const PhotoView& view, const std
   }
   // Edge-on: the photograph does not tell the side.
   if (near_vertical)
-    throw InputError(where, edge_on(view, s, "face") + " and the face is " + degrees(from_vertical) +
-                                " from vertical, where rock_side " + quoted(picked) +
+    throw InputError(where, edge_on(view, s, "face") + " and the face is " +
+                                degrees(from_vertical) + " from vertical, where rock_side " +
+                                quoted(picked) +
                                 " may mean either side: pick it in a photograph that sees it");
   side.rock_side = picked;
   side.from = "pick";
   side.marginal = true;
   // The air on the side the pick does not give the rock.
   wind_outward(a, picked == "lower" ? up : Eigen::Vector3d(-up));
-  add_note(a.plane,
-           "marginal: rock side " + quoted(picked) + " from the pick alone: " + edge_on(view, s, "face"));
+  add_note(a.plane, "marginal: rock side " + quoted(picked) +
+                        " from the pick alone: " + edge_on(view, s, "face"));
   return side;
 }
 

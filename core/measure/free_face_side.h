@@ -61,8 +61,8 @@ struct FreeFaceSide {
 // the face" and the note says so. A face seen edge-on takes the pick's
 // side, marginal, its note giving the angle; edge-on and near vertical as
 // well, neither tells, and it is refused (InputError at `where`).
-FreeFaceSide free_face_side(AreaMeasurement& area, const PhotoView& view,
-                            const std::string& picked, const std::string& where);
+FreeFaceSide free_face_side(AreaMeasurement& area, const PhotoView& view, const std::string& picked,
+                            const std::string& where);
 
 // An area that is no free face (a mapped surface, a joint face) wound
 // counter-clockwise seen from the camera where the photograph tells the
