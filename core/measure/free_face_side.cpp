@@ -132,7 +132,7 @@ AreaSight wind_toward_camera(AreaMeasurement& a, const PhotoView& view) {
   const AreaSight s = sight_of_area(a, view);
   if (s.told())
     wind_outward(a, s.outward);
-  else
+  else if (a.plane.known)  // without a plane (a sliver) there is no side to see
     add_note(a.plane, edge_on(view, s, "area") + ": its corners are kept in the order tapped");
   return s;
 }

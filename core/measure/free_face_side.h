@@ -66,7 +66,8 @@ FreeFaceSide free_face_side(AreaMeasurement& area, const PhotoView& view, const 
 
 // An area that is no free face (a mapped surface, a joint face) wound
 // counter-clockwise seen from the camera where the photograph tells the
-// side; seen edge-on it stays as tapped and its note says so.
+// side; seen edge-on it stays as tapped and, when it has a plane, its note
+// says so.
 AreaSight wind_toward_camera(AreaMeasurement& area, const PhotoView& view);
 
 }  // namespace rockface::measure

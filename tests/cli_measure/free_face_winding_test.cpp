@@ -88,9 +88,10 @@ json free_faces(bool clockwise) {
 
 struct Visit {
   rockface::storage::RecordId id = 0;
-  json measures;  // MEASURES.json
-  json scene;     // as the tablet's analysis exports the visit
-  json report;    // `rockface analyse` of that scene
+  std::string said;  // what the verb printed
+  json measures;     // MEASURES.json
+  json scene;        // as the tablet's analysis exports the visit
+  json report;       // `rockface analyse` of that scene
 };
 
 Visit measure_and_analyse(const fs::path& dir, const fs::path& project, bool clockwise) {
@@ -105,6 +106,7 @@ Visit measure_and_analyse(const fs::path& dir, const fs::path& project, bool clo
                                 (dir / (name + ".picks.json")).string() + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   if (r.exit_code != 0) return v;
+  v.said = r.out;
   v.measures = read_json(out);
   {
     auto store = rockface::storage::ProjectStore::open(project);
@@ -180,6 +182,16 @@ TEST(FreeFaceWinding, EitherTapOrderGivesTheSameRecordAndTheSameBlocks) {
     for (const char* field : {"dip", "dipdir", "sigma_deg", "centroid", "area_m2", "pixels"})
       EXPECT_EQ(x["ccw"].at(field), x["cw"].at(field)) << id << " " << field;
   }
+
+  // The verb says it, per free face.
+  for (const Visit* v : {&ccw, &cw})
+    for (const char* id : {"FW: free face ", "FE: free face "}) {
+      const auto at = v->said.find(id);
+      ASSERT_NE(at, std::string::npos) << v->said;
+      EXPECT_NE(v->said.find("rock lower (behind the face photographed, seen at ", at),
+                std::string::npos)
+          << v->said;
+    }
 
   // The stored records: the same plane, rock side and corners, in the same
   // turning sense (counter-clockwise seen from the camera: out of the rock).
