@@ -11,6 +11,7 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/facets/facets.h"
+#include "core/measure/free_face_side.h"
 #include "core/measure/tolerances.h"
 
 namespace rockface::measure {
@@ -110,24 +111,6 @@ void judge_area_plane(PlaneEstimate& e, const MeasureSettings& settings) {
     e.problem = "orientation unknown: too few points for a reliable plane";
   else
     e.known = true;
-}
-
-// A patch of the free surface turns counter-clockwise seen from outside
-// the rock (SCENE.md: its polygon's Newell normal is its outward normal,
-// core/faces/free_surface.cpp): the corners are put in that order, seen
-// from the camera, whichever way round the geologist tapped them.
-void wind_toward_camera(AreaMeasurement& a, const PhotoView& view) {
-  const auto& p = a.outline_points;
-  if (p.size() < 3 || p.size() != a.outline.size()) return;
-  Eigen::Vector3d newell = Eigen::Vector3d::Zero(), centroid = Eigen::Vector3d::Zero();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    newell += p[i].cross(p[(i + 1) % p.size()]);
-    centroid += p[i];
-  }
-  centroid /= static_cast<double>(p.size());
-  if (newell.dot(view.pose.centre - centroid) >= 0) return;
-  std::reverse(a.outline.begin(), a.outline.end());
-  std::reverse(a.outline_points.begin(), a.outline_points.end());
 }
 
 double outline_angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {

@@ -32,7 +32,9 @@ struct OutlinePieces {
   // `id` as given; several: ids `id` + "a", "b", ... Each piece's RMS off
   // its plane (plane.fit.rms_off_plane()) is its margin as a plane. Its
   // corners turn counter-clockwise seen from the camera (from outside the
-  // rock, as SCENE.md's surface patches do), whichever way they were tapped.
+  // rock, as SCENE.md's surface patches do), whichever way they were tapped
+  // (wind_toward_camera, free_face_side.h: a piece the camera sees edge-on
+  // keeps the order tapped, and its note says so).
   std::vector<AreaMeasurement> pieces;
   // What a geologist should know, in words: a part too small or too rough
   // to be a plane (and where its area went), why a folded outline stayed

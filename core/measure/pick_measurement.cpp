@@ -179,9 +179,20 @@ MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& c,
     const std::string where = prefix + a.where;
     const PhotoView& view = view_of(c, a.photo, where);
     require_in_image(view, a.polygon, where + ".polygon");
-    out.areas.push_back(
-        {measure_area(picker_of(c, a.photo), view, a.id, a.polygon, c.settings, where),
-         a.rock_side});
+    MeasuredArea area;
+    area.m = measure_area(picker_of(c, a.photo), view, a.id, a.polygon, c.settings, where);
+    // The side the rock is on comes from where the camera stood, never from
+    // the order the corners were tapped in (free_face_side.h).
+    if (a.rock_side.empty()) {
+      area.sight = wind_toward_camera(area.m, view);
+    } else {
+      const FreeFaceSide side = free_face_side(area.m, view, a.rock_side, where);
+      area.rock_side = side.rock_side;
+      area.rock_side_from = side.from;
+      area.marginal = side.marginal;
+      area.sight = side.sight;
+    }
+    out.areas.push_back(std::move(area));
   }
   for (const auto& p : picks.points) {
     const std::string where = prefix + p.where;

@@ -7,11 +7,13 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "core/measure/compass_reading.h"
+#include "core/measure/free_face_side.h"
 #include "core/measure/joint_sets.h"
 #include "core/measure/mesh_picker.h"
 #include "core/measure/photo_view.h"
@@ -45,8 +47,22 @@ struct MeasuredTrace {
 };
 
 struct MeasuredArea {
+  MeasuredArea() = default;
+  // An area measured elsewhere (a face outline's piece): its rock side as given.
+  MeasuredArea(AreaMeasurement measured, std::string side)
+      : m(std::move(measured)), rock_side(std::move(side)) {}
+
   AreaMeasurement m;
+  // "upper" | "lower" when the area is a free face (free_face_side.h: from
+  // the photograph, or the pick's where the photograph sees it edge-on);
+  // empty otherwise. Its corners turn counter-clockwise seen from the air.
   std::string rock_side;
+  // A free face: where its rock side came from ("photograph" | "pick"), and
+  // marginal when the photograph sees it edge-on. Every area: how the
+  // camera sees it (the angle is the rock side's margin).
+  std::string rock_side_from;
+  bool marginal = false;
+  AreaSight sight;
 };
 
 // The traces of one joint fitted together (a joint marked piece by piece).

@@ -81,4 +81,28 @@ inline constexpr double kCompassSigmaDeg = 2.0;
 // the trace is taken for the wrong joint and the measurement is marginal.
 inline constexpr double kMaxTraceOffCompassDeg = 10.0;
 
+// The rock side of a free face (free_face_side.h): the rock lies behind the
+// face the camera saw. The photograph tells that side when every corner of
+// the area (and its centroid) sees the face's plane from one side at more
+// than this angle, or than kFreeFaceViewInSigmas sigmas of the plane's
+// normal when that is larger: a plane fitted to a rough face stands for a
+// surface whose local attitude departs from it by its roughness angle (ISRM
+// first-order roughness 5-10 degrees, the paragraph of
+// kMaxTraceOffCompassDeg), and a face seen within a few degrees of edge-on
+// is where dense matching gives the fewest and poorest points (a point's
+// error across the face grows as 1 / sin of the angle). Closer to edge-on
+// the photograph does not tell the side; 3 sigmas: a sign wrong once in a
+// thousand by the normal's own error.
+inline constexpr double kMinFreeFaceViewDeg = 5.0;
+inline constexpr double kFreeFaceViewInSigmas = 3.0;
+// A pick's rock_side ("upper" | "lower": the half-space of the face's
+// upward normal) swaps meaning as a face passes through vertical: a tunnel
+// face leaning back 2 degrees has its rock "lower", overhanging 2 degrees
+// "upper", and by eye the two are the same face (its lean is judged no
+// better than its roughness angle, above). Within this angle of vertical a
+// pick's rock_side that disagrees with the photograph is read as "behind
+// the face" and the note says so; beyond it, a rock side the photograph
+// contradicts is refused.
+inline constexpr double kFreeFaceNearVerticalDeg = 5.0;
+
 }  // namespace rockface::measure

@@ -60,6 +60,16 @@ int run_measure(MeasureOptions& o) {
       std::printf("%s: compass %.1f/%.1f%s: %s\n", t.m.id.c_str(), t.compass->reading.dip_deg,
                   t.compass->reading.dip_direction_deg, t.compass->marginal() ? " (marginal)" : "",
                   t.m.plane.problem.c_str());
+  // A free face: its rock side, where it came from and how the camera saw it.
+  for (const auto& a : measured.areas)
+    if (!a.rock_side.empty() && a.m.plane.known)
+      std::printf("%s: free face %.1f/%.1f, rock %s (%s, seen at %.1f deg, %.1f needed)%s%s\n",
+                  a.m.id.c_str(), rad_to_deg(a.m.plane.orientation.dip),
+                  rad_to_deg(a.m.plane.orientation.dipdir), a.rock_side.c_str(),
+                  a.rock_side_from == "photograph" ? "behind the face photographed"
+                                                   : "the pick's, marginal",
+                  a.sight.least_deg, a.sight.needed_deg, a.m.plane.problem.empty() ? "" : ": ",
+                  a.m.plane.problem.c_str());
   for (const auto& s : measured.sets) {
     const auto pl = s.fisher.plane();
     std::printf("set %s: %zu planes, mean %.1f/%.1f, K %.1f, alpha95 %.1f deg\n", s.label.c_str(),

@@ -110,6 +110,15 @@ std::string measures_json(const measure::MeasuredPicks& r, const measure::Measur
     m["type"] = "area";
     m["set"] = r.set_of(a.m.id);
     m["rock_side"] = a.rock_side;
+    // How the camera saw the area: the least angle between its plane and
+    // the sight lines to the camera, and what telling its side needs; a
+    // free face's rock side says where it came from (free_face_side.h).
+    m["seen_at_deg"] = a.sight.least_deg;
+    m["seen_needs_deg"] = a.sight.needed_deg;
+    if (!a.rock_side.empty()) {
+      m["rock_side_from"] = a.rock_side_from;
+      m["marginal"] = a.marginal;
+    }
     m["photo"] = a.m.outline.empty() ? json("") : json(a.m.outline.front().photo);
     put_pair(m, m["photo"].get<std::string>());
     std::vector<Eigen::Vector2d> px;
