@@ -36,8 +36,9 @@ std::string explain(int extended_rc) {
       return "not a rockface project (not an SQLite database)";
     case SQLITE_BUSY:
     case SQLITE_LOCKED:
-      return "the project stayed busy (another program or thread kept writing) past the wait "
-             "limit; nothing of this action was saved";
+      return "the project stayed busy past the wait limit (another program or thread kept "
+             "writing to it: `rockface ui` or a verb on the same project); nothing of this "
+             "action was saved: run it again once the other one has finished saving";
     case SQLITE_READONLY:
       return "the project file cannot be written (read-only file, folder or card)";
     case SQLITE_CANTOPEN:
