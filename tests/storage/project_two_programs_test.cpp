@@ -59,7 +59,8 @@ const bool kIsTheOtherProgram = [] {
     options.busy_timeout = std::chrono::milliseconds(std::stol(wait_ms));
     auto store = ProjectStore::open(file, options);
     const IntegrityReport report = store.check_integrity(OpenOptions::Check::full);
-    if (!report.ok) throw std::runtime_error("integrity check: " + report.problems.front());
+    if (!report.ok)
+      throw std::runtime_error("integrity check: " + testing::PrintToString(report.problems));
     const std::size_t visits = store.list_visits().size();
     if (visits != std::stoul(sees))
       throw std::runtime_error("sees " + std::to_string(visits) + " visits, not " + sees);
@@ -152,7 +153,7 @@ TEST(ProjectTwoPrograms, AVerbWritesWhileTheUiHoldsTheProjectOpen) {
 
   auto store = ProjectStore::open(file);
   const IntegrityReport report = store.check_integrity(OpenOptions::Check::full);
-  EXPECT_TRUE(report.ok) << report.problems.front();
+  EXPECT_TRUE(report.ok) << testing::PrintToString(report.problems);
   EXPECT_EQ(sources(store.list_visits()), committed);
   std::set<std::string> logged;
   for (const auto& a : store.list_actions())
@@ -190,7 +191,7 @@ TEST(ProjectTwoPrograms, AVerbStopsCleanlyWhenTheUiKeepsWritingPastItsWait) {
 
   auto store = ProjectStore::open(file);
   const IntegrityReport report = store.check_integrity(OpenOptions::Check::full);
-  EXPECT_TRUE(report.ok) << report.problems.front();
+  EXPECT_TRUE(report.ok) << testing::PrintToString(report.problems);
   EXPECT_EQ(sources(store.list_visits()), (std::set<std::string>{"replay", "tablet", "measure"}));
 }
 

@@ -99,7 +99,7 @@ class MapEdits : public ::testing::Test {
     auto store = storage::ProjectStore::open(project_);
     const storage::IntegrityReport report =
         store.check_integrity(storage::OpenOptions::Check::full);
-    EXPECT_TRUE(report.ok) << report.problems.front();
+    EXPECT_TRUE(report.ok) << testing::PrintToString(report.problems);
     const storage::RecordId measured = *store.latest_visit();
     if (session_) {
       EXPECT_EQ(app().session->store().latest_visit(), measured);
