@@ -2,6 +2,7 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <utility>
 
@@ -35,8 +36,9 @@ std::string explain(int extended_rc) {
       return "not a rockface project (not an SQLite database)";
     case SQLITE_BUSY:
     case SQLITE_LOCKED:
-      return "the project stayed busy (another program or thread kept writing) past the wait "
-             "limit; nothing of this action was saved";
+      return "the project stayed busy past the wait limit (another program or thread kept "
+             "writing to it: `rockface ui` or a verb on the same project); nothing of this "
+             "action was saved: run it again once the other one has finished saving";
     case SQLITE_READONLY:
       return "the project file cannot be written (read-only file, folder or card)";
     case SQLITE_CANTOPEN:
@@ -166,6 +168,23 @@ std::string Connection::query_text(std::string_view sql, std::string_view doing)
 
 std::int64_t Connection::last_insert_id() const {
   return sqlite3_last_insert_rowid(db_);
+}
+
+std::vector<std::uint8_t> Connection::read_start(std::size_t count) {
+  const std::string_view doing = "reading the file's header";
+  sqlite3_file* file = nullptr;
+  int rc = sqlite3_file_control(db_, "main", SQLITE_FCNTL_FILE_POINTER, &file);
+  if (rc != SQLITE_OK) fail(nullptr, rc, file_, doing);
+  if (file == nullptr || file->pMethods == nullptr) fail(nullptr, SQLITE_CANTOPEN, file_, doing);
+  sqlite3_int64 size = 0;
+  rc = file->pMethods->xFileSize(file, &size);
+  if (rc != SQLITE_OK) fail(nullptr, rc, file_, doing);
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(
+      std::clamp<sqlite3_int64>(size, 0, static_cast<sqlite3_int64>(count))));
+  if (out.empty()) return out;
+  rc = file->pMethods->xRead(file, out.data(), static_cast<int>(out.size()), 0);
+  if (rc != SQLITE_OK) fail(nullptr, rc, file_, doing);
+  return out;
 }
 
 Statement::Statement(Connection& db, std::string_view sql, std::string_view doing)

@@ -50,6 +50,17 @@ class Connection {
   std::string query_text(std::string_view sql, std::string_view doing);
   std::int64_t last_insert_id() const;
 
+  // The first `count` bytes of the file as stored (fewer when the file is
+  // shorter), read through this connection's own file handle, so that no
+  // second descriptor of the file is opened and closed. Closing any
+  // descriptor of a file drops every POSIX lock this process holds on it,
+  // those of its other SQLite connections included (SQLite keeps its own
+  // descriptors open until its locks are gone; a plain open and close does
+  // not), and a project whose locks were dropped is checkpointed and its
+  // write-ahead log deleted by another program while this one still uses
+  // it: the two then write different logs into one file and damage it.
+  std::vector<std::uint8_t> read_start(std::size_t count);
+
   void close() noexcept;
 
  private:

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstring>
 #include <ctime>
-#include <fstream>
 
 #include "core/common/error.h"
 #include "storage/project_schema.h"
@@ -39,33 +38,44 @@ namespace {
 
 constexpr const char* kCreatedBy = "rockface 0.1";
 
-// What the first 100 bytes of an SQLite file say (https://sqlite.org/fileformat.html
-// "The Database Header"); read with plain file I/O so that a foreign file is
-// recognised before SQLite touches it.
-void check_header(const fs::path& file) {
+// That `file` is there, a file and readable, from its directory entry only:
+// no descriptor of it is opened here (see check_header).
+void check_path(const fs::path& file) {
   std::error_code ec;
   const auto status = fs::status(file, ec);
   if (ec || !fs::exists(status)) throw InputError(file.string(), "no such project file");
   if (fs::is_directory(status)) throw InputError(file.string(), "is a folder, not a project file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), "cannot be read (no permission?)");
-  unsigned char header[100] = {};
-  in.read(reinterpret_cast<char*>(header), sizeof(header));
-  const auto got = in.gcount();
-  if (got == 0) throw InputError(file.string(), "empty file, not a rockface project");
+  if (::access(file.c_str(), R_OK) != 0)
+    throw InputError(file.string(), "cannot be read (no permission?)");
+}
+
+// What the first 100 bytes of an SQLite file say (https://sqlite.org/fileformat.html
+// "The Database Header"), checked before SQLite reads anything else of the
+// file: a foreign file is recognised before it is used.
+// The bytes are read through the probe's own file handle, never by opening
+// the file again: closing that second descriptor would drop the POSIX locks
+// of every connection this process has open on the project (the UI's store
+// while a worker opens another one), and another program ending its write
+// would then take this process for gone, checkpoint the write-ahead log into
+// the file and delete it while this process still writes into it: two logs,
+// one file, damaged (the lost-lock case of https://sqlite.org/howtocorrupt.html,
+// section 2.2).
+void check_header(Connection& probe) {
+  const std::string file = probe.file().string();
+  const std::vector<std::uint8_t> header = probe.read_start(100);
+  if (header.empty()) throw InputError(file, "empty file, not a rockface project");
   static constexpr char kMagic[16] = "SQLite format 3";  // with its terminating NUL
-  if (got < static_cast<std::streamsize>(sizeof(header)) ||
-      std::memcmp(header, kMagic, sizeof(kMagic)) != 0)
-    throw InputError(file.string(), "not a rockface project (not an SQLite database)");
+  if (header.size() < 100 || std::memcmp(header.data(), kMagic, sizeof(kMagic)) != 0)
+    throw InputError(file, "not a rockface project (not an SQLite database)");
   const std::uint32_t app_id = (std::uint32_t{header[68]} << 24) |
                                (std::uint32_t{header[69]} << 16) |
                                (std::uint32_t{header[70]} << 8) | std::uint32_t{header[71]};
   if (app_id != static_cast<std::uint32_t>(schema::kApplicationId)) {
     char hex[16];
     std::snprintf(hex, sizeof(hex), "0x%08x", app_id);
-    throw InputError(file.string(), std::string("not a rockface project (an SQLite database of "
-                                                "another program: application_id ") +
-                                        hex + ")");
+    throw InputError(file, std::string("not a rockface project (an SQLite database of "
+                                       "another program: application_id ") +
+                               hex + ")");
   }
 }
 
@@ -204,13 +214,14 @@ bool on_read_only_media(const fs::path& file) {
 }  // namespace
 
 ProjectStore ProjectStore::open(const fs::path& file, const OpenOptions& options) {
-  check_header(file);
+  check_path(file);
   const bool media_read_only = on_read_only_media(file);
   // A rollback journal with content next to the file is an interrupted
   // change of a project in rollback mode (a file not written by this store:
   // it always uses WAL). SQLite undoes it at the first read, which needs
-  // write access; the header above already showed the file is a project, so
-  // a writable opening may do that when writing is allowed at all.
+  // write access; the header, checked before that first read, shows the file
+  // is a project, so a writable opening may do that when writing is allowed
+  // at all.
   std::error_code ec;
   const fs::path journal = file.string() + "-journal";
   const bool hot_journal = fs::exists(journal, ec) && fs::file_size(journal, ec) > 0;
@@ -222,6 +233,7 @@ ProjectStore ProjectStore::open(const fs::path& file, const OpenOptions& options
                      : recover       ? Connection::Access::read_write
                                      : Connection::Access::read_only,
                      options.vfs);
+    check_header(probe);
     configure_reader(probe, options);
     IntegrityReport report;
     try {

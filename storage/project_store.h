@@ -19,6 +19,13 @@
 // thread and a worker open two stores on the same file; readers see the last
 // committed state and never wait for a writer (WAL); writers queue behind each
 // other for up to busy_timeout instead of failing with "database is locked".
+// Two programs on one project (`rockface ui` and a verb run beside it, the
+// office sync) are serialised the same way by SQLite's file locks; a writer
+// that waits past busy_timeout stops with nothing saved and says so. The
+// file is read only through SQLite while a store may be open in the process
+// (check_header in project_store.cpp says why: a second descriptor's close
+// drops the process's locks, and another program then deletes the
+// write-ahead log in use here).
 #include <chrono>
 #include <filesystem>
 #include <optional>

@@ -87,12 +87,11 @@ class MapEdits : public ::testing::Test {
   }
 
   // `rockface measure` on the project's visit with `picks` (rockface-picks/1
-  // without its format line): the new visit it stores.
-  // The session is closed first: a second program writing the project while
-  // the UI holds it open left the file damaged in this suite (2 runs of 2;
-  // see the branch's report), which is not what is tested here.
+  // without its format line): the new visit it stores. The UI keeps the
+  // project open meanwhile, as on a desktop where a verb runs beside
+  // `rockface ui`: the file stays whole and the UI's own store sees the
+  // verb's visit.
   storage::RecordId measure(const nlohmann::json& picks, const std::string& name) {
-    session_.reset();
     nlohmann::json file = picks;
     file["format"] = "rockface-picks/1";
     const fs::path path = ui_test_dir() / (name + ".picks.json");
@@ -105,7 +104,14 @@ class MapEdits : public ::testing::Test {
               0)
         << slurp(log);
     auto store = storage::ProjectStore::open(project_);
-    return *store.latest_visit();
+    const storage::IntegrityReport report =
+        store.check_integrity(storage::OpenOptions::Check::full);
+    EXPECT_TRUE(report.ok) << testing::PrintToString(report.problems);
+    const storage::RecordId measured = *store.latest_visit();
+    if (session_) {
+      EXPECT_EQ(app().session->store().latest_visit(), measured);
+    }
+    return measured;
   }
 
   app::FieldRunners runners_{""};
