@@ -114,6 +114,19 @@ class MapEdits : public ::testing::Test {
     return measured;
   }
 
+  // Every test leaves its project whole: the UI closed, a full integrity
+  // check (the lost-lock damage of a second program went unnoticed while
+  // every assertion passed).
+  void TearDown() override {
+    session_.reset();
+    if (project_.empty()) return;
+    auto store = storage::ProjectStore::open(project_);
+    const storage::IntegrityReport report =
+        store.check_integrity(storage::OpenOptions::Check::full);
+    EXPECT_TRUE(report.ok) << project_.filename() << ": "
+                           << testing::PrintToString(report.problems);
+  }
+
   app::FieldRunners runners_{""};
   std::unique_ptr<ui::HeadlessSession> session_;
   fs::path project_;
