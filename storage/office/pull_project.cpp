@@ -1,6 +1,10 @@
 #include "storage/office/pull_project.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <map>
 #include <set>
 
@@ -414,7 +418,15 @@ PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel_na
       ProjectStore store = ProjectStore::open(partial, check);
       store.checkpoint();
     }
-    fs::rename(partial, out);
+    // link() refuses a name taken since the check above (rename would
+    // replace that file): a pull never overwrites a project.
+    if (::link(partial.c_str(), out.c_str()) != 0) {
+      const int err = errno;
+      throw InputError(out.string(), std::string("the pulled project cannot take this name: ") +
+                                         std::strerror(err));
+    }
+    std::error_code ec;
+    fs::remove(partial, ec);
   } catch (...) {
     std::error_code ec;
     fs::remove(partial, ec);
