@@ -263,7 +263,9 @@ TEST(MeasureCli, OnAProjectMeasuresStoresAndRefusesBadPicksByName) {
       {"no-mesh",
        R"({"format": "rockface-picks/1", "areas": [{"id": "A1", "photo": "left",
            "polygon": [[2, 2], [30, 2], [30, 30], [2, 30]]}]})",
-       "areas[0].polygon: no surface of the 3D image under the polygon"},
+       // Its first corner is off the 3D image: named before the polygon.
+       "areas[0].polygon[0]: pixel (2, 2) of the left photograph hits no surface of the 3D "
+       "image: move the corner onto the mapped face"},
       {"one-point",
        R"({"format": "rockface-picks/1", "traces": [{"id": "T1", "photo": "left",
            "pixels": [[700, 500]]}]})",
