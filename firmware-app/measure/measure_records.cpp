@@ -159,9 +159,9 @@ void add_named_joints(const measure::MeasuredPicks& r, storage::RecordId visit_i
     if (!named.plane.known) continue;  // its traces keep their own joints
     for (const auto& j : joints)
       if (j.label == named.label)
-        throw InputError("traces", "the joint name \"" + named.label +
-                                       "\" is also the id of a measured " + j.type +
-                                       ": rename the joint or the " + j.type);
+        throw InputError("traces (joint " + named.label + ")",
+                         "the joint name \"" + named.label + "\" is also the id of a measured " +
+                             j.type + ": rename the joint or the " + j.type);
     storage::Joint j;
     j.visit_id = visit_id;
     j.label = named.label;

@@ -130,7 +130,11 @@ MeasureOutcome measure_picks_file(const MeasureRequest& r) {
   join_trace_joints(joined, joints);
   // The joints the traces name, fitted to all their traces (as the replay
   // stores them): without them the visit's traces name joints it lacks.
-  add_named_joints(measured, 0, joints);
+  try {
+    add_named_joints(measured, 0, joints);
+  } catch (const InputError& e) {
+    throw InputError(r.picks + ": " + e.where(), e.reason());  // the picks file named
+  }
   if (store) {
     // A named joint with no plane is said in the visit's note, by name.
     std::string note = "picks measured on " + on;

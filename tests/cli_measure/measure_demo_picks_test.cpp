@@ -261,4 +261,23 @@ TEST_F(MeasureDemoPicks, ANamedJointWhoseTracesGiveNoPlaneIsSaidByName) {
   EXPECT_EQ(a.exit_code, 0) << a.err;
 }
 
+// A joint name that is also the id of a measurement that has a joint of its
+// own (a point with its local plane): two joints of one label, refused by
+// name before anything is stored.
+TEST_F(MeasureDemoPicks, AJointNamedAsAMeasurementIsRefused) {
+  json picks = named_joint_picks();
+  for (auto& t : picks.at("traces"))
+    if (t.at("joint") == "J1") t["joint"] = "P1";
+  picks["points"] = {{{"id", "P1"}, {"photo", "left"}, {"pixel", {1100, 700}}, {"radius", 0.3}}};
+  const std::size_t before = visits();
+  const CliRun r = measure("clash", picks);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find((dir_ / "clash.picks.json").string() +
+                       ": traces (joint P1): the joint name \"P1\" is also the id of a "
+                       "measured point"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(visits(), before) << "nothing stored";
+}
+
 }  // namespace
