@@ -196,10 +196,6 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
       std::min(measured.point_sigma, 0.5 * snap_tolerance / options.planarity_in_sigmas);
   OutlinePieces out;
   AreaMeasurement whole = measure_area(picker, view, id, polygon, measured, where);
-  if (whole.outline_points.size() != whole.outline.size())
-    throw InputError(where, std::to_string(whole.outline.size() - whole.outline_points.size()) +
-                                " of its " + std::to_string(whole.outline.size()) +
-                                " corners have no surface under them");
   // The planarity test of measuring, with the facet finder's limit: a face
   // within it is one plane to the precision of the 3D image.
   const std::string bent =

@@ -254,8 +254,18 @@ AreaMeasurement measure_area(const MeshPicker& picker, const PhotoView& view, st
   a.id = std::move(id);
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     a.outline.push_back({view.name, polygon[i]});
-    if (const auto hit = picker.pick(view, polygon[i], where))
-      a.outline_points.push_back(hit->point);
+    // Every corner is stored with its 3D point: a corner dropped for want of
+    // surface would shrink the exported patch (or leave it under three
+    // corners, refused later, far from the pick), so it is refused here by
+    // name, before anything is stored.
+    const auto hit = picker.pick(view, polygon[i], where);
+    if (!hit) {
+      std::ostringstream s;
+      s << "pixel (" << polygon[i].x() << ", " << polygon[i].y() << ") of the " << view.name
+        << " photograph hits no surface of the 3D image: move the corner onto the mapped face";
+      throw InputError(index_where(where, "polygon", i), s.str());
+    }
+    a.outline_points.push_back(hit->point);
   }
   const std::vector<int> inside = picker.vertices_inside(view, polygon);
   if (inside.size() < 3)

@@ -66,7 +66,7 @@ struct TraceMeasurement {
 struct AreaMeasurement {
   std::string id;
   std::vector<PhotoPixel> outline;              // the polygon in the photo
-  std::vector<Eigen::Vector3d> outline_points;  // its corners on the mesh (where there is surface)
+  std::vector<Eigen::Vector3d> outline_points;  // its corners on the mesh, one per corner
   std::size_t vertices = 0;                     // mesh vertices inside
   double area = 0;                              // m^2 of the triangles inside
   PlaneEstimate plane;
@@ -114,7 +114,8 @@ TraceMeasurement measure_trace_points(const MeshPicker& picker, std::string id,
                                       const MeasureSettings& settings, const std::string& where);
 
 // An area: a polygon of at least three pixels in `view`. Throws InputError
-// when the polygon has no mesh under it.
+// naming the corner ("where.polygon[2]") when a corner has no surface of the
+// mesh under it, and naming the polygon when it has no mesh inside it.
 AreaMeasurement measure_area(const MeshPicker& picker, const PhotoView& view, std::string id,
                              const std::vector<Eigen::Vector2d>& polygon,
                              const MeasureSettings& settings, const std::string& where);

@@ -16,6 +16,7 @@
 #include "core/common/units.h"
 #include "core/measure/joined_traces.h"
 #include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/measure/measure_records.h"
 #include "firmware-app/measure/measure_workflow.h"
 
 namespace rockface::app {
@@ -54,6 +55,9 @@ int run_measure(MeasureOptions& o) {
             << measured.areas.size() << " areas, " << measured.points.size() << " points; "
             << measured.sets.size() << " joint sets\n";
   for (const auto& j : measured.joined) std::cout << measure::joined_note(j) << "\n";
+  // The joints the traces name: the plane fitted to all their traces, or
+  // why they give none.
+  for (const auto& said : named_joint_notes(measured)) std::cout << said << "\n";
   // Issue 27: a plane given as a compass reading, and how the trace lies in it.
   for (const auto& t : measured.traces)
     if (t.compass)

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 
+#include "core/common/error.h"
 #include "core/common/units.h"
 
 namespace rockface::app {
@@ -13,6 +15,14 @@ namespace {
 
 std::optional<double> opt(double v, bool when) {
   return when ? std::optional<double>(v) : std::nullopt;
+}
+
+// "traces T1 T2": the source `rockface replay` gives a joint fitted to
+// several traces, which the tablet reads back (trace_map_runner.cpp).
+std::string traces_source(const measure::MeasuredJoint& j) {
+  std::string source = "traces";
+  for (const auto& t : j.traces) source += " " + t;
+  return source;
 }
 
 }  // namespace
@@ -131,6 +141,72 @@ std::vector<storage::Joint> joint_records(const measure::MeasuredPicks& r,
   for (const auto& a : r.areas)
     if (a.rock_side.empty()) add(a.m.id, "area", a.m.plane, std::nullopt);
   for (const auto& p : r.points) add(p.id, "point", p.plane, std::nullopt);
+  return out;
+}
+
+void add_named_joints(const measure::MeasuredPicks& r, storage::RecordId visit_id,
+                      std::vector<storage::Joint>& joints) {
+  // The traces' own joints go: one discontinuity, one joint.
+  std::set<std::string> covered;
+  for (const auto& named : r.joints)
+    if (named.plane.known) covered.insert(named.traces.begin(), named.traces.end());
+  joints.erase(std::remove_if(joints.begin(), joints.end(),
+                              [&](const storage::Joint& j) {
+                                return j.type == "trace" && covered.count(j.label);
+                              }),
+               joints.end());
+  for (const auto& named : r.joints) {
+    if (!named.plane.known) continue;  // its traces keep their own joints
+    for (const auto& j : joints)
+      if (j.label == named.label)
+        throw InputError("traces (joint " + named.label + ")",
+                         "the joint name \"" + named.label + "\" is also the id of a measured " +
+                             j.type + ": rename the joint or the " + j.type);
+    storage::Joint j;
+    j.visit_id = visit_id;
+    j.label = named.label;
+    // Its set: the one its traces are in, when they agree.
+    std::set<std::string> sets;
+    for (const auto& t : named.traces) sets.insert(r.set_of(t));
+    if (sets.size() == 1) j.set_label = *sets.begin();
+    j.dip_deg = rad_to_deg(named.plane.orientation.dip);
+    j.dipdir_deg = rad_to_deg(named.plane.orientation.dipdir);
+    j.point = named.plane.fit.centroid;
+    j.source = traces_source(named);
+    j.type = "trace";
+    joints.push_back(std::move(j));
+  }
+}
+
+void unname_joints_without_plane(const measure::MeasuredPicks& r,
+                                 std::vector<storage::Measurement>& records) {
+  for (const auto& named : r.joints) {
+    if (named.plane.known) continue;
+    for (auto& m : records)
+      if (m.kind == storage::Measurement::Kind::trace && m.joint_label == named.label) {
+        m.joint_label.clear();
+        m.note += std::string(m.note.empty() ? "" : "; ") + "named joint " + named.label +
+                  ", not stored (" + traces_source(named) + "): " + named.plane.problem;
+      }
+  }
+}
+
+std::vector<std::string> named_joint_notes(const measure::MeasuredPicks& r) {
+  std::vector<std::string> out;
+  for (const auto& named : r.joints) {
+    std::string said = named.label + " (" + traces_source(named) + "): ";
+    if (named.plane.known) {
+      char text[96];
+      std::snprintf(text, sizeof text, "joint %.1f/%.1f, sigma %.1f deg",
+                    rad_to_deg(named.plane.orientation.dip),
+                    rad_to_deg(named.plane.orientation.dipdir), rad_to_deg(named.plane.sigma));
+      said += text;
+      if (!named.plane.problem.empty()) said += "; " + named.plane.problem;
+    } else {
+      said += "no joint stored: " + named.plane.problem;
+    }
+    out.push_back(std::move(said));
+  }
   return out;
 }
 

@@ -128,15 +128,26 @@ MeasureOutcome measure_picks_file(const MeasureRequest& r) {
   const std::vector<measure::JoinedTrace>& joined = measured.joined;
   std::vector<storage::Joint> joints = joint_records(measured, 0);
   join_trace_joints(joined, joints);
+  // The joints the traces name, fitted to all their traces (as the replay
+  // stores them): without them the visit's traces name joints it lacks.
+  try {
+    add_named_joints(measured, 0, joints);
+  } catch (const InputError& e) {
+    throw InputError(r.picks + ": " + e.where(), e.reason());  // the picks file named
+  }
   if (store) {
-    const storage::RecordId visit =
-        store->begin_visit("measure " + r.picks, "picks measured on " + on);
+    // A named joint with no plane is said in the visit's note, by name.
+    std::string note = "picks measured on " + on;
+    for (const auto& j : measured.joints)
+      if (!j.plane.known) note += "; joint " + j.label + ": " + j.plane.problem;
+    const storage::RecordId visit = store->begin_visit("measure " + r.picks, note);
     std::map<std::string, PairRecords> further_records;
     for (const auto& f : further)
       for (const auto& [name, view] : f.views) further_records[name] = {f.model_id, f.capture_id};
     auto records =
         measurement_records(measured, visit, {model.model_id, model.capture_id}, further_records);
     join_trace_records(joined, records);
+    unname_joints_without_plane(measured, records);
     const auto ids = store->save_measurements(visit, records);
     for (auto& j : joints) {
       j.visit_id = visit;

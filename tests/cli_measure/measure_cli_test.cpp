@@ -199,7 +199,18 @@ TEST(MeasureCli, OnAProjectMeasuresStoresAndRefusesBadPicksByName) {
   EXPECT_EQ(std::string(magic + 1, 3), "PNG");
   std::ifstream csv_in(csv);
   const auto rows = rockface::storage::read_joints_csv(csv_in, Eigen::Vector3d::Zero(), "dips.csv");
-  EXPECT_EQ(rows.size(), 3u);  // P-J1, P-J3 (traces), P1 (point); A1 is a free face
+  // P-J1, P-J3 (traces), P1 (point), and each joint the traces name whose
+  // plane their points give (T1, T2, ... name J1-J3, MEASURES.json
+  // joints[]), stored as the replay stores it; A1 is a free face.
+  std::map<std::string, std::string> named;  // label -> "traces T1 T4 ..."
+  for (const auto& j : m.at("joints"))
+    if (j.at("orientation_known").get<bool>()) {
+      std::string source = "traces";
+      for (const auto& t : j.at("traces")) source += " " + t.get<std::string>();
+      named[j.at("label").get<std::string>()] = source;
+    }
+  EXPECT_GE(named.size(), 1u) << m.at("joints").dump(1);
+  EXPECT_EQ(rows.size(), 3u + named.size());
 
   // The store: a new visit with every measurement and the joint table.
   std::size_t visits = 0;
@@ -216,8 +227,16 @@ TEST(MeasureCli, OnAProjectMeasuresStoresAndRefusesBadPicksByName) {
         EXPECT_GT(x.pixels.size(), 100u);  // the traced path
       }
     const auto joints = store.list_joints(v.back().id);
-    EXPECT_EQ(joints.size(), 3u);
-    for (const auto& j : joints) EXPECT_TRUE(j.measurement_id.has_value()) << j.label;
+    EXPECT_EQ(joints.size(), 3u + named.size());
+    for (const auto& j : joints) {
+      if (const auto it = named.find(j.label); it != named.end()) {
+        EXPECT_EQ(j.source, it->second);  // fitted to several traces: no one measurement
+        EXPECT_EQ(j.type, "trace");
+        continue;
+      }
+      EXPECT_TRUE(j.label == "P-J1" || j.label == "P-J3" || j.label == "P1") << j.label;
+      EXPECT_TRUE(j.measurement_id.has_value()) << j.label;
+    }
   }
 
   // The right photograph: a point picked in the left one, then where the
@@ -263,7 +282,9 @@ TEST(MeasureCli, OnAProjectMeasuresStoresAndRefusesBadPicksByName) {
       {"no-mesh",
        R"({"format": "rockface-picks/1", "areas": [{"id": "A1", "photo": "left",
            "polygon": [[2, 2], [30, 2], [30, 30], [2, 30]]}]})",
-       "areas[0].polygon: no surface of the 3D image under the polygon"},
+       // Its first corner is off the 3D image: named before the polygon.
+       "areas[0].polygon[0]: pixel (2, 2) of the left photograph hits no surface of the 3D "
+       "image: move the corner onto the mapped face"},
       {"one-point",
        R"({"format": "rockface-picks/1", "traces": [{"id": "T1", "photo": "left",
            "pixels": [[700, 500]]}]})",

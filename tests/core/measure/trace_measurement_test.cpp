@@ -155,6 +155,42 @@ TEST(AreaMeasurement, PolygonWithNoMeshUnderItIsRefused) {
   }
 }
 
+// A corner with no surface under it (tapped above the face, in the sky)
+// is refused by name, not dropped from the stored corners: the other three
+// corners alone would make a smaller patch than the one outlined.
+TEST(AreaMeasurement, CornerWithNoSurfaceUnderItIsRefusedByName) {
+  const auto face = rockface::test::folded_face(800, 600, 0.005);
+  const rm::MeshPicker picker(face.mesh);
+  const auto& mid = face.facets[1].plane;
+  std::vector<Eigen::Vector3d> corners;
+  for (auto [x, z] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
+    corners.emplace_back(x, (mid.offset - mid.normal.x() * x - mid.normal.z() * z) / mid.normal.y(),
+                         z);
+  rm::MeasureSettings settings;
+  settings.point_sigma = 0.005;
+  std::vector<Eigen::Vector2d> polygon = rockface::test::pixels_of(face, corners);
+  // All four on the facet: every corner kept, in order, on the surface.
+  const auto whole = rm::measure_area(picker, face.view, "A1", polygon, settings, "areas[0]");
+  ASSERT_EQ(whole.outline_points.size(), polygon.size());
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const auto hit = picker.pick(face.view, polygon[i], "corner");
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_EQ(whole.outline_points[i], hit->point) << i;
+  }
+  // The third corner moved up to the top row, which sees sky.
+  polygon[2] = Eigen::Vector2d(std::round(polygon[2].x()), 2);
+  ASSERT_FALSE(picker.pick(face.view, polygon[2], "corner").has_value());
+  try {
+    rm::measure_area(picker, face.view, "A1", polygon, settings, "PICKS.json: areas[0]");
+    FAIL() << "a corner off the 3D image was accepted";
+  } catch (const rockface::InputError& e) {
+    EXPECT_EQ(e.where(), "PICKS.json: areas[0].polygon[2]");
+    EXPECT_EQ(e.reason(), "pixel (" + std::to_string(static_cast<int>(polygon[2].x())) +
+                              ", 2) of the left photograph hits no surface of the 3D image: "
+                              "move the corner onto the mapped face");
+  }
+}
+
 TEST(PointMeasurement, LocalNormalIsTheFacetNormal) {
   const auto face = rockface::test::folded_face(800, 600, 0.002);
   const rm::MeshPicker picker(face.mesh);
