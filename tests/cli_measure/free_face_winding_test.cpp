@@ -19,6 +19,7 @@
 #include "storage/export_scene_json.h"
 #include "storage/project_store.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/json_file.h"
 #include "tests/support/test_paths.h"
 #include "tests/support/truth_picks.h"
 
@@ -27,16 +28,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using rockface::test::CliRun;
+using rockface::test::read_json;
 using rockface::test::run_rockface;
-
-json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
-
-void write_json(const fs::path& p, const json& j) {
-  std::ofstream(p) << j.dump(2);
-}
+using rockface::test::write_json;
 
 // The sample's own taps of its traces, each with the compass reading a
 // geologist takes on its joint (the sample's J2 reading; J1 and J3 read to

@@ -15,6 +15,7 @@
 #include "storage/export_joints_csv.h"
 #include "storage/project_store.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/json_file.h"
 #include "tests/support/plane_angle.h"
 #include "tests/support/truth_picks.h"
 
@@ -25,16 +26,9 @@ using nlohmann::json;
 using rockface::test::CliRun;
 using rockface::test::plane_angle_deg;
 using rockface::test::pole_of;
+using rockface::test::read_json;
 using rockface::test::run_rockface;
-
-json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
-
-void write_json(const fs::path& p, const json& j) {
-  std::ofstream(p) << j.dump(2);
-}
+using rockface::test::write_json;
 
 // Pixel of a world point in a rendered camera of truth.json (pinhole with
 // the Brown distortion of the intrinsics, OpenCV's model).

@@ -121,14 +121,23 @@ TEST(TraceMeasurement, BadPicksAreNamedAndRefused) {
   EXPECT_NE(message({{100, 2}, {200, 2}}).find("no surface"), std::string::npos);
 }
 
-TEST(AreaMeasurement, PolygonOnAFacetGivesItsPlane) {
-  const auto face = rockface::test::folded_face(800, 600, 0.005);
-  const rm::MeshPicker picker(face.mesh);
+// A 2 m square (x and z from -1 to 1) lying in the folded face's middle
+// facet: the corners of an area pick that is all on the surface.
+static std::vector<Eigen::Vector3d> corners_on_middle_facet(
+    const rockface::test::FoldedFace& face) {
   const auto& mid = face.facets[1].plane;
   std::vector<Eigen::Vector3d> corners;
   for (auto [x, z] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
     corners.emplace_back(x, (mid.offset - mid.normal.x() * x - mid.normal.z() * z) / mid.normal.y(),
                          z);
+  return corners;
+}
+
+TEST(AreaMeasurement, PolygonOnAFacetGivesItsPlane) {
+  const auto face = rockface::test::folded_face(800, 600, 0.005);
+  const rm::MeshPicker picker(face.mesh);
+  const auto& mid = face.facets[1].plane;
+  const std::vector<Eigen::Vector3d> corners = corners_on_middle_facet(face);
   rm::MeasureSettings settings;
   settings.point_sigma = 0.005;
   const auto a = rm::measure_area(picker, face.view, "A1", rockface::test::pixels_of(face, corners),
@@ -161,11 +170,7 @@ TEST(AreaMeasurement, PolygonWithNoMeshUnderItIsRefused) {
 TEST(AreaMeasurement, CornerWithNoSurfaceUnderItIsRefusedByName) {
   const auto face = rockface::test::folded_face(800, 600, 0.005);
   const rm::MeshPicker picker(face.mesh);
-  const auto& mid = face.facets[1].plane;
-  std::vector<Eigen::Vector3d> corners;
-  for (auto [x, z] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
-    corners.emplace_back(x, (mid.offset - mid.normal.x() * x - mid.normal.z() * z) / mid.normal.y(),
-                         z);
+  const std::vector<Eigen::Vector3d> corners = corners_on_middle_facet(face);
   rm::MeasureSettings settings;
   settings.point_sigma = 0.005;
   std::vector<Eigen::Vector2d> polygon = rockface::test::pixels_of(face, corners);
