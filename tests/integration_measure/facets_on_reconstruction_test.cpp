@@ -178,6 +178,9 @@ TEST(FacetsOnReconstruction, SteppedFaceGivesTheTwoSetsWithTheirSpacing) {
   const Rendered& r = stepped();
   const rm::FacetSearch found = facets_of(r.rec);
   const rm::FacetSets sets = rm::facet_sets(found);
+  for (const auto& c : sets.not_sets)
+    std::printf("not a set (%zu facets, %.2f m2): %s\n", c.facet_ids.size(), c.area,
+                c.reason.c_str());
   ASSERT_EQ(sets.sets.size(), 2u);
   for (const rm::FacetSet& s : sets.sets) {
     const Eigen::Vector3d mean = s.summary.fisher.mean;

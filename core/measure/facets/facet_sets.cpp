@@ -19,14 +19,23 @@ std::string percent(double share) {
   return s.str();
 }
 
-// Two facets lie in one plane when the centroid of one is within
-// kSameDiscontinuityM of the plane of the other, the better known (smaller
-// sigma), plus what that plane's uncertainty makes of the lever arm between
-// them (two of its sigmas): a wall seen in pieces is one plane although its
-// pieces' planes, each a little tilted, part by centimetres over metres;
-// a poorly known small facet cannot chain two planes of a set together.
-// The planes are the groups of facets so linked.
-int distinct_planes(const std::vector<const Facet*>& facets) {
+// Two facets of a set lie in one plane when their centroids are within
+// kSameDiscontinuityM of one plane through both, plus what the uncertainty
+// of that plane's normal makes of the lever arm between them: a wall seen
+// in pieces is one plane although its pieces' planes, each a little tilted,
+// part by centimetres over metres. The normal is the better known of the
+// set's Fisher mean (its 95 % cone, alpha95) and the better facet's own
+// plane (two of its sigmas): the facets of a set are parallel, so with many
+// members the mean is known far better than any one of them. The planes are
+// the groups of facets so linked.
+//
+// Until stop 37 the normal was always the better facet's: two small facets
+// of 3.5 to 5 deg sigma on different strips 5.5 m apart then had a
+// tolerance of 0.7 m, the very spacing of the set, and chained its three
+// planes into one. Whether they did turned on the last bits of the
+// reconstruction, which differ with OpenCV's CPU dispatch (AVX-512, AVX2 or
+// SSE kernels): the set was found on one machine and not on another.
+int distinct_planes(const std::vector<const Facet*>& facets, const FisherStatistics& set) {
   const std::size_t n = facets.size();
   std::vector<std::size_t> root(n);
   for (std::size_t i = 0; i < n; ++i) root[i] = i;
@@ -34,15 +43,23 @@ int distinct_planes(const std::vector<const Facet*>& facets) {
     while (root[i] != i) i = root[i] = root[root[i]];
     return i;
   };
-  auto on_plane_of = [](const Facet& a, const Facet& b) {
+  // a is the better known of the two.
+  auto one_plane = [&](const Facet& a, const Facet& b) {
+    const double facet_cone = 2 * a.plane.sigma;
+    const bool by_mean = set.alpha95 < facet_cone;
+    const Eigen::Vector3d& normal = by_mean ? set.mean : a.plane.fit.normal;
+    // Capped short of a right angle, where the tangent turns: a plane known
+    // that poorly holds every facet.
+    const double cone = std::min(by_mean ? set.alpha95 : facet_cone, deg_to_rad(89.0));
     const Eigen::Vector3d d = b.centroid - a.centroid;
-    return std::abs(a.plane.fit.normal.dot(d)) <=
-           kSameDiscontinuityM + 2 * std::tan(a.plane.sigma) * d.norm();
+    const double off = std::abs(normal.dot(d));
+    const double along = std::sqrt(std::max(0.0, d.squaredNorm() - off * off));
+    return off <= kSameDiscontinuityM + std::tan(cone) * along;
   };
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
-      if (facets[i]->plane.sigma <= facets[j]->plane.sigma ? on_plane_of(*facets[i], *facets[j])
-                                                           : on_plane_of(*facets[j], *facets[i]))
+      if (facets[i]->plane.sigma <= facets[j]->plane.sigma ? one_plane(*facets[i], *facets[j])
+                                                           : one_plane(*facets[j], *facets[i]))
         root[find(i)] = find(j);
   int planes = 0;
   for (std::size_t i = 0; i < n; ++i) planes += find(i) == i;
@@ -81,7 +98,7 @@ FacetSets facet_sets(const FacetSearch& search, const ClusterOptions& clustering
         in_set.push_back(&search.facets[i]);
         area += search.facets[i].area;
       }
-    const int planes = distinct_planes(in_set);
+    const int planes = distinct_planes(in_set, clusters.sets[s]);
     const double to_face = rad_to_deg(
         std::acos(std::min(1.0, std::abs(clusters.sets[s].mean.dot(search.surface_normal)))));
     const double share = search.mapped_area > 0 ? area / search.mapped_area : 0;

@@ -6,8 +6,9 @@
 //
 // What a geologist accepts as a set, and what not: a set is a family of
 // parallel discontinuities, so a cluster whose facets all lie in one plane
-// (within kSameDiscontinuityM plus their orientation uncertainty over the
-// distance between them) is one surface and gives no set (a flat
+// (within kSameDiscontinuityM plus the uncertainty of the better known of
+// the set's mean normal and the facets' own over the distance between them)
+// is one surface and gives no set (a flat
 // wall broken into pieces by the growing stays a wall); and a cluster
 // parallel to the mapped surface that covers most of it (kFaceParallelDeg,
 // kFaceShare) is the excavation surface, not a joint set. Both are listed
