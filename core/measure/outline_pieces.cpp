@@ -144,6 +144,37 @@ std::vector<Eigen::Vector2d> clip_polygon(const std::vector<Eigen::Vector2d>& po
   return kept;
 }
 
+namespace {
+
+// The notes joined into one ("a; b").
+std::string joined(const std::vector<std::string>& notes) {
+  std::string all;
+  for (const auto& note : notes) all += (all.empty() ? "" : "; ") + note;
+  return all;
+}
+
+// The share of a piece's points (seen_at) that its outline holds, when
+// under kMinCoveredShare: its part of the face is not bounded by straight
+// fold lines.
+std::optional<std::string> uncovered_note(const std::string& name,
+                                          const std::vector<Eigen::Vector2d>& outline,
+                                          const std::vector<Eigen::Vector2d>& seen_at) {
+  std::size_t in = 0, all = 0;
+  for (const auto& q : seen_at)
+    if (q.allFinite()) {
+      ++all;
+      in += inside_polygon(outline, q);
+    }
+  if (all > 0 && static_cast<double>(in) < kMinCoveredShare * static_cast<double>(all))
+    return "piece " + name + "'s outline holds " +
+           outline_fixed(100.0 * static_cast<double>(in) / static_cast<double>(all), 0) +
+           " % of its points: its part of the face is not bounded by straight "
+           "fold lines";
+  return std::nullopt;
+}
+
+}  // namespace
+
 namespace outline_phases {
 
 Labelled label_points(const photogrammetry::SurfaceMesh& sub,
@@ -372,38 +403,38 @@ AreaMeasurement measure_piece(const PhotoView& view, const std::string& name,
   return a;
 }
 
-}  // namespace outline_phases
-
-namespace {
-
-// The notes joined into one ("a; b").
-std::string joined(const std::vector<std::string>& notes) {
-  std::string all;
-  for (const auto& note : notes) all += (all.empty() ? "" : "; ") + note;
-  return all;
-}
-
-// The share of a piece's points (seen_at) that its outline holds, when
-// under kMinCoveredShare: its part of the face is not bounded by straight
-// fold lines.
-std::optional<std::string> uncovered_note(const std::string& name,
-                                          const std::vector<Eigen::Vector2d>& outline,
-                                          const std::vector<Eigen::Vector2d>& seen_at) {
-  std::size_t in = 0, all = 0;
-  for (const auto& q : seen_at)
-    if (q.allFinite()) {
-      ++all;
-      in += inside_polygon(outline, q);
+void measure_pieces(const PhotoView& view, const std::string& id,
+                    const std::vector<geometry::Plane>& planes,
+                    const std::vector<PlaneEstimate>& estimates, const Labelled& parts,
+                    const std::vector<std::vector<Eigen::Vector2d>>& outline,
+                    const std::vector<std::vector<Eigen::Vector2d>>& seen_at,
+                    const MeasureSettings& measured, const std::string& where, OutlinePieces& out) {
+  const std::size_t n = planes.size();
+  // Largest first: the labels a, b, ... in that order.
+  std::vector<std::size_t> order(planes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return parts.area[a] > parts.area[b]; });
+  char letter = 'a';
+  for (const std::size_t k : order) {
+    const std::string name = id + letter++;
+    if (outline[k].size() < 3 || std::abs(polygon_area(outline[k])) < kMinOutlinePx2) {
+      out.notes.push_back("piece " + name + " (" + outline_m2(parts.area[k]) + ", " +
+                          attitude(planes[k]) + ") has no outline of its own: left out");
+      --letter;
+      continue;
     }
-  if (all > 0 && static_cast<double>(in) < kMinCoveredShare * static_cast<double>(all))
-    return "piece " + name + "'s outline holds " +
-           outline_fixed(100.0 * static_cast<double>(in) / static_cast<double>(all), 0) +
-           " % of its points: its part of the face is not bounded by straight "
-           "fold lines";
-  return std::nullopt;
+    AreaMeasurement a = measure_piece(view, name, outline[k], planes[k], estimates[k],
+                                      parts.points[k].size(), parts.area[k], measured, where);
+    if (n > 2) {
+      if (auto note = uncovered_note(name, outline[k], seen_at[k])) out.notes.push_back(*note);
+    }
+    wind_toward_camera(a, view);
+    out.pieces.push_back(std::move(a));
+  }
 }
 
-}  // namespace
+}  // namespace outline_phases
 
 OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, const std::string& id,
                             const std::vector<Eigen::Vector2d>& polygon,
@@ -459,12 +490,6 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
   // The planes the pieces are measured with: their outlines lie in them.
   for (std::size_t k = 0; k < planes.size(); ++k) planes[k] = estimates[k].fit.plane();
 
-  // Largest first: the labels a, b, ... in that order.
-  std::vector<std::size_t> order(planes.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return parts.area[a] > parts.area[b]; });
-
   // Which pieces touch, each piece's points seen in the photograph, and
   // each piece's outline cut along the fold lines.
   const std::size_t n = planes.size();
@@ -475,24 +500,8 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
   out.notes.insert(out.notes.end(), folds.notes.begin(), folds.notes.end());
   const auto& outline = folds.outline;
 
-  // The pieces, each measured as an area.
-  char letter = 'a';
-  for (const std::size_t k : order) {
-    const std::string name = id + letter++;
-    if (outline[k].size() < 3 || std::abs(polygon_area(outline[k])) < kMinOutlinePx2) {
-      out.notes.push_back("piece " + name + " (" + outline_m2(parts.area[k]) + ", " +
-                          attitude(planes[k]) + ") has no outline of its own: left out");
-      --letter;
-      continue;
-    }
-    AreaMeasurement a = measure_piece(view, name, outline[k], planes[k], estimates[k],
-                                      parts.points[k].size(), parts.area[k], measured, where);
-    if (n > 2) {
-      if (auto note = uncovered_note(name, outline[k], seen_at[k])) out.notes.push_back(*note);
-    }
-    wind_toward_camera(a, view);
-    out.pieces.push_back(std::move(a));
-  }
+  // The pieces, each measured as an area, largest first.
+  measure_pieces(view, id, planes, estimates, parts, outline, seen_at, measured, where, out);
   if (out.pieces.size() < 2) {
     const std::string notes = joined(out.notes);
     out.notes.clear();

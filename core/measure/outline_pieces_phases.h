@@ -8,7 +8,8 @@
 //      parts too small or too rough dropped (label_points labels);
 //   5. touching_pieces and fold_outlines: the outline cut along the lines
 //      where neighbouring pieces' planes meet;
-//   6. measure_piece: one piece measured as an area.
+//   6. measure_pieces: each piece measured as an area (measure_piece),
+//      largest first, named id + a, b, ...
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -98,5 +99,16 @@ AreaMeasurement measure_piece(const PhotoView& view, const std::string& name,
                               const geometry::Plane& plane, const PlaneEstimate& estimate,
                               std::size_t vertices, double area, const MeasureSettings& measured,
                               const std::string& where);
+
+// The pieces (largest first, ids `id` + a, b, ...) appended to out, each
+// measured over its outline with its plane; a piece without an outline of
+// its own is left out, and with three pieces or more one whose outline
+// holds too few of its points is said, in out.notes.
+void measure_pieces(const PhotoView& view, const std::string& id,
+                    const std::vector<geometry::Plane>& planes,
+                    const std::vector<PlaneEstimate>& estimates, const Labelled& parts,
+                    const std::vector<std::vector<Eigen::Vector2d>>& outline,
+                    const std::vector<std::vector<Eigen::Vector2d>>& seen_at,
+                    const MeasureSettings& measured, const std::string& where, OutlinePieces& out);
 
 }  // namespace rockface::measure::outline_phases

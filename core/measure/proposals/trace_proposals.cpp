@@ -278,6 +278,93 @@ double proposal_confidence(const Evidence& e, double length_m, const ProposalOpt
   return std::clamp(cues * length_factor, 0.0, 1.0);
 }
 
+MeasuredChains measure_chains(const std::vector<pr::Chain>& chains, const EvidenceMaps& maps,
+                              const MeshPicker& picker, const PhotoView& view,
+                              const WorkingImage& image, const ProposalOptions& options,
+                              Progress& progress, const std::string& where) {
+  const double scale = image.scale;
+  const double min_length_px = options.min_length_m * image.px_per_m;
+  MeasuredChains out;
+  std::vector<TraceProposal>& found = out.found;
+  int& short_chains = out.short_chains;
+  int& unmeasurable = out.unmeasurable;
+  const auto to_photo = [scale](const cv::Point2f& p) {
+    return Eigen::Vector2d(p.x / scale, p.y / scale);
+  };
+  auto on_surface = [&](const cv::Point2f& p) {
+    const Eigen::Vector2d px = to_photo(p);
+    return pixel_in_image(view, px) && picker.pick(ray_through_pixel(view, px, where)).has_value();
+  };
+  auto measure_piece =
+      [&](const std::vector<cv::Point2f>& poly) -> std::optional<TraceMeasurement> {
+    std::vector<Eigen::Vector2d> pixels;
+    for (const auto& p : poly) pixels.push_back(to_photo(p));
+    try {
+      return measure_trace(picker, view, "", pixels, options.measure, where);
+    } catch (const InputError&) {
+      return std::nullopt;  // a vertex off the surface: checked before, so rare
+    }
+  };
+  auto one_plane = [&](const std::vector<cv::Point2f>& poly) {
+    const auto m = measure_piece(poly);
+    return m && m->plane.known;
+  };
+  for (std::size_t ci = 0; ci < chains.size(); ++ci) {
+    if (ci % 64 == 0)
+      progress.step("measuring proposals",
+                    0.65 + 0.3 * static_cast<double>(ci) / static_cast<double>(chains.size()));
+    if (pr::chain_length(chains[ci]) < min_length_px) {
+      ++short_chains;
+      continue;
+    }
+    std::vector<cv::Point2f> poly;
+    cv::approxPolyDP(chains[ci], poly, kSimplifyPx, false);
+    for (const auto& run : surface_runs(poly, on_surface)) {
+      if (run.size() < 2) continue;
+      // Split at sharp turns unless both sides are one plane with relief
+      // (a trace crossing a fold of the face).
+      for (const auto& piece : split_at_turns(run, options.split_turn_deg, one_plane)) {
+        if (pr::chain_length(piece) < min_length_px) {
+          ++short_chains;
+          continue;
+        }
+        auto m = measure_piece(piece);
+        if (!m || m->length < options.min_length_m) {
+          ++(m ? short_chains : unmeasurable);
+          continue;
+        }
+        TraceProposal p;
+        const Evidence e = evidence_along(maps, piece);
+        p.contrast_grey = e.contrast;
+        p.fold_deg = e.fold_deg;
+        p.ridge = e.ridge;
+        p.dark_fraction = e.dark_fraction;
+        p.fold_fraction = e.fold_fraction;
+        p.cue = proposal_cue(e);
+        p.confidence = proposal_confidence(e, m->length, options);
+        p.trace = std::move(*m);
+        found.push_back(std::move(p));
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> left_out_notes(const MeasuredChains& measured,
+                                        const ProposalOptions& options) {
+  std::vector<std::string> notes;
+  const int short_chains = measured.short_chains, unmeasurable = measured.unmeasurable;
+  if (short_chains > 0)
+    notes.push_back(std::to_string(short_chains) + " lines shorter than " +
+                    std::to_string(static_cast<int>(std::lround(options.min_length_m * 100))) +
+                    " cm left out");
+  if (unmeasurable > 0)
+    notes.push_back(std::to_string(unmeasurable) +
+                    " lines left out: no surface of the 3D image under them");
+
+  return notes;
+}
+
 void link_facets(std::vector<TraceProposal>& found, const std::vector<ProposalFacet>& facets,
                  const ProposalOptions& options) {
   for (TraceProposal& p : found) {
@@ -359,75 +446,10 @@ ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const Mes
       candidate_chains(dark, folds, maps.dark_near_fold, options.max_gap_m * work_px_per_m);
 
   progress.step("measuring proposals", 0.65);
-  const double min_length_px = options.min_length_m * work_px_per_m;
-  std::vector<TraceProposal> found;
-  int short_chains = 0, unmeasurable = 0;
-  const auto to_photo = [scale](const cv::Point2f& p) {
-    return Eigen::Vector2d(p.x / scale, p.y / scale);
-  };
-  auto on_surface = [&](const cv::Point2f& p) {
-    const Eigen::Vector2d px = to_photo(p);
-    return pixel_in_image(view, px) && picker.pick(ray_through_pixel(view, px, where)).has_value();
-  };
-  auto measure_piece =
-      [&](const std::vector<cv::Point2f>& poly) -> std::optional<TraceMeasurement> {
-    std::vector<Eigen::Vector2d> pixels;
-    for (const auto& p : poly) pixels.push_back(to_photo(p));
-    try {
-      return measure_trace(picker, view, "", pixels, options.measure, where);
-    } catch (const InputError&) {
-      return std::nullopt;  // a vertex off the surface: checked before, so rare
-    }
-  };
-  auto one_plane = [&](const std::vector<cv::Point2f>& poly) {
-    const auto m = measure_piece(poly);
-    return m && m->plane.known;
-  };
-  for (std::size_t ci = 0; ci < chains.size(); ++ci) {
-    if (ci % 64 == 0)
-      progress.step("measuring proposals",
-                    0.65 + 0.3 * static_cast<double>(ci) / static_cast<double>(chains.size()));
-    if (pr::chain_length(chains[ci]) < min_length_px) {
-      ++short_chains;
-      continue;
-    }
-    std::vector<cv::Point2f> poly;
-    cv::approxPolyDP(chains[ci], poly, kSimplifyPx, false);
-    for (const auto& run : surface_runs(poly, on_surface)) {
-      if (run.size() < 2) continue;
-      // Split at sharp turns unless both sides are one plane with relief
-      // (a trace crossing a fold of the face).
-      for (const auto& piece : split_at_turns(run, options.split_turn_deg, one_plane)) {
-        if (pr::chain_length(piece) < min_length_px) {
-          ++short_chains;
-          continue;
-        }
-        auto m = measure_piece(piece);
-        if (!m || m->length < options.min_length_m) {
-          ++(m ? short_chains : unmeasurable);
-          continue;
-        }
-        TraceProposal p;
-        const Evidence e = evidence_along(maps, piece);
-        p.contrast_grey = e.contrast;
-        p.fold_deg = e.fold_deg;
-        p.ridge = e.ridge;
-        p.dark_fraction = e.dark_fraction;
-        p.fold_fraction = e.fold_fraction;
-        p.cue = proposal_cue(e);
-        p.confidence = proposal_confidence(e, m->length, options);
-        p.trace = std::move(*m);
-        found.push_back(std::move(p));
-      }
-    }
-  }
-  if (short_chains > 0)
-    result.notes.push_back(
-        std::to_string(short_chains) + " lines shorter than " +
-        std::to_string(static_cast<int>(std::lround(options.min_length_m * 100))) + " cm left out");
-  if (unmeasurable > 0)
-    result.notes.push_back(std::to_string(unmeasurable) +
-                           " lines left out: no surface of the 3D image under them");
+  MeasuredChains measured =
+      measure_chains(chains, maps, picker, view, image, options, progress, where);
+  result.notes = left_out_notes(measured, options);
+  std::vector<TraceProposal>& found = measured.found;
 
   progress.step("linking facets", 0.95);
   link_facets(found, facets, options);

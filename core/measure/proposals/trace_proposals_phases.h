@@ -7,7 +7,8 @@
 //   4. evidence_maps: the cues spread so that the other cue's line counts;
 //   5. candidate_chains: dark-line chains and the fold runs away from them;
 //   6. surface_runs, split_at_turns: each chain's measurable pieces;
-//   7. evidence_along, proposal_cue, proposal_confidence: a piece scored;
+//   7. evidence_along, proposal_cue, proposal_confidence: a piece scored
+//      (measure_chains runs 6 and 7 over every chain);
 //   8. link_facets, rank_proposals: facets whose edges they follow, the
 //      weak ones dropped, the rest named by falling confidence.
 #include <functional>
@@ -96,6 +97,22 @@ ProposalCue proposal_cue(const Evidence& e);
 // length it covers; two cues combine as independent witnesses; a short line
 // is weak whatever its cues. In [0, 1].
 double proposal_confidence(const Evidence& e, double length_m, const ProposalOptions& options);
+
+// Every chain long enough measured as traces: simplified, cut into its
+// runs over the surface, split at sharp turns, each piece measured on the
+// mesh and scored on the evidence; the chains and pieces left out counted.
+struct MeasuredChains {
+  std::vector<TraceProposal> found;
+  int short_chains = 0;  // shorter than options.min_length_m
+  int unmeasurable = 0;  // no surface of the 3D image under them
+};
+MeasuredChains measure_chains(const std::vector<proposals::Chain>& chains, const EvidenceMaps& maps,
+                              const MeshPicker& picker, const PhotoView& view,
+                              const WorkingImage& image, const ProposalOptions& options,
+                              Progress& progress, const std::string& where);
+// What measure_chains left out, in words.
+std::vector<std::string> left_out_notes(const MeasuredChains& measured,
+                                        const ProposalOptions& options);
 
 // Each proposal's facet: the one with the largest fraction (at least
 // options.facet_fraction) of its points within options.facet_tolerance_m of
