@@ -57,7 +57,7 @@ std::vector<std::string> names(const phases::LoopPlanes& p) {
   return n;
 }
 
-TEST(TraceBlockPhases, TheLoopOfAPrismHasItsJointsByNameThenItsPatchAndIsConvex) {
+TEST(TraceBlockPhases, TheLoopOfAPrismHasItsJointsByNameThenItsPatchesAndIsConvex) {
   const Map map(block_a());
   ASSERT_FALSE(map.loops.regions().empty());
   const SurfaceRegion& region = map.largest();
@@ -65,10 +65,16 @@ TEST(TraceBlockPhases, TheLoopOfAPrismHasItsJointsByNameThenItsPatchAndIsConvex)
   options.snap_tolerance = kSnap;
   const phases::LoopPlanes planes =
       phases::loop_planes(map.surface, map.net, map.loops, region, options);
-  EXPECT_EQ(names(planes), (std::vector<std::string>{"A-high", "A-low", "A-y4", "A-y8", "S2"}));
+  // The joints by name, the lower face it lies on, and the bench above it:
+  // a neighbour whose plane the block could cut through (the rock behind
+  // the face and the bench is salient, the loop lies below the bench).
+  EXPECT_EQ(names(planes),
+            (std::vector<std::string>{"A-high", "A-low", "A-y4", "A-y8", "S2", "S3"}));
   EXPECT_EQ(planes.n_joints, 4);
-  EXPECT_EQ(planes.planes.back().kind, blocks::PlaneKind::FreeFace);
-  EXPECT_EQ(planes.covered, (std::vector<int>{planes.planes.back().patch}));
+  EXPECT_EQ(planes.planes[4].kind, blocks::PlaneKind::FreeFace);
+  EXPECT_EQ(planes.covered, (std::vector<int>{planes.planes[4].patch}));
+  EXPECT_EQ(phases::neighbouring_patches(map.surface, map.loops, map.net, region, kSnap),
+            (std::vector<int>{planes.planes[5].patch}));
   EXPECT_TRUE(planes.notes.empty());
 
   const phases::LoopShape shape =
@@ -77,10 +83,12 @@ TEST(TraceBlockPhases, TheLoopOfAPrismHasItsJointsByNameThenItsPatchAndIsConvex)
   EXPECT_TRUE(shape.rock_convex);
   EXPECT_TRUE(shape.one_side);
   ASSERT_TRUE(shape.convex());
-  // The prism: on the loop's side of each joint, on the rock side of S2.
+  // The prism: on the loop's side of each joint, on the rock side of S2
+  // and of S3.
   const phases::Piece piece = phases::convex_piece(map.surface, planes, shape);
-  ASSERT_EQ(piece.sides.size(), 5u);
-  EXPECT_EQ(piece.sides.back(), map.surface.patches()[planes.planes.back().patch].rock_side);
+  ASSERT_EQ(piece.sides.size(), 6u);
+  for (int k = 4; k < 6; ++k)
+    EXPECT_EQ(piece.sides[k], map.surface.patches()[planes.planes[k].patch].rock_side);
   EXPECT_TRUE(phases::island_joints(map.net, region, planes).planes.empty());
   EXPECT_EQ(phases::block_id(map.net, region).rfind("loop along A-", 0), 0u);
 }
