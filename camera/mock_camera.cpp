@@ -12,6 +12,7 @@
 
 #include "camera/camera_error.h"
 #include "camera/synthetic_renderer.h"
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 
 namespace rockface::camera {
@@ -183,14 +184,12 @@ CapturedFile MockCamera::store(const std::string& name, std::vector<uint8_t> dat
   if (!spool_dir_.empty()) {
     fs::create_directories(spool_dir_);
     const fs::path target = fs::path(spool_dir_) / name;
-    const fs::path part = target.string() + ".part";
-    {
-      std::ofstream out(part, std::ios::binary);
-      out.write(reinterpret_cast<const char*>(data.data()),
-                static_cast<std::streamsize>(data.size()));
-      if (!out) throw CameraError(Kind::other, "Saving " + name + " to " + spool_dir_ + " failed");
+    try {
+      write_bytes_atomically(target, data.data(), data.size());
+    } catch (const Error& e) {
+      throw CameraError(Kind::other,
+                        "Saving " + name + " to " + spool_dir_ + " failed (" + e.what() + ")");
     }
-    fs::rename(part, target);
     f.saved_path = target.string();
   }
   f.data = std::move(data);
