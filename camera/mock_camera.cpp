@@ -14,6 +14,7 @@
 #include "camera/synthetic_renderer.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 
 namespace rockface::camera {
 
@@ -64,12 +65,6 @@ std::optional<double> shutter_seconds(const std::string& text) {
   return std::nullopt;
 }
 
-std::string format_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 }  // namespace
 
 std::unique_ptr<MockCamera> MockCamera::replay(const std::string& folder,
@@ -94,7 +89,7 @@ std::unique_ptr<MockCamera> MockCamera::replay(const std::string& folder,
   cam->settings_ = default_settings();
   // Show the settings the first shot was taken with.
   const ExifInfo first = read_exif_file(cam->shots_.front().image);
-  if (first.f_number) cam->find("f-number").value = format_number(*first.f_number);
+  if (first.f_number) cam->find("f-number").value = format_significant(*first.f_number, 6);
   if (first.iso) cam->find("iso").value = std::to_string(*first.iso);
   if (first.flash_fired) cam->find("flashmode").value = *first.flash_fired ? "On" : "Off";
   return cam;
