@@ -13,7 +13,11 @@
 
 namespace rockface::app {
 
+namespace {
+
 namespace fs = std::filesystem;
+
+}  // namespace
 
 RenderedPair render_scene_files(const std::string& scene_file, const std::string& folder) {
   const storage::Scene scene = storage::load_scene(scene_file);
