@@ -341,4 +341,23 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
   return out;
 }
 
+DeviationOptions deviation_options(Preset preset) {
+  DeviationOptions o;
+  switch (preset) {
+    case Preset::fast:
+      o.section_spacing_m = 0.5;
+      o.ray_spacing_m = 0.1;
+      break;
+    case Preset::standard:
+      o.section_spacing_m = 0.25;
+      o.ray_spacing_m = 0.05;
+      break;
+    case Preset::precise:
+      o.section_spacing_m = 0.1;
+      o.ray_spacing_m = 0.02;
+      break;
+  }
+  return o;
+}
+
 }  // namespace rockface::tunnel

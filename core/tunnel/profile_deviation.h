@@ -32,6 +32,7 @@
 
 #include <Eigen/Core>
 
+#include "core/common/preset.h"
 #include "core/tunnel/alignment.h"
 #include "core/tunnel/design_profile.h"
 #include "core/tunnel/mesh_raycast.h"
@@ -57,6 +58,12 @@ struct DeviationOptions {
   // a visit whose sections see nothing of walls / roof is "no walls in view".
   double min_seen_fraction = 0.5;
 };
+
+// The options of a preset (the knobs beside their component, issue 37):
+// section spacing and ray spacing, fast 0.5 m / 0.1 m, standard 0.25 m /
+// 0.05 m, precise 0.1 m / 0.02 m (their cost and accuracy are in
+// docs/accuracy-cost.md, "The tunnel drive"); the rest as above.
+DeviationOptions deviation_options(Preset preset);
 
 // The visit's surface: datum-relative vertices (the alignment's local frame)
 // and triangles. Optional masks of what is not rock: one flag per vertex (a

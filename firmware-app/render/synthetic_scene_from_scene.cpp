@@ -50,9 +50,9 @@ SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& s) {
   if (tunnel) {
     // The round as excavated replaces the scene's patches: walls, roof,
     // invert and face of the design profile with the known breaks.
-    out.patches = rendered_tunnel_patches(rendered_tunnel_spec(*s.tunnel->render),
-                                          s.tunnel->record.alignment(in.origin),
-                                          s.tunnel->record.profile, s.source + ": tunnel.render");
+    out.patches = camera::rendered_tunnel_patches(
+        rendered_tunnel_spec(*s.tunnel->render), s.tunnel->record.alignment(in.origin),
+        s.tunnel->record.profile, s.source + ": tunnel.render");
   } else
     for (const auto& p : s.patches) {
       camera::SyntheticPatch patch{p.id, {}};

@@ -17,25 +17,6 @@ constexpr double kFaceClearM = 0.15;
 
 }  // namespace
 
-tunnel::DeviationOptions deviation_options(Preset preset) {
-  tunnel::DeviationOptions o;
-  switch (preset) {
-    case Preset::fast:
-      o.section_spacing_m = 0.5;
-      o.ray_spacing_m = 0.1;
-      break;
-    case Preset::standard:
-      o.section_spacing_m = 0.25;
-      o.ray_spacing_m = 0.05;
-      break;
-    case Preset::precise:
-      o.section_spacing_m = 0.1;
-      o.ray_spacing_m = 0.02;
-      break;
-  }
-  return o;
-}
-
 VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit_id,
                            Preset preset) {
   VisitProfile out;
@@ -79,7 +60,7 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
     out.round_from = start;
     out.round_from_source = "start of the 3D image";
   }
-  tunnel::DeviationOptions options = deviation_options(preset);
+  tunnel::DeviationOptions options = tunnel::deviation_options(preset);
   if (sense * (out.round_to - out.round_from) < options.section_spacing_m) {
     // The 3D image holds the face and nothing behind it: no wall, roof or
     // invert to hold against the design. Said so, never zero over- and

@@ -26,11 +26,6 @@ struct VisitProfile {
   std::size_t pole_vertices = 0;  // surface vertices not counted: the range pole
 };
 
-// Section spacing and ray spacing per preset: fast 0.5 m / 0.1 m, standard
-// 0.25 m / 0.05 m, precise 0.1 m / 0.02 m (their cost and accuracy are in
-// docs/accuracy-cost.md, "The tunnel drive").
-tunnel::DeviationOptions deviation_options(Preset preset);
-
 // Throws InputError naming the project or visit when the project has no
 // tunnel, the visit is not placed in it, or it has no 3D image.
 VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit_id,

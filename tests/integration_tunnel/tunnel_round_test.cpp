@@ -106,7 +106,7 @@ TEST_F(TunnelRound, OverAndUnderbreakMatchTheRenderedTruthWhereSeen) {
     for (int k = 1; k + 1 < static_cast<int>(patch.polygon.size()); ++k)
       triangles.push_back({base, base + k, base + k + 1});  // fans: quarters are star-shaped
   }
-  tunnel::DeviationOptions options = deviation_options(Preset::standard);
+  tunnel::DeviationOptions options = tunnel::deviation_options(Preset::standard);
   options.chainage_from = measured.round_from;
   options.chainage_to = measured.round_to;
   options.underbreak_tolerance_m = measured.tunnel.underbreak_tolerance_m;

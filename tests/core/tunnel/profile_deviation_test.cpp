@@ -382,3 +382,31 @@ TEST(ProfileDeviation, BadInputIsRefusedByName) {
 
 }  // namespace
 }  // namespace rockface::tunnel
+
+namespace rockface::tunnel {
+namespace {
+
+// The preset's knobs sit beside the component (issue 37): a finer preset
+// cuts the round into more sections and casts more rays, and keeps the
+// other options (tolerances, caps) of a default DeviationOptions.
+TEST(DeviationOptionsOfPreset, FinerPresetsSampleMoreDenselyAndKeepTheRest) {
+  const DeviationOptions fast = deviation_options(Preset::fast);
+  const DeviationOptions standard = deviation_options(Preset::standard);
+  const DeviationOptions precise = deviation_options(Preset::precise);
+  EXPECT_GT(fast.section_spacing_m, standard.section_spacing_m);
+  EXPECT_GT(standard.section_spacing_m, precise.section_spacing_m);
+  EXPECT_GT(fast.ray_spacing_m, standard.ray_spacing_m);
+  EXPECT_GT(standard.ray_spacing_m, precise.ray_spacing_m);
+  const DeviationOptions plain;
+  for (const DeviationOptions& o : {fast, standard, precise}) {
+    EXPECT_EQ(o.underbreak_tolerance_m, plain.underbreak_tolerance_m);
+    EXPECT_EQ(o.max_overbreak_m, plain.max_overbreak_m);
+    EXPECT_EQ(o.min_seen_fraction, plain.min_seen_fraction);
+  }
+  // The standard preset is the documented default of the struct itself.
+  EXPECT_EQ(standard.section_spacing_m, plain.section_spacing_m);
+  EXPECT_EQ(standard.ray_spacing_m, plain.ray_spacing_m);
+}
+
+}  // namespace
+}  // namespace rockface::tunnel

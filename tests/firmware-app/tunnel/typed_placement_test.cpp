@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include "camera/synthetic_tunnel.h"
 #include "core/common/error.h"
-#include "firmware-app/tunnel/rendered_tunnel.h"
 #include "firmware-app/tunnel/visit_placement.h"
 #include "storage/project_store.h"
 
@@ -46,11 +46,12 @@ class TypedPlacement : public ::testing::Test {
     // and 1.5 m below the axis.
     const tunnel::Alignment alignment = tunnel.alignment(info.datum);
     pole_ = alignment.frame_at(12).to_local(1.0, -1.5);
-    RenderedTunnelSpec spec;
+    camera::RenderedTunnelSpec spec;
     spec.chainage_from = 6;
     spec.face_chainage = 14;
     storage::Model model;
-    for (const auto& patch : rendered_tunnel_patches(spec, alignment, tunnel.profile, "test")) {
+    for (const auto& patch :
+         camera::rendered_tunnel_patches(spec, alignment, tunnel.profile, "test")) {
       const int base = static_cast<int>(model.mesh.vertices.size());
       for (const auto& v : patch.polygon)
         model.mesh.vertices.push_back(kind == "ground_control" ? v : Vector3d(v - pole_));

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "camera/synthetic_tunnel.h"
 #include "core/common/error.h"
-#include "firmware-app/tunnel/rendered_tunnel.h"
 
 namespace rockface::app {
 namespace {
@@ -14,12 +14,12 @@ using Eigen::Vector3d;
 // bulging 0.4 m) as a visit's surface, registered as `kind`.
 VisitSurface round_surface(const tunnel::Alignment& alignment, const tunnel::DesignProfile& profile,
                            const std::string& kind) {
-  RenderedTunnelSpec spec;
+  camera::RenderedTunnelSpec spec;
   spec.chainage_from = 6;
   spec.face_chainage = 14;
   spec.face_relief_m = 0.4;
   VisitSurface s;
-  for (const auto& patch : rendered_tunnel_patches(spec, alignment, profile, "test")) {
+  for (const auto& patch : camera::rendered_tunnel_patches(spec, alignment, profile, "test")) {
     const int base = static_cast<int>(s.vertices.size());
     s.vertices.insert(s.vertices.end(), patch.polygon.begin(), patch.polygon.end());
     for (int k = 1; k + 1 < static_cast<int>(patch.polygon.size()); ++k)

@@ -1,4 +1,4 @@
-#include "firmware-app/tunnel/rendered_tunnel.h"
+#include "camera/synthetic_tunnel.h"
 
 #include <cmath>
 #include <vector>
@@ -8,7 +8,7 @@
 
 #include "core/common/error.h"
 
-namespace rockface::app {
+namespace rockface::camera {
 namespace {
 
 using Eigen::Vector3d;
@@ -117,4 +117,4 @@ TEST(RenderedTunnel, ARangeOffTheAlignmentIsRefusedByName) {
 }
 
 }  // namespace
-}  // namespace rockface::app
+}  // namespace rockface::camera
