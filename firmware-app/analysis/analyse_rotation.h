@@ -2,9 +2,9 @@
 // Rotational kinematics of one block for the report (issue 4): corner and
 // edge rotatability about the block's static points and joint / free-face
 // edges, and the remote-axis search, as the scene's analysis options ask.
+#include "core/analysis/analysis_input.h"
+#include "core/analysis/report.h"
 #include "core/blocks/polyhedron.h"
-#include "storage/report.h"
-#include "storage/scene.h"
 
 namespace rockface::app {
 
@@ -19,7 +19,7 @@ namespace rockface::app {
 // out.notes when the only axis found is so far away that the motion is
 // essentially a translation. Throws rockface::InputError for a remote-axis
 // start count below 1 (naming analysis.remote_axis.starts).
-void analyse_block_rotation(const blocks::Polyhedron& block, const storage::SceneAnalysis& analysis,
-                            storage::ReportBlock& out);
+void analyse_block_rotation(const blocks::Polyhedron& block,
+                            const analysis::SceneAnalysis& analysis, analysis::ReportBlock& out);
 
 }  // namespace rockface::app

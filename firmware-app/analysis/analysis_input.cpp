@@ -8,7 +8,7 @@
 
 namespace rockface::app {
 
-const storage::SceneJoint* AnalysisInput::joint(const std::string& id) const {
+const analysis::SceneJoint* AnalysisInput::joint(const std::string& id) const {
   const auto j =
       std::find_if(joints.begin(), joints.end(), [&](const auto& p) { return p.id == id; });
   return j == joints.end() ? nullptr : &*j;
@@ -24,7 +24,7 @@ int AnalysisInput::plane_index(const std::string& id) const {
   return -1;
 }
 
-storage::SceneFloor tunnel_invert_floor(const storage::Scene& scene) {
+analysis::SceneFloor tunnel_invert_floor(const storage::Scene& scene) {
   const storage::SceneTunnel& t = *scene.tunnel;
   const Eigen::Vector3d datum = scene.has_datum ? scene.datum : Eigen::Vector3d::Zero();
   const tunnel::Alignment alignment = t.record.alignment(datum);
@@ -42,7 +42,7 @@ storage::SceneFloor tunnel_invert_floor(const storage::Scene& scene) {
     if (p.y() < lowest.y()) lowest = p;
   }
   const tunnel::TunnelFrame frame = alignment.frame_at(chainage);
-  storage::SceneFloor floor;
+  analysis::SceneFloor floor;
   floor.point = frame.to_local(lowest.x(), lowest.y()) + datum;
   const geometry::PlaneOrientation o = geometry::plane_orientation(frame.up);
   floor.dip = rad_to_deg(o.dip);

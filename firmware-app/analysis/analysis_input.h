@@ -22,18 +22,18 @@ struct AnalysisInput {
   bool has_datum = false;
   double density = 2700;  // kg/m^3
   Eigen::Vector3d gravity{0, 0, -9.81};
-  std::vector<storage::SceneJoint> joints;
-  std::vector<storage::SceneFreeFace> free_faces;
-  std::vector<storage::SceneBlock> blocks;
-  std::vector<storage::ScenePatch> patches;
-  std::vector<storage::SceneTrace> traces;
-  storage::SceneAnalysis analysis;
-  storage::SceneEffects effects;
+  std::vector<analysis::SceneJoint> joints;
+  std::vector<analysis::SceneFreeFace> free_faces;
+  std::vector<analysis::SceneBlock> blocks;
+  std::vector<analysis::ScenePatch> patches;
+  std::vector<analysis::SceneTrace> traces;
+  analysis::SceneAnalysis analysis;
+  analysis::SceneEffects effects;
   // The rock-mass form the scene brings (its `rockmass` section), for the
   // report's rock-mass section.
   std::optional<rockmass::ClassificationForm> rockmass_form;
 
-  const storage::SceneJoint* joint(const std::string& id) const;
+  const analysis::SceneJoint* joint(const std::string& id) const;
   // Index of a plane id among joints followed by free faces, -1 if unknown.
   int plane_index(const std::string& id) const;
 };
@@ -44,6 +44,6 @@ AnalysisInput analysis_input(const storage::Scene& scene);
 // The invert of the scene's tunnel at its face as the floor a falling block
 // lands on (analysis.dynamics without a floor): the design profile's lowest
 // point, in the plane of the cross-section's right and the drive.
-storage::SceneFloor tunnel_invert_floor(const storage::Scene& scene);
+analysis::SceneFloor tunnel_invert_floor(const storage::Scene& scene);
 
 }  // namespace rockface::app

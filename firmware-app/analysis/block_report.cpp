@@ -5,7 +5,7 @@
 namespace rockface::app {
 
 void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAnalysis& a,
-                       const storage::SceneAnalysis& options, storage::ReportBlock& rb) {
+                       const analysis::SceneAnalysis& options, analysis::ReportBlock& rb) {
   // Vertices in the polyhedron's order: rotation reports index them.
   for (int v = 0; v < static_cast<int>(poly.vertices().size()); ++v)
     rb.vertices.push_back(poly.absolute_vertex(v));
@@ -19,7 +19,7 @@ void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAn
   rb.resultant_force = a.force;
   rb.resultant_moment = a.moment;
   if (a.mode) {
-    storage::ReportMode m;
+    analysis::ReportMode m;
     m.type = kinematics::mode_name(a.mode->type);
     for (int p : a.mode->planes) m.planes.push_back(poly.planes()[p].name);
     if (a.mode->type != kinematics::ModeType::None) m.direction = a.mode->direction;

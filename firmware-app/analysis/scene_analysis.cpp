@@ -17,8 +17,8 @@ double timed_ms(F&& f) {
 
 }  // namespace
 
-storage::Report analyse(const AnalysisInput& scene, Progress& progress) {
-  storage::Report report;
+analysis::Report analyse(const AnalysisInput& scene, Progress& progress) {
+  analysis::Report report;
   report.effects_simulated = scene.effects.listed();
   // Which analyses run: geometry always; limit equilibrium unless the
   // scene says "none"; the equilibrium path only when asked for.

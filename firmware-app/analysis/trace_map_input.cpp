@@ -25,7 +25,7 @@ TraceMapInput trace_map_input(const AnalysisInput& input) {
     faces::TraceInput in;
     in.id = t.id;
     if (t.joint) {
-      const storage::SceneJoint* j = input.joint(*t.joint);
+      const analysis::SceneJoint* j = input.joint(*t.joint);
       faces::TraceJoint tj;
       tj.index = input.plane_index(j->id);
       tj.id = j->id;

@@ -313,7 +313,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   if (scene->rockmass) store.save_rockmass_form(out.visit_id, *scene->rockmass);
 
   progress.step("blocks", 0.8);
-  storage::Report report = analyse(analysed, progress);
+  analysis::Report report = analyse(analysed, progress);
   // What the synthetic camera simulated, named as the analysis's effects are.
   for (const auto& e : synthetic->scene.effects.simulated())
     report.effects_simulated.push_back("imaging." + e);

@@ -256,7 +256,7 @@ std::vector<storage::Measurement> outline_records(const ui::MapEdit& edit,
   // visit exports leaves it at its default).
   measure::OutlinePieces split =
       measure::split_outline(*edit.picker, *edit.view, label, edit.outline, settings, options,
-                             storage::SceneAnalysis{}.snap_tolerance, where);
+                             analysis::SceneAnalysis{}.snap_tolerance, where);
   std::string& said = split.pieces.front().plane.problem;
   for (const auto& note : split.notes) said += (said.empty() ? "" : "; ") + note;
   measure::MeasuredPicks picks;

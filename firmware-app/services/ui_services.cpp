@@ -62,7 +62,7 @@ storage::RecordId StoreAnalysisRunner::analyse(const fs::path& project, storage:
   const storage::Scene scene =
       storage::parse_scene(storage::make_scene_json(source).dump(),
                            project.string() + " visit " + std::to_string(visit_id));
-  const storage::Report report = app::analyse(analysis_input(scene), progress);
+  const analysis::Report report = app::analyse(analysis_input(scene), progress);
   std::optional<storage::RecordId> model_id;
   const auto models = store.list_models();
   if (!models.empty()) model_id = models.back().id;
