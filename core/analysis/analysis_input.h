@@ -1,8 +1,11 @@
 #pragma once
-// The analysis input as plain values (no file formats): the joints, free
-// faces, explicit blocks, surface patches and traces, the analysis options
-// and the effects. storage/scene.h reads them from a scene file (SCENE.md);
-// the replay and the tablet fill them from measured planes and traces.
+// What the block analysis takes, as values (no file formats): the planes
+// (joints, then free faces: a block code has one digit per plane in this
+// order), the explicit blocks, the free surface and the traces on it, the
+// rock, the effects and the analysis options. storage/scene.h reads the
+// parts from a scene file (SCENE.md) and firmware-app/analysis/scene_input.h
+// makes the whole from it once, at the boundary; the replay fills it with
+// the measured joint planes and traces.
 //
 // Angles stay in degrees here, as in the scene file; points stay absolute.
 // The analysis converts to radians and datum-relative coordinates.
@@ -14,6 +17,9 @@
 #include <Eigen/Core>
 
 #include "core/common/preset.h"
+#include "core/rockmass/classification_form.h"
+#include "core/tunnel/alignment.h"
+#include "core/tunnel/design_profile.h"
 
 namespace rockface::analysis {
 
@@ -137,5 +143,35 @@ struct SceneEffects {
   // Names in the fixed order of SCENE.md, "gravity" first: what the scene asks for.
   std::vector<std::string> listed() const;
 };
+
+struct AnalysisInput {
+  std::string source;  // names the input in messages (a scene file, a project's visit)
+  Eigen::Vector3d datum = Eigen::Vector3d::Zero();
+  bool has_datum = false;
+  double density = 2700;  // kg/m^3
+  Eigen::Vector3d gravity{0, 0, -9.81};
+  std::vector<SceneJoint> joints;
+  std::vector<SceneFreeFace> free_faces;
+  std::vector<SceneBlock> blocks;
+  std::vector<ScenePatch> patches;
+  std::vector<SceneTrace> traces;
+  SceneAnalysis analysis;
+  SceneEffects effects;
+  // The rock-mass form the scene brings (its `rockmass` section), for the
+  // report's rock-mass section.
+  std::optional<rockmass::ClassificationForm> rockmass_form;
+
+  const SceneJoint* joint(const std::string& id) const;
+  // Index of a plane id among joints followed by free faces, -1 if unknown.
+  int plane_index(const std::string& id) const;
+};
+
+// The invert of a tunnel at the face's chainage as the floor a falling block
+// lands on (analysis.dynamics without a floor): the design profile's lowest
+// point, in the plane of the cross-section's right and the drive. `alignment`
+// is built with `datum`; the floor's point is absolute.
+SceneFloor tunnel_invert_floor(const tunnel::Alignment& alignment,
+                               const tunnel::DesignProfile& profile, double chainage,
+                               const Eigen::Vector3d& datum);
 
 }  // namespace rockface::analysis

@@ -2,8 +2,9 @@
 #include <iostream>
 #include <memory>
 
+#include "core/analysis/scene_analysis.h"
 #include "firmware-app/analysis/report_files.h"
-#include "firmware-app/analysis/scene_analysis.h"
+#include "firmware-app/analysis/scene_input.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "storage/report.h"
 #include "storage/scene.h"
@@ -27,7 +28,7 @@ VerbRun setup_analyse(CLI::App& sub) {
   return [opts] {
     const storage::Scene scene = storage::load_scene(opts->scene);
     NoProgress progress;
-    analysis::Report report = analyse(analysis_input(scene), progress);
+    analysis::Report report = analysis::analyse(analysis_input(scene), progress);
     // The path of each block's equilibrium-path analysis as a PNG beside the report.
     if (!opts->out.empty()) write_report_files(report, opts->out);
     if (opts->summary) {

@@ -1,4 +1,4 @@
-#include "firmware-app/analysis/analyse_rock_mass.h"
+#include "core/analysis/analyse_rock_mass.h"
 
 #include <map>
 
@@ -7,9 +7,9 @@
 #include "core/measure/joint_sets.h"
 #include "core/rockmass/rock_mass_figures.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
-void analyse_rock_mass(const AnalysisInput& scene, analysis::Report& report) {
+void analyse_rock_mass(const AnalysisInput& scene, Report& report) {
   rockmass::RockMassInput in;
   // The sets: the joints' planes clustered (core/measure, automatic count).
   std::map<std::string, std::string> set_of_joint;
@@ -45,4 +45,4 @@ void analyse_rock_mass(const AnalysisInput& scene, analysis::Report& report) {
   }
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

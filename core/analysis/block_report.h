@@ -7,9 +7,9 @@
 #include "core/blocks/polyhedron.h"
 #include "core/kinematics/block_analysis.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAnalysis& analysis,
-                       const analysis::SceneAnalysis& options, analysis::ReportBlock& rb);
+                       const SceneAnalysis& options, ReportBlock& rb);
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis
