@@ -248,7 +248,7 @@ VerdictTimes verdict_stages(const fs::path& project, const std::string& preset) 
   rs::ProjectStore store = rs::ProjectStore::open(project, open);
   const rs::Scene scene =
       rs::parse_scene(rs::make_scene_json(rs::load_scene_source(store)).dump(), project.string());
-  // The trace map's input as the analysis makes it (firmware-app/analysis).
+  // The trace map's input as the analysis makes it (core/analysis).
   const rockface::analysis::TraceMapInput map =
       rockface::analysis::trace_map_input(rockface::app::analysis_input(scene));
 
