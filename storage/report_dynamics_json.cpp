@@ -29,13 +29,7 @@ Eigen::Vector3d vec3(const json& j) {
 
 }  // namespace
 
-std::string event_text(const ReportMotionEvent& e) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, " at %.2f s", e.time_s);
-  return e.what + buf;
-}
-
-ordered dynamics_to_json(const ReportDynamics& d) {
+ordered dynamics_to_json(const analysis::ReportDynamics& d) {
   ordered j;
   j["trigger"] = d.trigger;
   j["outcome"] = d.outcome;
@@ -73,7 +67,7 @@ ordered dynamics_to_json(const ReportDynamics& d) {
   }
   j["path"] = path;
   if (d.landing) {
-    const ReportLanding& l = *d.landing;
+    const analysis::ReportLanding& l = *d.landing;
     ordered o;
     o["time_s"] = tidy_dynamics(l.time_s);
     o["point"] = vec_dynamics(l.point);
@@ -111,12 +105,12 @@ ordered dynamics_to_json(const ReportDynamics& d) {
   return j;
 }
 
-std::optional<ReportDynamics> dynamics_from_block_json(const std::string& block_json) {
+std::optional<analysis::ReportDynamics> dynamics_from_block_json(const std::string& block_json) {
   const json b = json::parse(block_json, nullptr, false);
   if (b.is_discarded() || !b.is_object() || !b.contains("dynamics") || !b["dynamics"].is_object())
     return std::nullopt;
   const json& j = b["dynamics"];
-  ReportDynamics d;
+  analysis::ReportDynamics d;
   try {
     d.trigger = j.value("trigger", "");
     d.outcome = j.value("outcome", "");
@@ -125,7 +119,7 @@ std::optional<ReportDynamics> dynamics_from_block_json(const std::string& block_
     for (auto it = friction.begin(); it != friction.end(); ++it)
       d.friction_deg[it.key()] = it.value().get<double>();
     for (const json& e : j.value("events", json::array())) {
-      ReportMotionEvent ev;
+      analysis::ReportMotionEvent ev;
       ev.time_s = e.value("time_s", 0.0);
       ev.kind = e.value("kind", "");
       ev.what = e.value("event", "");
@@ -134,7 +128,7 @@ std::optional<ReportDynamics> dynamics_from_block_json(const std::string& block_
       d.events.push_back(ev);
     }
     for (const json& s : j.value("path", json::array())) {
-      ReportMotionSample m;
+      analysis::ReportMotionSample m;
       m.time_s = s.value("t", 0.0);
       m.position = vec3(s["position"]);
       const json& q = s["orientation"];
@@ -152,7 +146,7 @@ std::optional<ReportDynamics> dynamics_from_block_json(const std::string& block_
     }
     if (j.contains("landing")) {
       const json& o = j["landing"];
-      ReportLanding l;
+      analysis::ReportLanding l;
       l.time_s = o.value("time_s", 0.0);
       l.point = vec3(o["point"]);
       l.centroid = vec3(o["centroid"]);

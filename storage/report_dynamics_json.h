@@ -7,15 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "storage/report.h"
+#include "core/analysis/report.h"
 
 namespace rockface::storage {
 
-nlohmann::ordered_json dynamics_to_json(const ReportDynamics& d);
+nlohmann::ordered_json dynamics_to_json(const analysis::ReportDynamics& d);
 // The `dynamics` of a block's report JSON object; none when it has none or
 // the text is not a report block.
-std::optional<ReportDynamics> dynamics_from_block_json(const std::string& block_json);
-// "leaves J1 at 0.34 s"
-std::string event_text(const ReportMotionEvent& e);
+std::optional<analysis::ReportDynamics> dynamics_from_block_json(const std::string& block_json);
 
 }  // namespace rockface::storage

@@ -15,6 +15,7 @@
 #include "storage/scene.h"
 #include "storage/scene_lighting_json.h"
 #include "storage/scene_tunnel.h"
+#include "storage/scene_wedges.h"
 
 namespace rockface::storage {
 
@@ -29,15 +30,15 @@ void read_orientation(const Reader& r, const json& o, const std::string& path, d
   if (dipdir == 360) dipdir = 0;  // 360 and 0 are one direction
 }
 
-std::vector<SceneJoint> read_joints(const Reader& r, const json& doc) {
-  std::vector<SceneJoint> joints;
+std::vector<analysis::SceneJoint> read_joints(const Reader& r, const json& doc) {
+  std::vector<analysis::SceneJoint> joints;
   const json* arr = r.optional(doc, "", "joints");
   if (!arr) return joints;
   r.array(*arr, "joints");
   for (size_t i = 0; i < arr->size(); ++i) {
     const json& j = (*arr)[i];
     const std::string path = Reader::index("joints", i);
-    SceneJoint joint;
+    analysis::SceneJoint joint;
     joint.id = r.id(r.require(j, path, "id"), path + ".id");
     read_orientation(r, j, path, joint.dip, joint.dipdir);
     if (auto* p = r.optional(j, path, "point")) joint.point = r.vec3(*p, path + ".point");
@@ -50,15 +51,15 @@ std::vector<SceneJoint> read_joints(const Reader& r, const json& doc) {
   return joints;
 }
 
-std::vector<SceneFreeFace> read_free_faces(const Reader& r, const json& doc) {
-  std::vector<SceneFreeFace> faces;
+std::vector<analysis::SceneFreeFace> read_free_faces(const Reader& r, const json& doc) {
+  std::vector<analysis::SceneFreeFace> faces;
   const json* arr = r.optional(doc, "", "free_faces");
   if (!arr) return faces;
   r.array(*arr, "free_faces");
   for (size_t i = 0; i < arr->size(); ++i) {
     const json& f = (*arr)[i];
     const std::string path = Reader::index("free_faces", i);
-    SceneFreeFace face;
+    analysis::SceneFreeFace face;
     face.id = r.id(r.require(f, path, "id"), path + ".id");
     read_orientation(r, f, path, face.dip, face.dipdir);
     if (auto* p = r.optional(f, path, "point")) face.point = r.vec3(*p, path + ".point");
@@ -87,15 +88,15 @@ int halfspace_code(const Reader& r, const json& v, const std::string& path) {
   r.fail(path, v.dump() + " is neither \"upper\" nor \"lower\"");
 }
 
-std::vector<SceneBlock> read_blocks(const Reader& r, const json& doc) {
-  std::vector<SceneBlock> blocks;
+std::vector<analysis::SceneBlock> read_blocks(const Reader& r, const json& doc) {
+  std::vector<analysis::SceneBlock> blocks;
   const json* arr = r.optional(doc, "", "blocks");
   if (!arr) return blocks;
   r.array(*arr, "blocks");
   for (size_t i = 0; i < arr->size(); ++i) {
     const json& b = (*arr)[i];
     const std::string path = Reader::index("blocks", i);
-    SceneBlock block;
+    analysis::SceneBlock block;
     block.id = r.id(r.require(b, path, "id"), path + ".id");
     const json* hs = r.optional(b, path, "halfspaces");
     const json* vs = r.optional(b, path, "vertices");
@@ -114,7 +115,7 @@ std::vector<SceneBlock> read_blocks(const Reader& r, const json& doc) {
       const json& fs = r.array(r.require(b, path, "faces"), path + ".faces");
       for (size_t k = 0; k < fs.size(); ++k) {
         const std::string fpath = Reader::index(path + ".faces", k);
-        SceneBlockFace face;
+        analysis::SceneBlockFace face;
         face.plane = r.id(r.require(fs[k], fpath, "plane"), fpath + ".plane");
         const json& loop = r.array(r.require(fs[k], fpath, "loop"), fpath + ".loop");
         if (loop.size() < 3) r.fail(fpath + ".loop", "needs at least 3 vertices");
@@ -142,7 +143,7 @@ std::vector<Eigen::Vector3d> read_points(const Reader& r, const json& v, const s
 }
 
 // analysis.dynamics: every field checked, unknown ones refused by name.
-SceneDynamics read_dynamics(const Reader& r, const json& v) {
+analysis::SceneDynamics read_dynamics(const Reader& r, const json& v) {
   const std::string p = "analysis.dynamics";
   if (!v.is_object()) r.fail(p, "must be an object");
   static const std::set<std::string> known = {"duration_s", "sample_s", "floor",
@@ -151,7 +152,7 @@ SceneDynamics read_dynamics(const Reader& r, const json& v) {
     if (!known.count(it.key()))
       r.fail(p + "." + it.key(),
              "unknown field (duration_s, sample_s, floor, abs_tol, rel_tol, max_step_s)");
-  SceneDynamics d;
+  analysis::SceneDynamics d;
   if (auto* x = r.optional(v, p, "duration_s"))
     d.duration_s = r.number_in(*x, p + ".duration_s", 1e-3, 600);
   if (auto* x = r.optional(v, p, "sample_s")) d.sample_s = r.positive(*x, p + ".sample_s");
@@ -170,7 +171,7 @@ SceneDynamics read_dynamics(const Reader& r, const json& v) {
     for (auto it = f->begin(); it != f->end(); ++it)
       if (!floor_keys.count(it.key()))
         r.fail(fp + "." + it.key(), "unknown field (elevation, or point with dip and dipdir)");
-    SceneFloor floor;
+    analysis::SceneFloor floor;
     const json* elevation = r.optional(*f, fp, "elevation");
     const json* point = r.optional(*f, fp, "point");
     if ((elevation != nullptr) == (point != nullptr))
@@ -193,8 +194,8 @@ SceneDynamics read_dynamics(const Reader& r, const json& v) {
   return d;
 }
 
-SceneAnalysis read_analysis(const Reader& r, const json& doc) {
-  SceneAnalysis a;
+analysis::SceneAnalysis read_analysis(const Reader& r, const json& doc) {
+  analysis::SceneAnalysis a;
   const json* an = r.optional(doc, "", "analysis");
   if (!an) return a;
   const std::string p = "analysis";
@@ -203,7 +204,7 @@ SceneAnalysis read_analysis(const Reader& r, const json& doc) {
   if (auto* v = r.optional(*an, p, "rotation")) a.rotation = r.boolean(*v, p + ".rotation");
   // remote_axis: an object, or true for the defaults; false or absent: off.
   if (auto* v = r.optional(*an, p, "remote_axis"); v && !(v->is_boolean() && !v->get<bool>())) {
-    SceneRemoteAxis ra;
+    analysis::SceneRemoteAxis ra;
     if (!v->is_boolean()) {
       if (auto* s = r.optional(*v, p + ".remote_axis", "starts")) {
         ra.starts = r.integer(*s, p + ".remote_axis.starts");
@@ -252,8 +253,8 @@ SceneAnalysis read_analysis(const Reader& r, const json& doc) {
   return a;
 }
 
-SceneEffects read_effects(const Reader& r, const json& doc) {
-  SceneEffects e;
+analysis::SceneEffects read_effects(const Reader& r, const json& doc) {
+  analysis::SceneEffects e;
   const json* ef = r.optional(doc, "", "effects");
   if (!ef) return e;
   const std::string p = "effects";
@@ -266,7 +267,7 @@ SceneEffects read_effects(const Reader& r, const json& doc) {
     r.fail(p + ".dynamics", "the motion after failure is asked for in analysis.dynamics");
   if (auto* w = r.optional(*ef, p, "water")) {
     const std::string wp = p + ".water";
-    SceneWater water;
+    analysis::SceneWater water;
     if (auto* u = r.optional(*w, wp, "unit_weight"))
       water.unit_weight = r.positive(*u, wp + ".unit_weight");
     const json& ps = r.require(*w, wp, "phreatic_surface");
@@ -299,7 +300,7 @@ SceneEffects read_effects(const Reader& r, const json& doc) {
     r.array(*fs, p + ".forces");
     for (size_t k = 0; k < fs->size(); ++k) {
       const std::string fp = Reader::index(p + ".forces", k);
-      SceneForce f;
+      analysis::SceneForce f;
       f.vector = r.vec3(r.require((*fs)[k], fp, "vector"), fp + ".vector");
       f.point = r.vec3(r.require((*fs)[k], fp, "point"), fp + ".point");
       if (auto* fr = r.optional((*fs)[k], fp, "frame")) {
@@ -314,7 +315,7 @@ SceneEffects read_effects(const Reader& r, const json& doc) {
     r.array(*bs, p + ".bolts");
     for (size_t k = 0; k < bs->size(); ++k) {
       const std::string bp = Reader::index(p + ".bolts", k);
-      SceneBolt b;
+      analysis::SceneBolt b;
       b.point = r.vec3(r.require((*bs)[k], bp, "point"), bp + ".point");
       b.trend = r.number_in(r.require((*bs)[k], bp, "trend"), bp + ".trend", 0, 360);
       b.plunge = r.number_in(r.require((*bs)[k], bp, "plunge"), bp + ".plunge", -90, 90);
@@ -324,7 +325,7 @@ SceneEffects read_effects(const Reader& r, const json& doc) {
   }
   if (auto* jl = r.optional(*ef, p, "joint_law")) {
     const std::string lp = p + ".joint_law";
-    SceneJointLaw law;
+    analysis::SceneJointLaw law;
     if (auto* m = r.optional(*jl, lp, "model")) {
       law.model = r.string(*m, lp + ".model");
       if (law.model != "barton_bandis" && law.model != "grasselli" && law.model != "coulomb")
@@ -458,24 +459,13 @@ void check_references(const Reader& r, const Scene& s) {
 
 }  // namespace
 
-std::vector<std::string> SceneEffects::listed() const {
-  std::vector<std::string> names{"gravity"};
-  if (water) names.push_back("water");
-  if (seismic) names.push_back("seismic");
-  if (insitu_stress) names.push_back("insitu_stress");
-  if (!forces.empty()) names.push_back("forces");
-  if (!bolts.empty()) names.push_back("bolts");
-  if (joint_law) names.push_back("joint_law");
-  return names;
-}
-
-const SceneJoint* Scene::joint(const std::string& id) const {
+const analysis::SceneJoint* Scene::joint(const std::string& id) const {
   for (const auto& j : joints)
     if (j.id == id) return &j;
   return nullptr;
 }
 
-const SceneFreeFace* Scene::free_face(const std::string& id) const {
+const analysis::SceneFreeFace* Scene::free_face(const std::string& id) const {
   for (const auto& f : free_faces)
     if (f.id == id) return &f;
   return nullptr;
@@ -521,7 +511,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       r.array(*ps, "surface.patches");
       for (size_t i = 0; i < ps->size(); ++i) {
         const std::string path = Reader::index("surface.patches", i);
-        ScenePatch patch;
+        analysis::ScenePatch patch;
         patch.id = r.id(r.require((*ps)[i], path, "id"), path + ".id");
         patch.polygon = read_points(r, r.require((*ps)[i], path, "polygon"), path + ".polygon");
         if (patch.polygon.size() < 3) r.fail(path + ".polygon", "needs at least 3 points");
@@ -533,7 +523,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     r.array(*ts, "traces");
     for (size_t i = 0; i < ts->size(); ++i) {
       const std::string path = Reader::index("traces", i);
-      SceneTrace t;
+      analysis::SceneTrace t;
       t.id = r.id(r.require((*ts)[i], path, "id"), path + ".id");
       if (auto* j = r.optional((*ts)[i], path, "joint")) t.joint = r.id(*j, path + ".joint");
       // A trace with fewer than two points is kept: the trace network rejects

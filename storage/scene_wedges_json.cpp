@@ -37,8 +37,9 @@ tunnel::DesignProfile read_shape(const Reader& r, const json& v, const std::stri
   r.fail(p + ".shape", "\"" + shape + "\" is not circle, rectangle or horseshoe");
 }
 
-SceneWedgeSupportPlaces read_places(const Reader& r, const json& v, const std::string& p) {
-  SceneWedgeSupportPlaces on{false, false, false, false};
+analysis::SceneWedgeSupportPlaces read_places(const Reader& r, const json& v,
+                                              const std::string& p) {
+  analysis::SceneWedgeSupportPlaces on{false, false, false, false};
   r.array(v, p);
   for (std::size_t i = 0; i < v.size(); ++i) {
     const std::string s = r.string(v[i], Reader::index(p, i));
@@ -58,7 +59,8 @@ SceneWedgeSupportPlaces read_places(const Reader& r, const json& v, const std::s
 
 }  // namespace
 
-SceneWedges read_scene_wedges(const Reader& r, const json& w, const std::string& scene_path) {
+analysis::SceneWedges read_scene_wedges(const Reader& r, const json& w,
+                                        const std::string& scene_path) {
   const std::string p = "wedges";
   if (!w.is_object()) r.fail(p, "must be an object");
   static const char* known[] = {"sets",         "profile",   "axis", "chainage", "origin",
@@ -69,7 +71,7 @@ SceneWedges read_scene_wedges(const Reader& r, const json& w, const std::string&
     for (const char* k : known) ok = ok || key == k;
     if (!ok) r.fail(p + "." + key, "unknown field (see docs/scene-extensions.md, \"wedges\")");
   }
-  SceneWedges out;
+  analysis::SceneWedges out;
   if (auto* s = r.optional(w, p, "sets")) {
     r.array(*s, p + ".sets");
     for (std::size_t i = 0; i < s->size(); ++i)
@@ -110,7 +112,7 @@ SceneWedges read_scene_wedges(const Reader& r, const json& w, const std::string&
     const std::string sp = p + ".support";
     if (auto* b = r.optional(*s, sp, "bolts")) {
       const std::string bp = sp + ".bolts";
-      SceneWedgeBolts bolts;
+      analysis::SceneWedgeBolts bolts;
       bolts.length = r.positive(r.require(*b, bp, "length"), bp + ".length");
       bolts.spacing = r.positive(r.require(*b, bp, "spacing"), bp + ".spacing");
       bolts.capacity = r.positive(r.require(*b, bp, "capacity"), bp + ".capacity");
@@ -121,7 +123,7 @@ SceneWedges read_scene_wedges(const Reader& r, const json& w, const std::string&
     }
     if (auto* c = r.optional(*s, sp, "shotcrete")) {
       const std::string cp = sp + ".shotcrete";
-      SceneWedgeShotcrete sc;
+      analysis::SceneWedgeShotcrete sc;
       sc.thickness = r.number_in(r.require(*c, cp, "thickness"), cp + ".thickness", 1e-3, 2);
       sc.shear_strength = r.positive(r.require(*c, cp, "shear_strength"), cp + ".shear_strength");
       if (auto* x = r.optional(*c, cp, "on")) sc.on = read_places(r, *x, cp + ".on");

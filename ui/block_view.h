@@ -8,8 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "core/analysis/report.h"
 #include "storage/project_records.h"
-#include "storage/report.h"
 #include "ui/block_verdict.h"
 
 namespace rockface::ui {
@@ -28,7 +28,7 @@ struct BlockView {
   std::vector<std::string> summary;  // ui/block_summary.h: the report in words
   BlockVerdict verdict = BlockVerdict::infinite;
   // The motion after failure (analysis.dynamics), points datum-relative.
-  std::optional<storage::ReportDynamics> dynamics;
+  std::optional<analysis::ReportDynamics> dynamics;
 };
 
 // datum: the project's, subtracted from the report's absolute coordinates.

@@ -24,7 +24,7 @@ const BlockView* selected_with_motion(const AppState& app) {
   return b.dynamics && !b.dynamics->path.empty() ? &b : nullptr;
 }
 
-Eigen::Quaterniond quaternion(const storage::ReportMotionSample& s) {
+Eigen::Quaterniond quaternion(const analysis::ReportMotionSample& s) {
   return Eigen::Quaterniond(s.orientation(0), s.orientation(1), s.orientation(2), s.orientation(3))
       .normalized();
 }
@@ -32,14 +32,14 @@ Eigen::Quaterniond quaternion(const storage::ReportMotionSample& s) {
 }  // namespace
 
 std::vector<Eigen::Vector3d> posed_at(const std::vector<Eigen::Vector3d>& vertices,
-                                      const storage::ReportDynamics& d, double t) {
+                                      const analysis::ReportDynamics& d, double t) {
   std::vector<Eigen::Vector3d> out;
   if (d.path.empty()) return out;
   const auto& path = d.path;
   size_t k = 0;
   while (k + 1 < path.size() && path[k + 1].time_s <= t) ++k;
-  const storage::ReportMotionSample& a = path[k];
-  const storage::ReportMotionSample& b = path[std::min(k + 1, path.size() - 1)];
+  const analysis::ReportMotionSample& a = path[k];
+  const analysis::ReportMotionSample& b = path[std::min(k + 1, path.size() - 1)];
   const double span = b.time_s - a.time_s;
   const double f = span > 0 ? std::clamp((t - a.time_s) / span, 0.0, 1.0) : 0.0;
   const Eigen::Vector3d c = (1 - f) * a.position + f * b.position;
@@ -52,7 +52,7 @@ std::vector<Eigen::Vector3d> posed_at(const std::vector<Eigen::Vector3d>& vertic
 void draw_motion_on_model(AppState& app) {
   const BlockView* b = selected_with_motion(app);
   if (!b || !app.motion.block || *app.motion.block != *app.selected_block) return;
-  const storage::ReportDynamics& d = *b->dynamics;
+  const analysis::ReportDynamics& d = *b->dynamics;
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float s = app.targets.scale();
   // The centroid's path so far, then the block's outline now.
@@ -79,7 +79,7 @@ void draw_motion_on_model(AppState& app) {
 
 void draw_motion_controls(AppState& app, const BlockView& block) {
   if (!block.dynamics || block.dynamics->path.empty() || !app.selected_block) return;
-  const storage::ReportDynamics& d = *block.dynamics;
+  const analysis::ReportDynamics& d = *block.dynamics;
   MotionPlayback& m = app.motion;
   if (m.block != app.selected_block) {
     m = MotionPlayback{};
@@ -105,7 +105,7 @@ void draw_motion_controls(AppState& app, const BlockView& block) {
     m.time = t;
     m.playing = false;
   }
-  for (const auto& e : d.events) bullet(storage::event_text(e));
+  for (const auto& e : d.events) bullet(analysis::event_text(e));
 }
 
 }  // namespace rockface::ui

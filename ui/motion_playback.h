@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "storage/report.h"
+#include "core/analysis/report.h"
 
 namespace rockface::ui {
 
@@ -26,7 +26,7 @@ struct MotionPlayback {
 // The block's corners (datum-relative) at time t of its motion: position
 // linear and rotation spherical-linear between the two samples around t.
 std::vector<Eigen::Vector3d> posed_at(const std::vector<Eigen::Vector3d>& vertices,
-                                      const storage::ReportDynamics& d, double t);
+                                      const analysis::ReportDynamics& d, double t);
 
 // On the model view (inside its clip rectangle): the selected block's
 // outline at the playback time, and its path so far.

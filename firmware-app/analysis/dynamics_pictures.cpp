@@ -9,11 +9,11 @@
 
 namespace rockface::app {
 
-void write_dynamics_pictures(storage::Report& report, const std::string& report_path) {
+void write_dynamics_pictures(analysis::Report& report, const std::string& report_path) {
   std::string stem = report_path;
   if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, ".json") == 0)
     stem.resize(stem.size() - 5);
-  for (storage::ReportBlock& b : report.blocks) {
+  for (analysis::ReportBlock& b : report.blocks) {
     if (!b.dynamics || b.dynamics->path.empty()) continue;
     std::string id = b.id;
     for (char& c : id)

@@ -4,11 +4,11 @@
 // dynamics_picture.h draws it). The block's dynamics.picture names it.
 #include <string>
 
-#include "storage/report.h"
+#include "core/analysis/report.h"
 
 namespace rockface::app {
 
 // Throws Error naming the file that cannot be written.
-void write_dynamics_pictures(storage::Report& report, const std::string& report_path);
+void write_dynamics_pictures(analysis::Report& report, const std::string& report_path);
 
 }  // namespace rockface::app

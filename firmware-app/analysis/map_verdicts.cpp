@@ -2,12 +2,12 @@
 
 #include <chrono>
 
+#include "core/analysis/scene_effects.h"
+#include "core/analysis/trace_map_input.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/faces/trace_session.h"
 #include "core/kinematics/sliding_mode.h"
-#include "firmware-app/analysis/scene_effects.h"
-#include "firmware-app/analysis/trace_map_input.h"
 
 namespace rockface::app {
 
@@ -18,14 +18,14 @@ struct MapVerdictSession::State {
   std::unique_ptr<faces::TraceSession> session;
 };
 
-MapVerdictSession::MapVerdictSession(const AnalysisInput& input) : state_(new State) {
+MapVerdictSession::MapVerdictSession(const analysis::AnalysisInput& input) : state_(new State) {
   if (input.patches.empty())
     throw InputError(input.source + ": surface.patches",
                      "the visit has no surface patches (mark the face's outline first); blocks "
                      "from traces need the free surface");
-  const TraceMapInput map = trace_map_input(input);
+  const analysis::TraceMapInput map = analysis::trace_map_input(input);
   state_->datum = map.datum;
-  state_->effects = scene_effects(input);
+  state_->effects = analysis::scene_effects(input);
   faces::TraceBlockOptions options;
   options.snap_tolerance = map.snap_tolerance;
   options.orientation_uncertainty = map.orientation_uncertainty;
@@ -43,9 +43,10 @@ MapVerdictSession::MapVerdictSession(const AnalysisInput& input) : state_(new St
 
 MapVerdictSession::~MapVerdictSession() = default;
 
-ui::MapVerdicts MapVerdictSession::update(const AnalysisInput& input, Progress& progress) {
+ui::MapVerdicts MapVerdictSession::update(const analysis::AnalysisInput& input,
+                                          Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
-  const TraceMapInput map = trace_map_input(input);
+  const analysis::TraceMapInput map = analysis::trace_map_input(input);
   const std::vector<faces::TraceBlock>* blocks = nullptr;
   try {
     blocks = &state_->session->update(map.traces, progress);

@@ -8,8 +8,8 @@
 // mechanics), which the Blocks screen's analysis adds.
 #include <memory>
 
+#include "core/analysis/analysis_input.h"
 #include "core/common/progress.h"
-#include "firmware-app/analysis/analysis_input.h"
 #include "ui/field_services.h"
 
 namespace rockface::app {
@@ -20,14 +20,14 @@ class MapVerdictSession {
   // rock and the effects of `input` are the session's for its life; a scene
   // that changes them needs a new session. Throws InputError naming the
   // input for a scene without surface patches or with a bad one.
-  explicit MapVerdictSession(const AnalysisInput& input);
+  explicit MapVerdictSession(const analysis::AnalysisInput& input);
   ~MapVerdictSession();
   MapVerdictSession(const MapVerdictSession&) = delete;
   MapVerdictSession& operator=(const MapVerdictSession&) = delete;
 
   // The blocks of input.traces (all of them, after an edit); the rest of
   // `input` is taken as the constructor's.
-  ui::MapVerdicts update(const AnalysisInput& input, Progress& progress);
+  ui::MapVerdicts update(const analysis::AnalysisInput& input, Progress& progress);
 
  private:
   struct State;

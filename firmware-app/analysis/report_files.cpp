@@ -1,14 +1,15 @@
 #include "firmware-app/analysis/report_files.h"
 
+#include "core/analysis/mechanics_plot.h"
 #include "firmware-app/analysis/dynamics_pictures.h"
-#include "firmware-app/analysis/mechanics_plot.h"
 #include "storage/export_file.h"
+#include "storage/report.h"
 
 namespace rockface::app {
 
-void write_report_files(storage::Report& report, const std::string& report_file) {
+void write_report_files(analysis::Report& report, const std::string& report_file) {
   // The plots first: the report names them.
-  write_mechanics_plots(report, report_file);
+  analysis::write_mechanics_plots(report, report_file);
   write_dynamics_pictures(report, report_file);
   storage::write_text_atomically(report_file, storage::report_to_json(report));
 }

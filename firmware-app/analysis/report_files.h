@@ -6,12 +6,12 @@
 // place of a good one.
 #include <string>
 
-#include "storage/report.h"
+#include "core/analysis/report.h"
 
 namespace rockface::app {
 
 // Fills each plotted block's mechanics.plot. Throws Error naming the file
 // that cannot be written.
-void write_report_files(storage::Report& report, const std::string& report_file);
+void write_report_files(analysis::Report& report, const std::string& report_file);
 
 }  // namespace rockface::app

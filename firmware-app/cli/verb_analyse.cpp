@@ -2,9 +2,11 @@
 #include <iostream>
 #include <memory>
 
+#include "core/analysis/scene_analysis.h"
 #include "firmware-app/analysis/report_files.h"
-#include "firmware-app/analysis/scene_analysis.h"
+#include "firmware-app/analysis/scene_input.h"
 #include "firmware-app/cli/verb_registry.h"
+#include "storage/report.h"
 #include "storage/scene.h"
 
 namespace rockface::app {
@@ -26,12 +28,12 @@ VerbRun setup_analyse(CLI::App& sub) {
   return [opts] {
     const storage::Scene scene = storage::load_scene(opts->scene);
     NoProgress progress;
-    storage::Report report = analyse(analysis_input(scene), progress);
+    analysis::Report report = analysis::analyse(analysis_input(scene), progress);
     // The path of each block's equilibrium-path analysis as a PNG beside the report.
     if (!opts->out.empty()) write_report_files(report, opts->out);
     if (opts->summary) {
       std::cout << (scene.name.empty() ? opts->scene : scene.name) << "\n"
-                << storage::report_summary(report);
+                << analysis::report_summary(report);
     } else if (opts->out.empty()) {
       std::cout << storage::report_to_json(report);
     }

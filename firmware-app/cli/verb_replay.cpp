@@ -76,7 +76,7 @@ VerbRun setup_replay(CLI::App& sub) {
               << out.predicted_depth_sigma_m * 1000 << " mm)\n";
     for (const auto& g : out.guidance) std::cout << "capture: " << g << "\n";
     print_joint_comparisons(out.joints);
-    if (out.report) std::cout << storage::report_summary(*out.report);
+    if (out.report) std::cout << analysis::report_summary(*out.report);
     return 0;
   };
 }

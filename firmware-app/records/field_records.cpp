@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "firmware-app/records/project_mesh.h"
+#include "storage/report.h"
 
 namespace rockface::app {
 
@@ -45,7 +46,7 @@ storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
   return model;
 }
 
-storage::AnalysisRun analysis_record(const storage::Report& report, storage::RecordId visit_id,
+storage::AnalysisRun analysis_record(const analysis::Report& report, storage::RecordId visit_id,
                                      std::optional<storage::RecordId> model_id, Preset preset) {
   storage::AnalysisRun run;
   run.visit_id = visit_id;

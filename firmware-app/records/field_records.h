@@ -5,11 +5,11 @@
 // `rockface replay` and the tablet UI's runners, so both store the same.
 #include <string>
 
+#include "core/analysis/report.h"
 #include "core/common/preset.h"
 #include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "storage/project_records.h"
 #include "storage/reconstruction_report.h"
-#include "storage/report.h"
 
 namespace rockface::app {
 
@@ -21,7 +21,7 @@ storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
                             storage::RecordId capture_id,
                             const storage::ReconstructionReportContext& accuracy);
 
-storage::AnalysisRun analysis_record(const storage::Report& report, storage::RecordId visit_id,
+storage::AnalysisRun analysis_record(const analysis::Report& report, storage::RecordId visit_id,
                                      std::optional<storage::RecordId> model_id, Preset preset);
 
 }  // namespace rockface::app

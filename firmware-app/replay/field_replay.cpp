@@ -11,13 +11,14 @@
 #include "camera/capture_guidance.h"
 #include "camera/mock_camera.h"
 #include "camera/synthetic_renderer.h"
+#include "core/analysis/scene_analysis.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/pair_photo.h"
 #include "core/photogrammetry/reconstruction/preset.h"
 #include "core/photogrammetry/reconstruction/reconstruction.h"
-#include "firmware-app/analysis/scene_analysis.h"
+#include "firmware-app/analysis/scene_input.h"
 #include "firmware-app/measure/measure_records.h"
 #include "firmware-app/records/field_records.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
@@ -228,7 +229,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   }
   // The analysis input, filled once from the scene and then with what was
   // measured: the measured traces and joint planes.
-  AnalysisInput analysed = analysis_input(*scene);
+  analysis::AnalysisInput analysed = analysis_input(*scene);
   if (picked) {
     analysed.traces = picked->traces;
     analysed.joints = picked->joints;
@@ -313,7 +314,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   if (scene->rockmass) store.save_rockmass_form(out.visit_id, *scene->rockmass);
 
   progress.step("blocks", 0.8);
-  storage::Report report = analyse(analysed, progress);
+  analysis::Report report = analysis::analyse(analysed, progress);
   // What the synthetic camera simulated, named as the analysis's effects are.
   for (const auto& e : synthetic->scene.effects.simulated())
     report.effects_simulated.push_back("imaging." + e);

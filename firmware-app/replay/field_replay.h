@@ -5,10 +5,10 @@
 #include <optional>
 #include <string>
 
+#include "core/analysis/report.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
 #include "storage/project_records.h"
-#include "storage/report.h"
 
 namespace rockface::app {
 
@@ -44,7 +44,7 @@ struct ReplayOutcome {
   // With picks: each scene joint's plane measured from its traces beside
   // the scene's (JointComparison), in scene order.
   std::vector<JointComparison> joints;
-  std::optional<storage::Report> report;
+  std::optional<analysis::Report> report;
 };
 
 // Throws InputError for bad input (naming file and field) and Error for the

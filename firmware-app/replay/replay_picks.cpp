@@ -112,7 +112,7 @@ ReplayPicks measure_replay_picks(const storage::Scene& scene,
   for (std::size_t i = 0; i < out.measured.traces.size(); ++i) {
     const measure::MeasuredTrace& t = out.measured.traces[i];
     const measure::TracePick& pick = picks.traces[i];
-    storage::SceneTrace st;
+    analysis::SceneTrace st;
     st.id = t.m.id;
     if (!t.joint.empty()) st.joint = t.joint;
     if (const auto j = joined_by_piece.find(st.id); j != joined_by_piece.end()) {

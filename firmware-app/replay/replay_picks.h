@@ -24,8 +24,8 @@ struct ReplayPicks {
   // What the analysis takes from the picks, as values: the measured traces
   // (the picks lifted onto the 3D image, absolute), and the scene's joints,
   // each with its traces' common plane where they give one.
-  std::vector<storage::SceneTrace> traces;
-  std::vector<storage::SceneJoint> joints;
+  std::vector<analysis::SceneTrace> traces;
+  std::vector<analysis::SceneJoint> joints;
   std::vector<std::string> notes;  // joints whose plane stays unknown, and why
 };
 

@@ -15,8 +15,8 @@
 #include "core/measure/outline_pieces.h"
 #include "core/measure/pick_measurement.h"
 #include "core/photogrammetry/reconstruction/preset.h"
-#include "firmware-app/analysis/analysis_input.h"
 #include "firmware-app/analysis/map_verdicts.h"
+#include "firmware-app/analysis/scene_input.h"
 #include "firmware-app/measure/measure_records.h"
 #include "firmware-app/measure/visit_trace_joints.h"
 #include "firmware-app/records/project_mesh.h"
@@ -35,7 +35,7 @@ namespace {
 // surface, the datum, the map's tolerances, the rock and the effects. The
 // preset and the other analysis options do not enter the map's verdicts, so
 // an analysis saved in between (which names its preset) keeps the session.
-std::string session_key(const AnalysisInput& input, const nlohmann::json& scene) {
+std::string session_key(const analysis::AnalysisInput& input, const nlohmann::json& scene) {
   std::ostringstream key;
   key << std::hexfloat << input.datum.transpose() << ' ' << input.has_datum << ' ' << input.density
       << ' ' << input.gravity.transpose() << ' ' << input.analysis.snap_tolerance << ' '
@@ -80,7 +80,7 @@ ui::MapVerdicts StoreTraceMapRunner::update(const std::filesystem::path& project
   const nlohmann::json json = storage::make_scene_json(source);
   const storage::Scene scene = storage::parse_scene(
       json.dump(), project.filename().string() + " visit " + std::to_string(visit_id));
-  const AnalysisInput input = analysis_input(scene);
+  const analysis::AnalysisInput input = analysis_input(scene);
   std::string key = session_key(input, json);
   if (!cache_->session || cache_->project != project || cache_->visit_id != visit_id ||
       cache_->key != key) {
@@ -256,7 +256,7 @@ std::vector<storage::Measurement> outline_records(const ui::MapEdit& edit,
   // visit exports leaves it at its default).
   measure::OutlinePieces split =
       measure::split_outline(*edit.picker, *edit.view, label, edit.outline, settings, options,
-                             storage::SceneAnalysis{}.snap_tolerance, where);
+                             analysis::SceneAnalysis{}.snap_tolerance, where);
   std::string& said = split.pieces.front().plane.problem;
   for (const auto& note : split.notes) said += (said.empty() ? "" : "; ") + note;
   measure::MeasuredPicks picks;

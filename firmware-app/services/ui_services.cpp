@@ -7,9 +7,10 @@
 #include "camera/gphoto2_camera.h"
 #include "camera/mock_camera.h"
 #include "camera/synthetic_renderer.h"
+#include "core/analysis/scene_analysis.h"
 #include "core/common/error.h"
 #include "core/photogrammetry/reconstruction/preset.h"
-#include "firmware-app/analysis/scene_analysis.h"
+#include "firmware-app/analysis/scene_input.h"
 #include "firmware-app/records/field_records.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
 #include "storage/export_scene_json.h"
@@ -62,7 +63,7 @@ storage::RecordId StoreAnalysisRunner::analyse(const fs::path& project, storage:
   const storage::Scene scene =
       storage::parse_scene(storage::make_scene_json(source).dump(),
                            project.string() + " visit " + std::to_string(visit_id));
-  const storage::Report report = app::analyse(analysis_input(scene), progress);
+  const analysis::Report report = analysis::analyse(analysis_input(scene), progress);
   std::optional<storage::RecordId> model_id;
   const auto models = store.list_models();
   if (!models.empty()) model_id = models.back().id;

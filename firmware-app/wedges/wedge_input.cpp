@@ -23,7 +23,7 @@ tunnel::WedgeJointSet joint_set(const WedgeSetInput& s) {
   return j;
 }
 
-tunnel::SupportPlaces places(const storage::SceneWedgeSupportPlaces& p) {
+tunnel::SupportPlaces places(const analysis::SceneWedgeSupportPlaces& p) {
   return {p.roof, p.walls, p.floor, p.face};
 }
 
@@ -78,7 +78,7 @@ WedgeRun wedge_run_from_scene(const storage::Scene& scene,
   const std::string& src = scene.source;
   if (!scene.wedges)
     throw InputError(src + ": wedges", "missing: the scene asks for no wedge analysis");
-  const storage::SceneWedges& w = *scene.wedges;
+  const analysis::SceneWedges& w = *scene.wedges;
   WedgeRun run;
   run.source = src;
   run.datum = scene.datum;
@@ -88,7 +88,7 @@ WedgeRun wedge_run_from_scene(const storage::Scene& scene,
   if (ids.empty())
     for (const auto& j : scene.joints) ids.push_back(j.id);
   for (const auto& id : ids) {
-    const storage::SceneJoint* j = scene.joint(id);
+    const analysis::SceneJoint* j = scene.joint(id);
     WedgeSetInput s{id, j->dip, j->dipdir, j->friction, j->cohesion.value_or(0), "scene"};
     run.sets.push_back(s);
   }

@@ -24,7 +24,8 @@ double nice_length(double span) {
 }  // namespace
 
 std::vector<Eigen::Vector3d> posed_vertices(const std::vector<Eigen::Vector3d>& vertices,
-                                            const ReportDynamics& d, const ReportMotionSample& s) {
+                                            const analysis::ReportDynamics& d,
+                                            const analysis::ReportMotionSample& s) {
   std::vector<Eigen::Vector3d> out;
   if (d.path.empty()) return out;
   const Eigen::Vector3d c0 = d.path.front().position;
@@ -35,7 +36,7 @@ std::vector<Eigen::Vector3d> posed_vertices(const std::vector<Eigen::Vector3d>& 
 }
 
 cv::Mat dynamics_picture(const std::string& block_id, const std::vector<Eigen::Vector3d>& vertices,
-                         const ReportDynamics& d, int width, int height) {
+                         const analysis::ReportDynamics& d, int width, int height) {
   if (d.path.empty() || vertices.empty()) return {};
   const Eigen::Vector3d origin = d.path.front().position;
   const Eigen::Vector3d travel = d.path.back().position - origin;

@@ -11,17 +11,18 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
-#include "storage/report.h"
+#include "core/analysis/report.h"
 
 namespace rockface::storage {
 
 // vertices: the block's corners at rest (absolute, as in the report).
 // BGR; empty when the motion has no samples.
 cv::Mat dynamics_picture(const std::string& block_id, const std::vector<Eigen::Vector3d>& vertices,
-                         const ReportDynamics& d, int width = 900, int height = 600);
+                         const analysis::ReportDynamics& d, int width = 900, int height = 600);
 
 // The block's corners (absolute) at one sample of its path.
 std::vector<Eigen::Vector3d> posed_vertices(const std::vector<Eigen::Vector3d>& vertices,
-                                            const ReportDynamics& d, const ReportMotionSample& s);
+                                            const analysis::ReportDynamics& d,
+                                            const analysis::ReportMotionSample& s);
 
 }  // namespace rockface::storage

@@ -11,10 +11,10 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
+#include "core/analysis/report.h"
 #include "core/photogrammetry/camera/camera_model.h"
 #include "core/rockmass/rock_mass_figures.h"
 #include "storage/project_store.h"
-#include "storage/report.h"
 #include "storage/tunnel_records.h"
 
 namespace rockface::storage {
@@ -50,7 +50,7 @@ struct ReportedBlock {
   std::optional<ReportedRotation> rotation;
   std::vector<Eigen::Vector3d> vertices;  // datum-relative
   // The motion after failure (analysis.dynamics), points datum-relative.
-  std::optional<ReportDynamics> dynamics;
+  std::optional<analysis::ReportDynamics> dynamics;
 };
 
 // One 3D image of the visit and how it was registered to the face.

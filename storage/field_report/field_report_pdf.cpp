@@ -302,11 +302,11 @@ void joint_section(PdfPages& pdf, const FieldReport& r) {
              {"source", 120}},
             rows);
   // Issue 27: a plane read with a compass on the tablet, not fitted.
-  if (std::any_of(r.joints.begin(), r.joints.end(), [](const auto& j) {
-        return j.source.find("(compass)") != std::string::npos;
-      }))
-    pdf.line("(compass): the dip and dip direction read with a compass on the joint where the "
-             "trace runs; the trace is checked to lie in that plane");
+  if (std::any_of(r.joints.begin(), r.joints.end(),
+                  [](const auto& j) { return j.source.find("(compass)") != std::string::npos; }))
+    pdf.line(
+        "(compass): the dip and dip direction read with a compass on the joint where the "
+        "trace runs; the trace is checked to lie in that plane");
   pdf.heading("Joint sets");
   if (r.sets.empty()) {
     pdf.line("no set: fewer than two joints, or none close enough to form one");
@@ -367,14 +367,14 @@ void dynamics_section(PdfPages& pdf, const FieldReport& r) {
   pdf.heading("Motion after failure", 0.45 * kPageH);
   for (const auto& b : r.blocks) {
     if (!b.dynamics) continue;
-    const ReportDynamics& d = *b.dynamics;
+    const analysis::ReportDynamics& d = *b.dynamics;
     std::string friction;
     for (const auto& [plane, deg] : d.friction_deg)
       friction += (friction.empty() ? "" : ", ") + plane + " " + report_number(deg, 1) + " deg";
     pdf.line("block " + b.label + ": " + d.trigger + "; friction while sliding " + friction +
              ", cohesion lost; " + d.outcome);
     std::string events;
-    for (const auto& e : d.events) events += (events.empty() ? "" : "; ") + event_text(e);
+    for (const auto& e : d.events) events += (events.empty() ? "" : "; ") + analysis::event_text(e);
     pdf.line(events, kSmall);
     if (d.landing)
       pdf.line(

@@ -22,7 +22,7 @@
 // Part 2, the verdict stages alone, in this process and on one core: the
 // visit the replay stored (its traces, areas and joints, read back through
 // storage::load_scene_source) made into the trace map's input by the
-// analysis workflow (firmware-app/analysis/trace_map_input.h), timed apart:
+// analysis workflow (core/analysis/trace_map_input.h), timed apart:
 //   trace_map_ms  free surface, trace network, surface loops
 //   blocks_ms     faces::trace_blocks: blocks, finiteness, removability
 //   rotation_ms   corner and edge rotatability of the finite blocks
@@ -47,6 +47,7 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
+#include "core/analysis/trace_map_input.h"
 #include "core/common/preset.h"
 #include "core/common/units.h"
 #include "core/faces/free_surface.h"
@@ -56,7 +57,7 @@
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"
 #include "core/kinematics/rotation_space.h"
-#include "firmware-app/analysis/trace_map_input.h"
+#include "firmware-app/analysis/scene_input.h"
 #include "storage/export_scene_json.h"
 #include "storage/project_store.h"
 #include "storage/scene.h"
@@ -247,9 +248,9 @@ VerdictTimes verdict_stages(const fs::path& project, const std::string& preset) 
   rs::ProjectStore store = rs::ProjectStore::open(project, open);
   const rs::Scene scene =
       rs::parse_scene(rs::make_scene_json(rs::load_scene_source(store)).dump(), project.string());
-  // The trace map's input as the analysis makes it (firmware-app/analysis).
-  const rockface::app::TraceMapInput map =
-      rockface::app::trace_map_input(rockface::app::analysis_input(scene));
+  // The trace map's input as the analysis makes it (core/analysis).
+  const rockface::analysis::TraceMapInput map =
+      rockface::analysis::trace_map_input(rockface::app::analysis_input(scene));
 
   // The fastest of kRepeats runs of each stage: the machine is shared, and
   // the least disturbed run is the closest to the stage's own cost.

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "firmware-app/analysis/analysis_input.h"
+#include "firmware-app/analysis/scene_input.h"
 #include "storage/scene.h"
 #include "tests/support/test_paths.h"
 
@@ -25,7 +25,8 @@ TEST(TunnelInvertFloor, DynamicsWithoutAFloorLandsOnTheInvertAtTheFace) {
                {{"alignment", (samples / "tunnel-drive.alignment.csv").string()},
                 {"profile", (samples / "tunnel-drive.profile.json").string()},
                 {"placement", {{"chainage", 110.6}, {"offset", 1.3}, {"height", -1.05}}}}}};
-  const AnalysisInput in = analysis_input(storage::parse_scene(doc.dump(), "t.scene.json"));
+  const analysis::AnalysisInput in =
+      analysis_input(storage::parse_scene(doc.dump(), "t.scene.json"));
   ASSERT_TRUE(in.analysis.dynamics);
   ASSERT_TRUE(in.analysis.dynamics->floor);
   const auto& f = *in.analysis.dynamics->floor;
@@ -37,7 +38,8 @@ TEST(TunnelInvertFloor, DynamicsWithoutAFloorLandsOnTheInvertAtTheFace) {
   EXPECT_NEAR(f.dip, 0.0, 1e-9);
   // A floor the scene gives is kept.
   doc["analysis"]["dynamics"]["floor"] = {{"elevation", 400.0}};
-  const AnalysisInput given = analysis_input(storage::parse_scene(doc.dump(), "t.scene.json"));
+  const analysis::AnalysisInput given =
+      analysis_input(storage::parse_scene(doc.dump(), "t.scene.json"));
   EXPECT_NEAR(given.analysis.dynamics->floor->point.z(), 400.0, 1e-12);
 }
 

@@ -1,4 +1,4 @@
-#include "firmware-app/analysis/block_dynamics.h"
+#include "core/analysis/block_dynamics.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include "core/geometry/orientation.h"
 #include "core/mechanics/dynamics/block_dynamics.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 namespace {
 
@@ -27,7 +27,7 @@ struct Trigger {
   double divisor = 1;
 };
 
-std::optional<Trigger> trigger(const storage::ReportBlock& rb) {
+std::optional<Trigger> trigger(const ReportBlock& rb) {
   if (rb.mechanics) {
     if (rb.mechanics->outcome == "fails under its loads")
       return Trigger{"equilibrium path: no equilibrium under its loads", 1};
@@ -47,12 +47,12 @@ bool scene_wants_dynamics(const AnalysisInput& scene) {
   return scene.analysis.dynamics.has_value();
 }
 
-void rename_dynamics_planes(storage::ReportDynamics& d,
+void rename_dynamics_planes(ReportDynamics& d,
                             const std::function<std::string(const std::string&)>& name) {
   std::map<std::string, double> friction;
   for (const auto& [plane, deg] : d.friction_deg) friction[name(plane)] = deg;
   d.friction_deg = std::move(friction);
-  for (storage::ReportMotionEvent& e : d.events) {
+  for (ReportMotionEvent& e : d.events) {
     std::vector<std::string> renamed;
     for (const std::string& p : e.planes) renamed.push_back(name(p));
     // Whole names in the text ("slides on T1 and T2", "edge T1-F1").
@@ -77,9 +77,9 @@ void rename_dynamics_planes(storage::ReportDynamics& d,
 }
 
 void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput& scene,
-                            const kinematics::Effects& effects, storage::ReportBlock& rb,
-                            Progress* progress, const std::map<std::string, double>* friction_deg) {
-  const storage::SceneDynamics& sd = *scene.analysis.dynamics;
+                            const kinematics::Effects& effects, ReportBlock& rb, Progress* progress,
+                            const std::map<std::string, double>* friction_deg) {
+  const SceneDynamics& sd = *scene.analysis.dynamics;
   const std::optional<Trigger> why = trigger(rb);
   if (!why) {
     if (rb.removable)
@@ -90,7 +90,7 @@ void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput&
   // Friction while sliding: each joint's (as limit equilibrium uses it),
   // else the joint law's residual or basic angle; cohesion is lost.
   std::vector<double> friction(poly.planes().size(), 0.0);
-  storage::ReportDynamics d;
+  ReportDynamics d;
   for (size_t i = 0; i < poly.planes().size(); ++i) {
     const blocks::BlockPlane& bp = poly.planes()[i];
     if (bp.kind != blocks::PlaneKind::Joint) continue;
@@ -98,7 +98,7 @@ void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput&
     if (bp.index >= 0 && bp.index < static_cast<int>(scene.joints.size()) &&
         scene.joints[bp.index].id == bp.name)
       phi = scene.joints[bp.index].friction;
-    else if (const storage::SceneJoint* j = scene.joint(bp.name))
+    else if (const SceneJoint* j = scene.joint(bp.name))
       phi = j->friction;
     if (!phi && friction_deg && friction_deg->count(bp.name)) phi = friction_deg->at(bp.name);
     if (!phi && scene.effects.joint_law)
@@ -142,7 +142,7 @@ void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput&
   for (const mechanics::MotionEvent& e : r.events)
     d.events.push_back({e.time, e.kind, e.what, e.planes});
   for (const mechanics::MotionSample& s : r.samples) {
-    storage::ReportMotionSample m;
+    ReportMotionSample m;
     m.time_s = s.time;
     m.position = s.centroid + datum;
     m.orientation =
@@ -156,7 +156,7 @@ void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput&
     d.path.push_back(m);
   }
   if (r.landing) {
-    storage::ReportLanding l;
+    ReportLanding l;
     l.time_s = r.landing->time;
     l.point = r.landing->point + datum;
     l.centroid = r.landing->centroid + datum;
@@ -187,4 +187,4 @@ void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput&
   rb.dynamics = std::move(d);
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

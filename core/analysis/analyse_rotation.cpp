@@ -1,4 +1,4 @@
-#include "firmware-app/analysis/analyse_rotation.h"
+#include "core/analysis/analyse_rotation.h"
 
 #include <cstdio>
 #include <string>
@@ -9,7 +9,7 @@
 #include "core/kinematics/rotation_input.h"
 #include "core/kinematics/rotation_space.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 namespace {
 
@@ -17,11 +17,11 @@ namespace {
 // in parallel to within 1e-3 rad: a translation in all but name.
 constexpr double kTranslationLikeAxisRel = 1e3;
 
-storage::ReportRotation rotation_report(const kinematics::RotationInput& in,
-                                        const kinematics::RotationAnalysis& a) {
-  storage::ReportRotation r;
+ReportRotation rotation_report(const kinematics::RotationInput& in,
+                               const kinematics::RotationAnalysis& a) {
+  ReportRotation r;
   for (const auto& c : a.corners) {
-    storage::ReportCorner rc;
+    ReportCorner rc;
     rc.vertex = c.vertex;
     rc.rotatable = c.rotatable.value;
     rc.margin_deg = rad_to_deg(c.rotatable.margin);
@@ -35,7 +35,7 @@ storage::ReportRotation rotation_report(const kinematics::RotationInput& in,
     r.corners.push_back(std::move(rc));
   }
   for (const auto& e : a.edges) {
-    storage::ReportEdge re;
+    ReportEdge re;
     re.vertices = e.vertices;
     re.rotatable = e.rotatable.value;
     re.margin_deg = rad_to_deg(e.rotatable.margin);
@@ -47,8 +47,8 @@ storage::ReportRotation rotation_report(const kinematics::RotationInput& in,
 
 }  // namespace
 
-void analyse_block_rotation(const blocks::Polyhedron& block, const storage::SceneAnalysis& analysis,
-                            storage::ReportBlock& out) {
+void analyse_block_rotation(const blocks::Polyhedron& block, const SceneAnalysis& analysis,
+                            ReportBlock& out) {
   if (!analysis.rotation && !analysis.remote_axis) return;
   const kinematics::RotationInput in = kinematics::rotation_input(block);
   const double uncertainty = deg_to_rad(analysis.orientation_uncertainty_deg);
@@ -67,7 +67,7 @@ void analyse_block_rotation(const blocks::Polyhedron& block, const storage::Scen
     // skipped and the axis reported is that one (through the corner, or
     // along the edge), with no starts and no hits.
     if (const auto firm = kinematics::firm_corner_or_edge_axis(rotation)) {
-      storage::ReportRemoteAxis ra;
+      ReportRemoteAxis ra;
       ra.found = true;
       ra.point = block.absolute_vertex(firm->vertex);
       ra.direction = firm->direction;
@@ -85,7 +85,7 @@ void analyse_block_rotation(const blocks::Polyhedron& block, const storage::Scen
     // search that finds nothing runs every start.
     const kinematics::RemoteAxisResult r =
         kinematics::search_remote_axis(in, {starts, analysis.remote_axis->seed, true});
-    storage::ReportRemoteAxis ra;
+    ReportRemoteAxis ra;
     ra.found = r.found;
     ra.point = r.point + block.datum();
     ra.direction = r.direction;
@@ -104,4 +104,4 @@ void analyse_block_rotation(const blocks::Polyhedron& block, const storage::Scen
   }
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

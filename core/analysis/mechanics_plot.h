@@ -5,19 +5,19 @@
 #include <string>
 #include <vector>
 
-#include "storage/report.h"
+#include "core/analysis/report.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 // Writes one plot per block with a path; throws Error when a file cannot
 // be written.
-void write_mechanics_plots(storage::Report& report, const std::string& report_path);
+void write_mechanics_plots(Report& report, const std::string& report_path);
 
 // The plot of one path as an 8-bit BGR image (exposed for tests).
 struct PlotImage {
   int width = 0, height = 0;
   std::vector<unsigned char> bgr;
 };
-PlotImage plot_path(const storage::ReportMechanics& m, int width = 360, int height = 240);
+PlotImage plot_path(const ReportMechanics& m, int width = 360, int height = 240);
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

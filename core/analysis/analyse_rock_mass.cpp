@@ -1,4 +1,4 @@
-#include "firmware-app/analysis/analyse_rock_mass.h"
+#include "core/analysis/analyse_rock_mass.h"
 
 #include <map>
 
@@ -6,11 +6,10 @@
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
 #include "core/rockmass/rock_mass_figures.h"
-#include "storage/rockmass_report_json.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
-void analyse_rock_mass(const AnalysisInput& scene, storage::Report& report) {
+void analyse_rock_mass(const AnalysisInput& scene, Report& report) {
   rockmass::RockMassInput in;
   // The sets: the joints' planes clustered (core/measure, automatic count).
   std::map<std::string, std::string> set_of_joint;
@@ -39,11 +38,11 @@ void analyse_rock_mass(const AnalysisInput& scene, storage::Report& report) {
       in.blocks.push_back({b.id, *b.volume, b.principal_moments, b.mass});
   if (scene.rockmass_form) in.form = *scene.rockmass_form;
   try {
-    report.rockmass_json = storage::rockmass_report_json(rockmass::rock_mass_figures(in)).dump();
+    report.rockmass = rockmass::rock_mass_figures(in);
   } catch (const InputError& e) {
     if (e.where() != "face") throw InputError(scene.source + ": rockmass." + e.where(), e.reason());
     report.notes.push_back("rock mass: " + e.reason());
   }
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

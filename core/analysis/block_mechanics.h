@@ -4,15 +4,15 @@
 // effects.joint_law when the scene gives one, else each joint Coulomb with
 // its own friction and cohesion; options from the preset and the scene's
 // analysis fields; the result as the block's report `mechanics`.
+#include "core/analysis/analysis_input.h"
+#include "core/analysis/report.h"
 #include "core/blocks/mass_properties.h"
 #include "core/blocks/polyhedron.h"
 #include "core/common/progress.h"
 #include "core/kinematics/block_analysis.h"
 #include "core/kinematics/effects/effect.h"
-#include "firmware-app/analysis/analysis_input.h"
-#include "storage/report.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 // The report's mechanics.joint_law when the scene gives no effects.joint_law:
 // each joint Coulomb with its own friction and cohesion, stiff, no dilation.
@@ -27,7 +27,7 @@ bool scene_wants_mechanics(const AnalysisInput& scene);
 // (optional) sees each continuation step and may cancel.
 void analyse_block_mechanics(const blocks::Polyhedron& poly, const AnalysisInput& scene,
                              const std::vector<kinematics::JointStrength>& strengths,
-                             const kinematics::Effects& effects, storage::ReportBlock& rb,
+                             const kinematics::Effects& effects, ReportBlock& rb,
                              Progress* progress = nullptr);
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -1,4 +1,4 @@
-#include "firmware-app/analysis/mechanics_plot.h"
+#include "core/analysis/mechanics_plot.h"
 
 #include <algorithm>
 #include <cctype>
@@ -10,7 +10,7 @@
 
 #include "core/common/error.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 namespace {
 
@@ -20,7 +20,7 @@ std::string number3g(double v) {
   return buf;
 }
 
-cv::Mat draw(const storage::ReportMechanics& m, int width, int height) {
+cv::Mat draw(const ReportMechanics& m, int width, int height) {
   cv::Mat img(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   const int left = 48, right = 12, top = 12, bottom = 36;
   const cv::Point origin(left, height - bottom);
@@ -72,7 +72,7 @@ std::string file_safe(const std::string& id) {
 
 }  // namespace
 
-PlotImage plot_path(const storage::ReportMechanics& m, int width, int height) {
+PlotImage plot_path(const ReportMechanics& m, int width, int height) {
   const cv::Mat img = draw(m, width, height);
   PlotImage out;
   out.width = img.cols;
@@ -81,11 +81,11 @@ PlotImage plot_path(const storage::ReportMechanics& m, int width, int height) {
   return out;
 }
 
-void write_mechanics_plots(storage::Report& report, const std::string& report_path) {
+void write_mechanics_plots(Report& report, const std::string& report_path) {
   std::string stem = report_path;
   if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, ".json") == 0)
     stem.resize(stem.size() - 5);
-  for (storage::ReportBlock& b : report.blocks) {
+  for (ReportBlock& b : report.blocks) {
     if (!b.mechanics || b.mechanics->path.empty()) continue;
     const std::string file = stem + "." + file_safe(b.id) + ".path.png";
     if (!cv::imwrite(file, draw(*b.mechanics, 360, 240)))
@@ -95,4 +95,4 @@ void write_mechanics_plots(storage::Report& report, const std::string& report_pa
   }
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

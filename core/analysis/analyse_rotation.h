@@ -2,11 +2,11 @@
 // Rotational kinematics of one block for the report (issue 4): corner and
 // edge rotatability about the block's static points and joint / free-face
 // edges, and the remote-axis search, as the scene's analysis options ask.
+#include "core/analysis/analysis_input.h"
+#include "core/analysis/report.h"
 #include "core/blocks/polyhedron.h"
-#include "storage/report.h"
-#include "storage/scene.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 // Fills out.rotation when analysis.rotation is set, and out.remote_axis when
 // analysis.remote_axis is given (its starts and seed); leaves each unset
@@ -19,7 +19,7 @@ namespace rockface::app {
 // out.notes when the only axis found is so far away that the motion is
 // essentially a translation. Throws rockface::InputError for a remote-axis
 // start count below 1 (naming analysis.remote_axis.starts).
-void analyse_block_rotation(const blocks::Polyhedron& block, const storage::SceneAnalysis& analysis,
-                            storage::ReportBlock& out);
+void analyse_block_rotation(const blocks::Polyhedron& block, const SceneAnalysis& analysis,
+                            ReportBlock& out);
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -8,13 +8,13 @@
 #include <map>
 #include <string>
 
+#include "core/analysis/analysis_input.h"
+#include "core/analysis/report.h"
 #include "core/blocks/polyhedron.h"
 #include "core/common/progress.h"
 #include "core/kinematics/effects/effect.h"
-#include "firmware-app/analysis/analysis_input.h"
-#include "storage/report.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 bool scene_wants_dynamics(const AnalysisInput& scene);
 
@@ -24,13 +24,13 @@ bool scene_wants_dynamics(const AnalysisInput& scene);
 // friction_deg (optional): the friction angle of joint planes by plane
 // name, where the scene's joints do not name them (blocks from traces).
 void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput& scene,
-                            const kinematics::Effects& effects, storage::ReportBlock& rb,
+                            const kinematics::Effects& effects, ReportBlock& rb,
                             Progress* progress = nullptr,
                             const std::map<std::string, double>* friction_deg = nullptr);
 
 // Renames the planes the block's dynamics names (events, friction) with
 // `name` (a trace block's planes take their joint's id).
-void rename_dynamics_planes(storage::ReportDynamics& d,
+void rename_dynamics_planes(ReportDynamics& d,
                             const std::function<std::string(const std::string&)>& name);
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -8,16 +8,16 @@
 
 #include <gtest/gtest.h>
 
+#include "core/analysis/analyse_rotation.h"
 #include "core/common/error.h"
 #include "core/common/preset.h"
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"
 #include "core/kinematics/rotation_tolerances.h"
-#include "firmware-app/analysis/analyse_rotation.h"
 #include "tests/core/rotation/quick_check_blocks.h"
 #include "tests/core/rotation/rotation_blocks.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 namespace {
 
 using Eigen::Vector3d;
@@ -40,10 +40,10 @@ blocks::Polyhedron lined_block() {
 
 TEST(AnalyseRotationReport, FillsCornersEdgesAndRemoteAxisInAbsoluteCoordinates) {
   const blocks::Polyhedron block = lined_block();
-  storage::SceneAnalysis options;
+  SceneAnalysis options;
   options.rotation = true;
-  options.remote_axis = storage::SceneRemoteAxis{64, 1};
-  storage::ReportBlock out;
+  options.remote_axis = SceneRemoteAxis{64, 1};
+  ReportBlock out;
   analyse_block_rotation(block, options, out);
 
   ASSERT_TRUE(out.rotation.has_value());
@@ -80,10 +80,10 @@ TEST(AnalyseRotationReport, FillsCornersEdgesAndRemoteAxisInAbsoluteCoordinates)
 TEST(AnalyseRotationReport, RotatableBlocksSkipTheSearchWithAFeasibleAxis) {
   int skipped = 0;
   for (const auto& block : test_rotation::quick_check_mix(3)) {
-    storage::SceneAnalysis options;
+    SceneAnalysis options;
     options.rotation = true;
-    options.remote_axis = storage::SceneRemoteAxis{16, 1};
-    storage::ReportBlock out;
+    options.remote_axis = SceneRemoteAxis{16, 1};
+    ReportBlock out;
     analyse_block_rotation(block, options, out);
     ASSERT_TRUE(out.remote_axis.has_value());
     if (out.remote_axis->starts > 0) continue;
@@ -104,9 +104,9 @@ TEST(AnalyseRotationReport, RotatableBlocksSkipTheSearchWithAFeasibleAxis) {
 
 TEST(AnalyseRotationReport, OptionsOffLeaveTheReportAlone) {
   const blocks::Polyhedron block = lined_block();
-  storage::SceneAnalysis options;
+  SceneAnalysis options;
   options.rotation = false;
-  storage::ReportBlock out;
+  ReportBlock out;
   analyse_block_rotation(block, options, out);
   EXPECT_FALSE(out.rotation.has_value());
   EXPECT_FALSE(out.remote_axis.has_value());
@@ -116,11 +116,11 @@ TEST(AnalyseRotationReport, StartsFollowThePresetUnlessTheSceneGivesThem) {
   const blocks::Polyhedron block = lined_block();
   for (const auto& [preset, starts] :
        std::vector<std::pair<std::string, int>>{{"fast", 16}, {"standard", 64}, {"precise", 256}}) {
-    storage::SceneAnalysis options;
+    SceneAnalysis options;
     options.rotation = false;
     options.preset = rockface::parse_preset(preset, "preset");
-    options.remote_axis = storage::SceneRemoteAxis{};
-    storage::ReportBlock out;
+    options.remote_axis = SceneRemoteAxis{};
+    ReportBlock out;
     analyse_block_rotation(block, options, out);
     ASSERT_TRUE(out.remote_axis.has_value());
     // The preset's starts, of which the early stop (issue 17) runs those
@@ -130,20 +130,20 @@ TEST(AnalyseRotationReport, StartsFollowThePresetUnlessTheSceneGivesThem) {
     EXPECT_EQ(out.remote_axis->starts, core.starts) << preset;
     EXPECT_LE(out.remote_axis->starts, starts) << preset;
   }
-  storage::SceneAnalysis options;
+  SceneAnalysis options;
   options.rotation = false;
   options.preset = rockface::Preset::precise;
-  options.remote_axis = storage::SceneRemoteAxis{8, 1};  // the scene's own count wins
-  storage::ReportBlock out;
+  options.remote_axis = SceneRemoteAxis{8, 1};  // the scene's own count wins
+  ReportBlock out;
   analyse_block_rotation(block, options, out);
   EXPECT_EQ(out.remote_axis->starts, 8);
 }
 
 TEST(AnalyseRotationReport, BadStartCountNamesTheField) {
   const blocks::Polyhedron block = lined_block();
-  storage::SceneAnalysis options;
-  options.remote_axis = storage::SceneRemoteAxis{0, 1};
-  storage::ReportBlock out;
+  SceneAnalysis options;
+  options.remote_axis = SceneRemoteAxis{0, 1};
+  ReportBlock out;
   try {
     analyse_block_rotation(block, options, out);
     FAIL() << "no error for 0 starts";
@@ -153,4 +153,4 @@ TEST(AnalyseRotationReport, BadStartCountNamesTheField) {
 }
 
 }  // namespace
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -8,13 +8,13 @@
 #include <map>
 #include <sstream>
 
+#include "core/analysis/scene_analysis.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/joint_pyramids.h"
 #include "core/measure/joint_sets.h"
-#include "firmware-app/analysis/scene_analysis.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 namespace {
 
@@ -48,7 +48,7 @@ PyramidPlanes joint_planes(const AnalysisInput& scene) {
 // each set's Fisher mean plane, and the least friction of its members (the
 // weakest joint of a set is the one a block slides on). The report's notes
 // say which joints make each set, and which fall in none (left out).
-PyramidPlanes set_planes(const AnalysisInput& scene, storage::Report& report) {
+PyramidPlanes set_planes(const AnalysisInput& scene, Report& report) {
   std::vector<Eigen::Vector3d> poles;
   for (const auto& j : scene.joints) poles.push_back(geometry::plane_normal_deg(j.dip, j.dipdir));
   const measure::PoleClusters clusters = measure::cluster_poles(poles, {});
@@ -82,8 +82,8 @@ PyramidPlanes set_planes(const AnalysisInput& scene, storage::Report& report) {
   return planes;
 }
 
-storage::ReportMode report_mode(const kinematics::SlidingMode& m, const PyramidPlanes& planes) {
-  storage::ReportMode r;
+ReportMode report_mode(const kinematics::SlidingMode& m, const PyramidPlanes& planes) {
+  ReportMode r;
   r.type = kinematics::mode_name(m.type);
   for (int p : m.planes) r.planes.push_back(planes.names[p]);
   if (m.type != kinematics::ModeType::None) r.direction = m.direction;
@@ -93,7 +93,7 @@ storage::ReportMode report_mode(const kinematics::SlidingMode& m, const PyramidP
 
 }  // namespace
 
-void analyse_pyramids(const AnalysisInput& scene, storage::Report& report) {
+void analyse_pyramids(const AnalysisInput& scene, Report& report) {
   const PyramidPlanes planes =
       scene.joints.size() <= kMaxPyramidJoints ? joint_planes(scene) : set_planes(scene, report);
   // Faces sharing a group are one excavation pyramid; the others one each,
@@ -137,7 +137,7 @@ void analyse_pyramids(const AnalysisInput& scene, storage::Report& report) {
   for (const auto& [name, faces] : pyramids) {
     const geometry::Cone ep = kinematics::excavation_pyramid(faces);
     for (const auto& v : kinematics::analyse_joint_pyramids(planes.specs, ep, options)) {
-      storage::ReportPyramid p;
+      ReportPyramid p;
       p.face = name;
       p.code = v.code_text;
       p.empty = v.empty;
@@ -156,4 +156,4 @@ void analyse_pyramids(const AnalysisInput& scene, storage::Report& report) {
   }
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -1,4 +1,4 @@
-#include "firmware-app/analysis/block_mechanics.h"
+#include "core/analysis/block_mechanics.h"
 
 #include <cmath>
 #include <memory>
@@ -9,7 +9,7 @@
 #include "core/mechanics/equilibrium_path.h"
 #include "core/mechanics/joint_law.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 namespace {
 
@@ -32,7 +32,7 @@ mechanics::JointLawParameters law_parameters(const AnalysisInput& scene,
     p.normal_stiffness = kDefaultCoulombStiffness;
     p.dilation = false;
   } else {
-    const storage::SceneJointLaw& law = *scene.effects.joint_law;
+    const SceneJointLaw& law = *scene.effects.joint_law;
     p.model = law.model == "coulomb"     ? mechanics::JointModel::Coulomb
               : law.model == "grasselli" ? mechanics::JointModel::Grasselli
                                          : mechanics::JointModel::BartonBandis;
@@ -61,8 +61,8 @@ std::string degrees_text(double radians) {
   return s.str();
 }
 
-storage::ReportRigidMode rigid_mode(const mechanics::RigidMode& m) {
-  storage::ReportRigidMode r;
+ReportRigidMode rigid_mode(const mechanics::RigidMode& m) {
+  ReportRigidMode r;
   r.translation = m.translation;
   r.rotation = m.rotation;
   r.kind = m.rotates ? "rotation" : "translation";
@@ -77,7 +77,7 @@ bool scene_wants_mechanics(const AnalysisInput& scene) {
 
 void analyse_block_mechanics(const blocks::Polyhedron& poly, const AnalysisInput& scene,
                              const std::vector<kinematics::JointStrength>& strengths,
-                             const kinematics::Effects& effects, storage::ReportBlock& rb,
+                             const kinematics::Effects& effects, ReportBlock& rb,
                              Progress* progress) {
   mechanics::MechanicsOptions o = mechanics::mechanics_options(scene.analysis.preset);
   if (scene.analysis.contact_density) o.contact_density = *scene.analysis.contact_density;
@@ -101,7 +101,7 @@ void analyse_block_mechanics(const blocks::Polyhedron& poly, const AnalysisInput
     const blocks::MassProperties mass = blocks::mass_properties(poly, scene.density);
     const mechanics::EquilibriumPath r =
         mechanics::equilibrium_path(poly, mass, effects, laws, scene.effects.insitu_stress, o);
-    storage::ReportMechanics m;
+    ReportMechanics m;
     m.fos_limit_point = r.fos_limit_point;
     m.outcome = mechanics::outcome_name(r.outcome);
     m.failure_mode = rigid_mode(r.static_mode);
@@ -128,4 +128,4 @@ void analyse_block_mechanics(const blocks::Polyhedron& poly, const AnalysisInput
   }
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

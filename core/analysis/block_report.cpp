@@ -1,11 +1,11 @@
-#include "firmware-app/analysis/block_report.h"
+#include "core/analysis/block_report.h"
 
-#include "firmware-app/analysis/analyse_rotation.h"
+#include "core/analysis/analyse_rotation.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAnalysis& a,
-                       const storage::SceneAnalysis& options, storage::ReportBlock& rb) {
+                       const SceneAnalysis& options, ReportBlock& rb) {
   // Vertices in the polyhedron's order: rotation reports index them.
   for (int v = 0; v < static_cast<int>(poly.vertices().size()); ++v)
     rb.vertices.push_back(poly.absolute_vertex(v));
@@ -19,7 +19,7 @@ void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAn
   rb.resultant_force = a.force;
   rb.resultant_moment = a.moment;
   if (a.mode) {
-    storage::ReportMode m;
+    ReportMode m;
     m.type = kinematics::mode_name(a.mode->type);
     for (int p : a.mode->planes) m.planes.push_back(poly.planes()[p].name);
     if (a.mode->type != kinematics::ModeType::None) m.direction = a.mode->direction;
@@ -33,4 +33,4 @@ void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAn
   if (a.finiteness.finite.value) analyse_block_rotation(poly, options, rb);
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -1,4 +1,4 @@
-#include "firmware-app/analysis/scene_effects.h"
+#include "core/analysis/scene_effects.h"
 
 #include "core/common/error.h"
 #include "core/common/units.h"
@@ -9,7 +9,7 @@
 #include "core/kinematics/effects/effect_seismic.h"
 #include "core/kinematics/effects/effect_water.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 kinematics::Effects scene_effects(const AnalysisInput& scene) {
   kinematics::Effects effects;
@@ -42,4 +42,4 @@ kinematics::Effects scene_effects(const AnalysisInput& scene) {
   return effects;
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

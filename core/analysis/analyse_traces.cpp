@@ -9,6 +9,12 @@
 #include <set>
 #include <sstream>
 
+#include "core/analysis/block_dynamics.h"
+#include "core/analysis/block_mechanics.h"
+#include "core/analysis/block_report.h"
+#include "core/analysis/scene_analysis.h"
+#include "core/analysis/scene_effects.h"
+#include "core/analysis/trace_map_input.h"
 #include "core/common/error.h"
 #include "core/common/parallel.h"
 #include "core/common/units.h"
@@ -17,14 +23,8 @@
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
 #include "core/geometry/orientation.h"
-#include "firmware-app/analysis/block_dynamics.h"
-#include "firmware-app/analysis/block_mechanics.h"
-#include "firmware-app/analysis/block_report.h"
-#include "firmware-app/analysis/scene_analysis.h"
-#include "firmware-app/analysis/scene_effects.h"
-#include "firmware-app/analysis/trace_map_input.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 namespace {
 
@@ -39,7 +39,7 @@ std::string join(const std::vector<std::string>& parts, const std::string& sep) 
 // block a single plane, the report names the plane by the joint; two parallel
 // discontinuities of one joint set keep their trace names to stay apart.
 void rename_joint_planes(const faces::TraceBlock& b, const faces::TraceNetwork& net,
-                         storage::ReportBlock& rb) {
+                         ReportBlock& rb) {
   std::map<std::string, std::string> display;
   std::map<std::string, int> planes_of_joint;
   for (const auto& p : b.planes)
@@ -65,10 +65,10 @@ void rename_joint_planes(const faces::TraceBlock& b, const faces::TraceNetwork& 
   if (rb.dynamics) rename_dynamics_planes(*rb.dynamics, name);
 }
 
-storage::ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInput& scene,
-                                  const faces::TraceNetwork& net, const Eigen::Vector3d& datum,
-                                  const std::string& id, const kinematics::Effects& effects) {
-  storage::ReportBlock rb;
+ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInput& scene,
+                         const faces::TraceNetwork& net, const Eigen::Vector3d& datum,
+                         const std::string& id, const kinematics::Effects& effects) {
+  ReportBlock rb;
   rb.id = id;
   rb.source = "traces";
   for (int t : b.traces) rb.traces.push_back(scene.traces[t].id);
@@ -121,7 +121,7 @@ storage::ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInpu
 
 }  // namespace
 
-void analyse_trace_blocks(const AnalysisInput& scene, storage::Report& report, Progress& progress) {
+void analyse_trace_blocks(const AnalysisInput& scene, Report& report, Progress& progress) {
   if (scene.patches.empty()) {
     report.notes.push_back(
         "traces: the scene has no surface.patches; blocks from traces need the free surface");
@@ -166,7 +166,7 @@ void analyse_trace_blocks(const AnalysisInput& scene, storage::Report& report, P
   // same numbers as one after the other (core/common/parallel.h).
   std::vector<std::string> ids;
   for (size_t k = 0; k < blocks.size(); ++k) ids.push_back(next_id());
-  std::vector<storage::ReportBlock> reported(blocks.size());
+  std::vector<ReportBlock> reported(blocks.size());
   parallel_for(blocks.size(), [&](size_t k) {
     reported[k] = report_block(blocks[k], scene, net, datum, ids[k], effects);
   });
@@ -175,4 +175,4 @@ void analyse_trace_blocks(const AnalysisInput& scene, storage::Report& report, P
     report.notes.push_back("traces: no closed loop of traces on the surface, so no block");
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

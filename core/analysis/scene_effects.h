@@ -2,12 +2,12 @@
 // The effects a scene lists, as the modules that act on single blocks in
 // limit equilibrium (gravity always): one composition for explicit blocks
 // and blocks from traces.
+#include "core/analysis/analysis_input.h"
 #include "core/kinematics/effects/effect.h"
-#include "firmware-app/analysis/analysis_input.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 // Throws InputError naming the scene file and the effect's field.
 kinematics::Effects scene_effects(const AnalysisInput& scene);
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -7,11 +7,11 @@
 
 #include <Eigen/Core>
 
+#include "core/analysis/analysis_input.h"
 #include "core/faces/free_surface.h"
 #include "core/faces/trace_network.h"
-#include "firmware-app/analysis/analysis_input.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 struct TraceMapInput {
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();  // absolute; the rest is relative to it
@@ -24,4 +24,4 @@ struct TraceMapInput {
 // `input` must have one surface patch or more.
 TraceMapInput trace_map_input(const AnalysisInput& input);
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -1,10 +1,10 @@
-#include "firmware-app/analysis/trace_map_input.h"
+#include "core/analysis/trace_map_input.h"
 
 #include <algorithm>
 
 #include "core/common/units.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 TraceMapInput trace_map_input(const AnalysisInput& input) {
   TraceMapInput map;
@@ -25,7 +25,7 @@ TraceMapInput trace_map_input(const AnalysisInput& input) {
     faces::TraceInput in;
     in.id = t.id;
     if (t.joint) {
-      const storage::SceneJoint* j = input.joint(*t.joint);
+      const SceneJoint* j = input.joint(*t.joint);
       faces::TraceJoint tj;
       tj.index = input.plane_index(j->id);
       tj.id = j->id;
@@ -40,4 +40,4 @@ TraceMapInput trace_map_input(const AnalysisInput& input) {
   return map;
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -1,10 +1,10 @@
-#include "firmware-app/analysis/scene_analysis.h"
+#include "core/analysis/scene_analysis.h"
 
 #include <chrono>
 
-#include "firmware-app/analysis/analyse_rock_mass.h"
+#include "core/analysis/analyse_rock_mass.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 namespace {
 
@@ -17,8 +17,8 @@ double timed_ms(F&& f) {
 
 }  // namespace
 
-storage::Report analyse(const AnalysisInput& scene, Progress& progress) {
-  storage::Report report;
+Report analyse(const AnalysisInput& scene, Progress& progress) {
+  Report report;
   report.effects_simulated = scene.effects.listed();
   // Which analyses run: geometry always; limit equilibrium unless the
   // scene says "none"; the equilibrium path only when asked for.
@@ -57,4 +57,4 @@ storage::Report analyse(const AnalysisInput& scene, Progress& progress) {
   return report;
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis

@@ -5,19 +5,19 @@
 #include <memory>
 #include <sstream>
 
+#include "core/analysis/block_dynamics.h"
+#include "core/analysis/block_mechanics.h"
+#include "core/analysis/block_report.h"
+#include "core/analysis/scene_analysis.h"
+#include "core/analysis/scene_effects.h"
 #include "core/blocks/construction.h"
 #include "core/blocks/convexity.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
-#include "firmware-app/analysis/block_dynamics.h"
-#include "firmware-app/analysis/block_mechanics.h"
-#include "firmware-app/analysis/block_report.h"
-#include "firmware-app/analysis/scene_analysis.h"
-#include "firmware-app/analysis/scene_effects.h"
 
-namespace rockface::app {
+namespace rockface::analysis {
 
 namespace {
 
@@ -57,7 +57,7 @@ std::string vec_text(const Eigen::Vector3d& v) {
   return o.str();
 }
 
-void fill_verdicts(const kinematics::Finiteness& f, storage::ReportBlock& rb) {
+void fill_verdicts(const kinematics::Finiteness& f, ReportBlock& rb) {
   rb.finite = f.finite.value;
   rb.removable = f.removable.value;
   rb.margin_deg = rad_to_deg(f.removable.margin);
@@ -66,7 +66,7 @@ void fill_verdicts(const kinematics::Finiteness& f, storage::ReportBlock& rb) {
 
 }  // namespace
 
-void analyse_scene_blocks(const AnalysisInput& scene, storage::Report& report, Progress& progress) {
+void analyse_scene_blocks(const AnalysisInput& scene, Report& report, Progress& progress) {
   const double uncertainty = deg_to_rad(scene.analysis.orientation_uncertainty_deg);
   const std::vector<ScenePlane> planes = scene_planes(scene);
   const kinematics::Effects effects = scene_effects(scene);
@@ -79,8 +79,8 @@ void analyse_scene_blocks(const AnalysisInput& scene, storage::Report& report, P
 
   for (size_t i = 0; i < scene.blocks.size(); ++i) {
     progress.step("blocks", 0.3 + 0.3 * static_cast<double>(i) / scene.blocks.size());
-    const storage::SceneBlock& sb = scene.blocks[i];
-    storage::ReportBlock rb;
+    const SceneBlock& sb = scene.blocks[i];
+    ReportBlock rb;
     rb.id = sb.id;
     rb.source = "scene";
     rb.code.assign(planes.size(), '2');
@@ -190,4 +190,4 @@ void analyse_scene_blocks(const AnalysisInput& scene, storage::Report& report, P
   }
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::analysis
