@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 
 namespace rockface::analysis {
@@ -88,8 +89,12 @@ void write_mechanics_plots(Report& report, const std::string& report_path) {
   for (ReportBlock& b : report.blocks) {
     if (!b.mechanics || b.mechanics->path.empty()) continue;
     const std::string file = stem + "." + file_safe(b.id) + ".path.png";
-    if (!cv::imwrite(file, draw(*b.mechanics, 360, 240)))
-      throw Error(file + ": cannot write the plot of the equilibrium path");
+    // Encoded in memory, then written whole by the one atomic writer (a full
+    // card leaves no truncated picture under the final name).
+    std::vector<unsigned char> png;
+    if (!cv::imencode(".png", draw(*b.mechanics, 360, 240), png))
+      throw Error(file + ": cannot encode the plot of the equilibrium path");
+    write_bytes_atomically(file, png.data(), png.size());
     const auto slash = file.find_last_of('/');
     b.mechanics->plot = slash == std::string::npos ? file : file.substr(slash + 1);
   }

@@ -6,6 +6,7 @@
 
 #include "core/common/error.h"
 #include "storage/field_report/dynamics_picture.h"
+#include "storage/image_file.h"
 
 namespace rockface::app {
 
@@ -21,7 +22,7 @@ void write_dynamics_pictures(analysis::Report& report, const std::string& report
     const std::string file = stem + "." + id + ".dynamics.png";
     const cv::Mat img = storage::dynamics_picture(b.id, b.vertices, *b.dynamics);
     if (img.empty()) continue;
-    if (!cv::imwrite(file, img)) throw Error(file + ": cannot write the picture of the motion");
+    storage::write_image_file(file, img);
     const auto slash = file.find_last_of('/');
     b.dynamics->picture = slash == std::string::npos ? file : file.substr(slash + 1);
   }

@@ -1,8 +1,8 @@
 #include "firmware-app/analysis/report_files.h"
 
 #include "core/analysis/mechanics_plot.h"
+#include "core/common/atomic_file.h"
 #include "firmware-app/analysis/dynamics_pictures.h"
-#include "storage/export_file.h"
 #include "storage/report.h"
 
 namespace rockface::app {
@@ -11,7 +11,7 @@ void write_report_files(analysis::Report& report, const std::string& report_file
   // The plots first: the report names them.
   analysis::write_mechanics_plots(report, report_file);
   write_dynamics_pictures(report, report_file);
-  storage::write_text_atomically(report_file, storage::report_to_json(report));
+  write_text_atomically(report_file, storage::report_to_json(report));
 }
 
 }  // namespace rockface::app
