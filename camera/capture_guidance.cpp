@@ -1,21 +1,11 @@
 #include "camera/capture_guidance.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 
 namespace rockface::camera {
-
-namespace {
-
-std::string fmt(double v, const char* unit) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.3g %s", v, unit);
-  return buf;
-}
-
-}  // namespace
 
 std::vector<GuidanceNote> check_shot(const ExifInfo& shot, const std::string& label) {
   std::vector<GuidanceNote> notes;
@@ -39,10 +29,10 @@ std::vector<GuidanceNote> check_pair(const ExifInfo& left, const ExifInfo& right
     const double a = *left.focal_length_mm, b = *right.focal_length_mm;
     if (std::abs(a - b) > tol.focal_length_rel * std::max(a, b))
       refusals.push_back({GuidanceNote::Severity::refusal,
-                          "the left shot was taken at " + fmt(a, "mm") +
+                          "the left shot was taken at " + format_significant(a, 3, " mm") +
                               " focal length and the "
                               "right at " +
-                              fmt(b, "mm") +
+                              format_significant(b, 3, " mm") +
                               ": one calibration cannot serve both; set the zoom once "
                               "(tape the ring) and retake the pair"});
   }
@@ -50,15 +40,17 @@ std::vector<GuidanceNote> check_pair(const ExifInfo& left, const ExifInfo& right
     const double a = *left.focus_distance_m, b = *right.focus_distance_m;
     if (std::abs(a - b) > std::max(tol.focus_abs_m, tol.focus_rel * std::max(a, b)))
       refusals.push_back({GuidanceNote::Severity::refusal,
-                          "the camera refocused between the shots (" + fmt(a, "m") + " then " +
-                              fmt(b, "m") +
+                          "the camera refocused between the shots (" +
+                              format_significant(a, 3, " m") + " then " +
+                              format_significant(b, 3, " m") +
                               "): focusing moves the lens and changes the calibration; lock "
                               "focus (or switch the lens to MF) and retake the pair"});
   }
   if (left.f_number && right.f_number && std::abs(*left.f_number - *right.f_number) > 0.05)
     warnings.push_back({GuidanceNote::Severity::warning,
-                        "the aperture changed between the shots (f/" + fmt(*left.f_number, "") +
-                            "then f/" + fmt(*right.f_number, "") +
+                        "the aperture changed between the shots (f/" +
+                            format_significant(*left.f_number, 3, " ") + "then f/" +
+                            format_significant(*right.f_number, 3, " ") +
                             "); use aperture priority with a fixed f-number"});
   if (!left.model.empty() && !right.model.empty() && left.model != right.model)
     warnings.push_back({GuidanceNote::Severity::warning, "the shots come from two camera bodies (" +
@@ -83,11 +75,8 @@ BaseLengthHint base_length_hint(double distance_m) {
   BaseLengthHint h;
   h.min_m = distance_m / 8;
   h.max_m = distance_m / 5;
-  char buf[160];
-  std::snprintf(buf, sizeof buf,
-                "at %.1f m from the face, place the two stations %.2f to %.2f m apart", distance_m,
-                h.min_m, h.max_m);
-  h.text = buf;
+  h.text = "at " + format_fixed(distance_m, 1, " m") + " from the face, place the two stations " +
+           format_fixed(h.min_m, 2) + " to " + format_fixed(h.max_m, 2, " m") + " apart";
   return h;
 }
 

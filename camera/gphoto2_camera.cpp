@@ -4,13 +4,13 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 #include <gphoto2/gphoto2.h>
 #include <opencv2/imgcodecs.hpp>
 
 #include "camera/command_thread.h"
 #include "camera/gphoto2_errors.h"
+#include "core/common/atomic_file.h"
 
 namespace rockface::camera {
 
@@ -261,8 +261,9 @@ struct Gphoto2Camera::State {
     if (!camera) connect();
   }
 
-  // Writes the bytes under the spool folder: a temporary name first, renamed
-  // when complete, so a half-written file never looks like a picture.
+  // Writes the bytes under the spool folder through the one atomic writer
+  // (temporary name, fsync, rename), so a half-written file never looks like
+  // a picture.
   std::string spool(const std::string& name, const char* data, unsigned long size) {
     fs::create_directories(options.spool_dir);
     fs::path target = fs::path(options.spool_dir) / name;
@@ -270,16 +271,13 @@ struct Gphoto2Camera::State {
       target =
           fs::path(options.spool_dir) / (fs::path(name).stem().string() + "-" + std::to_string(k) +
                                          fs::path(name).extension().string());
-    const fs::path part = target.string() + ".part";
-    {
-      std::ofstream out(part, std::ios::binary);
-      out.write(data, static_cast<std::streamsize>(size));
-      out.flush();
-      if (!out)
-        throw CameraError(Kind::other, "Saving " + name + " to " + options.spool_dir +
-                                           " failed: is the tablet's storage full?");
+    try {
+      write_bytes_atomically(target, data, size);
+    } catch (const Error& e) {
+      throw CameraError(Kind::other, "Saving " + name + " to " + options.spool_dir +
+                                         " failed: is the tablet's storage full? (" + e.what() +
+                                         ")");
     }
-    fs::rename(part, target);
     return target.string();
   }
 

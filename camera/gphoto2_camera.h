@@ -4,7 +4,8 @@
 // called from any thread and blocks until its command has run.
 //
 // Nothing captured is lost: every file is written to the spool folder as
-// soon as it is downloaded (to a temporary name, renamed when complete), and
+// soon as it is downloaded (through core/common/atomic_file.h: a temporary
+// name, synced to the card, renamed when complete), and
 // a shot taken but not yet downloaded when the camera fails stays in
 // pending_downloads() until retry_pending() fetches it after a reconnect.
 //

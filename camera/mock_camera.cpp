@@ -12,7 +12,9 @@
 
 #include "camera/camera_error.h"
 #include "camera/synthetic_renderer.h"
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 
 namespace rockface::camera {
 
@@ -63,12 +65,6 @@ std::optional<double> shutter_seconds(const std::string& text) {
   return std::nullopt;
 }
 
-std::string format_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 }  // namespace
 
 std::unique_ptr<MockCamera> MockCamera::replay(const std::string& folder,
@@ -93,7 +89,7 @@ std::unique_ptr<MockCamera> MockCamera::replay(const std::string& folder,
   cam->settings_ = default_settings();
   // Show the settings the first shot was taken with.
   const ExifInfo first = read_exif_file(cam->shots_.front().image);
-  if (first.f_number) cam->find("f-number").value = format_number(*first.f_number);
+  if (first.f_number) cam->find("f-number").value = format_significant(*first.f_number, 6);
   if (first.iso) cam->find("iso").value = std::to_string(*first.iso);
   if (first.flash_fired) cam->find("flashmode").value = *first.flash_fired ? "On" : "Off";
   return cam;
@@ -183,14 +179,12 @@ CapturedFile MockCamera::store(const std::string& name, std::vector<uint8_t> dat
   if (!spool_dir_.empty()) {
     fs::create_directories(spool_dir_);
     const fs::path target = fs::path(spool_dir_) / name;
-    const fs::path part = target.string() + ".part";
-    {
-      std::ofstream out(part, std::ios::binary);
-      out.write(reinterpret_cast<const char*>(data.data()),
-                static_cast<std::streamsize>(data.size()));
-      if (!out) throw CameraError(Kind::other, "Saving " + name + " to " + spool_dir_ + " failed");
+    try {
+      write_bytes_atomically(target, data.data(), data.size());
+    } catch (const Error& e) {
+      throw CameraError(Kind::other,
+                        "Saving " + name + " to " + spool_dir_ + " failed (" + e.what() + ")");
     }
-    fs::rename(part, target);
     f.saved_path = target.string();
   }
   f.data = std::move(data);

@@ -6,8 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
-#include "storage/export_file.h"
 
 namespace rockface::storage {
 

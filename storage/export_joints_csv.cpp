@@ -1,12 +1,12 @@
 #include "storage/export_joints_csv.h"
 
 #include <cmath>
-#include <cstdio>
 #include <map>
 
 #include "core/common/error.h"
 
-#include "storage/export_file.h"
+#include "core/common/atomic_file.h"
+#include "core/common/number_format.h"
 #include "storage/project_store.h"
 
 namespace rockface::storage {
@@ -21,12 +21,6 @@ std::string csv_field(const std::string& text) {
     quoted += c;
   }
   return quoted + "\"";
-}
-
-std::string fixed_decimals(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-  return text;
 }
 
 // One record of RFC 4180 CSV (quoted fields may hold commas, quotes and
@@ -121,17 +115,17 @@ void write_joints_csv(std::ostream& out, const std::vector<Joint>& joints,
   for (const auto& j : joints) {
     // Angles to 1e-3 degree and positions to 0.1 mm: finer than any field
     // measurement, so the CSV loses nothing a stereonet program could use.
-    out << csv_field(j.label) << ',' << fixed_decimals(j.dip_deg, 3) << ','
-        << fixed_decimals(j.dipdir_deg, 3) << ',' << csv_field(j.set_label) << ',';
+    out << csv_field(j.label) << ',' << format_fixed(j.dip_deg, 3) << ','
+        << format_fixed(j.dipdir_deg, 3) << ',' << csv_field(j.set_label) << ',';
     if (j.point) {
       const Eigen::Vector3d p = datum + *j.point;
-      out << fixed_decimals(p.x(), 4) << ',' << fixed_decimals(p.y(), 4) << ','
-          << fixed_decimals(p.z(), 4);
+      out << format_fixed(p.x(), 4) << ',' << format_fixed(p.y(), 4) << ','
+          << format_fixed(p.z(), 4);
     } else {
       out << ",,";
     }
     out << ',' << j.visit_id << ',' << csv_field(j.source) << ',' << csv_field(j.type) << ',';
-    if (j.persistence_m) out << fixed_decimals(*j.persistence_m, 3);
+    if (j.persistence_m) out << format_fixed(*j.persistence_m, 3);
     out << '\n';
   }
 }

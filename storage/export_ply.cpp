@@ -1,7 +1,7 @@
 #include "storage/export_ply.h"
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
-#include "storage/export_file.h"
 #include "storage/project_store.h"
 
 namespace rockface::storage {

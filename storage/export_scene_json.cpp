@@ -2,8 +2,8 @@
 
 #include <map>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
-#include "storage/export_file.h"
 #include "storage/project_store.h"
 
 namespace rockface::storage {

@@ -4,19 +4,14 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
+
+#include "core/common/number_format.h"
 
 namespace rockface::storage {
 
 namespace {
 
 constexpr double kWordsPi = 3.14159265358979323846;
-
-std::string words_fixed(double v, int digits) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
 
 // The upward unit normal of a plane given by dip and dip direction (deg).
 std::array<double, 3> plane_normal_of(double dip_deg, double dipdir_deg) {
@@ -76,12 +71,12 @@ std::vector<std::string> face_outline_words(const std::vector<Measurement>& meas
           apart = std::max(apart, angle_between_deg(*p[i], *p[j]));
     }
     if (p.size() == 2 && known)
-      line += ", " + words_fixed(apart, 1) + "° apart";
+      line += ", " + format_fixed(apart, 1) + "° apart";
     else if (p.size() > 2 && known)
-      line += ", bending up to " + words_fixed(apart, 1) + "°";
+      line += ", bending up to " + format_fixed(apart, 1) + "°";
     line += ", RMS ";
     for (std::size_t i = 0; i < p.size(); ++i)
-      line += (i ? " / " : "") + words_fixed(p[i]->fit_rms_m * 1000, 0) + " mm";
+      line += (i ? " / " : "") + format_fixed(p[i]->fit_rms_m * 1000, 0) + " mm";
     std::vector<std::string> notes;
     for (const auto* m : p)
       if (!m->note.empty() && std::find(notes.begin(), notes.end(), m->note) == notes.end())

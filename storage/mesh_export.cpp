@@ -2,10 +2,8 @@
 
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 
-#include "core/common/error.h"
-#include "storage/export_file.h"
+#include "core/common/atomic_file.h"
 #include "storage/ply_writer.h"
 
 namespace rockface::storage {
@@ -36,10 +34,8 @@ void write_obj(const std::filesystem::path& path, const photogrammetry::SurfaceM
     if (!o.texture_file.empty()) {
       std::filesystem::path mtl = path;
       mtl.replace_extension(".mtl");
-      std::ofstream m(mtl, std::ios::trunc);
-      m << "newmtl photo\nKa 1 1 1\nKd 1 1 1\nmap_Kd " << o.texture_file << "\n";
-      m.flush();
-      if (!m) throw Error(mtl.string() + ": cannot write the file (disk full or no permission?)");
+      write_text_atomically(mtl,
+                            "newmtl photo\nKa 1 1 1\nKd 1 1 1\nmap_Kd " + o.texture_file + "\n");
       out << "mtllib " << mtl.filename().string() << "\nusemtl photo\n";
     }
     char line[160];

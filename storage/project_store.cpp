@@ -12,6 +12,7 @@
 #include <ctime>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "storage/project_schema.h"
 #include "storage/project_store_rows.h"
 
@@ -342,10 +343,9 @@ void ProjectStore::update_project(const ProjectInfo& info) {
       .bind(4, info.datum.z())
       .bind(5, info.datum_crs);
   st.run();
-  char detail[160];
-  std::snprintf(detail, sizeof(detail), "datum %.3f %.3f %.3f", info.datum.x(), info.datum.y(),
-                info.datum.z());
-  insert_log(std::nullopt, "project changed", info.name + ", " + detail);
+  insert_log(std::nullopt, "project changed",
+             info.name + ", datum " + format_fixed(info.datum.x(), 3) + " " +
+                 format_fixed(info.datum.y(), 3) + " " + format_fixed(info.datum.z(), 3));
   tx.commit();
 }
 

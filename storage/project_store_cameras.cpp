@@ -2,6 +2,7 @@
 #include "storage/project_store.h"
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "storage/project_store_rows.h"
 
 namespace rockface::storage {
@@ -108,10 +109,11 @@ RecordId ProjectStore::save_calibration(const Calibration& calibration) {
       .bind(19, calibration.method);
   st.run();
   const RecordId id = db_.last_insert_id();
-  char detail[200];
-  std::snprintf(detail, sizeof(detail), "calibration %lld: %dx%d fx %.1f fy %.1f rms %.3f px",
-                static_cast<long long>(id), k.width, k.height, k.fx, k.fy, k.rms_px);
-  insert_log(std::nullopt, "calibration saved", detail);
+  insert_log(std::nullopt, "calibration saved",
+             "calibration " + std::to_string(static_cast<long long>(id)) + ": " +
+                 std::to_string(k.width) + "x" + std::to_string(k.height) + " fx " +
+                 format_fixed(k.fx, 1) + " fy " + format_fixed(k.fy, 1) + " rms " +
+                 format_fixed(k.rms_px, 3, " px"));
   tx.commit();
   return id;
 }

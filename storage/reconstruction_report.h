@@ -4,7 +4,7 @@
 // registered, and how accurate it is predicted and measured to be.
 #include <string>
 
-#include "core/photogrammetry/estimators/multi_image_registration.h"
+#include "core/photogrammetry/reconstruction/multi_image_registration.h"
 #include "core/photogrammetry/reconstruction/reconstruction.h"
 
 namespace rockface::storage {

@@ -1,13 +1,13 @@
 #include "ui/block_summary.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <optional>
 
 #include <Eigen/Core>
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "ui/block_verdict.h"
@@ -16,12 +16,6 @@
 namespace rockface::ui {
 
 namespace {
-
-std::string printed(const char* fmt, double a, double b = 0, double c = 0) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c);
-  return buf;
-}
 
 const nlohmann::json* field(const nlohmann::json& obj, const char* key) {
   if (!obj.is_object()) return nullptr;
@@ -107,7 +101,7 @@ void add_remote_axis(std::vector<std::string>& lines, const nlohmann::json& repo
   if (starts && *starts == 0)
     line = "Remote axis: not searched, the block already rotates about a corner or an edge";
   else if (starts && hits)
-    line += printed(" (%.0f of %.0f starts)", *hits, *starts);
+    line += " (" + format_fixed(*hits, 0) + " of " + format_fixed(*starts, 0) + " starts)";
   lines.push_back(line);
 }
 
@@ -116,7 +110,7 @@ void add_mechanics(std::vector<std::string>& lines, const nlohmann::json& report
   if (!m) return;
   std::string line = "Equilibrium path: ";
   if (const auto fos = number_field(*m, "fos_limit_point"))
-    line += printed("limit point at load factor %.2f", *fos);
+    line += "limit point at load factor " + format_fixed(*fos, 2);
   else if (const auto* outcome = field(*m, "outcome"); outcome && outcome->is_string())
     line += outcome->get<std::string>();  // e.g. "no limit point within the step budget"
   else
@@ -143,8 +137,8 @@ std::vector<std::string> block_summary(const storage::BlockResult& b,
   add_mode(lines, b, report);
   const auto volume = number_field(report, "volume"), mass = number_field(report, "mass");
   if (volume && mass)
-    lines.push_back("Volume " + format::text(format::Volume{*volume}) +
-                    printed(", mass %.2f t", *mass / 1000.0));
+    lines.push_back("Volume " + format::text(format::Volume{*volume}) + ", mass " +
+                    format_fixed(*mass / 1000.0, 2, " t"));
   else if (volume)
     lines.push_back("Volume " + format::text(format::Volume{*volume}));
   add_rotation(lines, report);

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <map>
 
+#include "core/common/number_format.h"
+
 namespace rockface::ui::format {
 
 namespace {
@@ -21,12 +23,8 @@ std::string printf_text(const char* fmt, double v) {
 std::string fixed(double v, int decimals, const char* unit = "") {
   const double a = std::abs(v);
   const int whole = a < 1 ? 1 : static_cast<int>(std::floor(std::log10(a))) + 1;
-  char buf[64];
-  if (whole > 6)
-    std::snprintf(buf, sizeof buf, "%.3g%s", v, unit);
-  else
-    std::snprintf(buf, sizeof buf, "%.*f%s", std::max(0, std::min(decimals, 6 - whole)), v, unit);
-  return buf;
+  if (whole > 6) return format_significant(v, 3, unit);
+  return format_fixed(v, std::max(0, std::min(decimals, 6 - whole)), unit);
 }
 
 // -0.0 and rounding to zero of a small negative value print as "-0.0".

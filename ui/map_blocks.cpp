@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 
 #include <imgui.h>
 
+#include "core/common/number_format.h"
 #include "ui/app_state.h"
 #include "ui/format.h"
 #include "ui/overlay_text.h"
@@ -51,9 +51,7 @@ std::shared_ptr<const MapVerdicts> update_map_blocks(const FieldServices& servic
 }
 
 std::string map_blocks_summary(const MapVerdicts& v) {
-  char ms[32];
-  std::snprintf(ms, sizeof ms, "%.0f ms", v.milliseconds);
-  return blocks_in_words(v) + ", updated in " + ms;
+  return blocks_in_words(v) + ", updated in " + format_fixed(v.milliseconds, 0, " ms");
 }
 
 void refresh_map_blocks(AppState& app) {

@@ -1,11 +1,11 @@
 #include "ui/overlay_photo_targets.h"
 
 #include <algorithm>
-#include <cstdio>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/common/number_format.h"
 #include "ui/overlay_text.h"
 #include "ui/widgets.h"
 #include "ui/widgets_text.h"
@@ -78,9 +78,9 @@ void PhotoTargetsView::draw(storage::RecordId model_id, const storage::Model& mo
     draw->AddCircle(c, r + 2 * scale, IM_COL32(0, 0, 0, 255), 32, 2 * scale);
     draw->AddCircle(c, r, kTargetColour, 32, 3 * scale);
     rings_.emplace_back(c, r);
-    char text[96];
-    std::snprintf(text, sizeof text, "%s target (%.0f, %.0f) px", t.which.c_str(), t.pixel.x(),
-                  t.pixel.y());
+    const std::string label = t.which + " target (" + format_fixed(t.pixel.x(), 0) + ", " +
+                              format_fixed(t.pixel.y(), 0) + ") px";
+    const char* text = label.c_str();
     // Beside the ring, on the side with room for the words.
     if (const auto at = label_beside(c, r + 2 * scale, ImGui::CalcTextSize(text), area))
       draw_text(draw, *at, kTargetColour, text, area, TextHalo::dark);

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/number_format.h"
 #include "ui/overlay_text.h"
 
 namespace rockface::ui {
@@ -81,11 +81,10 @@ DrawnRect draw_scale_bar(const ModelView& view, float scale) {
   draw->AddRectFilled(ImVec2(at.x - 1, y - h - 1), ImVec2(at.x + px + 1, y + 1),
                       IM_COL32(0, 0, 0, 255));
   draw->AddRectFilled(ImVec2(at.x, y - h), ImVec2(at.x + px / 2, y), IM_COL32(255, 255, 255, 255));
-  char text[64];
-  if (length >= 1)
-    std::snprintf(text, sizeof text, "%g m (at the middle of the view)", length);
-  else
-    std::snprintf(text, sizeof text, "%g mm (at the middle of the view)", length * 1000);
+  const std::string label = (length >= 1 ? format_significant(length, 6, " m")
+                                         : format_significant(length * 1000, 6, " mm")) +
+                            " (at the middle of the view)";
+  const char* text = label.c_str();
   const ImVec2 text_at(at.x, y - h - ImGui::GetTextLineHeight() - 2 * scale);
   draw_text(draw, text_at, IM_COL32(255, 255, 255, 255), text, view.text_area(), TextHalo::dark);
   drawn.add_text(text_at, text);

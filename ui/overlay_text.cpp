@@ -1,8 +1,8 @@
 #include "ui/overlay_text.h"
 
 #include <algorithm>
-#include <cstdio>
 
+#include "core/common/number_format.h"
 #include "ui/widgets_text.h"
 
 namespace rockface::ui {
@@ -60,10 +60,8 @@ std::string placement_problem(const PlacedText& p, float slack_px) {
   std::string why;
   auto add = [&](const char* side, float px) {
     if (px <= slack_px) return;
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "%s%.0f px past the %s's %s edge", why.empty() ? "" : "; ", px,
-                  p.area.name, side);
-    why += buf;
+    why += std::string(why.empty() ? "" : "; ") + format_fixed(px, 0, " px") + " past the " +
+           p.area.name + "'s " + side + " edge";
   };
   add("left", p.area.min.x - p.min.x);
   add("top", p.area.min.y - p.min.y);

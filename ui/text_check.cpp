@@ -1,7 +1,8 @@
 #include "ui/text_check.h"
 
 #include <cctype>
-#include <cstdio>
+
+#include "core/common/number_format.h"
 
 namespace rockface::ui {
 
@@ -86,9 +87,7 @@ std::string text_problem(const DrawnText& d, float slack_px) {
   std::string why;
   auto add = [&](const std::string& s) { why += (why.empty() ? "" : "; ") + s; };
   if (d.width > d.available + slack_px) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "%.0f px wide in %.0f px", d.width, d.available);
-    add(buf);
+    add(format_fixed(d.width, 0, " px") + " wide in " + format_fixed(d.available, 0, " px"));
   }
   if (looks_like_key(d.text)) add("looks like a report key");
   if (looks_like_json(d.text)) add("looks like JSON");

@@ -1,10 +1,10 @@
 #include "ui/tunnel_panel.h"
 
-#include <cstdio>
 #include <memory>
 
 #include <imgui.h>
 
+#include "core/common/number_format.h"
 #include "ui/app_state.h"
 #include "ui/format.h"
 #include "ui/widgets_controls.h"
@@ -12,12 +12,6 @@
 namespace rockface::ui {
 
 namespace {
-
-std::string fixed_digits(double v, int decimals) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
-}
 
 const char* method_words(storage::VisitPlacement::Method m) {
   return m == storage::VisitPlacement::Method::ground_control
@@ -128,8 +122,8 @@ void draw_tunnel_panel(AppState& app) {
     return;
   }
   const auto& r = *t.record;
-  const std::string from = r.stations.empty() ? "?" : fixed_digits(r.stations.front().chainage, 1);
-  const std::string to = r.stations.empty() ? "?" : fixed_digits(r.stations.back().chainage, 1);
+  const std::string from = r.stations.empty() ? "?" : format_fixed(r.stations.front().chainage, 1);
+  const std::string to = r.stations.empty() ? "?" : format_fixed(r.stations.back().chainage, 1);
   heading("Tunnel " + r.name);
   paragraph("Chainage " + from + " to " + to + " m, drive " + tunnel::drive_name(r.drive));
   paragraph("Design profile " + format::text(format::Length{r.profile.perimeter()}) + " around, " +
@@ -137,7 +131,7 @@ void draw_tunnel_panel(AppState& app) {
             format::text(format::Length{r.underbreak_tolerance_m}));
   if (t.placement) {
     const auto& p = *t.placement;
-    paragraph("This visit: face at chainage " + fixed_digits(p.chainage, 2) + " m, " +
+    paragraph("This visit: face at chainage " + format_fixed(p.chainage, 2) + " m, " +
               format::text(format::Length{std::abs(p.offset_m)}) + " " +
               (p.offset_m >= 0 ? "right" : "left") + " of the axis; placed by " +
               method_words(p.method) + ".");

@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "core/common/error.h"
+#include "storage/image_file.h"
 #include "ui/ui_driver_scroll.h"
 
 namespace rockface::ui {
@@ -145,8 +144,7 @@ void UiDriver::run(const ScriptStep& step, const std::filesystem::path& dir,
     case ScriptStep::Kind::screenshot: {
       std::filesystem::create_directories(dir);
       const auto file = dir / (step.label + ".png");
-      if (!cv::imwrite(file.string(), screenshot()))
-        throw Error(file.string() + ": cannot write the screenshot");
+      storage::write_image_file(file, screenshot());
       break;
     }
   }

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 
 namespace rockface::ui {
@@ -39,9 +40,7 @@ void save_ui_settings(const std::filesystem::path& file, const UiSettings& setti
   if (file.empty()) return;
   std::error_code ec;
   std::filesystem::create_directories(file.parent_path(), ec);
-  std::ofstream out(file);
-  out << nlohmann::json{{"theme", theme_name(settings.theme)}}.dump(2) << "\n";
-  if (!out) throw Error(file.string() + ": cannot write the tablet's settings");
+  write_text_atomically(file, nlohmann::json{{"theme", theme_name(settings.theme)}}.dump(2) + "\n");
 }
 
 }  // namespace rockface::ui

@@ -1,9 +1,10 @@
 #include "ui/widgets.h"
 
 #include <algorithm>
-#include <cstdio>
 
 #include <imgui_internal.h>
+
+#include "core/common/number_format.h"
 
 namespace rockface::ui {
 
@@ -122,10 +123,9 @@ std::vector<std::string> small_touch_targets(const TouchTargets& targets, float 
     if (!r.touch || !r.visible) continue;
     const float w = r.max.x - r.min.x, h = r.max.y - r.min.y;
     if (std::min(w, h) + slack_px >= least) continue;
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "%.0f x %.0f px, under 9 mm (%.0f px at %.0f dpi)", w, h, least,
-                  targets.dpi());
-    out.push_back("touch target \"" + label + "\" is " + buf);
+    out.push_back("touch target \"" + label + "\" is " + format_fixed(w, 0) + " x " +
+                  format_fixed(h, 0, " px") + ", under 9 mm (" + format_fixed(least, 0, " px") +
+                  " at " + format_fixed(targets.dpi(), 0, " dpi") + ")");
   }
   return out;
 }

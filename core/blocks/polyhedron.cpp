@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <sstream>
 #include <utility>
 
 #include <Eigen/Geometry>
 
 #include "core/blocks/tolerances.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 
 namespace rockface::blocks {
 
@@ -25,10 +25,7 @@ std::string face_name(const std::vector<BlockPlane>& planes, const std::vector<F
 }
 
 std::string metres(double v) {
-  std::ostringstream o;
-  o.precision(3);
-  o << v << " m";
-  return o.str();
+  return format_significant(v, 3, " m");
 }
 
 }  // namespace

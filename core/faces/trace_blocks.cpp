@@ -12,6 +12,7 @@
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/faces/tolerances.h"
+#include "core/faces/trace_block_phases.h"
 #include "core/geometry/cross2.h"
 
 namespace rockface::faces {
@@ -96,16 +97,6 @@ std::vector<std::vector<Eigen::Vector2d>> cut_by_planes(const SurfacePatch& P,
   }
   return cells;
 }
-
-struct Piece {
-  std::vector<HalfSpace> sides;  // one per block plane
-  bool may_be_empty = false;     // a cell of island planes: empty ones are expected
-  std::string code() const {
-    std::string c;
-    for (auto s : sides) c += geometry::code_digit(s);
-    return c;
-  }
-};
 
 // The block plane a polyhedron plane came from (names are unique within a
 // kind: trace ids, patch ids).
@@ -213,348 +204,482 @@ kinematics::Finiteness union_finiteness(const CellUnion& u, double shut_margin,
 
 }  // namespace
 
+namespace trace_block_phases {
+
+std::string Piece::code() const {
+  std::string c;
+  for (auto s : sides) c += geometry::code_digit(s);
+  return c;
+}
+
+std::vector<int> neighbouring_patches(const FreeSurface& surface, const SurfaceLoops& loops,
+                                      const TraceNetwork& net, const SurfaceRegion& region,
+                                      double tol) {
+  const auto& patches = surface.patches();
+  std::vector<Eigen::Vector3d> footprint;
+  for (int f : region.faces)
+    for (int h : loops.faces()[f].half_edges) footprint.push_back(net.vertices()[net.origin(h)]);
+  const std::vector<int>& covered = region.patches;
+  std::vector<int> extra;
+  auto shares_corner = [&](int a, int b) {
+    for (const auto& p : patches[a].polygon)
+      for (const auto& q : patches[b].polygon)
+        if ((p - q).norm() <= tol) return true;
+    return false;
+  };
+  for (size_t q = 0; q < patches.size(); ++q) {
+    const int qi = static_cast<int>(q);
+    if (std::find(covered.begin(), covered.end(), qi) != covered.end()) continue;
+    bool next_to = false, salient = true, behind = true;
+    for (int p : covered) {
+      next_to = next_to || shares_corner(p, qi);
+      salient = salient && !surface.rock_is_union(p, qi, tol);
+    }
+    for (const auto& x : footprint) behind = behind && patches[q].height(x) <= tol;
+    if (next_to && salient && behind) extra.push_back(qi);
+  }
+  return extra;
+}
+
+LoopPlanes loop_planes(const FreeSurface& surface, const TraceNetwork& net,
+                       const SurfaceLoops& loops, const SurfaceRegion& region,
+                       const TraceBlockOptions& options) {
+  const auto& patches = surface.patches();
+  LoopPlanes out;
+  // The joints of the loop, by name.
+  std::vector<int> groups = region.groups;
+  std::sort(groups.begin(), groups.end(),
+            [&](int a, int b) { return net.groups()[a].name < net.groups()[b].name; });
+  out.uncertainty = options.orientation_uncertainty;
+  for (int g : groups) {
+    const PlaneGroup& pg = net.groups()[g];
+    out.plane_of_group[g] = static_cast<int>(out.planes.size());
+    out.planes.push_back(
+        {pg.name, blocks::PlaneKind::Joint, pg.plane.plane, g, -1,
+         pg.joint && pg.plane.source == TracePlaneSource::Joint ? pg.joint->index : -1});
+    if (pg.plane.source == TracePlaneSource::Fitted) {
+      out.uncertainty = std::max(out.uncertainty, pg.plane.uncertainty);
+      out.notes.push_back("plane " + pg.name + " is fitted to its trace (uncertainty " +
+                          fmt3(rad_to_deg(pg.plane.uncertainty)) + " degrees)");
+    }
+  }
+  out.n_joints = static_cast<int>(out.planes.size());
+  // The covered patches, then their neighbours.
+  out.covered = region.patches;
+  const std::vector<int> extra =
+      neighbouring_patches(surface, loops, net, region, options.snap_tolerance);
+  for (int p : out.covered)
+    out.planes.push_back({patches[p].id, blocks::PlaneKind::FreeFace, patches[p].plane, -1, p});
+  for (int p : extra)
+    out.planes.push_back({patches[p].id, blocks::PlaneKind::FreeFace, patches[p].plane, -1, p});
+  return out;
+}
+
+LoopShape loop_shape(const FreeSurface& surface, const TraceNetwork& net, const SurfaceLoops& loops,
+                     const SurfaceRegion& region, const LoopPlanes& planes, double tol) {
+  const auto& patches = surface.patches();
+  const auto& edges = net.edges();
+  LoopShape out;
+  out.joint_sides.resize(static_cast<size_t>(planes.n_joints));
+  out.reflex = region.loops.size() > 1;
+  for (const auto& loop : region.loops)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const int h = loop[i], nx = loop[(i + 1) % loop.size()];
+      const int g = edges[h / 2].group;
+      const int patch = loops.faces()[loops.half_edge_face()[h]].patch;
+      const Eigen::Vector3d d = net.vertices()[net.target(h)] - net.vertices()[net.origin(h)];
+      const Eigen::Vector3d left = patches[patch].outward.cross(d);
+      const double s = net.groups()[g].plane.plane.normal.dot(left);
+      out.joint_sides[planes.plane_of_group.at(g)].insert(s > 0 ? HalfSpace::Upper
+                                                                : HalfSpace::Lower);
+      if (edges[nx / 2].group == g) continue;  // the same joint goes on: no corner
+      const AroundVertex& av = net.around()[net.target(h)];
+      const double corner = sweep_ccw(av.angle[net.slot(nx)], av.angle[net.slot(h ^ 1)], av.total);
+      if (corner > std::numbers::pi + kReflexCornerRad) out.reflex = true;
+    }
+  const std::vector<int>& covered = planes.covered;
+  for (size_t a = 0; a < covered.size(); ++a)
+    for (size_t b = 0; b < covered.size(); ++b)
+      if (a != b && surface.rock_is_union(covered[a], covered[b], tol)) out.rock_convex = false;
+  for (const auto& s : out.joint_sides) out.one_side = out.one_side && s.size() == 1;
+  return out;
+}
+
+// Their joints persist behind the island and bound the island's own block;
+// the block around it is the outer loop's block without that one (cut by
+// the island's planes into cells, all kept but the island's), so that it
+// stays one solid without the pinch two crossing island joints would
+// otherwise leave where they meet inside the rock.
+Islands island_joints(const TraceNetwork& net, const SurfaceRegion& region,
+                      const LoopPlanes& planes) {
+  const auto& edges = net.edges();
+  Islands out;
+  out.island.assign(static_cast<size_t>(planes.n_joints), false);
+  if (region.loops.size() > 1) {
+    std::set<int> outer_groups;
+    for (int h : region.loops.front()) outer_groups.insert(edges[h / 2].group);
+    for (int j = 0; j < planes.n_joints; ++j)
+      if (!outer_groups.count(planes.planes[j].group)) {
+        out.island[j] = true;
+        out.planes.push_back(j);
+      }
+  }
+  return out;
+}
+
+Piece convex_piece(const FreeSurface& surface, const LoopPlanes& planes, const LoopShape& shape) {
+  const int n_planes = static_cast<int>(planes.planes.size());
+  Piece p;
+  for (int j = 0; j < planes.n_joints; ++j) p.sides.push_back(*shape.joint_sides[j].begin());
+  for (int k = planes.n_joints; k < n_planes; ++k)
+    p.sides.push_back(surface.patches()[planes.planes[k].patch].rock_side);
+  return p;
+}
+
+}  // namespace trace_block_phases
+
+namespace {
+
+using trace_block_phases::LoopPlanes;
+using trace_block_phases::Piece;
+
+HalfSpace side_of(const geometry::Plane& pl, const Eigen::Vector3d& x) {
+  return pl.signed_distance(x) > 0 ? HalfSpace::Upper : HalfSpace::Lower;
+}
+
+// The pieces found behind a non-convex loop so far, each code once.
+class PieceCollector {
+ public:
+  PieceCollector(const FreeSurface& surface, const LoopPlanes& planes, double tol)
+      : surface_(surface), planes_(planes), tol_(tol) {}
+
+  // The piece of the joints' cell around cell_centre, on the rock side of
+  // the patches that contain `at` or lie above it.
+  void add(const Eigen::Vector3d& cell_centre, const Eigen::Vector3d& at,
+           const std::vector<int>& containing) {
+    const auto& patches = surface_.patches();
+    const int n_joints = planes_.n_joints;
+    const int n_planes = static_cast<int>(planes_.planes.size());
+    Piece p;
+    for (int j = 0; j < n_joints; ++j)
+      p.sides.push_back(side_of(planes_.planes[j].plane, cell_centre));
+    for (int k = n_joints; k < n_planes; ++k) {
+      const SurfacePatch& Q = patches[planes_.planes[k].patch];
+      const bool contains = std::find(containing.begin(), containing.end(),
+                                      planes_.planes[k].patch) != containing.end();
+      const bool rock = contains || Q.height(at) <= tol_;
+      p.sides.push_back(rock ? Q.rock_side : opposite(Q.rock_side));
+    }
+    if (seen_.insert(p.code()).second) pieces_.push_back(p);
+  }
+  std::vector<Piece>& pieces() { return pieces_; }
+
+ private:
+  const FreeSurface& surface_;
+  const LoopPlanes& planes_;
+  double tol_;
+  std::set<std::string> seen_;
+  std::vector<Piece> pieces_;
+};
+
+// The region's faces on one patch (2D, patch frame): the region proper, and
+// the outsides of islands (what they enclose is the islands' block).
+struct RegionOnPatch {
+  std::vector<std::vector<Eigen::Vector2d>> region, holes;
+};
+RegionOnPatch region_on_patch(const TraceNetwork& net, const SurfaceLoops& loops,
+                              const SurfaceRegion& region, int pi, const SurfacePatch& P,
+                              bool has_islands) {
+  RegionOnPatch out;
+  for (int f : region.faces) {
+    if (loops.faces()[f].patch != pi) continue;
+    std::vector<Eigen::Vector2d> poly;
+    for (int h : loops.faces()[f].half_edges) poly.push_back(P.to2d(net.vertices()[net.origin(h)]));
+    const bool hole = has_islands && loops.faces()[f].area <= 0;
+    (hole ? out.holes : out.region).push_back(std::move(poly));
+  }
+  return out;
+}
+
+Eigen::Vector2d centroid_of(const std::vector<Eigen::Vector2d>& cell) {
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (const auto& x : cell) c += x;
+  c /= static_cast<double>(cell.size());
+  return c;
+}
+
+// The island planes' sides behind each hole: the patch cut by the island
+// joints; a hole's edges are such cuts, so each cell lies wholly inside or
+// outside a hole.
+void sides_behind_holes(const SurfacePatch& P, const std::vector<TraceBlockPlane>& planes,
+                        const std::vector<int>& island_planes,
+                        const std::vector<std::vector<Eigen::Vector2d>>& holes,
+                        std::set<std::vector<HalfSpace>>& island_cells) {
+  for (const auto& cell : cut_by_planes(P, planes, island_planes)) {
+    const Eigen::Vector2d c = centroid_of(cell);
+    int w = 0;
+    for (const auto& poly : holes) w += winding_number(poly, c);
+    if (w == 0) continue;
+    std::vector<HalfSpace> sides;
+    for (int j : island_planes) sides.push_back(side_of(planes[j].plane, P.to3d(c)));
+    island_cells.insert(sides);
+  }
+}
+
+// The thickest cell inside the region so far (its piece is the block when
+// every cell is thinner than the tolerance).
+struct ThickestCell {
+  double thickness = -1;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  int patch = -1;
+};
+
+// The pieces behind the cells of the outer joints on patch pi that lie in
+// the region, and behind their edges and corners that lie on other covered
+// patches too.
+void pieces_behind_cells(const SurfacePatch& P, int pi,
+                         const std::vector<std::vector<Eigen::Vector2d>>& cells,
+                         const std::vector<std::vector<Eigen::Vector2d>>& region_polys,
+                         const FreeSurface& surface, const std::vector<int>& covered, double tol,
+                         PieceCollector& collect, ThickestCell& thickest) {
+  const auto& patches = surface.patches();
+  for (const auto& cell : cells) {
+    const Eigen::Vector2d c = centroid_of(cell);
+    int w = 0;
+    for (const auto& poly : region_polys) w += winding_number(poly, c);
+    if (w == 0) continue;
+    const double thickness = 2 * area_of(cell) / perimeter_of(cell);
+    const Eigen::Vector3d c3 = P.to3d(c);
+    if (thickness > thickest.thickness) {
+      thickest.thickness = thickness;
+      thickest.centre = c3;
+      thickest.patch = pi;
+    }
+    if (thickness < kThinCellInTolerances * tol) continue;
+    collect.add(c3, c3, {pi});
+    // Behind edges and corners of the cell that lie on other covered patches too.
+    for (size_t k = 0; k < cell.size(); ++k) {
+      for (const Eigen::Vector3d& x :
+           {P.to3d(cell[k]), P.to3d((cell[k] + cell[(k + 1) % cell.size()]) / 2)}) {
+        std::vector<int> containing;
+        for (int q : covered) {
+          const SurfacePatch& Q = patches[q];
+          if (std::abs(Q.height(x)) <= tol && Q.contains(Q.to2d(x), tol)) containing.push_back(q);
+        }
+        if (containing.size() >= 2) collect.add(c3, x, containing);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+namespace trace_block_phases {
+
+std::vector<Piece> cut_out_islands(const std::vector<Piece>& pieces,
+                                   const std::vector<int>& island_planes,
+                                   const std::set<std::vector<HalfSpace>>& behind_islands) {
+  std::vector<Piece> cut;
+  std::set<std::string> seen;
+  const unsigned combos = 1u << island_planes.size();
+  for (const Piece& outer : pieces)
+    for (unsigned m = 0; m < combos; ++m) {
+      std::vector<HalfSpace> sides;
+      for (size_t i = 0; i < island_planes.size(); ++i)
+        sides.push_back(m >> i & 1u ? HalfSpace::Lower : HalfSpace::Upper);
+      if (behind_islands.count(sides)) continue;
+      Piece p = outer;
+      for (size_t i = 0; i < island_planes.size(); ++i) p.sides[island_planes[i]] = sides[i];
+      p.may_be_empty = true;
+      if (seen.insert(p.code()).second) cut.push_back(std::move(p));
+    }
+  return cut;
+}
+
+NonConvexPieces nonconvex_pieces(const FreeSurface& surface, const TraceNetwork& net,
+                                 const SurfaceLoops& loops, const SurfaceRegion& region,
+                                 const LoopPlanes& planes, const Islands& islands, double tol) {
+  const auto& patches = surface.patches();
+  PieceCollector collect(surface, planes, tol);
+  std::set<std::vector<HalfSpace>> island_cells;  // sides of island planes behind an island
+  ThickestCell thickest;
+  std::vector<int> outer_planes;  // the outer block's cells first
+  for (int j = 0; j < planes.n_joints; ++j)
+    if (!islands.island[j]) outer_planes.push_back(j);
+  for (int pi : planes.covered) {
+    const SurfacePatch& P = patches[pi];
+    const auto cells = cut_by_planes(P, planes.planes, outer_planes);
+    const RegionOnPatch on = region_on_patch(net, loops, region, pi, P, !islands.planes.empty());
+    if (!on.holes.empty())
+      sides_behind_holes(P, planes.planes, islands.planes, on.holes, island_cells);
+    pieces_behind_cells(P, pi, cells, on.region, surface, planes.covered, tol, collect, thickest);
+  }
+  if (collect.pieces().empty() && thickest.patch >= 0)
+    collect.add(thickest.centre, thickest.centre, {thickest.patch});
+  NonConvexPieces out;
+  out.pieces = std::move(collect.pieces());
+  if (!islands.planes.empty() && islands.planes.size() <= kMaxIslandPlanes) {
+    out.pieces = cut_out_islands(out.pieces, islands.planes, island_cells);
+    out.notes.push_back(
+        "the traces inside the loop bound a block of their own, cut out of this one");
+  } else if (!islands.planes.empty()) {
+    out.pieces.clear();
+    out.notes.push_back(
+        "block geometry not assembled: the islands of traces inside the loop have " +
+        std::to_string(islands.planes.size()) + " joints (at most " +
+        std::to_string(kMaxIslandPlanes) + " are cut out)");
+  }
+  out.notes.push_back("non-convex: the union of " + std::to_string(out.pieces.size()) +
+                      " convex pieces");
+  return out;
+}
+
+// Named by its first joint, not by the region index, so that the same loop
+// gives the same block whatever the other traces (incremental analysis,
+// trace_session.h).
+std::string block_id(const TraceNetwork& net, const SurfaceRegion& region) {
+  const int first_group = net.edges()[region.loops.front().front() / 2].group;
+  return "loop along " + (first_group >= 0 ? net.groups()[first_group].name : std::string("?"));
+}
+
+PieceCells build_piece_cells(const std::string& id, const std::vector<Piece>& pieces,
+                             const TraceBlockOptions& options, TraceBlock& block) {
+  const int n_planes = static_cast<int>(block.planes.size());
+  PieceCells out;
+  out.shut_margin = std::numbers::pi / 2;
+  for (size_t k = 0; k < pieces.size() && !out.unbounded; ++k) {
+    std::vector<blocks::HalfSpaceInput> hs;
+    std::vector<Eigen::Vector3d> joint_in, free_in;
+    for (int j = 0; j < n_planes; ++j) {
+      const TraceBlockPlane& bp = block.planes[j];
+      hs.push_back({bp.scene_index, bp.name, bp.kind, bp.plane, pieces[k].sides[j]});
+      (bp.kind == blocks::PlaneKind::Joint ? joint_in : free_in)
+          .push_back(bp.plane.inward_normal(pieces[k].sides[j]));
+    }
+    std::optional<blocks::ConvexConstruction> cc;
+    try {
+      if (hs.size() >= 4) cc = blocks::build_convex_block(id, hs, options.datum);
+    } catch (const Error& e) {
+      // One loop whose geometry cannot be assembled must not stop the map:
+      // its finiteness still follows from the cones alone, and the note
+      // says what is missing.
+      out.geometry_failed = true;
+      block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
+      block.finite = block.finiteness.finite.value;
+      block.notes.push_back(std::string("block geometry not assembled: ") + e.what());
+      break;
+    }
+    if (!cc || cc->outcome == blocks::ConvexOutcome::Unbounded) {
+      out.unbounded = true;
+      block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
+      if (cc) {
+        std::ostringstream s;
+        s.precision(3);
+        s << "infinite: the block never ends in direction (" << cc->open_direction.x() << ", "
+          << cc->open_direction.y() << ", " << cc->open_direction.z() << ")";
+        block.notes.push_back(s.str());
+      }
+    } else if (cc->outcome == blocks::ConvexOutcome::Empty) {
+      if (!pieces[k].may_be_empty)
+        block.notes.push_back("piece " + pieces[k].code() +
+                              " is empty: its joints leave no rock behind the loop");
+    } else {
+      if (block.convex)
+        for (int j : cc->redundant) block.codes[0][j] = '2';
+      out.cells.push_back(std::move(*cc->polyhedron));
+      out.shut_margin = std::min(out.shut_margin, -cc->recession_margin);
+    }
+  }
+  return out;
+}
+
+void analyse_cells(const std::string& id, std::vector<blocks::Polyhedron>& cells,
+                   double shut_margin, const TraceNetwork& net, const TraceBlockOptions& options,
+                   TraceBlock& block) {
+  // The boundary of a union of pieces, kept for the verdicts should it
+  // not make one polyhedron.
+  std::optional<CellUnion> united;
+  if (cells.size() > 1) united = union_faces(cells, block.planes);
+  try {
+    block.polyhedron =
+        united ? blocks::build_block_from_faces(id, united->vertices, united->faces, options.datum)
+               : std::move(cells.front());
+    kinematics::BlockAnalysisInput in;
+    in.density = options.density;
+    in.effects = options.effects;
+    in.uncertainty = block.uncertainty;
+    for (const auto& bp : block.polyhedron->planes()) {
+      kinematics::JointStrength s;
+      const TraceBlockPlane& tp = block.planes[local_plane(bp, block.planes)];
+      if (tp.kind == blocks::PlaneKind::Joint && net.groups()[tp.group].joint) {
+        s.friction = net.groups()[tp.group].joint->friction;
+        s.cohesion = net.groups()[tp.group].joint->cohesion;
+      }
+      in.strengths.push_back(s);
+    }
+    block.analysis = kinematics::analyse_block(*block.polyhedron, in);
+    block.strengths = std::move(in.strengths);
+    block.finiteness = block.analysis->finiteness;
+    block.finite = block.finiteness.finite.value;
+  } catch (const InputError& e) {
+    block.polyhedron.reset();
+    block.analysis.reset();
+    block.notes.push_back(std::string("block geometry not assembled: ") + e.what());
+    if (united) {
+      block.finiteness = union_finiteness(*united, shut_margin, block.uncertainty);
+      block.finite = block.finiteness.finite.value;
+      double volume = 0;
+      for (const auto& c : cells) volume += blocks::mass_properties(c, options.density).volume;
+      block.notes.push_back("finite as the union of " + std::to_string(cells.size()) +
+                            " bounded convex pieces (" + fmt3(volume) +
+                            " m^3); removability from the joint faces of its boundary; "
+                            "no mode or factor of safety without one polyhedron");
+    }
+  }
+}
+
+}  // namespace trace_block_phases
+
 std::optional<TraceBlock> trace_block(const FreeSurface& surface, const TraceNetwork& net,
                                       const SurfaceLoops& loops, int r,
                                       const TraceBlockOptions& options) {
+  using namespace trace_block_phases;
   const double tol = options.snap_tolerance;
-  const auto& patches = surface.patches();
-  const auto& edges = net.edges();
-  {
-    const SurfaceRegion& region = loops.regions()[r];
-    if (region.loops.empty()) return std::nullopt;
-    TraceBlock block;
-    block.region = static_cast<int>(r);
-    block.traces = region.traces;
-    for (int h : region.loops.front())
-      block.surface_polygon.push_back(net.vertices()[net.origin(h)]);
+  const SurfaceRegion& region = loops.regions()[r];
+  if (region.loops.empty()) return std::nullopt;
+  TraceBlock block;
+  block.region = static_cast<int>(r);
+  block.traces = region.traces;
+  for (int h : region.loops.front()) block.surface_polygon.push_back(net.vertices()[net.origin(h)]);
 
-    // --- Planes: joints of the loop (by name), covered and neighbouring patches.
-    std::vector<int> groups = region.groups;
-    std::sort(groups.begin(), groups.end(),
-              [&](int a, int b) { return net.groups()[a].name < net.groups()[b].name; });
-    std::map<int, int> plane_of_group;
-    block.uncertainty = options.orientation_uncertainty;
-    for (int g : groups) {
-      const PlaneGroup& pg = net.groups()[g];
-      plane_of_group[g] = static_cast<int>(block.planes.size());
-      block.planes.push_back(
-          {pg.name, blocks::PlaneKind::Joint, pg.plane.plane, g, -1,
-           pg.joint && pg.plane.source == TracePlaneSource::Joint ? pg.joint->index : -1});
-      if (pg.plane.source == TracePlaneSource::Fitted) {
-        block.uncertainty = std::max(block.uncertainty, pg.plane.uncertainty);
-        block.notes.push_back("plane " + pg.name + " is fitted to its trace (uncertainty " +
-                              fmt3(rad_to_deg(pg.plane.uncertainty)) + " degrees)");
-      }
-    }
-    const int n_joints = static_cast<int>(block.planes.size());
-    std::vector<Eigen::Vector3d> footprint;
-    for (int f : region.faces)
-      for (int h : loops.faces()[f].half_edges) footprint.push_back(net.vertices()[net.origin(h)]);
-    std::vector<int> covered = region.patches, extra;
-    auto shares_corner = [&](int a, int b) {
-      for (const auto& p : patches[a].polygon)
-        for (const auto& q : patches[b].polygon)
-          if ((p - q).norm() <= tol) return true;
-      return false;
-    };
-    for (size_t q = 0; q < patches.size(); ++q) {
-      const int qi = static_cast<int>(q);
-      if (std::find(covered.begin(), covered.end(), qi) != covered.end()) continue;
-      bool next_to = false, salient = true, behind = true;
-      for (int p : covered) {
-        next_to = next_to || shares_corner(p, qi);
-        salient = salient && !surface.rock_is_union(p, qi, tol);
-      }
-      for (const auto& x : footprint) behind = behind && patches[q].height(x) <= tol;
-      if (next_to && salient && behind) extra.push_back(qi);
-    }
-    std::map<int, int> plane_of_patch;
-    for (int p : covered) {
-      plane_of_patch[p] = static_cast<int>(block.planes.size());
-      block.planes.push_back({patches[p].id, blocks::PlaneKind::FreeFace, patches[p].plane, -1, p});
-    }
-    for (int p : extra) {
-      plane_of_patch[p] = static_cast<int>(block.planes.size());
-      block.planes.push_back({patches[p].id, blocks::PlaneKind::FreeFace, patches[p].plane, -1, p});
-    }
-    const int n_planes = static_cast<int>(block.planes.size());
+  LoopPlanes planes = loop_planes(surface, net, loops, region, options);
+  block.uncertainty = planes.uncertainty;
+  block.notes = planes.notes;
+  const LoopShape shape = loop_shape(surface, net, loops, region, planes, tol);
+  // Islands: joints whose traces lie only on loops inside the outer one.
+  const Islands islands = island_joints(net, region, planes);
 
-    // --- Sides of the joints along the loop, and reflex joint corners.
-    std::vector<std::set<HalfSpace>> joint_sides(n_joints);
-    bool reflex = region.loops.size() > 1;
-    for (const auto& loop : region.loops)
-      for (size_t i = 0; i < loop.size(); ++i) {
-        const int h = loop[i], nx = loop[(i + 1) % loop.size()];
-        const int g = edges[h / 2].group;
-        const int patch = loops.faces()[loops.half_edge_face()[h]].patch;
-        const Eigen::Vector3d d = net.vertices()[net.target(h)] - net.vertices()[net.origin(h)];
-        const Eigen::Vector3d left = patches[patch].outward.cross(d);
-        const double s = net.groups()[g].plane.plane.normal.dot(left);
-        joint_sides[plane_of_group[g]].insert(s > 0 ? HalfSpace::Upper : HalfSpace::Lower);
-        if (edges[nx / 2].group == g) continue;  // the same joint goes on: no corner
-        const AroundVertex& av = net.around()[net.target(h)];
-        const double corner =
-            sweep_ccw(av.angle[net.slot(nx)], av.angle[net.slot(h ^ 1)], av.total);
-        if (corner > std::numbers::pi + kReflexCornerRad) reflex = true;
-      }
-    bool rock_convex = true;
-    for (size_t a = 0; a < covered.size(); ++a)
-      for (size_t b = 0; b < covered.size(); ++b)
-        if (a != b && surface.rock_is_union(covered[a], covered[b], tol)) rock_convex = false;
-    bool one_side = true;
-    for (const auto& s : joint_sides) one_side = one_side && s.size() == 1;
-
-    // --- Islands: joints whose traces lie only on loops inside the outer one.
-    // Their joints persist behind the island and bound the island's own
-    // block; the block around it is the outer loop's block without that one
-    // (cut by the island's planes into cells, all kept but the island's), so
-    // that it stays one solid without the pinch two crossing island joints
-    // would otherwise leave where they meet inside the rock.
-    std::vector<bool> island(n_joints, false);
-    std::vector<int> island_planes;
-    if (region.loops.size() > 1) {
-      std::set<int> outer_groups;
-      for (int h : region.loops.front()) outer_groups.insert(edges[h / 2].group);
-      for (int j = 0; j < n_joints; ++j)
-        if (!outer_groups.count(block.planes[j].group)) {
-          island[j] = true;
-          island_planes.push_back(j);
-        }
-    }
-    std::set<std::vector<HalfSpace>> island_cells;  // sides of island planes behind an island
-
-    // --- Convex pieces.
-    std::vector<Piece> pieces;
-    if (!reflex && rock_convex && one_side) {
-      Piece p;
-      for (int j = 0; j < n_joints; ++j) p.sides.push_back(*joint_sides[j].begin());
-      for (int k = n_joints; k < n_planes; ++k)
-        p.sides.push_back(patches[block.planes[k].patch].rock_side);
-      pieces.push_back(p);
-    } else {
-      block.convex = false;
-      std::set<std::string> seen;
-      auto side_of = [&](const geometry::Plane& pl, const Eigen::Vector3d& x) {
-        return pl.signed_distance(x) > 0 ? HalfSpace::Upper : HalfSpace::Lower;
-      };
-      auto add_piece = [&](const Eigen::Vector3d& cell_centre, const Eigen::Vector3d& at,
-                           const std::vector<int>& containing) {
-        Piece p;
-        for (int j = 0; j < n_joints; ++j)
-          p.sides.push_back(side_of(block.planes[j].plane, cell_centre));
-        for (int k = n_joints; k < n_planes; ++k) {
-          const SurfacePatch& Q = patches[block.planes[k].patch];
-          const bool contains = std::find(containing.begin(), containing.end(),
-                                          block.planes[k].patch) != containing.end();
-          const bool rock = contains || Q.height(at) <= tol;
-          p.sides.push_back(rock ? Q.rock_side : opposite(Q.rock_side));
-        }
-        if (seen.insert(p.code()).second) pieces.push_back(p);
-      };
-      double thickest = -1;
-      Eigen::Vector3d thickest_centre = Eigen::Vector3d::Zero();
-      int thickest_patch = -1;
-      for (int pi : covered) {
-        const SurfacePatch& P = patches[pi];
-        std::vector<int> outer_planes;  // the outer block's cells first
-        for (int j = 0; j < n_joints; ++j)
-          if (!island[j]) outer_planes.push_back(j);
-        const auto cells = cut_by_planes(P, block.planes, outer_planes);
-        std::vector<std::vector<Eigen::Vector2d>> region_polys, hole_polys;
-        for (int f : region.faces) {
-          if (loops.faces()[f].patch != pi) continue;
-          std::vector<Eigen::Vector2d> poly;
-          for (int h : loops.faces()[f].half_edges)
-            poly.push_back(P.to2d(net.vertices()[net.origin(h)]));
-          // The outside of an island: what it encloses is the island's block.
-          const bool hole = !island_planes.empty() && loops.faces()[f].area <= 0;
-          (hole ? hole_polys : region_polys).push_back(std::move(poly));
-        }
-        if (!hole_polys.empty()) {
-          // The island planes' sides behind each hole: the patch cut by the
-          // island joints; a hole's edges are such cuts, so each cell lies
-          // wholly inside or outside a hole.
-          for (const auto& cell : cut_by_planes(P, block.planes, island_planes)) {
-            Eigen::Vector2d c = Eigen::Vector2d::Zero();
-            for (const auto& x : cell) c += x;
-            c /= static_cast<double>(cell.size());
-            int w = 0;
-            for (const auto& poly : hole_polys) w += winding_number(poly, c);
-            if (w == 0) continue;
-            std::vector<HalfSpace> sides;
-            for (int j : island_planes) sides.push_back(side_of(block.planes[j].plane, P.to3d(c)));
-            island_cells.insert(sides);
-          }
-        }
-        for (const auto& cell : cells) {
-          Eigen::Vector2d c = Eigen::Vector2d::Zero();
-          for (const auto& x : cell) c += x;
-          c /= static_cast<double>(cell.size());
-          int w = 0;
-          for (const auto& poly : region_polys) w += winding_number(poly, c);
-          if (w == 0) continue;
-          const double thickness = 2 * area_of(cell) / perimeter_of(cell);
-          const Eigen::Vector3d c3 = P.to3d(c);
-          if (thickness > thickest) {
-            thickest = thickness;
-            thickest_centre = c3;
-            thickest_patch = pi;
-          }
-          if (thickness < kThinCellInTolerances * tol) continue;
-          add_piece(c3, c3, {pi});
-          // Behind edges and corners of the cell that lie on other covered patches too.
-          for (size_t k = 0; k < cell.size(); ++k) {
-            for (const Eigen::Vector3d& x :
-                 {P.to3d(cell[k]), P.to3d((cell[k] + cell[(k + 1) % cell.size()]) / 2)}) {
-              std::vector<int> containing;
-              for (int q : covered) {
-                const SurfacePatch& Q = patches[q];
-                if (std::abs(Q.height(x)) <= tol && Q.contains(Q.to2d(x), tol))
-                  containing.push_back(q);
-              }
-              if (containing.size() >= 2) add_piece(c3, x, containing);
-            }
-          }
-        }
-      }
-      if (pieces.empty() && thickest_patch >= 0)
-        add_piece(thickest_centre, thickest_centre, {thickest_patch});
-      if (!island_planes.empty() && island_planes.size() <= kMaxIslandPlanes) {
-        // Every cell of the island planes in each outer piece, but those
-        // behind an island (empty cells drop out in the construction).
-        std::vector<Piece> cut;
-        seen.clear();
-        const unsigned combos = 1u << island_planes.size();
-        for (const Piece& outer : pieces)
-          for (unsigned m = 0; m < combos; ++m) {
-            std::vector<HalfSpace> sides;
-            for (size_t i = 0; i < island_planes.size(); ++i)
-              sides.push_back(m >> i & 1u ? HalfSpace::Lower : HalfSpace::Upper);
-            if (island_cells.count(sides)) continue;
-            Piece p = outer;
-            for (size_t i = 0; i < island_planes.size(); ++i) p.sides[island_planes[i]] = sides[i];
-            p.may_be_empty = true;
-            if (seen.insert(p.code()).second) cut.push_back(std::move(p));
-          }
-        pieces = std::move(cut);
-        block.notes.push_back(
-            "the traces inside the loop bound a block of their own, cut out of this one");
-      } else if (!island_planes.empty()) {
-        pieces.clear();
-        block.notes.push_back(
-            "block geometry not assembled: the islands of traces inside the loop have " +
-            std::to_string(island_planes.size()) + " joints (at most " +
-            std::to_string(kMaxIslandPlanes) + " are cut out)");
-      }
-      block.notes.push_back("non-convex: the union of " + std::to_string(pieces.size()) +
-                            " convex pieces");
-    }
-    for (const auto& p : pieces) block.codes.push_back(p.code());
-
-    // --- Geometry and verdicts.
-    std::vector<blocks::Polyhedron> cells;
-    double shut_margin = std::numbers::pi / 2;  // least recession margin of the pieces
-    bool unbounded = false;
-    bool geometry_failed = false;
-    // Named by its first joint, not by the region index, so that the same
-    // loop gives the same block whatever the other traces (incremental
-    // analysis, trace_session.h).
-    const int first_group = edges[region.loops.front().front() / 2].group;
-    const std::string id =
-        "loop along " + (first_group >= 0 ? net.groups()[first_group].name : std::string("?"));
-    for (size_t k = 0; k < pieces.size() && !unbounded; ++k) {
-      std::vector<blocks::HalfSpaceInput> hs;
-      std::vector<Eigen::Vector3d> joint_in, free_in;
-      for (int j = 0; j < n_planes; ++j) {
-        const TraceBlockPlane& bp = block.planes[j];
-        hs.push_back({bp.scene_index, bp.name, bp.kind, bp.plane, pieces[k].sides[j]});
-        (bp.kind == blocks::PlaneKind::Joint ? joint_in : free_in)
-            .push_back(bp.plane.inward_normal(pieces[k].sides[j]));
-      }
-      std::optional<blocks::ConvexConstruction> cc;
-      try {
-        if (hs.size() >= 4) cc = blocks::build_convex_block(id, hs, options.datum);
-      } catch (const Error& e) {
-        // One loop whose geometry cannot be assembled must not stop the map:
-        // its finiteness still follows from the cones alone, and the note
-        // says what is missing.
-        geometry_failed = true;
-        block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
-        block.finite = block.finiteness.finite.value;
-        block.notes.push_back(std::string("block geometry not assembled: ") + e.what());
-        break;
-      }
-      if (!cc || cc->outcome == blocks::ConvexOutcome::Unbounded) {
-        unbounded = true;
-        block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
-        if (cc) {
-          std::ostringstream s;
-          s.precision(3);
-          s << "infinite: the block never ends in direction (" << cc->open_direction.x() << ", "
-            << cc->open_direction.y() << ", " << cc->open_direction.z() << ")";
-          block.notes.push_back(s.str());
-        }
-      } else if (cc->outcome == blocks::ConvexOutcome::Empty) {
-        if (!pieces[k].may_be_empty)
-          block.notes.push_back("piece " + pieces[k].code() +
-                                " is empty: its joints leave no rock behind the loop");
-      } else {
-        if (block.convex)
-          for (int j : cc->redundant) block.codes[0][j] = '2';
-        cells.push_back(std::move(*cc->polyhedron));
-        shut_margin = std::min(shut_margin, -cc->recession_margin);
-      }
-    }
-    if (geometry_failed) {
-      return block;
-    }
-    if (!unbounded && !cells.empty()) {
-      // The boundary of a union of pieces, kept for the verdicts should it
-      // not make one polyhedron.
-      std::optional<CellUnion> united;
-      if (cells.size() > 1) united = union_faces(cells, block.planes);
-      try {
-        block.polyhedron = united ? blocks::build_block_from_faces(id, united->vertices,
-                                                                   united->faces, options.datum)
-                                  : std::move(cells.front());
-        kinematics::BlockAnalysisInput in;
-        in.density = options.density;
-        in.effects = options.effects;
-        in.uncertainty = block.uncertainty;
-        for (const auto& bp : block.polyhedron->planes()) {
-          kinematics::JointStrength s;
-          const TraceBlockPlane& tp = block.planes[local_plane(bp, block.planes)];
-          if (tp.kind == blocks::PlaneKind::Joint && net.groups()[tp.group].joint) {
-            s.friction = net.groups()[tp.group].joint->friction;
-            s.cohesion = net.groups()[tp.group].joint->cohesion;
-          }
-          in.strengths.push_back(s);
-        }
-        block.analysis = kinematics::analyse_block(*block.polyhedron, in);
-        block.strengths = std::move(in.strengths);
-        block.finiteness = block.analysis->finiteness;
-        block.finite = block.finiteness.finite.value;
-      } catch (const InputError& e) {
-        block.polyhedron.reset();
-        block.analysis.reset();
-        block.notes.push_back(std::string("block geometry not assembled: ") + e.what());
-        if (united) {
-          block.finiteness = union_finiteness(*united, shut_margin, block.uncertainty);
-          block.finite = block.finiteness.finite.value;
-          double volume = 0;
-          for (const auto& c : cells) volume += blocks::mass_properties(c, options.density).volume;
-          block.notes.push_back("finite as the union of " + std::to_string(cells.size()) +
-                                " bounded convex pieces (" + fmt3(volume) +
-                                " m^3); removability from the joint faces of its boundary; "
-                                "no mode or factor of safety without one polyhedron");
-        }
-      }
-    } else if (!unbounded) {
-      return std::nullopt;  // every piece empty: no block behind this loop
-    }
-    if (unbounded) block.finite = false;
-    return block;
+  std::vector<Piece> pieces;
+  if (shape.convex()) {
+    pieces.push_back(convex_piece(surface, planes, shape));
+  } else {
+    block.convex = false;
+    NonConvexPieces found = nonconvex_pieces(surface, net, loops, region, planes, islands, tol);
+    pieces = std::move(found.pieces);
+    block.notes.insert(block.notes.end(), found.notes.begin(), found.notes.end());
   }
+  block.planes = std::move(planes.planes);
+  for (const auto& p : pieces) block.codes.push_back(p.code());
+
+  const std::string id = block_id(net, region);
+  PieceCells built = build_piece_cells(id, pieces, options, block);
+  if (built.geometry_failed) return block;
+  if (!built.unbounded && !built.cells.empty())
+    analyse_cells(id, built.cells, built.shut_margin, net, options, block);
+  else if (!built.unbounded)
+    return std::nullopt;  // every piece empty: no block behind this loop
+  if (built.unbounded) block.finite = false;
+  return block;
 }
 
 void order_trace_blocks(std::vector<TraceBlock>& out) {

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/faces/tolerances.h"
 #include "core/faces/trace_network_phases.h"
@@ -19,13 +19,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string where_trace(const std::vector<TraceInput>& traces, int i) {
   return "traces[" + std::to_string(i) + "] (" + traces[i].id + ")";
-}
-
-std::string fmt(double v, int precision = 3) {
-  std::ostringstream s;
-  s.precision(precision);
-  s << v;
-  return s.str();
 }
 
 // Parameter interval of the line p + t u inside a convex counter-clockwise polygon.
@@ -99,10 +92,10 @@ Stretches trace_stretches(const FreeSurface& surface, const std::vector<TraceInp
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     if (off > 0 && !touched.empty())
       notes.push_back(where + ": " + std::to_string(off) + " of its points lie more than " +
-                      fmt(tolerance) + " m off the surface and are ignored");
+                      format_significant(tolerance, 3) + " m off the surface and are ignored");
     if (touched.empty()) {
-      notes.push_back(where + ": lies off the surface (no point within " + fmt(tolerance) +
-                      " m of a patch) - left out of the map");
+      notes.push_back(where + ": lies off the surface (no point within " +
+                      format_significant(tolerance, 3) + " m of a patch) - left out of the map");
       continue;
     }
     const TracePlaneResult rp = resolve_trace_plane(tr, surface, touched, tolerance);
@@ -169,7 +162,8 @@ Stretches trace_stretches(const FreeSurface& surface, const std::vector<TraceInp
     }
     if (!made) {
       notes.push_back(where + ": no stretch of it longer than the snap tolerance (" +
-                      fmt(tolerance) + " m) lies on the surface - left out of the map");
+                      format_significant(tolerance, 3) +
+                      " m) lies on the surface - left out of the map");
       continue;
     }
     PlaneGroup pg;
@@ -305,7 +299,7 @@ std::vector<PlaneGroup> merge_stretches(std::vector<Segment>& segments,
             notes.push_back(
                 "traces " + ga.name + " and " + gb.name + " run together on " +
                 surface.where(keep->patch) + " but their planes differ by " +
-                fmt(rad_to_deg(angle), 2) +
+                format_significant(rad_to_deg(angle), 2) +
                 " degrees; they are taken as one "
                 "discontinuity with the plane of " +
                 groups[std::min(group_uf.find(keep->group), group_uf.find(drop->group))].name);

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include <sstream>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/faces/tolerances.h"
 #include "core/geometry/plane_fit.h"
@@ -22,10 +22,7 @@ geometry::Plane upward_plane(Eigen::Vector3d n, double offset_point_dot) {
 }
 
 std::string metres(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v << " m";
-  return s.str();
+  return format_significant(v, 3, " m");
 }
 
 }  // namespace

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/measure/plane_measurement.h"
 
@@ -13,9 +13,7 @@ namespace rockface::measure {
 namespace {
 
 std::string degrees_text(double deg) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f°", deg);
-  return text;
+  return format_fixed(deg, 1, "°");
 }
 
 // The angle (degrees) between a line and a plane of unit normal n.
@@ -32,9 +30,10 @@ double plane_to_plane_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 
 void check_compass_reading(const CompassReading& r, const std::string& where) {
   auto bad = [&](const char* field, double v, const char* range) {
-    char text[96];
-    std::snprintf(text, sizeof text, "%g is not a compass reading (%s)", v, range);
-    throw InputError(where + "." + field, std::isfinite(v) ? text : "must be a finite number");
+    throw InputError(where + "." + field,
+                     std::isfinite(v)
+                         ? format_significant(v, 6) + " is not a compass reading (" + range + ")"
+                         : std::string("must be a finite number"));
   };
   if (!std::isfinite(r.dip_deg) || r.dip_deg < 0 || r.dip_deg > 90)
     bad("dip", r.dip_deg, "a dip is from 0 to 90 degrees");

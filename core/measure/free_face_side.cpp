@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/tolerances.h"
@@ -14,9 +14,7 @@ namespace rockface::measure {
 namespace {
 
 std::string degrees(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f\u00b0", v);
-  return text;
+  return format_fixed(v, 1, "\u00b0");
 }
 
 std::string quoted(const std::string& s) {

@@ -12,6 +12,7 @@
 #include "core/geometry/orientation.h"
 #include "core/measure/facets/facets.h"
 #include "core/measure/free_face_side.h"
+#include "core/measure/outline_pieces_phases.h"
 #include "core/measure/tolerances.h"
 
 namespace rockface::measure {
@@ -122,12 +123,59 @@ std::string attitude(const geometry::Plane& p) {
   return outline_fixed(rad_to_deg(o.dip), 0) + "/" + outline_fixed(rad_to_deg(o.dipdir), 0);
 }
 
-// The points of the sub-mesh by plane, and the area of its triangles (each
-// given to the plane of two or more of its corners, else its first's).
-struct Labelled {
-  std::vector<std::vector<Eigen::Vector3d>> points;
-  std::vector<double> area;
-};
+}  // namespace
+
+std::vector<Eigen::Vector2d> clip_polygon(const std::vector<Eigen::Vector2d>& polygon,
+                                          const Eigen::Vector2d& a, const Eigen::Vector2d& d) {
+  std::vector<Eigen::Vector2d> out;
+  auto side = [&](const Eigen::Vector2d& p) { return cross2(d, p - a); };
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector2d& p = polygon[i];
+    const Eigen::Vector2d& q = polygon[(i + 1) % polygon.size()];
+    const double sp = side(p), sq = side(q);
+    if (sp >= 0) out.push_back(p);
+    if ((sp >= 0) != (sq >= 0)) out.push_back(p + (q - p) * (sp / (sp - sq)));
+  }
+  // Corners repeated where the line runs through one.
+  std::vector<Eigen::Vector2d> kept;
+  for (const auto& p : out)
+    if (kept.empty() || (p - kept.back()).norm() > 1e-9) kept.push_back(p);
+  while (kept.size() > 1 && (kept.front() - kept.back()).norm() <= 1e-9) kept.pop_back();
+  return kept;
+}
+
+namespace {
+
+// The notes joined into one ("a; b").
+std::string joined(const std::vector<std::string>& notes) {
+  std::string all;
+  for (const auto& note : notes) all += (all.empty() ? "" : "; ") + note;
+  return all;
+}
+
+// The share of a piece's points (seen_at) that its outline holds, when
+// under kMinCoveredShare: its part of the face is not bounded by straight
+// fold lines.
+std::optional<std::string> uncovered_note(const std::string& name,
+                                          const std::vector<Eigen::Vector2d>& outline,
+                                          const std::vector<Eigen::Vector2d>& seen_at) {
+  std::size_t in = 0, all = 0;
+  for (const auto& q : seen_at)
+    if (q.allFinite()) {
+      ++all;
+      in += inside_polygon(outline, q);
+    }
+  if (all > 0 && static_cast<double>(in) < kMinCoveredShare * static_cast<double>(all))
+    return "piece " + name + "'s outline holds " +
+           outline_fixed(100.0 * static_cast<double>(in) / static_cast<double>(all), 0) +
+           " % of its points: its part of the face is not bounded by straight "
+           "fold lines";
+  return std::nullopt;
+}
+
+}  // namespace
+
+namespace outline_phases {
 
 Labelled label_points(const photogrammetry::SurfaceMesh& sub,
                       const std::vector<geometry::Plane>& planes, std::vector<int>& label) {
@@ -156,61 +204,21 @@ Labelled label_points(const photogrammetry::SurfaceMesh& sub,
   return out;
 }
 
-}  // namespace
-
-std::vector<Eigen::Vector2d> clip_polygon(const std::vector<Eigen::Vector2d>& polygon,
-                                          const Eigen::Vector2d& a, const Eigen::Vector2d& d) {
-  std::vector<Eigen::Vector2d> out;
-  auto side = [&](const Eigen::Vector2d& p) { return cross2(d, p - a); };
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Eigen::Vector2d& p = polygon[i];
-    const Eigen::Vector2d& q = polygon[(i + 1) % polygon.size()];
-    const double sp = side(p), sq = side(q);
-    if (sp >= 0) out.push_back(p);
-    if ((sp >= 0) != (sq >= 0)) out.push_back(p + (q - p) * (sp / (sp - sq)));
-  }
-  // Corners repeated where the line runs through one.
-  std::vector<Eigen::Vector2d> kept;
-  for (const auto& p : out)
-    if (kept.empty() || (p - kept.back()).norm() > 1e-9) kept.push_back(p);
-  while (kept.size() > 1 && (kept.front() - kept.back()).norm() <= 1e-9) kept.pop_back();
-  return kept;
-}
-
-OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, const std::string& id,
-                            const std::vector<Eigen::Vector2d>& polygon,
-                            const MeasureSettings& measured, const FacetOptions& options,
-                            double snap_tolerance, const std::string& where) {
-  check_outline(polygon, where);
-  check_facet_options(options);
-  if (!(snap_tolerance > 0))
-    throw InputError(where, "the snap tolerance must be a positive length (m), got " +
-                                std::to_string(snap_tolerance));
-  // The point precision the pieces are judged with: the stated one, or
-  // finer where the analysis needs it (the planarity gate then is half the
-  // snap tolerance). A model's predicted sigma_Z (14 mm for the demo's fast
-  // preset) would let a 12-degree fold two metres wide pass as one plane
-  // whose edges and fold lie 5-6 cm off it, beyond the snap tolerance.
+// The point precision the pieces are judged with: the stated one, or finer
+// where the analysis needs it (the planarity gate then is half the snap
+// tolerance). A model's predicted sigma_Z (14 mm for the demo's fast preset)
+// would let a 12-degree fold two metres wide pass as one plane whose edges
+// and fold lie 5-6 cm off it, beyond the snap tolerance.
+MeasureSettings piece_settings(const MeasureSettings& measured, const FacetOptions& options,
+                               double snap_tolerance) {
   MeasureSettings settings = measured;
   settings.point_sigma =
       std::min(measured.point_sigma, 0.5 * snap_tolerance / options.planarity_in_sigmas);
-  OutlinePieces out;
-  AreaMeasurement whole = measure_area(picker, view, id, polygon, measured, where);
-  // The planarity test of measuring, with the facet finder's limit: a face
-  // within it is one plane to the precision of the 3D image.
-  const std::string bent =
-      planarity_problem(whole.plane, settings, options.planarity_in_sigmas, "the outlined face");
-  auto one_piece = [&](const std::string& why) {
-    if (!why.empty())
-      out.notes.push_back("the face outline stays one piece, " + why + "; " +
-                          bent.substr(bent.find(':') + 2));
-    wind_toward_camera(whole, view);
-    out.pieces.push_back(std::move(whole));
-    return out;
-  };
-  if (bent.empty()) return one_piece("");
+  return settings;
+}
 
-  // The 3D image inside the outline, as a mesh of its own.
+photogrammetry::SurfaceMesh outline_submesh(const MeshPicker& picker, const PhotoView& view,
+                                            const std::vector<Eigen::Vector2d>& polygon) {
   const auto& mesh = picker.mesh();
   photogrammetry::SurfaceMesh sub;
   std::vector<int> local(mesh.size(), -1);
@@ -221,19 +229,19 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
   for (const auto& t : mesh.triangles)
     if (local[t[0]] >= 0 && local[t[1]] >= 0 && local[t[2]] >= 0)
       sub.triangles.push_back({local[t[0]], local[t[1]], local[t[2]]});
-  NoProgress quiet;
-  const FacetSearch found = find_facets(sub, settings, options, quiet);
+  return sub;
+}
 
-  // The facets grouped by the plane they lie in: a facet joins a group
-  // when its normal is within the finder's angle of the group's and its
-  // points lie within the planarity gate of the group's plane (RMS), so two
-  // facets of one wall join and two walls of a fold (a few degrees apart
-  // but centimetres off each other's plane a metre from the fold) do not.
-  const double gate = options.planarity_in_sigmas * settings.point_sigma;
+// Two facets of one wall join and two walls of a fold (a few degrees apart
+// but centimetres off each other's plane a metre from the fold) do not.
+std::vector<geometry::Plane> facet_planes(const photogrammetry::SurfaceMesh& sub,
+                                          const std::vector<Facet>& facets,
+                                          const FacetOptions& options, double gate,
+                                          std::size_t max_planes) {
   std::vector<geometry::Plane> planes;
   std::vector<Eigen::Vector3d> group_normals;
   std::vector<char> seen(sub.size(), 0);
-  for (const Facet& f : found.facets) {
+  for (const Facet& f : facets) {
     std::vector<Eigen::Vector3d> pts;
     for (const int t : f.mesh_triangles)
       for (const int v : sub.triangles[t])
@@ -251,31 +259,25 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
       for (const auto& p : pts) ss += std::pow(planes[g].signed_distance(p), 2);
       joined = std::sqrt(ss / static_cast<double>(pts.size())) <= gate;
     }
-    if (!joined && planes.size() < kMaxPieces) {
+    if (!joined && planes.size() < max_planes) {
       planes.push_back(f.plane.fit.plane());
       group_normals.push_back(f.plane.fit.normal);
     }
   }
-  if (planes.size() < 2)
-    return one_piece(planes.empty()
-                         ? "no flat part was found in it (" +
-                               (found.notes.empty() ? std::string("facets") : found.notes.front()) +
-                               ")"
-                         : "one flat part was found in it, and the rest is no plane");
+  return planes;
+}
 
-  // Every point to its nearest plane, the planes refitted to their points;
-  // then each piece judged as a plane: a part too small or too rough is
-  // said and its points go to the other planes.
-  std::vector<int> label;
-  Labelled parts;
-  std::vector<PlaneEstimate> estimates;
+SettledPlanes settle_planes(const photogrammetry::SurfaceMesh& sub,
+                            std::vector<geometry::Plane> planes, const MeasureSettings& measured,
+                            const FacetOptions& options, double gate) {
+  SettledPlanes out;
   for (int pass = 0;; ++pass) {
-    parts = label_points(sub, planes, label);
-    estimates.assign(planes.size(), PlaneEstimate{});
+    out.parts = label_points(sub, planes, out.label);
+    out.estimates.assign(planes.size(), PlaneEstimate{});
     for (std::size_t k = 0; k < planes.size(); ++k)
-      if (parts.points[k].size() >= 3) {
-        estimates[k] = plane_of_points(parts.points[k], measured);
-        if (pass < kRefinePasses) planes[k] = estimates[k].fit.plane();
+      if (out.parts.points[k].size() >= 3) {
+        out.estimates[k] = plane_of_points(out.parts.points[k], measured);
+        if (pass < kRefinePasses) planes[k] = out.estimates[k].fit.plane();
       }
     if (pass < kRefinePasses) continue;
     // The worst part: the smallest under the area limit, else the roughest
@@ -283,58 +285,55 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
     std::optional<std::size_t> worst;
     std::string why;
     for (std::size_t k = 0; k < planes.size(); ++k)
-      if (parts.area[k] < options.min_area_m2 && (!worst || parts.area[k] < parts.area[*worst])) {
+      if (out.parts.area[k] < options.min_area_m2 &&
+          (!worst || out.parts.area[k] < out.parts.area[*worst])) {
         worst = k;
         why = "too small to be a flat piece (under " + outline_m2(options.min_area_m2) + ")";
       }
     if (!worst)
       for (std::size_t k = 0; k < planes.size(); ++k) {
-        const double rms = estimates[k].fit.rms_off_plane();
-        if (rms > gate && (!worst || rms > estimates[*worst].fit.rms_off_plane())) {
+        const double rms = out.estimates[k].fit.rms_off_plane();
+        if (rms > gate && (!worst || rms > out.estimates[*worst].fit.rms_off_plane())) {
           worst = k;
           why = "too rough to be one plane (RMS " + outline_mm(rms) + ", more than the " +
                 outline_mm(gate) + " the 3D image's precision allows)";
         }
       }
     if (!worst) break;
-    out.notes.push_back("a part of " + outline_m2(parts.area[*worst]) + " (" +
+    out.notes.push_back("a part of " + outline_m2(out.parts.area[*worst]) + " (" +
                         attitude(planes[*worst]) + ") is " + why +
                         ": its area goes to the pieces around it");
     planes.erase(planes.begin() + static_cast<std::ptrdiff_t>(*worst));
     if (planes.size() < 2) {
-      std::string notes;
-      for (const auto& n : out.notes) notes += (notes.empty() ? "" : "; ") + n;
-      out.notes.clear();
-      return one_piece("no two flat pieces remain (" + notes + ")");
+      out.too_few = true;
+      break;
     }
     pass = kRefinePasses - 2;  // relabel and refit once more without it
   }
+  out.planes = std::move(planes);
+  return out;
+}
 
-  // The planes the pieces are measured with: their outlines lie in them.
-  for (std::size_t k = 0; k < planes.size(); ++k) planes[k] = estimates[k].fit.plane();
-
-  // Largest first: the labels a, b, ... in that order.
-  std::vector<std::size_t> order(planes.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return parts.area[a] > parts.area[b]; });
-
-  // Which pieces touch (a triangle with corners on both), and each piece's
-  // points seen in the photograph.
-  const std::size_t n = planes.size();
+std::vector<std::vector<char>> touching_pieces(const photogrammetry::SurfaceMesh& sub,
+                                               const std::vector<int>& label, std::size_t n) {
   std::vector<std::vector<char>> touch(n, std::vector<char>(n, 0));
   for (const auto& t : sub.triangles)
     for (int i = 0; i < 3; ++i) {
       const int a = label[t[i]], b = label[t[(i + 1) % 3]];
       if (a != b) touch[a][b] = touch[b][a] = 1;
     }
-  std::vector<std::vector<Eigen::Vector2d>> seen_at(n);
-  for (std::size_t k = 0; k < n; ++k) seen_at[k] = project_to_view(view, parts.points[k]);
+  return touch;
+}
 
-  // Each piece: the outline cut along the line where its plane meets each
-  // neighbour's, projected into the photograph, keeping its own side (the
-  // side most of its points are seen on).
-  std::vector<std::vector<Eigen::Vector2d>> outline(n, polygon);
+FoldOutlines fold_outlines(const PhotoView& view, const std::vector<Eigen::Vector2d>& polygon,
+                           const std::vector<geometry::Plane>& planes,
+                           const std::vector<PlaneEstimate>& estimates,
+                           const std::vector<std::vector<char>>& touch,
+                           const std::vector<std::vector<Eigen::Vector2d>>& seen_at) {
+  const std::size_t n = planes.size();
+  FoldOutlines out;
+  std::vector<std::vector<Eigen::Vector2d>>& outline = out.outline;
+  outline.assign(n, polygon);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
       if (!touch[i][j]) continue;
@@ -378,9 +377,44 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
       outline[i] = clip_polygon(outline[i], a, static_cast<double>(si) * d);
       outline[j] = clip_polygon(outline[j], a, static_cast<double>(sj) * d);
     }
+  return out;
+}
 
-  // The pieces, each measured as an area: its polygon's corners lifted to
-  // its plane along their pixels' rays.
+AreaMeasurement measure_piece(const PhotoView& view, const std::string& name,
+                              const std::vector<Eigen::Vector2d>& outline,
+                              const geometry::Plane& plane, const PlaneEstimate& estimate,
+                              std::size_t vertices, double area, const MeasureSettings& measured,
+                              const std::string& where) {
+  AreaMeasurement a;
+  a.id = name;
+  for (const auto& q : outline) {
+    const Ray ray = ray_through_pixel(view, q, where);
+    const double den = plane.normal.dot(ray.direction);
+    const double t =
+        std::abs(den) < 1e-12 ? -1 : (plane.offset - plane.normal.dot(ray.origin)) / den;
+    if (!(t > 0)) continue;  // a ray along or away from the plane: no corner
+    a.outline.push_back({view.name, q});
+    a.outline_points.push_back(ray.origin + t * ray.direction);
+  }
+  a.vertices = vertices;
+  a.area = area;
+  a.plane = estimate;
+  judge_area_plane(a.plane, measured);
+  return a;
+}
+
+void measure_pieces(const PhotoView& view, const std::string& id,
+                    const std::vector<geometry::Plane>& planes,
+                    const std::vector<PlaneEstimate>& estimates, const Labelled& parts,
+                    const std::vector<std::vector<Eigen::Vector2d>>& outline,
+                    const std::vector<std::vector<Eigen::Vector2d>>& seen_at,
+                    const MeasureSettings& measured, const std::string& where, OutlinePieces& out) {
+  const std::size_t n = planes.size();
+  // Largest first: the labels a, b, ... in that order.
+  std::vector<std::size_t> order(planes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return parts.area[a] > parts.area[b]; });
   char letter = 'a';
   for (const std::size_t k : order) {
     const std::string name = id + letter++;
@@ -390,41 +424,86 @@ OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, con
       --letter;
       continue;
     }
-    AreaMeasurement a;
-    a.id = name;
-    for (const auto& q : outline[k]) {
-      const Ray ray = ray_through_pixel(view, q, where);
-      const double den = planes[k].normal.dot(ray.direction);
-      const double t =
-          std::abs(den) < 1e-12 ? -1 : (planes[k].offset - planes[k].normal.dot(ray.origin)) / den;
-      if (!(t > 0)) continue;  // a ray along or away from the plane: no corner
-      a.outline.push_back({view.name, q});
-      a.outline_points.push_back(ray.origin + t * ray.direction);
-    }
-    a.vertices = parts.points[k].size();
-    a.area = parts.area[k];
-    a.plane = estimates[k];
-    judge_area_plane(a.plane, measured);
+    AreaMeasurement a = measure_piece(view, name, outline[k], planes[k], estimates[k],
+                                      parts.points[k].size(), parts.area[k], measured, where);
     if (n > 2) {
-      std::size_t in = 0, all = 0;
-      for (const auto& q : seen_at[k])
-        if (q.allFinite()) {
-          ++all;
-          in += inside_polygon(outline[k], q);
-        }
-      if (all > 0 && static_cast<double>(in) < kMinCoveredShare * static_cast<double>(all))
-        out.notes.push_back(
-            "piece " + name + "'s outline holds " +
-            outline_fixed(100.0 * static_cast<double>(in) / static_cast<double>(all), 0) +
-            " % of its points: its part of the face is not bounded by straight "
-            "fold lines");
+      if (auto note = uncovered_note(name, outline[k], seen_at[k])) out.notes.push_back(*note);
     }
     wind_toward_camera(a, view);
     out.pieces.push_back(std::move(a));
   }
+}
+
+}  // namespace outline_phases
+
+OutlinePieces split_outline(const MeshPicker& picker, const PhotoView& view, const std::string& id,
+                            const std::vector<Eigen::Vector2d>& polygon,
+                            const MeasureSettings& measured, const FacetOptions& options,
+                            double snap_tolerance, const std::string& where) {
+  using namespace outline_phases;
+  check_outline(polygon, where);
+  check_facet_options(options);
+  if (!(snap_tolerance > 0))
+    throw InputError(where, "the snap tolerance must be a positive length (m), got " +
+                                std::to_string(snap_tolerance));
+  const MeasureSettings settings = piece_settings(measured, options, snap_tolerance);
+  OutlinePieces out;
+  AreaMeasurement whole = measure_area(picker, view, id, polygon, measured, where);
+  // The planarity test of measuring, with the facet finder's limit: a face
+  // within it is one plane to the precision of the 3D image.
+  const std::string bent =
+      planarity_problem(whole.plane, settings, options.planarity_in_sigmas, "the outlined face");
+  auto one_piece = [&](const std::string& why) {
+    if (!why.empty())
+      out.notes.push_back("the face outline stays one piece, " + why + "; " +
+                          bent.substr(bent.find(':') + 2));
+    wind_toward_camera(whole, view);
+    out.pieces.push_back(std::move(whole));
+    return out;
+  };
+  if (bent.empty()) return one_piece("");
+
+  // The facets inside the outline, grouped by the plane they lie in.
+  const photogrammetry::SurfaceMesh sub = outline_submesh(picker, view, polygon);
+  NoProgress quiet;
+  const FacetSearch found = find_facets(sub, settings, options, quiet);
+  const double gate = options.planarity_in_sigmas * settings.point_sigma;
+  std::vector<geometry::Plane> planes = facet_planes(sub, found.facets, options, gate, kMaxPieces);
+  if (planes.size() < 2)
+    return one_piece(planes.empty()
+                         ? "no flat part was found in it (" +
+                               (found.notes.empty() ? std::string("facets") : found.notes.front()) +
+                               ")"
+                         : "one flat part was found in it, and the rest is no plane");
+
+  // Every point to its nearest plane, the planes refitted to their points;
+  // then each piece judged as a plane: a part too small or too rough is
+  // said and its points go to the other planes.
+  SettledPlanes settled = settle_planes(sub, std::move(planes), measured, options, gate);
+  if (settled.too_few)
+    return one_piece("no two flat pieces remain (" + joined(settled.notes) + ")");
+  out.notes = std::move(settled.notes);
+  planes = std::move(settled.planes);
+  const std::vector<PlaneEstimate>& estimates = settled.estimates;
+  const Labelled& parts = settled.parts;
+
+  // The planes the pieces are measured with: their outlines lie in them.
+  for (std::size_t k = 0; k < planes.size(); ++k) planes[k] = estimates[k].fit.plane();
+
+  // Which pieces touch, each piece's points seen in the photograph, and
+  // each piece's outline cut along the fold lines.
+  const std::size_t n = planes.size();
+  const auto touch = touching_pieces(sub, settled.label, n);
+  std::vector<std::vector<Eigen::Vector2d>> seen_at(n);
+  for (std::size_t k = 0; k < n; ++k) seen_at[k] = project_to_view(view, parts.points[k]);
+  FoldOutlines folds = fold_outlines(view, polygon, planes, estimates, touch, seen_at);
+  out.notes.insert(out.notes.end(), folds.notes.begin(), folds.notes.end());
+  const auto& outline = folds.outline;
+
+  // The pieces, each measured as an area, largest first.
+  measure_pieces(view, id, planes, estimates, parts, outline, seen_at, measured, where, out);
   if (out.pieces.size() < 2) {
-    std::string notes;
-    for (const auto& note : out.notes) notes += (notes.empty() ? "" : "; ") + note;
+    const std::string notes = joined(out.notes);
     out.notes.clear();
     out.pieces.clear();
     return one_piece("its pieces have no outlines of their own (" + notes + ")");

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace rockface::measure {
@@ -12,10 +12,7 @@ namespace rockface::measure {
 namespace {
 
 std::string metres(double v) {
-  std::ostringstream s;
-  s.precision(2);
-  s << v << " m";
-  return s.str();
+  return format_significant(v, 2, " m");
 }
 
 std::string index_where(const std::string& where, const char* field, std::size_t i) {
@@ -114,11 +111,9 @@ PlaneEstimate plane_of_points(const std::vector<Eigen::Vector3d>& points,
 std::string planarity_problem(const PlaneEstimate& e, const MeasureSettings& settings,
                               double max_rms_in_sigmas, const std::string& what) {
   if (e.fit.rms_off_plane() <= max_rms_in_sigmas * settings.point_sigma) return {};
-  std::ostringstream s;
-  s.precision(2);
-  s << "orientation unknown: " << what << " is not planar (RMS " << metres(e.fit.rms_off_plane())
-    << " off its best-fit plane, more than " << max_rms_in_sigmas << " times the point precision)";
-  return s.str();
+  return "orientation unknown: " + what + " is not planar (RMS " + metres(e.fit.rms_off_plane()) +
+         " off its best-fit plane, more than " + format_significant(max_rms_in_sigmas, 2) +
+         " times the point precision)";
 }
 
 PlaneEstimate fit_trace_plane(const std::vector<Eigen::Vector3d>& points,
@@ -171,11 +166,9 @@ PlaneEstimate fit_trace_plane(const std::vector<Eigen::Vector3d>& points,
     return e;
   }
   if (rad_to_deg(e.sigma) > settings.max_plane_sigma_deg) {
-    std::ostringstream s;
-    s.precision(2);
-    s << "orientation unknown: too little relief for a reliable plane (uncertainty "
-      << rad_to_deg(e.sigma) << " deg, more than " << settings.max_plane_sigma_deg << " deg)";
-    e.problem = s.str();
+    e.problem = "orientation unknown: too little relief for a reliable plane (uncertainty " +
+                format_significant(rad_to_deg(e.sigma), 2, " deg") + ", more than " +
+                format_significant(settings.max_plane_sigma_deg, 2, " deg") + ")";
     return e;
   }
   e.known = true;
@@ -260,10 +253,11 @@ AreaMeasurement measure_area(const MeshPicker& picker, const PhotoView& view, st
     // name, before anything is stored.
     const auto hit = picker.pick(view, polygon[i], where);
     if (!hit) {
-      std::ostringstream s;
-      s << "pixel (" << polygon[i].x() << ", " << polygon[i].y() << ") of the " << view.name
-        << " photograph hits no surface of the 3D image: move the corner onto the mapped face";
-      throw InputError(index_where(where, "polygon", i), s.str());
+      throw InputError(index_where(where, "polygon", i),
+                       "pixel (" + format_significant(polygon[i].x(), 6) + ", " +
+                           format_significant(polygon[i].y(), 6) + ") of the " + view.name +
+                           " photograph hits no surface of the 3D image: move the corner onto "
+                           "the mapped face");
     }
     a.outline_points.push_back(hit->point);
   }

@@ -1,9 +1,9 @@
 #include "core/rockmass/classification_form.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 
 namespace rockface::rockmass {
 
@@ -41,15 +41,12 @@ void check(const std::optional<double>& v, const char* key) {
   if (!v) return;
   for (const auto& r : form_ranges()) {
     if (std::string(r.key) != key) continue;
-    char text[256];
-    if (!std::isfinite(*v)) {
-      std::snprintf(text, sizeof text, "is not a number (%s allows %g-%g)", r.table, r.min, r.max);
-      throw InputError(key, text);
-    }
-    if (*v < r.min || *v > r.max) {
-      std::snprintf(text, sizeof text, "%g is outside %g-%g (%s)", *v, r.min, r.max, r.table);
-      throw InputError(key, text);
-    }
+    const std::string range = format_significant(r.min, 6) + "-" + format_significant(r.max, 6);
+    if (!std::isfinite(*v))
+      throw InputError(key, "is not a number (" + std::string(r.table) + " allows " + range + ")");
+    if (*v < r.min || *v > r.max)
+      throw InputError(key,
+                       format_significant(*v, 6) + " is outside " + range + " (" + r.table + ")");
     return;
   }
 }

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "core/common/number_format.h"
 
 namespace rockface::rockmass {
 
@@ -15,12 +16,6 @@ constexpr const char* kTableJa = "Barton 2002, Table Ja (joint alteration number
 constexpr const char* kTableJw = "Barton 2002, Table Jw (joint water reduction factor)";
 constexpr const char* kTableSrf = "Barton 2002, Table SRF (stress reduction factor)";
 
-std::string fixed_text(double v, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
-
 Rating entered(const char* parameter, const std::optional<double>& v, const char* table) {
   Rating r;
   r.parameter = parameter;
@@ -28,7 +23,7 @@ Rating entered(const char* parameter, const std::optional<double>& v, const char
   if (v) {
     r.value = v;
     r.rating = v;
-    r.value_words = fixed_text(*v, 2);
+    r.value_words = format_fixed(*v, 2);
     r.source = Source::entered;
   }
   return r;
@@ -72,14 +67,14 @@ QSystem q_system(const MeasuredForQ& m, const ClassificationForm& f) {
   if (m.rqd_percent) {
     out.rqd.value = m.rqd_percent;
     out.rqd.source = Source::measured;
-    if (f.rqd_percent) out.rqd.note = "entered " + fixed_text(*f.rqd_percent, 0) + " % not used";
+    if (f.rqd_percent) out.rqd.note = "entered " + format_fixed(*f.rqd_percent, 0) + " % not used";
   } else if (f.rqd_percent) {
     out.rqd.value = f.rqd_percent;
     out.rqd.source = Source::entered;
   }
   if (out.rqd.value) {
     out.rqd.rating = std::max(10.0, *out.rqd.value);
-    out.rqd.value_words = fixed_text(*out.rqd.value, 0) + " %";
+    out.rqd.value_words = format_fixed(*out.rqd.value, 0) + " %";
     if (*out.rqd.value < 10) out.rqd.note = "below 10: taken as 10";
   }
 
@@ -90,7 +85,7 @@ QSystem q_system(const MeasuredForQ& m, const ClassificationForm& f) {
     out.jn.value = out.jn.rating;
     out.jn.value_words = jn_words(*m.sets, m.random_joints);
     out.jn.source = Source::measured;
-    if (f.jn) out.jn.note = "entered " + fixed_text(*f.jn, 1) + " not used";
+    if (f.jn) out.jn.note = "entered " + format_fixed(*f.jn, 1) + " not used";
   } else if (f.jn) {
     out.jn = entered("Jn", f.jn, kTableJn);
   }
@@ -137,12 +132,12 @@ QSystem q_system(const MeasuredForQ& m, const ClassificationForm& f) {
     out.roof_pressure_kpa = 98.1 * (2.0 / *out.jr.rating) * std::pow(q, -1.0 / 3.0);
     out.support =
         span <= *out.max_unsupported_span_m
-            ? "the span " + fixed_text(span, 1) + " m is within the largest unsupported span " +
-                  fixed_text(*out.max_unsupported_span_m, 1) + " m (2 ESR Q^0.4)"
-            : "support needed: span " + fixed_text(span, 1) + " m over the largest unsupported " +
-                  fixed_text(*out.max_unsupported_span_m, 1) + " m; roof bolts " +
-                  fixed_text(*out.bolt_length_m, 1) + " m (2 + 0.15 B/ESR), roof pressure " +
-                  fixed_text(*out.roof_pressure_kpa, 0) + " kPa";
+            ? "the span " + format_fixed(span, 1) + " m is within the largest unsupported span " +
+                  format_fixed(*out.max_unsupported_span_m, 1) + " m (2 ESR Q^0.4)"
+            : "support needed: span " + format_fixed(span, 1) + " m over the largest unsupported " +
+                  format_fixed(*out.max_unsupported_span_m, 1) + " m; roof bolts " +
+                  format_fixed(*out.bolt_length_m, 1) + " m (2 + 0.15 B/ESR), roof pressure " +
+                  format_fixed(*out.roof_pressure_kpa, 0) + " kPa";
   }
   return out;
 }

@@ -1,7 +1,8 @@
 #include "core/rockmass/rmr89.h"
 
-#include <cstdio>
 #include <vector>
+
+#include "core/common/number_format.h"
 
 namespace rockface::rockmass {
 
@@ -14,12 +15,6 @@ constexpr const char* kTableA4 = "Bieniawski 1989, Table 4.1 A.4 (condition of d
 constexpr const char* kTableE = "Bieniawski 1989, Table 4.1 E (condition of discontinuities)";
 constexpr const char* kTableA5 = "Bieniawski 1989, Table 4.1 A.5 (groundwater)";
 constexpr const char* kTableB = "Bieniawski 1989, Table 4.1 B (orientation adjustment, tunnels)";
-
-std::string fixed_text_rmr(double v, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
 
 // A total over lines each with its own [lowest, highest] rating.
 struct Line {
@@ -171,14 +166,14 @@ Rmr89 rmr89(const MeasuredForRmr& m, const ClassificationForm& f) {
   a1.table = kTableA1;
   if (f.ucs_mpa) {
     a1.value = f.ucs_mpa;
-    a1.value_words = "UCS " + fixed_text_rmr(*f.ucs_mpa, 0) + " MPa";
+    a1.value_words = "UCS " + format_fixed(*f.ucs_mpa, 0) + " MPa";
     a1.rating = rmr_strength_ucs(*f.ucs_mpa);
     a1.source = Source::entered;
     if (f.is50_mpa)
-      a1.note = "rated on the UCS; Is50 " + fixed_text_rmr(*f.is50_mpa, 1) + " MPa entered";
+      a1.note = "rated on the UCS; Is50 " + format_fixed(*f.is50_mpa, 1) + " MPa entered";
   } else if (f.is50_mpa) {
     a1.value = f.is50_mpa;
-    a1.value_words = "Is50 " + fixed_text_rmr(*f.is50_mpa, 1) + " MPa";
+    a1.value_words = "Is50 " + format_fixed(*f.is50_mpa, 1) + " MPa";
     a1.rating = rmr_strength_is50(*f.is50_mpa);
     a1.source = a1.rating ? Source::entered : Source::not_entered;
     if (!a1.rating) a1.note = "Is50 below 1 MPa: the table asks for the UCS";
@@ -191,14 +186,14 @@ Rmr89 rmr89(const MeasuredForRmr& m, const ClassificationForm& f) {
   if (m.rqd_percent) {
     a2.value = m.rqd_percent;
     a2.source = Source::measured;
-    if (f.rqd_percent) a2.note = "entered " + fixed_text_rmr(*f.rqd_percent, 0) + " % not used";
+    if (f.rqd_percent) a2.note = "entered " + format_fixed(*f.rqd_percent, 0) + " % not used";
   } else if (f.rqd_percent) {
     a2.value = f.rqd_percent;
     a2.source = Source::entered;
   }
   if (a2.value) {
     a2.rating = rmr_rqd(*a2.value);
-    a2.value_words = fixed_text_rmr(*a2.value, 0) + " %";
+    a2.value_words = format_fixed(*a2.value, 0) + " %";
   }
 
   Rating& a3 = out.spacing;
@@ -208,13 +203,12 @@ Rmr89 rmr89(const MeasuredForRmr& m, const ClassificationForm& f) {
   if (m.spacing_m) {
     a3.value = m.spacing_m;
     a3.source = Source::measured;
-    a3.value_words =
-        fixed_text_rmr(*m.spacing_m, 2) + " m (" + m.spacing_set + ", the closest set)";
-    if (f.spacing_m) a3.note = "entered " + fixed_text_rmr(*f.spacing_m, 2) + " m not used";
+    a3.value_words = format_fixed(*m.spacing_m, 2) + " m (" + m.spacing_set + ", the closest set)";
+    if (f.spacing_m) a3.note = "entered " + format_fixed(*f.spacing_m, 2) + " m not used";
   } else if (f.spacing_m) {
     a3.value = f.spacing_m;
     a3.source = Source::entered;
-    a3.value_words = fixed_text_rmr(*f.spacing_m, 2) + " m";
+    a3.value_words = format_fixed(*f.spacing_m, 2) + " m";
   }
   if (a3.value) a3.rating = rmr_spacing(*a3.value);
 
@@ -240,14 +234,14 @@ Rmr89 rmr89(const MeasuredForRmr& m, const ClassificationForm& f) {
         return;
       }
       sum += r;
-      parts += (parts.empty() ? "" : ", ") + what + " " + fixed_text_rmr(r, 0);
+      parts += (parts.empty() ? "" : ", ") + what + " " + format_fixed(r, 0);
     };
     part("persistence", persistence.has_value(), persistence ? rmr_persistence(*persistence) : 0,
          persistence
-             ? fixed_text_rmr(*persistence, 1) + " m" + (persistence_measured ? " (measured)" : "")
+             ? format_fixed(*persistence, 1) + " m" + (persistence_measured ? " (measured)" : "")
              : "");
     part("aperture", f.aperture_mm.has_value(), f.aperture_mm ? rmr_aperture(*f.aperture_mm) : 0,
-         f.aperture_mm ? fixed_text_rmr(*f.aperture_mm, 1) + " mm" : "");
+         f.aperture_mm ? format_fixed(*f.aperture_mm, 1) + " mm" : "");
     part("roughness", f.roughness.has_value(), f.roughness ? rmr_roughness(*f.roughness) : 0,
          f.roughness ? words(*f.roughness) : "");
     part("infilling", f.infilling.has_value(), f.infilling ? rmr_infilling(*f.infilling) : 0,
@@ -264,7 +258,7 @@ Rmr89 rmr89(const MeasuredForRmr& m, const ClassificationForm& f) {
       for (const auto& o : open) list += (list.empty() ? "" : ", ") + o;
       a4.note = "not entered: " + list;
       if (persistence_measured && open.size() == 4)
-        a4.note += " (persistence measured: " + fixed_text_rmr(*m.persistence_m, 1) + " m)";
+        a4.note += " (persistence measured: " + format_fixed(*m.persistence_m, 1) + " m)";
     }
   }
 
@@ -280,7 +274,7 @@ Rmr89 rmr89(const MeasuredForRmr& m, const ClassificationForm& f) {
     a5.value = f.inflow_l_per_min;
     a5.unit = "l/min per 10 m";
     a5.rating = rmr_inflow(*f.inflow_l_per_min);
-    a5.value_words = fixed_text_rmr(*f.inflow_l_per_min, 0) + " l/min per 10 m of tunnel";
+    a5.value_words = format_fixed(*f.inflow_l_per_min, 0) + " l/min per 10 m of tunnel";
     a5.source = Source::entered;
   }
 

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include <Eigen/Geometry>
-#include <cstdio>
 
+#include "core/common/number_format.h"
 #include "core/rockmass/tolerances.h"
 
 namespace rockface::rockmass {
@@ -21,7 +21,6 @@ SetTraces assign_traces_to_sets(const std::vector<FaceTrace>& traces,
   out.members.resize(sets.size());
   out.set_of.assign(traces.size(), -1);
   out.how.resize(traces.size());
-  char text[160];
   for (std::size_t i = 0; i < traces.size(); ++i) {
     const FaceTrace& t = traces[i];
     int chosen = -1;
@@ -40,9 +39,7 @@ SetTraces assign_traces_to_sets(const std::vector<FaceTrace>& traces,
         }
       }
       if (chosen >= 0) {
-        std::snprintf(text, sizeof text, "its plane, %.1f deg from %s", best,
-                      sets[chosen].label.c_str());
-        out.how[i] = text;
+        out.how[i] = "its plane, " + format_fixed(best, 1, " deg") + " from " + sets[chosen].label;
       }
     }
     if (chosen < 0 && t.points.size() >= 2) {
@@ -58,9 +55,8 @@ SetTraces assign_traces_to_sets(const std::vector<FaceTrace>& traces,
         }
       }
       if (chosen >= 0) {
-        std::snprintf(text, sizeof text, "its direction on the face, %.1f deg from %s's traces",
-                      best, sets[chosen].label.c_str());
-        out.how[i] = text;
+        out.how[i] = "its direction on the face, " + format_fixed(best, 1, " deg") + " from " +
+                     sets[chosen].label + "'s traces";
       }
     }
     if (chosen < 0) {

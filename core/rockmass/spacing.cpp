@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include <Eigen/Geometry>
-#include <cstdio>
 #include <map>
 #include <numeric>
 
+#include "core/common/number_format.h"
 #include "core/rockmass/tolerances.h"
 
 namespace rockface::rockmass {
@@ -94,9 +94,8 @@ std::vector<SetSpacing> set_spacings(const std::vector<FaceTrace>& traces,
         const char* shape = *s.cv < 0.5   ? "regular"
                             : *s.cv < 1.3 ? "close to negative exponential (random positions)"
                                           : "clustered";
-        char text[120];
-        std::snprintf(text, sizeof text, "%s (CV %.2f over %zu gaps)", shape, *s.cv, g.size());
-        s.distribution = text;
+        s.distribution = std::string(shape) + " (CV " + format_fixed(*s.cv, 2) + " over " +
+                         std::to_string(g.size()) + " gaps)";
       } else {
         s.distribution = "one gap: no distribution";
       }

@@ -21,6 +21,7 @@
 #include "core/kinematics/effects/effect_water.h"
 #include "core/kinematics/joint_pyramids.h"
 #include "core/tunnel/tolerances.h"
+#include "core/tunnel/wedge_analysis_phases.h"
 #include "core/tunnel/wedge_geometry.h"
 
 namespace rockface::tunnel {
@@ -115,15 +116,7 @@ bool support_here(const SupportPlaces& s, WedgePlace p) {
   return false;
 }
 
-struct Context {
-  const SectionPolygon& section;
-  const TunnelFrame& frame;
-  const Eigen::Vector3d& datum;
-  const std::vector<WedgeJointSet>& sets;
-  const WedgeOptions& options;
-  const kinematics::Effects& loads;
-  Eigen::Vector2d centre;
-};
+using wedge_phases::Context;
 
 // Mass, mode, factors of safety and support of a built wedge.
 void analyse_wedge(const Context& c, Wedge& w, const std::vector<WedgePlane>& planes,
@@ -205,12 +198,6 @@ void analyse_wedge(const Context& c, Wedge& w, const std::vector<WedgePlane>& pl
   if (w.face_area > 0) w.support_pressure = (w.bolt_force + w.shotcrete_force) / w.face_area;
 }
 
-std::string code_text(std::size_t n, const std::vector<int>& idx, const std::vector<double>& sign) {
-  std::string code(n, '2');
-  for (std::size_t k = 0; k < idx.size(); ++k) code[idx[k]] = sign[k] > 0 ? '0' : '1';
-  return code;
-}
-
 }  // namespace
 
 const char* wedge_place_name(WedgePlace p) {
@@ -244,15 +231,261 @@ TunnelFrame axis_frame(double trend, double plunge, const Eigen::Vector3d& origi
   return f;
 }
 
-WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& frame,
-                             const Eigen::Vector3d& datum, const std::vector<WedgeJointSet>& sets,
-                             const WedgeOptions& options) {
+namespace wedge_phases {
+
+void check_sets(const std::vector<WedgeJointSet>& sets) {
   if (sets.size() < 3)
     throw InputError("sets",
                      "a wedge needs three joint sets; " + std::to_string(sets.size()) + " given");
   for (std::size_t i = 0; i < sets.size(); ++i)
     if (!sets[i].normal.allFinite() || !(sets[i].normal.norm() > 0.5))
       throw InputError("sets[" + std::to_string(i) + "]", "has no orientation");
+}
+
+geometry::Cone face_excavation_pyramid(const TunnelFrame& frame) {
+  kinematics::FreeFaceSpec face_spec;
+  face_spec.normal = frame.along.z() >= 0 ? frame.along : Eigen::Vector3d(-frame.along);
+  face_spec.rock_side =
+      frame.along.z() >= 0 ? geometry::HalfSpace::Upper : geometry::HalfSpace::Lower;
+  return kinematics::excavation_pyramid({face_spec});
+}
+
+std::string code_text(std::size_t n, const std::vector<int>& idx, const std::vector<double>& sign) {
+  std::string code(n, '2');
+  for (std::size_t k = 0; k < idx.size(); ++k) code[idx[k]] = sign[k] > 0 ? '0' : '1';
+  return code;
+}
+
+std::optional<NoWedge> parallel_sets(const std::vector<WedgeJointSet>& sets,
+                                     const std::array<int, 3>& idx, double uncertainty) {
+  const std::size_t n = sets.size();
+  const auto [i, j, k] = idx;
+  const double det = std::abs(sets[i].normal.dot(sets[j].normal.cross(sets[k].normal)));
+  if (!(det < std::sin(uncertainty) * 1e-3)) return std::nullopt;
+  const std::vector<std::string> ids{sets[i].id, sets[j].id, sets[k].id};
+  NoWedge nw;
+  nw.code = code_text(n, {i, j, k}, {1, 1, 1})
+                .replace(static_cast<std::size_t>(i), 1, "*")
+                .replace(static_cast<std::size_t>(j), 1, "*")
+                .replace(static_cast<std::size_t>(k), 1, "*");
+  nw.sets = ids;
+  nw.reason = "sets " + ids[0] + ", " + ids[1] + " and " + ids[2] +
+              " meet in one line (or two are parallel): they bound no wedge";
+  return nw;
+}
+
+SetPyramid set_pyramid(const std::vector<WedgeJointSet>& sets, const std::array<int, 3>& idx,
+                       int combination) {
+  SetPyramid p;
+  p.idx.assign(idx.begin(), idx.end());
+  for (int m : idx) p.ids.push_back(sets[m].id);
+  const int c = combination;
+  p.sign = {(c & 4) ? -1.0 : 1.0, (c & 2) ? -1.0 : 1.0, (c & 1) ? -1.0 : 1.0};
+  for (int m = 0; m < 3; ++m) {
+    p.planes.push_back({p.idx[m], p.ids[m], sets[p.idx[m]].normal.normalized(), p.sign[m]});
+    p.inward.push_back(p.planes.back().inward());
+  }
+  p.code = code_text(sets.size(), p.idx, p.sign);
+  return p;
+}
+
+FoundWedge face_wedge(const Context& c, const SetPyramid& p,
+                      const std::vector<Eigen::Vector3d>& edges, const geometry::Cone& face_ep) {
+  FoundWedge out;
+  const WedgeOptions& options = c.options;
+  const TunnelFrame& frame = c.frame;
+  if (!options.face) return out;
+  std::vector<kinematics::JointSpec> js;
+  std::vector<geometry::HalfSpace> hs(3);
+  for (int m = 0; m < 3; ++m) {
+    js.push_back({p.planes[m].normal, c.sets[p.idx[m]].friction});
+    hs[m] = p.sign[m] > 0 ? geometry::HalfSpace::Upper : geometry::HalfSpace::Lower;
+  }
+  const kinematics::PyramidVerdict pv = kinematics::analyse_joint_pyramid(
+      js, hs, face_ep, {options.uncertainty, Eigen::Vector3d::Zero()});
+  if (!(pv.removable.value || pv.removable.marginal)) {
+    out.none = NoWedge{p.code, p.ids, -pv.removable.margin,
+                       "opens toward the tunnel but is not removable from the face: "
+                       "its pyramid reaches into the rock ahead (by " +
+                           fixed1(pv.removable.margin * kDegPerRad) + " deg)"};
+    return out;
+  }
+  const auto tri = face_unit_triangle(edges, frame);
+  FaceFit fit = largest_face_triangle(c.section, tri);
+  if (!(fit.scale > 0)) return out;
+  Wedge w;
+  w.code = p.code;
+  w.sets = p.ids;
+  double side = 0;
+  for (const auto& a : tri)
+    for (const auto& b : tri) side = std::max(side, (a - b).norm());
+  if (options.trace_length_limit && fit.scale * side > *options.trace_length_limit) {
+    Eigen::Vector2d mean = (tri[0] + tri[1] + tri[2]) / 3.0;
+    const double s = *options.trace_length_limit / side;
+    fit.offset += (fit.scale - s) * mean;
+    w.scale = s / fit.scale;
+    w.scaled = true;
+    fit.scale = s;
+  }
+  w.place = WedgePlace::face;
+  for (const auto& t : tri) w.outline.push_back(fit.offset + fit.scale * t);
+  w.removable = pv.removable;
+  const int first_free = static_cast<int>(c.sets.size());
+  try {
+    w.block = face_wedge_block(p.code, frame, c.datum, p.planes, fit, first_free + 1000);
+  } catch (const std::exception& e) {
+    out.none = NoWedge{p.code, p.ids, 0, std::string("could not be built: ") + e.what()};
+    return out;
+  }
+  const Eigen::Vector3d apex = frame.to_local(fit.offset.x(), fit.offset.y(), fit.scale);
+  w.apex = apex + c.datum;
+  w.apex_height = fit.scale;
+  w.bolt_length_to_apex = fit.scale;
+  const Eigen::Vector2d centre = fit.offset + fit.scale * (tri[0] + tri[1] + tri[2]) / 3.0;
+  w.position_deg = std::atan2(centre.y() - c.centre.y(), centre.x() - c.centre.x()) * kDegPerRad;
+  w.trace_lengths = traces_of(w.block);
+  analyse_wedge(c, w, p.planes, apex);
+  out.wedge = std::move(w);
+  return out;
+}
+
+Eigen::Vector2d apex_at_trace_limit(
+    const SectionPolygon& section, const std::vector<BasePiece>& base, const Eigen::Vector2d& q_max,
+    double limit, const std::function<double(const Eigen::Vector2d&)>& longest_trace_at) {
+  const Eigen::Vector2d mid = 0.5 * (base.front().a + base.back().b);
+  auto at = [&](double l) { return Eigen::Vector2d(mid + l * (q_max - mid)); };
+  double lo = 0, hi = 1;  // the apex reaches the outline at lo
+  for (int it = 0; it < 60; ++it) {
+    const double m = 0.5 * (lo + hi);
+    (section.contains(at(m)) ? lo : hi) = m;
+  }
+  hi = 1;
+  for (int it = 0; it < 60 && hi - lo > kWedgeTraceRel * (1 - lo); ++it) {
+    const double m = 0.5 * (lo + hi);
+    const double t = longest_trace_at(at(m));
+    (t > limit ? hi : lo) = m;
+  }
+  return at(lo);
+}
+
+Eigen::Vector2d lay_out_on_perimeter(const SectionPolygon& section,
+                                     const std::vector<BasePiece>& base, const Eigen::Vector2d& q,
+                                     Wedge& w) {
+  // Where its face lies: the area-weighted centre of its pieces.
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double len = 0;
+  std::set<std::size_t> segs;
+  for (std::size_t p = 0; p < base.size(); ++p) {
+    const double l = (base[p].b - base[p].a).norm();
+    centre += l * 0.5 * (base[p].a + base[p].b);
+    len += l;
+    segs.insert(section.vertices[base[p].edge].segment);
+    if (p == 0) continue;
+    // The outline vertex between this piece and the previous one.
+    const std::size_t e1 = base[p - 1].edge, e2 = base[p].edge, m = section.size();
+    const std::size_t first = (e1 + 1) % m == e2 ? e1 : e2;  // in the outline's order
+    const std::size_t second = first == e1 ? e2 : e1;
+    const auto& v = section.vertices[second];
+    if ((first + 1) % m != second || !v.corner) continue;
+    const std::size_t sa = section.vertices[first].segment, sb = v.segment;
+    w.corners.push_back("crosses the profile's corner at (" + fixed1(v.p.x()) + ", " +
+                        fixed1(v.p.y()) + ") m between segment " + std::to_string(sa + 1) + " (" +
+                        section.segment_kinds[sa] + ") and segment " + std::to_string(sb + 1) +
+                        " (" + section.segment_kinds[sb] + ")");
+  }
+  centre /= len;
+  w.outline.push_back(q);
+  w.outline.push_back(base.front().a);
+  for (const auto& piece : base) w.outline.push_back(piece.b);
+  w.segments.assign(segs.begin(), segs.end());
+  return centre;
+}
+
+FoundWedge perimeter_wedge(const Context& c, const SetPyramid& p,
+                           const std::vector<Eigen::Vector3d>& edges, double jp_margin) {
+  FoundWedge out;
+  const SectionPolygon& section = c.section;
+  const WedgeOptions& options = c.options;
+  const TunnelFrame& frame = c.frame;
+  const int first_free = static_cast<int>(c.sets.size());
+  const PyramidSector sector = pyramid_sector(edges, frame);
+  if (!sector.pointed) {
+    out.none = NoWedge{p.code, p.ids, sector.margin,
+                       "seen along the axis its pyramid spans " + fixed1(sector.span * kDegPerRad) +
+                           " deg (180 or more): the wedge would run along the tunnel without end"};
+    return out;
+  }
+  const Eigen::Vector2d q_max = largest_apex(section, sector);
+  if (section.distance(q_max) <= kWedgeVertexMergeRel * (q_max.norm() + section.perimeter)) {
+    // Both edges of the sector touch the outline at one point (an edge of
+    // the pyramid runs along a straight side seen along the axis): the
+    // largest wedge there has no size.
+    out.none = NoWedge{p.code, p.ids, 0,
+                       "its wedge has no size: seen along the axis an edge of its "
+                       "pyramid runs along a straight side of the section"};
+    return out;
+  }
+  auto build = [&](const Eigen::Vector2d& q, std::vector<BasePiece>& base) {
+    base = visible_base(section, sector, q);
+    return perimeter_wedge_block(p.code, frame, c.datum, p.planes, section, base, q, 0, first_free);
+  };
+  Wedge w;
+  w.code = p.code;
+  w.sets = p.ids;
+  std::vector<BasePiece> base;
+  Eigen::Vector2d q = q_max;
+  try {
+    w.block = build(q, base);
+    w.trace_lengths = traces_of(w.block);
+    if (options.trace_length_limit && longest(w.trace_lengths) > *options.trace_length_limit) {
+      const double full = longest(w.trace_lengths);
+      q = apex_at_trace_limit(section, base, q_max, *options.trace_length_limit,
+                              [&](const Eigen::Vector2d& at) {
+                                std::vector<BasePiece> b;
+                                return longest(traces_of(build(at, b)));
+                              });
+      w.block = build(q, base);
+      w.trace_lengths = traces_of(w.block);
+      w.scaled = true;
+      w.scale = longest(w.trace_lengths) / full;
+    }
+  } catch (const std::exception& e) {
+    out.none =
+        NoWedge{p.code, p.ids, sector.margin, std::string("could not be built: ") + e.what()};
+    return out;
+  }
+  w.removable = geometry::decide(std::min(jp_margin, sector.margin), options.uncertainty);
+  const Eigen::Vector3d apex = frame.to_local(q.x(), q.y(), 0);
+  w.apex = apex + c.datum;
+  const Eigen::Vector2d c0 = base.front().a, cm = base.back().b;
+  const Eigen::Vector2d chord = cm - c0;
+  w.apex_height = chord.norm() > 0
+                      ? std::abs(chord.x() * (q - c0).y() - chord.y() * (q - c0).x()) / chord.norm()
+                      : (q - c0).norm();
+  w.bolt_length_to_apex = section.distance(q);
+  const Eigen::Vector2d centre = lay_out_on_perimeter(section, base, q, w);
+  w.position_deg = std::atan2(centre.y() - c.centre.y(), centre.x() - c.centre.x()) * kDegPerRad;
+  w.place = place_of(w.position_deg);
+  w.notes.insert(w.notes.end(), w.corners.begin(), w.corners.end());
+  analyse_wedge(c, w, p.planes, apex);
+  out.wedge = std::move(w);
+  return out;
+}
+
+void order_wedges(std::vector<Wedge>& wedges) {
+  std::stable_sort(wedges.begin(), wedges.end(), [](const Wedge& a, const Wedge& b) {
+    if (a.place != b.place) return a.place < b.place;
+    return a.mass.volume > b.mass.volume;
+  });
+}
+
+}  // namespace wedge_phases
+
+WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& frame,
+                             const Eigen::Vector3d& datum, const std::vector<WedgeJointSet>& sets,
+                             const WedgeOptions& options) {
+  using namespace wedge_phases;
+  check_sets(sets);
   check_options(options);
   WedgeAnalysis out;
   out.frame = frame;
@@ -263,218 +496,47 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
   if (options.bolts) out.effects_simulated.push_back("bolts");
   if (options.shotcrete) out.effects_simulated.push_back("shotcrete");
   const Context ctx{out.section, frame, datum, sets, options, loads, profile.ray_centre()};
-  const int first_free = static_cast<int>(sets.size());
+  const geometry::Cone face_ep = face_excavation_pyramid(frame);
 
-  // The face: rock ahead of it (the drive direction), its EP for block theory.
-  kinematics::FreeFaceSpec face_spec;
-  face_spec.normal = frame.along.z() >= 0 ? frame.along : Eigen::Vector3d(-frame.along);
-  face_spec.rock_side =
-      frame.along.z() >= 0 ? geometry::HalfSpace::Upper : geometry::HalfSpace::Lower;
-  const geometry::Cone face_ep = kinematics::excavation_pyramid({face_spec});
-
+  auto found = [&](FoundWedge f) {
+    if (f.none) out.none.push_back(std::move(*f.none));
+    if (f.wedge) out.wedges.push_back(std::move(*f.wedge));
+  };
   const std::size_t n = sets.size();
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
       for (std::size_t k = j + 1; k < n; ++k) {
-        const std::vector<int> idx{static_cast<int>(i), static_cast<int>(j), static_cast<int>(k)};
-        const std::vector<std::string> ids{sets[i].id, sets[j].id, sets[k].id};
-        // Parallel sets, or three sets through one line, bound no pyramid.
-        const double det = std::abs(sets[i].normal.dot(sets[j].normal.cross(sets[k].normal)));
-        if (det < std::sin(options.uncertainty) * 1e-3) {
-          NoWedge nw;
-          nw.code =
-              code_text(n, idx, {1, 1, 1}).replace(i, 1, "*").replace(j, 1, "*").replace(k, 1, "*");
-          nw.sets = ids;
-          nw.reason = "sets " + ids[0] + ", " + ids[1] + " and " + ids[2] +
-                      " meet in one line (or two are parallel): they bound no wedge";
-          out.none.push_back(nw);
+        const std::array<int, 3> idx{static_cast<int>(i), static_cast<int>(j), static_cast<int>(k)};
+        if (auto none = parallel_sets(sets, idx, options.uncertainty)) {
+          out.none.push_back(std::move(*none));
           continue;
         }
-        for (int c = 0; c < 8; ++c) {
-          std::vector<double> sign{(c & 4) ? -1.0 : 1.0, (c & 2) ? -1.0 : 1.0,
-                                   (c & 1) ? -1.0 : 1.0};
-          std::vector<WedgePlane> planes;
-          std::vector<Eigen::Vector3d> inward;
-          for (int m = 0; m < 3; ++m) {
-            planes.push_back({idx[m], ids[m], sets[idx[m]].normal.normalized(), sign[m]});
-            inward.push_back(planes.back().inward());
-          }
-          const std::string code = code_text(n, idx, sign);
-          const geometry::Cone jp(inward);
+        for (int combination = 0; combination < 8; ++combination) {
+          const SetPyramid p = set_pyramid(sets, idx, combination);
+          const geometry::Cone jp(p.inward);
           const geometry::ConeMargin jm = jp.margin();
           if (!(jm.angle > 0)) continue;  // independent planes: never empty
           const std::vector<Eigen::Vector3d> edges = jp.edges(jm.angle);
-          Wedge w;
-          w.code = code;
-          w.sets = ids;
           // Strictly inside (beyond rounding): a pyramid with an edge along the
           // axis is a perimeter pyramid that never ends, not a face one.
-          const bool into_tunnel = jp.margin_of(-frame.along) > kWedgeAlongAxisSine;
-          if (into_tunnel) {
-            if (!options.face) continue;
-            std::vector<kinematics::JointSpec> js;
-            std::vector<geometry::HalfSpace> hs(3);
-            for (int m = 0; m < 3; ++m) {
-              js.push_back({planes[m].normal, sets[idx[m]].friction});
-              hs[m] = sign[m] > 0 ? geometry::HalfSpace::Upper : geometry::HalfSpace::Lower;
-            }
-            const kinematics::PyramidVerdict pv = kinematics::analyse_joint_pyramid(
-                js, hs, face_ep, {options.uncertainty, Eigen::Vector3d::Zero()});
-            if (!(pv.removable.value || pv.removable.marginal)) {
-              out.none.push_back({code, ids, -pv.removable.margin,
-                                  "opens toward the tunnel but is not removable from the face: "
-                                  "its pyramid reaches into the rock ahead (by " +
-                                      fixed1(pv.removable.margin * kDegPerRad) + " deg)"});
-              continue;
-            }
-            const auto tri = face_unit_triangle(edges, frame);
-            FaceFit fit = largest_face_triangle(out.section, tri);
-            if (!(fit.scale > 0)) continue;
-            double side = 0;
-            for (const auto& a : tri)
-              for (const auto& b : tri) side = std::max(side, (a - b).norm());
-            if (options.trace_length_limit && fit.scale * side > *options.trace_length_limit) {
-              Eigen::Vector2d mean = (tri[0] + tri[1] + tri[2]) / 3.0;
-              const double s = *options.trace_length_limit / side;
-              fit.offset += (fit.scale - s) * mean;
-              w.scale = s / fit.scale;
-              w.scaled = true;
-              fit.scale = s;
-            }
-            w.place = WedgePlace::face;
-            for (const auto& t : tri) w.outline.push_back(fit.offset + fit.scale * t);
-            w.removable = pv.removable;
-            try {
-              w.block = face_wedge_block(code, frame, datum, planes, fit, first_free + 1000);
-            } catch (const std::exception& e) {
-              out.none.push_back({code, ids, 0, std::string("could not be built: ") + e.what()});
-              continue;
-            }
-            const Eigen::Vector3d apex = frame.to_local(fit.offset.x(), fit.offset.y(), fit.scale);
-            w.apex = apex + datum;
-            w.apex_height = fit.scale;
-            w.bolt_length_to_apex = fit.scale;
-            const Eigen::Vector2d centre =
-                fit.offset + fit.scale * (tri[0] + tri[1] + tri[2]) / 3.0;
-            w.position_deg =
-                std::atan2(centre.y() - ctx.centre.y(), centre.x() - ctx.centre.x()) * kDegPerRad;
-            w.trace_lengths = traces_of(w.block);
-            analyse_wedge(ctx, w, planes, apex);
-            out.wedges.push_back(std::move(w));
+          if (jp.margin_of(-frame.along) > kWedgeAlongAxisSine) {
+            found(face_wedge(ctx, p, edges, face_ep));
             continue;
           }
           if (jp.margin_of(frame.along) > kWedgeAlongAxisSine)
             continue;  // opens into the rock ahead of the face
           if (!options.perimeter) continue;
-          const PyramidSector sector = pyramid_sector(edges, frame);
-          if (!sector.pointed) {
-            out.none.push_back(
-                {code, ids, sector.margin,
-                 "seen along the axis its pyramid spans " + fixed1(sector.span * kDegPerRad) +
-                     " deg (180 or more): the wedge would run along the tunnel without end"});
-            continue;
-          }
-          const Eigen::Vector2d q_max = largest_apex(out.section, sector);
-          if (out.section.distance(q_max) <=
-              kWedgeVertexMergeRel * (q_max.norm() + out.section.perimeter)) {
-            // Both edges of the sector touch the outline at one point (an
-            // edge of the pyramid runs along a straight side seen along the
-            // axis): the largest wedge there has no size.
-            out.none.push_back({code, ids, 0,
-                                "its wedge has no size: seen along the axis an edge of its "
-                                "pyramid runs along a straight side of the section"});
-            continue;
-          }
-          auto build = [&](const Eigen::Vector2d& q, std::vector<BasePiece>& base) {
-            base = visible_base(out.section, sector, q);
-            return perimeter_wedge_block(code, frame, datum, planes, out.section, base, q, 0,
-                                         first_free);
-          };
-          std::vector<BasePiece> base;
-          Eigen::Vector2d q = q_max;
-          try {
-            w.block = build(q, base);
-            w.trace_lengths = traces_of(w.block);
-            if (options.trace_length_limit &&
-                longest(w.trace_lengths) > *options.trace_length_limit) {
-              const double full = longest(w.trace_lengths);
-              const Eigen::Vector2d mid = 0.5 * (base.front().a + base.back().b);
-              auto at = [&](double l) { return Eigen::Vector2d(mid + l * (q_max - mid)); };
-              double lo = 0, hi = 1;  // the apex reaches the outline at lo
-              for (int it = 0; it < 60; ++it) {
-                const double m = 0.5 * (lo + hi);
-                (out.section.contains(at(m)) ? lo : hi) = m;
-              }
-              hi = 1;
-              for (int it = 0; it < 60 && hi - lo > kWedgeTraceRel * (1 - lo); ++it) {
-                const double m = 0.5 * (lo + hi);
-                std::vector<BasePiece> b;
-                const auto t = longest(traces_of(build(at(m), b)));
-                (t > *options.trace_length_limit ? hi : lo) = m;
-              }
-              q = at(lo);
-              w.block = build(q, base);
-              w.trace_lengths = traces_of(w.block);
-              w.scaled = true;
-              w.scale = longest(w.trace_lengths) / full;
-            }
-          } catch (const std::exception& e) {
-            out.none.push_back(
-                {code, ids, sector.margin, std::string("could not be built: ") + e.what()});
-            continue;
-          }
-          w.removable = geometry::decide(std::min(jm.angle, sector.margin), options.uncertainty);
-          const Eigen::Vector3d apex = frame.to_local(q.x(), q.y(), 0);
-          w.apex = apex + datum;
-          const Eigen::Vector2d c0 = base.front().a, cm = base.back().b;
-          const Eigen::Vector2d chord = cm - c0;
-          w.apex_height =
-              chord.norm() > 0
-                  ? std::abs(chord.x() * (q - c0).y() - chord.y() * (q - c0).x()) / chord.norm()
-                  : (q - c0).norm();
-          w.bolt_length_to_apex = out.section.distance(q);
-          // Where its face lies: the area-weighted centre of its pieces.
-          Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-          double len = 0;
-          std::set<std::size_t> segs;
-          for (std::size_t p = 0; p < base.size(); ++p) {
-            const double l = (base[p].b - base[p].a).norm();
-            centre += l * 0.5 * (base[p].a + base[p].b);
-            len += l;
-            segs.insert(out.section.vertices[base[p].edge].segment);
-            if (p == 0) continue;
-            // The outline vertex between this piece and the previous one.
-            const std::size_t e1 = base[p - 1].edge, e2 = base[p].edge, m = out.section.size();
-            const std::size_t first = (e1 + 1) % m == e2 ? e1 : e2;  // in the outline's order
-            const std::size_t second = first == e1 ? e2 : e1;
-            const auto& v = out.section.vertices[second];
-            if ((first + 1) % m != second || !v.corner) continue;
-            const std::size_t sa = out.section.vertices[first].segment, sb = v.segment;
-            w.corners.push_back("crosses the profile's corner at (" + fixed1(v.p.x()) + ", " +
-                                fixed1(v.p.y()) + ") m between segment " + std::to_string(sa + 1) +
-                                " (" + out.section.segment_kinds[sa] + ") and segment " +
-                                std::to_string(sb + 1) + " (" + out.section.segment_kinds[sb] +
-                                ")");
-          }
-          centre /= len;
-          w.outline.push_back(q);
-          w.outline.push_back(base.front().a);
-          for (const auto& piece : base) w.outline.push_back(piece.b);
-          w.segments.assign(segs.begin(), segs.end());
-          w.position_deg =
-              std::atan2(centre.y() - ctx.centre.y(), centre.x() - ctx.centre.x()) * kDegPerRad;
-          w.place = place_of(w.position_deg);
-          w.notes.insert(w.notes.end(), w.corners.begin(), w.corners.end());
-          analyse_wedge(ctx, w, planes, apex);
-          out.wedges.push_back(std::move(w));
+          found(perimeter_wedge(ctx, p, edges, jm.angle));
         }
       }
-  std::stable_sort(out.wedges.begin(), out.wedges.end(), [](const Wedge& a, const Wedge& b) {
-    if (a.place != b.place) return a.place < b.place;
-    return a.mass.volume > b.mass.volume;
-  });
-  for (std::size_t i = 0; i < out.wedges.size(); ++i)
-    out.wedges[i].id = "W" + std::to_string(i + 1);
+  order_wedges(out.wedges);
+  for (std::size_t i = 0; i < out.wedges.size(); ++i) {
+    // Built by appending: "W" + number trips GCC 12's false -Wrestrict
+    // (a string's replace, inlined at -O3) in this function.
+    std::string id("W");
+    id.append(std::to_string(i + 1));
+    out.wedges[i].id = std::move(id);
+  }
   if (out.wedges.empty())
     out.notes.push_back("no removable wedge: " +
                         (out.none.empty() ? std::string("the sets form none around this section")

@@ -7,13 +7,13 @@
 #include <iostream>
 #include <memory>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/office/office_workflows.h"
-#include "firmware-app/tunnel/png_file.h"
 #include "firmware-app/tunnel/project_drive.h"
-#include "storage/export_file.h"
 #include "storage/field_report/tunnel_pictures.h"
+#include "storage/image_file.h"
 #include "storage/project_store.h"
 
 namespace rockface::app {
@@ -45,8 +45,8 @@ VerbRun setup_drive(CLI::App& sub) {
       storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
       drive = project_drive(store);
     }
-    write_png(o->out, storage::drive_picture(drive));
-    if (!o->csv.empty()) storage::write_text_atomically(o->csv, drive_csv(drive));
+    storage::write_image_file(o->out, storage::drive_picture(drive), ".png");
+    if (!o->csv.empty()) write_text_atomically(o->csv, drive_csv(drive));
     for (const auto& line : drive_summary(drive)) std::cout << line << "\n";
     std::cout << "drive: " << o->out << "\n";
     return 0;

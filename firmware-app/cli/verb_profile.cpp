@@ -5,13 +5,13 @@
 #include <memory>
 #include <optional>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
-#include "firmware-app/tunnel/png_file.h"
 #include "firmware-app/tunnel/visit_profile.h"
 #include "firmware-app/tunnel/visit_profile_json.h"
-#include "storage/export_file.h"
 #include "storage/field_report/tunnel_pictures.h"
+#include "storage/image_file.h"
 #include "storage/project_store.h"
 
 namespace rockface::app {
@@ -38,8 +38,9 @@ VerbRun setup_profile(CLI::App& sub) {
     const auto visit = o->visit ? o->visit : store.latest_visit();
     if (!visit) throw InputError(o->project, "the project has no visit");
     const VisitProfile profile = visit_profile(store, *visit, preset);
-    write_png(o->out, storage::developed_view_picture(profile.deviation, profile.tunnel.profile));
-    if (!o->json.empty()) storage::write_text_atomically(o->json, visit_profile_json(profile));
+    storage::write_image_file(
+        o->out, storage::developed_view_picture(profile.deviation, profile.tunnel.profile), ".png");
+    if (!o->json.empty()) write_text_atomically(o->json, visit_profile_json(profile));
     for (const auto& line : visit_profile_summary(profile)) std::cout << line << "\n";
     std::cout << "developed view: " << o->out << "\n";
     // Nothing to compare (no walls in view) is said in the summary and on

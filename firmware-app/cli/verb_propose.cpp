@@ -8,8 +8,7 @@
 #include <memory>
 #include <optional>
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/propose/proposals_json.h"
@@ -19,9 +18,9 @@
 #include "firmware-app/rockmass/rock_mass_report.h"
 #include "firmware-app/tunnel/report_tunnel.h"
 #include "firmware-app/wedges/report_wedges.h"
-#include "storage/export_file.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
+#include "storage/image_file.h"
 #include "storage/project_store.h"
 
 namespace rockface::app {
@@ -59,13 +58,12 @@ VerbRun setup_propose(CLI::App& sub) {
     request.preset = parse_preset(o->preset, "--preset");
     NoProgress progress;
     const ProposeResult r = propose_for_visit(request, progress);
-    storage::write_text_atomically(o->out, proposals_json(r, request.preset));
+    write_text_atomically(o->out, proposals_json(r, request.preset));
     for (const auto& line : proposals_summary(r)) std::cout << line << "\n";
     std::cout << "proposals: " << o->out << "\n";
     if (o->png) {
       const auto png = std::filesystem::path(o->out).replace_extension(".png");
-      if (!cv::imwrite(png.string(), proposals_picture(r)))
-        throw Error(png.string() + ": cannot write the picture");
+      storage::write_image_file(png, proposals_picture(r));
       std::cout << "picture: " << png.string() << "\n";
     }
     if (!o->report.empty()) {

@@ -7,11 +7,11 @@
 #include <memory>
 #include <optional>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/rockmass/figures_in_words.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/rockmass/visit_rock_mass.h"
-#include "storage/export_file.h"
 #include "storage/project_store.h"
 #include "storage/rockmass_form_json.h"
 #include "storage/rockmass_report_json.h"
@@ -43,7 +43,7 @@ VerbRun setup_rockmass(CLI::App& sub) {
     if (!visit) throw InputError(o->project, "the project has no visit");
     if (form) store.save_rockmass_form(*visit, *form);
     const rockmass::RockMassFigures figures = visit_rock_mass(store, *visit);
-    storage::write_text_atomically(o->out, storage::rockmass_report_json(figures).dump(2) + "\n");
+    write_text_atomically(o->out, storage::rockmass_report_json(figures).dump(2) + "\n");
     for (const auto& line : rockmass::figures_lines(figures)) std::cout << line << "\n";
     for (const auto& line : rockmass::classification_lines(figures)) std::cout << line << "\n";
     std::cout << "rock mass: " << o->out << "\n";

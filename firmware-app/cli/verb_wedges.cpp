@@ -6,12 +6,12 @@
 #include <iostream>
 #include <memory>
 
+#include "core/common/atomic_file.h"
 #include "firmware-app/cli/verb_registry.h"
-#include "firmware-app/tunnel/png_file.h"
 #include "firmware-app/wedges/wedges_json.h"
 #include "firmware-app/wedges/wedges_workflow.h"
-#include "storage/export_file.h"
 #include "storage/field_report/wedge_pictures.h"
+#include "storage/image_file.h"
 
 namespace rockface::app {
 namespace {
@@ -41,12 +41,12 @@ VerbRun setup_wedges(CLI::App& sub) {
   sub.add_option("--shotcrete", q.shotcrete, "project: shotcrete THICKNESS,SHEAR_STRENGTH");
   return [o] {
     const WedgesResult r = wedges_from_input(o->request);
-    storage::write_text_atomically(o->out, wedges_json(r.run, r.analysis));
+    write_text_atomically(o->out, wedges_json(r.run, r.analysis));
     for (const auto& line : wedges_summary(r.run, r.analysis)) std::cout << line << "\n";
     std::cout << "wedges: " << o->out << "\n";
     if (o->png) {
       const auto png = std::filesystem::path(o->out).replace_extension(".png");
-      write_png(png, storage::wedges_picture(r.analysis));
+      storage::write_image_file(png, storage::wedges_picture(r.analysis), ".png");
       std::cout << "picture: " << png.string() << "\n";
     }
     return 0;

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <set>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace rockface::app {
@@ -196,11 +196,9 @@ std::vector<std::string> named_joint_notes(const measure::MeasuredPicks& r) {
   for (const auto& named : r.joints) {
     std::string said = named.label + " (" + traces_source(named) + "): ";
     if (named.plane.known) {
-      char text[96];
-      std::snprintf(text, sizeof text, "joint %.1f/%.1f, sigma %.1f deg",
-                    rad_to_deg(named.plane.orientation.dip),
-                    rad_to_deg(named.plane.orientation.dipdir), rad_to_deg(named.plane.sigma));
-      said += text;
+      said += "joint " + format_fixed(rad_to_deg(named.plane.orientation.dip), 1) + "/" +
+              format_fixed(rad_to_deg(named.plane.orientation.dipdir), 1) + ", sigma " +
+              format_fixed(rad_to_deg(named.plane.sigma), 1, " deg");
       if (!named.plane.problem.empty()) said += "; " + named.plane.problem;
     } else {
       said += "no joint stored: " + named.plane.problem;

@@ -7,16 +7,15 @@
 #include <sstream>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/measure/pair_photo.h"
 #include "core/measure/stereonet_image.h"
 #include "firmware-app/measure/measure_records.h"
 #include "firmware-app/measure/measures_json.h"
-#include "storage/export_file.h"
 #include "storage/export_joints_csv.h"
+#include "storage/image_file.h"
 #include "storage/picks_json.h"
 #include "storage/project_store.h"
 
@@ -164,13 +163,12 @@ MeasureOutcome measure_picks_file(const MeasureRequest& r) {
   std::map<std::string, std::string> further_models;
   for (const auto& f : further)
     for (const auto& [name, view] : f.views) further_models[name] = f.name;
-  storage::write_text_atomically(r.out,
-                                 measures_json(measured, context, model.name, further_models));
-  if (!png.empty() && !cv::imwrite(r.png, png)) throw Error(r.png + ": cannot write the picture");
+  write_text_atomically(r.out, measures_json(measured, context, model.name, further_models));
+  if (!png.empty()) storage::write_image_file(r.png, png);
   if (!r.csv.empty()) {
     std::ostringstream csv;
     storage::write_joints_csv(csv, joints, model.datum);
-    storage::write_text_atomically(r.csv, csv.str());
+    write_text_atomically(r.csv, csv.str());
   }
   return outcome;
 }

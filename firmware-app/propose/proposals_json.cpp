@@ -1,10 +1,10 @@
 #include "firmware-app/propose/proposals_json.h"
 
 #include <cmath>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace rockface::app {
@@ -21,16 +21,8 @@ json finite_or_null_json(double v) {
   return std::isfinite(v) ? json(v) : json(nullptr);
 }
 
-std::string fixed(double v, int digits) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
-
 std::string orientation_text(const geometry::PlaneOrientation& o) {
-  return fixed(rad_to_deg(o.dip), 0) + "/" + fixed(rad_to_deg(o.dipdir), 0);
+  return format_fixed(rad_to_deg(o.dip), 0) + "/" + format_fixed(rad_to_deg(o.dipdir), 0);
 }
 
 }  // namespace
@@ -129,19 +121,20 @@ std::vector<std::string> proposals_summary(const ProposeResult& r) {
   std::vector<std::string> lines;
   const auto& f = r.facets;
   lines.push_back(std::to_string(f.facets.size()) + " facets on " + r.on + ": " +
-                  fixed(f.facet_area, 1) + " of " + fixed(f.mapped_area, 1) + " m2 mapped" +
+                  format_fixed(f.facet_area, 1) + " of " + format_fixed(f.mapped_area, 1) +
+                  " m2 mapped" +
                   (f.rejected_regions > 0
                        ? ", " + std::to_string(f.rejected_regions) + " regions not planar (" +
-                             fixed(f.rejected_area, 1) + " m2)"
+                             format_fixed(f.rejected_area, 1) + " m2)"
                        : ""));
   for (const auto& s : r.sets.sets) {
-    std::string line = s.summary.label + "  " + orientation_text(s.summary.fisher.plane()) + "  " +
-                       std::to_string(s.facet_ids.size()) + " facets on " +
-                       std::to_string(s.planes) + " planes, K " +
-                       (std::isfinite(s.summary.fisher.kappa) ? fixed(s.summary.fisher.kappa, 0)
-                                                              : std::string("inf")) +
-                       ", spacing " +
-                       (s.summary.spacing ? fixed(*s.summary.spacing, 2) + " m" : "-");
+    std::string line =
+        s.summary.label + "  " + orientation_text(s.summary.fisher.plane()) + "  " +
+        std::to_string(s.facet_ids.size()) + " facets on " + std::to_string(s.planes) +
+        " planes, K " +
+        (std::isfinite(s.summary.fisher.kappa) ? format_fixed(s.summary.fisher.kappa, 0)
+                                               : std::string("inf")) +
+        ", spacing " + (s.summary.spacing ? format_fixed(*s.summary.spacing, 2) + " m" : "-");
     lines.push_back(line);
   }
   for (const auto& c : r.sets.not_sets)

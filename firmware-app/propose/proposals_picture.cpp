@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include <opencv2/imgproc.hpp>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/measure/pair_photo.h"
 
@@ -17,14 +17,6 @@ namespace {
 const cv::Scalar kSetColours[] = {{0, 159, 230}, {233, 180, 86}, {115, 158, 0},   {66, 228, 240},
                                   {178, 114, 0}, {0, 94, 213},   {167, 121, 204}, {0, 0, 0}};
 const cv::Scalar kNoSet(170, 170, 170);
-
-std::string fixed_digits(double v, int digits) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
 
 }  // namespace
 
@@ -101,12 +93,12 @@ cv::Mat proposals_picture(const ProposeResult& r, int max_width) {
     const auto o = set.summary.fisher.plane();
     rows.emplace_back(
         kSetColours[s % 8],
-        set.summary.label + "  " + fixed_digits(rad_to_deg(o.dip), 0) + "/" +
-            fixed_digits(rad_to_deg(o.dipdir), 0) + "  K " +
-            (std::isfinite(set.summary.fisher.kappa) ? fixed_digits(set.summary.fisher.kappa, 0)
+        set.summary.label + "  " + format_fixed(rad_to_deg(o.dip), 0) + "/" +
+            format_fixed(rad_to_deg(o.dipdir), 0) + "  K " +
+            (std::isfinite(set.summary.fisher.kappa) ? format_fixed(set.summary.fisher.kappa, 0)
                                                      : std::string("inf")) +
             "  spacing " +
-            (set.summary.spacing ? fixed_digits(*set.summary.spacing, 2) + " m" : "-") + "  " +
+            (set.summary.spacing ? format_fixed(*set.summary.spacing, 2) + " m" : "-") + "  " +
             std::to_string(set.facet_ids.size()) + " facets");
   }
   int unset = 0;

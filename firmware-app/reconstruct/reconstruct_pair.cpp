@@ -5,11 +5,11 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/preset.h"
 #include "core/photogrammetry/targets/reference_line.h"
 #include "storage/camera_json.h"
-#include "storage/export_file.h"
 #include "storage/mesh_export.h"
 #include "storage/reconstruction_report.h"
 
@@ -86,7 +86,7 @@ photogrammetry::ReconstructionResult reconstruct_pair_files(const PairReconstruc
   if (!o.report.empty()) {
     storage::ReconstructionReportContext context{o.left,       o.right,    preset.name,
                                                  o.range_pole, o.baseline, sources.north};
-    storage::write_text_atomically(o.report, storage::reconstruction_report_json(result, context));
+    write_text_atomically(o.report, storage::reconstruction_report_json(result, context));
   }
   return result;
 }

@@ -2,14 +2,13 @@
 
 #include <filesystem>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "camera/synthetic_renderer.h"
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "firmware-app/render/render_truth_json.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
 #include "storage/camera_json.h"
-#include "storage/export_file.h"
+#include "storage/image_file.h"
 #include "storage/scene.h"
 
 namespace rockface::app {
@@ -17,23 +16,6 @@ namespace rockface::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Writes an image through a temporary file, so a full card never leaves a
-// truncated image under the final name.
-void write_image(const fs::path& path, const cv::Mat& image) {
-  const fs::path part = path.string() + ".part" + path.extension().string();
-  bool ok = false;
-  try {
-    ok = cv::imwrite(part.string(), image);
-  } catch (const cv::Exception&) {
-    ok = false;
-  }
-  if (!ok) {
-    fs::remove(part);
-    throw Error(path.string() + ": cannot write the image (disk full or no permission?)");
-  }
-  fs::rename(part, path);
-}
 
 }  // namespace
 
@@ -49,9 +31,9 @@ RenderedPair render_scene_files(const std::string& scene_file, const std::string
   if (!fs::is_directory(dir))
     throw InputError(folder, "cannot create the output folder" +
                                  (ec ? " (" + ec.message() + ")" : std::string()));
-  write_image(dir / "left.png", render.images[0]);
-  write_image(dir / "right.png", render.images[1]);
-  write_image(dir / "depth-left.pfm", render.depth_left);
+  storage::write_image_file(dir / "left.png", render.images[0]);
+  storage::write_image_file(dir / "right.png", render.images[1]);
+  storage::write_image_file(dir / "depth-left.pfm", render.depth_left);
   photogrammetry::CameraIntrinsics cam = render.intrinsics;
   cam.body = "rockface synthetic camera";
   cam.lens = "synthetic";
@@ -59,7 +41,7 @@ RenderedPair render_scene_files(const std::string& scene_file, const std::string
   storage::save_camera_json((dir / "camera.json").string(), cam);
   const std::string truth = render_truth_json(input.scene, render, input.origin,
                                               scene.name.empty() ? scene_file : scene.name);
-  storage::write_file_atomically(dir / "truth.json", [&](std::ostream& o) { o << truth; });
+  write_file_atomically(dir / "truth.json", [&](std::ostream& o) { o << truth; });
 
   RenderedPair out;
   out.width = render.intrinsics.width;

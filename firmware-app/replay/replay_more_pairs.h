@@ -11,7 +11,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/common/progress.h"
-#include "core/photogrammetry/estimators/multi_image_registration.h"
+#include "core/photogrammetry/reconstruction/multi_image_registration.h"
 #include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
 #include "storage/project_store.h"

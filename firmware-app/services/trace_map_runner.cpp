@@ -5,12 +5,12 @@
 // Issue 27: the edits of the map (a trace saved or taken back, the face
 // outlined) are stored here too, as `rockface measure` stores picks, with
 // the visit's joint table remade from its traces as the verb makes it.
-#include <cstdio>
 #include <mutex>
 #include <set>
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/measure/facets/facet_options.h"
 #include "core/measure/outline_pieces.h"
 #include "core/measure/pick_measurement.h"
@@ -328,9 +328,7 @@ const measure::MeshPicker& picker_of_trace(
 }
 
 std::string area_words(double m2) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.1f m²", m2);
-  return text;
+  return format_fixed(m2, 1, " m²");
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // The tablet's tunnel views (ui::TunnelRunner): each opens its own
 // connection to the project (one per thread) and draws what the verbs
 // `profile` and `drive` write.
-#include <cstdio>
 
+#include "core/common/number_format.h"
 #include "firmware-app/services/ui_services.h"
 #include "firmware-app/tunnel/project_drive.h"
 #include "firmware-app/tunnel/typed_placement.h"
@@ -49,10 +49,10 @@ std::vector<std::string> StoreTunnelRunner::place(const std::filesystem::path& p
   storage::ProjectStore store = storage::ProjectStore::open(project);
   const storage::VisitPlacement p =
       place_by_typed_chainage(store, visit_id, {chainage, offset, height});
-  char text[160];
-  std::snprintf(text, sizeof text, "visit %lld placed: face at chainage %.2f, offset %.2f m",
-                static_cast<long long>(visit_id), p.chainage, p.offset_m);
-  return {text, p.note};
+  return {"visit " + std::to_string(static_cast<long long>(visit_id)) +
+              " placed: face at chainage " + format_fixed(p.chainage, 2) + ", offset " +
+              format_fixed(p.offset_m, 2, " m"),
+          p.note};
 }
 
 }  // namespace rockface::app

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/common/number_format.h"
 #include "firmware-app/tunnel/visit_placement.h"
 #include "firmware-app/tunnel/visit_surface.h"
 
@@ -29,10 +30,8 @@ std::string place_replayed_visit(storage::ProjectStore& store, const storage::Sc
   const VisitSurface surface = visit_surface(store, visit_id);
   std::string typed;
   if (scene.tunnel->placement) {
-    char text[96];
-    std::snprintf(text, sizeof text, "chainage %.2f, offset %.2f m (typed)",
-                  scene.tunnel->placement->chainage, scene.tunnel->placement->offset);
-    typed = text;
+    typed = "chainage " + format_fixed(scene.tunnel->placement->chainage, 2) + ", offset " +
+            format_fixed(scene.tunnel->placement->offset, 2, " m") + " (typed)";
   }
   const storage::VisitPlacement placement =
       place_visit(alignment, tunnel->profile, surface, visit_id, typed);

@@ -1,10 +1,9 @@
 #include "firmware-app/tunnel/typed_placement.h"
 
-#include <cstdio>
-
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "firmware-app/tunnel/visit_placement.h"
 #include "firmware-app/tunnel/visit_surface.h"
 
@@ -54,9 +53,8 @@ storage::VisitPlacement place_by_typed_chainage(storage::ProjectStore& store,
     m.created_at.clear();
     store.save_model(m);
   }
-  char note[96];
-  std::snprintf(note, sizeof note, "chainage %.2f, offset %.2f m (typed)", typed.chainage,
-                typed.offset);
+  const std::string note = "chainage " + format_fixed(typed.chainage, 2) + ", offset " +
+                           format_fixed(typed.offset, 2, " m") + " (typed)";
   const storage::VisitPlacement placement =
       place_visit(alignment, tunnel->profile, visit_surface(store, visit_id), visit_id, note);
   store.save_visit_placement(placement);

@@ -1,11 +1,11 @@
 #include "firmware-app/tunnel/visit_placement.h"
 
 #include <algorithm>
-#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "firmware-app/tunnel/face_front.h"
 
 namespace rockface::app {
@@ -28,10 +28,10 @@ double median(std::vector<double> v) {
 Eigen::Vector3d typed_pole_position(const tunnel::Alignment& alignment, double chainage,
                                     double offset, double height) {
   if (!alignment.contains(chainage)) {
-    char range[96];
-    std::snprintf(range, sizeof range, "%.2f is off the alignment (%.2f to %.2f)", chainage,
-                  alignment.first_chainage(), alignment.last_chainage());
-    throw InputError("tunnel.placement.chainage", range);
+    throw InputError("tunnel.placement.chainage",
+                     format_fixed(chainage, 2) + " is off the alignment (" +
+                         format_fixed(alignment.first_chainage(), 2) + " to " +
+                         format_fixed(alignment.last_chainage(), 2) + ")");
   }
   return alignment.frame_at(chainage).to_local(offset, height);
 }
@@ -61,11 +61,10 @@ storage::VisitPlacement place_visit(const tunnel::Alignment& alignment,
   out.offset_m = median(offsets);
   out.height_m = median(heights);
   if (!alignment.contains(out.chainage)) {
-    char text[128];
-    std::snprintf(text, sizeof text,
-                  "its face lies at chainage %.2f, off the alignment (%.2f to %.2f)", out.chainage,
-                  alignment.first_chainage(), alignment.last_chainage());
-    throw InputError(where, text);
+    throw InputError(where, "its face lies at chainage " + format_fixed(out.chainage, 2) +
+                                ", off the alignment (" +
+                                format_fixed(alignment.first_chainage(), 2) + " to " +
+                                format_fixed(alignment.last_chainage(), 2) + ")");
   }
   const storage::Model& m = surface.first;
   if (m.registration.kind == "ground_control") {

@@ -2,20 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
+#include "core/common/number_format.h"
+
 namespace rockface::storage {
 
 namespace {
-
-std::string formatted(const char* format, double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 // A scale bar length: 1, 2 or 5 x 10^k metres near a fifth of the span.
 double nice_length(double span) {
@@ -122,15 +117,15 @@ cv::Mat dynamics_picture(const std::string& block_id, const std::vector<Eigen::V
     cv::Point label = poly.front();
     for (const auto& q : poly)
       if (q.y < label.y) label = q;
-    cv::putText(img, formatted("%.2f s", d.path[shown[k]].time_s), label + cv::Point(4, -4),
+    cv::putText(img, format_fixed(d.path[shown[k]].time_s, 2, " s"), label + cv::Point(4, -4),
                 cv::FONT_HERSHEY_SIMPLEX, 0.45, colour, 1, cv::LINE_AA);
   }
   // Title, view, scale bar.
   std::string title =
       block_id + ": motion after failure, " +
-      (side ? "side view (" +
-                  formatted("horizontal towards N%.0fE",
-                            std::fmod(std::atan2(across(0), across(1)) * 180 / M_PI + 360, 360)) +
+      (side ? "side view (horizontal towards N" +
+                  format_fixed(std::fmod(std::atan2(across(0), across(1)) * 180 / M_PI + 360, 360),
+                               0, "E") +
                   ")"
             : std::string("plan view (north up)"));
   cv::putText(img, title, {left, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.55, ink, 1, cv::LINE_AA);
@@ -138,14 +133,14 @@ cv::Mat dynamics_picture(const std::string& block_id, const std::vector<Eigen::V
   const cv::Point b0(left, height - 14),
       b1(left + static_cast<int>(std::lround(bar * scale)), height - 14);
   cv::line(img, b0, b1, ink, 2);
-  cv::putText(img, formatted("%g m", bar), b1 + cv::Point(6, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45,
-              ink, 1, cv::LINE_AA);
+  cv::putText(img, format_significant(bar, 6, " m"), b1 + cv::Point(6, 5), cv::FONT_HERSHEY_SIMPLEX,
+              0.45, ink, 1, cv::LINE_AA);
   if (d.landing)
     cv::putText(
         img,
-        formatted("lands at %.1f m/s, ", d.landing->speed) +
-            formatted("%.0f kJ",
-                      (d.landing->kinetic_translational + d.landing->kinetic_rotational) / 1000),
+        "lands at " + format_fixed(d.landing->speed, 1, " m/s") + ", " +
+            format_fixed((d.landing->kinetic_translational + d.landing->kinetic_rotational) / 1000,
+                         0, " kJ"),
         {width / 2, height - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
   return img;
 }

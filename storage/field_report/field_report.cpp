@@ -1,7 +1,6 @@
 #include "storage/field_report/field_report.h"
 
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -10,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
@@ -281,9 +281,7 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
 std::string report_number(double value, int decimals) {
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   if (!std::isfinite(value)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
-  std::string s = buf;
+  std::string s = format_fixed(value, decimals);
   if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);  // no "-0.00"
   return s;
 }

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/blocks/mass_properties.h"
+#include "core/common/number_format.h"
 #include "storage/field_report/picture_style.h"
 
 namespace rockface::storage {
@@ -165,9 +166,8 @@ cv::Mat wedge_perspective_picture(const tunnel::WedgeAnalysis& a, int count, int
       cv::fillPoly(img, std::vector<std::vector<cv::Point>>{poly}, colour, cv::LINE_AA);
       cv::polylines(img, std::vector<std::vector<cv::Point>>{poly}, true, kInk, 1, cv::LINE_AA);
     }
-    char label[128];
-    std::snprintf(label, sizeof label, "%s %s, %.2f m3", w.id.c_str(),
-                  tunnel::wedge_place_name(w.place), w.mass.volume);
+    const std::string label = w.id + " " + tunnel::wedge_place_name(w.place) + ", " +
+                              format_fixed(w.mass.volume, 2, " m3");
     draw_label(img, label, {c * cell + 10, height - 12}, 0.45);
   }
   if (largest.empty()) draw_label(img, "no removable wedge", {12, 70}, 0.6);

@@ -3,6 +3,7 @@
 // code, stdout and stderr.
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 
 #include <cstdlib>
@@ -22,6 +23,7 @@ inline CliRun run_rockface(const std::string& args) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rockface-cli-" + std::to_string(::getpid()));
   fs::create_directories(dir);
+  remove_when_passed(dir);
   const std::string out = (dir / "out.txt").string(), err = (dir / "err.txt").string();
   const std::string cmd =
       std::string(ROCKFACE_BINARY_DIR) + "/rockface " + args + " >" + out + " 2>" + err;

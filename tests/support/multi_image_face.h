@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "core/photogrammetry/estimators/multi_image_registration.h"
+#include "core/photogrammetry/reconstruction/multi_image_registration.h"
 #include "tests/support/synthetic_truth.h"
 
 namespace rockface::testing {

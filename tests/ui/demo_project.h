@@ -1,8 +1,10 @@
 #pragma once
 // The demo project of the UI suites: `rockface replay` of the demo tunnel
 // face (fast preset), made once per test binary; tests that write get a copy.
+// The binary's folder goes when its tests pass (tests/support/temp_folders.h).
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 
 #include <cstdlib>
@@ -22,6 +24,7 @@ inline std::filesystem::path ui_test_dir() {
         std::filesystem::temp_directory_path() / ("rockface-ui-" + std::to_string(::getpid()));
     std::filesystem::remove_all(d);
     std::filesystem::create_directories(d);
+    remove_when_passed(d);
     return d;
   }();
   return dir;

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "core/photogrammetry/estimators/multi_image_registration.h"
+#include "core/photogrammetry/reconstruction/multi_image_registration.h"
 #include "tests/support/multi_image_face.h"
 
 namespace rockface::bench {

@@ -1,8 +1,8 @@
 // Model: the reconstructed, textured 3D image with orbit / pan / pinch-zoom,
 // the range pole targets and the accuracy of the 3D image in words.
 #include <cctype>
-#include <cstdio>
 
+#include "core/common/number_format.h"
 #include "ui/accuracy_summary.h"
 #include "ui/format.h"
 #include "ui/overlay_legend.h"
@@ -45,8 +45,8 @@ void draw_targets_in_words(const AppState& app) {
   if (targets.empty()) return;
   heading("Range-pole targets");
   for (const TargetOnModel& t : targets) {
-    char pixel[64];
-    std::snprintf(pixel, sizeof pixel, "(%.0f, %.0f)", t.detected.pixel.x(), t.detected.pixel.y());
+    const std::string pixel = "(" + format_fixed(t.detected.pixel.x(), 0) + ", " +
+                              format_fixed(t.detected.pixel.y(), 0) + ")";
     std::string found = (t.detected.which.empty() ? std::string("range-pole") : t.detected.which) +
                         " target: found at pixel " + pixel + " of the left photograph";
     found[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(found[0])));

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/measure/tolerances.h"
 
@@ -12,11 +12,7 @@ namespace rockface::measure {
 namespace {
 
 std::string percent(double share) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(0);
-  s << 100 * share << " %";
-  return s.str();
+  return format_fixed(100 * share, 0, " %");
 }
 
 // Two facets of a set lie in one plane when their centroids are within
@@ -104,12 +100,9 @@ FacetSets facet_sets(const FacetSearch& search, const ClusterOptions& clustering
     const double share = search.mapped_area > 0 ? area / search.mapped_area : 0;
     std::string reason;
     if (to_face <= kFaceParallelDeg && share >= kFaceShare) {
-      std::ostringstream r;
-      r.setf(std::ios::fixed);
-      r.precision(1);
-      r << "the excavation surface, not a joint set: within " << to_face
-        << " deg of the mapped surface's mean plane and covering " << percent(share) << " of it";
-      reason = r.str();
+      reason = "the excavation surface, not a joint set: within " +
+               format_fixed(to_face, 1, " deg") +
+               " of the mapped surface's mean plane and covering " + percent(share) + " of it";
     } else if (planes < 2) {
       reason = "one surface, not a set: its " + std::to_string(ids.size()) +
                (ids.size() == 1 ? " facet lies" : " facets lie") +

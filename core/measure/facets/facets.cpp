@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <sstream>
 
 #include <Eigen/Eigenvalues>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/measure/facets/facet_outline.h"
 #include "core/measure/facets/triangle_graph.h"
@@ -58,14 +58,6 @@ struct RunningPlane {
     plane_normal = fitted ? n : mean_normal;
   }
 };
-
-std::string fixed(double v, int digits) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
 
 }  // namespace
 
@@ -193,7 +185,7 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
     // plane to the next) is a line, not a plane.
     if (f.plane.problem.empty() && f.plane.fit.relief() < kMinReliefInSigmas * settings.point_sigma)
       f.plane.problem = "orientation unknown: the region is a sliver (" +
-                        fixed(f.plane.fit.relief() * 1000, 0) + " mm wide RMS)";
+                        format_fixed(f.plane.fit.relief() * 1000, 0) + " mm wide RMS)";
     // The growing kept triangles near its running plane: on a surface
     // rougher than the point precision it picks its way between the rest,
     // and the points it keeps can pass the RMS test only because the others
@@ -204,11 +196,12 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
     const double off_share = static_cast<double>(off) / static_cast<double>(points.size());
     if (f.plane.problem.empty() && off_share > kMaxOffPlaneShare)
       f.plane.problem = "orientation unknown: the surface is rougher than the point precision (" +
-                        fixed(100 * off_share, 0) + " % of its points more than " +
-                        fixed(options.planarity_in_sigmas, 1) + " point sigmas off its plane)";
+                        format_fixed(100 * off_share, 0) + " % of its points more than " +
+                        format_fixed(options.planarity_in_sigmas, 1) +
+                        " point sigmas off its plane)";
     if (f.plane.problem.empty() && sigma_deg > settings.max_plane_sigma_deg)
       f.plane.problem = "orientation unknown: too little relief for a reliable plane (" +
-                        fixed(sigma_deg, 1) + " deg)";
+                        format_fixed(sigma_deg, 1) + " deg)";
     if (!f.plane.problem.empty()) {
       ++out.rejected_regions;
       out.rejected_area += plane.weight;
@@ -242,9 +235,9 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
   }
   out.facets = std::move(facets);
   if (out.facets.empty())
-    out.notes.push_back("no planar region of at least " + fixed(options.min_area_m2, 2) +
-                        " m2 within " + fixed(options.angle_tolerance_deg, 0) + " deg and " +
-                        fixed(options.planarity_in_sigmas, 1) + " point sigmas of a plane");
+    out.notes.push_back("no planar region of at least " + format_fixed(options.min_area_m2, 2) +
+                        " m2 within " + format_fixed(options.angle_tolerance_deg, 0) + " deg and " +
+                        format_fixed(options.planarity_in_sigmas, 1) + " point sigmas of a plane");
   progress.step("facets: done", 1.0);
   return out;
 }

@@ -9,6 +9,7 @@
 #include "core/common/error.h"
 #include "core/measure/proposals/line_chains.h"
 #include "core/measure/proposals/line_evidence.h"
+#include "core/measure/proposals/trace_proposals_phases.h"
 
 namespace rockface::measure {
 
@@ -31,22 +32,6 @@ constexpr double kJumpEdgeSpacings = 4.0;
 // chain counts as lying on it (the thinned lines of the two cues are a
 // pixel or two apart where both see the same trace).
 constexpr int kEvidenceReachPx = 2;
-
-// Pixels of the photograph per metre on the surface: the median over a
-// sample of lattice edges.
-double pixels_per_metre(const photogrammetry::SurfaceMesh& mesh) {
-  std::vector<double> r;
-  const std::size_t stride = std::max<std::size_t>(1, mesh.triangles.size() / 5000);
-  for (std::size_t i = 0; i < mesh.triangles.size(); i += stride) {
-    const auto& t = mesh.triangles[i];
-    const double m = (mesh.vertices[t[0]] - mesh.vertices[t[1]]).norm();
-    if (m > 0) r.push_back((mesh.pixels[t[0]] - mesh.pixels[t[1]]).cast<double>().norm() / m);
-  }
-  if (r.empty()) return 1.0;
-  auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
-  std::nth_element(r.begin(), mid, r.end());
-  return *mid;
-}
 
 cv::Mat dilated(const cv::Mat& m, int radius) {
   cv::Mat out;
@@ -78,17 +63,176 @@ double turn_deg(cv::Point2f a, cv::Point2f b, cv::Point2f c) {
   return std::acos(std::clamp((u.x * v.x + u.y * v.y) / (lu * lv), -1.0, 1.0)) * 180 / M_PI;
 }
 
-// The evidence maps a piece is scored on, each spread over
-// kEvidenceReachPx so that the other cue's nearby line counts.
-struct EvidenceMaps {
-  cv::Mat dark, dark_sigmas, dark_contrast, fold, fold_angle, ridge, valley;
-};
+// Distance from p to the closed polygon's edges.
+double distance_to_outline(const std::vector<Eigen::Vector3d>& outline, const Eigen::Vector3d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const Eigen::Vector3d& a = outline[i];
+    const Eigen::Vector3d& b = outline[(i + 1) % outline.size()];
+    const Eigen::Vector3d ab = b - a;
+    const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-24), 0.0, 1.0);
+    best = std::min(best, (a + t * ab - p).norm());
+  }
+  return best;
+}
 
-struct Evidence {
-  double dark_fraction = 0, fold_fraction = 0;
-  double sigmas = 0, contrast = 0, fold_deg = 0;
-  bool ridge = false;
-};
+}  // namespace
+
+namespace proposal_phases {
+
+// Pixels of the photograph per metre on the surface: the median over a
+// sample of lattice edges.
+double pixels_per_metre(const photogrammetry::SurfaceMesh& mesh) {
+  std::vector<double> r;
+  const std::size_t stride = std::max<std::size_t>(1, mesh.triangles.size() / 5000);
+  for (std::size_t i = 0; i < mesh.triangles.size(); i += stride) {
+    const auto& t = mesh.triangles[i];
+    const double m = (mesh.vertices[t[0]] - mesh.vertices[t[1]]).norm();
+    if (m > 0) r.push_back((mesh.pixels[t[0]] - mesh.pixels[t[1]]).cast<double>().norm() / m);
+  }
+  if (r.empty()) return 1.0;
+  auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
+  std::nth_element(r.begin(), mid, r.end());
+  return *mid;
+}
+
+void check_proposal_input(const photogrammetry::SurfaceMesh& mesh, const PhotoView& view,
+                          const cv::Mat& photo, const ProposalOptions& options,
+                          const std::string& where) {
+  if (photo.empty()) throw InputError(where, "no photograph to find traces on");
+  if (photo.cols != view.camera.width || photo.rows != view.camera.height)
+    throw InputError(where, "the photograph is " + std::to_string(photo.cols) + " x " +
+                                std::to_string(photo.rows) + " px but its camera " +
+                                std::to_string(view.camera.width) + " x " +
+                                std::to_string(view.camera.height));
+  if (mesh.empty() || mesh.pixels.size() != mesh.vertices.size() || mesh.triangles.empty())
+    throw InputError(where, "the 3D image has no lattice on the photograph (no vertex pixels)");
+  if (options.line_widths_m.empty() || options.pixels_per_line <= 0)
+    throw InputError(where, "no line widths to look for");
+}
+
+WorkingImage working_image(const photogrammetry::SurfaceMesh& mesh, const cv::Mat& photo,
+                           const ProposalOptions& options) {
+  WorkingImage out;
+  const double px_per_m = pixels_per_metre(mesh);
+  const double narrowest =
+      *std::min_element(options.line_widths_m.begin(), options.line_widths_m.end());
+  const double scale = std::min(1.0, options.pixels_per_line / (narrowest * px_per_m));
+  out.scale = scale;
+  out.px_per_m = px_per_m * scale;
+  cv::Mat& grey = out.grey;
+  if (photo.channels() == 3)
+    cv::cvtColor(photo, grey, cv::COLOR_BGR2GRAY);
+  else
+    grey = photo;
+  grey.convertTo(grey, CV_32F);
+  if (scale < 1) cv::resize(grey, grey, cv::Size(), scale, scale, cv::INTER_AREA);
+  return out;
+}
+
+pr::DarkLines find_dark_lines_on(const WorkingImage& image, const pr::SurfaceImage& surface,
+                                 const ProposalOptions& options) {
+  pr::DarkLineSettings dark_settings;
+  double widest_px = 0;
+  for (double w : options.line_widths_m) {
+    dark_settings.widths_px.push_back(w * image.px_per_m);
+    widest_px = std::max(widest_px, w * image.px_per_m);
+  }
+  dark_settings.seed_sigmas = options.dark_seed_sigmas;
+  dark_settings.keep_sigmas = options.dark_keep_sigmas;
+  dark_settings.min_contrast_grey = options.min_contrast_grey;
+  cv::Mat dark_mask;
+  // The surface's edge is a step to no surface, not a line.
+  const int dark_margin = static_cast<int>(std::ceil(widest_px)) + 2;
+  cv::erode(surface.mask, dark_mask,
+            cv::getStructuringElement(cv::MORPH_ELLIPSE,
+                                      cv::Size(2 * dark_margin + 1, 2 * dark_margin + 1)));
+  return pr::find_dark_lines(image.grey, dark_mask, dark_settings);
+}
+
+EvidenceMaps evidence_maps(const pr::DarkLines& dark, const pr::Folds& folds, double smoothing_px) {
+  EvidenceMaps maps;
+  maps.dark = dilated(dark.lines, kEvidenceReachPx);
+  maps.dark_sigmas = dilated(dark.sigmas, kEvidenceReachPx);
+  maps.dark_contrast = dilated(dark.contrast, kEvidenceReachPx);
+  // A fold is located only to its smoothing width: the dark line beside it
+  // is the same trace when within that.
+  const int fold_reach = std::max(kEvidenceReachPx, static_cast<int>(std::ceil(smoothing_px)));
+  maps.fold = dilated(folds.lines, fold_reach);
+  maps.fold_angle = dilated(folds.angle, fold_reach);
+  maps.ridge = dilated(folds.ridge & folds.lines, fold_reach);
+  maps.valley = dilated(~folds.ridge & folds.lines, fold_reach);
+  maps.dark_near_fold = dilated(dark.lines, fold_reach);
+  return maps;
+}
+
+std::vector<pr::Chain> fold_runs(const pr::Chain& chain, const cv::Mat& dark_near_fold,
+                                 int min_pixels) {
+  std::vector<pr::Chain> runs;
+  pr::Chain run;
+  for (const cv::Point2f& p : chain) {
+    if (dark_near_fold.at<std::uint8_t>(cv::Point(p))) {
+      if (static_cast<int>(run.size()) >= min_pixels) runs.push_back(run);
+      run.clear();
+    } else {
+      run.push_back(p);
+    }
+  }
+  if (static_cast<int>(run.size()) >= min_pixels) runs.push_back(run);
+  return runs;
+}
+
+std::vector<pr::Chain> candidate_chains(const pr::DarkLines& dark, const pr::Folds& folds,
+                                        const cv::Mat& dark_near_fold, double gap_px) {
+  std::vector<pr::Chain> chains =
+      pr::join_chains(pr::trace_chains(dark.lines, kMinChainPixels), gap_px, kJoinTurnDeg);
+  std::vector<pr::Chain> runs;
+  for (const pr::Chain& c : pr::trace_chains(folds.lines, kMinChainPixels)) {
+    const std::vector<pr::Chain> away = fold_runs(c, dark_near_fold, kMinChainPixels);
+    runs.insert(runs.end(), away.begin(), away.end());
+  }
+  const std::vector<pr::Chain> joined_folds = pr::join_chains(runs, gap_px, kJoinTurnDeg);
+  chains.insert(chains.end(), joined_folds.begin(), joined_folds.end());
+  return chains;
+}
+
+std::vector<std::vector<cv::Point2f>> surface_runs(
+    const std::vector<cv::Point2f>& poly,
+    const std::function<bool(const cv::Point2f&)>& on_surface) {
+  std::vector<std::vector<cv::Point2f>> runs(1);
+  for (const auto& p : poly) {
+    if (on_surface(p)) {
+      runs.back().push_back(p);
+    } else if (!runs.back().empty()) {
+      runs.emplace_back();
+    }
+  }
+  return runs;
+}
+
+std::vector<std::vector<cv::Point2f>> split_at_turns(
+    const std::vector<cv::Point2f>& run, double split_turn_deg,
+    const std::function<bool(const std::vector<cv::Point2f>&)>& one_plane) {
+  std::vector<std::vector<cv::Point2f>> pieces{{run[0], run[1]}};
+  for (std::size_t k = 2; k < run.size(); ++k) {
+    if (turn_deg(run[k - 2], run[k - 1], run[k]) > split_turn_deg) pieces.push_back({run[k - 1]});
+    pieces.back().push_back(run[k]);
+  }
+  std::vector<std::vector<cv::Point2f>> kept;
+  for (auto& piece : pieces) {
+    if (piece.size() < 2) continue;
+    if (!kept.empty()) {
+      std::vector<cv::Point2f> both = kept.back();
+      both.insert(both.end(), piece.begin() + 1, piece.end());
+      if (one_plane(both)) {
+        kept.back() = std::move(both);
+        continue;
+      }
+    }
+    kept.push_back(std::move(piece));
+  }
+  return kept;
+}
 
 Evidence evidence_along(const EvidenceMaps& maps, const std::vector<cv::Point2f>& poly) {
   Evidence e;
@@ -120,127 +264,30 @@ Evidence evidence_along(const EvidenceMaps& maps, const std::vector<cv::Point2f>
   return e;
 }
 
-// Distance from p to the closed polygon's edges.
-double distance_to_outline(const std::vector<Eigen::Vector3d>& outline, const Eigen::Vector3d& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < outline.size(); ++i) {
-    const Eigen::Vector3d& a = outline[i];
-    const Eigen::Vector3d& b = outline[(i + 1) % outline.size()];
-    const Eigen::Vector3d ab = b - a;
-    const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-24), 0.0, 1.0);
-    best = std::min(best, (a + t * ab - p).norm());
-  }
-  return best;
+ProposalCue proposal_cue(const Evidence& e) {
+  return e.dark_fraction >= 0.5 && e.fold_fraction >= 0.5 ? ProposalCue::both
+         : e.dark_fraction >= e.fold_fraction             ? ProposalCue::dark_line
+                                                          : ProposalCue::fold;
 }
 
-}  // namespace
+double proposal_confidence(const Evidence& e, double length_m, const ProposalOptions& options) {
+  const double e_dark = e.dark_fraction * (1 - std::exp(-e.sigmas / options.dark_seed_sigmas));
+  const double e_fold = e.fold_fraction * (1 - std::exp(-e.fold_deg / options.min_fold_deg));
+  const double cues = 1 - (1 - e_dark) * (1 - e_fold);
+  const double length_factor = 1 - std::exp(-length_m / (2 * options.min_length_m));
+  return std::clamp(cues * length_factor, 0.0, 1.0);
+}
 
-ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const MeshPicker& picker,
-                              const PhotoView& view, const cv::Mat& photo,
-                              const std::vector<ProposalFacet>& facets,
-                              const ProposalOptions& options, Progress& progress,
-                              const std::string& where) {
-  if (photo.empty()) throw InputError(where, "no photograph to find traces on");
-  if (photo.cols != view.camera.width || photo.rows != view.camera.height)
-    throw InputError(where, "the photograph is " + std::to_string(photo.cols) + " x " +
-                                std::to_string(photo.rows) + " px but its camera " +
-                                std::to_string(view.camera.width) + " x " +
-                                std::to_string(view.camera.height));
-  if (mesh.empty() || mesh.pixels.size() != mesh.vertices.size() || mesh.triangles.empty())
-    throw InputError(where, "the 3D image has no lattice on the photograph (no vertex pixels)");
-  if (options.line_widths_m.empty() || options.pixels_per_line <= 0)
-    throw InputError(where, "no line widths to look for");
-
-  ProposalResult result;
-  progress.step("reading the photograph", 0.05);
-  const double px_per_m = pixels_per_metre(mesh);
-  const double narrowest =
-      *std::min_element(options.line_widths_m.begin(), options.line_widths_m.end());
-  const double scale = std::min(1.0, options.pixels_per_line / (narrowest * px_per_m));
-  result.pixel_scale = scale;
-  const double work_px_per_m = px_per_m * scale;
-  cv::Mat grey;
-  if (photo.channels() == 3)
-    cv::cvtColor(photo, grey, cv::COLOR_BGR2GRAY);
-  else
-    grey = photo;
-  grey.convertTo(grey, CV_32F);
-  if (scale < 1) cv::resize(grey, grey, cv::Size(), scale, scale, cv::INTER_AREA);
-
-  progress.step("drawing the surface", 0.15);
-  const double spacing = mesh.median_edge_length();
-  const double smoothing_px =
-      std::max(options.fold_scale_m * work_px_per_m, 3.0 * spacing * work_px_per_m);
-  const pr::SurfaceImage surface = pr::draw_surface(mesh, grey.size(), scale, view.pose.centre,
-                                                    kJumpEdgeSpacings * spacing, smoothing_px);
-
-  progress.step("finding dark lines", 0.3);
-  pr::DarkLineSettings dark_settings;
-  double widest_px = 0;
-  for (double w : options.line_widths_m) {
-    dark_settings.widths_px.push_back(w * work_px_per_m);
-    widest_px = std::max(widest_px, w * work_px_per_m);
-  }
-  dark_settings.seed_sigmas = options.dark_seed_sigmas;
-  dark_settings.keep_sigmas = options.dark_keep_sigmas;
-  dark_settings.min_contrast_grey = options.min_contrast_grey;
-  cv::Mat dark_mask;
-  // The surface's edge is a step to no surface, not a line.
-  const int dark_margin = static_cast<int>(std::ceil(widest_px)) + 2;
-  cv::erode(surface.mask, dark_mask,
-            cv::getStructuringElement(cv::MORPH_ELLIPSE,
-                                      cv::Size(2 * dark_margin + 1, 2 * dark_margin + 1)));
-  const pr::DarkLines dark = pr::find_dark_lines(grey, dark_mask, dark_settings);
-  result.line_noise = dark.noise;
-  result.dark_pixels = static_cast<std::size_t>(cv::countNonZero(dark.lines));
-
-  progress.step("finding folds", 0.45);
-  pr::FoldSettings fold_settings;
-  fold_settings.smoothing_px = smoothing_px;
-  fold_settings.seed_deg = options.min_fold_deg;
-  fold_settings.keep_deg = options.fold_keep_deg;
-  const pr::Folds folds = pr::find_folds(surface, fold_settings);
-  result.fold_pixels = static_cast<std::size_t>(cv::countNonZero(folds.lines));
-
-  progress.step("joining lines", 0.55);
-  EvidenceMaps maps;
-  maps.dark = dilated(dark.lines, kEvidenceReachPx);
-  maps.dark_sigmas = dilated(dark.sigmas, kEvidenceReachPx);
-  maps.dark_contrast = dilated(dark.contrast, kEvidenceReachPx);
-  // A fold is located only to its smoothing width: the dark line beside it
-  // is the same trace when within that.
-  const int fold_reach = std::max(kEvidenceReachPx, static_cast<int>(std::ceil(smoothing_px)));
-  maps.fold = dilated(folds.lines, fold_reach);
-  maps.fold_angle = dilated(folds.angle, fold_reach);
-  maps.ridge = dilated(folds.ridge & folds.lines, fold_reach);
-  maps.valley = dilated(~folds.ridge & folds.lines, fold_reach);
-  const cv::Mat dark_near_fold = dilated(dark.lines, fold_reach);
-
-  const double gap_px = options.max_gap_m * work_px_per_m;
-  std::vector<pr::Chain> chains =
-      pr::join_chains(pr::trace_chains(dark.lines, kMinChainPixels), gap_px, kJoinTurnDeg);
-  // Folds where a dark line already runs are that line's evidence, not a
-  // second proposal: keep the runs of fold chains away from dark lines.
-  std::vector<pr::Chain> fold_runs;
-  for (const pr::Chain& c : pr::trace_chains(folds.lines, kMinChainPixels)) {
-    pr::Chain run;
-    for (const cv::Point2f& p : c) {
-      if (dark_near_fold.at<std::uint8_t>(cv::Point(p))) {
-        if (static_cast<int>(run.size()) >= kMinChainPixels) fold_runs.push_back(run);
-        run.clear();
-      } else {
-        run.push_back(p);
-      }
-    }
-    if (static_cast<int>(run.size()) >= kMinChainPixels) fold_runs.push_back(run);
-  }
-  const std::vector<pr::Chain> joined_folds = pr::join_chains(fold_runs, gap_px, kJoinTurnDeg);
-  chains.insert(chains.end(), joined_folds.begin(), joined_folds.end());
-
-  progress.step("measuring proposals", 0.65);
-  const double min_length_px = options.min_length_m * work_px_per_m;
-  std::vector<TraceProposal> found;
-  int short_chains = 0, unmeasurable = 0;
+MeasuredChains measure_chains(const std::vector<pr::Chain>& chains, const EvidenceMaps& maps,
+                              const MeshPicker& picker, const PhotoView& view,
+                              const WorkingImage& image, const ProposalOptions& options,
+                              Progress& progress, const std::string& where) {
+  const double scale = image.scale;
+  const double min_length_px = options.min_length_m * image.px_per_m;
+  MeasuredChains out;
+  std::vector<TraceProposal>& found = out.found;
+  int& short_chains = out.short_chains;
+  int& unmeasurable = out.unmeasurable;
   const auto to_photo = [scale](const cv::Point2f& p) {
     return Eigen::Vector2d(p.x / scale, p.y / scale);
   };
@@ -258,6 +305,10 @@ ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const Mes
       return std::nullopt;  // a vertex off the surface: checked before, so rare
     }
   };
+  auto one_plane = [&](const std::vector<cv::Point2f>& poly) {
+    const auto m = measure_piece(poly);
+    return m && m->plane.known;
+  };
   for (std::size_t ci = 0; ci < chains.size(); ++ci) {
     if (ci % 64 == 0)
       progress.step("measuring proposals",
@@ -268,40 +319,11 @@ ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const Mes
     }
     std::vector<cv::Point2f> poly;
     cv::approxPolyDP(chains[ci], poly, kSimplifyPx, false);
-    // Runs of vertices with surface under them.
-    std::vector<std::vector<cv::Point2f>> runs(1);
-    for (const auto& p : poly) {
-      if (on_surface(p)) {
-        runs.back().push_back(p);
-      } else if (!runs.back().empty()) {
-        runs.emplace_back();
-      }
-    }
-    for (const auto& run : runs) {
+    for (const auto& run : surface_runs(poly, on_surface)) {
       if (run.size() < 2) continue;
       // Split at sharp turns unless both sides are one plane with relief
       // (a trace crossing a fold of the face).
-      std::vector<std::vector<cv::Point2f>> pieces{{run[0], run[1]}};
-      for (std::size_t k = 2; k < run.size(); ++k) {
-        if (turn_deg(run[k - 2], run[k - 1], run[k]) > options.split_turn_deg)
-          pieces.push_back({run[k - 1]});
-        pieces.back().push_back(run[k]);
-      }
-      std::vector<std::vector<cv::Point2f>> kept;
-      for (auto& piece : pieces) {
-        if (piece.size() < 2) continue;
-        if (!kept.empty()) {
-          std::vector<cv::Point2f> both = kept.back();
-          both.insert(both.end(), piece.begin() + 1, piece.end());
-          const auto m = measure_piece(both);
-          if (m && m->plane.known) {
-            kept.back() = std::move(both);
-            continue;
-          }
-        }
-        kept.push_back(std::move(piece));
-      }
-      for (const auto& piece : kept) {
+      for (const auto& piece : split_at_turns(run, options.split_turn_deg, one_plane)) {
         if (pr::chain_length(piece) < min_length_px) {
           ++short_chains;
           continue;
@@ -318,33 +340,33 @@ ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const Mes
         p.ridge = e.ridge;
         p.dark_fraction = e.dark_fraction;
         p.fold_fraction = e.fold_fraction;
-        p.cue = e.dark_fraction >= 0.5 && e.fold_fraction >= 0.5 ? ProposalCue::both
-                : e.dark_fraction >= e.fold_fraction             ? ProposalCue::dark_line
-                                                                 : ProposalCue::fold;
-        // Confidence: each cue's strength saturates (a line twice the seed
-        // level, a fold twice the seed angle, are near certain) and counts
-        // for the fraction of the length it covers; two cues combine as
-        // independent witnesses; a short line is weak whatever its cues.
-        const double e_dark =
-            e.dark_fraction * (1 - std::exp(-e.sigmas / options.dark_seed_sigmas));
-        const double e_fold = e.fold_fraction * (1 - std::exp(-e.fold_deg / options.min_fold_deg));
-        const double cues = 1 - (1 - e_dark) * (1 - e_fold);
-        const double length_factor = 1 - std::exp(-m->length / (2 * options.min_length_m));
-        p.confidence = std::clamp(cues * length_factor, 0.0, 1.0);
+        p.cue = proposal_cue(e);
+        p.confidence = proposal_confidence(e, m->length, options);
         p.trace = std::move(*m);
         found.push_back(std::move(p));
       }
     }
   }
-  if (short_chains > 0)
-    result.notes.push_back(
-        std::to_string(short_chains) + " lines shorter than " +
-        std::to_string(static_cast<int>(std::lround(options.min_length_m * 100))) + " cm left out");
-  if (unmeasurable > 0)
-    result.notes.push_back(std::to_string(unmeasurable) +
-                           " lines left out: no surface of the 3D image under them");
+  return out;
+}
 
-  progress.step("linking facets", 0.95);
+std::vector<std::string> left_out_notes(const MeasuredChains& measured,
+                                        const ProposalOptions& options) {
+  std::vector<std::string> notes;
+  const int short_chains = measured.short_chains, unmeasurable = measured.unmeasurable;
+  if (short_chains > 0)
+    notes.push_back(std::to_string(short_chains) + " lines shorter than " +
+                    std::to_string(static_cast<int>(std::lround(options.min_length_m * 100))) +
+                    " cm left out");
+  if (unmeasurable > 0)
+    notes.push_back(std::to_string(unmeasurable) +
+                    " lines left out: no surface of the 3D image under them");
+
+  return notes;
+}
+
+void link_facets(std::vector<TraceProposal>& found, const std::vector<ProposalFacet>& facets,
+                 const ProposalOptions& options) {
   for (TraceProposal& p : found) {
     for (const ProposalFacet& f : facets) {
       if (f.outline.size() < 2 || p.trace.points.empty()) continue;
@@ -359,15 +381,19 @@ ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const Mes
       }
     }
   }
+}
+
+void rank_proposals(std::vector<TraceProposal>& found, const ProposalOptions& options,
+                    std::vector<std::string>& notes) {
   const std::size_t before = found.size();
   found.erase(
       std::remove_if(found.begin(), found.end(),
                      [&](const TraceProposal& p) { return p.confidence < options.min_confidence; }),
       found.end());
   if (found.size() < before)
-    result.notes.push_back(
-        std::to_string(before - found.size()) + " lines left out: confidence below " +
-        std::to_string(static_cast<int>(std::lround(options.min_confidence * 100))) + " %");
+    notes.push_back(std::to_string(before - found.size()) + " lines left out: confidence below " +
+                    std::to_string(static_cast<int>(std::lround(options.min_confidence * 100))) +
+                    " %");
   std::stable_sort(found.begin(), found.end(), [](const TraceProposal& a, const TraceProposal& b) {
     return a.confidence > b.confidence;
   });
@@ -375,6 +401,59 @@ ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const Mes
     found[i].id = "P" + std::to_string(i + 1);
     found[i].trace.id = found[i].id;
   }
+}
+
+}  // namespace proposal_phases
+
+ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const MeshPicker& picker,
+                              const PhotoView& view, const cv::Mat& photo,
+                              const std::vector<ProposalFacet>& facets,
+                              const ProposalOptions& options, Progress& progress,
+                              const std::string& where) {
+  using namespace proposal_phases;
+  check_proposal_input(mesh, view, photo, options, where);
+
+  ProposalResult result;
+  progress.step("reading the photograph", 0.05);
+  const WorkingImage image = working_image(mesh, photo, options);
+  const double scale = image.scale;
+  const double work_px_per_m = image.px_per_m;
+  result.pixel_scale = scale;
+
+  progress.step("drawing the surface", 0.15);
+  const double spacing = mesh.median_edge_length();
+  const double smoothing_px =
+      std::max(options.fold_scale_m * work_px_per_m, 3.0 * spacing * work_px_per_m);
+  const pr::SurfaceImage surface = pr::draw_surface(
+      mesh, image.grey.size(), scale, view.pose.centre, kJumpEdgeSpacings * spacing, smoothing_px);
+
+  progress.step("finding dark lines", 0.3);
+  const pr::DarkLines dark = find_dark_lines_on(image, surface, options);
+  result.line_noise = dark.noise;
+  result.dark_pixels = static_cast<std::size_t>(cv::countNonZero(dark.lines));
+
+  progress.step("finding folds", 0.45);
+  pr::FoldSettings fold_settings;
+  fold_settings.smoothing_px = smoothing_px;
+  fold_settings.seed_deg = options.min_fold_deg;
+  fold_settings.keep_deg = options.fold_keep_deg;
+  const pr::Folds folds = pr::find_folds(surface, fold_settings);
+  result.fold_pixels = static_cast<std::size_t>(cv::countNonZero(folds.lines));
+
+  progress.step("joining lines", 0.55);
+  const EvidenceMaps maps = evidence_maps(dark, folds, smoothing_px);
+  const std::vector<pr::Chain> chains =
+      candidate_chains(dark, folds, maps.dark_near_fold, options.max_gap_m * work_px_per_m);
+
+  progress.step("measuring proposals", 0.65);
+  MeasuredChains measured =
+      measure_chains(chains, maps, picker, view, image, options, progress, where);
+  result.notes = left_out_notes(measured, options);
+  std::vector<TraceProposal>& found = measured.found;
+
+  progress.step("linking facets", 0.95);
+  link_facets(found, facets, options);
+  rank_proposals(found, options, result.notes);
   result.proposals = std::move(found);
   progress.step("proposals ready", 1.0);
   return result;

@@ -9,6 +9,7 @@
 
 #include "core/common/error.h"
 #include "core/mechanics/block_loads.h"
+#include "core/mechanics/dynamics/block_dynamics_phases.h"
 #include "core/mechanics/dynamics/block_motion.h"
 #include "core/mechanics/dynamics/contact_mode.h"
 #include "core/mechanics/dynamics/tolerances.h"
@@ -19,39 +20,11 @@ namespace {
 
 namespace odeint = boost::numeric::odeint;
 
-// Scaled state: centroid displacement / L, quaternion (w, x, y, z),
-// velocity / sqrt(g L), angular velocity x T, work of the loads / (W L).
-using State = std::array<double, 14>;
-
-struct Scales {
-  double length = 1, time = 1, speed = 1, energy = 1;
-};
-
-struct Physical {
-  BlockPose pose;
-  BlockVelocity velocity;
-  double work = 0;
-};
-
-Physical unpack(const State& s, const Scales& k) {
-  Physical p;
-  p.pose.u = Eigen::Vector3d(s[0], s[1], s[2]) * k.length;
-  p.pose.q = Eigen::Quaterniond(s[3], s[4], s[5], s[6]).normalized();
-  p.velocity.v = Eigen::Vector3d(s[7], s[8], s[9]) * k.speed;
-  p.velocity.w = Eigen::Vector3d(s[10], s[11], s[12]) / k.time;
-  p.work = s[13] * k.energy;
-  return p;
-}
-
-State pack(const Physical& p, const Scales& k) {
-  State s;
-  const Eigen::Vector3d u = p.pose.u / k.length, v = p.velocity.v / k.speed,
-                        w = p.velocity.w * k.time;
-  const Eigen::Quaterniond q = p.pose.q;
-  s = {u(0), u(1), u(2), q.w(), q.x(), q.y(), q.z(),
-       v(0), v(1), v(2), w(0),  w(1),  w(2),  p.work / k.energy};
-  return s;
-}
+using dynamics_phases::pack;
+using dynamics_phases::Physical;
+using dynamics_phases::Scales;
+using dynamics_phases::State;
+using dynamics_phases::unpack;
 
 class MotionSystem {
  public:
@@ -163,35 +136,121 @@ DynamicsOptions dynamics_options(Preset preset) {
   return o;
 }
 
-BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
-                                    const blocks::MassProperties& mass,
-                                    const kinematics::Effects& effects,
-                                    const std::vector<double>& friction_deg,
-                                    const DynamicsOptions& options) {
-  check_options(options);
-  BlockDynamics out;
-  BlockLoads loads = block_loads(block, mass, effects);
-  out.effects_used = loads.effects_used;
-  out.notes = loads.notes;
-  out.mass = mass.mass;
-  out.friction_deg = friction_deg;
-  const BlockMotion motion(block, mass, std::move(loads), friction_deg);
+namespace dynamics_phases {
+
+Physical unpack(const State& s, const Scales& k) {
+  Physical p;
+  p.pose.u = Eigen::Vector3d(s[0], s[1], s[2]) * k.length;
+  p.pose.q = Eigen::Quaterniond(s[3], s[4], s[5], s[6]).normalized();
+  p.velocity.v = Eigen::Vector3d(s[7], s[8], s[9]) * k.speed;
+  p.velocity.w = Eigen::Vector3d(s[10], s[11], s[12]) / k.time;
+  p.work = s[13] * k.energy;
+  return p;
+}
+
+State pack(const Physical& p, const Scales& k) {
+  State s;
+  const Eigen::Vector3d u = p.pose.u / k.length, v = p.velocity.v / k.speed,
+                        w = p.velocity.w * k.time;
+  const Eigen::Quaterniond q = p.pose.q;
+  s = {u(0), u(1), u(2), q.w(), q.x(), q.y(), q.z(),
+       v(0), v(1), v(2), w(0),  w(1),  w(2),  p.work / k.energy};
+  return s;
+}
+
+Scales block_scales(const BlockMotion& motion) {
   Scales k;
   k.length = motion.length();
   k.time = std::sqrt(k.length / motion.gravity());
   k.speed = k.length / k.time;
   k.energy = motion.load_scale() * k.length;
-  out.drift_bound = kDriftBoundRel * k.length;
+  return k;
+}
 
-  std::optional<DynamicsFloor> floor = options.floor;
+std::optional<DynamicsFloor> usable_floor(const std::optional<DynamicsFloor>& given,
+                                          const BlockMotion& motion, const Scales& k,
+                                          std::vector<std::string>& notes) {
+  std::optional<DynamicsFloor> floor = given;
   if (floor) {
     floor->normal.normalize();
     if (lowest_height(motion, BlockPose{}, *floor) < -kContactGapRel * k.length) {
-      out.notes.push_back("the floor lies above the block's lowest corner: no landing computed");
+      notes.push_back("the floor lies above the block's lowest corner: no landing computed");
       floor.reset();
     }
   }
+  return floor;
+}
 
+void record_event(std::vector<MotionEvent>& events, double t, const std::string& kind,
+                  const std::string& what, std::vector<std::string> planes) {
+  MotionEvent e;
+  e.time = t;
+  e.kind = kind;
+  e.what = what;
+  e.planes = std::move(planes);
+  events.push_back(std::move(e));
+}
+
+void record_mode_change(std::vector<MotionEvent>& events, const ContactMode& from,
+                        const ContactMode& to, double t) {
+  for (const std::string& p : from.planes)
+    if (std::find(to.planes.begin(), to.planes.end(), p) == to.planes.end())
+      record_event(events, t, "leaves", "leaves " + p, {p});
+  const char* kind = to.kind == ModeKind::FreeFall  ? "free_fall"
+                     : to.kind == ModeKind::Sliding ? "slides"
+                     : to.kind == ModeKind::Rest    ? "rest"
+                                                    : "rotates";
+  if (from.describe() != to.describe() || from.kind != to.kind)
+    record_event(events, t, kind, to.describe(), to.planes);
+}
+
+EventTime locate_event(const State& x_end, double step, const std::function<State(double)>& advance,
+                       const std::function<bool(const State&)>& happened) {
+  double lo = 0, hi = step;
+  State at_hi = x_end;
+  while (hi - lo > kEventTimeRel) {
+    const double mid = 0.5 * (lo + hi);
+    const State xm = advance(mid);
+    if (happened(xm)) {
+      hi = mid;
+      at_hi = xm;
+    } else {
+      lo = mid;
+    }
+  }
+  return {at_hi, hi};
+}
+
+double flight_end(double tau, double tau_end_contact, const Scales& k) {
+  return std::max(tau_end_contact, std::min(tau + (kMaxFlightSeconds / k.time),
+                                            tau_end_contact + kMaxFlightSeconds / k.time));
+}
+
+void project_step(const BlockMotion& motion, const Scales& k, double tau, State& x,
+                  BlockDynamics& out) {
+  const double penetration = -kContactGapRel * k.length;
+  Physical p = unpack(x, k);
+  const BlockMotion::Projection pr = motion.project(p.pose, p.velocity);
+  out.drift_before = std::max(out.drift_before, pr.drift_before);
+  out.drift_after = std::max(out.drift_after, pr.drift_after);
+  if (pr.impact_speed > 1e-4 * k.speed) {
+    std::vector<std::string> hit;
+    for (const JointContact& c : motion.geometry().contacts(p.pose, -penetration))
+      hit.push_back(motion.geometry().surfaces()[c.surface].name);
+    std::sort(hit.begin(), hit.end());
+    hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
+    std::string names;
+    for (const auto& n : hit) names += (names.empty() ? "" : " and ") + n;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " at %.2f m/s", pr.impact_speed);
+    record_event(out.events, tau * k.time, "hits", "hits " + names + buf, hit);
+  }
+  x = pack(p, k);
+}
+
+IntegrationEnd integrate(const BlockMotion& motion, const Scales& k,
+                         const std::optional<DynamicsFloor>& floor, const DynamicsOptions& options,
+                         BlockDynamics& out) {
   const MotionSystem system(motion, k, out.evaluations);
   auto controlled = odeint::make_controlled(options.abs_tol, options.rel_tol,
                                             odeint::runge_kutta_dopri5<State>());
@@ -217,30 +276,10 @@ BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
   double dt = std::min(tau_max_step, 1e-3);
   ContactMode mode =
       contact_mode(motion, now.pose, now.velocity, motion.solve(now.pose, now.velocity));
-  auto record_event = [&](double t, const std::string& kind, const std::string& what,
-                          std::vector<std::string> planes) {
-    MotionEvent e;
-    e.time = t;
-    e.kind = kind;
-    e.what = what;
-    e.planes = std::move(planes);
-    out.events.push_back(std::move(e));
-  };
-  auto mode_event = [&](const ContactMode& from, const ContactMode& to, double t) {
-    for (const std::string& p : from.planes)
-      if (std::find(to.planes.begin(), to.planes.end(), p) == to.planes.end())
-        record_event(t, "leaves", "leaves " + p, {p});
-    const char* kind = to.kind == ModeKind::FreeFall  ? "free_fall"
-                       : to.kind == ModeKind::Sliding ? "slides"
-                       : to.kind == ModeKind::Rest    ? "rest"
-                                                      : "rotates";
-    if (from.describe() != to.describe() || from.kind != to.kind)
-      record_event(t, kind, to.describe(), to.planes);
-  };
   if (mode.kind == ModeKind::FreeFall)
-    record_event(0.0, "free_fall", "free fall (no joint holds it)", {});
+    record_event(out.events, 0.0, "free_fall", "free fall (no joint holds it)", {});
   else
-    mode_event(ContactMode{}, mode, 0.0);
+    record_mode_change(out.events, ContactMode{}, mode, 0.0);
 
   auto mode_at = [&](const State& s) {
     const Physical p = unpack(s, k);
@@ -287,23 +326,11 @@ BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
     ContactMode new_mode = mode_at(x);
     const bool impact = impact_at(x), lands = lands_at(x);
     if (impact || lands || new_mode != mode) {
-      auto happened = [&](const State& s) {
-        return impact_at(s) || lands_at(s) || mode_at(s) != mode;
-      };
-      double lo = 0, hi = tau - t0;
-      State at_hi = x;
-      while (hi - lo > kEventTimeRel) {
-        const double mid = 0.5 * (lo + hi);
-        const State xm = advance(x0, t0, mid);
-        if (happened(xm)) {
-          hi = mid;
-          at_hi = xm;
-        } else {
-          lo = mid;
-        }
-      }
-      x = at_hi;
-      tau = t0 + hi;
+      const EventTime event = locate_event(
+          x, tau - t0, [&](double after) { return advance(x0, t0, after); },
+          [&](const State& s) { return impact_at(s) || lands_at(s) || mode_at(s) != mode; });
+      x = event.state;
+      tau = t0 + event.after;
       new_mode = mode_at(x);
       if (lands_at(x)) {
         landed = true;
@@ -311,94 +338,109 @@ BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
     }
     // Projection: drift back onto the loaded contacts; a closing contact
     // stops (plastic impact).
-    Physical p = unpack(x, k);
     const double q_error = std::abs(Eigen::Quaterniond(x[3], x[4], x[5], x[6]).norm() - 1.0);
     out.quaternion_error = std::max(out.quaternion_error, q_error);
     if (!landed) {
-      const BlockMotion::Projection pr = motion.project(p.pose, p.velocity);
-      out.drift_before = std::max(out.drift_before, pr.drift_before);
-      out.drift_after = std::max(out.drift_after, pr.drift_after);
-      if (pr.impact_speed > 1e-4 * k.speed) {
-        std::vector<std::string> hit;
-        for (const JointContact& c : motion.geometry().contacts(p.pose, -penetration))
-          hit.push_back(motion.geometry().surfaces()[c.surface].name);
-        std::sort(hit.begin(), hit.end());
-        hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
-        std::string names;
-        for (const auto& n : hit) names += (names.empty() ? "" : " and ") + n;
-        char buf[64];
-        std::snprintf(buf, sizeof buf, " at %.2f m/s", pr.impact_speed);
-        record_event(tau * k.time, "hits", "hits " + names + buf, hit);
-      }
-      x = pack(p, k);
+      project_step(motion, k, tau, x, out);
       new_mode = mode_at(x);
     }
     if (new_mode != mode) {
-      mode_event(mode, new_mode, tau * k.time);
+      record_mode_change(out.events, mode, new_mode, tau * k.time);
       mode = new_mode;
     }
     // Free flight goes on to the floor beyond the duration.
-    if (mode.kind == ModeKind::FreeFall && floor)
-      tau_end = std::max(tau_end_contact, std::min(tau + (kMaxFlightSeconds / k.time),
-                                                   tau_end_contact + kMaxFlightSeconds / k.time));
+    if (mode.kind == ModeKind::FreeFall && floor) tau_end = flight_end(tau, tau_end_contact, k);
   }
-  const Physical last = unpack(x, k);
-  out.end_time = tau * k.time;
+  return {x, tau, landed, mode};
+}
+
+Landing landing_of(const blocks::Polyhedron& block, const BlockMotion& motion, const Physical& last,
+                   const DynamicsFloor& floor, double end_time) {
+  Landing l;
+  int v = 0;
+  lowest_height(motion, last.pose, floor, &v);
+  l.time = end_time;
+  l.point = motion.geometry().vertex(last.pose, v);
+  l.centroid = motion.centroid() + last.pose.u;
+  l.speed = last.velocity.v.norm();
+  l.corner_speed = (last.velocity.v + last.velocity.w.cross(l.point - l.centroid)).norm();
+  l.angular_speed = last.velocity.w.norm();
+  l.kinetic_translational = motion.kinetic_translational(last.velocity);
+  l.kinetic_rotational = motion.kinetic_rotational(last.pose, last.velocity);
+  Eigen::Vector3d d = last.pose.u;
+  d -= d.dot(Eigen::Vector3d::UnitZ()) * Eigen::Vector3d::UnitZ();
+  l.distance_from_start = d.norm();
+  // "The face": of the block's steep free faces (dip > 10 degrees), the
+  // one it moved out through (the largest horizontal part of its outward
+  // normal along the centroid's horizontal travel).
+  double best = -INFINITY;
+  for (const blocks::BlockPlane& bp : block.planes()) {
+    if (bp.kind != blocks::PlaneKind::FreeFace) continue;
+    const Eigen::Vector3d n = bp.outward_normal();
+    const double horizontal = std::hypot(n(0), n(1));
+    if (horizontal <= std::sin(10.0 * M_PI / 180.0)) continue;
+    const double along =
+        d.norm() > 0 ? Eigen::Vector3d(n(0), n(1), 0).dot(d) / (horizontal * d.norm()) : 0.0;
+    if (along <= best) continue;
+    best = along;
+    l.face = bp.name;
+    // Horizontal distance of the landing centroid in front of the plane.
+    const int plane = static_cast<int>(&bp - block.planes().data());
+    const Eigen::Vector3d& on_plane =
+        block.vertices()[block.faces()[block.faces_on_plane(plane)[0]].loop[0]];
+    l.distance_from_face = n.dot(l.centroid - on_plane) / horizontal;
+  }
+  return l;
+}
+
+std::string landing_text(const Landing& l) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "lands %.1f m from %s at %.1f m/s",
+                l.distance_from_face ? *l.distance_from_face : l.distance_from_start,
+                l.distance_from_face ? ("the face " + l.face).c_str() : "where it started",
+                l.speed);
+  return buf;
+}
+
+std::string outcome_of(bool landed, const ContactMode& mode, bool has_floor) {
+  if (landed) return "lands";
+  if (mode.kind == ModeKind::Rest) return "at rest";
+  if (mode.kind == ModeKind::FreeFall)
+    return has_floor ? "in free flight when the time ran out" : "in free flight (no floor given)";
+  return "moving at the end";
+}
+
+}  // namespace dynamics_phases
+
+BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
+                                    const blocks::MassProperties& mass,
+                                    const kinematics::Effects& effects,
+                                    const std::vector<double>& friction_deg,
+                                    const DynamicsOptions& options) {
+  using namespace dynamics_phases;
+  check_options(options);
+  BlockDynamics out;
+  BlockLoads loads = block_loads(block, mass, effects);
+  out.effects_used = loads.effects_used;
+  out.notes = loads.notes;
+  out.mass = mass.mass;
+  out.friction_deg = friction_deg;
+  const BlockMotion motion(block, mass, std::move(loads), friction_deg);
+  const Scales k = block_scales(motion);
+  out.drift_bound = kDriftBoundRel * k.length;
+  const std::optional<DynamicsFloor> floor = usable_floor(options.floor, motion, k, out.notes);
+
+  const IntegrationEnd end = integrate(motion, k, floor, options, out);
+
+  const Physical last = unpack(end.x, k);
+  out.end_time = end.tau * k.time;
   if (out.samples.empty() || out.samples.back().time < out.end_time - 1e-9 * k.time)
     out.samples.push_back(sample_at(motion, last, out.end_time));
-  if (landed) {
-    Landing l;
-    int v = 0;
-    lowest_height(motion, last.pose, *floor, &v);
-    l.time = out.end_time;
-    l.point = motion.geometry().vertex(last.pose, v);
-    l.centroid = motion.centroid() + last.pose.u;
-    l.speed = last.velocity.v.norm();
-    l.corner_speed = (last.velocity.v + last.velocity.w.cross(l.point - l.centroid)).norm();
-    l.angular_speed = last.velocity.w.norm();
-    l.kinetic_translational = motion.kinetic_translational(last.velocity);
-    l.kinetic_rotational = motion.kinetic_rotational(last.pose, last.velocity);
-    Eigen::Vector3d d = last.pose.u;
-    d -= d.dot(Eigen::Vector3d::UnitZ()) * Eigen::Vector3d::UnitZ();
-    l.distance_from_start = d.norm();
-    // "The face": of the block's steep free faces (dip > 10 degrees), the
-    // one it moved out through (the largest horizontal part of its outward
-    // normal along the centroid's horizontal travel).
-    double best = -INFINITY;
-    for (const blocks::BlockPlane& bp : block.planes()) {
-      if (bp.kind != blocks::PlaneKind::FreeFace) continue;
-      const Eigen::Vector3d n = bp.outward_normal();
-      const double horizontal = std::hypot(n(0), n(1));
-      if (horizontal <= std::sin(10.0 * M_PI / 180.0)) continue;
-      const double along =
-          d.norm() > 0 ? Eigen::Vector3d(n(0), n(1), 0).dot(d) / (horizontal * d.norm()) : 0.0;
-      if (along <= best) continue;
-      best = along;
-      l.face = bp.name;
-      // Horizontal distance of the landing centroid in front of the plane.
-      l.distance_from_face =
-          n.dot(l.centroid - block.vertices()[block
-                                                  .faces()[block.faces_on_plane(static_cast<int>(
-                                                      &bp - block.planes().data()))[0]]
-                                                  .loop[0]]) /
-          horizontal;
-    }
-    out.landing = l;
-    char buf[128];
-    std::snprintf(buf, sizeof buf, "lands %.1f m from %s at %.1f m/s",
-                  l.distance_from_face ? *l.distance_from_face : l.distance_from_start,
-                  l.distance_from_face ? ("the face " + l.face).c_str() : "where it started",
-                  l.speed);
-    record_event(out.end_time, "lands", buf, {});
-    out.outcome = "lands";
-  } else if (mode.kind == ModeKind::Rest) {
-    out.outcome = "at rest";
-  } else if (mode.kind == ModeKind::FreeFall) {
-    out.outcome =
-        floor ? "in free flight when the time ran out" : "in free flight (no floor given)";
-  } else {
-    out.outcome = "moving at the end";
+  if (end.landed) {
+    out.landing = landing_of(block, motion, last, *floor, out.end_time);
+    record_event(out.events, out.end_time, "lands", landing_text(*out.landing), {});
   }
+  out.outcome = outcome_of(end.landed, end.mode, floor.has_value());
   return out;
 }
 

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include <opencv2/imgproc.hpp>
 
+#include "core/common/number_format.h"
 #include "core/photogrammetry/matching/feature_matching.h"
 
 namespace rockface::photogrammetry {
@@ -40,12 +40,6 @@ double quantile(std::vector<double> v, double q) {
   const auto k = static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)));
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
   return v[k];
-}
-
-std::string fixed(double v, int digits) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
 }
 
 }  // namespace
@@ -92,7 +86,7 @@ cv::Mat normalise_local_brightness(const cv::Mat& image, double sigma_px, double
 
 std::string shading_warning(const ViewShading& s) {
   return "the two photographs light the face differently: the same rock is " +
-         fixed(100 * (s.lowest - 1), 0) + " to +" + fixed(100 * (s.highest - 1), 0) +
+         format_fixed(100 * (s.lowest - 1), 0) + " to +" + format_fixed(100 * (s.highest - 1), 0) +
          " % brighter in the right one than one exposure gain explains (" +
          std::to_string(s.samples) +
          " tie points), as a flash on the camera or strong vignetting does; dense matching "

@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "core/photogrammetry/estimators/multi_image_registration.h"
+#include "core/photogrammetry/reconstruction/multi_image_registration.h"
 #include "core/photogrammetry/surface/trace_pieces.h"
 
 namespace rockface::photogrammetry {

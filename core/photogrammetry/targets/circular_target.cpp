@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/photogrammetry/camera/camera_cv.h"
 #include "core/photogrammetry/matching/feature_matching.h"
@@ -479,10 +480,7 @@ std::string where_looked(const cv::Mat& image, const TargetDetectorOptions& o) {
 }
 
 std::string position(const TargetObservation& t) {
-  std::ostringstream s;
-  s.precision(1);
-  s << std::fixed << "(" << t.centre_px.x() << ", " << t.centre_px.y() << ")";
-  return s.str();
+  return "(" + format_fixed(t.centre_px.x(), 1) + ", " + format_fixed(t.centre_px.y(), 1) + ")";
 }
 
 // Why a target of the pole was not found, when a look with relaxed limits

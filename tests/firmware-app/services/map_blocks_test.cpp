@@ -14,6 +14,7 @@
 #include "firmware-app/services/ui_services.h"
 #include "storage/project_store.h"
 #include "tests/support/dense_face_visit.h"
+#include "tests/support/temp_folders.h"
 #include "tests/ui/demo_project.h"
 #include "ui/headless_session.h"
 
@@ -28,6 +29,7 @@ fs::path test_dir() {
         fs::temp_directory_path() / ("rockface-map-blocks-" + std::to_string(::getpid()));
     fs::remove_all(d);
     fs::create_directories(d);
+    rockface::test::remove_when_passed(d);
     return d;
   }();
   return dir;

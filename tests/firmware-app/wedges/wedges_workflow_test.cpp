@@ -22,6 +22,7 @@
 #include "storage/field_report/field_report_pdf.h"
 #include "storage/project_store.h"
 #include "storage/tunnel_files.h"
+#include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 
 namespace rockface::app {
@@ -35,6 +36,7 @@ fs::path temp_dir(const std::string& name) {
       fs::temp_directory_path() / ("rockface-wedges-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(d);
   fs::create_directories(d);
+  rockface::test::remove_when_passed(d);
   return d;
 }
 

@@ -114,7 +114,7 @@ double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 // of its points under the reconstruction's sigma_Z, one independent point
 // per matching window), plus the frame: registration by range pole and
 // compass on this camera and pole is good to 0.5 deg of tilt and 1 deg
-// about the vertical (integration_reconstruct asserts both); a turn about
+// about the vertical (integration/reconstruct asserts both); a turn about
 // the vertical moves a normal by that angle times sin(dip).
 double allowed_deg(const rm::Facet& f) {
   return 3 * rad_to_deg(f.plane.sigma) + 0.5 + 1.0 * std::sin(f.plane.orientation.dip);

@@ -119,7 +119,7 @@ TEST(MeasureOnReconstruction, TraceAcrossFacetsGivesTheJointWithinOneDegree) {
   // trace's relief (0.4 m RMS across its line) and its ~80 independent
   // points (one per matching window): the fit's own sigma, 0.15 deg; the
   // registration adds its vertical and north errors (0.06 deg here,
-  // integration_reconstruct) and the picks on a 2 px dark line a little
+  // integration/reconstruct) and the picks on a 2 px dark line a little
   // bias of the dense matching. Seen: 0.4 deg. The picks that cross the
   // steps between facets are dropped by the robust fit.
   std::printf(

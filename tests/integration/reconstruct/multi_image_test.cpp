@@ -12,7 +12,7 @@
 #include <set>
 
 #include "core/common/error.h"
-#include "core/photogrammetry/estimators/multi_image_registration.h"
+#include "core/photogrammetry/reconstruction/multi_image_registration.h"
 #include "core/photogrammetry/surface/face_traces.h"
 #include "core/photogrammetry/surface/pixel_lookup.h"
 #include "tests/support/multi_image_face.h"

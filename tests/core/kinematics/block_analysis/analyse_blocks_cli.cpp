@@ -4,6 +4,7 @@
 // input.
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 
 #include <cmath>
@@ -38,6 +39,7 @@ fs::path work_dir() {
   const fs::path dir =
       fs::temp_directory_path() / ("rockface-blocks-" + std::to_string(::getpid()));
   fs::create_directories(dir);
+  rockface::test::remove_when_passed(dir);
   return dir;
 }
 

@@ -1,0 +1,25 @@
+#pragma once
+// The one number formatter: a figure as text, to a number of decimals or of
+// significant digits, with its unit. Every layer formats numbers through it
+// (the tablet's word-level formatting in ui/format.h builds on it), so the
+// same value reads the same in a report, a message and on a screen.
+//
+// The text is the C library's ("%.*f", "%.*g"): a value that rounds to zero
+// keeps its sign ("-0.0"), and non-finite values read "nan", "inf", "-inf".
+// `unit` is appended as given, so the caller says whether a space separates
+// it (" m", " mm", "°", " %").
+#include <string>
+#include <string_view>
+
+namespace rockface {
+
+// `decimals` places after the point ("%.*f"): format_fixed(12.345, 1, " m")
+// is "12.3 m", format_fixed(199.9, 0) is "200".
+std::string format_fixed(double v, int decimals, std::string_view unit = {});
+
+// `digits` significant digits, trailing zeros dropped and powers of ten for
+// very large or small values ("%.*g"): format_significant(0.012345, 3) is
+// "0.0123", format_significant(1234567, 3) is "1.23e+06".
+std::string format_significant(double v, int digits, std::string_view unit = {});
+
+}  // namespace rockface
