@@ -65,7 +65,7 @@ CameraIntrinsics parse_camera_json(const std::string& text, const std::string& s
     doc = json::parse(text);
   } catch (const json::exception& e) {
     // nlohmann's message carries the byte position of the fault. Also a
-    // number beyond double's range (1e309), found by tests/fuzz.
+    // number beyond double's range (1e309), found by tests/storage/fuzz.
     throw InputError(source, std::string("not valid JSON: ") + e.what());
   }
   if (!doc.is_object()) throw InputError(source, "must hold a JSON object");

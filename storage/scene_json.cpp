@@ -485,7 +485,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     doc = json::parse(text);
   } catch (const json::exception& e) {
     // nlohmann reports the byte offset; that is where the JSON breaks. Also
-    // a number beyond double's range (1e309), found by tests/fuzz.
+    // a number beyond double's range (1e309), found by tests/storage/fuzz.
     throw InputError(source, std::string("not valid JSON (") + e.what() + ")");
   }
   const Reader r(source);

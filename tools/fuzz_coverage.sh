@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Line and branch coverage of the parsers under the fuzz harness
-# (docs/fuzzing.md): builds tests/fuzz with gcc's --coverage in its own
+# (docs/fuzzing.md): builds tests/storage/fuzz with gcc's --coverage in its own
 # build directory (build/coverage), runs it (ROCKFACE_FUZZ_ITERATIONS and
 # ROCKFACE_FUZZ_SEED as set in the environment: a factor on the CI counts
 # and the mutator's seed), and prints gcov's summary
@@ -16,7 +16,7 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
   -DROCKFACE_BUILD_BENCH=OFF >/dev/null
 cmake --build "$build" --target fuzz_tests -j "$jobs"
 find "$build" -name '*.gcda' -delete
-"$build/tests/fuzz/fuzz_tests" --gtest_brief=1
+"$build/tests/storage/fuzz/fuzz_tests" --gtest_brief=1
 # The parsers: a file per input kind (the project file: the store's sources).
 parsers=(
   storage/scene_json.cpp storage/camera_json.cpp core/photogrammetry/estimators/registration.cpp

@@ -16,7 +16,7 @@ namespace {
 // A joint without effects.joint_law is as stiff as rock joints get in
 // shear tests (1e11 Pa/m: 1 mm of closure under 100 MPa). Its elastic
 // displacements are then small against the block, and its limit point is
-// limit equilibrium's for sliding blocks (tests/cli/joint_law_default_test).
+// limit equilibrium's for sliding blocks (tests/integration/cli/joint_law_default_test).
 constexpr double kDefaultCoulombStiffness = 1e11;
 
 // The law of one joint face. Without effects.joint_law: Coulomb with the

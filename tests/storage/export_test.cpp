@@ -14,7 +14,7 @@
 #include "storage/export_scene_json.h"
 #include "storage/project_store.h"
 #include "storage/scene.h"
-#include "tests/storage/sample_records.h"
+#include "tests/support/sample_records.h"
 
 namespace rockface::storage {
 namespace {

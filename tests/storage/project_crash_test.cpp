@@ -18,7 +18,7 @@
 
 #include "storage/project_schema.h"
 #include "storage/project_store.h"
-#include "tests/storage/sample_records.h"
+#include "tests/support/sample_records.h"
 
 namespace rockface::storage {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "core/common/error.h"
 #include "storage/project_store.h"
-#include "tests/storage/sample_records.h"
+#include "tests/support/sample_records.h"
 
 namespace rockface::storage {
 namespace {

@@ -8,7 +8,7 @@
 #include "storage/project_store.h"
 #include "storage/rockmass_form_json.h"
 #include "storage/scene.h"
-#include "tests/storage/sample_records.h"
+#include "tests/support/sample_records.h"
 
 namespace rockface::storage {
 namespace {

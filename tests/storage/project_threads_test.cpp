@@ -8,7 +8,7 @@
 #include <thread>
 
 #include "storage/project_store.h"
-#include "tests/storage/sample_records.h"
+#include "tests/support/sample_records.h"
 
 namespace rockface::storage {
 namespace {

@@ -25,7 +25,7 @@
 
 #include "storage/project_sqlite.h"
 #include "storage/project_store.h"
-#include "tests/storage/sample_records.h"
+#include "tests/support/sample_records.h"
 
 namespace rockface::storage {
 namespace {

@@ -12,7 +12,7 @@
 #include <numbers>
 
 #include "core/common/error.h"
-#include "tests/storage/sample_records.h"
+#include "tests/support/sample_records.h"
 
 namespace rockface::storage {
 namespace {

@@ -50,7 +50,7 @@ struct Tablet {
 };
 
 // The services `rockface ui` composes (app::FieldRunners), without the
-// office server: its panel needs a PostgreSQL server (tests/office taps it).
+// office server: its panel needs a PostgreSQL server (tests/storage/office taps it).
 struct Services {
   rockface::app::FieldRunners runners{rockface::test::demo_scene()};
   FieldServices all() {

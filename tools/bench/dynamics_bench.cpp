@@ -21,7 +21,7 @@
 #include "core/blocks/mass_properties.h"
 #include "core/common/units.h"
 #include "core/mechanics/dynamics/block_dynamics.h"
-#include "tests/core/mechanics/mechanics_blocks.h"
+#include "tests/support/mechanics_blocks.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Several 3D images of one face, and the field report: what merging costs.
 //
 // Merge: the synthetic face photographed as stereo pairs from stations moved
-// along it (tests/integration_reconstruct/multi_image_face.h, 1200 x 800 px,
+// along it (tests/support/multi_image_face.h, 1200 x 800 px,
 // standard preset); the middle pair is registered by range pole and compass,
 // the others are registered to it (photogrammetry::register_face_images: SIFT
 // tie points, similarity, ICP). Timed: the registration alone (the pairs are

@@ -3,7 +3,7 @@
 // the synthetic face's pairs reconstructed once per station, one timed
 // merge with its wall and CPU time and its residuals against the truth.
 //
-// The face: tests/integration_reconstruct/multi_image_face.h, 1200 x 800 px,
+// The face: tests/support/multi_image_face.h, 1200 x 800 px,
 // standard preset; the station at 0 is registered by range pole and compass,
 // the others are registered to it (photogrammetry::register_face_images).
 #include <time.h>
@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "core/photogrammetry/reconstruction/multi_image_registration.h"
-#include "tests/integration_reconstruct/multi_image_face.h"
+#include "tests/support/multi_image_face.h"
 
 namespace rockface::bench {
 

@@ -20,7 +20,7 @@
 #include "core/kinematics/quick_checks.h"
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"
-#include "tests/core/faces/random_slope.h"
+#include "tests/support/random_slope.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 // The model: a 24 Mpx model, the lattice mesh a 6000 x 4000 left photograph
 // gives at the standard reconstruction preset (dense matching at 1600 px:
 // one vertex every 3.75 px, here every 4 px: 1500 x 1000 = 1.5 M vertices,
-// 3.0 M triangles), of the stepped face of tests/core/measure/stepped_face.h
+// 3.0 M triangles), of the stepped face of tests/support/stepped_face.h
 // filling the photograph: strips 0.75 m wide alternately parallel to two
 // joint sets (60/220 and 60/140) 10 m from the camera, 7 mm of noise along
 // the rays (sigma_Z of the demo replay), correlated over the matching window
@@ -30,7 +30,7 @@
 #include "core/common/units.h"
 #include "core/measure/facets/facet_sets.h"
 #include "core/measure/facets/facets.h"
-#include "tests/core/measure/stepped_face.h"
+#include "tests/support/stepped_face.h"
 
 namespace rm = rockface::measure;
 namespace rt = rockface::test;

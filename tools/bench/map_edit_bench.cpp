@@ -18,7 +18,7 @@
 #include "core/common/units.h"
 #include "firmware-app/services/ui_services.h"
 #include "storage/project_store.h"
-#include "tests/core/faces/random_slope.h"
+#include "tests/support/random_slope.h"
 #include "tests/support/dense_face_visit.h"
 
 namespace {
@@ -75,7 +75,7 @@ void edits_to_verdicts(benchmark::State& state, const std::vector<storage::Measu
 }
 constexpr int kEdits = 40;
 
-// The benched slope of faces_bench (tests/core/faces/random_slope.h): five
+// The benched slope of faces_bench (tests/support/random_slope.h): five
 // patches 40 m along strike, traces of three joint sets, 2-8 m long: the
 // 1000-trace map of issue 17's BM_TraceEditToVerdicts, as a stored visit.
 void BM_SlopeEditToVerdicts(benchmark::State& state) {

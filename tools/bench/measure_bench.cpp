@@ -4,7 +4,7 @@
 // - pick latency on a 24 Mpx model: the lattice mesh a 6000 x 4000 left
 //   photograph gives at the standard preset (1.55 M vertices, 3.1 M
 //   triangles), over the three facets of
-//   tests/integration_reconstruct/synthetic_face.h, picked at random pixels;
+//   tests/support/synthetic_face.h, picked at random pixels;
 //   and the time to build its BVH;
 // - least-cost (semi-automatic) tracing against trace length, on a
 //   noisy rock-like photograph with a 2 px dark trace, darkness cost;
@@ -16,7 +16,7 @@
 // - plane-fit error against the reconstruction preset: the synthetic face
 //   rendered 3000 x 2000 with two joints drawn, reconstructed with each
 //   preset and registered by pole and compass; J1 tapped where the renderer
-//   drew it (as tests/integration_measure does); the time is that of the
+//   drew it (as tests/integration/measure does); the time is that of the
 //   reconstruction (the measurement itself is milliseconds).
 #include <algorithm>
 #include <cmath>
@@ -33,7 +33,7 @@
 #include "core/measure/plane_measurement.h"
 #include "core/photogrammetry/reconstruction/preset.h"
 #include "core/photogrammetry/reconstruction/reconstruction.h"
-#include "tests/integration_reconstruct/synthetic_truth.h"
+#include "tests/support/synthetic_truth.h"
 
 namespace rm = rockface::measure;
 namespace rp = rockface::photogrammetry;

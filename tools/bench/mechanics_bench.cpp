@@ -23,7 +23,7 @@
 #include "core/kinematics/effects/effect_force.h"
 #include "core/kinematics/effects/effect_gravity.h"
 #include "core/mechanics/equilibrium_path.h"
-#include "tests/core/mechanics/mechanics_blocks.h"
+#include "tests/support/mechanics_blocks.h"
 
 namespace {
 

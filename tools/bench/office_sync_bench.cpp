@@ -22,7 +22,7 @@
 #include "storage/office/sqlite_rows.h"
 #include "storage/office/sync_push.h"
 #include "storage/project_store.h"
-#include "tests/storage/sample_records.h"
+#include "tests/support/sample_records.h"
 #include "tests/support/postgres_server.h"
 
 namespace {

@@ -1,6 +1,6 @@
 // Quick checks at field speed (issue 17): finiteness, removability and
 // corner / edge rotatability of random convex blocks of 4 to 12 faces (the
-// blocks of tests/core/rotation/quick_checks_test.cpp), blocks per second on
+// blocks of tests/core/kinematics/rotation/quick_checks_test.cpp), blocks per second on
 // one core, per number of faces and for the mix of all sizes; and the mix
 // on all cores (kinematics::quick_checks_all). The verdicts and margins
 // are the test's: the same blocks, the same code.
@@ -23,7 +23,7 @@
 
 #include "core/common/units.h"
 #include "core/kinematics/quick_checks.h"
-#include "tests/core/rotation/quick_check_blocks.h"
+#include "tests/support/quick_check_blocks.h"
 
 namespace {
 

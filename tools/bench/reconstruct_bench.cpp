@@ -1,5 +1,5 @@
 // Reconstruction: what accuracy costs. The synthetic faceted face
-// (tests/integration_reconstruct/synthetic_face.h) rendered at 6 and 24 Mpx,
+// (tests/support/synthetic_face.h) rendered at 6 and 24 Mpx,
 // reconstructed with each preset and with the image-scale and disparity
 // knobs of the standard preset; errors against the render's truth. Dense
 // matching alone on the Middlebury Rocks pairs against their true
@@ -19,7 +19,7 @@
 
 #include "core/common/preset.h"
 #include "core/photogrammetry/matching/dense_matching.h"
-#include "tests/integration_reconstruct/synthetic_truth.h"
+#include "tests/support/synthetic_truth.h"
 
 namespace rp = rockface::photogrammetry;
 

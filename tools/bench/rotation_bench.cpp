@@ -17,7 +17,7 @@
 
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_space.h"
-#include "tests/core/rotation/rotation_blocks.h"
+#include "tests/support/rotation_blocks.h"
 
 namespace {
 

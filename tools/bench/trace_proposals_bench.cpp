@@ -1,5 +1,5 @@
 // Trace proposals (issue 25): time, peak memory, precision and recall per
-// preset, on the rendered faces of tests/integration_proposals (the dense
+// preset, on the rendered faces of tests/integration/proposals (the dense
 // face, 12 + 2 joints) at 1200 x 800 and at 6000 x 4000 (24 Mpx, the DSLR's
 // frame), each reconstructed once with the fast preset. Precision and
 // recall are against the true traces within 5 cm.
@@ -14,7 +14,7 @@
 #include <map>
 #include <string>
 
-#include "tests/integration_proposals/proposal_faces.h"
+#include "tests/support/proposal_faces.h"
 
 namespace rm = rockface::measure;
 namespace rt = rockface::testing;

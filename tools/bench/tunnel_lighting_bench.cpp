@@ -1,5 +1,5 @@
 // The face as a tunnel lights it: what each imaging effect costs in
-// accuracy. The synthetic faceted face (tests/integration_lighting/
+// accuracy. The synthetic faceted face (tests/integration/lighting/
 // lit_face.h: 1200 x 800, fast preset, pole and compass) under each effect
 // alone at rising strength, and under all of them ("bad tunnel day");
 // errors against the render's truth, or the refusal.
@@ -15,7 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include "core/photogrammetry/matching/image_contrast.h"
-#include "tests/integration_lighting/lit_face.h"
+#include "tests/support/lit_face.h"
 
 using namespace rockface;
 using namespace rockface::testing;

@@ -26,7 +26,7 @@ struct ImageContrast {
 ImageContrast measure_contrast(const cv::Mat& image);
 
 // Below this texture (grey levels rms, noise taken out) the fast preset no
-// longer registers the synthetic face (tests/integration_lighting, measured
+// longer registers the synthetic face (tests/integration/lighting, measured
 // by tools/bench/tunnel_lighting_bench.cpp): the face at 10 m keeps 2.5
 // grey levels in dust of 40 m visibility and registers (scale within
 // 0.7 %), 1.8 in 30 m and loses the pole, 1.4 in 25 m and loses the
@@ -49,7 +49,7 @@ constexpr double kClippedImage = 245;
 // registers with the scale within 0.8 % and the facets within 0.7 deg, 1.7
 // (ISO 51200) came out 2 % in scale and 6 deg in the facets and north
 // without any other check objecting; the independent face of
-// tests/integration_reconstruct (a darker rock, 3.4 grey levels of texture
+// tests/integration/reconstruct (a darker rock, 3.4 grey levels of texture
 // under 1.5 of noise: 2.3) registers within its test's bounds. The limit
 // sits between the lowest that holds and the highest that fails.
 constexpr double kMinTextureToNoise = 2.0;

@@ -14,8 +14,8 @@
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"
 #include "core/kinematics/rotation_tolerances.h"
-#include "tests/core/rotation/quick_check_blocks.h"
-#include "tests/core/rotation/rotation_blocks.h"
+#include "tests/support/quick_check_blocks.h"
+#include "tests/support/rotation_blocks.h"
 
 namespace rockface::analysis {
 namespace {

@@ -12,7 +12,7 @@
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
 #include "core/kinematics/effects/effect_gravity.h"
-#include "tests/core/faces/random_slope.h"
+#include "tests/support/random_slope.h"
 #include "tests/core/faces/trace_map_run.h"
 
 namespace rockface::faces {

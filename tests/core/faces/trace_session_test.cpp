@@ -11,7 +11,7 @@
 
 #include "core/common/progress.h"
 #include "core/common/units.h"
-#include "tests/core/faces/random_slope.h"
+#include "tests/support/random_slope.h"
 
 namespace rockface::faces {
 namespace {

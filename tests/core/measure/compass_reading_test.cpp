@@ -13,7 +13,7 @@
 #include "core/common/error.h"
 #include "core/measure/compass_reading.h"
 #include "core/measure/pick_measurement.h"
-#include "tests/core/measure/folded_face.h"
+#include "tests/support/folded_face.h"
 
 namespace rm = rockface::measure;
 namespace rg = rockface::geometry;

@@ -12,7 +12,7 @@
 #include "core/measure/facets/facet_sets.h"
 #include "core/measure/facets/facets.h"
 #include "core/measure/tolerances.h"
-#include "tests/core/measure/stepped_face.h"
+#include "tests/support/stepped_face.h"
 
 namespace rm = rockface::measure;
 namespace rt = rockface::test;

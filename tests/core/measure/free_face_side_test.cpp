@@ -1,6 +1,6 @@
 // The rock side of a free face (core/measure/free_face_side.h) measured
 // with measure_picks on synthetic 3D images seen by a pinhole camera 0.5 m
-// above the origin looking north (tests/core/measure/folded_face.h): the
+// above the origin looking north (tests/support/folded_face.h): the
 // same polygon tapped either way round gives the same record; a pick's
 // rock_side the photograph contradicts is refused, or read as "behind the
 // face" near vertical; a face seen edge-on takes the pick's side, marked
@@ -17,7 +17,7 @@
 #include "core/measure/mesh_picker.h"
 #include "core/measure/pick_measurement.h"
 #include "core/measure/tolerances.h"
-#include "tests/core/measure/folded_face.h"
+#include "tests/support/folded_face.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/measure/mesh_picker.h"
-#include "tests/core/measure/folded_face.h"
+#include "tests/support/folded_face.h"
 
 namespace rm = rockface::measure;
 

@@ -11,7 +11,7 @@
 
 #include "core/measure/mesh_picker.h"
 #include "core/measure/outline_pieces_phases.h"
-#include "tests/core/measure/folded_face.h"
+#include "tests/support/folded_face.h"
 
 namespace {
 

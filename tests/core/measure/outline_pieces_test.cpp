@@ -9,7 +9,7 @@
 #include "core/common/error.h"
 #include "core/measure/mesh_picker.h"
 #include "core/measure/outline_pieces.h"
-#include "tests/core/measure/folded_face.h"
+#include "tests/support/folded_face.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include "core/common/error.h"
 #include "core/measure/plane_measurement.h"
-#include "tests/core/measure/folded_face.h"
+#include "tests/support/folded_face.h"
 
 namespace rm = rockface::measure;
 namespace rg = rockface::geometry;

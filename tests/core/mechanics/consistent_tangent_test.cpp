@@ -16,7 +16,7 @@
 #include "core/mechanics/contact_points.h"
 #include "core/mechanics/joint_law.h"
 #include "core/mechanics/peak_strength.h"
-#include "tests/core/mechanics/mechanics_blocks.h"
+#include "tests/support/mechanics_blocks.h"
 
 namespace rockface::mechanics {
 namespace {

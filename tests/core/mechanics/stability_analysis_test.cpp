@@ -7,7 +7,7 @@
 #include "core/mechanics/block_equilibrium.h"
 #include "core/mechanics/contact_points.h"
 #include "core/mechanics/stability_analysis.h"
-#include "tests/core/mechanics/mechanics_blocks.h"
+#include "tests/support/mechanics_blocks.h"
 
 namespace rockface::mechanics {
 namespace {

@@ -15,7 +15,7 @@
 #include "core/common/units.h"
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_space.h"
-#include "tests/core/rotation/rotation_blocks.h"
+#include "tests/support/rotation_blocks.h"
 
 namespace rockface::kinematics {
 namespace {

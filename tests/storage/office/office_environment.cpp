@@ -1,0 +1,56 @@
+#include "tests/storage/office/office_environment.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "storage/office/pg_connection.h"
+#include "storage/office/server_schema.h"
+
+namespace rockface::office_test {
+
+namespace {
+
+std::unique_ptr<test::PostgresServer> the_server;
+
+class ServerEnvironment : public ::testing::Environment {
+ public:
+  void SetUp() override {
+    test::PostgresServer::Options options;
+    options.tls = true;
+    the_server = std::make_unique<test::PostgresServer>(options);
+  }
+  void TearDown() override { the_server.reset(); }
+};
+
+[[maybe_unused]] auto* const environment =
+    ::testing::AddGlobalTestEnvironment(new ServerEnvironment);
+
+}  // namespace
+
+test::PostgresServer& server() {
+  return *the_server;
+}
+
+std::string as_superuser(const std::string& db) {
+  return server().socket_conninfo(test::PostgresServer::kSuperuser, db);
+}
+
+std::string as_role(const std::string& db, const std::string& role) {
+  return server().socket_conninfo(role, db);
+}
+
+std::string fresh_database(const std::string& tunnel) {
+  static int count = 0;
+  const std::string db = "site" + std::to_string(++count);
+  server().psql("CREATE DATABASE " + db, "postgres");
+  storage::office::Connection c(as_superuser(db));
+  storage::office::init_server(c);
+  storage::office::add_tunnel(c, tunnel);
+  storage::office::add_tablet(c, "tablet_a", tunnel);
+  storage::office::add_tablet(c, "tablet_b", tunnel);
+  storage::office::add_office_user(c, "office_reader");
+  return db;
+}
+
+}  // namespace rockface::office_test

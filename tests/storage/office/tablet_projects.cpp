@@ -1,0 +1,216 @@
+#include "tests/storage/office/tablet_projects.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "storage/office/pg_connection.h"
+#include "storage/office/record_documents.h"
+#include "storage/office/sqlite_rows.h"
+#include "storage/project_store.h"
+#include "storage/tunnel_files.h"
+#include "tests/support/sample_records.h"
+#include "tests/support/dense_face.h"
+#include "tests/support/test_paths.h"
+
+namespace rockface::office_test {
+
+namespace fs = std::filesystem;
+using namespace storage;
+
+void make_tablet_project(const fs::path& file, const TabletProject& o) {
+  ProjectInfo info = storage::test::sample_project();
+  info.name = o.name;
+  ProjectStore store = ProjectStore::create(file, info);
+  const fs::path samples = fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples";
+  TunnelRecord tunnel;
+  tunnel.name = o.tunnel;
+  tunnel.underbreak_tolerance_m = o.underbreak_tolerance_m;
+  const AlignmentTable table = read_alignment_csv(samples / "tunnel-drive.alignment.csv");
+  tunnel.stations = table.stations;
+  tunnel.radii = table.radii;
+  tunnel.polyline = table.polyline;
+  tunnel.profile = read_profile_file(samples / "tunnel-drive.profile.json");
+  store.save_tunnel(tunnel);
+  const RecordId calibration = store.save_calibration(storage::test::sample_calibration());
+  // Scatter of a geologist's planes about a set's mean (degrees).
+  const std::array<double, 6> ddip{-2, -1, 0, 1, 2, 0}, ddir{1, -2, 2, -1, 0, -1};
+  for (int v = 0; v < o.visits; ++v) {
+    const double chainage = o.first_chainage + 2.5 * v;
+    const RecordId visit = store.begin_visit(o.name + " at " + std::to_string(chainage));
+    Capture capture =
+        storage::test::sample_capture(visit, 100 * o.seed + v, o.image_width, o.image_height);
+    capture.calibration_id = calibration;
+    const RecordId capture_id = store.save_capture(capture);
+    const RecordId model = store.save_model(storage::test::sample_model(capture_id));
+    std::vector<Measurement> planes;
+    auto add = [&](double dip, double dipdir) {
+      for (std::size_t i = 0; i < ddip.size(); ++i) {
+        Measurement m;
+        m.visit_id = visit;
+        m.model_id = model;
+        m.kind = Measurement::Kind::trace;
+        m.label = "T" + std::to_string(planes.size() + 1);
+        m.points = {{0.1 * i, chainage - 70, 0.3}, {1.0 + 0.1 * i, chainage - 70, 1.1}};
+        m.dip_deg = dip + ddip[i] + 0.1 * o.seed;
+        m.dipdir_deg = std::fmod(dipdir + ddir[(i + o.seed) % ddir.size()] + 5.0 * v + 360, 360);
+        planes.push_back(m);
+      }
+    };
+    add(60, 200);
+    add(75, 110);
+    store.save_measurements(visit, planes);
+    if (v == 0)
+      store.save_joints(visit, storage::test::sample_joint_sets(), storage::test::sample_joints());
+    store.save_analysis(storage::test::sample_analysis(visit, model));
+    VisitPlacement p;
+    p.visit_id = visit;
+    p.chainage = chainage;
+    p.note = "typed";
+    store.save_visit_placement(p);
+  }
+  if (o.dense_face_visit) {
+    const RecordId visit = store.begin_visit(o.name + " mapped face");
+    const rockface::test::DenseFace face =
+        rockface::test::dense_face(40, static_cast<unsigned>(o.seed));
+    std::vector<Measurement> measurements;
+    Measurement area;
+    area.kind = Measurement::Kind::area;
+    area.label = "FACE";
+    area.points = face.polygon();
+    area.dip_deg = 90;
+    area.dipdir_deg = 180;
+    area.rock_side = "lower";
+    measurements.push_back(area);
+    std::vector<Joint> joints;
+    for (const auto& t : face.traces) {
+      Measurement m;
+      m.kind = Measurement::Kind::trace;
+      m.label = t.id;
+      m.joint_label = t.joint;
+      m.points = {t.from, t.point, t.to};
+      m.dip_deg = t.dip;
+      m.dipdir_deg = t.dipdir;
+      measurements.push_back(m);
+      Joint j;
+      j.label = t.joint;
+      j.dip_deg = t.dip;
+      j.dipdir_deg = t.dipdir;
+      j.point = t.point;
+      j.friction_deg = t.friction;
+      j.cohesion_pa = 0;
+      j.source = "trace " + t.id;
+      joints.push_back(j);
+    }
+    store.save_measurements(visit, measurements);
+    store.save_joints(visit, {}, joints);
+  }
+}
+
+std::string project_content(const fs::path& file) {
+  sqlite::Connection db(file, sqlite::Connection::Access::read_only);
+  std::vector<std::string> tables;
+  {
+    office::RawStatement st(db,
+                            "SELECT name FROM sqlite_master WHERE type = 'table' AND name NOT "
+                            "LIKE 'sync_%' AND name NOT LIKE 'sqlite_%' ORDER BY name",
+                            "listing tables");
+    while (st.step()) tables.push_back(st.text(0));
+  }
+  std::ostringstream out;
+  for (const auto& t : tables) {
+    office::RawStatement st(db, "SELECT * FROM " + t + " ORDER BY rowid", "dumping " + t);
+    out << "table " << t << "\n";
+    while (st.step()) {
+      for (int c = 0; c < st.columns(); ++c) {
+        if (st.type(c) == SQLITE_BLOB) {
+          const auto* p = static_cast<const std::uint8_t*>(sqlite3_column_blob(st.get(), c));
+          out << office::hex_of(p, static_cast<std::size_t>(sqlite3_column_bytes(st.get(), c)));
+        } else if (st.type(c) == SQLITE_FLOAT) {
+          char text[40];
+          std::snprintf(text, sizeof(text), "%.17g", sqlite3_column_double(st.get(), c));
+          out << text;
+        } else {
+          out << st.text(c);
+        }
+        out << "|";
+      }
+      out << "\n";
+    }
+  }
+  return out.str();
+}
+
+std::string first_difference(const std::string& a, const std::string& b) {
+  if (a == b) return "";
+  std::istringstream sa(a), sb(b);
+  std::string la, lb;
+  for (int line = 1;; ++line) {
+    const bool ga = static_cast<bool>(std::getline(sa, la));
+    const bool gb = static_cast<bool>(std::getline(sb, lb));
+    if (!ga && !gb) return "differ in length";
+    if (la != lb || ga != gb)
+      return "line " + std::to_string(line) + ":\n  " + la.substr(0, 300) + "\n  " +
+             lb.substr(0, 300);
+  }
+}
+
+void expect_server_holds(const std::string& superuser, const fs::path& project,
+                         int revisions_each) {
+  sqlite::Connection db(project, sqlite::Connection::Access::read_write);
+  const office::ProjectDocuments docs = office::read_project_documents(db);
+  office::Connection c(superuser);
+  const office::Result r = c.query(
+      "SELECT kind, uuid::text, content_sha256, body::text, revision, "
+      "count(*) OVER (PARTITION BY kind, uuid), deleted FROM (SELECT *, rank() OVER (PARTITION BY kind, "
+      "uuid ORDER BY revision DESC) AS newest FROM rockface.record WHERE project_uuid = "
+      "$1::uuid) r WHERE newest = 1 OR true ORDER BY kind, uuid, revision",
+      {office::Param::of(docs.project_uuid)}, "checking the server");
+  struct Held {
+    std::string sha, body;
+    int revisions = 0;
+    bool deleted = false;
+  };
+  std::map<std::pair<std::string, std::string>, Held> held;
+  for (int i = 0; i < r.rows(); ++i) {
+    Held& h = held[{r.text(i, 0), r.text(i, 1)}];
+    h.sha = r.text(i, 2);  // rows come oldest first: the last one is the newest
+    h.body = r.text(i, 3);
+    h.revisions = static_cast<int>(r.int64(i, 5));
+    h.deleted = r.text(i, 6) == "t";
+  }
+  // A record whose newest revision is its deletion is no longer held.
+  std::erase_if(held, [](const auto& kv) { return kv.second.deleted; });
+  EXPECT_EQ(held.size(), docs.records.size()) << "records on the server vs the tablet";
+  for (const auto& d : docs.records) {
+    const auto it = held.find({d.kind, d.uuid});
+    if (it == held.end()) {
+      ADD_FAILURE() << d.kind << " " << d.uuid << " is not on the server";
+      continue;
+    }
+    EXPECT_EQ(it->second.sha, d.content_sha256) << d.kind << " " << d.local_id;
+    EXPECT_EQ(nlohmann::json::parse(it->second.body), nlohmann::json::parse(d.body))
+        << d.kind << " " << d.local_id;
+    if (revisions_each > 0) {
+      EXPECT_EQ(it->second.revisions, revisions_each) << d.kind << " " << d.local_id;
+    }
+    for (const auto& b : d.blobs) {
+      const office::Result blob = c.query(
+          "SELECT b.complete, b.byte_size, (SELECT encode(sha256(string_agg(bytes, ''::bytea "
+          "ORDER BY idx)), 'hex') FROM rockface.blob_chunk WHERE sha256 = b.sha256) FROM "
+          "rockface.blob b WHERE b.sha256 = $1",
+          {office::Param::of(b.sha256)}, "checking a blob");
+      ASSERT_EQ(blob.rows(), 1) << "blob " << b.sha256 << " of " << d.kind;
+      EXPECT_EQ(blob.text(0, 0), "t");
+      EXPECT_EQ(blob.int64(0, 1), b.size);
+      EXPECT_EQ(blob.text(0, 2), b.sha256);
+    }
+  }
+}
+
+}  // namespace rockface::office_test
