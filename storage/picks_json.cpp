@@ -102,6 +102,11 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
         if (pick.origin != "hand" && pick.origin != "proposed" && pick.origin != "corrected")
           r.fail(path + ".origin", "\"" + pick.origin + "\" is not hand, proposed or corrected");
       }
+      // A form given as null (a writer's empty value) is no form: said by
+      // its field, not found missing later.
+      for (const char* form : {"pixels", "points", "ends"})
+        if (t.is_object() && t.contains(form) && t[form].is_null())
+          r.fail(Reader::join(path, form), "must be an array, not null");
       const int forms = (t.contains("pixels") ? 1 : 0) + (t.contains("points") ? 1 : 0) +
                         (t.contains("ends") ? 1 : 0);
       if (forms != 1)
@@ -127,7 +132,7 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
         require_two_distinct(r, pick.points, path + ".points");
       } else {
         pick.photo = photo(r, t, path);
-        const auto ends = pixels(r, t.at("ends"), path + ".ends");
+        const auto ends = pixels(r, r.require(t, path, "ends"), path + ".ends");
         if (ends.size() != 2)
           r.fail(path + ".ends", "needs the two end pixels, found " + std::to_string(ends.size()));
         require_two_distinct(r, ends, path + ".ends");

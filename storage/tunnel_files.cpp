@@ -279,6 +279,8 @@ tunnel::DesignProfile parse_profile_json(const std::string& text, const std::str
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::out_of_range&) {
+    throw_number_overflow(text, source);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(source, std::string("is not valid JSON: ") + e.what());
   }
