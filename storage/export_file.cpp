@@ -28,6 +28,11 @@ int sync_path(const std::filesystem::path& path, int flags) {
 
 void write_file_atomically(const std::filesystem::path& file,
                            const std::function<void(std::ostream&)>& write) {
+  // A folder given for the file (`--out .`) is said as such, before anything
+  // is written (issue 41: "cannot put the file in place: Success").
+  std::error_code is_dir_ec;
+  if (std::filesystem::is_directory(file, is_dir_ec))
+    throw InputError(file.string(), "is a folder, not a file: give the file's name");
   std::filesystem::path temp = file;
   temp += ".writing-" + std::to_string(::getpid());
   {
@@ -57,8 +62,9 @@ void write_file_atomically(const std::filesystem::path& file,
   std::error_code ec;
   std::filesystem::rename(temp, file, ec);
   if (ec) {
+    const std::string why = ec.message();  // before remove() resets ec
     std::filesystem::remove(temp, ec);
-    throw Error(file.string() + ": cannot put the file in place: " + ec.message());
+    throw Error(file.string() + ": cannot put the file in place: " + why);
   }
   // The rename is an entry of the folder: on the card once the folder is.
   const std::filesystem::path folder = file.parent_path();
