@@ -4,6 +4,7 @@
 // Shared by the scene and the picks parsers.
 #include <cmath>
 #include <cstdlib>
+#include <initializer_list>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -100,6 +101,20 @@ class Reader {
   const nlohmann::json& array(const nlohmann::json& v, const std::string& path) const {
     if (!v.is_array()) fail(path, "must be an array");
     return v;
+  }
+  // Refuses a key of `obj` that is not in `known` by its path, listing the
+  // known ones: a misspelt key ("bond_strenght") is said, never ignored.
+  void only_fields(const nlohmann::json& obj, const std::string& path,
+                   std::initializer_list<const char*> known) const {
+    if (!obj.is_object()) fail(path, "must be an object");
+    for (const auto& item : obj.items()) {
+      bool ok = false;
+      for (const char* k : known) ok = ok || item.key() == k;
+      if (ok) continue;
+      std::string list;
+      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      fail(join(path, item.key().c_str()), "unknown field (" + list + ")");
+    }
   }
   static std::string join(const std::string& path, const char* key) {
     return path.empty() ? std::string(key) : path + "." + key;

@@ -80,6 +80,10 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
   const Reader r(source);
   const std::string top = base.empty() ? "(top level)" : base;
   if (!object.is_object()) r.fail(top, "must be a JSON object");
+  if (base.empty())
+    r.only_fields(object, "", {"format", "traces", "areas", "points", "sets"});
+  else
+    r.only_fields(object, base, {"traces", "areas", "points", "sets"});
   auto at = [&](const std::string& key) { return base.empty() ? key : base + "." + key; };
   Picks picks;
   std::set<std::string> ids;
@@ -92,6 +96,9 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
     for (std::size_t i = 0; i < ts->size(); ++i) {
       const json& t = (*ts)[i];
       const std::string path = Reader::index(at("traces"), i);
+      r.only_fields(t, path,
+                    {"id", "joint", "origin", "photo", "pair", "pixels", "points", "ends", "cost",
+                     "compass"});
       TracePick pick;
       pick.where = path;
       pick.id = r.id(r.require(t, path, "id"), path + ".id");
@@ -153,6 +160,7 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
     for (std::size_t i = 0; i < as->size(); ++i) {
       const json& a = (*as)[i];
       const std::string path = Reader::index(at("areas"), i);
+      r.only_fields(a, path, {"id", "photo", "pair", "polygon", "rock_side"});
       AreaPick pick;
       pick.where = path;
       pick.id = r.id(r.require(a, path, "id"), path + ".id");
@@ -176,6 +184,7 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
     for (std::size_t i = 0; i < ps->size(); ++i) {
       const json& p = (*ps)[i];
       const std::string path = Reader::index(at("points"), i);
+      r.only_fields(p, path, {"id", "photo", "pair", "pixel", "radius"});
       PointPick pick;
       pick.where = path;
       pick.id = r.id(r.require(p, path, "id"), path + ".id");
