@@ -8,6 +8,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "storage/json_reader.h"
 
 namespace rockface::storage {
 
@@ -63,6 +64,8 @@ CameraIntrinsics parse_camera_json(const std::string& text, const std::string& s
   json doc;
   try {
     doc = json::parse(text);
+  } catch (const json::out_of_range&) {
+    throw_number_overflow(text, source);
   } catch (const json::exception& e) {
     // nlohmann's message carries the byte position of the fault. Also a
     // number beyond double's range (1e309), found by tests/storage/fuzz.

@@ -80,6 +80,10 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
   const Reader r(source);
   const std::string top = base.empty() ? "(top level)" : base;
   if (!object.is_object()) r.fail(top, "must be a JSON object");
+  if (base.empty())
+    r.only_fields(object, "", {"format", "traces", "areas", "points", "sets"});
+  else
+    r.only_fields(object, base, {"traces", "areas", "points", "sets"});
   auto at = [&](const std::string& key) { return base.empty() ? key : base + "." + key; };
   Picks picks;
   std::set<std::string> ids;
@@ -92,6 +96,9 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
     for (std::size_t i = 0; i < ts->size(); ++i) {
       const json& t = (*ts)[i];
       const std::string path = Reader::index(at("traces"), i);
+      r.only_fields(t, path,
+                    {"id", "joint", "origin", "photo", "pair", "pixels", "points", "ends", "cost",
+                     "compass"});
       TracePick pick;
       pick.where = path;
       pick.id = r.id(r.require(t, path, "id"), path + ".id");
@@ -102,6 +109,11 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
         if (pick.origin != "hand" && pick.origin != "proposed" && pick.origin != "corrected")
           r.fail(path + ".origin", "\"" + pick.origin + "\" is not hand, proposed or corrected");
       }
+      // A form given as null (a writer's empty value) is no form: said by
+      // its field, not found missing later.
+      for (const char* form : {"pixels", "points", "ends"})
+        if (t.is_object() && t.contains(form) && t[form].is_null())
+          r.fail(Reader::join(path, form), "must be an array, not null");
       const int forms = (t.contains("pixels") ? 1 : 0) + (t.contains("points") ? 1 : 0) +
                         (t.contains("ends") ? 1 : 0);
       if (forms != 1)
@@ -127,7 +139,7 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
         require_two_distinct(r, pick.points, path + ".points");
       } else {
         pick.photo = photo(r, t, path);
-        const auto ends = pixels(r, t.at("ends"), path + ".ends");
+        const auto ends = pixels(r, r.require(t, path, "ends"), path + ".ends");
         if (ends.size() != 2)
           r.fail(path + ".ends", "needs the two end pixels, found " + std::to_string(ends.size()));
         require_two_distinct(r, ends, path + ".ends");
@@ -148,6 +160,7 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
     for (std::size_t i = 0; i < as->size(); ++i) {
       const json& a = (*as)[i];
       const std::string path = Reader::index(at("areas"), i);
+      r.only_fields(a, path, {"id", "photo", "pair", "polygon", "rock_side"});
       AreaPick pick;
       pick.where = path;
       pick.id = r.id(r.require(a, path, "id"), path + ".id");
@@ -171,6 +184,7 @@ Picks read_picks(const json& object, const std::string& source, const std::strin
     for (std::size_t i = 0; i < ps->size(); ++i) {
       const json& p = (*ps)[i];
       const std::string path = Reader::index(at("points"), i);
+      r.only_fields(p, path, {"id", "photo", "pair", "pixel", "radius"});
       PointPick pick;
       pick.where = path;
       pick.id = r.id(r.require(p, path, "id"), path + ".id");

@@ -483,6 +483,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   json doc;
   try {
     doc = json::parse(text);
+  } catch (const json::out_of_range&) {
+    throw_number_overflow(text, source);
   } catch (const json::exception& e) {
     // nlohmann reports the byte offset; that is where the JSON breaks. Also
     // a number beyond double's range (1e309), found by tests/storage/fuzz.

@@ -35,6 +35,7 @@ void read_tunnel_lighting(const Reader& r, const json& ef, const std::string& ep
   if (auto* v = r.optional(ef, ep, "flash")) {
     const std::string p = ep + ".flash";
     if (v->is_object()) {
+      r.only_fields(*v, p, {"intensity"});
       out.flash = 1.0;
       if (auto* i = r.optional(*v, p, "intensity")) out.flash = r.positive(*i, p + ".intensity");
     } else
@@ -44,6 +45,7 @@ void read_tunnel_lighting(const Reader& r, const json& ef, const std::string& ep
     const json& lamps = r.array(*v, ep + ".lamps");
     for (std::size_t k = 0; k < lamps.size(); ++k) {
       const std::string p = Reader::index(ep + ".lamps", k);
+      r.only_fields(lamps[k], p, {"position", "intensity"});
       SceneLamp lamp;
       lamp.position = r.vec3(r.require(lamps[k], p, "position"), p + ".position");
       lamp.intensity = r.positive(r.require(lamps[k], p, "intensity"), p + ".intensity");
@@ -57,6 +59,7 @@ void read_tunnel_lighting(const Reader& r, const json& ef, const std::string& ep
   }
   if (auto* v = r.optional(ef, ep, "sensor")) {
     const std::string p = ep + ".sensor";
+    r.only_fields(*v, p, {"iso", "base_iso", "full_well_e", "read_noise_e", "seed"});
     SceneSensor s;
     s.iso = r.number_in(r.require(*v, p, "iso"), p + ".iso", 25, 409600, false);
     if (auto* x = r.optional(*v, p, "base_iso")) s.base_iso = r.positive(*x, p + ".base_iso");
@@ -81,6 +84,7 @@ void read_tunnel_lighting(const Reader& r, const json& ef, const std::string& ep
     const json& wet = r.array(*v, ep + ".wet");
     for (std::size_t k = 0; k < wet.size(); ++k) {
       const std::string p = Reader::index(ep + ".wet", k);
+      r.only_fields(wet[k], p, {"id", "polygon", "specular", "shininess", "darkening"});
       SceneWet w;
       w.region = read_region(r, wet[k], p, "W" + std::to_string(k + 1));
       if (auto* x = r.optional(wet[k], p, "specular"))
@@ -96,6 +100,7 @@ void read_tunnel_lighting(const Reader& r, const json& ef, const std::string& ep
     const json& sc = r.array(*v, ep + ".shotcrete");
     for (std::size_t k = 0; k < sc.size(); ++k) {
       const std::string p = Reader::index(ep + ".shotcrete", k);
+      r.only_fields(sc[k], p, {"id", "polygon", "albedo"});
       SceneShotcrete s;
       s.region = read_region(r, sc[k], p, "S" + std::to_string(k + 1));
       if (auto* x = r.optional(sc[k], p, "albedo"))
@@ -105,6 +110,7 @@ void read_tunnel_lighting(const Reader& r, const json& ef, const std::string& ep
   }
   if (auto* v = r.optional(ef, ep, "dust")) {
     const std::string p = ep + ".dust";
+    r.only_fields(*v, p, {"beta_per_m", "visibility_m", "airlight"});
     SceneDust d;
     const json* beta = r.optional(*v, p, "beta_per_m");
     const json* visibility = r.optional(*v, p, "visibility_m");

@@ -28,6 +28,7 @@ AlignmentTable read_alignment(const Reader& r, const json& v, const std::string&
   if (v.is_string()) return read_alignment_csv(beside(scene_path, v.get<std::string>()));
   if (!v.is_object())
     r.fail(p, "must be the alignment CSV's file name or an object with \"stations\"");
+  r.only_fields(v, p, {"stations"});
   const json& st = r.array(r.require(v, p, "stations"), p + ".stations");
   AlignmentTable table;
   table.source = r.where(p);
@@ -35,6 +36,7 @@ AlignmentTable read_alignment(const Reader& r, const json& v, const std::string&
   for (std::size_t i = 0; i < st.size(); ++i) {
     const std::string sp = Reader::index(p + ".stations", i);
     tunnel::AlignmentStation s;
+    r.only_fields(st[i], sp, {"chainage", "easting", "northing", "elevation", "radius"});
     s.chainage = r.number(r.require(st[i], sp, "chainage"), sp + ".chainage");
     s.survey = {r.number(r.require(st[i], sp, "easting"), sp + ".easting"),
                 r.number(r.require(st[i], sp, "northing"), sp + ".northing"),
@@ -66,6 +68,9 @@ tunnel::DesignProfile read_profile(const Reader& r, const json& v, const std::st
 SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string& scene_path) {
   const std::string p = "tunnel";
   if (!t.is_object()) r.fail(p, "must be an object");
+  r.only_fields(
+      t, p,
+      {"name", "alignment", "profile", "drive", "underbreak_tolerance_m", "placement", "render"});
   SceneTunnel out;
   TunnelRecord& rec = out.record;
   if (auto* v = r.optional(t, p, "name")) rec.name = r.string(*v, p + ".name");
@@ -84,6 +89,7 @@ SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string&
     rec.underbreak_tolerance_m = r.non_negative(*v, p + ".underbreak_tolerance_m");
   if (auto* v = r.optional(t, p, "placement")) {
     const std::string pp = p + ".placement";
+    r.only_fields(*v, pp, {"chainage", "offset", "height"});
     SceneTunnelPlacement placement;
     placement.chainage = r.number(r.require(*v, pp, "chainage"), pp + ".chainage");
     if (auto* o = r.optional(*v, pp, "offset")) placement.offset = r.number(*o, pp + ".offset");
@@ -92,6 +98,9 @@ SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string&
   }
   if (auto* v = r.optional(t, p, "render")) {
     const std::string rp = p + ".render";
+    r.only_fields(
+        *v, rp,
+        {"from_chainage", "face_chainage", "section_m", "facet_m", "face_relief_m", "breaks"});
     SceneTunnelRender render;
     render.from_chainage = r.number(r.require(*v, rp, "from_chainage"), rp + ".from_chainage");
     render.face_chainage = r.number(r.require(*v, rp, "face_chainage"), rp + ".face_chainage");
@@ -108,6 +117,7 @@ SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string&
       for (std::size_t i = 0; i < bs->size(); ++i) {
         const std::string bp = Reader::index(rp + ".breaks", i);
         const json& b = (*bs)[i];
+        r.only_fields(b, bp, {"chainage", "s", "depth_m"});
         SceneTunnelBreak br;
         const json& ch = r.require(b, bp, "chainage");
         const json& s = r.require(b, bp, "s");

@@ -23,6 +23,10 @@ tunnel::DesignProfile read_shape(const Reader& r, const json& v, const std::stri
     const json* x = r.optional(v, p, key);
     return x ? r.number(*x, p + "." + key) : fallback;
   };
+  if (shape == "circle") r.only_fields(v, p, {"shape", "radius", "centre_v"});
+  if (shape == "rectangle") r.only_fields(v, p, {"shape", "width", "height", "floor_v"});
+  if (shape == "horseshoe")
+    r.only_fields(v, p, {"shape", "crown_radius", "springline_v", "wall_radius", "invert_v"});
   try {
     if (shape == "circle") return tunnel::circle_profile(num("radius"), any("centre_v", 0));
     if (shape == "rectangle")
@@ -97,6 +101,7 @@ analysis::SceneWedges read_scene_wedges(const Reader& r, const json& w,
   }
   if (auto* a = r.optional(w, p, "axis")) {
     const std::string ap = p + ".axis";
+    r.only_fields(*a, ap, {"trend", "plunge"});
     out.trend = r.number_in(r.require(*a, ap, "trend"), ap + ".trend", 0, 360);
     out.plunge = r.number_in(r.require(*a, ap, "plunge"), ap + ".plunge", -89, 89);
   }
@@ -110,8 +115,10 @@ analysis::SceneWedges read_scene_wedges(const Reader& r, const json& w,
     r.fail(p + ".face", "perimeter and face both false: nothing to look for");
   if (auto* s = r.optional(w, p, "support")) {
     const std::string sp = p + ".support";
+    r.only_fields(*s, sp, {"bolts", "shotcrete"});
     if (auto* b = r.optional(*s, sp, "bolts")) {
       const std::string bp = sp + ".bolts";
+      r.only_fields(*b, bp, {"length", "spacing", "capacity", "bond_strength", "on"});
       analysis::SceneWedgeBolts bolts;
       bolts.length = r.positive(r.require(*b, bp, "length"), bp + ".length");
       bolts.spacing = r.positive(r.require(*b, bp, "spacing"), bp + ".spacing");
@@ -123,6 +130,7 @@ analysis::SceneWedges read_scene_wedges(const Reader& r, const json& w,
     }
     if (auto* c = r.optional(*s, sp, "shotcrete")) {
       const std::string cp = sp + ".shotcrete";
+      r.only_fields(*c, cp, {"thickness", "shear_strength", "on"});
       analysis::SceneWedgeShotcrete sc;
       sc.thickness = r.number_in(r.require(*c, cp, "thickness"), cp + ".thickness", 1e-3, 2);
       sc.shear_strength = r.positive(r.require(*c, cp, "shear_strength"), cp + ".shear_strength");

@@ -279,10 +279,13 @@ tunnel::DesignProfile parse_profile_json(const std::string& text, const std::str
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::out_of_range&) {
+    throw_number_overflow(text, source);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(source, std::string("is not valid JSON: ") + e.what());
   }
   if (!doc.is_object()) r.fail("(top level)", "must be an object with \"segments\"");
+  r.only_fields(doc, "", {"format", "name", "ray_centre", "segments"});
   if (const auto* f = r.optional(doc, "", "format")) {
     if (!f->is_string() || f->get<std::string>() != kProfileFormat)
       r.fail("format", std::string("must be \"") + kProfileFormat + "\"");
@@ -304,6 +307,7 @@ tunnel::DesignProfile parse_profile_json(const std::string& text, const std::str
       r.fail(path, "must be {\"line\": {...}} or {\"arc\": {...}}");
     if (s.contains("line")) {
       const auto& l = s["line"];
+      r.only_fields(l, path + ".line", {"from", "to"});
       out.push_back(tunnel::ProfileSegment::line(
           uv(r, r.require(l, path + ".line", "from"), path + ".line.from"),
           uv(r, r.require(l, path + ".line", "to"), path + ".line.to")));
@@ -312,6 +316,7 @@ tunnel::DesignProfile parse_profile_json(const std::string& text, const std::str
       const std::string ap = path + ".arc";
       if (!a.is_object()) r.fail(ap, "must be an object");
       if (a.contains("radius")) {
+        r.only_fields(a, ap, {"centre", "radius", "start_deg", "end_deg"});
         const Eigen::Vector2d c = uv(r, r.require(a, ap, "centre"), ap + ".centre");
         const double radius = r.positive(r.require(a, ap, "radius"), ap + ".radius");
         const double from = r.number(r.require(a, ap, "start_deg"), ap + ".start_deg");
@@ -319,6 +324,7 @@ tunnel::DesignProfile parse_profile_json(const std::string& text, const std::str
         if (from == to) r.fail(ap + ".end_deg", "equals start_deg: the arc has no length");
         out.push_back(tunnel::ProfileSegment::arc_polar(c, radius, from * kDeg, to * kDeg));
       } else {
+        r.only_fields(a, ap, {"from", "to", "centre", "sense"});
         bool ccw = true;
         if (const auto* sense = r.optional(a, ap, "sense")) {
           if (!sense->is_string() || (*sense != "ccw" && *sense != "cw"))

@@ -103,6 +103,12 @@ void sync_folder(const fs::path& file) {
 
 void write_file_atomically(const fs::path& file, const std::function<void(std::ostream&)>& write) {
   if (file.empty()) throw Error("cannot write a file with no name");
+  // A folder given for the file (`profile --out .`) is said as such, before
+  // anything is written (issue 41: it said "cannot put the file in place:
+  // Success").
+  std::error_code is_dir_ec;
+  if (fs::is_directory(file, is_dir_ec))
+    throw InputError(file.string(), "is a folder, not a file: give the file's name");
   const fs::path temp = temporary_name(file);
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) fail(file, "cannot write the file", errno);

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/common/error.h"
@@ -42,7 +44,18 @@ void parse_sets(const std::string& text, MeasureRequest& request) {
     throw InputError("--sets", text + " is outside [1, 12]");
 }
 
+// --point-sigma: a picked point's precision, a length in (0, 10] m (issue
+// 41: nan, inf, 0 or -1 made every joint "orientation unknown").
+void check_point_sigma(const std::optional<double>& sigma) {
+  if (sigma && !(*sigma > 0 && *sigma <= 10)) {
+    std::ostringstream value;
+    value << *sigma;
+    throw InputError("--point-sigma", value.str() + " is outside (0, 10] m");
+  }
+}
+
 int run_measure(MeasureOptions& o) {
+  check_point_sigma(o.request.on.point_sigma);
   parse_sets(o.sets, o.request);
   const std::string project = o.request.on.source;
   o.request.stored = [&](storage::RecordId visit) {

@@ -8,6 +8,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/records/project_visit.h"
 #include "firmware-app/tunnel/visit_profile.h"
 #include "firmware-app/tunnel/visit_profile_json.h"
 #include "storage/field_report/tunnel_pictures.h"
@@ -37,6 +38,7 @@ VerbRun setup_profile(CLI::App& sub) {
     storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
     const auto visit = o->visit ? o->visit : store.latest_visit();
     if (!visit) throw InputError(o->project, "the project has no visit");
+    if (o->visit) require_visit(store, *o->visit);
     const VisitProfile profile = visit_profile(store, *visit, preset);
     storage::write_image_file(
         o->out, storage::developed_view_picture(profile.deviation, profile.tunnel.profile), ".png");

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "firmware-app/records/project_visit.h"
 
 namespace rockface::app {
 
@@ -63,6 +64,7 @@ WedgesResult wedges_from_input(const WedgesRequest& q) {
     storage::ProjectStore store = storage::ProjectStore::open(q.input, read);
     const auto visit = q.visit ? q.visit : store.latest_visit();
     if (!visit) throw InputError(q.input, "the project has no visit");
+    if (q.visit) require_visit(store, *q.visit);
     ProjectWedgeSettings s;
     s.axis = axis;
     if (q.friction_deg) {

@@ -154,5 +154,25 @@ TEST_F(AtomicFile, AReadOnlyFolderIsRefusedAndItsFileKept) {
   EXPECT_EQ(names(), std::vector<std::string>{"settings.json"});
 }
 
+// Issue 41: a folder given for a file (`profile --out .`) said "cannot put
+// the file in place: Success" (the errno read after remove() reset it): it is
+// refused as bad input naming the folder, before anything is written.
+TEST_F(AtomicFile, AFolderForTheFileIsRefusedByName) {
+  const fs::path folder = dir_ / "out";
+  fs::create_directories(folder);
+  std::string message = "accepted";
+  try {
+    write_text_atomically(folder, "text");
+  } catch (const InputError& e) {
+    message = e.what();
+  } catch (const std::exception& e) {
+    message = std::string("not an InputError: ") + e.what();
+  }
+  EXPECT_EQ(message, folder.string() + ": is a folder, not a file: give the file's name");
+  // Nothing left beside it, and the folder is still a folder.
+  EXPECT_TRUE(fs::is_directory(folder));
+  EXPECT_EQ(names(), std::vector<std::string>{"out"});
+}
+
 }  // namespace
 }  // namespace rockface

@@ -1,0 +1,105 @@
+// Issue 41: a number beyond double's range (1e309) in a scene, a profile, a
+// picks file or a rock-mass form, and a picks form given as null, are bad
+// input (InputError, exit 2) naming the file and where, not nlohmann's bare
+// out_of_range.406 / .403 (exit 1): the file, the field path, and for an
+// overflow the line and column.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
+#include "core/common/error.h"
+#include "storage/camera_json.h"
+#include "storage/picks_json.h"
+#include "storage/rockmass_form_json.h"
+#include "storage/scene.h"
+#include "storage/tunnel_files.h"
+
+namespace {
+
+// The one-line message of the InputError `parse` throws, or what else happened.
+std::string refusal(const std::function<void()>& parse) {
+  try {
+    parse();
+  } catch (const rockface::InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    return std::string("not an InputError: ") + e.what();
+  }
+  return "accepted";
+}
+
+const char* kOverflow = "1e309 is beyond the range of a number (about 1.8e308; line 3, column 13)";
+
+}  // namespace
+
+TEST(JsonNumberOverflow, SceneNamesFileAndPosition) {
+  const std::string m = refusal([] {
+    rockface::storage::parse_scene(
+        "{ \"format\": \"rockface-scene/1\",\n  \"joints\": [\n    {\"dip\": 1e309, \"dipdir\": "
+        "90} ] }",
+        "S.json");
+  });
+  EXPECT_EQ(m, std::string("S.json: joints[0].dip: ") + kOverflow) << m;
+}
+
+TEST(JsonNumberOverflow, ProfileNamesFileAndPosition) {
+  const std::string m = refusal([] {
+    rockface::storage::parse_profile_json(
+        "{ \"format\": \"rockface-tunnel-profile/1\",\n  \"segments\": [\n    {\"xyz\": 1e309} ] }",
+        "P.json");
+  });
+  EXPECT_EQ(m, std::string("P.json: segments[0].xyz: ") + kOverflow) << m;
+}
+
+TEST(JsonNumberOverflow, PicksNamesFileAndPosition) {
+  const std::string m = refusal([] {
+    rockface::storage::parse_picks(
+        "{ \"format\": \"rockface-picks/1\",\n  \"traces\": [\n    {\"abc\": 1e309, \"b\": 2} ] }",
+        "K.json");
+  });
+  EXPECT_EQ(m, std::string("K.json: traces[0].abc: ") + kOverflow) << m;
+}
+
+TEST(JsonNumberOverflow, RockMassFormNamesFileAndPosition) {
+  const std::string m = refusal([] {
+    rockface::storage::parse_rockmass_form("{ \"format\": \"x\",\n  \"ucs\":\n    -1e309 }",
+                                           "F.json");
+  });
+  EXPECT_EQ(m,
+            "F.json: ucs: -1e309 is beyond the range of a number (about 1.8e308; line 3, column 5)")
+      << m;
+}
+
+TEST(JsonNumberOverflow, CameraNamesFileAndPosition) {
+  const std::string m = refusal([] {
+    rockface::storage::parse_camera_json("{\"format\": \"rockface-camera/1\", \"fx\": 2e400}",
+                                         "C.json");
+  });
+  EXPECT_EQ(m,
+            "C.json: fx: 2e400 is beyond the range of a number (about 1.8e308; line 1, column 39)")
+      << m;
+}
+
+TEST(JsonNumberOverflow, AnOverflowInsideAStringIsNoNumber) {
+  // "1e309" as text is a name, not a number: the refusal points at the number.
+  const std::string m = refusal([] {
+    rockface::storage::parse_scene(
+        "{ \"format\": \"rockface-scene/1\", \"name\": \"1e309 \\\" 9e999\",\n  \"j\": [\n    "
+        "{\"dip\": 1e309} ] }",
+        "S.json");
+  });
+  EXPECT_EQ(m, std::string("S.json: j[0].dip: ") + kOverflow) << m;
+}
+
+TEST(PicksNullForm, PixelsNullIsRefusedByItsField) {
+  for (const char* form : {"pixels", "points", "ends"}) {
+    const std::string m = refusal([&] {
+      rockface::storage::parse_picks(std::string("{\"format\": \"rockface-picks/1\", \"traces\": "
+                                                 "[{\"id\": \"T1\", \"photo\": \"left\", \"") +
+                                         form + "\": null}]}",
+                                     "K.json");
+    });
+    EXPECT_EQ(m, std::string("K.json: traces[0].") + form + ": must be an array, not null");
+  }
+}
