@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
+
+#include "storage/report_numbers.h"
 
 namespace rockface::storage {
 
@@ -11,8 +14,9 @@ using ordered = nlohmann::ordered_json;
 using nlohmann::json;
 
 double tidy_dynamics(double v) {
-  // 9 significant digits: far beyond what the integration gives.
-  if (!std::isfinite(v)) return 0;
+  // 9 significant digits: far beyond what the integration gives. An unknown
+  // (NaN, infinity) stays one: the JSON writes it as null, not as 0.
+  if (!std::isfinite(v)) return v;
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", v);
   return std::strtod(buf, nullptr);
@@ -22,9 +26,25 @@ ordered vec_dynamics(const Eigen::Vector3d& v) {
   return ordered::array({tidy_dynamics(v(0)), tidy_dynamics(v(1)), tidy_dynamics(v(2))});
 }
 
+// An absolute point (m): to 1e-5 m at survey coordinates (report_numbers.h).
+ordered point_dynamics(const Eigen::Vector3d& v) {
+  return ordered::array({tidy_coordinate(v(0)), tidy_coordinate(v(1)), tidy_coordinate(v(2))});
+}
+
+// A number read back: null is an unknown (NaN).
+double number_at(const json& o, const char* key, double otherwise) {
+  if (!o.contains(key)) return otherwise;
+  const json& v = o[key];
+  return v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>();
+}
+
+double number_of(const json& v) {
+  return v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>();
+}
+
 Eigen::Vector3d vec3(const json& j) {
   if (!j.is_array() || j.size() != 3) return Eigen::Vector3d::Zero();
-  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+  return {number_of(j[0]), number_of(j[1]), number_of(j[2])};
 }
 
 }  // namespace
@@ -53,7 +73,7 @@ ordered dynamics_to_json(const analysis::ReportDynamics& d) {
   for (const auto& s : d.path) {
     ordered o;
     o["t"] = tidy_dynamics(s.time_s);
-    o["position"] = vec_dynamics(s.position);
+    o["position"] = point_dynamics(s.position);
     o["orientation"] =
         ordered::array({tidy_dynamics(s.orientation(0)), tidy_dynamics(s.orientation(1)),
                         tidy_dynamics(s.orientation(2)), tidy_dynamics(s.orientation(3))});
@@ -70,8 +90,8 @@ ordered dynamics_to_json(const analysis::ReportDynamics& d) {
     const analysis::ReportLanding& l = *d.landing;
     ordered o;
     o["time_s"] = tidy_dynamics(l.time_s);
-    o["point"] = vec_dynamics(l.point);
-    o["centroid"] = vec_dynamics(l.centroid);
+    o["point"] = point_dynamics(l.point);
+    o["centroid"] = point_dynamics(l.centroid);
     o["speed"] = tidy_dynamics(l.speed);
     o["corner_speed"] = tidy_dynamics(l.corner_speed);
     o["angular_speed"] = tidy_dynamics(l.angular_speed);
@@ -86,7 +106,7 @@ ordered dynamics_to_json(const analysis::ReportDynamics& d) {
     j["landing"] = o;
   }
   if (d.floor)
-    j["floor"] = {{"point", vec_dynamics(d.floor->first)},
+    j["floor"] = {{"point", point_dynamics(d.floor->first)},
                   {"normal", vec_dynamics(d.floor->second)}};
   j["numerics"] = {{"duration_s", tidy_dynamics(d.duration_s)},
                    {"sample_s", tidy_dynamics(d.sample_s)},
@@ -114,13 +134,13 @@ std::optional<analysis::ReportDynamics> dynamics_from_block_json(const std::stri
   try {
     d.trigger = j.value("trigger", "");
     d.outcome = j.value("outcome", "");
-    d.strength_divisor = j.value("strength_divisor", 1.0);
+    d.strength_divisor = number_at(j, "strength_divisor", 1.0);
     const json friction = j.value("friction_deg", json::object());
     for (auto it = friction.begin(); it != friction.end(); ++it)
-      d.friction_deg[it.key()] = it.value().get<double>();
+      d.friction_deg[it.key()] = number_of(it.value());
     for (const json& e : j.value("events", json::array())) {
       analysis::ReportMotionEvent ev;
-      ev.time_s = e.value("time_s", 0.0);
+      ev.time_s = number_at(e, "time_s", 0.0);
       ev.kind = e.value("kind", "");
       ev.what = e.value("event", "");
       for (const json& p : e.value("planes", json::array()))
@@ -129,35 +149,35 @@ std::optional<analysis::ReportDynamics> dynamics_from_block_json(const std::stri
     }
     for (const json& s : j.value("path", json::array())) {
       analysis::ReportMotionSample m;
-      m.time_s = s.value("t", 0.0);
+      m.time_s = number_at(s, "t", 0.0);
       m.position = vec3(s["position"]);
       const json& q = s["orientation"];
       if (q.is_array() && q.size() == 4)
-        m.orientation = Eigen::Vector4d(q[0].get<double>(), q[1].get<double>(), q[2].get<double>(),
-                                        q[3].get<double>());
+        m.orientation =
+            Eigen::Vector4d(number_of(q[0]), number_of(q[1]), number_of(q[2]), number_of(q[3]));
       m.velocity = vec3(s["velocity"]);
       m.angular_velocity = vec3(s["angular_velocity"]);
       const json& en = s.value("energy", json::object());
-      m.kinetic_translational = en.value("kinetic_translational", 0.0);
-      m.kinetic_rotational = en.value("kinetic_rotational", 0.0);
-      m.work = en.value("work", 0.0);
-      m.dissipated = en.value("dissipated", 0.0);
+      m.kinetic_translational = number_at(en, "kinetic_translational", 0.0);
+      m.kinetic_rotational = number_at(en, "kinetic_rotational", 0.0);
+      m.work = number_at(en, "work", 0.0);
+      m.dissipated = number_at(en, "dissipated", 0.0);
       d.path.push_back(m);
     }
     if (j.contains("landing")) {
       const json& o = j["landing"];
       analysis::ReportLanding l;
-      l.time_s = o.value("time_s", 0.0);
+      l.time_s = number_at(o, "time_s", 0.0);
       l.point = vec3(o["point"]);
       l.centroid = vec3(o["centroid"]);
-      l.speed = o.value("speed", 0.0);
-      l.corner_speed = o.value("corner_speed", 0.0);
-      l.angular_speed = o.value("angular_speed", 0.0);
-      l.kinetic_translational = o.value("kinetic_translational", 0.0);
-      l.kinetic_rotational = o.value("kinetic_rotational", 0.0);
-      l.distance_from_start = o.value("distance_from_start", 0.0);
+      l.speed = number_at(o, "speed", 0.0);
+      l.corner_speed = number_at(o, "corner_speed", 0.0);
+      l.angular_speed = number_at(o, "angular_speed", 0.0);
+      l.kinetic_translational = number_at(o, "kinetic_translational", 0.0);
+      l.kinetic_rotational = number_at(o, "kinetic_rotational", 0.0);
+      l.distance_from_start = number_at(o, "distance_from_start", 0.0);
       if (o.contains("distance_from_face")) {
-        l.distance_from_face = o["distance_from_face"].get<double>();
+        l.distance_from_face = number_of(o["distance_from_face"]);
         l.face = o.value("face", "");
       }
       d.landing = l;
@@ -165,9 +185,9 @@ std::optional<analysis::ReportDynamics> dynamics_from_block_json(const std::stri
     if (j.contains("floor"))
       d.floor = std::make_pair(vec3(j["floor"]["point"]), vec3(j["floor"]["normal"]));
     const json& n = j.value("numerics", json::object());
-    d.duration_s = n.value("duration_s", 0.0);
-    d.sample_s = n.value("sample_s", 0.0);
-    d.end_time_s = n.value("end_time_s", 0.0);
+    d.duration_s = number_at(n, "duration_s", 0.0);
+    d.sample_s = number_at(n, "sample_s", 0.0);
+    d.end_time_s = number_at(n, "end_time_s", 0.0);
     if (j.contains("picture")) d.picture = j["picture"].get<std::string>();
   } catch (const json::exception&) {
     return std::nullopt;  // not a report this program wrote

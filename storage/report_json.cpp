@@ -8,6 +8,7 @@
 
 #include "storage/report.h"
 #include "storage/report_dynamics_json.h"
+#include "storage/report_numbers.h"
 #include "storage/rockmass_report_json.h"
 
 namespace rockface::storage {
@@ -17,16 +18,17 @@ namespace {
 using nlohmann::json;
 using ordered = nlohmann::ordered_json;
 
-// Rounds for the report: 1e-9 relative keeps every digit a field measurement
-// could justify and drops binary noise from the printed numbers.
 double tidy(double v) {
-  if (!std::isfinite(v) || v == 0) return v;
-  const double scale = std::pow(10.0, 9 - std::ceil(std::log10(std::abs(v))));
-  return std::round(v * scale) / scale;
+  return tidy_relative(v);
 }
 
 ordered vec(const Eigen::Vector3d& v) {
   return ordered::array({tidy(v.x()), tidy(v.y()), tidy(v.z())});
+}
+
+// An absolute point (m): to 1e-5 m at survey coordinates (report_numbers.h).
+ordered point(const Eigen::Vector3d& v) {
+  return ordered::array({tidy_coordinate(v.x()), tidy_coordinate(v.y()), tidy_coordinate(v.z())});
 }
 
 ordered number_or_null(std::optional<double> v) {
@@ -93,11 +95,11 @@ ordered block_json(const analysis::ReportBlock& b) {
   j["code"] = b.code;
   j["convex"] = b.convex;
   ordered verts = ordered::array();
-  for (const auto& v : b.vertices) verts.push_back(vec(v));
+  for (const auto& v : b.vertices) verts.push_back(point(v));
   j["vertices"] = verts;
   if (b.volume) j["volume"] = tidy(*b.volume);
   if (b.mass) j["mass"] = tidy(*b.mass);
-  if (b.centroid) j["centroid"] = vec(*b.centroid);
+  if (b.centroid) j["centroid"] = point(*b.centroid);
   if (b.inertia) {
     ordered rows = ordered::array();
     for (int r = 0; r < 3; ++r) rows.push_back(vec(b.inertia->row(r).transpose()));
@@ -152,7 +154,7 @@ ordered block_json(const analysis::ReportBlock& b) {
   if (b.remote_axis) {
     ordered ra;
     ra["found"] = b.remote_axis->found;
-    ra["point"] = vec(b.remote_axis->point);
+    ra["point"] = point(b.remote_axis->point);
     ra["direction"] = vec(b.remote_axis->direction);
     ra["starts"] = b.remote_axis->starts;
     ra["hits"] = b.remote_axis->hits;
