@@ -117,6 +117,7 @@ ordered block_json(const analysis::ReportBlock& b) {
   j["marginal"] = b.marginal;
   if (b.mode) j["mode"] = mode_json(*b.mode);
   if (b.mode) j["fos"] = number_or_null(b.fos);
+  if (b.fos_marginal) j["fos_marginal"] = true;
   if (b.resultant_force && b.resultant_moment) {
     ordered r;
     r["force"] = vec(*b.resultant_force);

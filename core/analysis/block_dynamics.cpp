@@ -37,7 +37,9 @@ std::optional<Trigger> trigger(const ReportBlock& rb) {
                      *rb.mechanics->fos_limit_point};
   }
   if (rb.fos && *rb.fos < 1)
-    return Trigger{"limit equilibrium: FoS " + number(*rb.fos, 2) + " < 1", 1};
+    return Trigger{"limit equilibrium: FoS " + number(*rb.fos, 2) + " < 1" +
+                       (rb.fos_marginal ? " (marginal: within the FoS's tolerance of 1)" : ""),
+                   1};
   return std::nullopt;
 }
 
@@ -83,8 +85,10 @@ void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput&
   const std::optional<Trigger> why = trigger(rb);
   if (!why) {
     if (rb.removable)
-      rb.notes.push_back("dynamics after failure: block " + rb.id +
-                         " does not fail under its loads; its motion is not simulated");
+      rb.notes.push_back(
+          "dynamics after failure: block " + rb.id +
+          " does not fail under its loads; its motion is not simulated" +
+          (rb.fos_marginal ? " (marginal: its FoS is within its tolerance of 1)" : ""));
     return;
   }
   // Friction while sliding: each joint's (as limit equilibrium uses it),

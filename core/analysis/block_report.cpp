@@ -1,8 +1,31 @@
 #include "core/analysis/block_report.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 #include "core/analysis/analyse_rotation.h"
+#include "core/common/units.h"
 
 namespace rockface::analysis {
+
+namespace {
+
+// The error a factor of safety carries. For sliding on one plane of dip a
+// with friction phi, FoS = tan(phi) / tan(a); an error d in the plane's
+// orientation moves it by FoS * 2 d / sin(2 a), never less than 2 d FoS
+// (a = 45 deg), and a wedge's FoS moves by the same order. The scene states
+// d (analysis.orientation_uncertainty_deg, 1 deg by default: +-3.5 % of the
+// FoS). When the scene states no uncertainty (0), a numerical tolerance of
+// 1e-6 stays: the FoS is trigonometry of the input angles and small solves
+// (~1e-15 relative), but a FoS 1 - 1e-8 is 1 for any purpose (the report
+// prints two decimals) and must not read as a confident "fails".
+double fos_tolerance(double fos, double orientation_uncertainty_deg) {
+  constexpr double kNumerical = 1e-6;
+  return std::max(2 * deg_to_rad(std::max(orientation_uncertainty_deg, 0.0)) * fos, kNumerical);
+}
+
+}  // namespace
 
 void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAnalysis& a,
                        const SceneAnalysis& options, ReportBlock& rb) {
@@ -26,6 +49,18 @@ void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAn
     m.marginal = a.mode->marginal;
     rb.mode = m;
     rb.fos = a.fos;
+    if (a.fos && std::isfinite(*a.fos)) {
+      const double tol = fos_tolerance(*a.fos, options.orientation_uncertainty_deg);
+      if (std::abs(*a.fos - 1) <= tol) {
+        rb.fos_marginal = true;
+        char buf[256];
+        std::snprintf(buf, sizeof buf,
+                      "FoS %.9g is within its tolerance (+-%.2g, from the orientation "
+                      "uncertainty of %.3g deg) of 1: marginal, failure is not decided",
+                      *a.fos, tol, options.orientation_uncertainty_deg);
+        rb.notes.push_back(buf);
+      }
+    }
   }
   rb.notes.insert(rb.notes.end(), a.notes.begin(), a.notes.end());
   // Rotation needs a finite block (its corners); cheap, so it always runs

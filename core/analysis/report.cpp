@@ -101,7 +101,7 @@ std::string report_summary(const Report& r) {
       out << pad(b.id, 10) << pad(b.source, 8) << pad(code_text(b.code), code_width)
           << pad(b.volume ? fixed(*b.volume, 3) : "-", 11) << pad(verdict, 16)
           << pad(fixed(b.margin_deg, 2) + " deg", 10) << pad(mode_text(b.mode), 22)
-          << pad(fos_text(b.mode, b.fos), 8) << rotation << "\n";
+          << pad(fos_text(b.mode, b.fos) + (b.fos_marginal ? "?" : ""), 8) << rotation << "\n";
     }
     if (pieces)
       out << "(code +N: a non-convex block, the code of its first convex piece and N more; all "

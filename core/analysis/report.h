@@ -165,6 +165,9 @@ struct ReportBlock {
   bool marginal = false;
   std::optional<ReportMode> mode;
   std::optional<double> fos;
+  // The FoS lies within its own tolerance of 1 (block_report.cpp): whether
+  // the block fails is not decided by the data; a note says why.
+  bool fos_marginal = false;
   // Active resultant of gravity and the scene's effects (N), and its moment
   // about the centroid (N m): what a toppling or rotation check starts from;
   // the limit equilibrium above is translational.
