@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <ctime>
+#include <utility>
 
 #include "core/common/error.h"
 #include "core/common/number_format.h"
@@ -119,6 +120,33 @@ void configure_writer(Connection& db, const OpenOptions& options) {
   }
 }
 
+// The -wal and -shm files a read-only connection left beside `file` when it
+// closed: SQLite makes them for a read-only connection's reads of a WAL
+// project, and a read-only connection cannot remove them (it cannot
+// checkpoint). They are removed as SQLite removes them: by a writable
+// connection that reads and is the last one to close (it checkpoints an
+// empty log, writing nothing into the file, and deletes both). Left alone
+// when the log holds anything (another program wrote: its saves), when
+// another connection still has the project open (SQLite then keeps them),
+// when a rollback journal lies beside it, or when the file cannot be
+// written.
+void remove_log_files(const fs::path& file) noexcept {
+  try {
+    std::error_code ec;
+    const fs::path wal = file.string() + "-wal";
+    const auto size = fs::file_size(wal, ec);
+    if (ec || size != 0) return;
+    // A rollback journal beside it would be undone by a writable opening.
+    if (fs::exists(file.string() + "-journal", ec) || ec) return;
+    Connection db(file, Connection::Access::read_write);
+    if (db.is_read_only()) return;
+    db.query_int("PRAGMA schema_version", "closing the project");
+    db.close();
+  } catch (...) {
+    // Only tidying: the project was read, nothing of it depends on this.
+  }
+}
+
 void fsync_directory(const fs::path& dir) {
   const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
   if (fd < 0) return;
@@ -145,7 +173,15 @@ ProjectStore::ProjectStore(fs::path file, Connection db, bool read_only,
 
 ProjectStore::ProjectStore(ProjectStore&&) noexcept = default;
 ProjectStore& ProjectStore::operator=(ProjectStore&&) noexcept = default;
-ProjectStore::~ProjectStore() = default;
+
+ProjectStore::~ProjectStore() {
+  // A read-only store (a verb that only reads, refused or not) leaves
+  // nothing beside the project: see remove_log_files (issue 41).
+  if (read_only_ && db_.handle() != nullptr) {
+    db_.close();
+    remove_log_files(file_);
+  }
+}
 
 ProjectStore ProjectStore::create(const fs::path& file, const ProjectInfo& info,
                                   const OpenOptions& options) {

@@ -41,8 +41,10 @@ VerbRun setup_rockmass(CLI::App& sub) {
     storage::ProjectStore store = storage::ProjectStore::open(o->project, options);
     const auto visit = o->visit ? o->visit : store.latest_visit();
     if (!visit) throw InputError(o->project, "the project has no visit");
+    // Everything checked (the visit, its traces, the form's values) before
+    // the form is stored: a refusal leaves the project as it was (issue 41).
+    const rockmass::RockMassFigures figures = visit_rock_mass(store, *visit, form);
     if (form) store.save_rockmass_form(*visit, *form);
-    const rockmass::RockMassFigures figures = visit_rock_mass(store, *visit);
     write_text_atomically(o->out, storage::rockmass_report_json(figures).dump(2) + "\n");
     for (const auto& line : rockmass::figures_lines(figures)) std::cout << line << "\n";
     for (const auto& line : rockmass::classification_lines(figures)) std::cout << line << "\n";

@@ -104,6 +104,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
 
   std::optional<storage::Scene> scene;
   std::optional<SyntheticSceneInput> synthetic;
+  std::optional<Eigen::Vector3d> typed_pole;
   std::unique_ptr<camera::MockCamera> cam;
   photogrammetry::CameraIntrinsics intrinsics;
   photogrammetry::RegistrationSources sources;
@@ -115,6 +116,9 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     // A pick naming a pair the scene does not photograph, or a pixel outside
     // the photographs: bad input before anything is captured or stored.
     check_picks_before_capture(*scene, std::max<std::size_t>(1, synthetic->pairs.size()));
+    // A typed placement off the alignment: refused before the camera
+    // spools a shot or the project is created (issue 41).
+    typed_pole = typed_range_pole(*scene);
     cam = camera::MockCamera::synthetic(synthetic->scene, spool.string());
     intrinsics = camera::rendered_intrinsics(synthetic->scene);
     intrinsics.body = "rockface synthetic camera";
@@ -184,8 +188,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   // In a tunnel the geologist may type where the pole stood (chainage,
   // offset, height) instead of surveying it.
   if (synthetic && synthetic->scene.range_pole && rec.targets) {
-    const Eigen::Vector3d pole =
-        typed_range_pole(*scene).value_or(synthetic->scene.range_pole->base);
+    const Eigen::Vector3d pole = typed_pole.value_or(synthetic->scene.range_pole->base);
     const Eigen::Vector3d shift = pole - rec.model_to_world.apply(rec.targets->model[0]);
     rec.mesh.transform(1.0, Eigen::Matrix3d::Identity(), shift);
     rec.model_to_world.t += shift;

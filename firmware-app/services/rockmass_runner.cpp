@@ -14,12 +14,13 @@ std::vector<std::string> StoreRockMassRunner::figures(
   storage::OpenOptions options;
   options.read_only = !save;
   storage::ProjectStore store = storage::ProjectStore::open(project, options);
+  progress.step("spacing, RQD, Jv, block sizes", 0.3);
+  // Figured with the form before it is stored: a refusal stores nothing.
+  const rockmass::RockMassFigures f = visit_rock_mass(store, visit_id, save);
   if (save) {
-    progress.step("saving the form", 0.1);
+    progress.step("saving the form", 0.8);
     store.save_rockmass_form(visit_id, *save);
   }
-  progress.step("spacing, RQD, Jv, block sizes", 0.3);
-  const rockmass::RockMassFigures f = visit_rock_mass(store, visit_id);
   progress.step("classification", 0.9);
   std::vector<std::string> lines = rockmass::classification_lines(f);
   for (const auto& line : rockmass::figures_lines(f)) lines.push_back(line);
