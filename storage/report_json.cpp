@@ -27,7 +27,7 @@ ordered vec(const Eigen::Vector3d& v) {
 }
 
 // An absolute point (m): to 1e-5 m at survey coordinates (report_numbers.h).
-ordered point(const Eigen::Vector3d& v) {
+ordered survey_point(const Eigen::Vector3d& v) {
   return ordered::array({tidy_coordinate(v.x()), tidy_coordinate(v.y()), tidy_coordinate(v.z())});
 }
 
@@ -95,11 +95,11 @@ ordered block_json(const analysis::ReportBlock& b) {
   j["code"] = b.code;
   j["convex"] = b.convex;
   ordered verts = ordered::array();
-  for (const auto& v : b.vertices) verts.push_back(point(v));
+  for (const auto& v : b.vertices) verts.push_back(survey_point(v));
   j["vertices"] = verts;
   if (b.volume) j["volume"] = tidy(*b.volume);
   if (b.mass) j["mass"] = tidy(*b.mass);
-  if (b.centroid) j["centroid"] = point(*b.centroid);
+  if (b.centroid) j["centroid"] = survey_point(*b.centroid);
   if (b.inertia) {
     ordered rows = ordered::array();
     for (int r = 0; r < 3; ++r) rows.push_back(vec(b.inertia->row(r).transpose()));
@@ -155,7 +155,7 @@ ordered block_json(const analysis::ReportBlock& b) {
   if (b.remote_axis) {
     ordered ra;
     ra["found"] = b.remote_axis->found;
-    ra["point"] = point(b.remote_axis->point);
+    ra["point"] = survey_point(b.remote_axis->point);
     ra["direction"] = vec(b.remote_axis->direction);
     ra["starts"] = b.remote_axis->starts;
     ra["hits"] = b.remote_axis->hits;
