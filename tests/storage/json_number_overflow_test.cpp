@@ -14,20 +14,11 @@
 #include "storage/rockmass_form_json.h"
 #include "storage/scene.h"
 #include "storage/tunnel_files.h"
+#include "tests/support/refusal.h"
 
 namespace {
 
-// The one-line message of the InputError `parse` throws, or what else happened.
-std::string refusal(const std::function<void()>& parse) {
-  try {
-    parse();
-  } catch (const rockface::InputError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    return std::string("not an InputError: ") + e.what();
-  }
-  return "accepted";
-}
+using rockface::test::refusal;
 
 const char* kOverflow = "1e309 is beyond the range of a number (about 1.8e308; line 3, column 13)";
 

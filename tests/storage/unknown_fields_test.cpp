@@ -9,19 +9,11 @@
 #include "core/common/error.h"
 #include "storage/picks_json.h"
 #include "storage/tunnel_files.h"
+#include "tests/support/refusal.h"
 
 namespace {
 
-std::string refusal(const std::function<void()>& parse) {
-  try {
-    parse();
-  } catch (const rockface::InputError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    return std::string("not an InputError: ") + e.what();
-  }
-  return "accepted";
-}
+using rockface::test::refusal;
 
 std::string profile_with(const std::string& extra_top, const std::string& extra_line,
                          const std::string& extra_arc) {
