@@ -50,12 +50,18 @@ std::string visit_profile_json(const VisitProfile& v) {
                 {"from", v.round_from_source}};
   j["status"] = tunnel::deviation_status_name(d.status);
   j["message"] = d.message;
-  j["overbreak_volume_m3"] = round_to(d.overbreak_volume_m3, 0.001);
-  j["underbreak_volume_m3"] = round_to(d.underbreak_volume_m3, 0.001);
+  // Issue 38: with no wall or roof in view (or the round off the alignment)
+  // nothing was compared: the volumes and the largest overbreak are
+  // unknown (null), never 0, which would read as "excavated to the design".
+  const bool measured = d.status != tunnel::DeviationStatus::no_walls_in_view &&
+                        d.status != tunnel::DeviationStatus::outside_alignment;
+  const auto known = [measured](double value) { return measured ? json(value) : json(nullptr); };
+  j["overbreak_volume_m3"] = known(round_to(d.overbreak_volume_m3, 0.001));
+  j["underbreak_volume_m3"] = known(round_to(d.underbreak_volume_m3, 0.001));
   j["seen_fraction"] = round_to(d.seen_fraction, 0.001);
   j["excluded_fraction"] = round_to(d.excluded_fraction, 0.001);
   j["excluded_vertices_range_pole"] = v.pole_vertices;
-  j["max_overbreak_m"] = round_to(d.max_overbreak_m, 0.001);
+  j["max_overbreak_m"] = known(round_to(d.max_overbreak_m, 0.001));
   if (d.has_underbreak) {
     j["max_underbreak_m"] = round_to(d.max_underbreak_m, 0.001);
     j["max_underbreak_at"] = position(d.max_underbreak);

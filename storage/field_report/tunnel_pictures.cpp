@@ -38,9 +38,18 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
   const int w = std::max(200, width_px - left - right);
   const std::size_t rows = view.chainage.size(), cols = view.s.size();
   if (rows == 0 || cols == 0) {
-    cv::Mat img(160, width_px, CV_8UC3, kPaper);
-    draw_label(img, "Excavation against the design: nothing to show", {20, 50}, 0.6);
-    draw_label(img, dev.message, {20, 90}, 0.45);
+    // The title and the message in as many lines as the picture's width needs.
+    const int margin = 20, title_px = 28, line_px = 22;
+    const auto title =
+        wrap_label("Excavation against the design: nothing to show", width_px - 2 * margin, 0.6);
+    const auto lines = wrap_label(dev.message, width_px - 2 * margin, 0.45);
+    const int text_top = 50 + title_px * static_cast<int>(title.size());
+    cv::Mat img(std::max(160, text_top + line_px * static_cast<int>(lines.size())), width_px,
+                CV_8UC3, kPaper);
+    for (std::size_t i = 0; i < title.size(); ++i)
+      draw_label(img, title[i], {margin, 50 + title_px * static_cast<int>(i)}, 0.6);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      draw_label(img, lines[i], {margin, text_top + line_px * static_cast<int>(i)}, 0.45);
     return img;
   }
   const double perimeter = profile.perimeter();
