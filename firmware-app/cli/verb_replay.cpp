@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/number_format.h"
 #include "core/common/preset.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/replay/field_replay.h"
@@ -72,8 +73,13 @@ VerbRun setup_replay(CLI::App& sub) {
     const ReplayOutcome out = replay_field_workflow(*req, progress);
     std::cout << "project " << req->project << ": visit " << out.visit_id << ", capture "
               << out.capture_id << ", model " << out.model_id << " (" << out.model_points
-              << " points; " << out.registration << "; predicted depth precision "
-              << out.predicted_depth_sigma_m * 1000 << " mm)\n";
+              << " points; " << out.registration << "; predicted depth precision ";
+    // An unscaled model's lengths are in base lengths, not metres (issue 38).
+    if (out.scaled)
+      std::cout << out.predicted_depth_sigma_m * 1000 << " mm)\n";
+    else
+      std::cout << format_significant(out.predicted_depth_sigma_m, 3)
+                << " base lengths: unscaled, no range pole, control points or baseline)\n";
     for (const auto& g : out.guidance) std::cout << "capture: " << g << "\n";
     print_joint_comparisons(out.joints);
     if (out.report) std::cout << analysis::report_summary(*out.report);

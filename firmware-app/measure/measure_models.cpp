@@ -100,6 +100,7 @@ LoadedModel load_stored_model(storage::ProjectStore& store, const ModelSource& o
   // The report of the reconstruction: the right camera's relative
   // orientation and the predicted precision of a point.
   const storage::Registration& r = model.registration;
+  m.scaled = r.kind != "none";
   const auto p =
       nlohmann::json::parse(r.parameters_json.empty() ? "{}" : r.parameters_json, nullptr, false);
   if (p.is_object() && p.contains("orientation") && p["orientation"].contains("R") &&

@@ -41,6 +41,10 @@ struct LoadedModel {
   double point_sigma = 0.01;
   double correlation_length = 0;
   std::string name;
+  // Issue 38: false for a stored model nothing scaled (registration "none":
+  // no range pole, control points or baseline), whose lengths are in units
+  // of the base; a model file's scale is not known here (true).
+  bool scaled = true;
   // Project only.
   std::optional<storage::RecordId> model_id, capture_id;
 };

@@ -32,6 +32,14 @@ ProposeResult propose_for_visit(const ProposeRequest& request, Progress& progres
   r.model = load_stored_model(store, source, pairs.models[0], 1);
   r.on = pairs.what + ": model " + std::to_string(pairs.models[0]);
   r.visit = *source.visit;
+  // Issue 38: the facets' and proposals' thresholds are metres and square
+  // metres; on a 3D image in units of the base they would mean anything.
+  if (!r.model.scaled)
+    throw InputError(request.project + ", visit " + std::to_string(r.visit),
+                     "its 3D image is unscaled (no range pole, control points or baseline): its "
+                     "lengths are in units of the camera base, and the thresholds of `propose` "
+                     "are in metres; replay or reconstruct the pair with a range pole in view "
+                     "(--range-pole) or control points (--gcp)");
   measure::MeasureSettings settings;
   settings.point_sigma = r.model.point_sigma;
   settings.correlation_length = r.model.correlation_length;

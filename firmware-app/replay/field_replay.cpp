@@ -214,6 +214,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   out.registration = "scale: " + rec.scale_source + ", vertical: " + rec.vertical_source +
                      ", north: " + rec.north_source;
   out.predicted_depth_sigma_m = rec.accuracy.sigma_z;
+  out.scaled = rec.scaled;
   for (const auto& w : rec.accuracy.warnings) out.guidance.push_back(w);
 
   if (!scene) return out;  // a capture folder has no traces to analyse

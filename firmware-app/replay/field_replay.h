@@ -39,8 +39,11 @@ struct ReplayOutcome {
   std::optional<storage::RecordId> analysis_id;
   std::size_t model_points = 0;
   std::string registration;            // how the model was scaled and oriented
-  double predicted_depth_sigma_m = 0;  // sigma_Z at the face distance
-  std::vector<std::string> guidance;   // capture guidance notes
+  double predicted_depth_sigma_m = 0;  // sigma_Z at the face distance (base lengths if unscaled)
+  // Issue 38: false when nothing gave the model a scale (no range pole,
+  // control points or baseline): its lengths are in units of the base.
+  bool scaled = true;
+  std::vector<std::string> guidance;  // capture guidance notes
   // With picks: each scene joint's plane measured from its traces beside
   // the scene's (JointComparison), in scene order.
   std::vector<JointComparison> joints;
