@@ -11,6 +11,10 @@ namespace rockface::measure {
 
 namespace {
 
+// The least distance (m) from the 3D image at which a trace point given in
+// 3D is refused (measure_trace_points).
+constexpr double kTracePointOffSurfaceM = 0.3;
+
 std::string metres(double v) {
   return format_significant(v, 2, " m");
 }
@@ -229,10 +233,30 @@ TraceMeasurement measure_trace_points(const MeshPicker& picker, std::string id,
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!points[i].allFinite())
       throw InputError(index_where(where, "points", i), "coordinate is not a number");
+  // Issue 41: a trace given by its 3D points (a stored trace measured again,
+  // or typed) must lie on the 3D image: points nowhere near it gave an 89 m
+  // "trace" that was stored. Each point needs a vertex of the surface within
+  // a few point spacings (holes of dense matching are about that size), five
+  // sigmas of a picked point, or 0.3 m, whichever is larger: a true trace's
+  // end on the face's border lies beyond the 3D image's edge, which dense
+  // matching leaves a correlation window and the disparity margin short of
+  // the photographed rock (the demo face's true J1 and J3 ends lie past the
+  // 5-spacing bound: tests/integration/cli_measure/measure_cli_test.cpp).
+  const double spacing = picker.mesh().median_edge_length();
+  const double near_surface =
+      std::max({5.0 * spacing, 5.0 * settings.point_sigma, kTracePointOffSurfaceM});
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (picker.vertices_near(points[i], near_surface).empty())
+      throw InputError(
+          index_where(where, "points", i),
+          "point (" + format_significant(points[i].x(), 6) + ", " +
+              format_significant(points[i].y(), 6) + ", " + format_significant(points[i].z(), 6) +
+              ") is not on the 3D image: no surface within " + format_significant(near_surface, 2) +
+              " m of it (a trace's points lie on the mapped face)");
   TraceMeasurement t;
   t.id = std::move(id);
   t.points = points;
-  const double radius = 3.0 * picker.mesh().median_edge_length();
+  const double radius = 3.0 * spacing;
   for (const auto& p : points) t.surface_normals.push_back(local_normal(picker, p, radius));
   t.length = polyline_length(points);
   t.plane = fit_trace_plane(t.points, t.surface_normals, settings);

@@ -133,6 +133,37 @@ static std::vector<Eigen::Vector3d> corners_on_middle_facet(
   return corners;
 }
 
+// Issue 41: a trace given by 3D points must lie on the 3D image. Points on
+// the middle facet (the face's exact geometry) are measured; the same trace
+// with one point lifted 1 m off the facet, or moved 80 m away, is refused
+// naming that point: 1 m is more than three times the 0.3 m (or 5 point
+// spacings, under 0.5 m here) that a point may lie from the surface.
+TEST(TraceMeasurement, TracePointsOffTheSurfaceAreRefusedByName) {
+  const auto face = rockface::test::folded_face(400, 300);
+  const rm::MeshPicker picker(face.mesh);
+  ASSERT_LT(5 * face.mesh.median_edge_length(), 0.5);
+  const rm::MeasureSettings settings;
+  const auto on = corners_on_middle_facet(face);
+  const std::vector<Eigen::Vector3d> trace{on[0], on[1], on[2]};
+  EXPECT_NO_THROW(rm::measure_trace_points(picker, "T", trace, settings, "traces[1]"));
+  auto message = [&](const std::vector<Eigen::Vector3d>& points) {
+    try {
+      rm::measure_trace_points(picker, "T", points, settings, "traces[1]");
+    } catch (const rockface::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  std::vector<Eigen::Vector3d> lifted = trace;
+  lifted[1] += 1.0 * face.facets[1].plane.normal;
+  const std::string lifted_says = message(lifted);
+  EXPECT_NE(lifted_says.find("traces[1].points[1]"), std::string::npos) << lifted_says;
+  EXPECT_NE(lifted_says.find("not on the 3D image"), std::string::npos) << lifted_says;
+  std::vector<Eigen::Vector3d> far = trace;
+  far[2] += Eigen::Vector3d(80, 0, 0);
+  EXPECT_NE(message(far).find("traces[1].points[2]"), std::string::npos) << message(far);
+}
+
 TEST(AreaMeasurement, PolygonOnAFacetGivesItsPlane) {
   const auto face = rockface::test::folded_face(800, 600, 0.005);
   const rm::MeshPicker picker(face.mesh);
