@@ -12,8 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "storage/project_store.h"
-#include "storage/report.h"
+#include "storage/project/project_store.h"
+#include "storage/report/report.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
 
