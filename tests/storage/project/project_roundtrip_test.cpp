@@ -222,7 +222,9 @@ TEST(ProjectRoundTrip, EveryKindOfRecordSurvivesReopening) {
     EXPECT_EQ(b.removable, want.removable);
     EXPECT_EQ(b.marginal, want.marginal);
     EXPECT_EQ(b.mode.has_value(), want.mode.has_value());
-    if (b.mode && want.mode) EXPECT_EQ(b.mode->type, want.mode->type);
+    if (b.mode && want.mode) {
+      EXPECT_EQ(b.mode->type, want.mode->type);
+    }
     EXPECT_EQ(b.fos, want.fos);
     // The whole verdict as stored (report.h's writer): every other field.
     EXPECT_EQ(rockface::storage::block_to_json(b), rockface::storage::block_to_json(want));
