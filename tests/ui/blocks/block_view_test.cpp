@@ -22,6 +22,7 @@ constexpr const char* kReport =
 ReportBlock with_report(const ReportBlock& columns, const std::string& report_json) {
   ReportBlock b = rockface::storage::block_from_json(report_json);
   b.id = columns.id;
+  b.source = columns.source;
   b.finite = columns.finite;
   b.removable = columns.removable;
   b.marginal = columns.marginal;
@@ -37,6 +38,7 @@ ReportBlock block(bool finite, bool removable, const std::string& mode, std::opt
                   bool marginal = false) {
   ReportBlock b;
   b.id = "B";
+  b.source = "";  // a row's source column, left empty here
   b.finite = finite;
   b.removable = removable;
   if (mode != "none") {
