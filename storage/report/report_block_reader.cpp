@@ -28,7 +28,7 @@ const json* field(const json& obj, const char* key) {
 
 // A number the writer wrote: null is an unknown (the writer's NaN or
 // infinity), kept as NaN.
-std::optional<double> number(const json& obj, const char* key) {
+std::optional<double> stored_number(const json& obj, const char* key) {
   const json* v = field(obj, key);
   if (!v) return std::nullopt;
   if (v->is_null()) return std::numeric_limits<double>::quiet_NaN();
@@ -45,7 +45,7 @@ std::optional<double> number_or_none(const json& obj, const char* key) {
 }
 
 void read_number(const json& obj, const char* key, double& out) {
-  if (const auto v = number(obj, key)) out = *v;
+  if (const auto v = stored_number(obj, key)) out = *v;
 }
 
 void read_bool(const json& obj, const char* key, bool& out) {
@@ -56,7 +56,7 @@ void read_int(const json& obj, const char* key, int& out) {
   if (const json* v = field(obj, key); v && v->is_number_integer()) out = v->get<int>();
 }
 
-void read_text(const json& obj, const char* key, std::string& out) {
+void read_string(const json& obj, const char* key, std::string& out) {
   if (const json* v = field(obj, key); v && v->is_string()) out = v->get<std::string>();
 }
 
@@ -106,7 +106,7 @@ std::vector<Eigen::Vector3d> vectors(const json& obj, const char* key) {
 std::optional<analysis::ReportMode> mode_of(const json& m) {
   if (!m.is_object()) return std::nullopt;
   analysis::ReportMode mode;
-  read_text(m, "type", mode.type);
+  read_string(m, "type", mode.type);
   mode.planes = texts(m, "planes");
   mode.direction = vector3(m, "direction");
   read_bool(m, "marginal", mode.marginal);
@@ -186,7 +186,7 @@ analysis::ReportRigidMode rigid_mode_of(const json& m) {
   analysis::ReportRigidMode r;
   if (const auto t = vector3(m, "translation")) r.translation = *t;
   if (const auto w = vector3(m, "rotation")) r.rotation = *w;
-  read_text(m, "kind", r.kind);
+  read_string(m, "kind", r.kind);
   return r;
 }
 
@@ -194,18 +194,18 @@ std::optional<analysis::ReportMechanics> mechanics_of(const json& mj) {
   if (!mj.is_object()) return std::nullopt;
   analysis::ReportMechanics m;
   m.fos_limit_point = number_or_none(mj, "fos_limit_point");
-  read_text(mj, "outcome", m.outcome);
+  read_string(mj, "outcome", m.outcome);
   if (const json* f = field(mj, "failure_mode")) m.failure_mode = rigid_mode_of(*f);
   if (const json* d = field(mj, "dynamic_mode")) m.dynamic_mode = rigid_mode_of(*d);
-  read_text(mj, "stability", m.stability);
-  m.flutter_lambda = number(mj, "flutter_lambda");
+  read_string(mj, "stability", m.stability);
+  m.flutter_lambda = stored_number(mj, "flutter_lambda");
   if (const json* path = field(mj, "path"); path && path->is_array())
     for (const auto& p : *path)
       if (p.is_array() && p.size() == 2 && p[0].is_number() && p[1].is_number())
         m.path.push_back({p[0].get<double>(), p[1].get<double>()});
   read_int(mj, "contacts", m.contacts);
   read_int(mj, "steps", m.steps);
-  read_text(mj, "joint_law", m.joint_law);
+  read_string(mj, "joint_law", m.joint_law);
   if (const json* plot = field(mj, "plot"); plot && plot->is_string())
     m.plot = plot->get<std::string>();
   return m;
@@ -217,14 +217,14 @@ analysis::ReportBlock block_from_json(const std::string& text) {
   analysis::ReportBlock b;
   const json j = json::parse(text, nullptr, false);
   if (!j.is_object()) return b;
-  read_text(j, "id", b.id);
-  read_text(j, "source", b.source);
+  read_string(j, "id", b.id);
+  read_string(j, "source", b.source);
   b.traces = texts(j, "traces");
-  read_text(j, "code", b.code);
+  read_string(j, "code", b.code);
   read_bool(j, "convex", b.convex);
   b.vertices = vectors(j, "vertices");
-  b.volume = number(j, "volume");
-  b.mass = number(j, "mass");
+  b.volume = stored_number(j, "volume");
+  b.mass = stored_number(j, "mass");
   b.centroid = vector3(j, "centroid");
   b.inertia = inertia_of(j);
   b.principal_moments = vector3(j, "principal_moments");
