@@ -61,19 +61,19 @@ ui::MapVerdicts MapVerdictSession::update(const analysis::AnalysisInput& input,
   for (const auto& b : *blocks) {
     // The verdict as the Blocks screen decides it from the stored block
     // (field_records: marginal is finiteness or removability marginal).
-    storage::BlockResult r;
+    analysis::ReportBlock r;
     r.finite = b.finite;
     r.removable = b.finiteness.removable.value;
     r.marginal = b.finiteness.removable.marginal || b.finiteness.finite.marginal;
-    r.mode = "none";
     if (b.analysis && b.analysis->mode) {
-      r.mode = kinematics::mode_name(b.analysis->mode->type);
+      r.mode = analysis::ReportMode{};
+      r.mode->type = kinematics::mode_name(b.analysis->mode->type);
       r.fos = b.analysis->fos;
     }
     ui::MapBlock m;
     for (const auto& x : b.surface_polygon) m.outline.push_back(x + state_->datum);
     m.verdict = ui::verdict_of(r);
-    m.mode = r.mode;
+    m.mode = r.mode ? r.mode->type : "none";
     m.factor_of_safety = r.fos;
     m.margin_deg =
         rad_to_deg(b.finite ? b.finiteness.removable.margin : b.finiteness.finite.margin);

@@ -3,7 +3,6 @@
 #include <nlohmann/json.hpp>
 
 #include "firmware-app/records/project_mesh.h"
-#include "storage/report/report.h"
 
 namespace rockface::app {
 
@@ -53,20 +52,7 @@ storage::AnalysisRun analysis_record(const analysis::Report& report, storage::Re
   run.model_id = model_id;
   run.preset = preset_name(preset);
   run.effects = report.effects_simulated;
-  for (const auto& b : report.blocks) {
-    storage::BlockResult r;
-    r.label = b.id;
-    r.source = b.source;
-    r.code = b.code;
-    r.volume_m3 = b.volume.value_or(0);
-    r.finite = b.finite;
-    r.removable = b.removable;
-    r.marginal = b.marginal;
-    r.mode = b.mode ? b.mode->type : "none";
-    r.fos = b.fos;
-    r.report_json = storage::block_to_json(b);
-    run.blocks.push_back(std::move(r));
-  }
+  run.blocks = report.blocks;
   return run;
 }
 

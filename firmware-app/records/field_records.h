@@ -21,6 +21,8 @@ storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
                             storage::RecordId capture_id,
                             const storage::ReconstructionReportContext& accuracy);
 
+// The analysis as the project stores it: its blocks are the report's own
+// verdicts (the store keeps each as its key columns and report JSON).
 storage::AnalysisRun analysis_record(const analysis::Report& report, storage::RecordId visit_id,
                                      std::optional<storage::RecordId> model_id, Preset preset);
 

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <map>
 
-#include <nlohmann/json.hpp>
-
 #include "core/common/error.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
@@ -62,17 +60,14 @@ std::vector<rockmass::FaceBlock> visit_blocks(storage::ProjectStore& store,
   const auto latest = std::max_element(runs.begin(), runs.end(),
                                        [](const auto& a, const auto& b) { return a.id < b.id; });
   for (const auto& b : store.load_analysis(latest->id).blocks) {
-    if (!b.finite || !(b.volume_m3 > 0)) continue;
-    rockmass::FaceBlock fb{b.label, b.volume_m3, std::nullopt, std::nullopt};
-    const auto j = nlohmann::json::parse(b.report_json, nullptr, false);
-    if (j.is_object() && j.contains("principal_moments") && j["principal_moments"].is_array() &&
-        j["principal_moments"].size() == 3 && j.contains("mass") && j["mass"].is_number()) {
-      const auto& m = j["principal_moments"];
-      if (m[0].is_number() && m[1].is_number() && m[2].is_number()) {
-        fb.principal_moments =
-            Eigen::Vector3d(m[0].get<double>(), m[1].get<double>(), m[2].get<double>());
-        fb.mass_kg = j["mass"].get<double>();
-      }
+    const double volume = b.volume.value_or(0);
+    if (!b.finite || !(volume > 0)) continue;
+    rockmass::FaceBlock fb{b.id, volume, std::nullopt, std::nullopt};
+    // Both known (a null in the stored report reads as NaN): else the block
+    // counts by its volume alone.
+    if (b.principal_moments && b.principal_moments->allFinite() && b.mass && !std::isnan(*b.mass)) {
+      fb.principal_moments = *b.principal_moments;
+      fb.mass_kg = *b.mass;
     }
     out.push_back(fb);
   }

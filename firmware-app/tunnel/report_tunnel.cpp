@@ -1,5 +1,6 @@
 #include "firmware-app/tunnel/report_tunnel.h"
 
+#include "core/analysis/block_reading.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/tunnel/tunnel_relative.h"
@@ -60,12 +61,14 @@ void add_tunnel_to_report(storage::ProjectStore& store, storage::FieldReport& re
     plane_row(j.label, j.dip_deg, j.dipdir_deg, j.point);
   for (const auto& b : report.blocks) {
     if (b.vertices.empty()) continue;
+    // The alignment works in the project frame (datum-relative).
+    const auto vertices = analysis::relative_to(b.vertices, report.datum);
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (const auto& v : b.vertices) centroid += v;
-    centroid /= static_cast<double>(b.vertices.size());
+    for (const auto& v : vertices) centroid += v;
+    centroid /= static_cast<double>(vertices.size());
     const tunnel::AlignmentPlace place = alignment.place(centroid);
     t.blocks.push_back(
-        {b.label, alignment.to_survey(centroid), place.chainage, place.offset, place.height});
+        {b.id, alignment.to_survey(centroid), place.chainage, place.offset, place.height});
   }
   report.tunnel = std::move(t);
 }

@@ -13,7 +13,6 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
-#include "storage/report/report_dynamics_json.h"
 #include "storage/scene/export_scene_json.h"
 #include "storage/scene/face_outline_words.h"
 
@@ -26,53 +25,6 @@ using nlohmann::json;
 std::optional<double> number_at(const json& j, const char* key) {
   if (!j.is_object() || !j.contains(key) || !j[key].is_number()) return std::nullopt;
   return j[key].get<double>();
-}
-
-Eigen::Vector3d vec3(const json& j) {
-  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-}
-
-ReportedBlock block_from(const BlockResult& stored, const Eigen::Vector3d& datum) {
-  ReportedBlock b;
-  b.label = stored.label;
-  b.source = stored.source;
-  b.code = stored.code;
-  b.finite = stored.finite;
-  b.removable = stored.removable;
-  b.marginal = stored.marginal;
-  b.mode = stored.mode;
-  b.fos = stored.fos;
-  const json j = json::parse(stored.report_json, nullptr, false);
-  if (j.is_discarded()) return b;
-  b.volume_m3 = number_at(j, "volume");
-  b.mass_kg = number_at(j, "mass");
-  b.margin_deg = number_at(j, "margin_deg").value_or(0.0);
-  if (j.contains("mode") && j["mode"].contains("planes"))
-    for (const auto& p : j["mode"]["planes"]) b.mode_planes.push_back(p.get<std::string>());
-  if (j.contains("vertices"))
-    for (const auto& v : j["vertices"]) b.vertices.push_back(vec3(v) - datum);
-  if ((b.dynamics = dynamics_from_block_json(stored.report_json))) {
-    for (auto& s : b.dynamics->path) s.position -= datum;
-    if (b.dynamics->landing) {
-      b.dynamics->landing->point -= datum;
-      b.dynamics->landing->centroid -= datum;
-    }
-    if (b.dynamics->floor) b.dynamics->floor->first -= datum;
-  }
-  if (j.contains("rotation")) {
-    ReportedRotation r;
-    for (const auto& c : j["rotation"].value("corners", json::array())) {
-      ++r.corners;
-      r.rotatable_corners += c.value("rotatable", false);
-    }
-    for (const auto& e : j["rotation"].value("edges", json::array())) {
-      ++r.edges;
-      r.rotatable_edges += e.value("rotatable", false);
-    }
-    if (j.contains("remote_axis")) r.remote_axis_found = j["remote_axis"].value("found", false);
-    b.rotation = r;
-  }
-  return b;
 }
 
 // The reconstruction report stored with the first model (rockface-reconstruction/1).
@@ -273,7 +225,7 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
     r.analysis_id = run.id;
     r.effects = run.effects;
     if (r.preset.empty()) r.preset = run.preset;
-    for (const auto& b : run.blocks) r.blocks.push_back(block_from(b, r.datum));
+    r.blocks = run.blocks;
   }
   return r;
 }
@@ -290,25 +242,30 @@ std::string report_number(const std::optional<double>& value, int decimals) {
   return value ? report_number(*value, decimals) : "-";
 }
 
-std::string report_verdict(const ReportedBlock& b) {
+std::string report_verdict(const analysis::ReportBlock& b) {
   return std::string(!b.finite ? "infinite" : (b.removable ? "removable" : "finite, keyed")) +
          (b.marginal ? "?" : "");
 }
 
-std::string report_mode(const ReportedBlock& b) {
-  if (b.mode != "sliding" || b.mode_planes.empty()) return b.mode;
+std::string report_mode(const analysis::ReportBlock& b) {
+  const std::string mode = b.mode ? b.mode->type : "none";
+  if (mode != "sliding" || b.mode->planes.empty()) return mode;
+  const auto& planes = b.mode->planes;
   std::string s = "sliding on ";
-  for (std::size_t i = 0; i < b.mode_planes.size(); ++i) s += (i ? "+" : "") + b.mode_planes[i];
+  for (std::size_t i = 0; i < planes.size(); ++i) s += (i ? "+" : "") + planes[i];
   return s;
 }
 
-std::string report_rotation(const ReportedBlock& b) {
+std::string report_rotation(const analysis::ReportBlock& b) {
   if (!b.rotation) return "-";
   const auto& r = *b.rotation;
-  std::string s = std::to_string(r.rotatable_corners) + "/" + std::to_string(r.corners) +
-                  " corners, " + std::to_string(r.rotatable_edges) + "/" + std::to_string(r.edges) +
-                  " edges";
-  if (r.remote_axis_found) s += *r.remote_axis_found ? "; remote axis" : "; no remote axis";
+  int rotatable_corners = 0, rotatable_edges = 0;
+  for (const auto& c : r.corners) rotatable_corners += c.rotatable;
+  for (const auto& e : r.edges) rotatable_edges += e.rotatable;
+  std::string s = std::to_string(rotatable_corners) + "/" + std::to_string(r.corners.size()) +
+                  " corners, " + std::to_string(rotatable_edges) + "/" +
+                  std::to_string(r.edges.size()) + " edges";
+  if (b.remote_axis) s += b.remote_axis->found ? "; remote axis" : "; no remote axis";
   return s;
 }
 

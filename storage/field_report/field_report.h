@@ -34,25 +34,6 @@ struct ReportedJointSet {
   std::string origin;                 // "stored" | "clustered from the joints"
 };
 
-struct ReportedRotation {
-  int corners = 0, rotatable_corners = 0, edges = 0, rotatable_edges = 0;
-  std::optional<bool> remote_axis_found;
-};
-
-struct ReportedBlock {
-  std::string label, source, code;
-  std::optional<double> volume_m3, mass_kg;
-  bool finite = false, removable = false, marginal = false;
-  double margin_deg = 0;
-  std::string mode = "none";
-  std::vector<std::string> mode_planes;
-  std::optional<double> fos;
-  std::optional<ReportedRotation> rotation;
-  std::vector<Eigen::Vector3d> vertices;  // datum-relative
-  // The motion after failure (analysis.dynamics), points datum-relative.
-  std::optional<analysis::ReportDynamics> dynamics;
-};
-
 // One 3D image of the visit and how it was registered to the face.
 struct ReportedImage {
   std::string name, role;  // "master" | "registered"
@@ -166,7 +147,9 @@ struct FieldReport {
 
   std::optional<RecordId> analysis_id;
   std::vector<std::string> effects;
-  std::vector<ReportedBlock> blocks;
+  // The verdicts as stored (points absolute, as in the report; subtract
+  // `datum` for the project frame).
+  std::vector<analysis::ReportBlock> blocks;
 
   std::optional<ReportedTunnel> tunnel;
   std::optional<ReportedWedges> wedges;
@@ -188,10 +171,10 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id);
 std::string report_number(double value, int decimals);
 std::string report_number(const std::optional<double>& value, int decimals);
 // A block's verdict in words: "removable", "finite, keyed", "infinite"; "?" appended when marginal.
-std::string report_verdict(const ReportedBlock& block);
+std::string report_verdict(const analysis::ReportBlock& block);
 // "sliding on J1+J2", "falling", "none".
-std::string report_mode(const ReportedBlock& block);
+std::string report_mode(const analysis::ReportBlock& block);
 // "2/8 corners, 1/12 edges" (+ "; remote axis" / "; no remote axis"), "-" when not analysed.
-std::string report_rotation(const ReportedBlock& block);
+std::string report_rotation(const analysis::ReportBlock& block);
 
 }  // namespace rockface::storage

@@ -7,11 +7,11 @@
 #include <cairo.h>
 #include <opencv2/imgproc.hpp>
 
+#include "core/analysis/block_reading.h"
 #include "core/common/error.h"
 #include "core/rockmass/figures_in_words.h"
 #include "storage/field_report/dynamics_picture.h"
 #include "storage/field_report/field_report_pictures.h"
-#include "storage/report/report_dynamics_json.h"
 
 namespace rockface::storage {
 
@@ -338,8 +338,8 @@ void block_section(PdfPages& pdf, const FieldReport& r) {
   pdf.line("effects simulated: " + (effects.empty() ? std::string("-") : effects));
   std::vector<std::vector<std::string>> rows;
   for (const auto& b : r.blocks)
-    rows.push_back({b.label, b.source, code_text(b.code), report_number(b.volume_m3, 3),
-                    report_number(b.mass_kg, 0), report_verdict(b), report_number(b.margin_deg, 2),
+    rows.push_back({b.id, b.source, code_text(b.code), report_number(b.volume, 3),
+                    report_number(b.mass, 0), report_verdict(b), report_number(b.margin_deg, 2),
                     report_mode(b), report_number(b.fos, 2), report_rotation(b)});
   pdf.table({{"block", 30},
              {"source", 32},
@@ -367,11 +367,12 @@ void dynamics_section(PdfPages& pdf, const FieldReport& r) {
   pdf.heading("Motion after failure", 0.45 * kPageH);
   for (const auto& b : r.blocks) {
     if (!b.dynamics) continue;
-    const analysis::ReportDynamics& d = *b.dynamics;
+    // The picture in the project frame, as the face picture (datum subtracted).
+    const analysis::ReportDynamics d = analysis::relative_to(*b.dynamics, r.datum);
     std::string friction;
     for (const auto& [plane, deg] : d.friction_deg)
       friction += (friction.empty() ? "" : ", ") + plane + " " + report_number(deg, 1) + " deg";
-    pdf.line("block " + b.label + ": " + d.trigger + "; friction while sliding " + friction +
+    pdf.line("block " + b.id + ": " + d.trigger + "; friction while sliding " + friction +
              ", cohesion lost; " + d.outcome);
     std::string events;
     for (const auto& e : d.events) events += (events.empty() ? "" : "; ") + analysis::event_text(e);
@@ -385,7 +386,8 @@ void dynamics_section(PdfPages& pdf, const FieldReport& r) {
               " kJ, " + report_number(d.landing->distance_from_start, 1) +
               " m from where it started",
           kSmall);
-    pdf.image(dynamics_picture(b.label, b.vertices, d), PdfPages::text_width(), 0.4 * kPageH);
+    pdf.image(dynamics_picture(b.id, analysis::relative_to(b.vertices, r.datum), d),
+              PdfPages::text_width(), 0.4 * kPageH);
   }
 }
 

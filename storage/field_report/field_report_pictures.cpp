@@ -17,7 +17,7 @@ std::optional<Eigen::Vector2d> photograph_pixel(const FieldReport& r, const Eige
   return photogrammetry::project({model}, r.intrinsics)[0];
 }
 
-cv::Scalar block_colour(const ReportedBlock& b) {
+cv::Scalar block_colour(const analysis::ReportBlock& b) {
   if (!b.finite) return {150, 150, 150};
   if (b.marginal) return {0, 140, 255};
   return b.removable ? cv::Scalar(40, 40, 230) : cv::Scalar(60, 180, 60);
@@ -41,7 +41,7 @@ cv::Mat face_picture(const FieldReport& r) {
     if (!b.finite || b.vertices.empty()) continue;  // an infinite block has no outline
     std::vector<cv::Point> projected;
     for (const auto& v : b.vertices)
-      if (const auto px = photograph_pixel(r, v)) projected.push_back(to_cv(*px));
+      if (const auto px = photograph_pixel(r, v - r.datum)) projected.push_back(to_cv(*px));
     if (projected.size() < 3) continue;
     std::vector<cv::Point> hull;
     cv::convexHull(projected, hull);
@@ -52,7 +52,7 @@ cv::Mat face_picture(const FieldReport& r) {
     cv::polylines(out, hull, true, colour, thick, cv::LINE_AA);
     const cv::Moments m = cv::moments(hull);
     if (m.m00 > 0)
-      cv::putText(out, b.label,
+      cv::putText(out, b.id,
                   cv::Point(static_cast<int>(m.m10 / m.m00), static_cast<int>(m.m01 / m.m00)),
                   cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(255, 255, 255), thick, cv::LINE_AA);
   }

@@ -19,7 +19,7 @@ std::optional<Eigen::Vector2d> photograph_pixel(const FieldReport& report,
 
 // Block outline colours (BGR): removable red, marginal orange, keyed green,
 // infinite grey.
-cv::Scalar block_colour(const ReportedBlock& block);
+cv::Scalar block_colour(const analysis::ReportBlock& block);
 inline const cv::Scalar kTraceColour{0, 230, 255};  // yellow
 
 // BGR; empty when the visit has no photograph.

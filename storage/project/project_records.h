@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include "core/analysis/report.h"
 #include "core/photogrammetry/camera/camera_model.h"
 #include "core/photogrammetry/estimators/registration.h"
 
@@ -223,22 +224,10 @@ struct Joint {
   std::optional<double> persistence_m;  // its trace length, when measured
 };
 
-// One analysed block: the key columns for lists and queries plus the block's
-// report JSON (SCENE.md "blocks" entry) verbatim.
-struct BlockResult {
-  RecordId id = 0;
-  std::string label;   // "B1"
-  std::string source;  // "scene" | "traces"
-  std::string code;    // half-space code, one digit per plane
-  double volume_m3 = 0;
-  bool finite = false, removable = false, marginal = false;
-  std::string mode;  // "falling" | "lifting" | "sliding" | "none"
-  std::optional<double> fos;
-  std::string report_json;
-};
-
 // One run of the block analysis: what it was asked to simulate and what it
-// found.
+// found. Each block is the one verdict type (core/analysis/report.h), points
+// absolute as in the report; the store keeps it as a row of key columns and
+// the block's report JSON (project_block_row.h).
 struct AnalysisRun {
   RecordId id = 0;
   RecordId visit_id = 0;
@@ -247,7 +236,7 @@ struct AnalysisRun {
   std::vector<std::string> effects;  // report "effects_simulated", e.g. gravity, water
   std::string effects_json;          // the scene's "effects" object verbatim, may be empty
   std::string created_at;
-  std::vector<BlockResult> blocks;
+  std::vector<analysis::ReportBlock> blocks;
 };
 
 struct ActionLogEntry {

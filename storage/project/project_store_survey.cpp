@@ -9,6 +9,7 @@
 
 #include "core/common/error.h"
 #include "storage/project/project_blobs.h"
+#include "storage/project/project_block_row.h"
 #include "storage/project/project_store_rows.h"
 
 namespace rockface::storage {
@@ -336,8 +337,10 @@ std::vector<Joint> ProjectStore::list_joints(std::optional<RecordId> visit_id) {
 RecordId ProjectStore::save_analysis(const AnalysisRun& run) {
   const std::string doing = "saving a block analysis";
   require_writable(doing);
-  for (std::size_t i = 0; i < run.blocks.size(); ++i) {
-    const auto& b = run.blocks[i];
+  std::vector<BlockRow> rows;
+  for (const auto& b : run.blocks) rows.push_back(block_row(b));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& b = rows[i];
     const std::string where = "blocks[" + std::to_string(i) + "] (" + b.label + ")";
     require_finite(b.volume_m3, where + ".volume");
     if (b.fos && std::isnan(*b.fos)) throw InputError(where + ".fos", "is not a number");
@@ -361,7 +364,7 @@ RecordId ProjectStore::save_analysis(const AnalysisRun& run) {
                   "?, ?, ?)",
                   doing);
   int removable = 0;
-  for (const auto& b : run.blocks) {
+  for (const auto& b : rows) {
     block.reset();
     block.bind(1, id)
         .bind(2, b.label)
@@ -416,14 +419,13 @@ AnalysisRun ProjectStore::load_analysis(RecordId id) {
     throw InputError(file_.string(), "no analysis " + std::to_string(id) + " in this project");
   AnalysisRun a = read_analysis_row(st, file_.string());
   Statement blocks(db_,
-                   "SELECT id, label, source, code, volume_m3, finite, removable, marginal, mode, "
+                   "SELECT label, source, code, volume_m3, finite, removable, marginal, mode, "
                    "fos, report_json FROM block WHERE analysis_id = ? ORDER BY id",
                    doing);
   blocks.bind(1, id);
   while (blocks.step()) {
     RowReader row(blocks);
-    BlockResult b;
-    b.id = row.next_int64();
+    BlockRow b;
     b.label = row.next_text();
     b.source = row.next_text();
     b.code = row.next_text();
@@ -434,7 +436,7 @@ AnalysisRun ProjectStore::load_analysis(RecordId id) {
     b.mode = row.next_text();
     b.fos = row.next_optional_double();
     b.report_json = row.next_text();
-    a.blocks.push_back(std::move(b));
+    a.blocks.push_back(block_of_row(b));
   }
   return a;
 }

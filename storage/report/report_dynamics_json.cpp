@@ -125,11 +125,8 @@ ordered dynamics_to_json(const analysis::ReportDynamics& d) {
   return j;
 }
 
-std::optional<analysis::ReportDynamics> dynamics_from_block_json(const std::string& block_json) {
-  const json b = json::parse(block_json, nullptr, false);
-  if (b.is_discarded() || !b.is_object() || !b.contains("dynamics") || !b["dynamics"].is_object())
-    return std::nullopt;
-  const json& j = b["dynamics"];
+std::optional<analysis::ReportDynamics> dynamics_from_json(const json& j) {
+  if (!j.is_object()) return std::nullopt;
   analysis::ReportDynamics d;
   try {
     d.trigger = j.value("trigger", "");
@@ -188,7 +185,18 @@ std::optional<analysis::ReportDynamics> dynamics_from_block_json(const std::stri
     d.duration_s = number_at(n, "duration_s", 0.0);
     d.sample_s = number_at(n, "sample_s", 0.0);
     d.end_time_s = number_at(n, "end_time_s", 0.0);
+    d.abs_tol = number_at(n, "abs_tol", 0.0);
+    d.rel_tol = number_at(n, "rel_tol", 0.0);
+    d.max_step_s = number_at(n, "max_step_s", 0.0);
+    d.steps = n.value("steps", 0);
+    d.rejected_steps = n.value("rejected_steps", 0);
+    d.evaluations = n.value("evaluations", 0);
+    d.drift_before_m = number_at(n, "drift_before_m", 0.0);
+    d.drift_after_m = number_at(n, "drift_after_m", 0.0);
+    d.drift_bound_m = number_at(n, "drift_bound_m", 0.0);
     if (j.contains("picture")) d.picture = j["picture"].get<std::string>();
+    for (const json& note : j.value("notes", json::array()))
+      d.notes.push_back(note.get<std::string>());
   } catch (const json::exception&) {
     return std::nullopt;  // not a report this program wrote
   }

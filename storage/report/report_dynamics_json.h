@@ -1,7 +1,7 @@
 #pragma once
 // The block report's `dynamics` (the motion after failure) as JSON, both
-// ways: written into the report by report_json.cpp, read back from a
-// stored block (the field report, the UI's playback).
+// ways: written into the report by report_json.cpp, read back with the rest
+// of a stored block by report_block_reader.cpp.
 #include <optional>
 #include <string>
 
@@ -12,8 +12,8 @@
 namespace rockface::storage {
 
 nlohmann::ordered_json dynamics_to_json(const analysis::ReportDynamics& d);
-// The `dynamics` of a block's report JSON object; none when it has none or
-// the text is not a report block.
-std::optional<analysis::ReportDynamics> dynamics_from_block_json(const std::string& block_json);
+// A block report's `dynamics` object read back (null numbers are unknowns,
+// NaN); none when it is not one this program wrote.
+std::optional<analysis::ReportDynamics> dynamics_from_json(const nlohmann::json& dynamics);
 
 }  // namespace rockface::storage

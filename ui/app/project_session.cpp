@@ -63,7 +63,7 @@ void ProjectSession::refresh() {
     const auto analyses = store_.list_analyses(*visit_);
     if (!analyses.empty()) {
       analysis_ = store_.load_analysis(analyses.back().id);
-      for (const auto& b : analysis_->blocks) blocks_.push_back(make_block_view(b, info_.datum));
+      for (const auto& b : analysis_->blocks) blocks_.push_back(make_block_view(b));
     }
   }
   // Models belong to captures; the visit's own (its chosen pair's) wins,

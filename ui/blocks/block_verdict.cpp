@@ -1,5 +1,7 @@
 #include "ui/blocks/block_verdict.h"
 
+#include <string>
+
 namespace rockface::ui {
 
 const char* verdict_name(BlockVerdict verdict) {
@@ -18,13 +20,13 @@ const char* verdict_name(BlockVerdict verdict) {
   return "?";
 }
 
-BlockVerdict verdict_of(const storage::BlockResult& b) {
+BlockVerdict verdict_of(const analysis::ReportBlock& b) {
   if (b.marginal) return BlockVerdict::marginal;
   if (!b.finite) return BlockVerdict::infinite;
   if (!b.removable) return BlockVerdict::keyed;
-  if (b.mode == "none") return BlockVerdict::holds;
-  if (b.mode == "falling" || b.mode == "lifting" || !b.fos || *b.fos < 1)
-    return BlockVerdict::moves;
+  const std::string mode = b.mode ? b.mode->type : "none";
+  if (mode == "none") return BlockVerdict::holds;
+  if (mode == "falling" || mode == "lifting" || !b.fos || *b.fos < 1) return BlockVerdict::moves;
   return BlockVerdict::holds;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The one word that sums up an analysed block (it picks the block's colour on
-// the Blocks screen and the model), decided from the block's stored columns.
-#include "storage/project/project_records.h"
+// the Blocks screen and the model), decided from the block's verdict: its
+// finiteness, removability, mode and factor of safety.
+#include "core/analysis/report.h"
 
 namespace rockface::ui {
 
@@ -16,6 +17,6 @@ enum class BlockVerdict {
 
 const char* verdict_name(BlockVerdict verdict);
 
-BlockVerdict verdict_of(const storage::BlockResult& block);
+BlockVerdict verdict_of(const analysis::ReportBlock& block);
 
 }  // namespace rockface::ui

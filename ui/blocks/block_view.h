@@ -1,37 +1,23 @@
 #pragma once
 // One analysed block as the Blocks screen and the model view show it: the
-// stored key columns, what the table needs from the block's report JSON
-// (margin, rotatability, vertices) and one verdict that picks its colour.
-#include <optional>
+// verdict as stored (the one verdict type, read back by storage) and what
+// only the tablet adds: the one word that picks its colour and the report
+// in words. Points stay absolute, as in the report: subtract the project's
+// datum to draw them (core/analysis/block_reading.h).
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "core/analysis/report.h"
-#include "storage/project/project_records.h"
 #include "ui/blocks/block_verdict.h"
 
 namespace rockface::ui {
 
 struct BlockView {
-  std::string label, source, code, mode;
-  bool finite = false, removable = false, marginal = false;
-  std::optional<double> fos;
-  std::optional<double> margin_deg;
-  std::optional<bool> rotatable;          // a corner or edge can rotate; absent: not analysed
-  std::vector<Eigen::Vector3d> vertices;  // project frame (datum-relative)
-  // The vertices are the block's loop on the free surface (a block with no
-  // finite corners, or not one polyhedron), not its corners.
-  bool vertices_are_surface_loop = false;
-  std::string report_text;           // the block's report JSON, indented
-  std::vector<std::string> summary;  // ui/blocks/block_summary.h: the report in words
+  analysis::ReportBlock block;
   BlockVerdict verdict = BlockVerdict::infinite;
-  // The motion after failure (analysis.dynamics), points datum-relative.
-  std::optional<analysis::ReportDynamics> dynamics;
+  std::vector<std::string> summary;  // ui/blocks/block_summary.h: the report in words
 };
 
-// datum: the project's, subtracted from the report's absolute coordinates.
-BlockView make_block_view(const storage::BlockResult& block, const Eigen::Vector3d& datum);
+BlockView make_block_view(const analysis::ReportBlock& block);
 
 }  // namespace rockface::ui

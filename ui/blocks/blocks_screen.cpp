@@ -7,6 +7,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "core/analysis/block_reading.h"
 #include "ui/app/screens.h"
 #include "ui/blocks/motion_playback.h"
 #include "ui/blocks/wedges_view.h"
@@ -85,7 +86,7 @@ void draw_blocks_on_model(AppState& app, std::optional<ImVec2> tap) {
   const TextArea area = app.model_view.text_area();
   for (std::size_t i = 0; i < blocks.size(); ++i)
     if (!polys[i].empty()) {
-      const std::string& label = blocks[i].label;
+      const std::string& label = blocks[i].block.id;
       if (const auto at = label_beside(markers[i], half, ImGui::CalcTextSize(label.c_str()), area))
         draw_text(draw, *at, IM_COL32(255, 255, 255, 255), label, area, TextHalo::dark);
     }
@@ -96,16 +97,17 @@ void draw_blocks_on_model(AppState& app, std::optional<ImVec2> tap) {
       draw->AddCircleFilled(c, half, (colour & 0x00FFFFFFu) | (90u << 24), 40);
       draw->AddCircle(c, half - 1.5f * s, colour, 40, 3 * s);
       draw->AddCircleFilled(c, 9 * s, colour, 20);
-      app.targets.record("block " + blocks[i].label, ImVec2(c.x - half, c.y - half),
+      app.targets.record("block " + blocks[i].block.id, ImVec2(c.x - half, c.y - half),
                          ImVec2(c.x + half, c.y + half));
     }
   if (tap) app.blocks.selected_block = on_marker ? on_marker : tapped;
 }
 
 // The mode in words for the table: a block that cannot move has none.
-std::string mode_cell(const BlockView& b) {
-  if (!b.finite || !b.removable || b.mode.empty() || b.mode == "none") return format::unknown();
-  return b.mode;
+std::string mode_cell(const analysis::ReportBlock& b) {
+  if (!b.finite || !b.removable || !b.mode || b.mode->type.empty() || b.mode->type == "none")
+    return format::unknown();
+  return b.mode->type;
 }
 
 void draw_table(AppState& app) {
@@ -123,24 +125,27 @@ void draw_table(AppState& app) {
   // Rows are touch targets: a full thumb high.
   const float row_height = app.targets.target_px();
   for (std::size_t i = 0; i < blocks.size(); ++i) {
-    const BlockView& b = blocks[i];
+    const analysis::ReportBlock& b = blocks[i].block;
+    const BlockVerdict verdict = blocks[i].verdict;
     ImGui::TableNextRow(0, row_height);
     if (b.marginal) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(255, 200, 120, 255));
     ImGui::TableNextColumn();
     const bool selected = app.blocks.selected_block && *app.blocks.selected_block == i;
-    if (selectable_row(app.targets, "row " + b.label, selected)) app.blocks.selected_block = i;
-    label(b.label);
+    if (selectable_row(app.targets, "row " + b.id, selected)) app.blocks.selected_block = i;
+    label(b.id);
     ImGui::TableNextColumn();
-    label(b.marginal ? "marginal" : verdict_name(b.verdict),
-          b.marginal ? IM_COL32(0, 0, 0, 255) : verdict_text_colour(b.verdict));
+    label(b.marginal ? "marginal" : verdict_name(verdict),
+          b.marginal ? IM_COL32(0, 0, 0, 255) : verdict_text_colour(verdict));
     ImGui::TableNextColumn();
     label(mode_cell(b));
     ImGui::TableNextColumn();
     label(b.fos ? format::text(format::FactorOfSafety{*b.fos}) : format::unknown());
     ImGui::TableNextColumn();
-    label(b.margin_deg ? format::text(format::Angle{*b.margin_deg}) : format::unknown());
+    label(!std::isnan(b.margin_deg) ? format::text(format::Angle{b.margin_deg})
+                                    : format::unknown());
     ImGui::TableNextColumn();
-    label(!b.rotatable ? format::unknown() : *b.rotatable ? "yes" : "no");
+    const std::optional<bool> rotates = analysis::can_rotate(b);
+    label(!rotates ? format::unknown() : *rotates ? "yes" : "no");
   }
   ImGui::EndTable();
 }

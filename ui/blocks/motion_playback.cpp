@@ -7,7 +7,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
-#include "storage/report/report_dynamics_json.h"
+#include "core/analysis/block_reading.h"
 #include "ui/app/app_state.h"
 #include "ui/blocks/block_view.h"
 #include "ui/widgets/widgets_controls.h"
@@ -21,7 +21,7 @@ const BlockView* selected_with_motion(const AppState& app) {
   const auto& blocks = app.session->blocks();
   if (*app.blocks.selected_block >= blocks.size()) return nullptr;
   const BlockView& b = blocks[*app.blocks.selected_block];
-  return b.dynamics && !b.dynamics->path.empty() ? &b : nullptr;
+  return b.block.dynamics && !b.block.dynamics->path.empty() ? &b : nullptr;
 }
 
 Eigen::Quaterniond quaternion(const analysis::ReportMotionSample& s) {
@@ -53,7 +53,9 @@ void draw_motion_on_model(AppState& app) {
   const BlockView* b = selected_with_motion(app);
   if (!b || !app.blocks.motion.block || *app.blocks.motion.block != *app.blocks.selected_block)
     return;
-  const analysis::ReportDynamics& d = *b->dynamics;
+  // Drawn in the project frame, as the model (the report's points are absolute).
+  const Eigen::Vector3d& datum = app.session->info().datum;
+  const analysis::ReportDynamics d = analysis::relative_to(*b->block.dynamics, datum);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float s = app.targets.scale();
   // The centroid's path so far, then the block's outline now.
@@ -66,7 +68,8 @@ void draw_motion_on_model(AppState& app) {
     draw->AddPolyline(trail.data(), static_cast<int>(trail.size()), IM_COL32(255, 230, 0, 255), 0,
                       3.0f * s);
   std::vector<cv::Point2f> projected;
-  for (const auto& v : posed_at(b->vertices, d, app.blocks.motion.time))
+  for (const auto& v :
+       posed_at(analysis::relative_to(b->block.vertices, datum), d, app.blocks.motion.time))
     if (const auto p = app.model_view.to_screen(v)) projected.emplace_back(p->x, p->y);
   if (projected.size() < 3) return;
   std::vector<cv::Point2f> hull;
@@ -79,8 +82,9 @@ void draw_motion_on_model(AppState& app) {
 }
 
 void draw_motion_controls(AppState& app, const BlockView& block) {
-  if (!block.dynamics || block.dynamics->path.empty() || !app.blocks.selected_block) return;
-  const analysis::ReportDynamics& d = *block.dynamics;
+  if (!block.block.dynamics || block.block.dynamics->path.empty() || !app.blocks.selected_block)
+    return;
+  const analysis::ReportDynamics& d = *block.block.dynamics;
   MotionPlayback& m = app.blocks.motion;
   if (m.block != app.blocks.selected_block) {
     m = MotionPlayback{};

@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <opencv2/imgproc.hpp>
 
+#include "core/analysis/block_reading.h"
 #include "ui/app/app_state.h"
 
 namespace rockface::ui {
@@ -154,8 +155,10 @@ namespace {
 const BlockOnFace* laid(AppState& app, const BlockView& block) {
   const SurfaceDrape* drape = app.model_view.drape();
   if (!drape || !app.session) return nullptr;
-  const auto footprint = block_footprint(block.vertices, block.vertices_are_surface_loop,
-                                         surface_patches(app.session->measurements()), *drape);
+  const auto footprint =
+      block_footprint(analysis::relative_to(block.block.vertices, app.session->info().datum),
+                      analysis::vertices_are_surface_loop(block.block),
+                      surface_patches(app.session->measurements()), *drape);
   if (footprint.empty()) return nullptr;
   return &app.model_view.block_cache().get(footprint, *drape);
 }
@@ -170,8 +173,8 @@ void add_blocks_to_overlay(AppState& app) {
     const BlockOnFace* b = laid(app, blocks[i]);
     if (!b) continue;
     const bool selected = app.blocks.selected_block && *app.blocks.selected_block == i;
-    add_block_to_overlay(app.model_view.overlay(), blocks[i].label, *b,
-                         verdict_colour(blocks[i].verdict), blocks[i].finite,
+    add_block_to_overlay(app.model_view.overlay(), blocks[i].block.id, *b,
+                         verdict_colour(blocks[i].verdict), blocks[i].block.finite,
                          (selected ? 6.0f : 3.0f) * s);
   }
 }

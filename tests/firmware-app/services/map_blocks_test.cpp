@@ -46,20 +46,21 @@ void expect_same_as_full_analysis(const fs::path& file, storage::RecordId visit,
   const storage::RecordId id = full.analyse(file, visit, progress);
   storage::ProjectStore store = storage::ProjectStore::open(file);
   const storage::AnalysisRun run = store.load_analysis(id);
-  std::vector<storage::BlockResult> blocks;
+  std::vector<analysis::ReportBlock> blocks;
   for (const auto& b : run.blocks)
     if (b.source == "traces") blocks.push_back(b);
   ASSERT_EQ(map.blocks.size(), blocks.size());
   for (size_t k = 0; k < blocks.size(); ++k) {
-    SCOPED_TRACE("block " + blocks[k].label);
+    SCOPED_TRACE("block " + blocks[k].id);
     EXPECT_EQ(map.blocks[k].verdict, ui::verdict_of(blocks[k]));
     if (!blocks[k].finite) continue;
-    EXPECT_EQ(map.blocks[k].mode, blocks[k].mode);
+    EXPECT_EQ(map.blocks[k].mode, blocks[k].mode ? blocks[k].mode->type : "none");
     ASSERT_EQ(map.blocks[k].factor_of_safety.has_value(), blocks[k].fos.has_value());
     if (blocks[k].fos && std::isfinite(*blocks[k].fos)) {
       EXPECT_DOUBLE_EQ(*map.blocks[k].factor_of_safety, *blocks[k].fos);
     }
-    EXPECT_NEAR(map.blocks[k].volume_m3, blocks[k].volume_m3, 1e-9 * blocks[k].volume_m3);
+    const double volume = blocks[k].volume.value_or(0);
+    EXPECT_NEAR(map.blocks[k].volume_m3, volume, 1e-9 * volume);
   }
 }
 

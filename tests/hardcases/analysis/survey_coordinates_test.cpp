@@ -108,7 +108,7 @@ TEST(SurveyCoordinatesReport, AnUnknownInTheMotionIsNullNotZero) {
   // Read back from a stored block, the unknown stays unknown.
   nlohmann::ordered_json block;
   block["dynamics"] = j;
-  const auto back = storage::dynamics_from_block_json(block.dump());
+  const auto back = storage::block_from_json(block.dump()).dynamics;
   ASSERT_TRUE(back.has_value());
   ASSERT_TRUE(back->landing.has_value());
   EXPECT_TRUE(std::isnan(back->landing->speed));

@@ -13,6 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "storage/project/project_store.h"
+#include "storage/report/report.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
 
@@ -51,15 +52,13 @@ TEST(ReportDynamics, FieldReportShowsTheMotionAfterFailure) {
     run.visit_id = store.begin_visit("test");
     run.preset = "standard";
     run.effects = report.at("effects_simulated").get<std::vector<std::string>>();
-    rockface::storage::BlockResult b;
-    b.label = "B1";
+    // The analysed block as the store reads a report's block back.
+    rockface::analysis::ReportBlock b = rockface::storage::block_from_json(block.dump());
+    b.id = "B1";
     b.source = "scene";
-    b.code = block.at("code");
-    b.volume_m3 = block.at("volume");
     b.finite = b.removable = true;
-    b.mode = "sliding";
-    b.fos = block.at("fos").get<double>();
-    b.report_json = block.dump();
+    if (!b.mode) b.mode = rockface::analysis::ReportMode{};
+    b.mode->type = "sliding";
     run.blocks.push_back(b);
     store.save_analysis(run);
   }

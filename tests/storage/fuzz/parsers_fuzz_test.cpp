@@ -309,11 +309,11 @@ std::string sample_project_file(const fs::path& dir) {
     a.visit_id = visit;
     a.preset = "fast";
     a.effects = {"gravity"};
-    st::BlockResult b;
-    b.label = "B1";
+    rockface::analysis::ReportBlock b;
+    b.id = "B1";
     b.source = "scene";
     b.code = "012";
-    b.volume_m3 = 1.5;
+    b.volume = 1.5;
     a.blocks.push_back(b);
     store.save_analysis(a);
     store.checkpoint();

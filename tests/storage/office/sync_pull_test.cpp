@@ -18,6 +18,7 @@
 #include "storage/office/sync_push.h"
 #include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
+#include "storage/report/report.h"
 #include "tests/storage/office/office_environment.h"
 #include "tests/storage/office/tablet_projects.h"
 #include "tests/support/sample_records.h"
@@ -128,8 +129,10 @@ TEST(OfficeSync, PulledProjectGivesTheSameAnalysisBitForBit) {
   ASSERT_FALSE(ra.blocks.empty()) << "the mapped face has blocks to compare";
   ASSERT_EQ(ra.blocks.size(), rp.blocks.size());
   for (std::size_t i = 0; i < ra.blocks.size(); ++i) {
-    EXPECT_EQ(ra.blocks[i].report_json, rp.blocks[i].report_json) << ra.blocks[i].label;
-    EXPECT_EQ(ra.blocks[i].volume_m3, rp.blocks[i].volume_m3);  // bit for bit
+    // The whole verdict, as the store writes it, and the volume bit for bit.
+    EXPECT_EQ(storage::block_to_json(ra.blocks[i]), storage::block_to_json(rp.blocks[i]))
+        << ra.blocks[i].id;
+    EXPECT_EQ(ra.blocks[i].volume, rp.blocks[i].volume);  // bit for bit
   }
 
   // The new analysis goes up as new records, the rest unchanged.

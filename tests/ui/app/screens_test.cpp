@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "storage/project/project_store.h"
+#include "storage/report/report.h"
 #include "tests/ui/demo_project.h"
 #include "ui/app/ui_script.h"
 #include "ui/mapping/trace_marker.h"
@@ -173,9 +174,9 @@ TEST(UiScreens, BlocksOnTheModelAreTheStoredAnalysisColouredByVerdict) {
   int markers = 0;
   std::set<std::string> verdicts;
   for (const auto& stored : run.blocks) {
-    const BlockView v = make_block_view(stored, store.project().datum);
-    const auto target = s->state().targets.find("block " + v.label);
-    ASSERT_TRUE(target) << v.label << " not drawn";
+    const BlockView v = make_block_view(stored);
+    const auto target = s->state().targets.find("block " + v.block.id);
+    ASSERT_TRUE(target) << v.block.id << " not drawn";
     if (solid_disc(shot, target->centre(), radius, bgr(verdict_colour(v.verdict)))) ++markers;
     verdicts.insert(verdict_name(v.verdict));
   }
@@ -184,7 +185,7 @@ TEST(UiScreens, BlocksOnTheModelAreTheStoredAnalysisColouredByVerdict) {
   EXPECT_TRUE(verdicts.count("moves"));
   // And the table has one row per block.
   for (const auto& stored : run.blocks)
-    EXPECT_TRUE(s->state().targets.find("row " + stored.label)) << stored.label;
+    EXPECT_TRUE(s->state().targets.find("row " + stored.id)) << stored.id;
 }
 
 TEST(UiScreens, TappingABlockShowsItsReport) {
@@ -195,7 +196,7 @@ TEST(UiScreens, TappingABlockShowsItsReport) {
   for (std::size_t i = 0; i < blocks.size(); ++i)
     if (blocks[i].verdict == BlockVerdict::moves) moving = i;
   ASSERT_LT(moving, blocks.size());
-  s->tap("row " + blocks[moving].label);
+  s->tap("row " + blocks[moving].block.id);
   ASSERT_TRUE(s->state().blocks.selected_block);
   EXPECT_EQ(*s->state().blocks.selected_block, moving);
   // A tap on the model outside every block clears the selection; one on a
@@ -204,7 +205,7 @@ TEST(UiScreens, TappingABlockShowsItsReport) {
                       s->state().model_view.panel_min().y + 3);
   s->tap(corner.x, corner.y);
   EXPECT_FALSE(s->state().blocks.selected_block);
-  s->tap("block " + blocks[moving].label);
+  s->tap("block " + blocks[moving].block.id);
   EXPECT_TRUE(s->state().blocks.selected_block);
 }
 
@@ -359,7 +360,8 @@ TEST(UiScreens, BlockMotionAfterFailurePlaysOnTheModel) {
     auto store = rockface::storage::ProjectStore::open(project);
     auto run = store.load_analysis(store.list_analyses(store.latest_visit()).back().id);
     for (auto& b : run.blocks) {
-      auto j = nlohmann::json::parse(b.report_json);
+      // The block as stored, in its report's JSON, given a motion.
+      auto j = nlohmann::json::parse(rockface::storage::block_to_json(b));
       if (!j.contains("centroid") || !j.contains("vertices")) continue;
       // One second of motion: the block drops 0.5 m and turns 30 degrees
       // about the horizontal, sampled every 0.25 s.
@@ -378,8 +380,8 @@ TEST(UiScreens, BlockMotionAfterFailurePlaysOnTheModel) {
           {"outcome", "moving at the end"},
           {"events", {{{"time_s", 0.0}, {"kind", "slides"}, {"event", "slides on J1"}}}},
           {"path", path}};
-      b.report_json = j.dump();
-      label = b.label;
+      b.dynamics = rockface::storage::block_from_json(j.dump()).dynamics;
+      label = b.id;
       break;
     }
     ASSERT_FALSE(label.empty());
@@ -409,9 +411,9 @@ TEST(UiScreens, BlockMotionAfterFailurePlaysOnTheModel) {
   EXPECT_GT(outline, 30);
   // The pose at a sample time: the centroid is where the path says.
   const BlockView& b = s->state().session->blocks()[*s->state().blocks.selected_block];
-  ASSERT_TRUE(b.dynamics);
-  const Eigen::Vector3d c0 = b.dynamics->path.front().position;
-  const auto at_half = posed_at({c0}, *b.dynamics, 0.5);
+  ASSERT_TRUE(b.block.dynamics);
+  const Eigen::Vector3d c0 = b.block.dynamics->path.front().position;
+  const auto at_half = posed_at({c0}, *b.block.dynamics, 0.5);
   ASSERT_EQ(at_half.size(), 1u);
   EXPECT_NEAR(c0.z() - at_half[0].z(), 0.125, 1e-9);  // 0.5 t^2 at t = 0.5, exact in doubles
 }

@@ -229,7 +229,8 @@ TEST(UiSession, AWholeVisitInFewTaps) {
   const auto run = store.load_analysis(runs[0].id);
   std::size_t finite = 0;
   for (const auto& b : run.blocks) {
-    EXPECT_FALSE(b.mode.empty()) << b.label;
+    // The stored mode column: the block's mode, "none" when it has none.
+    EXPECT_FALSE((b.mode ? b.mode->type : std::string("none")).empty()) << b.id;
     finite += b.finite;
   }
   EXPECT_GE(finite, 1u) << out;
@@ -265,14 +266,14 @@ TEST(UiSession, AWholeVisitInFewTaps) {
     return std::string();
   };
   for (const auto& b : run.blocks) {
-    const std::string row = line_starting({b.label, b.source});
-    ASSERT_FALSE(row.empty()) << b.label << " not in\n" << report;
+    const std::string row = line_starting({b.id, b.source});
+    ASSERT_FALSE(row.empty()) << b.id << " not in\n" << report;
     if (!b.finite) continue;
     char volume[32];
-    std::snprintf(volume, sizeof volume, "%.3f", b.volume_m3);
-    EXPECT_NE(row.find(volume), std::string::npos) << b.label << ": " << row;
+    std::snprintf(volume, sizeof volume, "%.3f", b.volume.value_or(0));
+    EXPECT_NE(row.find(volume), std::string::npos) << b.id << ": " << row;
     EXPECT_NE(row.find(b.removable ? "removable" : "finite, keyed"), std::string::npos)
-        << b.label << ": " << row;
+        << b.id << ": " << row;
   }
   // The face outline in words, its two flat pieces.
   EXPECT_NE(report.find("face outline F1: 2 flat pieces, "), std::string::npos) << report;

@@ -227,7 +227,7 @@ void walk_every_screen(Walk& w) {
   const auto& blocks = app.session->blocks();
   ASSERT_FALSE(blocks.empty());
   w.sweep("the blocks screen");
-  w.tap("row " + blocks.front().label, "a block's report");
+  w.tap("row " + blocks.front().block.id, "a block's report");
   w.sweep("a block's report");
   w.tap("Rock mass");
   w.sweep("the rock mass form");

@@ -1,65 +1,88 @@
 // Block verdicts for the table and the colours on the model, from the
-// stored columns and the block's report JSON.
+// block's verdict as the store reads it back (key columns and report JSON).
 #include <gtest/gtest.h>
 
+#include "core/analysis/block_reading.h"
+#include "storage/report/report.h"
 #include "ui/blocks/block_view.h"
 
 namespace {
 
-using rockface::storage::BlockResult;
+using rockface::analysis::ReportBlock;
 using rockface::ui::BlockVerdict;
 using rockface::ui::make_block_view;
 
-BlockResult block(bool finite, bool removable, const std::string& mode, std::optional<double> fos,
-                  bool marginal = false) {
-  BlockResult b;
-  b.label = "B";
-  b.finite = finite;
-  b.removable = removable;
-  b.mode = mode;
-  b.fos = fos;
-  b.marginal = marginal;
-  b.report_json = R"({"id": "B", "margin_deg": 4.5, "vertices": [[11, 22, 33], [12, 22, 33]],
+constexpr const char* kReport =
+    R"({"id": "B", "margin_deg": 4.5, "vertices": [[11, 22, 33], [12, 22, 33]],
       "rotation": {"corners": [{"vertex": 0, "rotatable": false}],
                    "edges": [{"vertices": [0, 1], "rotatable": true}]}})";
+
+// The block a stored row gives: its report JSON read back, the key columns
+// (verdict, mode, factor of safety) over it.
+ReportBlock with_report(const ReportBlock& columns, const std::string& report_json) {
+  ReportBlock b = rockface::storage::block_from_json(report_json);
+  b.id = columns.id;
+  b.source = columns.source;
+  b.finite = columns.finite;
+  b.removable = columns.removable;
+  b.marginal = columns.marginal;
+  b.fos = columns.fos;
+  if (columns.mode) {
+    if (!b.mode) b.mode = rockface::analysis::ReportMode{};
+    b.mode->type = columns.mode->type;
+  }
   return b;
 }
 
+ReportBlock block(bool finite, bool removable, const std::string& mode, std::optional<double> fos,
+                  bool marginal = false) {
+  ReportBlock b;
+  b.id = "B";
+  b.source = "";  // a row's source column, left empty here
+  b.finite = finite;
+  b.removable = removable;
+  if (mode != "none") {
+    b.mode = rockface::analysis::ReportMode{};
+    b.mode->type = mode;
+  }
+  b.fos = fos;
+  b.marginal = marginal;
+  return with_report(b, kReport);
+}
+
 TEST(BlockView, VerdictFollowsFinitenessRemovabilityModeAndFos) {
-  const Eigen::Vector3d datum(10, 20, 30);
-  EXPECT_EQ(make_block_view(block(true, true, "sliding", 0.49), datum).verdict,
-            BlockVerdict::moves);
-  EXPECT_EQ(make_block_view(block(true, true, "sliding", 1.3), datum).verdict, BlockVerdict::holds);
-  EXPECT_EQ(make_block_view(block(true, true, "falling", {}), datum).verdict, BlockVerdict::moves);
-  EXPECT_EQ(make_block_view(block(true, false, "none", {}), datum).verdict, BlockVerdict::keyed);
-  EXPECT_EQ(make_block_view(block(false, false, "none", {}), datum).verdict,
-            BlockVerdict::infinite);
-  EXPECT_EQ(make_block_view(block(true, true, "sliding", 1.3, true), datum).verdict,
+  EXPECT_EQ(make_block_view(block(true, true, "sliding", 0.49)).verdict, BlockVerdict::moves);
+  EXPECT_EQ(make_block_view(block(true, true, "sliding", 1.3)).verdict, BlockVerdict::holds);
+  EXPECT_EQ(make_block_view(block(true, true, "falling", {})).verdict, BlockVerdict::moves);
+  EXPECT_EQ(make_block_view(block(true, false, "none", {})).verdict, BlockVerdict::keyed);
+  EXPECT_EQ(make_block_view(block(false, false, "none", {})).verdict, BlockVerdict::infinite);
+  EXPECT_EQ(make_block_view(block(true, true, "sliding", 1.3, true)).verdict,
             BlockVerdict::marginal);
 }
 
 TEST(BlockView, ReportGivesMarginRotatabilityAndDatumRelativeVertices) {
-  const auto v = make_block_view(block(true, true, "sliding", 0.49), Eigen::Vector3d(10, 20, 30));
-  ASSERT_TRUE(v.margin_deg);
-  EXPECT_EQ(*v.margin_deg, 4.5);
-  ASSERT_TRUE(v.rotatable);
-  EXPECT_TRUE(*v.rotatable);  // the edge is, the corner is not
-  ASSERT_EQ(v.vertices.size(), 2u);
-  EXPECT_EQ(v.vertices[1], Eigen::Vector3d(2, 2, 3));
-  EXPECT_NE(v.report_text.find("margin_deg"), std::string::npos);
+  const auto v = make_block_view(block(true, true, "sliding", 0.49));
+  EXPECT_EQ(v.block.margin_deg, 4.5);
+  const auto rotatable = rockface::analysis::can_rotate(v.block);
+  ASSERT_TRUE(rotatable);
+  EXPECT_TRUE(*rotatable);  // the edge is, the corner is not
+  const auto vertices = rockface::analysis::relative_to(v.block.vertices, {10, 20, 30});
+  ASSERT_EQ(vertices.size(), 2u);
+  EXPECT_EQ(vertices[1], Eigen::Vector3d(2, 2, 3));
 }
 
 TEST(BlockView, SummaryStatesVerdictModeDirectionSizeAndRotationInWords) {
-  BlockResult b = block(true, true, "sliding", 0.49);
-  b.label = "TB3";
-  b.report_json = R"({"margin_deg": 4.5, "volume": 1.25, "mass": 3400,
+  ReportBlock b = block(true, true, "sliding", 0.49);
+  std::string report;
+  b.id = "TB3";
+  report = R"({"margin_deg": 4.5, "volume": 1.25, "mass": 3400,
       "mode": {"type": "sliding", "planes": ["J1", "J2"], "direction": [0, -0.5, -0.5]},
       "rotation": {"corners": [{"vertex": 0, "rotatable": true, "margin_deg": 4.1},
                                {"vertex": 1, "rotatable": false, "margin_deg": 9}],
                    "edges": [{"vertices": [0, 1], "rotatable": false}]},
       "remote_axis": {"found": true, "starts": 64, "hits": 9},
       "face_areas": {"J1": 2.5}})";
-  const auto lines = make_block_view(b, Eigen::Vector3d::Zero()).summary;
+  const auto lines = make_block_view(with_report(b, report)).summary;
   std::string text;
   for (const auto& l : lines) text += l + "\n";
   EXPECT_NE(text.find("Block TB3: moves"), std::string::npos) << text;
@@ -76,23 +99,24 @@ TEST(BlockView, SummaryStatesVerdictModeDirectionSizeAndRotationInWords) {
   EXPECT_NE(text.find("Remote axis: found (9 of 64 starts)"), std::string::npos) << text;
   EXPECT_NE(text.find("Face areas: J1 2.50 m²"), std::string::npos) << text;
   // The equilibrium path, when the scene asked for it: its limit point, or why there is none.
-  b.report_json = R"({"mechanics": {"fos_limit_point": 0.71, "stability": "divergence"}})";
-  EXPECT_EQ(make_block_view(b, Eigen::Vector3d::Zero()).summary.back(),
+  report = R"({"mechanics": {"fos_limit_point": 0.71, "stability": "divergence"}})";
+  EXPECT_EQ(make_block_view(with_report(b, report)).summary.back(),
             "Equilibrium path: limit point at load factor 0.71, divergence");
-  b.report_json = R"({"mechanics": {"fos_limit_point": null, "outcome": "fails under its loads"}})";
-  EXPECT_EQ(make_block_view(b, Eigen::Vector3d::Zero()).summary.back(),
+  report = R"({"mechanics": {"fos_limit_point": null, "outcome": "fails under its loads"}})";
+  EXPECT_EQ(make_block_view(with_report(b, report)).summary.back(),
             "Equilibrium path: fails under its loads");
   // A block that already rotates about a corner is not searched for a remote axis.
-  b.report_json = R"({"remote_axis": {"found": true, "starts": 0, "hits": 0}})";
-  const auto skipped = make_block_view(b, Eigen::Vector3d::Zero()).summary;
+  report = R"({"remote_axis": {"found": true, "starts": 0, "hits": 0}})";
+  const auto skipped = make_block_view(with_report(b, report)).summary;
   EXPECT_EQ(skipped.back(),
             "Remote axis: not searched, the block already rotates about a corner or an edge");
 }
 
 TEST(BlockView, SummaryOfAMalformedReportKeepsWhatTheColumnsSay) {
-  BlockResult b = block(false, false, "none", {});
-  b.report_json = "not json";
-  const auto lines = make_block_view(b, Eigen::Vector3d::Zero()).summary;
+  ReportBlock b = block(false, false, "none", {});
+  std::string report;
+  report = "not json";
+  const auto lines = make_block_view(with_report(b, report)).summary;
   ASSERT_GE(lines.size(), 2u);
   EXPECT_EQ(lines[0], "Block B: not finite");
   EXPECT_EQ(lines[1], "not finite, not removable");

@@ -230,7 +230,7 @@ TEST_P(OverlayDraw, BlocksOnTheBlocksScreenLieOnTheMappedFace) {
   for (const auto& b : app().session->blocks()) colours.insert(rgb_of(verdict_colour(b.verdict)));
   for (const auto& l : view().drawn_overlay().lines) drawn.insert(l.what);
   for (const auto& b : app().session->blocks()) {
-    EXPECT_TRUE(drawn.count("block " + b.label + " edge")) << b.label << " not outlined";
+    EXPECT_TRUE(drawn.count("block " + b.block.id + " edge")) << b.block.id << " not outlined";
   }
   EXPECT_GT(check_vertices("block "), 3);
   // Block outlines are 3 px wide at scale 1.
@@ -305,14 +305,14 @@ TEST(OverlayBlocks, ABlockMarkerIsANineMillimetreTargetThatSelectsItsBlock) {
   // target's size to float precision.
   const float least = touch_target_px_at(300);
   for (const auto& b : blocks) {
-    const auto marker = s.state().targets.find("block " + b.label);
-    ASSERT_TRUE(marker) << b.label;
-    EXPECT_GE(marker->max.x - marker->min.x, least - 1e-3f) << b.label;
-    EXPECT_GE(marker->max.y - marker->min.y, least - 1e-3f) << b.label;
+    const auto marker = s.state().targets.find("block " + b.block.id);
+    ASSERT_TRUE(marker) << b.block.id;
+    EXPECT_GE(marker->max.x - marker->min.x, least - 1e-3f) << b.block.id;
+    EXPECT_GE(marker->max.y - marker->min.y, least - 1e-3f) << b.block.id;
   }
   // Near the marker's rim (0.45 of its width from the centre, on the
   // diagonal: inside the ring): its block is selected.
-  const auto marker = *s.state().targets.find("block " + blocks.front().label);
+  const auto marker = *s.state().targets.find("block " + blocks.front().block.id);
   const float off = 0.45f * (marker.max.x - marker.min.x) / std::sqrt(2.0f);
   s.tap(marker.centre().x + off, marker.centre().y - off);
   ASSERT_TRUE(s.state().blocks.selected_block);
