@@ -2,7 +2,7 @@
 // What the analysis input must be (SCENE.md, docs/scene-extensions.md), checked
 // over the values: numbers finite and in their ranges, enough points and
 // vertices, words among the known ones, ids unique and every id referred to
-// known. The scene reader (storage/scene.h) runs it on what it parsed, the
+// known. The scene reader (storage/scene/scene.h) runs it on what it parsed, the
 // tablet on what it built from the project's rows: one check, one refusal,
 // word for word, whichever way the input came.
 //
