@@ -1,7 +1,9 @@
 // The Mapping screen's blocks (issue 28): the visit as the analysis reads it
-// (storage::load_scene_source, the same scene the Blocks screen analyses),
-// through one MapVerdictSession kept while the visit and everything but its
-// traces stay the same, so that an edit recomputes only what it touched.
+// (storage::visit_analysis_input: the input of the scene the Blocks screen
+// analyses, built from the rows and checked by the scene reader's validator,
+// issue 37), through one MapVerdictSession kept while the visit and
+// everything but its traces stay the same, so that an edit recomputes only
+// what it touched.
 // Issue 27: the edits of the map (a trace saved or taken back, the face
 // outlined) are stored here too, as `rockface measure` stores picks, with
 // the visit's joint table remade from its traces as the verb makes it.
@@ -16,7 +18,6 @@
 #include "core/measure/pick_measurement.h"
 #include "core/photogrammetry/reconstruction/preset.h"
 #include "firmware-app/analysis/map_verdicts.h"
-#include "firmware-app/analysis/scene_input.h"
 #include "firmware-app/measure/measure_records.h"
 #include "firmware-app/measure/visit_trace_joints.h"
 #include "firmware-app/records/project_mesh.h"
@@ -24,18 +25,42 @@
 #include "storage/project/project_store.h"
 #include "storage/scene/export_scene_json.h"
 #include "storage/scene/face_outline_words.h"
-#include "storage/scene/scene.h"
 #include "ui/widgets/format.h"
 
 namespace rockface::app {
 
 namespace {
 
+// The effects as the session key holds them: every value, exactly.
+void effects_key(std::ostream& key, const analysis::SceneEffects& e) {
+  if (e.water) {
+    key << "|water " << e.water->unit_weight << ' ' << e.water->phreatic_point.transpose() << ' '
+        << e.water->phreatic_dip << ' ' << e.water->phreatic_dipdir;
+    for (const auto& j : e.water->joints) key << ' ' << j;
+  }
+  if (e.seismic) key << "|seismic " << e.seismic->transpose();
+  if (e.insitu_stress) {
+    key << "|stress";
+    for (int k = 0; k < 9; ++k) key << ' ' << (*e.insitu_stress)(k);
+  }
+  for (const auto& f : e.forces)
+    key << "|force " << f.vector.transpose() << ' ' << f.point.transpose() << ' ' << f.frame;
+  for (const auto& b : e.bolts)
+    key << "|bolt " << b.point.transpose() << ' ' << b.trend << ' ' << b.plunge << ' ' << b.force;
+  if (const auto& law = e.joint_law) {
+    key << "|law " << law->model << ' ' << law->jrc << ' ' << law->jcs << ' ' << law->phi_b << ' '
+        << law->normal_stiffness << ' ' << law->poisson_ratio << ' ' << law->lab_length << ' '
+        << law->dilation;
+    if (law->phi_r) key << " phi_r " << *law->phi_r;
+    if (law->field_length) key << " field " << *law->field_length;
+  }
+}
+
 // What a MapVerdictSession is built from (map_verdicts.h), exactly: the
 // surface, the datum, the map's tolerances, the rock and the effects. The
 // preset and the other analysis options do not enter the map's verdicts, so
 // an analysis saved in between (which names its preset) keeps the session.
-std::string session_key(const analysis::AnalysisInput& input, const nlohmann::json& scene) {
+std::string session_key(const analysis::AnalysisInput& input) {
   std::ostringstream key;
   key << std::hexfloat << input.datum.transpose() << ' ' << input.has_datum << ' ' << input.density
       << ' ' << input.gravity.transpose() << ' ' << input.analysis.snap_tolerance << ' '
@@ -44,7 +69,7 @@ std::string session_key(const analysis::AnalysisInput& input, const nlohmann::js
     key << '|' << p.id;
     for (const auto& x : p.polygon) key << ' ' << x.transpose();
   }
-  if (scene.contains("effects") && !scene["effects"].empty()) key << '|' << scene["effects"].dump();
+  effects_key(key, input.effects);
   return key.str();
 }
 
@@ -77,11 +102,10 @@ ui::MapVerdicts StoreTraceMapRunner::update(const std::filesystem::path& project
   progress.step("reading the traces", 0.05);
   storage::ProjectStore store = storage::ProjectStore::open(project);
   const storage::SceneSource source = storage::load_scene_source(store, visit_id);
-  const nlohmann::json json = storage::make_scene_json(source);
-  const storage::Scene scene = storage::parse_scene(
-      json.dump(), project.filename().string() + " visit " + std::to_string(visit_id));
-  const analysis::AnalysisInput input = analysis_input(scene);
-  std::string key = session_key(input, json);
+  // Built from the rows and checked as the scene reader checks a scene.
+  const analysis::AnalysisInput input = storage::visit_analysis_input(
+      source, project.filename().string() + " visit " + std::to_string(visit_id));
+  std::string key = session_key(input);
   if (!cache_->session || cache_->project != project || cache_->visit_id != visit_id ||
       cache_->key != key) {
     cache_->session.reset();

@@ -2,9 +2,13 @@
 
 #include <map>
 
+#include "core/analysis/analysis_input_check.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/preset.h"
+#include "storage/json_reader.h"
 #include "storage/project/project_store.h"
+#include "storage/scene/scene_effects_json.h"
 
 namespace rockface::storage {
 
@@ -25,6 +29,34 @@ Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d>& ps) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const auto& p : ps) sum += p;
   return sum / static_cast<double>(ps.size());
+}
+
+// An area is a free face when it has its plane and the side the rock is on;
+// an area without them is surface only.
+bool is_free_face(const Measurement& m) {
+  return m.dip_deg && m.dipdir_deg && !m.rock_side.empty();
+}
+
+// The joint a trace of the scene lies in: the one it was assigned, else
+// (issue 27) the joint of its own when it has one (made of it alone, its
+// plane fitted or read with a compass): without it a straight trace, whose
+// plane only the compass gives, would have no plane in the trace map.
+std::string trace_joint(const photogrammetry::FaceTrace& ft, const std::vector<Joint>& joints) {
+  std::string joint = ft.joint;
+  for (const auto& j : joints)
+    if (ft.joint.empty() && j.type == "trace" && j.label == ft.label &&
+        (j.source == "trace " + j.label || j.source == "trace " + j.label + " (compass)"))
+      joint = j.label;
+  return joint;
+}
+
+// The effects of the visit's latest analysis: its stored "effects" object,
+// when it is one.
+std::optional<nlohmann::json> stored_effects(const SceneSource& source) {
+  if (!source.analysis || source.analysis->effects_json.empty()) return std::nullopt;
+  auto effects = nlohmann::json::parse(source.analysis->effects_json, nullptr, false);
+  if (effects.is_discarded() || !effects.is_object()) return std::nullopt;
+  return effects;
 }
 
 }  // namespace
@@ -70,9 +102,7 @@ nlohmann::json make_scene_json(const SceneSource& source) {
   for (const auto& m : source.measurements) {
     if (m.kind == Measurement::Kind::area) {
       patches.push_back({{"id", m.label}, {"polygon", points(datum, m.points)}});
-      // A free face needs its plane and the side the rock is on; an area
-      // without them is surface only.
-      if (m.dip_deg && !m.rock_side.empty())
+      if (is_free_face(m))
         free_faces.push_back({{"id", m.label},
                               {"dip", *m.dip_deg},
                               {"dipdir", *m.dipdir_deg},
@@ -82,15 +112,8 @@ nlohmann::json make_scene_json(const SceneSource& source) {
   }
   for (const auto& ft : scene_traces(source.measurements)) {
     nlohmann::json t = {{"id", ft.label}, {"points", points(datum, ft.points)}};
-    if (!ft.joint.empty()) t["joint"] = ft.joint;
-    // Issue 27: a trace assigned to no joint that has a joint of its own
-    // (made of it alone, its plane fitted or read with a compass) lies in
-    // that joint: without it a straight trace, whose plane only the compass
-    // gives, would have no plane in the trace map.
-    for (const auto& j : source.joints)
-      if (ft.joint.empty() && j.type == "trace" && j.label == ft.label &&
-          (j.source == "trace " + j.label || j.source == "trace " + j.label + " (compass)"))
-        t["joint"] = j.label;
+    if (const std::string joint = trace_joint(ft, source.joints); !joint.empty())
+      t["joint"] = joint;
     if (ft.pieces.size() > 1) t["pieces"] = ft.pieces;
     traces.push_back(std::move(t));
   }
@@ -101,13 +124,58 @@ nlohmann::json make_scene_json(const SceneSource& source) {
   nlohmann::json analysis = {{"pyramids", true}, {"blocks", true}};
   if (source.analysis) {
     if (!source.analysis->preset.empty()) analysis["preset"] = source.analysis->preset;
-    if (!source.analysis->effects_json.empty()) {
-      auto effects = nlohmann::json::parse(source.analysis->effects_json, nullptr, false);
-      if (!effects.is_discarded() && effects.is_object()) scene["effects"] = std::move(effects);
-    }
+    if (auto effects = stored_effects(source)) scene["effects"] = std::move(*effects);
   }
   scene["analysis"] = std::move(analysis);
   return scene;
+}
+
+analysis::AnalysisInput visit_analysis_input(const SceneSource& source, const std::string& name) {
+  const Eigen::Vector3d& datum = source.project.datum;
+  auto absolute = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d { return datum + p; };
+  analysis::AnalysisInput in;
+  in.source = name;
+  in.datum = datum;
+  in.has_datum = true;
+  for (const auto& j : source.joints) {
+    analysis::SceneJoint joint;
+    joint.id = j.label;
+    joint.dip = j.dip_deg;
+    joint.dipdir = j.dipdir_deg == 360 ? 0 : j.dipdir_deg;  // as the reader takes 360
+    if (j.point) joint.point = absolute(*j.point);
+    joint.friction = j.friction_deg;
+    joint.cohesion = j.cohesion_pa;
+    in.joints.push_back(std::move(joint));
+  }
+  for (const auto& m : source.measurements) {
+    if (m.kind != Measurement::Kind::area) continue;
+    analysis::ScenePatch patch{m.label, {}};
+    for (const auto& p : m.points) patch.polygon.push_back(absolute(p));
+    in.patches.push_back(std::move(patch));
+    if (!is_free_face(m)) continue;
+    analysis::SceneFreeFace face;
+    face.id = m.label;
+    face.dip = *m.dip_deg;
+    face.dipdir = *m.dipdir_deg == 360 ? 0 : *m.dipdir_deg;
+    face.point = absolute(centroid(m.points));
+    face.rock_side = analysis::rock_side_code(
+        m.rock_side, name + ": free_faces[" + std::to_string(in.free_faces.size()) + "].rock_side");
+    in.free_faces.push_back(std::move(face));
+  }
+  for (const auto& ft : scene_traces(source.measurements)) {
+    analysis::SceneTrace trace;
+    trace.id = ft.label;
+    if (const std::string joint = trace_joint(ft, source.joints); !joint.empty())
+      trace.joint = joint;
+    for (const auto& p : ft.points) trace.points.push_back(absolute(p));
+    in.traces.push_back(std::move(trace));
+  }
+  if (source.analysis && !source.analysis->preset.empty())
+    in.analysis.preset = parse_preset(source.analysis->preset, name + ": analysis.preset");
+  if (const auto effects = stored_effects(source))
+    in.effects = read_scene_effects(Reader(name), *effects);
+  analysis::check_analysis_input(in);
+  return in;
 }
 
 SceneSource load_scene_source(ProjectStore& store, std::optional<RecordId> visit_id) {

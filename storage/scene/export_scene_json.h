@@ -6,9 +6,11 @@
 // Coordinates are absolute (datum added back) as the scene format requires.
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "core/analysis/analysis_input.h"
 #include "core/photogrammetry/surface/trace_pieces.h"
 #include "storage/project/project_records.h"
 
@@ -33,6 +35,13 @@ std::vector<photogrammetry::FaceTrace> scene_traces(const std::vector<Measuremen
 
 // The scene; a joined trace lists its stored traces in "pieces".
 nlohmann::json make_scene_json(const SceneSource& source);
+
+// The analysis input of the visit, built from its rows as the scene reader
+// reads make_scene_json's scene, value for value, without the JSON text in
+// between, and checked as the reader checks a scene
+// (core/analysis/analysis_input_check.h): the same input or the same
+// refusal. `name` names the visit in messages ("P.rockface visit 3").
+analysis::AnalysisInput visit_analysis_input(const SceneSource& source, const std::string& name);
 
 // What a visit (the latest when none) holds for its scene. Throws InputError
 // when the project has no visit.

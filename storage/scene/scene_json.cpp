@@ -1,18 +1,22 @@
 // Parser of the scene file (SCENE.md). Every rejection names the file and the
-// field path, so one line on stderr tells the geologist what to fix.
-#include <cmath>
+// field path, so one line on stderr tells the geologist what to fix. The
+// reader takes the JSON's shape (types, required fields, no unknown field in
+// any object); what the values must be, the analysis input's checker says
+// (core/analysis/analysis_input_check.h), as it does for the tablet's input.
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "core/analysis/analysis_input_check.h"
 #include "core/common/error.h"
 #include "core/common/preset.h"
 #include "storage/json_reader.h"
 #include "storage/scene/picks_json.h"
 #include "storage/scene/rockmass_form_json.h"
 #include "storage/scene/scene.h"
+#include "storage/scene/scene_effects_json.h"
 #include "storage/scene/scene_lighting_json.h"
 #include "storage/scene/scene_tunnel.h"
 #include "storage/scene/scene_wedges.h"
@@ -25,8 +29,8 @@ using nlohmann::json;
 
 void read_orientation(const Reader& r, const json& o, const std::string& path, double& dip,
                       double& dipdir) {
-  dip = r.number_in(r.require(o, path, "dip"), Reader::join(path, "dip"), 0, 90);
-  dipdir = r.number_in(r.require(o, path, "dipdir"), Reader::join(path, "dipdir"), 0, 360);
+  dip = r.number(r.require(o, path, "dip"), Reader::join(path, "dip"));
+  dipdir = r.number(r.require(o, path, "dipdir"), Reader::join(path, "dipdir"));
   if (dipdir == 360) dipdir = 0;  // 360 and 0 are one direction
 }
 
@@ -38,14 +42,17 @@ std::vector<analysis::SceneJoint> read_joints(const Reader& r, const json& doc) 
   for (size_t i = 0; i < arr->size(); ++i) {
     const json& j = (*arr)[i];
     const std::string path = Reader::index("joints", i);
+    // "set": the joint set a project's joint is in (the scene export writes it).
+    r.only_fields(j, path, {"id", "dip", "dipdir", "point", "friction", "cohesion", "set"});
     analysis::SceneJoint joint;
     joint.id = r.id(r.require(j, path, "id"), path + ".id");
     read_orientation(r, j, path, joint.dip, joint.dipdir);
     if (auto* p = r.optional(j, path, "point")) joint.point = r.vec3(*p, path + ".point");
     if (auto* f = r.optional(j, path, "friction"))
-      joint.friction = r.number_in(*f, path + ".friction", 0, 90, true);
+      joint.friction = r.number(*f, path + ".friction");
     if (auto* c = r.optional(j, path, "cohesion"))
-      joint.cohesion = r.non_negative(*c, path + ".cohesion");
+      joint.cohesion = r.number(*c, path + ".cohesion");
+    if (auto* s = r.optional(j, path, "set")) r.string(*s, path + ".set");
     joints.push_back(std::move(joint));
   }
   return joints;
@@ -59,17 +66,14 @@ std::vector<analysis::SceneFreeFace> read_free_faces(const Reader& r, const json
   for (size_t i = 0; i < arr->size(); ++i) {
     const json& f = (*arr)[i];
     const std::string path = Reader::index("free_faces", i);
+    r.only_fields(f, path, {"id", "dip", "dipdir", "point", "rock_side", "group"});
     analysis::SceneFreeFace face;
     face.id = r.id(r.require(f, path, "id"), path + ".id");
     read_orientation(r, f, path, face.dip, face.dipdir);
     if (auto* p = r.optional(f, path, "point")) face.point = r.vec3(*p, path + ".point");
-    const std::string side = r.string(r.require(f, path, "rock_side"), path + ".rock_side");
-    if (side == "upper")
-      face.rock_side = 0;
-    else if (side == "lower")
-      face.rock_side = 1;
-    else
-      r.fail(path + ".rock_side", "\"" + side + "\" is neither \"upper\" nor \"lower\"");
+    face.rock_side =
+        analysis::rock_side_code(r.string(r.require(f, path, "rock_side"), path + ".rock_side"),
+                                 r.where(path + ".rock_side"));
     if (auto* g = r.optional(f, path, "group")) face.group = r.id(*g, path + ".group");
     faces.push_back(std::move(face));
   }
@@ -96,6 +100,7 @@ std::vector<analysis::SceneBlock> read_blocks(const Reader& r, const json& doc) 
   for (size_t i = 0; i < arr->size(); ++i) {
     const json& b = (*arr)[i];
     const std::string path = Reader::index("blocks", i);
+    r.only_fields(b, path, {"id", "halfspaces", "vertices", "faces"});
     analysis::SceneBlock block;
     block.id = r.id(r.require(b, path, "id"), path + ".id");
     const json* hs = r.optional(b, path, "halfspaces");
@@ -115,18 +120,12 @@ std::vector<analysis::SceneBlock> read_blocks(const Reader& r, const json& doc) 
       const json& fs = r.array(r.require(b, path, "faces"), path + ".faces");
       for (size_t k = 0; k < fs.size(); ++k) {
         const std::string fpath = Reader::index(path + ".faces", k);
+        r.only_fields(fs[k], fpath, {"plane", "loop"});
         analysis::SceneBlockFace face;
         face.plane = r.id(r.require(fs[k], fpath, "plane"), fpath + ".plane");
         const json& loop = r.array(r.require(fs[k], fpath, "loop"), fpath + ".loop");
-        if (loop.size() < 3) r.fail(fpath + ".loop", "needs at least 3 vertices");
-        for (size_t m = 0; m < loop.size(); ++m) {
-          const int v = r.integer(loop[m], Reader::index(fpath + ".loop", m));
-          if (v < 0 || v >= static_cast<int>(block.vertices.size()))
-            r.fail(Reader::index(fpath + ".loop", m),
-                   "vertex index " + std::to_string(v) + " is out of range (block has " +
-                       std::to_string(block.vertices.size()) + " vertices)");
-          face.loop.push_back(v);
-        }
+        for (size_t m = 0; m < loop.size(); ++m)
+          face.loop.push_back(r.integer(loop[m], Reader::index(fpath + ".loop", m)));
         block.faces.push_back(std::move(face));
       }
     }
@@ -142,7 +141,49 @@ std::vector<Eigen::Vector3d> read_points(const Reader& r, const json& v, const s
   return pts;
 }
 
-// analysis.dynamics: every field checked, unknown ones refused by name.
+std::vector<analysis::ScenePatch> read_patches(const Reader& r, const json& doc) {
+  std::vector<analysis::ScenePatch> patches;
+  const json* surf = r.optional(doc, "", "surface");
+  if (!surf) return patches;
+  r.only_fields(*surf, "surface", {"patches"});
+  const json* ps = r.optional(*surf, "surface", "patches");
+  if (!ps) return patches;
+  r.array(*ps, "surface.patches");
+  for (size_t i = 0; i < ps->size(); ++i) {
+    const std::string path = Reader::index("surface.patches", i);
+    r.only_fields((*ps)[i], path, {"id", "polygon"});
+    analysis::ScenePatch patch;
+    patch.id = r.id(r.require((*ps)[i], path, "id"), path + ".id");
+    patch.polygon = read_points(r, r.require((*ps)[i], path, "polygon"), path + ".polygon");
+    patches.push_back(std::move(patch));
+  }
+  return patches;
+}
+
+std::vector<analysis::SceneTrace> read_traces(const Reader& r, const json& doc) {
+  std::vector<analysis::SceneTrace> traces;
+  const json* ts = r.optional(doc, "", "traces");
+  if (!ts) return traces;
+  r.array(*ts, "traces");
+  for (size_t i = 0; i < ts->size(); ++i) {
+    const std::string path = Reader::index("traces", i);
+    // "pieces": the stored traces a project's joined trace is made of (the
+    // scene export writes them; docs/scene-extensions.md).
+    r.only_fields((*ts)[i], path, {"id", "joint", "points", "pieces"});
+    analysis::SceneTrace t;
+    t.id = r.id(r.require((*ts)[i], path, "id"), path + ".id");
+    if (auto* j = r.optional((*ts)[i], path, "joint")) t.joint = r.id(*j, path + ".joint");
+    t.points = read_points(r, r.require((*ts)[i], path, "points"), path + ".points");
+    if (auto* ps = r.optional((*ts)[i], path, "pieces")) {
+      r.array(*ps, path + ".pieces");
+      for (size_t k = 0; k < ps->size(); ++k) r.id((*ps)[k], Reader::index(path + ".pieces", k));
+    }
+    traces.push_back(std::move(t));
+  }
+  return traces;
+}
+
+// analysis.dynamics: every field read, unknown ones refused by name.
 analysis::SceneDynamics read_dynamics(const Reader& r, const json& v) {
   const std::string p = "analysis.dynamics";
   if (!v.is_object()) r.fail(p, "must be an object");
@@ -153,17 +194,11 @@ analysis::SceneDynamics read_dynamics(const Reader& r, const json& v) {
       r.fail(p + "." + it.key(),
              "unknown field (duration_s, sample_s, floor, abs_tol, rel_tol, max_step_s)");
   analysis::SceneDynamics d;
-  if (auto* x = r.optional(v, p, "duration_s"))
-    d.duration_s = r.number_in(*x, p + ".duration_s", 1e-3, 600);
-  if (auto* x = r.optional(v, p, "sample_s")) d.sample_s = r.positive(*x, p + ".sample_s");
-  if (d.duration_s / d.sample_s > 100000)
-    r.fail(p + ".sample_s", "more than 100000 samples over duration_s");
-  if (auto* x = r.optional(v, p, "abs_tol"))
-    d.abs_tol = r.number_in(*x, p + ".abs_tol", 1e-15, 1e-2);
-  if (auto* x = r.optional(v, p, "rel_tol"))
-    d.rel_tol = r.number_in(*x, p + ".rel_tol", 1e-14, 1e-2);
-  if (auto* x = r.optional(v, p, "max_step_s"))
-    d.max_step_s = r.number_in(*x, p + ".max_step_s", 1e-6, 1);
+  if (auto* x = r.optional(v, p, "duration_s")) d.duration_s = r.number(*x, p + ".duration_s");
+  if (auto* x = r.optional(v, p, "sample_s")) d.sample_s = r.number(*x, p + ".sample_s");
+  if (auto* x = r.optional(v, p, "abs_tol")) d.abs_tol = r.number(*x, p + ".abs_tol");
+  if (auto* x = r.optional(v, p, "rel_tol")) d.rel_tol = r.number(*x, p + ".rel_tol");
+  if (auto* x = r.optional(v, p, "max_step_s")) d.max_step_s = r.number(*x, p + ".max_step_s");
   if (auto* f = r.optional(v, p, "floor")) {
     const std::string fp = p + ".floor";
     if (!f->is_object()) r.fail(fp, "must be an object");
@@ -182,10 +217,9 @@ analysis::SceneDynamics read_dynamics(const Reader& r, const json& v) {
         r.fail(fp + ".dip", "a floor given by elevation is level: give point, dip and dipdir");
     } else {
       floor.point = r.vec3(*point, fp + ".point");
-      if (auto* x = r.optional(*f, fp, "dip"))
-        floor.dip = r.number_in(*x, fp + ".dip", 0, 90, true);
+      if (auto* x = r.optional(*f, fp, "dip")) floor.dip = r.number(*x, fp + ".dip");
       if (auto* x = r.optional(*f, fp, "dipdir")) {
-        floor.dipdir = r.number_in(*x, fp + ".dipdir", 0, 360);
+        floor.dipdir = r.number(*x, fp + ".dipdir");
         if (floor.dipdir == 360) floor.dipdir = 0;
       }
     }
@@ -199,6 +233,10 @@ analysis::SceneAnalysis read_analysis(const Reader& r, const json& doc) {
   const json* an = r.optional(doc, "", "analysis");
   if (!an) return a;
   const std::string p = "analysis";
+  r.only_fields(*an, p,
+                {"pyramids", "blocks", "rotation", "remote_axis", "stability", "preset",
+                 "orientation_uncertainty_deg", "reference_mass", "snap_tolerance",
+                 "contact_density", "continuation_step", "max_steps", "lambda_max", "dynamics"});
   if (auto* v = r.optional(*an, p, "pyramids")) a.pyramids = r.boolean(*v, p + ".pyramids");
   if (auto* v = r.optional(*an, p, "blocks")) a.blocks = r.boolean(*v, p + ".blocks");
   if (auto* v = r.optional(*an, p, "rotation")) a.rotation = r.boolean(*v, p + ".rotation");
@@ -206,11 +244,9 @@ analysis::SceneAnalysis read_analysis(const Reader& r, const json& doc) {
   if (auto* v = r.optional(*an, p, "remote_axis"); v && !(v->is_boolean() && !v->get<bool>())) {
     analysis::SceneRemoteAxis ra;
     if (!v->is_boolean()) {
-      if (auto* s = r.optional(*v, p + ".remote_axis", "starts")) {
+      r.only_fields(*v, p + ".remote_axis", {"starts", "seed"});
+      if (auto* s = r.optional(*v, p + ".remote_axis", "starts"))
         ra.starts = r.integer(*s, p + ".remote_axis.starts");
-        if (*ra.starts < 1 || *ra.starts > 100000)
-          r.fail(p + ".remote_axis.starts", "must be between 1 and 100000");
-      }
       if (auto* s = r.optional(*v, p + ".remote_axis", "seed")) {
         const int seed = r.integer(*s, p + ".remote_axis.seed");
         if (seed < 0) r.fail(p + ".remote_axis.seed", "must not be negative");
@@ -219,143 +255,34 @@ analysis::SceneAnalysis read_analysis(const Reader& r, const json& doc) {
     }
     a.remote_axis = ra;
   }
-  if (auto* v = r.optional(*an, p, "stability")) {
-    a.stability = r.string(*v, p + ".stability");
-    if (a.stability != "limit_equilibrium" && a.stability != "equilibrium_path" &&
-        a.stability != "none")
-      r.fail(p + ".stability",
-             "\"" + a.stability + "\" is not limit_equilibrium, equilibrium_path or none");
-  }
+  if (auto* v = r.optional(*an, p, "stability")) a.stability = r.string(*v, p + ".stability");
   if (auto* v = r.optional(*an, p, "preset")) {
     a.preset = parse_preset(r.string(*v, p + ".preset"), r.where(p + ".preset"));
   }
   if (auto* v = r.optional(*an, p, "orientation_uncertainty_deg"))
-    a.orientation_uncertainty_deg = r.number_in(*v, p + ".orientation_uncertainty_deg", 0, 45);
+    a.orientation_uncertainty_deg = r.number(*v, p + ".orientation_uncertainty_deg");
   if (auto* v = r.optional(*an, p, "reference_mass"))
-    a.reference_mass = r.positive(*v, p + ".reference_mass");
+    a.reference_mass = r.number(*v, p + ".reference_mass");
   if (auto* v = r.optional(*an, p, "snap_tolerance"))
-    a.snap_tolerance = r.non_negative(*v, p + ".snap_tolerance");
-  if (auto* v = r.optional(*an, p, "contact_density")) {
+    a.snap_tolerance = r.number(*v, p + ".snap_tolerance");
+  if (auto* v = r.optional(*an, p, "contact_density"))
     a.contact_density = r.integer(*v, p + ".contact_density");
-    if (*a.contact_density < 1 || *a.contact_density > 64)
-      r.fail(p + ".contact_density", "must be between 1 and 64 sub-divisions per edge");
-  }
   if (auto* v = r.optional(*an, p, "continuation_step"))
-    a.continuation_step = r.number_in(*v, p + ".continuation_step", 1e-6, 10);
-  if (auto* v = r.optional(*an, p, "max_steps")) {
-    a.max_steps = r.integer(*v, p + ".max_steps");
-    if (*a.max_steps < 1 || *a.max_steps > 100000)
-      r.fail(p + ".max_steps", "must be between 1 and 100000");
-  }
-  if (auto* v = r.optional(*an, p, "lambda_max"))
-    a.lambda_max = r.number_in(*v, p + ".lambda_max", 0.1, 1e6);
+    a.continuation_step = r.number(*v, p + ".continuation_step");
+  if (auto* v = r.optional(*an, p, "max_steps")) a.max_steps = r.integer(*v, p + ".max_steps");
+  if (auto* v = r.optional(*an, p, "lambda_max")) a.lambda_max = r.number(*v, p + ".lambda_max");
   if (auto* v = r.optional(*an, p, "dynamics")) a.dynamics = read_dynamics(r, *v);
   return a;
 }
 
-analysis::SceneEffects read_effects(const Reader& r, const json& doc) {
-  analysis::SceneEffects e;
-  const json* ef = r.optional(doc, "", "effects");
-  if (!ef) return e;
-  const std::string p = "effects";
-  if (!ef->is_object()) r.fail(p, "must be an object");
-  static const std::set<std::string> known = {"gravity", "water", "seismic",   "insitu_stress",
-                                              "forces",  "bolts", "joint_law", "dynamics"};
-  for (auto it = ef->begin(); it != ef->end(); ++it)
-    if (!known.count(it.key())) r.fail(p + "." + it.key(), "unknown effect");
-  if (ef->contains("dynamics"))
-    r.fail(p + ".dynamics", "the motion after failure is asked for in analysis.dynamics");
-  if (auto* w = r.optional(*ef, p, "water")) {
-    const std::string wp = p + ".water";
-    analysis::SceneWater water;
-    if (auto* u = r.optional(*w, wp, "unit_weight"))
-      water.unit_weight = r.positive(*u, wp + ".unit_weight");
-    const json& ps = r.require(*w, wp, "phreatic_surface");
-    water.phreatic_point =
-        r.vec3(r.require(ps, wp + ".phreatic_surface", "point"), wp + ".phreatic_surface.point");
-    read_orientation(r, ps, wp + ".phreatic_surface", water.phreatic_dip, water.phreatic_dipdir);
-    if (auto* js = r.optional(*w, wp, "joints")) {
-      r.array(*js, wp + ".joints");
-      for (size_t k = 0; k < js->size(); ++k)
-        water.joints.push_back(r.id((*js)[k], Reader::index(wp + ".joints", k)));
-    }
-    e.water = water;
-  }
-  if (auto* s = r.optional(*ef, p, "seismic"))
-    e.seismic = r.vec3(r.require(*s, p + ".seismic", "acceleration"), p + ".seismic.acceleration");
-  if (auto* s = r.optional(*ef, p, "insitu_stress")) {
-    const std::string sp = p + ".insitu_stress.tensor";
-    const json& t = r.require(*s, p + ".insitu_stress", "tensor");
-    if (!t.is_array() || t.size() != 3) r.fail(sp, "must be a 3x3 array");
-    Eigen::Matrix3d m;
-    for (int i = 0; i < 3; ++i) {
-      const Eigen::Vector3d row = r.vec3(t[i], Reader::index(sp, i));
-      m.row(i) = row.transpose();
-    }
-    if ((m - m.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(1.0, m.cwiseAbs().maxCoeff()))
-      r.fail(sp, "must be symmetric");
-    e.insitu_stress = m;
-  }
-  if (auto* fs = r.optional(*ef, p, "forces")) {
-    r.array(*fs, p + ".forces");
-    for (size_t k = 0; k < fs->size(); ++k) {
-      const std::string fp = Reader::index(p + ".forces", k);
-      analysis::SceneForce f;
-      f.vector = r.vec3(r.require((*fs)[k], fp, "vector"), fp + ".vector");
-      f.point = r.vec3(r.require((*fs)[k], fp, "point"), fp + ".point");
-      if (auto* fr = r.optional((*fs)[k], fp, "frame")) {
-        f.frame = r.string(*fr, fp + ".frame");
-        if (f.frame != "space" && f.frame != "block")
-          r.fail(fp + ".frame", "\"" + f.frame + "\" is neither \"space\" nor \"block\"");
-      }
-      e.forces.push_back(f);
-    }
-  }
-  if (auto* bs = r.optional(*ef, p, "bolts")) {
-    r.array(*bs, p + ".bolts");
-    for (size_t k = 0; k < bs->size(); ++k) {
-      const std::string bp = Reader::index(p + ".bolts", k);
-      analysis::SceneBolt b;
-      b.point = r.vec3(r.require((*bs)[k], bp, "point"), bp + ".point");
-      b.trend = r.number_in(r.require((*bs)[k], bp, "trend"), bp + ".trend", 0, 360);
-      b.plunge = r.number_in(r.require((*bs)[k], bp, "plunge"), bp + ".plunge", -90, 90);
-      b.force = r.non_negative(r.require((*bs)[k], bp, "force"), bp + ".force");
-      e.bolts.push_back(b);
-    }
-  }
-  if (auto* jl = r.optional(*ef, p, "joint_law")) {
-    const std::string lp = p + ".joint_law";
-    analysis::SceneJointLaw law;
-    if (auto* m = r.optional(*jl, lp, "model")) {
-      law.model = r.string(*m, lp + ".model");
-      if (law.model != "barton_bandis" && law.model != "grasselli" && law.model != "coulomb")
-        r.fail(lp + ".model", "\"" + law.model + "\" is not barton_bandis, grasselli or coulomb");
-    }
-    if (auto* v = r.optional(*jl, lp, "jrc")) law.jrc = r.number_in(*v, lp + ".jrc", 0, 20);
-    if (auto* v = r.optional(*jl, lp, "jcs")) law.jcs = r.positive(*v, lp + ".jcs");
-    if (auto* v = r.optional(*jl, lp, "phi_b"))
-      law.phi_b = r.number_in(*v, lp + ".phi_b", 0, 90, true);
-    if (auto* v = r.optional(*jl, lp, "normal_stiffness"))
-      law.normal_stiffness = r.positive(*v, lp + ".normal_stiffness");
-    if (auto* v = r.optional(*jl, lp, "poisson_ratio"))
-      law.poisson_ratio = r.number_in(*v, lp + ".poisson_ratio", -0.99, 0.49);
-    if (auto* v = r.optional(*jl, lp, "phi_r"))
-      law.phi_r = r.number_in(*v, lp + ".phi_r", 0, 90, true);
-    if (auto* v = r.optional(*jl, lp, "lab_length"))
-      law.lab_length = r.positive(*v, lp + ".lab_length");
-    if (auto* v = r.optional(*jl, lp, "field_length"))
-      law.field_length = r.positive(*v, lp + ".field_length");
-    if (auto* v = r.optional(*jl, lp, "dilation")) law.dilation = r.boolean(*v, lp + ".dilation");
-    e.joint_law = law;
-  }
-  return e;
-}
-
 SceneImaging read_imaging(const Reader& r, const json& im) {
   const std::string p = "imaging";
+  r.only_fields(im, p,
+                {"camera", "stations", "range_pole", "reference_line", "effects", "texture_seed"});
   SceneImaging img;
   const json& cam = r.require(im, p, "camera");
   const std::string cp = p + ".camera";
+  r.only_fields(cam, cp, {"width", "height", "fx", "fy", "cx", "cy", "distortion"});
   img.camera.width = r.integer(r.require(cam, cp, "width"), cp + ".width");
   img.camera.height = r.integer(r.require(cam, cp, "height"), cp + ".height");
   if (img.camera.width < 16 || img.camera.width > 20000)
@@ -381,6 +308,7 @@ SceneImaging read_imaging(const Reader& r, const json& im) {
   img.stations.resize(st.size());
   for (size_t k = 0; k < st.size(); ++k) {
     const std::string sp = Reader::index(p + ".stations", k);
+    r.only_fields(st[k], sp, {"position", "look_at"});
     img.stations[k].position = r.vec3(r.require(st[k], sp, "position"), sp + ".position");
     img.stations[k].look_at = r.vec3(r.require(st[k], sp, "look_at"), sp + ".look_at");
     if ((img.stations[k].look_at - img.stations[k].position).norm() == 0)
@@ -388,6 +316,7 @@ SceneImaging read_imaging(const Reader& r, const json& im) {
   }
   if (auto* rp = r.optional(im, p, "range_pole")) {
     const std::string pp = p + ".range_pole";
+    r.only_fields(*rp, pp, {"base", "length", "target_diameter"});
     SceneRangePole pole;
     pole.base = r.vec3(r.require(*rp, pp, "base"), pp + ".base");
     if (auto* v = r.optional(*rp, pp, "length")) pole.length = r.positive(*v, pp + ".length");
@@ -395,12 +324,17 @@ SceneImaging read_imaging(const Reader& r, const json& im) {
       pole.target_diameter = r.positive(*v, pp + ".target_diameter");
     img.range_pole = pole;
   }
-  if (auto* rl = r.optional(im, p, "reference_line"))
+  if (auto* rl = r.optional(im, p, "reference_line")) {
+    r.only_fields(*rl, p + ".reference_line", {"from", "to"});
     img.reference_line = std::make_pair(
         r.vec3(r.require(*rl, p + ".reference_line", "from"), p + ".reference_line.from"),
         r.vec3(r.require(*rl, p + ".reference_line", "to"), p + ".reference_line.to"));
+  }
   if (auto* ef = r.optional(im, p, "effects")) {
     const std::string ep = p + ".effects";
+    r.only_fields(*ef, ep,
+                  {"distortion", "noise_sigma", "blur_px", "exposure", "flash", "lamps",
+                   "vignetting", "sensor", "jpeg_quality", "wet", "shotcrete", "dust"});
     if (auto* v = r.optional(*ef, ep, "distortion"))
       img.effects.distortion = r.boolean(*v, ep + ".distortion");
     if (auto* v = r.optional(*ef, ep, "noise_sigma"))
@@ -419,42 +353,23 @@ SceneImaging read_imaging(const Reader& r, const json& im) {
   return img;
 }
 
-// Cross-field checks: unique ids, known plane ids in blocks, traces and water.
-void check_references(const Reader& r, const Scene& s) {
-  std::set<std::string> planes;
-  for (size_t i = 0; i < s.joints.size(); ++i)
-    if (!planes.insert(s.joints[i].id).second)
-      r.fail(Reader::index("joints", i) + ".id", "duplicate id \"" + s.joints[i].id + "\"");
-  for (size_t i = 0; i < s.free_faces.size(); ++i)
-    if (!planes.insert(s.free_faces[i].id).second)
-      r.fail(Reader::index("free_faces", i) + ".id", "duplicate id \"" + s.free_faces[i].id + "\"");
-  auto check_ids = [&](const auto& items, const char* what) {
-    std::set<std::string> ids;
-    for (size_t i = 0; i < items.size(); ++i)
-      if (!ids.insert(items[i].id).second)
-        r.fail(Reader::index(what, i) + ".id", "duplicate id \"" + items[i].id + "\"");
-  };
-  check_ids(s.blocks, "blocks");
-  check_ids(s.patches, "surface.patches");
-  check_ids(s.traces, "traces");
-  for (size_t i = 0; i < s.blocks.size(); ++i) {
-    const std::string path = Reader::index("blocks", i);
-    for (const auto& [id, code] : s.blocks[i].halfspaces)
-      if (!planes.count(id)) r.fail(path + ".halfspaces." + id, "unknown plane id \"" + id + "\"");
-    for (size_t k = 0; k < s.blocks[i].faces.size(); ++k)
-      if (!planes.count(s.blocks[i].faces[k].plane))
-        r.fail(Reader::index(path + ".faces", k) + ".plane",
-               "unknown plane id \"" + s.blocks[i].faces[k].plane + "\"");
-  }
-  for (size_t i = 0; i < s.traces.size(); ++i)
-    if (s.traces[i].joint && !s.joint(*s.traces[i].joint))
-      r.fail(Reader::index("traces", i) + ".joint",
-             "unknown joint id \"" + *s.traces[i].joint + "\"");
-  if (s.effects.water)
-    for (size_t k = 0; k < s.effects.water->joints.size(); ++k)
-      if (!s.joint(s.effects.water->joints[k]))
-        r.fail(Reader::index("effects.water.joints", k),
-               "unknown joint id \"" + s.effects.water->joints[k] + "\"");
+// The parts of the scene the analysis takes, checked as the analysis input
+// (the same checks as the tablet's input from a project's rows).
+void check_analysis_parts(const Scene& s) {
+  analysis::AnalysisInput in;
+  in.source = s.source;
+  in.datum = s.datum;
+  in.has_datum = s.has_datum;
+  in.density = s.density;
+  in.gravity = s.gravity;
+  in.joints = s.joints;
+  in.free_faces = s.free_faces;
+  in.blocks = s.blocks;
+  in.patches = s.patches;
+  in.traces = s.traces;
+  in.analysis = s.analysis;
+  in.effects = s.effects;
+  analysis::check_analysis_input(in);
 }
 
 }  // namespace
@@ -492,6 +407,12 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   }
   const Reader r(source);
   if (!doc.is_object()) r.fail("(top level)", "must be a JSON object");
+  // The top level's fields; "source": the project and visit a scene export
+  // came from (docs/scene-extensions.md).
+  r.only_fields(doc, "",
+                {"format", "name", "datum", "rock", "gravity", "joints", "free_faces", "blocks",
+                 "surface", "traces", "analysis", "effects", "imaging", "picks", "tunnel", "wedges",
+                 "rockmass", "source"});
   Scene s;
   s.source = source;
   const std::string format = r.string(r.require(doc, "", "format"), "format");
@@ -502,40 +423,19 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     s.datum = r.vec3(*v, "datum");
     s.has_datum = true;
   }
-  if (auto* rock = r.optional(doc, "", "rock"))
-    if (auto* d = r.optional(*rock, "rock", "density")) s.density = r.positive(*d, "rock.density");
+  if (auto* rock = r.optional(doc, "", "rock")) {
+    r.only_fields(*rock, "rock", {"density"});
+    if (auto* d = r.optional(*rock, "rock", "density")) s.density = r.number(*d, "rock.density");
+  }
   if (auto* g = r.optional(doc, "", "gravity")) s.gravity = r.vec3(*g, "gravity");
   s.joints = read_joints(r, doc);
   s.free_faces = read_free_faces(r, doc);
   s.blocks = read_blocks(r, doc);
-  if (auto* surf = r.optional(doc, "", "surface")) {
-    if (auto* ps = r.optional(*surf, "surface", "patches")) {
-      r.array(*ps, "surface.patches");
-      for (size_t i = 0; i < ps->size(); ++i) {
-        const std::string path = Reader::index("surface.patches", i);
-        analysis::ScenePatch patch;
-        patch.id = r.id(r.require((*ps)[i], path, "id"), path + ".id");
-        patch.polygon = read_points(r, r.require((*ps)[i], path, "polygon"), path + ".polygon");
-        if (patch.polygon.size() < 3) r.fail(path + ".polygon", "needs at least 3 points");
-        s.patches.push_back(std::move(patch));
-      }
-    }
-  }
-  if (auto* ts = r.optional(doc, "", "traces")) {
-    r.array(*ts, "traces");
-    for (size_t i = 0; i < ts->size(); ++i) {
-      const std::string path = Reader::index("traces", i);
-      analysis::SceneTrace t;
-      t.id = r.id(r.require((*ts)[i], path, "id"), path + ".id");
-      if (auto* j = r.optional((*ts)[i], path, "joint")) t.joint = r.id(*j, path + ".joint");
-      // A trace with fewer than two points is kept: the trace network rejects
-      // it with its own message and the rest of the map goes on.
-      t.points = read_points(r, r.require((*ts)[i], path, "points"), path + ".points");
-      s.traces.push_back(std::move(t));
-    }
-  }
+  s.patches = read_patches(r, doc);
+  s.traces = read_traces(r, doc);
   s.analysis = read_analysis(r, doc);
-  s.effects = read_effects(r, doc);
+  if (auto* e = r.optional(doc, "", "effects")) s.effects = read_scene_effects(r, *e);
+  check_analysis_parts(s);
   if (auto* im = r.optional(doc, "", "imaging")) s.imaging = read_imaging(r, *im);
   if (auto* p = r.optional(doc, "", "picks")) {
     s.picks = read_picks(*p, source, "picks");
@@ -551,7 +451,6 @@ Scene parse_scene(const std::string& text, const std::string& source) {
         r.fail(Reader::index("wedges.sets", i), "unknown joint id \"" + s.wedges->sets[i] + "\"");
   }
   if (auto* f = r.optional(doc, "", "rockmass")) s.rockmass = read_rockmass_form(r, *f, "rockmass");
-  check_references(r, s);
   return s;
 }
 

@@ -2,8 +2,9 @@
 // by trace (tests/support/dense_face.h: a 20 x 10 m face, each trace with a
 // joint plane of its own) stored in a project; each iteration stores one
 // more trace, as "Save trace" does, and times what the tablet's worker does
-// next: StoreTraceMapRunner::update — read the visit from the project, the
-// scene, and faces::TraceSession's update, which recomputes only the regions
+// next: StoreTraceMapRunner::update — read the visit from the project, its
+// analysis input built from the rows and checked (no scene JSON since issue
+// 37), and faces::TraceSession's update, which recomputes only the regions
 // the new trace touched. On one core (ROCKFACE_THREADS=1), the tablet's
 // worker beside its UI thread.
 #include <benchmark/benchmark.h>

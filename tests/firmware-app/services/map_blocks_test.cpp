@@ -13,7 +13,10 @@
 #include "core/common/progress.h"
 #include "firmware-app/services/ui_services.h"
 #include "storage/project/project_store.h"
+#include "storage/scene/export_scene_json.h"
+#include "storage/scene/scene.h"
 #include "tests/support/dense_face_visit.h"
+#include "tests/support/refusal.h"
 #include "tests/support/temp_folders.h"
 #include "tests/ui/demo_project.h"
 #include "ui/platform/headless_session.h"
@@ -111,6 +114,34 @@ TEST(MapBlocks, AVisitWithoutSurfaceSaysWhatIsMissing) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("surface.patches"), std::string::npos) << e.what();
   }
+}
+
+// Issue 37: the update builds the analysis input from the rows, no scene
+// JSON in between, and refuses what the scene reader refuses in the visit's
+// scene export, in the same words.
+TEST(MapBlocks, TheUpdateRefusesWhatTheSceneReaderRefusesInItsWords) {
+  const fs::path file = test_dir() / "bad-joint.rockface";
+  const test::DenseFace face = test::dense_face(8);
+  const storage::RecordId visit = test::make_dense_visit(file, face, 8);
+  {
+    storage::ProjectStore store = storage::ProjectStore::open(file);
+    storage::Measurement stray = test::trace_measurement(face.traces[7]);
+    stray.label = "T99";
+    stray.joint_label = "J404";  // a joint the visit lacks
+    store.save_measurements(visit, {stray});
+  }
+  const std::string name = file.filename().string() + " visit " + std::to_string(visit);
+  std::string reader;
+  {
+    storage::ProjectStore store = storage::ProjectStore::open(file);
+    const std::string text =
+        storage::make_scene_json(storage::load_scene_source(store, visit)).dump();
+    reader = test::refusal([&] { storage::parse_scene(text, name); });
+  }
+  EXPECT_EQ(reader, name + ": traces[8].joint: unknown joint id \"J404\"");
+  NoProgress progress;
+  app::StoreTraceMapRunner runner;
+  EXPECT_EQ(test::refusal([&] { runner.update(file, visit, progress); }), reader);
 }
 
 // The screen: opening Mapping shows the demo visit's blocks; a trace tapped

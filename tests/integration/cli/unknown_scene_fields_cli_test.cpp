@@ -59,6 +59,17 @@ TEST(UnknownSceneFieldsCli, AMisspeltKeyInAnyObjectIsRefusedByItsPath) {
       {"tunnel-face-demo.scene.json", "analyse",
        [](auto& j) { j["picks"]["traces"][0]["photograph"] = "left"; },
        "picks.traces[0].photograph"},
+      {"slope-wedge.scene.json", "analyse", [](auto& j) { j["joints"][1]["frction"] = 30; },
+       "joints[1].frction"},
+      {"slope-wedge.scene.json", "analyse",
+       [](auto& j) { j["analysis"]["orientation_uncertainty"] = 2; },
+       "analysis.orientation_uncertainty"},
+      {"slope-wedge.scene.json", "analyse",
+       [](auto& j) {
+         j["effects"]["seismic"]["acceleraton"] = {0, 0, 0};
+       },
+       "effects.seismic.acceleraton"},
+      {"slope-wedge.scene.json", "analyse", [](auto& j) { j["effect"] = j["effects"]; }, "effect"},
   };
   const fs::path dir = fs::temp_directory_path() / "unknown-scene-fields-cli";
   fs::remove_all(dir);
