@@ -1,4 +1,5 @@
 #include "firmware-app/replay/field_replay.h"
+#include "core/analysis/preset_options.h"
 #include "firmware-app/replay/field_replay_phases.h"
 
 #include <algorithm>
@@ -294,7 +295,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   ReplayOutcome out;
   const ReplaySource source = open_source(request);
   const photogrammetry::ReconstructionPreset preset =
-      photogrammetry::reconstruction_preset(source.preset);
+      analysis::preset_options(source.preset).reconstruction;
 
   progress.step("capture", 0.0);
   const CapturedPair pair = capture_pair(*source.camera);

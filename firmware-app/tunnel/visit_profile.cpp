@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/analysis/preset_options.h"
 #include "core/common/error.h"
 #include "core/tunnel/face_front.h"
 #include "core/tunnel/surface_reach.h"
@@ -63,7 +64,7 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
     out.round_from = start;
     out.round_from_source = "start of the 3D image";
   }
-  tunnel::DeviationOptions options = tunnel::deviation_options(preset);
+  tunnel::DeviationOptions options = analysis::preset_options(preset).deviation;
   if (sense * (out.round_to - out.round_from) < options.section_spacing_m) {
     // The 3D image holds the face and nothing behind it: no wall, roof or
     // invert to hold against the design. Said so, never zero over- and
