@@ -12,6 +12,7 @@ namespace {
 
 struct ServerVerbOptions {
   std::string server, name, tunnel;
+  std::string office_tunnel;  // add-office --tunnel: the one tunnel an office role reads
 };
 
 VerbRun setup_server(CLI::App& sub) {
@@ -34,9 +35,11 @@ VerbRun setup_server(CLI::App& sub) {
   server_arg(tablet);
   tablet->add_option("ROLE", o->name, "the tablet's role name")->required();
   tablet->add_option("--tunnel", o->tunnel, "the tunnel it adds visits to")->required();
-  CLI::App* office = sub.add_subcommand("add-office", "an office login role that reads all");
+  CLI::App* office = sub.add_subcommand(
+      "add-office", "an office login role that reads every tunnel, or one with --tunnel");
   server_arg(office);
   office->add_option("ROLE", o->name, "the role name")->required();
+  office->add_option("--tunnel", o->office_tunnel, "the one tunnel it reads (default: all)");
   CLI::App* admin = sub.add_subcommand(
       "add-admin",
       "a login role that creates tunnels, tablets and office users (needs a superuser)");
@@ -47,7 +50,7 @@ VerbRun setup_server(CLI::App& sub) {
     if (init->parsed()) lines = run_server_init(o->server);
     if (tunnel->parsed()) lines = run_server_add_tunnel(o->server, o->name);
     if (tablet->parsed()) lines = run_server_add_tablet(o->server, o->name, o->tunnel);
-    if (office->parsed()) lines = run_server_add_office(o->server, o->name);
+    if (office->parsed()) lines = run_server_add_office(o->server, o->name, o->office_tunnel);
     if (admin->parsed()) lines = run_server_add_admin(o->server, o->name);
     for (const auto& line : lines) std::cout << line << "\n";
     return 0;

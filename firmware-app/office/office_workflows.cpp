@@ -89,11 +89,13 @@ std::vector<std::string> run_server_add_tablet(const std::string& server, const 
           " (give it a password with psql's \\password, or a client certificate)"};
 }
 
-std::vector<std::string> run_server_add_office(const std::string& server, const std::string& role) {
+std::vector<std::string> run_server_add_office(const std::string& server, const std::string& role,
+                                               const std::string& tunnel) {
   office::Connection c(server);
   office::require_compatible_server(c);
-  office::add_office_user(c, role);
-  return {c.label() + ": office role " + role + " reads every tunnel"};
+  office::add_office_user(c, role, tunnel);
+  return {c.label() + ": office role " + role +
+          (tunnel.empty() ? " reads every tunnel" : " reads tunnel " + tunnel + " only")};
 }
 
 std::vector<std::string> run_server_add_admin(const std::string& server, const std::string& role) {

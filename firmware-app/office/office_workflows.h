@@ -34,7 +34,9 @@ std::vector<std::string> run_server_init(const std::string& server);
 std::vector<std::string> run_server_add_tunnel(const std::string& server, const std::string& name);
 std::vector<std::string> run_server_add_tablet(const std::string& server, const std::string& role,
                                                const std::string& tunnel);
-std::vector<std::string> run_server_add_office(const std::string& server, const std::string& role);
+// `tunnel` empty: the role reads every tunnel; else that tunnel only.
+std::vector<std::string> run_server_add_office(const std::string& server, const std::string& role,
+                                               const std::string& tunnel = "");
 std::vector<std::string> run_server_add_admin(const std::string& server, const std::string& role);
 
 // The drive of every tablet's visits of the tunnel, from the server: the

@@ -34,9 +34,9 @@
 #include "firmware-app/replay/field_replay.h"
 #include "firmware-app/replay/replay_more_pairs.h"
 #include "firmware-app/replay/replay_picks.h"
-#include "storage/project_records.h"
-#include "storage/project_store.h"
-#include "storage/scene.h"
+#include "storage/project/project_records.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app::field_replay_phases {
 

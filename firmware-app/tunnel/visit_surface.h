@@ -12,7 +12,7 @@
 #include <Eigen/Core>
 
 #include "core/tunnel/profile_deviation.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

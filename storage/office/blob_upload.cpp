@@ -13,8 +13,15 @@ void upload_blob(Connection& server, sqlite::Connection& db, const BlobSource& b
   const std::string doing = "sending " + blob.table + " " + std::to_string(blob.rowid) + "'s " +
                             blob.column + " (" + blob.sha256.substr(0, 12) + ")";
   progress.step("sending photographs and meshes", fraction);
-  Result state = server.query("SELECT complete, chunk_size FROM rockface.blob WHERE sha256 = $1",
-                              {Param::of(blob.sha256)}, doing);
+  // blob_state sees a blob this tablet may not read (another tunnel's copy
+  // of the same bytes: schema version 2 lets a tablet read only the blobs
+  // its tunnel's records refer to, and its own unfinished uploads).
+  const auto blob_state = [&] {
+    return server.query(
+        "SELECT complete, chunk_size, uploader = current_user FROM rockface.blob_state($1)",
+        {Param::of(blob.sha256)}, doing);
+  };
+  Result state = blob_state();
   if (state.rows() == 1 && state.text(0, 0) == "t") {
     ++stats.already_there;
     return;
@@ -25,9 +32,16 @@ void upload_blob(Connection& server, sqlite::Connection& db, const BlobSource& b
         "INSERT INTO rockface.blob (sha256, byte_size, chunk_size) VALUES ($1, $2, $3) "
         "ON CONFLICT (sha256) DO NOTHING",
         {Param::of(blob.sha256), Param::of(blob.size), Param::of(chunk_bytes)}, doing);
-    state = server.query("SELECT complete, chunk_size FROM rockface.blob WHERE sha256 = $1",
-                         {Param::of(blob.sha256)}, doing);
+    state = blob_state();
   }
+  if (state.rows() == 1 && state.text(0, 0) == "t") {  // finished by another meanwhile
+    ++stats.already_there;
+    return;
+  }
+  if (state.rows() != 1 || state.text(0, 2) != "t")
+    throw Error(server.label() + ": " + doing +
+                ": another login is sending the same bytes and has not finished; the next sync "
+                "sends the records that need them");
   // The chunking the upload began with, so that a resumed one fits it.
   const std::int64_t chunk = state.int64(0, 1);
   std::set<std::int64_t> have;

@@ -13,7 +13,7 @@ struct Step {
   int to_version;
   const char* sql;
 };
-constexpr Step kSteps[] = {{1, sql::kVersion1}};
+constexpr Step kSteps[] = {{1, sql::kVersion1}, {2, sql::kVersion2}};
 
 // A role name as rockface creates them: plain lower-case words, so that it
 // needs no quoting in pg_hba.conf or a service file either.
@@ -71,6 +71,7 @@ InitResult init_server(Connection& c) {
   // Roles belong to the cluster, not the database: created outside the
   // layout's transaction so that a second database on the cluster finds them.
   c.exec(sql::kRoles, "creating the rockface roles");
+  c.exec(sql::kRolesVersion2, "creating the rockface roles");
   Transaction tx(c, "creating the rockface layout");
   // One initialiser at a time: a second waits here, then finds the layout.
   c.exec("SELECT pg_advisory_xact_lock(7526351)", "creating the rockface layout");
@@ -113,13 +114,23 @@ void add_tablet(Connection& c, const std::string& role, const std::string& tunne
   tx.commit();
 }
 
-void add_office_user(Connection& c, const std::string& role) {
+void add_office_user(Connection& c, const std::string& role, const std::string& tunnel) {
   require_role_name(role);
   Transaction tx(c, "adding office user " + role);
+  const bool one_tunnel = !tunnel.empty();
+  const std::int64_t id = one_tunnel ? tunnel_id(c, tunnel) : 0;
   const Result exists = c.query("SELECT 1 FROM pg_roles WHERE rolname = $1", {Param::of(role)},
                                 "adding an office user");
   if (exists.rows() == 0) c.exec("CREATE ROLE " + role + " LOGIN", "adding office user " + role);
-  c.exec("GRANT rockface_office TO " + role, "adding office user " + role);
+  if (!one_tunnel) {
+    c.exec("GRANT rockface_office TO " + role, "adding office user " + role);
+  } else {
+    c.exec("GRANT rockface_tunnel_office TO " + role, "adding office user " + role);
+    c.query(
+        "INSERT INTO rockface.tunnel_member (tunnel_id, role_name) VALUES ($1, $2) "
+        "ON CONFLICT DO NOTHING",
+        {Param::of(id), Param::of(role)}, "adding office user " + role + " to tunnel " + tunnel);
+  }
   tx.commit();
 }
 

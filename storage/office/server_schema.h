@@ -1,6 +1,6 @@
 #pragma once
 // The office server's layout (PostgreSQL schema "rockface") and its history,
-// like the project file's (storage/project_schema.h): each change is a
+// like the project file's (storage/project/project_schema.h): each change is a
 // numbered forward step kept forever, run by `rockface server init`, which
 // creates the layout, the three group roles and the row-level-security
 // policies in one transaction, or upgrades an older server.
@@ -23,7 +23,7 @@
 
 namespace rockface::storage::office {
 
-constexpr int kServerSchemaVersion = 1;
+constexpr int kServerSchemaVersion = 2;
 
 // The server's schema version, 0 when it has no rockface layout.
 int server_schema_version(Connection& c);
@@ -52,8 +52,11 @@ void add_tunnel(Connection& c, const std::string& name);
 // password is set here: the administrator gives one with psql's \password
 // or authenticates the tablet by certificate.
 void add_tablet(Connection& c, const std::string& role, const std::string& tunnel);
-// Admin: a login role of the office (member of rockface_office).
-void add_office_user(Connection& c, const std::string& role);
+// Admin: a login role of the office. Without a tunnel it reads every
+// tunnel (member of rockface_office); with one it reads that tunnel only
+// (member of rockface_tunnel_office and of the tunnel, schema version 2).
+// Neither writes.
+void add_office_user(Connection& c, const std::string& role, const std::string& tunnel = "");
 // Superuser (or an admin): a login role that administers the site (member
 // of rockface_admin, with CREATEROLE so that it can add tablets and office
 // users itself: role attributes are not inherited through membership). An

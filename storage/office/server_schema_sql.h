@@ -20,6 +20,16 @@ DO $$ BEGIN
 END $$;
 )sql";
 
+// Version 2's group role (issue 39): an office login that reads one tunnel
+// (as the tunnel's member) and writes nothing. Roles belong to the cluster.
+inline constexpr const char* kRolesVersion2 = R"sql(
+DO $$ BEGIN
+  IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'rockface_tunnel_office') THEN
+    CREATE ROLE rockface_tunnel_office NOLOGIN;
+  END IF;
+END $$;
+)sql";
+
 // Version 1. Records are append-only: a change on a tablet is a new revision
 // (kind, uuid, revision), so the server keeps every record's history and a
 // tablet never needs UPDATE or DELETE. A record's body is the tablet's row
@@ -221,6 +231,79 @@ GRANT USAGE ON ALL SEQUENCES IN SCHEMA rockface TO rockface_tablet, rockface_adm
 REVOKE EXECUTE ON FUNCTION rockface.complete_blob(text) FROM PUBLIC;
 GRANT EXECUTE ON FUNCTION rockface.complete_blob(text) TO rockface_tablet, rockface_admin;
 INSERT INTO rockface.meta (key, value) VALUES ('server_id', gen_random_uuid()::text);
+)sql";
+
+// Version 2 (issue 39): a photograph or a mesh is read only by those who may
+// read a record referring to it. Version 1 let every role read every blob and
+// chunk, so a tablet of one tunnel read another tunnel's photographs.
+// - rockface.blob_ref says which tunnels' records refer to a blob; the record
+//   trigger fills it (definer's rights) and its own row-level security is the
+//   record's (office or a member of the tunnel).
+// - A blob is readable when a readable blob_ref names it, or by its uploader
+//   while the upload is unfinished (a resumed upload reads its own chunks); a
+//   chunk is readable when its blob is, and added only by the blob's uploader.
+// - rockface.blob_state tells a tablet whether a blob it may not read is
+//   already on the server (its name is the hash of bytes the tablet holds, so
+//   it learns nothing it does not already have): the same photograph synced
+//   by two tunnels is stored once and not sent twice.
+// - rockface_tunnel_office: an office login that reads one tunnel (as a
+//   member) and writes nothing, besides rockface_office that reads them all.
+inline constexpr const char* kVersion2 = R"sql(
+CREATE TABLE rockface.blob_ref (
+  sha256 text NOT NULL REFERENCES rockface.blob(sha256) ON DELETE CASCADE,
+  tunnel_id bigint NOT NULL REFERENCES rockface.tunnel(id) ON DELETE CASCADE,
+  PRIMARY KEY (sha256, tunnel_id)
+);
+CREATE INDEX blob_ref_by_tunnel ON rockface.blob_ref(tunnel_id);
+INSERT INTO rockface.blob_ref (sha256, tunnel_id)
+  SELECT DISTINCT q.s, r.tunnel_id
+    FROM rockface.record r,
+         LATERAL (SELECT jsonb_path_query(r.body, 'lax $.**."$blob"') #>> '{}' AS s) q
+   WHERE EXISTS (SELECT 1 FROM rockface.blob b WHERE b.sha256 = q.s);
+
+CREATE FUNCTION rockface.record_blob_refs() RETURNS trigger LANGUAGE plpgsql
+  SECURITY DEFINER SET search_path = pg_catalog, rockface AS $$
+BEGIN
+  INSERT INTO rockface.blob_ref (sha256, tunnel_id)
+    SELECT DISTINCT q.s, NEW.tunnel_id
+      FROM (SELECT jsonb_path_query(NEW.body, 'lax $.**."$blob"') #>> '{}' AS s) q
+    ON CONFLICT DO NOTHING;
+  RETURN NULL;
+END $$;
+CREATE TRIGGER record_blob_refs AFTER INSERT ON rockface.record
+  FOR EACH ROW EXECUTE FUNCTION rockface.record_blob_refs();
+
+CREATE FUNCTION rockface.blob_uploader(s text) RETURNS name LANGUAGE sql STABLE
+  SECURITY DEFINER SET search_path = pg_catalog, rockface AS
+  $$ SELECT created_by FROM rockface.blob WHERE sha256 = s $$;
+CREATE FUNCTION rockface.blob_state(s text)
+  RETURNS TABLE (complete boolean, chunk_size integer, uploader name) LANGUAGE sql STABLE
+  SECURITY DEFINER SET search_path = pg_catalog, rockface AS
+  $$ SELECT complete, chunk_size, created_by FROM rockface.blob WHERE sha256 = s $$;
+
+ALTER TABLE rockface.blob_ref ENABLE ROW LEVEL SECURITY;
+CREATE POLICY admin_all ON rockface.blob_ref USING (rockface.is_admin());
+CREATE POLICY read_tunnel ON rockface.blob_ref FOR SELECT
+  USING (rockface.is_office() OR rockface.is_member(tunnel_id));
+
+DROP POLICY read_all ON rockface.blob;
+CREATE POLICY read_referred ON rockface.blob FOR SELECT
+  USING ((created_by = current_user AND NOT complete)
+         OR EXISTS (SELECT 1 FROM rockface.blob_ref r WHERE r.sha256 = blob.sha256));
+DROP POLICY read_all ON rockface.blob_chunk;
+CREATE POLICY read_with_blob ON rockface.blob_chunk FOR SELECT
+  USING (EXISTS (SELECT 1 FROM rockface.blob b WHERE b.sha256 = blob_chunk.sha256));
+DROP POLICY tablet_adds ON rockface.blob_chunk;
+CREATE POLICY uploader_adds ON rockface.blob_chunk FOR INSERT
+  WITH CHECK (rockface.blob_uploader(sha256) = current_user
+              AND NOT rockface.blob_is_complete(sha256));
+
+GRANT SELECT ON rockface.blob_ref TO rockface_tablet, rockface_office, rockface_tunnel_office;
+GRANT ALL ON rockface.blob_ref TO rockface_admin;
+GRANT USAGE ON SCHEMA rockface TO rockface_tunnel_office;
+GRANT SELECT ON ALL TABLES IN SCHEMA rockface TO rockface_tunnel_office;
+REVOKE EXECUTE ON FUNCTION rockface.blob_state(text) FROM PUBLIC;
+GRANT EXECUTE ON FUNCTION rockface.blob_state(text) TO rockface_tablet, rockface_admin;
 )sql";
 
 }  // namespace rockface::storage::office::sql

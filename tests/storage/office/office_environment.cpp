@@ -6,6 +6,7 @@
 
 #include "storage/office/pg_connection.h"
 #include "storage/office/server_schema.h"
+#include "storage/office/server_schema_sql.h"
 
 namespace rockface::office_test {
 
@@ -50,6 +51,18 @@ std::string fresh_database(const std::string& tunnel) {
   storage::office::add_tablet(c, "tablet_a", tunnel);
   storage::office::add_tablet(c, "tablet_b", tunnel);
   storage::office::add_office_user(c, "office_reader");
+  return db;
+}
+
+std::string fresh_database_at_version_one() {
+  static int count = 0;
+  const std::string db = "old_site" + std::to_string(++count);
+  server().psql("CREATE DATABASE " + db, "postgres");
+  storage::office::Connection c(as_superuser(db));
+  c.exec(storage::office::sql::kRoles, "creating the roles of version 1");
+  c.exec(storage::office::sql::kVersion1, "creating the layout of version 1");
+  c.exec("INSERT INTO rockface.meta (key, value) VALUES ('schema_version', '1')",
+         "marking version 1");
   return db;
 }
 

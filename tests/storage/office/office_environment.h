@@ -14,6 +14,9 @@ test::PostgresServer& server();
 // tablet_a and tablet_b members of it, and office user office_reader.
 // Returns its name.
 std::string fresh_database(const std::string& tunnel = "Main drive");
+// A new database as `rockface server init` of schema version 1 left it
+// (no tunnels, tablets or rows): for the upgrade's tests.
+std::string fresh_database_at_version_one();
 
 // Socket connection strings to database `db` as a role.
 std::string as_superuser(const std::string& db);
