@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/analysis/preset_options.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/kinematics/remote_axis.h"
@@ -58,7 +59,7 @@ void analyse_block_rotation(const blocks::Polyhedron& block, const SceneAnalysis
   if (analysis.rotation) out.rotation = rotation_report(in, rotation);
   if (analysis.remote_axis) {
     const int starts =
-        analysis.remote_axis->starts.value_or(kinematics::remote_axis_starts(analysis.preset));
+        analysis.remote_axis->starts.value_or(preset_options(analysis.preset).remote_axis_starts);
     if (starts < 1)
       throw InputError("analysis.remote_axis.starts",
                        std::to_string(starts) + " is not a positive number");

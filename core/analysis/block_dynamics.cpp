@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/analysis/preset_options.h"
 #include "core/blocks/mass_properties.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
@@ -118,7 +119,7 @@ void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput&
     friction[i] = reduced;
     d.friction_deg[bp.name] = reduced;
   }
-  mechanics::DynamicsOptions o = mechanics::dynamics_options(scene.analysis.preset);
+  mechanics::DynamicsOptions o = preset_options(scene.analysis.preset).dynamics;
   o.duration = sd.duration_s;
   o.sample = sd.sample_s;
   if (sd.abs_tol) o.abs_tol = *sd.abs_tol;

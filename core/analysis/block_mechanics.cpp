@@ -4,6 +4,7 @@
 #include <memory>
 #include <sstream>
 
+#include "core/analysis/preset_options.h"
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/mechanics/equilibrium_path.h"
@@ -79,7 +80,7 @@ void analyse_block_mechanics(const blocks::Polyhedron& poly, const AnalysisInput
                              const std::vector<kinematics::JointStrength>& strengths,
                              const kinematics::Effects& effects, ReportBlock& rb,
                              Progress* progress) {
-  mechanics::MechanicsOptions o = mechanics::mechanics_options(scene.analysis.preset);
+  mechanics::MechanicsOptions o = preset_options(scene.analysis.preset).mechanics;
   if (scene.analysis.contact_density) o.contact_density = *scene.analysis.contact_density;
   if (scene.analysis.continuation_step) o.step = *scene.analysis.continuation_step;
   if (scene.analysis.max_steps) o.max_steps = *scene.analysis.max_steps;

@@ -481,6 +481,18 @@ void order_wedges(std::vector<Wedge>& wedges) {
 
 }  // namespace wedge_phases
 
+double wedge_sagitta(Preset preset) {
+  switch (preset) {
+    case Preset::fast:
+      return 0.01;
+    case Preset::standard:
+      return 0.002;
+    case Preset::precise:
+      return 0.0005;
+  }
+  return 0.002;
+}
+
 WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& frame,
                              const Eigen::Vector3d& datum, const std::vector<WedgeJointSet>& sets,
                              const WedgeOptions& options) {

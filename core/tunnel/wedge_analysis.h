@@ -23,6 +23,7 @@
 
 #include "core/blocks/mass_properties.h"
 #include "core/blocks/polyhedron.h"
+#include "core/common/preset.h"
 #include "core/geometry/verdict.h"
 #include "core/kinematics/sliding_mode.h"
 #include "core/tunnel/alignment.h"
@@ -58,6 +59,11 @@ struct WedgeOptions {
   double uncertainty = 0.017453292519943295;  // radians (1 degree)
   double sagitta_m = 0.002;                   // chords of the profile's arcs
 };
+
+// The chords' sagitta of each preset (the knob beside its component, issue
+// 37): fast 10 mm, standard 2 mm, precise 0.5 mm (docs/accuracy-cost.md,
+// "Wedges around the excavation").
+double wedge_sagitta(Preset preset);
 
 enum class WedgePlace { roof, right_wall, left_wall, floor, face };
 const char* wedge_place_name(WedgePlace p);  // "roof", "right wall", ...

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/analysis/preset_options.h"
 #include "core/common/error.h"
 #include "core/common/preset.h"
 #include "core/measure/pair_photo.h"
@@ -124,9 +125,12 @@ LoadedModel load_stored_model(storage::ProjectStore& store, const ModelSource& o
   // tool may leave it blank) keeps the behaviour the measure verb had since
   // it came: the standard preset's window, since refusing would make a
   // stored model unmeasurable for a label that only sizes a correlation length.
-  const auto preset = photogrammetry::reconstruction_preset(
-      model.preset.empty() ? Preset::standard
-                           : parse_preset(model.preset, "model " + std::to_string(id) + " preset"));
+  const auto preset =
+      analysis::preset_options(
+          model.preset.empty()
+              ? Preset::standard
+              : parse_preset(model.preset, "model " + std::to_string(id) + " preset"))
+          .reconstruction;
   m.correlation_length = m.mesh.median_edge_length() * preset.sgbm_block_size;
   return m;
 }

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "core/analysis/preset_options.h"
 #include "core/common/error.h"
 #include "core/measure/mesh_picker.h"
 #include "firmware-app/propose/trace_proposals_run.h"
@@ -43,7 +44,7 @@ ProposeResult propose_for_visit(const ProposeRequest& request, Progress& progres
   measure::MeasureSettings settings;
   settings.point_sigma = r.model.point_sigma;
   settings.correlation_length = r.model.correlation_length;
-  measure::FacetOptions options = measure::facet_options(request.preset);
+  measure::FacetOptions options = analysis::preset_options(request.preset).facets;
   if (request.angle_tolerance_deg) options.angle_tolerance_deg = *request.angle_tolerance_deg;
   if (request.min_area_m2) options.min_area_m2 = *request.min_area_m2;
   if (request.planarity_in_sigmas) options.planarity_in_sigmas = *request.planarity_in_sigmas;

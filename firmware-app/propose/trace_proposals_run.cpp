@@ -1,5 +1,6 @@
 #include "firmware-app/propose/trace_proposals_run.h"
 
+#include "core/analysis/preset_options.h"
 #include "core/common/units.h"
 #include "firmware-app/measure/measures_json.h"
 
@@ -19,7 +20,7 @@ measure::ProposalResult propose_on_model(const photogrammetry::SurfaceMesh& mesh
                                          const measure::PhotoView& view, const cv::Mat& photo,
                                          const std::vector<measure::ProposalFacet>& facets,
                                          Preset preset, double point_sigma_m, Progress& progress) {
-  measure::ProposalOptions options = measure::proposal_options(preset);
+  measure::ProposalOptions options = analysis::preset_options(preset).proposals;
   options.measure.point_sigma = point_sigma_m;
   if (!mesh.pixels.empty() || photo.empty() || mesh.texcoords.size() != mesh.size())
     return measure::propose_traces(mesh, picker, view, photo, facets, options, progress,

@@ -5,6 +5,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/analysis/preset_options.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/preset.h"
@@ -39,7 +40,7 @@ photogrammetry::NorthReference parse_north(const PairReconstructionRequest& o) {
 photogrammetry::ReconstructionResult reconstruct_pair_files(const PairReconstructionRequest& o,
                                                             Progress& progress) {
   // Check every argument before the long work starts.
-  const auto preset = photogrammetry::reconstruction_preset(parse_preset(o.preset, "--preset"));
+  const auto preset = analysis::preset_options(parse_preset(o.preset, "--preset")).reconstruction;
   const std::string ext = std::filesystem::path(o.out).extension().string();
   if (ext != ".ply" && ext != ".obj")
     throw InputError("--out", "the model file must end in .ply or .obj, not '" + ext + "'");

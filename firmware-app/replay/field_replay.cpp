@@ -1,4 +1,6 @@
 #include "firmware-app/replay/field_replay.h"
+#include "core/analysis/preset_options.h"
+#include "firmware-app/replay/field_replay_phases.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,12 +35,104 @@
 
 namespace rockface::app {
 
-namespace {
+namespace field_replay_phases {
 
 namespace fs = std::filesystem;
 
-// Compass bearing (degrees clockwise from north) of the horizontal
-// projection of a line, and its end points in the left image.
+ReplaySource open_source(const ReplayRequest& request) {
+  const bool from_scene = fs::is_regular_file(request.source);
+  if (!from_scene && !fs::is_directory(request.source))
+    throw InputError(request.source, "neither a scene file nor a folder of captures");
+  ReplaySource out;
+  out.spool = fs::path(request.project).parent_path() /
+              (fs::path(request.project).filename().string() + ".spool");
+  if (from_scene) {
+    out.scene = storage::load_scene(request.source);
+    out.synthetic = synthetic_scene_from_scene(*out.scene);
+    // A pick naming a pair the scene does not photograph, or a pixel outside
+    // the photographs: bad input before anything is captured or stored.
+    check_picks_before_capture(*out.scene, std::max<std::size_t>(1, out.synthetic->pairs.size()));
+    // A typed placement off the alignment: refused before the camera
+    // spools a shot or the project is created (issue 41).
+    out.typed_pole = typed_range_pole(*out.scene);
+    out.camera = camera::MockCamera::synthetic(out.synthetic->scene, out.spool.string());
+    out.intrinsics = camera::rendered_intrinsics(out.synthetic->scene);
+    out.intrinsics.body = "rockface synthetic camera";
+    if (out.synthetic->scene.range_pole)
+      out.sources.range_pole_m = out.synthetic->scene.range_pole->length;
+    out.sources.north = compass_reading(out.synthetic->scene, out.intrinsics);
+  } else {
+    const fs::path cam_file = fs::path(request.source) / "camera.json";
+    if (!fs::exists(cam_file))
+      throw InputError(cam_file.string(),
+                       "a capture folder needs the calibration of its camera (camera.json)");
+    out.intrinsics = storage::load_camera_json(cam_file.string());
+    out.camera = camera::MockCamera::replay(request.source, out.spool.string());
+  }
+  out.preset = request.preset.value_or(out.scene ? out.scene->analysis.preset : Preset::standard);
+  return out;
+}
+
+CapturedPair capture_pair(camera::MockCamera& camera) {
+  CapturedPair out;
+  camera.lock_focus();
+  out.left = camera.capture();
+  out.right = camera.capture();
+  camera::require_same_optics(out.left.exif, out.right.exif);
+  for (const auto& note : camera::check_pair(out.left.exif, out.right.exif))
+    out.guidance.push_back(note.text);
+  return out;
+}
+
+StoredCapture store_capture(storage::ProjectStore& store, const ReplayRequest& request,
+                            const ReplaySource& source, const CapturedPair& pair,
+                            storage::RecordId visit_id, const std::string& preset_name) {
+  const camera::Capture& left = pair.left;
+  const camera::Capture& right = pair.right;
+  storage::CameraBody body;
+  body.make = left.exif.make.empty() ? "unknown" : left.exif.make;
+  body.model = left.exif.model.empty() ? source.camera->model() : left.exif.model;
+  storage::Calibration calibration;
+  calibration.body_id = store.save_camera_body(body);
+  calibration.intrinsics = source.intrinsics;
+  calibration.focal_setting_mm = left.exif.focal_length_mm.value_or(0);
+  calibration.method =
+      source.scene ? "synthetic (rendering camera)" : "camera.json of " + request.source;
+  StoredCapture out;
+  out.calibration_id = store.save_calibration(calibration);
+
+  storage::Capture capture;
+  capture.visit_id = visit_id;
+  capture.calibration_id = out.calibration_id;
+  capture.label = "replay pair";
+  capture.left.bytes = left.image.data;
+  capture.right.bytes = right.image.data;
+  capture.left_exif = camera::exif_fields(left.exif);
+  capture.right_exif = camera::exif_fields(right.exif);
+  capture.settings["preset"] = preset_name;
+  out.capture_id = store.save_capture(capture);
+  return out;
+}
+
+photogrammetry::ReconstructionResult reconstruct_pair(
+    const cv::Mat& left_image, const cv::Mat& right_image, const ReplaySource& source,
+    const photogrammetry::ReconstructionPreset& preset, Progress& progress) {
+  photogrammetry::ReconstructionResult rec =
+      photogrammetry::reconstruct(left_image, right_image, source.intrinsics, source.intrinsics,
+                                  preset, source.sources, progress);
+  // In a tunnel the geologist may type where the pole stood (chainage,
+  // offset, height) instead of surveying it.
+  if (source.synthetic && source.synthetic->scene.range_pole && rec.targets)
+    move_to_pole(rec, source.typed_pole.value_or(source.synthetic->scene.range_pole->base));
+  return rec;
+}
+
+void move_to_pole(photogrammetry::ReconstructionResult& rec, const Eigen::Vector3d& pole) {
+  const Eigen::Vector3d shift = pole - rec.model_to_world.apply(rec.targets->model[0]);
+  rec.mesh.transform(1.0, Eigen::Matrix3d::Identity(), shift);
+  rec.model_to_world.t += shift;
+}
+
 std::optional<photogrammetry::NorthReference> compass_reading(
     const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k) {
   if (!scene.reference_line) return std::nullopt;
@@ -64,8 +158,6 @@ std::optional<photogrammetry::NorthReference> compass_reading(
   return north;
 }
 
-// Each scene joint that has picked traces: its measured plane beside the
-// scene's.
 std::vector<JointComparison> joint_comparisons(const storage::Scene& scene,
                                                const measure::MeasuredPicks& measured) {
   std::vector<JointComparison> out;
@@ -94,115 +186,149 @@ std::vector<JointComparison> joint_comparisons(const storage::Scene& scene,
   return out;
 }
 
-}  // namespace
+std::vector<analysis::SceneTrace> true_face_traces(const storage::Scene& scene,
+                                                   const SyntheticSceneInput& synthetic) {
+  std::vector<analysis::SceneTrace> out;
+  int n = 0;
+  for (const auto& seg : camera::true_trace_segments(synthetic.scene)) {
+    if (scene.tunnel && scene.tunnel->render && seg.patch.rfind("FACE", 0) != 0) continue;
+    out.push_back({"T" + std::to_string(++n),
+                   seg.joint,
+                   {seg.world[0] + synthetic.origin, seg.world[1] + synthetic.origin}});
+  }
+  return out;
+}
+
+std::vector<analysis::ScenePatch> rendered_face(const SyntheticSceneInput& synthetic) {
+  std::vector<analysis::ScenePatch> out;
+  for (const auto& p : synthetic.scene.patches)
+    if (p.id.rfind("FACE", 0) == 0) {
+      out.push_back({p.id, {}});
+      for (const auto& x : p.polygon) out.back().polygon.push_back(x + synthetic.origin);
+    }
+  return out;
+}
+
+analysis::AnalysisInput replay_analysis_input(const storage::Scene& scene,
+                                              const SyntheticSceneInput& synthetic,
+                                              const ReplayPicks* picked,
+                                              const std::string& source_name) {
+  analysis::AnalysisInput analysed = analysis_input(scene);
+  if (picked) {
+    analysed.traces = picked->traces;
+    analysed.joints = picked->joints;
+  }
+  if (analysed.traces.empty()) analysed.traces = true_face_traces(scene, synthetic);
+  if (analysed.patches.empty() && scene.tunnel && scene.tunnel->render)
+    analysed.patches = rendered_face(synthetic);
+  if (analysed.patches.empty())
+    throw InputError(source_name, "surface.patches: the scene has no free surface");
+  return analysed;
+}
+
+std::vector<storage::Measurement> visit_measurements(const analysis::AnalysisInput& analysed,
+                                                     const ReplayPicks* picked,
+                                                     const MorePairsOutcome* more,
+                                                     const VisitRecordIds& ids,
+                                                     const Eigen::Vector3d& datum) {
+  std::vector<storage::Measurement> measurements;
+  auto measured = [&](storage::Measurement::Kind kind, const std::string& label,
+                      const std::vector<Eigen::Vector3d>& absolute) {
+    storage::Measurement m;
+    m.visit_id = ids.visit_id;
+    m.model_id = ids.model_id;
+    m.kind = kind;
+    m.label = label;
+    for (const auto& p : absolute) m.points.push_back(p - datum);
+    return m;
+  };
+  if (picked) {
+    // Each measurement with its own pair's model and capture.
+    std::map<std::string, PairRecords> further;
+    if (more)
+      for (std::size_t k = 0; k < more->model_ids.size(); ++k)
+        further[measure::pair_photo(static_cast<int>(k) + 2, "left")] = {more->model_ids[k],
+                                                                         more->capture_ids[k]};
+    measurements = measurement_records(picked->measured, ids.visit_id,
+                                       {ids.model_id, ids.capture_id}, further);
+    join_trace_records(picked->joined, measurements);
+  } else
+    for (const auto& t : analysed.traces) {
+      measurements.push_back(measured(storage::Measurement::Kind::trace, t.id, t.points));
+      measurements.back().joint_label = t.joint.value_or("");
+    }
+  for (const auto& patch : analysed.patches)
+    measurements.push_back(measured(storage::Measurement::Kind::area, patch.id, patch.polygon));
+  return measurements;
+}
+
+std::vector<storage::Joint> visit_joints(const analysis::AnalysisInput& analysed,
+                                         const ReplayPicks* picked, storage::RecordId visit_id,
+                                         const Eigen::Vector3d& datum) {
+  std::vector<storage::Joint> joints;
+  for (const auto& j : analysed.joints) {
+    storage::Joint joint;
+    joint.visit_id = visit_id;
+    joint.label = j.id;
+    joint.dip_deg = j.dip;
+    joint.dipdir_deg = j.dipdir;
+    if (j.point) joint.point = *j.point - datum;
+    joint.friction_deg = j.friction;
+    joint.cohesion_pa = j.cohesion;
+    joint.source = "scene";
+    if (picked)
+      for (const auto& m : picked->measured.joints)
+        if (m.label == j.id && m.plane.known) {
+          joint.source = "traces";
+          for (const auto& t : m.traces) joint.source += " " + t;
+          joint.type = "trace";
+        }
+    joints.push_back(joint);
+  }
+  return joints;
+}
+
+}  // namespace field_replay_phases
 
 ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& progress) {
+  using namespace field_replay_phases;
   ReplayOutcome out;
-  const bool from_scene = fs::is_regular_file(request.source);
-  if (!from_scene && !fs::is_directory(request.source))
-    throw InputError(request.source, "neither a scene file nor a folder of captures");
+  const ReplaySource source = open_source(request);
+  const photogrammetry::ReconstructionPreset preset =
+      analysis::preset_options(source.preset).reconstruction;
 
-  std::optional<storage::Scene> scene;
-  std::optional<SyntheticSceneInput> synthetic;
-  std::optional<Eigen::Vector3d> typed_pole;
-  std::unique_ptr<camera::MockCamera> cam;
-  photogrammetry::CameraIntrinsics intrinsics;
-  photogrammetry::RegistrationSources sources;
-  const fs::path spool = fs::path(request.project).parent_path() /
-                         (fs::path(request.project).filename().string() + ".spool");
-  if (from_scene) {
-    scene = storage::load_scene(request.source);
-    synthetic = synthetic_scene_from_scene(*scene);
-    // A pick naming a pair the scene does not photograph, or a pixel outside
-    // the photographs: bad input before anything is captured or stored.
-    check_picks_before_capture(*scene, std::max<std::size_t>(1, synthetic->pairs.size()));
-    // A typed placement off the alignment: refused before the camera
-    // spools a shot or the project is created (issue 41).
-    typed_pole = typed_range_pole(*scene);
-    cam = camera::MockCamera::synthetic(synthetic->scene, spool.string());
-    intrinsics = camera::rendered_intrinsics(synthetic->scene);
-    intrinsics.body = "rockface synthetic camera";
-    if (synthetic->scene.range_pole) sources.range_pole_m = synthetic->scene.range_pole->length;
-    sources.north = compass_reading(synthetic->scene, intrinsics);
-  } else {
-    const fs::path cam_file = fs::path(request.source) / "camera.json";
-    if (!fs::exists(cam_file))
-      throw InputError(cam_file.string(),
-                       "a capture folder needs the calibration of its camera (camera.json)");
-    intrinsics = storage::load_camera_json(cam_file.string());
-    cam = camera::MockCamera::replay(request.source, spool.string());
-  }
-  // --preset, else the scene's analysis.preset; a capture folder has no
-  // scene, so its default is the scene's default (standard).
-  const Preset chosen = request.preset.value_or(scene ? scene->analysis.preset : Preset::standard);
-  const photogrammetry::ReconstructionPreset preset = photogrammetry::reconstruction_preset(chosen);
-
-  // Capture the pair: focus locked after the first shot, optics checked.
   progress.step("capture", 0.0);
-  cam->lock_focus();
-  const camera::Capture left = cam->capture();
-  const camera::Capture right = cam->capture();
-  camera::require_same_optics(left.exif, right.exif);
-  for (const auto& note : camera::check_pair(left.exif, right.exif))
-    out.guidance.push_back(note.text);
+  const CapturedPair pair = capture_pair(*source.camera);
+  out.guidance = pair.guidance;
 
   storage::ProjectInfo info;
-  info.name =
-      scene && !scene->name.empty() ? scene->name : fs::path(request.source).filename().string();
-  if (scene) info.datum = scene->datum;
+  info.name = source.scene && !source.scene->name.empty()
+                  ? source.scene->name
+                  : fs::path(request.source).filename().string();
+  if (source.scene) info.datum = source.scene->datum;
   storage::ProjectStore store = storage::ProjectStore::open_or_create(request.project, info);
   if (store.read_only())
     throw InputError(request.project, "cannot replay into it: " + store.read_only_reason());
   out.visit_id = store.begin_visit("replay " + request.source);
+  const StoredCapture stored =
+      store_capture(store, request, source, pair, out.visit_id, preset.name);
+  out.capture_id = stored.capture_id;
 
-  storage::CameraBody body;
-  body.make = left.exif.make.empty() ? "unknown" : left.exif.make;
-  body.model = left.exif.model.empty() ? cam->model() : left.exif.model;
-  storage::Calibration calibration;
-  calibration.body_id = store.save_camera_body(body);
-  calibration.intrinsics = intrinsics;
-  calibration.focal_setting_mm = left.exif.focal_length_mm.value_or(0);
-  calibration.method =
-      from_scene ? "synthetic (rendering camera)" : "camera.json of " + request.source;
-  const storage::RecordId calibration_id = store.save_calibration(calibration);
-
-  storage::Capture capture;
-  capture.visit_id = out.visit_id;
-  capture.calibration_id = calibration_id;
-  capture.label = "replay pair";
-  capture.left.bytes = left.image.data;
-  capture.right.bytes = right.image.data;
-  capture.left_exif = camera::exif_fields(left.exif);
-  capture.right_exif = camera::exif_fields(right.exif);
-  capture.settings["preset"] = preset.name;
-  out.capture_id = store.save_capture(capture);
-
-  // Reconstruct and register.
-  const cv::Mat left_image = decode_shot(left.image, "left");
-  const cv::Mat right_image = decode_shot(right.image, "right");
-  photogrammetry::ReconstructionResult rec = photogrammetry::reconstruct(
-      left_image, right_image, intrinsics, intrinsics, preset, sources, progress);
-  // The registered frame has its origin at the pole (heading turned about
-  // the reference line); the scene surveys where the pole stood, so the
-  // model moves into the project frame (datum-relative) of the traces and joints.
-  // In a tunnel the geologist may type where the pole stood (chainage,
-  // offset, height) instead of surveying it.
-  if (synthetic && synthetic->scene.range_pole && rec.targets) {
-    const Eigen::Vector3d pole = typed_pole.value_or(synthetic->scene.range_pole->base);
-    const Eigen::Vector3d shift = pole - rec.model_to_world.apply(rec.targets->model[0]);
-    rec.mesh.transform(1.0, Eigen::Matrix3d::Identity(), shift);
-    rec.model_to_world.t += shift;
-  }
+  const cv::Mat left_image = decode_shot(pair.left.image, "left");
+  const cv::Mat right_image = decode_shot(pair.right.image, "right");
+  const photogrammetry::ReconstructionResult rec =
+      reconstruct_pair(left_image, right_image, source, preset, progress);
   const storage::Model model =
       model_record(rec, out.capture_id,
-                   {left.image.saved_path, right.image.saved_path, preset.name,
-                    sources.range_pole_m, sources.baseline_m, sources.north});
+                   {pair.left.image.saved_path, pair.right.image.saved_path, preset.name,
+                    source.sources.range_pole_m, source.sources.baseline_m, source.sources.north});
   out.model_id = store.save_model(model);
   std::optional<MorePairsOutcome> more;
-  if (synthetic && synthetic->pairs.size() > 1) {
-    more = replay_more_pairs(
-        store, {out.visit_id, calibration_id, &*synthetic, intrinsics, preset.name, preset, spool},
-        left_image, rec, progress);
+  if (source.synthetic && source.synthetic->pairs.size() > 1) {
+    more = replay_more_pairs(store,
+                             {out.visit_id, stored.calibration_id, &*source.synthetic,
+                              source.intrinsics, preset.name, preset, source.spool},
+                             left_image, rec, progress);
     out.more_model_ids = more->model_ids;
     for (const auto& r : more->face.images)
       if (r.reference >= 0)
@@ -217,112 +343,41 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   out.scaled = rec.scaled;
   for (const auto& w : rec.accuracy.warnings) out.guidance.push_back(w);
 
-  if (!scene) return out;  // a capture folder has no traces to analyse
-  if (scene->tunnel) out.guidance.push_back(place_replayed_visit(store, *scene, out.visit_id));
+  if (!source.scene) return out;  // a capture folder has no traces to analyse
+  const storage::Scene& scene = *source.scene;
+  if (scene.tunnel) out.guidance.push_back(place_replayed_visit(store, scene, out.visit_id));
 
   // Traces: measured on the reconstructed image where the scene gives picks
   // (replay_picks.h); else those of the scene, or the synthetic scene's true
   // traces (what the geologist would mark on the model).
   std::optional<ReplayPicks> picked;
-  if (scene->picks) {
+  if (scene.picks) {
     progress.step("measure", 0.75);
-    picked = measure_replay_picks(*scene, rec, intrinsics, preset, left_image, right_image,
+    picked = measure_replay_picks(scene, rec, source.intrinsics, preset, left_image, right_image,
                                   more ? &*more : nullptr);
     for (const auto& note : picked->notes) out.guidance.push_back(note);
-    out.joints = joint_comparisons(*scene, picked->measured);
+    out.joints = joint_comparisons(scene, picked->measured);
   }
-  // The analysis input, filled once from the scene and then with what was
-  // measured: the measured traces and joint planes.
-  analysis::AnalysisInput analysed = analysis_input(*scene);
-  if (picked) {
-    analysed.traces = picked->traces;
-    analysed.joints = picked->joints;
-  }
-  if (analysed.traces.empty()) {
-    int n = 0;
-    for (const auto& seg : camera::true_trace_segments(synthetic->scene)) {
-      // A rendered tunnel's walls are thousands of facets: the geologist maps
-      // the face, so only the face's traces are taken.
-      if (scene->tunnel && scene->tunnel->render && seg.patch.rfind("FACE", 0) != 0) continue;
-      analysed.traces.push_back(
-          {"T" + std::to_string(++n),
-           seg.joint,
-           {seg.world[0] + synthetic->origin, seg.world[1] + synthetic->origin}});
-    }
-  }
-  if (analysed.patches.empty() && scene->tunnel && scene->tunnel->render) {
-    // A rendered tunnel's free surface is its face.
-    for (const auto& p : synthetic->scene.patches)
-      if (p.id.rfind("FACE", 0) == 0) {
-        analysed.patches.push_back({p.id, {}});
-        for (const auto& x : p.polygon)
-          analysed.patches.back().polygon.push_back(x + synthetic->origin);
-      }
-  }
-  if (analysed.patches.empty())
-    throw InputError(request.source, "surface.patches: the scene has no free surface");
+  const ReplayPicks* picks = picked ? &*picked : nullptr;
+  const analysis::AnalysisInput analysed =
+      replay_analysis_input(scene, *source.synthetic, picks, request.source);
   // The traces, and the free surface as areas: with the joints below, the
   // visit holds all the analysis needs, so it can be analysed again from
   // the project alone (the tablet UI does).
-  std::vector<storage::Measurement> measurements;
-  auto measured = [&](storage::Measurement::Kind kind, const std::string& label,
-                      const std::vector<Eigen::Vector3d>& absolute) {
-    storage::Measurement m;
-    m.visit_id = out.visit_id;
-    m.model_id = out.model_id;
-    m.kind = kind;
-    m.label = label;
-    for (const auto& p : absolute) m.points.push_back(p - scene->datum);
-    return m;
-  };
-  if (picked) {
-    // Each measurement with its own pair's model and capture.
-    std::map<std::string, PairRecords> further;
-    if (more)
-      for (std::size_t k = 0; k < more->model_ids.size(); ++k)
-        further[measure::pair_photo(static_cast<int>(k) + 2, "left")] = {more->model_ids[k],
-                                                                         more->capture_ids[k]};
-    measurements = measurement_records(picked->measured, out.visit_id,
-                                       {out.model_id, out.capture_id}, further);
-    join_trace_records(picked->joined, measurements);
-  } else
-    for (const auto& t : analysed.traces) {
-      measurements.push_back(measured(storage::Measurement::Kind::trace, t.id, t.points));
-      measurements.back().joint_label = t.joint.value_or("");
-    }
-  for (const auto& patch : analysed.patches)
-    measurements.push_back(measured(storage::Measurement::Kind::area, patch.id, patch.polygon));
-  store.save_measurements(out.visit_id, measurements);
-  std::vector<storage::Joint> joints;
-  for (const auto& j : analysed.joints) {
-    storage::Joint joint;
-    joint.visit_id = out.visit_id;
-    joint.label = j.id;
-    joint.dip_deg = j.dip;
-    joint.dipdir_deg = j.dipdir;
-    if (j.point) joint.point = *j.point - scene->datum;
-    joint.friction_deg = j.friction;
-    joint.cohesion_pa = j.cohesion;
-    joint.source = "scene";
-    if (picked)
-      for (const auto& m : picked->measured.joints)
-        if (m.label == j.id && m.plane.known) {
-          joint.source = "traces";
-          for (const auto& t : m.traces) joint.source += " " + t;
-          joint.type = "trace";
-        }
-    joints.push_back(joint);
-  }
-  store.save_joints(out.visit_id, {}, joints);
+  store.save_measurements(
+      out.visit_id, visit_measurements(analysed, picks, more ? &*more : nullptr,
+                                       {out.visit_id, out.model_id, out.capture_id}, scene.datum));
+  store.save_joints(out.visit_id, {}, visit_joints(analysed, picks, out.visit_id, scene.datum));
   // The rock-mass form the scene brings (what the geologist entered on site).
-  if (scene->rockmass) store.save_rockmass_form(out.visit_id, *scene->rockmass);
+  if (scene.rockmass) store.save_rockmass_form(out.visit_id, *scene.rockmass);
 
   progress.step("blocks", 0.8);
   analysis::Report report = analysis::analyse(analysed, progress);
   // What the synthetic camera simulated, named as the analysis's effects are.
-  for (const auto& e : synthetic->scene.effects.simulated())
+  for (const auto& e : source.synthetic->scene.effects.simulated())
     report.effects_simulated.push_back("imaging." + e);
-  const storage::AnalysisRun run = analysis_record(report, out.visit_id, out.model_id, chosen);
+  const storage::AnalysisRun run =
+      analysis_record(report, out.visit_id, out.model_id, source.preset);
   out.analysis_id = store.save_analysis(run);
   out.report = std::move(report);
   progress.step("done", 1.0);

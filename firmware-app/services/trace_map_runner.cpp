@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/analysis/preset_options.h"
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 #include "core/measure/facets/facet_options.h"
@@ -313,7 +314,7 @@ measure::MeasureSettings measure_settings(storage::ProjectStore& store, storage:
   measure::MeasureSettings settings = edit.settings;
   const Preset preset = visit_preset(store, visit);
   settings.correlation_length = edit.picker->mesh().median_edge_length() *
-                                photogrammetry::reconstruction_preset(preset).sgbm_block_size;
+                                analysis::preset_options(preset).reconstruction.sgbm_block_size;
   return settings;
 }
 
@@ -378,7 +379,7 @@ std::string StoreTraceMapRunner::store(const std::filesystem::path& project,
     // The facet finder's knobs of the visit's preset: its angle, its
     // smallest facet and its planarity gate judge the pieces too.
     const std::vector<storage::Measurement> records = outline_records(
-        edit, settings, measure::facet_options(visit_preset(store, visit)), label, area);
+        edit, settings, analysis::preset_options(visit_preset(store, visit)).facets, label, area);
     for (const auto& old : face_outlines(store, visit)) store.delete_measurement(old.id);
     store.save_measurements(visit, records);
     said.push_back(storage::face_outline_words(records, {}).front() + "; " +

@@ -7,6 +7,7 @@
 #include "camera/gphoto2_camera.h"
 #include "camera/mock_camera.h"
 #include "camera/synthetic_renderer.h"
+#include "core/analysis/preset_options.h"
 #include "core/analysis/scene_analysis.h"
 #include "core/common/error.h"
 #include "core/photogrammetry/reconstruction/preset.h"
@@ -47,7 +48,7 @@ storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project
   photogrammetry::RegistrationSources sources;
   if (const auto it = capture.settings.find("range_pole_m"); it != capture.settings.end())
     sources.range_pole_m = std::stod(it->second);
-  const auto preset = photogrammetry::reconstruction_preset(chosen);
+  const auto preset = analysis::preset_options(chosen).reconstruction;
   const auto rec = photogrammetry::reconstruct(left, right, k, k, preset, sources, progress);
   progress.step("saving the model", 0.99);
   return store.save_model(model_record(rec, capture_id,

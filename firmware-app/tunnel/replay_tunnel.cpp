@@ -12,8 +12,8 @@ std::optional<Eigen::Vector3d> typed_range_pole(const storage::Scene& scene) {
   if (!scene.tunnel || !scene.tunnel->placement) return std::nullopt;
   const auto& p = *scene.tunnel->placement;
   const Eigen::Vector3d origin = scene.has_datum ? scene.datum : Eigen::Vector3d::Zero();
-  return typed_pole_position(scene.tunnel->record.alignment(origin), p.chainage, p.offset,
-                             p.height);
+  return tunnel::typed_pole_position(scene.tunnel->record.alignment(origin), p.chainage, p.offset,
+                                     p.height);
 }
 
 std::string place_replayed_visit(storage::ProjectStore& store, const storage::Scene& scene,

@@ -38,7 +38,7 @@ storage::VisitPlacement place_by_typed_chainage(storage::ProjectStore& store,
   const auto& t0 = p["targets"][0];
   const Eigen::Vector3d lower(t0[0].get<double>(), t0[1].get<double>(), t0[2].get<double>());
   const Eigen::Vector3d shift =
-      typed_pole_position(alignment, typed.chainage, typed.offset, typed.height) - lower;
+      tunnel::typed_pole_position(alignment, typed.chainage, typed.offset, typed.height) - lower;
   for (const auto& summary : models) {
     storage::Model m = store.load_model(summary.id);
     for (auto& v : m.mesh.vertices) v += shift;

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/analysis/preset_options.h"
 #include "core/common/error.h"
-#include "firmware-app/tunnel/face_front.h"
+#include "core/tunnel/face_front.h"
+#include "core/tunnel/surface_reach.h"
 #include "firmware-app/tunnel/visit_placement.h"
 #include "firmware-app/tunnel/visit_surface.h"
 
@@ -41,9 +43,11 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
   // farthest back (face_front.h): a cross-section through the face cuts the
   // face (its bulge, its roughness, the reconstruction's smear into the
   // corner), which would read as metres of underbreak.
-  const auto reach = surface_reach(alignment, rock_places(alignment, surface));
+  const auto reach =
+      tunnel::surface_reach(alignment, tunnel::rock_places(alignment, surface_input(surface)));
   const double start = reach ? reach->rear : 0;
-  const auto front = face_front(alignment, out.tunnel.profile, surface, start);
+  const auto front =
+      tunnel::face_front(alignment, out.tunnel.profile, surface_input(surface), start);
   out.round_to = (front ? front->nearest_chainage : out.placement.chainage) - sense * kFaceClearM;
   std::optional<double> previous;
   for (const auto& p : store.list_visit_placements())
@@ -60,7 +64,7 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
     out.round_from = start;
     out.round_from_source = "start of the 3D image";
   }
-  tunnel::DeviationOptions options = tunnel::deviation_options(preset);
+  tunnel::DeviationOptions options = analysis::preset_options(preset).deviation;
   if (sense * (out.round_to - out.round_from) < options.section_spacing_m) {
     // The 3D image holds the face and nothing behind it: no wall, roof or
     // invert to hold against the design. Said so, never zero over- and
@@ -79,11 +83,8 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
   options.chainage_from = out.round_from;
   options.chainage_to = out.round_to;
   options.underbreak_tolerance_m = out.tunnel.underbreak_tolerance_m;
-  tunnel::SurfaceInput input;
-  input.vertices = surface.vertices;
-  input.triangles = surface.triangles;
-  input.not_rock_vertex = surface.not_rock;
-  out.deviation = tunnel::profile_deviation(input, alignment, out.tunnel.profile, options);
+  out.deviation =
+      tunnel::profile_deviation(surface_input(surface), alignment, out.tunnel.profile, options);
   return out;
 }
 

@@ -69,26 +69,12 @@ VisitSurface visit_surface(storage::ProjectStore& store, storage::RecordId visit
   return out;
 }
 
-std::vector<tunnel::AlignmentPlace> rock_places(const tunnel::Alignment& alignment,
-                                                const VisitSurface& surface) {
-  const std::size_t step = std::max<std::size_t>(1, surface.vertices.size() / 20000);
-  std::vector<tunnel::AlignmentPlace> places;
-  for (std::size_t i = 0; i < surface.vertices.size(); i += step)
-    if (!surface.not_rock[i]) places.push_back(alignment.place(surface.vertices[i]));
-  return places;
-}
-
-std::optional<SurfaceReach> surface_reach(const tunnel::Alignment& alignment,
-                                          const std::vector<tunnel::AlignmentPlace>& places) {
-  if (places.empty()) return std::nullopt;
-  const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
-  std::vector<double> ahead;
-  for (const auto& p : places) ahead.push_back(sense * p.chainage);
-  std::sort(ahead.begin(), ahead.end());
-  const auto at = [&](double f) {
-    return sense * ahead[static_cast<std::size_t>(f * (ahead.size() - 1))];
-  };
-  return SurfaceReach{at(0.02), at(0.99)};
+tunnel::SurfaceInput surface_input(const VisitSurface& surface) {
+  tunnel::SurfaceInput input;
+  input.vertices = surface.vertices;
+  input.triangles = surface.triangles;
+  input.not_rock_vertex = surface.not_rock;
+  return input;
 }
 
 }  // namespace rockface::app

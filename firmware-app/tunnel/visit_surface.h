@@ -7,12 +7,11 @@
 // so the pole is never counted as underbreak.
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "core/tunnel/alignment.h"
+#include "core/tunnel/profile_deviation.h"
 #include "storage/project/project_store.h"
 
 namespace rockface::app {
@@ -41,19 +40,8 @@ struct PoleMask {
 VisitSurface visit_surface(storage::ProjectStore& store, storage::RecordId visit_id,
                            const PoleMask& mask = {});
 
-// The surface's rock placed along the tunnel: every k-th vertex that is rock
-// (20,000 places give the percentiles below to well under a millimetre).
-std::vector<tunnel::AlignmentPlace> rock_places(const tunnel::Alignment& alignment,
-                                                const VisitSurface& surface);
-
-// How far the rock reaches along the drive: the 2nd percentile of chainage
-// in the drive direction (the rear of the walls the cameras saw) and the
-// 99th (the face), so that a few stray points count for nothing. Nothing
-// when there is no rock.
-struct SurfaceReach {
-  double rear = 0, front = 0;  // chainages
-};
-std::optional<SurfaceReach> surface_reach(const tunnel::Alignment& alignment,
-                                          const std::vector<tunnel::AlignmentPlace>& places);
+// The surface as the tunnel's measurements read it (views of its vectors:
+// the surface must outlive the result).
+tunnel::SurfaceInput surface_input(const VisitSurface& surface);
 
 }  // namespace rockface::app

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/analysis/preset_options.h"
 #include "core/common/error.h"
 #include "core/geometry/orientation.h"
 #include "firmware-app/tunnel/project_drive.h"
@@ -41,18 +42,6 @@ std::pair<double, double> drive_axis(const tunnel::Alignment& a, double chainage
 }
 
 }  // namespace
-
-double wedge_sagitta(Preset preset) {
-  switch (preset) {
-    case Preset::fast:
-      return 0.01;
-    case Preset::standard:
-      return 0.002;
-    case Preset::precise:
-      return 0.0005;
-  }
-  return 0.002;
-}
 
 std::pair<double, double> parse_axis(const std::string& text, const std::string& where) {
   const auto slash = text.find('/');
@@ -139,7 +128,7 @@ WedgeRun wedge_run_from_scene(const storage::Scene& scene,
   o.density = scene.density;
   o.gravity = scene.gravity;
   o.uncertainty = scene.analysis.orientation_uncertainty_deg * kRad;
-  o.sagitta_m = wedge_sagitta(run.preset);
+  o.sagitta_m = analysis::preset_options(run.preset).wedge_sagitta_m;
   o.trace_length_limit = w.trace_length;
   o.perimeter = w.perimeter;
   o.face = w.face;
@@ -229,7 +218,7 @@ WedgeRun wedge_run_from_project(storage::ProjectStore& store, storage::RecordId 
                         std::to_string(static_cast<int>(settings.friction_deg)) +
                         " deg and no cohesion are assumed (--friction)");
   tunnel::WedgeOptions& o = run.options;
-  o.sagitta_m = wedge_sagitta(settings.preset);
+  o.sagitta_m = analysis::preset_options(settings.preset).wedge_sagitta_m;
   o.trace_length_limit = settings.trace_length;
   o.bolts = settings.bolts;
   o.shotcrete = settings.shotcrete;

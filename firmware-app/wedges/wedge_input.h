@@ -40,10 +40,6 @@ struct WedgeRun {
   std::vector<std::string> notes;
 };
 
-// The chords' sagitta of each preset: fast 10 mm, standard 2 mm, precise
-// 0.5 mm (docs/accuracy-cost.md, "Wedges around the excavation").
-double wedge_sagitta(Preset preset);
-
 // An axis typed as "TREND/PLUNGE" (degrees); InputError(where) otherwise.
 std::pair<double, double> parse_axis(const std::string& text, const std::string& where);
 

@@ -287,7 +287,7 @@ std::vector<VisitPlacement> read_placements(sqlite::Connection& db, const std::s
     res.bind(1, p.visit_id);
     while (res.step()) {
       RowReader r(res);
-      RegistrationResidual rr;
+      tunnel::TargetResidual rr;
       rr.label = r.next_text();
       rr.residual = next_vector3(r);
       p.residuals.push_back(rr);

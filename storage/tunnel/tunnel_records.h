@@ -10,6 +10,7 @@
 
 #include "core/tunnel/alignment.h"
 #include "core/tunnel/design_profile.h"
+#include "core/tunnel/visit_placement.h"
 #include "storage/project/project_records.h"
 
 namespace rockface::storage {
@@ -30,23 +31,11 @@ struct TunnelRecord {
   tunnel::Alignment alignment(const Eigen::Vector3d& datum) const;
 };
 
-// How a visit was placed in the tunnel.
-struct VisitPlacement {
-  enum class Method {
-    ground_control,    // monitoring targets with survey coordinates seen in the photographs
-    chainage_compass,  // the chainage the geologist typed plus the compass line
-  };
+// How a visit was placed in the tunnel (the geometry and how it was found:
+// core/tunnel/visit_placement.h), as the project stores it: which visit, and
+// when.
+struct VisitPlacement : tunnel::VisitPlacement {
   RecordId visit_id = 0;
-  Method method = Method::chainage_compass;
-  double chainage = 0;  // of the face
-  double offset_m = 0;  // of the face's centre from the axis, + right
-  std::optional<double> height_m;
-  // Ground control: residuals of the targets (label, dx, dy, dz in m) and
-  // their rms; chainage + compass: the compass azimuth used (degrees).
-  std::vector<RegistrationResidual> residuals;
-  std::optional<double> rms_m;
-  std::optional<double> compass_azimuth_deg;
-  std::string note;
   std::string created_at;  // empty = now
 };
 const char* placement_method_name(

@@ -71,15 +71,5 @@ TEST(VisitPlacement, ARangePoleAndCompassSayHowThePoleWasPlaced) {
   EXPECT_NE(surveyed.note.find("surveyed"), std::string::npos);
 }
 
-TEST(VisitPlacement, TheTypedPoleLiesAtItsChainageOffsetAndHeight) {
-  const tunnel::Alignment alignment = straight_north();
-  // North-going axis through the datum: right = east (+x), up = +z.
-  const Vector3d pole = typed_pole_position(alignment, 12.0, 0.5, -1.2);
-  EXPECT_NEAR(pole.x(), 0.5, 1e-9);
-  EXPECT_NEAR(pole.y(), 12.0, 1e-9);
-  EXPECT_NEAR(pole.z(), -1.2, 1e-9);
-  EXPECT_THROW(typed_pole_position(alignment, 150.0, 0, 0), InputError);
-}
-
 }  // namespace
 }  // namespace rockface::app

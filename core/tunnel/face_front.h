@@ -11,9 +11,9 @@
 
 #include "core/tunnel/alignment.h"
 #include "core/tunnel/design_profile.h"
-#include "firmware-app/tunnel/visit_surface.h"
+#include "core/tunnel/profile_deviation.h"
 
-namespace rockface::app {
+namespace rockface::tunnel {
 
 struct FaceFront {
   double median_chainage = 0;
@@ -22,9 +22,10 @@ struct FaceFront {
 };
 
 // Rays start at `from_chainage` (behind the face, where the cameras stood
-// or the surface starts). Nothing when no ray meets the surface.
-std::optional<FaceFront> face_front(const tunnel::Alignment& alignment,
-                                    const tunnel::DesignProfile& profile,
-                                    const VisitSurface& surface, double from_chainage);
+// or the surface starts). A ray whose first triangle has a vertex that is not
+// rock (the range pole in front of the face) counts for nothing; the
+// surface's per-triangle mask is not read. Nothing when no ray meets rock.
+std::optional<FaceFront> face_front(const Alignment& alignment, const DesignProfile& profile,
+                                    const SurfaceInput& surface, double from_chainage);
 
-}  // namespace rockface::app
+}  // namespace rockface::tunnel

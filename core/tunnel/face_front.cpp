@@ -1,4 +1,4 @@
-#include "firmware-app/tunnel/face_front.h"
+#include "core/tunnel/face_front.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "core/tunnel/mesh_raycast.h"
 
-namespace rockface::app {
+namespace rockface::tunnel {
 
 namespace {
 // 12 directions x 3 radii + the centre: 37 rays, enough for a robust
@@ -18,16 +18,15 @@ constexpr double kRadii[] = {0.25, 0.5, 0.7};
 constexpr double kReachM = 30.0;
 }  // namespace
 
-std::optional<FaceFront> face_front(const tunnel::Alignment& alignment,
-                                    const tunnel::DesignProfile& profile,
-                                    const VisitSurface& surface, double from_chainage) {
-  const tunnel::MeshRaycaster caster(surface.vertices, surface.triangles);
-  const tunnel::TunnelFrame frame = alignment.frame_at(from_chainage);
-  const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
+std::optional<FaceFront> face_front(const Alignment& alignment, const DesignProfile& profile,
+                                    const SurfaceInput& surface, double from_chainage) {
+  const MeshRaycaster caster(surface.vertices, surface.triangles);
+  const TunnelFrame frame = alignment.frame_at(from_chainage);
+  const double sense = alignment.drive() == Drive::ascending ? 1.0 : -1.0;
   std::vector<Eigen::Vector2d> starts{profile.ray_centre()};
   for (int k = 0; k < kDirections; ++k) {
     const double angle = 2 * std::numbers::pi * k / kDirections;
-    const tunnel::ProfileHit hit = profile.ray_hit(angle);
+    const ProfileHit hit = profile.ray_hit(angle);
     for (double f : kRadii)
       starts.push_back(profile.ray_centre() + f * (hit.point - profile.ray_centre()));
   }
@@ -40,7 +39,8 @@ std::optional<FaceFront> face_front(const tunnel::Alignment& alignment,
     if (!hit) continue;
     const std::size_t tri = hit->triangle;
     bool rock = true;
-    for (int corner : surface.triangles[tri]) rock = rock && !surface.not_rock[corner];
+    if (!surface.not_rock_vertex.empty())
+      for (int corner : surface.triangles[tri]) rock = rock && !surface.not_rock_vertex[corner];
     if (!rock) continue;  // the range pole stands in front of the face
     chainages.push_back(alignment.place(origin + hit->t * frame.along).chainage);
   }
@@ -53,4 +53,4 @@ std::optional<FaceFront> face_front(const tunnel::Alignment& alignment,
   return out;
 }
 
-}  // namespace rockface::app
+}  // namespace rockface::tunnel
