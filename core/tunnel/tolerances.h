@@ -66,4 +66,8 @@ inline constexpr double kWedgeScaleRel = 1e-10;
 // A trace-length limit is met by bisection on the apex's position to this
 // relative precision of the limit.
 inline constexpr double kWedgeTraceRel = 1e-6;
+// Two joint sets whose poles are closer than this (radians), or than the
+// orientation uncertainty when that is larger, are one set: a set listed
+// twice differs by the rounding of degrees to a normal (~1e-15).
+inline constexpr double kWedgeSameSetRad = 1e-9;
 }  // namespace rockface::tunnel
