@@ -1,6 +1,8 @@
 #pragma once
 // Named tolerances of core/tunnel. Each says what error it absorbs.
 
+#include <cstddef>
+
 namespace rockface::tunnel {
 
 // Two stations closer than this (horizontally, m) are one point: an element
@@ -30,6 +32,11 @@ inline constexpr double kProfileJoinM = 1e-4;
 // Arcs are drawn as chords whose sagitta stays below this (m) when the
 // profile is checked for self-intersection and star shape.
 inline constexpr double kProfileSagittaM = 1e-4;
+
+// An outline that is not star-shaped is searched for the place where it
+// crosses itself (pairwise, quadratic) only up to this many chords (2.5e7
+// pairs, well under a second); a longer one is refused as not star-shaped.
+inline constexpr std::size_t kProfileCrossingCheckChords = 5000;
 
 // Newton iterations of the foot point on a graded arc stop when the chainage
 // step is below this (m): far below survey accuracy.
