@@ -1,6 +1,6 @@
 #pragma once
-// The ranges a geologist sets pattern bolts in, and the bound on the number
-// of joint sets of one wedge analysis. Every reader of these values (the
+// The ranges a geologist sets pattern bolts in, the ranges of the loads on
+// a wedge, and the bound on the number of joint sets of one wedge analysis. Every reader of these values (the
 // scene's wedges.support, `wedges --bolts`, analyse_wedges itself) checks
 // them against the same numbers and says the range when it refuses one.
 //
@@ -37,6 +37,14 @@ inline constexpr SupportRange kBoltCapacityRange{1e3, 1e7, "N"};
 // Bond strength per metre of anchorage: 1 kN/m (poor grout in weak rock)
 // to 100 MN/m (far above resin in strong rock, ~0.5 MN/m).
 inline constexpr SupportRange kBoltBondRange{1e3, 1e8, "N/m"};
+
+// The loads on a wedge: a rock's density (pumice to the heaviest ores,
+// 500-8000 kg/m^3, with room), a pseudo-static acceleration's size (design
+// coefficients stay under 0.5 g), water's unit weight (fresh to brine,
+// 9.8-12 kN/m^3, with room).
+inline constexpr SupportRange kRockDensityRange{100, 20000, "kg/m^3"};
+inline constexpr SupportRange kSeismicRange{0, 49.05, "m/s^2"};  // 5 g
+inline constexpr SupportRange kWaterUnitWeightRange{1000, 100000, "N/m^3"};
 
 // At most this many distinct joint sets in one wedge analysis (after sets
 // within the orientation uncertainty of each other are merged): 12 sets

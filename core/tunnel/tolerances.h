@@ -38,6 +38,14 @@ inline constexpr double kProfileSagittaM = 1e-4;
 // pairs, well under a second); a longer one is refused as not star-shaped.
 inline constexpr std::size_t kProfileCrossingCheckChords = 5000;
 
+// place() searches the alignment's elements through bounding spheres of
+// this many consecutive elements at the leaves; a sphere is passed over
+// when its nearest point lies farther than the best foot so far by more
+// than this relative slack (rounding of the distances, ~1e-15 relative:
+// no element that could be nearest or tie is ever passed over).
+inline constexpr std::size_t kAlignmentBoundLeaf = 8;
+inline constexpr double kAlignmentBoundSlackRel = 1e-9;
+
 // Newton iterations of the foot point on a graded arc stop when the chainage
 // step is below this (m): far below survey accuracy.
 inline constexpr double kFootChainageM = 1e-9;

@@ -48,7 +48,23 @@ kinematics::Effects load_effects(const WedgeOptions& o) {
 }
 
 void check_options(const WedgeOptions& o) {
-  if (!(o.density > 0)) throw InputError("rock.density", "must be positive");
+  // Each load named in its own message, within a range that no rock or
+  // earthquake leaves: a value of 1e308 overflowed the wedge's weight and
+  // was blamed on the shotcrete (issue 41).
+  if (!(o.density >= kRockDensityRange.lo && o.density <= kRockDensityRange.hi))
+    throw InputError("rock.density",
+                     outside_range_text(o.density, kRockDensityRange, "a rock's density"));
+  if (!o.gravity.allFinite() || !(o.gravity.norm() > 0) || o.gravity.norm() > 100)
+    throw InputError("gravity", "must be a finite, non-zero acceleration of at most 100 m/s^2");
+  if (o.seismic && !(o.seismic->allFinite() && o.seismic->norm() <= kSeismicRange.hi))
+    throw InputError("effects.seismic.acceleration",
+                     outside_range_text(o.seismic->norm(), kSeismicRange,
+                                        "a pseudo-static acceleration's size"));
+  if (o.water && !(o.water->unit_weight >= kWaterUnitWeightRange.lo &&
+                   o.water->unit_weight <= kWaterUnitWeightRange.hi))
+    throw InputError(
+        "effects.water.unit_weight",
+        outside_range_text(o.water->unit_weight, kWaterUnitWeightRange, "water's unit weight"));
   if (o.trace_length_limit && !(*o.trace_length_limit > 0))
     throw InputError("wedges.trace_length", "must be a positive number of metres");
   if (o.bolts) {

@@ -40,7 +40,8 @@ namespace fs = std::filesystem;
 // Compass bearing (degrees clockwise from north) of the horizontal
 // projection of a line, and its end points in the left image.
 std::optional<photogrammetry::NorthReference> compass_reading(
-    const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k) {
+    const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k,
+    const std::string& source) {
   if (!scene.reference_line) return std::nullopt;
   const auto& [from, to] = *scene.reference_line;
   const photogrammetry::CameraPose pose =
@@ -61,6 +62,8 @@ std::optional<photogrammetry::NorthReference> compass_reading(
   north.to_px = {px[1].x, px[1].y};
   north.azimuth_deg = rad_to_deg(std::atan2(to.x() - from.x(), to.y() - from.y()));
   if (north.azimuth_deg < 0) north.azimuth_deg += 360;
+  // The scene's field, not the option of `reconstruct` (issue 41).
+  north.where = source + ": imaging.reference_line";
   return north;
 }
 
@@ -123,7 +126,7 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     intrinsics = camera::rendered_intrinsics(synthetic->scene);
     intrinsics.body = "rockface synthetic camera";
     if (synthetic->scene.range_pole) sources.range_pole_m = synthetic->scene.range_pole->length;
-    sources.north = compass_reading(synthetic->scene, intrinsics);
+    sources.north = compass_reading(synthetic->scene, intrinsics, scene->source);
   } else {
     const fs::path cam_file = fs::path(request.source) / "camera.json";
     if (!fs::exists(cam_file))

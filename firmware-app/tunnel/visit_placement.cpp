@@ -1,11 +1,15 @@
 #include "firmware-app/tunnel/visit_placement.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
 #include "core/common/number_format.h"
+#include "core/tunnel/survey_ranges.h"
 #include "firmware-app/tunnel/face_front.h"
 
 namespace rockface::app {
@@ -33,6 +37,19 @@ Eigen::Vector3d typed_pole_position(const tunnel::Alignment& alignment, double c
                          format_fixed(alignment.first_chainage(), 2) + " to " +
                          format_fixed(alignment.last_chainage(), 2) + ")");
   }
+  // The pole stands in the excavation: an offset of 130 m was taken
+  // without a word and placed the visit in the rock (issue 41).
+  for (auto [value, field] :
+       {std::pair{offset, "tunnel.placement.offset"}, std::pair{height, "tunnel.placement.height"}})
+    if (!(std::abs(value) <= tunnel::kMaxTypedOffsetM)) {
+      std::ostringstream v;  // %g: 1e308 is not 300 digits
+      v.precision(6);
+      v << value << " m";
+      throw InputError(field, v.str() +
+                                  " from the axis is more than any tunnel's half-width (at most " +
+                                  format_fixed(tunnel::kMaxTypedOffsetM, 0, " m") +
+                                  "): a typo, or the pole outside the excavation?");
+    }
   return alignment.frame_at(chainage).to_local(offset, height);
 }
 

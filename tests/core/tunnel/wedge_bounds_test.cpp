@@ -116,5 +116,23 @@ TEST(WedgeBounds, OneSetThreeTimesIsNotThreeSets) {
             "other");
 }
 
+// A density or a seismic acceleration of 1e308 overflowed the weight and
+// was blamed on the shotcrete: each load is named in its own message.
+TEST(WedgeBounds, EachLoadBeyondItsRangeIsRefusedByItsOwnName) {
+  WedgeOptions heavy;
+  heavy.density = 1e308;
+  EXPECT_EQ(refusal([&] { analyse(three_sets(), heavy); }),
+            "rock.density: 1e+308 kg/m^3 is outside [100, 20000] kg/m^3 (the range of a rock's "
+            "density)");
+  WedgeOptions quake;
+  quake.seismic = Eigen::Vector3d(0, 1e308, 0);
+  EXPECT_EQ(refusal([&] { analyse(three_sets(), quake); }),
+            "effects.seismic.acceleration: 1e+308 m/s^2 is outside [0, 49.05] m/s^2 (the range of "
+            "a pseudo-static acceleration's size)");
+  WedgeOptions design;
+  design.seismic = Eigen::Vector3d(0, 0.98, 0);
+  EXPECT_EQ(refusal([&] { analyse(three_sets(), design); }), "accepted");
+}
+
 }  // namespace
 }  // namespace rockface::tunnel

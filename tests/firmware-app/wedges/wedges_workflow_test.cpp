@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@
 #include "core/geometry/orientation.h"
 #include "firmware-app/services/ui_services.h"
 #include "firmware-app/wedges/report_wedges.h"
+#include "firmware-app/wedges/wedges_json.h"
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
@@ -179,6 +181,16 @@ TEST(WedgesVerb, ProjectBoltsOutsideTheirRangeAreRefusedByName) {
   EXPECT_EQ(said("3,1,1e5,1e308"),
             "--bolts: BOND: 1e+308 N/m is outside [1000, 1e+08] N/m (the range of the bolts' "
             "setting)");
+}
+
+// Issue 41: an overflowed factor of safety (NaN) was shown as "stable";
+// only no driving force at all (+infinity) is.
+TEST(WedgesVerb, AnOverflowedFactorOfSafetyIsUnknownNotStable) {
+  EXPECT_EQ(wedge_fos_text(std::numeric_limits<double>::quiet_NaN()), "unknown");
+  EXPECT_EQ(wedge_fos_text(-std::numeric_limits<double>::infinity()), "unknown");
+  EXPECT_EQ(wedge_fos_text(std::numeric_limits<double>::infinity()), "stable");
+  EXPECT_EQ(wedge_fos_text(std::nullopt), "-");
+  EXPECT_EQ(wedge_fos_text(1.234), "1.23");
 }
 
 TEST(WedgesVerb, ProjectVisitWithMeasuredSets) {
