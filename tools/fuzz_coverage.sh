@@ -19,11 +19,11 @@ find "$build" -name '*.gcda' -delete
 "$build/tests/storage/fuzz/fuzz_tests" --gtest_brief=1
 # The parsers: a file per input kind (the project file: the store's sources).
 parsers=(
-  storage/scene_json.cpp storage/camera_json.cpp core/photogrammetry/estimators/registration.cpp
-  core/photogrammetry/targets/reference_line.cpp storage/ply_reader.cpp camera/exif.cpp
-  storage/project_store.cpp storage/project_store_captures.cpp storage/project_store_survey.cpp
-  storage/project_store_cameras.cpp storage/project_sqlite.cpp storage/project_schema.cpp
-  storage/project_blobs.cpp
+  storage/scene/scene_json.cpp storage/scene/camera_json.cpp core/photogrammetry/estimators/registration.cpp
+  core/photogrammetry/targets/reference_line.cpp storage/exchange/ply_reader.cpp camera/exif.cpp
+  storage/project/project_store.cpp storage/project/project_store_captures.cpp storage/project/project_store_survey.cpp
+  storage/project/project_store_cameras.cpp storage/project/project_sqlite.cpp storage/project/project_schema.cpp
+  storage/project/project_blobs.cpp
 )
 root=$PWD
 for src in "${parsers[@]}"; do

@@ -2,7 +2,7 @@
 // What the block analysis takes, as values (no file formats): the planes
 // (joints, then free faces: a block code has one digit per plane in this
 // order), the explicit blocks, the free surface and the traces on it, the
-// rock, the effects and the analysis options. storage/scene.h reads the
+// rock, the effects and the analysis options. storage/scene/scene.h reads the
 // parts from a scene file (SCENE.md) and firmware-app/analysis/scene_input.h
 // makes the whole from it once, at the boundary; the replay fills it with
 // the measured joint planes and traces.

@@ -2,7 +2,7 @@
 // The analysis report as plain values: the one report and the one block
 // verdict (ReportBlock) that the command line, the tablet, the field report,
 // the office sync and the tests all read. The analysis (scene_analysis.h)
-// fills it; storage/report.h writes it as rockface-report/1 (SCENE.md).
+// fills it; storage/report/report.h writes it as rockface-report/1 (SCENE.md).
 // Coordinates here are absolute (datum added back); angles in degrees.
 // Optional parts are written only when present, so a report holds exactly
 // what was analysed.

@@ -1,6 +1,6 @@
 #pragma once
 // The wedge analysis around an excavation as values (docs/scene-extensions.md,
-// "wedges"; storage/scene_wedges.h reads them from a scene): which joint
+// "wedges"; storage/scene/scene_wedges.h reads them from a scene): which joint
 // sets, the excavation's profile and axis, a trace-length limit, and the
 // support (pattern bolts, shotcrete). Water and seismic loads come from the
 // analysis input's effects as for every block.

@@ -1,7 +1,7 @@
 #pragma once
 // The one number formatter: a figure as text, to a number of decimals or of
 // significant digits, with its unit. Every layer formats numbers through it
-// (the tablet's word-level formatting in ui/format.h builds on it), so the
+// (the tablet's word-level formatting in ui/widgets/format.h builds on it), so the
 // same value reads the same in a report, a message and on a screen.
 //
 // The text is the C library's ("%.*f", "%.*g"): a value that rounds to zero

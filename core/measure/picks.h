@@ -3,7 +3,7 @@
 // PICKS.json`, and a scene's `picks` for `rockface replay`): traces as taps
 // in a photograph, as 3D points, or as two end pixels to trace between;
 // areas as polygons; points. Format rockface-picks/1, described in
-// docs/scene-extensions.md, read by storage/picks_json.h.
+// docs/scene-extensions.md, read by storage/scene/picks_json.h.
 #include <array>
 #include <optional>
 #include <string>

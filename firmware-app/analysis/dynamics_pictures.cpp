@@ -5,8 +5,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
+#include "storage/exchange/image_file.h"
 #include "storage/field_report/dynamics_picture.h"
-#include "storage/image_file.h"
 
 namespace rockface::app {
 

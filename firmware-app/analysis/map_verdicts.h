@@ -10,7 +10,7 @@
 
 #include "core/analysis/analysis_input.h"
 #include "core/common/progress.h"
-#include "ui/field_services.h"
+#include "ui/app/field_services.h"
 
 namespace rockface::app {
 

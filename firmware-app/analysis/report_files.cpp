@@ -3,7 +3,7 @@
 #include "core/analysis/mechanics_plot.h"
 #include "core/common/atomic_file.h"
 #include "firmware-app/analysis/dynamics_pictures.h"
-#include "storage/report.h"
+#include "storage/report/report.h"
 
 namespace rockface::app {
 

@@ -1,9 +1,9 @@
 #pragma once
-// A parsed scene file (storage/scene.h) as the analysis input
+// A parsed scene file (storage/scene/scene.h) as the analysis input
 // (core/analysis/analysis_input.h), once, at the boundary: the scene's
 // imaging and picks are left aside, its tunnel gives a falling block's floor.
 #include "core/analysis/analysis_input.h"
-#include "storage/scene.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app {
 

@@ -6,8 +6,8 @@
 #include "firmware-app/analysis/report_files.h"
 #include "firmware-app/analysis/scene_input.h"
 #include "firmware-app/cli/verb_registry.h"
-#include "storage/report.h"
-#include "storage/scene.h"
+#include "storage/report/report.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app {
 namespace {

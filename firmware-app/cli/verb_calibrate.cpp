@@ -5,7 +5,7 @@
 
 #include "core/photogrammetry/camera/calibration.h"
 #include "firmware-app/cli/verb_registry.h"
-#include "storage/camera_json.h"
+#include "storage/scene/camera_json.h"
 
 namespace rockface::app {
 namespace {

@@ -12,9 +12,9 @@
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/office/office_workflows.h"
 #include "firmware-app/tunnel/project_drive.h"
+#include "storage/exchange/image_file.h"
 #include "storage/field_report/tunnel_pictures.h"
-#include "storage/image_file.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 namespace {

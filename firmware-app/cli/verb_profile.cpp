@@ -11,9 +11,9 @@
 #include "firmware-app/records/project_visit.h"
 #include "firmware-app/tunnel/visit_profile.h"
 #include "firmware-app/tunnel/visit_profile_json.h"
+#include "storage/exchange/image_file.h"
 #include "storage/field_report/tunnel_pictures.h"
-#include "storage/image_file.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 namespace {

@@ -18,10 +18,10 @@
 #include "firmware-app/rockmass/rock_mass_report.h"
 #include "firmware-app/tunnel/report_tunnel.h"
 #include "firmware-app/wedges/report_wedges.h"
+#include "storage/exchange/image_file.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
-#include "storage/image_file.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 namespace {

@@ -12,7 +12,7 @@
 #include "firmware-app/wedges/report_wedges.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 namespace {

@@ -12,9 +12,9 @@
 #include "core/rockmass/figures_in_words.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/rockmass/visit_rock_mass.h"
-#include "storage/project_store.h"
-#include "storage/rockmass_form_json.h"
-#include "storage/rockmass_report_json.h"
+#include "storage/project/project_store.h"
+#include "storage/report/rockmass_report_json.h"
+#include "storage/scene/rockmass_form_json.h"
 
 namespace rockface::app {
 namespace {

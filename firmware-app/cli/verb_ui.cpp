@@ -6,9 +6,9 @@
 
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/services/ui_services.h"
-#include "ui/format.h"
-#include "ui/headless_session.h"
+#include "ui/platform/headless_session.h"
 #include "ui/platform/window_runner.h"
+#include "ui/widgets/format.h"
 
 namespace rockface::app {
 namespace {

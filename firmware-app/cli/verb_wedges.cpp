@@ -10,8 +10,8 @@
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/wedges/wedges_json.h"
 #include "firmware-app/wedges/wedges_workflow.h"
+#include "storage/exchange/image_file.h"
 #include "storage/field_report/wedge_pictures.h"
-#include "storage/image_file.h"
 
 namespace rockface::app {
 namespace {

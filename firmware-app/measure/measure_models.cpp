@@ -11,8 +11,8 @@
 #include "core/measure/pair_photo.h"
 #include "core/photogrammetry/reconstruction/preset.h"
 #include "firmware-app/records/project_mesh.h"
-#include "storage/camera_json.h"
-#include "storage/ply_reader.h"
+#include "storage/exchange/ply_reader.h"
+#include "storage/scene/camera_json.h"
 
 namespace rockface::app {
 

@@ -14,8 +14,8 @@
 
 #include "core/measure/photo_view.h"
 #include "core/photogrammetry/surface/surface_mesh.h"
-#include "storage/project_records.h"
-#include "storage/project_store.h"
+#include "storage/project/project_records.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

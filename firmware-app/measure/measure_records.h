@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/measure/pick_measurement.h"
-#include "storage/project_records.h"
+#include "storage/project/project_records.h"
 
 namespace rockface::app {
 

@@ -14,10 +14,10 @@
 #include "core/measure/stereonet_image.h"
 #include "firmware-app/measure/measure_records.h"
 #include "firmware-app/measure/measures_json.h"
-#include "storage/export_joints_csv.h"
-#include "storage/image_file.h"
-#include "storage/picks_json.h"
-#include "storage/project_store.h"
+#include "storage/exchange/export_joints_csv.h"
+#include "storage/exchange/image_file.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/picks_json.h"
 
 namespace rockface::app {
 

@@ -13,7 +13,7 @@
 
 #include "core/measure/pick_measurement.h"
 #include "firmware-app/measure/measure_models.h"
-#include "storage/project_records.h"
+#include "storage/project/project_records.h"
 
 namespace rockface::app {
 

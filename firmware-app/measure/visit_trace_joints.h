@@ -12,7 +12,7 @@
 
 #include "core/measure/mesh_picker.h"
 #include "core/measure/plane_measurement.h"
-#include "storage/project_records.h"
+#include "storage/project/project_records.h"
 
 namespace rockface::app {
 

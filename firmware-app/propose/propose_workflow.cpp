@@ -5,7 +5,7 @@
 #include "core/common/error.h"
 #include "core/measure/mesh_picker.h"
 #include "firmware-app/propose/trace_proposals_run.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

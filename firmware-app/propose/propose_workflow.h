@@ -17,7 +17,7 @@
 #include "core/measure/facets/facet_sets.h"
 #include "core/measure/facets/facets.h"
 #include "firmware-app/measure/measure_models.h"
-#include "storage/project_records.h"
+#include "storage/project/project_records.h"
 
 namespace rockface::app {
 

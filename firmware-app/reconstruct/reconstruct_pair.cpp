@@ -9,9 +9,9 @@
 #include "core/common/error.h"
 #include "core/common/preset.h"
 #include "core/photogrammetry/targets/reference_line.h"
-#include "storage/camera_json.h"
-#include "storage/mesh_export.h"
-#include "storage/reconstruction_report.h"
+#include "storage/exchange/mesh_export.h"
+#include "storage/report/reconstruction_report.h"
+#include "storage/scene/camera_json.h"
 
 namespace rockface::app {
 

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "firmware-app/records/project_mesh.h"
-#include "storage/report.h"
+#include "storage/report/report.h"
 
 namespace rockface::app {
 

@@ -8,8 +8,8 @@
 #include "core/analysis/report.h"
 #include "core/common/preset.h"
 #include "core/photogrammetry/reconstruction/reconstruction.h"
-#include "storage/project_records.h"
-#include "storage/reconstruction_report.h"
+#include "storage/project/project_records.h"
+#include "storage/report/reconstruction_report.h"
 
 namespace rockface::app {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The reconstructed surface as the project stores it (storage::Mesh).
 #include "core/photogrammetry/surface/surface_mesh.h"
-#include "storage/project_records.h"
+#include "storage/project/project_records.h"
 
 namespace rockface::app {
 

@@ -2,8 +2,8 @@
 // A visit asked for by number (`--visit N`) checked against the project's
 // visits, so that a visit that does not exist is said as such, not as one
 // that "is not placed" or "has 0 measured joint sets" (issue 41).
-#include "storage/project_records.h"
-#include "storage/project_store.h"
+#include "storage/project/project_records.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

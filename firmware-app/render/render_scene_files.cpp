@@ -7,9 +7,9 @@
 #include "core/common/error.h"
 #include "firmware-app/render/render_truth_json.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
-#include "storage/camera_json.h"
-#include "storage/image_file.h"
-#include "storage/scene.h"
+#include "storage/exchange/image_file.h"
+#include "storage/scene/camera_json.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app {
 

@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 
 #include "camera/synthetic_scene.h"
-#include "storage/scene.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app {
 

@@ -26,10 +26,10 @@
 #include "firmware-app/replay/replay_more_pairs.h"
 #include "firmware-app/replay/replay_picks.h"
 #include "firmware-app/tunnel/replay_tunnel.h"
-#include "storage/camera_json.h"
-#include "storage/project_store.h"
-#include "storage/reconstruction_report.h"
-#include "storage/scene.h"
+#include "storage/project/project_store.h"
+#include "storage/report/reconstruction_report.h"
+#include "storage/scene/camera_json.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app {
 

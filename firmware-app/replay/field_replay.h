@@ -8,7 +8,7 @@
 #include "core/analysis/report.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
-#include "storage/project_records.h"
+#include "storage/project/project_records.h"
 
 namespace rockface::app {
 

@@ -8,7 +8,7 @@
 #include "camera/mock_camera.h"
 #include "firmware-app/records/project_mesh.h"
 #include "firmware-app/replay/replay_capture.h"
-#include "storage/reconstruction_report.h"
+#include "storage/report/reconstruction_report.h"
 
 namespace rockface::app {
 

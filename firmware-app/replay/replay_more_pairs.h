@@ -14,7 +14,7 @@
 #include "core/photogrammetry/reconstruction/multi_image_registration.h"
 #include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

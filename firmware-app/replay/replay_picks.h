@@ -13,8 +13,8 @@
 #include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "core/photogrammetry/surface/face_traces.h"
 #include "firmware-app/replay/replay_more_pairs.h"
-#include "storage/project_records.h"
-#include "storage/scene.h"
+#include "storage/project/project_records.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app {
 

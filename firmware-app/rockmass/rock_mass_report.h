@@ -2,7 +2,7 @@
 // The rock mass in the field report (`rockface report`): the visit's
 // figures and classifications, or why there are none.
 #include "storage/field_report/field_report.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

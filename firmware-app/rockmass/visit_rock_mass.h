@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/rockmass/rock_mass_figures.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

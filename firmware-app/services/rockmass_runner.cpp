@@ -4,7 +4,7 @@
 #include "core/rockmass/figures_in_words.h"
 #include "firmware-app/rockmass/visit_rock_mass.h"
 #include "firmware-app/services/ui_services.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

@@ -21,11 +21,11 @@
 #include "firmware-app/measure/visit_trace_joints.h"
 #include "firmware-app/records/project_mesh.h"
 #include "firmware-app/services/ui_services.h"
-#include "storage/export_scene_json.h"
-#include "storage/face_outline_words.h"
-#include "storage/project_store.h"
-#include "storage/scene.h"
-#include "ui/format.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/export_scene_json.h"
+#include "storage/scene/face_outline_words.h"
+#include "storage/scene/scene.h"
+#include "ui/widgets/format.h"
 
 namespace rockface::app {
 

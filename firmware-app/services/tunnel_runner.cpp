@@ -9,7 +9,7 @@
 #include "firmware-app/tunnel/visit_profile.h"
 #include "firmware-app/tunnel/visit_profile_json.h"
 #include "storage/field_report/tunnel_pictures.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

@@ -13,9 +13,9 @@
 #include "firmware-app/analysis/scene_input.h"
 #include "firmware-app/records/field_records.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
-#include "storage/export_scene_json.h"
-#include "storage/project_store.h"
-#include "storage/scene.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/export_scene_json.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The tablet UI's runners (ui/field_services.h) composed from the parts the
+// The tablet UI's runners (ui/app/field_services.h) composed from the parts the
 // UI layer must not include: reconstruction with registration, the scene
 // analysis, and the cameras (the DSLR, or the mock camera of a scene or a
 // capture folder).
@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "ui/field_services.h"
+#include "ui/app/field_services.h"
 
 namespace rockface::app {
 

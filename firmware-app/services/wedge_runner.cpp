@@ -9,7 +9,7 @@
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/wedge_pictures.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

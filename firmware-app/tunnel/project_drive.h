@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/tunnel/drive_sets.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

@@ -8,8 +8,8 @@
 
 #include <Eigen/Core>
 
-#include "storage/project_store.h"
-#include "storage/scene.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app {
 

@@ -5,7 +5,7 @@
 // classes), and each block in survey coordinates and relative to the tunnel.
 #include "core/common/preset.h"
 #include "storage/field_report/field_report.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

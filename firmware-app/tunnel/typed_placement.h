@@ -6,8 +6,8 @@
 // their captures (the originals stay stored), and the visit is placed from
 // the moved surface. Refused once the visit has measurements: they lie in
 // the frame before the move.
-#include "storage/project_store.h"
-#include "storage/tunnel_records.h"
+#include "storage/project/project_store.h"
+#include "storage/tunnel/tunnel_records.h"
 
 namespace rockface::app {
 

@@ -12,8 +12,8 @@
 
 #include "core/tunnel/alignment.h"
 #include "firmware-app/tunnel/visit_surface.h"
-#include "storage/project_store.h"
-#include "storage/tunnel_records.h"
+#include "storage/project/project_store.h"
+#include "storage/tunnel/tunnel_records.h"
 
 namespace rockface::app {
 

@@ -8,8 +8,8 @@
 
 #include "core/common/preset.h"
 #include "core/tunnel/profile_deviation.h"
-#include "storage/project_store.h"
-#include "storage/tunnel_records.h"
+#include "storage/project/project_store.h"
+#include "storage/tunnel/tunnel_records.h"
 
 namespace rockface::app {
 

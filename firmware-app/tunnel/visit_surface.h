@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 
 #include "core/tunnel/alignment.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

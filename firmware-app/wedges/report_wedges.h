@@ -2,7 +2,7 @@
 // The field report's "Wedges around the excavation": the wedges of the
 // project's tunnel around the visit's face with the visit's sets.
 #include "storage/field_report/field_report.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 

@@ -12,8 +12,8 @@
 #include "core/tunnel/alignment.h"
 #include "core/tunnel/design_profile.h"
 #include "core/tunnel/wedge_analysis.h"
-#include "storage/project_store.h"
-#include "storage/scene.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/scene.h"
 
 namespace rockface::app {
 

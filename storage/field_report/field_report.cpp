@@ -13,9 +13,9 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
-#include "storage/export_scene_json.h"
-#include "storage/face_outline_words.h"
-#include "storage/report_dynamics_json.h"
+#include "storage/report/report_dynamics_json.h"
+#include "storage/scene/export_scene_json.h"
+#include "storage/scene/face_outline_words.h"
 
 namespace rockface::storage {
 
@@ -264,7 +264,7 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
   }
   joints_and_sets(store, r);
   // Issue 27: the mapped face as the geologist outlined it, in its flat
-  // pieces (storage/face_outline_words.h).
+  // pieces (storage/scene/face_outline_words.h).
   r.face_outlines = face_outline_words(stored, store.list_joints(visit_id));
 
   const auto runs = store.list_analyses(visit_id);

@@ -14,8 +14,8 @@
 #include "core/analysis/report.h"
 #include "core/photogrammetry/camera/camera_model.h"
 #include "core/rockmass/rock_mass_figures.h"
-#include "storage/project_store.h"
-#include "storage/tunnel_records.h"
+#include "storage/project/project_store.h"
+#include "storage/tunnel/tunnel_records.h"
 
 namespace rockface::storage {
 
@@ -152,7 +152,7 @@ struct FieldReport {
   int traces_by_hand = 0, traces_proposed = 0, traces_corrected = 0;
   // Issue 27: each face outline in words, its flat pieces, how far apart
   // and their RMS ("face outline F1: 2 flat pieces, 12.0° apart, RMS 6 mm /
-  // 7 mm"; storage/face_outline_words.h).
+  // 7 mm"; storage/scene/face_outline_words.h).
   std::vector<std::string> face_outlines;
 
   ReportedAccuracy accuracy;

@@ -11,7 +11,7 @@
 #include "core/rockmass/figures_in_words.h"
 #include "storage/field_report/dynamics_picture.h"
 #include "storage/field_report/field_report_pictures.h"
-#include "storage/report_dynamics_json.h"
+#include "storage/report/report_dynamics_json.h"
 
 namespace rockface::storage {
 

@@ -16,7 +16,7 @@
 #include "storage/office/server_schema.h"
 #include "storage/office/sha256.h"
 #include "storage/office/sqlite_rows.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::storage::office {
 

@@ -18,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "storage/project_sqlite.h"
+#include "storage/project/project_sqlite.h"
 
 namespace rockface::storage::office {
 

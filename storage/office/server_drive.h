@@ -9,7 +9,7 @@
 
 #include "core/tunnel/alignment.h"
 #include "storage/office/pg_connection.h"
-#include "storage/project_records.h"
+#include "storage/project/project_records.h"
 
 namespace rockface::storage::office {
 

@@ -1,7 +1,7 @@
 #include "storage/office/server_records.h"
 
 #include "core/common/error.h"
-#include "storage/project_schema.h"
+#include "storage/project/project_schema.h"
 
 namespace rockface::storage::office {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The office server's layout (PostgreSQL schema "rockface") and its history,
-// like the project file's (storage/project_schema.h): each change is a
+// like the project file's (storage/project/project_schema.h): each change is a
 // numbered forward step kept forever, run by `rockface server init`, which
 // creates the layout, the three group roles and the row-level-security
 // policies in one transaction, or upgrades an older server.

@@ -10,8 +10,8 @@
 #include "storage/office/record_documents.h"
 #include "storage/office/server_schema.h"
 #include "storage/office/sqlite_rows.h"
-#include "storage/project_schema.h"
-#include "storage/project_store.h"
+#include "storage/project/project_schema.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::storage::office {
 

@@ -9,11 +9,11 @@
 #include <string>
 
 #include "core/common/error.h"
-#include "storage/camera_json.h"
-#include "storage/picks_json.h"
-#include "storage/rockmass_form_json.h"
-#include "storage/scene.h"
-#include "storage/tunnel_files.h"
+#include "storage/scene/camera_json.h"
+#include "storage/scene/picks_json.h"
+#include "storage/scene/rockmass_form_json.h"
+#include "storage/scene/scene.h"
+#include "storage/tunnel/tunnel_files.h"
 #include "tests/support/refusal.h"
 
 namespace {

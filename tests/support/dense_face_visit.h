@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <filesystem>
 
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/dense_face.h"
 
 namespace rockface::test {

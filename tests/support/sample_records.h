@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "storage/project_records.h"
+#include "storage/project/project_records.h"
 
 namespace rockface::storage::test {
 

@@ -32,7 +32,7 @@
 
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tools/bench/face_merge_runs.h"
 
 namespace rp = rockface::photogrammetry;

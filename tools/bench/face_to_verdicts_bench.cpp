@@ -58,9 +58,9 @@
 #include "core/kinematics/rotation_input.h"
 #include "core/kinematics/rotation_space.h"
 #include "firmware-app/analysis/scene_input.h"
-#include "storage/export_scene_json.h"
-#include "storage/project_store.h"
-#include "storage/scene.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/export_scene_json.h"
+#include "storage/scene/scene.h"
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;

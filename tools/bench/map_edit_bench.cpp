@@ -17,9 +17,9 @@
 #include "core/common/progress.h"
 #include "core/common/units.h"
 #include "firmware-app/services/ui_services.h"
-#include "storage/project_store.h"
-#include "tests/support/random_slope.h"
+#include "storage/project/project_store.h"
 #include "tests/support/dense_face_visit.h"
+#include "tests/support/random_slope.h"
 
 namespace {
 

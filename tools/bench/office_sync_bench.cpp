@@ -21,9 +21,9 @@
 #include "storage/office/server_schema.h"
 #include "storage/office/sqlite_rows.h"
 #include "storage/office/sync_push.h"
-#include "storage/project_store.h"
-#include "tests/support/sample_records.h"
+#include "storage/project/project_store.h"
 #include "tests/support/postgres_server.h"
+#include "tests/support/sample_records.h"
 
 namespace {
 

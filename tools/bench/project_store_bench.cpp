@@ -20,7 +20,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace {
 

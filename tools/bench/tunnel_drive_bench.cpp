@@ -15,7 +15,7 @@
 #include "core/tunnel/design_profile.h"
 #include "firmware-app/tunnel/project_drive.h"
 #include "storage/field_report/tunnel_pictures.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace {
 

@@ -17,8 +17,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "ui/headless_session.h"
-#include "ui/trace_marker.h"
+#include "ui/mapping/trace_marker.h"
+#include "ui/platform/headless_session.h"
 
 namespace {
 

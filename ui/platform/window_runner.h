@@ -5,8 +5,8 @@
 // the mouse wheel pinches.
 #include <filesystem>
 
-#include "ui/app_state.h"
-#include "ui/ui_driver.h"
+#include "ui/app/app_state.h"
+#include "ui/app/ui_driver.h"
 
 namespace rockface::ui {
 

@@ -4,10 +4,10 @@
 #include <memory>
 
 #include "core/common/error.h"
+#include "ui/app/tablet_app.h"
 #include "ui/platform/egl_context.h"
 #include "ui/platform/framebuffer.h"
 #include "ui/platform/window_runner.h"
-#include "ui/tablet_app.h"
 
 // Last: Xlib defines macros (None, Success, Status) that clash with Eigen.
 #include <X11/Xlib.h>

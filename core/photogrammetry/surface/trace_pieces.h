@@ -3,7 +3,7 @@
 // stereo pair's photograph), joined where they are one trace crossing from
 // one image to the next. Used on pixels lifted to each image's surface
 // (face_traces.h) and on traces stored with their pair's model (the scene of
-// a visit, storage/export_scene_json.h). Eigen only.
+// a visit, storage/scene/export_scene_json.h). Eigen only.
 #include <string>
 #include <vector>
 

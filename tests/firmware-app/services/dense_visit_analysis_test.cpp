@@ -10,7 +10,7 @@
 
 #include "core/common/progress.h"
 #include "firmware-app/services/ui_services.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/dense_face_visit.h"
 
 namespace {

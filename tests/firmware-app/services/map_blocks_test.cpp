@@ -12,11 +12,11 @@
 #include "core/common/error.h"
 #include "core/common/progress.h"
 #include "firmware-app/services/ui_services.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/dense_face_visit.h"
 #include "tests/support/temp_folders.h"
 #include "tests/ui/demo_project.h"
-#include "ui/headless_session.h"
+#include "ui/platform/headless_session.h"
 
 namespace {
 

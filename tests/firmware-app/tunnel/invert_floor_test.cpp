@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "firmware-app/analysis/scene_input.h"
-#include "storage/scene.h"
+#include "storage/scene/scene.h"
 #include "tests/support/test_paths.h"
 
 namespace rockface::app {

@@ -13,7 +13,7 @@
 #include "camera/synthetic_tunnel.h"
 #include "core/common/error.h"
 #include "firmware-app/tunnel/visit_placement.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 namespace {

@@ -22,8 +22,8 @@
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
-#include "storage/project_store.h"
-#include "storage/tunnel_files.h"
+#include "storage/project/project_store.h"
+#include "storage/tunnel/tunnel_files.h"
 #include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 

@@ -13,8 +13,8 @@
 #include "core/common/progress.h"
 #include "core/common/units.h"
 #include "firmware-app/analysis/scene_input.h"
-#include "storage/report.h"
-#include "storage/scene.h"
+#include "storage/report/report.h"
+#include "storage/scene/scene.h"
 
 namespace rockface {
 namespace {

@@ -13,9 +13,9 @@
 #include "core/analysis/scene_analysis.h"
 #include "core/common/progress.h"
 #include "firmware-app/analysis/scene_input.h"
-#include "storage/report.h"
-#include "storage/report_dynamics_json.h"
-#include "storage/scene.h"
+#include "storage/report/report.h"
+#include "storage/report/report_dynamics_json.h"
+#include "storage/scene/scene.h"
 
 namespace rockface {
 namespace {

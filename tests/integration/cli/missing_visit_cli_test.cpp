@@ -8,8 +8,8 @@
 #include <string>
 
 #include "core/tunnel/design_profile.h"
-#include "storage/project_store.h"
-#include "storage/tunnel_records.h"
+#include "storage/project/project_store.h"
+#include "storage/tunnel/tunnel_records.h"
 #include "tests/support/cli_run.h"
 
 namespace {

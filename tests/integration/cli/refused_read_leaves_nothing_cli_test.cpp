@@ -9,7 +9,7 @@
 #include <set>
 #include <string>
 
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 
 namespace {

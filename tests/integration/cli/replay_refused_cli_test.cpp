@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 
 namespace {

@@ -9,7 +9,7 @@
 #include <iterator>
 #include <string>
 
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 
 namespace {

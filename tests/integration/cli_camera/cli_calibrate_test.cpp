@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
-#include "storage/camera_json.h"
+#include "storage/scene/camera_json.h"
 #include "tests/support/cli_run.h"
 
 namespace {

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "storage/camera_json.h"
+#include "storage/scene/camera_json.h"
 #include "tests/support/cli_run.h"
 
 namespace {

@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "storage/export_joints_csv.h"
-#include "storage/project_store.h"
+#include "storage/exchange/export_joints_csv.h"
+#include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/json_file.h"
 #include "tests/support/plane_angle.h"

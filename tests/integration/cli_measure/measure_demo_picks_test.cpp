@@ -15,8 +15,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "storage/export_scene_json.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/export_scene_json.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/json_file.h"
 #include "tests/support/test_paths.h"

@@ -17,7 +17,7 @@
 
 #include "camera/synthetic_renderer.h"
 #include "core/photogrammetry/camera/camera_cv.h"
-#include "storage/camera_json.h"
+#include "storage/scene/camera_json.h"
 #include "tests/support/synthetic_face.h"
 
 namespace fs = std::filesystem;

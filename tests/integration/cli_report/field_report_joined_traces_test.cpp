@@ -5,7 +5,7 @@
 
 #include "core/geometry/orientation.h"
 #include "storage/field_report/field_report.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/sample_records.h"
 
 namespace {

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
 

@@ -16,7 +16,7 @@
 
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pictures.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 
 namespace {

@@ -16,8 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
-#include "storage/picks_json.h"
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/picks_json.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/plane_angle.h"
 #include "tests/support/truth_picks.h"

@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 
 namespace {
 

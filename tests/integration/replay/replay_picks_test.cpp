@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "storage/project_store.h"
+#include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/plane_angle.h"
 #include "tests/support/truth_picks.h"

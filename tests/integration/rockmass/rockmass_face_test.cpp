@@ -23,8 +23,8 @@
 #include "core/rockmass/figures_in_words.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
 #include "firmware-app/rockmass/visit_rock_mass.h"
-#include "storage/project_store.h"
-#include "storage/scene.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/scene.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/truth_picks.h"
 

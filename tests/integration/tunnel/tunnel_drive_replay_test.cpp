@@ -23,8 +23,8 @@
 #include "firmware-app/render/synthetic_scene_from_scene.h"
 #include "firmware-app/replay/field_replay.h"
 #include "firmware-app/tunnel/project_drive.h"
-#include "storage/project_store.h"
-#include "storage/scene.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/scene.h"
 #include "tests/support/test_paths.h"
 
 namespace rockface::app {

@@ -15,8 +15,8 @@
 
 #include <gtest/gtest.h>
 
-#include "storage/project_store.h"
-#include "storage/tunnel_files.h"
+#include "storage/project/project_store.h"
+#include "storage/tunnel/tunnel_files.h"
 #include "tests/support/test_paths.h"
 
 namespace rockface::app {

@@ -21,8 +21,8 @@
 #include "firmware-app/replay/field_replay.h"
 #include "firmware-app/tunnel/rendered_tunnel.h"
 #include "firmware-app/tunnel/visit_profile.h"
-#include "storage/project_store.h"
-#include "storage/scene.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/scene.h"
 #include "tests/support/test_paths.h"
 
 namespace rockface::app {

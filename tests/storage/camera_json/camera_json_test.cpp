@@ -1,4 +1,4 @@
-#include "storage/camera_json.h"
+#include "storage/scene/camera_json.h"
 
 #include <filesystem>
 #include <fstream>

@@ -30,11 +30,11 @@
 #include "core/common/error.h"
 #include "core/photogrammetry/estimators/registration.h"
 #include "core/photogrammetry/targets/reference_line.h"
-#include "storage/camera_json.h"
-#include "storage/picks_json.h"
-#include "storage/ply_reader.h"
-#include "storage/project_store.h"
-#include "storage/scene.h"
+#include "storage/exchange/ply_reader.h"
+#include "storage/project/project_store.h"
+#include "storage/scene/camera_json.h"
+#include "storage/scene/picks_json.h"
+#include "storage/scene/scene.h"
 #include "tests/storage/fuzz/mutator.h"
 
 namespace fs = std::filesystem;

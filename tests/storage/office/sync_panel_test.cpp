@@ -17,7 +17,7 @@
 #include "tests/storage/office/office_environment.h"
 #include "tests/storage/office/tablet_projects.h"
 #include "tests/support/sample_records.h"
-#include "ui/headless_session.h"
+#include "ui/platform/headless_session.h"
 
 namespace rockface::office_test {
 namespace {
@@ -57,7 +57,7 @@ class Tablet {
   }
   fs::path file() const { return dir_ / "a.rockface"; }
   ui::HeadlessSession& ui() { return *ui_; }
-  ui::OfficeState& office() { return ui_->state().office; }
+  ui::OfficeState& office() { return ui_->state().project.office; }
 
  private:
   storage::test::TempDir dir_;

@@ -12,10 +12,10 @@
 #include "storage/office/pg_connection.h"
 #include "storage/office/record_documents.h"
 #include "storage/office/sqlite_rows.h"
-#include "storage/project_store.h"
-#include "storage/tunnel_files.h"
-#include "tests/support/sample_records.h"
+#include "storage/project/project_store.h"
+#include "storage/tunnel/tunnel_files.h"
 #include "tests/support/dense_face.h"
+#include "tests/support/sample_records.h"
 #include "tests/support/test_paths.h"
 
 namespace rockface::office_test {
@@ -167,7 +167,8 @@ void expect_server_holds(const std::string& superuser, const fs::path& project,
   office::Connection c(superuser);
   const office::Result r = c.query(
       "SELECT kind, uuid::text, content_sha256, body::text, revision, "
-      "count(*) OVER (PARTITION BY kind, uuid), deleted FROM (SELECT *, rank() OVER (PARTITION BY kind, "
+      "count(*) OVER (PARTITION BY kind, uuid), deleted FROM (SELECT *, rank() OVER (PARTITION BY "
+      "kind, "
       "uuid ORDER BY revision DESC) AS newest FROM rockface.record WHERE project_uuid = "
       "$1::uuid) r WHERE newest = 1 OR true ORDER BY kind, uuid, revision",
       {office::Param::of(docs.project_uuid)}, "checking the server");

@@ -7,8 +7,8 @@
 #include <set>
 
 #include "storage/office/sqlite_rows.h"
-#include "storage/project_schema.h"
-#include "storage/project_store.h"
+#include "storage/project/project_schema.h"
+#include "storage/project/project_store.h"
 #include "tests/support/sample_records.h"
 
 namespace rockface::office_test {

@@ -127,7 +127,7 @@ json plane_failure_scene() {
   return s;
 }
 
-// Report numbers are rounded to 1e-9 relative (storage/report_json.cpp);
+// Report numbers are rounded to 1e-9 relative (storage/report/report_json.cpp);
 // the analysis itself agrees with the closed forms to ~1e-12.
 constexpr double kReport = 1e-8;
 

@@ -1,0 +1,252 @@
+#pragma once
+// What the screens need from above the UI layer. The analysis and the
+// reconstruction are composed in firmware-app (the composition root), which
+// the UI must not include; the screens call these interfaces on a worker
+// thread (BackgroundTask) and firmware-app passes the implementations in.
+//
+// Every runner opens its own ProjectStore on the project file (one SQLite
+// connection per thread), saves what it made as soon as it is made, and
+// returns the id of the record.
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include "camera/camera.h"
+#include "core/common/preset.h"
+#include "core/common/progress.h"
+#include "core/measure/compass_reading.h"
+#include "core/measure/proposals/trace_proposals.h"
+#include "core/rockmass/classification_form.h"
+#include "storage/project/project_records.h"
+#include "ui/blocks/block_verdict.h"
+
+namespace rockface::ui {
+
+class ReconstructionRunner {
+ public:
+  virtual ~ReconstructionRunner() = default;
+  // A textured, registered model of a stored capture at `preset`. Returns
+  // the model's id.
+  virtual storage::RecordId reconstruct(const std::filesystem::path& project,
+                                        storage::RecordId capture_id, Preset preset,
+                                        Progress& progress) = 0;
+};
+
+class AnalysisRunner {
+ public:
+  virtual ~AnalysisRunner() = default;
+  // The block analysis of a visit's joints, traces and surface as stored.
+  // Returns the analysis id.
+  virtual storage::RecordId analyse(const std::filesystem::path& project,
+                                    storage::RecordId visit_id, Progress& progress) = 0;
+};
+
+// The camera of the Capture screen: the DSLR when one is attached, else a
+// mock camera (a replay folder or a synthetic scene).
+class CameraConnector {
+ public:
+  virtual ~CameraConnector() = default;
+  // Throws rockface::Error saying why no camera could be connected.
+  virtual std::unique_ptr<camera::Camera> connect() = 0;
+  // What connect() will try, e.g. "mock camera: synthetic scene tunnel-face".
+  virtual std::string describe() const = 0;
+};
+
+// A picture with the lines that go with it (the tunnel's views).
+struct TunnelPicture {
+  cv::Mat bgr;
+  std::vector<std::string> lines;
+};
+
+// The tunnel around the visits: the excavation of a visit's round against
+// the design profile, and the joint sets along the drive.
+class TunnelRunner {
+ public:
+  virtual ~TunnelRunner() = default;
+  // Throw rockface::Error / InputError saying why (no tunnel, visit not placed).
+  virtual TunnelPicture profile(const std::filesystem::path& project, storage::RecordId visit_id,
+                                Progress& progress) = 0;
+  virtual TunnelPicture drive(const std::filesystem::path& project, Progress& progress) = 0;
+  // Places the visit by the chainage, offset and height (m above the axis)
+  // the geologist typed for the range pole's lower target; returns what was
+  // placed in words.
+  virtual std::vector<std::string> place(const std::filesystem::path& project,
+                                         storage::RecordId visit_id, double chainage, double offset,
+                                         double height, Progress& progress) = 0;
+};
+
+// The blocks of a visit's trace map while the geologist maps it (issue 28):
+// after each saved trace the Mapping screen shows which loops of traces are
+// blocks and what they do, before the full analysis of the Blocks screen.
+// Only the block-theory verdicts and the limit-equilibrium mode and factor of
+// safety: the costly parts (rotation, remote axis, mechanics) stay with the
+// full analysis.
+struct MapBlock {
+  std::vector<Eigen::Vector3d> outline;  // the loop on the surface, absolute, m
+  BlockVerdict verdict = BlockVerdict::infinite;
+  std::string mode;  // "falling" | "lifting" | "sliding" | "none", as the stored analysis
+  std::optional<double> factor_of_safety;
+  double margin_deg = 0;  // of the deciding verdict (finiteness, else removability)
+  double volume_m3 = 0;   // finite blocks
+};
+
+struct MapVerdicts {
+  std::vector<MapBlock> blocks;
+  int traces = 0;                  // traces on the map (joined pieces count once)
+  int recomputed = 0;              // regions computed by this update
+  int reused = 0;                  // regions whose block the last update had
+  double milliseconds = 0;         // from the traces to the verdicts, wall
+  std::vector<std::string> notes;  // what the map left out, in words
+};
+
+// Issue 27: one edit of the Mapping screen. The measuring runs on the
+// worker over the model the screen holds (no second load).
+struct MapEdit {
+  storage::RecordId visit_id = 0;
+  const measure::MeshPicker* picker = nullptr;  // the 3D image on display (face frame)
+  std::optional<storage::RecordId> model_id;    // its model: a trace of another pair's is
+                                                // measured on that pair's 3D image (issue 27)
+  measure::MeasureSettings settings;            // its point precision
+  // A trace to store: its points, photograph pixels, model, joint, origin.
+  std::optional<storage::Measurement> trace;
+  // The face's outline: its corners in the left photograph (the one the
+  // model is textured with, seen through `view`), split by the runner into
+  // the flat pieces of the 3D image it covers (core/measure/outline_pieces.h),
+  // each measured as `rockface measure` measures an area pick, and stored
+  // as the visit's mapped face in place of the one stored; with that
+  // photograph's model and capture. Empty: no outline.
+  std::vector<Eigen::Vector2d> outline;
+  const measure::PhotoView* view = nullptr;
+  std::optional<storage::RecordId> outline_model_id, outline_capture_id;
+  std::optional<storage::RecordId> remove_trace;  // a stored trace taken back
+  // Issue 27: a compass reading given (or, with `compass` empty, cleared)
+  // for the stored trace `compass_trace`: its plane and joint remade. A trace
+  // to store (`trace`) carries its reading in its compass fields.
+  std::optional<storage::RecordId> compass_trace;
+  std::optional<measure::CompassReading> compass;
+};
+
+class TraceMapRunner {
+ public:
+  virtual ~TraceMapRunner() = default;
+  // The verdicts of the visit's stored traces as they are now. The runner
+  // keeps the map of the last call (one visit at a time) and recomputes only
+  // the regions an edit touched. Throws rockface::Error / InputError saying
+  // why (no surface patches, a bad trace).
+  virtual MapVerdicts update(const std::filesystem::path& project, storage::RecordId visit_id,
+                             Progress& progress) = 0;
+  // Issue 27: stores an edit of the map (MapEdit) as `rockface measure`
+  // stores picks, then remakes the visit's joint table from its traces as
+  // the verb makes it; returns what was stored in words. Throws
+  // rockface::InputError naming what is wrong (a degenerate outline).
+  virtual std::string store(const std::filesystem::path& project, const MapEdit& edit,
+                            Progress& progress) = 0;
+};
+
+// The wedges around the excavation (issue 23) for the Blocks screen's
+// Wedges view: the wedges of the project's tunnel with a visit's sets, as
+// a table already in words and units, with the section picture.
+struct WedgeTable {
+  std::vector<std::string> lines;    // the input: section, axis, sets, effects
+  std::vector<std::string> columns;  // headings with units
+  std::vector<std::vector<std::string>> rows;
+  std::vector<bool> marginal;      // per row: a verdict inside the uncertainty
+  std::vector<std::string> notes;  // corners crossed, pyramids with no wedge, assumptions
+  cv::Mat bgr;                     // the section and the largest wedges
+};
+
+class WedgeRunner {
+ public:
+  virtual ~WedgeRunner() = default;
+  // Throws rockface::InputError saying why (no tunnel, fewer than three sets).
+  virtual WedgeTable wedges(const std::filesystem::path& project, storage::RecordId visit_id,
+                            Progress& progress) = 0;
+};
+
+// The office server (issue 24): the tablet's one server (a libpq service
+// set once per tablet), what waits to go up, and the sync itself.
+struct SyncOverview {
+  std::string server;  // e.g. "service=rockface"; never a password
+  bool ever_synced = false;
+  std::string tunnel, last_sync_at, last_outcome;
+  int records_waiting = 0, visits_waiting = 0;
+};
+
+class SyncRunner {
+ public:
+  virtual ~SyncRunner() = default;
+  // Read from the project alone (no network).
+  virtual SyncOverview overview(const std::filesystem::path& project) = 0;
+  // Sends what waits; returns what was sent in words. Throws rockface::Error
+  // saying so when the server cannot be reached (nothing lost: the next
+  // sync resumes), Cancelled when cancelled (likewise).
+  virtual std::vector<std::string> sync(const std::filesystem::path& project,
+                                        Progress& progress) = 0;
+};
+
+// The rock mass of a visit (issue 23): its figures and classifications in
+// words, with the form entered for it (saved first when given).
+class RockMassRunner {
+ public:
+  virtual ~RockMassRunner() = default;
+  // Throws InputError naming the field for a form value out of range, or
+  // the visit when it has no traces.
+  virtual std::vector<std::string> figures(const std::filesystem::path& project,
+                                           storage::RecordId visit_id,
+                                           const std::optional<rockmass::ClassificationForm>& save,
+                                           Progress& progress) = 0;
+};
+
+// Trace proposals (issue 25) for the Mapping screen: the lines of the 3D
+// image on display that look like joint traces (folds of the surface, dark
+// lines of its photograph), each measured like a hand trace, with its
+// confidence, for the geologist to accept, correct or reject. Runs on the
+// worker over the model the screen already holds (no second load).
+struct ProposalInput {
+  const photogrammetry::SurfaceMesh* mesh = nullptr;
+  const measure::MeshPicker* picker = nullptr;  // on `mesh`
+  const measure::PhotoView* view = nullptr;     // the left photograph's camera and pose
+  cv::Mat photo;                                // that photograph (BGR)
+  double point_sigma_m = 0.01;                  // the model's depth precision (1 sigma)
+  Preset preset = Preset::standard;
+};
+
+class ProposalRunner {
+ public:
+  virtual ~ProposalRunner() = default;
+  // Throws InputError saying why (no photograph, a mesh without lattice);
+  // Cancelled when cancelled.
+  virtual measure::ProposalResult propose(const ProposalInput& input, Progress& progress) = 0;
+};
+
+// Issue 27: the field report of a visit, written from the tablet (the
+// Blocks screen's "Field report"), as `rockface report` writes it.
+class FieldReportRunner {
+ public:
+  virtual ~FieldReportRunner() = default;
+  // Writes the PDF; returns what it holds in words ("3 blocks, 2 joints").
+  // Throws rockface::Error saying why (no such visit, cannot write).
+  virtual std::string write(const std::filesystem::path& project, storage::RecordId visit_id,
+                            const std::filesystem::path& pdf, Progress& progress) = 0;
+};
+
+struct FieldServices {
+  ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
+  AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
+  CameraConnector* camera = nullptr;               // null: no camera
+  TunnelRunner* tunnel = nullptr;                  // null: the Project screen shows no tunnel views
+  TraceMapRunner* trace_map = nullptr;             // null: the Mapping screen shows no blocks
+  WedgeRunner* wedges = nullptr;                   // null: the Blocks screen shows no Wedges view
+  SyncRunner* sync = nullptr;                      // null: no office server on this tablet
+  RockMassRunner* rockmass = nullptr;              // null: the Blocks screen shows no rock mass
+  ProposalRunner* proposals = nullptr;             // null: the Mapping screen proposes no traces
+  // Issue 27.
+  FieldReportRunner* field_report = nullptr;  // null: no Field report button
+};
+
+}  // namespace rockface::ui

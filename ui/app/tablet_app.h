@@ -1,0 +1,37 @@
+#pragma once
+// The tablet application: one full-screen ImGui window per frame with the
+// screen tabs on top, the current screen, and a status bar with the worker's
+// progress and a cancel button at the bottom. TabletApp owns the ImGui
+// context and its GLES 3 renderer; the platform (a window or the headless
+// runner) feeds touch input and says where the frame goes.
+#include "ui/app/app_state.h"
+
+namespace rockface::ui {
+
+class TabletApp {
+ public:
+  // The GL context must be current; creates the ImGui context.
+  TabletApp(UiOptions options, FieldServices services);
+  TabletApp(const TabletApp&) = delete;
+  TabletApp& operator=(const TabletApp&) = delete;
+  ~TabletApp();
+
+  // Builds one frame of width x height pixels (the model view renders into
+  // its own framebuffer here), then draw() renders it into the framebuffer
+  // the caller bound in between (the window's or the headless one).
+  void build_frame(TouchInput& input, int width, int height, float seconds_since_last);
+  void draw();
+
+  AppState& state() { return state_; }
+  const AppState& state() const { return state_; }
+
+ private:
+  void build();
+  void draw_tabs();
+  void draw_status_bar();
+  void keep_model_loaded();
+
+  AppState state_;
+};
+
+}  // namespace rockface::ui

@@ -1,0 +1,225 @@
+// Capture: the camera's connection and the settings that matter, live view
+// where the camera gives one, the stereo guidance, and the left and right
+// shots with a clear "captured / stored" state. Camera calls run on the
+// worker (a DSLR answers over USB in tens to hundreds of milliseconds); the
+// mock camera goes through the same path.
+#include <GLES3/gl3.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "camera/capture_guidance.h"
+#include "storage/project/project_store.h"
+#include "ui/app/screens.h"
+#include "ui/widgets/format.h"
+#include "ui/widgets/widgets_controls.h"
+
+namespace rockface::ui {
+
+namespace {
+
+// The settings a stereo pair depends on, by libgphoto2 widget name.
+constexpr const char* kKeySettings[] = {"focallength", "focusmode", "f-number",
+                                        "aperture",    "iso",       "shutterspeed"};
+
+struct CameraSnapshot {
+  std::string model;
+  std::vector<camera::CameraSetting> settings;
+};
+
+void connect(AppState& app) {
+  CameraConnector* connector = app.services.camera;
+  auto snapshot = std::make_shared<CameraSnapshot>();
+  auto slot = std::make_shared<std::shared_ptr<camera::Camera>>();
+  app.task.start(
+      "Connect camera",
+      [connector, snapshot, slot](Progress& progress) {
+        progress.step("connecting", 0.1);
+        std::shared_ptr<camera::Camera> cam = connector->connect();
+        snapshot->model = cam->model();
+        for (const auto& s : cam->settings())
+          for (const char* key : kKeySettings)
+            if (s.name == key) snapshot->settings.push_back(s);
+        *slot = std::move(cam);
+        return "connected to " + snapshot->model;
+      },
+      [&app, snapshot, slot](const TaskOutcome& outcome) {
+        if (outcome.kind != TaskOutcome::Kind::done) {
+          app.capture.connection = "not connected: " + outcome.message;
+          return;
+        }
+        app.capture.camera = *slot;
+        app.capture.connection = snapshot->model;
+        app.capture.guidance.clear();
+        for (const auto& s : snapshot->settings)
+          app.capture.guidance.push_back(s.label + ": " + s.value);
+      });
+}
+
+void shoot(AppState& app, bool left) {
+  auto cam = app.capture.camera;
+  auto shot = std::make_shared<camera::Capture>();
+  app.task.start(
+      left ? "Left shot" : "Right shot",
+      [cam, shot, left](Progress& progress) {
+        progress.step("focus and shoot", 0.2);
+        if (left) cam->lock_focus();  // the right shot keeps the left's focus
+        *shot = cam->capture();
+        return std::string(left ? "left" : "right") + " shot captured";
+      },
+      [&app, shot, left](const TaskOutcome& outcome) {
+        if (outcome.kind != TaskOutcome::Kind::done) return;
+        (left ? app.capture.left : app.capture.right) = std::move(*shot);
+        app.capture.stored = false;
+      });
+}
+
+void live_view(AppState& app) {
+  auto cam = app.capture.camera;
+  auto frame = std::make_shared<cv::Mat>();
+  app.task.start(
+      "Live view",
+      [cam, frame](Progress&) {
+        *frame = cam->live_view();
+        return std::string("live view frame");
+      },
+      [&app, frame](const TaskOutcome& outcome) {
+        if (outcome.kind != TaskOutcome::Kind::done || frame->empty()) return;
+        cv::Mat rgba;
+        const double shrink = std::min(1.0, 640.0 / frame->cols);
+        cv::resize(*frame, rgba, cv::Size(), shrink, shrink, cv::INTER_AREA);
+        cv::cvtColor(rgba, rgba, cv::COLOR_BGR2RGBA);
+        if (!app.capture.live_view_texture) glGenTextures(1, &app.capture.live_view_texture);
+        glBindTexture(GL_TEXTURE_2D, app.capture.live_view_texture);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.cols, rgba.rows, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     rgba.data);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        app.capture.live_view = rgba;
+      });
+}
+
+// Saves the pair with the project's latest calibration, then (when a
+// reconstruction runner exists) reconstructs it: each step is saved as it
+// finishes, so a cancel during reconstruction keeps the pair.
+void store_and_reconstruct(AppState& app) {
+  const auto file = app.session->file();
+  const auto visit = *app.session->visit();
+  storage::Capture capture;
+  capture.visit_id = visit;
+  capture.label = "tablet pair";
+  capture.left.bytes = app.capture.left->image.data;
+  capture.right.bytes = app.capture.right->image.data;
+  capture.left_exif = camera::exif_fields(app.capture.left->exif);
+  capture.right_exif = camera::exif_fields(app.capture.right->exif);
+  capture.settings["range_pole_m"] = std::to_string(app.capture.range_pole_m);
+  ReconstructionRunner* runner = app.services.reconstruction;
+  app.task.start(
+      "Store and reconstruct",
+      [file, capture, runner](Progress& progress) mutable {
+        // report, not step: a cancel before the pair is saved must not lose it
+        progress.report("storing the pair", 0.02);
+        storage::ProjectStore store = storage::ProjectStore::open(file);
+        const auto calibrations = store.list_calibrations();
+        if (!calibrations.empty()) capture.calibration_id = calibrations.back().id;
+        const storage::RecordId id = store.save_capture(capture);
+        if (!runner) return "pair stored as capture " + std::to_string(id);
+        const storage::RecordId model = runner->reconstruct(file, id, Preset::fast, progress);
+        return "pair stored, 3D image " + std::to_string(model) + " saved (Model)";
+      },
+      [&app](const TaskOutcome&) {
+        if (!app.session) return;
+        const auto before = app.session->captures().size();
+        app.session->refresh();
+        app.capture.stored = app.session->captures().size() > before;
+      });
+}
+
+const char* shot_state(const std::optional<camera::Capture>& shot, bool stored) {
+  if (!shot) return "not taken";
+  return stored ? "taken and stored" : "taken, not stored yet";
+}
+
+// A shot taken but not stored is lost by shooting it again: asked first.
+bool shoot_button(AppState& app, const char* label, bool taken, bool enabled) {
+  if (taken && !app.capture.stored)
+    return app.targets.confirmed_button(label, "The shot taken is not stored yet. Take it again?",
+                                        enabled);
+  return app.targets.button(label, 0, enabled);
+}
+
+void draw_guidance(AppState& app) {
+  CaptureState& c = app.capture;
+  const float s = app.targets.scale();
+  heading("Stereo guidance");
+  label("Distance to the face");
+  slider(app.targets, "distance", &c.distance_m, 2, 100, "%.0f m",
+         std::min(400 * s, ImGui::GetContentRegionAvail().x));
+  const camera::BaseLengthHint hint = camera::base_length_hint(c.distance_m);
+  bullet("Walk " + format::text(format::Length{hint.min_m}) + " to " +
+         format::text(format::Length{hint.max_m}) +
+         " between the shots (1/8 to 1/5 of the distance).");
+  bullet("Same focal length, focus and aperture for both shots; no flash.");
+  bullet("The range pole (both targets) in view of both shots.");
+  label("Range pole: distance between its target centres");
+  slider(app.targets, "range pole", &c.range_pole_m, 0.5f, 5, "%.2f m",
+         std::min(400 * s, ImGui::GetContentRegionAvail().x));
+}
+
+// The camera and the shots: what the geologist taps at the face, first.
+void draw_shots(AppState& app) {
+  CaptureState& c = app.capture;
+  const bool idle = !app.task.running();
+  field("Camera", format::without_folders(c.connection));
+  if (app.services.camera) note(format::without_folders(app.services.camera->describe()));
+  if (app.targets.button(c.camera ? "Reconnect" : "Connect camera", 0, idle && app.services.camera))
+    connect(app);
+  if (app.targets.button_in_row("Live view", idle && c.camera)) live_view(app);
+  ImGui::Separator();
+  const bool can_shoot = idle && c.camera != nullptr;
+  if (shoot_button(app, "Shoot left", c.left.has_value(), can_shoot)) shoot(app, true);
+  ImGui::SameLine();
+  label_in_row(std::string("Left: ") + shot_state(c.left, c.stored));
+  if (shoot_button(app, "Shoot right", c.right.has_value(), can_shoot && c.left.has_value()))
+    shoot(app, false);
+  ImGui::SameLine();
+  label_in_row(std::string("Right: ") + shot_state(c.right, c.stored));
+  const bool can_store = idle && c.left && c.right && !c.stored && app.session &&
+                         app.session->visit() && !app.session->read_only();
+  if (app.targets.button("Store pair and reconstruct", 0, can_store)) store_and_reconstruct(app);
+  if (!app.session) note("Open a project to store the pair (Project).");
+  if (c.left && c.right) {
+    for (const auto& n : camera::check_pair(c.left->exif, c.right->exif)) {
+      if (n.severity == camera::GuidanceNote::Severity::refusal)
+        paragraph("Refused: " + n.text, warning_colour());
+      else
+        bullet(n.text);
+    }
+  }
+  if (c.live_view_texture && !c.live_view.empty()) {
+    const float w = std::min(480 * app.targets.scale(), ImGui::GetContentRegionAvail().x);
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.live_view_texture)),
+                 ImVec2(w, w * c.live_view.rows / c.live_view.cols));
+  }
+}
+
+}  // namespace
+
+void draw_capture_screen(AppState& app) {
+  // Shots on the left, guidance and the camera's settings beside them (below
+  // them in portrait).
+  const SplitLayout layout = split_for_side_panel(ImGui::GetContentRegionAvail().x * 0.45f, 0.5f);
+  ImGui::BeginChild("capture shots", layout.main);
+  draw_shots(app);
+  ImGui::EndChild();
+  begin_side_panel("capture guidance", layout);
+  draw_guidance(app);
+  if (!app.capture.guidance.empty()) {
+    ImGui::Separator();
+    heading("Camera settings");
+    for (const auto& g : app.capture.guidance) bullet(g);
+  }
+  ImGui::EndChild();
+}
+
+}  // namespace rockface::ui

@@ -1,0 +1,27 @@
+#pragma once
+// The Capture screen's own state: the camera and the shots of the pair
+// being taken.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "camera/camera.h"
+
+namespace rockface::ui {
+
+struct CaptureState {
+  std::shared_ptr<camera::Camera> camera;  // used on the worker only while a task runs
+  std::string connection = "not connected";
+  std::optional<camera::Capture> left, right;
+  bool stored = false;  // the pair is saved in the project
+  std::vector<std::string> guidance;
+  float distance_m = 10;      // to the face, for the base length hint
+  float range_pole_m = 2.0f;  // distance between the pole's target centres
+  cv::Mat live_view;
+  unsigned live_view_texture = 0;
+};
+
+}  // namespace rockface::ui

@@ -1,0 +1,17 @@
+#pragma once
+// The Project screen's own state: the name of a new project, the tunnel
+// panel and the sync to the office.
+#include <string>
+
+#include "ui/project/office_panel.h"
+#include "ui/project/tunnel_panel.h"
+
+namespace rockface::ui {
+
+struct ProjectScreenState {
+  std::string new_project_name = "site";
+  TunnelState tunnel;  // the project's tunnel and the round's excavation
+  OfficeState office;  // the sync to the office
+};
+
+}  // namespace rockface::ui

@@ -1,0 +1,151 @@
+#include "ui/project/tunnel_panel.h"
+
+#include <memory>
+
+#include <imgui.h>
+
+#include "core/common/number_format.h"
+#include "ui/app/app_state.h"
+#include "ui/widgets/format.h"
+#include "ui/widgets/widgets_controls.h"
+
+namespace rockface::ui {
+
+namespace {
+
+const char* method_words(storage::VisitPlacement::Method m) {
+  return m == storage::VisitPlacement::Method::ground_control
+             ? "monitoring targets with survey coordinates"
+             : "range pole position and compass line";
+}
+
+void reload_tunnel(AppState& app) {
+  TunnelState& t = app.project.tunnel;
+  ProjectSession& s = *app.session;
+  if (t.loaded && t.file == s.file() && t.visit == s.visit()) return;
+  t.file = s.file();
+  t.visit = s.visit();
+  t.loaded = true;
+  t.record.reset();
+  t.placement.reset();
+  t.view.clear();
+  t.lines.clear();
+  t.picture.clear();
+  try {
+    t.record = s.store().load_tunnel();
+    if (t.record && s.visit()) t.placement = s.store().load_visit_placement(*s.visit());
+  } catch (const std::exception& e) {
+    t.lines = {std::string("The tunnel could not be read: ") + e.what()};
+  }
+}
+
+void show(AppState& app, const std::string& view) {
+  TunnelRunner* runner = app.services.tunnel;
+  const auto file = app.session->file();
+  const auto visit = app.session->visit();
+  auto result = std::make_shared<TunnelPicture>();
+  app.task.start(
+      view == "excavation" ? "Excavation against the design" : "Sets along the drive",
+      [runner, file, visit, view, result](Progress& progress) {
+        *result = view == "excavation" ? runner->profile(file, *visit, progress)
+                                       : runner->drive(file, progress);
+        return result->lines.empty() ? std::string("done") : result->lines.front();
+      },
+      [&app, view, result](const TaskOutcome& outcome) {
+        TunnelState& t = app.project.tunnel;
+        if (outcome.kind != TaskOutcome::Kind::done) {
+          t.view.clear();
+          t.picture.clear();
+          t.lines = {outcome.message};
+          return;
+        }
+        t.view = view;
+        t.lines = result->lines;
+        t.picture.set(result->bgr);
+      });
+}
+
+void place(AppState& app) {
+  TunnelRunner* runner = app.services.tunnel;
+  const auto file = app.session->file();
+  const auto visit = *app.session->visit();
+  const TunnelState& t = app.project.tunnel;
+  const double chainage = t.typed_chainage, offset = t.typed_offset, height = t.typed_height;
+  auto lines = std::make_shared<std::vector<std::string>>();
+  app.task.start(
+      "Place the visit",
+      [runner, file, visit, chainage, offset, height, lines](Progress& progress) {
+        *lines = runner->place(file, visit, chainage, offset, height, progress);
+        return lines->empty() ? std::string("placed") : lines->front();
+      },
+      [&app, lines](const TaskOutcome& outcome) {
+        app.project.tunnel.loaded = false;  // re-read the placement
+        if (outcome.kind == TaskOutcome::Kind::done) {
+          app.session->refresh();  // the moved 3D images are the visit's models now
+          app.project.tunnel.lines = *lines;
+        }
+      });
+}
+
+// The form for a visit with no survey target in view: where the range
+// pole's lower target stood.
+void draw_typed_placement(AppState& app) {
+  TunnelState& t = app.project.tunnel;
+  if (t.record && !t.record->stations.empty() && t.typed_chainage == 0)
+    t.typed_chainage = t.record->stations.front().chainage;
+  const float w = std::min(220 * app.targets.scale(), ImGui::GetContentRegionAvail().x * 0.5f);
+  paragraph("Where the range pole's lower target stands:");
+  for (auto [name, value] : {std::pair{"Chainage (m)", &t.typed_chainage},
+                             std::pair{"Offset right of the axis (m)", &t.typed_offset},
+                             std::pair{"Height above the axis (m)", &t.typed_height}}) {
+    number_field(app.targets, name, value, "%.2f", w, 0.1);
+    ImGui::SameLine();
+    label(name);
+  }
+  const bool can = !app.task.running() && app.services.tunnel && !app.session->read_only() &&
+                   !app.session->pairs().empty() && app.session->measurements().empty();
+  if (app.targets.button("Place this visit", 0, can)) place(app);
+  if (!app.session->measurements().empty())
+    note("(placing moves the 3D image: only before mapping on it)");
+}
+
+}  // namespace
+
+void draw_tunnel_panel(AppState& app) {
+  if (!app.session) return;
+  reload_tunnel(app);
+  TunnelState& t = app.project.tunnel;
+  ImGui::Separator();
+  if (!t.record) {
+    note("No tunnel in this project (a replay of a scene with a tunnel adds one).");
+    for (const auto& line : t.lines) paragraph(line);
+    return;
+  }
+  const auto& r = *t.record;
+  const std::string from = r.stations.empty() ? "?" : format_fixed(r.stations.front().chainage, 1);
+  const std::string to = r.stations.empty() ? "?" : format_fixed(r.stations.back().chainage, 1);
+  heading("Tunnel " + r.name);
+  paragraph("Chainage " + from + " to " + to + " m, drive " + tunnel::drive_name(r.drive));
+  paragraph("Design profile " + format::text(format::Length{r.profile.perimeter()}) + " around, " +
+            format::text(format::Area{r.profile.area()}) + "; underbreak tolerance " +
+            format::text(format::Length{r.underbreak_tolerance_m}));
+  if (t.placement) {
+    const auto& p = *t.placement;
+    paragraph("This visit: face at chainage " + format_fixed(p.chainage, 2) + " m, " +
+              format::text(format::Length{std::abs(p.offset_m)}) + " " +
+              (p.offset_m >= 0 ? "right" : "left") + " of the axis; placed by " +
+              method_words(p.method) + ".");
+    if (p.rms_m) paragraph("Target residual: " + format::text(format::Length{*p.rms_m}) + " rms");
+  } else if (app.session->visit()) {
+    paragraph("This visit is not placed in the tunnel yet.");
+    draw_typed_placement(app);
+  }
+  const bool idle = !app.task.running() && app.services.tunnel;
+  if (app.targets.button("Excavation of this round", 0, idle && t.placement.has_value()))
+    show(app, "excavation");
+  if (app.targets.button_in_row("Sets along the drive", idle)) show(app, "drive");
+  for (const auto& line : t.lines) paragraph(line);
+  t.picture.draw(ImGui::GetContentRegionAvail().x);
+}
+
+}  // namespace rockface::ui

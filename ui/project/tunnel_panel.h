@@ -1,0 +1,35 @@
+#pragma once
+// The tunnel on the Project screen: the project's tunnel (alignment,
+// design profile, drive, tolerance), where the current visit lies in it and
+// how it was placed, and on request two views made on the worker: the
+// excavation of the visit's round against the design (developed view) and
+// the joint sets along the drive.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "storage/tunnel/tunnel_records.h"
+#include "ui/widgets/picture_texture.h"
+
+namespace rockface::ui {
+
+struct AppState;
+
+struct TunnelState {
+  // What was read for (project, visit); re-read when either changes.
+  std::filesystem::path file;
+  std::optional<storage::RecordId> visit;
+  bool loaded = false;
+  std::optional<storage::TunnelRecord> record;
+  std::optional<storage::VisitPlacement> placement;
+  std::string view;  // "excavation" | "drive" | empty
+  // The typed placement of the range pole's lower target (m).
+  double typed_chainage = 0, typed_offset = 0, typed_height = 0;
+  std::vector<std::string> lines;
+  PictureTexture picture;
+};
+
+void draw_tunnel_panel(AppState& app);
+
+}  // namespace rockface::ui

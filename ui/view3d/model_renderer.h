@@ -1,0 +1,46 @@
+#pragma once
+// Draws the textured 3D image with GLES 3 into a framebuffer: the model
+// view's panel shows that framebuffer's texture. What lies on the surface
+// (traces, blocks: OverlayScene) is drawn into the same framebuffer with the
+// model's depth; ImGui draws the flat marks (labels, markers) on top.
+#include <memory>
+
+#include <opencv2/core.hpp>
+
+#include "ui/platform/framebuffer.h"
+#include "ui/view3d/display_mesh.h"
+#include "ui/view3d/orbit_camera.h"
+#include "ui/view3d/overlay_renderer.h"
+#include "ui/view3d/overlay_scene.h"
+
+namespace rockface::ui {
+
+class ModelRenderer {
+ public:
+  ModelRenderer();
+  ModelRenderer(const ModelRenderer&) = delete;
+  ModelRenderer& operator=(const ModelRenderer&) = delete;
+  ~ModelRenderer();
+
+  // Uploads a mesh and its texture (BGR; empty: vertex colours).
+  void upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr);
+  // Renders into a framebuffer of the camera's viewport size (made or
+  // resized as needed) and returns its colour texture.
+  // The overlay is drawn after the model, depth-tested against it.
+  unsigned render(const OrbitCamera& camera, const OverlayScene& overlay = {});
+  // The last render's pixels, BGR, top row first (the rows of
+  // OrbitCamera::project); empty before the first render. For tests: the
+  // depth test is checked on what the GPU drew, not on a model of it.
+  cv::Mat read_bgr() const;
+
+ private:
+  unsigned program_ = 0, vertex_array_ = 0, texture_ = 0;
+  unsigned buffers_[4] = {0, 0, 0, 0};  // positions, texcoords, colours, indices
+  int index_count_ = 0;
+  bool textured_ = false;
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // the mesh's centre: positions are relative
+  std::unique_ptr<OverlayRenderer> overlay_;
+  std::unique_ptr<Framebuffer> target_;
+};
+
+}  // namespace rockface::ui
