@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "storage/scene.h"
+#include "storage/scene/scene.h"
 #include "tests/support/refusal.h"
 
 TEST(JsonReader, ANulInANameIsRefusedNamingTheField) {
