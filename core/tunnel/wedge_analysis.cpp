@@ -56,9 +56,9 @@ void check_options(const WedgeOptions& o) {
                      outside_range_text(o.density, kRockDensityRange, "a rock's density"));
   if (!o.gravity.allFinite() || !(o.gravity.norm() > 0) || o.gravity.norm() > 100)
     throw InputError("gravity", "must be a finite, non-zero acceleration of at most 100 m/s^2");
-  if (o.seismic && !(o.seismic->allFinite() && o.seismic->norm() <= kSeismicRange.hi))
+  if (o.seismic && !(o.seismic->allFinite() && o.seismic->stableNorm() <= kSeismicRange.hi))
     throw InputError("effects.seismic.acceleration",
-                     outside_range_text(o.seismic->norm(), kSeismicRange,
+                     outside_range_text(o.seismic->stableNorm(), kSeismicRange,
                                         "a pseudo-static acceleration's size"));
   if (o.water && !(o.water->unit_weight >= kWaterUnitWeightRange.lo &&
                    o.water->unit_weight <= kWaterUnitWeightRange.hi))
