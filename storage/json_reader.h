@@ -87,7 +87,13 @@ class Reader {
   }
   std::string string(const nlohmann::json& v, const std::string& path) const {
     if (!v.is_string()) fail(path, "must be a string");
-    return v.get<std::string>();
+    std::string s = v.get<std::string>();
+    // A NUL cut every message that quoted the text ("rockface: abc") and
+    // every C string the text reached (issue 41).
+    if (s.find('\0') != std::string::npos)
+      fail(path, "contains a NUL character (\\u0000 at byte " + std::to_string(s.find('\0')) +
+                     "), which is not allowed in a name or a text");
+    return s;
   }
   std::string id(const nlohmann::json& v, const std::string& path) const {
     std::string s = string(v, path);

@@ -144,6 +144,7 @@ void analyse_block_dynamics(const blocks::Polyhedron& poly, const AnalysisInput&
   d.trigger = why->why;
   d.strength_divisor = why->divisor;
   d.outcome = r.outcome;
+  d.stopped = r.stopped;
   for (const mechanics::MotionEvent& e : r.events)
     d.events.push_back({e.time, e.kind, e.what, e.planes});
   for (const mechanics::MotionSample& s : r.samples) {

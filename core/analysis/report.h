@@ -131,9 +131,10 @@ struct ReportLanding {
 };
 
 struct ReportDynamics {
-  std::string trigger;                         // why it ran: "limit equilibrium: FoS 0.72 < 1", ...
-  std::string outcome;                         // "lands", "at rest", "moving at the end", ...
-  double strength_divisor = 1;                 // friction tan / this (the limit point's lambda)
+  std::string trigger;          // why it ran: "limit equilibrium: FoS 0.72 < 1", ...
+  std::string outcome;          // "lands", "at rest", "moving at the end", ...
+  std::string stopped;          // why the integration stopped before its end (its budget), or empty
+  double strength_divisor = 1;  // friction tan / this (the limit point's lambda)
   std::map<std::string, double> friction_deg;  // per joint, while sliding; cohesion lost
   std::vector<ReportMotionEvent> events;
   std::vector<ReportMotionSample> path;

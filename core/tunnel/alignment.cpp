@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/tunnel/survey_ranges.h"
 #include "core/tunnel/tolerances.h"
 
 namespace rockface::tunnel {
@@ -17,6 +18,14 @@ std::string station_name(std::size_t i, double chainage) {
   std::ostringstream s;
   s.precision(10);
   s << "stations[" << i << "] (chainage " << chainage << ")";
+  return s.str();
+}
+
+// "1e+08", "1e+308": the %g of a number, for ranges and refused values.
+std::string format_number(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
   return s.str();
 }
 
@@ -90,13 +99,30 @@ Alignment Alignment::build(const std::vector<AlignmentStation>& stations,
     throw InputError("radii", "one radius per element (" + std::to_string(stations.size() - 1) +
                                   "), got " + std::to_string(radii.size()));
   if (!datum.allFinite()) throw InputError("datum", "must be finite coordinates");
+  auto survey_range = [](const Eigen::Vector3d& v) {
+    return std::abs(v.x()) <= kMaxSurveyHorizontalM && std::abs(v.y()) <= kMaxSurveyHorizontalM &&
+           std::abs(v.z()) <= kMaxSurveyElevationM;
+  };
+  const std::string ranges = "easting and northing within +-" +
+                             format_number(kMaxSurveyHorizontalM) + " m, elevation within +-" +
+                             format_number(kMaxSurveyElevationM) + " m";
+  if (!survey_range(datum))
+    throw InputError("datum", "must be survey coordinates (" + ranges + ")");
   for (std::size_t i = 0; i < stations.size(); ++i) {
     const auto& s = stations[i];
     if (!std::isfinite(s.chainage))
       throw InputError("stations[" + std::to_string(i) + "].chainage", "must be a finite number");
+    if (!(std::abs(s.chainage) <= kMaxSurveyHorizontalM))
+      throw InputError("stations[" + std::to_string(i) + "].chainage",
+                       format_number(s.chainage) + " is outside +-" +
+                           format_number(kMaxSurveyHorizontalM) + " m");
     if (!s.survey.allFinite())
       throw InputError(station_name(i, s.chainage),
                        "easting, northing and elevation must be finite");
+    if (!survey_range(s.survey))
+      throw InputError(
+          station_name(i, s.chainage),
+          "easting, northing and elevation must be survey coordinates (" + ranges + ")");
     if (i > 0) {
       const double prev = stations[i - 1].chainage;
       if (s.chainage == prev)
@@ -164,7 +190,108 @@ Alignment Alignment::build(const std::vector<AlignmentStation>& stations,
     }
     al.elements_.push_back(e);
   }
+  al.build_bounds();
   return al;
+}
+
+void Alignment::build_bounds() {
+  mid_.clear();
+  reach_.clear();
+  for (const Element& e : elements_) {
+    mid_.push_back(point_on(e, 0.5 * (e.c0 + e.c1)));
+    // The speed |P'(c)| is constant along an element (a line or a circle
+    // at a constant grade): every point lies within half the 3D length of
+    // the middle one along the element, so within that straight.
+    reach_.push_back(0.5 * derivative(e, e.c0).norm() * (e.c1 - e.c0));
+  }
+  bounds_.clear();
+  if (!elements_.empty()) build_bound(0, elements_.size());
+}
+
+int Alignment::build_bound(std::size_t first, std::size_t last) {
+  const int index = static_cast<int>(bounds_.size());
+  bounds_.emplace_back();
+  Bound b;
+  b.first = first;
+  b.last = last;
+  for (std::size_t i = first; i < last; ++i) b.centre += mid_[i];
+  b.centre /= static_cast<double>(last - first);
+  for (std::size_t i = first; i < last; ++i)
+    b.radius = std::max(b.radius, (mid_[i] - b.centre).norm() + reach_[i]);
+  if (last - first > kAlignmentBoundLeaf) {
+    const std::size_t half = first + (last - first) / 2;
+    b.left = build_bound(first, half);
+    b.right = build_bound(half, last);
+  }
+  bounds_[index] = b;
+  return index;
+}
+
+std::pair<double, double> Alignment::foot_on(const Element& e, const Eigen::Vector3d& p) const {
+  double c;
+  if (e.radius == 0) {
+    const Eigen::Vector3d P0 = point_on(e, e.c0);
+    const Eigen::Vector3d V = derivative(e, e.c0);
+    c = e.c0 + (p - P0).dot(V) / V.squaredNorm();
+  } else {
+    // Start from the horizontal foot (the polar angle of p about the
+    // centre), then Newton on g(c) = (p - P(c)) . P'(c) for the grade.
+    const Eigen::Vector2d q = p.head<2>() - e.centre;
+    const Eigen::Vector2d a = e.a - e.centre;
+    const double turned = std::atan2(a.x() * q.y() - a.y() * q.x(), a.dot(q));
+    double f = q.norm() > 0 ? turned / e.sweep : 0.5;
+    c = e.c0 + std::clamp(f, -0.5, 1.5) * (e.c1 - e.c0);
+    for (int it = 0; it < 30; ++it) {
+      const Eigen::Vector3d P = point_on(e, c);
+      const Eigen::Vector3d V = derivative(e, c);
+      const double g = (p - P).dot(V);
+      const double dg = -V.squaredNorm() + (p - P).dot(second_derivative(e, c));
+      if (dg >= 0) break;  // not a minimum of the distance here: keep the horizontal foot
+      const double step = -g / dg;
+      c += step;
+      if (std::abs(step) < kFootChainageM) break;
+    }
+  }
+  c = std::clamp(c, e.c0, e.c1);
+  return {c, (p - point_on(e, c)).norm()};
+}
+
+double Alignment::nearest_foot(const Eigen::Vector3d& p) const {
+  // Branch and bound over the spheres: a sphere whose nearest point lies
+  // farther than the best foot so far (beyond rounding) holds no better
+  // one. Ties go to the earlier element, as a scan in order gives them.
+  double best_c = first_chainage();
+  double best_d = std::numeric_limits<double>::infinity();
+  std::size_t best_i = elements_.size();
+  auto farther = [&](const Eigen::Vector3d& centre, double radius) {
+    const double lower = (p - centre).norm() - radius;
+    return lower > best_d + kAlignmentBoundSlackRel * (best_d + radius + 1.0);
+  };
+  std::vector<int> stack{0};
+  while (!stack.empty()) {
+    const Bound& b = bounds_[static_cast<std::size_t>(stack.back())];
+    stack.pop_back();
+    if (farther(b.centre, b.radius)) continue;
+    if (b.left >= 0) {
+      // The nearer child first: the best foot shrinks sooner.
+      const Bound& l = bounds_[static_cast<std::size_t>(b.left)];
+      const Bound& r = bounds_[static_cast<std::size_t>(b.right)];
+      const bool left_first = (p - l.centre).norm() - l.radius <= (p - r.centre).norm() - r.radius;
+      stack.push_back(left_first ? b.right : b.left);
+      stack.push_back(left_first ? b.left : b.right);
+      continue;
+    }
+    for (std::size_t i = b.first; i < b.last; ++i) {
+      if (farther(mid_[i], reach_[i])) continue;
+      const auto [c, d] = foot_on(elements_[i], p);
+      if (d < best_d || (d == best_d && i < best_i)) {
+        best_d = d;
+        best_c = c;
+        best_i = i;
+      }
+    }
+  }
+  return best_c;
 }
 
 double Alignment::first_chainage() const {
@@ -247,40 +374,7 @@ AlignmentPlace Alignment::place(const Eigen::Vector3d& p) const {
   // whose cross-section passes through p), kept within the element; the
   // nearest foot wins. In the wedge outside a corner between two elements no
   // cross-section passes through p: the corner's chainage is taken.
-  double best_c = first_chainage();
-  double best_d = std::numeric_limits<double>::infinity();
-  for (const Element& e : elements_) {
-    double c;
-    if (e.radius == 0) {
-      const Eigen::Vector3d P0 = point_on(e, e.c0);
-      const Eigen::Vector3d V = derivative(e, e.c0);
-      c = e.c0 + (p - P0).dot(V) / V.squaredNorm();
-    } else {
-      // Start from the horizontal foot (the polar angle of p about the
-      // centre), then Newton on g(c) = (p - P(c)) . P'(c) for the grade.
-      const Eigen::Vector2d q = p.head<2>() - e.centre;
-      const Eigen::Vector2d a = e.a - e.centre;
-      const double turned = std::atan2(a.x() * q.y() - a.y() * q.x(), a.dot(q));
-      double f = q.norm() > 0 ? turned / e.sweep : 0.5;
-      c = e.c0 + std::clamp(f, -0.5, 1.5) * (e.c1 - e.c0);
-      for (int it = 0; it < 30; ++it) {
-        const Eigen::Vector3d P = point_on(e, c);
-        const Eigen::Vector3d V = derivative(e, c);
-        const double g = (p - P).dot(V);
-        const double dg = -V.squaredNorm() + (p - P).dot(second_derivative(e, c));
-        if (dg >= 0) break;  // not a minimum of the distance here: keep the horizontal foot
-        const double step = -g / dg;
-        c += step;
-        if (std::abs(step) < kFootChainageM) break;
-      }
-    }
-    c = std::clamp(c, e.c0, e.c1);
-    const double d = (p - point_on(e, c)).norm();
-    if (d < best_d) {
-      best_d = d;
-      best_c = c;
-    }
-  }
+  double best_c = nearest_foot(p);
   AlignmentPlace place;
   // Beyond an end: the foot on the end's tangent line, flagged.
   if (best_c == first_chainage()) {

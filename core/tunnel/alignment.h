@@ -27,6 +27,7 @@
 //   direction: "right" and "offset" are to the right of a geologist facing
 //   the face.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -146,6 +147,25 @@ class Alignment {
   // In the table's direction (ascending chainage).
   Eigen::Vector3d ascending_tangent(const Element& e, double chainage) const;
   Eigen::Vector3d point_on(const Element& e, double chainage) const;
+  // The foot of the perpendicular from p on element e, kept within it, and
+  // its distance from p.
+  std::pair<double, double> foot_on(const Element& e, const Eigen::Vector3d& p) const;
+  // place()'s search: the chainage of the nearest foot (the first element's
+  // on a tie), found through the bounding spheres below, so that a table of
+  // 10^5 rows is not scanned whole for every point placed (issue 41: a
+  // replay's rock points x 100 000 rows took 75 s).
+  double nearest_foot(const Eigen::Vector3d& p) const;
+  void build_bounds();
+
+  // A sphere holding elements [first, last) (the chain's consecutive
+  // elements), its children's indices in bounds_ (-1: a leaf).
+  struct Bound {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    double radius = 0;
+    std::size_t first = 0, last = 0;
+    int left = -1, right = -1;
+  };
+  int build_bound(std::size_t first, std::size_t last);
 
   std::vector<AlignmentStation> stations_;
   std::vector<double> radii_;
@@ -153,6 +173,9 @@ class Alignment {
   Eigen::Vector3d datum_ = Eigen::Vector3d::Zero();
   Drive drive_ = Drive::ascending;
   bool polyline_ = false;
+  std::vector<Bound> bounds_;         // bounds_[0]: the root
+  std::vector<Eigen::Vector3d> mid_;  // per element: the point at its middle chainage
+  std::vector<double> reach_;         // per element: half its 3D length (>= any point's distance)
 };
 
 }  // namespace rockface::tunnel

@@ -1,6 +1,8 @@
 #pragma once
 // Named tolerances of core/tunnel. Each says what error it absorbs.
 
+#include <cstddef>
+
 namespace rockface::tunnel {
 
 // Two stations closer than this (horizontally, m) are one point: an element
@@ -30,6 +32,19 @@ inline constexpr double kProfileJoinM = 1e-4;
 // Arcs are drawn as chords whose sagitta stays below this (m) when the
 // profile is checked for self-intersection and star shape.
 inline constexpr double kProfileSagittaM = 1e-4;
+
+// An outline that is not star-shaped is searched for the place where it
+// crosses itself (pairwise, quadratic) only up to this many chords (2.5e7
+// pairs, well under a second); a longer one is refused as not star-shaped.
+inline constexpr std::size_t kProfileCrossingCheckChords = 5000;
+
+// place() searches the alignment's elements through bounding spheres of
+// this many consecutive elements at the leaves; a sphere is passed over
+// when its nearest point lies farther than the best foot so far by more
+// than this relative slack (rounding of the distances, ~1e-15 relative:
+// no element that could be nearest or tie is ever passed over).
+inline constexpr std::size_t kAlignmentBoundLeaf = 8;
+inline constexpr double kAlignmentBoundSlackRel = 1e-9;
 
 // Newton iterations of the foot point on a graded arc stop when the chainage
 // step is below this (m): far below survey accuracy.
@@ -66,4 +81,8 @@ inline constexpr double kWedgeScaleRel = 1e-10;
 // A trace-length limit is met by bisection on the apex's position to this
 // relative precision of the limit.
 inline constexpr double kWedgeTraceRel = 1e-6;
+// Two joint sets whose poles are closer than this (radians), or than the
+// orientation uncertainty when that is larger, are one set: a set listed
+// twice differs by the rounding of degrees to a normal (~1e-15).
+inline constexpr double kWedgeSameSetRad = 1e-9;
 }  // namespace rockface::tunnel

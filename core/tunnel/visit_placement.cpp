@@ -1,6 +1,10 @@
 #include "core/tunnel/visit_placement.h"
+#include "core/tunnel/survey_ranges.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
 
 #include "core/common/error.h"
 #include "core/common/number_format.h"
@@ -32,6 +36,19 @@ Eigen::Vector3d typed_pole_position(const Alignment& alignment, double chainage,
                          format_fixed(alignment.first_chainage(), 2) + " to " +
                          format_fixed(alignment.last_chainage(), 2) + ")");
   }
+  // The pole stands in the excavation: an offset of 130 m was taken
+  // without a word and placed the visit in the rock (issue 41).
+  for (auto [value, field] :
+       {std::pair{offset, "tunnel.placement.offset"}, std::pair{height, "tunnel.placement.height"}})
+    if (!(std::abs(value) <= kMaxTypedOffsetM)) {
+      std::ostringstream v;  // %g: 1e308 is not 300 digits
+      v.precision(6);
+      v << value << " m";
+      throw InputError(field, v.str() +
+                                  " from the axis is more than any tunnel's half-width (at most " +
+                                  format_fixed(kMaxTypedOffsetM, 0, " m") +
+                                  "): a typo, or the pole outside the excavation?");
+    }
   return alignment.frame_at(chainage).to_local(offset, height);
 }
 

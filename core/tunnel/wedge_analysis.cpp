@@ -20,6 +20,7 @@
 #include "core/kinematics/effects/effect_shotcrete.h"
 #include "core/kinematics/effects/effect_water.h"
 #include "core/kinematics/joint_pyramids.h"
+#include "core/tunnel/support_ranges.h"
 #include "core/tunnel/tolerances.h"
 #include "core/tunnel/wedge_analysis_phases.h"
 #include "core/tunnel/wedge_geometry.h"
@@ -47,17 +48,37 @@ kinematics::Effects load_effects(const WedgeOptions& o) {
 }
 
 void check_options(const WedgeOptions& o) {
-  if (!(o.density > 0)) throw InputError("rock.density", "must be positive");
+  // Each load named in its own message, within a range that no rock or
+  // earthquake leaves: a value of 1e308 overflowed the wedge's weight and
+  // was blamed on the shotcrete (issue 41).
+  if (!(o.density >= kRockDensityRange.lo && o.density <= kRockDensityRange.hi))
+    throw InputError("rock.density",
+                     outside_range_text(o.density, kRockDensityRange, "a rock's density"));
+  if (!o.gravity.allFinite() || !(o.gravity.norm() > 0) || o.gravity.norm() > 100)
+    throw InputError("gravity", "must be a finite, non-zero acceleration of at most 100 m/s^2");
+  if (o.seismic && !(o.seismic->allFinite() && o.seismic->stableNorm() <= kSeismicRange.hi))
+    throw InputError("effects.seismic.acceleration",
+                     outside_range_text(o.seismic->stableNorm(), kSeismicRange,
+                                        "a pseudo-static acceleration's size"));
+  if (o.water && !(o.water->unit_weight >= kWaterUnitWeightRange.lo &&
+                   o.water->unit_weight <= kWaterUnitWeightRange.hi))
+    throw InputError(
+        "effects.water.unit_weight",
+        outside_range_text(o.water->unit_weight, kWaterUnitWeightRange, "water's unit weight"));
   if (o.trace_length_limit && !(*o.trace_length_limit > 0))
     throw InputError("wedges.trace_length", "must be a positive number of metres");
   if (o.bolts) {
     const auto& b = *o.bolts;
-    if (!(b.length > 0)) throw InputError("wedges.support.bolts.length", "must be positive (m)");
-    if (!(b.spacing > 0)) throw InputError("wedges.support.bolts.spacing", "must be positive (m)");
-    if (!(b.capacity > 0))
-      throw InputError("wedges.support.bolts.capacity", "must be positive (N)");
-    if (b.bond_strength && !(*b.bond_strength > 0))
-      throw InputError("wedges.support.bolts.bond_strength", "must be positive (N/m)");
+    auto in_range = [](double v, const SupportRange& r, const char* field, const char* what) {
+      if (!r.contains(v))
+        throw InputError(std::string("wedges.support.bolts.") + field,
+                         outside_range_text(v, r, what));
+    };
+    in_range(b.length, kBoltLengthRange, "length", "a bolt's length");
+    in_range(b.spacing, kBoltSpacingRange, "spacing", "a bolt pattern's spacing");
+    in_range(b.capacity, kBoltCapacityRange, "capacity", "a bolt's capacity");
+    if (b.bond_strength)
+      in_range(*b.bond_strength, kBoltBondRange, "bond_strength", "a bolt's bond strength");
   }
   if (o.shotcrete) {
     if (!(o.shotcrete->thickness > 0))
@@ -240,6 +261,40 @@ void check_sets(const std::vector<WedgeJointSet>& sets) {
   for (std::size_t i = 0; i < sets.size(); ++i)
     if (!sets[i].normal.allFinite() || !(sets[i].normal.norm() > 0.5))
       throw InputError("sets[" + std::to_string(i) + "]", "has no orientation");
+}
+
+DistinctSets distinct_sets(const std::vector<WedgeJointSet>& sets, double uncertainty) {
+  DistinctSets out;
+  const double same = std::max(uncertainty, kWedgeSameSetRad);
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    const Eigen::Vector3d ni = sets[i].normal.normalized();
+    bool merged = false;
+    for (int k : out.kept) {
+      const Eigen::Vector3d nk = sets[k].normal.normalized();
+      // Poles, not normals: a plane and its flipped normal are one set.
+      const double angle = std::atan2(ni.cross(nk).norm(), std::abs(ni.dot(nk)));
+      if (angle > same) continue;
+      out.notes.push_back(
+          "sets " + sets[k].id + " and " + sets[i].id + " are one set (their poles " +
+          fixed1(angle * kDegPerRad) + " deg apart, within " + fixed1(same * kDegPerRad) +
+          " deg, the orientation uncertainty): " + sets[i].id + " is left out, with its strength");
+      merged = true;
+      break;
+    }
+    if (!merged) out.kept.push_back(static_cast<int>(i));
+  }
+  if (out.kept.size() < 3)
+    throw InputError("sets", "a wedge needs three distinct joint sets; " +
+                                 std::to_string(sets.size()) + " given are " +
+                                 std::to_string(out.kept.size()) + " within " +
+                                 fixed1(same * kDegPerRad) + " deg of each other");
+  if (out.kept.size() > static_cast<std::size_t>(kMaxWedgeSets))
+    throw InputError("sets", std::to_string(out.kept.size()) +
+                                 " distinct joint sets; a wedge analysis takes at most " +
+                                 std::to_string(kMaxWedgeSets) +
+                                 " (its work grows with the cube of the number of sets): "
+                                 "choose the sets that matter");
+  return out;
 }
 
 geometry::Cone face_excavation_pyramid(const TunnelFrame& frame) {
@@ -514,11 +569,16 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
     if (f.none) out.none.push_back(std::move(*f.none));
     if (f.wedge) out.wedges.push_back(std::move(*f.wedge));
   };
-  const std::size_t n = sets.size();
+  // Sets within the uncertainty of each other are one set: the others keep
+  // their digit ('2') in every code, and no wedge is found twice.
+  const DistinctSets distinct = distinct_sets(sets, options.uncertainty);
+  out.notes.insert(out.notes.end(), distinct.notes.begin(), distinct.notes.end());
+  const std::vector<int>& kept = distinct.kept;
+  const std::size_t n = kept.size();
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
       for (std::size_t k = j + 1; k < n; ++k) {
-        const std::array<int, 3> idx{static_cast<int>(i), static_cast<int>(j), static_cast<int>(k)};
+        const std::array<int, 3> idx{kept[i], kept[j], kept[k]};
         if (auto none = parallel_sets(sets, idx, options.uncertainty)) {
           out.none.push_back(std::move(*none));
           continue;

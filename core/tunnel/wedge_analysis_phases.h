@@ -2,6 +2,7 @@
 // The phases of analyse_wedges (wedge_analysis.h), each a function of its
 // own input, declared here so that each can be read and tested on its own:
 //   1. check_sets: three sets or more, each with an orientation;
+//      distinct_sets: sets within the uncertainty of each other are one;
 //   2. face_excavation_pyramid: the face's EP (rock ahead of it);
 //   3. for each three sets: parallel_sets (they bound no pyramid), then
 //      for each of the eight pyramids set_pyramid, and face_wedge or
@@ -36,6 +37,17 @@ struct Context {
 // Throws InputError for fewer than three sets ("sets") or one without an
 // orientation ("sets[i]").
 void check_sets(const std::vector<WedgeJointSet>& sets);
+
+// The sets that differ: a set whose pole lies within the orientation
+// uncertainty (at least kWedgeSameSetRad) of an earlier set's is that set
+// (listed twice, or measured twice) and is left out, said in notes.
+// Throws InputError ("sets") for fewer than three distinct sets or more
+// than kMaxWedgeSets (support_ranges.h).
+struct DistinctSets {
+  std::vector<int> kept;  // indices into sets, in their order
+  std::vector<std::string> notes;
+};
+DistinctSets distinct_sets(const std::vector<WedgeJointSet>& sets, double uncertainty);
 
 // The face's excavation pyramid: the rock lies ahead of it, along the drive.
 geometry::Cone face_excavation_pyramid(const TunnelFrame& frame);

@@ -54,8 +54,19 @@ void check_point_sigma(const std::optional<double>& sigma) {
   }
 }
 
+// --friction: the stereonet overlay's friction angle, in (0, 90) degrees
+// and finite (issue 41: nan, 90 or 1e308 drew a meaningless overlay).
+void check_friction(double friction_deg) {
+  if (!(friction_deg > 0 && friction_deg < 90)) {
+    std::ostringstream value;
+    value << friction_deg;
+    throw InputError("--friction", value.str() + " is outside (0, 90) degrees");
+  }
+}
+
 int run_measure(MeasureOptions& o) {
   check_point_sigma(o.request.on.point_sigma);
+  check_friction(o.request.friction_deg);
   parse_sets(o.sets, o.request);
   const std::string project = o.request.on.source;
   o.request.stored = [&](storage::RecordId visit) {

@@ -60,7 +60,7 @@ ReplaySource open_source(const ReplayRequest& request) {
     out.intrinsics.body = "rockface synthetic camera";
     if (out.synthetic->scene.range_pole)
       out.sources.range_pole_m = out.synthetic->scene.range_pole->length;
-    out.sources.north = compass_reading(out.synthetic->scene, out.intrinsics);
+    out.sources.north = compass_reading(out.synthetic->scene, out.intrinsics, out.scene->source);
   } else {
     const fs::path cam_file = fs::path(request.source) / "camera.json";
     if (!fs::exists(cam_file))
@@ -134,7 +134,8 @@ void move_to_pole(photogrammetry::ReconstructionResult& rec, const Eigen::Vector
 }
 
 std::optional<photogrammetry::NorthReference> compass_reading(
-    const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k) {
+    const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k,
+    const std::string& source) {
   if (!scene.reference_line) return std::nullopt;
   const auto& [from, to] = *scene.reference_line;
   const photogrammetry::CameraPose pose =
@@ -155,6 +156,8 @@ std::optional<photogrammetry::NorthReference> compass_reading(
   north.to_px = {px[1].x, px[1].y};
   north.azimuth_deg = rad_to_deg(std::atan2(to.x() - from.x(), to.y() - from.y()));
   if (north.azimuth_deg < 0) north.azimuth_deg += 360;
+  // The scene's field, not the option of `reconstruct` (issue 41).
+  north.where = source + ": imaging.reference_line";
   return north;
 }
 

@@ -90,9 +90,11 @@ void move_to_pole(photogrammetry::ReconstructionResult& rec, const Eigen::Vector
 
 // The compass line of a synthetic scene (its reference_line): its bearing
 // (degrees clockwise from north, of its horizontal projection) and its end
-// points in the first station's left image. Nothing without a line.
+// points in the first station's left image, named in messages as the
+// scene file `source`'s field. Nothing without a line.
 std::optional<photogrammetry::NorthReference> compass_reading(
-    const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k);
+    const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k,
+    const std::string& source);
 
 // Each scene joint that has picked traces: its measured plane beside the
 // scene's.

@@ -138,7 +138,10 @@ std::string wedge_mode_words(const tunnel::Wedge& w) {
 
 std::string wedge_fos_text(const std::optional<double>& fos) {
   if (!fos) return "-";
-  if (!std::isfinite(*fos)) return "stable";
+  // Only sliding_mode's "no driving force" (+infinity) is stable; a NaN
+  // (an overflow, 0 / 0) is no verdict at all (issue 41).
+  if (std::isnan(*fos) || *fos < 0) return "unknown";
+  if (std::isinf(*fos)) return "stable";
   return storage::report_number(*fos, 2);
 }
 

@@ -20,6 +20,8 @@ std::vector<std::string> wedges_summary(const WedgeRun& run, const tunnel::Wedge
 // "lifts", "stays (pushed into the rock)".
 std::string wedge_mode_words(const tunnel::Wedge& w);
 // A factor of safety for people: "-" none, "stable" for no mode, 2 decimals.
+// "1.23", "stable" (no driving force: +infinity), "unknown" (NaN, an
+// overflow), "-" (none).
 std::string wedge_fos_text(const std::optional<double>& fos);
 
 }  // namespace rockface::app

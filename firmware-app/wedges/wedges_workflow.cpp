@@ -1,10 +1,12 @@
 #include "firmware-app/wedges/wedges_workflow.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/tunnel/support_ranges.h"
 #include "firmware-app/records/project_visit.h"
 
 namespace rockface::app {
@@ -17,13 +19,14 @@ std::vector<double> numbers(const std::string& text, const std::string& where, s
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      out.push_back(std::stod(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
+    // strtod, not stod: a value beyond the range of a double (1e-320,
+    // 1e309) is read as what it is and refused by its range, not as "not
+    // a number".
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || end != item.c_str() + item.size())
       throw InputError(where, "\"" + text + "\" is not " + form);
-    }
+    out.push_back(v);
     if (!(out.back() > 0)) throw InputError(where, "every value of " + form + " must be positive");
   }
   if (out.size() < min || out.size() > max)
@@ -84,6 +87,16 @@ WedgesResult wedges_from_input(const WedgesRequest& q) {
     if (q.bolts) {
       const auto v =
           numbers(*q.bolts, "--bolts", 3, 4, "LENGTH,SPACING,CAPACITY[,BOND] (m, m, N, N/m)");
+      const std::pair<const char*, const tunnel::SupportRange*> parts[] = {
+          {"LENGTH", &tunnel::kBoltLengthRange},
+          {"SPACING", &tunnel::kBoltSpacingRange},
+          {"CAPACITY", &tunnel::kBoltCapacityRange},
+          {"BOND", &tunnel::kBoltBondRange}};
+      for (std::size_t i = 0; i < v.size(); ++i)
+        if (!parts[i].second->contains(v[i]))
+          throw InputError("--bolts", std::string(parts[i].first) + ": " +
+                                          tunnel::outside_range_text(v[i], *parts[i].second,
+                                                                     "the bolts' setting"));
       tunnel::PatternBolts b;
       b.length = v[0];
       b.spacing = v[1];

@@ -53,6 +53,7 @@ ordered dynamics_to_json(const analysis::ReportDynamics& d) {
   ordered j;
   j["trigger"] = d.trigger;
   j["outcome"] = d.outcome;
+  if (!d.stopped.empty()) j["stopped"] = d.stopped;
   ordered friction = ordered::object();
   for (const auto& [plane, deg] : d.friction_deg) friction[plane] = tidy_dynamics(deg);
   j["friction_deg"] = friction;
@@ -131,6 +132,7 @@ std::optional<analysis::ReportDynamics> dynamics_from_json(const json& j) {
   try {
     d.trigger = j.value("trigger", "");
     d.outcome = j.value("outcome", "");
+    d.stopped = j.value("stopped", "");
     d.strength_divisor = number_at(j, "strength_divisor", 1.0);
     const json friction = j.value("friction_deg", json::object());
     for (auto it = friction.begin(); it != friction.end(); ++it)

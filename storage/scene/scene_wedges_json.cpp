@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/tunnel/support_ranges.h"
 #include "storage/json_reader.h"
 #include "storage/scene/scene_wedges.h"
 #include "storage/tunnel/tunnel_files.h"
@@ -120,11 +121,21 @@ analysis::SceneWedges read_scene_wedges(const Reader& r, const json& w,
       const std::string bp = sp + ".bolts";
       r.only_fields(*b, bp, {"length", "spacing", "capacity", "bond_strength", "on"});
       analysis::SceneWedgeBolts bolts;
-      bolts.length = r.positive(r.require(*b, bp, "length"), bp + ".length");
-      bolts.spacing = r.positive(r.require(*b, bp, "spacing"), bp + ".spacing");
-      bolts.capacity = r.positive(r.require(*b, bp, "capacity"), bp + ".capacity");
+      auto in_range = [&](const json& v, const char* key, const tunnel::SupportRange& range,
+                          const char* what) {
+        const double d = r.number(v, bp + "." + key);
+        if (!range.contains(d)) r.fail(bp + "." + key, tunnel::outside_range_text(d, range, what));
+        return d;
+      };
+      bolts.length = in_range(r.require(*b, bp, "length"), "length", tunnel::kBoltLengthRange,
+                              "a bolt's length");
+      bolts.spacing = in_range(r.require(*b, bp, "spacing"), "spacing", tunnel::kBoltSpacingRange,
+                               "a bolt pattern's spacing");
+      bolts.capacity = in_range(r.require(*b, bp, "capacity"), "capacity",
+                                tunnel::kBoltCapacityRange, "a bolt's capacity");
       if (auto* x = r.optional(*b, bp, "bond_strength"))
-        bolts.bond_strength = r.positive(*x, bp + ".bond_strength");
+        bolts.bond_strength =
+            in_range(*x, "bond_strength", tunnel::kBoltBondRange, "a bolt's bond strength");
       if (auto* x = r.optional(*b, bp, "on")) bolts.on = read_places(r, *x, bp + ".on");
       out.bolts = bolts;
     }

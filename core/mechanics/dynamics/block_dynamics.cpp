@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include <boost/numeric/odeint.hpp>
@@ -110,6 +111,16 @@ void check_options(const DynamicsOptions& o) {
   positive(o.max_step, "max_step_s");
   if (o.duration / o.sample > 100000)
     throw InputError("analysis.dynamics.sample_s", "more than 100000 samples over the duration");
+  if (o.duration / o.max_step > kMaxDynamicsStepsAsked) {
+    char msg[256];
+    std::snprintf(msg, sizeof msg,
+                  "%g s over duration_s %g s is %g steps; at most %g are integrated (a "
+                  "longer max_step_s or a shorter duration_s)",
+                  o.max_step, o.duration, o.duration / o.max_step, kMaxDynamicsStepsAsked);
+    throw InputError("analysis.dynamics.max_step_s", msg);
+  }
+  if (!(o.max_evaluations > 0) || !(o.max_events > 0))
+    throw InputError("analysis.dynamics", "the step budget and the event limit must be positive");
 }
 
 }  // namespace
@@ -248,43 +259,93 @@ void project_step(const BlockMotion& motion, const Scales& k, double tau, State&
   x = pack(p, k);
 }
 
-IntegrationEnd integrate(const BlockMotion& motion, const Scales& k,
-                         const std::optional<DynamicsFloor>& floor, const DynamicsOptions& options,
-                         BlockDynamics& out) {
-  const MotionSystem system(motion, k, out.evaluations);
-  auto controlled = odeint::make_controlled(options.abs_tol, options.rel_tol,
-                                            odeint::runge_kutta_dopri5<State>());
-  odeint::runge_kutta_dopri5<State> plain;
-  // One plain Dormand-Prince step of length h from (x0, t0): the
-  // bisection's probe of a step that an event cuts short.
-  auto advance = [&](const State& x0, double t0, double h) {
-    State dx0, x1, dx1;
-    system(x0, dx0, t0);
-    plain.reset();
-    plain.do_step(system, x0, dx0, t0, x1, dx1, h);
-    return x1;
-  };
+Stepper::Stepper(const BlockMotion& motion, const Scales& k, int& evaluations,
+                 const DynamicsOptions& options)
+    : system_(MotionSystem(motion, k, evaluations)),
+      abs_tol_(options.abs_tol),
+      rel_tol_(options.rel_tol) {}
 
-  Physical now;
-  State x = pack(now, k);
-  double tau = 0;
-  const double tau_end_contact = options.duration / k.time;
-  double tau_end = tau_end_contact;
-  const double tau_sample = options.sample / k.time;
-  const double tau_max_step = options.max_step / k.time;
-  double next_sample = 0;
-  double dt = std::min(tau_max_step, 1e-3);
-  ContactMode mode =
-      contact_mode(motion, now.pose, now.velocity, motion.solve(now.pose, now.velocity));
-  if (mode.kind == ModeKind::FreeFall)
+bool Stepper::try_step(State& x, double& tau, double& h) const {
+  // A fresh stepper each time: the state may have been projected since the
+  // last step, so no stale first derivative is kept.
+  auto controlled =
+      odeint::make_controlled(abs_tol_, rel_tol_, odeint::runge_kutta_dopri5<State>());
+  return controlled.try_step(system_, x, tau, h) != odeint::fail;
+}
+
+State Stepper::advance(const State& x0, double t0, double h) const {
+  odeint::runge_kutta_dopri5<State> plain;
+  State dx0, x1, dx1;
+  system_(x0, dx0, t0);
+  plain.do_step(system_, x0, dx0, t0, x1, dx1, h);
+  return x1;
+}
+
+ContactMode mode_of(const BlockMotion& motion, const Scales& k, const State& s) {
+  const Physical p = unpack(s, k);
+  return contact_mode(motion, p.pose, p.velocity, motion.solve(p.pose, p.velocity));
+}
+
+Integration start_integration(const BlockMotion& motion, const Scales& k,
+                              const DynamicsOptions& options, BlockDynamics& out) {
+  Integration in;
+  const Physical now;
+  in.x = pack(now, k);
+  in.tau_end_contact = options.duration / k.time;
+  in.tau_end = in.tau_end_contact;
+  in.tau_sample = options.sample / k.time;
+  in.tau_max_step = options.max_step / k.time;
+  in.dt = std::min(in.tau_max_step, 1e-3);
+  in.mode = contact_mode(motion, now.pose, now.velocity, motion.solve(now.pose, now.velocity));
+  if (in.mode.kind == ModeKind::FreeFall)
     record_event(out.events, 0.0, "free_fall", "free fall (no joint holds it)", {});
   else
-    record_mode_change(out.events, ContactMode{}, mode, 0.0);
+    record_mode_change(out.events, ContactMode{}, in.mode, 0.0);
+  return in;
+}
 
-  auto mode_at = [&](const State& s) {
-    const Physical p = unpack(s, k);
-    return contact_mode(motion, p.pose, p.velocity, motion.solve(p.pose, p.velocity));
-  };
+std::optional<std::string> budget_spent(const Integration& in, const Scales& k,
+                                        const DynamicsOptions& options, const BlockDynamics& out) {
+  char at[64];
+  std::snprintf(at, sizeof at, " at t = %.3g s", in.tau * k.time);
+  if (out.evaluations >= options.max_evaluations)
+    return "the step budget (" + std::to_string(options.max_evaluations) +
+           " evaluations of the equations of motion) ran out" + at +
+           ": the motion needs steps too short to follow it to the end";
+  if (static_cast<int>(out.events.size()) >= options.max_events)
+    return "the event limit (" + std::to_string(options.max_events) + " events) was reached" + at +
+           ": the contacts change faster than the motion can be followed";
+  return std::nullopt;
+}
+
+void sample_up_to(const BlockMotion& motion, const Scales& k, Integration& in, BlockDynamics& out) {
+  // Samples fall on step ends.
+  while (in.next_sample <= in.tau + 1e-9 * in.tau_sample) {
+    out.samples.push_back(sample_at(motion, unpack(in.x, k), in.next_sample * k.time));
+    in.next_sample += in.tau_sample;
+  }
+}
+
+bool controlled_step(const Stepper& stepper, const Scales& k, Integration& in, BlockDynamics& out) {
+  double h = std::min({in.dt, in.tau_max_step, in.next_sample - in.tau, in.tau_end - in.tau});
+  in.x0 = in.x;
+  in.t0 = in.tau;
+  if (!stepper.try_step(in.x, in.tau, h)) {
+    ++out.rejected_steps;
+    in.dt = h;
+    if (h < 1e-14)
+      throw Error("dynamics: the step size vanished at t = " + std::to_string(in.t0 * k.time) +
+                  " s");
+    return false;
+  }
+  ++out.steps;
+  in.dt = h;
+  return true;
+}
+
+ContactMode cut_at_event(const BlockMotion& motion, const Scales& k,
+                         const std::optional<DynamicsFloor>& floor, const Stepper& stepper,
+                         Integration& in) {
   const double penetration = -kContactGapRel * k.length;
   auto impact_at = [&](const State& s) {
     return deepest_gap(motion, unpack(s, k).pose) < penetration;
@@ -292,66 +353,65 @@ IntegrationEnd integrate(const BlockMotion& motion, const Scales& k,
   auto lands_at = [&](const State& s) {
     return floor && lowest_height(motion, unpack(s, k).pose, *floor) < 0;
   };
+  ContactMode new_mode = mode_of(motion, k, in.x);
+  const bool impact = impact_at(in.x), lands = lands_at(in.x);
+  if (impact || lands || new_mode != in.mode) {
+    const State x0 = in.x0;
+    const double t0 = in.t0;
+    const EventTime event = locate_event(
+        in.x, in.tau - t0, [&](double after) { return stepper.advance(x0, t0, after); },
+        [&](const State& s) {
+          return impact_at(s) || lands_at(s) || mode_of(motion, k, s) != in.mode;
+        });
+    in.x = event.state;
+    in.tau = t0 + event.after;
+    new_mode = mode_of(motion, k, in.x);
+    if (lands_at(in.x)) in.landed = true;
+  }
+  return new_mode;
+}
 
-  bool landed = false;
-  int guard = 0;
-  while (tau < tau_end - 1e-12 * tau_end && !landed) {
-    if (++guard > 5000000) {
-      out.notes.push_back("stopped after 5 000 000 steps");
+void finish_step(const BlockMotion& motion, const Scales& k,
+                 const std::optional<DynamicsFloor>& floor, ContactMode new_mode, Integration& in,
+                 BlockDynamics& out) {
+  const double q_error =
+      std::abs(Eigen::Quaterniond(in.x[3], in.x[4], in.x[5], in.x[6]).norm() - 1.0);
+  out.quaternion_error = std::max(out.quaternion_error, q_error);
+  if (!in.landed) {
+    project_step(motion, k, in.tau, in.x, out);
+    new_mode = mode_of(motion, k, in.x);
+  }
+  if (new_mode != in.mode) {
+    record_mode_change(out.events, in.mode, new_mode, in.tau * k.time);
+    in.mode = new_mode;
+  }
+  // Free flight goes on to the floor beyond the duration.
+  if (in.mode.kind == ModeKind::FreeFall && floor)
+    in.tau_end = flight_end(in.tau, in.tau_end_contact, k);
+}
+
+Integration integrate(const BlockMotion& motion, const Scales& k,
+                      const std::optional<DynamicsFloor>& floor, const DynamicsOptions& options,
+                      BlockDynamics& out) {
+  const Stepper stepper(motion, k, out.evaluations, options);
+  Integration in = start_integration(motion, k, options, out);
+  while (in.tau < in.tau_end - 1e-12 * in.tau_end && !in.landed) {
+    if (auto spent = budget_spent(in, k, options, out)) {
+      in.stopped = *spent;
       break;
     }
     if (options.progress && (out.steps % 64) == 0)
-      options.progress->step("dynamics", std::min(1.0, tau / tau_end));
-    // Samples fall on step ends.
-    while (next_sample <= tau + 1e-9 * tau_sample) {
-      out.samples.push_back(sample_at(motion, unpack(x, k), next_sample * k.time));
-      next_sample += tau_sample;
-    }
-    double h = std::min({dt, tau_max_step, next_sample - tau, tau_end - tau});
-    const State x0 = x;
-    const double t0 = tau;
-    controlled.reset();  // the state may have been projected: no stale first derivative
-    if (controlled.try_step(system, x, tau, h) == odeint::fail) {
-      ++out.rejected_steps;
-      dt = h;
-      if (h < 1e-14)
-        throw Error("dynamics: the step size vanished at t = " + std::to_string(t0 * k.time) +
-                    " s");
-      continue;
-    }
-    ++out.steps;
-    dt = h;
+      options.progress->step("dynamics", std::min(1.0, in.tau / in.tau_end));
+    sample_up_to(motion, k, in, out);
+    if (!controlled_step(stepper, k, in, out)) continue;
     // Events inside the step: a contact closing into the rock, the floor,
     // a change of the contact mode. The earliest is found by bisection.
-    ContactMode new_mode = mode_at(x);
-    const bool impact = impact_at(x), lands = lands_at(x);
-    if (impact || lands || new_mode != mode) {
-      const EventTime event = locate_event(
-          x, tau - t0, [&](double after) { return advance(x0, t0, after); },
-          [&](const State& s) { return impact_at(s) || lands_at(s) || mode_at(s) != mode; });
-      x = event.state;
-      tau = t0 + event.after;
-      new_mode = mode_at(x);
-      if (lands_at(x)) {
-        landed = true;
-      }
-    }
+    const ContactMode new_mode = cut_at_event(motion, k, floor, stepper, in);
     // Projection: drift back onto the loaded contacts; a closing contact
     // stops (plastic impact).
-    const double q_error = std::abs(Eigen::Quaterniond(x[3], x[4], x[5], x[6]).norm() - 1.0);
-    out.quaternion_error = std::max(out.quaternion_error, q_error);
-    if (!landed) {
-      project_step(motion, k, tau, x, out);
-      new_mode = mode_at(x);
-    }
-    if (new_mode != mode) {
-      record_mode_change(out.events, mode, new_mode, tau * k.time);
-      mode = new_mode;
-    }
-    // Free flight goes on to the floor beyond the duration.
-    if (mode.kind == ModeKind::FreeFall && floor) tau_end = flight_end(tau, tau_end_contact, k);
+    finish_step(motion, k, floor, new_mode, in, out);
   }
-  return {x, tau, landed, mode};
+  return in;
 }
 
 Landing landing_of(const blocks::Polyhedron& block, const BlockMotion& motion, const Physical& last,
@@ -402,11 +462,17 @@ std::string landing_text(const Landing& l) {
   return buf;
 }
 
-std::string outcome_of(bool landed, const ContactMode& mode, bool has_floor) {
+std::string outcome_of(bool landed, const ContactMode& mode, FloorGiven floor) {
   if (landed) return "lands";
   if (mode.kind == ModeKind::Rest) return "at rest";
-  if (mode.kind == ModeKind::FreeFall)
-    return has_floor ? "in free flight when the time ran out" : "in free flight (no floor given)";
+  if (mode.kind == ModeKind::FreeFall) switch (floor) {
+      case FloorGiven::usable:
+        return "in free flight when the time ran out";
+      case FloorGiven::above_block:
+        return "in free flight (the floor given lies above the block: no landing computed)";
+      case FloorGiven::none:
+        return "in free flight (no floor given)";
+    }
   return "moving at the end";
 }
 
@@ -430,7 +496,7 @@ BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
   out.drift_bound = kDriftBoundRel * k.length;
   const std::optional<DynamicsFloor> floor = usable_floor(options.floor, motion, k, out.notes);
 
-  const IntegrationEnd end = integrate(motion, k, floor, options, out);
+  const Integration end = integrate(motion, k, floor, options, out);
 
   const Physical last = unpack(end.x, k);
   out.end_time = end.tau * k.time;
@@ -440,7 +506,14 @@ BlockDynamics simulate_block_motion(const blocks::Polyhedron& block,
     out.landing = landing_of(block, motion, last, *floor, out.end_time);
     record_event(out.events, out.end_time, "lands", landing_text(*out.landing), {});
   }
-  out.outcome = outcome_of(end.landed, end.mode, floor.has_value());
+  out.outcome = outcome_of(end.landed, end.mode,
+                           floor           ? FloorGiven::usable
+                           : options.floor ? FloorGiven::above_block
+                                           : FloorGiven::none);
+  if (!end.stopped.empty()) {
+    out.stopped = end.stopped;
+    out.outcome = "stopped before the end of the duration";
+  }
   return out;
 }
 

@@ -30,6 +30,7 @@
 #include "core/common/preset.h"
 #include "core/common/progress.h"
 #include "core/kinematics/effects/effect.h"
+#include "core/mechanics/dynamics/tolerances.h"
 
 namespace rockface::mechanics {
 
@@ -48,6 +49,11 @@ struct DynamicsOptions {
   double abs_tol = 1e-10, rel_tol = 1e-8;
   double max_step = 0.01;  // s
   std::optional<DynamicsFloor> floor;
+  // The integration always ends: at most this many evaluations of the
+  // equations of motion (a step budget, free of the wall clock) and this
+  // many events; past either it stops and says why (BlockDynamics::stopped).
+  int max_evaluations = kDynamicsEvaluationBudget;
+  int max_events = kMaxDynamicsEvents;
   Progress* progress = nullptr;
 };
 
@@ -89,8 +95,9 @@ struct BlockDynamics {
   std::vector<MotionEvent> events;
   std::vector<MotionSample> samples;
   std::optional<Landing> landing;
-  std::string
-      outcome;  // "lands", "at rest", "in free flight (no floor given)", "moving at the end"
+  std::string outcome;  // "lands", "at rest", "in free flight (no floor given)", "moving at the
+                        // end", "stopped before the end of the duration"
+  std::string stopped;  // why it stopped before its end (the step budget, the event limit)
   double end_time = 0;
   double mass = 0;
   std::vector<double> friction_deg;  // per polyhedron plane used while sliding

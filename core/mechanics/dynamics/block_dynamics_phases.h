@@ -4,11 +4,11 @@
 // its own:
 //   1. block_scales: the block's own units (length, time, speed, energy);
 //   2. usable_floor: the floor, unless it lies above the block;
-//   3. integrate: the time steps, with for each step
-//        locate_event (the earliest event inside it, by bisection),
-//        project_step (drift back onto the loaded contacts, impacts),
-//        record_mode_change (the events of a change of contact mode),
-//        flight_end (free flight goes on to the floor);
+//   3. integrate: start_integration, then for each step budget_spent,
+//        sample_up_to, controlled_step, cut_at_event (locate_event: the
+//        earliest event inside it, by bisection), finish_step
+//        (project_step: drift back onto the loaded contacts, impacts;
+//        record_mode_change; flight_end: free flight goes on to the floor);
 //   4. landing_of, landing_text, outcome_of: how the motion ended.
 #include <array>
 #include <functional>
@@ -85,20 +85,76 @@ Landing landing_of(const blocks::Polyhedron& block, const BlockMotion& motion, c
 // "lands 3.2 m from the face F at 7.1 m/s".
 std::string landing_text(const Landing& l);
 
-// "lands", "at rest", "in free flight ..." or "moving at the end".
-std::string outcome_of(bool landed, const ContactMode& mode, bool has_floor);
+// Whether a floor was given, and whether it lies below the block (usable).
+enum class FloorGiven { none, above_block, usable };
+// "lands", "at rest", "in free flight ..." (saying why no landing was
+// computed: no floor, or one above the block) or "moving at the end".
+std::string outcome_of(bool landed, const ContactMode& mode, FloorGiven floor);
 
-// The motion integrated from rest (events, samples, steps and drift into
-// out). Returns the last state and scaled time, whether it landed, and
-// the contact mode at the end.
-struct IntegrationEnd {
+// The equations of motion in the block's units and the Dormand-Prince
+// 5(4) stepper on them; every evaluation is counted in `evaluations`.
+class Stepper {
+ public:
+  Stepper(const BlockMotion& motion, const Scales& k, int& evaluations,
+          const DynamicsOptions& options);
+  // One controlled step from (x, tau) of at most h: false when rejected
+  // (h then holds the shorter step to try), else x, tau and h advanced.
+  bool try_step(State& x, double& tau, double& h) const;
+  // One plain step of length h from (x0, t0): the bisection's probe of a
+  // step that an event cuts short.
+  State advance(const State& x0, double t0, double h) const;
+
+ private:
+  std::function<void(const State&, State&, double)> system_;
+  double abs_tol_ = 0, rel_tol_ = 0;
+};
+
+// The contact mode of the block in scaled state s.
+ContactMode mode_of(const BlockMotion& motion, const Scales& k, const State& s);
+
+// The integration as it goes: state and scaled time, the step's start,
+// the ends of the simulated time, the next sample, the contact mode.
+struct Integration {
   State x{};
   double tau = 0;
-  bool landed = false;
+  State x0{};  // at the start of the current step
+  double t0 = 0;
+  double tau_end_contact = 0, tau_end = 0;  // the duration; on to the floor in free flight
+  double tau_sample = 0, next_sample = 0, tau_max_step = 0;
+  double dt = 0;  // the next step to try
   ContactMode mode;
+  bool landed = false;
+  std::string stopped;  // why it stopped before its end (the budget), or empty
 };
-IntegrationEnd integrate(const BlockMotion& motion, const Scales& k,
-                         const std::optional<DynamicsFloor>& floor, const DynamicsOptions& options,
-                         BlockDynamics& out);
+
+// The phases of integrate, in the order of one step:
+// start_integration: the block at rest, its first contact mode (an event);
+// budget_spent: why the integration must stop now (the evaluations of the
+//   options' step budget or its event limit spent), or none;
+// sample_up_to: the samples due at the current time;
+// controlled_step: one step (false: rejected, a shorter one is next);
+// cut_at_event: the step cut at its earliest event (impact, landing, a
+//   change of contact mode); returns the contact mode there;
+// finish_step: drift projected back, the mode change recorded, free flight
+//   extended to the floor.
+Integration start_integration(const BlockMotion& motion, const Scales& k,
+                              const DynamicsOptions& options, BlockDynamics& out);
+std::optional<std::string> budget_spent(const Integration& in, const Scales& k,
+                                        const DynamicsOptions& options, const BlockDynamics& out);
+void sample_up_to(const BlockMotion& motion, const Scales& k, Integration& in, BlockDynamics& out);
+bool controlled_step(const Stepper& stepper, const Scales& k, Integration& in, BlockDynamics& out);
+ContactMode cut_at_event(const BlockMotion& motion, const Scales& k,
+                         const std::optional<DynamicsFloor>& floor, const Stepper& stepper,
+                         Integration& in);
+void finish_step(const BlockMotion& motion, const Scales& k,
+                 const std::optional<DynamicsFloor>& floor, ContactMode new_mode, Integration& in,
+                 BlockDynamics& out);
+
+// The motion integrated from rest (events, samples, steps and drift into
+// out) until the duration ends, it lands, or the budget is spent (said in
+// stopped). Returns where it ended.
+Integration integrate(const BlockMotion& motion, const Scales& k,
+                      const std::optional<DynamicsFloor>& floor, const DynamicsOptions& options,
+                      BlockDynamics& out);
 
 }  // namespace rockface::mechanics::dynamics_phases

@@ -62,4 +62,19 @@ inline constexpr double kEventTimeRel = 1e-9;
 // this long (s) beyond the scene's duration: 60 s of fall is 17 km.
 inline constexpr double kMaxFlightSeconds = 60.0;
 
+// ---- bounds: the integration always ends (issue 41) ----
+// At most this many steps of max_step_s over the duration are asked for
+// (duration_s / max_step_s): the longest scene duration (600 s) at the
+// precise preset's 5 ms is 120 000. Beyond it the input is refused.
+inline constexpr double kMaxDynamicsStepsAsked = 200000;
+// The step budget: at most this many evaluations of the equations of
+// motion (about 20 us each). A wedge that slides and lands in 6 s takes
+// 5 000 (standard) to 12 000 (precise); 120 000 steps of about 7
+// evaluations each fit. A motion whose steps shrink to nothing (contacts
+// that switch at every step) stops here instead of running for hours.
+inline constexpr int kDynamicsEvaluationBudget = 2000000;
+// At most this many events (contact switches, impacts): a sliding wedge
+// has a handful; thousands within a few seconds are a chatter the model
+// cannot follow, and the integration stops saying so.
+inline constexpr int kMaxDynamicsEvents = 1000;
 }  // namespace rockface::mechanics

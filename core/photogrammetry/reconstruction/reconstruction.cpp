@@ -181,15 +181,21 @@ ReconstructionResult reconstruct(const cv::Mat& left_image, const cv::Mat& right
       }
     }
     if (sources.north) {
-      const Eigen::Vector3d a = T.apply(surface_at(out.mesh, sources.north->from_px, pick_radius,
-                                                   "--reference-line first point"));
-      const Eigen::Vector3d b = T.apply(
-          surface_at(out.mesh, sources.north->to_px, pick_radius, "--reference-line second point"));
+      const std::string& where = sources.north->where;
+      const Eigen::Vector3d a = T.apply(
+          surface_at(out.mesh, sources.north->from_px, pick_radius, where + " first point"));
+      const Eigen::Vector3d b =
+          T.apply(surface_at(out.mesh, sources.north->to_px, pick_radius, where + " second point"));
       // About the vertical through the frame's origin (the lower target, or
       // the left camera without a pole), so the origin stays where
       // registration.h says it is.
-      const Similarity north =
-          north_rotation(a, b, sources.north->azimuth_deg, sources.north->declination_deg);
+      const Similarity north = [&] {
+        try {
+          return north_rotation(a, b, sources.north->azimuth_deg, sources.north->declination_deg);
+        } catch (const InputError& e) {
+          throw InputError(where, e.reason());  // the line as the user gave it
+        }
+      }();
       out.north_rotation_deg = rad_to_deg(Eigen::AngleAxisd(north.R).angle()) *
                                (Eigen::AngleAxisd(north.R).axis().z() < 0 ? -1 : 1);
       T = T.then(north);

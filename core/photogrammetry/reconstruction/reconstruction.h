@@ -29,6 +29,9 @@ struct NorthReference {
   Eigen::Vector2d from_px, to_px;
   double azimuth_deg = 0;      // compass bearing from `from` to `to`, clockwise from north
   double declination_deg = 0;  // magnetic declination, east positive
+  // How a refusal names it: the command line's option, or the scene's
+  // field when a replay takes it from a scene.
+  std::string where = "--reference-line";
 };
 
 struct RegistrationSources {

@@ -127,11 +127,13 @@ TEST(DynamicsPhases, TheOutcomeSaysHowTheMotionEnded) {
   rest.kind = ModeKind::Rest;
   ContactMode sliding;
   sliding.kind = ModeKind::Sliding;
-  EXPECT_EQ(phases::outcome_of(true, ContactMode{}, true), "lands");
-  EXPECT_EQ(phases::outcome_of(false, rest, false), "at rest");
-  EXPECT_EQ(phases::outcome_of(false, ContactMode{}, true), "in free flight when the time ran out");
-  EXPECT_EQ(phases::outcome_of(false, ContactMode{}, false), "in free flight (no floor given)");
-  EXPECT_EQ(phases::outcome_of(false, sliding, false), "moving at the end");
+  EXPECT_EQ(phases::outcome_of(true, ContactMode{}, phases::FloorGiven::usable), "lands");
+  EXPECT_EQ(phases::outcome_of(false, rest, phases::FloorGiven::none), "at rest");
+  EXPECT_EQ(phases::outcome_of(false, ContactMode{}, phases::FloorGiven::usable),
+            "in free flight when the time ran out");
+  EXPECT_EQ(phases::outcome_of(false, ContactMode{}, phases::FloorGiven::none),
+            "in free flight (no floor given)");
+  EXPECT_EQ(phases::outcome_of(false, sliding, phases::FloorGiven::none), "moving at the end");
 }
 
 TEST(DynamicsPhases, TheLandingIsSaidFromTheFaceItLeftThroughOrFromItsStart) {

@@ -213,5 +213,27 @@ TEST(Alignment, BadTablesAreRefusedNamingTheStation) {
             std::string::npos);
 }
 
+// Issue 41: +-1e308 in a table became null origins and a face "at offset
+// 1000... (300 digits)"; coordinates are refused beyond the range of a
+// survey, naming the station.
+TEST(Alignment, CoordinatesBeyondAnySurveyAreRefusedByStation) {
+  const Eigen::Vector3d d(0, 0, 0);
+  EXPECT_EQ(message_of([&] {
+              Alignment::from_elements({{0, d}, {100, Eigen::Vector3d(0, 1e308, 0)}}, {0}, d);
+            }),
+            "stations[1] (chainage 100): easting, northing and elevation must be survey "
+            "coordinates (easting and northing within +-1e+08 m, elevation within +-100000 m)");
+  EXPECT_EQ(message_of([&] {
+              Alignment::from_elements({{-1e308, d}, {100, Eigen::Vector3d(0, 100, 0)}}, {0}, d);
+            }),
+            "stations[0].chainage: -1e+308 is outside +-1e+08 m");
+  EXPECT_EQ(message_of([&] {
+              Alignment::from_polyline({{0, d}, {100, Eigen::Vector3d(0, 100, 0)}},
+                                       Eigen::Vector3d(0, 0, -1e308));
+            }),
+            "datum: must be survey coordinates (easting and northing within +-1e+08 m, "
+            "elevation within +-100000 m)");
+}
+
 }  // namespace
 }  // namespace rockface::tunnel

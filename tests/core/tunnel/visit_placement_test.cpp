@@ -223,5 +223,24 @@ TEST(VisitPlacement, TheTypedPoleLiesAtItsChainageOffsetAndHeight) {
   EXPECT_THROW(typed_pole_position(alignment, 150.0, 0, 0), InputError);
 }
 
+// Issue 41: an offset of 130 m (or 1e308) from the axis was taken without a
+// word; the pole stands in the excavation, at most 50 m from the axis.
+TEST(VisitPlacement, ATypedPoleFartherThanAnyTunnelsHalfWidthIsRefusedByName) {
+  const Alignment alignment = straight_north();
+  auto said = [&](double offset, double height) {
+    try {
+      typed_pole_position(alignment, 12.0, offset, height);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(said(130, 0),
+            "tunnel.placement.offset: 130 m from the axis is more than any tunnel's half-width (at "
+            "most 50 m): a typo, or the pole outside the excavation?");
+  EXPECT_EQ(said(0, -1e308).substr(0, 41), "tunnel.placement.height: -1e+308 m from t");
+  EXPECT_EQ(said(-50, 50), "accepted");
+}
+
 }  // namespace
 }  // namespace rockface::tunnel

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@
 #include "core/geometry/orientation.h"
 #include "firmware-app/services/ui_services.h"
 #include "firmware-app/wedges/report_wedges.h"
+#include "firmware-app/wedges/wedges_json.h"
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
@@ -151,6 +153,44 @@ TEST(WedgesVerb, BadInputIsRefusedNamingTheField) {
           dir),
       2);
   EXPECT_FALSE(fs::exists(dir / "w.json"));
+}
+
+// Issue 41: `wedges P --bolts 3,1e-3,1e5` never ended; each value of
+// --bolts is checked against its range before anything is computed.
+TEST(WedgesVerb, ProjectBoltsOutsideTheirRangeAreRefusedByName) {
+  const fs::path dir = temp_dir("bolt-range");
+  const fs::path project = dir / "p.rockface";
+  {
+    storage::ProjectStore store = storage::ProjectStore::create(project, storage::ProjectInfo{});
+    store.begin_visit("face");
+  }
+  auto said = [&](const std::string& bolts) {
+    WedgesRequest q;
+    q.input = project.string();
+    q.bolts = bolts;
+    try {
+      wedges_from_input(q);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(said("3,1e-3,1e5"),
+            "--bolts: SPACING: 0.001 m is outside [0.3, 10] m (the range of the bolts' setting)");
+  EXPECT_EQ(said("3,1e-320,1e5").substr(0, 17), "--bolts: SPACING:");
+  EXPECT_EQ(said("3,1,1e5,1e308"),
+            "--bolts: BOND: 1e+308 N/m is outside [1000, 1e+08] N/m (the range of the bolts' "
+            "setting)");
+}
+
+// Issue 41: an overflowed factor of safety (NaN) was shown as "stable";
+// only no driving force at all (+infinity) is.
+TEST(WedgesVerb, AnOverflowedFactorOfSafetyIsUnknownNotStable) {
+  EXPECT_EQ(wedge_fos_text(std::numeric_limits<double>::quiet_NaN()), "unknown");
+  EXPECT_EQ(wedge_fos_text(-std::numeric_limits<double>::infinity()), "unknown");
+  EXPECT_EQ(wedge_fos_text(std::numeric_limits<double>::infinity()), "stable");
+  EXPECT_EQ(wedge_fos_text(std::nullopt), "-");
+  EXPECT_EQ(wedge_fos_text(1.234), "1.23");
 }
 
 TEST(WedgesVerb, ProjectVisitWithMeasuredSets) {
