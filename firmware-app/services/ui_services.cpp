@@ -61,16 +61,17 @@ storage::RecordId StoreAnalysisRunner::analyse(const fs::path& project, storage:
   progress.step("reading the visit", 0.01);
   storage::ProjectStore store = storage::ProjectStore::open(project);
   const storage::SceneSource source = storage::load_scene_source(store, visit_id);
-  const storage::Scene scene =
-      storage::parse_scene(storage::make_scene_json(source).dump(),
-                           project.string() + " visit " + std::to_string(visit_id));
-  const analysis::Report report = analysis::analyse(analysis_input(scene), progress);
+  // The analysis input straight from the visit's rows, checked as the scene
+  // reader checks a scene (issue 37: no scene JSON text in between).
+  const analysis::AnalysisInput input = storage::visit_analysis_input(
+      source, project.string() + " visit " + std::to_string(visit_id));
+  const analysis::Report report = analysis::analyse(input, progress);
   std::optional<storage::RecordId> model_id;
   const auto models = store.list_models();
   if (!models.empty()) model_id = models.back().id;
   progress.step("saving the analysis", 0.99);
   const storage::RecordId id =
-      store.save_analysis(analysis_record(report, visit_id, model_id, scene.analysis.preset));
+      store.save_analysis(analysis_record(report, visit_id, model_id, input.analysis.preset));
   // Which stored traces it took as one (pieces of a joint marked on different pairs).
   std::string joined;
   for (const auto& t : storage::scene_traces(source.measurements)) {
