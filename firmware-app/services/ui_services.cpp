@@ -11,7 +11,6 @@
 #include "core/analysis/scene_analysis.h"
 #include "core/common/error.h"
 #include "core/photogrammetry/reconstruction/preset.h"
-#include "firmware-app/analysis/scene_input.h"
 #include "firmware-app/records/field_records.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
 #include "storage/project/project_store.h"

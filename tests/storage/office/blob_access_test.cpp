@@ -21,23 +21,12 @@ namespace {
 
 using storage::office::Connection;
 using storage::office::Param;
-using storage::office::ServerError;
 
 constexpr const char* kDenied = "42501";  // insufficient privilege / RLS violation
 
 std::int64_t count(const std::string& conninfo, const std::string& sql) {
   Connection c(conninfo);
   return c.query(sql, {}, "counting").int64(0, 0);
-}
-
-std::string refusal(const std::string& conninfo, const std::string& sql) {
-  Connection c(conninfo);
-  try {
-    c.exec(sql, "trying");
-    return "";
-  } catch (const ServerError& e) {
-    return e.sqlstate();
-  }
 }
 
 // Tunnel "Main drive" (tablets a and b, office_reader for all tunnels) and

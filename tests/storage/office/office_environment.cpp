@@ -41,6 +41,16 @@ std::string as_role(const std::string& db, const std::string& role) {
   return server().socket_conninfo(role, db);
 }
 
+std::string refusal(const std::string& conninfo, const std::string& sql) {
+  storage::office::Connection c(conninfo);
+  try {
+    c.exec(sql, "trying");
+    return "";
+  } catch (const storage::office::ServerError& e) {
+    return e.sqlstate();
+  }
+}
+
 std::string fresh_database(const std::string& tunnel) {
   static int count = 0;
   const std::string db = "site" + std::to_string(++count);

@@ -22,4 +22,8 @@ std::string fresh_database_at_version_one();
 std::string as_superuser(const std::string& db);
 std::string as_role(const std::string& db, const std::string& role);
 
+// Runs SQL as the connection's role; the SQLSTATE of the server's refusal,
+// empty if it ran.
+std::string refusal(const std::string& conninfo, const std::string& sql);
+
 }  // namespace rockface::office_test

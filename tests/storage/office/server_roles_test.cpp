@@ -29,17 +29,6 @@ using storage::office::Connection;
 using storage::office::Param;
 using storage::office::ServerError;
 
-// Runs SQL as a role; returns the SQLSTATE of the refusal, empty if it ran.
-std::string refusal(const std::string& conninfo, const std::string& sql) {
-  Connection c(conninfo);
-  try {
-    c.exec(sql, "trying");
-    return "";
-  } catch (const ServerError& e) {
-    return e.sqlstate();
-  }
-}
-
 TEST(OfficeRoles, ATabletCannotChangeOrDeleteAnotherTabletsVisit) {
   const std::string db = fresh_database();
   {
