@@ -55,6 +55,13 @@ Eigen::Vector3d typed_pole_position(const Alignment& alignment, double chainage,
 VisitPlacement place_visit(const Alignment& alignment, const DesignProfile& profile,
                            const SurfaceInput& surface, const FrameRegistration& registration,
                            const std::string& visit) {
+  // Without north the 3D image's turn about the vertical is the camera's:
+  // its walls would be compared with the design profile at a random angle.
+  if (registration.method == VisitPlacement::Method::chainage_compass && !registration.north_known)
+    throw InputError(visit,
+                     "its 3D image has no north (no compass line was given with the range pole): "
+                     "a placement by chainage needs the compass line's azimuth; or place it by "
+                     "monitoring targets with survey coordinates");
   const double sense = alignment.drive() == Drive::ascending ? 1.0 : -1.0;
   const std::vector<AlignmentPlace> places = rock_places(alignment, surface);
   const auto reach = surface_reach(alignment, places);

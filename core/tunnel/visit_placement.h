@@ -51,6 +51,9 @@ struct FrameRegistration {
   std::vector<TargetResidual> residuals;      // ground control
   double rms_m = 0;                           // ground control
   std::optional<double> compass_azimuth_deg;  // chainage + compass, when the registration has it
+  // Chainage + compass: the 3D image has a north (issue 42: a model the pole
+  // scaled and levelled without a compass line was placed as if it had one).
+  bool north_known = true;
   // Chainage + compass: how the pole's place was given ("chainage 112.00
   // typed"); empty when the pole's position was surveyed.
   std::string typed;

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "firmware-app/records/project_mesh.h"
+#include "storage/project/model_registration.h"
 
 namespace rockface::app {
 
@@ -24,7 +25,9 @@ storage::Model model_record(const photogrammetry::ReconstructionResult& rec,
   model.texture_capture_id = capture_id;
   model.texture_side = "left";
   storage::Registration& r = model.registration;
-  r.kind = rec.scale_source == "range pole" ? "range_pole_compass" : rec.scale_source;
+  // What scaled and oriented it, no more (issue 42): a pole without a
+  // compass line gives scale and vertical, not north.
+  r.kind = storage::registration_kind(rec.scale_source, rec.north_source);
   storage::set_similarity(r, rec.model_to_world);
   // The whole reconstruction report (what the field report prints), plus the
   // two figures the tablet reads without walking it: the targets in the

@@ -6,6 +6,7 @@
 #include "core/common/number_format.h"
 #include "firmware-app/tunnel/visit_placement.h"
 #include "firmware-app/tunnel/visit_surface.h"
+#include "storage/project/model_registration.h"
 
 namespace rockface::app {
 
@@ -27,16 +28,13 @@ storage::VisitPlacement place_by_typed_chainage(storage::ProjectStore& store,
                                 "mapping on it");
   // The pole's lower target in the first model (records/field_records.cpp
   // stores the targets in the project frame).
-  const storage::Model first = store.load_model(models.front().id);
-  const nlohmann::json p =
-      nlohmann::json::parse(first.registration.parameters_json, nullptr, false);
-  if (p.is_discarded() || !p.contains("targets") || !p["targets"].is_array() ||
-      p["targets"].empty())
+  const storage::ModelRegistration first =
+      storage::read_model_registration(store.load_model(models.front().id).registration);
+  if (first.targets_project.empty())
     throw InputError(where,
                      "its 3D image has no range pole targets: place it by monitoring targets "
                      "with survey coordinates instead");
-  const auto& t0 = p["targets"][0];
-  const Eigen::Vector3d lower(t0[0].get<double>(), t0[1].get<double>(), t0[2].get<double>());
+  const Eigen::Vector3d lower = first.targets_project.front();
   const Eigen::Vector3d shift =
       tunnel::typed_pole_position(alignment, typed.chainage, typed.offset, typed.height) - lower;
   for (const auto& summary : models) {

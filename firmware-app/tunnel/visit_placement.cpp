@@ -1,23 +1,22 @@
 #include "firmware-app/tunnel/visit_placement.h"
 
-#include <nlohmann/json.hpp>
+#include "storage/project/model_registration.h"
 
 namespace rockface::app {
 
 tunnel::FrameRegistration frame_registration(const VisitSurface& surface,
                                              const std::string& typed) {
   const storage::Model& m = surface.first;
+  const storage::ModelRegistration reg = storage::read_model_registration(m.registration);
   tunnel::FrameRegistration out;
-  if (m.registration.kind == "ground_control") {
+  if (reg.kind == "ground_control") {
     out.method = tunnel::VisitPlacement::Method::ground_control;
     for (const auto& r : m.residuals) out.residuals.push_back({r.label, r.residual});
     out.rms_m = m.registration.rms_m;
   } else {
     out.method = tunnel::VisitPlacement::Method::chainage_compass;
-    const nlohmann::json p = nlohmann::json::parse(m.registration.parameters_json, nullptr, false);
-    const nlohmann::json::json_pointer at("/registration/north/azimuth_deg");
-    if (!p.is_discarded() && p.contains(at) && p[at].is_number())
-      out.compass_azimuth_deg = p[at].get<double>();
+    out.compass_azimuth_deg = reg.compass_azimuth_deg;
+    out.north_known = reg.oriented();
     out.typed = typed;
   }
   return out;

@@ -5,7 +5,6 @@
 #include <map>
 
 #include <Eigen/Geometry>
-#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
@@ -13,6 +12,7 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
+#include "storage/project/model_registration.h"
 #include "storage/scene/export_scene_json.h"
 #include "storage/scene/face_outline_words.h"
 
@@ -20,67 +20,39 @@ namespace rockface::storage {
 
 namespace {
 
-using nlohmann::json;
-
-std::optional<double> number_at(const json& j, const char* key) {
-  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) return std::nullopt;
-  return j[key].get<double>();
-}
-
 // The reconstruction report stored with the first model (rockface-reconstruction/1).
-void read_accuracy(const std::string& text, ReportedAccuracy& a) {
-  const json j = json::parse(text, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) return;
-  a.sigma_z_m = number_at(j, "sigma_z").value_or(0.0);
-  a.distance_m = number_at(j, "distance").value_or(0.0);
-  a.point_spacing_m = number_at(j, "point_spacing").value_or(0.0);
-  if (j.contains("orientation")) {
-    a.reprojection_rms_px = number_at(j["orientation"], "rms_reprojection_px").value_or(0.0);
-    a.tie_points = j["orientation"].value("inliers", 0);
+void read_accuracy(const ModelRegistration& reg, ReportedAccuracy& a) {
+  if (reg.record != ModelRegistration::Record::reconstruction) return;
+  a.sigma_z_m = reg.sigma_z_m.value_or(0.0);
+  a.distance_m = reg.distance_m.value_or(0.0);
+  a.point_spacing_m = reg.point_spacing_m.value_or(0.0);
+  a.reprojection_rms_px = reg.rms_reprojection_px.value_or(0.0);
+  a.tie_points = static_cast<int>(reg.inliers.value_or(0.0));
+  a.scale_source = reg.scale_source;
+  a.vertical_source = reg.vertical_source;
+  a.north_source = reg.north_source;
+  a.scale = reg.scale.value_or(1.0);
+  a.range_pole_m = reg.pole_length_m;
+  a.compass_azimuth_deg = reg.compass_azimuth_deg;
+  a.declination_deg = reg.declination_deg;
+  a.north_rotation_deg = reg.north_rotation_deg;
+  if (reg.has_control_points) {
+    a.control_rms_m = reg.control_rms_m;
+    for (const auto& p : reg.control_points) a.control_points.push_back({p.id, p.distance_m});
   }
-  if (j.contains("registration")) {
-    const json& r = j["registration"];
-    a.scale_source = r.value("scale_source", "");
-    a.vertical_source = r.value("vertical_source", "");
-    a.north_source = r.value("north_source", "");
-    a.scale = number_at(r, "scale").value_or(1.0);
-    if (r.contains("range_pole")) a.range_pole_m = number_at(r["range_pole"], "length_m");
-    if (r.contains("north")) {
-      a.compass_azimuth_deg = number_at(r["north"], "azimuth_deg");
-      a.declination_deg = number_at(r["north"], "declination_deg");
-      a.north_rotation_deg = number_at(r["north"], "rotation_about_vertical_deg");
-    }
-    if (r.contains("control_points")) {
-      a.control_rms_m = number_at(r["control_points"], "rms_m");
-      for (const auto& p : r["control_points"]["residuals"])
-        a.control_points.push_back({p.value("id", ""), p.value("distance_m", 0.0)});
-    }
-  }
-  for (const auto& w : j.value("warnings", json::array()))
-    a.warnings.push_back(w.get<std::string>());
+  a.warnings.insert(a.warnings.end(), reg.warnings.begin(), reg.warnings.end());
 }
 
 // The face registration stored with a further model (rockface-face-registration/1).
-void read_face_registration(const std::string& text, ReportedAccuracy& a) {
-  const json j = json::parse(text, nullptr, false);
-  if (j.is_discarded() || !j.is_object() || j.value("format", "") != "rockface-face-registration/1")
-    return;
-  for (const auto& i : j["images"]) {
-    ReportedImage r;
-    r.name = i.value("name", "");
-    r.role = i.value("role", "");
-    r.reference = i.value("reference", "");
-    r.tie_points = i.value("tie_points", 0);
-    r.overlap = i.value("overlap", 0.0);
-    r.surface_rms_m = i.value("surface_rms_m", 0.0);
-    r.scale = i.value("scale", 1.0);
-    a.images.push_back(r);
-  }
-  if (j.contains("control_points")) {
-    a.control_rms_m = number_at(j["control_points"], "rms_m");
+void read_face_registration(const ModelRegistration& reg, ReportedAccuracy& a) {
+  if (reg.record != ModelRegistration::Record::face_images) return;
+  for (const auto& i : reg.images)
+    a.images.push_back({i.name, i.role, i.reference, static_cast<int>(i.tie_points.value_or(0.0)),
+                        i.overlap.value_or(0.0), i.surface_rms_m.value_or(0.0), i.scale});
+  if (reg.has_control_points) {
+    a.control_rms_m = reg.control_rms_m;
     a.control_points.clear();
-    for (const auto& p : j["control_points"]["residuals"])
-      a.control_points.push_back({p.value("id", ""), p.value("distance_m", 0.0)});
+    for (const auto& p : reg.control_points) a.control_points.push_back({p.id, p.distance_m});
   }
 }
 
@@ -184,7 +156,7 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
         r.model_scale = s.scale;
         r.model_rotation = s.R;
         r.model_translation = s.t;
-        read_accuracy(m.registration.parameters_json, r.accuracy);
+        read_accuracy(read_model_registration(m.registration), r.accuracy);
         const ImageBlob left = store.load_capture_image(c.id, "left");
         r.photograph = cv::imdecode(left.bytes, cv::IMREAD_COLOR);
         if (c.calibration_id) {
@@ -196,7 +168,7 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
             if (cal.body_id && b.id == *cal.body_id) r.camera_body = b.make + " " + b.model;
         }
       } else {
-        read_face_registration(m.registration.parameters_json, r.accuracy);
+        read_face_registration(read_model_registration(m.registration), r.accuracy);
       }
     }
   }

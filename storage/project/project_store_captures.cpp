@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "core/common/error.h"
+#include "storage/project/model_registration.h"
 #include "storage/project/project_blobs.h"
 #include "storage/project/project_store_rows.h"
 
@@ -86,6 +87,12 @@ RecordId ProjectStore::save_capture(const Capture& capture) {
 }
 
 namespace {
+
+// What the stored reconstruction report says gave north ('' when it does
+// not say): SQL, so that a listing need not parse every model's parameters.
+constexpr const char* kStoredNorthSource =
+    "COALESCE(CASE WHEN json_valid(registration_parameters) THEN "
+    "json_extract(registration_parameters, '$.registration.north_source') END, '')";
 constexpr const char* kCaptureSummarySelect =
     "SELECT c.id, c.visit_id, c.calibration_id, c.label, c.taken_at, l.format, l.byte_size, "
     "r.format, r.byte_size FROM capture c JOIN image l ON l.id = c.left_image_id "
@@ -161,6 +168,16 @@ ImageBlob ProjectStore::load_capture_image(RecordId capture_id, const std::strin
   RowReader row(st);
   const std::string format = row.next_text();
   return {row.next_blob(), format};
+}
+
+std::optional<std::string> ProjectStore::latest_capture_setting(const std::string& key) {
+  Statement st(db_,
+               "SELECT value FROM capture_setting WHERE key = ? ORDER BY capture_id DESC LIMIT 1",
+               "reading the capture setting " + key);
+  st.bind(1, key);
+  if (!st.step()) return std::nullopt;
+  RowReader row(st);
+  return row.next_text();
 }
 
 std::vector<CaptureSummary> ProjectStore::list_captures(std::optional<RecordId> visit_id) {
@@ -286,9 +303,10 @@ Model ProjectStore::load_model(RecordId id) {
   Statement st(db_,
                "SELECT id, capture_id, created_at, preset, mesh, texture_capture_id, "
                "texture_side, registration_kind, scale, qw, qx, qy, qz, tx, ty, tz, "
-               "registration_parameters, registration_rms_m, camera_scale, camera_qw, "
-               "camera_qx, camera_qy, camera_qz, camera_tx, camera_ty, camera_tz FROM model "
-               "WHERE id = ?",
+               "registration_parameters, registration_rms_m, " +
+                   std::string(kStoredNorthSource) +
+                   ", camera_scale, camera_qw, camera_qx, camera_qy, camera_qz, camera_tx, "
+                   "camera_ty, camera_tz FROM model WHERE id = ?",
                "loading model " + std::to_string(id));
   st.bind(1, id);
   if (!st.step())
@@ -309,6 +327,7 @@ Model ProjectStore::load_model(RecordId id) {
   r.translation = next_vector3(row);
   r.parameters_json = row.next_text();
   r.rms_m = row.next_double();
+  r.kind = honest_registration_kind(r.kind, row.next_text());
   if (!row.next_is_null()) {  // NULL: no camera map was kept (project_schema.cpp, version 4)
     photogrammetry::Similarity camera;
     camera.scale = row.next_double();
@@ -334,8 +353,9 @@ Model ProjectStore::load_model(RecordId id) {
 std::vector<ModelSummary> ProjectStore::list_models(std::optional<RecordId> capture_id) {
   Statement st(db_,
                "SELECT id, capture_id, preset, created_at, registration_kind, vertex_count, "
-               "face_count, registration_rms_m FROM model WHERE (?1 IS NULL OR capture_id = ?1) "
-               "ORDER BY id",
+               "face_count, registration_rms_m, " +
+                   std::string(kStoredNorthSource) +
+                   " FROM model WHERE (?1 IS NULL OR capture_id = ?1) ORDER BY id",
                "listing models");
   st.bind(1, capture_id);
   std::vector<ModelSummary> out;
@@ -350,6 +370,7 @@ std::vector<ModelSummary> ProjectStore::list_models(std::optional<RecordId> capt
     s.vertex_count = row.next_int64();
     s.face_count = row.next_int64();
     s.registration_rms_m = row.next_double();
+    s.registration_kind = honest_registration_kind(s.registration_kind, row.next_text());
     out.push_back(std::move(s));
   }
   return out;

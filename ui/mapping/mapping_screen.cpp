@@ -10,10 +10,9 @@
 #include <functional>
 #include <memory>
 
-#include <nlohmann/json.hpp>
-
 #include "core/common/error.h"
 #include "core/common/units.h"
+#include "storage/project/model_registration.h"
 #include "storage/project/project_store.h"
 #include "ui/app/screens.h"
 #include "ui/blocks/stereonet_view.h"
@@ -38,14 +37,9 @@ TraceContext trace_context(const AppState& app) {
   c.photo = &app.model_view.photo();
   // The precision of a picked point is the model's predicted depth
   // precision (stored with the registration by the reconstruction).
-  if (const auto* m = app.model_view.model()) {
-    const auto p = nlohmann::json::parse(
-        m->registration.parameters_json.empty() ? "{}" : m->registration.parameters_json, nullptr,
-        false);
-    if (p.is_object() && p.contains("predicted_depth_sigma_mm") &&
-        p["predicted_depth_sigma_mm"].is_number())
-      c.settings.point_sigma = p["predicted_depth_sigma_mm"].get<double>() / 1000;
-  }
+  if (const auto* m = app.model_view.model())
+    if (const auto s = storage::read_model_registration(m->registration).predicted_depth_sigma_mm)
+      c.settings.point_sigma = *s / 1000;
   return c;
 }
 

@@ -5,11 +5,11 @@
 #include <limits>
 
 #include <imgui_internal.h>
-#include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/units.h"
 #include "core/measure/least_cost_trace.h"
+#include "storage/project/model_registration.h"
 #include "ui/app/screens.h"
 #include "ui/widgets/format.h"
 #include "ui/widgets/picture_texture.h"
@@ -83,14 +83,9 @@ void mark_mapped(AppState& app) {
 
 // The model's depth precision, as for a hand trace (mapping_screen.cpp).
 double point_sigma(const AppState& app) {
-  if (const auto* m = app.model_view.model()) {
-    const auto p = nlohmann::json::parse(
-        m->registration.parameters_json.empty() ? "{}" : m->registration.parameters_json, nullptr,
-        false);
-    if (p.is_object() && p.contains("predicted_depth_sigma_mm") &&
-        p["predicted_depth_sigma_mm"].is_number())
-      return p["predicted_depth_sigma_mm"].get<double>() / 1000;
-  }
+  if (const auto* m = app.model_view.model())
+    if (const auto s = storage::read_model_registration(m->registration).predicted_depth_sigma_mm)
+      return *s / 1000;
   return measure::MeasureSettings{}.point_sigma;
 }
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
-#include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/number_format.h"
+#include "storage/project/model_registration.h"
 #include "ui/view3d/overlay_text.h"
 #include "ui/widgets/widgets.h"
 #include "ui/widgets/widgets_text.h"
@@ -21,23 +21,11 @@ constexpr int kMaxSide = 2048;
 
 std::vector<DetectedTarget> detected_targets(const storage::Model& model) {
   std::vector<DetectedTarget> out;
-  const auto p = nlohmann::json::parse(
-      model.registration.parameters_json.empty() ? "{}" : model.registration.parameters_json,
-      nullptr, false);
-  if (!p.is_object() || !p.contains("registration") || !p["registration"].is_object()) return out;
-  const auto& r = p["registration"];
-  if (!r.contains("range_pole") || !r["range_pole"].is_object() ||
-      !r["range_pole"].contains("targets") || !r["range_pole"]["targets"].is_array())
-    return out;
-  for (const auto& t : r["range_pole"]["targets"]) {
-    if (!t.is_object() || !t.contains("left_px") || !t["left_px"].is_array() ||
-        t["left_px"].size() != 2 || !t["left_px"][0].is_number() || !t["left_px"][1].is_number())
-      continue;
+  for (const auto& t : storage::read_model_registration(model.registration).pole_targets) {
     DetectedTarget d;
-    d.which = t.value("which", std::string());
-    d.pixel = {t["left_px"][0].get<double>(), t["left_px"][1].get<double>()};
-    if (t.contains("diameter_px") && t["diameter_px"].is_number())
-      d.diameter_px = t["diameter_px"].get<double>();
+    d.which = t.which;
+    d.pixel = {t.left_px.x(), t.left_px.y()};
+    if (t.diameter_px) d.diameter_px = *t.diameter_px;
     out.push_back(d);
   }
   return out;

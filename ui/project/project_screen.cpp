@@ -99,8 +99,8 @@ void draw_visit(const ProjectSession& s) {
   // this line is about this visit's own pairs.
   if (s.model() && !s.pairs().empty())
     paragraph("3D image: " + format::count(s.model()->vertex_count, "point", "points") + ", " +
-              format::count(s.model()->face_count, "triangle", "triangles") +
-              ", scaled and oriented by " + format::in_words(s.model()->registration_kind) + ".");
+              format::count(s.model()->face_count, "triangle", "triangles") + ", " +
+              format::registered_by(s.model()->registration_kind) + ".");
   else
     paragraph("No 3D image of this visit yet (Capture).");
 }

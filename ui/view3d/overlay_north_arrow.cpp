@@ -3,27 +3,14 @@
 #include <cmath>
 #include <cstdio>
 
-#include <nlohmann/json.hpp>
-
 #include "core/common/units.h"
+#include "storage/project/model_registration.h"
 #include "ui/view3d/overlay_text.h"
 
 namespace rockface::ui {
 
 bool model_is_oriented(const storage::Model& model) {
-  if (model.registration.kind == "none") return false;
-  const auto p = nlohmann::json::parse(
-      model.registration.parameters_json.empty() ? "{}" : model.registration.parameters_json,
-      nullptr, false);
-  // The range pole alone gives the vertical; north comes from the compass
-  // line (registration.north_source names it).
-  if (model.registration.kind == "range_pole_compass" && p.is_object() &&
-      p.contains("registration") && p["registration"].is_object()) {
-    const auto& r = p["registration"];
-    return r.contains("north_source") && r["north_source"].is_string() &&
-           r["north_source"].get<std::string>() != "none";
-  }
-  return true;
+  return storage::read_model_registration(model.registration).oriented();
 }
 
 std::optional<double> view_azimuth_deg(const ModelView& view) {

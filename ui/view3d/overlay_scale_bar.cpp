@@ -3,25 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include <nlohmann/json.hpp>
-
 #include "core/common/number_format.h"
+#include "storage/project/model_registration.h"
 #include "ui/view3d/overlay_text.h"
 
 namespace rockface::ui {
-
-namespace {
-
-nlohmann::json registration_of(const storage::Model& model) {
-  const auto p = nlohmann::json::parse(
-      model.registration.parameters_json.empty() ? "{}" : model.registration.parameters_json,
-      nullptr, false);
-  if (p.is_object() && p.contains("registration") && p["registration"].is_object())
-    return p["registration"];
-  return nlohmann::json::object();
-}
-
-}  // namespace
 
 void DrawnRect::add(ImVec2 a, ImVec2 b) {
   min = ImVec2(std::min({min.x, a.x, b.x}), std::min({min.y, a.y, b.y}));
@@ -35,9 +21,7 @@ void DrawnRect::add_text(ImVec2 at, const char* text) {
 }
 
 bool model_is_scaled(const storage::Model& model) {
-  if (model.registration.kind == "none") return false;
-  const auto r = registration_of(model);
-  return !(r.contains("scaled") && r["scaled"].is_boolean() && !r["scaled"].get<bool>());
+  return storage::read_model_registration(model.registration).is_scaled();
 }
 
 DrawnRect draw_scale_bar(const ModelView& view, float scale) {

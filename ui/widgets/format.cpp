@@ -179,6 +179,8 @@ std::string without_folders(std::string_view text) {
 std::string in_words(std::string_view key) {
   static const std::map<std::string, std::string, std::less<>> words = {
       {"range_pole_compass", "range pole and compass line"},
+      {"range_pole", "range pole (no compass line)"},
+      {"ground_control", "control points"},
       {"range pole", "range pole"},
       {"control points", "control points"},
       {"baseline", "measured camera base"},
@@ -197,6 +199,17 @@ std::string in_words(std::string_view key) {
   for (char& c : out)
     if (c == '_') c = ' ';
   return out;
+}
+
+std::string registered_by(std::string_view kind) {
+  if (kind == "range_pole_compass" || kind == "ground_control")
+    return "scaled and oriented by " + in_words(kind);
+  if (kind == "range_pole") return "scaled and levelled by range pole; no north (no compass line)";
+  if (kind == "baseline") return "scaled by the measured camera base";
+  if (kind == "face_images") return in_words(kind);
+  if (kind == "none" || kind.empty())
+    return "not scaled or oriented (no range pole, control points or baseline)";
+  return "registered by " + in_words(kind);
 }
 
 }  // namespace rockface::ui::format

@@ -95,4 +95,9 @@ std::string without_folders(std::string_view text);
 // spaces.
 std::string in_words(std::string_view key);
 
+// What a stored registration kind did to the 3D image, in a phrase that
+// claims no more (issue 42): "scaled and oriented by range pole and compass
+// line", "scaled and levelled by range pole; no north (no compass line)".
+std::string registered_by(std::string_view kind);
+
 }  // namespace rockface::ui::format

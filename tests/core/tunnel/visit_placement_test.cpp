@@ -154,6 +154,29 @@ TEST(VisitPlacement, ARangePoleAndCompassSayHowThePoleWasPlaced) {
   EXPECT_EQ(typed.chainage, surveyed.chainage);
 }
 
+// Issue 42: a 3D image the range pole scaled and levelled without a compass
+// line has the camera's heading for north; placed by chainage it would be
+// compared with the design profile at that random turn. Refused by name.
+TEST(VisitPlacement, AChainagePlacementWithoutNorthIsRefused) {
+  const Alignment alignment = straight_north();
+  const Round round = excavated_round(alignment, 14.0);
+  FrameRegistration pole_only;
+  pole_only.north_known = false;
+  pole_only.typed = "chainage 12.00, offset 0.50 m (typed)";
+  try {
+    place_visit(alignment, circle_profile(kRadius), round.input(), pole_only, "visit 4");
+    FAIL() << "placed without north";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("visit 4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no north"), std::string::npos) << e.what();
+  }
+  // Monitoring targets bring their own north: the same flag does not apply.
+  FrameRegistration targets = by_ground_control();
+  targets.north_known = false;
+  EXPECT_NO_THROW(
+      place_visit(alignment, circle_profile(kRadius), round.input(), targets, "visit 4"));
+}
+
 TEST(VisitPlacement, ADescendingDriveFindsTheFaceAtItsLowerChainage) {
   const Alignment alignment = straight_north(Drive::descending);
   const Round round = excavated_round(alignment, 50.0);

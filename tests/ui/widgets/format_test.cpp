@@ -71,6 +71,14 @@ TEST(Format, PathsLoseTheirFoldersAndKeysBecomeWords) {
             "(b.rockface: no tunnel) walk 1/8 to 1/5");
   EXPECT_EQ(f::in_words("range_pole_compass"), "range pole and compass line");
   EXPECT_EQ(f::in_words("some_new_kind"), "some new kind");
+  // What a registration did, claiming no more (issue 42).
+  EXPECT_EQ(f::registered_by("range_pole_compass"),
+            "scaled and oriented by range pole and compass line");
+  EXPECT_EQ(f::registered_by("range_pole"),
+            "scaled and levelled by range pole; no north (no compass line)");
+  EXPECT_EQ(f::registered_by("ground_control"), "scaled and oriented by control points");
+  EXPECT_EQ(f::registered_by("none"),
+            "not scaled or oriented (no range pole, control points or baseline)");
   EXPECT_EQ(f::date_time("2026-11-26T03:45:12Z"), "2026-11-26 03:45");
 }
 
