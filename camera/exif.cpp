@@ -17,9 +17,9 @@
 namespace rockface::camera {
 
 bool ExifInfo::empty() const {
-  return make.empty() && model.empty() && lens.empty() && datetime.empty() && !focal_length_mm &&
-         !f_number && !exposure_time_s && !iso && !flash_fired && !focus_distance_m && !width &&
-         !height;
+  return make.empty() && model.empty() && lens.empty() && serial.empty() && datetime.empty() &&
+         !focal_length_mm && !f_number && !exposure_time_s && !iso && !flash_fired &&
+         !focus_distance_m && !width && !height;
 }
 
 namespace {
@@ -76,6 +76,7 @@ ExifInfo read_exif(const std::vector<uint8_t>& jpeg) {
   info.make = ascii(entry(d.get(), EXIF_IFD_0, EXIF_TAG_MAKE));
   info.model = ascii(entry(d.get(), EXIF_IFD_0, EXIF_TAG_MODEL));
   info.lens = ascii(entry(d.get(), EXIF_IFD_EXIF, EXIF_TAG_LENS_MODEL));
+  info.serial = ascii(entry(d.get(), EXIF_IFD_EXIF, EXIF_TAG_BODY_SERIAL_NUMBER));
   info.datetime = ascii(entry(d.get(), EXIF_IFD_EXIF, EXIF_TAG_DATE_TIME_ORIGINAL));
   if (info.datetime.empty()) info.datetime = ascii(entry(d.get(), EXIF_IFD_0, EXIF_TAG_DATE_TIME));
   info.focal_length_mm = rational(entry(d.get(), EXIF_IFD_EXIF, EXIF_TAG_FOCAL_LENGTH), order);
@@ -165,6 +166,7 @@ std::vector<uint8_t> with_exif(const std::vector<uint8_t>& jpeg, const ExifInfo&
   set_ascii(d.get(), EXIF_IFD_0, EXIF_TAG_MAKE, info.make);
   set_ascii(d.get(), EXIF_IFD_0, EXIF_TAG_MODEL, info.model);
   set_ascii(d.get(), EXIF_IFD_EXIF, EXIF_TAG_LENS_MODEL, info.lens);
+  set_ascii(d.get(), EXIF_IFD_EXIF, EXIF_TAG_BODY_SERIAL_NUMBER, info.serial);
   set_ascii(d.get(), EXIF_IFD_EXIF, EXIF_TAG_DATE_TIME_ORIGINAL, info.datetime);
   if (info.focal_length_mm)
     set_rational(d.get(), EXIF_TAG_FOCAL_LENGTH, *info.focal_length_mm, order);
@@ -206,6 +208,18 @@ std::vector<uint8_t> with_exif(const std::vector<uint8_t>& jpeg, const ExifInfo&
   return out;
 }
 
+photogrammetry::PhotoCamera photo_camera(const ExifInfo& e) {
+  photogrammetry::PhotoCamera c;
+  c.make = e.make;
+  c.model = e.model;
+  c.serial = e.serial;
+  c.lens = e.lens;
+  c.focal_mm = e.focal_length_mm;
+  c.width = e.width.value_or(0);
+  c.height = e.height.value_or(0);
+  return c;
+}
+
 std::map<std::string, std::string> exif_fields(const ExifInfo& e) {
   std::map<std::string, std::string> m;
   auto put = [&](const char* k, const auto& v) {
@@ -218,6 +232,7 @@ std::map<std::string, std::string> exif_fields(const ExifInfo& e) {
   if (!e.make.empty()) m["make"] = e.make;
   if (!e.model.empty()) m["model"] = e.model;
   if (!e.lens.empty()) m["lens"] = e.lens;
+  if (!e.serial.empty()) m["serial"] = e.serial;
   if (!e.datetime.empty()) m["datetime"] = e.datetime;
   put("focal_length_mm", e.focal_length_mm);
   put("f_number", e.f_number);

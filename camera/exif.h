@@ -12,10 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "core/photogrammetry/camera/photo_camera.h"
+
 namespace rockface::camera {
 
 struct ExifInfo {
   std::string make, model, lens;
+  std::string serial;    // BodySerialNumber: which body of that model (issue 42)
   std::string datetime;  // DateTimeOriginal, "YYYY:MM:DD HH:MM:SS"
   std::optional<double> focal_length_mm;
   std::optional<double> f_number;
@@ -32,6 +35,9 @@ struct ExifInfo {
 // without EXIF gives an empty ExifInfo; damaged tags are skipped, never
 // trusted.
 ExifInfo read_exif(const std::vector<uint8_t>& jpeg);
+
+// What the photograph says of its camera, for choosing its calibration.
+photogrammetry::PhotoCamera photo_camera(const ExifInfo& info);
 
 // Reads a file's EXIF. Throws InputError(path, ...) when the file cannot be read.
 ExifInfo read_exif_file(const std::string& path);

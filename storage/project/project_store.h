@@ -100,6 +100,9 @@ class ProjectStore {
   RecordId save_capture(const Capture& capture);
   Capture load_capture(RecordId id);
   std::vector<CaptureSummary> list_captures(std::optional<RecordId> visit_id = {});
+  // A setting of the project's newest capture that has it (the range pole's
+  // length the geologist typed, issue 42), without loading its images.
+  std::optional<std::string> latest_capture_setting(const std::string& key);
   // The encoded bytes of one image of a capture ("left" | "right").
   ImageBlob load_capture_image(RecordId capture_id, const std::string& side);
 

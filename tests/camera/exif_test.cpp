@@ -24,6 +24,7 @@ ExifInfo full_info() {
   e.make = "NIKON CORPORATION";
   e.model = "NIKON D7500";
   e.lens = "18.0-55.0 mm f/3.5-5.6";
+  e.serial = "3012345";
   e.datetime = "2026:05:17 09:41:07";
   e.focal_length_mm = 24.0;
   e.f_number = 8.0;
@@ -42,6 +43,7 @@ TEST(Exif, RoundTripKeepsEveryFieldTheWorkflowNeeds) {
   EXPECT_EQ(e.make, "NIKON CORPORATION");
   EXPECT_EQ(e.model, "NIKON D7500");
   EXPECT_EQ(e.lens, "18.0-55.0 mm f/3.5-5.6");
+  EXPECT_EQ(e.serial, "3012345");  // which body: its calibration (issue 42)
   EXPECT_EQ(e.datetime, "2026:05:17 09:41:07");
   // Rationals over 10^6: exact for these values up to double rounding.
   EXPECT_NEAR(*e.focal_length_mm, 24.0, 1e-9);
@@ -52,6 +54,10 @@ TEST(Exif, RoundTripKeepsEveryFieldTheWorkflowNeeds) {
   EXPECT_FALSE(*e.flash_fired);
   EXPECT_EQ(*e.width, 6000);
   EXPECT_EQ(*e.height, 4000);
+  // What it says of its camera, for its calibration.
+  const auto camera = photo_camera(e);
+  EXPECT_EQ(camera.described(),
+            "NIKON D7500 (serial 3012345), lens 18.0-55.0 mm f/3.5-5.6 at 24 mm, 6000 x 4000 px");
   // The image itself still decodes.
   const cv::Mat decoded = cv::imdecode(jpeg, cv::IMREAD_COLOR);
   EXPECT_EQ(decoded.cols, 64);

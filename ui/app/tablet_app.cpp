@@ -3,6 +3,7 @@
 #include <GLES3/gl3.h>
 
 #include <algorithm>
+#include <cstdlib>
 
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
@@ -48,6 +49,12 @@ void AppState::open_project(const std::filesystem::path& file) {
     model_view.clear();
     blocks.selected_block.reset();
     mapping = {};
+    // The pole is the project's: its length as typed for the last pair.
+    if (const auto pole = session->store().latest_capture_setting("range_pole_m")) {
+      char* end = nullptr;
+      const float v = std::strtof(pole->c_str(), &end);
+      if (end != pole->c_str() && v > 0 && v <= 50) capture.range_pole_m = v;
+    }
     // The file's name only: its folders are the machine's business.
     std::string text = "Opened " + format::file_name(file.string());
     if (session->read_only()) text += " (read-only: " + session->read_only_reason() + ")";

@@ -5,9 +5,12 @@
 // mock camera goes through the same path.
 #include <GLES3/gl3.h>
 
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "camera/capture_guidance.h"
+#include "camera/exif.h"
+#include "storage/project/calibration_library.h"
 #include "storage/project/project_store.h"
 #include "ui/app/screens.h"
 #include "ui/widgets/format.h"
@@ -113,18 +116,31 @@ void store_and_reconstruct(AppState& app) {
   capture.left_exif = camera::exif_fields(app.capture.left->exif);
   capture.right_exif = camera::exif_fields(app.capture.right->exif);
   capture.settings["range_pole_m"] = std::to_string(app.capture.range_pole_m);
+  const Preset preset = app.capture.preset;
+  capture.settings["preset"] = std::string(preset_name(preset));
+  photogrammetry::PhotoCamera photo = camera::photo_camera(app.capture.left->exif);
   ReconstructionRunner* runner = app.services.reconstruction;
   app.task.start(
       "Store and reconstruct",
-      [file, capture, runner](Progress& progress) mutable {
+      [file, capture, photo, preset, runner](Progress& progress) mutable {
         // report, not step: a cancel before the pair is saved must not lose it
         progress.report("storing the pair", 0.02);
         storage::ProjectStore store = storage::ProjectStore::open(file);
-        const auto calibrations = store.list_calibrations();
-        if (!calibrations.empty()) capture.calibration_id = calibrations.back().id;
+        // The calibration of the camera that took the pair (issue 42: the
+        // project's newest was taken, whatever body and lens).
+        if (photo.width == 0 || photo.height == 0) {
+          const cv::Mat image = cv::imdecode(capture.left.bytes, cv::IMREAD_GRAYSCALE);
+          photo.width = image.cols;
+          photo.height = image.rows;
+        }
+        const storage::CalibrationChoice choice = storage::choose_calibration(store, photo);
+        if (choice.calibration) capture.calibration_id = choice.calibration->id;
         const storage::RecordId id = store.save_capture(capture);
+        if (!choice.calibration)
+          return "pair stored as capture " + std::to_string(id) +
+                 "; not reconstructed: " + choice.refusal;
         if (!runner) return "pair stored as capture " + std::to_string(id);
-        const storage::RecordId model = runner->reconstruct(file, id, Preset::fast, progress);
+        const storage::RecordId model = runner->reconstruct(file, id, preset, progress);
         return "pair stored, 3D image " + std::to_string(model) + " saved (Model)";
       },
       [&app](const TaskOutcome&) {
@@ -164,6 +180,11 @@ void draw_guidance(AppState& app) {
   label("Range pole: distance between its target centres");
   slider(app.targets, "range pole", &c.range_pole_m, 0.5f, 5, "%.2f m",
          std::min(400 * s, ImGui::GetContentRegionAvail().x));
+  label("3D image");
+  const std::vector<std::string> presets{"fast: a first look", "standard", "precise"};
+  const std::size_t at = c.preset == Preset::fast ? 0 : c.preset == Preset::standard ? 1 : 2;
+  if (const auto chosen = choice(app.targets, "Preset", presets[at], presets, at))
+    c.preset = *chosen == 0 ? Preset::fast : *chosen == 1 ? Preset::standard : Preset::precise;
 }
 
 // The camera and the shots: what the geologist taps at the face, first.

@@ -9,6 +9,7 @@
 #include <opencv2/core.hpp>
 
 #include "camera/camera.h"
+#include "core/common/preset.h"
 
 namespace rockface::ui {
 
@@ -18,8 +19,13 @@ struct CaptureState {
   std::optional<camera::Capture> left, right;
   bool stored = false;  // the pair is saved in the project
   std::vector<std::string> guidance;
-  float distance_m = 10;      // to the face, for the base length hint
-  float range_pole_m = 2.0f;  // distance between the pole's target centres
+  float distance_m = 10;  // to the face, for the base length hint
+  // Distance between the pole's target centres: typed once per project
+  // (AppState::open_project takes the project's last), issue 42.
+  float range_pole_m = 2.0f;
+  // The visit's reconstruction preset: standard unless the geologist wants
+  // a fast first look (issue 42: the tablet always took fast).
+  Preset preset = Preset::standard;
   cv::Mat live_view;
   unsigned live_view_texture = 0;
 };

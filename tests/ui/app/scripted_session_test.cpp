@@ -289,13 +289,14 @@ TEST(UiSession, AWholeVisitInFewTaps) {
   // The joint read with a compass says so in the report's joints table.
   EXPECT_NE(report.find("trace " + traces[2].label + " (compass)"), std::string::npos) << report;
   // Few taps: every screen's count is printed, and the whole visit takes at
-  // most 37 (30 before issue 27's compass reading: 7 more taps, the two
-  // fields and five keys).
+  // most 39 (30 before issue 27's compass reading: 7 more taps, the two
+  // fields and five keys; 2 more since issue 42 for the preset, which this
+  // walk sets to fast to stay short: at the default, standard, it is 37).
   for (const char* screen : {"Project", "Capture", "Model", "Mapping", "Blocks"})
     EXPECT_NE(out.find(std::string("screen ") + screen + ": "), std::string::npos) << screen;
   const auto at = out.find("screens in all: ");
   ASSERT_NE(at, std::string::npos) << out;
-  EXPECT_LE(std::stoi(out.substr(at + 16)), 37) << out;
+  EXPECT_LE(std::stoi(out.substr(at + 16)), 39) << out;
   for (const char* picture : {"ui-project", "ui-capture", "ui-model", "ui-mapping", "ui-blocks"})
     EXPECT_TRUE(fs::exists(shots / (std::string(picture) + ".png"))) << picture;
 }
