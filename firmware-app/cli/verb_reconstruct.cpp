@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 
+#include "firmware-app/cli/registration_cli.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/reconstruct/reconstruct_pair.h"
 
@@ -57,16 +58,7 @@ VerbRun setup_reconstruct(CLI::App& sub) {
   sub.add_option("--right-camera", o->right_camera,
                  "calibration of the right photograph's camera, when it differs");
   sub.add_option("--preset", o->preset, "fast | standard | precise (default standard)");
-  sub.add_option("--range-pole", o->range_pole,
-                 "distance between the two target centres of the vertical range pole, m");
-  sub.add_option("--azimuth", o->azimuth,
-                 "compass bearing of the reference line, degrees clockwise from north");
-  sub.add_option("--reference-line", o->reference_line,
-                 "U1,V1,U2,V2: the reference line's two pixels in the left image");
-  sub.add_option("--declination", o->declination, "magnetic declination, degrees, east positive");
-  sub.add_option("--gcp", o->gcp,
-                 "ground control points, CSV id,u,v,X,Y,Z (u, v in the left image)");
-  sub.add_option("--baseline", o->baseline, "measured distance between the camera stations, m");
+  add_registration_options(sub, o->registration);
   sub.add_option("--out", o->out, "the 3D image: MODEL.ply or MODEL.obj")->required();
   sub.add_option("--report", o->report, "accuracy report (rockface-reconstruction/1 JSON)");
   return [o] { return run_reconstruct(*o); };

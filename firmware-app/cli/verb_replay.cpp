@@ -7,6 +7,7 @@
 
 #include "core/common/number_format.h"
 #include "core/common/preset.h"
+#include "firmware-app/cli/registration_cli.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/replay/field_replay.h"
 
@@ -61,10 +62,12 @@ VerbRun setup_replay(CLI::App& sub) {
   auto req = std::make_shared<ReplayRequest>();
   auto preset = std::make_shared<std::string>();
   sub.add_option("SOURCE", req->source,
-                 "a scene with an imaging section, or a folder of captures with camera.json")
+                 "a scene with an imaging section, or a folder of photographs with camera.json "
+                 "(and visit.json: the pole, the compass line, rockface-visit/1)")
       ->required();
   sub.add_option("--project", req->project, "project file (*.rockface); created when missing")
       ->required();
+  add_registration_options(sub, req->registration);
   CLI::Option* preset_option = sub.add_option(
       "--preset", *preset, "fast | standard | precise (default: the scene's analysis.preset)");
   return [req, preset, preset_option] {

@@ -9,7 +9,6 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/preset.h"
-#include "core/photogrammetry/targets/reference_line.h"
 #include "storage/exchange/mesh_export.h"
 #include "storage/report/reconstruction_report.h"
 #include "storage/scene/camera_json.h"
@@ -25,16 +24,6 @@ cv::Mat read_image(const std::string& path) {
   return image;
 }
 
-photogrammetry::NorthReference parse_north(const PairReconstructionRequest& o) {
-  photogrammetry::NorthReference n;
-  const auto line = photogrammetry::parse_reference_line(o.reference_line, "--reference-line");
-  n.from_px = line[0];
-  n.to_px = line[1];
-  n.azimuth_deg = *o.azimuth;
-  n.declination_deg = o.declination.value_or(0.0);
-  return n;
-}
-
 }  // namespace
 
 photogrammetry::ReconstructionResult reconstruct_pair_files(const PairReconstructionRequest& o,
@@ -44,29 +33,7 @@ photogrammetry::ReconstructionResult reconstruct_pair_files(const PairReconstruc
   const std::string ext = std::filesystem::path(o.out).extension().string();
   if (ext != ".ply" && ext != ".obj")
     throw InputError("--out", "the model file must end in .ply or .obj, not '" + ext + "'");
-  if (o.azimuth.has_value() != !o.reference_line.empty())
-    throw InputError(o.azimuth ? "--reference-line" : "--azimuth",
-                     "--azimuth and --reference-line go together (the compass bearing of a line "
-                     "given by two pixels of the left image)");
-  if (o.declination && !o.azimuth)
-    throw InputError("--declination", "needs --azimuth and --reference-line");
-  if (o.range_pole && !(*o.range_pole > 0))
-    throw InputError("--range-pole", "the pole length must be > 0 m");
-  if (o.baseline && !(*o.baseline > 0)) throw InputError("--baseline", "the base must be > 0 m");
-
-  photogrammetry::RegistrationSources sources;
-  sources.range_pole_m = o.range_pole;
-  sources.baseline_m = o.baseline;
-  if (o.azimuth) sources.north = parse_north(o);
-  if (!o.gcp.empty()) {
-    std::ifstream in(o.gcp);
-    if (!in) throw InputError(o.gcp, "cannot open the control-point file");
-    sources.control_points = photogrammetry::parse_control_points(in, o.gcp);
-    sources.control_points_where = o.gcp;
-    if (sources.control_points.size() < 3)
-      throw InputError(o.gcp, "need three or more control points, found " +
-                                  std::to_string(sources.control_points.size()));
-  }
+  const photogrammetry::RegistrationSources sources = registration_sources(o.registration);
   const auto left_camera = storage::load_camera_json(o.camera);
   const auto right_camera =
       o.right_camera.empty() ? left_camera : storage::load_camera_json(o.right_camera);
@@ -85,8 +52,9 @@ photogrammetry::ReconstructionResult reconstruct_pair_files(const PairReconstruc
   else
     storage::write_obj(o.out, result.mesh, mesh_options);
   if (!o.report.empty()) {
-    storage::ReconstructionReportContext context{o.left,       o.right,    preset.name,
-                                                 o.range_pole, o.baseline, sources.north};
+    storage::ReconstructionReportContext context{
+        o.left,       o.right, preset.name, o.registration.range_pole, o.registration.baseline,
+        sources.north};
     write_text_atomically(o.report, storage::reconstruction_report_json(result, context));
   }
   return result;

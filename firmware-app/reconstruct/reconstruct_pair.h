@@ -9,6 +9,7 @@
 
 #include "core/common/progress.h"
 #include "core/photogrammetry/reconstruction/reconstruction.h"
+#include "firmware-app/reconstruct/registration_options.h"
 
 namespace rockface::app {
 
@@ -16,11 +17,9 @@ struct PairReconstructionRequest {
   std::string left, right;           // the photographs
   std::string camera, right_camera;  // calibrations; right_camera empty: the same camera
   std::string preset = "standard";
-  std::string gcp;             // control points, CSV id,u,v,X,Y,Z; empty: none
-  std::string out;             // MODEL.ply or MODEL.obj
-  std::string report;          // accuracy report; empty: none
-  std::string reference_line;  // "U1,V1,U2,V2" in the left image, with azimuth
-  std::optional<double> range_pole, azimuth, declination, baseline;
+  RegistrationOptions registration;  // pole, compass line, control points, base
+  std::string out;                   // MODEL.ply or MODEL.obj
+  std::string report;                // accuracy report; empty: none
 };
 
 // Throws InputError naming the option or file at fault, before any long work.

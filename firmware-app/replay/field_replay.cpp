@@ -11,10 +11,12 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "camera/capture_guidance.h"
+#include "camera/exif.h"
 #include "camera/mock_camera.h"
 #include "camera/synthetic_renderer.h"
 #include "core/analysis/scene_analysis.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/pair_photo.h"
@@ -28,16 +30,27 @@
 #include "firmware-app/replay/replay_more_pairs.h"
 #include "firmware-app/replay/replay_picks.h"
 #include "firmware-app/tunnel/replay_tunnel.h"
+#include "storage/project/calibration_library.h"
 #include "storage/project/project_store.h"
 #include "storage/report/reconstruction_report.h"
 #include "storage/scene/camera_json.h"
 #include "storage/scene/scene.h"
+#include "storage/scene/visit_file_json.h"
 
 namespace rockface::app {
 
 namespace field_replay_phases {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+bool given_any(const RegistrationOptions& o) {
+  return o.range_pole || o.azimuth || !o.reference_line.empty() || o.declination ||
+         !o.gcp.empty() || o.baseline;
+}
+
+}  // namespace
 
 ReplaySource open_source(const ReplayRequest& request) {
   const bool from_scene = fs::is_regular_file(request.source);
@@ -63,14 +76,65 @@ ReplaySource open_source(const ReplayRequest& request) {
     out.sources.north = compass_reading(out.synthetic->scene, out.intrinsics, out.scene->source);
   } else {
     const fs::path cam_file = fs::path(request.source) / "camera.json";
-    if (!fs::exists(cam_file))
+    if (fs::exists(cam_file)) {
+      out.intrinsics = storage::load_camera_json(cam_file.string());
+    } else if (fs::exists(request.project)) {
+      out.calibration_from_library = true;
+    } else {
       throw InputError(cam_file.string(),
-                       "a capture folder needs the calibration of its camera (camera.json)");
-    out.intrinsics = storage::load_camera_json(cam_file.string());
+                       "a capture folder needs the calibration of its camera: camera.json "
+                       "beside the photographs, or a project whose calibrations hold it");
+    }
+    std::optional<Preset> preset = request.preset;
+    out.sources = folder_registration(request.registration, fs::path(request.source) / "visit.json",
+                                      preset, out.visit_note);
     out.camera = camera::MockCamera::replay(request.source, out.spool.string());
+    out.preset = preset.value_or(Preset::standard);
+    return out;
   }
-  out.preset = request.preset.value_or(out.scene ? out.scene->analysis.preset : Preset::standard);
+  if (given_any(request.registration))
+    throw InputError(request.source,
+                     "a scene gives its own range pole and compass line (imaging.range_pole, "
+                     "imaging.reference_line): --range-pole, --azimuth, --reference-line, "
+                     "--declination, --gcp and --baseline are for a folder of photographs");
+  out.preset = request.preset.value_or(out.scene->analysis.preset);
   return out;
+}
+
+photogrammetry::RegistrationSources folder_registration(const RegistrationOptions& given,
+                                                        const fs::path& visit_file,
+                                                        std::optional<Preset>& preset,
+                                                        std::string& note) {
+  RegistrationOptions o = given;
+  if (fs::exists(visit_file)) {
+    const storage::VisitFile v = storage::load_visit_file(visit_file.string());
+    const std::string at = visit_file.string() + ": ";
+    if (!o.range_pole && v.range_pole_m) {
+      o.range_pole = v.range_pole_m;
+      o.range_pole_name = at + "range_pole_m";
+    }
+    // The compass line is one reading: taken whole from the options when
+    // they give any of it, else from the file.
+    if (!o.azimuth && o.reference_line.empty() && !o.declination && v.azimuth_deg) {
+      const auto& line = *v.reference_line_px;
+      o.azimuth = v.azimuth_deg;
+      o.declination = v.declination_deg;
+      o.reference_line =
+          format_significant(line[0].x(), 17) + "," + format_significant(line[0].y(), 17) + "," +
+          format_significant(line[1].x(), 17) + "," + format_significant(line[1].y(), 17);
+      o.azimuth_name = at + "compass.azimuth_deg";
+      o.reference_line_name = at + "compass.reference_line_px";
+      o.declination_name = at + "compass.declination_deg";
+    }
+    if (o.gcp.empty()) o.gcp = v.control_points;
+    if (!o.baseline && v.baseline_m) {
+      o.baseline = v.baseline_m;
+      o.baseline_name = at + "baseline_m";
+    }
+    if (!preset) preset = v.preset;
+    note = v.note;
+  }
+  return registration_sources(o);
 }
 
 CapturedPair capture_pair(camera::MockCamera& camera) {
@@ -92,14 +156,19 @@ StoredCapture store_capture(storage::ProjectStore& store, const ReplayRequest& r
   storage::CameraBody body;
   body.make = left.exif.make.empty() ? "unknown" : left.exif.make;
   body.model = left.exif.model.empty() ? source.camera->model() : left.exif.model;
-  storage::Calibration calibration;
-  calibration.body_id = store.save_camera_body(body);
-  calibration.intrinsics = source.intrinsics;
-  calibration.focal_setting_mm = left.exif.focal_length_mm.value_or(0);
-  calibration.method =
-      source.scene ? "synthetic (rendering camera)" : "camera.json of " + request.source;
+  body.serial = left.exif.serial;
   StoredCapture out;
-  out.calibration_id = store.save_calibration(calibration);
+  if (source.library_calibration_id) {
+    out.calibration_id = *source.library_calibration_id;
+  } else {
+    storage::Calibration calibration;
+    calibration.body_id = store.save_camera_body(body);
+    calibration.intrinsics = source.intrinsics;
+    calibration.focal_setting_mm = left.exif.focal_length_mm.value_or(0);
+    calibration.method =
+        source.scene ? "synthetic (rendering camera)" : "camera.json of " + request.source;
+    out.calibration_id = store.save_calibration(calibration);
+  }
 
   storage::Capture capture;
   capture.visit_id = visit_id;
@@ -112,6 +181,20 @@ StoredCapture store_capture(storage::ProjectStore& store, const ReplayRequest& r
   capture.settings["preset"] = preset_name;
   out.capture_id = store.save_capture(capture);
   return out;
+}
+
+storage::Calibration library_calibration(storage::ProjectStore& store, const ReplayRequest& request,
+                                         const CapturedPair& pair) {
+  photogrammetry::PhotoCamera photo = camera::photo_camera(pair.left.exif);
+  if (photo.width == 0 || photo.height == 0) {
+    // No pixel size in the EXIF: the photograph's own.
+    const cv::Mat image = decode_shot(pair.left.image, "left");
+    photo.width = image.cols;
+    photo.height = image.rows;
+  }
+  const storage::CalibrationChoice choice = storage::choose_calibration(store, photo);
+  if (!choice.calibration) throw InputError(request.source, choice.refusal);
+  return *choice.calibration;
 }
 
 photogrammetry::ReconstructionResult reconstruct_pair(
@@ -296,7 +379,7 @@ std::vector<storage::Joint> visit_joints(const analysis::AnalysisInput& analysed
 ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& progress) {
   using namespace field_replay_phases;
   ReplayOutcome out;
-  const ReplaySource source = open_source(request);
+  ReplaySource source = open_source(request);
   const photogrammetry::ReconstructionPreset preset =
       analysis::preset_options(source.preset).reconstruction;
 
@@ -312,7 +395,15 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   storage::ProjectStore store = storage::ProjectStore::open_or_create(request.project, info);
   if (store.read_only())
     throw InputError(request.project, "cannot replay into it: " + store.read_only_reason());
-  out.visit_id = store.begin_visit("replay " + request.source);
+  // A folder without camera.json: its camera's calibration from the
+  // project's library, chosen before the visit begins (a refusal stores
+  // nothing).
+  if (source.calibration_from_library) {
+    const storage::Calibration c = library_calibration(store, request, pair);
+    source.intrinsics = c.intrinsics;
+    source.library_calibration_id = c.id;
+  }
+  out.visit_id = store.begin_visit("replay " + request.source, source.visit_note);
   const StoredCapture stored =
       store_capture(store, request, source, pair, out.visit_id, preset.name);
   out.capture_id = stored.capture_id;

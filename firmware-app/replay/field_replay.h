@@ -8,6 +8,7 @@
 #include "core/analysis/report.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
+#include "firmware-app/reconstruct/registration_options.h"
 #include "storage/project/project_records.h"
 
 namespace rockface::app {
@@ -16,6 +17,11 @@ struct ReplayRequest {
   std::string source;            // a scene file (synthetic capture) or a folder of earlier captures
   std::string project;           // *.rockface; created when missing
   std::optional<Preset> preset;  // none: the scene's analysis.preset (standard for a folder)
+  // A folder of photographs (issue 42): what registers its pair, given as
+  // options; each overrides the visit file beside the photographs
+  // (visit.json, storage/scene/visit_file_json.h). Refused with a scene,
+  // which gives its own.
+  RegistrationOptions registration;
 };
 
 // A joint's orientation as measured from its picked traces, beside the

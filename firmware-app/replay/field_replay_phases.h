@@ -56,8 +56,22 @@ struct ReplaySource {
   // --preset, else the scene's analysis.preset; a capture folder has no
   // scene, so its default is the scene's default (standard).
   Preset preset = Preset::standard;
+  std::string visit_note;  // a folder's visit file's note
+  // A folder without camera.json: its photographs take the calibration of
+  // their camera from the project's library (calibration_library.h), chosen
+  // once the project is open (library_calibration).
+  bool calibration_from_library = false;
+  std::optional<storage::RecordId> library_calibration_id;  // the one chosen
 };
 ReplaySource open_source(const ReplayRequest& request);
+
+// A folder's registration: the request's options, each else the visit
+// file's (`visit_file`, when it exists), checked (registration_sources).
+// `preset` and `note` take the file's when it gives them.
+photogrammetry::RegistrationSources folder_registration(const RegistrationOptions& given,
+                                                        const std::filesystem::path& visit_file,
+                                                        std::optional<Preset>& preset,
+                                                        std::string& note);
 
 // 2. Focus locked after the first shot; the two shots' optics must match
 // (throws otherwise); `guidance`: the capture guidance's notes on the pair.
@@ -75,6 +89,12 @@ struct StoredCapture {
 StoredCapture store_capture(storage::ProjectStore& store, const ReplayRequest& request,
                             const ReplaySource& source, const CapturedPair& pair,
                             storage::RecordId visit_id, const std::string& preset_name);
+
+// 3a. For a source that takes its calibration from the library: the
+// calibration of the camera that took the left photograph; throws
+// InputError naming the folder and saying what to do when none fits.
+storage::Calibration library_calibration(storage::ProjectStore& store, const ReplayRequest& request,
+                                         const CapturedPair& pair);
 
 // 4. The pair reconstructed and registered; a scene's model then moved into
 // the project frame (move_to_pole).

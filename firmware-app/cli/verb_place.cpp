@@ -1,0 +1,52 @@
+// `rockface place PROJECT --visit N --chainage C [--offset M] [--height M]`:
+// places a visit in the project's tunnel by where the range pole stood, as
+// the geologist types it (the lower target's chainage, offset right of the
+// axis looking in the drive's direction, height above the axis), its 3D
+// image oriented by its compass line. A visit registered by monitoring
+// targets is placed by them when its tunnel is added; this is for the rest.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "core/common/error.h"
+#include "core/common/number_format.h"
+#include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/tunnel/typed_placement.h"
+
+namespace rockface::app {
+namespace {
+
+struct PlaceOptions {
+  std::string project;
+  storage::RecordId visit = 0;
+  double chainage = 0, offset = 0, height = 0;
+};
+
+VerbRun setup_place(CLI::App& sub) {
+  auto o = std::make_shared<PlaceOptions>();
+  sub.add_option("PROJECT", o->project, "project file (*.rockface) with a tunnel")->required();
+  sub.add_option("--visit", o->visit, "visit id")->required();
+  sub.add_option("--chainage", o->chainage, "chainage of the pole's lower target, m")->required();
+  sub.add_option("--offset", o->offset, "its offset right of the axis, m (default 0)");
+  sub.add_option("--height", o->height, "its height above the axis, m (default 0)");
+  return [o] {
+    if (!std::filesystem::exists(o->project)) throw InputError(o->project, "no such project file");
+    storage::ProjectStore store = storage::ProjectStore::open(o->project);
+    if (store.read_only())
+      throw InputError(o->project, "cannot place a visit: " + store.read_only_reason());
+    const storage::VisitPlacement p =
+        place_by_typed_chainage(store, o->visit, {o->chainage, o->offset, o->height});
+    std::cout << "visit " << o->visit << " placed: face at chainage " << format_fixed(p.chainage, 2)
+              << ", offset " << format_fixed(p.offset_m, 2, " m")
+              << (p.height_m ? ", height " + format_fixed(*p.height_m, 2, " m") : std::string())
+              << " (" << p.note << ")\n";
+    return 0;
+  };
+}
+
+const VerbRegistrar place_verb{
+    "place", "places a visit in the project's tunnel by the range pole's typed chainage",
+    setup_place};
+
+}  // namespace
+}  // namespace rockface::app
