@@ -234,6 +234,54 @@ TEST_F(CardFolder, ACompassLineGivenAfterwardsOrientsTheStoredVisit) {
   EXPECT_NE(r.err.find("no 3D image at pixel"), std::string::npos) << r.err;
 }
 
+// A card brought to a project that already knows the camera: no
+// camera.json beside the photographs, the calibration is the library's one
+// that fits them (here by image size: these JPEGs carry no EXIF); a
+// project with none that fits refuses, saying what to calibrate, and
+// stores nothing.
+TEST_F(CardFolder, WithoutCameraJsonThePhotographsTakeTheLibrarysCalibration) {
+  const fs::path first =
+      card("library-first",
+           json{{"format", "rockface-visit/1"}, {"range_pole_m", 2.0}, {"preset", "fast"}});
+  const fs::path project = root_ / "library.rockface";
+  CliRun r = run_rockface("replay " + first.string() + " --project " + project.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path second =
+      card("library-second",
+           json{{"format", "rockface-visit/1"}, {"range_pole_m", 2.0}, {"preset", "fast"}});
+  fs::remove(second / "camera.json");
+  r = run_rockface("replay " + second.string() + " --project " + project.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  {
+    auto store = storage::ProjectStore::open(project);
+    const auto captures = store.list_captures();
+    ASSERT_EQ(captures.size(), 2u);
+    EXPECT_EQ(captures[1].calibration_id, captures[0].calibration_id);
+    EXPECT_EQ(store.list_calibrations().size(), 1u);
+  }
+  // A project whose only calibration is of another image size.
+  const fs::path other = root_ / "other-size.rockface";
+  {
+    auto store = storage::ProjectStore::create(other, {});
+    storage::Calibration c;
+    c.intrinsics.width = 6016;
+    c.intrinsics.height = 4016;
+    c.intrinsics.fx = c.intrinsics.fy = 5000;
+    c.intrinsics.cx = 3008;
+    c.intrinsics.cy = 2008;
+    c.method = "chessboard:9x6:0.025";
+    store.save_calibration(c);
+  }
+  const auto bytes = fs::file_size(other);
+  r = run_rockface("replay " + second.string() + " --project " + other.string());
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.err.find("no calibration of an unknown camera, 1500 x 1000 px"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("calibrated at 6016 x 4016 px"), std::string::npos) << r.err;
+  EXPECT_EQ(fs::file_size(other), bytes);
+  EXPECT_EQ(storage::ProjectStore::open(other).list_visits().size(), 0u);
+}
+
 TEST_F(CardFolder, BadFieldDataIsRefusedByNameBeforeAnythingIsStored) {
   json visit{{"format", "rockface-visit/1"}, {"range_pole_m", 2.0}, {"compass", compass()}};
   visit["compass"]["azimuth_deg"] = 400;
