@@ -319,15 +319,30 @@ std::optional<std::string> budget_spent(const Integration& in, const Scales& k,
 }
 
 void sample_up_to(const BlockMotion& motion, const Scales& k, Integration& in, BlockDynamics& out) {
-  // Samples fall on step ends.
+  // A sample due now (within rounding of k x sample) is the state itself.
   while (in.next_sample <= in.tau + 1e-9 * in.tau_sample) {
     out.samples.push_back(sample_at(motion, unpack(in.x, k), in.next_sample * k.time));
     in.next_sample += in.tau_sample;
   }
 }
 
+void sample_within_step(const BlockMotion& motion, const Scales& k, const Stepper& sampler,
+                        Integration& in, BlockDynamics& out) {
+  // The samples the step passed over: one step of the same method from the
+  // step's start to each, so the step itself stays as the error control
+  // and the events chose it (issue 40: sampling never changes the motion).
+  // A sample at the step's end is left to sample_up_to, after projection.
+  while (in.next_sample < in.tau - 1e-9 * in.tau_sample) {
+    const State at = sampler.advance(in.x0, in.t0, in.next_sample - in.t0);
+    out.samples.push_back(sample_at(motion, unpack(at, k), in.next_sample * k.time));
+    in.next_sample += in.tau_sample;
+  }
+}
+
 bool controlled_step(const Stepper& stepper, const Scales& k, Integration& in, BlockDynamics& out) {
-  double h = std::min({in.dt, in.tau_max_step, in.next_sample - in.tau, in.tau_end - in.tau});
+  // The step is the error control's, at most max_step, and ends at the end
+  // of the duration; never cut to a sample time (sample_within_step).
+  double h = std::min({in.dt, in.tau_max_step, in.tau_end - in.tau});
   in.x0 = in.x;
   in.t0 = in.tau;
   if (!stepper.try_step(in.x, in.tau, h)) {
@@ -394,6 +409,10 @@ Integration integrate(const BlockMotion& motion, const Scales& k,
                       const std::optional<DynamicsFloor>& floor, const DynamicsOptions& options,
                       BlockDynamics& out) {
   const Stepper stepper(motion, k, out.evaluations, options);
+  // The samples' evaluations are not the integration's: they are counted
+  // apart, so that the step budget does not depend on sampling either.
+  int sample_evaluations = 0;
+  const Stepper sampler(motion, k, sample_evaluations, options);
   Integration in = start_integration(motion, k, options, out);
   while (in.tau < in.tau_end - 1e-12 * in.tau_end && !in.landed) {
     if (auto spent = budget_spent(in, k, options, out)) {
@@ -407,6 +426,7 @@ Integration integrate(const BlockMotion& motion, const Scales& k,
     // Events inside the step: a contact closing into the rock, the floor,
     // a change of the contact mode. The earliest is found by bisection.
     const ContactMode new_mode = cut_at_event(motion, k, floor, stepper, in);
+    sample_within_step(motion, k, sampler, in, out);
     // Projection: drift back onto the loaded contacts; a closing contact
     // stops (plastic impact).
     finish_step(motion, k, floor, new_mode, in, out);
