@@ -3,7 +3,6 @@
 // and factor of safety under the effects the scene lists.
 #include <cmath>
 #include <memory>
-#include <sstream>
 
 #include "core/analysis/block_dynamics.h"
 #include "core/analysis/block_mechanics.h"
@@ -13,6 +12,7 @@
 #include "core/blocks/construction.h"
 #include "core/blocks/convexity.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
@@ -51,10 +51,8 @@ std::vector<ScenePlane> scene_planes(const AnalysisInput& scene) {
 }
 
 std::string vec_text(const Eigen::Vector3d& v) {
-  std::ostringstream o;
-  o.precision(3);
-  o << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-  return o.str();
+  return "(" + format_significant(v.x(), 3) + ", " + format_significant(v.y(), 3) + ", " +
+         format_significant(v.z(), 3) + ")";
 }
 
 void fill_verdicts(const kinematics::Finiteness& f, ReportBlock& rb) {

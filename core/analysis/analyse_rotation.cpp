@@ -1,10 +1,10 @@
 #include "core/analysis/analyse_rotation.h"
 
-#include <cstdio>
 #include <string>
 
 #include "core/analysis/preset_options.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"
@@ -95,12 +95,8 @@ void analyse_block_rotation(const blocks::Polyhedron& block, const SceneAnalysis
     ra.penalty = r.penalty;
     out.remote_axis = ra;
     if (r.found && r.distance > kTranslationLikeAxisRel * block.size()) {
-      char text[160];
-      std::snprintf(
-          text, sizeof text,
-          "remote axis %.3g m from the block: the motion found is essentially a translation",
-          r.distance);
-      out.notes.push_back(text);
+      out.notes.push_back("remote axis " + format_significant(r.distance, 3, " m") +
+                          " from the block: the motion found is essentially a translation");
     }
   }
 }

@@ -1,11 +1,11 @@
 #include "core/analysis/block_dynamics.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "core/analysis/preset_options.h"
 #include "core/blocks/mass_properties.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/mechanics/dynamics/block_dynamics.h"
@@ -13,12 +13,6 @@
 namespace rockface::analysis {
 
 namespace {
-
-std::string number(double v, int decimals) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
 
 // Why the block's motion is simulated, and the divisor of its joints'
 // friction (tan phi / divisor: the limit point's strength reduction);
@@ -34,11 +28,11 @@ std::optional<Trigger> trigger(const ReportBlock& rb) {
       return Trigger{"equilibrium path: no equilibrium under its loads", 1};
     if (rb.mechanics->fos_limit_point)
       return Trigger{"equilibrium path: from its limit point (strengths / " +
-                         number(*rb.mechanics->fos_limit_point, 3) + ")",
+                         format_fixed(*rb.mechanics->fos_limit_point, 3) + ")",
                      *rb.mechanics->fos_limit_point};
   }
   if (rb.fos && *rb.fos < 1)
-    return Trigger{"limit equilibrium: FoS " + number(*rb.fos, 2) + " < 1" +
+    return Trigger{"limit equilibrium: FoS " + format_fixed(*rb.fos, 2) + " < 1" +
                        (rb.fos_marginal ? " (marginal: within the FoS's tolerance of 1)" : ""),
                    1};
   return std::nullopt;

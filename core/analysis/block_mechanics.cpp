@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <memory>
-#include <sstream>
 
 #include "core/analysis/preset_options.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/mechanics/equilibrium_path.h"
 #include "core/mechanics/joint_law.h"
@@ -57,9 +57,8 @@ bool coulomb_law(const AnalysisInput& scene) {
 }
 
 std::string degrees_text(double radians) {
-  std::ostringstream s;
-  s << std::round(rad_to_deg(radians) * 10) / 10 << " degrees";
-  return s.str();
+  // To 0.1 degree, without trailing zeros ("30 degrees", "12.5 degrees").
+  return format_significant(std::round(rad_to_deg(radians) * 10) / 10, 6, " degrees");
 }
 
 ReportRigidMode rigid_mode(const mechanics::RigidMode& m) {

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "core/analysis/analyse_rotation.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace rockface::analysis {
@@ -53,12 +53,10 @@ void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAn
       const double tol = fos_tolerance(*a.fos, options.orientation_uncertainty_deg);
       if (std::abs(*a.fos - 1) <= tol) {
         rb.fos_marginal = true;
-        char buf[256];
-        std::snprintf(buf, sizeof buf,
-                      "FoS %.9g is within its tolerance (+-%.2g, from the orientation "
-                      "uncertainty of %.3g deg) of 1: marginal, failure is not decided",
-                      *a.fos, tol, options.orientation_uncertainty_deg);
-        rb.notes.push_back(buf);
+        rb.notes.push_back("FoS " + format_significant(*a.fos, 9) + " is within its tolerance (+-" +
+                           format_significant(tol, 2) + ", from the orientation uncertainty of " +
+                           format_significant(options.orientation_uncertainty_deg, 3, " deg") +
+                           ") of 1: marginal, failure is not decided");
       }
     }
   }

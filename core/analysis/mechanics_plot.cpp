@@ -3,23 +3,17 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 
 namespace rockface::analysis {
 
 namespace {
-
-std::string number3g(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
 
 cv::Mat draw(const ReportMechanics& m, int width, int height) {
   cv::Mat img(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
@@ -51,14 +45,14 @@ cv::Mat draw(const ReportMechanics& m, int width, int height) {
              cv::LINE_AA);
   for (const auto& p : m.path) cv::circle(img, at(p[1], p[0]), 2, curve, cv::FILLED);
   const double font = 0.4;
-  cv::putText(img, "displacement (m), max " + number3g(dmax), {left, height - 10},
+  cv::putText(img, "displacement (m), max " + format_significant(dmax, 3), {left, height - 10},
               cv::FONT_HERSHEY_SIMPLEX, font, axis, 1, cv::LINE_AA);
-  cv::putText(img, number3g(lmax), {2, top + 10}, cv::FONT_HERSHEY_SIMPLEX, font, axis, 1,
-              cv::LINE_AA);
+  cv::putText(img, format_significant(lmax, 3), {2, top + 10}, cv::FONT_HERSHEY_SIMPLEX, font, axis,
+              1, cv::LINE_AA);
   cv::putText(img, "lambda", {2, origin.y - h / 2}, cv::FONT_HERSHEY_SIMPLEX, font, axis, 1,
               cv::LINE_AA);
   if (m.fos_limit_point)
-    cv::putText(img, "FoS " + number3g(*m.fos_limit_point),
+    cv::putText(img, "FoS " + format_significant(*m.fos_limit_point, 3),
                 at(0.05 * dmax, *m.fos_limit_point) + cv::Point(4, -4), cv::FONT_HERSHEY_SIMPLEX,
                 font, limit, 1, cv::LINE_AA);
   return img;

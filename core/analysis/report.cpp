@@ -3,25 +3,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
+
+#include "core/common/number_format.h"
 
 namespace rockface::analysis {
 
 namespace {
-
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
 
 std::string fos_text(const std::optional<ReportMode>& mode, std::optional<double> fos) {
   if (!mode) return "-";
   if (mode->type == "none") return "stable";
   if (!fos) return "-";
   if (!std::isfinite(*fos)) return "inf";
-  return fixed(*fos, 2);
+  return format_fixed(*fos, 2);
 }
 
 std::string mode_text(const std::optional<ReportMode>& mode) {
@@ -41,9 +36,7 @@ std::string pad(const std::string& s, size_t w) {
 }  // namespace
 
 std::string event_text(const ReportMotionEvent& e) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, " at %.2f s", e.time_s);
-  return e.what + buf;
+  return e.what + " at " + format_fixed(e.time_s, 2, " s");
 }
 
 std::string report_summary(const Report& r) {
@@ -65,7 +58,7 @@ std::string report_summary(const Report& r) {
           std::string(p.removable ? "removable" : (p.empty ? "empty" : "not removable")) +
           (p.marginal ? "?" : "");
       out << pad(p.face, 10) << pad(p.code, 8) << pad(verdict, 16)
-          << pad(fixed(p.margin_deg, 2) + " deg", 10) << pad(mode_text(p.mode), 22)
+          << pad(format_fixed(p.margin_deg, 2) + " deg", 10) << pad(mode_text(p.mode), 22)
           << fos_text(p.mode, p.fos) << "\n";
     }
     out << "(not listed: pyramids that are firmly not removable; '?' = marginal)\n";
@@ -99,8 +92,8 @@ std::string report_summary(const Report& r) {
       }
       if (b.remote_axis) rotation += b.remote_axis->found ? "; remote axis" : "; no remote axis";
       out << pad(b.id, 10) << pad(b.source, 8) << pad(code_text(b.code), code_width)
-          << pad(b.volume ? fixed(*b.volume, 3) : "-", 11) << pad(verdict, 16)
-          << pad(fixed(b.margin_deg, 2) + " deg", 10) << pad(mode_text(b.mode), 22)
+          << pad(b.volume ? format_fixed(*b.volume, 3) : "-", 11) << pad(verdict, 16)
+          << pad(format_fixed(b.margin_deg, 2) + " deg", 10) << pad(mode_text(b.mode), 22)
           << pad(fos_text(b.mode, b.fos) + (b.fos_marginal ? "?" : ""), 8) << rotation << "\n";
     }
     if (pieces)
@@ -118,7 +111,7 @@ std::string report_summary(const Report& r) {
       if (!b.mechanics) continue;
       const ReportMechanics& m = *b.mechanics;
       out << pad(b.id, 10)
-          << pad(m.fos_limit_point ? fixed(*m.fos_limit_point, 2) : std::string("-"), 8)
+          << pad(m.fos_limit_point ? format_fixed(*m.fos_limit_point, 2) : std::string("-"), 8)
           << pad(m.failure_mode.kind, 14) << pad(m.stability, 12) << m.outcome << "\n";
     }
   }

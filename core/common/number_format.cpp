@@ -34,4 +34,8 @@ std::string format_significant(double v, int digits, std::string_view unit) {
   return print_number("%.*g", digits, v, unit);
 }
 
+std::string format_round_trip(double v, std::string_view unit) {
+  return format_significant(v, 17, unit);
+}
+
 }  // namespace rockface

@@ -22,4 +22,10 @@ std::string format_fixed(double v, int decimals, std::string_view unit = {});
 // "0.0123", format_significant(1234567, 3) is "1.23e+06".
 std::string format_significant(double v, int digits, std::string_view unit = {});
 
+// The value to 17 significant digits ("%.17g"), which every double reads
+// back as itself: the form for numbers written to a file that is read again
+// (format_round_trip(0.1) is "0.10000000000000001"; not the shortest such
+// text, but the same text every C library writes).
+std::string format_round_trip(double v, std::string_view unit = {});
+
 }  // namespace rockface

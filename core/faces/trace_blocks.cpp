@@ -5,11 +5,11 @@
 #include <map>
 #include <numbers>
 #include <set>
-#include <sstream>
 
 #include "core/blocks/construction.h"
 #include "core/blocks/mass_properties.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/faces/tolerances.h"
 #include "core/faces/trace_block_phases.h"
@@ -63,13 +63,6 @@ double perimeter_of(const std::vector<Eigen::Vector2d>& poly) {
   double p = 0;
   for (size_t i = 0; i < poly.size(); ++i) p += (poly[(i + 1) % poly.size()] - poly[i]).norm();
   return p;
-}
-
-std::string fmt3(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
 }
 
 // Cutting the block around an island into the cells of the island's planes
@@ -260,7 +253,7 @@ LoopPlanes loop_planes(const FreeSurface& surface, const TraceNetwork& net,
     if (pg.plane.source == TracePlaneSource::Fitted) {
       out.uncertainty = std::max(out.uncertainty, pg.plane.uncertainty);
       out.notes.push_back("plane " + pg.name + " is fitted to its trace (uncertainty " +
-                          fmt3(rad_to_deg(pg.plane.uncertainty)) + " degrees)");
+                          format_significant(rad_to_deg(pg.plane.uncertainty), 3) + " degrees)");
     }
   }
   out.n_joints = static_cast<int>(out.planes.size());
@@ -573,11 +566,10 @@ PieceCells build_piece_cells(const std::string& id, const std::vector<Piece>& pi
       out.unbounded = true;
       block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
       if (cc) {
-        std::ostringstream s;
-        s.precision(3);
-        s << "infinite: the block never ends in direction (" << cc->open_direction.x() << ", "
-          << cc->open_direction.y() << ", " << cc->open_direction.z() << ")";
-        block.notes.push_back(s.str());
+        const Eigen::Vector3d& open = cc->open_direction;
+        block.notes.push_back(
+            "infinite: the block never ends in direction (" + format_significant(open.x(), 3) +
+            ", " + format_significant(open.y(), 3) + ", " + format_significant(open.z(), 3) + ")");
       }
     } else if (cc->outcome == blocks::ConvexOutcome::Empty) {
       if (!pieces[k].may_be_empty)
@@ -631,7 +623,7 @@ void analyse_cells(const std::string& id, std::vector<blocks::Polyhedron>& cells
       double volume = 0;
       for (const auto& c : cells) volume += blocks::mass_properties(c, options.density).volume;
       block.notes.push_back("finite as the union of " + std::to_string(cells.size()) +
-                            " bounded convex pieces (" + fmt3(volume) +
+                            " bounded convex pieces (" + format_significant(volume, 3) +
                             " m^3); removability from the joint faces of its boundary; "
                             "no mode or factor of safety without one polyhedron");
     }

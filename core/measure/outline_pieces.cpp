@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
-#include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/progress.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
@@ -37,18 +37,11 @@ constexpr double kMinOutlinePx2 = 1.0;
 // lines (a piece wrapping around another), which the geologist is told.
 constexpr double kMinCoveredShare = 0.9;
 
-std::string outline_fixed(double v, int digits) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
 std::string outline_mm(double m) {
-  return outline_fixed(m * 1000, 0) + " mm";
+  return format_fixed(m * 1000, 0) + " mm";
 }
 std::string outline_m2(double v) {
-  return outline_fixed(v, 2) + " m2";
+  return format_fixed(v, 2) + " m2";
 }
 
 double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -120,7 +113,7 @@ double outline_angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 
 std::string attitude(const geometry::Plane& p) {
   const auto o = geometry::plane_orientation(p.normal);
-  return outline_fixed(rad_to_deg(o.dip), 0) + "/" + outline_fixed(rad_to_deg(o.dipdir), 0);
+  return format_fixed(rad_to_deg(o.dip), 0) + "/" + format_fixed(rad_to_deg(o.dipdir), 0);
 }
 
 }  // namespace
@@ -167,7 +160,7 @@ std::optional<std::string> uncovered_note(const std::string& name,
     }
   if (all > 0 && static_cast<double>(in) < kMinCoveredShare * static_cast<double>(all))
     return "piece " + name + "'s outline holds " +
-           outline_fixed(100.0 * static_cast<double>(in) / static_cast<double>(all), 0) +
+           format_fixed(100.0 * static_cast<double>(in) / static_cast<double>(all), 0) +
            " % of its points: its part of the face is not bounded by straight "
            "fold lines";
   return std::nullopt;

@@ -1,12 +1,12 @@
 #include "core/measure/pick_measurement.h"
 
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/measure/joined_traces.h"
 #include "core/measure/least_cost_trace.h"
@@ -244,10 +244,8 @@ MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& c,
       if (fitted) {
         const double apart =
             rad_to_deg(std::acos(std::min(1.0, std::abs(fitted_normal.dot(j.plane.fit.normal)))));
-        char text[96];
-        std::snprintf(text, sizeof text, "; the plane fitted to its traces is %.1f deg from it",
-                      apart);
-        j.plane.problem += text;
+        j.plane.problem +=
+            "; the plane fitted to its traces is " + format_fixed(apart, 1, " deg") + " from it";
       }
     }
   }

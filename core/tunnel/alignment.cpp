@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/tunnel/survey_ranges.h"
 #include "core/tunnel/tolerances.h"
 
@@ -15,25 +15,7 @@ namespace rockface::tunnel {
 namespace {
 
 std::string station_name(std::size_t i, double chainage) {
-  std::ostringstream s;
-  s.precision(10);
-  s << "stations[" << i << "] (chainage " << chainage << ")";
-  return s.str();
-}
-
-// "1e+08", "1e+308": the %g of a number, for ranges and refused values.
-std::string format_number(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
-
-std::string metres(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v << " m";
-  return s.str();
+  return "stations[" + std::to_string(i) + "] (chainage " + format_significant(chainage, 10) + ")";
 }
 
 // d(x, y, z)/d(chainage) of an element, in the table's direction: the
@@ -103,9 +85,9 @@ Alignment Alignment::build(const std::vector<AlignmentStation>& stations,
     return std::abs(v.x()) <= kMaxSurveyHorizontalM && std::abs(v.y()) <= kMaxSurveyHorizontalM &&
            std::abs(v.z()) <= kMaxSurveyElevationM;
   };
-  const std::string ranges = "easting and northing within +-" +
-                             format_number(kMaxSurveyHorizontalM) + " m, elevation within +-" +
-                             format_number(kMaxSurveyElevationM) + " m";
+  const std::string ranges =
+      "easting and northing within +-" + format_significant(kMaxSurveyHorizontalM, 6) +
+      " m, elevation within +-" + format_significant(kMaxSurveyElevationM, 6) + " m";
   if (!survey_range(datum))
     throw InputError("datum", "must be survey coordinates (" + ranges + ")");
   for (std::size_t i = 0; i < stations.size(); ++i) {
@@ -114,8 +96,8 @@ Alignment Alignment::build(const std::vector<AlignmentStation>& stations,
       throw InputError("stations[" + std::to_string(i) + "].chainage", "must be a finite number");
     if (!(std::abs(s.chainage) <= kMaxSurveyHorizontalM))
       throw InputError("stations[" + std::to_string(i) + "].chainage",
-                       format_number(s.chainage) + " is outside +-" +
-                           format_number(kMaxSurveyHorizontalM) + " m");
+                       format_significant(s.chainage, 6) + " is outside +-" +
+                           format_significant(kMaxSurveyHorizontalM, 6) + " m");
     if (!s.survey.allFinite())
       throw InputError(station_name(i, s.chainage),
                        "easting, northing and elevation must be finite");
@@ -163,9 +145,10 @@ Alignment Alignment::build(const std::vector<AlignmentStation>& stations,
     if (e.radius != 0) {
       const double r = std::abs(e.radius);
       if (r < chord / 2)
-        throw InputError(where, "the radius " + metres(e.radius) +
+        throw InputError(where, "the radius " + format_significant(e.radius, 6, " m") +
                                     " is smaller than half the chord between the stations (" +
-                                    metres(chord / 2) + "): no arc of that radius joins them");
+                                    format_significant(chord / 2, 6, " m") +
+                                    "): no arc of that radius joins them");
       const double half = std::asin(std::min(1.0, chord / (2 * r)));
       const Eigen::Vector2d d = (e.b - e.a) / chord;
       const Eigen::Vector2d right(d.y(), -d.x());
@@ -180,13 +163,15 @@ Alignment Alignment::build(const std::vector<AlignmentStation>& stations,
     const double dc = e.c1 - e.c0;
     if (polyline) {
       if (std::abs(length - dc) > kPolylineMismatchRelative * dc + kChainageMismatchM)
-        throw InputError(where, "the chainage advances " + metres(dc) + " but the stations are " +
-                                    metres(length) + " apart: a wrong chainage or coordinate?");
+        throw InputError(where, "the chainage advances " + format_significant(dc, 6, " m") +
+                                    " but the stations are " + format_significant(length, 6, " m") +
+                                    " apart: a wrong chainage or coordinate?");
     } else if (std::abs(length - dc) > kChainageMismatchM + kChainageMismatchRelative * length) {
-      throw InputError(where, "the chainage advances " + metres(dc) + " but the " +
-                                  (e.radius == 0 ? std::string("line") : std::string("arc")) +
-                                  " between the stations is " + metres(length) +
-                                  " long: a wrong chainage, coordinate or radius?");
+      throw InputError(where,
+                       "the chainage advances " + format_significant(dc, 6, " m") + " but the " +
+                           (e.radius == 0 ? std::string("line") : std::string("arc")) +
+                           " between the stations is " + format_significant(length, 6, " m") +
+                           " long: a wrong chainage, coordinate or radius?");
     }
     al.elements_.push_back(e);
   }

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/geometry/cross2.h"
 #include "core/tunnel/tolerances.h"
@@ -18,10 +18,12 @@ using geometry::cross2;
 namespace {
 
 std::string point_text(const Eigen::Vector2d& p) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "(" << p.x() << ", " << p.y() << ")";
-  return s.str();
+  // Appended, not "(" + ...: GCC 12's -Wrestrict misfires on that form.
+  std::string text = "(";
+  text += format_significant(p.x(), 6);
+  text += ", ";
+  text += format_significant(p.y(), 6);
+  return text + ")";
 }
 
 ProfileSegment reversed(const ProfileSegment& s) {

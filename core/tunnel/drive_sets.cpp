@@ -5,10 +5,10 @@
 #include <limits>
 #include <numbers>
 #include <set>
-#include <sstream>
 
 #include "core/common/degrees_per_radian.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/geometry/orientation.h"
 
 namespace rockface::tunnel {
@@ -37,14 +37,6 @@ double axial_angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 Eigen::Vector3d upward(Eigen::Vector3d n) {
   if (n.z() < 0 || (n.z() == 0 && (n.y() < 0 || (n.y() == 0 && n.x() < 0)))) n = -n;
   return n;
-}
-
-std::string chainage_text(double c) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(2);
-  s << c;
-  return s.str();
 }
 
 // A track while the visits are walked.
@@ -145,7 +137,7 @@ DriveSets track_sets_along_drive(std::vector<VisitSets> visits, const DriveSetOp
           e.previous_chainage = visits[v - 1].chainage;
           e.visit_id = visit.visit_id;
           e.message = "set " + std::to_string(track.id) + " (" + obs.name +
-                      ") appears at chainage " + chainage_text(visit.chainage) +
+                      ") appears at chainage " + format_fixed(visit.chainage, 2) +
                       ", not seen before";
           track.events.push_back(e);
         }
@@ -191,14 +183,11 @@ DriveSets track_sets_along_drive(std::vector<VisitSets> visits, const DriveSetOp
         e.visit_id = visit.visit_id;
         e.angle_deg = pt.angle_to_running_mean_deg;
         e.cone_deg = pt.turn_cone_deg;
-        std::ostringstream msg;
-        msg.setf(std::ios::fixed);
-        msg.precision(1);
-        msg << "set " << track.id << " (" << obs.name << ") turns between chainage "
-            << chainage_text(e.previous_chainage) << " and " << chainage_text(e.chainage) << ": "
-            << e.angle_deg << " deg from its mean so far, beyond the confidence cones ("
-            << e.cone_deg << " deg)";
-        e.message = msg.str();
+        e.message = "set " + std::to_string(track.id) + " (" + obs.name +
+                    ") turns between chainage " + format_fixed(e.previous_chainage, 2) + " and " +
+                    format_fixed(e.chainage, 2) + ": " + format_fixed(e.angle_deg, 1) +
+                    " deg from its mean so far, beyond the confidence cones (" +
+                    format_fixed(e.cone_deg, 1) + " deg)";
         track.events.push_back(e);
         l.running.setZero();
         l.running_n = 0;
@@ -231,8 +220,8 @@ DriveSets track_sets_along_drive(std::vector<VisitSets> visits, const DriveSetOp
     e.previous_chainage = track.points.back().chainage;
     e.visit_id = visits[l.first_missing].visit_id;
     e.message = "set " + std::to_string(track.id) + " (" + track.points.back().name +
-                ") vanishes: last seen at chainage " + chainage_text(e.previous_chainage) +
-                ", not at " + chainage_text(e.chainage);
+                ") vanishes: last seen at chainage " + format_fixed(e.previous_chainage, 2) +
+                ", not at " + format_fixed(e.chainage, 2);
     track.events.push_back(e);
   }
   for (SetTrack& track : out.tracks) {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/parallel.h"
 #include "core/common/units.h"
 #include "core/tunnel/mesh_raycast.h"
@@ -29,17 +29,10 @@ struct Ray {
   Region region = Region::wall;
 };
 
-std::string fmt(double v, int precision = 3) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
-
 void require_positive(double v, const char* name) {
   if (!std::isfinite(v) || !(v > 0))
-    throw InputError(std::string("options.") + name, "must be a positive number, got " + fmt(v, 6));
+    throw InputError(std::string("options.") + name,
+                     "must be a positive number, got " + format_fixed(v, 6));
 }
 
 std::vector<Ray> rays_of(const DesignProfile& profile, double ray_spacing) {
@@ -189,13 +182,15 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
   std::string clipped;
   if (hi < alignment.first_chainage() || lo > alignment.last_chainage()) {
     out.status = DeviationStatus::outside_alignment;
-    out.message = "chainage " + fmt(lo) + " to " + fmt(hi) + " lies outside the alignment (" +
-                  fmt(alignment.first_chainage()) + " to " + fmt(alignment.last_chainage()) + ")";
+    out.message = "chainage " + format_fixed(lo, 3) + " to " + format_fixed(hi, 3) +
+                  " lies outside the alignment (" + format_fixed(alignment.first_chainage(), 3) +
+                  " to " + format_fixed(alignment.last_chainage(), 3) + ")";
     return out;
   }
   if (lo < alignment.first_chainage() || hi > alignment.last_chainage()) {
-    clipped = "; the range was cut to the alignment's " + fmt(alignment.first_chainage()) + " to " +
-              fmt(alignment.last_chainage());
+    clipped = "; the range was cut to the alignment's " +
+              format_fixed(alignment.first_chainage(), 3) + " to " +
+              format_fixed(alignment.last_chainage(), 3);
     lo = std::max(lo, alignment.first_chainage());
     hi = std::min(hi, alignment.last_chainage());
   }
@@ -320,7 +315,8 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
     walls_or_roof = walls_or_roof || s.walls_seen > 0 || s.roof_seen > 0;
     if (s.seen_fraction < options.min_seen_fraction) ++thin;
   }
-  const std::string range = "chainage " + fmt(lo) + " to " + fmt(hi) + clipped;
+  const std::string range =
+      "chainage " + format_fixed(lo, 3) + " to " + format_fixed(hi, 3) + clipped;
   if (!walls_or_roof) {
     out.status = DeviationStatus::no_walls_in_view;
     out.message = (seen == 0 ? std::string("nothing of the profile was in view")
@@ -330,13 +326,14 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
                   " stopped by what is not rock): no over- or underbreak can be given, not zero";
   } else if (thin > 0) {
     out.status = DeviationStatus::partly_seen;
-    out.message = std::to_string(thin) + " of " + std::to_string(rows) +
-                  " cross-sections saw less than " + fmt(100 * options.min_seen_fraction, 0) +
-                  " % of the profile; areas and volumes cover only what was seen (" +
-                  fmt(100 * out.seen_fraction, 1) + " % of the outline over " + range + ")";
+    out.message =
+        std::to_string(thin) + " of " + std::to_string(rows) + " cross-sections saw less than " +
+        format_fixed(100 * options.min_seen_fraction, 0) +
+        " % of the profile; areas and volumes cover only what was seen (" +
+        format_fixed(100 * out.seen_fraction, 1) + " % of the outline over " + range + ")";
   } else {
     out.status = DeviationStatus::ok;
-    out.message = fmt(100 * out.seen_fraction, 1) + " % of the outline seen over " + range;
+    out.message = format_fixed(100 * out.seen_fraction, 1) + " % of the outline seen over " + range;
   }
   return out;
 }

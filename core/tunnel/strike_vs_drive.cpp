@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "core/common/degrees_per_radian.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 
 namespace rockface::tunnel {
 
@@ -49,14 +49,6 @@ DriveClass class_of(double angle_deg, double dip_deg, bool with_dip) {
 
 std::string band(double dip_deg) {
   return dip_deg >= 45 ? "dip 45-90" : "dip 20-45";
-}
-
-std::string number(double v) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(0);
-  s << v;
-  return s.str();
 }
 
 }  // namespace
@@ -141,7 +133,7 @@ StrikeVsDrive strike_vs_drive(const geometry::PlaneOrientation& plane, double dr
       text = "strike parallel to the axis, " + band(d);
       break;
     case StrikeRelation::oblique:
-      text = "strike oblique to the axis (" + number(a) +
+      text = "strike oblique to the axis (" + format_fixed(a, 0) +
              " deg; taken as the less favourable of "
              "perpendicular, " +
              sense + ", and parallel), " + band(d);

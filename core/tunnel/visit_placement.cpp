@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <utility>
 
 #include "core/common/error.h"
@@ -41,10 +40,8 @@ Eigen::Vector3d typed_pole_position(const Alignment& alignment, double chainage,
   for (auto [value, field] :
        {std::pair{offset, "tunnel.placement.offset"}, std::pair{height, "tunnel.placement.height"}})
     if (!(std::abs(value) <= kMaxTypedOffsetM)) {
-      std::ostringstream v;  // %g: 1e308 is not 300 digits
-      v.precision(6);
-      v << value << " m";
-      throw InputError(field, v.str() +
+      // %g: 1e308 is not 300 digits.
+      throw InputError(field, format_significant(value, 6, " m") +
                                   " from the axis is more than any tunnel's half-width (at most " +
                                   format_fixed(kMaxTypedOffsetM, 0, " m") +
                                   "): a typo, or the pole outside the excavation?");

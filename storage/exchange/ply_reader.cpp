@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 
 namespace rockface::storage {
 
@@ -318,12 +319,6 @@ std::optional<std::size_t> find(const Element& e, std::initializer_list<std::str
   return std::nullopt;
 }
 
-std::string shown(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 }  // namespace
 
 PlyModel parse_ply(std::string_view bytes, const std::string& source) {
@@ -392,7 +387,7 @@ PlyModel parse_ply(std::string_view bytes, const std::string& source) {
           const double item = body.read(p.type, where);
           if (!keep) continue;
           if (item != std::floor(item) || item < 0 || item >= static_cast<double>(vertex->count))
-            throw InputError(source, where + ": vertex index " + shown(item) +
+            throw InputError(source, where + ": vertex index " + format_significant(item, 6) +
                                          " is not one of the " + std::to_string(vertex->count) +
                                          " vertices");
           polygon.push_back(static_cast<int>(item));

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "storage/json_reader.h"
 
 namespace rockface::storage {
@@ -43,13 +44,6 @@ std::string trim(std::string s) {
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
-}
-
-std::string shortest(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
 }
 
 // A CSV table: its header and rows with their line numbers. Lines starting
@@ -232,9 +226,10 @@ std::string alignment_csv_text(const AlignmentTable& table) {
                          : "chainage,easting,northing,elevation,radius\n");
   for (std::size_t i = 0; i < table.stations.size(); ++i) {
     const auto& s = table.stations[i];
-    out << shortest(s.chainage) << ',' << shortest(s.survey.x()) << ',' << shortest(s.survey.y())
-        << ',' << shortest(s.survey.z());
-    if (!table.polyline) out << ',' << (i < table.radii.size() ? shortest(table.radii[i]) : "");
+    out << format_round_trip(s.chainage) << ',' << format_round_trip(s.survey.x()) << ','
+        << format_round_trip(s.survey.y()) << ',' << format_round_trip(s.survey.z());
+    if (!table.polyline)
+      out << ',' << (i < table.radii.size() ? format_round_trip(table.radii[i]) : "");
     out << '\n';
   }
   return out.str();
@@ -453,18 +448,19 @@ std::string profile_csv_text(const tunnel::DesignProfile& profile) {
   out << "kind,from_u,from_v,to_u,to_v,centre_u,centre_v,sense\n";
   for (const auto& s : profile.segments()) {
     const bool arc = s.kind == tunnel::ProfileSegment::Kind::arc;
-    out << (arc ? "arc," : "line,") << shortest(s.from.x()) << ',' << shortest(s.from.y()) << ','
-        << shortest(s.to.x()) << ',' << shortest(s.to.y()) << ',';
+    out << (arc ? "arc," : "line,") << format_round_trip(s.from.x()) << ','
+        << format_round_trip(s.from.y()) << ',' << format_round_trip(s.to.x()) << ','
+        << format_round_trip(s.to.y()) << ',';
     if (arc)
-      out << shortest(s.centre.x()) << ',' << shortest(s.centre.y()) << ','
+      out << format_round_trip(s.centre.x()) << ',' << format_round_trip(s.centre.y()) << ','
           << (s.ccw ? "ccw" : "cw");
     else
       out << ",,";
     out << '\n';
   }
   if (profile.ray_centre_given())
-    out << "ray_centre,,,,," << shortest(profile.ray_centre().x()) << ','
-        << shortest(profile.ray_centre().y()) << ",\n";
+    out << "ray_centre,,,,," << format_round_trip(profile.ray_centre().x()) << ','
+        << format_round_trip(profile.ray_centre().y()) << ",\n";
   return out.str();
 }
 

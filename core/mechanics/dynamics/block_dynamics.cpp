@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 
 #include <boost/numeric/odeint.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/mechanics/block_loads.h"
 #include "core/mechanics/dynamics/block_dynamics_phases.h"
 #include "core/mechanics/dynamics/block_motion.h"
@@ -111,14 +111,13 @@ void check_options(const DynamicsOptions& o) {
   positive(o.max_step, "max_step_s");
   if (o.duration / o.sample > 100000)
     throw InputError("analysis.dynamics.sample_s", "more than 100000 samples over the duration");
-  if (o.duration / o.max_step > kMaxDynamicsStepsAsked) {
-    char msg[256];
-    std::snprintf(msg, sizeof msg,
-                  "%g s over duration_s %g s is %g steps; at most %g are integrated (a "
-                  "longer max_step_s or a shorter duration_s)",
-                  o.max_step, o.duration, o.duration / o.max_step, kMaxDynamicsStepsAsked);
-    throw InputError("analysis.dynamics.max_step_s", msg);
-  }
+  if (o.duration / o.max_step > kMaxDynamicsStepsAsked)
+    throw InputError("analysis.dynamics.max_step_s",
+                     format_significant(o.max_step, 6) + " s over duration_s " +
+                         format_significant(o.duration, 6) + " s is " +
+                         format_significant(o.duration / o.max_step, 6) + " steps; at most " +
+                         format_significant(kMaxDynamicsStepsAsked, 6) +
+                         " are integrated (a longer max_step_s or a shorter duration_s)");
   if (!(o.max_evaluations > 0) || !(o.max_events > 0))
     throw InputError("analysis.dynamics", "the step budget and the event limit must be positive");
 }
@@ -252,9 +251,8 @@ void project_step(const BlockMotion& motion, const Scales& k, double tau, State&
     hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
     std::string names;
     for (const auto& n : hit) names += (names.empty() ? "" : " and ") + n;
-    char buf[64];
-    std::snprintf(buf, sizeof buf, " at %.2f m/s", pr.impact_speed);
-    record_event(out.events, tau * k.time, "hits", "hits " + names + buf, hit);
+    record_event(out.events, tau * k.time, "hits",
+                 "hits " + names + " at " + format_fixed(pr.impact_speed, 2, " m/s"), hit);
   }
   x = pack(p, k);
 }
@@ -306,8 +304,7 @@ Integration start_integration(const BlockMotion& motion, const Scales& k,
 
 std::optional<std::string> budget_spent(const Integration& in, const Scales& k,
                                         const DynamicsOptions& options, const BlockDynamics& out) {
-  char at[64];
-  std::snprintf(at, sizeof at, " at t = %.3g s", in.tau * k.time);
+  const std::string at = " at t = " + format_significant(in.tau * k.time, 3, " s");
   if (out.evaluations >= options.max_evaluations)
     return "the step budget (" + std::to_string(options.max_evaluations) +
            " evaluations of the equations of motion) ran out" + at +
@@ -319,15 +316,30 @@ std::optional<std::string> budget_spent(const Integration& in, const Scales& k,
 }
 
 void sample_up_to(const BlockMotion& motion, const Scales& k, Integration& in, BlockDynamics& out) {
-  // Samples fall on step ends.
+  // A sample due now (within rounding of k x sample) is the state itself.
   while (in.next_sample <= in.tau + 1e-9 * in.tau_sample) {
     out.samples.push_back(sample_at(motion, unpack(in.x, k), in.next_sample * k.time));
     in.next_sample += in.tau_sample;
   }
 }
 
+void sample_within_step(const BlockMotion& motion, const Scales& k, const Stepper& sampler,
+                        Integration& in, BlockDynamics& out) {
+  // The samples the step passed over: one step of the same method from the
+  // step's start to each, so the step itself stays as the error control
+  // and the events chose it (issue 40: sampling never changes the motion).
+  // A sample at the step's end is left to sample_up_to, after projection.
+  while (in.next_sample < in.tau - 1e-9 * in.tau_sample) {
+    const State at = sampler.advance(in.x0, in.t0, in.next_sample - in.t0);
+    out.samples.push_back(sample_at(motion, unpack(at, k), in.next_sample * k.time));
+    in.next_sample += in.tau_sample;
+  }
+}
+
 bool controlled_step(const Stepper& stepper, const Scales& k, Integration& in, BlockDynamics& out) {
-  double h = std::min({in.dt, in.tau_max_step, in.next_sample - in.tau, in.tau_end - in.tau});
+  // The step is the error control's, at most max_step, and ends at the end
+  // of the duration; never cut to a sample time (sample_within_step).
+  double h = std::min({in.dt, in.tau_max_step, in.tau_end - in.tau});
   in.x0 = in.x;
   in.t0 = in.tau;
   if (!stepper.try_step(in.x, in.tau, h)) {
@@ -394,6 +406,10 @@ Integration integrate(const BlockMotion& motion, const Scales& k,
                       const std::optional<DynamicsFloor>& floor, const DynamicsOptions& options,
                       BlockDynamics& out) {
   const Stepper stepper(motion, k, out.evaluations, options);
+  // The samples' evaluations are not the integration's: they are counted
+  // apart, so that the step budget does not depend on sampling either.
+  int sample_evaluations = 0;
+  const Stepper sampler(motion, k, sample_evaluations, options);
   Integration in = start_integration(motion, k, options, out);
   while (in.tau < in.tau_end - 1e-12 * in.tau_end && !in.landed) {
     if (auto spent = budget_spent(in, k, options, out)) {
@@ -407,6 +423,7 @@ Integration integrate(const BlockMotion& motion, const Scales& k,
     // Events inside the step: a contact closing into the rock, the floor,
     // a change of the contact mode. The earliest is found by bisection.
     const ContactMode new_mode = cut_at_event(motion, k, floor, stepper, in);
+    sample_within_step(motion, k, sampler, in, out);
     // Projection: drift back onto the loaded contacts; a closing contact
     // stops (plastic impact).
     finish_step(motion, k, floor, new_mode, in, out);
@@ -454,12 +471,11 @@ Landing landing_of(const blocks::Polyhedron& block, const BlockMotion& motion, c
 }
 
 std::string landing_text(const Landing& l) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "lands %.1f m from %s at %.1f m/s",
-                l.distance_from_face ? *l.distance_from_face : l.distance_from_start,
-                l.distance_from_face ? ("the face " + l.face).c_str() : "where it started",
-                l.speed);
-  return buf;
+  return "lands " +
+         format_fixed(l.distance_from_face ? *l.distance_from_face : l.distance_from_start, 1,
+                      " m") +
+         " from " + (l.distance_from_face ? "the face " + l.face : "where it started") + " at " +
+         format_fixed(l.speed, 1, " m/s");
 }
 
 std::string outcome_of(bool landed, const ContactMode& mode, FloorGiven floor) {

@@ -14,7 +14,8 @@
 // "rotates about edge J2-J3", "rotates about a corner on J1", "leaves J1",
 // "free fall", "hits J1", "lands", "at rest".
 //
-// The integration runs in the block's own units (length L = its size,
+// The integration runs in the block's own units (length L = its diameter,
+// the largest distance between two of its corners, whatever its frame;
 // time T = sqrt(L / g), its weight): the tolerances mean the same for a
 // chip and a slab, and survey coordinates (datum-relative, moved to the
 // centroid) lose nothing.
@@ -43,7 +44,9 @@ struct DynamicsFloor {
 
 struct DynamicsOptions {
   double duration = 2.0;  // s of motion simulated (free flight then goes on to the floor)
-  double sample = 0.2;    // s between the path's samples
+  // s between the path's samples: taken between the integration's steps
+  // (one step of the same method from a step's start), never changing them.
+  double sample = 0.2;
   // Error control of the stepper, per unit of the block's size and of
   // sqrt(L g) (positions, velocities; the quaternion is dimensionless).
   double abs_tol = 1e-10, rel_tol = 1e-8;

@@ -6,7 +6,8 @@
 //   2. usable_floor: the floor, unless it lies above the block;
 //   3. integrate: start_integration, then for each step budget_spent,
 //        sample_up_to, controlled_step, cut_at_event (locate_event: the
-//        earliest event inside it, by bisection), finish_step
+//        earliest event inside it, by bisection), sample_within_step,
+//        finish_step
 //        (project_step: drift back onto the loaded contacts, impacts;
 //        record_mode_change; flight_end: free flight goes on to the floor);
 //   4. landing_of, landing_text, outcome_of: how the motion ended.
@@ -132,9 +133,13 @@ struct Integration {
 // budget_spent: why the integration must stop now (the evaluations of the
 //   options' step budget or its event limit spent), or none;
 // sample_up_to: the samples due at the current time;
-// controlled_step: one step (false: rejected, a shorter one is next);
+// controlled_step: one step (false: rejected, a shorter one is next), of
+//   the error control's length, never shortened to meet a sample;
 // cut_at_event: the step cut at its earliest event (impact, landing, a
 //   change of contact mode); returns the contact mode there;
+// sample_within_step: the samples inside the step just taken, each one
+//   step of the same method from the step's start (`sampler`: a stepper
+//   whose evaluations are not the integration's budget);
 // finish_step: drift projected back, the mode change recorded, free flight
 //   extended to the floor.
 Integration start_integration(const BlockMotion& motion, const Scales& k,
@@ -146,6 +151,8 @@ bool controlled_step(const Stepper& stepper, const Scales& k, Integration& in, B
 ContactMode cut_at_event(const BlockMotion& motion, const Scales& k,
                          const std::optional<DynamicsFloor>& floor, const Stepper& stepper,
                          Integration& in);
+void sample_within_step(const BlockMotion& motion, const Scales& k, const Stepper& sampler,
+                        Integration& in, BlockDynamics& out);
 void finish_step(const BlockMotion& motion, const Scales& k,
                  const std::optional<DynamicsFloor>& floor, ContactMode new_mode, Integration& in,
                  BlockDynamics& out);

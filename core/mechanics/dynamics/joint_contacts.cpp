@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/mechanics/contact_points.h"
+#include "core/mechanics/dynamics/block_diameter.h"
 #include "core/mechanics/dynamics/tolerances.h"
 
 namespace rockface::mechanics {
@@ -49,7 +50,7 @@ bool inside_polygon(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Ve
 
 JointContacts::JointContacts(const blocks::Polyhedron& block, const Eigen::Vector3d& centroid,
                              const std::vector<double>& friction_deg)
-    : centroid_(centroid), length_(std::max(block.size(), 1e-300)) {
+    : centroid_(centroid), length_(std::max(block_diameter(block), 1e-300)) {
   for (const auto& v : block.vertices()) arms_.push_back(v - centroid_);
   for (const blocks::BlockPlane& bp : block.planes()) {
     plane_inward_.push_back(bp.inward_normal());

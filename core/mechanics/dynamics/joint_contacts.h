@@ -79,7 +79,7 @@ class JointContacts {
   const std::vector<JointSurface>& surfaces() const { return surfaces_; }
   const std::vector<Eigen::Vector3d>& arms() const { return arms_; }  // vertex - centroid, at rest
   const Eigen::Vector3d& centroid() const { return centroid_; }
-  double length() const { return length_; }
+  double length() const { return length_; }  // the block's diameter (block_diameter.h)
 
  private:
   // Whether a point of space (in the block's frame at rest) that lies

@@ -1,8 +1,9 @@
 #pragma once
 // Named tolerances of the block's motion after failure. Lengths are in
-// units of the block's size L (bounding-box diagonal), times in units of
-// its free-fall time T = sqrt(L / |g|), forces in units of its weight W:
-// one set of numbers serves a 1 mm chip and a 100 m slab.
+// units of the block's size L (its diameter, block_diameter.h: the same in
+// every frame), times in units of its free-fall time T = sqrt(L / |g|),
+// forces in units of its weight W: one set of numbers serves a 1 mm chip
+// and a 100 m slab.
 
 namespace rockface::mechanics {
 

@@ -30,6 +30,14 @@ TEST(NumberFormat, SignificantDigits) {
   EXPECT_EQ(format_significant(7.25, 0), "7") << "no digits is one, as printf says";
 }
 
+TEST(NumberFormat, RoundTripReadsBackAsTheSameDouble) {
+  EXPECT_EQ(format_round_trip(0.1), "0.10000000000000001");
+  EXPECT_EQ(format_round_trip(2.5), "2.5");
+  EXPECT_EQ(format_round_trip(1234.5, " m"), "1234.5 m");
+  for (const double v : {0.1 + 0.2, 1.0 / 3, 5211870.123456789, -7.5e-7, 6.02e23, 1e-300})
+    EXPECT_EQ(std::stod(format_round_trip(v)), v) << format_round_trip(v);
+}
+
 TEST(NumberFormat, TheUnitFollowsAsGiven) {
   EXPECT_EQ(format_fixed(0.853, 2, " m"), "0.85 m");
   EXPECT_EQ(format_fixed(60.24, 1, "°"), "60.2°");
@@ -69,6 +77,13 @@ TEST(NumberFormat, SameTextAsTheStreams) {
       general << v;
       EXPECT_EQ(format_significant(v, p), general.str()) << v << " to " << p << " digits";
     }
+  // tunnel_files wrote its tables with a stream of precision 17.
+  for (const double v : values) {
+    std::ostringstream seventeen;
+    seventeen.precision(17);
+    seventeen << v;
+    EXPECT_EQ(format_round_trip(v), seventeen.str()) << v;
+  }
 }
 
 }  // namespace
