@@ -210,6 +210,18 @@ photogrammetry::ReconstructionResult reconstruct_pair(
   return rec;
 }
 
+void rebase_to_datum(photogrammetry::ReconstructionResult& rec, const Eigen::Vector3d& datum) {
+  const Eigen::Vector3d shift = rec.datum - datum;
+  if (shift.isZero(0)) return;
+  rec.mesh.transform(1.0, Eigen::Matrix3d::Identity(), shift);
+  rec.model_to_world.t += shift;
+  if (rec.control_points) {
+    rec.control_points->transform.t += shift;
+    rec.control_points->datum = datum;
+  }
+  rec.datum = datum;
+}
+
 void move_to_pole(photogrammetry::ReconstructionResult& rec, const Eigen::Vector3d& pole) {
   const Eigen::Vector3d shift = pole - rec.model_to_world.apply(rec.targets->model[0]);
   rec.mesh.transform(1.0, Eigen::Matrix3d::Identity(), shift);
@@ -392,6 +404,13 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
                   ? source.scene->name
                   : fs::path(request.source).filename().string();
   if (source.scene) info.datum = source.scene->datum;
+  // A folder on control points: a new project's datum near the work (their
+  // centroid to the metre), so its coordinates stay small (issue 40's rule).
+  if (!source.scene && !source.sources.control_points.empty()) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (const auto& p : source.sources.control_points) c += p.world;
+    info.datum = (c / static_cast<double>(source.sources.control_points.size())).array().round();
+  }
   storage::ProjectStore store = storage::ProjectStore::open_or_create(request.project, info);
   if (store.read_only())
     throw InputError(request.project, "cannot replay into it: " + store.read_only_reason());
@@ -410,8 +429,9 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
 
   const cv::Mat left_image = decode_shot(pair.left.image, "left");
   const cv::Mat right_image = decode_shot(pair.right.image, "right");
-  const photogrammetry::ReconstructionResult rec =
+  photogrammetry::ReconstructionResult rec =
       reconstruct_pair(left_image, right_image, source, preset, progress);
+  rebase_to_datum(rec, store.project().datum);
   const storage::Model model =
       model_record(rec, out.capture_id,
                    {pair.left.image.saved_path, pair.right.image.saved_path, preset.name,

@@ -106,6 +106,9 @@ photogrammetry::ReconstructionResult reconstruct_pair(
 // reference line); the scene surveys where the pole stood (or the geologist
 // typed it, in a tunnel), so the model (mesh and model_to_world) shifts to
 // put the pole's lower target at `pole`. Needs rec.targets.
+// A model on control points is about their centroid (rec.datum); the
+// project's frame about its datum: the model moved into it.
+void rebase_to_datum(photogrammetry::ReconstructionResult& rec, const Eigen::Vector3d& datum);
 void move_to_pole(photogrammetry::ReconstructionResult& rec, const Eigen::Vector3d& pole);
 
 // The compass line of a synthetic scene (its reference_line): its bearing

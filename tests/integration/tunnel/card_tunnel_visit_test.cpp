@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -102,6 +103,99 @@ TEST(CardTunnelVisit, PhotographsPoleAndCompassGiveAPlacedRoundWithItsOverbreak)
   // end, its volume is well above 0.1 m3 (the scene route's test asserts
   // the same bound, tunnel_round_test.cpp).
   EXPECT_GT(j.at("overbreak_volume_m3").get<double>(), 0.1);
+  fs::remove_all(root);
+}
+
+// The round's photographs with monitoring targets instead of the pole and
+// compass: five points on the face whose survey coordinates and pixels
+// the renderer records (ends of joint traces, truth.json), given as the
+// visit file's control points. The visit is in survey coordinates (the new
+// project's datum at their centroid), and once the project has its tunnel
+// it is placed by them (issue 42: a `--gcp` model was recorded as "control
+// points" and could never be placed so).
+TEST(CardTunnelVisit, MonitoringTargetsPlaceTheVisitInSurveyCoordinates) {
+  const fs::path root =
+      fs::temp_directory_path() / ("rockface-card-gcp-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root);
+  const std::string samples = std::string(ROCKFACE_SOURCE_DIR) + "/tools/samples/";
+  CliRun r = run_rockface("render " + samples + "tunnel-drive.scene.json --out " +
+                          (root / "render").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json truth = json::parse(std::ifstream(root / "render" / "truth.json"));
+
+  const fs::path card = root / "DCIM";
+  fs::create_directories(card);
+  const std::vector<int> quality{cv::IMWRITE_JPEG_QUALITY, 95};
+  ASSERT_TRUE(cv::imwrite((card / "DSC_0101.JPG").string(),
+                          cv::imread((root / "render" / "left.png").string()), quality));
+  ASSERT_TRUE(cv::imwrite((card / "DSC_0102.JPG").string(),
+                          cv::imread((root / "render" / "right.png").string()), quality));
+  fs::copy_file(root / "render" / "camera.json", card / "camera.json");
+  // Each face trace's first end, and the last trace's other end: points on
+  // rock spread over the face (5 m across, 5 m high).
+  std::ofstream gcp(card / "gcp.csv");
+  gcp << "id,u,v,X,Y,Z\n";
+  int n = 0;
+  json last;
+  for (const auto& t : truth.at("traces")) {
+    if (t.at("patch").get<std::string>().rfind("FACE", 0) != 0) continue;
+    const auto& px = t.at("left_image").front();
+    const auto& w = t.at("world")[0];
+    gcp << "P" << ++n << "," << px[0].get<double>() << "," << px[1].get<double>() << ","
+        << std::setprecision(12) << w[0].get<double>() << "," << w[1].get<double>() << ","
+        << w[2].get<double>() << "\n";
+    last = t;
+  }
+  ASSERT_GE(n, 4);
+  gcp << "P" << ++n << "," << last.at("left_image").back()[0].get<double>() << ","
+      << last.at("left_image").back()[1].get<double>() << "," << std::setprecision(12)
+      << last.at("world")[1][0].get<double>() << "," << last.at("world")[1][1].get<double>() << ","
+      << last.at("world")[1][2].get<double>() << "\n";
+  gcp.close();
+  std::ofstream(card / "visit.json") << json{
+      {"format", "rockface-visit/1"},
+      {"control_points", "gcp.csv"},
+      {"preset", "fast"}}.dump(2);
+
+  const fs::path project = root / "drive.rockface";
+  r = run_rockface("replay " + card.string() + " --project " + project.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("scale: control points"), std::string::npos) << r.out;
+  {
+    storage::ProjectStore store = storage::ProjectStore::open(project);
+    const auto models = store.list_models();
+    ASSERT_EQ(models.size(), 1u);
+    EXPECT_EQ(models[0].registration_kind, "ground_control");
+    // The datum near the work: the face is 8 m from the cameras.
+    const Eigen::Vector3d datum = store.project().datum;
+    const json& left = truth.at("cameras")[0];
+    const Eigen::Vector3d station(left.at("position")[0].get<double>(),
+                                  left.at("position")[1].get<double>(),
+                                  left.at("position")[2].get<double>());
+    EXPECT_LT((datum - station).norm(), 12.0);
+    // The left camera's centre in survey coordinates against the renderer's
+    // station: the targets are picked to two lattice steps (about 1 cm at
+    // 8 m, fast preset) over a face 5 m across, so the camera 8 m in front
+    // is placed to a few centimetres; 0.1 m.
+    const storage::Model m = store.load_model(models[0].id);
+    ASSERT_TRUE(m.camera_to_mesh);
+    EXPECT_LT((datum + m.camera_to_mesh->t - station).norm(), 0.1)
+        << (datum + m.camera_to_mesh->t).transpose();
+  }
+  const std::string files = " --alignment " + samples + "tunnel-drive.alignment.csv --profile " +
+                            samples + "tunnel-drive.profile.json";
+  r = run_rockface("tunnel " + project.string() + files);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path figures = root / "profile.json";
+  r = run_rockface("profile " + project.string() + " --visit 1 --out " +
+                   (root / "profile.png").string() + " --json " + figures.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(std::ifstream(figures));
+  EXPECT_EQ(j.at("placement").at("method"), "ground_control") << j.at("placement").dump();
+  // As by the pole: the face between its centre and its rim (111.6, 112.0).
+  EXPECT_GT(j.at("placement").at("face_chainage").get<double>(), 111.6);
+  EXPECT_LT(j.at("placement").at("face_chainage").get<double>(), 112.0);
   fs::remove_all(root);
 }
 
