@@ -250,8 +250,8 @@ ConvexConstruction build_convex_block(const std::string& block_id,
       corners_on_their_planes(*solid, n, b, kVertexMergeRel * size);
 
   // Faces in the order of their planes, each loop from the corner of least
-  // angle about the face's mean, corners numbered in order of first use: a
-  // block's numbering does not depend on the order of the cuts.
+  // angle about the face's mean, corners numbered in order of first use:
+  // the numbering reports and rotation checks have always had.
   std::vector<BlockPlane> planes;
   std::vector<FaceLoop> loops;
   std::vector<bool> bounds_face(m, false);
