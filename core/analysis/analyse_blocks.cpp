@@ -62,6 +62,23 @@ void fill_verdicts(const kinematics::Finiteness& f, ReportBlock& rb) {
   rb.marginal = f.removable.marginal || f.finite.marginal;
 }
 
+// A block whose polyhedron could not be built: finiteness and
+// removability from its half-spaces alone, marginal, and a note saying why;
+// no volume, mode or factor of safety (docs/scene-extensions.md).
+ReportBlock unbuilt_block(ReportBlock rb, const std::vector<blocks::HalfSpaceInput>& hs,
+                          double uncertainty, const std::string& why) {
+  std::vector<Eigen::Vector3d> joint_in, free_in;
+  for (const auto& h : hs)
+    (h.kind == blocks::PlaneKind::Joint ? joint_in : free_in)
+        .push_back(h.plane.inward_normal(h.side));
+  fill_verdicts(kinematics::halfspace_finiteness(joint_in, free_in, uncertainty), rb);
+  rb.marginal = true;
+  rb.notes.push_back("block geometry not assembled (" + why +
+                     "): finiteness and removability from its half-spaces alone, marginal; no "
+                     "volume, mode or factor of safety");
+  return rb;
+}
+
 }  // namespace
 
 void analyse_scene_blocks(const AnalysisInput& scene, Report& report, Progress& progress) {
@@ -116,6 +133,15 @@ void analyse_scene_blocks(const AnalysisInput& scene, Report& report, Progress& 
         cc = blocks::build_convex_block(sb.id, hs, datum);
       } catch (const InputError& e) {
         throw InputError(block_where(scene, i), e.reason());
+      } catch (const Cancelled&) {
+        throw;
+      } catch (const Error& e) {
+        // Valid half-spaces whose corners the construction cannot make into
+        // one polyhedron: this block is reported as such, with the verdicts
+        // its cones give and flagged marginal (its geometry is in doubt),
+        // and the rest of the report is written (issue 40).
+        report.blocks.push_back(unbuilt_block(std::move(rb), hs, uncertainty, e.what()));
+        continue;
       }
       for (int r : cc.redundant)
         rb.notes.push_back("plane " + hs[r].name + " bounds no face of block " + sb.id +

@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/blocks/convex_clipping.h"
 #include "core/blocks/tolerances.h"
 #include "core/common/error.h"
 #include "core/geometry/cone.h"
@@ -67,6 +68,68 @@ std::vector<Eigen::Vector3d> feasible_corners(const std::vector<Eigen::Vector3d>
   std::vector<Eigen::Vector3d> out;
   for (const auto& x : all)
     if (violation(x) <= kOnPlaneRel * size) out.push_back(x);
+  return out;
+}
+
+// Each corner of the clipped solid at the mean of the intersections of
+// three of its planes that lie within `merge` of it (the exact corner where
+// they meet; for four or more planes through one point, the mean of their
+// triple points), or where the cuts left it when none does (planes that
+// miss each other by more than that, merged into one corner).
+std::vector<Eigen::Vector3d> corners_on_their_planes(const ClippedSolid& solid,
+                                                     const std::vector<Eigen::Vector3d>& n,
+                                                     const std::vector<double>& b, double merge) {
+  std::vector<std::vector<int>> planes_at(solid.vertices.size());
+  for (const ClippedFace& f : solid.faces)
+    for (int v : f.loop) planes_at[v].push_back(f.plane);
+  std::vector<Eigen::Vector3d> out = solid.vertices;
+  for (size_t v = 0; v < out.size(); ++v) {
+    auto& p = planes_at[v];
+    std::sort(p.begin(), p.end());
+    const int k = static_cast<int>(p.size());
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int count = 0;
+    for (int i = 0; i < k; ++i)
+      for (int j = i + 1; j < k; ++j)
+        for (int l = j + 1; l < k; ++l) {
+          Eigen::Matrix3d M;
+          M.row(0) = n[p[i]];
+          M.row(1) = n[p[j]];
+          M.row(2) = n[p[l]];
+          if (!(std::abs(M.determinant()) > kSingularTriple)) continue;
+          const Eigen::Vector3d x =
+              M.colPivHouseholderQr().solve(Eigen::Vector3d(b[p[i]], b[p[j]], b[p[l]]));
+          if (x.allFinite() && (x - solid.vertices[v]).norm() <= merge) {
+            sum += x;
+            ++count;
+          }
+        }
+    if (count > 0) out[v] = sum / count;
+  }
+  return out;
+}
+
+// A face's loop turned to start at its corner of least angle about its
+// mean, in the plane basis of its outward normal.
+std::vector<int> loop_from_least_angle(const std::vector<int>& loop,
+                                       const std::vector<Eigen::Vector3d>& corners,
+                                       const Eigen::Vector3d& outward) {
+  const auto [u, w] = plane_basis(outward);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int c : loop) mean += corners[c];
+  mean /= static_cast<double>(loop.size());
+  size_t first = 0;
+  double least = INFINITY;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    const Eigen::Vector3d r = corners[loop[k]] - mean;
+    const double a = std::atan2(r.dot(w), r.dot(u));
+    if (a < least) {
+      least = a;
+      first = k;
+    }
+  }
+  std::vector<int> out(loop.begin() + static_cast<std::ptrdiff_t>(first), loop.end());
+  out.insert(out.end(), loop.begin(), loop.begin() + static_cast<std::ptrdiff_t>(first));
   return out;
 }
 
@@ -163,83 +226,40 @@ ConvexConstruction build_convex_block(const std::string& block_id,
     return out;
   }
 
-  // Merge the numerically distinct intersections of planes through one corner.
-  std::vector<Eigen::Vector3d> corner_sum;
-  std::vector<int> corner_count;
-  for (const auto& x : raw) {
-    int found = -1;
-    for (int c = 0; c < static_cast<int>(corner_sum.size()); ++c)
-      if ((corner_sum[c] / corner_count[c] - x).norm() <= kVertexMergeRel * size) {
-        found = c;
-        break;
-      }
-    if (found < 0) {
-      corner_sum.push_back(x);
-      corner_count.push_back(1);
-    } else {
-      corner_sum[found] += x;
-      ++corner_count[found];
-    }
-  }
-  std::vector<Eigen::Vector3d> corners;
-  for (size_t c = 0; c < corner_sum.size(); ++c) corners.push_back(corner_sum[c] / corner_count[c]);
-
-  // Faces: the corners on each plane, ordered counter-clockwise about the
-  // outward normal (a convex polygon: angular order around its mean).
-  std::vector<BlockPlane> planes;
-  std::vector<FaceLoop> loops;
-  std::vector<int> used_corner(corners.size(), -1);
-  std::vector<std::vector<int>> face_corners;
-  std::vector<std::vector<int>> face_corner_sets;  // ascending corner indices
-  std::vector<int> face_input;
-  for (int i = 0; i < m; ++i) {
-    std::vector<int> on;
-    for (int c = 0; c < static_cast<int>(corners.size()); ++c)
-      if (std::abs(n[i].dot(corners[c]) - b[i]) <= kOnPlaneRel * size) on.push_back(c);
-    if (on.size() < 3) {
-      out.redundant.push_back(i);
-      continue;
-    }
-    // The same plane listed twice (or two planes within rounding of each
-    // other) has the same corners: one face, the later listing redundant.
-    bool repeated = false;
-    for (size_t f = 0; f < face_corner_sets.size() && !repeated; ++f)
-      repeated = face_corner_sets[f] == on && n[face_input[f]].dot(n[i]) > 0;
-    if (repeated) {
-      out.redundant.push_back(i);
-      continue;
-    }
-    const Eigen::Vector3d outward = -n[i];
-    const auto [u, w] = plane_basis(outward);
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int c : on) mean += corners[c];
-    mean /= static_cast<double>(on.size());
-    std::vector<std::pair<double, int>> ang;
-    for (int c : on)
-      ang.push_back({std::atan2((corners[c] - mean).dot(w), (corners[c] - mean).dot(u)), c});
-    std::sort(ang.begin(), ang.end());
-    std::vector<int> loop;
-    for (const auto& [a, c] : ang) loop.push_back(c);
-    // Polygon area: a plane touching the block along an edge has none.
-    Eigen::Vector3d area2 = Eigen::Vector3d::Zero();
-    for (size_t k = 1; k + 1 < loop.size(); ++k)
-      area2 += (corners[loop[k]] - corners[loop[0]]).cross(corners[loop[k + 1]] - corners[loop[0]]);
-    if (!(area2.dot(outward) > 2 * kFaceAreaRel * size * size)) {
-      out.redundant.push_back(i);
-      continue;
-    }
-    face_corners.push_back(loop);
-    face_corner_sets.push_back(on);
-    face_input.push_back(i);
-  }
-  if (face_corners.size() < 4) {
+  // The solid itself: the box around the feasible corners cut by every
+  // half-space in turn (core/blocks/convex_clipping.h). One inside / on /
+  // outside decision per corner and plane keeps the faces consistent however
+  // close the corners come; corners within kVertexMergeRel x size are one.
+  const Eigen::Vector3d pad = Eigen::Vector3d::Constant(0.25 * size);
+  const std::optional<ClippedSolid> solid =
+      clip_box(lo - pad, hi + pad, n, b, kVertexMergeRel * size, kVertexMergeRel * size);
+  if (!solid)
+    throw Error(where +
+                ": the half-spaces did not give a consistent polyhedron (a cut through corners "
+                "within the tolerance of each other does not close)");
+  if (solid->faces.size() < 4) {
     out.outcome = ConvexOutcome::Empty;
     return out;
   }
-  // Keep only corners on some face, renumbered in order of first use.
+  for (const ClippedFace& f : solid->faces)
+    if (f.plane < 0)
+      throw Error(where +
+                  ": the half-spaces did not give a consistent polyhedron (the box around its "
+                  "corners keeps a face)");
+  const std::vector<Eigen::Vector3d> corners =
+      corners_on_their_planes(*solid, n, b, kVertexMergeRel * size);
+
+  // Faces in the order of their planes, each loop from the corner of least
+  // angle about the face's mean, corners numbered in order of first use:
+  // the numbering reports and rotation checks have always had.
+  std::vector<BlockPlane> planes;
+  std::vector<FaceLoop> loops;
+  std::vector<bool> bounds_face(m, false);
+  std::vector<int> used_corner(corners.size(), -1);
   std::vector<Eigen::Vector3d> vertices;
-  for (size_t f = 0; f < face_corners.size(); ++f) {
-    const int i = face_input[f];
+  for (const ClippedFace& f : solid->faces) {
+    const int i = f.plane;
+    bounds_face[i] = true;
     BlockPlane bp;
     bp.index = halfspaces[i].index;
     bp.name = halfspaces[i].name;
@@ -250,16 +270,18 @@ ConvexConstruction build_convex_block(const std::string& block_id,
     bp.side = halfspaces[i].side;
     FaceLoop fl;
     fl.plane = static_cast<int>(planes.size());
-    for (int c : face_corners[f]) {
+    for (int c : loop_from_least_angle(f.loop, corners, -n[i])) {
       if (used_corner[c] < 0) {
         used_corner[c] = static_cast<int>(vertices.size());
         vertices.push_back(corners[c]);
       }
       fl.loop.push_back(used_corner[c]);
     }
-    planes.push_back(bp);
     loops.push_back(std::move(fl));
+    planes.push_back(bp);
   }
+  for (int i = 0; i < m; ++i)
+    if (!bounds_face[i]) out.redundant.push_back(i);
   try {
     // Corners were found within kOnPlaneRel of their planes.
     out.polyhedron = Polyhedron::assemble(block_id, datum, std::move(planes), std::move(vertices),

@@ -40,10 +40,15 @@ struct ConvexConstruction {
   std::vector<int> redundant;
 };
 
-// The intersection of the half-spaces. Corners where four or more planes meet
-// (exactly or within kVertexMergeRel x block size) become one vertex. Throws
+// The intersection of the half-spaces: a box around its corners cut by each
+// half-space in turn (core/blocks/convex_clipping.h), so that its faces stay
+// consistent however close its corners come. Corners where four or more
+// planes meet (exactly or within kVertexMergeRel x block size) become one
+// vertex; corners further apart are joined by a short edge. Throws
 // InputError naming the block for fewer than 4 half-spaces or a plane with a
-// zero normal; unbounded or empty input is an outcome, not an error.
+// zero normal; unbounded or empty input is an outcome, not an error. Throws
+// Error naming the block in the unforeseen case that the cuts do not close
+// (callers report that block alone and go on).
 ConvexConstruction build_convex_block(const std::string& block_id,
                                       const std::vector<HalfSpaceInput>& halfspaces,
                                       const Eigen::Vector3d& datum = Eigen::Vector3d::Zero());
