@@ -211,6 +211,9 @@ photogrammetry::ReconstructionResult reconstruct_pair(
 }
 
 void rebase_to_datum(photogrammetry::ReconstructionResult& rec, const Eigen::Vector3d& datum) {
+  // Only control points put the model about a datum of their own; else it
+  // is already in the frame the replay gives it (the scene's, datum-relative).
+  if (!rec.control_points) return;
   const Eigen::Vector3d shift = rec.datum - datum;
   if (shift.isZero(0)) return;
   rec.mesh.transform(1.0, Eigen::Matrix3d::Identity(), shift);

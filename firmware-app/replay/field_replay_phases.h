@@ -107,7 +107,8 @@ photogrammetry::ReconstructionResult reconstruct_pair(
 // typed it, in a tunnel), so the model (mesh and model_to_world) shifts to
 // put the pole's lower target at `pole`. Needs rec.targets.
 // A model on control points is about their centroid (rec.datum); the
-// project's frame about its datum: the model moved into it.
+// project's frame about its datum: the model moved into it. Nothing for a
+// model without control points (already in the replay's frame).
 void rebase_to_datum(photogrammetry::ReconstructionResult& rec, const Eigen::Vector3d& datum);
 void move_to_pole(photogrammetry::ReconstructionResult& rec, const Eigen::Vector3d& pole);
 
