@@ -5,7 +5,10 @@
 // capture, the download into the spool and the events all run the code a
 // real body runs. What the virtual camera does not emulate (live view,
 // bulb, each maker's own setting names): docs/virtual-camera.md.
+#include <sys/resource.h>
+
 #include <algorithm>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -187,6 +190,33 @@ TEST_F(VirtualD750Test, ShootsBothStationsOfAPairWithoutFocusControl) {
   const std::set<std::string> listed(on_card.begin(), on_card.end());
   EXPECT_TRUE(listed.count(left.image.camera_path)) << left.image.camera_path;
   EXPECT_TRUE(listed.count(right.image.camera_path)) << right.image.camera_path;
+}
+
+// The tablet's storage refuses the file (a write over the process's file
+// size limit fails as a full disk does): the shot is not lost, it stays
+// pending on the camera, no partial file lies in the spool, and once there
+// is room retry_pending() fetches it whole.
+TEST_F(VirtualD750Test, AShotTheSpoolCannotTakeStaysPendingUntilThereIsRoom) {
+  Gphoto2Camera cam(options());
+  ASSERT_GT(d750_.card_jpeg.size(), 1024u);
+  std::signal(SIGXFSZ, SIG_IGN);  // the write fails with EFBIG instead of killing the process
+  rlimit limit{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &limit), 0);
+  const rlimit full{1024, limit.rlim_max};
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &full), 0);
+  CameraError::Kind kind{};
+  const std::string why = message_of([&] { cam.capture(); }, &kind);
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limit), 0);
+  EXPECT_NE(why.find("is the tablet's storage full?"), std::string::npos) << why;
+  const auto pending = cam.pending_downloads();
+  ASSERT_EQ(pending.size(), 1u);
+  EXPECT_EQ(fs::path(pending[0]).filename().string().rfind("GPH_", 0), 0u) << pending[0];
+  EXPECT_TRUE(!fs::exists(spool_) || files_in(spool_).empty());
+  const auto fetched = cam.retry_pending();
+  ASSERT_EQ(fetched.size(), 1u);
+  EXPECT_EQ(fetched[0].camera_path, pending[0]);
+  EXPECT_EQ(bytes_of(fetched[0].saved_path), d750_.card_jpeg);
+  EXPECT_TRUE(cam.pending_downloads().empty());
 }
 
 TEST_F(VirtualD750Test, RefusesLiveViewSayingTheBodyCannotAndStillShoots) {
