@@ -52,6 +52,9 @@ struct Capture {
   CapturedFile image;
   std::vector<CapturedFile> companions;
   ExifInfo exif;  // of `image`
+  // The body's serial number as it says over USB (the calibration belongs
+  // to the body); empty when the camera gives none.
+  std::string body_serial;
 };
 
 struct CameraEvent {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <utility>
 
 #include <gphoto2/gphoto2.h>
 #include <opencv2/imgcodecs.hpp>
@@ -30,6 +31,26 @@ const std::vector<std::string> kTargetNames{"capturetarget"};
 const std::vector<std::string> kFlashNames{"flashmode", "flashmode2", "canonflashmode"};
 const std::vector<std::string> kFocusModeNames{"focusmode", "focusmode2", "afmode"};
 const std::vector<std::string> kAutofocusNames{"autofocusdrive"};
+const std::vector<std::string> kWhiteBalanceNames{"whitebalance"};
+const std::vector<std::string> kSerialNames{"serialnumber", "eosserialnumber"};
+
+const std::vector<std::string>& names_of(TabletSetting which) {
+  switch (which) {
+    case TabletSetting::iso:
+      return kIsoNames;
+    case TabletSetting::aperture:
+      return kApertureNames;
+    case TabletSetting::shutter_speed:
+      return kShutterNames;
+    case TabletSetting::image_format:
+      return kFormatNames;
+    case TabletSetting::focus_mode:
+      return kFocusModeNames;
+    case TabletSetting::white_balance:
+      break;
+  }
+  return kWhiteBalanceNames;
+}
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -134,12 +155,32 @@ void collect_leaves(CameraWidget* w, std::vector<CameraSetting>& out) {
 
 }  // namespace
 
+const char* tablet_setting_name(TabletSetting setting) {
+  switch (setting) {
+    case TabletSetting::iso:
+      return "ISO";
+    case TabletSetting::aperture:
+      return "aperture";
+    case TabletSetting::shutter_speed:
+      return "shutter speed";
+    case TabletSetting::image_format:
+      return "image format";
+    case TabletSetting::focus_mode:
+      return "focus mode";
+    case TabletSetting::white_balance:
+      break;
+  }
+  return "white balance";
+}
+
 struct Gphoto2Camera::State {
   Options options;
   GPContext* context = nullptr;
   ::Camera* camera = nullptr;  // null while disconnected
   std::string model, port;
+  std::string serial;                // read once on connecting; empty when the body gives none
   std::vector<std::string> pending;  // captured on the camera, not yet downloaded
+  std::string driver_error;          // the camera driver's last error text (its context error)
   bool reconnecting = false;         // the camera was lost: look it up again by model
 
   ~State() {
@@ -157,8 +198,9 @@ struct Gphoto2Camera::State {
   // Turns a libgphoto2 result into an exception; the camera is dropped when
   // it is gone so the next command reconnects.
   void check(int rc, const std::string& action) {
+    std::string driver_says = std::exchange(driver_error, {});
     if (rc >= GP_OK) return;
-    CameraError e = gphoto2_error(rc, action);
+    CameraError e = gphoto2_error(rc, action, driver_says);
     // The directory camlib reports a file that cannot be read as an I/O
     // error; while the folder is still there, the camera is not gone.
     if (e.kind() == Kind::disconnected && is_disk_port(port) && fs::is_directory(port.substr(5))) {
@@ -176,8 +218,17 @@ struct Gphoto2Camera::State {
     throw e;
   }
 
+  // The driver's error text says what its result code cannot (a card that
+  // ran full comes as "out of memory"): kept for the next check().
+  static void keep_driver_error(GPContext*, const char* text, void* data) {
+    if (text) static_cast<State*>(data)->driver_error = text;
+  }
+
   void connect() {
-    if (!context) context = gp_context_new();
+    if (!context) {
+      context = gp_context_new();
+      gp_context_set_error_func(context, keep_driver_error, this);
+    }
     std::string want_model = options.model;
     std::string want_port = options.port;
     const bool search =
@@ -234,13 +285,40 @@ struct Gphoto2Camera::State {
     if (rc >= GP_OK) rc = gp_camera_init(cam, context);
     if (rc < GP_OK) {
       gp_camera_unref(cam);
-      CameraError e = gphoto2_error(rc, "Connecting to the " + want_model + " on " + want_port);
+      CameraError e = gphoto2_error(rc, "Connecting to the " + want_model + " on " + want_port,
+                                    std::exchange(driver_error, {}));
       throw e;
     }
     camera = cam;
     reconnecting = false;
     model = want_model;
     port = want_port;
+    serial = read_serial();
+  }
+
+  // The first serial-number widget the camera has; empty for none (the
+  // directory camlib, some compacts).
+  std::string read_serial() {
+    CameraWidget* root = nullptr;
+    if (gp_camera_get_config(camera, &root, context) < GP_OK) return {};
+    WidgetPtr owned(root);
+    for (const auto& n : kSerialNames) {
+      CameraWidget* child = nullptr;
+      if (gp_widget_get_child_by_name(root, n.c_str(), &child) == GP_OK)
+        return describe(child).value;
+    }
+    return {};
+  }
+
+  // The first of the setting's names this camera has; throws naming the
+  // setting when it has none.
+  std::string tablet_setting_widget(TabletSetting which, const char* doing) {
+    const std::string name = find_setting(names_of(which));
+    if (name.empty())
+      throw CameraError(Kind::not_supported, "The " + model + " does not let rockface " + doing +
+                                                 " the " + tablet_setting_name(which) +
+                                                 " over USB; set it on the camera");
+    return name;
   }
 
   static std::vector<DetectedCamera> detect_with(GPContext* context) {
@@ -444,6 +522,13 @@ std::string Gphoto2Camera::port() {
   return thread_->call([this] { return state_->port; });
 }
 
+std::string Gphoto2Camera::serial_number() {
+  return thread_->call([this] {
+    state_->ensure_connected();
+    return state_->serial;
+  });
+}
+
 std::vector<CameraSetting> Gphoto2Camera::settings() {
   return thread_->call([this] {
     state_->ensure_connected();
@@ -490,6 +575,20 @@ void Gphoto2Camera::apply(const ExposureSettings& exposure) {
     set(exposure.iso, kIsoNames, "ISO");
     set(exposure.image_format, kFormatNames, "image format");
     set(exposure.capture_target, kTargetNames, "capture target");
+  });
+}
+
+CameraSetting Gphoto2Camera::tablet_setting(TabletSetting which) {
+  return thread_->call([&] {
+    state_->ensure_connected();
+    return state_->read_setting(state_->tablet_setting_widget(which, "read"));
+  });
+}
+
+void Gphoto2Camera::set_tablet_setting(TabletSetting which, const std::string& value) {
+  thread_->call([&] {
+    state_->ensure_connected();
+    state_->write_setting(state_->tablet_setting_widget(which, "set"), value);
   });
 }
 
@@ -561,6 +660,7 @@ Capture Gphoto2Camera::capture() {
     c.companions.assign(std::make_move_iterator(got.begin() + 1),
                         std::make_move_iterator(got.end()));
     c.exif = read_exif(c.image.data);
+    c.body_serial = s.serial;
     return c;
   });
 }

@@ -27,6 +27,12 @@ namespace rockface::camera {
 
 class CommandThread;
 
+// The settings the tablet reads and sets on every body, whatever each maker
+// (and libgphoto2's driver for it) calls them.
+enum class TabletSetting { iso, aperture, shutter_speed, image_format, focus_mode, white_balance };
+// "ISO", "aperture", "shutter speed", "image format", "focus mode", "white balance".
+const char* tablet_setting_name(TabletSetting setting);
+
 struct DetectedCamera {
   std::string model;  // e.g. "Nikon DSC D7500"
   std::string port;   // e.g. "usb:001,007"
@@ -51,6 +57,8 @@ class Gphoto2Camera final : public Camera {
   // The connection.
   std::string model() override;
   std::string port();
+  // The body's serial number ("serialnumber" over PTP); empty when it gives none.
+  std::string serial_number();
   void close() override;
 
   // Settings, named as libgphoto2 names the camera's widgets.
@@ -60,6 +68,13 @@ class Gphoto2Camera final : public Camera {
   // Each field under the first of its libgphoto2 names (they differ from
   // maker to maker) that this camera has; refuses one it cannot set over USB.
   void apply(const ExposureSettings& exposure) override;
+  // One of the tablet's settings under the first of its libgphoto2 names
+  // this camera has, with its choices. Throws CameraError (not_supported)
+  // naming the setting when the camera has none of them.
+  CameraSetting tablet_setting(TabletSetting which);
+  // Sets it; throws as tablet_setting() does, and as set_setting() does for
+  // a value the camera does not offer or a setting it shows read-only.
+  void set_tablet_setting(TabletSetting which, const std::string& value);
   // unknown when the camera has no flash setting.
   FlashState flash() override;
 

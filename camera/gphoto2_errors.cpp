@@ -5,11 +5,22 @@
 
 namespace rockface::camera {
 
-CameraError gphoto2_error(int code, const std::string& action) {
+namespace {
+
+// The camera's card is full, whatever code the driver put on it.
+bool says_card_full(const std::string& driver_says) {
+  return driver_says.find("ran full") != std::string::npos ||
+         driver_says.find("Store Full") != std::string::npos;
+}
+
+}  // namespace
+
+CameraError gphoto2_error(int code, const std::string& action, const std::string& driver_says) {
   using Kind = CameraError::Kind;
   Kind kind = Kind::other;
   std::string what;
-  switch (code) {
+  // What the failure is; the library's own code is still what the message quotes.
+  switch (says_card_full(driver_says) ? GP_ERROR_NO_SPACE : code) {
     case GP_ERROR_CAMERA_BUSY:
       kind = Kind::busy;
       what =
@@ -84,8 +95,10 @@ CameraError gphoto2_error(int code, const std::string& action) {
       what = "the camera reported an error";
       break;
   }
-  return CameraError(kind, action + ": " + what + " (libgphoto2: " + gp_result_as_string(code) +
-                               ", code " + std::to_string(code) + ")");
+  std::string said =
+      " (libgphoto2: " + std::string(gp_result_as_string(code)) + ", code " + std::to_string(code);
+  if (!driver_says.empty()) said += "; the camera driver: " + driver_says;
+  return CameraError(kind, action + ": " + what + said + ")");
 }
 
 }  // namespace rockface::camera

@@ -44,6 +44,12 @@ if [ "${1:-}" != "--demo" ]; then
     # the office tests: a real PostgreSQL server (initdb, pg_ctl) and openssl
     # to make the TLS test's CA and certificate
     postgresql openssl
+    # libgphoto2's virtual PTP camera for the DSLR tests (issue 42,
+    # tools/virtual-camera.sh): apt-get source (dpkg-dev), the port
+    # library's configure and build (make, gcc from g++, patch for our
+    # one-line patch, libltdl-dev which its configure requires); the
+    # gphoto2 CLI to try the camera by hand (docs/virtual-camera.md)
+    dpkg-dev make patch libltdl-dev gphoto2
   )
 fi
 

@@ -245,13 +245,17 @@ void TabletApp::draw_status_bar() {
   const auto here = static_cast<std::size_t>(state_.screen);
   const auto& errors = state_.statuses.errors(here);
   if (!errors.empty()) {
-    // An error stays until read: "OK" (a touch target) puts it away.
-    if (state_.targets.button("OK##errors")) state_.statuses.dismiss(here);
-    ImGui::SameLine();
+    // The line is composed before "OK" is drawn: a tap on it empties
+    // `errors`, and reading its back() after that was the crash of issue 42
+    // (std::bad_alloc or a segmentation fault on the tap that dismissed a
+    // camera's refusal).
     std::string text = errors.back();
     if (errors.size() > 1)
       text =
           format::count(static_cast<std::int64_t>(errors.size()), "error", "errors") + ": " + text;
+    // An error stays until read: "OK" (a touch target) puts it away.
+    if (state_.targets.button("OK##errors")) state_.statuses.dismiss(here);
+    ImGui::SameLine();
     label_in_row(text, warning_colour());  // shortened: the whole one tap away
     return;
   }

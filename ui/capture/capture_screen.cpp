@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "camera/camera_error.h"
 #include "camera/capture_guidance.h"
 #include "camera/exif.h"
 #include "storage/project/calibration_library.h"
@@ -58,6 +59,18 @@ void connect(AppState& app) {
       });
 }
 
+// Locks the focus; where the camera cannot do it over USB, returns why
+// (empty when locked). Any other failure stops the shot.
+std::string lock_focus_or_say_why(camera::Camera& cam) {
+  try {
+    cam.lock_focus();
+    return {};
+  } catch (const camera::CameraError& e) {
+    if (e.kind() != camera::CameraError::Kind::not_supported) throw;
+    return e.what();
+  }
+}
+
 void shoot(AppState& app, bool left) {
   auto cam = app.capture.camera;
   auto shot = std::make_shared<camera::Capture>();
@@ -65,9 +78,15 @@ void shoot(AppState& app, bool left) {
       left ? "Left shot" : "Right shot",
       [cam, shot, left](Progress& progress) {
         progress.step("focus and shoot", 0.2);
-        if (left) cam->lock_focus();  // the right shot keeps the left's focus
+        // The right shot keeps the left's focus. A body that gives no focus
+        // control over USB still shoots: the geologist focuses it by hand
+        // (refusing the shot left no way to take it at all), and is told.
+        std::string by_hand;
+        if (left) by_hand = lock_focus_or_say_why(*cam);
         *shot = cam->capture();
-        return std::string(left ? "left" : "right") + " shot captured";
+        std::string said = std::string(left ? "left" : "right") + " shot captured";
+        if (!by_hand.empty()) said += " with the focus as set by hand (" + by_hand + ")";
+        return said;
       },
       [&app, shot, left](const TaskOutcome& outcome) {
         if (outcome.kind != TaskOutcome::Kind::done) return;
