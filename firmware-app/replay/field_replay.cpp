@@ -156,7 +156,7 @@ StoredCapture store_capture(storage::ProjectStore& store, const ReplayRequest& r
   storage::CameraBody body;
   body.make = left.exif.make.empty() ? "unknown" : left.exif.make;
   body.model = left.exif.model.empty() ? source.camera->model() : left.exif.model;
-  body.serial = left.exif.serial;
+  body.serial = left.exif.serial.empty() ? left.body_serial : left.exif.serial;
   StoredCapture out;
   if (source.library_calibration_id) {
     out.calibration_id = *source.library_calibration_id;

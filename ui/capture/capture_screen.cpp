@@ -138,6 +138,9 @@ void store_and_reconstruct(AppState& app) {
   const Preset preset = app.capture.preset;
   capture.settings["preset"] = std::string(preset_name(preset));
   photogrammetry::PhotoCamera photo = camera::photo_camera(app.capture.left->exif);
+  // Bodies that keep their serial number in the maker note only: the one
+  // the camera told over USB.
+  if (photo.serial.empty()) photo.serial = app.capture.left->body_serial;
   ReconstructionRunner* runner = app.services.reconstruction;
   app.task.start(
       "Store and reconstruct",
