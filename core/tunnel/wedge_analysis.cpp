@@ -556,14 +556,22 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
   check_options(options);
   WedgeAnalysis out;
   out.frame = frame;
+  // The wedges are built about the section's own origin: the blocks'
+  // datum is the section's absolute position, so that their planes'
+  // offsets are of the wedges' size, not of the section's distance from
+  // the scene's datum (at 10 km or 5.2e6 m the half-spaces of a 1 m wedge
+  // lost their digits and the pieces no longer joined, issue 40).
+  TunnelFrame local = frame;
+  local.origin = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d section_datum = datum + frame.origin;
   out.section = section_polygon(profile, options.sagitta_m, "profile");
   out.notes = out.section.notes;
   const kinematics::Effects loads = load_effects(options);
   for (const auto& e : loads) out.effects_simulated.push_back(e->name());
   if (options.bolts) out.effects_simulated.push_back("bolts");
   if (options.shotcrete) out.effects_simulated.push_back("shotcrete");
-  const Context ctx{out.section, frame, datum, sets, options, loads, profile.ray_centre()};
-  const geometry::Cone face_ep = face_excavation_pyramid(frame);
+  const Context ctx{out.section, local, section_datum, sets, options, loads, profile.ray_centre()};
+  const geometry::Cone face_ep = face_excavation_pyramid(local);
 
   auto found = [&](FoundWedge f) {
     if (f.none) out.none.push_back(std::move(*f.none));
