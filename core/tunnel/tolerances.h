@@ -29,6 +29,15 @@ inline constexpr double kPolylineMismatchRelative = 0.05;
 // are drawn to the millimetre.
 inline constexpr double kProfileJoinM = 1e-4;
 
+// A profile segment shorter than this (m) has no length. A micrometre:
+// far below the millimetre of design drawings and of any excavation's
+// survey, so that the short pieces a CAD drawing leaves (a 0.1 mm chamfer
+// or join) are kept, and far above the ~1e-15 relative rounding of
+// coordinates of metres (issue 40: 0.1 mm segments were refused). An arc
+// whose ends lie within kProfileJoinM is a full circle, so an arc needs a
+// chord above that.
+inline constexpr double kProfileSegmentMinM = 1e-6;
+
 // Arcs are drawn as chords whose sagitta stays below this (m) when the
 // profile is checked for self-intersection and star shape.
 inline constexpr double kProfileSagittaM = 1e-4;
