@@ -84,6 +84,15 @@ inline constexpr double kWedgeVertexMergeRel = 1e-9;
 // this (sine of its angle to the axis) runs along the axis: the wedges it
 // bounds never end along the tunnel (a margin of 0).
 inline constexpr double kWedgeAlongAxisSine = 1e-12;
+// A joint set whose plane lies within this angle (radians) of containing
+// the tunnel's axis is taken to contain it: 1e-6 rad (0.2 arc seconds),
+// far below the degree to which a compass reads a dip, and a wedge's size
+// moves by ~1e-6 of itself. Its wedges are then those of the exact limit:
+// tilted by 1e-9 deg, the set's plane and the planes the wedge search lays
+// along the axis were 1e-11 rad apart and the construction lost the roof
+// and wall wedges, and a face wedge came and went with the tilt's sign
+// (issue 40).
+inline constexpr double kWedgeAxisParallelRad = 1e-6;
 // The face wedge's largest triangle is found by bisection of its scale to
 // this relative precision (far below the sagitta of the profile's chords).
 inline constexpr double kWedgeScaleRel = 1e-10;

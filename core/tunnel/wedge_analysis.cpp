@@ -548,11 +548,41 @@ double wedge_sagitta(Preset preset) {
   return 0.002;
 }
 
+namespace {
+
+// The sets with each plane that lies within kWedgeAxisParallelRad of
+// containing the axis turned onto it (its normal made square to the axis),
+// each such set said in notes.
+std::vector<WedgeJointSet> axis_parallel_snapped(const std::vector<WedgeJointSet>& given,
+                                                 const Eigen::Vector3d& along,
+                                                 std::vector<std::string>& notes) {
+  std::vector<WedgeJointSet> sets = given;
+  for (auto& s : sets) {
+    const Eigen::Vector3d n = s.normal.normalized();
+    const double off = n.dot(along);  // sine of the angle between plane and axis
+    if (off == 0 || std::abs(off) > std::sin(kWedgeAxisParallelRad)) continue;
+    s.normal = (n - off * along).normalized();
+    if (std::abs(off) <= kWedgeAlongAxisSine) continue;  // parallel but for rounding
+    std::ostringstream note;
+    note.precision(2);
+    note << "set " << s.id << " lies within " << std::abs(std::asin(off)) * kDegPerRad
+         << " deg of containing the tunnel's axis: taken as parallel to it";
+    notes.push_back(note.str());
+  }
+  return sets;
+}
+
+}  // namespace
+
 WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& frame,
-                             const Eigen::Vector3d& datum, const std::vector<WedgeJointSet>& sets,
+                             const Eigen::Vector3d& datum,
+                             const std::vector<WedgeJointSet>& given_sets,
                              const WedgeOptions& options) {
   using namespace wedge_phases;
-  check_sets(sets);
+  check_sets(given_sets);
+  std::vector<std::string> axis_notes;
+  const std::vector<WedgeJointSet> sets =
+      axis_parallel_snapped(given_sets, frame.along.normalized(), axis_notes);
   check_options(options);
   WedgeAnalysis out;
   out.frame = frame;
@@ -566,6 +596,7 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
   const Eigen::Vector3d section_datum = datum + frame.origin;
   out.section = section_polygon(profile, options.sagitta_m, "profile");
   out.notes = out.section.notes;
+  out.notes.insert(out.notes.end(), axis_notes.begin(), axis_notes.end());
   const kinematics::Effects loads = load_effects(options);
   for (const auto& e : loads) out.effects_simulated.push_back(e->name());
   if (options.bolts) out.effects_simulated.push_back("bolts");
@@ -597,9 +628,19 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
           const geometry::ConeMargin jm = jp.margin();
           if (!(jm.angle > 0)) continue;  // independent planes: never empty
           const std::vector<Eigen::Vector3d> edges = jp.edges(jm.angle);
-          // Strictly inside (beyond rounding): a pyramid with an edge along the
-          // axis is a perimeter pyramid that never ends, not a face one.
-          if (jp.margin_of(-frame.along) > kWedgeAlongAxisSine) {
+          // Inside, or on a face of the pyramid (a set containing the axis):
+          // a face pyramid, whose wedge the face decides (removable or
+          // not). A pyramid with an edge along the axis is a perimeter
+          // pyramid that never ends, not a face one. (Taken as a perimeter
+          // pyramid, one with the axis on its face spans 180 degrees seen
+          // along the axis: its face wedge came and went with the sign of
+          // a 1e-9 degree tilt of that set, issue 40.)
+          const double back = jp.margin_of(-frame.along);
+          bool edge_along = false;
+          for (const auto& e : edges)
+            edge_along = edge_along || (e - e.dot(frame.along) * frame.along).norm() <
+                                           kWedgeAlongAxisSine * e.norm();
+          if (back > kWedgeAlongAxisSine || (back > -kWedgeAlongAxisSine && !edge_along)) {
             found(face_wedge(ctx, p, edges, face_ep));
             continue;
           }
