@@ -647,7 +647,21 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
           if (jp.margin_of(frame.along) > kWedgeAlongAxisSine)
             continue;  // opens into the rock ahead of the face
           if (!options.perimeter) continue;
-          found(perimeter_wedge(ctx, p, edges, jm.angle));
+          FoundWedge around = perimeter_wedge(ctx, p, edges, jm.angle);
+          // A pyramid that gives no perimeter wedge (seen along the axis it
+          // spans 180 degrees or more, or its wedge has no size) but lies
+          // wholly behind the face is a face wedge: with a set near the
+          // axis, the pyramid whose face on that set just misses the axis
+          // (the face wedge came with a turn of the set by 0.01 degree one
+          // way and went with the same turn the other way, issue 40).
+          bool behind = !edge_along;
+          for (const auto& e : edges)
+            behind = behind && e.dot(frame.along) < -kWedgeAlongAxisSine * e.norm();
+          if (!around.wedge && around.none && around.none->margin <= 0 && behind && options.face) {
+            FoundWedge at_face = face_wedge(ctx, p, edges, face_ep);
+            if (at_face.wedge) around = std::move(at_face);
+          }
+          found(std::move(around));
         }
       }
   order_wedges(out.wedges);

@@ -3,6 +3,7 @@
 // Turned by +-1e-9 and +-1e-6 degrees it gives the wedges of the exact
 // case: the same codes, places and volumes, no wedge "could not be built",
 // and the face wedge neither comes nor goes with the sign of the turn.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -70,6 +71,36 @@ TEST(WedgesAxisParallel, TinyTurnsEitherWayGiveTheExactCasesWedges) {
     for (const auto& n : a.none)
       EXPECT_EQ(n.reason.find("could not be built"), std::string::npos)
           << turn << " " << n.code << ": " << n.reason;
+  }
+}
+
+TEST(WedgesAxisParallel, TurnsBeyondTheToleranceKeepEveryWedgeNearTheExactOne) {
+  // 0.01 deg either way: beyond kWedgeAxisParallelRad, so the set is not
+  // taken as parallel; the face wedge stays whichever way it turns.
+  const WedgeAnalysis exact = with_second_set_turned(0);
+  const Eigen::Vector3d along = axis_frame(35 * kRad, 0, Eigen::Vector3d::Zero(), "axis").along;
+  for (double turn : {0.01, -0.01}) {
+    const WedgeAnalysis a = with_second_set_turned(turn);
+    ASSERT_EQ(a.wedges.size(), exact.wedges.size()) << turn;
+    for (std::size_t i = 0; i < exact.wedges.size(); ++i) {
+      const Wedge& e = exact.wedges[i];
+      const Wedge& w = a.wedges[i];
+      EXPECT_EQ(w.code, e.code) << turn;
+      EXPECT_EQ(w.place, e.place) << turn << " " << e.code;
+      // The set's face turns by d = 1.7e-4 rad about a line through the
+      // apex: the wedge's far corners move by d times their distance from
+      // it, at most the wedge's length L along the axis, so its volume by
+      // at most 3 d L / h relative (h its apex height); twice that allows
+      // for the other faces' corners that move with them.
+      double lo = 1e300, hi = -1e300;
+      for (const auto& v : e.block.vertices()) {
+        lo = std::min(lo, v.dot(along));
+        hi = std::max(hi, v.dot(along));
+      }
+      const double d = 0.01 * kRad;
+      const double tol = 6 * d * std::max(hi - lo, e.apex_height) / e.apex_height;
+      EXPECT_NEAR(w.mass.volume, e.mass.volume, tol * e.mass.volume) << turn << " " << e.code;
+    }
   }
 }
 
