@@ -112,11 +112,15 @@ ProfileSegment ProfileSegment::arc_polar(const Eigen::Vector2d& centre, double r
 
 double ProfileSegment::sweep() const {
   if (kind == Kind::line) return 0;
-  const double a0 = std::atan2(from.y() - centre.y(), from.x() - centre.x());
-  const double a1 = std::atan2(to.y() - centre.y(), to.x() - centre.x());
-  double d = a1 - a0;
   // from == to (within the join tolerance) is a full circle.
   if ((to - from).norm() <= kProfileJoinM) return ccw ? 2 * kPi : -2 * kPi;
+  // The angle between the radii from the chord (to - from), not as the
+  // difference of the radii's polar angles: those carry ~1e-16 rad of
+  // rounding each, which a nearly straight arc (radius 1e9 m over 6 m,
+  // a sweep of 6e-9 rad) turned into 1e-8 of its sweep and 26 m^2 of a
+  // 30 m^2 profile's area (issue 40).
+  const Eigen::Vector2d r0 = from - centre, chord = to - from;
+  double d = std::atan2(cross2(r0, chord), r0.squaredNorm() + r0.dot(chord));
   if (ccw) {
     while (d <= 0) d += 2 * kPi;
     while (d > 2 * kPi) d -= 2 * kPi;
@@ -154,14 +158,25 @@ Eigen::Vector2d ProfileSegment::direction_at(double t) const {
 
 namespace {
 
+// t - sin t without the cancellation of its two terms for small t: below
+// 0.1 rad by its series (the first omitted term, t^11 / 11!, is under
+// 1e-18 of t^3 / 6 there).
+double angle_less_sine(double t) {
+  if (std::abs(t) >= 0.1) return t - std::sin(t);
+  const double t2 = t * t;
+  return t * t2 * (1.0 / 6 - t2 * (1.0 / 120 - t2 * (1.0 / 5040 - t2 / 362880)));
+}
+
 // Twice the signed area swept by one segment about the origin (Green):
-// lines x dy - y dx; arcs add the circular segment, exactly.
+// lines x dy - y dx; an arc its chord's term plus its circular segment,
+// r^2 (t - sin t), exactly. (Written as the centre's term plus r^2 t, the
+// two cancel for a nearly straight arc: at a radius of 1e9 m each is
+// 1e10 m^2 for a segment of 1e-8 m^2.)
 double twice_area_term(const ProfileSegment& s) {
   double a = cross2(s.from, s.to);
   if (s.kind == ProfileSegment::Kind::arc) {
     const double r = s.radius();
-    a = s.centre.x() * (s.to.y() - s.from.y()) - s.centre.y() * (s.to.x() - s.from.x()) +
-        r * r * s.sweep();
+    a += r * r * angle_less_sine(s.sweep());
   }
   return a;
 }
@@ -233,7 +248,7 @@ ProfileCheck DesignProfile::validate() const {
                        " m at its end)",
                    i);
     }
-    if (s.length() <= kProfileJoinM) return bad("the segment has no length", i);
+    if (s.length() <= kProfileSegmentMinM) return bad("the segment has no length", i);
     const auto& next = segments_[(i + 1) % segments_.size()];
     if ((s.to - next.from).norm() > kProfileJoinM)
       return bad("the chain is not closed: the segment ends at " + point_text(s.to) +

@@ -76,9 +76,10 @@ class DesignProfile {
                          std::string name = {});
 
   // Closed (each segment starts where the previous ends, the last ends at
-  // the first's start), every segment of positive length, arcs consistent
-  // (both ends on the circle), not self-intersecting, enclosing a positive
-  // area, and star-shaped from the ray centre (which lies inside).
+  // the first's start), every segment at least kProfileSegmentMinM long,
+  // arcs consistent (both ends on the circle), not self-intersecting,
+  // enclosing a positive area, and star-shaped from the ray centre (which
+  // lies inside).
   ProfileCheck validate() const;
   // validate(), throwing InputError(where + ".segments[i]", message) if bad.
   void require_valid(const std::string& where) const;

@@ -29,6 +29,15 @@ inline constexpr double kPolylineMismatchRelative = 0.05;
 // are drawn to the millimetre.
 inline constexpr double kProfileJoinM = 1e-4;
 
+// A profile segment shorter than this (m) has no length. A micrometre:
+// far below the millimetre of design drawings and of any excavation's
+// survey, so that the short pieces a CAD drawing leaves (a 0.1 mm chamfer
+// or join) are kept, and far above the ~1e-15 relative rounding of
+// coordinates of metres (issue 40: 0.1 mm segments were refused). An arc
+// whose ends lie within kProfileJoinM is a full circle, so an arc needs a
+// chord above that.
+inline constexpr double kProfileSegmentMinM = 1e-6;
+
 // Arcs are drawn as chords whose sagitta stays below this (m) when the
 // profile is checked for self-intersection and star shape.
 inline constexpr double kProfileSagittaM = 1e-4;
@@ -75,6 +84,15 @@ inline constexpr double kWedgeVertexMergeRel = 1e-9;
 // this (sine of its angle to the axis) runs along the axis: the wedges it
 // bounds never end along the tunnel (a margin of 0).
 inline constexpr double kWedgeAlongAxisSine = 1e-12;
+// A joint set whose plane lies within this angle (radians) of containing
+// the tunnel's axis is taken to contain it: 1e-6 rad (0.2 arc seconds),
+// far below the degree to which a compass reads a dip, and a wedge's size
+// moves by ~1e-6 of itself. Its wedges are then those of the exact limit:
+// tilted by 1e-9 deg, the set's plane and the planes the wedge search lays
+// along the axis were 1e-11 rad apart and the construction lost the roof
+// and wall wedges, and a face wedge came and went with the tilt's sign
+// (issue 40).
+inline constexpr double kWedgeAxisParallelRad = 1e-6;
 // The face wedge's largest triangle is found by bisection of its scale to
 // this relative precision (far below the sagitta of the profile's chords).
 inline constexpr double kWedgeScaleRel = 1e-10;

@@ -548,22 +548,61 @@ double wedge_sagitta(Preset preset) {
   return 0.002;
 }
 
+namespace {
+
+// The sets with each plane that lies within kWedgeAxisParallelRad of
+// containing the axis turned onto it (its normal made square to the axis),
+// each such set said in notes.
+std::vector<WedgeJointSet> axis_parallel_snapped(const std::vector<WedgeJointSet>& given,
+                                                 const Eigen::Vector3d& along,
+                                                 std::vector<std::string>& notes) {
+  std::vector<WedgeJointSet> sets = given;
+  for (auto& s : sets) {
+    const Eigen::Vector3d n = s.normal.normalized();
+    const double off = n.dot(along);  // sine of the angle between plane and axis
+    if (off == 0 || std::abs(off) > std::sin(kWedgeAxisParallelRad)) continue;
+    s.normal = (n - off * along).normalized();
+    if (std::abs(off) <= kWedgeAlongAxisSine) continue;  // parallel but for rounding
+    std::ostringstream note;
+    note.precision(2);
+    note << "set " << s.id << " lies within " << std::abs(std::asin(off)) * kDegPerRad
+         << " deg of containing the tunnel's axis: taken as parallel to it";
+    notes.push_back(note.str());
+  }
+  return sets;
+}
+
+}  // namespace
+
 WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& frame,
-                             const Eigen::Vector3d& datum, const std::vector<WedgeJointSet>& sets,
+                             const Eigen::Vector3d& datum,
+                             const std::vector<WedgeJointSet>& given_sets,
                              const WedgeOptions& options) {
   using namespace wedge_phases;
-  check_sets(sets);
+  check_sets(given_sets);
+  std::vector<std::string> axis_notes;
+  const std::vector<WedgeJointSet> sets =
+      axis_parallel_snapped(given_sets, frame.along.normalized(), axis_notes);
   check_options(options);
   WedgeAnalysis out;
   out.frame = frame;
+  // The wedges are built about the section's own origin: the blocks'
+  // datum is the section's absolute position, so that their planes'
+  // offsets are of the wedges' size, not of the section's distance from
+  // the scene's datum (at 10 km or 5.2e6 m the half-spaces of a 1 m wedge
+  // lost their digits and the pieces no longer joined, issue 40).
+  TunnelFrame local = frame;
+  local.origin = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d section_datum = datum + frame.origin;
   out.section = section_polygon(profile, options.sagitta_m, "profile");
   out.notes = out.section.notes;
+  out.notes.insert(out.notes.end(), axis_notes.begin(), axis_notes.end());
   const kinematics::Effects loads = load_effects(options);
   for (const auto& e : loads) out.effects_simulated.push_back(e->name());
   if (options.bolts) out.effects_simulated.push_back("bolts");
   if (options.shotcrete) out.effects_simulated.push_back("shotcrete");
-  const Context ctx{out.section, frame, datum, sets, options, loads, profile.ray_centre()};
-  const geometry::Cone face_ep = face_excavation_pyramid(frame);
+  const Context ctx{out.section, local, section_datum, sets, options, loads, profile.ray_centre()};
+  const geometry::Cone face_ep = face_excavation_pyramid(local);
 
   auto found = [&](FoundWedge f) {
     if (f.none) out.none.push_back(std::move(*f.none));
@@ -589,16 +628,40 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
           const geometry::ConeMargin jm = jp.margin();
           if (!(jm.angle > 0)) continue;  // independent planes: never empty
           const std::vector<Eigen::Vector3d> edges = jp.edges(jm.angle);
-          // Strictly inside (beyond rounding): a pyramid with an edge along the
-          // axis is a perimeter pyramid that never ends, not a face one.
-          if (jp.margin_of(-frame.along) > kWedgeAlongAxisSine) {
+          // Inside, or on a face of the pyramid (a set containing the axis):
+          // a face pyramid, whose wedge the face decides (removable or
+          // not). A pyramid with an edge along the axis is a perimeter
+          // pyramid that never ends, not a face one. (Taken as a perimeter
+          // pyramid, one with the axis on its face spans 180 degrees seen
+          // along the axis: its face wedge came and went with the sign of
+          // a 1e-9 degree tilt of that set, issue 40.)
+          const double back = jp.margin_of(-frame.along);
+          bool edge_along = false;
+          for (const auto& e : edges)
+            edge_along = edge_along || (e - e.dot(frame.along) * frame.along).norm() <
+                                           kWedgeAlongAxisSine * e.norm();
+          if (back > kWedgeAlongAxisSine || (back > -kWedgeAlongAxisSine && !edge_along)) {
             found(face_wedge(ctx, p, edges, face_ep));
             continue;
           }
           if (jp.margin_of(frame.along) > kWedgeAlongAxisSine)
             continue;  // opens into the rock ahead of the face
           if (!options.perimeter) continue;
-          found(perimeter_wedge(ctx, p, edges, jm.angle));
+          FoundWedge around = perimeter_wedge(ctx, p, edges, jm.angle);
+          // A pyramid that gives no perimeter wedge (seen along the axis it
+          // spans 180 degrees or more, or its wedge has no size) but lies
+          // wholly behind the face is a face wedge: with a set near the
+          // axis, the pyramid whose face on that set just misses the axis
+          // (the face wedge came with a turn of the set by 0.01 degree one
+          // way and went with the same turn the other way, issue 40).
+          bool behind = !edge_along;
+          for (const auto& e : edges)
+            behind = behind && e.dot(frame.along) < -kWedgeAlongAxisSine * e.norm();
+          if (!around.wedge && around.none && around.none->margin <= 0 && behind && options.face) {
+            FoundWedge at_face = face_wedge(ctx, p, edges, face_ep);
+            if (at_face.wedge) around = std::move(at_face);
+          }
+          found(std::move(around));
         }
       }
   order_wedges(out.wedges);

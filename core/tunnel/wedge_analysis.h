@@ -124,6 +124,10 @@ struct WedgeAnalysis {
 
 // frame: the section at the origin (datum-relative), the drive along
 // frame.along; datum: absolute position of the frame's coordinates' origin.
+// The wedges' blocks are built about the section (their datum() is
+// datum + frame.origin, their vertices relative to it), so the same
+// section gives the same wedges at the datum and 10^6 m away from it;
+// apexes and bolt heads are absolute.
 // Throws InputError naming the field for fewer than three sets ("sets"), a
 // degenerate profile ("profile"), a bad support value.
 WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& frame,

@@ -255,7 +255,12 @@ blocks::Polyhedron perimeter_wedge_block(const std::string& id, const TunnelFram
                            blocks::PlaneKind::FreeFace, to3(frame, nu),
                            frame.origin + to3(frame, p.a)));
     // The planes through the apex and the axis at the piece's two ends.
+    // The wedge's own two ends (the sector's edges) are bounded by the
+    // joints already: a plane there adds nothing, and where a joint
+    // contains the axis it is that joint's plane again, which the
+    // construction met as two planes 1e-9 deg apart (issue 40).
     for (int end = 0; end < 2; ++end) {
+      if ((k == 0 && end == 0) || (k + 1 == base.size() && end == 1)) continue;
       const Eigen::Vector2d here = (end == 0 ? p.a : p.b) - q;
       const Eigen::Vector2d there = (end == 0 ? p.b : p.a) - q;
       Eigen::Vector2d r(-here.y(), here.x());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "core/common/error.h"
 #include "core/tunnel/tolerances.h"
@@ -33,6 +34,73 @@ std::vector<SectionVertex> convex_hull(std::vector<SectionVertex> pts) {
   }
   h.resize(k - 1);
   return h;
+}
+
+// Distance from p to the line through a and b.
+double off_line(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double len = d.norm();
+  return len > 0 ? std::abs(cross(d, p - a)) / len : (p - a).norm();
+}
+
+// A curve drawn as many short lines (a circle as 5000 chords) is merged
+// into the chords the wedge search would draw for an arc: a vertex between
+// two of the profile's lines where the outline does not turn a corner is
+// dropped while every dropped vertex stays within sagitta_m of the chord
+// that replaces them. Convex in, convex out (dropping vertices of a convex
+// polygon keeps it convex); corners and arcs' chords are kept. Returns how
+// many vertices were dropped. (Thousands of millimetre chords gave the
+// wedges thousands of sliver pieces that no longer joined, issue 40.)
+std::size_t merge_line_chords(std::vector<SectionVertex>& pts,
+                              const std::vector<std::string>& kinds, double sagitta_m) {
+  const std::size_t n = pts.size();
+  if (n < 4) return 0;
+  auto line_edge = [&](std::size_t i) { return kinds[pts[i % n].segment] == "line"; };
+  std::vector<bool> mergeable(n);
+  std::size_t start = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    // A join where the outline runs straight on (one line drawn as two
+    // segments, a horseshoe's invert about its middle) is kept as given:
+    // it bounds no sliver, and its segments are the drawing's own.
+    const Eigen::Vector2d& a = pts[(i + n - 1) % n].p;
+    const Eigen::Vector2d& b = pts[i].p;
+    const Eigen::Vector2d& c = pts[(i + 1) % n].p;
+    const bool straight_on =
+        std::abs(cross(b - a, c - b)) <= 1e-12 * (b - a).norm() * (c - b).norm();
+    mergeable[i] = !pts[i].corner && !straight_on && line_edge(i) && line_edge(i + n - 1);
+    if (!mergeable[i] && start == n) start = i;
+  }
+  if (start == n) start = 0;      // a closed run of lines with no corner: start anywhere
+  std::vector<std::size_t> kept;  // indices into pts
+  std::size_t anchor = start, dropped = 0;
+  kept.push_back(anchor);
+  // Walk once round from the anchor; `end` indexes past it (mod n).
+  std::size_t end = anchor + 1;
+  while (end < start + n) {
+    // Extend the chord from anchor over mergeable vertices while every
+    // vertex between stays within the sagitta.
+    std::size_t last = end;  // candidate end of the chord
+    while (mergeable[last % n] && last + 1 <= start + n) {
+      const std::size_t next = last + 1;
+      bool within = true;
+      for (std::size_t k = anchor + 1; k < next && within; ++k)
+        within = off_line(pts[k % n].p, pts[anchor % n].p, pts[next % n].p) <= sagitta_m;
+      if (!within) break;
+      last = next;
+    }
+    dropped += last - end;
+    if (last < start + n) kept.push_back(last % n);
+    anchor = last;
+    end = last + 1;
+  }
+  if (dropped == 0) return 0;
+  // In the profile's order from its first kept vertex (the section's arc
+  // length, and the bolt pattern laid out along it, start there).
+  std::rotate(kept.begin(), std::min_element(kept.begin(), kept.end()), kept.end());
+  std::vector<SectionVertex> out;
+  for (std::size_t i : kept) out.push_back(pts[i]);
+  pts = std::move(out);
+  return dropped;
 }
 
 }  // namespace
@@ -113,6 +181,16 @@ SectionPolygon section_polygon(const DesignProfile& profile, double sagitta_m,
         pts[i].segment == pts[(i + pts.size() - 1) % pts.size()].segment)
       continue;
     kept.push_back(pts[i]);
+  }
+  const std::size_t drawn = kept.size();
+  const std::size_t merged = merge_line_chords(kept, out.segment_kinds, sagitta_m);
+  if (merged > 0) {
+    std::ostringstream note;
+    note << "the profile's lines between its corners are drawn as " << drawn << " chords; "
+         << merged << " of their joints, within " << sagitta_m * 1000
+         << " mm of a straight line, are merged: the section has " << kept.size()
+         << " edges (the chords' sagitta, as for an arc)";
+    out.notes.push_back(note.str());
   }
   out.vertices = std::move(kept);
   if (out.vertices.size() < 3) throw InputError(where, "the profile encloses no area");

@@ -8,7 +8,10 @@
 // The excavation is the prism of this polygon along the tunnel's axis. A
 // wedge is a block of rock outside the prism, so a re-entrant (non-convex)
 // part of a profile cannot hold a wedge face: such a profile is replaced by
-// its convex hull, and the section says so in its notes.
+// its convex hull, and the section says so in its notes. Lines drawn in
+// many pieces with no corner between them (a circle as 5000 chords) are
+// merged into chords of the given sagitta, as an arc is drawn (noted).
+// The chords keep the profile's own straight joins and corners.
 #include <string>
 #include <vector>
 

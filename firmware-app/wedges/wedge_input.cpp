@@ -7,6 +7,7 @@
 #include "core/analysis/preset_options.h"
 #include "core/common/error.h"
 #include "core/geometry/orientation.h"
+#include "core/tunnel/tolerances.h"
 #include "firmware-app/tunnel/project_drive.h"
 
 namespace rockface::app {
@@ -39,6 +40,26 @@ void frame_from_axis(WedgeRun& run, double trend_deg, double plunge_deg,
 std::pair<double, double> drive_axis(const tunnel::Alignment& a, double chainage) {
   const geometry::LineOrientation o = geometry::line_orientation(a.tangent_at(chainage));
   return {o.trend / kRad, o.plunge / kRad};
+}
+
+// A section beyond the alignment's ends would be extrapolated along the
+// end's tangent and analysed as if it were in the drive (issue 40): a
+// chainage past either end by more than a table's rounding
+// (kChainageMismatchM) is a wrong chainage or a table not yet extended,
+// and is refused naming its field.
+void require_on_alignment(const tunnel::Alignment& a, double chainage, const std::string& where) {
+  const double first = a.first_chainage(), last = a.last_chainage();
+  if (chainage >= first - tunnel::kChainageMismatchM &&
+      chainage <= last + tunnel::kChainageMismatchM)
+    return;
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(3);
+  s << "chainage " << chainage << " m lies beyond the alignment (" << first << " to " << last
+    << " m) by " << (chainage < first ? first - chainage : chainage - last)
+    << " m: a section there is not in the drive; correct the chainage or extend the "
+       "alignment's table";
+  throw InputError(where, s.str());
 }
 
 }  // namespace
@@ -106,10 +127,18 @@ WedgeRun wedge_run_from_scene(const storage::Scene& scene,
   std::optional<std::pair<double, double>> tunnel_axis;
   if (scene.tunnel) {
     std::optional<double> c = w.chainage;
-    if (!c && scene.tunnel->placement) c = scene.tunnel->placement->chainage;
-    if (!c && scene.tunnel->render) c = scene.tunnel->render->face_chainage;
+    std::string field = "wedges.chainage";
+    if (!c && scene.tunnel->placement) {
+      c = scene.tunnel->placement->chainage;
+      field = "tunnel.placement.chainage";
+    }
+    if (!c && scene.tunnel->render) {
+      c = scene.tunnel->render->face_chainage;
+      field = "tunnel.render.face_chainage";
+    }
     if (c) {
       const tunnel::Alignment a = scene.tunnel->record.alignment(scene.datum);
+      require_on_alignment(a, *c, src + ": " + field);
       origin = a.point_at(*c);
       tunnel_axis = drive_axis(a, *c);
       run.chainage = c;
@@ -190,6 +219,7 @@ WedgeRun wedge_run_from_project(storage::ProjectStore& store, storage::RecordId 
   std::optional<std::pair<double, double>> axis = settings.axis;
   const tunnel::Alignment alignment = tun->alignment(run.datum);
   if (placement) {
+    require_on_alignment(alignment, placement->chainage, where + ": placement");
     run.chainage = placement->chainage;
     origin = alignment.point_at(placement->chainage);
     if (!axis) axis = drive_axis(alignment, placement->chainage);
