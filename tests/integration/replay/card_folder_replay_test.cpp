@@ -22,6 +22,7 @@
 #include "core/common/units.h"
 #include "storage/project/model_registration.h"
 #include "storage/project/project_store.h"
+#include "tests/support/card_folder.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/temp_folders.h"
 
@@ -40,11 +41,7 @@ class CardFolder : public ::testing::Test {
     root_ = fs::temp_directory_path() / ("rockface-card-" + std::to_string(::getpid()));
     fs::remove_all(root_);
     fs::create_directories(root_);
-    const CliRun r = run_rockface("render " + std::string(ROCKFACE_SOURCE_DIR) +
-                                  "/tools/samples/tunnel-face-demo.scene.json --out " +
-                                  (root_ / "render").string());
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    truth_ = json::parse(std::ifstream(root_ / "render" / "truth.json"));
+    truth_ = test::render_sample("tunnel-face-demo.scene.json", root_);
   }
   static void TearDownTestSuite() {
     if (!::testing::UnitTest::GetInstance()->failed_test_count()) fs::remove_all(root_);
@@ -54,13 +51,7 @@ class CardFolder : public ::testing::Test {
   // when given, the visit file.
   static fs::path card(const std::string& name, const std::optional<json>& visit) {
     const fs::path dir = root_ / name;
-    fs::create_directories(dir);
-    const std::vector<int> quality{cv::IMWRITE_JPEG_QUALITY, 95};
-    EXPECT_TRUE(cv::imwrite((dir / "DSC_0001.JPG").string(),
-                            cv::imread((root_ / "render" / "left.png").string()), quality));
-    EXPECT_TRUE(cv::imwrite((dir / "DSC_0002.JPG").string(),
-                            cv::imread((root_ / "render" / "right.png").string()), quality));
-    fs::copy_file(root_ / "render" / "camera.json", dir / "camera.json");
+    test::write_card(root_ / "render", dir, "DSC_0001.JPG", "DSC_0002.JPG");
     if (visit) std::ofstream(dir / "visit.json") << visit->dump(2);
     return dir;
   }

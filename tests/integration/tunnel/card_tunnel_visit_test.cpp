@@ -21,6 +21,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "storage/project/project_store.h"
+#include "tests/support/card_folder.h"
 #include "tests/support/cli_run.h"
 
 namespace rockface {
@@ -37,19 +38,12 @@ TEST(CardTunnelVisit, PhotographsPoleAndCompassGiveAPlacedRoundWithItsOverbreak)
   fs::remove_all(root);
   fs::create_directories(root);
   const std::string samples = std::string(ROCKFACE_SOURCE_DIR) + "/tools/samples/";
-  CliRun r = run_rockface("render " + samples + "tunnel-drive.scene.json --out " +
-                          (root / "render").string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json truth = json::parse(std::ifstream(root / "render" / "truth.json"));
+  const json truth = test::render_sample("tunnel-drive.scene.json", root);
+  ASSERT_FALSE(HasFailure());
 
   const fs::path card = root / "DCIM";
-  fs::create_directories(card);
-  const std::vector<int> quality{cv::IMWRITE_JPEG_QUALITY, 95};
-  ASSERT_TRUE(cv::imwrite((card / "DSC_0417.JPG").string(),
-                          cv::imread((root / "render" / "left.png").string()), quality));
-  ASSERT_TRUE(cv::imwrite((card / "DSC_0418.JPG").string(),
-                          cv::imread((root / "render" / "right.png").string()), quality));
-  fs::copy_file(root / "render" / "camera.json", card / "camera.json");
+  test::write_card(root / "render", card, "DSC_0417.JPG", "DSC_0418.JPG");
+  ASSERT_FALSE(HasFailure());
   const json& line = truth.at("reference_line");
   std::ofstream(card / "visit.json") << json{
       {"format", "rockface-visit/1"},
@@ -59,7 +53,7 @@ TEST(CardTunnelVisit, PhotographsPoleAndCompassGiveAPlacedRoundWithItsOverbreak)
       {"preset", "fast"}}.dump(2);
 
   const fs::path project = root / "drive.rockface";
-  r = run_rockface("replay " + card.string() + " --project " + project.string());
+  CliRun r = run_rockface("replay " + card.string() + " --project " + project.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("north: compass"), std::string::npos) << r.out;
 
@@ -119,19 +113,12 @@ TEST(CardTunnelVisit, MonitoringTargetsPlaceTheVisitInSurveyCoordinates) {
   fs::remove_all(root);
   fs::create_directories(root);
   const std::string samples = std::string(ROCKFACE_SOURCE_DIR) + "/tools/samples/";
-  CliRun r = run_rockface("render " + samples + "tunnel-drive.scene.json --out " +
-                          (root / "render").string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json truth = json::parse(std::ifstream(root / "render" / "truth.json"));
+  const json truth = test::render_sample("tunnel-drive.scene.json", root);
+  ASSERT_FALSE(HasFailure());
 
   const fs::path card = root / "DCIM";
-  fs::create_directories(card);
-  const std::vector<int> quality{cv::IMWRITE_JPEG_QUALITY, 95};
-  ASSERT_TRUE(cv::imwrite((card / "DSC_0101.JPG").string(),
-                          cv::imread((root / "render" / "left.png").string()), quality));
-  ASSERT_TRUE(cv::imwrite((card / "DSC_0102.JPG").string(),
-                          cv::imread((root / "render" / "right.png").string()), quality));
-  fs::copy_file(root / "render" / "camera.json", card / "camera.json");
+  test::write_card(root / "render", card, "DSC_0101.JPG", "DSC_0102.JPG");
+  ASSERT_FALSE(HasFailure());
   // Each face trace's first end, and the last trace's other end: points on
   // rock spread over the face (5 m across, 5 m high).
   std::ofstream gcp(card / "gcp.csv");
@@ -159,7 +146,7 @@ TEST(CardTunnelVisit, MonitoringTargetsPlaceTheVisitInSurveyCoordinates) {
       {"preset", "fast"}}.dump(2);
 
   const fs::path project = root / "drive.rockface";
-  r = run_rockface("replay " + card.string() + " --project " + project.string());
+  CliRun r = run_rockface("replay " + card.string() + " --project " + project.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("scale: control points"), std::string::npos) << r.out;
   {
