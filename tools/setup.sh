@@ -22,6 +22,10 @@ packages=(
   libcairo2-dev
   # the office server (issue 24): libpq's C API, OpenSSL's SHA-256
   libpq-dev libssl-dev
+  # 3D images from elsewhere and exports the office opens (issue 43): OBJ
+  # (tinyobjloader), PCD and point-cloud tools (Open3D), meshing of imported
+  # clouds (CGAL, header-only), DXF (dxflib)
+  libtinyobjloader-dev libopen3d-dev libcgal-dev libdxflib-dev
 )
 # What only the tests and benchmarks need; `tools/setup.sh --demo` (what
 # tools/demo.sh runs) leaves them out: 65 MB less to download of ~525, and
@@ -50,6 +54,9 @@ if [ "${1:-}" != "--demo" ]; then
     # one-line patch, libltdl-dev which its configure requires); the
     # gphoto2 CLI to try the camera by hand (docs/virtual-camera.md)
     dpkg-dev make patch libltdl-dev gphoto2
+    # the exports read back by the office's own readers (issue 43): ezdxf
+    # for the DXF, CloudCompare's command line (under xvfb) for OBJ / PLY
+    python3-ezdxf cloudcompare
   )
 fi
 
