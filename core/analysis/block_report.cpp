@@ -32,6 +32,7 @@ void fill_block_report(const blocks::Polyhedron& poly, const kinematics::BlockAn
   // Vertices in the polyhedron's order: rotation reports index them.
   for (int v = 0; v < static_cast<int>(poly.vertices().size()); ++v)
     rb.vertices.push_back(poly.absolute_vertex(v));
+  for (const auto& face : poly.faces()) rb.faces.push_back(face.loop);
   rb.volume = a.mass.volume;
   rb.mass = a.mass.mass;
   rb.centroid = a.mass.centroid + poly.datum();

@@ -156,6 +156,11 @@ struct ReportBlock {
   std::string code;
   bool convex = true;
   std::vector<Eigen::Vector3d> vertices;
+  // The block's faces as loops of indices into `vertices`, counter-clockwise
+  // seen from outside: what a closed mesh of the block needs (the DXF
+  // export, the browser). Empty when the vertices are the block's loop on
+  // the free surface, and for blocks stored before faces were reported.
+  std::vector<std::vector<int>> faces;
   std::optional<double> volume, mass;
   std::optional<Eigen::Vector3d> centroid;
   std::optional<Eigen::Matrix3d> inertia;

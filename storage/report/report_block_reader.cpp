@@ -103,6 +103,28 @@ std::vector<Eigen::Vector3d> vectors(const json& obj, const char* key) {
   return out;
 }
 
+// The faces' loops, only when every loop indexes the vertices read (a
+// vertex left out above shifts the indices): a block's mesh with a face
+// missing or wrong is worse than none, so any doubt leaves all faces out.
+std::vector<std::vector<int>> face_loops(const json& obj, std::size_t vertex_count) {
+  const json* f = field(obj, "faces");
+  const json* v = field(obj, "vertices");
+  if (!f || !f->is_array() || !v || !v->is_array() || v->size() != vertex_count) return {};
+  std::vector<std::vector<int>> loops;
+  for (const auto& loop : *f) {
+    if (!loop.is_array() || loop.size() < 3) return {};
+    std::vector<int> indices;
+    for (const auto& i : loop) {
+      if (!i.is_number_integer()) return {};
+      const auto index = i.get<long long>();
+      if (index < 0 || index >= static_cast<long long>(vertex_count)) return {};
+      indices.push_back(static_cast<int>(index));
+    }
+    loops.push_back(std::move(indices));
+  }
+  return loops;
+}
+
 std::optional<analysis::ReportMode> mode_of(const json& m) {
   if (!m.is_object()) return std::nullopt;
   analysis::ReportMode mode;
@@ -223,6 +245,7 @@ analysis::ReportBlock block_from_json(const std::string& text) {
   read_string(j, "code", b.code);
   read_bool(j, "convex", b.convex);
   b.vertices = vectors(j, "vertices");
+  b.faces = face_loops(j, b.vertices.size());
   b.volume = stored_number(j, "volume");
   b.mass = stored_number(j, "mass");
   b.centroid = vector3(j, "centroid");

@@ -97,6 +97,7 @@ ordered block_json(const analysis::ReportBlock& b) {
   ordered verts = ordered::array();
   for (const auto& v : b.vertices) verts.push_back(survey_point(v));
   j["vertices"] = verts;
+  if (!b.faces.empty()) j["faces"] = b.faces;
   if (b.volume) j["volume"] = tidy(*b.volume);
   if (b.mass) j["mass"] = tidy(*b.mass);
   if (b.centroid) j["centroid"] = survey_point(*b.centroid);

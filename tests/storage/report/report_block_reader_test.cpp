@@ -40,3 +40,23 @@ TEST(ReportBlockReader, MalformedPartsAreLeftOut) {
 }
 
 }  // namespace
+
+// A block's faces (loops of vertex indices) come back only when every loop
+// indexes the vertices read: a vertex left out shifts the indices, and a
+// mesh with a wrong face is worse than none.
+TEST(ReportBlockReader, FacesComeBackOnlyWhenEveryLoopIndexesTheVertices) {
+  const std::string tetra = R"("vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]],)"
+                            R"( "faces": [[0,2,1],[0,1,3],[1,2,3],[0,3,2]])";
+  ReportBlock b = block_from_json("{" + tetra + "}");
+  ASSERT_EQ(b.faces.size(), 4u);
+  EXPECT_EQ(b.faces[2], (std::vector<int>{1, 2, 3}));
+  b = block_from_json(
+      R"({"vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "faces": [[0,2,1],[0,1,4]]})");
+  EXPECT_TRUE(b.faces.empty()) << "index 4 of 4 vertices";
+  b = block_from_json(
+      R"({"vertices": [[0,0,0],[1,0],[0,1,0],[0,0,1]], "faces": [[0,2,1],[0,1,3]]})");
+  EXPECT_EQ(b.vertices.size(), 3u);
+  EXPECT_TRUE(b.faces.empty()) << "a malformed vertex shifts the indices";
+  b = block_from_json(R"({"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1]]})");
+  EXPECT_TRUE(b.faces.empty()) << "a loop of two";
+}
