@@ -11,6 +11,7 @@
 
 #include "core/common/degrees_per_radian.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/geometry/cone.h"
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
@@ -28,14 +29,6 @@
 namespace rockface::tunnel {
 
 namespace {
-
-std::string fixed1(double v) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(1);
-  s << v;
-  return s.str();
-}
 
 kinematics::Effects load_effects(const WedgeOptions& o) {
   kinematics::Effects e;
@@ -274,10 +267,11 @@ DistinctSets distinct_sets(const std::vector<WedgeJointSet>& sets, double uncert
       // Poles, not normals: a plane and its flipped normal are one set.
       const double angle = std::atan2(ni.cross(nk).norm(), std::abs(ni.dot(nk)));
       if (angle > same) continue;
-      out.notes.push_back(
-          "sets " + sets[k].id + " and " + sets[i].id + " are one set (their poles " +
-          fixed1(angle * kDegPerRad) + " deg apart, within " + fixed1(same * kDegPerRad) +
-          " deg, the orientation uncertainty): " + sets[i].id + " is left out, with its strength");
+      out.notes.push_back("sets " + sets[k].id + " and " + sets[i].id +
+                          " are one set (their poles " + format_fixed(angle * kDegPerRad, 1) +
+                          " deg apart, within " + format_fixed(same * kDegPerRad, 1) +
+                          " deg, the orientation uncertainty): " + sets[i].id +
+                          " is left out, with its strength");
       merged = true;
       break;
     }
@@ -287,7 +281,7 @@ DistinctSets distinct_sets(const std::vector<WedgeJointSet>& sets, double uncert
     throw InputError("sets", "a wedge needs three distinct joint sets; " +
                                  std::to_string(sets.size()) + " given are " +
                                  std::to_string(out.kept.size()) + " within " +
-                                 fixed1(same * kDegPerRad) + " deg of each other");
+                                 format_fixed(same * kDegPerRad, 1) + " deg of each other");
   if (out.kept.size() > static_cast<std::size_t>(kMaxWedgeSets))
     throw InputError("sets", std::to_string(out.kept.size()) +
                                  " distinct joint sets; a wedge analysis takes at most " +
@@ -362,7 +356,7 @@ FoundWedge face_wedge(const Context& c, const SetPyramid& p,
     out.none = NoWedge{p.code, p.ids, -pv.removable.margin,
                        "opens toward the tunnel but is not removable from the face: "
                        "its pyramid reaches into the rock ahead (by " +
-                           fixed1(pv.removable.margin * kDegPerRad) + " deg)"};
+                           format_fixed(pv.removable.margin * kDegPerRad, 1) + " deg)"};
     return out;
   }
   const auto tri = face_unit_triangle(edges, frame);
@@ -443,10 +437,10 @@ Eigen::Vector2d lay_out_on_perimeter(const SectionPolygon& section,
     const auto& v = section.vertices[second];
     if ((first + 1) % m != second || !v.corner) continue;
     const std::size_t sa = section.vertices[first].segment, sb = v.segment;
-    w.corners.push_back("crosses the profile's corner at (" + fixed1(v.p.x()) + ", " +
-                        fixed1(v.p.y()) + ") m between segment " + std::to_string(sa + 1) + " (" +
-                        section.segment_kinds[sa] + ") and segment " + std::to_string(sb + 1) +
-                        " (" + section.segment_kinds[sb] + ")");
+    w.corners.push_back("crosses the profile's corner at (" + format_fixed(v.p.x(), 1) + ", " +
+                        format_fixed(v.p.y(), 1) + ") m between segment " + std::to_string(sa + 1) +
+                        " (" + section.segment_kinds[sa] + ") and segment " +
+                        std::to_string(sb + 1) + " (" + section.segment_kinds[sb] + ")");
   }
   centre /= len;
   w.outline.push_back(q);
@@ -466,7 +460,8 @@ FoundWedge perimeter_wedge(const Context& c, const SetPyramid& p,
   const PyramidSector sector = pyramid_sector(edges, frame);
   if (!sector.pointed) {
     out.none = NoWedge{p.code, p.ids, sector.margin,
-                       "seen along the axis its pyramid spans " + fixed1(sector.span * kDegPerRad) +
+                       "seen along the axis its pyramid spans " +
+                           format_fixed(sector.span * kDegPerRad, 1) +
                            " deg (180 or more): the wedge would run along the tunnel without end"};
     return out;
   }
