@@ -72,7 +72,7 @@ ui::MapVerdicts MapVerdictSession::update(const analysis::AnalysisInput& input,
     }
     ui::MapBlock m;
     for (const auto& x : b.surface_polygon) m.outline.push_back(x + state_->datum);
-    m.verdict = ui::verdict_of(r);
+    m.verdict = analysis::verdict_of(r);
     m.mode = r.mode ? r.mode->type : "none";
     m.factor_of_safety = r.fos;
     m.margin_deg =

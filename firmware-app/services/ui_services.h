@@ -86,6 +86,18 @@ class StoreFieldReportRunner final : public ui::FieldReportRunner {
                     const std::filesystem::path& pdf, Progress& progress) override;
 };
 
+// Issue 43: the visit's exports onto a USB stick, as `rockface export`
+// writes them, from its own read-only connection to the project. The sticks
+// are the drives mounted under /media or /run/media (udisks2's automount of
+// removable drives), or the folder ROCKFACE_USB_DIR names (a tablet whose
+// stick has a fixed mount point; the tests).
+class StoreExportRunner final : public ui::ExportRunner {
+ public:
+  std::vector<ui::ExportTarget> targets() override;
+  std::string write(const std::filesystem::path& project, storage::RecordId visit_id,
+                    const ui::ExportTarget& target, Progress& progress) override;
+};
+
 // source: a scene with an imaging section, a folder of captures, or empty
 // (the first DSLR libgphoto2 finds).
 class FieldCameraConnector final : public ui::CameraConnector {
@@ -112,6 +124,7 @@ struct FieldRunners {
   StoreRockMassRunner rockmass;
   FieldProposalRunner proposals;
   StoreFieldReportRunner field_report;
+  StoreExportRunner exports;
 
   ui::FieldServices services() {
     ui::FieldServices s;
@@ -125,6 +138,7 @@ struct FieldRunners {
     s.rockmass = &rockmass;
     s.proposals = &proposals;
     s.field_report = &field_report;
+    s.exports = &exports;
     return s;
   }
 };

@@ -7,70 +7,22 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/number_format.h"
+#include "storage/exchange/csv_record.h"
 #include "storage/project/project_store.h"
 
 namespace rockface::storage {
 
-namespace {
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + "\"";
-}
-
-// One record of RFC 4180 CSV (quoted fields may hold commas, quotes and
-// line breaks); false at the end of the input.
-bool read_record(std::istream& in, std::vector<std::string>& fields) {
-  fields.clear();
-  std::string field;
-  bool quoted = false, any = false;
-  for (char c; in.get(c);) {
-    any = true;
-    if (quoted) {
-      if (c == '"') {
-        if (in.peek() == '"') {
-          field += '"';
-          in.get();
-        } else {
-          quoted = false;
-        }
-      } else {
-        field += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      fields.push_back(field);
-      field.clear();
-    } else if (c == '\n') {
-      break;
-    } else if (c != '\r') {
-      field += c;
-    }
-  }
-  if (!any) return false;
-  fields.push_back(field);
-  return true;
-}
-
-}  // namespace
-
 std::vector<Joint> read_joints_csv(std::istream& in, const Eigen::Vector3d& datum,
                                    const std::string& where) {
   std::vector<std::string> header, row;
-  if (!read_record(in, header)) throw InputError(where, "empty: no header line");
+  if (!read_csv_record(in, header)) throw InputError(where, "empty: no header line");
   std::map<std::string, std::size_t> column;
   for (std::size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
   for (const char* needed : {"id", "dip", "dip_direction"})
     if (!column.count(needed))
       throw InputError(where, std::string("no column '") + needed + "' in the header");
   std::vector<Joint> joints;
-  for (int line = 2; read_record(in, row); ++line) {
+  for (int line = 2; read_csv_record(in, row); ++line) {
     if (row.size() == 1 && row[0].empty()) continue;  // blank line
     const std::string at = where + ": line " + std::to_string(line);
     auto text = [&](const char* name) -> std::string {

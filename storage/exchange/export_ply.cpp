@@ -2,6 +2,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "storage/exchange/model_texture.h"
 #include "storage/project/project_store.h"
 
 namespace rockface::storage {
@@ -18,7 +19,7 @@ void write_model_ply(std::ostream& out, const Mesh& mesh, const Eigen::Vector3d&
     view.texcoord = [&](std::size_t i) {
       return Eigen::Vector2f(mesh.texcoords[i][0], 1.0f - mesh.texcoords[i][1]);
     };
-  view.triangles = mesh.faces.size();
+  view.triangles = options.with_faces ? mesh.faces.size() : 0;
   view.triangle = [&](std::size_t f) {
     return std::array<int, 3>{mesh.faces[f][0], mesh.faces[f][1], mesh.faces[f][2]};
   };
@@ -31,17 +32,10 @@ void export_model_ply(ProjectStore& store, RecordId model_id, const std::filesys
   const ProjectInfo project = store.project();
   if (options.comment.empty())
     options.comment = "rockface model " + std::to_string(model_id) + " of project " + project.name;
-  if (model.texture_capture_id && !model.mesh.texcoords.empty()) {
-    const ImageBlob image = store.load_capture_image(*model.texture_capture_id, model.texture_side);
-    std::filesystem::path texture = file;
-    texture.replace_filename(file.stem().string() + "-texture" +
-                             (image.format == "png" ? ".png" : ".jpg"));
-    write_file_atomically(texture, [&](std::ostream& out) {
-      out.write(reinterpret_cast<const char*>(image.bytes.data()),
-                static_cast<std::streamsize>(image.bytes.size()));
-    });
-    options.texture_file = texture.filename().string();
-  }
+  // A point cloud has no faces to texture: its vertices carry their colours.
+  if (options.with_faces)
+    if (const std::string texture = write_model_texture(store, model, file); !texture.empty())
+      options.texture_file = texture;
   write_file_atomically(
       file, [&](std::ostream& out) { write_model_ply(out, model.mesh, project.datum, options); });
   if (!store.read_only())

@@ -24,6 +24,7 @@ struct PlyOptions {
   bool absolute = true;      // add the datum back (double); else datum-relative (float)
   std::string texture_file;  // written as "comment TextureFile ..." when not empty
   std::string comment;       // one line about where the model comes from
+  bool with_faces = true;    // false: the vertices alone (a point cloud)
 };
 
 struct PlyMeshView {

@@ -17,13 +17,13 @@
 #include <opencv2/core.hpp>
 
 #include "camera/camera.h"
+#include "core/analysis/block_verdict.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
 #include "core/measure/compass_reading.h"
 #include "core/measure/proposals/trace_proposals.h"
 #include "core/rockmass/classification_form.h"
 #include "storage/project/project_records.h"
-#include "ui/blocks/block_verdict.h"
 
 namespace rockface::ui {
 
@@ -88,7 +88,7 @@ class TunnelRunner {
 // full analysis.
 struct MapBlock {
   std::vector<Eigen::Vector3d> outline;  // the loop on the surface, absolute, m
-  BlockVerdict verdict = BlockVerdict::infinite;
+  analysis::BlockVerdict verdict = analysis::BlockVerdict::infinite;
   std::string mode;  // "falling" | "lifting" | "sliding" | "none", as the stored analysis
   std::optional<double> factor_of_safety;
   double margin_deg = 0;  // of the deciding verdict (finiteness, else removability)
@@ -235,6 +235,23 @@ class FieldReportRunner {
                             const std::filesystem::path& pdf, Progress& progress) = 0;
 };
 
+// Issue 43: a visit's exports for the office's tools (`rockface export`:
+// OBJ / PLY, DXF, CSV) onto a USB stick, from the Blocks and Project screens.
+struct ExportTarget {
+  std::filesystem::path folder;  // where the export's own folder is made
+  std::string label;             // what the tablet shows ("USB stick KINGSTON")
+};
+class ExportRunner {
+ public:
+  virtual ~ExportRunner() = default;
+  // The removable drives mounted now (a USB stick); empty when none is.
+  virtual std::vector<ExportTarget> targets() = 0;
+  // Every item the visit has into a folder made on `target`; returns what
+  // was written in words. Throws rockface::Error saying why.
+  virtual std::string write(const std::filesystem::path& project, storage::RecordId visit_id,
+                            const ExportTarget& target, Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
@@ -247,6 +264,8 @@ struct FieldServices {
   ProposalRunner* proposals = nullptr;             // null: the Mapping screen proposes no traces
   // Issue 27.
   FieldReportRunner* field_report = nullptr;  // null: no Field report button
+  // Issue 43.
+  ExportRunner* exports = nullptr;  // null: no Export to USB stick button
 };
 
 }  // namespace rockface::ui

@@ -6,10 +6,10 @@
 
 #include <Eigen/Core>
 
+#include "core/analysis/block_verdict.h"
 #include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
-#include "ui/blocks/block_verdict.h"
 #include "ui/widgets/format.h"
 
 namespace rockface::ui {
@@ -97,7 +97,7 @@ void add_mechanics(std::vector<std::string>& lines, const analysis::ReportBlock&
 
 std::vector<std::string> block_summary(const analysis::ReportBlock& b) {
   std::vector<std::string> lines;
-  std::string head = "Block " + b.id + ": " + verdict_name(verdict_of(b));
+  std::string head = "Block " + b.id + ": " + analysis::verdict_name(analysis::verdict_of(b));
   if (b.marginal) head += " (a verdict within its margin: check on site)";
   lines.push_back(head);
   std::string what = std::string(b.finite ? "finite" : "not finite") + ", " +

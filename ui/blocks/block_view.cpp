@@ -7,7 +7,7 @@ namespace rockface::ui {
 BlockView make_block_view(const analysis::ReportBlock& block) {
   BlockView v;
   v.block = block;
-  v.verdict = verdict_of(block);
+  v.verdict = analysis::verdict_of(block);
   v.summary = block_summary(block);
   return v;
 }

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "core/analysis/block_verdict.h"
 #include "core/analysis/report.h"
-#include "ui/blocks/block_verdict.h"
 
 namespace rockface::ui {
 
 struct BlockView {
   analysis::ReportBlock block;
-  BlockVerdict verdict = BlockVerdict::infinite;
+  analysis::BlockVerdict verdict = analysis::BlockVerdict::infinite;
   std::vector<std::string> summary;  // ui/blocks/block_summary.h: the report in words
 };
 

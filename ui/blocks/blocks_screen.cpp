@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/analysis/block_reading.h"
+#include "ui/app/export_to_stick.h"
 #include "ui/app/screens.h"
 #include "ui/blocks/motion_playback.h"
 #include "ui/blocks/wedges_view.h"
@@ -126,7 +127,7 @@ void draw_table(AppState& app) {
   const float row_height = app.targets.target_px();
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     const analysis::ReportBlock& b = blocks[i].block;
-    const BlockVerdict verdict = blocks[i].verdict;
+    const analysis::BlockVerdict verdict = blocks[i].verdict;
     ImGui::TableNextRow(0, row_height);
     if (b.marginal) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(255, 200, 120, 255));
     ImGui::TableNextColumn();
@@ -134,7 +135,7 @@ void draw_table(AppState& app) {
     if (selectable_row(app.targets, "row " + b.id, selected)) app.blocks.selected_block = i;
     label(b.id);
     ImGui::TableNextColumn();
-    label(b.marginal ? "marginal" : verdict_name(verdict),
+    label(b.marginal ? "marginal" : analysis::verdict_name(verdict),
           b.marginal ? IM_COL32(0, 0, 0, 255) : verdict_text_colour(verdict));
     ImGui::TableNextColumn();
     label(mode_cell(b));
@@ -206,6 +207,8 @@ void draw_blocks_screen(AppState& app) {
     app.blocks.rockmass.open = !app.blocks.rockmass.open;
   // Issue 27: the field report of the visit, written from the tablet.
   draw_field_report_button(app);
+  // Issue 43: the visit's exports for the office, onto a USB stick.
+  draw_export_to_stick(app);
   if (const auto& a = app.session->analysis())
     label("Analysis " + std::to_string(a->id) + " (" + a->preset + " preset, " +
           format::date_time(a->created_at) +

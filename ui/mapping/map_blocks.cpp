@@ -17,24 +17,25 @@ namespace rockface::ui {
 
 namespace {
 
-constexpr std::array<BlockVerdict, 4> kFiniteVerdicts{BlockVerdict::moves, BlockVerdict::marginal,
-                                                      BlockVerdict::holds, BlockVerdict::keyed};
+constexpr std::array<analysis::BlockVerdict, 4> kFiniteVerdicts{
+    analysis::BlockVerdict::moves, analysis::BlockVerdict::marginal, analysis::BlockVerdict::holds,
+    analysis::BlockVerdict::keyed};
 
-int count_of(const MapVerdicts& v, BlockVerdict verdict) {
+int count_of(const MapVerdicts& v, analysis::BlockVerdict verdict) {
   int n = 0;
   for (const auto& b : v.blocks) n += b.verdict == verdict;
   return n;
 }
 
 std::string blocks_in_words(const MapVerdicts& v) {
-  const int infinite = count_of(v, BlockVerdict::infinite);
+  const int infinite = count_of(v, analysis::BlockVerdict::infinite);
   const int finite = static_cast<int>(v.blocks.size()) - infinite;
   std::string s = std::to_string(finite) + (finite == 1 ? " finite block" : " finite blocks");
   std::string parts;
-  for (const BlockVerdict verdict : kFiniteVerdicts)
+  for (const analysis::BlockVerdict verdict : kFiniteVerdicts)
     if (const int n = count_of(v, verdict)) {
       parts += parts.empty() ? "" : ", ";
-      parts += std::to_string(n) + " " + verdict_name(verdict);
+      parts += std::to_string(n) + " " + analysis::verdict_name(verdict);
     }
   if (!parts.empty()) s += " (" + parts + ")";
   if (infinite) s += "; " + std::to_string(infinite) + " not finite";
@@ -108,7 +109,7 @@ void add_map_blocks_to_overlay(AppState& app) {
   for (const auto& b : v->blocks) {
     ++number;
     // A loop that is not finite is no block: counted in the panel, not drawn.
-    if (b.verdict == BlockVerdict::infinite) continue;
+    if (b.verdict == analysis::BlockVerdict::infinite) continue;
     if (const BlockOnFace* laid = laid_map_block(app, b))
       add_block_to_overlay(app.model_view.overlay(), "TB" + std::to_string(number), *laid,
                            verdict_colour(b.verdict), true, 3.0f * app.targets.scale());
@@ -131,7 +132,7 @@ std::vector<MapMarker> map_markers(AppState& app) {
   int number = 0;
   for (const auto& b : v->blocks) {
     ++number;
-    if (b.verdict == BlockVerdict::infinite) continue;
+    if (b.verdict == analysis::BlockVerdict::infinite) continue;
     const BlockOnFace* laid = laid_map_block(app, b);
     if (!laid || !laid->centre) continue;  // not on the 3D image
     if (const auto centre = app.model_view.to_screen(*laid->centre))
@@ -173,7 +174,7 @@ bool tap_map_block(AppState& app, ImVec2 tap) {
 std::string selected_map_block_in_words(const MapBlocksState& m) {
   const MapBlock* b = selected_block(m);
   if (!b) return {};
-  std::string s = "TB" + std::to_string(*m.selected) + " " + verdict_name(b->verdict);
+  std::string s = "TB" + std::to_string(*m.selected) + " " + analysis::verdict_name(b->verdict);
   std::string parts;
   if (!b->mode.empty() && b->mode != "none") parts = b->mode;
   if (b->factor_of_safety && std::isfinite(*b->factor_of_safety))
@@ -204,7 +205,7 @@ void draw_map_blocks_on_model(AppState& app) {
                        ImVec2(k.at.x + half, k.at.y + half));
     // The selected block says its verdict beside its marker.
     const std::string text =
-        is_chosen ? label + " " + std::string(verdict_name(k.block->verdict)) : label;
+        is_chosen ? label + " " + std::string(analysis::verdict_name(k.block->verdict)) : label;
     if (const auto at = label_beside(k.at, half, ImGui::CalcTextSize(text.c_str()), area))
       draw_text(draw, *at, IM_COL32(255, 255, 255, 255), text, area, TextHalo::dark);
   }
@@ -240,7 +241,8 @@ void draw_map_blocks_panel(AppState& app) {
   const float pad = 2 * ImGui::GetStyle().CellPadding.y;
   const float header = ImGui::GetTextLineHeightWithSpacing() + pad;
   const float row = std::max(ImGui::GetTextLineHeightWithSpacing(), touch_target_px()) + pad;
-  const int finite = static_cast<int>(v.blocks.size()) - count_of(v, BlockVerdict::infinite);
+  const int finite =
+      static_cast<int>(v.blocks.size()) - count_of(v, analysis::BlockVerdict::infinite);
   const float rows = std::min<float>(4.5f, static_cast<float>(std::max(finite, 1)));
   if (ImGui::BeginTable("map blocks", 4, flags, ImVec2(0, header + rows * row + pad))) {
     ImGui::TableSetupScrollFreeze(0, 1);
@@ -255,12 +257,12 @@ void draw_map_blocks_panel(AppState& app) {
     int number = 0;
     for (const auto& b : v.blocks) {
       ++number;
-      if (b.verdict == BlockVerdict::infinite) continue;
+      if (b.verdict == analysis::BlockVerdict::infinite) continue;
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       label("TB" + std::to_string(number));
       ImGui::TableNextColumn();
-      label(std::string(verdict_name(b.verdict)) + " (" +
+      label(std::string(analysis::verdict_name(b.verdict)) + " (" +
                 format::text(format::Angle{b.margin_deg}) + ")",
             verdict_text_colour(b.verdict));
       ImGui::TableNextColumn();

@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "ui/app/export_to_stick.h"
 #include "ui/app/screens.h"
 #include "ui/project/office_panel.h"
 #include "ui/project/tunnel_panel.h"
@@ -162,6 +163,8 @@ bool draw_project(AppState& app, ProjectSession& s) {
   if (s.visit()) {
     ImGui::Separator();
     draw_visit(s);
+    // Issue 43: the visit's exports for the office, onto a USB stick.
+    draw_export_to_stick(app);
   }
   return false;
 }

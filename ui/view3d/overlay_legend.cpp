@@ -16,13 +16,13 @@ namespace {
 
 constexpr ImU32 kOpenColour = IM_COL32(255, 255, 255, 255);
 
-void add_verdicts(const std::set<BlockVerdict>& verdicts, std::vector<LegendEntry>& out) {
-  for (const BlockVerdict v : verdicts) {
-    if (v == BlockVerdict::infinite)
+void add_verdicts(const std::set<analysis::BlockVerdict>& verdicts, std::vector<LegendEntry>& out) {
+  for (const analysis::BlockVerdict v : verdicts) {
+    if (v == analysis::BlockVerdict::infinite)
       out.push_back({verdict_colour(v), "not finite: no block", LegendEntry::Swatch::line});
     else
-      out.push_back(
-          {verdict_colour(v), std::string("block: ") + verdict_name(v), LegendEntry::Swatch::area});
+      out.push_back({verdict_colour(v), std::string("block: ") + analysis::verdict_name(v),
+                     LegendEntry::Swatch::area});
   }
   if (!verdicts.empty())
     out.push_back(
@@ -54,10 +54,10 @@ std::vector<LegendEntry> mapping_legend(const AppState& app) {
   if (unassigned) out.push_back({kTraceColour, "trace, no joint", LegendEntry::Swatch::line});
   if (!app.mapping.marker.points().empty())
     out.push_back({kPendingTraceColour, "trace being marked", LegendEntry::Swatch::line});
-  std::set<BlockVerdict> verdicts;
+  std::set<analysis::BlockVerdict> verdicts;
   if (const auto& v = app.mapping.blocks.verdicts)
     for (const auto& b : v->blocks)
-      if (b.verdict != BlockVerdict::infinite) verdicts.insert(b.verdict);
+      if (b.verdict != analysis::BlockVerdict::infinite) verdicts.insert(b.verdict);
   add_verdicts(verdicts, out);
   return out;
 }
@@ -65,7 +65,7 @@ std::vector<LegendEntry> mapping_legend(const AppState& app) {
 std::vector<LegendEntry> blocks_legend(const AppState& app) {
   std::vector<LegendEntry> out;
   if (!app.session) return out;
-  std::set<BlockVerdict> verdicts;
+  std::set<analysis::BlockVerdict> verdicts;
   for (const auto& b : app.session->blocks()) verdicts.insert(b.verdict);
   add_verdicts(verdicts, out);
   return out;

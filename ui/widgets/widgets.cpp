@@ -8,34 +8,34 @@
 
 namespace rockface::ui {
 
-ImU32 verdict_colour(BlockVerdict verdict) {
+ImU32 verdict_colour(analysis::BlockVerdict verdict) {
   switch (verdict) {
-    case BlockVerdict::moves:
+    case analysis::BlockVerdict::moves:
       return IM_COL32(230, 20, 20, 255);
-    case BlockVerdict::marginal:
+    case analysis::BlockVerdict::marginal:
       return IM_COL32(255, 140, 0, 255);
-    case BlockVerdict::holds:
+    case analysis::BlockVerdict::holds:
       return IM_COL32(240, 220, 0, 255);
-    case BlockVerdict::keyed:
+    case analysis::BlockVerdict::keyed:
       return IM_COL32(20, 180, 60, 255);
-    case BlockVerdict::infinite:
+    case analysis::BlockVerdict::infinite:
       return IM_COL32(150, 150, 150, 255);
   }
   return IM_COL32(0, 0, 0, 255);
 }
 
-ImU32 verdict_text_colour(BlockVerdict verdict) {
+ImU32 verdict_text_colour(analysis::BlockVerdict verdict) {
   if (ImGui::GetStyleColorVec4(ImGuiCol_WindowBg).x < 0.5f) return verdict_colour(verdict);
   switch (verdict) {
-    case BlockVerdict::moves:
+    case analysis::BlockVerdict::moves:
       return IM_COL32(190, 0, 0, 255);
-    case BlockVerdict::marginal:
+    case analysis::BlockVerdict::marginal:
       return IM_COL32(180, 80, 0, 255);
-    case BlockVerdict::holds:
+    case analysis::BlockVerdict::holds:
       return IM_COL32(120, 100, 0, 255);
-    case BlockVerdict::keyed:
+    case analysis::BlockVerdict::keyed:
       return IM_COL32(0, 120, 40, 255);
-    case BlockVerdict::infinite:
+    case analysis::BlockVerdict::infinite:
       return IM_COL32(90, 90, 90, 255);
   }
   return IM_COL32(0, 0, 0, 255);

@@ -31,10 +31,10 @@ inline float touch_target_px_at(float dpi) {
   return kTouchTargetMm / 25.4f * dpi;
 }
 
-ImU32 verdict_colour(BlockVerdict verdict);
+ImU32 verdict_colour(analysis::BlockVerdict verdict);
 // The verdict's colour for text on the current theme's background (the
 // yellow of "holds" is unreadable on daylight white: darker there).
-ImU32 verdict_text_colour(BlockVerdict verdict);
+ImU32 verdict_text_colour(analysis::BlockVerdict verdict);
 // Colour of traces marked on the model (magenta: no rock has it).
 constexpr ImU32 kTraceColour = IM_COL32(255, 0, 200, 255);
 constexpr ImU32 kPendingTraceColour = IM_COL32(0, 170, 255, 255);

@@ -55,7 +55,7 @@ void expect_same_as_full_analysis(const fs::path& file, storage::RecordId visit,
   ASSERT_EQ(map.blocks.size(), blocks.size());
   for (size_t k = 0; k < blocks.size(); ++k) {
     SCOPED_TRACE("block " + blocks[k].id);
-    EXPECT_EQ(map.blocks[k].verdict, ui::verdict_of(blocks[k]));
+    EXPECT_EQ(map.blocks[k].verdict, analysis::verdict_of(blocks[k]));
     if (!blocks[k].finite) continue;
     EXPECT_EQ(map.blocks[k].mode, blocks[k].mode ? blocks[k].mode->type : "none");
     ASSERT_EQ(map.blocks[k].factor_of_safety.has_value(), blocks[k].fos.has_value());
@@ -78,7 +78,7 @@ TEST(MapBlocks, EachSavedTraceUpdatesOnlyTheTouchedRegionsToTheFullAnalysisVerdi
   EXPECT_EQ(first.reused, 0) << "a new map computes every region";
   ASSERT_GT(first.blocks.size(), 10u);
   int finite = 0;
-  for (const auto& b : first.blocks) finite += b.verdict != ui::BlockVerdict::infinite;
+  for (const auto& b : first.blocks) finite += b.verdict != analysis::BlockVerdict::infinite;
   EXPECT_GT(finite, 0);
   expect_same_as_full_analysis(file, visit, first);
   for (size_t k = 57; k < face.traces.size(); ++k) {

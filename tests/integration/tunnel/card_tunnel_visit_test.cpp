@@ -11,6 +11,7 @@
 // record (truth.json), not anything the route computes.
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +24,7 @@
 #include "storage/project/project_store.h"
 #include "tests/support/card_folder.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/dxf_reading.h"
 
 namespace rockface {
 namespace {
@@ -31,6 +33,42 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using test::CliRun;
 using test::run_rockface;
+
+double shoelace(const std::vector<std::array<double, 2>>& p) {
+  double twice = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto& a = p[i];
+    const auto& b = p[(i + 1) % p.size()];
+    twice += a[0] * b[1] - b[0] * a[1];
+  }
+  return std::abs(twice) / 2;
+}
+
+// The area a rockface-tunnel-profile/1 file encloses, from its segments
+// (lines "from"/"to", arcs "centre"/"radius"/"start_deg"/"end_deg")
+// walked in 0.5 mm steps: written here from the file's format, so that the
+// export is checked against the file, not against rockface's own profile.
+double profile_file_area(const std::string& file) {
+  const json profile = json::parse(std::ifstream(file));
+  std::vector<std::array<double, 2>> p;
+  for (const auto& s : profile.at("segments")) {
+    if (s.contains("line")) {
+      const auto& a = s["line"]["from"];
+      p.push_back({a[0].get<double>(), a[1].get<double>()});
+    } else {
+      const auto& arc = s.at("arc");
+      const double cx = arc["centre"][0], cy = arc["centre"][1], r = arc["radius"];
+      const double a0 = arc["start_deg"].get<double>() * M_PI / 180;
+      const double a1 = arc["end_deg"].get<double>() * M_PI / 180;
+      const int n = std::max(1, static_cast<int>(std::abs(a1 - a0) * r / 0.0005));
+      for (int k = 0; k < n; ++k) {
+        const double a = a0 + (a1 - a0) * k / n;
+        p.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+      }
+    }
+  }
+  return shoelace(p);
+}
 
 TEST(CardTunnelVisit, PhotographsPoleAndCompassGiveAPlacedRoundWithItsOverbreak) {
   const fs::path root =
@@ -97,6 +135,54 @@ TEST(CardTunnelVisit, PhotographsPoleAndCompassGiveAPlacedRoundWithItsOverbreak)
   // end, its volume is well above 0.1 m3 (the scene route's test asserts
   // the same bound, tunnel_round_test.cpp).
   EXPECT_GT(j.at("overbreak_volume_m3").get<double>(), 0.1);
+
+  // Issue 43: the round exported for the office, read back by ezdxf: the
+  // design outline and the measured one at every cross-section of the round.
+  const fs::path exported = root / "export";
+  r = run_rockface("export " + project.string() + " --visit 1 --what profile --out " +
+                   exported.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const test::DxfReading dxf = test::read_dxf(exported / "visit-1.dxf");
+  ASSERT_EQ(dxf.exit_code, 0) << dxf.output;
+  // The design's area from the profile file itself, not from rockface.
+  const double design_area = profile_file_area(samples + "tunnel-drive.profile.json");
+  const double from = j.at("round").at("from_chainage").get<double>();
+  const double to = j.at("round").at("to_chainage").get<double>();
+  int design = 0, measured = 0;
+  for (const auto& e : dxf.drawing.at("entities")) {
+    const std::string layer = e.at("layer");
+    ASSERT_EQ(e.at("kind"), "polyline3d") << layer;
+    // The alignment runs due north from (512340, 5211800) at elevation 410
+    // (tunnel-drive.alignment.csv): the section at chainage c is the plane
+    // y = 5211800 + c, with u = x - 512340 (right, looking north) and
+    // v = z - 410. Written to 16 digits: 1e-6 m is rounding.
+    const auto& points = e.at("points");
+    const double chainage = points.at(0).at(1).get<double>() - 5211800;
+    EXPECT_GE(chainage, from - 1e-6) << layer;
+    EXPECT_LE(chainage, to + 1e-6) << layer;
+    std::vector<std::array<double, 2>> uv;
+    for (const auto& p : points) {
+      EXPECT_NEAR(p.at(1).get<double>() - 5211800, chainage, 1e-6) << layer;
+      uv.push_back({p.at(0).get<double>() - 512340, p.at(2).get<double>() - 410});
+    }
+    if (layer == "PROFILE_DESIGN") {
+      ++design;
+      EXPECT_TRUE(e.at("closed").get<bool>());
+      // Chords every 2 cm on arcs of 3 m radius or more lose
+      // perimeter x c^2 / (12 r) = 20 x 4e-4 / 36 = 2e-4 m2.
+      EXPECT_NEAR(shoelace(uv), design_area, 1e-3) << "at chainage " << chainage;
+    } else {
+      EXPECT_EQ(layer, "PROFILE_MEASURED");
+      ++measured;
+    }
+  }
+  EXPECT_EQ(design, static_cast<int>(j.at("sections").size()));
+  EXPECT_GT(measured, 0);
+  // The over- and underbreak per section as CSV: a row per section.
+  std::ifstream csv(exported / "visit-1-profile.csv");
+  int rows = -1;  // the header
+  for (std::string line; std::getline(csv, line);) rows += !line.empty();
+  EXPECT_EQ(rows, design);
   fs::remove_all(root);
 }
 
