@@ -1,8 +1,8 @@
-#include "ui/blocks/block_verdict.h"
+#include "core/analysis/block_verdict.h"
 
 #include <string>
 
-namespace rockface::ui {
+namespace rockface::analysis {
 
 const char* verdict_name(BlockVerdict verdict) {
   switch (verdict) {
@@ -30,4 +30,4 @@ BlockVerdict verdict_of(const analysis::ReportBlock& b) {
   return BlockVerdict::holds;
 }
 
-}  // namespace rockface::ui
+}  // namespace rockface::analysis

@@ -1,10 +1,10 @@
 #pragma once
 // The one word that sums up an analysed block (it picks the block's colour on
-// the Blocks screen and the model), decided from the block's verdict: its
-// finiteness, removability, mode and factor of safety.
+// the Blocks screen and the model, and its layer in the exports), decided from the block's verdict:
+// its finiteness, removability, mode and factor of safety.
 #include "core/analysis/report.h"
 
-namespace rockface::ui {
+namespace rockface::analysis {
 
 // Ordered from most to least alarming.
 enum class BlockVerdict {
@@ -19,4 +19,4 @@ const char* verdict_name(BlockVerdict verdict);
 
 BlockVerdict verdict_of(const analysis::ReportBlock& block);
 
-}  // namespace rockface::ui
+}  // namespace rockface::analysis
