@@ -23,6 +23,11 @@ constexpr int kDropped = -2;  // in a region too small or not planar: no seed, j
 // gate is rough, not planar: 5 % beyond 4 sigma means a scatter of at least
 // twice the stated point precision (2 sigma of a normal law is its 4.6 %).
 constexpr double kMaxOffPlaneShare = 0.05;
+// Facets this many triangles apart (across a step of dense matching's
+// terraces and the unfacetted band beside it: 10-25 cm at the standard
+// preset's point spacing) are neighbours that may be merged when they are
+// one plane.
+constexpr int kTerraceHops = 30;
 
 // The running plane of a growing region: area-weighted sums of the
 // triangles' centres (for the best-fit plane) and normals (the mean normal
@@ -107,6 +112,174 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
   std::vector<Facet> facets;
   const double edge = mesh.median_edge_length();
   std::size_t done = 0;
+  // A region measured as an area picked by hand: its vertices' plane, the
+  // planarity, sliver, roughness and relief tests (plane.problem says which
+  // failed; empty when it is a facet), area, centroid and margins.
+  const auto measured = [&](const std::vector<int>& tris) {
+    Facet f;
+    std::vector<Eigen::Vector3d> points;
+    for (int t : tris)
+      for (int v : mesh.triangles[t])
+        if (!vertex_seen[v]) {
+          vertex_seen[v] = 1;
+          points.push_back(mesh.vertices[v]);
+        }
+    for (int t : tris)
+      for (int v : mesh.triangles[t]) vertex_seen[v] = 0;
+    f.plane = plane_of_points(points, settings);
+    f.plane.problem =
+        planarity_problem(f.plane, settings, options.planarity_in_sigmas, "the facet");
+    const double sigma_deg = rad_to_deg(f.plane.sigma);
+    // The area measurement's sliver test: a region no wider than the noise
+    // (a band along a crease, where the smoothed normals turn from one
+    // plane to the next) is a line, not a plane.
+    if (f.plane.problem.empty() && f.plane.fit.relief() < kMinReliefInSigmas * settings.point_sigma)
+      f.plane.problem = "orientation unknown: the region is a sliver (" +
+                        format_fixed(f.plane.fit.relief() * 1000, 0) + " mm wide RMS)";
+    // The growing kept triangles near its running plane: on a surface
+    // rougher than the point precision it picks its way between the rest,
+    // and the points it keeps can pass the RMS test only because the others
+    // were left out. Their tail gives it away: under the stated precision a
+    // point lies beyond the 4-sigma gate with odds of 6e-5.
+    std::size_t off = 0;
+    for (const auto& p : points) off += std::abs(f.plane.fit.plane().signed_distance(p)) > gate;
+    const double off_share = static_cast<double>(off) / static_cast<double>(points.size());
+    if (f.plane.problem.empty() && off_share > kMaxOffPlaneShare)
+      f.plane.problem = "orientation unknown: the surface is rougher than the point precision (" +
+                        format_fixed(100 * off_share, 0) + " % of its points more than " +
+                        format_fixed(options.planarity_in_sigmas, 1) +
+                        " point sigmas off its plane)";
+    if (f.plane.problem.empty() && sigma_deg > settings.max_plane_sigma_deg)
+      f.plane.problem = "orientation unknown: too little relief for a reliable plane (" +
+                        format_fixed(sigma_deg, 1) + " deg)";
+    if (!f.plane.problem.empty()) return f;
+    f.plane.known = true;
+    double area = 0;
+    Eigen::Vector3d sum_centre = Eigen::Vector3d::Zero();
+    for (int t : tris) {
+      area += graph.areas[t];
+      sum_centre += graph.areas[t] * graph.centres[t];
+    }
+    f.area = area;
+    f.centroid = sum_centre / area;
+    f.triangles = tris.size();
+    f.vertices = points.size();
+    f.planarity_margin_sigmas =
+        options.planarity_in_sigmas - f.plane.fit.rms_off_plane() / settings.point_sigma;
+    f.orientation_margin_deg = settings.max_plane_sigma_deg - sigma_deg;
+    f.marginal = f.planarity_margin_sigmas < 1.0 || f.orientation_margin_deg < sigma_deg;
+    f.mesh_triangles = tris;
+    return f;
+  };
+
+  // Dense matching's terraces (issue 38): on a face seen nearly square,
+  // sub-pixel disparities lock to whole pixels, and a plane comes out as
+  // strips a few pixels wide, each tilted a few degrees the same way, with a
+  // step between them where the normals turn further than the tolerance:
+  // the growing stops at every step and gives one facet per strip, tilted
+  // as the strips are. Facets within kTerraceHops triangles of each other
+  // (across the steps) whose normals agree within the tolerance and whose
+  // points together pass the planarity tests are one plane: merged (most
+  // alike first), then the steps between them, whose corners lie within
+  // the gate of the merged plane, taken in. The merged plane is the
+  // terraces' mean: the true plane.
+  const auto merge_terraces = [&](std::vector<Facet>& found, std::vector<int>& owner) {
+    const int n = static_cast<int>(found.size());
+    if (n < 2) return;
+    std::vector<std::vector<int>> near(static_cast<std::size_t>(n));
+    std::vector<int> stamp(graph.size(), -1), depth(graph.size(), 0), frontier;
+    for (int i = 0; i < n; ++i) {
+      frontier.clear();
+      for (int t : found[i].mesh_triangles) {
+        stamp[t] = i;
+        depth[t] = 0;
+        frontier.push_back(t);
+      }
+      for (std::size_t head = 0; head < frontier.size(); ++head) {
+        const int t = frontier[head];
+        for (const int k : graph.neighbours[t]) {
+          if (k < 0 || stamp[k] == i || !graph.usable(static_cast<std::size_t>(k))) continue;
+          stamp[k] = i;
+          if (owner[k] >= 0) {
+            if (owner[k] > i) near[i].push_back(owner[k]);
+          } else if (depth[t] < kTerraceHops) {
+            depth[k] = depth[t] + 1;
+            frontier.push_back(k);
+          }
+        }
+      }
+      std::sort(near[i].begin(), near[i].end());
+      near[i].erase(std::unique(near[i].begin(), near[i].end()), near[i].end());
+    }
+    struct Pair {
+      double angle;
+      int a, b;
+    };
+    std::vector<Pair> pairs;
+    for (int i = 0; i < n; ++i)
+      for (int j : near[i]) {
+        const double a = std::acos(std::clamp(
+            std::abs(found[i].plane.fit.normal.dot(found[j].plane.fit.normal)), 0.0, 1.0));
+        if (a <= angle) pairs.push_back({a, i, j});
+      }
+    if (pairs.empty()) return;
+    std::stable_sort(pairs.begin(), pairs.end(),
+                     [](const Pair& x, const Pair& y) { return x.angle < y.angle; });
+    std::vector<int> root(static_cast<std::size_t>(n));
+    std::iota(root.begin(), root.end(), 0);
+    std::vector<std::vector<int>> group(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) group[i] = found[i].mesh_triangles;
+    const auto find = [&](int x) {
+      while (root[x] != x) x = root[x] = root[root[x]];
+      return x;
+    };
+    bool merged_any = false;
+    for (const Pair& p : pairs) {
+      const int ra = find(p.a), rb = find(p.b);
+      if (ra == rb) continue;
+      std::vector<int> both = group[ra];
+      both.insert(both.end(), group[rb].begin(), group[rb].end());
+      if (!measured(both).plane.problem.empty()) continue;
+      root[rb] = ra;
+      group[ra] = std::move(both);
+      group[rb].clear();
+      merged_any = true;
+    }
+    if (!merged_any) return;
+    std::vector<Facet> kept;
+    for (int i = 0; i < n; ++i) {
+      if (find(i) != i) continue;
+      if (group[i].size() == found[i].mesh_triangles.size()) {
+        kept.push_back(std::move(found[i]));
+        continue;
+      }
+      Facet f = measured(group[i]);
+      // The steps: triangles of no facet next to the merged plane's, all
+      // three corners within the gate of it.
+      const Eigen::Vector3d normal = f.plane.fit.normal;
+      const Eigen::Vector3d centre = f.plane.fit.centroid;
+      std::vector<int> tris = group[i];
+      for (int t : tris) owner[t] = -3;  // in this group
+      for (std::size_t head = 0; head < tris.size(); ++head)
+        for (const int k : graph.neighbours[tris[head]]) {
+          if (k < 0 || owner[k] >= 0 || owner[k] == -3 ||
+              !graph.usable(static_cast<std::size_t>(k)))
+            continue;
+          bool within = true;
+          for (const int v : mesh.triangles[k])
+            within = within && std::abs(normal.dot(mesh.vertices[v] - centre)) <= gate;
+          if (!within) continue;
+          owner[k] = -3;
+          tris.push_back(k);
+        }
+      Facet with_steps = measured(tris);
+      kept.push_back(with_steps.plane.problem.empty() ? std::move(with_steps) : std::move(f));
+    }
+    found = std::move(kept);
+    for (std::size_t i = 0; i < found.size(); ++i)
+      for (int t : found[i].mesh_triangles) owner[t] = static_cast<int>(i);
+  };
+
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     const int seed = seeds[s];
     if ((s & 0xfff) == 0)
@@ -165,61 +338,16 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
       for (int t : members) label[t] = kDropped;
       continue;
     }
-    // Measure the region as an area picked by hand: its vertices' plane.
-    std::vector<Eigen::Vector3d> points;
-    for (int t : members)
-      for (int v : mesh.triangles[t])
-        if (!vertex_seen[v]) {
-          vertex_seen[v] = 1;
-          points.push_back(mesh.vertices[v]);
-        }
-    for (int t : members)
-      for (int v : mesh.triangles[t]) vertex_seen[v] = 0;
-    Facet f;
-    f.plane = plane_of_points(points, settings);
-    f.plane.problem =
-        planarity_problem(f.plane, settings, options.planarity_in_sigmas, "the facet");
-    const double sigma_deg = rad_to_deg(f.plane.sigma);
-    // The area measurement's sliver test: a region no wider than the noise
-    // (a band along a crease, where the smoothed normals turn from one
-    // plane to the next) is a line, not a plane.
-    if (f.plane.problem.empty() && f.plane.fit.relief() < kMinReliefInSigmas * settings.point_sigma)
-      f.plane.problem = "orientation unknown: the region is a sliver (" +
-                        format_fixed(f.plane.fit.relief() * 1000, 0) + " mm wide RMS)";
-    // The growing kept triangles near its running plane: on a surface
-    // rougher than the point precision it picks its way between the rest,
-    // and the points it keeps can pass the RMS test only because the others
-    // were left out. Their tail gives it away: under the stated precision a
-    // point lies beyond the 4-sigma gate with odds of 6e-5.
-    std::size_t off = 0;
-    for (const auto& p : points) off += std::abs(f.plane.fit.plane().signed_distance(p)) > gate;
-    const double off_share = static_cast<double>(off) / static_cast<double>(points.size());
-    if (f.plane.problem.empty() && off_share > kMaxOffPlaneShare)
-      f.plane.problem = "orientation unknown: the surface is rougher than the point precision (" +
-                        format_fixed(100 * off_share, 0) + " % of its points more than " +
-                        format_fixed(options.planarity_in_sigmas, 1) +
-                        " point sigmas off its plane)";
-    if (f.plane.problem.empty() && sigma_deg > settings.max_plane_sigma_deg)
-      f.plane.problem = "orientation unknown: too little relief for a reliable plane (" +
-                        format_fixed(sigma_deg, 1) + " deg)";
+    Facet f = measured(members);
     if (!f.plane.problem.empty()) {
       ++out.rejected_regions;
       out.rejected_area += plane.weight;
       for (int t : members) label[t] = kDropped;
       continue;
     }
-    f.plane.known = true;
-    f.area = plane.weight;
-    f.centroid = plane.sum_centre / plane.weight;
-    f.triangles = members.size();
-    f.vertices = points.size();
-    f.planarity_margin_sigmas =
-        options.planarity_in_sigmas - f.plane.fit.rms_off_plane() / settings.point_sigma;
-    f.orientation_margin_deg = settings.max_plane_sigma_deg - sigma_deg;
-    f.marginal = f.planarity_margin_sigmas < 1.0 || f.orientation_margin_deg < sigma_deg;
-    f.mesh_triangles = members;
     facets.push_back(std::move(f));
   }
+  merge_terraces(facets, label);
   progress.step("facets: outlines", 0.95);
   std::stable_sort(facets.begin(), facets.end(),
                    [](const Facet& a, const Facet& b) { return a.area > b.area; });

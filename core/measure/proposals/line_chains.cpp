@@ -11,22 +11,95 @@ namespace {
 constexpr int kDx[8] = {1, 0, -1, 0, 1, -1, -1, 1};  // 4-neighbours first
 constexpr int kDy[8] = {0, 1, 0, -1, 1, 1, -1, -1};
 
-// The direction out of a chain at one end, from the pixel a few steps in
-// (a single pixel step only says one of eight directions).
+// The direction out of a chain at one end, from the pixels kEndSkip to
+// kEndReach steps in: a single pixel step only says one of eight directions,
+// and the last pixels before a junction bend toward the other line (the
+// skeletons of two crossing lines merge over a line width or two).
+constexpr std::size_t kEndSkip = 6, kEndReach = 30;
 cv::Point2f end_direction(const Chain& c, bool at_front) {
   const std::size_t n = c.size();
-  const std::size_t k = std::min<std::size_t>(8, n - 1);
-  const cv::Point2f end = at_front ? c.front() : c.back();
-  const cv::Point2f inner = at_front ? c[k] : c[n - 1 - k];
-  cv::Point2f d = end - inner;
+  const std::size_t reach = std::min<std::size_t>(kEndReach, n - 1);
+  const std::size_t skip = std::min<std::size_t>(kEndSkip, reach / 3);
+  const cv::Point2f outer = at_front ? c[skip] : c[n - 1 - skip];
+  const cv::Point2f inner = at_front ? c[reach] : c[n - 1 - reach];
+  cv::Point2f d = outer - inner;
   const float len = std::hypot(d.x, d.y);
   return len > 0 ? d / len : cv::Point2f(0, 0);
+}
+
+// Distance of `p` from the line through `q` along the unit direction `t`.
+double off_line(cv::Point2f p, cv::Point2f q, cv::Point2f t) {
+  const cv::Point2f d = p - q;
+  return std::abs(d.x * t.y - d.y * t.x);
 }
 
 double angle_deg(cv::Point2f a, cv::Point2f b) {
   const double la = std::hypot(a.x, a.y), lb = std::hypot(b.x, b.y);
   if (la == 0 || lb == 0) return 180;
   return std::acos(std::clamp((a.x * b.x + a.y * b.y) / (la * lb), -1.0, 1.0)) * 180 / M_PI;
+}
+
+// The line image made 8-thin: Zhang-Suen thinning leaves a line that rises
+// at a shallow angle as a 4-connected staircase, whose corner pixels have
+// three neighbours and so read as junctions, cutting the line into pieces
+// of one or two pixels that are dropped as speckle. A corner pixel whose
+// removal keeps its neighbours connected (a simple point: Yokoi's 8-
+// connectivity number 1) and that has at least three neighbours (not a
+// line's end) is removed, in one raster pass on the image as it is thinned.
+cv::Mat eight_thin(const cv::Mat& lines) {
+  cv::Mat out;
+  cv::compare(lines, 0, out, cv::CMP_NE);
+  const int w = out.cols, h = out.rows;
+  // Neighbours in the order E, NE, N, NW, W, SW, S, SE (y down).
+  constexpr int kRingX[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+  constexpr int kRingY[8] = {0, -1, -1, -1, 0, 1, 1, 1};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!out.at<std::uint8_t>(y, x)) continue;
+      int on[8], count = 0;
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + kRingX[k], ny = y + kRingY[k];
+        on[k] = nx >= 0 && ny >= 0 && nx < w && ny < h && out.at<std::uint8_t>(ny, nx) != 0;
+        count += on[k];
+      }
+      if (count < 3) continue;
+      int connectivity = 0;
+      for (int k = 0; k < 8; k += 2)
+        connectivity += (1 - on[k]) - (1 - on[k]) * (1 - on[k + 1]) * (1 - on[(k + 2) % 8]);
+      if (connectivity == 1) out.at<std::uint8_t>(y, x) = 0;
+    }
+  return out;
+}
+
+// A chain cut where it turns by more than max_turn_deg over kCornerWindow
+// pixels on either side (the sharpest pixel of each such turn): where two
+// lines cross, the skeleton of one may run on into the other without a
+// junction pixel, and the two arms have to be free to join their own lines.
+constexpr std::size_t kCornerWindow = 12;
+std::vector<Chain> cut_at_corners(const Chain& c, double max_turn_deg) {
+  const std::size_t n = c.size();
+  if (n < 2 * kCornerWindow + 1) return {c};
+  std::vector<double> turn(n, 0.0);
+  for (std::size_t k = kCornerWindow; k + kCornerWindow < n; ++k)
+    turn[k] = angle_deg(c[k] - c[k - kCornerWindow], c[k + kCornerWindow] - c[k]);
+  std::vector<std::size_t> corners;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (turn[k] <= max_turn_deg) continue;
+    std::size_t best = k;
+    while (k + 1 < n && turn[k + 1] > max_turn_deg)
+      if (turn[++k] > turn[best]) best = k;
+    corners.push_back(best);
+  }
+  std::vector<Chain> out(1);
+  std::size_t next_corner = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    out.back().push_back(c[k]);
+    if (next_corner < corners.size() && corners[next_corner] == k) {
+      out.push_back({c[k]});  // the corner pixel ends one piece and starts the next
+      ++next_corner;
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -38,7 +111,8 @@ double chain_length(const Chain& chain) {
   return s;
 }
 
-std::vector<Chain> trace_chains(const cv::Mat& lines, int min_pixels) {
+std::vector<Chain> trace_chains(const cv::Mat& line_image, int min_pixels) {
+  const cv::Mat lines = eight_thin(line_image);
   const int w = lines.cols, h = lines.rows;
   auto on = [&](int x, int y) {
     return x >= 0 && y >= 0 && x < w && y < h && lines.at<std::uint8_t>(y, x) != 0;
@@ -100,33 +174,55 @@ std::vector<Chain> trace_chains(const cv::Mat& lines, int min_pixels) {
   return chains;
 }
 
-std::vector<Chain> join_chains(std::vector<Chain> chains, double max_gap_px, double max_turn_deg) {
+std::vector<Chain> join_chains(std::vector<Chain> traced, double max_gap_px, double max_turn_deg) {
+  std::vector<Chain> chains;
+  for (const Chain& c : traced)
+    for (Chain& piece : cut_at_corners(c, max_turn_deg)) chains.push_back(std::move(piece));
   struct Link {
     double score;
     int a, b;  // end ids: 2 * chain + (0 front, 1 back)
   };
   const int n = static_cast<int>(chains.size());
+  // Where two lines cross at a small angle their skeletons merge into one
+  // short piece between two junctions: that piece is both lines', so it
+  // links to neither, and each line's arms are joined across it (up to
+  // kAcrossJunction gaps, when they run on in one straight line).
+  const double bridge_px = max_gap_px;
+  constexpr double kAcrossJunction = 3.0;
+  constexpr double kStraightTurnDeg = 10.0;
+  constexpr double kStraightOffsetPx = 2.0;
+  std::vector<bool> linkable(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+    linkable[i] = chains[i].size() >= 2 && chain_length(chains[i]) > bridge_px;
   std::vector<Link> links;
   for (int i = 0; i < n; ++i) {
-    if (chains[i].size() < 2) continue;
+    if (!linkable[i]) continue;
     for (int j = i + 1; j < n; ++j) {
-      if (chains[j].size() < 2) continue;
+      if (!linkable[j]) continue;
       for (int ei = 0; ei < 2; ++ei)
         for (int ej = 0; ej < 2; ++ej) {
           const cv::Point2f pi = ei == 0 ? chains[i].front() : chains[i].back();
           const cv::Point2f pj = ej == 0 ? chains[j].front() : chains[j].back();
           const cv::Point2f gap = pj - pi;
           const double len = std::hypot(gap.x, gap.y);
-          if (len > max_gap_px) continue;
+          if (len > kAcrossJunction * max_gap_px) continue;
           const cv::Point2f ti = end_direction(chains[i], ei == 0);
           const cv::Point2f tj = end_direction(chains[j], ej == 0);
           const double turn = angle_deg(ti, -tj);
           if (turn > max_turn_deg) continue;
-          // Across a real gap the bridge itself must run on the same way.
-          if (len > 2.5 &&
-              (angle_deg(ti, gap) > max_turn_deg || angle_deg(-tj, gap) > max_turn_deg))
+          // How far each end lies off the other's line: a line that runs on
+          // through a junction is one straight line on both sides.
+          const double offset = std::max(off_line(pj, pi, ti), off_line(pi, pj, tj));
+          const bool straight =
+              turn <= kStraightTurnDeg && offset <= std::max(kStraightOffsetPx, 0.1 * len);
+          if (len > max_gap_px && !straight) continue;
+          // Across a real gap the bridge itself must run on the same way:
+          // each end within the turn of the other's line.
+          if (offset > std::max(kStraightOffsetPx, len * std::tan(max_turn_deg * M_PI / 180)))
             continue;
-          links.push_back({len + turn / 10.0, 2 * i + ei, 2 * j + ej});
+          // Straightest first: a degree of turn weighs as a pixel off line
+          // and as two pixels of gap.
+          links.push_back({turn + offset + 0.5 * len, 2 * i + ei, 2 * j + ej});
         }
     }
   }

@@ -212,11 +212,46 @@ std::vector<std::vector<cv::Point2f>> surface_runs(
 
 std::vector<std::vector<cv::Point2f>> split_at_turns(
     const std::vector<cv::Point2f>& run, double split_turn_deg,
-    const std::function<bool(const std::vector<cv::Point2f>&)>& one_plane) {
-  std::vector<std::vector<cv::Point2f>> pieces{{run[0], run[1]}};
-  for (std::size_t k = 2; k < run.size(); ++k) {
-    if (turn_deg(run[k - 2], run[k - 1], run[k]) > split_turn_deg) pieces.push_back({run[k - 1]});
+    const std::function<bool(const std::vector<cv::Point2f>&)>& one_plane, double window_px) {
+  // Arc length to each vertex, and the point at arc length t (clamped).
+  std::vector<double> arc(run.size(), 0.0);
+  for (std::size_t k = 1; k < run.size(); ++k)
+    arc[k] = arc[k - 1] + std::hypot(run[k].x - run[k - 1].x, run[k].y - run[k - 1].y);
+  const auto at = [&](double t) {
+    if (t <= 0) return run.front();
+    if (t >= arc.back()) return run.back();
+    const std::size_t k = static_cast<std::size_t>(std::upper_bound(arc.begin(), arc.end(), t) -
+                                                   arc.begin());  // arc[k-1] <= t < arc[k]
+    const double f = (t - arc[k - 1]) / std::max(arc[k] - arc[k - 1], 1e-9);
+    return run[k - 1] + static_cast<float>(f) * (run[k] - run[k - 1]);
+  };
+  // The turn at each vertex, between the directions over window_px on
+  // either side (the neighbouring vertices without a window).
+  std::vector<double> turn(run.size(), 0.0);
+  for (std::size_t k = 1; k + 1 < run.size(); ++k)
+    turn[k] = window_px > 0 ? turn_deg(at(arc[k] - window_px), run[k], at(arc[k] + window_px))
+                            : turn_deg(run[k - 1], run[k], run[k + 1]);
+  // One split per turn: the sharpest vertex of each run of vertices over the
+  // threshold within a window of each other.
+  std::vector<bool> split(run.size(), false);
+  for (std::size_t k = 1; k + 1 < run.size();) {
+    if (turn[k] <= split_turn_deg) {
+      ++k;
+      continue;
+    }
+    std::size_t best = k, e = k;
+    while (e + 1 < run.size() - 1 && turn[e + 1] > split_turn_deg &&
+           arc[e + 1] - arc[e] <= std::max(window_px, 0.0)) {
+      ++e;
+      if (turn[e] > turn[best]) best = e;
+    }
+    split[best] = true;
+    k = e + 1;
+  }
+  std::vector<std::vector<cv::Point2f>> pieces{{run[0]}};
+  for (std::size_t k = 1; k < run.size(); ++k) {
     pieces.back().push_back(run[k]);
+    if (split[k]) pieces.push_back({run[k]});
   }
   std::vector<std::vector<cv::Point2f>> kept;
   for (auto& piece : pieces) {
@@ -284,6 +319,11 @@ MeasuredChains measure_chains(const std::vector<pr::Chain>& chains, const Eviden
                               Progress& progress, const std::string& where) {
   const double scale = image.scale;
   const double min_length_px = options.min_length_m * image.px_per_m;
+  // Turns are read over two widths of the widest line: within that the
+  // skeleton wiggles where another line crosses.
+  const double turn_window_px =
+      2.0 * *std::max_element(options.line_widths_m.begin(), options.line_widths_m.end()) *
+      image.px_per_m;
   MeasuredChains out;
   std::vector<TraceProposal>& found = out.found;
   int& short_chains = out.short_chains;
@@ -323,7 +363,8 @@ MeasuredChains measure_chains(const std::vector<pr::Chain>& chains, const Eviden
       if (run.size() < 2) continue;
       // Split at sharp turns unless both sides are one plane with relief
       // (a trace crossing a fold of the face).
-      for (const auto& piece : split_at_turns(run, options.split_turn_deg, one_plane)) {
+      for (const auto& piece :
+           split_at_turns(run, options.split_turn_deg, one_plane, turn_window_px)) {
         if (pr::chain_length(piece) < min_length_px) {
           ++short_chains;
           continue;

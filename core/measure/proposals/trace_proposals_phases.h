@@ -77,9 +77,14 @@ std::vector<std::vector<cv::Point2f>> surface_runs(
 
 // A run split where it turns by more than split_turn_deg, unless both sides
 // together are one plane (one_plane: a trace crossing a fold of the face).
+// The turn at a vertex is read between the directions over window_px of
+// the run on either side (a line's skeleton wiggles for a line width where
+// another crosses it: no turn), at its neighbouring vertices when
+// window_px is 0; of vertices over the threshold within a window of each
+// other, the sharpest is the split.
 std::vector<std::vector<cv::Point2f>> split_at_turns(
     const std::vector<cv::Point2f>& run, double split_turn_deg,
-    const std::function<bool(const std::vector<cv::Point2f>&)>& one_plane);
+    const std::function<bool(const std::vector<cv::Point2f>&)>& one_plane, double window_px = 0);
 
 // What the cues saw along a piece.
 struct Evidence {
