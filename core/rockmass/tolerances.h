@@ -23,8 +23,6 @@ inline constexpr double kSetMemberDeg = 35.0;
 // Parallel scanlines per direction across the mapped face.
 inline constexpr int kScanlinesPerDirection = 5;
 
-}  // namespace rockface::rockmass
-
 // The support charts (q_support_chart.h, rmr_support_guidelines.h): a
 // visit's point this close to a category boundary is reported on the
 // documented side and as marginal, never flipped.
@@ -40,3 +38,5 @@ inline constexpr double kQChartOnLineLog10 = 1e-12;
 // RMR89: within 2 points of a class boundary (the steps of tables A.3 and
 // E between neighbouring columns are 2 to 5 points).
 inline constexpr double kRmrClassMarginalPoints = 2.0;
+
+}  // namespace rockface::rockmass
