@@ -10,7 +10,7 @@ namespace rockface::analysis {
 
 namespace {
 
-std::string join(const std::vector<std::string>& v) {
+std::string words_list(const std::vector<std::string>& v) {
   std::string out;
   for (const auto& s : v) out += (out.empty() ? "" : ", ") + s;
   return out;
@@ -35,7 +35,7 @@ CriterionCheck check_range(const char* name, const FigureRange& r, const std::op
   if (!v) {
     c.status = CriterionStatus::unknown;
     c.words = std::string(name) + " " + range + ": " + name + " is open" +
-              (missing.empty() ? std::string() : " (not entered: " + join(missing) + ")");
+              (missing.empty() ? std::string() : " (not entered: " + words_list(missing) + ")");
     return c;
   }
   const double tol =
@@ -133,7 +133,7 @@ ClassProposal match_support_classes(const SupportClasses& classes, const VisitFi
     if (!k.behaviour.empty()) {
       CriterionCheck c;
       c.criterion = "behaviour";
-      const std::string wanted = join(k.behaviour);
+      const std::string wanted = words_list(k.behaviour);
       if (!v.behaviour) {
         c.status = CriterionStatus::unknown;
         c.words = "behaviour " + wanted + ": not known (no wedges or blocks analysed)";
@@ -183,9 +183,9 @@ ClassProposal match_support_classes(const SupportClasses& classes, const VisitFi
                                 : "no class proposed: the visit meets no class's criteria");
   }
   if (!v.rmr && !v.rmr_missing.empty())
-    out.notes.push_back("RMR open: " + join(v.rmr_missing) + " not entered");
+    out.notes.push_back("RMR open: " + words_list(v.rmr_missing) + " not entered");
   if (!v.q && !v.q_missing.empty())
-    out.notes.push_back("Q open: " + join(v.q_missing) + " not entered");
+    out.notes.push_back("Q open: " + words_list(v.q_missing) + " not entered");
   return out;
 }
 

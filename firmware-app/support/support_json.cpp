@@ -10,7 +10,7 @@ namespace {
 
 using nlohmann::json;
 
-json opt(const std::optional<double>& v, int digits, const char* unit) {
+json optional_figure(const std::optional<double>& v, int digits, const char* unit) {
   return v ? json(format_significant(*v, digits, unit)) : json(nullptr);
 }
 
@@ -98,30 +98,31 @@ json support_json(const VisitSupport& s) {
   json out = {{"format", "rockface-support/1"}, {"visit", s.visit}};
   out["chainage"] = s.chainage ? json(format_fixed(*s.chainage, 2, " m")) : json(nullptr);
   out["rock_mass"] = {
-      {"rmr", opt(s.figures.rmr, 3, "")},
+      {"rmr", optional_figure(s.figures.rmr, 3, "")},
       {"rmr_missing", strings(s.figures.rmr_missing)},
-      {"q", opt(s.figures.q, 3, "")},
+      {"q", optional_figure(s.figures.q, 3, "")},
       {"q_missing", strings(s.figures.q_missing)},
       {"behaviour", s.figures.behaviour ? json(*s.figures.behaviour) : json(nullptr)},
-      {"largest_wedge", opt(s.figures.largest_wedge_volume_m3, 3, " m³")},
-      {"largest_wedge_apex", opt(s.figures.largest_wedge_apex_m, 3, " m")},
-      {"span", opt(s.span_m, 3, " m")},
-      {"esr", opt(s.esr, 3, "")},
+      {"largest_wedge", optional_figure(s.figures.largest_wedge_volume_m3, 3, " m³")},
+      {"largest_wedge_apex", optional_figure(s.figures.largest_wedge_apex_m, 3, " m")},
+      {"span", optional_figure(s.span_m, 3, " m")},
+      {"esr", optional_figure(s.esr, 3, "")},
       {"esr_source", s.esr_source}};
   if (s.q_support) {
     const auto& q = *s.q_support;
-    out["q_chart"] = {{"category", q.category.number},
-                      {"support", q.category.name},
-                      {"words", q_support_words(q)},
-                      {"equivalent_dimension", format_significant(q.equivalent_dimension, 3, " m")},
-                      {"bolt_length", format_fixed(q.bolt_length_m, 2, " m")},
-                      {"bolt_spacing_shotcreted", opt(q.bolt_spacing_shotcreted_m, 2, " m")},
-                      {"bolt_spacing_unshotcreted", opt(q.bolt_spacing_unshotcreted_m, 2, " m")},
-                      {"max_unsupported_span", format_fixed(q.max_unsupported_span_m, 2, " m")},
-                      {"marginal", q.marginal},
-                      {"marginal_note", q.marginal_note},
-                      {"source", q.source},
-                      {"notes", strings(q.notes)}};
+    out["q_chart"] = {
+        {"category", q.category.number},
+        {"support", q.category.name},
+        {"words", q_support_words(q)},
+        {"equivalent_dimension", format_significant(q.equivalent_dimension, 3, " m")},
+        {"bolt_length", format_fixed(q.bolt_length_m, 2, " m")},
+        {"bolt_spacing_shotcreted", optional_figure(q.bolt_spacing_shotcreted_m, 2, " m")},
+        {"bolt_spacing_unshotcreted", optional_figure(q.bolt_spacing_unshotcreted_m, 2, " m")},
+        {"max_unsupported_span", format_fixed(q.max_unsupported_span_m, 2, " m")},
+        {"marginal", q.marginal},
+        {"marginal_note", q.marginal_note},
+        {"source", q.source},
+        {"notes", strings(q.notes)}};
   } else {
     out["q_chart"] = {{"none", s.q_support_why}};
   }

@@ -17,7 +17,7 @@ namespace rockface::app {
 
 namespace {
 
-constexpr double kRad = std::numbers::pi / 180.0;
+constexpr double kRadPerDegree = std::numbers::pi / 180.0;
 // Vertices of a block within this distance (along the drive) of its
 // front-most one lie on the face: the exposed face's outline.
 constexpr double kOnFaceM = 0.01;
@@ -95,7 +95,7 @@ std::vector<analysis::MovingBlock> moving_blocks(storage::ProjectStore& store,
       c.plane = static_cast<int>(i);
       c.block_normal = geometry::plane_normal_deg(j->second.dip_deg, j->second.dipdir_deg);
       if (m.loads.dot(c.block_normal) > 0) c.block_normal = -c.block_normal;  // the side it presses
-      if (j->second.friction_deg) c.friction = *j->second.friction_deg * kRad;
+      if (j->second.friction_deg) c.friction = *j->second.friction_deg * kRadPerDegree;
       const auto area = b.face_areas.find(j->first);
       if (j->second.cohesion_pa && area != b.face_areas.end())
         c.cohesion_force = *j->second.cohesion_pa * area->second;

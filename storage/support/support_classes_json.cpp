@@ -108,7 +108,7 @@ json range_json(const FigureRange& f) {
   return json::array({f.min ? json(*f.min) : json(nullptr), f.max ? json(*f.max) : json(nullptr)});
 }
 
-std::string read_text(const std::filesystem::path& file) {
+std::string read_classes_text(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string(), "cannot be read (missing or not permitted)");
   std::ostringstream s;
@@ -213,7 +213,7 @@ SupportClasses parse_support_classes(const std::string& text, const std::string&
 }
 
 SupportClasses load_support_classes(const std::filesystem::path& file) {
-  return parse_support_classes(read_text(file), file.string());
+  return parse_support_classes(read_classes_text(file), file.string());
 }
 
 json support_classes_json(const SupportClasses& s) {
