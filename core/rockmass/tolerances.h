@@ -23,4 +23,20 @@ inline constexpr double kSetMemberDeg = 35.0;
 // Parallel scanlines per direction across the mapped face.
 inline constexpr int kScanlinesPerDirection = 5;
 
+// The support charts (q_support_chart.h, rmr_support_guidelines.h): a
+// visit's point this close to a category boundary is reported on the
+// documented side and as marginal, never flipped.
+// Q: within 10 % of the boundary's Q at the visit's equivalent dimension
+// (log10 1.1). Q is the product of six table readings, each a step of its
+// table: one step of Ja (1 -> 2) or Jr (1.5 -> 2) already moves Q by a
+// third or more, so a point within 10 % of a line is not decided by the data.
+inline constexpr double kQChartMarginalLog10 = 0.0413926851582251;  // log10(1.1)
+// A point this close (log10 Q) to a boundary is on it: the boundary's Q and
+// the point's Q computed by different roundings (pow, log10) differ by a few
+// units in the last place, and the line's side must not depend on them.
+inline constexpr double kQChartOnLineLog10 = 1e-12;
+// RMR89: within 2 points of a class boundary (the steps of tables A.3 and
+// E between neighbouring columns are 2 to 5 points).
+inline constexpr double kRmrClassMarginalPoints = 2.0;
+
 }  // namespace rockface::rockmass

@@ -162,6 +162,8 @@ void analyse_wedge(const Context& c, Wedge& w, const std::vector<WedgePlane>& pl
   else if (w.removable.value || w.removable.marginal)
     w.mode = kinematics::sliding_mode(a.force, contacts, c.options.uncertainty);
   if (w.mode) w.fos = w.mode->fos;
+  w.load_resultant = a.force;
+  w.contacts = contacts;
   w.face_perimeter = kinematics::free_face_outline(w.block);
   for (std::size_t f = 0; f < w.block.faces().size(); ++f)
     if (w.block.planes()[w.block.faces()[f].plane].kind == blocks::PlaneKind::FreeFace)

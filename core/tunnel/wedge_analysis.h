@@ -88,8 +88,13 @@ struct Wedge {
   double scale = 1;             // linear size against the largest wedge
   geometry::Verdict removable;  // with its margin (radians)
   std::optional<kinematics::SlidingMode> mode;
-  std::optional<double> fos;              // with the loads, without support
-  std::optional<double> fos_supported;    // with the support asked for
+  std::optional<double> fos;            // with the loads, without support
+  std::optional<double> fos_supported;  // with the support asked for
+  // The loads' resultant (N) and the joint contacts its modes were found
+  // with: what another support is checked against (core/analysis'
+  // support check) without building the wedge again.
+  Eigen::Vector3d load_resultant = Eigen::Vector3d::Zero();
+  std::vector<kinematics::ContactPlane> contacts;
   std::vector<std::string> effects_used;  // what acted on it
   std::vector<WedgeBolt> bolts;           // pattern bolts on its face
   int bolts_anchored = 0;

@@ -2,7 +2,7 @@
 // set's orientation along the tunnel's chainage over all visits, with the
 // sets that appear, vanish or turn flagged. `rockface drive postgresql://...
 // --tunnel NAME ...` gives the same from the office server, over every
-// tablet's visits.
+// tablet's visits. `--support-csv` adds the support of each round (issue 44).
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -11,6 +11,7 @@
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/office/office_workflows.h"
+#include "firmware-app/support/support_drive.h"
 #include "firmware-app/tunnel/project_drive.h"
 #include "storage/exchange/image_file.h"
 #include "storage/field_report/tunnel_pictures.h"
@@ -20,7 +21,7 @@ namespace rockface::app {
 namespace {
 
 struct DriveOptions {
-  std::string project, out, csv, tunnel;
+  std::string project, out, csv, tunnel, support_csv;
 };
 
 VerbRun setup_drive(CLI::App& sub) {
@@ -32,10 +33,17 @@ VerbRun setup_drive(CLI::App& sub) {
   sub.add_option("--tunnel", o->tunnel, "the server's tunnel (with a server)");
   sub.add_option("--out", o->out, "the sets against chainage, a PNG file")->required();
   sub.add_option("--csv", o->csv, "one row per set and visit, a CSV file");
+  sub.add_option("--support-csv", o->support_csv,
+                 "project: the support per round against the chainage (RMR89, Q, the class "
+                 "proposed and decided), a CSV file");
   return [o] {
     tunnel::DriveSets drive;
     if (is_server_address(o->project)) {
       if (o->tunnel.empty()) throw InputError("--tunnel", "name the server's tunnel");
+      if (!o->support_csv.empty())
+        throw InputError("--support-csv",
+                         "applies to a project file (the office's drive page "
+                         "does not show the support yet)");
       drive = server_drive(o->project, o->tunnel);
     } else {
       if (!std::filesystem::exists(o->project))
@@ -44,6 +52,12 @@ VerbRun setup_drive(CLI::App& sub) {
       read.read_only = true;
       storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
       drive = project_drive(store);
+      if (!o->support_csv.empty()) {
+        const auto rounds = drive_support(store);
+        write_text_atomically(o->support_csv, drive_support_csv(rounds));
+        for (const auto& line : drive_support_summary(rounds)) std::cout << line << "\n";
+        std::cout << "support: " << o->support_csv << "\n";
+      }
     }
     storage::write_image_file(o->out, storage::drive_picture(drive), ".png");
     if (!o->csv.empty()) write_text_atomically(o->csv, drive_csv(drive));

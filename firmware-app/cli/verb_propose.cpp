@@ -16,6 +16,7 @@
 #include "firmware-app/propose/propose_workflow.h"
 #include "firmware-app/propose/report_facets.h"
 #include "firmware-app/rockmass/rock_mass_report.h"
+#include "firmware-app/support/report_support.h"
 #include "firmware-app/tunnel/report_tunnel.h"
 #include "firmware-app/wedges/report_wedges.h"
 #include "storage/exchange/image_file.h"
@@ -74,6 +75,7 @@ VerbRun setup_propose(CLI::App& sub) {
       add_tunnel_to_report(store, report);
       add_wedges_to_report(store, report);
       add_rock_mass_to_report(store, report);
+      add_support_to_report(store, report);
       add_facets_to_report(r, request.preset, report);
       storage::write_field_report_pdf(report, o->report);
       std::cout << "field report of visit " << r.visit << ": " << o->report << "\n";

@@ -8,6 +8,7 @@
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/rockmass/rock_mass_report.h"
+#include "firmware-app/support/report_support.h"
 #include "firmware-app/tunnel/report_tunnel.h"
 #include "firmware-app/wedges/report_wedges.h"
 #include "storage/field_report/field_report.h"
@@ -38,6 +39,7 @@ VerbRun setup_report(CLI::App& sub) {
     add_tunnel_to_report(store, report);
     add_wedges_to_report(store, report);
     add_rock_mass_to_report(store, report);
+    add_support_to_report(store, report);
     storage::write_field_report_pdf(report, o->out);
     std::cout << "field report of visit " << *visit << ": " << o->out << " ("
               << report.blocks.size() << " blocks, " << report.joints.size() << " joints)\n";

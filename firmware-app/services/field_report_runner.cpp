@@ -3,6 +3,7 @@
 // connection to the project (one per thread).
 #include "firmware-app/rockmass/rock_mass_report.h"
 #include "firmware-app/services/ui_services.h"
+#include "firmware-app/support/report_support.h"
 #include "firmware-app/tunnel/report_tunnel.h"
 #include "firmware-app/wedges/report_wedges.h"
 #include "storage/field_report/field_report.h"
@@ -23,6 +24,7 @@ std::string StoreFieldReportRunner::write(const std::filesystem::path& project,
   add_tunnel_to_report(store, report);
   add_wedges_to_report(store, report);
   add_rock_mass_to_report(store, report);
+  add_support_to_report(store, report);
   progress.step("writing the PDF", 0.7);
   storage::write_field_report_pdf(report, pdf);
   return std::to_string(report.blocks.size()) +

@@ -108,6 +108,17 @@ struct ReportedFacets {
   cv::Mat picture;                             // BGR: facets by set over the photograph
 };
 
+// The support of this round (issue 44): filled by the application
+// (firmware-app/support) when the project holds support classes for the
+// tunnel or a decision for the visit; absent otherwise.
+struct ReportedSupport {
+  std::vector<std::string> proposals;          // the Q chart's, Bieniawski's, the classes'
+  std::vector<std::string> checks;             // per class checked, and what would fix it
+  std::vector<std::vector<std::string>> rows;  // the chosen class on each wedge and block
+  std::vector<std::string> decision;           // the class chosen, changes, who, when
+  cv::Mat chart;                               // BGR: the Q chart with the visit's point
+};
+
 struct FieldReport {
   std::string project_name, project_file;
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();
@@ -160,7 +171,8 @@ struct FieldReport {
   std::optional<rockmass::RockMassFigures> rockmass;
   std::string rockmass_note;
 
-  std::optional<ReportedFacets> facets;  // issue 25's proposals
+  std::optional<ReportedFacets> facets;    // issue 25's proposals
+  std::optional<ReportedSupport> support;  // issue 44's round support
 };
 
 // Reads everything the report shows for `visit_id` (InputError naming the

@@ -464,6 +464,33 @@ void facets_section(PdfPages& pdf, const FieldReport& r) {
   }
 }
 
+// The support of this round (issue 44): the proposals side by side, the Q
+// chart with the visit's point, the checks on the wedges and blocks, the
+// decision.
+void support_section(PdfPages& pdf, const FieldReport& r) {
+  if (!r.support) return;
+  const ReportedSupport& s = *r.support;
+  pdf.heading("Support of this round", 0.3 * kPageH);
+  for (const auto& line : s.proposals) pdf.line(line, kSmall);
+  if (!s.chart.empty()) {
+    pdf.image(s.chart, 0.7 * PdfPages::text_width(), 0.4 * kPageH);
+    pdf.line("the Q-system support chart with the visit's point (a ring: marginal)", kSmall);
+  }
+  for (const auto& line : s.checks) pdf.line(line, kSmall);
+  if (!s.rows.empty())
+    pdf.table({{"wedge/block", 55},
+               {"place", 50},
+               {"mode", 45},
+               {"FoS", 35},
+               {"supported", 45},
+               {"bolts", 45},
+               {"needs m", 40},
+               {"below", 35}},
+              s.rows, kSmall);
+  pdf.heading("Decision", 3 * kBody);
+  for (const auto& line : s.decision) pdf.line(line);
+}
+
 }  // namespace
 
 void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& file) {
@@ -503,6 +530,7 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   dynamics_section(pdf, r);
   // After the blocks: page 1 keeps the face with its traces and blocks.
   rock_mass_section(pdf, r);
+  support_section(pdf, r);
   facets_section(pdf, r);
   pdf.finish();
 }

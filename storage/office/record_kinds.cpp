@@ -13,6 +13,9 @@ const std::vector<RecordKind>& record_kinds() {
        "t.id",
        {{"tunnel_station", "tunnel_id"}, {"tunnel_profile_segment", "tunnel_id"}},
        {}},
+      // The tunnel's support classes (issue 44): every revision, the latest
+      // in force.
+      {"support_classes", "t.uuid", "NULL", "t.id", {}, {}},
       {"visit", "t.uuid", "t.id", "t.id", {}, {}},
       // An image shared by several captures goes with the first visit that
       // took it.
@@ -58,6 +61,8 @@ const std::vector<RecordKind>& record_kinds() {
        "t.visit_id",
        {},
        {}},
+      // A visit's support decisions (issue 44), every revision.
+      {"support_decision", "t.uuid", "t.visit_id", "t.id", {}, {}},
       {"action_log", "t.uuid", "t.visit_id", "t.id", {}, {}},
   };
   return kinds;

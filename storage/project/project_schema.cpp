@@ -454,13 +454,45 @@ ALTER TABLE measurement ADD COLUMN compass_dipdir REAL
 ALTER TABLE measurement ADD COLUMN compass_off_deg REAL;
 )sql";
 
+// Version 10: the support of the rounds (issue 44): the designer's support
+// classes of the project's tunnel (the JSON of
+// storage/support/support_classes_json.h), and the support decision of a
+// visit (the class chosen, changes with reasons, who and when). Each save
+// adds a row, so that a changed decision keeps the ones before it; the
+// latest row is the one in force. New tables only, each row with its UUID
+// for the office.
+constexpr const char* kVersion9To10 = R"sql(
+CREATE TABLE IF NOT EXISTS support_classes (
+  id INTEGER PRIMARY KEY,
+  classes_json TEXT NOT NULL,
+  source TEXT NOT NULL,
+  saved_at TEXT NOT NULL,
+  uuid TEXT
+);
+CREATE UNIQUE INDEX IF NOT EXISTS support_classes_by_uuid ON support_classes(uuid);
+CREATE TRIGGER IF NOT EXISTS support_classes_gets_uuid AFTER INSERT ON support_classes FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE support_classes SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+CREATE TABLE IF NOT EXISTS support_decision (
+  id INTEGER PRIMARY KEY,
+  visit_id INTEGER NOT NULL REFERENCES visit(id),
+  class_name TEXT NOT NULL,
+  decision_json TEXT NOT NULL,
+  decided_at TEXT NOT NULL,
+  uuid TEXT
+);
+CREATE INDEX IF NOT EXISTS support_decision_by_visit ON support_decision(visit_id);
+CREATE UNIQUE INDEX IF NOT EXISTS support_decision_by_uuid ON support_decision(uuid);
+CREATE TRIGGER IF NOT EXISTS support_decision_gets_uuid AFTER INSERT ON support_decision FOR EACH ROW WHEN NEW.uuid IS NULL
+  BEGIN UPDATE support_decision SET uuid = <uuid> WHERE rowid = NEW.rowid; END;
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
 constexpr Step kSteps[] = {{2, kVersion1To2}, {3, kVersion2To3}, {4, kVersion3To4},
                            {5, kVersion4To5}, {6, kVersion5To6}, {7, kVersion6To7},
-                           {8, kVersion7To8}, {9, kVersion8To9}};
+                           {8, kVersion7To8}, {9, kVersion8To9}, {10, kVersion9To10}};
 
 }  // namespace
 

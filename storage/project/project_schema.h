@@ -22,6 +22,7 @@
 //   7  the rock-mass classification form entered per visit (issue 23).
 //   8  where a trace came from: by hand, a proposal, a corrected one (issue 25).
 //   9  a trace's compass reading and how far the trace leaves it (issue 27).
+//  10  the tunnel's support classes and each visit's support decision (issue 44).
 #include <cstdint>
 
 #include "storage/project/project_sqlite.h"
@@ -30,7 +31,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 9;
+constexpr int kCurrentVersion = 10;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then

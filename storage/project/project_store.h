@@ -32,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include "core/analysis/support_classes.h"
+#include "core/analysis/support_decision.h"
 #include "core/rockmass/classification_form.h"
 #include "storage/project/project_records.h"
 #include "storage/project/project_sqlite.h"
@@ -175,6 +177,16 @@ class ProjectStore {
   // stored (validated first: an out-of-range value is refused by name).
   void save_rockmass_form(RecordId visit_id, const rockmass::ClassificationForm& form);
   std::optional<rockmass::ClassificationForm> load_rockmass_form(RecordId visit_id);
+
+  // ---- the support of the rounds (issue 44; storage/project/project_store_support.cpp) ----
+  // The tunnel's support classes: each save adds a revision, the latest is
+  // in force. A visit's support decision likewise (the earlier decisions
+  // stay, in order). InputError naming the visit for an unknown one.
+  void save_support_classes(const analysis::SupportClasses& classes);
+  std::optional<analysis::SupportClasses> load_support_classes();
+  void save_support_decision(RecordId visit_id, const analysis::SupportDecision& decision);
+  std::optional<analysis::SupportDecision> load_support_decision(RecordId visit_id);
+  std::vector<analysis::SupportDecision> list_support_decisions(RecordId visit_id);  // oldest first
 
   IntegrityReport check_integrity(OpenOptions::Check depth = OpenOptions::Check::full);
   // Moves the write-ahead log into the main file (done on close anyway); a

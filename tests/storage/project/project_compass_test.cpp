@@ -109,7 +109,7 @@ TEST(ProjectCompass, ASchema8ProjectIsUpgradedKeepingItsRows) {
     EXPECT_EQ(schema::version_of(db), 8);
   }
   auto store = ProjectStore::open(file);
-  EXPECT_EQ(store.schema_version(), 9);
+  EXPECT_EQ(store.schema_version(), schema::kCurrentVersion);
   const auto back = store.list_measurements(1);
   ASSERT_EQ(back.size(), 1u);
   // Every value of the row as it was, and no reading.

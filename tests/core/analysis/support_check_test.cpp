@@ -1,0 +1,200 @@
+// The check of a support class on this face in closed form: a falling roof
+// wedge (the regular tetrahedron of tests/core/tunnel/wedge_analysis_test)
+// that the class's pattern holds, and the same wedge under bolts too short
+// to reach past it; a block of the face sliding on one plane, with and
+// without the class's face bolts.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "core/analysis/support_check.h"
+#include "core/geometry/orientation.h"
+
+namespace rockface::analysis {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kRad = kPi / 180.0;
+
+// Three sets dipping 60 toward 0, 120, 240: below all three (code 111) a
+// regular tetrahedron in the roof of a 6 m square section, base inradius
+// r = B / (2 sqrt 3), apex h = r tan 60 above the roof (3 m), weight
+// sqrt(3) r^3 tan(60) x 2700 x 9.81 (413 kN). It falls.
+struct RoofWedge {
+  double B = 6, alpha = 60 * kRad;
+  double r() const { return B / (2 * std::sqrt(3.0)); }
+  double h() const { return r() * std::tan(alpha); }
+  double weight() const {
+    return std::sqrt(3.0) * std::pow(r(), 3) * std::tan(alpha) * 2700 * 9.81;
+  }
+  // Bolts of a square pattern of spacing s from the crown on its base.
+  int bolts_on(double s) const {
+    int n = 0;
+    for (int i = -20; i <= 20; ++i)
+      for (int j = -20; j <= 20; ++j) {
+        const double x = i * s, y = j * s;
+        const double m = std::min({r() - y, r() - (std::sqrt(3.0) / 2 * x - 0.5 * y),
+                                   r() - (-std::sqrt(3.0) / 2 * x - 0.5 * y)});
+        if (m > 0) ++n;
+      }
+    return n;
+  }
+  tunnel::WedgeAnalysis analyse(const SupportClass& c) const {
+    std::vector<tunnel::WedgeJointSet> sets;
+    for (int i = 0; i < 3; ++i)
+      sets.push_back(
+          {"J" + std::to_string(i + 1), geometry::plane_normal_deg(60, 120.0 * i), 30 * kRad, 0});
+    return tunnel::analyse_wedges(tunnel::rectangle_profile(B, B, 0),
+                                  tunnel::axis_frame(0, 0, Eigen::Vector3d::Zero(), "axis"),
+                                  Eigen::Vector3d::Zero(), sets, with_class_support({}, c));
+  }
+};
+
+const tunnel::Wedge& roof_wedge(const tunnel::WedgeAnalysis& a) {
+  for (const auto& w : a.wedges)
+    if (w.code == "111") return w;
+  throw std::runtime_error("no roof wedge 111");
+}
+
+SupportClass pattern_class(double length, double spacing, double capacity) {
+  SupportClass c;
+  c.name = "SC2";
+  c.bolts = BoltPattern{length, spacing, capacity, std::nullopt};
+  return c;
+}
+
+// The sums over bolts and the wedge's volume: rounding, ~1e-12 relative.
+constexpr double kSumRel = 1e-9;
+// The bisection of the required force stops ~1e-11 N from it (60 halvings
+// of 10 MN); relative to forces of ~1e4 N and more.
+constexpr double kBisectionRel = 1e-9;
+
+TEST(SupportCheck, APatternThatReachesPastTheApexHoldsTheFallingWedge) {
+  const RoofWedge g;
+  const int n = g.bolts_on(0.7);
+  ASSERT_GT(n, 10);
+  // Capacity for a FoS of 2 with every bolt: n C / W = 2.
+  const double capacity = 2 * g.weight() / n;
+  const SupportClass c = pattern_class(g.h() + 1.5, 0.7, capacity);
+  const WedgeSupportCheck w = check_wedge(roof_wedge(g.analyse(c)), c);
+  EXPECT_EQ(w.mode, "falling");
+  EXPECT_EQ(w.bolts, n);
+  EXPECT_EQ(w.bolts_anchored, n);
+  EXPECT_TRUE(w.bolts_reach_past_apex);
+  ASSERT_TRUE(w.fos_supported);
+  EXPECT_NEAR(*w.fos_supported, 2.0, kSumRel * 2);
+  EXPECT_FALSE(w.below_target);
+  EXPECT_TRUE(w.fixes.empty());
+  // Falling, vertical bolts: FoS = n C / W, so the target 1.5 needs
+  // C = 1.5 W / n, and the apex depth h plus 1 m of anchorage.
+  ASSERT_TRUE(w.required_capacity_n);
+  EXPECT_NEAR(*w.required_capacity_n, 1.5 * g.weight() / n, kBisectionRel * g.weight());
+  EXPECT_NEAR(w.apex_depth_m, g.h(), kSumRel * g.h());
+  EXPECT_NEAR(w.required_bolt_length_m, g.h() + kMinBoltAnchorageM, kSumRel * g.h());
+}
+
+TEST(SupportCheck, BoltsTooShortLeaveTheWedgeBelowTheTargetAndSayHowLong) {
+  const RoofWedge g;
+  const int n = g.bolts_on(0.7);
+  const double capacity = 2 * g.weight() / n;  // enough, were they long enough
+  const SupportClass c = pattern_class(0.3 * g.h(), 0.7, capacity);
+  const WedgeSupportCheck w = check_wedge(roof_wedge(g.analyse(c)), c);
+  EXPECT_FALSE(w.bolts_reach_past_apex);
+  // Only the bolts near the edges (depth tan(60) x distance to an edge
+  // below 0.9 m) are anchored: fewer than three quarters of them, so
+  // FoS = 2 anchored / n < 1.5.
+  ASSERT_LT(w.bolts_anchored, 0.75 * n);
+  ASSERT_TRUE(w.fos_supported);
+  EXPECT_NEAR(*w.fos_supported, w.bolts_anchored * capacity / g.weight(), kSumRel);
+  EXPECT_TRUE(w.below_target);
+  ASSERT_EQ(w.fixes.size(), 1u);  // the length alone: the capacity is enough
+  EXPECT_NE(w.fixes[0].find("bolts of at least 4.00 m"), std::string::npos) << w.fixes[0];
+  const SupportCheck all = check_support(c, nullptr, {});
+  EXPECT_FALSE(all.notes.empty());  // no wedge analysis: said so
+}
+
+TEST(SupportCheck, TooWeakBoltsAskForTheirCapacity) {
+  const RoofWedge g;
+  const int n = g.bolts_on(0.7);
+  const SupportClass c = pattern_class(g.h() + 1.5, 0.7, 1.0 * g.weight() / n);  // FoS 1
+  const WedgeSupportCheck w = check_wedge(roof_wedge(g.analyse(c)), c);
+  EXPECT_TRUE(w.below_target);
+  ASSERT_EQ(w.fixes.size(), 1u);
+  EXPECT_NE(w.fixes[0].find("kN at 0.70 m spacing"), std::string::npos) << w.fixes[0];
+}
+
+// A block of the face on a plane dipping beta = 50 toward the tunnel (the
+// drive runs north, the face looks south, the plane dips to 180), friction
+// 30, no cohesion, weight W = 100 kN, 4 m² exposed, 1.5 m deep along the
+// drive. Without support FoS = tan(phi) / tan(beta) = 0.484. Bolts of
+// total force T along the drive (d = north) press it on its plane and pull
+// it back up the dip:
+//   FoS = ((W cos(beta) + T sin(beta)) tan(phi) + T cos(beta)) / (W sin(beta)).
+struct FaceBlock {
+  double beta = 50 * kRad, phi = 30 * kRad, W = 1e5;
+  MovingBlock block() const {
+    MovingBlock b;
+    b.id = "B1";
+    const Eigen::Vector3d n(0, -std::sin(beta), std::cos(beta));  // block side: up
+    b.loads = Eigen::Vector3d(0, 0, -W);
+    b.contacts.push_back({0, n, phi, 0});
+    b.mode = kinematics::sliding_mode(b.loads, b.contacts, 0);
+    b.fos = b.mode.fos;
+    b.exposed_area_m2 = 4;
+    b.bolt_direction = Eigen::Vector3d::UnitY();
+    b.depth_m = 1.5;
+    return b;
+  }
+  double fos(double T) const {
+    return ((W * std::cos(beta) + T * std::sin(beta)) * std::tan(phi) + T * std::cos(beta)) /
+           (W * std::sin(beta));
+  }
+};
+
+TEST(SupportCheck, TheFaceBlockHeldByTheClassesFaceBolts) {
+  const FaceBlock g;
+  const MovingBlock b = g.block();
+  ASSERT_EQ(b.mode.type, kinematics::ModeType::Sliding);
+  ASSERT_TRUE(b.fos);
+  // sliding_mode's own FoS against the closed form (rounding only).
+  EXPECT_NEAR(*b.fos, std::tan(g.phi) / std::tan(g.beta), 1e-12);
+  SupportClass c;
+  c.name = "SC4";
+  c.face.bolts = BoltPattern{4.0, 1.0, 5e4, std::nullopt};  // 4 bolts of 50 kN on 4 m²
+  const BlockSupportCheck s = check_block(b, c);
+  EXPECT_EQ(s.bolts, 4);
+  EXPECT_EQ(s.bolts_anchored, 4);
+  ASSERT_TRUE(s.fos_supported);
+  // Rounding of the 3x3 decomposition: 1e-12 relative.
+  EXPECT_NEAR(*s.fos_supported, g.fos(2e5), 1e-9 * g.fos(2e5));
+  EXPECT_FALSE(s.below_target);
+  EXPECT_NEAR(s.required_bolt_length_m, 1.5 + kMinBoltAnchorageM, 1e-12);
+}
+
+TEST(SupportCheck, TheFaceBlockWithoutFaceSupportIsFlaggedWithTheForceThatHoldsIt) {
+  const FaceBlock g;
+  SupportClass c;
+  c.name = "SC1";
+  const BlockSupportCheck s = check_block(g.block(), c);
+  ASSERT_TRUE(s.fos_supported);
+  EXPECT_NEAR(*s.fos_supported, g.fos(0), 1e-12);
+  EXPECT_TRUE(s.below_target);
+  // The total T with FoS(T) = 1.5, solved from the closed form (linear in T).
+  const double a = std::sin(g.beta) * std::tan(g.phi) + std::cos(g.beta);
+  const double T = (1.5 * g.W * std::sin(g.beta) - g.W * std::cos(g.beta) * std::tan(g.phi)) / a;
+  ASSERT_TRUE(s.required_face_force_n);
+  EXPECT_NEAR(*s.required_face_force_n, T, kBisectionRel * T);
+  ASSERT_EQ(s.fixes.size(), 1u);
+  EXPECT_NE(s.fixes[0].find("the class has none"), std::string::npos) << s.fixes[0];
+  // Face bolts shorter than the block is deep hold nothing.
+  c.face.bolts = BoltPattern{1.2, 1.0, 5e4, std::nullopt};
+  const BlockSupportCheck short_bolts = check_block(g.block(), c);
+  EXPECT_EQ(short_bolts.bolts_anchored, 0);
+  EXPECT_TRUE(short_bolts.below_target);
+  ASSERT_FALSE(short_bolts.fixes.empty());
+  EXPECT_NE(short_bolts.fixes[0].find("2.50 m"), std::string::npos) << short_bolts.fixes[0];
+}
+
+}  // namespace
+}  // namespace rockface::analysis
