@@ -14,6 +14,9 @@
 // three corners. Points (almost) on top of one another in the plane keep
 // one vertex; the others stay in the cloud, in no triangle.
 //
+// A large cloud is triangulated in overlapping strips (CloudMeshingOptions),
+// each triangle kept by the one strip whose core holds its centroid.
+//
 // A surface that folds over its best plane (a whole round's walls, an
 // overhang seen from below) is not a 2.5D surface: the 3D edge test drops the
 // triangles it would fold into, so the fold comes out as a hole.
@@ -30,6 +33,14 @@ struct CloudMeshingOptions {
   // spacings) and on a scanner's irregular sampling rarely beyond 3
   // nearest-neighbour distances; a gap of 4 spacings is a hole.
   double max_edge_to_spacing = 4.0;
+  // Triangulated in strips along the plane's longer axis of this many
+  // points each (CGAL's triangulation takes some 160 bytes a point: a strip
+  // of a million is 160 MB whatever the cloud's size)...
+  std::size_t strip_points = 1'000'000;
+  // ...overlapping their neighbours by this many point spacings, so that the
+  // triangles near a strip's edge are those of one triangulation of the
+  // whole (a kept triangle's edges are a few spacings).
+  double strip_overlap_spacings = 20.0;
 };
 
 struct CloudMesh {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -67,6 +68,27 @@ TEST(CloudMeshing, TrianglesTurnCounterClockwiseSeenFromTheNormal) {
                           c = points[static_cast<std::size_t>(t[2])];
     EXPECT_GT((b - a).cross(c - a).dot(mesh.normal), 0);
   }
+}
+
+// Strips of 1000 points (a large cloud's way, made small) give the
+// triangles of one triangulation of the whole: none lost at a seam, none
+// twice.
+TEST(CloudMeshing, StripsGiveTheTrianglesOfTheWhole) {
+  std::mt19937 rng(11);
+  const auto points = face_cloud(0.15, rng);
+  rockface::photogrammetry::CloudMeshingOptions whole;
+  whole.strip_points = points.size();
+  rockface::photogrammetry::CloudMeshingOptions strips;
+  strips.strip_points = 1000;
+  auto canonical = [](std::vector<std::array<int, 3>> t) {
+    for (auto& x : t) std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  const auto one = canonical(mesh_point_cloud(points, whole).triangles);
+  const auto many = canonical(mesh_point_cloud(points, strips).triangles);
+  EXPECT_EQ(one.size(), many.size());
+  EXPECT_TRUE(one == many);
 }
 
 TEST(CloudMeshing, PointsOnALineAreNoSurface) {
