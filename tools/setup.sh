@@ -23,9 +23,10 @@ packages=(
   # the office server (issue 24): libpq's C API, OpenSSL's SHA-256
   libpq-dev libssl-dev
   # 3D images from elsewhere and exports the office opens (issue 43): OBJ
-  # (tinyobjloader), PCD and point-cloud tools (Open3D), meshing of imported
-  # clouds (CGAL, header-only), DXF (dxflib)
-  libtinyobjloader-dev libopen3d-dev libcgal-dev libdxflib-dev
+  # (tinyobjloader), meshing of imported clouds and the hull of a block's
+  # corners (CGAL, header-only), DXF (dxflib). PCD is read by a reader of
+  # our own (storage/exchange/pcd_reader.h says why not Open3D's).
+  libtinyobjloader-dev libcgal-dev libdxflib-dev
 )
 # What only the tests and benchmarks need; `tools/setup.sh --demo` (what
 # tools/demo.sh runs) leaves them out: 65 MB less to download of ~525, and

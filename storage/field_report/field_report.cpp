@@ -28,6 +28,7 @@ void read_accuracy(const ModelRegistration& reg, ReportedAccuracy& a) {
   a.point_spacing_m = reg.point_spacing_m.value_or(0.0);
   a.reprojection_rms_px = reg.rms_reprojection_px.value_or(0.0);
   a.tie_points = static_cast<int>(reg.inliers.value_or(0.0));
+  a.imported_from = reg.imported_from;
   a.scale_source = reg.scale_source;
   a.vertical_source = reg.vertical_source;
   a.north_source = reg.north_source;

@@ -48,6 +48,9 @@ struct ReportedControlPoint {
 };
 
 struct ReportedAccuracy {
+  // Where the 3D image came from when rockface did not reconstruct it
+  // (`rockface import`): file, format, points, frame; empty for its own.
+  std::string imported_from;
   std::string scale_source, vertical_source, north_source;
   double scale = 1;
   std::optional<double> range_pole_m, compass_azimuth_deg, declination_deg, north_rotation_deg;

@@ -177,6 +177,7 @@ void camera_section(PdfPages& pdf, const FieldReport& r) {
 void accuracy_section(PdfPages& pdf, const FieldReport& r) {
   const auto& a = r.accuracy;
   pdf.heading("Accuracy");
+  if (!a.imported_from.empty()) pdf.line("3D image imported from " + a.imported_from);
   pdf.line("scale: " + (a.scale_source.empty() ? "-" : a.scale_source) +
            (a.range_pole_m ? " (" + report_number(*a.range_pole_m, 3) + " m)" : "") +
            ", model scale " + report_number(a.scale, 4));
@@ -187,10 +188,14 @@ void accuracy_section(PdfPages& pdf, const FieldReport& r) {
              " deg, declination " + report_number(a.declination_deg, 1) + " deg, turned " +
              report_number(a.north_rotation_deg, 2) + " deg about the vertical";
   pdf.line(north);
-  pdf.line("predicted depth precision " + report_number(a.sigma_z_m * 1000, 1) + " mm at " +
-           report_number(a.distance_m, 2) + " m; point spacing " +
-           report_number(a.point_spacing_m * 1000, 1) + " mm; " + std::to_string(a.tie_points) +
-           " tie points, reprojection rms " + report_number(a.reprojection_rms_px, 3) + " px");
+  if (!a.imported_from.empty())
+    pdf.line("point spacing " + report_number(a.point_spacing_m * 1000, 1) +
+             " mm (no stereo pair: no predicted depth precision, no tie points)");
+  else
+    pdf.line("predicted depth precision " + report_number(a.sigma_z_m * 1000, 1) + " mm at " +
+             report_number(a.distance_m, 2) + " m; point spacing " +
+             report_number(a.point_spacing_m * 1000, 1) + " mm; " + std::to_string(a.tie_points) +
+             " tie points, reprojection rms " + report_number(a.reprojection_rms_px, 3) + " px");
   if (a.control_rms_m) {
     pdf.line("ground control: rms " + report_number(*a.control_rms_m * 1000, 1) + " mm");
     std::vector<std::vector<std::string>> rows;

@@ -103,6 +103,8 @@ void read_reconstruction(const json& p, ModelRegistration& out) {
   if (const json* targets = param_member(p, "targets"); targets && targets->is_array())
     for (const auto& t : *targets)
       if (const auto v = stored_vector3(t)) out.targets_project.push_back(*v);
+  if (const json* i = param_member(p, "import"); i && i->is_object())
+    out.imported_from = param_text(*i, "words");
   if (const json* w = param_member(p, "warnings"); w && w->is_array())
     for (const auto& x : *w)
       if (x.is_string()) out.warnings.push_back(x.get<std::string>());

@@ -71,6 +71,11 @@ struct ModelRegistration {
   std::vector<RegisteredControlPoint> control_points;
 
   std::vector<RegisteredImage> images;  // face registration only
+
+  // A 3D image imported from another program (`rockface import`, format
+  // rockface-import/1): where it came from, in words ("scan.las: LAS 1.4
+  // point format 7, 120000 points, survey coordinates"); empty otherwise.
+  std::string imported_from;
   std::vector<std::string> warnings;
 
   // North is known: from a compass line or control points, or (a further
@@ -84,6 +89,12 @@ struct ModelRegistration {
 // Reads the stored registration; malformed or missing parameters give a
 // record with only the kind (never throws: a screen shows what there is).
 ModelRegistration read_model_registration(const Registration& r);
+
+// The registration kind of a 3D image imported in survey coordinates: the
+// scanner's (or the drone software's) registration scaled, levelled and
+// oriented it; rockface did not.
+inline constexpr const char* kScannerRegistration = "scanner";
+inline constexpr const char* kScannerRegistrationWords = "the scanner's registration";
 
 // The kind a model's registration is recorded under, from what the
 // reconstruction used: "range_pole_compass", "range_pole" (scaled and

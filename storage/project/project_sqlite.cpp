@@ -288,16 +288,25 @@ std::optional<double> Statement::column_optional_double(int column) const {
 
 WriteTransaction::WriteTransaction(Connection& db, std::string_view doing)
     : db_(db), doing_(doing) {
-  db_.exec("BEGIN IMMEDIATE", doing_);
+  // Inside another write (ProjectStore::in_one_transaction) a save is a
+  // savepoint of it: it commits with the outer one or not at all.
+  nested_ = sqlite3_get_autocommit(db_.handle()) == 0;
+  db_.exec(nested_ ? "SAVEPOINT nested_write" : "BEGIN IMMEDIATE", doing_);
   open_ = true;
 }
 
 WriteTransaction::~WriteTransaction() {
-  if (open_) sqlite3_exec(db_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
+  if (!open_) return;
+  if (nested_)
+    sqlite3_exec(db_.handle(), "ROLLBACK TO nested_write; RELEASE nested_write", nullptr, nullptr,
+                 nullptr);
+  else
+    sqlite3_exec(db_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
 }
 
 void WriteTransaction::commit() {
-  const int rc = sqlite3_exec(db_.handle(), "COMMIT", nullptr, nullptr, nullptr);
+  const int rc = sqlite3_exec(db_.handle(), nested_ ? "RELEASE nested_write" : "COMMIT", nullptr,
+                              nullptr, nullptr);
   if (rc != SQLITE_OK) {
     // A failed COMMIT (disk full, I/O error) may leave the transaction open;
     // the destructor rolls it back so the connection stays usable.

@@ -141,6 +141,7 @@ class RowReader {
 // BEGIN IMMEDIATE ... COMMIT. Taking the write lock at BEGIN (not at the first
 // write) means a busy project is waited for by the busy timeout instead of
 // failing half-way with SQLITE_BUSY. Rolls back when destroyed uncommitted.
+// Opened inside another write it is a savepoint of that one.
 class WriteTransaction {
  public:
   WriteTransaction(Connection& db, std::string_view doing);
@@ -153,6 +154,7 @@ class WriteTransaction {
   Connection& db_;
   std::string doing_;
   bool open_ = false;
+  bool nested_ = false;  // a savepoint inside an open write
 };
 
 // A read snapshot (BEGIN ... COMMIT) so that a load made of several queries

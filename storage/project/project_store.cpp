@@ -387,6 +387,13 @@ void ProjectStore::update_project(const ProjectInfo& info) {
 
 // ---------------------------------------------------------------- visits
 
+void ProjectStore::in_one_transaction(const std::string& doing, const std::function<void()>& body) {
+  require_writable(doing);
+  WriteTransaction tx(db_, doing);
+  body();
+  tx.commit();
+}
+
 RecordId ProjectStore::begin_visit(const std::string& source, const std::string& note) {
   const std::string doing = "starting a visit";
   require_writable(doing);

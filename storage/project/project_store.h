@@ -28,6 +28,7 @@
 // write-ahead log in use here).
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -82,6 +83,11 @@ class ProjectStore {
 
   ProjectInfo project();
   void update_project(const ProjectInfo& info);
+
+  // Runs `body` (saves of this store) as one transaction: everything it
+  // saves is stored, or nothing when it throws (an import that fails half-way
+  // leaves the project as it was).
+  void in_one_transaction(const std::string& doing, const std::function<void()>& body);
 
   // A new visit every call (running replay twice gives two visits).
   RecordId begin_visit(const std::string& source, const std::string& note = {});

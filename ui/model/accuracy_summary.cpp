@@ -11,6 +11,7 @@ namespace f = format;
 using storage::ModelRegistration;
 
 void scale_and_orientation(std::vector<AccuracyLine>& out, const ModelRegistration& reg) {
+  if (!reg.imported_from.empty()) out.push_back({"3D image", "imported from " + reg.imported_from});
   const std::string& scale = reg.scale_source;
   if (scale == "range pole") {
     std::string v = "range pole";

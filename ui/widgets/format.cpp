@@ -206,6 +206,9 @@ std::string registered_by(std::string_view kind) {
     return "scaled and oriented by " + in_words(kind);
   if (kind == "range_pole") return "scaled and levelled by range pole; no north (no compass line)";
   if (kind == "baseline") return "scaled by the measured camera base";
+  if (kind == "scanner")
+    return "imported in survey coordinates: scaled, levelled and oriented by the scanner's "
+           "registration";
   if (kind == "face_images") return in_words(kind);
   if (kind == "none" || kind.empty())
     return "not scaled or oriented (no range pole, control points or baseline)";

@@ -1,10 +1,9 @@
 // Every parser a user feeds, fed mutated files (tests/storage/fuzz/mutator.h): scene
 // JSON, picks JSON, camera JSON, control-point CSV, the reference line, a PLY
-// model, a capture's EXIF and a project file. A parser may accept an input or
-// refuse it with a
-// rockface::Error (InputError naming the file and field); it may not crash,
-// hang or let another exception out (a raw nlohmann or std:: message is not
-// what the user should read). Failing inputs are written to
+// model, the imported clouds and meshes (LAS, XYZ / PTS, PTX, PCD, OBJ), a capture's EXIF and a
+// project file. A parser may accept an input or refuse it with a rockface::Error (InputError naming
+// the file and field); it may not crash, hang or let another exception out (a raw nlohmann or std::
+// message is not what the user should read). Failing inputs are written to
 // ROCKFACE_BINARY_DIR/fuzz-failures; each one found becomes a file in
 // tests/storage/fuzz/corpus/regressions, run on every pass.
 //
@@ -30,7 +29,12 @@
 #include "core/common/error.h"
 #include "core/photogrammetry/estimators/registration.h"
 #include "core/photogrammetry/targets/reference_line.h"
+#include "storage/exchange/las_reader.h"
+#include "storage/exchange/obj_reader.h"
+#include "storage/exchange/pcd_reader.h"
 #include "storage/exchange/ply_reader.h"
+#include "storage/exchange/ptx_reader.h"
+#include "storage/exchange/xyz_reader.h"
 #include "storage/project/project_store.h"
 #include "storage/scene/camera_json.h"
 #include "storage/scene/picks_json.h"
@@ -188,6 +192,37 @@ TEST(Fuzz, PlyModel) {
   // the text mutations (extreme numbers) reach the element counts.
   fuzz("ply", files_in(kCorpus / "ply"), true, iterations(100000),
        [](const std::string& in) { rockface::storage::parse_ply(in, "fuzz.ply"); });
+}
+
+// The import readers of `rockface import` (issue 43). LAS is binary (its
+// counts and scales in the header: byte mutations reach them); the others
+// are text or a text header (number mutations reach their counts).
+TEST(Fuzz, LasCloud) {
+  fuzz("las", files_in(kCorpus / "las"), false, iterations(100000),
+       [](const std::string& in) { rockface::storage::parse_las(in, "fuzz.las"); });
+}
+
+TEST(Fuzz, TextCloud) {
+  fuzz("xyz", files_in(kCorpus / "xyz"), true, iterations(50000),
+       [](const std::string& in) { rockface::storage::parse_xyz(in, "fuzz.xyz", {}, false); });
+  fuzz("pts", files_in(kCorpus / "pts"), true, iterations(50000),
+       [](const std::string& in) { rockface::storage::parse_xyz(in, "fuzz.pts", {}, true); });
+}
+
+TEST(Fuzz, PtxScan) {
+  fuzz("ptx", files_in(kCorpus / "ptx"), true, iterations(50000),
+       [](const std::string& in) { rockface::storage::parse_ptx(in, "fuzz.ptx"); });
+}
+
+TEST(Fuzz, PcdCloud) {
+  fuzz("pcd", files_in(kCorpus / "pcd"), true, iterations(50000),
+       [](const std::string& in) { rockface::storage::parse_pcd(in, "fuzz.pcd"); });
+}
+
+// tinyobjloader parses; the reader checks what it gives (indices, NaN).
+TEST(Fuzz, ObjMesh) {
+  fuzz("obj", files_in(kCorpus / "obj"), true, iterations(50000),
+       [](const std::string& in) { rockface::storage::parse_obj(in, "fuzz.obj", {}); });
 }
 
 namespace {

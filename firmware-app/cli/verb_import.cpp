@@ -1,0 +1,125 @@
+// `rockface import PROJECT FILE [--visit N | --new-visit] [--columns x,y,z,...]
+//  [--offset E,N,Z] [--frame survey|local] [--view-from E,N,Z]`: a point cloud
+// or a mesh made elsewhere (PLY, OBJ, PCD, XYZ / TXT / CSV / ASC, PTS, PTX,
+// LAS) becomes a visit's 3D image (firmware-app/import/import_surface.h).
+// A refused file stops the verb (exit 2) naming the file and the place, with
+// nothing stored.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/import/import_surface.h"
+
+namespace rockface::app {
+namespace {
+
+struct ImportOptions {
+  std::string project, file, columns, offset, view_from, frame;
+  storage::RecordId visit = 0;
+  bool new_visit = false;
+};
+
+// "E,N,Z": three finite numbers.
+Eigen::Vector3d parse_triple(const std::string& text, const std::string& option) {
+  Eigen::Vector3d v;
+  std::istringstream in(text);
+  char comma = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (!(in >> v[k]) || !std::isfinite(v[k]))
+      throw InputError(option, "'" + text + "' is not three numbers E,N,Z");
+    if (k < 2 && (!(in >> comma) || comma != ','))
+      throw InputError(option, "'" + text + "' is not three numbers E,N,Z");
+  }
+  if (in >> comma) throw InputError(option, "'" + text + "' is not three numbers E,N,Z");
+  return v;
+}
+
+// E N Z to the millimetre, as a surveyor reads them.
+std::string survey_words(const Eigen::Vector3d& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "E %.3f N %.3f Z %.3f", p.x(), p.y(), p.z());
+  return text;
+}
+
+VerbRun setup_import(CLI::App& sub) {
+  auto o = std::make_shared<ImportOptions>();
+  sub.add_option("PROJECT", o->project, "project file (*.rockface); created when missing")
+      ->required();
+  sub.add_option("FILE", o->file,
+                 "the 3D image: " + storage::imported_surface_extensions() +
+                     " (LAZ and E57 converted first)")
+      ->required();
+  auto* visit = sub.add_option("--visit", o->visit, "add it to this visit");
+  sub.add_flag("--new-visit", o->new_visit, "a new visit for it (the default)")->excludes(visit);
+  sub.add_option("--columns", o->columns,
+                 "a text cloud's columns when its header does not name them, e.g. x,y,z,r,g,b "
+                 "(- skips a column)");
+  sub.add_option("--offset", o->offset,
+                 "E,N,Z added to every coordinate: the shift the file was written with");
+  sub.add_option("--frame", o->frame,
+                 "survey (already scaled and oriented) or local; default: survey when the "
+                 "coordinates are beyond 10 km or an offset is given");
+  sub.add_option("--view-from", o->view_from,
+                 "E,N,Z: a point the surface is seen from (the scanner's station)");
+  return [o] {
+    ImportRequest request;
+    request.file = o->file;
+    if (!o->columns.empty())
+      request.file_options.columns = storage::parse_point_columns(o->columns, "--columns");
+    if (!o->offset.empty()) request.file_options.offset = parse_triple(o->offset, "--offset");
+    if (!o->view_from.empty()) request.view_from = parse_triple(o->view_from, "--view-from");
+    request.frame = o->frame;
+    if (o->visit != 0) request.visit = o->visit;
+    // The file is checked before the project is created or changed.
+    if (!std::filesystem::is_regular_file(o->file)) throw InputError(o->file, "no such file");
+    // A new project's datum is the file's (import_surface.h): zero here.
+    // A project created for a file that is then refused is removed again:
+    // a refused import leaves the folder as it was.
+    const bool created = !std::filesystem::exists(o->project);
+    ImportResult r;
+    try {
+      storage::ProjectInfo info;
+      info.name = std::filesystem::path(o->project).stem().string();
+      storage::ProjectStore store = storage::ProjectStore::open_or_create(o->project, info);
+      r = import_surface(store, request);
+    } catch (...) {
+      if (created)
+        for (const char* suffix : {"", "-wal", "-shm", "-journal"})
+          std::filesystem::remove(o->project + suffix);
+      throw;
+    }
+    std::cout << o->file << ": " << r.format << ", " << r.points << " points";
+    if (r.skipped_points) std::cout << " (" << r.skipped_points << " without a return)";
+    std::cout << "\n";
+    if (r.meshed)
+      std::cout << "meshed: " << r.triangles << " triangles over the best plane, point spacing "
+                << r.point_spacing_m * 1000 << " mm, " << r.unused_points
+                << " points in no triangle (holes kept, never bridged)\n";
+    else
+      std::cout << "mesh: " << r.triangles << " triangles of the file\n";
+    if (r.frame == "survey") {
+      std::cout << "survey coordinates: registered by the scanner's registration; file offset "
+                << survey_words(r.file_datum) << "\n";
+      if (r.project_datum_set)
+        std::cout << "the project's datum is now the file's: " << survey_words(r.project_datum)
+                  << "\n";
+    } else {
+      std::cout << "a local frame: not scaled or oriented until control points are picked on it\n";
+    }
+    std::cout << "virtual view " << r.view_width << " x " << r.view_height << " px, seen "
+              << r.view_side << "\n";
+    std::cout << "stored in " << o->project << ": visit " << r.visit << ", model " << r.model
+              << "\n";
+    return 0;
+  };
+}
+
+const VerbRegistrar import_verb{
+    "import", "a point cloud or mesh made elsewhere as a visit's 3D image", setup_import};
+
+}  // namespace
+}  // namespace rockface::app

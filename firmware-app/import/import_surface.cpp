@@ -1,0 +1,268 @@
+#include "firmware-app/import/import_surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <type_traits>
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/common/error.h"
+#include "core/photogrammetry/surface/cloud_meshing.h"
+#include "core/photogrammetry/surface/surface_mesh.h"
+#include "core/photogrammetry/surface/virtual_view.h"
+#include "firmware-app/records/project_visit.h"
+#include "storage/project/model_registration.h"
+
+namespace rockface::app {
+
+namespace import_detail {
+
+std::string words_of(const Eigen::Vector3d& p) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(3);
+  s << p.x() << " " << p.y() << " " << p.z();
+  return s.str();
+}
+
+// The side the view looks from: the --view-from point, the file's own
+// normals or faces, else up for a surface lying flat, else the side of the
+// best plane's normal whose bearing is in [0, 180) (named in the note).
+Eigen::Vector3d toward_viewer(const storage::ImportedSurface& s,
+                              const std::vector<std::array<int, 3>>& triangles,
+                              const Eigen::Vector3d& centre, const Eigen::Vector3d& plane_normal,
+                              const std::optional<Eigen::Vector3d>& view_from, bool faces_from_file,
+                              std::string& how) {
+  Eigen::Vector3d n = plane_normal;
+  if (view_from) {
+    if ((*view_from - centre).dot(n) < 0) n = -n;
+    how = "from the side of the given --view-from point";
+    return n;
+  }
+  if (faces_from_file) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double area = 0;
+    const auto& V = s.mesh.vertices;
+    for (const auto& t : triangles) {
+      const Eigen::Vector3d c =
+          (V[static_cast<std::size_t>(t[1])] - V[static_cast<std::size_t>(t[0])])
+              .cross(V[static_cast<std::size_t>(t[2])] - V[static_cast<std::size_t>(t[0])]);
+      sum += c;
+      area += c.norm();
+    }
+    // 0.2: the faces agree on a side (an open surface seen from one side);
+    // a closed mesh's or a folded one's sum is near zero and says nothing.
+    if (area > 0 && sum.norm() > 0.2 * area) {
+      how = "from the side its faces look to";
+      return sum.dot(n) < 0 ? Eigen::Vector3d(-n) : n;
+    }
+  }
+  if (!s.normals.empty()) {
+    double vote = 0;
+    for (const auto& m : s.normals) vote += m.cast<double>().dot(n);
+    if (vote != 0) {
+      how = "from the side the file's normals point to";
+      return vote < 0 ? Eigen::Vector3d(-n) : n;
+    }
+  }
+  // 0.5: steeper than 60 degrees is a face or a wall, flatter a floor or a
+  // slope seen from above.
+  if (std::abs(n.z()) > 0.5) {
+    how = "from above";
+    return n.z() < 0 ? Eigen::Vector3d(-n) : n;
+  }
+  if (std::atan2(n.x(), n.y()) < 0) n = -n;
+  const double bearing = std::atan2(n.x(), n.y()) * 180 / M_PI;
+  std::ostringstream s_how;
+  s_how.precision(3);
+  s_how << "from bearing " << bearing
+        << " deg (the file says no side: give --view-from if that is behind the rock)";
+  how = s_how.str();
+  return n;
+}
+
+}  // namespace import_detail
+
+ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request) {
+  using namespace import_detail;
+  if (store.read_only())
+    throw InputError(store.file().string(), "cannot import: " + store.read_only_reason());
+  if (request.visit) require_visit(store, *request.visit);
+  if (!request.frame.empty() && request.frame != "survey" && request.frame != "local")
+    throw InputError("--frame", "'" + request.frame + "' (survey or local)");
+
+  // Everything read and checked before anything is stored.
+  storage::ImportedSurface s = storage::read_imported_surface(request.file, request.file_options);
+  const std::string source = request.file.string();
+  ImportResult r;
+  r.format = s.format;
+  r.points = s.mesh.vertices.size();
+  r.skipped_points = s.skipped_points;
+  r.frame =
+      !request.frame.empty() ? request.frame : (s.datum.isZero() ? std::string("local") : "survey");
+  r.registration_kind = r.frame == "survey" ? storage::kScannerRegistration : "none";
+  r.file_datum = s.datum;
+
+  // The stored frame: the project's (datum-relative) for survey
+  // coordinates, the file's own for a local frame.
+  const storage::ProjectInfo project = store.project();
+  r.project_datum = project.datum;
+  Eigen::Vector3d shift = s.datum;  // stored = read + shift
+  if (r.frame == "survey") {
+    if (project.datum.isZero() && store.list_models().empty()) {
+      r.project_datum = s.datum;
+      r.project_datum_set = !s.datum.isZero();
+    }
+    shift = s.datum - r.project_datum;
+  }
+  for (auto& p : s.mesh.vertices) p += shift;
+  std::optional<Eigen::Vector3d> view_from;
+  if (request.view_from)
+    view_from =
+        *request.view_from - (r.frame == "survey" ? r.project_datum : Eigen::Vector3d::Zero());
+
+  // A cloud becomes a surface; a mesh keeps its faces.
+  const bool from_file = !s.mesh.faces.empty();
+  std::vector<std::array<int, 3>> triangles;
+  photogrammetry::CloudMesh meshed;
+  if (from_file) {
+    triangles.reserve(s.mesh.faces.size());
+    for (const auto& f : s.mesh.faces) triangles.push_back({f[0], f[1], f[2]});
+    const photogrammetry::BestPlane plane = photogrammetry::best_plane(s.mesh.vertices);
+    meshed.centroid = plane.centroid;
+    meshed.normal = plane.normal;
+    photogrammetry::SurfaceMesh edges;  // for its median edge length: the spacing
+    edges.vertices = s.mesh.vertices;
+    edges.triangles = triangles;
+    meshed.median_spacing = edges.median_edge_length();
+  } else {
+    try {
+      meshed = photogrammetry::mesh_point_cloud(s.mesh.vertices);
+    } catch (const InputError& e) {
+      throw InputError(source, e.reason());
+    }
+    triangles = std::move(meshed.triangles);
+    r.meshed = true;
+    r.unused_points = meshed.unused_points;
+  }
+  if (triangles.empty())
+    throw InputError(source,
+                     "no surface: every triangle bridged a gap wider than " +
+                         std::to_string(photogrammetry::CloudMeshingOptions{}.max_edge_to_spacing) +
+                         " point spacings");
+  r.triangles = triangles.size();
+  r.point_spacing_m = meshed.median_spacing;
+  const Eigen::Vector3d viewer = toward_viewer(s, triangles, meshed.centroid, meshed.normal,
+                                               view_from, from_file, r.view_side);
+  if (r.meshed && viewer.dot(meshed.normal) < 0)  // counter-clockwise seen from the viewer
+    for (auto& t : triangles) std::swap(t[1], t[2]);
+
+  cv::Mat texture;
+  if (!s.texture_file.empty()) {
+    texture = cv::imread(s.texture_file, cv::IMREAD_COLOR);
+    if (texture.empty())
+      throw InputError(source, "its texture " + s.texture_file + " is not an image OpenCV reads");
+  }
+  photogrammetry::VirtualViewInput in;
+  in.vertices = &s.mesh.vertices;
+  in.triangles = &triangles;
+  in.colours = &s.mesh.colours;
+  in.texcoords = &s.mesh.texcoords;
+  in.texture = texture;
+  in.centre = meshed.centroid;
+  in.toward_viewer = viewer;
+  in.point_spacing = meshed.median_spacing;
+  photogrammetry::VirtualView view = photogrammetry::render_virtual_view(in);
+  view.pixels = {};  // the texture coordinates say the same; memory for the store
+  r.view_width = view.intrinsics.width;
+  r.view_height = view.intrinsics.height;
+  // A texture's colour for every vertex too (the 3D view draws vertex colours).
+  if (s.mesh.colours.empty() && !texture.empty()) {
+    s.mesh.colours.reserve(s.mesh.vertices.size());
+    for (const auto& t : s.mesh.texcoords) {
+      const int x = std::clamp(static_cast<int>(t[0] * static_cast<float>(texture.cols)), 0,
+                               texture.cols - 1);
+      const int y = std::clamp(static_cast<int>(t[1] * static_cast<float>(texture.rows)), 0,
+                               texture.rows - 1);
+      const cv::Vec3b c = texture.at<cv::Vec3b>(y, x);
+      s.mesh.colours.push_back({c[2], c[1], c[0]});
+    }
+  }
+  std::vector<unsigned char> jpeg;
+  // Quality 95: the view is what the geologist traces joints on.
+  if (!cv::imencode(".jpg", view.image, jpeg, {cv::IMWRITE_JPEG_QUALITY, 95}))
+    throw Error("cannot encode the virtual view of " + source);
+
+  storage::Model model;
+  model.preset = "standard";
+  model.mesh.vertices = std::move(s.mesh.vertices);
+  static_assert(std::is_same_v<std::array<int, 3>, std::array<std::int32_t, 3>>);
+  model.mesh.faces = std::move(triangles);  // no copy: a 10-million-point cloud's are 240 MB
+  model.mesh.colours = std::move(s.mesh.colours);
+  model.mesh.texcoords = std::move(view.texcoords);  // into the view, the model's texture
+  model.texture_side = "left";
+  model.registration.kind = r.registration_kind;
+  photogrammetry::Similarity camera;
+  camera.R = view.pose.R.transpose();
+  camera.t = view.pose.centre;
+  model.camera_to_mesh = camera;
+
+  std::ostringstream words;
+  words << request.file.filename().string() << ": " << s.format << ", " << r.points << " points";
+  if (r.skipped_points) words << " (" << r.skipped_points << " without a return left out)";
+  words << (r.meshed ? ", meshed here (2.5D Delaunay, holes kept)" : ", its own faces");
+  words << (r.frame == "survey" ? ", survey coordinates (file offset " + words_of(s.datum) + ")"
+                                : ", a local frame");
+  nlohmann::json p;
+  p["format"] = "rockface-import/1";
+  p["import"] = {
+      {"file", source},           {"format", s.format},
+      {"points", r.points},       {"skipped_points", r.skipped_points},
+      {"triangles", r.triangles}, {"meshed", r.meshed},
+      {"frame", r.frame},         {"file_datum", {s.datum.x(), s.datum.y(), s.datum.z()}},
+      {"view_side", r.view_side}, {"words", words.str()}};
+  p["point_spacing"] = r.point_spacing_m;
+  if (r.frame == "survey")
+    p["registration"] = {{"scale_source", storage::kScannerRegistrationWords},
+                         {"vertical_source", storage::kScannerRegistrationWords},
+                         {"north_source", storage::kScannerRegistrationWords},
+                         {"scaled", true},
+                         {"scale", 1.0}};
+  else
+    p["registration"] = {{"scale_source", "none"},
+                         {"vertical_source", "none"},
+                         {"north_source", "none"},
+                         {"scaled", false}};
+  model.registration.parameters_json = p.dump();
+
+  storage::Calibration calibration;
+  calibration.intrinsics = view.intrinsics;
+  calibration.method = "virtual view of an imported 3D image";
+  storage::Capture capture;
+  capture.label = "imported " + request.file.filename().string();
+  capture.left.bytes.assign(jpeg.begin(), jpeg.end());
+  capture.right = capture.left;  // one view: the image is stored once
+  capture.settings = {{"source", "import"}, {"file", source}, {"format", s.format}};
+
+  store.in_one_transaction("importing " + source, [&] {
+    if (r.project_datum_set) {
+      storage::ProjectInfo info = project;
+      info.datum = r.project_datum;
+      store.update_project(info);
+    }
+    r.visit = request.visit ? *request.visit : store.begin_visit("import " + source);
+    capture.visit_id = r.visit;
+    capture.calibration_id = store.save_calibration(calibration);
+    r.capture = store.save_capture(capture);
+    model.capture_id = r.capture;
+    model.texture_capture_id = r.capture;
+    r.model = store.save_model(model);
+    store.log_action(r.visit, "import", words.str());
+  });
+  return r;
+}
+
+}  // namespace rockface::app

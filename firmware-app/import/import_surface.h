@@ -1,0 +1,59 @@
+#pragma once
+// A 3D image made elsewhere becomes a visit's 3D image (`rockface import`,
+// and the tablet's Project screen): the file is read (storage/exchange's
+// import readers), a point cloud is meshed (a 2.5D Delaunay over its best
+// plane, holes left as holes), a virtual photograph of it is drawn (the
+// "left photograph" the geologist maps on: every vertex has its pixel), and
+// the visit, the view's calibration, the view as a capture and the model are
+// stored in one transaction, after everything was read and checked: a
+// refused import leaves the project as it was.
+//
+// Frames: a file in survey coordinates (coordinates beyond 10 km, an
+// --offset, or a PLY that names its datum) is already scaled, levelled and
+// oriented: its registration is "scanner" (the scanner's registration), and
+// its points are moved to the project's datum (a project with no datum and no
+// 3D image yet takes the file's). A file in a local frame is stored as it is,
+// registration "none", until control points picked on it place it.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "storage/exchange/import_reader.h"
+#include "storage/project/project_records.h"
+#include "storage/project/project_store.h"
+
+namespace rockface::app {
+
+struct ImportRequest {
+  std::filesystem::path file;
+  storage::ImportFileOptions file_options;
+  std::optional<storage::RecordId> visit;  // add to this visit; none: a new visit
+  // "survey" | "local" | "" (from the coordinates: survey beyond 10 km).
+  std::string frame;
+  // A point the surface is seen from (absolute, as the file's coordinates
+  // plus the offset): where the scanner stood or the geologist looks from.
+  // None: the file's normals or faces say, else the upper side of a surface
+  // lying flat, else a side the note names.
+  std::optional<Eigen::Vector3d> view_from;
+};
+
+struct ImportResult {
+  storage::RecordId visit = 0, model = 0, capture = 0;
+  std::string format;
+  std::size_t points = 0, triangles = 0, skipped_points = 0, unused_points = 0;
+  bool meshed = false;            // a cloud meshed here (else the file's faces)
+  std::string frame;              // "survey" | "local"
+  std::string registration_kind;  // "scanner" | "none"
+  Eigen::Vector3d file_datum = Eigen::Vector3d::Zero();  // absolute = stored vertex + datum
+  Eigen::Vector3d project_datum = Eigen::Vector3d::Zero();
+  bool project_datum_set = false;  // the project took the file's datum
+  double point_spacing_m = 0;
+  int view_width = 0, view_height = 0;
+  std::string view_side;  // how the side the view looks from was chosen, in words
+};
+
+ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request);
+
+}  // namespace rockface::app

@@ -1,0 +1,30 @@
+#pragma once
+// The import readers chosen by the file's name (`rockface import`): .ply,
+// .obj, .pcd, .xyz / .txt / .csv / .asc, .pts, .ptx, .las. LAZ and E57 are
+// refused naming the format and the tools that convert them (no Debian
+// library reads them); any other name is refused listing the formats read.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "storage/exchange/imported_surface.h"
+#include "storage/exchange/xyz_reader.h"
+
+namespace rockface::storage {
+
+struct ImportFileOptions {
+  PointColumns columns;  // text clouds: the columns, when the file does not say
+  // Added to every coordinate the file holds: the shift a program wrote the
+  // file with (CloudCompare's "global shift"), so that absolute = file + offset.
+  std::optional<Eigen::Vector3d> offset;
+};
+
+ImportedSurface read_imported_surface(const std::filesystem::path& file,
+                                      const ImportFileOptions& options = {});
+
+// The names read, for messages and help: ".ply, .obj, ...".
+std::string imported_surface_extensions();
+
+}  // namespace rockface::storage
