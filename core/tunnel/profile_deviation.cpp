@@ -9,13 +9,17 @@
 #include "core/common/number_format.h"
 #include "core/common/parallel.h"
 #include "core/common/units.h"
+#include "core/tunnel/lining_statistics.h"
 #include "core/tunnel/mesh_raycast.h"
 
 namespace rockface::tunnel {
 
 namespace {
 
-constexpr std::uint8_t kSeen = 0, kNotSeen = 1, kExcluded = 2;
+// The developed view's states (profile_deviation.h); while the cells are
+// measured, "left out" is told apart as off the lining or below the invert.
+constexpr std::uint8_t kSeen = 0, kNotSeen = 1, kExcluded = 2, kLeftOut = 3;
+constexpr std::uint8_t kOffLining = 4, kBelowInvert = 5;
 
 enum class Region : std::uint8_t { roof, wall, floor };
 
@@ -66,6 +70,28 @@ std::vector<Ray> rays_of(const DesignProfile& profile, double ray_spacing) {
       r.region = Region::wall;
   }
   return rays;
+}
+
+// n rays inside each column, evenly along the outline (the cell's rays, with
+// the section's n positions along the chainage): the same in every section.
+std::vector<Ray> sub_rays_of(const DesignProfile& profile, const std::vector<Ray>& rays,
+                             std::size_t n, double cell_s) {
+  const double P = profile.perimeter();
+  const Eigen::Vector2d c = profile.ray_centre();
+  std::vector<Ray> out;
+  out.reserve(rays.size() * n);
+  for (const Ray& column : rays)
+    for (std::size_t b = 0; b < n; ++b) {
+      Ray r = column;
+      r.s = column.s + ((static_cast<double>(b) + 0.5) / static_cast<double>(n) - 0.5) * cell_s;
+      r.s = std::fmod(r.s + P, P);
+      const Eigen::Vector2d d = profile.point_at_length(r.s) - c;
+      r.design = d.norm();
+      r.angle = std::atan2(d.y(), d.x());
+      r.cos_incidence = std::max(0.0, profile.outward_normal_at_length(r.s).dot(d / r.design));
+      out.push_back(r);
+    }
+  return out;
 }
 
 // Connected cells of underbreak beyond tolerance on the developed view
@@ -160,6 +186,14 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
   require_positive(options.section_spacing_m, "section_spacing_m");
   require_positive(options.ray_spacing_m, "ray_spacing_m");
   require_positive(options.max_overbreak_m, "max_overbreak_m");
+  require_positive(options.plausible_slope, "plausible_slope");
+  if (options.rays_per_cell_side < 1 || options.rays_per_cell_side > 15)
+    throw InputError("options.rays_per_cell_side",
+                     "must be 1 to 15, got " + std::to_string(options.rays_per_cell_side));
+  if (!std::isfinite(options.depth_sigma_m) || options.depth_sigma_m < 0)
+    throw InputError("options.depth_sigma_m", "must be a number >= 0 (0: not stated)");
+  if (!std::isfinite(options.noise_sigmas) || options.noise_sigmas < 0)
+    throw InputError("options.noise_sigmas", "must be a number >= 0");
   if (!std::isfinite(options.underbreak_tolerance_m) || options.underbreak_tolerance_m < 0)
     throw InputError("options.underbreak_tolerance_m", "must be a number >= 0");
   if (!std::isfinite(options.chainage_from) || !std::isfinite(options.chainage_to))
@@ -207,21 +241,131 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
 
   const std::vector<Ray> rays = rays_of(profile, options.ray_spacing_m);
   const std::size_t cols = rays.size();
-  const std::size_t rows =
+  const std::size_t all_rows =
       hi > lo
           ? static_cast<std::size_t>(std::ceil((hi - lo) / options.section_spacing_m - 1e-9)) + 1
           : 1;
-  const double dc = rows > 1 ? (hi - lo) / static_cast<double>(rows - 1) : 0;
+  const double dc = all_rows > 1 ? (hi - lo) / static_cast<double>(all_rows - 1) : 0;
+  const double cell_c = all_rows > 1 ? dc : options.section_spacing_m;
   const double cell_s = profile.perimeter() / static_cast<double>(cols);
   const Eigen::Vector2d centre = profile.ray_centre();
+  const std::size_t n = static_cast<std::size_t>(options.rays_per_cell_side);
+  // The cell's rays along the outline: n evenly inside each column.
+  const std::vector<Ray> sub_rays = sub_rays_of(profile, rays, n, cell_s);
+  // The design's lowest point: a wall or roof ray whose surface lies below
+  // it (by more than the noise) went through a hole in the invert's mesh.
+  double invert_v = std::numeric_limits<double>::infinity();
+  for (const Ray& r : sub_rays)
+    invert_v = std::min(invert_v, centre.y() + r.design * std::sin(r.angle));
+  out.noise_threshold_m = options.depth_sigma_m * options.noise_sigmas;
+
+  // Per cell: its state, the median normal and ray deviations of its rays.
+  std::vector<std::uint8_t> state(all_rows * cols, kNotSeen);
+  std::vector<double> normal_dev(all_rows * cols, 0.0), ray_dev(all_rows * cols, 0.0);
+  std::vector<double> chainage(all_rows);
+  parallel_for(all_rows, [&](std::size_t i) {
+    const double c = all_rows > 1 ? lo + dc * static_cast<double>(i) : lo;
+    chainage[i] = c;
+    std::vector<TunnelFrame> frames;
+    for (std::size_t a = 0; a < n; ++a)
+      frames.push_back(alignment.frame_at(
+          std::clamp(c + ((static_cast<double>(a) + 0.5) / static_cast<double>(n) - 0.5) * cell_c,
+                     alignment.first_chainage(), alignment.last_chainage())));
+    std::vector<double> nd, rd;
+    for (std::size_t j = 0; j < cols; ++j) {
+      nd.clear();
+      rd.clear();
+      std::size_t excluded = 0;
+      for (const TunnelFrame& f : frames) {
+        const Eigen::Vector3d origin = f.to_local(centre.x(), centre.y());
+        for (std::size_t b = 0; b < n; ++b) {
+          const Ray& r = sub_rays[j * n + b];
+          const Eigen::Vector3d dir = std::cos(r.angle) * f.right + std::sin(r.angle) * f.up;
+          const auto hit = caster.first_hit(origin, dir, 0.0, r.design + options.max_overbreak_m);
+          if (!hit) continue;
+          if (masked[hit->triangle]) {
+            ++excluded;
+            continue;
+          }
+          rd.push_back(hit->t - r.design);
+          nd.push_back((hit->t - r.design) * r.cos_incidence);
+        }
+      }
+      // The cell is rock where its rays met more rock than not rock (the
+      // median of those that did); at the frayed edge of a reconstruction
+      // a few rays are all there is.
+      const std::size_t k = i * cols + j;
+      if (!nd.empty() && nd.size() >= excluded) {
+        state[k] = kSeen;
+        normal_dev[k] = median_of(nd);
+        ray_dev[k] = median_of(rd);
+        const Ray& r = rays[j];
+        if (r.region != Region::floor && centre.y() + (r.design + ray_dev[k]) * std::sin(r.angle) <
+                                             invert_v - out.noise_threshold_m)
+          state[k] = kBelowInvert;
+      } else if (excluded > 0) {
+        state[k] = kExcluded;
+      }
+    }
+  });
+
+  // The round is measured where the surface is: sections at its ends that
+  // met nothing are left out, and said.
+  std::size_t first = 0, last = all_rows;
+  auto row_met_something = [&](std::size_t i) {
+    for (std::size_t j = 0; j < cols; ++j)
+      if (state[i * cols + j] != kNotSeen) return true;
+    return false;
+  };
+  while (first < all_rows && !row_met_something(first)) ++first;
+  while (last > first && !row_met_something(last - 1)) --last;
+  if (first == last) {
+    first = 0;  // nothing anywhere: every section stays, all unseen
+    last = all_rows;
+  } else {
+    const char* why = "the surface does not reach there (the photographs do not both see it)";
+    if (first > 0) out.sections_left_out.push_back({chainage[0], chainage[first - 1], first, why});
+    if (last < all_rows)
+      out.sections_left_out.push_back(
+          {chainage[last], chainage[all_rows - 1], all_rows - last, why});
+  }
+  const std::size_t rows = last - first;
+  auto keep_rows = [&](auto& v, std::size_t per_row) {
+    v.erase(v.begin() + static_cast<std::ptrdiff_t>(last * per_row), v.end());
+    v.erase(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(first * per_row));
+  };
+  keep_rows(state, cols);
+  keep_rows(normal_dev, cols);
+  keep_rows(ray_dev, cols);
+  keep_rows(chainage, 1);
+
+  // Cells off any plausible lining.
+  {
+    std::vector<std::uint8_t> seen(rows * cols);
+    for (std::size_t k = 0; k < rows * cols; ++k) seen[k] = state[k] == kSeen ? 1 : 0;
+    const std::vector<std::uint8_t> off =
+        cells_off_the_lining(rows, cols, normal_dev, seen, {cell_c, cell_s},
+                             options.plausible_slope, 2 * out.noise_threshold_m);
+    for (std::size_t k = 0; k < rows * cols; ++k)
+      if (off[k]) state[k] = kOffLining;
+  }
+  // The lining's offset from the design as a whole.
+  {
+    std::vector<double> kept;
+    for (std::size_t k = 0; k < rows * cols; ++k)
+      if (state[k] == kSeen) kept.push_back(normal_dev[k]);
+    out.lining_offset = lining_offset(kept);
+  }
+  out.lining_offset_removed = out.noise_threshold_m > 0 && out.lining_offset.cells > 0 &&
+                              std::abs(out.lining_offset.median_m) <= out.noise_threshold_m;
+  const double offset = out.lining_offset_removed ? out.lining_offset.median_m : 0.0;
 
   DevelopedView& view = out.view;
-  view.chainage.resize(rows);
+  view.chainage = chainage;
   view.s.resize(cols);
   for (std::size_t j = 0; j < cols; ++j) view.s[j] = rays[j].s;
   view.deviation_m.assign(rows * cols, std::numeric_limits<float>::quiet_NaN());
   view.state.assign(rows * cols, kNotSeen);
-  std::vector<double> normal_dev(rows * cols, 0.0);
   std::vector<ProfilePosition> position(rows * cols);
   out.sections.resize(rows);
 
@@ -229,9 +373,9 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
   std::size_t region_rays[3] = {0, 0, 0};
   for (const Ray& r : rays) ++region_rays[static_cast<int>(r.region)];
 
-  parallel_for(rows, [&](std::size_t i) {
-    const double c = rows > 1 ? lo + dc * static_cast<double>(i) : lo;
-    view.chainage[i] = c;
+  double counted_over_area = 0, counted_under_area = 0;  // developed, m^2
+  for (std::size_t i = 0; i < rows; ++i) {
+    const double c = chainage[i];
     const TunnelFrame f = alignment.frame_at(c);
     const Eigen::Vector3d origin = f.to_local(centre.x(), centre.y());
     SectionDeviation& sec = out.sections[i];
@@ -240,20 +384,18 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
     for (std::size_t j = 0; j < cols; ++j) {
       const Ray& r = rays[j];
       const std::size_t k = i * cols + j;
-      const Eigen::Vector3d dir = std::cos(r.angle) * f.right + std::sin(r.angle) * f.up;
-      const auto hit = caster.first_hit(origin, dir, 0.0, r.design + options.max_overbreak_m);
-      if (!hit) continue;
-      if (masked[hit->triangle]) {
-        view.state[k] = kExcluded;
-        ++excluded_rays;
-        continue;
-      }
-      const double t = hit->t;
-      const double ray_dev = t - r.design;
-      const double nd = ray_dev * r.cos_incidence;
-      view.state[k] = kSeen;
+      view.state[k] = state[k] == kSeen       ? kSeen
+                      : state[k] == kExcluded ? kExcluded
+                      : state[k] == kNotSeen  ? kNotSeen
+                                              : kLeftOut;
+      if (state[k] == kExcluded) ++excluded_rays;
+      if (state[k] != kSeen) continue;
+      const double nd = normal_dev[k] - offset;
+      const double rd = ray_dev[k] - (r.cos_incidence > 0.2 ? offset / r.cos_incidence : offset);
+      const double t = r.design + rd;
       view.deviation_m[k] = static_cast<float>(nd);
       normal_dev[k] = nd;
+      const Eigen::Vector3d dir = std::cos(r.angle) * f.right + std::sin(r.angle) * f.up;
       ProfilePosition& pos = position[k];
       pos.chainage = c;
       pos.s = r.s;
@@ -262,40 +404,49 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
       pos.survey = alignment.to_survey(pos.local);
       ++seen_rays;
       ++region_seen[static_cast<int>(r.region)];
+      // Within the noise threshold: the reconstruction's noise, not counted.
+      if (std::abs(nd) <= out.noise_threshold_m) continue;
       // Polar area between the design line and the surface, exact for the
       // sampled radii (A = 1/2 r^2 dtheta).
       const double a = 0.5 * (t * t - r.design * r.design) * r.dtheta;
-      if (a > 0)
+      if (a > 0) {
         sec.overbreak_area_m2 += a;
-      else
+        counted_over_area += cell_s * cell_c;
+      } else {
         sec.underbreak_area_m2 -= a;
+        counted_under_area += cell_s * cell_c;
+      }
       sec.max_overbreak_m = std::max(sec.max_overbreak_m, nd);
       sec.max_underbreak_m = std::max(sec.max_underbreak_m, -nd);
+      if (nd > out.max_overbreak_m) {
+        out.max_overbreak_m = nd;
+        out.max_overbreak = pos;
+      }
+      if (-nd > out.max_underbreak_m) {
+        out.max_underbreak_m = -nd;
+        out.max_underbreak = pos;
+        out.has_underbreak = true;
+      }
     }
     // Every ray stands for the same length of outline: fractions are counts.
-    auto part = [](std::size_t n, std::size_t of) {
-      return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 0.0;
+    auto part = [](std::size_t count, std::size_t of) {
+      return of > 0 ? static_cast<double>(count) / static_cast<double>(of) : 0.0;
     };
     sec.seen_fraction = part(seen_rays, cols);
     sec.excluded_fraction = part(excluded_rays, cols);
     sec.roof_seen = part(region_seen[0], region_rays[0]);
     sec.walls_seen = part(region_seen[1], region_rays[1]);
     sec.floor_seen = part(region_seen[2], region_rays[2]);
-  });
-  out.rays_cast = rows * cols;
+  }
+  out.rays_cast = all_rows * cols * n * n;
 
-  // Volumes (trapezoidal along the chainage), the extremes, the fractions.
+  // Volumes (trapezoidal along the chainage), the fractions.
   std::size_t seen = 0, excluded = 0;
   for (std::size_t k = 0; k < rows * cols; ++k) {
-    if (view.state[k] == kSeen) ++seen;
-    if (view.state[k] == kExcluded) ++excluded;
-    if (view.state[k] != kSeen) continue;
-    if (-normal_dev[k] > out.max_underbreak_m) {
-      out.max_underbreak_m = -normal_dev[k];
-      out.max_underbreak = position[k];
-      out.has_underbreak = true;
-    }
-    out.max_overbreak_m = std::max(out.max_overbreak_m, normal_dev[k]);
+    if (state[k] == kSeen) ++seen;
+    if (state[k] == kExcluded) ++excluded;
+    if (state[k] == kOffLining) ++out.cells_off_lining;
+    if (state[k] == kBelowInvert) ++out.cells_below_invert;
   }
   for (std::size_t i = 0; i + 1 < rows; ++i) {
     out.overbreak_volume_m3 +=
@@ -303,10 +454,15 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
     out.underbreak_volume_m3 +=
         0.5 * (out.sections[i].underbreak_area_m2 + out.sections[i + 1].underbreak_area_m2) * dc;
   }
+  if (options.depth_sigma_m > 0) {
+    const double sigma = options.depth_sigma_m + out.lining_offset.standard_error_m;
+    out.overbreak_volume_sigma_m3 = sigma * counted_over_area;
+    out.underbreak_volume_sigma_m3 = sigma * counted_under_area;
+    out.cell_sigma_m = options.depth_sigma_m;
+  }
   out.seen_fraction = static_cast<double>(seen) / static_cast<double>(rows * cols);
   out.excluded_fraction = static_cast<double>(excluded) / static_cast<double>(rows * cols);
-  out.beyond_tolerance = patches_of(out, options.underbreak_tolerance_m, cell_s,
-                                    rows > 1 ? dc : options.section_spacing_m, position);
+  out.beyond_tolerance = patches_of(out, options.underbreak_tolerance_m, cell_s, cell_c, position);
 
   // What the geologist is told.
   bool walls_or_roof = false;
@@ -315,8 +471,8 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
     walls_or_roof = walls_or_roof || s.walls_seen > 0 || s.roof_seen > 0;
     if (s.seen_fraction < options.min_seen_fraction) ++thin;
   }
-  const std::string range =
-      "chainage " + format_fixed(lo, 3) + " to " + format_fixed(hi, 3) + clipped;
+  const std::string range = "chainage " + format_fixed(view.chainage.front(), 3) + " to " +
+                            format_fixed(view.chainage.back(), 3) + clipped;
   if (!walls_or_roof) {
     out.status = DeviationStatus::no_walls_in_view;
     out.message = (seen == 0 ? std::string("nothing of the profile was in view")
@@ -324,16 +480,43 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
                   " (" + range + ", " + std::to_string(out.rays_cast) + " rays cast, " +
                   std::to_string(excluded) +
                   " stopped by what is not rock): no over- or underbreak can be given, not zero";
-  } else if (thin > 0) {
-    out.status = DeviationStatus::partly_seen;
-    out.message =
-        std::to_string(thin) + " of " + std::to_string(rows) + " cross-sections saw less than " +
-        format_fixed(100 * options.min_seen_fraction, 0) +
-        " % of the profile; areas and volumes cover only what was seen (" +
-        format_fixed(100 * out.seen_fraction, 1) + " % of the outline over " + range + ")";
   } else {
-    out.status = DeviationStatus::ok;
-    out.message = format_fixed(100 * out.seen_fraction, 1) + " % of the outline seen over " + range;
+    if (thin > 0) {
+      out.status = DeviationStatus::partly_seen;
+      out.message =
+          std::to_string(thin) + " of " + std::to_string(out.sections.size()) +
+          " cross-sections saw less than " + format_fixed(100 * options.min_seen_fraction, 0) +
+          " % of the profile; areas and volumes cover only what was seen (" +
+          format_fixed(100 * out.seen_fraction, 1) + " % of the outline over " + range + ")";
+    } else {
+      out.status = DeviationStatus::ok;
+      out.message =
+          format_fixed(100 * out.seen_fraction, 1) + " % of the outline seen over " + range;
+    }
+    // What the figures leave out, and why (issue 38).
+    for (const auto& l : out.sections_left_out)
+      out.message += "; " + std::to_string(l.sections) + " cross-section" +
+                     (l.sections == 1 ? "" : "s") + " at chainage " +
+                     format_fixed(l.chainage_from, 2) + " to " + format_fixed(l.chainage_to, 2) +
+                     " left out: " + l.why;
+    if (out.cells_off_lining + out.cells_below_invert > 0)
+      out.message += "; left out: " + std::to_string(out.cells_off_lining) +
+                     " cells off any plausible lining (no neighbour agrees with them), " +
+                     std::to_string(out.cells_below_invert) + " below the invert";
+    if (out.noise_threshold_m > 0)
+      out.message += "; deviations within " + format_fixed(1000 * out.noise_threshold_m, 1) +
+                     " mm (" + format_fixed(options.noise_sigmas, 0) +
+                     " sigma of the 3D image's stated depth precision) are not counted";
+    else
+      out.message += "; the 3D image states no depth precision: every deviation is counted";
+    if (out.lining_offset.cells > 0)
+      out.message += "; the lining lies " + format_fixed(1000 * out.lining_offset.median_m, 1) +
+                     " +- " + format_fixed(1000 * out.lining_offset.standard_error_m, 1) +
+                     " mm off the design as a whole" +
+                     (out.lining_offset_removed
+                          ? " (within the noise: taken as the 3D image's bias and removed)"
+                      : out.noise_threshold_m > 0 ? " (beyond the noise: kept)"
+                                                  : "");
   }
   return out;
 }

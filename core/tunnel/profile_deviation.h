@@ -26,6 +26,7 @@
 // negative = underbreak (rock inside it).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -35,6 +36,7 @@
 #include "core/common/preset.h"
 #include "core/tunnel/alignment.h"
 #include "core/tunnel/design_profile.h"
+#include "core/tunnel/lining_statistics.h"
 #include "core/tunnel/mesh_raycast.h"
 
 namespace rockface::tunnel {
@@ -57,6 +59,26 @@ struct DeviationOptions {
   // A section seeing less than this fraction of its outline is "partly seen";
   // a visit whose sections see nothing of walls / roof is "no walls in view".
   double min_seen_fraction = 0.5;
+  // Issue 38: robust figures. Each cell of the developed view is sampled by
+  // n x n rays (n along the outline, n along the chainage, evenly inside the
+  // cell) and its deviation is the median of those that meet rock: a speck
+  // of noise or a stray triangle that fewer than half of them meet makes no
+  // figure. A cell is rock when its rays meet more rock than not rock.
+  int rays_per_cell_side = 3;
+  // The 3D image's stated precision: its predicted depth sigma (m, the
+  // reconstruction's record); 0 = not stated (then nothing is taken for
+  // noise and the figures carry no uncertainty).
+  double depth_sigma_m = 0;
+  // Deviations within this many depth sigmas of the lining are the
+  // reconstruction's noise and are not counted as over- or underbreak (2:
+  // 95 % of the cells of a surface on the design line stay within it).
+  double noise_sigmas = 2;
+  // How steeply the excavated surface plausibly turns between neighbouring
+  // cells (m of deviation per m on the developed view; 2 = a rock face at
+  // 63 degrees to the design line, steeper than the flank of any break a
+  // blast leaves that is wider than two cells): a cell no neighbour agrees
+  // with within it (plus twice the noise threshold) is off the lining.
+  double plausible_slope = 2.0;
 };
 
 // The options of a preset (the knobs beside their component, issue 37):
@@ -94,7 +116,15 @@ struct SectionDeviation {
   // Seen fraction of the roof (v above the ray centre), walls (between) and
   // floor (below the lowest third): what the camera saw of each.
   double roof_seen = 0, walls_seen = 0, floor_seen = 0;
-  double max_overbreak_m = 0, max_underbreak_m = 0;  // normal depths, >= 0
+  double max_overbreak_m = 0, max_underbreak_m = 0;  // normal depths, >= 0 (counted cells)
+};
+
+// Sections at the ends of the asked range that met nothing of the surface
+// (the photographs do not reach there): left out of the round.
+struct SectionsLeftOut {
+  double chainage_from = 0, chainage_to = 0;
+  std::size_t sections = 0;
+  std::string why;
 };
 
 // A connected stretch of underbreak beyond tolerance on the developed view.
@@ -108,9 +138,10 @@ struct UnderbreakPatch {
 };
 
 // The developed view: rows = chainage (row i at chainage[i]), columns = arc
-// length (column j at s[j]); value = normal deviation (m, + over), NaN where
-// not seen, excluded or out of reach. `state` says which (0 seen, 1 not seen,
-// 2 excluded as not rock).
+// length (column j at s[j]); value = normal deviation (m, + over; less the
+// lining's offset when that was removed), NaN where not seen, excluded, left
+// out or out of reach. `state` says which (0 seen, 1 not seen, 2 excluded as
+// not rock, 3 left out: off any plausible lining or below the invert).
 struct DevelopedView {
   std::vector<double> chainage, s;
   std::vector<float> deviation_m;  // row-major, chainage.size() x s.size()
@@ -139,6 +170,27 @@ struct ProfileDeviation {
   ProfilePosition max_underbreak;  // deepest normal underbreak (valid if has_underbreak)
   double max_underbreak_m = 0;
   double max_overbreak_m = 0;
+  ProfilePosition max_overbreak;  // the largest normal overbreak (valid if max_overbreak_m > 0)
+
+  // Issue 38: what the figures count, what they leave out, how sure they are.
+  // Only cells whose deviation lies beyond the noise threshold (noise_sigmas
+  // x the stated depth sigma; 0 when none was stated) count as over- or
+  // underbreak, in the volumes, the areas and the largest of each.
+  double noise_threshold_m = 0;
+  // The lining's offset from the design as a whole (the median cell). When
+  // it lies within the noise threshold it cannot be told from the
+  // reconstruction's bias and is removed from every cell; beyond it the
+  // lining really lies off the design (a round excavated all round wide) and
+  // it is kept, and stated.
+  LiningOffset lining_offset;
+  bool lining_offset_removed = false;
+  std::size_t cells_off_lining = 0;    // left out: no neighbour agrees with them
+  std::size_t cells_below_invert = 0;  // left out: a wall or roof ray met them below the invert
+  std::vector<SectionsLeftOut> sections_left_out;
+  // One sigma of the volumes (the depth sigma and the offset's standard
+  // error over the counted area, taken as fully correlated) and of a single
+  // cell's deviation; absent when no depth sigma was stated.
+  std::optional<double> overbreak_volume_sigma_m3, underbreak_volume_sigma_m3, cell_sigma_m;
   // Deepest first. A patch's area is that of its cells on the developed
   // view (ray spacing x section spacing each; one section: the spacing
   // asked for).

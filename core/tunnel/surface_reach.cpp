@@ -23,7 +23,7 @@ std::optional<SurfaceReach> surface_reach(const Alignment& alignment,
   const auto at = [&](double f) {
     return sense * ahead[static_cast<std::size_t>(f * (ahead.size() - 1))];
   };
-  return SurfaceReach{at(0.02), at(0.99)};
+  return SurfaceReach{at(0.02), at(0.99), at(0.0)};
 }
 
 }  // namespace rockface::tunnel

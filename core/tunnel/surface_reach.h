@@ -18,8 +18,12 @@ std::vector<AlignmentPlace> rock_places(const Alignment& alignment, const Surfac
 // in the drive direction (the rear of the walls the cameras saw) and the
 // 99th (the face), so that a few stray points count for nothing. Nothing
 // when there is no rock.
+// `first` is the rock's rearmost chainage itself: the round is measured
+// from there, every cross-section that meets the surface (issue 38: from
+// the 2nd percentile, part of a break both photographs saw was left out).
 struct SurfaceReach {
   double rear = 0, front = 0;  // chainages
+  double first = 0;
 };
 std::optional<SurfaceReach> surface_reach(const Alignment& alignment,
                                           const std::vector<AlignmentPlace>& places);

@@ -45,9 +45,13 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
   // corner), which would read as metres of underbreak.
   const auto reach =
       tunnel::surface_reach(alignment, tunnel::rock_places(alignment, surface_input(surface)));
-  const double start = reach ? reach->rear : 0;
+  const double rear = reach ? reach->rear : 0;
   const auto front =
-      tunnel::face_front(alignment, out.tunnel.profile, surface_input(surface), start);
+      tunnel::face_front(alignment, out.tunnel.profile, surface_input(surface), rear);
+  // Every cross-section the surface reaches is measured, from its rearmost
+  // rock: sections that meet nothing there are left out by the measurement
+  // and said (profile_deviation.h).
+  const double start = reach ? reach->first : 0;
   out.round_to = (front ? front->nearest_chainage : out.placement.chainage) - sense * kFaceClearM;
   std::optional<double> previous;
   for (const auto& p : store.list_visit_placements())
@@ -83,6 +87,8 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
   options.chainage_from = out.round_from;
   options.chainage_to = out.round_to;
   options.underbreak_tolerance_m = out.tunnel.underbreak_tolerance_m;
+  // The 3D images' own stated precision: deviations within it are noise.
+  if (surface.depth_sigma_m) options.depth_sigma_m = *surface.depth_sigma_m;
   out.deviation =
       tunnel::profile_deviation(surface_input(surface), alignment, out.tunnel.profile, options);
   return out;

@@ -62,6 +62,29 @@ std::string visit_profile_json(const VisitProfile& v) {
   j["excluded_fraction"] = round_to(d.excluded_fraction, 0.001);
   j["excluded_vertices_range_pole"] = v.pole_vertices;
   j["max_overbreak_m"] = known(round_to(d.max_overbreak_m, 0.001));
+  if (measured && d.max_overbreak_m > 0) j["max_overbreak_at"] = position(d.max_overbreak);
+  // Issue 38: what the figures count and leave out, and how sure they are.
+  const auto sigma = [measured](const std::optional<double>& value, double step) {
+    return measured && value ? json(round_to(*value, step)) : json(nullptr);
+  };
+  j["overbreak_volume_sigma_m3"] = sigma(d.overbreak_volume_sigma_m3, 0.001);
+  j["underbreak_volume_sigma_m3"] = sigma(d.underbreak_volume_sigma_m3, 0.001);
+  j["cell_sigma_m"] = sigma(d.cell_sigma_m, 0.0001);
+  j["noise_threshold_m"] = round_to(d.noise_threshold_m, 0.0001);
+  if (measured && d.lining_offset.cells > 0)
+    j["lining_offset"] = {{"median_m", round_to(d.lining_offset.median_m, 0.0001)},
+                          {"standard_error_m", round_to(d.lining_offset.standard_error_m, 0.0001)},
+                          {"cells", d.lining_offset.cells},
+                          {"removed", d.lining_offset_removed}};
+  j["cells_left_out"] = {{"off_the_lining", d.cells_off_lining},
+                         {"below_the_invert", d.cells_below_invert}};
+  json left_out = json::array();
+  for (const auto& l : d.sections_left_out)
+    left_out.push_back({{"chainage_from", round_to(l.chainage_from, 0.001)},
+                        {"chainage_to", round_to(l.chainage_to, 0.001)},
+                        {"sections", l.sections},
+                        {"why", l.why}});
+  j["sections_left_out"] = left_out;
   if (d.has_underbreak) {
     j["max_underbreak_m"] = round_to(d.max_underbreak_m, 0.001);
     j["max_underbreak_at"] = position(d.max_underbreak);
@@ -77,16 +100,21 @@ std::string visit_profile_json(const VisitProfile& v) {
                       {"deepest", position(p.deepest)}});
   j["underbreak_beyond_tolerance"] = beyond;
   json sections = json::array();
-  for (const auto& s : d.sections)
+  for (const auto& s : d.sections) {
+    // A section that saw nothing has no figures: null, never 0.
+    const auto seen = [&s](double value, double step) {
+      return s.seen_fraction > 0 ? json(round_to(value, step)) : json(nullptr);
+    };
     sections.push_back({{"chainage", round_to(s.chainage, 0.001)},
-                        {"overbreak_area_m2", round_to(s.overbreak_area_m2, 0.0001)},
-                        {"underbreak_area_m2", round_to(s.underbreak_area_m2, 0.0001)},
+                        {"overbreak_area_m2", seen(s.overbreak_area_m2, 0.0001)},
+                        {"underbreak_area_m2", seen(s.underbreak_area_m2, 0.0001)},
                         {"seen_fraction", round_to(s.seen_fraction, 0.001)},
                         {"roof_seen", round_to(s.roof_seen, 0.001)},
                         {"walls_seen", round_to(s.walls_seen, 0.001)},
                         {"floor_seen", round_to(s.floor_seen, 0.001)},
-                        {"max_overbreak_m", round_to(s.max_overbreak_m, 0.001)},
-                        {"max_underbreak_m", round_to(s.max_underbreak_m, 0.001)}});
+                        {"max_overbreak_m", seen(s.max_overbreak_m, 0.001)},
+                        {"max_underbreak_m", seen(s.max_underbreak_m, 0.001)}});
+  }
   j["sections"] = sections;
   return j.dump(2) + "\n";
 }
@@ -105,10 +133,19 @@ std::vector<std::string> visit_profile_summary(const VisitProfile& v) {
     lines.push_back(d.message);
     return lines;
   }
+  const auto plus_minus = [](const std::optional<double>& sigma) {
+    return sigma ? " +- " + storage::report_number(*sigma, 3) : std::string();
+  };
   lines.push_back("overbreak " + storage::report_number(d.overbreak_volume_m3, 2) +
-                  " m3, underbreak " + storage::report_number(d.underbreak_volume_m3, 2) +
-                  " m3 over the round; " + storage::report_number(d.seen_fraction * 100, 0) +
-                  " % of the outline seen");
+                  plus_minus(d.overbreak_volume_sigma_m3) + " m3, underbreak " +
+                  storage::report_number(d.underbreak_volume_m3, 2) +
+                  plus_minus(d.underbreak_volume_sigma_m3) + " m3 over the round; " +
+                  storage::report_number(d.seen_fraction * 100, 0) + " % of the outline seen");
+  if (d.max_overbreak_m > 0)
+    lines.push_back("largest overbreak " + storage::report_number(d.max_overbreak_m * 100, 1) +
+                    " cm at chainage " + storage::report_number(d.max_overbreak.chainage, 2) +
+                    ", " + storage::report_number(d.max_overbreak.s, 2) +
+                    " m along the design line");
   if (d.has_underbreak)
     lines.push_back("deepest underbreak " + storage::report_number(d.max_underbreak_m * 100, 1) +
                     " cm at chainage " + storage::report_number(d.max_underbreak.chainage, 2) +

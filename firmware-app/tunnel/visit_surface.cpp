@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "storage/project/model_registration.h"
 
 namespace rockface::app {
 
@@ -30,8 +31,15 @@ VisitSurface visit_surface(storage::ProjectStore& store, storage::RecordId visit
                            const PoleMask& mask) {
   VisitSurface out;
   std::vector<Eigen::Vector3d> targets;
+  bool every_sigma_known = true;
+  double sigma = 0;
   for (const auto& summary : store.list_visit_models(visit_id)) {
     storage::Model model = store.load_model(summary.id);
+    const storage::ModelRegistration reg = storage::read_model_registration(model.registration);
+    if (reg.is_scaled() && reg.predicted_depth_sigma_mm && *reg.predicted_depth_sigma_mm > 0)
+      sigma = std::max(sigma, *reg.predicted_depth_sigma_mm / 1000);
+    else
+      every_sigma_known = false;
     const int base = static_cast<int>(out.vertices.size());
     out.vertices.insert(out.vertices.end(), model.mesh.vertices.begin(), model.mesh.vertices.end());
     for (const auto& f : model.mesh.faces)
@@ -45,6 +53,7 @@ VisitSurface visit_surface(storage::ProjectStore& store, storage::RecordId visit
   if (out.models == 0)
     throw InputError("visit " + std::to_string(visit_id),
                      "has no 3D image: reconstruct its photographs first");
+  if (every_sigma_known) out.depth_sigma_m = sigma;
   out.not_rock.assign(out.vertices.size(), 0);
   if (targets.size() >= 2) {
     // The pole is vertical (it is levelled in the field; the registration

@@ -7,6 +7,7 @@
 // so the pole is never counted as underbreak.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,6 +25,10 @@ struct VisitSurface {
   std::size_t pole_vertices = 0;  // marked as the range pole
   // The models' registration: the first pair's (how the face frame was set).
   storage::Model first;  // without its mesh
+  // The largest predicted depth sigma the models' reconstructions state
+  // (m; every model scaled): the surface's precision. Absent when a model
+  // states none or is unscaled (its sigma is then in units of the base).
+  std::optional<double> depth_sigma_m;
 };
 
 // Around the pole: the pole is 4 cm across and its targets 25 cm; a radius of

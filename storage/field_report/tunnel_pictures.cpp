@@ -37,7 +37,11 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
   const int left = 90, right = 30, top = 74, bottom = 140;
   const int w = std::max(200, width_px - left - right);
   const std::size_t rows = view.chainage.size(), cols = view.s.size();
-  if (rows == 0 || cols == 0) {
+  // Nothing compared (no wall or roof in view, the round off the
+  // alignment): the message, never a view of zeros.
+  const bool nothing_compared = dev.status == tunnel::DeviationStatus::no_walls_in_view ||
+                                dev.status == tunnel::DeviationStatus::outside_alignment;
+  if (rows == 0 || cols == 0 || nothing_compared) {
     // The title and the message in as many lines as the picture's width needs.
     const int margin = 20, title_px = 28, line_px = 22;
     const auto title =
@@ -95,7 +99,9 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
       else if (state == 0 && std::isfinite(d))
         colour = deviation_colour(d / extent);
       cv::rectangle(img, {x0, y0}, {x1 - 1, y1 - 1}, colour, cv::FILLED);
-      if (state == 1)  // not seen: hatched, so it never reads as "on the line"
+      // Not seen, or left out (off any plausible lining, below the invert):
+      // hatched, so it never reads as "on the line".
+      if (state == 1 || state == 3)
         for (int y = y0; y < y1; ++y)
           for (int x = x0; x < x1; ++x)
             if ((x + y) % 8 == 0) img.at<cv::Vec3b>(y, x) = {150, 150, 150};
@@ -165,7 +171,7 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
   cv::line(img, {tol_x, bar_y - 4}, {tol_x, bar_y + 18}, cv::Scalar(0, 0, 0), 2);
   const std::string legend = "black outline: underbreak beyond " +
                              report_number(dev.underbreak_tolerance_m * 100, 0) +
-                             " cm;  hatched: not seen;  dark: range pole";
+                             " cm;  hatched: not seen or left out;  dark: range pole";
   draw_label(img, legend, {bar_x, bar_y + 54}, 0.4);
 
   const std::string title = "Round ch " + report_number(view.chainage.front(), 2) + " to " +

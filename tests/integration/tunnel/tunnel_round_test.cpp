@@ -118,8 +118,16 @@ TEST_F(TunnelRound, OverAndUnderbreakMatchTheRenderedTruthWhereSeen) {
       input, measured.tunnel.alignment(store.project().datum), measured.tunnel.profile, options);
   const auto& mv = measured.deviation.view;
   const auto& tv = truth.view;
-  ASSERT_EQ(mv.chainage.size(), tv.chainage.size());
   ASSERT_EQ(mv.s.size(), tv.s.size());
+  // The measurement leaves out the sections at the round's ends that meet
+  // none of the reconstructed surface (issue 38); the rendered surface
+  // reaches every one: the measured rows are a run of the truth's.
+  ASSERT_FALSE(mv.chainage.empty());
+  std::size_t first_row = 0;
+  while (first_row < tv.chainage.size() &&
+         std::abs(tv.chainage[first_row] - mv.chainage.front()) > 1e-9)
+    ++first_row;
+  ASSERT_LE(first_row + mv.chainage.size(), tv.chainage.size());
 
   // Cell by cell where the cameras saw the surface: the overbreak (right
   // shoulder, 0.35 m deep) and the underbreak (left wall, 0.12 m).
@@ -133,10 +141,10 @@ TEST_F(TunnelRound, OverAndUnderbreakMatchTheRenderedTruthWhereSeen) {
   std::size_t seen = 0;
   for (std::size_t i = 0; i < mv.chainage.size(); ++i)
     for (std::size_t j = 0; j < mv.s.size(); ++j) {
-      const std::size_t k = i * mv.s.size() + j;
-      if (mv.state[k] != 0 || tv.state[k] != 0) continue;
+      const std::size_t k = i * mv.s.size() + j, kt = (first_row + i) * tv.s.size() + j;
+      if (mv.state[k] != 0 || tv.state[kt] != 0) continue;
       ++seen;
-      const double m = mv.deviation_m[k], t = tv.deviation_m[k];
+      const double m = mv.deviation_m[k], t = tv.deviation_m[kt];
       const double c = mv.chainage[i], s = mv.s[j];
       if (c > 108.6 && c < 111.6 && s > 4.6 && s < 7.4) {
         over_measured += m * ds * dc;
