@@ -373,6 +373,39 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
   std::size_t region_rays[3] = {0, 0, 0};
   for (const Ray& r : rays) ++region_rays[static_cast<int>(r.region)];
 
+  // Which cells count as over- or underbreak: those beyond the noise
+  // threshold, and the flanks of such a break down to half the threshold
+  // (connected cells of the same sign, 4-neighbours, the outline wrapping):
+  // a break's flanks are not lost to the threshold, and noise that never
+  // reaches it counts for nothing.
+  std::vector<std::uint8_t> counted(rows * cols, 0);
+  {
+    const double thr = out.noise_threshold_m;
+    auto dev = [&](std::size_t k) { return normal_dev[k] - offset; };
+    std::vector<std::size_t> stack;
+    for (std::size_t start = 0; start < rows * cols; ++start) {
+      if (counted[start] || state[start] != kSeen || !(std::abs(dev(start)) > thr)) continue;
+      const bool over = dev(start) > 0;
+      counted[start] = 1;
+      stack.assign(1, start);
+      while (!stack.empty()) {
+        const std::size_t k = stack.back();
+        stack.pop_back();
+        const std::size_t r = k / cols, c = k % cols;
+        const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
+                                   r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
+        for (std::size_t q : nb) {
+          if (counted[q] || state[q] != kSeen) continue;
+          const double d = dev(q);
+          if ((d > 0) == over && std::abs(d) > 0.5 * thr) {
+            counted[q] = 1;
+            stack.push_back(q);
+          }
+        }
+      }
+    }
+  }
+
   double counted_over_area = 0, counted_under_area = 0;  // developed, m^2
   for (std::size_t i = 0; i < rows; ++i) {
     const double c = chainage[i];
@@ -404,8 +437,8 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
       pos.survey = alignment.to_survey(pos.local);
       ++seen_rays;
       ++region_seen[static_cast<int>(r.region)];
-      // Within the noise threshold: the reconstruction's noise, not counted.
-      if (std::abs(nd) <= out.noise_threshold_m) continue;
+      // The reconstruction's noise, not counted.
+      if (!counted[k]) continue;
       // Polar area between the design line and the surface, exact for the
       // sampled radii (A = 1/2 r^2 dtheta).
       const double a = 0.5 * (t * t - r.design * r.design) * r.dtheta;
@@ -506,7 +539,8 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
     if (out.noise_threshold_m > 0)
       out.message += "; deviations within " + format_fixed(1000 * out.noise_threshold_m, 1) +
                      " mm (" + format_fixed(options.noise_sigmas, 0) +
-                     " sigma of the 3D image's stated depth precision) are not counted";
+                     " sigma of the 3D image's stated depth precision) are not counted, "
+                     "but for the flanks of a break beyond them down to half of that";
     else
       out.message += "; the 3D image states no depth precision: every deviation is counted";
     if (out.lining_offset.cells > 0)

@@ -174,8 +174,10 @@ struct ProfileDeviation {
 
   // Issue 38: what the figures count, what they leave out, how sure they are.
   // Only cells whose deviation lies beyond the noise threshold (noise_sigmas
-  // x the stated depth sigma; 0 when none was stated) count as over- or
-  // underbreak, in the volumes, the areas and the largest of each.
+  // x the stated depth sigma; 0 when none was stated), and the flanks of such
+  // a break down to half the threshold (cells of the same sign connected to
+  // one beyond it), count as over- or underbreak, in the volumes, the areas
+  // and the largest of each.
   double noise_threshold_m = 0;
   // The lining's offset from the design as a whole (the median cell). When
   // it lies within the noise threshold it cannot be told from the
