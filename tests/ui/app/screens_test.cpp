@@ -178,7 +178,7 @@ TEST(UiScreens, BlocksOnTheModelAreTheStoredAnalysisColouredByVerdict) {
     const auto target = s->state().targets.find("block " + v.block.id);
     ASSERT_TRUE(target) << v.block.id << " not drawn";
     if (solid_disc(shot, target->centre(), radius, bgr(verdict_colour(v.verdict)))) ++markers;
-    verdicts.insert(analysis::verdict_name(v.verdict));
+    verdicts.insert(rockface::analysis::verdict_name(v.verdict));
   }
   EXPECT_EQ(markers, static_cast<int>(run.blocks.size()));
   // The demo's keyblock, from the traces picked in the photograph, moves.
@@ -194,7 +194,7 @@ TEST(UiScreens, TappingABlockShowsItsReport) {
   const auto& blocks = s->state().session->blocks();
   std::size_t moving = blocks.size();
   for (std::size_t i = 0; i < blocks.size(); ++i)
-    if (blocks[i].verdict == analysis::BlockVerdict::moves) moving = i;
+    if (blocks[i].verdict == rockface::analysis::BlockVerdict::moves) moving = i;
   ASSERT_LT(moving, blocks.size());
   s->tap("row " + blocks[moving].block.id);
   ASSERT_TRUE(s->state().blocks.selected_block);

@@ -51,17 +51,13 @@ ReportBlock block(bool finite, bool removable, const std::string& mode, std::opt
 }
 
 TEST(BlockView, VerdictFollowsFinitenessRemovabilityModeAndFos) {
-  EXPECT_EQ(make_block_view(block(true, true, "sliding", 0.49)).verdict,
-            analysis::BlockVerdict::moves);
-  EXPECT_EQ(make_block_view(block(true, true, "sliding", 1.3)).verdict,
-            analysis::BlockVerdict::holds);
-  EXPECT_EQ(make_block_view(block(true, true, "falling", {})).verdict,
-            analysis::BlockVerdict::moves);
-  EXPECT_EQ(make_block_view(block(true, false, "none", {})).verdict, analysis::BlockVerdict::keyed);
-  EXPECT_EQ(make_block_view(block(false, false, "none", {})).verdict,
-            analysis::BlockVerdict::infinite);
+  EXPECT_EQ(make_block_view(block(true, true, "sliding", 0.49)).verdict, BlockVerdict::moves);
+  EXPECT_EQ(make_block_view(block(true, true, "sliding", 1.3)).verdict, BlockVerdict::holds);
+  EXPECT_EQ(make_block_view(block(true, true, "falling", {})).verdict, BlockVerdict::moves);
+  EXPECT_EQ(make_block_view(block(true, false, "none", {})).verdict, BlockVerdict::keyed);
+  EXPECT_EQ(make_block_view(block(false, false, "none", {})).verdict, BlockVerdict::infinite);
   EXPECT_EQ(make_block_view(block(true, true, "sliding", 1.3, true)).verdict,
-            analysis::BlockVerdict::marginal);
+            BlockVerdict::marginal);
 }
 
 TEST(BlockView, ReportGivesMarginRotatabilityAndDatumRelativeVertices) {
