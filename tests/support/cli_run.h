@@ -6,6 +6,7 @@
 #include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -38,6 +39,19 @@ inline CliRun run_rockface(const std::string& args) {
   };
   r.out = slurp(out);
   r.err = slurp(err);
+  return r;
+}
+
+// Any other program the tests run (an independent reader: python3-ezdxf,
+// CloudCompare): its exit code and what it printed, stderr with stdout in `out`.
+inline CliRun run_command(const std::string& command) {
+  CliRun r;
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) r.out += buffer;
+  const int status = ::pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
 

@@ -3,14 +3,12 @@
 // on tests/support/read_dxf.py, which prints the layers and every POLYLINE
 // (3D polylines with their points, polyface meshes with their vertices and
 // faces) as JSON. For the export tests (issue 43).
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
-#include <sys/wait.h>
-
 #include <nlohmann/json.hpp>
 
+#include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
 
 namespace rockface::test {
@@ -24,15 +22,11 @@ struct DxfReading {
 inline DxfReading read_dxf(const std::filesystem::path& file) {
   // Debian's python3, which has python3-ezdxf (a python3 earlier on PATH,
   // such as a pyenv shim, would not).
-  const std::string command = "/usr/bin/python3 " + std::string(ROCKFACE_SOURCE_DIR) +
-                              "/tests/support/read_dxf.py " + file.string() + " 2>&1";
+  const CliRun run = run_command("/usr/bin/python3 " + std::string(ROCKFACE_SOURCE_DIR) +
+                                 "/tests/support/read_dxf.py " + file.string());
   DxfReading r;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.exit_code = run.exit_code;
+  r.output = run.out;
   if (r.exit_code == 0) r.drawing = nlohmann::json::parse(r.output, nullptr, false);
   return r;
 }

@@ -19,6 +19,7 @@
 // surface under them, not hidden behind the pole).
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -251,6 +252,30 @@ inline ProposalScore score_proposals(const ProposalFace& f,
         0.5 *
         (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]).norm();
   return s;
+}
+
+// A face with its proposals at `preset` and their score against the truth
+// within `tolerance` (m): what the proposal suites keep per face.
+struct ProposedFace {
+  ProposalFace face;
+  std::unique_ptr<measure::MeshPicker> picker;
+  measure::ProposalResult result;
+  ProposalScore score;
+};
+
+inline std::unique_ptr<ProposedFace> propose_on(ProposalFace face, Preset preset,
+                                                double tolerance) {
+  auto r = std::make_unique<ProposedFace>();
+  r->face = std::move(face);
+  r->picker = std::make_unique<measure::MeshPicker>(r->face.rec.mesh);
+  auto options = measure::proposal_options(preset);
+  options.measure.point_sigma = r->face.rec.accuracy.sigma_z;
+  NoProgress progress;
+  r->result =
+      measure::propose_traces(r->face.rec.mesh, *r->picker, r->face.left, r->face.render.images[0],
+                              r->face.facets, options, progress, "proposals");
+  r->score = score_proposals(r->face, r->result.proposals, *r->picker, tolerance);
+  return r;
 }
 
 }  // namespace rockface::testing

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -38,16 +37,6 @@ std::string slurp(const fs::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-// Runs `command`, returns its exit code and standard output.
-int run(const std::string& command, std::string& out) {
-  out.clear();
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return -1;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
-  return WEXITSTATUS(::pclose(pipe));
 }
 
 Eigen::Vector3d point_of(const json& p) {
@@ -286,14 +275,12 @@ TEST_F(VisitExport, CloudCompareReadsTheMeshesWithTheStoredPointsInSurveyCoordin
       // -GLOBAL_SHIFT AUTO: CloudCompare shifts large coordinates to keep
       // its float precision and restores them on saving (its own way with
       // survey coordinates); mesh files give their vertices as a cloud.
-      std::string out;
-      const int rc = run("xvfb-run -a CloudCompare -SILENT -AUTO_SAVE OFF -O -GLOBAL_SHIFT AUTO " +
-                             file.string() +
-                             (suffix == ".obj" || suffix == ".ply" ? " -EXTRACT_VERTICES" : "") +
-                             " -C_EXPORT_FMT ASC -PREC 4 -SAVE_CLOUDS FILE " + asc.string(),
-                         out);
-      ASSERT_EQ(rc, 0) << out;
-      ASSERT_TRUE(fs::exists(asc)) << file << "\n" << out;
+      const CliRun cc = test::run_command(
+          "xvfb-run -a CloudCompare -SILENT -AUTO_SAVE OFF -O -GLOBAL_SHIFT AUTO " + file.string() +
+          (suffix == ".obj" || suffix == ".ply" ? " -EXTRACT_VERTICES" : "") +
+          " -C_EXPORT_FMT ASC -PREC 4 -SAVE_CLOUDS FILE " + asc.string());
+      ASSERT_EQ(cc.exit_code, 0) << cc.out;
+      ASSERT_TRUE(fs::exists(asc)) << file << "\n" << cc.out;
       std::ifstream in(asc);
       std::size_t count = 0;
       Eigen::Vector3d clo = Eigen::Vector3d::Constant(1e300), chi = -clo;

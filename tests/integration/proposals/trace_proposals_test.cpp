@@ -22,27 +22,14 @@ namespace {
 
 constexpr double kTolerance = 0.05;  // m: the "within 5 cm"
 
-struct FaceRun {
-  rt::ProposalFace face;
-  std::unique_ptr<rm::MeshPicker> picker;
-  rm::ProposalResult result;
-  rt::ProposalScore score;
-};
+using FaceRun = rt::ProposedFace;
 
 const FaceRun& run(rt::JointDensity density) {
   static std::map<rt::JointDensity, std::unique_ptr<FaceRun>> runs;
   auto& r = runs[density];
   if (!r) {
-    r = std::make_unique<FaceRun>();
-    r->face = rt::build_proposal_face(density, rockface::Preset::fast);
-    r->picker = std::make_unique<rm::MeshPicker>(r->face.rec.mesh);
-    auto options = rm::proposal_options(rockface::Preset::fast);
-    options.measure.point_sigma = r->face.rec.accuracy.sigma_z;
-    rockface::NoProgress progress;
-    r->result =
-        rm::propose_traces(r->face.rec.mesh, *r->picker, r->face.left, r->face.render.images[0],
-                           r->face.facets, options, progress, "proposals");
-    r->score = rt::score_proposals(r->face, r->result.proposals, *r->picker, kTolerance);
+    r = rt::propose_on(rt::build_proposal_face(density, rockface::Preset::fast),
+                       rockface::Preset::fast, kTolerance);
     const auto& s = r->score;
     std::printf(
         "%s: %zu proposals, %.2f m; precision %.3f, recall %.3f of %.2f m of true traces; "
