@@ -27,6 +27,9 @@ packages=(
   # corners (CGAL, header-only), DXF (dxflib). PCD is read by a reader of
   # our own (storage/exchange/pcd_reader.h says why not Open3D's).
   libtinyobjloader-dev libcgal-dev libdxflib-dev
+  # the office in a browser (issue 46): the HTTP server (cpp-httplib,
+  # header-only) and three.js, served to the browser from the system's copy
+  libcpp-httplib-dev libjs-three
 )
 # What only the tests and benchmarks need; `tools/setup.sh --demo` (what
 # tools/demo.sh runs) leaves them out: 65 MB less to download of ~525, and
@@ -58,6 +61,9 @@ if [ "${1:-}" != "--demo" ]; then
     # the exports read back by the office's own readers (issue 43): ezdxf
     # for the DXF, CloudCompare's command line (under xvfb) for OBJ / PLY
     python3-ezdxf cloudcompare
+    # the office's pages tested in a real browser (issue 46): headless
+    # Chromium driven over WebDriver
+    chromium chromium-driver
   )
 fi
 
