@@ -21,8 +21,9 @@
 //
 // Part 2, the verdict stages alone, in this process and on one core: the
 // visit the replay stored (its traces, areas and joints, read back through
-// storage::load_scene_source) made into the trace map's input by the
-// analysis workflow (core/analysis/trace_map_input.h), timed apart:
+// storage::load_scene_source and made into the analysis input straight from
+// the rows, as the tablet's runners do: storage::visit_analysis_input) made
+// into the trace map's input (core/analysis/trace_map_input.h), timed apart:
 //   trace_map_ms  free surface, trace network, surface loops
 //   blocks_ms     faces::trace_blocks: blocks, finiteness, removability
 //   rotation_ms   corner and edge rotatability of the finite blocks
@@ -30,14 +31,7 @@
 //                 finite blocks that cannot rotate about a corner or an edge
 //   remote_all_ms the same search on every finite block (no skip)
 // Each the fastest of 10 runs (the machine is shared).
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -47,6 +41,7 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
+#include "core/analysis/analysis_input.h"
 #include "core/analysis/trace_map_input.h"
 #include "core/common/preset.h"
 #include "core/common/units.h"
@@ -57,28 +52,16 @@
 #include "core/kinematics/remote_axis.h"
 #include "core/kinematics/rotation_input.h"
 #include "core/kinematics/rotation_space.h"
-#include "firmware-app/analysis/scene_input.h"
 #include "storage/project/project_store.h"
 #include "storage/scene/export_scene_json.h"
-#include "storage/scene/scene.h"
+#include "tools/bench/replay_child.h"
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
+using rockface::bench::Clock;
+using rockface::bench::ReplayRun;
+using rockface::bench::seconds_since;
 
 namespace {
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// Peak resident set so far of process `pid`, MB (0 when unreadable).
-double vm_hwm_mb(pid_t pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // kB
-  return 0;
-}
 
 // The bench's working directory and the scene with the remote-axis search on.
 const fs::path& work_dir() {
@@ -96,58 +79,11 @@ const fs::path& work_dir() {
   return dir;
 }
 
-struct StageMark {
-  std::string stage;
-  double at_s = 0;  // since the child started
-  double hwm_mb = 0;
-};
-
-struct ReplayRun {
-  std::vector<StageMark> marks;
-  double total_s = 0, peak_mb = 0;
-  int status = -1;
-};
-
 // `rockface replay` of the scene into `project`, its stderr stage lines timed.
 ReplayRun run_replay(const std::string& preset, const fs::path& project) {
-  ReplayRun run;
-  const std::string binary = std::string(ROCKFACE_BINARY_DIR) + "/rockface";
-  const std::string scene = (work_dir() / "tunnel-face.scene.json").string();
-  int fds[2];
-  if (::pipe(fds) != 0) return run;
-  const auto t0 = Clock::now();
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    return run;
-  }
-  if (pid == 0) {
-    ::dup2(fds[1], 2);
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::close(fds[0]);
-    ::close(fds[1]);
-    ::execl(binary.c_str(), binary.c_str(), "replay", scene.c_str(), "--project", project.c_str(),
-            "--preset", preset.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  ::close(fds[1]);
-  FILE* err = ::fdopen(fds[0], "r");
-  char buf[512];
-  while (std::fgets(buf, sizeof buf, err)) {
-    std::string line(buf);
-    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
-    const std::string prefix = "replay: ";
-    if (line.rfind(prefix, 0) == 0)
-      run.marks.push_back({line.substr(prefix.size()), seconds_since(t0), vm_hwm_mb(pid)});
-  }
-  std::fclose(err);
-  rusage u{};
-  ::wait4(pid, &run.status, 0, &u);
-  run.total_s = seconds_since(t0);
-  run.peak_mb = u.ru_maxrss / 1024.0;  // kB on Linux
-  return run;
+  return rockface::bench::run_replay(std::string(ROCKFACE_BINARY_DIR) + "/rockface",
+                                     (work_dir() / "tunnel-face.scene.json").string(),
+                                     project.string(), preset);
 }
 
 // The stage a progress line belongs to (see the file comment); "done" (the
@@ -174,9 +110,8 @@ struct VerdictTimes {
 // One timed run of the verdict stages on the visit's inputs.
 VerdictTimes verdict_stages_once(const std::vector<rockface::faces::PatchInput>& patches,
                                  const std::vector<rockface::faces::TraceInput>& traces,
-                                 const rockface::storage::Scene& scene, double tol,
-                                 double uncertainty, const Eigen::Vector3d& datum,
-                                 const std::string& preset) {
+                                 double density, double tol, double uncertainty,
+                                 const Eigen::Vector3d& datum, const std::string& preset) {
   namespace rf = rockface::faces;
   namespace rk = rockface::kinematics;
   VerdictTimes out;
@@ -189,7 +124,7 @@ VerdictTimes verdict_stages_once(const std::vector<rockface::faces::PatchInput>&
   rf::TraceBlockOptions options;
   options.snap_tolerance = tol;
   options.orientation_uncertainty = uncertainty;
-  options.density = scene.density;
+  options.density = density;
   options.datum = datum;
   rockface::NoProgress progress;
   t0 = Clock::now();
@@ -246,19 +181,20 @@ VerdictTimes verdict_stages(const fs::path& project, const std::string& preset) 
   rs::OpenOptions open;
   open.read_only = true;
   rs::ProjectStore store = rs::ProjectStore::open(project, open);
-  const rs::Scene scene =
-      rs::parse_scene(rs::make_scene_json(rs::load_scene_source(store)).dump(), project.string());
-  // The trace map's input as the analysis makes it (core/analysis).
-  const rockface::analysis::TraceMapInput map =
-      rockface::analysis::trace_map_input(rockface::app::analysis_input(scene));
+  // The visit's analysis input from its rows, then the trace map's input as
+  // the analysis makes it (core/analysis).
+  const rockface::analysis::AnalysisInput input =
+      rs::visit_analysis_input(rs::load_scene_source(store), project.string());
+  const rockface::analysis::TraceMapInput map = rockface::analysis::trace_map_input(input);
 
   // The fastest of kRepeats runs of each stage: the machine is shared, and
   // the least disturbed run is the closest to the stage's own cost.
   constexpr int kRepeats = 10;
   VerdictTimes best;
   for (int rep = 0; rep < kRepeats; ++rep) {
-    const VerdictTimes t = verdict_stages_once(map.patches, map.traces, scene, map.snap_tolerance,
-                                               map.orientation_uncertainty, map.datum, preset);
+    const VerdictTimes t =
+        verdict_stages_once(map.patches, map.traces, input.density, map.snap_tolerance,
+                            map.orientation_uncertainty, map.datum, preset);
     if (rep == 0) best = t;
     best.trace_map_ms = std::min(best.trace_map_ms, t.trace_map_ms);
     best.blocks_ms = std::min(best.blocks_ms, t.blocks_ms);
@@ -276,7 +212,7 @@ void face_to_verdicts(benchmark::State& state, const std::string& preset) {
   for (auto _ : state) {
     fs::remove(project);
     run = run_replay(preset, project);
-    if (!WIFEXITED(run.status) || WEXITSTATUS(run.status) != 0) {
+    if (!run.ok()) {
       state.SkipWithError("rockface replay failed (run it by hand on the scene)");
       return;
     }
