@@ -2,13 +2,10 @@
 
 #include <filesystem>
 
-#include <nlohmann/json.hpp>
-
 #include "camera/capture_guidance.h"
 #include "camera/mock_camera.h"
-#include "firmware-app/records/project_mesh.h"
+#include "firmware-app/reconstruct/face_pair.h"
 #include "firmware-app/replay/replay_capture.h"
-#include "storage/report/reconstruction_report.h"
 
 namespace rockface::app {
 
@@ -80,30 +77,10 @@ MorePairsOutcome replay_more_pairs(storage::ProjectStore& store, const MorePairs
 
   progress.step("registering the pairs to pair 1", 0.75);
   out.face = photogrammetry::register_face_images(images, {}, request.preset, {}, progress);
-  const std::string face_json = storage::face_registration_json(out.face);
-  for (std::size_t k = 1; k < images.size(); ++k) {
-    const auto& r = out.face.images[k];
-    photogrammetry::SurfaceMesh mesh = images[k].mesh;
-    mesh.transform(r.to_face.scale, r.to_face.R, r.to_face.t);
-    storage::Model model;
-    model.capture_id = out.capture_ids[k - 1];
-    model.preset = request.preset_name;
-    model.mesh = project_mesh(mesh);
-    model.texture_capture_id = model.capture_id;
-    model.texture_side = "left";
-    model.registration.kind = "face_images";
-    storage::set_similarity(model.registration, r.to_face);
-    // The face registration report, with this pair's predicted precision
-    // of a picked point (metres in the face frame), as a first model has.
-    nlohmann::json parameters = nlohmann::json::parse(face_json);
-    parameters["predicted_depth_sigma_mm"] = images[k].sigma_z * r.to_face.scale * 1000;
-    model.registration.parameters_json = parameters.dump();
-    model.registration.rms_m = r.surface_rms_m;
-    // Its photographs' views: the pair's camera frame onto its 3D image,
-    // then onto the face.
-    model.camera_to_mesh = out.model_to_image[k].then(r.to_face);
-    out.model_ids.push_back(store.save_model(model));
-  }
+  for (std::size_t k = 1; k < images.size(); ++k)
+    out.model_ids.push_back(
+        store.save_model(face_image_model(out.face, k, images[k], out.model_to_image[k],
+                                          out.capture_ids[k - 1], request.preset_name)));
   out.images = std::move(images);
   return out;
 }

@@ -11,6 +11,7 @@
 #include "core/analysis/scene_analysis.h"
 #include "core/common/error.h"
 #include "core/photogrammetry/reconstruction/preset.h"
+#include "firmware-app/reconstruct/face_pair.h"
 #include "firmware-app/records/field_records.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
 #include "storage/project/project_store.h"
@@ -48,7 +49,24 @@ storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project
   if (const auto it = capture.settings.find("range_pole_m"); it != capture.settings.end())
     sources.range_pole_m = std::stod(it->second);
   const auto preset = analysis::preset_options(chosen).reconstruction;
-  const auto rec = photogrammetry::reconstruct(left, right, k, k, preset, sources, progress);
+  auto rec = photogrammetry::reconstruct(left, right, k, k, preset, sources, progress);
+  // A further pair of a visit that has its 3D image already (the left and
+  // right pairs of a face beside the middle one, issue 45) is tied to that
+  // image as a replay ties a scene's further pairs, so the visit is one face
+  // in one frame whichever pairs saw the pole. A pair that overlaps it too
+  // little (another face, a pair taken again from elsewhere) keeps its own
+  // registration, and its report says why it was not tied.
+  if (const auto face = visit_face_model(store, capture.visit_id, capture_id)) {
+    try {
+      const storage::Model model =
+          face_pair_model(store, *face, capture_id, left, rec, preset, progress);
+      progress.step("saving the model", 0.99);
+      return store.save_model(model);
+    } catch (const InputError& e) {
+      rec.accuracy.warnings.push_back("not tied to the visit's 3D image " + std::to_string(*face) +
+                                      ": " + e.what() + "; registered on its own");
+    }
+  }
   progress.step("saving the model", 0.99);
   return store.save_model(model_record(rec, capture_id,
                                        {where + " left", where + " right", preset.name,
