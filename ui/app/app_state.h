@@ -15,6 +15,7 @@
 #include "ui/app/project_session.h"
 #include "ui/app/status_lines.h"
 #include "ui/app/ui_settings.h"
+#include "ui/app/work_queue.h"
 #include "ui/blocks/blocks_state.h"
 #include "ui/capture/capture_state.h"
 #include "ui/mapping/mapping_state.h"
@@ -49,6 +50,9 @@ struct AppState {
   Screen screen = Screen::project;
   std::unique_ptr<ProjectSession> session;
   BackgroundTask task;
+  // The pairs' 3D images, one after the other on a worker of their own, so
+  // the camera (on `task`) shoots the next pair meanwhile (issue 45).
+  WorkQueue reconstructions;
   TouchTargets targets;
   ModelView model_view;  // the 3D image, shared by the Model, Mapping and Blocks screens
   // Each screen's own state, in its room (ui/<screen>/<screen>_state.h).

@@ -88,6 +88,8 @@ TabletApp::TabletApp(UiOptions options, FieldServices services) {
 }
 
 TabletApp::~TabletApp() {
+  state_.reconstructions.cancel();
+  state_.reconstructions.wait();
   state_.task.cancel();
   state_.task.wait();
   state_.model_view = ModelView();  // GL objects go while the context is current
@@ -125,6 +127,17 @@ void TabletApp::draw() {
 }
 
 void TabletApp::keep_model_loaded() {
+  // A pair's 3D image made on the queue: said on the Capture screen, where
+  // the pair was stored (its `then` has refreshed the project already, so
+  // the newest model is loaded below).
+  if (const auto outcome = state_.reconstructions.poll()) {
+    const auto where = static_cast<std::size_t>(Screen::capture);
+    const std::string text = outcome->title + ": " + outcome->message;
+    if (outcome->kind == TaskOutcome::Kind::failed)
+      state_.statuses.error(where, text);
+    else
+      state_.statuses.say(where, text);
+  }
   // Take what the worker finished (runs its `then` here, on the UI thread).
   if (const auto outcome = state_.task.take_outcome()) {
     const auto where = static_cast<std::size_t>(state_.task_screen);

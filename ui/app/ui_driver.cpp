@@ -21,10 +21,12 @@ constexpr int kStartPoints = 7;
 
 void UiDriver::settle() {
   // The outcome is taken inside a frame; a `then` may start another task.
+  // The pairs' 3D images too: a script's "wait" waits for all the work.
   for (;;) {
     state().task.wait();
+    state().reconstructions.wait();
     frame();
-    if (!state().task.running()) break;
+    if (!state().task.running() && !state().reconstructions.busy()) break;
   }
   frame();
 }

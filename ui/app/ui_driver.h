@@ -25,8 +25,9 @@ class UiDriver {
   virtual AppState& state() = 0;
   TouchInput& input() { return input_; }
 
-  // Frames until the worker is idle and its outcome taken (a finished task
-  // may start the next, e.g. loading the model it saved).
+  // Frames until the worker and the queue of 3D images are idle and their
+  // outcomes taken (a finished task may start the next, e.g. loading the
+  // model it saved).
   void settle();
   // Input, each followed by the frames ImGui needs to see it.
   void tap(float x, float y);

@@ -16,6 +16,7 @@
 #include "ui/app/screens.h"
 #include "ui/widgets/format.h"
 #include "ui/widgets/widgets_controls.h"
+#include "ui/widgets/widgets_text.h"
 
 namespace rockface::ui {
 
@@ -90,6 +91,10 @@ void shoot(AppState& app, bool left) {
       },
       [&app, shot, left](const TaskOutcome& outcome) {
         if (outcome.kind != TaskOutcome::Kind::done) return;
+        // A left shot after a stored pair begins the next pair: the right
+        // shot shown belongs to the stored one (asking "not stored yet?"
+        // before shooting the new right would be wrong).
+        if (left && app.capture.stored) app.capture.right.reset();
         (left ? app.capture.left : app.capture.right) = std::move(*shot);
         app.capture.stored = false;
       });
@@ -121,9 +126,12 @@ void live_view(AppState& app) {
       });
 }
 
-// Saves the pair with the project's latest calibration, then (when a
-// reconstruction runner exists) reconstructs it: each step is saved as it
-// finishes, so a cancel during reconstruction keeps the pair.
+// Saves the pair with the calibration of the camera that took it, then
+// (when a reconstruction runner exists) reconstructs it, on the queue of 3D
+// images (issue 45): the camera is free for the next pair at once, and the
+// pairs are reconstructed in the order they were stored. The pair is saved
+// before any cancel is heard (report, not step), so stopping its 3D image
+// keeps the pair.
 void store_and_reconstruct(AppState& app) {
   const auto file = app.session->file();
   const auto visit = *app.session->visit();
@@ -142,10 +150,11 @@ void store_and_reconstruct(AppState& app) {
   // the camera told over USB.
   if (photo.serial.empty()) photo.serial = app.capture.left->body_serial;
   ReconstructionRunner* runner = app.services.reconstruction;
-  app.task.start(
-      "Store and reconstruct",
+  const std::size_t pair = ++app.capture.pairs_queued;
+  app.capture.stored = true;  // on its way: a new shot needs no confirmation
+  app.reconstructions.add(
+      "Pair " + std::to_string(pair),
       [file, capture, photo, preset, runner](Progress& progress) mutable {
-        // report, not step: a cancel before the pair is saved must not lose it
         progress.report("storing the pair", 0.02);
         storage::ProjectStore store = storage::ProjectStore::open(file);
         // The calibration of the camera that took the pair (issue 42: the
@@ -159,18 +168,34 @@ void store_and_reconstruct(AppState& app) {
         if (choice.calibration) capture.calibration_id = choice.calibration->id;
         const storage::RecordId id = store.save_capture(capture);
         if (!choice.calibration)
-          return "pair stored as capture " + std::to_string(id) +
+          return "stored as capture " + std::to_string(id) +
                  "; not reconstructed: " + choice.refusal;
-        if (!runner) return "pair stored as capture " + std::to_string(id);
+        if (!runner) return "stored as capture " + std::to_string(id);
         const storage::RecordId model = runner->reconstruct(file, id, preset, progress);
-        return "pair stored, 3D image " + std::to_string(model) + " saved (Model)";
+        return "stored, 3D image " + std::to_string(model) + " saved (Model)";
       },
-      [&app](const TaskOutcome&) {
-        if (!app.session) return;
-        const auto before = app.session->captures().size();
-        app.session->refresh();
-        app.capture.stored = app.session->captures().size() > before;
+      [&app, file](const TaskOutcome&) {
+        if (app.session && app.session->file() == file) app.session->refresh();
       });
+}
+
+// The queue of 3D images: the one being made, how far, and how many wait;
+// the geologist may stop them (each pair stays stored).
+void draw_reconstructions(AppState& app) {
+  if (!app.reconstructions.busy()) return;
+  const WorkQueueStatus q = app.reconstructions.status();
+  if (app.targets.button("Stop 3D images", 0, q.current.running && !q.current.cancelling))
+    app.reconstructions.cancel();
+  ImGui::SameLine();
+  std::string text = q.current.running
+                         ? q.current.title + ": " + q.current.stage + " (" +
+                               format::text(format::Fraction{q.current.fraction}) + ", " +
+                               format::text(format::Duration{q.current.seconds}) + ")"
+                         : std::string("3D images");
+  if (q.waiting > 0)
+    text += "; " + format::count(static_cast<std::int64_t>(q.waiting), "pair waits", "pairs wait");
+  if (q.current.cancelling) text += ", stopping";
+  progress_bar(static_cast<float>(q.current.fraction), text, app.targets.target_px());
 }
 
 const char* shot_state(const std::optional<camera::Capture>& shot, bool stored) {
@@ -227,9 +252,11 @@ void draw_shots(AppState& app) {
     shoot(app, false);
   ImGui::SameLine();
   label_in_row(std::string("Right: ") + shot_state(c.right, c.stored));
-  const bool can_store = idle && c.left && c.right && !c.stored && app.session &&
-                         app.session->visit() && !app.session->read_only();
+  // Storing waits for no camera call: the pair goes to the queue of 3D images.
+  const bool can_store = c.left && c.right && !c.stored && app.session && app.session->visit() &&
+                         !app.session->read_only();
   if (app.targets.button("Store pair and reconstruct", 0, can_store)) store_and_reconstruct(app);
+  draw_reconstructions(app);
   if (!app.session) note("Open a project to store the pair (Project).");
   if (c.left && c.right) {
     for (const auto& n : camera::check_pair(c.left->exif, c.right->exif)) {

@@ -37,7 +37,7 @@ TEST(UiSession, FinishedStepsAreStoredAndACancelledRunLeavesNothingHalfDone) {
       {"tap": "Blocks"}, {"tap": "Run analysis"}, {"wait": "task"}, {"screenshot": "blocks"},
       {"tap": "Capture"}, {"tap": "Connect camera"}, {"wait": "task"},
       {"tap": "Shoot left"}, {"wait": "task"}, {"tap": "Shoot right"}, {"wait": "task"},
-      {"tap": "Store pair and reconstruct"}, {"frames": 2}, {"tap": "Cancel"}, {"wait": "task"},
+      {"tap": "Store pair and reconstruct"}, {"frames": 2}, {"tap": "Stop 3D images"}, {"wait": "task"},
       {"screenshot": "capture"}, {"tap": "Project"}, {"tap": "Close project"}])",
                             "first"),
             0)

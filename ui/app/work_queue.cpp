@@ -1,0 +1,36 @@
+#include "ui/app/work_queue.h"
+
+#include <utility>
+
+namespace rockface::ui {
+
+WorkQueue::~WorkQueue() {
+  cancel();
+  wait();
+}
+
+void WorkQueue::add(std::string title, BackgroundTask::Work work, BackgroundTask::Then then) {
+  waiting_.push_back({std::move(title), std::move(work), std::move(then)});
+  poll();
+}
+
+std::optional<TaskOutcome> WorkQueue::poll() {
+  std::optional<TaskOutcome> outcome = task_.take_outcome();
+  if (!task_.running() && !waiting_.empty()) {
+    Job next = std::move(waiting_.front());
+    waiting_.pop_front();
+    task_.start(std::move(next.title), std::move(next.work), std::move(next.then));
+  }
+  return outcome;
+}
+
+WorkQueueStatus WorkQueue::status() const {
+  return {task_.status(), waiting_.size()};
+}
+
+void WorkQueue::cancel() {
+  waiting_.clear();
+  task_.cancel();
+}
+
+}  // namespace rockface::ui
