@@ -1,6 +1,7 @@
 #include "ui/app/project_session.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/common/error.h"
 
@@ -63,7 +64,9 @@ void ProjectSession::refresh() {
     const auto analyses = store_.list_analyses(*visit_);
     if (!analyses.empty()) {
       analysis_ = store_.load_analysis(analyses.back().id);
-      for (const auto& b : analysis_->blocks) blocks_.push_back(make_block_view(b));
+      // Each block held once (issue 37): moved into its view.
+      for (auto& b : analysis_->blocks) blocks_.push_back(make_block_view(std::move(b)));
+      analysis_->blocks.clear();
     }
   }
   // Models belong to captures; the visit's own (its chosen pair's) wins,

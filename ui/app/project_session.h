@@ -48,7 +48,8 @@ class ProjectSession {
   const std::optional<storage::ModelSummary>& model() const { return model_; }
   const std::vector<storage::Measurement>& measurements() const { return measurements_; }
   const std::vector<storage::Joint>& joints() const { return joints_; }
-  // The visit's latest analysis with its blocks.
+  // The visit's latest analysis; its blocks are in blocks(), each with its
+  // verdict in words (held once: the run's own list is left empty).
   const std::optional<storage::AnalysisRun>& analysis() const { return analysis_; }
   const std::vector<BlockView>& blocks() const { return blocks_; }
 

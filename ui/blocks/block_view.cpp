@@ -1,14 +1,16 @@
 #include "ui/blocks/block_view.h"
 
+#include <utility>
+
 #include "ui/blocks/block_summary.h"
 
 namespace rockface::ui {
 
-BlockView make_block_view(const analysis::ReportBlock& block) {
+BlockView make_block_view(analysis::ReportBlock block) {
   BlockView v;
-  v.block = block;
   v.verdict = analysis::verdict_of(block);
   v.summary = block_summary(block);
+  v.block = std::move(block);
   return v;
 }
 

@@ -18,6 +18,6 @@ struct BlockView {
   std::vector<std::string> summary;  // ui/blocks/block_summary.h: the report in words
 };
 
-BlockView make_block_view(const analysis::ReportBlock& block);
+BlockView make_block_view(analysis::ReportBlock block);
 
 }  // namespace rockface::ui
