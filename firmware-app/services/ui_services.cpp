@@ -13,6 +13,7 @@
 #include "core/photogrammetry/reconstruction/preset.h"
 #include "firmware-app/reconstruct/face_pair.h"
 #include "firmware-app/records/field_records.h"
+#include "firmware-app/records/orient_visit.h"
 #include "firmware-app/render/synthetic_scene_from_scene.h"
 #include "storage/project/project_store.h"
 #include "storage/scene/export_scene_json.h"
@@ -71,6 +72,22 @@ storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project
   return store.save_model(model_record(rec, capture_id,
                                        {where + " left", where + " right", preset.name,
                                         sources.range_pole_m, sources.baseline_m, sources.north}));
+}
+
+std::string StoreNorthRunner::orient(const fs::path& project, storage::RecordId visit_id,
+                                     const Eigen::Vector2d& from_px, const Eigen::Vector2d& to_px,
+                                     double bearing_deg, double declination_deg,
+                                     Progress& progress) {
+  progress.step("turning the visit to north", 0.1);
+  photogrammetry::NorthReference north;
+  north.from_px = from_px;
+  north.to_px = to_px;
+  north.azimuth_deg = bearing_deg;
+  north.declination_deg = declination_deg;
+  north.where = "the compass line tapped on the photograph";
+  storage::ProjectStore store = storage::ProjectStore::open(project);
+  const VisitOrientation done = orient_visit_by_compass(store, visit_id, north);
+  return done.note;
 }
 
 storage::RecordId StoreAnalysisRunner::analyse(const fs::path& project, storage::RecordId visit_id,

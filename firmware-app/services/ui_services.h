@@ -98,6 +98,13 @@ class StoreExportRunner final : public ui::ExportRunner {
                     const ui::ExportTarget& target, Progress& progress) override;
 };
 
+class StoreNorthRunner final : public ui::NorthRunner {
+ public:
+  std::string orient(const std::filesystem::path& project, storage::RecordId visit_id,
+                     const Eigen::Vector2d& from_px, const Eigen::Vector2d& to_px,
+                     double bearing_deg, double declination_deg, Progress& progress) override;
+};
+
 // source: a scene with an imaging section, a folder of captures, or empty
 // (the first DSLR libgphoto2 finds).
 class FieldCameraConnector final : public ui::CameraConnector {
@@ -125,6 +132,7 @@ struct FieldRunners {
   FieldProposalRunner proposals;
   StoreFieldReportRunner field_report;
   StoreExportRunner exports;
+  StoreNorthRunner north;
 
   ui::FieldServices services() {
     ui::FieldServices s;
@@ -139,6 +147,7 @@ struct FieldRunners {
     s.proposals = &proposals;
     s.field_report = &field_report;
     s.exports = &exports;
+    s.north = &north;
     return s;
   }
 };

@@ -252,6 +252,19 @@ class ExportRunner {
                             const ExportTarget& target, Progress& progress) = 0;
 };
 
+// North given after the visit (issue 42): the compass line's two pixels in
+// the left photograph of the visit's first pair and the bearing the
+// geologist read along it turn the visit's 3D images about the vertical
+// (the workflow `rockface orient` runs). Returns what was done in words;
+// throws rockface::Error naming the visit or the line.
+class NorthRunner {
+ public:
+  virtual ~NorthRunner() = default;
+  virtual std::string orient(const std::filesystem::path& project, storage::RecordId visit_id,
+                             const Eigen::Vector2d& from_px, const Eigen::Vector2d& to_px,
+                             double bearing_deg, double declination_deg, Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
@@ -266,6 +279,8 @@ struct FieldServices {
   FieldReportRunner* field_report = nullptr;  // null: no Field report button
   // Issue 43.
   ExportRunner* exports = nullptr;  // null: no Export to USB stick button
+  // Issue 42.
+  NorthRunner* north = nullptr;  // null: the Model screen gives no north
 };
 
 }  // namespace rockface::ui

@@ -1,16 +1,10 @@
 #include "ui/mapping/compass_entry.h"
 
 #include <cmath>
-#include <cstdlib>
 
 #include "ui/widgets/format.h"
 
 namespace rockface::ui {
-
-namespace {
-// Digits a reading needs: "359.9" (and a dip "90.0").
-constexpr std::size_t kMaxTyped = 5;
-}  // namespace
 
 void CompassEntry::choose(Field field) {
   typing_ = field;
@@ -18,22 +12,8 @@ void CompassEntry::choose(Field field) {
 }
 
 void CompassEntry::key(char c) {
-  if (typing_ == Field::none) return;
-  if (c == '\b') {
-    if (!typed_.empty()) typed_.pop_back();
-  } else if (c == '.') {
-    if (typed_.find('.') != std::string::npos || typed_.size() >= kMaxTyped) return;
-    typed_ += typed_.empty() ? "0." : ".";
-  } else if (c >= '0' && c <= '9') {
-    // One decimal, as a compass is read (to 0.5-1 degree).
-    const auto point = typed_.find('.');
-    if (typed_.size() >= kMaxTyped || (point != std::string::npos && typed_.size() > point + 1))
-      return;
-    typed_ += c;
-  } else {
-    return;
-  }
-  *value(typing_) = typed_.empty() ? 0.0 : std::strtod(typed_.c_str(), nullptr);
+  if (typing_ == Field::none || !typed_.key(c)) return;
+  *value(typing_) = typed_.value();
   given_ = true;
 }
 

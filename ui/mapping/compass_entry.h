@@ -9,6 +9,7 @@
 
 #include "core/measure/compass_reading.h"
 #include "storage/project/project_records.h"
+#include "ui/widgets/keypad.h"
 
 namespace rockface::ui {
 
@@ -46,7 +47,7 @@ class CompassEntry {
  private:
   double dip_ = 0, dip_direction_ = 0;
   Field typing_ = Field::none;
-  std::string typed_;
+  TypedNumber typed_{5};  // digits a reading needs: "359.9" (and a dip "90.0")
   bool given_ = false;
 };
 

@@ -8,6 +8,7 @@
 
 #include "ui/app/screens.h"
 #include "ui/widgets/format.h"
+#include "ui/widgets/keypad.h"
 #include "ui/widgets/widgets_controls.h"
 #include "ui/widgets/widgets_text.h"
 
@@ -47,20 +48,6 @@ void draw_field(AppState& app, const std::string& label, Field field) {
   if (number_field(app.targets, "Compass " + label, &stepped, "%.1f°",
                    ImGui::GetContentRegionAvail().x, 1.0))
     e.set(field, stepped);
-}
-
-// The keypad: digits, the point and Back, each a thumb target, in three
-// rows of four (the panel's height is what the geologist sees at once).
-void draw_keypad(AppState& app) {
-  CompassEntry& e = app.mapping.compass;
-  const char* rows[3][4] = {{"7", "8", "9", "Back"}, {"4", "5", "6", "."}, {"1", "2", "3", "0"}};
-  for (const auto& row : rows)
-    for (int k = 0; k < 4; ++k) {
-      const bool back = row[k][1] != 0;
-      const float width = back ? 0.0f : app.targets.target_px();
-      if (k > 0) same_line_if_fits(back ? button_width(row[k], width) : width);
-      if (app.targets.button(row[k], width)) e.key(back ? '\b' : row[k][0]);
-    }
 }
 
 // Save reading / Clear reading of a saved trace: stored at once by the
@@ -175,7 +162,7 @@ bool draw_compass_panel(AppState& app) {
   }
   same_line_if_fits(button_width("Done", app.targets.target_px()));
   if (app.targets.button("Done")) e.open = false;
-  draw_keypad(app);
+  if (const auto k = draw_keypad(app.targets)) app.mapping.compass.key(*k);
   return true;
 }
 

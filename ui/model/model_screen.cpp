@@ -5,6 +5,7 @@
 #include "core/common/number_format.h"
 #include "ui/app/screens.h"
 #include "ui/model/accuracy_summary.h"
+#include "ui/model/north_entry.h"
 #include "ui/view3d/overlay_legend.h"
 #include "ui/view3d/overlay_targets.h"
 #include "ui/widgets/format.h"
@@ -88,6 +89,12 @@ void draw_model_screen(AppState& app) {
   if (app.model.show_photograph) {  // ui/model/overlay_photo_targets.h
     app.model.photo_targets.draw(app.model_view.model_id(), *app.model_view.model(),
                                  app.model_view.photo(), layout.main, app.targets.scale());
+    const cv::Mat& photo = app.model_view.photo();
+    const ImVec2 lo = app.model.photo_targets.image_min();
+    const float k = app.model.photo_targets.screen_px_per_photo_px();
+    north_photograph_taps(app, lo, k,
+                          ImVec2(lo.x + static_cast<float>(photo.cols) * k,
+                                 lo.y + static_cast<float>(photo.rows) * k));
   } else {
     add_targets_to_overlay(app.model_view, app.targets.scale());  // ui/view3d/overlay_targets.h
     app.model_view.draw(layout.main, app.gesture);
@@ -115,6 +122,8 @@ void draw_model_screen(AppState& app) {
     app.model.show_photograph = !app.model.show_photograph;
   ImGui::Separator();
   draw_targets_in_words(app);
+  draw_north_section(app);  // ui/model/north_entry.h
+  ImGui::Separator();
   draw_accuracy(model);
   ImGui::EndChild();
 }
