@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/analysis/support_classes.h"
+#include "core/analysis/support_decision.h"
 #include "core/common/progress.h"
 #include "firmware-app/office/office_workflows.h"
 #include "firmware-app/services/ui_services.h"
@@ -460,6 +462,78 @@ TEST(OfficeSync, ACompassReadingGoesUpWithItsTraceAndComesBack) {
   ASSERT_EQ(history.rows(), 2) << "as synced, then with the new reading";
   EXPECT_EQ(std::stod(history.text(0, 0)), 74);
   EXPECT_EQ(std::stod(history.text(1, 0)), 73);
+}
+
+// The round's support (issue 44): the tunnel's classes and a visit's
+// decisions, each a record kind of its own, go up with the project and come
+// back with a pull, every revision kept on the server, the latest in force.
+TEST(OfficeSync, TheSupportClassesAndARoundsDecisionsGoUpAndComeBack) {
+  const std::string db = fresh_database();
+  storage::test::TempDir dir("office-support");
+  TabletProject a;
+  a.visits = 1;
+  make_tablet_project(dir / "a.rockface", a);
+  {
+    auto store = storage::ProjectStore::open(dir / "a.rockface");
+    analysis::SupportClasses classes;
+    classes.tunnel = "Main drive";
+    classes.source = "classes.json";
+    for (const char* name : {"A", "B"}) {
+      analysis::SupportClass c;
+      c.name = name;
+      c.round_length_m = name[0] == 'A' ? 3.0 : 2.0;
+      c.criteria.rmr =
+          name[0] == 'A' ? analysis::FigureRange{60.0, 100.0} : analysis::FigureRange{0.0, 60.0};
+      classes.classes.push_back(c);
+    }
+    store.save_support_classes(classes);
+    const auto visit = *store.latest_visit();
+    analysis::SupportDecision d;
+    d.class_name = "A";
+    d.proposed = "A";
+    d.decided_by = "geologist";
+    d.decided_at = "2026-11-29T03:00:00.000Z";
+    d.checks = "every wedge at or above FoS 1.5";
+    store.save_support_decision(visit, d);
+    d.class_name = "B";
+    d.reason = "a roof wedge the bolts of A do not reach past";
+    d.changes.push_back({"bolt length", "3 m", "4 m", "W2"});
+    d.decided_at = "2026-11-29T03:20:00.000Z";
+    store.save_support_decision(visit, d);
+  }
+  NoProgress none;
+  sync_project(dir / "a.rockface", as_role(db, "tablet_a"), {}, none);
+  expect_server_holds(as_superuser(db), dir / "a.rockface");
+  {
+    storage::office::Connection c(as_superuser(db));
+    const auto kinds = c.query(
+        "SELECT kind, count(*) FROM rockface.record WHERE kind IN ('support_classes', "
+        "'support_decision') GROUP BY kind ORDER BY kind",
+        {}, "support records");
+    ASSERT_EQ(kinds.rows(), 2);
+    EXPECT_EQ(kinds.text(0, 0), "support_classes");
+    EXPECT_EQ(kinds.text(1, 0), "support_decision");
+    EXPECT_EQ(kinds.text(1, 1), "2") << "both decisions of the round, the history kept";
+  }
+  storage::office::pull_tunnel(as_role(db, "office_reader"), "Main drive", dir / "p.rockface",
+                               none);
+  auto pulled = storage::ProjectStore::open(dir / "p.rockface");
+  const auto classes = pulled.load_support_classes();
+  ASSERT_TRUE(classes);
+  ASSERT_EQ(classes->classes.size(), 2u);
+  EXPECT_EQ(classes->classes[1].name, "B");
+  EXPECT_EQ(classes->classes[1].round_length_m, 2.0);
+  const auto visit = *pulled.latest_visit();
+  const auto decisions = pulled.list_support_decisions(visit);
+  ASSERT_EQ(decisions.size(), 2u);
+  EXPECT_EQ(decisions[0].class_name, "A");
+  const auto latest = pulled.load_support_decision(visit);
+  ASSERT_TRUE(latest);
+  EXPECT_EQ(latest->class_name, "B");
+  EXPECT_EQ(latest->reason, "a roof wedge the bolts of A do not reach past");
+  ASSERT_EQ(latest->changes.size(), 1u);
+  EXPECT_EQ(latest->changes[0].to, "4 m");
+  EXPECT_EQ(latest->decided_by, "geologist");
 }
 
 }  // namespace
