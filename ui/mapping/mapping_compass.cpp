@@ -9,6 +9,7 @@
 #include "ui/app/screens.h"
 #include "ui/widgets/format.h"
 #include "ui/widgets/keypad.h"
+#include "ui/widgets/toggle_button.h"
 #include "ui/widgets/widgets_controls.h"
 #include "ui/widgets/widgets_text.h"
 
@@ -17,13 +18,6 @@ namespace rockface::ui {
 namespace {
 
 using Field = CompassEntry::Field;
-
-bool toggle(AppState& app, const std::string& label, bool on, bool enabled = true) {
-  if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-  const bool pressed = app.targets.button(label, 0, enabled);
-  if (on) ImGui::PopStyleColor();
-  return pressed;
-}
 
 std::vector<const storage::Measurement*> saved_traces(const ProjectSession& session) {
   std::vector<const storage::Measurement*> out;
@@ -41,7 +35,7 @@ std::string reading_words(const measure::CompassReading& r) {
 void draw_field(AppState& app, const std::string& label, Field field) {
   CompassEntry& e = app.mapping.compass;
   // Tapped again, the field is typed afresh.
-  if (toggle(app, label, e.typing() == field)) e.choose(field);
+  if (toggle_button(app.targets, label, e.typing() == field)) e.choose(field);
   ImGui::SameLine();
   double* value = e.value(field);
   double stepped = *value;

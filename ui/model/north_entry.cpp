@@ -6,6 +6,7 @@
 #include "storage/project/model_registration.h"
 #include "ui/app/screens.h"
 #include "ui/widgets/format.h"
+#include "ui/widgets/toggle_button.h"
 #include "ui/widgets/widgets_controls.h"
 #include "ui/widgets/widgets_text.h"
 
@@ -13,17 +14,10 @@ namespace rockface::ui {
 
 namespace {
 
-using Field = NorthEntryState::Field;
+using NorthField = NorthEntryState::Field;
 
 // The line's colour on the photograph: the pole targets' rings are orange.
 constexpr ImU32 kLineColour = IM_COL32(80, 200, 255, 255);
-
-bool toggle(AppState& app, const std::string& label, bool on) {
-  if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-  const bool pressed = app.targets.button(label);
-  if (on) ImGui::PopStyleColor();
-  return pressed;
-}
 
 // Why what was given is not yet a compass line; empty when it is one.
 std::string problem(const NorthEntryState& e) {
@@ -69,15 +63,15 @@ void draw_entry(AppState& app) {
   label(e.ends.empty()       ? "Line: no end tapped yet"
         : e.ends.size() == 1 ? "Line: first end tapped"
                              : "Line: both ends tapped (a third tap starts it again)");
-  if (toggle(app, "Bearing", e.typing == Field::bearing)) {
-    e.typing = Field::bearing;
+  if (toggle_button(app.targets, "Bearing", e.typing == NorthField::bearing)) {
+    e.typing = NorthField::bearing;
     e.bearing.clear();
   }
   ImGui::SameLine();
   label_in_row(e.bearing.text().empty() ? std::string("not typed")
                                         : format::text(format::Angle{e.bearing.value()}));
-  if (toggle(app, "Declination", e.typing == Field::declination)) {
-    e.typing = Field::declination;
+  if (toggle_button(app.targets, "Declination", e.typing == NorthField::declination)) {
+    e.typing = NorthField::declination;
     e.declination.clear();
   }
   ImGui::SameLine();
@@ -86,7 +80,7 @@ void draw_entry(AppState& app) {
   ImGui::SameLine();
   label_in_row(format::text(format::Angle{e.declination.value()}));
   if (const auto k = draw_keypad(app.targets))
-    (e.typing == Field::bearing ? e.bearing : e.declination).key(*k);
+    (e.typing == NorthField::bearing ? e.bearing : e.declination).key(*k);
   const std::string why = problem(e);
   if (!why.empty()) paragraph(why);
   const bool can = why.empty() && !app.task.running();
@@ -106,7 +100,7 @@ void NorthEntryState::clear() {
   bearing.clear();
   declination.clear();
   declination_west = false;
-  typing = Field::bearing;
+  typing = NorthField::bearing;
 }
 
 void draw_north_section(AppState& app) {
