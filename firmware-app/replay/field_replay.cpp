@@ -521,6 +521,9 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
   const ReplayRefusalUndo undo(request.project, source.spool);
   try {
     return replay_into_project(request, source, progress);
+  } catch (const InputError& e) {
+    undo.remove_what_the_replay_made();
+    throw InputError(e.where(), undo.said(e.reason()));
   } catch (...) {
     // The store is closed (unwound) by now: its file can go.
     undo.remove_what_the_replay_made();

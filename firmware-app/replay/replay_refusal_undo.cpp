@@ -38,4 +38,9 @@ void ReplayRefusalUndo::remove_what_the_replay_made() const noexcept {
   for (auto p = added.rbegin(); p != added.rend(); ++p) fs::remove_all(*p, ec);
 }
 
+std::string ReplayRefusalUndo::said(const std::string& reason) const {
+  return reason + "; the replay stored nothing: " +
+         (project_existed_ ? "the project is as it was" : "no project was made");
+}
+
 }  // namespace rockface::app

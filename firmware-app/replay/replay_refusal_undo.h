@@ -8,6 +8,7 @@
 // SQLite side files, and the photographs it spooled.
 #include <filesystem>
 #include <set>
+#include <string>
 
 namespace rockface::app {
 
@@ -21,6 +22,10 @@ class ReplayRefusalUndo {
   // the replay created it, and every file and folder of the spool the
   // replay added. Never throws (it runs while an error propagates).
   void remove_what_the_replay_made() const noexcept;
+
+  // The refusal's reason with what it left: "; the replay stored nothing:
+  // the project is as it was" (or "no project was made").
+  std::string said(const std::string& reason) const;
 
  private:
   std::filesystem::path project_, spool_;

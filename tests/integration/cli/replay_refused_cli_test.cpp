@@ -100,6 +100,8 @@ TEST(ReplayRefusedCli, AFaceOffTheAlignmentFoundAfterTheVisitBeganLeavesNoProjec
                                               p.string() + " --preset fast");
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("its face lies at chainage"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("; the replay stored nothing: no project was made\n"), std::string::npos)
+      << r.err;
   for (const char* left :
        {"p.rockface", "p.rockface.spool", "p.rockface-wal", "p.rockface-shm", "p.rockface-journal"})
     EXPECT_FALSE(fs::exists(dir / left)) << left << " left behind";
@@ -125,6 +127,9 @@ TEST(ReplayRefusedCli, AFaceOffTheAlignmentChangesNothingInAProjectWithVisits) {
                                               p.string() + " --preset fast");
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("its face lies at chainage"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("; the replay stored nothing: the project is as it was\n"),
+            std::string::npos)
+      << r.err;
   EXPECT_TRUE(bytes_of(p) == bytes) << "the project changed";
   for (const char* left : {"p.rockface-wal", "p.rockface-shm", "p.rockface-journal"})
     EXPECT_FALSE(fs::exists(dir / left)) << left << " left behind";
