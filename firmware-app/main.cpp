@@ -2,8 +2,10 @@
 // without a verb it starts the tablet UI.
 #include <algorithm>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <system_error>
 
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
@@ -42,6 +44,17 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::cerr << "rockface: " << e.what() << "\n";
     return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path longer than the file system takes is the user's input, said by
+    // its name (issue 41: "filesystem error: status: File name too long",
+    // exit 1); any other file-system failure is the machine's.
+    if (e.code() == std::errc::filename_too_long) {
+      std::cerr << "rockface: " << e.path1().string()
+                << ": the name is too long for the file system\n";
+      return 2;
+    }
+    std::cerr << "rockface: " << e.what() << "\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "rockface: " << e.what() << "\n";
     return 1;

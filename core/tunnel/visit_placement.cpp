@@ -25,13 +25,22 @@ double median(std::vector<double> v) {
   return *mid;
 }
 
+// A chainage in a message: to the centimetre, as the surveyor writes it;
+// one beyond any alignment (1e308, a typo or a fuzzed file) to 6
+// significant digits, not 300 (issue 41).
+std::string chainage_text(double chainage) {
+  constexpr double kLongestChainageM = 1e9;
+  return std::abs(chainage) < kLongestChainageM ? format_fixed(chainage, 2)
+                                                : format_significant(chainage, 6);
+}
+
 }  // namespace
 
 Eigen::Vector3d typed_pole_position(const Alignment& alignment, double chainage, double offset,
                                     double height) {
   if (!alignment.contains(chainage)) {
     throw InputError("tunnel.placement.chainage",
-                     format_fixed(chainage, 2) + " is off the alignment (" +
+                     chainage_text(chainage) + " is off the alignment (" +
                          format_fixed(alignment.first_chainage(), 2) + " to " +
                          format_fixed(alignment.last_chainage(), 2) + ")");
   }
@@ -78,7 +87,7 @@ VisitPlacement place_visit(const Alignment& alignment, const DesignProfile& prof
   out.offset_m = median(offsets);
   out.height_m = median(heights);
   if (!alignment.contains(out.chainage)) {
-    throw InputError(visit, "its face lies at chainage " + format_fixed(out.chainage, 2) +
+    throw InputError(visit, "its face lies at chainage " + chainage_text(out.chainage) +
                                 ", off the alignment (" +
                                 format_fixed(alignment.first_chainage(), 2) + " to " +
                                 format_fixed(alignment.last_chainage(), 2) + ")");

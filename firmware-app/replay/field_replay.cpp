@@ -29,6 +29,7 @@
 #include "firmware-app/replay/replay_capture.h"
 #include "firmware-app/replay/replay_more_pairs.h"
 #include "firmware-app/replay/replay_picks.h"
+#include "firmware-app/replay/replay_refusal_undo.h"
 #include "firmware-app/tunnel/replay_tunnel.h"
 #include "storage/project/calibration_library.h"
 #include "storage/project/project_store.h"
@@ -391,10 +392,15 @@ std::vector<storage::Joint> visit_joints(const analysis::AnalysisInput& analysed
 
 }  // namespace field_replay_phases
 
-ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& progress) {
+namespace {
+
+// The replay once its source is read: the pair captured, the project opened
+// or created, and everything it stores saved in one transaction (a refusal
+// part-way stores nothing).
+ReplayOutcome replay_into_project(const ReplayRequest& request,
+                                  field_replay_phases::ReplaySource& source, Progress& progress) {
   using namespace field_replay_phases;
   ReplayOutcome out;
-  ReplaySource source = open_source(request);
   const photogrammetry::ReconstructionPreset preset =
       analysis::preset_options(source.preset).reconstruction;
 
@@ -425,80 +431,104 @@ ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& prog
     source.intrinsics = c.intrinsics;
     source.library_calibration_id = c.id;
   }
-  out.visit_id = store.begin_visit("replay " + request.source, source.visit_note);
-  const StoredCapture stored =
-      store_capture(store, request, source, pair, out.visit_id, preset.name);
-  out.capture_id = stored.capture_id;
+  // One transaction from the visit's start to its analysis: a refusal after
+  // the visit began (a face off the alignment, picks the analysis refuses)
+  // leaves an existing project as it was, byte for byte (issue 41).
+  store.in_one_transaction("replaying " + request.source, [&] {
+    out.visit_id = store.begin_visit("replay " + request.source, source.visit_note);
+    const StoredCapture stored =
+        store_capture(store, request, source, pair, out.visit_id, preset.name);
+    out.capture_id = stored.capture_id;
 
-  const cv::Mat left_image = decode_shot(pair.left.image, "left");
-  const cv::Mat right_image = decode_shot(pair.right.image, "right");
-  photogrammetry::ReconstructionResult rec =
-      reconstruct_pair(left_image, right_image, source, preset, progress);
-  rebase_to_datum(rec, store.project().datum);
-  const storage::Model model =
-      model_record(rec, out.capture_id,
-                   {pair.left.image.saved_path, pair.right.image.saved_path, preset.name,
-                    source.sources.range_pole_m, source.sources.baseline_m, source.sources.north});
-  out.model_id = store.save_model(model);
-  std::optional<MorePairsOutcome> more;
-  if (source.synthetic && source.synthetic->pairs.size() > 1) {
-    more = replay_more_pairs(store,
-                             {out.visit_id, stored.calibration_id, &*source.synthetic,
-                              source.intrinsics, preset.name, preset, source.spool},
-                             left_image, rec, progress);
-    out.more_model_ids = more->model_ids;
-    for (const auto& r : more->face.images)
-      if (r.reference >= 0)
-        out.guidance.push_back(r.name + " registered to " + more->face.images[r.reference].name +
-                               ": " + std::to_string(r.tie_points) + " tie points, surface rms " +
-                               std::to_string(r.surface_rms_m * 1000) + " mm");
-  }
-  out.model_points = rec.mesh.size();
-  out.registration = "scale: " + rec.scale_source + ", vertical: " + rec.vertical_source +
-                     ", north: " + rec.north_source;
-  out.predicted_depth_sigma_m = rec.accuracy.sigma_z;
-  out.scaled = rec.scaled;
-  for (const auto& w : rec.accuracy.warnings) out.guidance.push_back(w);
+    const cv::Mat left_image = decode_shot(pair.left.image, "left");
+    const cv::Mat right_image = decode_shot(pair.right.image, "right");
+    photogrammetry::ReconstructionResult rec =
+        reconstruct_pair(left_image, right_image, source, preset, progress);
+    rebase_to_datum(rec, store.project().datum);
+    const storage::Model model = model_record(
+        rec, out.capture_id,
+        {pair.left.image.saved_path, pair.right.image.saved_path, preset.name,
+         source.sources.range_pole_m, source.sources.baseline_m, source.sources.north});
+    out.model_id = store.save_model(model);
+    std::optional<MorePairsOutcome> more;
+    if (source.synthetic && source.synthetic->pairs.size() > 1) {
+      more = replay_more_pairs(store,
+                               {out.visit_id, stored.calibration_id, &*source.synthetic,
+                                source.intrinsics, preset.name, preset, source.spool},
+                               left_image, rec, progress);
+      out.more_model_ids = more->model_ids;
+      for (const auto& r : more->face.images)
+        if (r.reference >= 0)
+          out.guidance.push_back(r.name + " registered to " + more->face.images[r.reference].name +
+                                 ": " + std::to_string(r.tie_points) + " tie points, surface rms " +
+                                 std::to_string(r.surface_rms_m * 1000) + " mm");
+    }
+    out.model_points = rec.mesh.size();
+    out.registration = "scale: " + rec.scale_source + ", vertical: " + rec.vertical_source +
+                       ", north: " + rec.north_source;
+    out.predicted_depth_sigma_m = rec.accuracy.sigma_z;
+    out.scaled = rec.scaled;
+    for (const auto& w : rec.accuracy.warnings) out.guidance.push_back(w);
 
-  if (!source.scene) return out;  // a capture folder has no traces to analyse
-  const storage::Scene& scene = *source.scene;
-  if (scene.tunnel) out.guidance.push_back(place_replayed_visit(store, scene, out.visit_id));
+    if (!source.scene) return;  // a capture folder has no traces to analyse
+    const storage::Scene& scene = *source.scene;
+    if (scene.tunnel) out.guidance.push_back(place_replayed_visit(store, scene, out.visit_id));
 
-  // Traces: measured on the reconstructed image where the scene gives picks
-  // (replay_picks.h); else those of the scene, or the synthetic scene's true
-  // traces (what the geologist would mark on the model).
-  std::optional<ReplayPicks> picked;
-  if (scene.picks) {
-    progress.step("measure", 0.75);
-    picked = measure_replay_picks(scene, rec, source.intrinsics, preset, left_image, right_image,
-                                  more ? &*more : nullptr);
-    for (const auto& note : picked->notes) out.guidance.push_back(note);
-    out.joints = joint_comparisons(scene, picked->measured);
-  }
-  const ReplayPicks* picks = picked ? &*picked : nullptr;
-  const analysis::AnalysisInput analysed =
-      replay_analysis_input(scene, *source.synthetic, picks, request.source);
-  // The traces, and the free surface as areas: with the joints below, the
-  // visit holds all the analysis needs, so it can be analysed again from
-  // the project alone (the tablet UI does).
-  store.save_measurements(
-      out.visit_id, visit_measurements(analysed, picks, more ? &*more : nullptr,
-                                       {out.visit_id, out.model_id, out.capture_id}, scene.datum));
-  store.save_joints(out.visit_id, {}, visit_joints(analysed, picks, out.visit_id, scene.datum));
-  // The rock-mass form the scene brings (what the geologist entered on site).
-  if (scene.rockmass) store.save_rockmass_form(out.visit_id, *scene.rockmass);
+    // Traces: measured on the reconstructed image where the scene gives picks
+    // (replay_picks.h); else those of the scene, or the synthetic scene's true
+    // traces (what the geologist would mark on the model).
+    std::optional<ReplayPicks> picked;
+    if (scene.picks) {
+      progress.step("measure", 0.75);
+      picked = measure_replay_picks(scene, rec, source.intrinsics, preset, left_image, right_image,
+                                    more ? &*more : nullptr);
+      for (const auto& note : picked->notes) out.guidance.push_back(note);
+      out.joints = joint_comparisons(scene, picked->measured);
+    }
+    const ReplayPicks* picks = picked ? &*picked : nullptr;
+    const analysis::AnalysisInput analysed =
+        replay_analysis_input(scene, *source.synthetic, picks, request.source);
+    // The traces, and the free surface as areas: with the joints below, the
+    // visit holds all the analysis needs, so it can be analysed again from
+    // the project alone (the tablet UI does).
+    store.save_measurements(
+        out.visit_id,
+        visit_measurements(analysed, picks, more ? &*more : nullptr,
+                           {out.visit_id, out.model_id, out.capture_id}, scene.datum));
+    store.save_joints(out.visit_id, {}, visit_joints(analysed, picks, out.visit_id, scene.datum));
+    // The rock-mass form the scene brings (what the geologist entered on site).
+    if (scene.rockmass) store.save_rockmass_form(out.visit_id, *scene.rockmass);
 
-  progress.step("blocks", 0.8);
-  analysis::Report report = analysis::analyse(analysed, progress);
-  // What the synthetic camera simulated, named as the analysis's effects are.
-  for (const auto& e : source.synthetic->scene.effects.simulated())
-    report.effects_simulated.push_back("imaging." + e);
-  const storage::AnalysisRun run =
-      analysis_record(report, out.visit_id, out.model_id, source.preset);
-  out.analysis_id = store.save_analysis(run);
-  out.report = std::move(report);
+    progress.step("blocks", 0.8);
+    analysis::Report report = analysis::analyse(analysed, progress);
+    // What the synthetic camera simulated, named as the analysis's effects are.
+    for (const auto& e : source.synthetic->scene.effects.simulated())
+      report.effects_simulated.push_back("imaging." + e);
+    const storage::AnalysisRun run =
+        analysis_record(report, out.visit_id, out.model_id, source.preset);
+    out.analysis_id = store.save_analysis(run);
+    out.report = std::move(report);
+  });
   progress.step("done", 1.0);
   return out;
+}
+
+}  // namespace
+
+ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& progress) {
+  // A refusal while the source is read leaves nothing: nothing is written yet.
+  field_replay_phases::ReplaySource source = field_replay_phases::open_source(request);
+  const ReplayRefusalUndo undo(request.project, source.spool);
+  try {
+    return replay_into_project(request, source, progress);
+  } catch (const InputError& e) {
+    undo.remove_what_the_replay_made();
+    throw InputError(e.where(), undo.said(e.reason()));
+  } catch (...) {
+    // The store is closed (unwound) by now: its file can go.
+    undo.remove_what_the_replay_made();
+    throw;
+  }
 }
 
 }  // namespace rockface::app

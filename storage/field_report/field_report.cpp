@@ -23,16 +23,16 @@ namespace {
 // The reconstruction report stored with the first model (rockface-reconstruction/1).
 void read_accuracy(const ModelRegistration& reg, ReportedAccuracy& a) {
   if (reg.record != ModelRegistration::Record::reconstruction) return;
-  a.sigma_z_m = reg.sigma_z_m.value_or(0.0);
-  a.distance_m = reg.distance_m.value_or(0.0);
-  a.point_spacing_m = reg.point_spacing_m.value_or(0.0);
-  a.reprojection_rms_px = reg.rms_reprojection_px.value_or(0.0);
-  a.tie_points = static_cast<int>(reg.inliers.value_or(0.0));
+  a.sigma_z_m = reg.sigma_z_m;
+  a.distance_m = reg.distance_m;
+  a.point_spacing_m = reg.point_spacing_m;
+  a.reprojection_rms_px = reg.rms_reprojection_px;
+  if (reg.inliers) a.tie_points = static_cast<int>(*reg.inliers);
   a.imported_from = reg.imported_from;
   a.scale_source = reg.scale_source;
   a.vertical_source = reg.vertical_source;
   a.north_source = reg.north_source;
-  a.scale = reg.scale.value_or(1.0);
+  a.scale = reg.scale;
   a.range_pole_m = reg.pole_length_m;
   a.compass_azimuth_deg = reg.compass_azimuth_deg;
   a.declination_deg = reg.declination_deg;
@@ -163,6 +163,7 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
         if (c.calibration_id) {
           const Calibration cal = store.load_calibration(*c.calibration_id);
           r.intrinsics = cal.intrinsics;
+          r.calibration_known = true;
           r.calibration_method = cal.method;
           r.lens = cal.intrinsics.lens;
           for (const auto& b : store.list_camera_bodies())

@@ -52,10 +52,13 @@ struct ReportedAccuracy {
   // (`rockface import`): file, format, points, frame; empty for its own.
   std::string imported_from;
   std::string scale_source, vertical_source, north_source;
-  double scale = 1;
+  // Absent when the visit has no reconstruction of its own (a visit made by
+  // `rockface measure` on another visit's 3D image) or its record does not
+  // state them: said "not known", never shown as zeros (issue 41).
+  std::optional<double> scale;
   std::optional<double> range_pole_m, compass_azimuth_deg, declination_deg, north_rotation_deg;
-  double sigma_z_m = 0, distance_m = 0, point_spacing_m = 0, reprojection_rms_px = 0;
-  int tie_points = 0;
+  std::optional<double> sigma_z_m, distance_m, point_spacing_m, reprojection_rms_px;
+  std::optional<int> tie_points;
   std::optional<double> control_rms_m;
   std::vector<ReportedControlPoint> control_points;
   std::vector<ReportedImage> images;  // several 3D images; empty for one pair
@@ -131,6 +134,7 @@ struct FieldReport {
   // Camera and preset.
   std::string camera_body, lens, calibration_method;
   photogrammetry::CameraIntrinsics intrinsics;
+  bool calibration_known = false;  // the first pair's calibration was read into `intrinsics`
   std::string preset;
 
   // The face: the first pair's left photograph and the registration of its

@@ -161,41 +161,73 @@ std::string code_text(const std::string& code) {
   return n == 0 ? code : code.substr(0, code.find('+')) + " +" + std::to_string(n);
 }
 
+// What the visit does not have is said, never printed as a zero ("0 x 0 px,
+// fx 0.0" for a visit made by `rockface measure`, which has no photographs
+// of its own; issue 41).
+constexpr const char* kNotKnown = "not known";
+
 void camera_section(PdfPages& pdf, const FieldReport& r) {
   pdf.heading("Camera and preset");
   const auto& k = r.intrinsics;
   pdf.line("camera: " + (r.camera_body.empty() ? std::string("unknown") : r.camera_body) +
            (r.lens.empty() ? "" : ", lens " + r.lens));
-  pdf.line("calibration: " + (r.calibration_method.empty() ? "-" : r.calibration_method) + "; " +
-           std::to_string(k.width) + " x " + std::to_string(k.height) + " px, fx " +
-           report_number(k.fx, 1) + ", fy " + report_number(k.fy, 1) + ", cx " +
-           report_number(k.cx, 1) + ", cy " + report_number(k.cy, 1) + " px, rms " +
-           report_number(k.rms_px, 2) + " px");
-  pdf.line("preset: " + (r.preset.empty() ? "-" : r.preset));
+  if (r.calibration_known)
+    pdf.line("calibration: " + (r.calibration_method.empty() ? "-" : r.calibration_method) + "; " +
+             std::to_string(k.width) + " x " + std::to_string(k.height) + " px, fx " +
+             report_number(k.fx, 1) + ", fy " + report_number(k.fy, 1) + ", cx " +
+             report_number(k.cx, 1) + ", cy " + report_number(k.cy, 1) + " px, rms " +
+             report_number(k.rms_px, 2) + " px");
+  else
+    pdf.line(std::string("calibration: ") + kNotKnown +
+             (r.photograph.empty() ? " (no photographs in this visit)" : ""));
+  pdf.line("preset: " + (r.preset.empty() ? std::string(kNotKnown) : r.preset));
+}
+
+// The precision line of a reconstruction: the parts its record states, in
+// their usual order; "not known" when it states none.
+std::string precision_text(const ReportedAccuracy& a) {
+  std::vector<std::string> parts;
+  if (a.sigma_z_m)
+    parts.push_back("predicted depth precision " + report_number(*a.sigma_z_m * 1000, 1) + " mm" +
+                    (a.distance_m ? " at " + report_number(*a.distance_m, 2) + " m" : ""));
+  if (a.point_spacing_m)
+    parts.push_back("point spacing " + report_number(*a.point_spacing_m * 1000, 1) + " mm");
+  std::string pair;
+  if (a.tie_points) pair = std::to_string(*a.tie_points) + " tie points";
+  if (a.reprojection_rms_px)
+    pair += (pair.empty() ? "" : ", ") + std::string("reprojection rms ") +
+            report_number(*a.reprojection_rms_px, 3) + " px";
+  if (!pair.empty()) parts.push_back(pair);
+  if (parts.empty())
+    return std::string("predicted depth precision, point spacing and tie points: ") + kNotKnown +
+           " (no 3D image reconstructed in this visit)";
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : "; ") + p;
+  return out;
 }
 
 void accuracy_section(PdfPages& pdf, const FieldReport& r) {
   const auto& a = r.accuracy;
   pdf.heading("Accuracy");
   if (!a.imported_from.empty()) pdf.line("3D image imported from " + a.imported_from);
-  pdf.line("scale: " + (a.scale_source.empty() ? "-" : a.scale_source) +
+  pdf.line("scale: " + (a.scale_source.empty() ? std::string(kNotKnown) : a.scale_source) +
            (a.range_pole_m ? " (" + report_number(*a.range_pole_m, 3) + " m)" : "") +
-           ", model scale " + report_number(a.scale, 4));
-  pdf.line("vertical: " + (a.vertical_source.empty() ? "-" : a.vertical_source));
-  std::string north = "north: " + (a.north_source.empty() ? "-" : a.north_source);
+           (a.scale ? ", model scale " + report_number(*a.scale, 4) : ""));
+  pdf.line("vertical: " + (a.vertical_source.empty() ? std::string(kNotKnown) : a.vertical_source));
+  std::string north =
+      "north: " + (a.north_source.empty() ? std::string(kNotKnown) : a.north_source);
   if (a.compass_azimuth_deg)
     north += ", reference line bearing " + report_number(*a.compass_azimuth_deg, 1) +
              " deg, declination " + report_number(a.declination_deg, 1) + " deg, turned " +
              report_number(a.north_rotation_deg, 2) + " deg about the vertical";
   pdf.line(north);
   if (!a.imported_from.empty())
-    pdf.line("point spacing " + report_number(a.point_spacing_m * 1000, 1) +
-             " mm (no stereo pair: no predicted depth precision, no tie points)");
+    pdf.line("point spacing " +
+             (a.point_spacing_m ? report_number(*a.point_spacing_m * 1000, 1) + " mm"
+                                : std::string(kNotKnown)) +
+             " (no stereo pair: no predicted depth precision, no tie points)");
   else
-    pdf.line("predicted depth precision " + report_number(a.sigma_z_m * 1000, 1) + " mm at " +
-             report_number(a.distance_m, 2) + " m; point spacing " +
-             report_number(a.point_spacing_m * 1000, 1) + " mm; " + std::to_string(a.tie_points) +
-             " tie points, reprojection rms " + report_number(a.reprojection_rms_px, 3) + " px");
+    pdf.line(precision_text(a));
   if (a.control_rms_m) {
     pdf.line("ground control: rms " + report_number(*a.control_rms_m * 1000, 1) + " mm");
     std::vector<std::vector<std::string>> rows;

@@ -27,8 +27,13 @@ VisitFile load_visit_file(const std::string& path) {
   if (!in) throw InputError(path, "cannot open the visit file");
   std::stringstream text;
   text << in.rdbuf();
-  const json doc = json::parse(text.str(), nullptr, false);
-  if (doc.is_discarded()) throw InputError(path, "not JSON (rockface-visit/1 expected)");
+  return parse_visit_file(text.str(), path);
+}
+
+VisitFile parse_visit_file(const std::string& text, const std::string& path) {
+  // As every JSON reader: a number beyond double's range or a bare NaN is
+  // named by its field (it was "not JSON", no field said; issue 41).
+  const json doc = parse_json_naming_nan(text, path);
   const Reader r(path);
   r.only_fields(
       doc, "",

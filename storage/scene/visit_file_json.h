@@ -35,5 +35,8 @@ struct VisitFile {
 
 // Throws InputError naming the file and the field ("visit.json: compass.azimuth_deg").
 VisitFile load_visit_file(const std::string& path);
+// The same from the file's text; `path` names it in messages and is the
+// folder `control_points` is relative to.
+VisitFile parse_visit_file(const std::string& text, const std::string& path);
 
 }  // namespace rockface::storage

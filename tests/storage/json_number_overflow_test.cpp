@@ -1,6 +1,6 @@
 // Issue 41: a number beyond double's range (1e309) in a scene, a profile, a
-// picks file or a rock-mass form, and a picks form given as null, are bad
-// input (InputError, exit 2) naming the file and where, not nlohmann's bare
+// picks file, a rock-mass form, a visit file or support classes, and a picks form given as null,
+// are bad input (InputError, exit 2) naming the file and where, not nlohmann's bare
 // out_of_range.406 / .403 (exit 1): the file, the field path, and for an
 // overflow the line and column.
 #include <gtest/gtest.h>
@@ -13,6 +13,8 @@
 #include "storage/scene/picks_json.h"
 #include "storage/scene/rockmass_form_json.h"
 #include "storage/scene/scene.h"
+#include "storage/scene/visit_file_json.h"
+#include "storage/support/support_classes_json.h"
 #include "storage/tunnel/tunnel_files.h"
 #include "tests/support/refusal.h"
 
@@ -59,6 +61,39 @@ TEST(JsonNumberOverflow, RockMassFormNamesFileAndPosition) {
   });
   EXPECT_EQ(m,
             "F.json: ucs: -1e309 is beyond the range of a number (about 1.8e308; line 3, column 5)")
+      << m;
+}
+
+// The visit file of a capture folder said only "not JSON (rockface-visit/1
+// expected)": neither the field nor where.
+TEST(JsonNumberOverflow, VisitFileNamesFileAndPosition) {
+  const std::string m = refusal([] {
+    rockface::storage::parse_visit_file(
+        "{ \"format\": \"rockface-visit/1\",\n  \"compass\": {\"azimuth_deg\": 1,\n    "
+        "\"declination_deg\": 1e309} }",
+        "V.json");
+  });
+  EXPECT_EQ(
+      m,
+      "V.json: compass.declination_deg: 1e309 is beyond the range of a number (about 1.8e308; "
+      "line 3, column 24)")
+      << m;
+  EXPECT_EQ(refusal([] {
+              rockface::storage::parse_visit_file(
+                  "{\"format\": \"rockface-visit/1\", \"range_pole_m\": NaN}", "V.json");
+            }),
+            "V.json: range_pole_m: must be finite, not NaN");
+}
+
+TEST(JsonNumberOverflow, SupportClassesNameFileAndPosition) {
+  const std::string m = refusal([] {
+    rockface::storage::parse_support_classes(
+        "{ \"format\": \"rockface-support-classes/1\",\n  \"classes\": [\n    "
+        "{\"round_length_m\": 1e309} ] }",
+        "K.json");
+  });
+  EXPECT_EQ(m, std::string("K.json: classes[0].round_length_m: 1e309 is beyond the range of a "
+                           "number (about 1.8e308; line 3, column 24)"))
       << m;
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/tunnel/face_front.h"
 #include "core/tunnel/surface_reach.h"
 
@@ -244,6 +245,25 @@ TEST(VisitPlacement, TheTypedPoleLiesAtItsChainageOffsetAndHeight) {
   EXPECT_NEAR(pole.y(), 12.0, 1e-9);
   EXPECT_NEAR(pole.z(), -1.2, 1e-9);
   EXPECT_THROW(typed_pole_position(alignment, 150.0, 0, 0), InputError);
+}
+
+// Issue 41: a typed chainage of 1e308 was refused with all 309 of its digits.
+TEST(VisitPlacement, AChainageBeyondAnyAlignmentIsSaidInSixDigits) {
+  const Alignment alignment = straight_north();
+  auto said = [&](double chainage) {
+    try {
+      typed_pole_position(alignment, chainage, 0, 0);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string range = " is off the alignment (" +
+                            format_fixed(alignment.first_chainage(), 2) + " to " +
+                            format_fixed(alignment.last_chainage(), 2) + ")";
+  EXPECT_EQ(said(1e308), "tunnel.placement.chainage: 1e+308" + range);
+  EXPECT_EQ(said(-1.5e300), "tunnel.placement.chainage: -1.5e+300" + range);
+  EXPECT_EQ(said(150), "tunnel.placement.chainage: 150.00" + range);
 }
 
 // Issue 41: an offset of 130 m (or 1e308) from the axis was taken without a

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/mechanics/dynamics/tolerances.h"
 #include "tests/support/cli_run.h"
 
 namespace {
@@ -128,3 +129,48 @@ TEST(AnalyseTracesCli, ReportOnAllCoresIsTheSingleThreadedOne) {
 }
 
 }  // namespace
+
+// Issue 41: `analyse` with `analysis.dynamics` on the traces face, one point
+// of trace T5 moved to z = -1 (410 m below the face: a typo in a survey
+// export), ran past 600 s at duration_s 0.8 (0.08 s at 0.7). The motion
+// after failure always ends: within the step budget (evaluations of the
+// equations of motion), or stopped by it or by the event limit and saying
+// so. The analyse runs under `timeout`, so a motion that never ends fails
+// this test instead of hanging the suite.
+TEST(AnalyseTracesCli, DynamicsOnATraceFaceWithAStrayPointEnds) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("rockface-traces-dynamics-" + std::to_string(::getpid()));
+  nlohmann::json scene = demo_with_traces(dir);
+  ASSERT_FALSE(scene.is_null()) << "render failed";
+  ASSERT_EQ(scene["traces"][4]["id"], "T5");
+  scene["traces"][4]["points"][0][2] = -1.0;
+  scene["analysis"]["dynamics"] = {{"duration_s", 0.8}};
+  const fs::path file = dir / "stray-point.scene.json";
+  std::ofstream(file) << scene.dump(2);
+  const fs::path out = dir / "stray-point.report.json";
+  // 300 s: the analyse takes under a second here; a hang is killed.
+  const auto r =
+      rockface::test::run_command("timeout -s KILL 300 " + std::string(ROCKFACE_BINARY_DIR) +
+                                  "/rockface analyse " + file.string() + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto report = nlohmann::json::parse(std::ifstream(out));
+  int moving = 0;
+  for (const auto& b : report["blocks"]) {
+    if (!b.contains("dynamics")) continue;
+    ++moving;
+    const auto& d = b["dynamics"];
+    EXPECT_FALSE(d["outcome"].get<std::string>().empty()) << b["id"];
+    const auto& n = d["numerics"];
+    // Either the whole duration was integrated, or the report says why not.
+    if (d.contains("stopped"))
+      EXPECT_FALSE(d["stopped"].get<std::string>().empty()) << b["id"];
+    else
+      EXPECT_EQ(n["end_time_s"].get<double>(), 0.8) << b["id"];
+    // The step budget (core/mechanics/dynamics/tolerances.h) plus the last
+    // step's evaluations (a 5(4) stepper: 7 a step).
+    EXPECT_LE(n["evaluations"].get<int>(), rockface::mechanics::kDynamicsEvaluationBudget + 7)
+        << b["id"];
+  }
+  EXPECT_GE(moving, 1) << "no block failed: nothing moved";
+  fs::remove_all(dir);
+}

@@ -49,3 +49,21 @@ TEST(HostileJsonCli, ProfileNumberOverflowIsExit2NamingFileAndPosition) {
   EXPECT_EQ(r.err.find("json.exception"), std::string::npos) << r.err;
   fs::remove_all(dir);
 }
+
+// Found while issue 41's replays were re-run: a scene named by a path
+// longer than the file system takes (a name of 300 characters) exited 1
+// with std::filesystem's "filesystem error: status: File name too long".
+// The path is the user's input: exit 2 naming it.
+TEST(HostileJsonCli, APathTooLongForTheFileSystemIsBadInput) {
+  const std::string name = "/tmp/" + std::string(300, 'x') + ".scene.json";
+  const auto r =
+      rockface::test::run_rockface("replay " + name + " --project /tmp/too-long.rockface");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "rockface: " + name + ": the name is too long for the file system\n");
+  EXPECT_FALSE(fs::exists("/tmp/too-long.rockface"));
+  // analyse opens the file without asking the file system first: it could
+  // not open it, and says so by name.
+  const auto a = rockface::test::run_rockface("analyse " + name);
+  EXPECT_EQ(a.exit_code, 2) << a.err;
+  EXPECT_NE(a.err.find(name), std::string::npos) << a.err;
+}

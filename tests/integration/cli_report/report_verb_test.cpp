@@ -235,3 +235,37 @@ TEST_F(ReportVerb, AVisitTheProjectDoesNotHaveIsBadInput) {
                                     (*dir_ / "y.pdf").string());
   EXPECT_EQ(missing.exit_code, 2);
 }
+
+// Issue 41: a visit made by `rockface measure` (the demo picks measured on
+// the replayed visit's 3D image) has no photographs, calibration or
+// reconstruction of its own. Its report said "0 x 0 px, fx 0.0", "model
+// scale 1.0000", "predicted depth precision 0.0 mm at 0.00 m" and "0 tie
+// points": unknowns shown as zeros. They are said to be not known.
+TEST_F(ReportVerb, AVisitMadeByMeasureSaysWhatItDoesNotKnow) {
+  const fs::path copy = *dir_ / "measured.rockface";
+  fs::copy_file(project(), copy, fs::copy_options::overwrite_existing);
+  const auto measured = run_rockface(
+      "measure " + copy.string() + " --traces " + std::string(ROCKFACE_SOURCE_DIR) +
+      "/tools/samples/tunnel-face-demo.picks.json --out " + (*dir_ / "measures.json").string());
+  ASSERT_EQ(measured.exit_code, 0) << measured.err;
+  const fs::path pdf = *dir_ / "measured.pdf";
+  const auto report = run_rockface("report " + copy.string() + " --visit 2 --out " + pdf.string());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const fs::path txt = *dir_ / "measured.txt";
+  ASSERT_EQ(std::system(("pdftotext -layout " + pdf.string() + " " + txt.string()).c_str()), 0);
+  const std::string t = slurp(txt);
+  EXPECT_NE(t.find("calibration: not known (no photographs in this visit)"), std::string::npos)
+      << t;
+  EXPECT_NE(t.find("scale: not known"), std::string::npos) << t;
+  EXPECT_NE(t.find("vertical: not known"), std::string::npos) << t;
+  EXPECT_NE(t.find("north: not known"), std::string::npos) << t;
+  EXPECT_NE(t.find("predicted depth precision, point spacing and tie points: not known"),
+            std::string::npos)
+      << t;
+  for (const char* zero :
+       {"0 x 0 px", "fx 0.0", "model scale", "0.0 mm at 0.00 m", "0 tie points", "rms 0.00 px"})
+    EXPECT_EQ(t.find(zero), std::string::npos) << "\"" << zero << "\" in\n" << t;
+  // The visit's own report keeps every figure it has (the same project).
+  EXPECT_NE(text().find("model scale "), std::string::npos);
+  EXPECT_NE(text().find(" tie points, reprojection rms "), std::string::npos);
+}

@@ -1,10 +1,12 @@
 // Every parser a user feeds, fed mutated files (tests/storage/fuzz/mutator.h): scene
 // JSON, picks JSON, camera JSON, control-point CSV, the reference line, a PLY
-// model, the imported clouds and meshes (LAS, XYZ / PTS, PTX, PCD, OBJ), a capture's EXIF and a
-// project file. A parser may accept an input or refuse it with a rockface::Error (InputError naming
-// the file and field); it may not crash, hang or let another exception out (a raw nlohmann or std::
-// message is not what the user should read). Failing inputs are written to
-// ROCKFACE_BINARY_DIR/fuzz-failures; each one found becomes a file in
+// model, the imported clouds and meshes (LAS, XYZ / PTS, PTX, PCD, OBJ), the
+// visit file of a capture folder, the tunnel's alignment table and design
+// profile (JSON and CSV), the support classes, the rock-mass form, a
+// capture's EXIF and a project file. A parser may accept an input or refuse it with a
+// rockface::Error (InputError naming the file and field); it may not crash, hang or let another
+// exception out (a raw nlohmann or std:: message is not what the user should read). Failing inputs
+// are written to ROCKFACE_BINARY_DIR/fuzz-failures; each one found becomes a file in
 // tests/storage/fuzz/corpus/regressions, run on every pass.
 //
 // The inputs tried per parser are bounded (CI); ROCKFACE_FUZZ_ITERATIONS
@@ -38,7 +40,11 @@
 #include "storage/project/project_store.h"
 #include "storage/scene/camera_json.h"
 #include "storage/scene/picks_json.h"
+#include "storage/scene/rockmass_form_json.h"
 #include "storage/scene/scene.h"
+#include "storage/scene/visit_file_json.h"
+#include "storage/support/support_classes_json.h"
+#include "storage/tunnel/tunnel_files.h"
 #include "tests/storage/fuzz/mutator.h"
 
 namespace fs = std::filesystem;
@@ -223,6 +229,46 @@ TEST(Fuzz, PcdCloud) {
 TEST(Fuzz, ObjMesh) {
   fuzz("obj", files_in(kCorpus / "obj"), true, iterations(50000),
        [](const std::string& in) { rockface::storage::parse_obj(in, "fuzz.obj", {}); });
+}
+
+// The files issue 41 named that had no fuzz target: the visit file beside a
+// capture folder's photographs (`rockface replay FOLDER`), the tunnel's
+// alignment table and design profile (`rockface tunnel`, a scene's tunnel),
+// the designer's support classes (`rockface support --classes`) and the
+// rock-mass form (`rockface rockmass --form`). Each reader is fed as the
+// verb feeds it: the alignment is built (its elements checked), the profile
+// validated.
+TEST(Fuzz, VisitFile) {
+  fuzz("visit", files_in(kCorpus / "visit"), true, iterations(50000), [](const std::string& in) {
+    rockface::storage::parse_visit_file(in, "/card/DCIM/visit.json");
+  });
+}
+
+TEST(Fuzz, AlignmentCsv) {
+  fuzz("alignment", files_in(kCorpus / "alignment"), true, iterations(50000),
+       [](const std::string& in) {
+         rockface::storage::parse_alignment_csv(in, "fuzz.alignment.csv")
+             .build(Eigen::Vector3d(2690000, 1170000, 1100), rockface::tunnel::Drive::ascending);
+       });
+}
+
+TEST(Fuzz, ProfileFile) {
+  fuzz("profile_json", files_in(kCorpus / "profile_json"), true, iterations(50000),
+       [](const std::string& in) { rockface::storage::parse_profile_json(in, "fuzz.json"); });
+  fuzz("profile_csv", files_in(kCorpus / "profile_csv"), true, iterations(50000),
+       [](const std::string& in) { rockface::storage::parse_profile_csv(in, "fuzz.csv"); });
+}
+
+TEST(Fuzz, SupportClasses) {
+  fuzz("support_classes", files_in(kCorpus / "support_classes"), true, iterations(50000),
+       [](const std::string& in) {
+         rockface::storage::parse_support_classes(in, "fuzz.classes.json");
+       });
+}
+
+TEST(Fuzz, RockmassForm) {
+  fuzz("rockmass_form", files_in(kCorpus / "rockmass_form"), true, iterations(50000),
+       [](const std::string& in) { rockface::storage::parse_rockmass_form(in, "fuzz.form.json"); });
 }
 
 namespace {
