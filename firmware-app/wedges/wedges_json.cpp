@@ -199,7 +199,10 @@ std::string wedges_json(const WedgeRun& run, const tunnel::WedgeAnalysis& a) {
   for (const auto& n : a.none)
     none.push_back({{"code", n.code},
                     {"sets", n.sets},
-                    {"margin_deg", round_to_step(n.margin * kDegPerRad, 0.01)},
+                    // An unbuilt wedge claims no margin.
+                    {"margin_deg",
+                     n.unbuilt ? json(nullptr) : json(round_to_step(n.margin * kDegPerRad, 0.01))},
+                    {"marginal", n.marginal},
                     {"reason", n.reason}});
   j["no_wedge"] = none;
   j["notes"] = a.notes;
@@ -239,7 +242,8 @@ std::vector<std::string> wedges_summary(const WedgeRun& run, const tunnel::Wedge
     lines.push_back(buf);
     for (const auto& c : w.corners) lines.push_back("       " + w.id + " " + c);
   }
-  for (const auto& n : a.none) lines.push_back("no wedge " + n.code + ": " + n.reason);
+  for (const auto& n : a.none)
+    lines.push_back("no wedge " + n.code + (n.marginal ? " (marginal)" : "") + ": " + n.reason);
   for (const auto& n : a.notes) lines.push_back("note: " + n);
   return lines;
 }
