@@ -445,7 +445,7 @@ Eigen::Vector2d lay_out_on_perimeter(const SectionPolygon& section,
     const double l = (base[p].b - base[p].a).norm();
     centre += l * 0.5 * (base[p].a + base[p].b);
     len += l;
-    segs.insert(section.vertices[base[p].edge].segment);
+    for (std::size_t g : section.segments_under(base[p].edge, base[p].a, base[p].b)) segs.insert(g);
     if (p == 0) continue;
     // The outline vertex between this piece and the previous one.
     const std::size_t e1 = base[p - 1].edge, e2 = base[p].edge, m = section.size();
