@@ -682,6 +682,26 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
           found(std::move(around));
         }
       }
+  // A wedge whose apex lies within the chords' sagitta of the excavation
+  // is smaller than the section is drawn: it may be an artefact of the
+  // chords, and its factor of safety (15.9 on a 4e-7 m3 sliver with a
+  // margin of 30 degrees) is not one to trust. It is left out of the
+  // wedges (and so of their support) and listed, marginal, with its size
+  // among the pyramids without a wedge (issue 40).
+  std::vector<Wedge> kept_wedges;
+  for (Wedge& w : out.wedges) {
+    if (!(w.apex_height <= options.sagitta_m)) {
+      kept_wedges.push_back(std::move(w));
+      continue;
+    }
+    no_wedge(NoWedge{
+        w.code, w.sets, 0,
+        "a sliver of " + format_significant(w.mass.volume, 2) + " m3 at the " +
+            wedge_place_name(w.place) + ": its apex lies " + format_fixed(w.apex_height * 1000, 2) +
+            " mm from the excavation, within the " + format_fixed(options.sagitta_m * 1000, 1) +
+            " mm to which the section is drawn; left out"});
+  }
+  out.wedges = std::move(kept_wedges);
   order_wedges(out.wedges);
   for (std::size_t i = 0; i < out.wedges.size(); ++i) {
     // Built by appending: "W" + number trips GCC 12's false -Wrestrict
