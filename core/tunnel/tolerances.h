@@ -93,6 +93,13 @@ inline constexpr double kWedgeAlongAxisSine = 1e-12;
 // and wall wedges, and a face wedge came and went with the tilt's sign
 // (issue 40).
 inline constexpr double kWedgeAxisParallelRad = 1e-6;
+// A joint pyramid seen along the axis that is narrower than a half-plane
+// by no more than this (radians) spans a half-plane: only a set containing
+// the axis (taken so within kWedgeAxisParallelRad) makes a sector that
+// wide, and its edges' projections are opposite but for rounding (~1e-16).
+// Taken as pointed, its largest apex lay ~1e16 m out and its pieces were
+// "not a bounded solid" (issue 40).
+inline constexpr double kWedgeHalfPlaneRad = 1e-12;
 // The face wedge's largest triangle is found by bisection of its scale to
 // this relative precision (far below the sagitta of the profile's chords).
 inline constexpr double kWedgeScaleRel = 1e-10;

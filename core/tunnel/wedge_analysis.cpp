@@ -361,6 +361,21 @@ FoundWedge face_wedge(const Context& c, const SetPyramid& p,
                            format_fixed(pv.removable.margin * kDegPerRad, 1) + " deg)"};
     return out;
   }
+  // Removable within the uncertainty only, with an edge of its pyramid
+  // along the face or into the rock ahead: its wedge on the face has no
+  // finite size (the triangle's corners divided by the edges' distance
+  // behind the face, zero or negative, gave a solid that was "not
+  // bounded", issue 40).
+  for (const auto& e : edges)
+    if (!(-e.dot(frame.along) > kWedgeAlongAxisSine * e.norm())) {
+      out.none = NoWedge{p.code, p.ids, std::min(pv.removable.margin, 0.0),
+                         "opens toward the tunnel but is removable from the face only within the "
+                         "uncertainty (by " +
+                             format_fixed(pv.removable.margin * kDegPerRad, 1) +
+                             " deg): an edge of its pyramid runs along the face or into the rock "
+                             "ahead, so its wedge there has no finite size"};
+      return out;
+    }
   const auto tri = face_unit_triangle(edges, frame);
   FaceFit fit = largest_face_triangle(c.section, tri);
   if (!(fit.scale > 0)) return out;
@@ -385,7 +400,7 @@ FoundWedge face_wedge(const Context& c, const SetPyramid& p,
   try {
     w.block = face_wedge_block(p.code, frame, c.datum, p.planes, fit, first_free + 1000);
   } catch (const std::exception& e) {
-    out.none = NoWedge{p.code, p.ids, 0, std::string("could not be built: ") + e.what()};
+    out.none = NoWedge{p.code, p.ids, 0, std::string("could not be built: ") + e.what(), true};
     return out;
   }
   const Eigen::Vector3d apex = frame.to_local(fit.offset.x(), fit.offset.y(), fit.scale);
@@ -430,7 +445,7 @@ Eigen::Vector2d lay_out_on_perimeter(const SectionPolygon& section,
     const double l = (base[p].b - base[p].a).norm();
     centre += l * 0.5 * (base[p].a + base[p].b);
     len += l;
-    segs.insert(section.vertices[base[p].edge].segment);
+    for (std::size_t g : section.segments_under(base[p].edge, base[p].a, base[p].b)) segs.insert(g);
     if (p == 0) continue;
     // The outline vertex between this piece and the previous one.
     const std::size_t e1 = base[p - 1].edge, e2 = base[p].edge, m = section.size();
@@ -502,8 +517,7 @@ FoundWedge perimeter_wedge(const Context& c, const SetPyramid& p,
       w.scale = longest(w.trace_lengths) / full;
     }
   } catch (const std::exception& e) {
-    out.none =
-        NoWedge{p.code, p.ids, sector.margin, std::string("could not be built: ") + e.what()};
+    out.none = NoWedge{p.code, p.ids, 0, std::string("could not be built: ") + e.what(), true};
     return out;
   }
   w.removable = geometry::decide(std::min(jp_margin, sector.margin), options.uncertainty);
@@ -601,8 +615,14 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
   const Context ctx{out.section, local, section_datum, sets, options, loads, profile.ray_centre()};
   const geometry::Cone face_ep = face_excavation_pyramid(local);
 
+  // A pyramid without a wedge is marginal when its margin is inside the
+  // uncertainty or its wedge could not be built (then it may well have one).
+  auto no_wedge = [&](NoWedge n) {
+    n.marginal = n.unbuilt || std::abs(n.margin) <= options.uncertainty;
+    out.none.push_back(std::move(n));
+  };
   auto found = [&](FoundWedge f) {
-    if (f.none) out.none.push_back(std::move(*f.none));
+    if (f.none) no_wedge(std::move(*f.none));
     if (f.wedge) out.wedges.push_back(std::move(*f.wedge));
   };
   // Sets within the uncertainty of each other are one set: the others keep
@@ -616,7 +636,7 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
       for (std::size_t k = j + 1; k < n; ++k) {
         const std::array<int, 3> idx{kept[i], kept[j], kept[k]};
         if (auto none = parallel_sets(sets, idx, options.uncertainty)) {
-          out.none.push_back(std::move(*none));
+          no_wedge(std::move(*none));
           continue;
         }
         for (int combination = 0; combination < 8; ++combination) {
@@ -654,13 +674,34 @@ WedgeAnalysis analyse_wedges(const DesignProfile& profile, const TunnelFrame& fr
           bool behind = !edge_along;
           for (const auto& e : edges)
             behind = behind && e.dot(frame.along) < -kWedgeAlongAxisSine * e.norm();
-          if (!around.wedge && around.none && around.none->margin <= 0 && behind && options.face) {
+          if (!around.wedge && around.none && !around.none->unbuilt && around.none->margin <= 0 &&
+              behind && options.face) {
             FoundWedge at_face = face_wedge(ctx, p, edges, face_ep);
             if (at_face.wedge) around = std::move(at_face);
           }
           found(std::move(around));
         }
       }
+  // A wedge whose apex lies within the chords' sagitta of the excavation
+  // is smaller than the section is drawn: it may be an artefact of the
+  // chords, and its factor of safety (15.9 on a 4e-7 m3 sliver with a
+  // margin of 30 degrees) is not one to trust. It is left out of the
+  // wedges (and so of their support) and listed, marginal, with its size
+  // among the pyramids without a wedge (issue 40).
+  std::vector<Wedge> kept_wedges;
+  for (Wedge& w : out.wedges) {
+    if (!(w.apex_height <= options.sagitta_m)) {
+      kept_wedges.push_back(std::move(w));
+      continue;
+    }
+    no_wedge(NoWedge{
+        w.code, w.sets, 0,
+        "a sliver of " + format_significant(w.mass.volume, 2) + " m3 at the " +
+            wedge_place_name(w.place) + ": its apex lies " + format_fixed(w.apex_height * 1000, 2) +
+            " mm from the excavation, within the " + format_fixed(options.sagitta_m * 1000, 1) +
+            " mm to which the section is drawn; left out"});
+  }
+  out.wedges = std::move(kept_wedges);
   order_wedges(out.wedges);
   for (std::size_t i = 0; i < out.wedges.size(); ++i) {
     // Built by appending: "W" + number trips GCC 12's false -Wrestrict

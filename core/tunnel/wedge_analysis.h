@@ -114,8 +114,14 @@ struct Wedge {
 struct NoWedge {
   std::string code;
   std::vector<std::string> sets;
-  double margin = 0;  // radians, signed (<= 0: no wedge)
+  double margin = 0;  // radians, signed (<= 0: no wedge); 0 when unbuilt
   std::string reason;
+  // Its wedge was found but its solid could not be built: no margin is
+  // claimed for it, and it is marginal (issue 40).
+  bool unbuilt = false;
+  // The margin is inside the orientation uncertainty (or the wedge is
+  // unbuilt): whether there is a wedge is in doubt.
+  bool marginal = false;
 };
 
 struct WedgeAnalysis {

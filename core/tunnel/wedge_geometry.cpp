@@ -177,6 +177,7 @@ PyramidSector pyramid_sector(const std::vector<Eigen::Vector3d>& edges, const Tu
   s.d1 = {std::cos(start), std::sin(start)};
   s.d2 = {std::cos(end), std::sin(end)};
   s.margin = (kPi - s.span) / 2;
+  if (std::abs(s.margin) <= kWedgeHalfPlaneRad) s.margin = 0;  // a half-plane but for rounding
   s.pointed = s.margin > 0;
   return s;
 }

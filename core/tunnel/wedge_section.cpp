@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "core/common/error.h"
 #include "core/tunnel/tolerances.h"
@@ -72,6 +73,7 @@ std::size_t merge_line_chords(std::vector<SectionVertex>& pts,
   }
   if (start == n) start = 0;      // a closed run of lines with no corner: start anywhere
   std::vector<std::size_t> kept;  // indices into pts
+  std::vector<std::vector<std::pair<double, std::size_t>>> joins(n);
   std::size_t anchor = start, dropped = 0;
   kept.push_back(anchor);
   // Walk once round from the anchor; `end` indexes past it (mod n).
@@ -88,6 +90,12 @@ std::size_t merge_line_chords(std::vector<SectionVertex>& pts,
       if (!within) break;
       last = next;
     }
+    // The segments the chord now carries, where each begins along it.
+    const Eigen::Vector2d a = pts[anchor % n].p, d = pts[last % n].p - a;
+    for (std::size_t k = anchor + 1; k < last; ++k)
+      if (pts[k % n].segment != pts[(k - 1) % n].segment)
+        joins[anchor % n].emplace_back((pts[k % n].p - a).dot(d) / d.squaredNorm(),
+                                       pts[k % n].segment);
     dropped += last - end;
     if (last < start + n) kept.push_back(last % n);
     anchor = last;
@@ -98,7 +106,10 @@ std::size_t merge_line_chords(std::vector<SectionVertex>& pts,
   // length, and the bolt pattern laid out along it, start there).
   std::rotate(kept.begin(), std::min_element(kept.begin(), kept.end()), kept.end());
   std::vector<SectionVertex> out;
-  for (std::size_t i : kept) out.push_back(pts[i]);
+  for (std::size_t i : kept) {
+    out.push_back(pts[i]);
+    out.back().joins = std::move(joins[i]);
+  }
   pts = std::move(out);
   return dropped;
 }
@@ -114,6 +125,26 @@ bool SectionPolygon::contains(const Eigen::Vector2d& q) const {
   for (std::size_t i = 0; i < size(); ++i)
     if (outward_normal(i).dot(q - at(i)) > 0) return false;
   return true;
+}
+
+std::vector<std::size_t> SectionPolygon::segments_under(std::size_t i, const Eigen::Vector2d& a,
+                                                        const Eigen::Vector2d& b) const {
+  const SectionVertex& v = vertices[i % size()];
+  const Eigen::Vector2d o = v.p, d = at(i + 1) - o;
+  const double ta = (a - o).dot(d) / d.squaredNorm(), tb = (b - o).dot(d) / d.squaredNorm();
+  const double lo = std::min(ta, tb), hi = std::max(ta, tb);
+  // Segment k runs from its join to the next one (the first from 0, the
+  // last to 1); it is under the part when the two overlap.
+  std::vector<std::size_t> out;
+  double from = 0;
+  std::size_t segment = v.segment;
+  for (std::size_t k = 0; k <= v.joins.size(); ++k) {
+    const double to = k < v.joins.size() ? v.joins[k].first : 1;
+    if (to > lo && from < hi) out.push_back(segment);
+    if (k < v.joins.size()) std::tie(from, segment) = v.joins[k];
+  }
+  if (out.empty()) out.push_back(v.segment);  // a part of no length
+  return out;
 }
 
 double SectionPolygon::distance(const Eigen::Vector2d& q) const {

@@ -26,6 +26,10 @@ struct SectionVertex {
   std::size_t segment = 0;  // profile segment of the edge that starts here
   bool corner = false;      // the design outline turns here (kWedgeCornerRad)
   double s = 0;             // arc length along the polygon from vertex 0
+  // A chord that replaces lines of several profile segments (merged, see
+  // below): where along it (0..1 from this vertex) each later segment
+  // begins, and that segment.
+  std::vector<std::pair<double, std::size_t>> joins;
 };
 
 struct SectionPolygon {
@@ -42,6 +46,10 @@ struct SectionPolygon {
   // Distance from a point outside to the polygon.
   double distance(const Eigen::Vector2d& q) const;
   bool contains(const Eigen::Vector2d& q) const;
+  // The profile segments under the part of edge i from a to b (points on
+  // it): one, or several where the edge is a merged chord.
+  std::vector<std::size_t> segments_under(std::size_t i, const Eigen::Vector2d& a,
+                                          const Eigen::Vector2d& b) const;
 };
 
 // Throws InputError(where, ...) for a profile that does not validate or

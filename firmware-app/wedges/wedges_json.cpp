@@ -15,9 +15,21 @@ namespace {
 
 using nlohmann::json;
 
+// v to a multiple of step; a step below 1 as a whole number of steps
+// divided by their count per unit, so that 453.251 is written so and not
+// as 453.25100000000003 (k * 0.001 is not the double nearest to k / 1000).
 double round_to_step(double v, double step) {
+  if (step < 1) {
+    const double per_unit = std::round(1 / step);
+    return std::round(v * per_unit) / per_unit;
+  }
   return std::round(v / step) * step;
 }
+
+// Survey coordinates (apexes, vertices, bolt heads) to 0.1 mm, as the
+// report writes them (issue 40): 1 mm at 5.2e6 m lost the size of a
+// small wedge's corners.
+constexpr double kCoordinateStepM = 1e-4;
 
 json vec3(const Eigen::Vector3d& v, double step) {
   return {round_to_step(v.x(), step), round_to_step(v.y(), step), round_to_step(v.z(), step)};
@@ -47,7 +59,7 @@ json wedge_json(const tunnel::Wedge& w, const std::vector<WedgeSetInput>& sets) 
   j["volume_m3"] = round_to_step(w.mass.volume, 1e-4);
   j["mass_kg"] = round_to_step(w.mass.mass, 0.1);
   j["weight_n"] = round_to_step(w.weight, 1);
-  j["apex"] = vec3(w.apex, 0.001);
+  j["apex"] = vec3(w.apex, kCoordinateStepM);
   j["apex_height_m"] = round_to_step(w.apex_height, 0.001);
   j["bolt_length_to_apex_m"] = round_to_step(w.bolt_length_to_apex, 0.001);
   j["face_area_m2"] = round_to_step(w.face_area, 1e-4);
@@ -83,7 +95,7 @@ json wedge_json(const tunnel::Wedge& w, const std::vector<WedgeSetInput>& sets) 
     b["force_n"] = round_to_step(w.bolt_force, 1);
     json list = json::array();
     for (const auto& bolt : w.bolts)
-      list.push_back({{"head", vec3(bolt.head, 0.001)},
+      list.push_back({{"head", vec3(bolt.head, kCoordinateStepM)},
                       {"direction", vec3(bolt.direction, 1e-4)},
                       {"depth_in_wedge_m", round_to_step(bolt.depth_in_wedge, 0.001)},
                       {"anchorage_m", round_to_step(bolt.anchorage, 0.001)},
@@ -104,7 +116,7 @@ json wedge_json(const tunnel::Wedge& w, const std::vector<WedgeSetInput>& sets) 
   j["section_outline"] = outline;
   json vertices = json::array();
   for (int v = 0; v < static_cast<int>(w.block.vertices().size()); ++v)
-    vertices.push_back(vec3(w.block.absolute_vertex(v), 0.001));
+    vertices.push_back(vec3(w.block.absolute_vertex(v), kCoordinateStepM));
   j["vertices"] = vertices;
   j["notes"] = w.notes;
   return j;
@@ -160,7 +172,7 @@ std::string wedges_json(const WedgeRun& run, const tunnel::WedgeAnalysis& a) {
                   {"convex_hull_used", a.section.hull_used}};
   j["axis"] = {{"trend", round_to_step(run.trend_deg, 0.01)},
                {"plunge", round_to_step(run.plunge_deg, 0.01)}};
-  j["origin"] = vec3(run.frame.origin + run.datum, 0.001);
+  j["origin"] = vec3(run.frame.origin + run.datum, kCoordinateStepM);
   if (run.chainage) j["chainage"] = round_to_step(*run.chainage, 0.001);
   json sets = json::array();
   for (const auto& s : run.sets) {
@@ -199,7 +211,10 @@ std::string wedges_json(const WedgeRun& run, const tunnel::WedgeAnalysis& a) {
   for (const auto& n : a.none)
     none.push_back({{"code", n.code},
                     {"sets", n.sets},
-                    {"margin_deg", round_to_step(n.margin * kDegPerRad, 0.01)},
+                    // An unbuilt wedge claims no margin.
+                    {"margin_deg",
+                     n.unbuilt ? json(nullptr) : json(round_to_step(n.margin * kDegPerRad, 0.01))},
+                    {"marginal", n.marginal},
                     {"reason", n.reason}});
   j["no_wedge"] = none;
   j["notes"] = a.notes;
@@ -239,7 +254,8 @@ std::vector<std::string> wedges_summary(const WedgeRun& run, const tunnel::Wedge
     lines.push_back(buf);
     for (const auto& c : w.corners) lines.push_back("       " + w.id + " " + c);
   }
-  for (const auto& n : a.none) lines.push_back("no wedge " + n.code + ": " + n.reason);
+  for (const auto& n : a.none)
+    lines.push_back("no wedge " + n.code + (n.marginal ? " (marginal)" : "") + ": " + n.reason);
   for (const auto& n : a.notes) lines.push_back("note: " + n);
   return lines;
 }

@@ -69,5 +69,44 @@ TEST(WedgesChordSection, ChordsGiveTheCirclesWedges) {
   }
 }
 
+TEST(WedgesChordSection, AWedgeOnMergedChordsListsEveryProfileSegmentUnderItsFace) {
+  // Each perimeter wedge's face covers an arc of the circle from one end
+  // of its outline to the other; the given chords under that arc are its
+  // profile segments. (A merged chord reported only the first segment it
+  // replaced: a wedge over 40 given chords listed 3 of them.)
+  const TunnelFrame frame = axis_frame(35 * kRad, 2 * kRad, Eigen::Vector3d::Zero(), "axis");
+  const int n = 1000;
+  const WedgeAnalysis a =
+      analyse_wedges(circle_as_chords(n), frame, Eigen::Vector3d::Zero(), sample_sets(), {});
+  const double per = 2 * kPi / n;  // each given chord's angle
+  int perimeter = 0;
+  for (const Wedge& w : a.wedges) {
+    if (w.place == WedgePlace::face) continue;
+    ++perimeter;
+    // The face's ends (the outline's second and last points) as angles
+    // from the profile's start (-90 deg, counter-clockwise).
+    auto angle = [](const Eigen::Vector2d& p) {
+      const double t = std::atan2(p.y(), p.x()) + kPi / 2;
+      return t < 0 ? t + 2 * kPi : t;
+    };
+    double from = angle(w.outline[1]), to = angle(w.outline.back());
+    if (from > to) std::swap(from, to);
+    if (to - from > kPi) std::swap(from, to);  // the face crosses the start: runs from `from` round
+    const double extent = from <= to ? to - from : to + 2 * kPi - from;
+    // The chords under it: every one whose angle range meets (from, to).
+    // A face end lies on a chord within the sagitta (2 mm on 3 m, under
+    // 1e-3 rad): one chord either side is allowed for.
+    const int expected = static_cast<int>(std::floor(extent / per));
+    EXPECT_GE(static_cast<int>(w.segments.size()), expected - 1) << w.code;
+    EXPECT_LE(static_cast<int>(w.segments.size()), expected + 3) << w.code;
+    for (std::size_t k : w.segments) {
+      const double mid = (k + 0.5) * per;
+      const double past = std::fmod(mid - from + 4 * kPi, 2 * kPi);
+      EXPECT_LE(past, extent + 2 * per) << w.code << " segment " << k;
+    }
+  }
+  EXPECT_GE(perimeter, 4);
+}
+
 }  // namespace
 }  // namespace rockface::tunnel
