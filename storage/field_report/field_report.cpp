@@ -189,8 +189,9 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
   }
   joints_and_sets(store, r);
   // Issue 27: the mapped face as the geologist outlined it, in its flat
-  // pieces (storage/scene/face_outline_words.h).
-  r.face_outlines = face_outline_words(stored, store.list_joints(visit_id));
+  // pieces (storage/scene/face_outline_words.h); the outlines of one flat
+  // piece in one line (issue 39: a face of many filled page 1).
+  r.face_outlines = face_outline_summary(stored, store.list_joints(visit_id));
 
   const auto runs = store.list_analyses(visit_id);
   if (!runs.empty()) {
