@@ -25,6 +25,18 @@ struct ReportedJoint {
   std::optional<double> friction_deg, cohesion_pa;
 };
 
+// A plane of the mapped face (an outline's first flat piece) or a free face
+// of the excavation, for the stereonet's face circles and kinematic check.
+struct ReportedFacePlane {
+  std::string label;
+  double dip_deg = 0, dipdir_deg = 0;
+  double area_m2 = 0;  // of its outline on the 3D image
+  // Whether the dip direction is the stored one (a fitted or measured
+  // plane); false when taken from the outline's corners, whose winding does
+  // not say which side of a steep face is the rock.
+  bool oriented = true;
+};
+
 struct ReportedJointSet {
   std::string label;
   int count = 0;
@@ -150,6 +162,7 @@ struct FieldReport {
   // 7 mm"); those of one flat piece told in one line (issue 39;
   // storage/scene/face_outline_words.h face_outline_summary).
   std::vector<std::string> face_outlines;
+  std::vector<ReportedFacePlane> face_planes;  // in the order measured
 
   ReportedAccuracy accuracy;
   std::vector<ReportedJoint> joints;

@@ -190,6 +190,26 @@ std::string file_names_only(const std::string& text) {
   return out;
 }
 
+// What the stereonet draws, in the words a geologist reads it by.
+std::string stereonet_caption(const FieldReport& r) {
+  std::string s =
+      "dots: poles of the joints (grey: in no set), thin lines: their great circles; sets: mean "
+      "pole (square), great circle, 95 % confidence cone of the mean and, thin, the cone of 95 % "
+      "of the set's poles";
+  if (!r.face_planes.empty())
+    s += "; black, listed at the foot: the great circles of the face's planes";
+  const auto phi = stereonet_friction_deg(r);
+  if (phi)
+    s += "; red: the friction circle of the weakest joint (" + report_number(*phi, 1) +
+         " deg), poles inside it dip less than it";
+  if (const auto* face = stereonet_face(r); face && phi)
+    s += "; the face " + face->label + " (" + report_number(face->dip_deg, 0) + "/" +
+         report_number(face->dipdir_deg, 0) +
+         ") in red with its daylight envelope; shaded: poles of planes that daylight in it and "
+         "slide (Markland)";
+  return s;
+}
+
 std::string code_text(const std::string& code) {
   const auto n = std::count(code.begin(), code.end(), '+');
   return n == 0 ? code : code.substr(0, code.find('+')) + " +" + std::to_string(n);
@@ -500,8 +520,10 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   const cv::Mat net = stereonet_picture(r);
   if (net.empty())
     pdf.line("no joints");
-  else
+  else {
     pdf.image(net, 0.6 * PdfPages::text_width(), 0.6 * PdfPages::text_width());
+    pdf.line(stereonet_caption(r), kSmall);
+  }
   joint_section(pdf, r);
   block_section(pdf, r);
   dynamics_section(pdf, r);
