@@ -94,7 +94,7 @@ std::string outline_line(const Outline& o) {
 }
 
 // One flat piece and nothing noted: what most outlines of a face are.
-bool plain(const Outline& o) {
+bool one_plain_piece(const Outline& o) {
   return o.pieces.size() == 1 && o.pieces[0]->note.empty();
 }
 
@@ -115,18 +115,18 @@ std::vector<std::string> face_outline_summary(const std::vector<Measurement>& me
   int count = 0;
   double worst_rms_m = 0;
   for (const auto& o : all)
-    if (plain(o)) {
+    if (one_plain_piece(o)) {
       names += (names.empty() ? "" : ", ") + o.name;
       worst_rms_m = std::max(worst_rms_m, o.pieces[0]->fit_rms_m);
       ++count;
     }
   if (count == 1)
-    out.push_back(outline_line(*std::find_if(all.begin(), all.end(), plain)));
+    out.push_back(outline_line(*std::find_if(all.begin(), all.end(), one_plain_piece)));
   else if (count > 1)
     out.push_back(std::to_string(count) + " face outlines, each one flat piece (" + names +
                   "), RMS at most " + format_fixed(worst_rms_m * 1000, 0) + " mm");
   for (const auto& o : all)
-    if (!plain(o)) out.push_back(outline_line(o));
+    if (!one_plain_piece(o)) out.push_back(outline_line(o));
   return out;
 }
 
