@@ -33,6 +33,13 @@ Eigen::Vector3d upward(Eigen::Vector3d n) {
   return n;
 }
 
+// Fisher's 95 % cone of confidence of the mean of n poles of resultant R.
+double alpha95_of(double n, double resultant) {
+  if (n < 2 || !(resultant > 0)) return kPi;
+  const double c = 1 - (n - resultant) / resultant * (std::pow(1 / 0.05, 1 / (n - 1)) - 1);
+  return c <= -1 ? kPi : std::acos(std::min(1.0, c));
+}
+
 FisherStatistics fisher_of(const std::vector<Eigen::Vector3d>& poles,
                            const std::vector<std::size_t>& members) {
   FisherStatistics f;
@@ -51,8 +58,7 @@ FisherStatistics fisher_of(const std::vector<Eigen::Vector3d>& poles,
   }
   const double spread = n - f.resultant;
   f.kappa = spread > 0 ? (n - 1) / spread : std::numeric_limits<double>::infinity();
-  const double c = 1 - spread / f.resultant * (std::pow(1 / 0.05, 1 / (n - 1)) - 1);
-  f.alpha95 = c <= -1 ? kPi : std::acos(std::min(1.0, c));
+  f.alpha95 = alpha95_of(n, f.resultant);
   return f;
 }
 
@@ -169,6 +175,22 @@ int distinct_count(std::vector<double> positions, double merge) {
 }
 
 }  // namespace
+
+double alpha95_from(double kappa, std::size_t count) {
+  if (count < 2 || !(kappa > 0)) return kPi;
+  if (std::isinf(kappa)) return 0;
+  const double n = static_cast<double>(count);
+  return alpha95_of(n, n - (n - 1) / kappa);
+}
+
+double fisher_cone(double kappa, double fraction) {
+  if (!(kappa > 0)) return kPi;
+  if (std::isinf(kappa)) return 0;
+  // 1 - cos t = -ln(1 - fraction (1 - exp(-2 K))) / K, with expm1 / log1p
+  // so that a large K loses no digits.
+  const double one_minus_cos = -std::log1p(fraction * std::expm1(-2 * kappa)) / kappa;
+  return one_minus_cos >= 2 ? kPi : std::acos(1 - one_minus_cos);
+}
 
 FisherStatistics fisher_statistics(const std::vector<Eigen::Vector3d>& poles) {
   if (poles.empty()) throw InputError("poles", "no poles to average");

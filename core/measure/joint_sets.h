@@ -31,6 +31,18 @@ struct FisherStatistics {
   geometry::PlaneOrientation plane() const { return geometry::plane_orientation(mean); }
 };
 
+// The 95 % cone of confidence of a set known only by its K and count (a
+// set stored with them, its poles not kept): R = N - (N - 1) / K, then
+// alpha95 as above (Fisher 1953). Radians; pi when undefined (N < 2, K not
+// above 0), 0 when K is infinite.
+double alpha95_from(double kappa, std::size_t count);
+
+// The variability cone: the semi-angle (radians) about the mean holding
+// `fraction` of a Fisher distribution's poles, P(angle <= t) =
+// (1 - exp(-K (1 - cos t))) / (1 - exp(-2 K)); pi when K is not above 0,
+// 0 when infinite. Where a set's joints lie, as alpha95 is where its mean lies.
+double fisher_cone(double kappa, double fraction = 0.95);
+
 // Throws InputError("poles", ...) when empty or a pole is not finite or zero.
 FisherStatistics fisher_statistics(const std::vector<Eigen::Vector3d>& poles);
 

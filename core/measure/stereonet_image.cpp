@@ -58,6 +58,36 @@ void draw_small_circle(cv::Mat& img, const Eigen::Vector3d& centre_axis, double 
   if (run.size() > 1) draw_net_polyline(img, run, c, thickness);
 }
 
+// Half way to white: the thin lines under the sets' own.
+cv::Scalar lighter(const cv::Scalar& c) {
+  return {0.5 * (c[0] + 255), 0.5 * (c[1] + 255), 0.5 * (c[2] + 255)};
+}
+
+// Where and how large the north mark's "N" is written.
+cv::Point north_label_origin(int S) {
+  const cv::Point centre = to_cv(net_to_pixel({0, 0}, S));
+  return {centre.x - S / 100, centre.y - static_cast<int>(std::lround(0.4 * S)) - S / 30};
+}
+double north_label_scale(int S) {
+  return S / 1600.0 + 0.2;
+}
+
+// The daylight envelope (pole plot): for each dip direction within 90
+// degrees of the face's, the pole of the plane that dips exactly as steeply
+// as the face does along that direction (its apparent dip). Poles between
+// it and the friction circle are of planes that daylight and slide.
+std::vector<Eigen::Vector2d> daylight_envelope(const KinematicOverlay& k,
+                                               const StereonetPicture& pic) {
+  std::vector<Eigen::Vector2d> out;
+  constexpr int kSteps = 90;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double off = -kPi / 2 + kPi * i / kSteps;
+    const double dip = std::atan(std::tan(k.face.dip) * std::cos(off));
+    out.push_back(g::project_pole({dip, k.face.dipdir + off}, pic.projection, pic.hemisphere));
+  }
+  return out;
+}
+
 std::string orientation_text(const g::PlaneOrientation& o) {
   char text[32];
   std::snprintf(text, sizeof(text), "%02.0f/%03.0f", rad_to_deg(o.dip), rad_to_deg(o.dipdir));
@@ -89,6 +119,15 @@ Eigen::Vector2d net_to_pixel(const Eigen::Vector2d& net, int size_px) {
   const double radius = 0.4 * size_px;
   const double c = 0.5 * size_px - 0.5;
   return {c + radius * net.x(), c - radius * net.y()};
+}
+
+cv::Rect north_label_box(int size_px) {
+  int base = 0;
+  const cv::Size size =
+      cv::getTextSize("N", cv::FONT_HERSHEY_SIMPLEX, north_label_scale(size_px), 1, &base);
+  const cv::Point o = north_label_origin(size_px);
+  // The glyph's box above its baseline, and the antialiasing's pixel around it.
+  return {o.x - 1, o.y - size.height - 1, size.width + 2, size.height + base + 2};
 }
 
 cv::Mat render_stereonet(const StereonetPicture& pic) {
@@ -151,8 +190,8 @@ cv::Mat render_stereonet(const StereonetPicture& pic) {
   cv::drawMarker(img, centre, cv::Scalar(0, 0, 0), cv::MARKER_CROSS, S / 60, 1);
   cv::line(img, {centre.x, centre.y - radius_px}, {centre.x, centre.y - radius_px - S / 40},
            cv::Scalar(0, 0, 0), 2);
-  cv::putText(img, "N", {centre.x - S / 100, centre.y - radius_px - S / 30},
-              cv::FONT_HERSHEY_SIMPLEX, S / 1600.0 + 0.2, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  cv::putText(img, "N", north_label_origin(S), cv::FONT_HERSHEY_SIMPLEX, north_label_scale(S),
+              cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
 
   if (pic.kinematics) {
     // Friction circle: poles inside it dip less than the friction angle.
@@ -161,6 +200,9 @@ cv::Mat render_stereonet(const StereonetPicture& pic) {
     draw_net_polyline(img,
                       g::project_great_circle(pic.kinematics->face, pic.projection, pic.hemisphere),
                       cv::Scalar(0, 0, 200), 2);
+    draw_net_polyline(img, daylight_envelope(*pic.kinematics, pic), cv::Scalar(0, 0, 200), 1);
+  } else if (pic.friction && *pic.friction > 0 && *pic.friction < kPi / 2) {
+    draw_small_circle(img, -Eigen::Vector3d::UnitZ(), *pic.friction, pic, cv::Scalar(0, 0, 200), 1);
   }
   int text_row = S / 30;
   const double font = S / 1600.0 + 0.15;
@@ -173,7 +215,16 @@ cv::Mat render_stereonet(const StereonetPicture& pic) {
     text_row += S / 30;
   }
 
-  // Poles, then the sets over them: great circle, mean pole and its cone.
+  // The planes' great circles under everything else, lighter than the sets'.
+  if (pic.plane_great_circles)
+    for (std::size_t i = 0; i < pic.poles.size(); ++i) {
+      const int set = pic.pole_sets.empty() ? -1 : pic.pole_sets[i];
+      draw_net_polyline(img,
+                        g::project_great_circle(g::plane_orientation(pic.poles[i]), pic.projection,
+                                                pic.hemisphere),
+                        lighter(set_colour(set)), 1);
+    }
+  // Poles, then the sets over them: great circle, mean pole and its cones.
   for (std::size_t i = 0; i < pic.poles.size(); ++i) {
     const int set = pic.pole_sets.empty() ? -1 : pic.pole_sets[i];
     const Eigen::Vector2d p =
@@ -191,6 +242,8 @@ cv::Mat render_stereonet(const StereonetPicture& pic) {
     cv::drawMarker(img, to_cv(p), c, cv::MARKER_SQUARE, S / 50, 2);
     if (set.alpha95 > 0 && set.alpha95 < kPi / 2)
       draw_small_circle(img, pole, set.alpha95, pic, c, 1);
+    if (set.variability > 0 && set.variability < kPi / 2)
+      draw_small_circle(img, pole, set.variability, pic, lighter(c), 1);
     cv::putText(img, set.label + " " + orientation_text(set.mean), {S / 60, legend_row + S / 60},
                 cv::FONT_HERSHEY_SIMPLEX, font, c, 1, cv::LINE_AA);
     legend_row += S / 30;
@@ -201,9 +254,20 @@ cv::Mat render_stereonet(const StereonetPicture& pic) {
   cv::putText(img, kind + " hemisphere, " + std::to_string(pic.poles.size()) + " poles",
               {S / 2, S - S / 30}, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(0, 0, 0), 1,
               cv::LINE_AA);
-  if (!pic.title.empty())
-    cv::putText(img, pic.title, {S / 2, S / 30 + S / 60}, cv::FONT_HERSHEY_SIMPLEX, font,
-                cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  // The title right of the N, right-aligned, shrunk to the room there.
+  if (!pic.title.empty()) {
+    const cv::Rect n = north_label_box(S);
+    const int room = S - S / 60 - (n.x + n.width + S / 60);
+    double scale = font;
+    int base = 0;
+    cv::Size size = cv::getTextSize(pic.title, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &base);
+    if (size.width > room) {
+      scale *= static_cast<double>(room) / size.width;
+      size = cv::getTextSize(pic.title, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &base);
+    }
+    cv::putText(img, pic.title, {S - S / 60 - size.width, S / 30 + S / 60},
+                cv::FONT_HERSHEY_SIMPLEX, scale, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  }
   return img;
 }
 

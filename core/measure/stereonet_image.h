@@ -20,6 +20,9 @@ struct StereonetSet {
   std::string label;
   geometry::PlaneOrientation mean;  // radians
   double alpha95 = 0;               // radians; 0: no cone drawn
+  // The variability cone (radians; fisher_cone in joint_sets.h): where 95 %
+  // of the set's poles lie, drawn thin; 0: not drawn.
+  double variability = 0;
 };
 
 struct StereonetFace {
@@ -44,6 +47,12 @@ struct StereonetPicture {
   std::vector<StereonetSet> sets;
   std::vector<StereonetFace> faces;
   std::optional<KinematicOverlay> kinematics;
+  // The great circle of every pole's plane, thin, in its set's colour.
+  bool plane_great_circles = false;
+  // The friction circle alone (radians), when there is no free face for the
+  // kinematic overlay (which draws its own): poles inside it dip less than
+  // the friction angle.
+  std::optional<double> friction;
   geometry::Projection projection = geometry::Projection::EqualArea;
   geometry::Hemisphere hemisphere = geometry::Hemisphere::Lower;
   bool density_contours = true;
@@ -56,6 +65,11 @@ cv::Scalar set_colour(int set);
 // Pixel of a point of the net (unit circle, x East, y North) in a picture of
 // `size_px`: where render_stereonet draws it.
 Eigen::Vector2d net_to_pixel(const Eigen::Vector2d& net, int size_px);
+
+// Where render_stereonet writes the net's "N" (its north mark's letter) and
+// the title in a picture of `size_px`: the title starts right of the N and
+// never covers it (issue 39).
+cv::Rect north_label_box(int size_px);
 
 // BGR CV_8UC3, size_px square. Throws InputError("stereonet", ...) for
 // size_px below 200 or pole_sets of the wrong length.

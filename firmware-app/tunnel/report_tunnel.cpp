@@ -26,9 +26,18 @@ void add_tunnel_to_report(storage::ProjectStore& store, storage::FieldReport& re
   t.area_m2 = record->profile.area();
   t.underbreak_tolerance_m = record->underbreak_tolerance_m;
   t.placement = known_placement(store, *record, report.visit_id);
-  if (t.placement) {
+  // A visit placed by its typed chainage alone (planes typed in, no
+  // photographs yet) is reported without its round: there is no surface to
+  // measure it on, and the rest of the report still stands.
+  if (t.placement && store.list_visit_models(report.visit_id).empty()) {
+    t.profile_lines.push_back("no 3D image of this visit: the round is not measured");
+  } else if (t.placement) {
     const VisitProfile profile = visit_profile(store, report.visit_id, preset);
-    t.profile_lines = visit_profile_summary(profile);
+    // The summary's first line is the visit's place, which the report's
+    // tunnel section prints from the placement above it (issue 39: the
+    // place was printed twice, in two sizes).
+    const std::vector<std::string> summary = visit_profile_summary(profile);
+    t.profile_lines.assign(summary.begin() + (summary.empty() ? 0 : 1), summary.end());
     if (profile.deviation.status != tunnel::DeviationStatus::no_walls_in_view)
       t.developed_view = storage::developed_view_picture(profile.deviation, record->profile);
   }

@@ -1,5 +1,6 @@
 #include "storage/field_report/field_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -125,6 +126,41 @@ void joints_and_sets(ProjectStore& store, FieldReport& r) {
       if (r.pole_sets[i] >= 0) r.joints[i].set_label = r.sets[r.pole_sets[i]].label;
 }
 
+// The face's planes: each outline's first flat piece, and each free face
+// (an area with the rock's side), with the area of its outline.
+std::vector<ReportedFacePlane> face_planes(const std::vector<Measurement>& measurements,
+                                           const std::vector<Joint>& joints) {
+  std::vector<ReportedFacePlane> out;
+  for (const auto& m : measurements) {
+    if (m.kind != Measurement::Kind::area) continue;
+    const bool free_face = !m.rock_side.empty();
+    if (!free_face && !is_face_outline(m, joints)) continue;
+    const std::string label = free_face ? m.label : outline_of_piece(m.label);
+    if (std::any_of(out.begin(), out.end(), [&](const auto& f) { return f.label == label; }))
+      continue;
+    // Newell's sum: twice the outline's vector area, normal to its plane.
+    Eigen::Vector3d twice_area = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < m.points.size(); ++i)
+      twice_area += m.points[i].cross(m.points[(i + 1) % m.points.size()]);
+    ReportedFacePlane f{label, 0, 0, 0.5 * twice_area.norm(), true};
+    if (m.dip_deg && m.dipdir_deg) {
+      f.dip_deg = *m.dip_deg;
+      f.dipdir_deg = *m.dipdir_deg;
+    } else if (f.area_m2 > 0) {
+      // An outline stored without its plane (a scene's free face): the
+      // plane its corners span.
+      const geometry::PlaneOrientation o = geometry::plane_orientation(twice_area);
+      f.dip_deg = rad_to_deg(o.dip);
+      f.dipdir_deg = rad_to_deg(o.dipdir);
+      f.oriented = false;
+    } else {
+      continue;
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
 }  // namespace
 
 FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
@@ -190,8 +226,11 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
   }
   joints_and_sets(store, r);
   // Issue 27: the mapped face as the geologist outlined it, in its flat
-  // pieces (storage/scene/face_outline_words.h).
-  r.face_outlines = face_outline_words(stored, store.list_joints(visit_id));
+  // pieces (storage/scene/face_outline_words.h); the outlines of one flat
+  // piece in one line (issue 39: a face of many filled page 1).
+  const auto joints = store.list_joints(visit_id);
+  r.face_outlines = face_outline_summary(stored, joints);
+  r.face_planes = face_planes(stored, joints);
 
   const auto runs = store.list_analyses(visit_id);
   if (!runs.empty()) {

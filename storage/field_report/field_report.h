@@ -25,6 +25,18 @@ struct ReportedJoint {
   std::optional<double> friction_deg, cohesion_pa;
 };
 
+// A plane of the mapped face (an outline's first flat piece) or a free face
+// of the excavation, for the stereonet's face circles and kinematic check.
+struct ReportedFacePlane {
+  std::string label;
+  double dip_deg = 0, dipdir_deg = 0;
+  double area_m2 = 0;  // of its outline on the 3D image
+  // Whether the dip direction is the stored one (a fitted or measured
+  // plane); false when taken from the outline's corners, whose winding does
+  // not say which side of a steep face is the rock.
+  bool oriented = true;
+};
+
 struct ReportedJointSet {
   std::string label;
   int count = 0;
@@ -88,7 +100,7 @@ struct ReportedTunnel {
   double first_chainage = 0, last_chainage = 0;
   double perimeter_m = 0, area_m2 = 0, underbreak_tolerance_m = 0;
   std::optional<VisitPlacement> placement;
-  std::vector<std::string> profile_lines;  // the round against the design, in words
+  std::vector<std::string> profile_lines;  // the round against the design, in words (not its place)
   cv::Mat developed_view;                  // BGR; empty when not placed
   std::vector<ReportedTunnelPlane> planes;
   std::vector<ReportedTunnelBlock> blocks;
@@ -151,8 +163,10 @@ struct FieldReport {
   int traces_by_hand = 0, traces_proposed = 0, traces_corrected = 0;
   // Issue 27: each face outline in words, its flat pieces, how far apart
   // and their RMS ("face outline F1: 2 flat pieces, 12.0° apart, RMS 6 mm /
-  // 7 mm"; storage/scene/face_outline_words.h).
+  // 7 mm"); those of one flat piece told in one line (issue 39;
+  // storage/scene/face_outline_words.h face_outline_summary).
   std::vector<std::string> face_outlines;
+  std::vector<ReportedFacePlane> face_planes;  // in the order measured
 
   ReportedAccuracy accuracy;
   std::vector<ReportedJoint> joints;

@@ -2,16 +2,19 @@
 
 #include <algorithm>
 #include <memory>
+#include <sstream>
 
 #include <cairo-pdf.h>
 #include <cairo.h>
 #include <opencv2/imgproc.hpp>
 
 #include "core/analysis/block_reading.h"
+#include "core/analysis/effect_words.h"
 #include "core/common/error.h"
 #include "core/rockmass/figures_in_words.h"
 #include "storage/field_report/dynamics_picture.h"
 #include "storage/field_report/field_report_pictures.h"
+#include "storage/field_report/table_layout.h"
 
 namespace rockface::storage {
 
@@ -20,11 +23,8 @@ namespace {
 // A4 in PostScript points; margins and type sizes of a printed page.
 constexpr double kPageW = 595.28, kPageH = 841.89, kMargin = 48;
 constexpr double kBody = 9, kSmall = 7.5, kHeading = 13, kTitle = 18;
-
-struct Column {
-  std::string title;
-  double width;  // points
-};
+// The smallest type a table shrinks to before its widest words overrun.
+constexpr double kSmallest = 6;
 
 // Writes text top to bottom, starting a new page when the next item does not fit.
 class PdfPages {
@@ -65,22 +65,27 @@ class PdfPages {
       rest = cut < rest.size() ? rest.substr(cut + 1) : std::string();
     }
   }
-  void table(const std::vector<Column>& columns, const std::vector<std::vector<std::string>>& rows,
-             double size = kBody) {
-    auto row = [&](const std::vector<std::string>& cells, bool bold) {
-      space(size * 1.45);
-      font(size, bold);
-      double x = kMargin;
-      for (std::size_t c = 0; c < columns.size() && c < cells.size(); ++c) {
-        show(x, cells[c], false);
-        x += columns[c].width;
-      }
-      y_ += size * 1.45;
+  // A table laid out from the measured widths of its cells
+  // (table_layout.h); a row that does not fit starts a new page, where the
+  // header is repeated.
+  void table(const std::vector<std::string>& header,
+             const std::vector<std::vector<std::string>>& rows, double size = kBody) {
+    const TableLayout t = lay_out_table(header, rows, text_width(), size, kSmallest,
+                                        [this](const std::string& s, double points, bool bold) {
+                                          font(points, bold);
+                                          return width(s);
+                                        });
+    const double leading = t.size * 1.3;
+    auto row = [&](std::size_t r) {
+      std::size_t lines = 1;
+      for (const auto& c : t.cells[r]) lines = std::max(lines, c.size());
+      const double height = static_cast<double>(lines) * leading + 0.15 * t.size;
+      const bool new_page = space(height);
+      if (new_page && r > 0) show_row(t, 0, leading);
+      show_row(t, r, leading);
     };
-    std::vector<std::string> header;
-    for (const auto& c : columns) header.push_back(c.title);
-    row(header, true);
-    for (const auto& r : rows) row(r, false);
+    space(2 * leading);  // never a header alone at a page foot
+    for (std::size_t r = 0; r < t.cells.size(); ++r) row(r);
   }
   // An image scaled to fit `max_w` x `max_h` points, keeping its aspect.
   void image(const cv::Mat& bgr, double max_w, double max_h) {
@@ -124,11 +129,26 @@ class PdfPages {
     if (st != CAIRO_STATUS_SUCCESS)
       throw Error(file_.string() + ": cannot write the PDF: " + cairo_status_to_string(st));
   }
-  void space(double needed) {
-    if (y_ + needed > kPageH - kMargin) {
-      cairo_show_page(cr_.get());
-      y_ = kMargin;
+  // Starts a new page when `needed` points do not fit on this one; says so.
+  bool space(double needed) {
+    if (y_ + needed <= kPageH - kMargin) return false;
+    cairo_show_page(cr_.get());
+    y_ = kMargin;
+    return true;
+  }
+  void show_row(const TableLayout& t, std::size_t r, double leading) {
+    font(t.size, r == 0);
+    std::size_t lines = 1;
+    for (std::size_t c = 0; c < t.cells[r].size(); ++c) {
+      const auto& cell = t.cells[r][c];
+      lines = std::max(lines, cell.size());
+      for (std::size_t k = 0; k < cell.size(); ++k) {
+        cairo_set_source_rgb(cr_.get(), 0, 0, 0);
+        cairo_move_to(cr_.get(), kMargin + t.left[c], y_ + t.size + k * leading);
+        cairo_show_text(cr_.get(), cell[k].c_str());
+      }
     }
+    y_ += static_cast<double>(lines) * leading + 0.15 * t.size;
   }
   double width(const std::string& text) {
     cairo_text_extents_t e;
@@ -155,6 +175,40 @@ class PdfPages {
   std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr_;
   double y_ = kMargin, size_ = kBody;
 };
+
+// A text with each absolute path in it cut to its file name: the page is
+// read on another machine, and the project's folder is no one's business
+// there ("replay /home/geo/scenes/face.scene.json" -> "replay face.scene.json").
+std::string file_names_only(const std::string& text) {
+  std::string out, word;
+  std::istringstream words(text);
+  while (words >> word) {
+    if (word.size() > 1 && word[0] == '/' && word.find('/', 1) != std::string::npos)
+      word = std::filesystem::path(word).filename().string();
+    out += (out.empty() ? "" : " ") + word;
+  }
+  return out;
+}
+
+// What the stereonet draws, in the words a geologist reads it by.
+std::string stereonet_caption(const FieldReport& r) {
+  std::string s =
+      "dots: poles of the joints (grey: in no set), thin lines: their great circles; sets: mean "
+      "pole (square), great circle, 95 % confidence cone of the mean and, thin, the cone of 95 % "
+      "of the set's poles";
+  if (!r.face_planes.empty())
+    s += "; black, listed at the foot: the great circles of the face's planes";
+  const auto phi = stereonet_friction_deg(r);
+  if (phi)
+    s += "; red: the friction circle of the weakest joint (" + report_number(*phi, 1) +
+         " deg), poles inside it dip less than it";
+  if (const auto* face = stereonet_face(r); face && phi)
+    s += "; the face " + face->label + " (" + report_number(face->dip_deg, 0) + "/" +
+         report_number(face->dipdir_deg, 0) +
+         ") in red with its daylight envelope; shaded: poles of planes that daylight in it and "
+         "slide (Markland)";
+  return s;
+}
 
 std::string code_text(const std::string& code) {
   const auto n = std::count(code.begin(), code.end(), '+');
@@ -233,7 +287,7 @@ void accuracy_section(PdfPages& pdf, const FieldReport& r) {
     std::vector<std::vector<std::string>> rows;
     for (const auto& p : a.control_points)
       rows.push_back({p.id, report_number(p.residual_m * 1000, 1)});
-    pdf.table({{"point", 80}, {"residual mm", 80}}, rows);
+    pdf.table({"point", "residual mm"}, rows);
   } else {
     pdf.line("ground control: none");
   }
@@ -246,13 +300,7 @@ void accuracy_section(PdfPages& pdf, const FieldReport& r) {
                       i.role == "master" ? "-" : report_number(i.overlap * 100, 0),
                       i.role == "master" ? "-" : report_number(i.surface_rms_m * 1000, 1),
                       report_number(i.scale, 4)});
-    pdf.table({{"image", 70},
-               {"role", 65},
-               {"tied to", 60},
-               {"tie points", 60},
-               {"overlap %", 60},
-               {"surface rms mm", 85},
-               {"scale", 60}},
+    pdf.table({"image", "role", "tied to", "tie points", "overlap %", "surface rms mm", "scale"},
               rows);
   }
   for (const auto& w : a.warnings) pdf.line("warning: " + w, kSmall);
@@ -266,7 +314,7 @@ void tunnel_section(PdfPages& pdf, const FieldReport& r) {
            report_number(t.last_chainage, 2) + " m, drive " + t.drive);
   pdf.line("design profile " + (t.profile_name.empty() ? std::string("-") : t.profile_name) + ": " +
            report_number(t.perimeter_m, 2) + " m around, " + report_number(t.area_m2, 2) +
-           " m2; underbreak tolerance " + report_number(t.underbreak_tolerance_m * 100, 0) + " cm");
+           " m²; underbreak tolerance " + report_number(t.underbreak_tolerance_m * 100, 0) + " cm");
   if (!t.placement) {
     pdf.line("this visit is not placed in the tunnel");
   } else {
@@ -281,7 +329,7 @@ void tunnel_section(PdfPages& pdf, const FieldReport& r) {
     std::vector<std::vector<std::string>> rows;
     for (const auto& res : p.residuals)
       rows.push_back({res.label, report_number(res.residual.norm() * 1000, 1)});
-    if (!rows.empty()) pdf.table({{"target", 80}, {"residual mm", 80}}, rows);
+    if (!rows.empty()) pdf.table({"target", "residual mm"}, rows);
   }
   for (const auto& line : t.profile_lines) pdf.line(line, kSmall);
   if (!t.developed_view.empty()) {
@@ -296,14 +344,8 @@ void tunnel_section(PdfPages& pdf, const FieldReport& r) {
                       report_number(pl.chainage, 2), report_number(pl.offset_m, 2),
                       pl.strike_class + (pl.marginal ? " ?" : ""),
                       std::to_string(pl.rmr_adjustment), report_number(pl.margin_deg, 1)});
-    pdf.table({{"plane", 40},
-               {"dip deg", 45},
-               {"dip dir deg", 55},
-               {"chainage", 50},
-               {"offset m", 45},
-               {"against the drive (RMR89)", 170},
-               {"RMR adj", 40},
-               {"margin deg", 50}},
+    pdf.table({"plane", "dip deg", "dip dir deg", "chainage", "offset m",
+               "against the drive (RMR89)", "RMR adj", "margin deg"},
               rows, kSmall);
   }
   if (!t.blocks.empty()) {
@@ -312,13 +354,7 @@ void tunnel_section(PdfPages& pdf, const FieldReport& r) {
       rows.push_back({b.label, report_number(b.survey.x(), 3), report_number(b.survey.y(), 3),
                       report_number(b.survey.z(), 3), report_number(b.chainage, 2),
                       report_number(b.offset_m, 2), report_number(b.height_m, 2)});
-    pdf.table({{"block", 40},
-               {"easting", 75},
-               {"northing", 80},
-               {"elevation", 60},
-               {"chainage", 55},
-               {"offset m", 50},
-               {"height m", 50}},
+    pdf.table({"block", "easting", "northing", "elevation", "chainage", "offset m", "height m"},
               rows, kSmall);
   }
 }
@@ -330,13 +366,7 @@ void joint_section(PdfPages& pdf, const FieldReport& r) {
     rows.push_back({j.label, report_number(j.dip_deg, 1), report_number(j.dipdir_deg, 1),
                     report_number(j.friction_deg, 1), report_number(j.cohesion_pa, 0),
                     j.set_label.empty() ? "-" : j.set_label, j.source});
-  pdf.table({{"joint", 50},
-             {"dip deg", 55},
-             {"dip dir deg", 65},
-             {"friction deg", 70},
-             {"cohesion Pa", 70},
-             {"set", 40},
-             {"source", 120}},
+  pdf.table({"joint", "dip deg", "dip dir deg", "friction deg", "cohesion Pa", "set", "source"},
             rows);
   // Issue 27: a plane read with a compass on the tablet, not fitted.
   if (std::any_of(r.joints.begin(), r.joints.end(),
@@ -354,14 +384,7 @@ void joint_section(PdfPages& pdf, const FieldReport& r) {
     rows.push_back({s.label, std::to_string(s.count), report_number(s.dip_deg, 1),
                     report_number(s.dipdir_deg, 1), report_number(s.fisher_k, 1),
                     report_number(s.alpha95_deg, 1), s.origin});
-  pdf.table({{"set", 40},
-             {"joints", 45},
-             {"dip deg", 55},
-             {"dip dir deg", 65},
-             {"Fisher K", 60},
-             {"alpha95 deg", 70},
-             {"from", 150}},
-            rows);
+  pdf.table({"set", "joints", "dip deg", "dip dir deg", "Fisher K", "alpha95 deg", "from"}, rows);
 }
 
 void block_section(PdfPages& pdf, const FieldReport& r) {
@@ -370,24 +393,14 @@ void block_section(PdfPages& pdf, const FieldReport& r) {
     pdf.line("no block analysis stored for this visit");
     return;
   }
-  std::string effects;
-  for (std::size_t i = 0; i < r.effects.size(); ++i) effects += (i ? ", " : "") + r.effects[i];
-  pdf.line("effects simulated: " + (effects.empty() ? std::string("-") : effects));
+  pdf.line("effects simulated: " + analysis::effects_in_words(r.effects));
   std::vector<std::vector<std::string>> rows;
   for (const auto& b : r.blocks)
     rows.push_back({b.id, b.source, code_text(b.code), report_number(b.volume, 3),
                     report_number(b.mass, 0), report_verdict(b), report_number(b.margin_deg, 2),
                     report_mode(b), report_number(b.fos, 2), report_rotation(b)});
-  pdf.table({{"block", 30},
-             {"source", 32},
-             {"code", 52},
-             {"volume m3", 45},
-             {"mass kg", 42},
-             {"verdict", 58},
-             {"margin deg", 45},
-             {"mode", 62},
-             {"FoS", 28},
-             {"rotation", 105}},
+  pdf.table({"block", "source", "code", "volume m³", "mass kg", "verdict", "margin deg", "mode",
+             "FoS", "rotation"},
             rows, kSmall);
   pdf.line(
       "verdict '?': marginal (the margin is within the orientation uncertainty); FoS '-': "
@@ -436,17 +449,8 @@ void wedges_section(PdfPages& pdf, const FieldReport& r) {
   if (w.rows.empty())
     pdf.line("no removable wedge");
   else
-    pdf.table({{"wedge", 30},
-               {"place", 50},
-               {"code", 35},
-               {"volume m3", 45},
-               {"weight kN", 45},
-               {"apex m", 35},
-               {"bolt m", 35},
-               {"margin deg", 45},
-               {"mode", 85},
-               {"FoS", 30},
-               {"supported", 40}},
+    pdf.table({"wedge", "place", "code", "volume m³", "weight kN", "apex m", "bolt m", "margin deg",
+               "mode", "FoS", "supported"},
               w.rows, kSmall);
   for (const auto& note : w.notes) pdf.line(note, kSmall);
   if (!w.picture.empty()) {
@@ -485,15 +489,9 @@ void facets_section(PdfPages& pdf, const FieldReport& r) {
   if (f.rows.empty())
     pdf.line("no joint set from the facets");
   else
-    pdf.table({{"set", 30},
-               {"dip/dir deg", 60},
-               {"facets", 40},
-               {"planes", 40},
-               {"Fisher K", 45},
-               {"a95 deg", 40},
-               {"spacing m", 50},
-               {"area m2", 45}},
-              f.rows, kSmall);
+    pdf.table(
+        {"set", "dip/dir deg", "facets", "planes", "Fisher K", "a95 deg", "spacing m", "area m²"},
+        f.rows, kSmall);
   for (const auto& note : f.notes) pdf.line(note, kSmall);
   if (!f.picture.empty()) {
     pdf.image(f.picture, PdfPages::text_width(), 0.5 * kPageH);
@@ -515,14 +513,7 @@ void support_section(PdfPages& pdf, const FieldReport& r) {
   }
   for (const auto& line : s.checks) pdf.line(line, kSmall);
   if (!s.rows.empty())
-    pdf.table({{"wedge/block", 55},
-               {"place", 50},
-               {"mode", 45},
-               {"FoS", 35},
-               {"supported", 45},
-               {"bolts", 45},
-               {"needs m", 40},
-               {"below", 35}},
+    pdf.table({"wedge/block", "place", "mode", "FoS", "supported", "bolts", "needs m", "below"},
               s.rows, kSmall);
   pdf.heading("Decision", 3 * kBody);
   for (const auto& line : s.decision) pdf.line(line);
@@ -534,9 +525,10 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   PdfPages pdf(file);
   pdf.title("Field report: " + r.project_name);
   pdf.line("visit " + std::to_string(r.visit_id) + ", started " + r.visit_started_at + " (" +
-           r.visit_source + ")");
-  pdf.line("project " + r.project_file + "; datum E " + report_number(r.datum.x(), 3) + ", N " +
-           report_number(r.datum.y(), 3) + ", Z " + report_number(r.datum.z(), 3));
+           file_names_only(r.visit_source) + ")");
+  pdf.line("project " + std::filesystem::path(r.project_file).filename().string() + "; datum E " +
+           report_number(r.datum.x(), 3) + ", N " + report_number(r.datum.y(), 3) + ", Z " +
+           report_number(r.datum.z(), 3));
   camera_section(pdf, r);
   accuracy_section(pdf, r);
   tunnel_section(pdf, r);
@@ -560,8 +552,10 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   const cv::Mat net = stereonet_picture(r);
   if (net.empty())
     pdf.line("no joints");
-  else
+  else {
     pdf.image(net, 0.6 * PdfPages::text_width(), 0.6 * PdfPages::text_width());
+    pdf.line(stereonet_caption(r), kSmall);
+  }
   joint_section(pdf, r);
   block_section(pdf, r);
   dynamics_section(pdf, r);

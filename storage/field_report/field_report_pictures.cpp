@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/units.h"
+#include "core/measure/joint_sets.h"
 #include "core/measure/stereonet_image.h"
 #include "core/photogrammetry/camera/camera_cv.h"
 
@@ -74,18 +75,53 @@ cv::Mat face_picture(const FieldReport& r) {
   return out;
 }
 
+std::optional<double> stereonet_friction_deg(const FieldReport& r) {
+  std::optional<double> lowest;
+  for (const auto& j : r.joints)
+    if (j.friction_deg && (!lowest || *j.friction_deg < *lowest)) lowest = j.friction_deg;
+  return lowest;
+}
+
+const ReportedFacePlane* stereonet_face(const FieldReport& r) {
+  const auto phi = stereonet_friction_deg(r);
+  if (!phi) return nullptr;
+  const ReportedFacePlane* largest = nullptr;
+  for (const auto& f : r.face_planes)
+    if (f.oriented && f.dip_deg > *phi && (!largest || f.area_m2 > largest->area_m2)) largest = &f;
+  return largest;
+}
+
 cv::Mat stereonet_picture(const FieldReport& r, int size_px) {
   if (r.poles.empty()) return {};
   measure::StereonetPicture pic;
   pic.title = "joints, visit " + std::to_string(r.visit_id);
   pic.poles = r.poles;
   pic.pole_sets = r.pole_sets;
+  pic.plane_great_circles = true;
   for (const auto& s : r.sets) {
     measure::StereonetSet set;
     set.label = s.label;
     set.mean = {deg_to_rad(s.dip_deg), deg_to_rad(s.dipdir_deg)};
-    set.alpha95 = s.alpha95_deg ? deg_to_rad(*s.alpha95_deg) : 0.0;
+    // A stored set keeps its K and count, not its poles: its cone from them.
+    set.alpha95 = s.alpha95_deg
+                      ? deg_to_rad(*s.alpha95_deg)
+                      : measure::alpha95_from(s.fisher_k, static_cast<std::size_t>(s.count));
+    if (set.alpha95 >= kPi) set.alpha95 = 0;
+    const double cone = measure::fisher_cone(s.fisher_k);
+    set.variability = cone < kPi ? cone : 0.0;
     pic.sets.push_back(set);
+  }
+  // The friction circle of the weakest joint (the first to slide), and the
+  // kinematic check on the largest face plane, where the visit has one.
+  if (const auto phi = stereonet_friction_deg(r)) pic.friction = deg_to_rad(*phi);
+  for (const auto& f : r.face_planes)
+    pic.faces.push_back({f.label, {deg_to_rad(f.dip_deg), deg_to_rad(f.dipdir_deg)}});
+  const ReportedFacePlane* largest = stereonet_face(r);
+  if (largest && pic.friction) {
+    measure::KinematicOverlay k;
+    k.face = {deg_to_rad(largest->dip_deg), deg_to_rad(largest->dipdir_deg)};
+    k.friction = *pic.friction;
+    pic.kinematics = k;
   }
   // A handful of poles make no density worth contouring.
   pic.density_contours = r.poles.size() >= 10;

@@ -24,7 +24,19 @@ inline const cv::Scalar kTraceColour{0, 230, 255};  // yellow
 
 // BGR; empty when the visit has no photograph.
 cv::Mat face_picture(const FieldReport& report);
-// BGR, size_px square; empty when there are no joints.
+// The stereonet's friction circle: the lowest friction angle of the joints
+// (degrees; the first to slide), none when no joint has one.
+std::optional<double> stereonet_friction_deg(const FieldReport& report);
+// The face plane the stereonet checks sliding on: the largest of those with
+// a known dip direction that is steeper than the friction angle (no plane
+// slides out of a face flatter than that: a floor or a shallow roof), or none.
+const ReportedFacePlane* stereonet_face(const FieldReport& report);
+
+// BGR, size_px square; empty when there are no joints. The poles and the
+// great circles of the joints, each set's mean pole, its 95 % confidence
+// cone and the cone of 95 % of its poles; the friction circle, and the
+// faces' great circles with the daylight envelope and the sliding zone of
+// the largest (Markland's test) where the visit has a face plane.
 cv::Mat stereonet_picture(const FieldReport& report, int size_px = 900);
 
 }  // namespace rockface::storage

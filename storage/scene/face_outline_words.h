@@ -26,4 +26,11 @@ std::string outline_of_piece(const std::string& label);
 std::vector<std::string> face_outline_words(const std::vector<Measurement>& measurements,
                                             const std::vector<Joint>& joints);
 
+// The same for a printed page, where a face of many outlines would fill it:
+// the outlines of one flat piece with nothing noted told in one line ("5
+// face outlines, each one flat piece (FACE_W, ..., WALL_E), RMS at most 0
+// mm"), then one line per other outline as face_outline_words tells it.
+std::vector<std::string> face_outline_summary(const std::vector<Measurement>& measurements,
+                                              const std::vector<Joint>& joints);
+
 }  // namespace rockface::storage

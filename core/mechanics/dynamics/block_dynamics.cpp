@@ -466,11 +466,24 @@ Landing landing_of(const blocks::Polyhedron& block, const BlockMotion& motion, c
     const Eigen::Vector3d& on_plane =
         block.vertices()[block.faces()[block.faces_on_plane(plane)[0]].loop[0]];
     l.distance_from_face = n.dot(l.centroid - on_plane) / horizontal;
+    Eigen::Vector3d foot = on_plane;
+    for (const int f : block.faces_on_plane(plane))
+      for (const int v : block.faces()[f].loop)
+        if (block.vertices()[v].z() < foot.z()) foot = block.vertices()[v];
+    const Eigen::Vector2d out(n(0) / horizontal, n(1) / horizontal);
+    l.distance_from_foot = out.dot((l.centroid - foot).head<2>());
+    l.drop_below_foot = foot.z() - l.point.z();
   }
   return l;
 }
 
 std::string landing_text(const Landing& l) {
+  if (l.distance_from_foot && l.drop_below_foot) {
+    const double out = *l.distance_from_foot, drop = *l.drop_below_foot;
+    return "lands " + format_fixed(std::abs(out), 1, " m") + (out >= 0 ? " out from" : " behind") +
+           " the foot of the face " + l.face + ", " + format_fixed(std::abs(drop), 1, " m") +
+           (drop >= 0 ? " below" : " above") + " it, at " + format_fixed(l.speed, 1, " m/s");
+  }
   return "lands " +
          format_fixed(l.distance_from_face ? *l.distance_from_face : l.distance_from_start, 1,
                       " m") +

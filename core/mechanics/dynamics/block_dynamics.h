@@ -92,6 +92,13 @@ struct Landing {
   double distance_from_start = 0;                            // m, horizontal, of the centroid
   std::optional<double> distance_from_face;                  // m, horizontal, in front of the face
   std::string face;                                          // that free face
+  // From the face's foot (the lowest corner of the block's face on it, at
+  // rest): the landing centroid's horizontal distance out in front of it
+  // (negative: behind, under an overhang) and how far the touching corner
+  // lies below it. What a reader pictures: "12.3 m out from the foot of the
+  // face F1, 14.8 m below it" (the face plane itself, extended down to the
+  // floor, can pass in front of a block that lands beyond its foot).
+  std::optional<double> distance_from_foot, drop_below_foot;  // m
 };
 
 struct BlockDynamics {

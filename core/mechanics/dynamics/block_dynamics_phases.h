@@ -83,7 +83,8 @@ void project_step(const BlockMotion& motion, const Scales& k, double tau, State&
 // the steep free face it moved out through.
 Landing landing_of(const blocks::Polyhedron& block, const BlockMotion& motion, const Physical& last,
                    const DynamicsFloor& floor, double end_time);
-// "lands 3.2 m from the face F at 7.1 m/s".
+// "lands 3.2 m out from the foot of the face F, 14.8 m below it, at 7.1
+// m/s"; "lands 2.0 m from where it started at 7.1 m/s" without a steep face.
 std::string landing_text(const Landing& l);
 
 // Whether a floor was given, and whether it lies below the block (usable).

@@ -1,6 +1,7 @@
 // Fisher statistics against closed forms and a published worked example;
 // clustering of a sampled mixture of three sets; spacing and trace length.
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -168,4 +169,44 @@ TEST(JointSets, SpacingTraceLengthAndCensoring) {
   EXPECT_NEAR(*sets[0].mean_uncensored_trace_length, 3.0, 1e-12);
   EXPECT_NEAR(*sets[0].persistence, 3.0, 1e-12);
   EXPECT_NE(sets[0].censoring.find("1 of 5"), std::string::npos);
+}
+
+TEST(Fisher, Alpha95FromKAndCountIsTheWorkedExamplesCone) {
+  // The PmagPy example above kept only as a stored set keeps it: K = 159.69
+  // of N = 4 poles. R = N - (N - 1) / K = 3.98121 again, so alpha95 = 7.29
+  // deg (Tauxe et al.); 1e-6 deg: K is given to the digits PmagPy prints.
+  EXPECT_NEAR(rad_to_deg(rm::alpha95_from(159.69251473636305, 4)), 7.292891411309177, 1e-6);
+  // Undefined for fewer than two poles or no concentration; a point for K infinite.
+  EXPECT_EQ(rm::alpha95_from(50, 1), rockface::kPi);
+  EXPECT_EQ(rm::alpha95_from(0, 10), rockface::kPi);
+  EXPECT_EQ(rm::alpha95_from(std::numeric_limits<double>::infinity(), 10), 0);
+}
+
+TEST(Fisher, VariabilityConeHoldsItsFractionOfTheDistribution) {
+  // P(angle <= t) = (1 - exp(-K (1 - cos t))) / (1 - exp(-2 K)); for K = 100
+  // exp(-200) vanishes and 95 % lie within 1 - cos t = ln(20) / 100:
+  // t = 14.07 deg. 1e-9: closed form against closed form.
+  EXPECT_NEAR(rm::fisher_cone(100), std::acos(1 - std::log(20.0) / 100), 1e-9);
+  // Fisher's 63 % cone is about 81 deg / sqrt(K) for a concentrated set
+  // (Butler 1992, Paleomagnetism, 6.2): K = 400 gives 4.05 deg; the rule
+  // is an approximation good to 0.1 % here (1 - cos t ~ t^2 / 2).
+  EXPECT_NEAR(rad_to_deg(rm::fisher_cone(400, 1 - std::exp(-1.0))), 81 / std::sqrt(400.0), 0.005);
+  // A set spread over the sphere (K -> 0) has no cone; a point has a point.
+  EXPECT_EQ(rm::fisher_cone(0), rockface::kPi);
+  EXPECT_EQ(rm::fisher_cone(std::numeric_limits<double>::infinity()), 0);
+  // Monte Carlo: poles drawn from Fisher's distribution (inverse CDF of
+  // cos t) fall inside the cone at its fraction, to within 3 binomial sigma
+  // of 20000 draws (0.46 %).
+  const double kappa = 20;
+  const double t95 = rm::fisher_cone(kappa);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u01(0, 1);
+  int inside = 0;
+  const int draws = 20000;
+  for (int i = 0; i < draws; ++i) {
+    const double u = u01(random);
+    const double cos_t = 1 + std::log(u + (1 - u) * std::exp(-2 * kappa)) / kappa;
+    inside += cos_t >= std::cos(t95);
+  }
+  EXPECT_NEAR(static_cast<double>(inside) / draws, 0.95, 3 * std::sqrt(0.95 * 0.05 / draws));
 }

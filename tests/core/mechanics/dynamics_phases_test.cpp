@@ -144,6 +144,65 @@ TEST(DynamicsPhases, TheLandingIsSaidFromTheFaceItLeftThroughOrFromItsStart) {
   l.face = "F1";
   l.distance_from_face = 3.25;
   EXPECT_EQ(phases::landing_text(l), "lands 3.2 m from the face F1 at 7.1 m/s");
+  // Issue 39: from the face's foot, out and down, not from its plane
+  // extended ("lands -14.8 m from the face" for a block in front of it).
+  l.distance_from_foot = 12.34;
+  l.drop_below_foot = 14.82;
+  EXPECT_EQ(phases::landing_text(l),
+            "lands 12.3 m out from the foot of the face F1, 14.8 m below it, at 7.1 m/s");
+  l.distance_from_foot = -0.51;
+  l.drop_below_foot = -0.25;
+  EXPECT_EQ(phases::landing_text(l),
+            "lands 0.5 m behind the foot of the face F1, 0.2 m above it, at 7.1 m/s");
+}
+
+// The slope wedge of tools/samples/slope-wedge.scene.json: two joints under
+// a 70/180 face (the rock north of it, below it) and a flat top at z = 3.
+blocks::Polyhedron slope_wedge() {
+  using blocks::PlaneKind;
+  return bounded("wedge",
+                 {bounding(0, "J1", PlaneKind::Joint, normal_deg(45, 105), {5, 5, 2}, {}),
+                  bounding(1, "J2", PlaneKind::Joint, normal_deg(50, 235), {5, 5, 2}, {}),
+                  bounding(2, "F1", PlaneKind::FreeFace, -normal_deg(70, 180), {5, 0, 0}, {}),
+                  bounding(3, "F2", PlaneKind::FreeFace, -normal_deg(0, 0), {5, 5, 3}, {})},
+                 {});
+}
+
+TEST(DynamicsPhases, ALandingFarBelowIsSaidOutFromTheFacesFootAndDown) {
+  const blocks::Polyhedron block = slope_wedge();
+  const blocks::MassProperties mass = blocks::mass_properties(block, 2700);
+  const kinematics::Effects effects = gravity();
+  const BlockMotion motion{block, mass, block_loads(block, mass, effects),
+                           friction_on_joints(block, 30)};
+  // It left southwards (out of the face), 10 m, and fell until its lowest
+  // corner touched a floor at z = -30.
+  double lowest = 1e9;
+  for (const auto& v : block.vertices()) lowest = std::min(lowest, v.z());
+  phases::Physical last;
+  last.pose.u = Eigen::Vector3d(0.5, -10, -30 - lowest);
+  last.velocity.v = Eigen::Vector3d(0, -3, -20);
+  const DynamicsFloor floor{Eigen::Vector3d(0, 0, -30), Eigen::Vector3d::UnitZ()};
+  const Landing l = phases::landing_of(block, motion, last, floor, 2.5);
+  ASSERT_EQ(l.face, "F1");
+  ASSERT_TRUE(l.distance_from_foot && l.drop_below_foot);
+  // The foot: the lowest corner of the wedge's face on F1, found here from
+  // the plane's equation (1e-9 m: the corners are intersections of planes).
+  const Eigen::Vector3d n = normal_deg(70, 180);
+  Eigen::Vector3d foot(0, 0, 1e9);
+  for (const auto& v : block.vertices())
+    if (std::abs(n.dot(v - Eigen::Vector3d(5, 0, 0))) < 1e-9 && v.z() < foot.z()) foot = v;
+  ASSERT_LT(foot.z(), 3);
+  // Out of the face is south (its dip direction, 180): minus y. Exact
+  // arithmetic on the same numbers but for rounding (1e-9 m).
+  EXPECT_NEAR(*l.distance_from_foot, -(l.centroid.y() - foot.y()), 1e-9);
+  EXPECT_GT(*l.distance_from_foot, 0);  // 10 m south of where it was: out past the foot
+  EXPECT_NEAR(*l.drop_below_foot, foot.z() - l.point.z(), 1e-9);
+  EXPECT_NEAR(l.point.z(), -30, 1e-9);  // the touching corner, on the floor (rounding only)
+  // The face's plane, extended down to the floor 30 m below, lies 30 / tan
+  // 70 = 10.9 m further out than its foot: from the plane the block is
+  // "behind the face" though it lies in front of its foot.
+  ASSERT_TRUE(l.distance_from_face);
+  EXPECT_LT(*l.distance_from_face, *l.distance_from_foot);
 }
 
 TEST(DynamicsPhases, ABlockLandingStraightBelowIsAtNoDistanceFromItsStart) {
