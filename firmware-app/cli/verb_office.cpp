@@ -4,6 +4,7 @@
 #include <pthread.h>
 #include <signal.h>
 
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -17,7 +18,7 @@ namespace {
 
 struct OfficeOptions {
   std::string server, listen = "127.0.0.1:8046", tls, work;
-  int session_minutes = 30;
+  double session_minutes = 30;
 };
 
 VerbRun setup_office(CLI::App& sub) {
@@ -34,8 +35,9 @@ VerbRun setup_office(CLI::App& sub) {
   serve->add_option("--tls", o->tls, "CERT,KEY: serve HTTPS with this certificate (PEM files)");
   serve
       ->add_option("--session-minutes", o->session_minutes,
-                   "a session ends after this many minutes without a request (default 30)")
-      ->check(CLI::Range(1, 24 * 60));
+                   "a session ends after this many minutes without a request (default 30; "
+                   "a fraction for tests)")
+      ->check(CLI::Range(0.001, 24.0 * 60));
   serve->add_option("--work", o->work, "folder for the sessions' pulled copies (default: /tmp)");
   return [o] {
     OfficeServeOptions options;
@@ -55,8 +57,12 @@ VerbRun setup_office(CLI::App& sub) {
       options.tls_certificate = o->tls.substr(0, comma);
       options.tls_key = o->tls.substr(comma + 1);
     }
-    options.session_idle = std::chrono::minutes(o->session_minutes);
+    options.session_idle =
+        std::chrono::milliseconds(static_cast<std::int64_t>(o->session_minutes * 60000));
     options.work_folder = o->work;
+    options.log_failure = [](const std::string& what) {
+      std::cerr << "office: " << what << std::endl;
+    };
 
     // SIGTERM (systemd) and SIGINT stop the server: waited for on a thread
     // of their own, since stopping is not safe from a signal handler.

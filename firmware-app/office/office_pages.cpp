@@ -31,7 +31,7 @@ std::int64_t tunnel_id(office::Connection& c, const std::string& tunnel) {
 }
 
 // "dd/ddd" as geologists write an orientation, whole degrees.
-std::string orientation_text(double dip, double dipdir) {
+std::string dip_and_direction_text(double dip, double dipdir) {
   return format_fixed(dip, 0, "°") + " / " + format_fixed(dipdir, 0, "°");
 }
 
@@ -98,21 +98,21 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
   out["stamp"] = tunnel_stamp(c, tunnel);
   // One query for the visit list: the latest live revision of the records
   // it needs, then per visit its placement, note and the blocks of its
-  // latest analysis.
+  // latest analysis (a record's reference to another is {"$ref": uuid},
+  // storage/office/record_documents.h).
   const office::Result r = c.query(
       "WITH live AS (SELECT * FROM (SELECT DISTINCT ON (kind, uuid) kind, uuid, visit_uuid, "
       "project_uuid, local_id, deleted, body FROM rockface.record WHERE tunnel_id = $1 AND kind IN "
       "('visit', 'visit_placement', 'analysis', 'block') ORDER BY kind, uuid, revision DESC) l "
       "WHERE NOT deleted), "
-      "last_analysis AS (SELECT visit_uuid, max(local_id) AS aid FROM live WHERE kind = "
-      "'analysis' GROUP BY visit_uuid), "
+      "last_analysis AS (SELECT DISTINCT ON (visit_uuid) visit_uuid, uuid::text AS aid FROM live "
+      "WHERE kind = 'analysis' ORDER BY visit_uuid, local_id DESC), "
       "blocks AS (SELECT b.visit_uuid, count(*) AS n, "
-      "count(*) FILTER (WHERE b.body->'row'->>'removable' = '1' AND "
-      "coalesce(b.body->'row'->>'mode', "
-      "'none') NOT IN ('none', '')) AS moving, "
-      "max((b.body->'row'->>'volume_m3')::float8) FILTER (WHERE b.body->'row'->>'removable' = '1') "
-      "AS largest FROM live b JOIN last_analysis a ON a.visit_uuid = b.visit_uuid AND "
-      "(b.body->'row'->>'analysis_id')::bigint = a.aid WHERE b.kind = 'block' GROUP BY "
+      "count(*) FILTER (WHERE b.body->'row'->>'removable' IN ('1', 'true') AND "
+      "coalesce(b.body->'row'->>'mode', 'none') NOT IN ('none', '')) AS moving, "
+      "max((b.body->'row'->>'volume_m3')::float8) FILTER (WHERE b.body->'row'->>'removable' IN "
+      "('1', 'true')) AS largest FROM live b JOIN last_analysis a ON a.visit_uuid = b.visit_uuid "
+      "AND b.body->'row'->'analysis_id'->>'$ref' = a.aid WHERE b.kind = 'block' GROUP BY "
       "b.visit_uuid) "
       "SELECT v.uuid::text, v.started_at, v.owner, p.name, "
       "(SELECT (l.body->'row'->>'chainage') FROM live l WHERE l.kind = 'visit_placement' AND "
@@ -178,7 +178,7 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
         q["turned"] = p.turned;
         // alpha95 gives the fitting precision of the mean orientation.
         q["text"] = "ch " + format_fixed(p.chainage, 1, " m") + ": " +
-                    orientation_text(p.dip_deg, p.dipdir_deg) +
+                    dip_and_direction_text(p.dip_deg, p.dipdir_deg) +
                     (p.alpha95_deg < 180 ? " ±" + format_fixed(p.alpha95_deg, 0, "°") : "") + " (" +
                     std::to_string(p.count) + " planes)";
         points.push_back(std::move(q));
@@ -230,7 +230,7 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
   json sets = json::array();
   for (const auto& s : report.sets)
     sets.push_back({{"label", s.label},
-                    {"orientation", orientation_text(s.dip_deg, s.dipdir_deg)},
+                    {"orientation", dip_and_direction_text(s.dip_deg, s.dipdir_deg)},
                     {"dip", s.dip_deg},
                     {"dipdir", s.dipdir_deg},
                     {"count", s.count},
@@ -241,7 +241,7 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
   for (const auto& j : report.joints)
     joints.push_back({{"label", j.label},
                       {"set", j.set_label.empty() ? "–" : j.set_label},
-                      {"orientation", orientation_text(j.dip_deg, j.dipdir_deg)},
+                      {"orientation", dip_and_direction_text(j.dip_deg, j.dipdir_deg)},
                       {"friction", optional_fixed(j.friction_deg, 0, "°")},
                       {"cohesion", j.cohesion_pa ? format_fixed(*j.cohesion_pa / 1000, 0, " kPa")
                                                  : std::string("–")}});

@@ -13,7 +13,7 @@ OfficeSession::~OfficeSession() {
   if (!folder.empty()) std::filesystem::remove_all(folder, ec);
 }
 
-SessionStore::SessionStore(std::string server, std::chrono::seconds idle,
+SessionStore::SessionStore(std::string server, std::chrono::milliseconds idle,
                            std::filesystem::path work_folder)
     : server_(std::move(server)), idle_(idle), work_folder_(std::move(work_folder)) {}
 

@@ -51,7 +51,8 @@ class LoginRefused : public std::runtime_error {
 
 class SessionStore {
  public:
-  SessionStore(std::string server, std::chrono::seconds idle, std::filesystem::path work_folder);
+  SessionStore(std::string server, std::chrono::milliseconds idle,
+               std::filesystem::path work_folder);
   ~SessionStore();
 
   // Opens a connection as `role` with `password` and keeps it if the role
@@ -67,7 +68,7 @@ class SessionStore {
   void log_out(const std::string& token);
   // Closes every session idle longer than `idle`.
   void expire();
-  std::chrono::seconds idle() const { return idle_; }
+  std::chrono::milliseconds idle() const { return idle_; }
   std::size_t count();
 
  private:
@@ -77,7 +78,7 @@ class SessionStore {
   };
 
   std::string server_;
-  std::chrono::seconds idle_;
+  std::chrono::milliseconds idle_;
   std::filesystem::path work_folder_;
   std::mutex lock_;
   std::map<std::string, Entry> sessions_;

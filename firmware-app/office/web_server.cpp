@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -96,7 +98,7 @@ class OfficeServer {
       if (!token.empty()) res.set_header("Set-Cookie", office_web::cleared_session_cookie(tls_));
       send_error(res, 401,
                  "log in first (sessions end after " +
-                     std::to_string(sessions_.idle().count() / 60) + " minutes without use)");
+                     std::to_string(sessions_.idle().count() / 60000) + " minutes without use)");
     }
     return s;
   }
@@ -129,12 +131,14 @@ class OfficeServer {
       send_error(res, 404, e.what());
     } catch (const office::ServerError& e) {
       rollback(*s);
+      options_.log_failure(req.path + ": " + e.what());
       if (e.sqlstate() == "42501")
         send_error(res, 403, "this log-in may not read that");
       else
         send_error(res, 503, "the database could not answer: try again");
     } catch (const std::exception& e) {
       rollback(*s);
+      options_.log_failure(req.path + ": " + e.what());
       send_error(res, 500, e.what());
     }
   }
@@ -173,8 +177,10 @@ class OfficeServer {
         const std::string token = sessions_.log_in(role, password);
         std::fill(password.begin(), password.end(), '\0');
         auto s = sessions_.find(token);
-        res.set_header("Set-Cookie", office_web::session_cookie(
-                                         tls_, token, static_cast<int>(sessions_.idle().count())));
+        res.set_header("Set-Cookie",
+                       office_web::session_cookie(tls_, token,
+                                                  static_cast<int>(std::max<std::int64_t>(
+                                                      1, sessions_.idle().count() / 1000))));
         send_json(res, json{{"role", s->role}, {"csrf", s->csrf}});
       } catch (const office_web::LoginRefused& e) {
         std::fill(password.begin(), password.end(), '\0');

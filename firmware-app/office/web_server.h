@@ -18,12 +18,16 @@ struct OfficeServeOptions {
   std::string listen_host;  // e.g. "127.0.0.1"
   int listen_port = 8046;   // 0: any free port (reported by on_listening)
   std::filesystem::path tls_certificate, tls_key;  // both or neither
-  std::chrono::seconds session_idle{30 * 60};
+  std::chrono::milliseconds session_idle{30 * 60 * 1000};
   // Where the sessions' pulled copies live (removed with each session);
   // empty: a folder under the system's temporary folder.
   std::filesystem::path work_folder;
   // Where three.js is (Debian's libjs-three).
   std::filesystem::path three_folder = "/usr/share/javascript/three";
+  // Told what failed on the server's side (the database's message, the
+  // request's path; never a password or a token): the verb prints it on
+  // stderr, which systemd keeps in the journal.
+  std::function<void(const std::string&)> log_failure = [](const std::string&) {};
 };
 
 // Whether a listen address is a loopback one (127.0.0.0/8, ::1,
