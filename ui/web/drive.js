@@ -29,8 +29,8 @@ function chart(title, unit, visits, tracks, value, lo, hi) {
     g.append(svg('line', { x1: left, x2: w - right, y1: y(v), y2: y(v), class: 'grid' }));
     g.append(svg('text', { x: left - 4, y: y(v) + 4, class: 'axis', 'text-anchor': 'end', text: `${v}${unit}` }));
   }
-  for (const c of [c0, (c0 + c1) / 2, c1])
-    g.append(svg('text', { x: x(c), y: h - 8, class: 'axis', 'text-anchor': 'middle', text: `ch ${c.toFixed(1)} m` }));
+  for (const [c, anchor] of [[c0, 'start'], [(c0 + c1) / 2, 'middle'], [c1, 'end']])
+    g.append(svg('text', { x: x(c), y: h - 8, class: 'axis', 'text-anchor': anchor, text: `ch ${c.toFixed(1)} m` }));
   tracks.forEach((t, i) => {
     const pts = t.points.map((p) => `${x(p.chainage).toFixed(1)},${y(value(p)).toFixed(1)}`).join(' ');
     g.append(svg('polyline', { points: pts, class: 'track', stroke: setColour(i) }));

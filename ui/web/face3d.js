@@ -125,6 +125,6 @@ export async function showFace(host, status, meshUrl, textureUrl, visit) {
   const loop = () => { render(); if (document.body.contains(renderer.domElement)) requestAnimationFrame(loop); };
   loop();
   const seconds = (performance.now() - started) / 1000;
-  status.textContent = `${m.triangles} triangles, ${(buffer.byteLength / 1024).toFixed(0)} kB in ${seconds.toFixed(2)} s. Drag to turn, wheel to zoom, double-click two points to measure.`;
+  status.textContent = `${m.triangles} triangles, ${(buffer.byteLength / 1024).toFixed(1)} kB in ${seconds.toFixed(2)} s. Drag to turn, wheel to zoom, double-click two points to measure.`;
   host.dataset.drawn = 'yes';
 }

@@ -9,11 +9,13 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <thread>
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "tests/integration/office_web/office_site.h"
 #include "tests/integration/office_web/web_driver.h"
@@ -90,6 +92,8 @@ Walk walk(const OfficeServer& server, int width, int height) {
       "return [...document.querySelectorAll('a.tunnel-link')].find(a => a.textContent === "
       "'Main drive')"));
   d.wait_for("table.visits tbody tr");
+  if (const char* keep = std::getenv("ROCKFACE_OFFICE_WEB_SHOTS"))
+    cv::imwrite(std::string(keep) + "/drive-" + std::to_string(width) + ".png", d.screenshot());
   w.drive_text = d.script("return document.body.innerText").get<std::string>();
   EXPECT_TRUE(d.script("return window.rockfaceInjected === undefined && "
                        "document.querySelectorAll('img[src=\"x\"]').length === 0")
@@ -112,6 +116,9 @@ Walk walk(const OfficeServer& server, int width, int height) {
       "[Math.round(r.left), Math.round(r.top), Math.round(r.width), Math.round(r.height)]");
   const cv::Mat before = d.screenshot();
   w.face_drawn = drawn_fraction(before, rect);
+  // ROCKFACE_OFFICE_WEB_SHOTS=FOLDER keeps the screenshots for a person to look at.
+  if (const char* keep = std::getenv("ROCKFACE_OFFICE_WEB_SHOTS"))
+    cv::imwrite(std::string(keep) + "/face-" + std::to_string(width) + ".png", before);
   d.drag(d.wait_for("#face-canvas"), width / 5, 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   w.face_turned = changed_fraction(before, d.screenshot(), rect);
@@ -188,7 +195,9 @@ TEST(OfficeWebBrowser, LaptopWalkAndTheFieldReport) {
 TEST(OfficeWebBrowser, PhoneWalk) {
   if (!WebDriver::available()) GTEST_SKIP() << "chromium and chromium-driver are not installed";
   OfficeServer server;
-  expect_walk(walk(server, 390, 844), "phone");
+  const Walk w = walk(server, 390, 844);
+  EXPECT_EQ(w.window_width, 390) << "the page is seen at a phone's width";
+  expect_walk(w, "phone");
 }
 
 }  // namespace

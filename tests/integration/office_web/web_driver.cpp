@@ -83,11 +83,15 @@ WebDriver::WebDriver(int width, int height) {
        "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--hide-scrollbars",
        "--force-device-scale-factor=1",
        "--window-size=" + std::to_string(width) + "," + std::to_string(height)});
+  json chrome = {{"binary", "/usr/bin/chromium"}, {"args", args}};
+  // Chromium keeps a window at least 500 pixels wide: a phone's width
+  // comes from its device emulation (viewport, touch, user agent) instead.
+  if (width < 500)
+    chrome["mobileEmulation"] = {
+        {"deviceMetrics", {{"width", width}, {"height", height}, {"pixelRatio", 1}}}};
   const json caps = {
       {"capabilities",
-       {{"alwaysMatch",
-         {{"browserName", "chrome"},
-          {"goog:chromeOptions", {{"binary", "/usr/bin/chromium"}, {"args", args}}}}}}}};
+       {{"alwaysMatch", {{"browserName", "chrome"}, {"goog:chromeOptions", chrome}}}}}};
   const json r = call("POST", "/session", caps);
   session_ = r.at("sessionId").get<std::string>();
 }
