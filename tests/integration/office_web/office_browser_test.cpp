@@ -17,8 +17,12 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/common/progress.h"
+#include "storage/office/sync_push.h"
 #include "tests/integration/office_web/office_site.h"
 #include "tests/integration/office_web/web_driver.h"
+#include "tests/storage/office/office_environment.h"
+#include "tests/storage/office/tablet_projects.h"
 
 namespace rockface::office_web_test {
 namespace {
@@ -72,6 +76,19 @@ std::string run(const std::string& command) {
   return out;
 }
 
+// Logs in as the office reader and opens the drive of Main drive by clicks.
+void open_drive(WebDriver& d, const OfficeServer& server) {
+  d.go(server.origin() + "/");
+  d.type(d.wait_for("#role"), "office_reader");
+  d.type(d.wait_for("#password"), kOfficePassword);
+  d.click(d.wait_for("#login button[type=submit]"));
+  d.wait_for("a.tunnel-link");
+  d.click(d.element_by_script(
+      "return [...document.querySelectorAll('a.tunnel-link')].find(a => a.textContent === "
+      "'Main drive')"));
+  d.wait_for("table.visits tbody tr");
+}
+
 struct Walk {
   std::string drive_text, visit_text, visit_uuid, cookie;
   double face_drawn = 0, face_turned = 0;
@@ -83,15 +100,7 @@ struct Walk {
 Walk walk(const OfficeServer& server, int width, int height) {
   Walk w;
   WebDriver d(width, height);
-  d.go(server.origin() + "/");
-  d.type(d.wait_for("#role"), "office_reader");
-  d.type(d.wait_for("#password"), kOfficePassword);
-  d.click(d.wait_for("#login button[type=submit]"));
-  d.wait_for("a.tunnel-link");
-  d.click(d.element_by_script(
-      "return [...document.querySelectorAll('a.tunnel-link')].find(a => a.textContent === "
-      "'Main drive')"));
-  d.wait_for("table.visits tbody tr");
+  open_drive(d, server);
   if (const char* keep = std::getenv("ROCKFACE_OFFICE_WEB_SHOTS"))
     cv::imwrite(std::string(keep) + "/drive-" + std::to_string(width) + ".png", d.screenshot());
   w.drive_text = d.script("return document.body.innerText").get<std::string>();
@@ -198,6 +207,36 @@ TEST(OfficeWebBrowser, PhoneWalk) {
   const Walk w = walk(server, 390, 844);
   EXPECT_EQ(w.window_width, 390) << "the page is seen at a phone's width";
   expect_walk(w, "phone");
+}
+
+TEST(OfficeWebBrowser, AVisitSyncedWhileTheDriveIsOpenAppearsWithoutAReload) {
+  if (!WebDriver::available()) GTEST_SKIP() << "chromium and chromium-driver are not installed";
+  const Site s = fresh_site();
+  OfficeServer server(s, 30);
+  WebDriver d(1280, 900);
+  open_drive(d, server);
+  auto text = [&] { return d.script("return document.body.innerText").get<std::string>(); };
+  ASSERT_NE(text().find("4 visits, 2 tablets"), std::string::npos);
+  // A mark in the page's memory: a reload would lose it.
+  d.script("window.rockfaceStillHere = true");
+  office_test::TabletProject more;
+  more.name = "tablet B, second project";
+  more.seed = 3;
+  more.visits = 1;
+  more.first_chainage = 112;
+  office_test::make_tablet_project(s.folder / "c.rockface", more);
+  NoProgress none;
+  storage::office::sync_project(s.folder / "c.rockface",
+                                office_test::as_role(s.database, "tablet_b"), {}, none);
+  // The page asks every 4 s; 20 s leaves room for a loaded machine.
+  bool shown = false;
+  for (int i = 0; i < 100 && !shown; ++i) {
+    shown = text().find("5 visits, 2 tablets") != std::string::npos;
+    if (!shown) std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  EXPECT_TRUE(shown) << "the newly synced visit did not appear";
+  EXPECT_TRUE(d.script("return window.rockfaceStillHere === true").get<bool>())
+      << "the page was reloaded";
 }
 
 }  // namespace

@@ -29,7 +29,8 @@ namespace {
 Site make_site() {
   Site s;
   s.database = fresh_database("Main drive");
-  s.folder = fs::temp_directory_path() / ("rockface-office-web-" + std::to_string(::getpid()));
+  s.folder = fs::temp_directory_path() /
+             ("rockface-office-web-" + std::to_string(::getpid()) + "-" + s.database);
   fs::create_directories(s.folder);
   {
     storage::office::Connection c(as_superuser(s.database));
@@ -76,8 +77,13 @@ const Site& site() {
   return s;
 }
 
-OfficeServer::OfficeServer(double session_minutes) {
-  const Site& s = site();
+Site fresh_site() {
+  return make_site();
+}
+
+OfficeServer::OfficeServer(double session_minutes) : OfficeServer(site(), session_minutes) {}
+
+OfficeServer::OfficeServer(const Site& s, double session_minutes) {
   static int count = 0;
   const fs::path log = s.folder / ("office-serve-" + std::to_string(++count) + ".out");
   const std::string binary = std::string(ROCKFACE_BINARY_DIR) + "/rockface";

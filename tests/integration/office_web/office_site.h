@@ -29,12 +29,15 @@ struct Site {
 
 // Built once per test binary (the first call syncs the tablets).
 const Site& site();
+// Another such site, in a database of its own: for a test that syncs more.
+Site fresh_site();
 
 // A running `rockface office serve` on 127.0.0.1 (any free port); stopped
 // (SIGTERM) when destroyed.
 class OfficeServer {
  public:
   explicit OfficeServer(double session_minutes = 30);
+  OfficeServer(const Site& s, double session_minutes);
   ~OfficeServer();
   OfficeServer(const OfficeServer&) = delete;
   OfficeServer& operator=(const OfficeServer&) = delete;
