@@ -33,6 +33,10 @@ struct OfficeSession {
   std::string csrf;                            // sent with every POST in X-Rockface-CSRF
   std::filesystem::path folder;                // this session's pulled copies, removed with it
   std::map<std::string, PulledTunnel> pulled;  // by tunnel name
+  // The drive pages this session read, by tunnel and filter: the tunnel's
+  // stamp then and the page's JSON. A page polled with nothing synced
+  // since costs one small query.
+  std::map<std::string, std::pair<std::string, std::string>> drives;
 
   explicit OfficeSession(storage::office::Connection c) : db(std::move(c)) {}
   // Removes the pulled copies: the last request on a closed session ends

@@ -214,7 +214,15 @@ class OfficeServer {
         f.from = req.get_param_value("from");
         f.to = req.get_param_value("to");
         f.tablet = req.get_param_value("tablet");
-        send_json(res, office_web::drive_page(s.db, req.get_param_value("tunnel"), f));
+        const std::string tunnel = req.get_param_value("tunnel");
+        const std::string key = tunnel + '\n' + f.from + '\n' + f.to + '\n' + f.tablet;
+        const std::string stamp = office_web::tunnel_stamp(s.db, tunnel);
+        if (s.drives.size() > 16 && !s.drives.count(key)) s.drives.clear();
+        auto& cached = s.drives[key];
+        if (cached.second.empty() || cached.first != stamp)
+          cached = {stamp, office_web::drive_page(s.db, tunnel, f)
+                               .dump(-1, ' ', false, json::error_handler_t::replace)};
+        res.set_content(cached.second, "application/json; charset=utf-8");
       });
     });
     h.Get("/api/stamp", [this](const httplib::Request& req, httplib::Response& res) {
