@@ -337,7 +337,7 @@ BENCHMARK(BM_DriveFirstPaint3000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_FaceTransferAndReport(benchmark::State& state) {
   // One visit with two 24 Mpx photographs and a 250,000-vertex 3D image.
-  const std::string db = fresh_database("face");
+  const std::string db = fresh_database("bench");
   NoProgress none;
   office::sync_project(make_project("one-visit", 1, 6000, 4000, 500),
                        server().socket_conninfo("tablet_1", db), {}, none);
@@ -345,9 +345,9 @@ void BM_FaceTransferAndReport(benchmark::State& state) {
   httplib::Client c("127.0.0.1", s.port);
   c.set_read_timeout(std::chrono::seconds(300));
   const std::string cookie = log_in(c, s.origin());
-  const auto drive = c.Get("/api/drive?tunnel=face", {{"Cookie", cookie}});
+  const auto drive = c.Get("/api/drive?tunnel=bench", {{"Cookie", cookie}});
   const std::string visit = json::parse(drive->body)["visits"][0]["id"];
-  const std::string q = "?tunnel=face&visit=" + visit;
+  const std::string q = "?tunnel=bench&visit=" + visit;
   auto timed = [&](const std::string& path, double& seconds) {
     const auto t0 = Clock::now();
     const auto r = c.Get((path + q).c_str(), {{"Cookie", cookie}});
