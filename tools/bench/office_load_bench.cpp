@@ -348,9 +348,9 @@ void BM_FaceTransferAndReport(benchmark::State& state) {
   const auto drive = c.Get("/api/drive?tunnel=bench", {{"Cookie", cookie}});
   const std::string visit = json::parse(drive->body)["visits"][0]["id"];
   const std::string q = "?tunnel=bench&visit=" + visit;
-  auto timed = [&](const std::string& path, double& seconds) {
+  auto timed = [&](const std::string& path, double& seconds, const std::string& more = "") {
     const auto t0 = Clock::now();
-    const auto r = c.Get((path + q).c_str(), {{"Cookie", cookie}});
+    const auto r = c.Get((path + q + more).c_str(), {{"Cookie", cookie}});
     seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return r && r->status == 200 ? r->body.size() : 0;
   };
@@ -359,7 +359,7 @@ void BM_FaceTransferAndReport(benchmark::State& state) {
   for (auto _ : state) {
     timed("/api/visit", first_open);  // pulls the tunnel for the session
     decimated = timed("/api/visit/mesh", decimated_s);
-    full = timed("/api/visit/mesh?full=1", full_s);
+    full = timed("/api/visit/mesh", full_s, "&full=1");
     pdf = timed("/api/visit/report.pdf", report_s);
   }
   state.counters["visit_first_open_s"] = first_open;
