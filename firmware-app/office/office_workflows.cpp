@@ -109,6 +109,10 @@ std::vector<std::string> run_server_add_admin(const std::string& server, const s
 
 tunnel::DriveSets server_drive(const std::string& server, const std::string& name) {
   office::Connection c(server);
+  return server_drive(c, name);
+}
+
+tunnel::DriveSets server_drive(office::Connection& c, const std::string& name) {
   office::require_compatible_server(c);
   const office::ServerDrive d = office::read_server_drive(c, name);
   std::vector<tunnel::VisitSets> visits;

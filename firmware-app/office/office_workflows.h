@@ -10,6 +10,7 @@
 
 #include "core/common/progress.h"
 #include "core/tunnel/drive_sets.h"
+#include "storage/office/pg_connection.h"
 #include "storage/office/sync_push.h"
 
 namespace rockface::app {
@@ -43,5 +44,7 @@ std::vector<std::string> run_server_add_admin(const std::string& server, const s
 // same sets, tracks and events as `rockface drive` of one project holding
 // those visits (firmware-app/tunnel/project_drive.h).
 tunnel::DriveSets server_drive(const std::string& server, const std::string& tunnel);
+// The same over an open connection (the office's web session).
+tunnel::DriveSets server_drive(storage::office::Connection& c, const std::string& tunnel);
 
 }  // namespace rockface::app

@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cstdlib>
+#include <vector>
 
 namespace rockface::storage::office {
 
@@ -88,14 +89,29 @@ std::span<const std::uint8_t> Result::bytes(int row, int column) const {
 }
 
 Connection::Connection(const std::string& conninfo, int connect_timeout_s)
+    : Connection(conninfo, {}, {}, connect_timeout_s) {}
+
+Connection::Connection(const std::string& conninfo, const std::string& user,
+                       const std::string& password, int connect_timeout_s)
     : label_(masked_conninfo(conninfo)) {
   // Keywords beside the caller's string: libpq takes the last value of a
   // keyword, and expand_dbname lets `conninfo` be a URL or key=value text.
   const std::string timeout = std::to_string(connect_timeout_s);
-  const char* keys[] = {"dbname", "connect_timeout", "application_name", nullptr};
-  const char* values[] = {conninfo.c_str(), connect_timeout_s > 0 ? timeout.c_str() : nullptr,
-                          "rockface", nullptr};
-  conn_ = PQconnectdbParams(keys, values, 1);
+  std::vector<const char*> keys = {"dbname", "application_name"};
+  std::vector<const char*> values = {conninfo.c_str(), "rockface"};
+  if (connect_timeout_s > 0) {
+    keys.push_back("connect_timeout");
+    values.push_back(timeout.c_str());
+  }
+  if (!user.empty()) {
+    keys.push_back("user");
+    values.push_back(user.c_str());
+    keys.push_back("password");
+    values.push_back(password.c_str());
+  }
+  keys.push_back(nullptr);
+  values.push_back(nullptr);
+  conn_ = PQconnectdbParams(keys.data(), values.data(), 1);
   if (!conn_) throw ServerError(label_ + ": cannot connect: out of memory", "", true);
   if (PQstatus(conn_) != CONNECTION_OK) {
     const std::string why = trimmed(PQerrorMessage(conn_));

@@ -86,6 +86,13 @@ class Connection {
   // server by its masked connection string. connect_timeout_s bounds the
   // wait for an unreachable server (0 = libpq's default).
   explicit Connection(const std::string& conninfo, int connect_timeout_s = 10);
+  // The same as a given role with its password (the office's web log-in):
+  // both go to libpq as keywords after `conninfo`, so they override any
+  // user or password it names; the password is checked by the server and
+  // kept nowhere here. A failed log-in throws ServerError with the
+  // server's SQLSTATE-less message masked.
+  Connection(const std::string& conninfo, const std::string& user, const std::string& password,
+             int connect_timeout_s = 10);
   ~Connection();
   Connection(Connection&&) noexcept;
   Connection& operator=(Connection&&) noexcept;

@@ -324,9 +324,15 @@ std::vector<std::string> tunnel_disagreements(const std::vector<ServerRecord>& r
 PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel_name,
                        const fs::path& out, Progress& progress, int connect_timeout_s) {
   if (fs::exists(out)) throw InputError(out.string(), "exists already: pull makes a new project");
-  PullResult result;
   progress.step("connecting to the server", 0);
   Connection server(conninfo, connect_timeout_s);
+  return pull_tunnel(server, tunnel_name, out, progress);
+}
+
+PullResult pull_tunnel(Connection& server, const std::string& tunnel_name, const fs::path& out,
+                       Progress& progress) {
+  if (fs::exists(out)) throw InputError(out.string(), "exists already: pull makes a new project");
+  PullResult result;
   result.server_label = server.label();
   require_compatible_server(server);
   // One snapshot of the server for the whole pull.

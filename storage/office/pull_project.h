@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/common/progress.h"
+#include "storage/office/pg_connection.h"
 
 namespace rockface::storage::office {
 
@@ -28,5 +29,10 @@ struct PullResult {
 PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel,
                        const std::filesystem::path& out, Progress& progress,
                        int connect_timeout_s = 10);
+// The same over an open connection (the office's web session, whose role
+// decides what the pull may read); the connection must be outside a
+// transaction.
+PullResult pull_tunnel(Connection& server, const std::string& tunnel,
+                       const std::filesystem::path& out, Progress& progress);
 
 }  // namespace rockface::storage::office

@@ -1,0 +1,243 @@
+// The office's pages in a real browser (issue 46): headless Chromium over
+// WebDriver against `rockface office serve` on a real PostgreSQL server
+// holding two tablets' synced visits. Log in, open the drive, open a
+// visit, see its 3D face drawn and turn it, fetch its field report; the
+// same walk at a phone's width. Skipped only when Chromium is absent.
+#include <gtest/gtest.h>
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/common/progress.h"
+#include "storage/office/sync_push.h"
+#include "tests/integration/office_web/office_site.h"
+#include "tests/integration/office_web/web_driver.h"
+#include "tests/storage/office/office_environment.h"
+#include "tests/storage/office/tablet_projects.h"
+
+namespace rockface::office_web_test {
+namespace {
+
+using nlohmann::json;
+
+// Pixels of the canvas region that differ from the renderer's clear colour
+// (#20242a) by more than a little in some channel, as a fraction.
+double drawn_fraction(const cv::Mat& shot, const json& rect) {
+  const cv::Rect r(rect[0].get<int>(), rect[1].get<int>(), rect[2].get<int>(), rect[3].get<int>());
+  const cv::Rect in = r & cv::Rect(0, 0, shot.cols, shot.rows);
+  if (in.area() == 0) return 0;
+  int drawn = 0;
+  for (int y = in.y; y < in.y + in.height; ++y)
+    for (int x = in.x; x < in.x + in.width; ++x) {
+      const cv::Vec3b p = shot.at<cv::Vec3b>(y, x);
+      // 24 of 255: above the antialiasing and JPEG-free PNG noise of a
+      // flat background (which is exactly the clear colour).
+      if (std::abs(p[0] - 0x2a) > 24 || std::abs(p[1] - 0x24) > 24 || std::abs(p[2] - 0x20) > 24)
+        ++drawn;
+    }
+  return static_cast<double>(drawn) / in.area();
+}
+
+double changed_fraction(const cv::Mat& a, const cv::Mat& b, const json& rect) {
+  const cv::Rect r(rect[0].get<int>(), rect[1].get<int>(), rect[2].get<int>(), rect[3].get<int>());
+  const cv::Rect in = r & cv::Rect(0, 0, std::min(a.cols, b.cols), std::min(a.rows, b.rows));
+  if (in.area() == 0) return 0;
+  int changed = 0;
+  for (int y = in.y; y < in.y + in.height; ++y)
+    for (int x = in.x; x < in.x + in.width; ++x) {
+      const cv::Vec3b p = a.at<cv::Vec3b>(y, x), q = b.at<cv::Vec3b>(y, x);
+      if (std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]) > 30) ++changed;
+    }
+  return static_cast<double>(changed) / in.area();
+}
+
+void expect_no_raw_data(const std::string& text, const std::string& page) {
+  for (const char* raw : {"{\"", "\":", "undefined", "NaN", "[object", "null", "chainage_text",
+                          "verdict_kind", "dipdir"})
+    EXPECT_EQ(text.find(raw), std::string::npos) << page << " shows raw data: " << raw;
+}
+
+std::string run(const std::string& command) {
+  std::string out;
+  FILE* p = ::popen(command.c_str(), "r");
+  if (!p) return out;
+  char buffer[4096];
+  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, p)) out.append(buffer, n);
+  ::pclose(p);
+  return out;
+}
+
+// Logs in as the office reader and opens the drive of Main drive by clicks.
+void open_drive(WebDriver& d, const OfficeServer& server) {
+  d.go(server.origin() + "/");
+  d.type(d.wait_for("#role"), "office_reader");
+  d.type(d.wait_for("#password"), kOfficePassword);
+  d.click(d.wait_for("#login button[type=submit]"));
+  d.wait_for("a.tunnel-link");
+  d.click(d.element_by_script(
+      "return [...document.querySelectorAll('a.tunnel-link')].find(a => a.textContent === "
+      "'Main drive')"));
+  d.wait_for("table.visits tbody tr");
+}
+
+struct Walk {
+  std::string drive_text, visit_text, visit_uuid, cookie;
+  double face_drawn = 0, face_turned = 0;
+  int page_width = 0, window_width = 0;
+};
+
+// Log in, open the drive of Main drive, open the visit with blocks, wait
+// for its 3D face, turn it.
+Walk walk(const OfficeServer& server, int width, int height) {
+  Walk w;
+  WebDriver d(width, height);
+  open_drive(d, server);
+  if (const char* keep = std::getenv("ROCKFACE_OFFICE_WEB_SHOTS"))
+    cv::imwrite(std::string(keep) + "/drive-" + std::to_string(width) + ".png", d.screenshot());
+  w.drive_text = d.script("return document.body.innerText").get<std::string>();
+  EXPECT_TRUE(d.script("return window.rockfaceInjected === undefined && "
+                       "document.querySelectorAll('img[src=\"x\"]').length === 0")
+                  .get<bool>())
+      << "the note's script ran or its markup became elements";
+  EXPECT_FALSE(d.alert_open());
+  // The visit whose latest analysis has blocks (tablet A's mapped face).
+  d.click(d.element_by_script(
+      "return [...document.querySelectorAll('table.visits tbody tr')].filter(r => "
+      "r.cells[4].textContent !== '0').map(r => r.querySelector('a.visit-link'))[0]"));
+  d.wait_for("table.blocks tbody tr", std::chrono::seconds(90));
+  d.wait_for("#face[data-drawn=yes]", std::chrono::seconds(60));
+  w.visit_uuid = d.script("return location.hash.split('/').pop()").get<std::string>();
+  w.visit_text = d.script("return document.body.innerText").get<std::string>();
+  d.script("document.getElementById('face-canvas').scrollIntoView()");
+  // The photograph's texture arrives after the mesh.
+  std::this_thread::sleep_for(std::chrono::milliseconds(800));
+  const json rect = d.script(
+      "const r = document.getElementById('face-canvas').getBoundingClientRect(); return "
+      "[Math.round(r.left), Math.round(r.top), Math.round(r.width), Math.round(r.height)]");
+  const cv::Mat before = d.screenshot();
+  w.face_drawn = drawn_fraction(before, rect);
+  // ROCKFACE_OFFICE_WEB_SHOTS=FOLDER keeps the screenshots for a person to look at.
+  if (const char* keep = std::getenv("ROCKFACE_OFFICE_WEB_SHOTS"))
+    cv::imwrite(std::string(keep) + "/face-" + std::to_string(width) + ".png", before);
+  d.drag(d.wait_for("#face-canvas"), width / 5, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  w.face_turned = changed_fraction(before, d.screenshot(), rect);
+  w.page_width = d.script("return document.documentElement.scrollWidth").get<int>();
+  w.window_width = d.script("return window.innerWidth").get<int>();
+  w.cookie = d.cookie("rockface_session");
+  return w;
+}
+
+void expect_walk(const Walk& w, const std::string& name) {
+  EXPECT_NE(w.drive_text.find("Drive of Main drive"), std::string::npos) << name;
+  EXPECT_NE(w.drive_text.find("4 visits, 2 tablets"), std::string::npos) << name;
+  EXPECT_NE(w.drive_text.find(" m"), std::string::npos) << name << ": chainage without unit";
+  EXPECT_NE(w.drive_text.find(kScriptNote), std::string::npos)
+      << name << ": the note is shown as the text it is";
+  expect_no_raw_data(w.drive_text, name + " drive");
+  EXPECT_NE(w.visit_text.find("°"), std::string::npos) << name;
+  EXPECT_NE(w.visit_text.find(" mm"), std::string::npos) << name << ": precision without unit";
+  EXPECT_NE(w.visit_text.find(" m³"), std::string::npos) << name << ": volume without unit";
+  expect_no_raw_data(w.visit_text, name + " visit");
+  // The face covers about half the canvas in the first view; a tenth
+  // drawn says it is drawn at all, not how well.
+  EXPECT_GT(w.face_drawn, 0.1) << name << ": the 3D face is blank";
+  // A drag of a fifth of the window turns the face by about 90°: far more
+  // than 2 % of the canvas changes.
+  EXPECT_GT(w.face_turned, 0.02) << name << ": dragging did not turn the face";
+  EXPECT_LE(w.page_width, w.window_width) << name << ": the page is wider than the window";
+}
+
+TEST(OfficeWebBrowser, LaptopWalkAndTheFieldReport) {
+  if (!WebDriver::available()) GTEST_SKIP() << "chromium and chromium-driver are not installed";
+  OfficeServer server;
+  const Walk w = walk(server, 1280, 900);
+  expect_walk(w, "laptop");
+
+  // The report, made on demand from the browser's session.
+  httplib::Client c("127.0.0.1", server.port());
+  c.set_read_timeout(std::chrono::seconds(120));
+  const httplib::Headers auth = {{"Cookie", "rockface_session=" + w.cookie}};
+  const std::string q = "?tunnel=Main%20drive&visit=" + w.visit_uuid;
+  const auto visit = c.Get(("/api/visit" + q).c_str(), auth);
+  ASSERT_TRUE(visit);
+  ASSERT_EQ(visit->status, 200) << visit->body;
+  const json v = json::parse(visit->body);
+  ASSERT_FALSE(v["blocks"].empty());
+  const auto pdf = c.Get(("/api/visit/report.pdf" + q).c_str(), auth);
+  ASSERT_TRUE(pdf);
+  ASSERT_EQ(pdf->status, 200) << pdf->body;
+  ASSERT_EQ(pdf->body.rfind("%PDF", 0), 0u);
+  const std::string file = site().folder.string() + "/report.pdf";
+  std::ofstream(file, std::ios::binary) << pdf->body;
+  const std::string text = run("pdftotext -layout " + file + " -");
+  for (const auto& b : v["blocks"])
+    EXPECT_NE(text.find(b["label"].get<std::string>()), std::string::npos)
+        << "block " << b["label"] << " is not in the report";
+  for (const auto& b : v["blocks"])
+    EXPECT_NE(w.visit_text.find(b["label"].get<std::string>()), std::string::npos);
+  // The exports, as downloads.
+  const auto exports = c.Get(("/api/visit/exports" + q).c_str(), auth);
+  ASSERT_TRUE(exports);
+  ASSERT_EQ(exports->status, 200) << exports->body;
+  const json files = json::parse(exports->body)["files"];
+  ASSERT_FALSE(files.empty());
+  const std::string first = files[0]["name"];
+  const auto download = c.Get(("/api/visit/export" + q + "&name=" + first).c_str(), auth);
+  ASSERT_TRUE(download);
+  EXPECT_EQ(download->status, 200);
+  EXPECT_FALSE(download->body.empty());
+  const auto traversal = c.Get(("/api/visit/export" + q + "&name=../../report.pdf").c_str(), auth);
+  ASSERT_TRUE(traversal);
+  EXPECT_EQ(traversal->status, 404);
+}
+
+TEST(OfficeWebBrowser, PhoneWalk) {
+  if (!WebDriver::available()) GTEST_SKIP() << "chromium and chromium-driver are not installed";
+  OfficeServer server;
+  const Walk w = walk(server, 390, 844);
+  EXPECT_EQ(w.window_width, 390) << "the page is seen at a phone's width";
+  expect_walk(w, "phone");
+}
+
+TEST(OfficeWebBrowser, AVisitSyncedWhileTheDriveIsOpenAppearsWithoutAReload) {
+  if (!WebDriver::available()) GTEST_SKIP() << "chromium and chromium-driver are not installed";
+  const Site s = fresh_site();
+  OfficeServer server(s, 30);
+  WebDriver d(1280, 900);
+  open_drive(d, server);
+  auto text = [&] { return d.script("return document.body.innerText").get<std::string>(); };
+  ASSERT_NE(text().find("4 visits, 2 tablets"), std::string::npos);
+  // A mark in the page's memory: a reload would lose it.
+  d.script("window.rockfaceStillHere = true");
+  office_test::TabletProject more;
+  more.name = "tablet B, second project";
+  more.seed = 3;
+  more.visits = 1;
+  more.first_chainage = 112;
+  office_test::make_tablet_project(s.folder / "c.rockface", more);
+  NoProgress none;
+  storage::office::sync_project(s.folder / "c.rockface",
+                                office_test::as_role(s.database, "tablet_b"), {}, none);
+  // The page asks every 4 s; 20 s leaves room for a loaded machine.
+  bool shown = false;
+  for (int i = 0; i < 100 && !shown; ++i) {
+    shown = text().find("5 visits, 2 tablets") != std::string::npos;
+    if (!shown) std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  EXPECT_TRUE(shown) << "the newly synced visit did not appear";
+  EXPECT_TRUE(d.script("return window.rockfaceStillHere === true").get<bool>())
+      << "the page was reloaded";
+}
+
+}  // namespace
+}  // namespace rockface::office_web_test

@@ -1,0 +1,124 @@
+#include "tests/integration/office_web/office_site.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+
+#include "core/common/progress.h"
+#include "storage/office/pg_connection.h"
+#include "storage/office/server_schema.h"
+#include "storage/office/sync_push.h"
+#include "storage/project/project_sqlite.h"
+#include "tests/storage/office/office_environment.h"
+#include "tests/storage/office/tablet_projects.h"
+#include "tests/support/test_paths.h"
+
+namespace rockface::office_web_test {
+
+namespace fs = std::filesystem;
+using namespace office_test;
+
+namespace {
+
+Site make_site() {
+  Site s;
+  s.database = fresh_database("Main drive");
+  s.folder = fs::temp_directory_path() /
+             ("rockface-office-web-" + std::to_string(::getpid()) + "-" + s.database);
+  fs::create_directories(s.folder);
+  {
+    storage::office::Connection c(as_superuser(s.database));
+    storage::office::add_tunnel(c, "North adit");
+    storage::office::add_office_user(c, "adit_office", "North adit");
+  }
+  server().psql(std::string("ALTER ROLE office_reader PASSWORD '") + kOfficePassword +
+                    "'; ALTER ROLE tablet_a PASSWORD '" + kTabletPassword +
+                    "'; ALTER ROLE adit_office PASSWORD '" + kAditPassword + "'",
+                s.database);
+
+  TabletProject a;
+  a.name = "tablet A";
+  a.visits = 1;
+  a.dense_face_visit = true;  // joints, sets and blocks to show
+  TabletProject b;
+  b.name = "tablet B";
+  b.seed = 2;
+  b.first_chainage = 107;
+  make_tablet_project(s.folder / "a.rockface", a);
+  make_tablet_project(s.folder / "b.rockface", b);
+  {
+    storage::sqlite::Connection db(s.folder / "a.rockface",
+                                   storage::sqlite::Connection::Access::read_write);
+    std::string note = kScriptNote;
+    std::string quoted;
+    for (char ch : note) quoted += ch == '\'' ? std::string("''") : std::string(1, ch);
+    db.exec("UPDATE visit SET note = '" + quoted + "' WHERE id = (SELECT min(id) FROM visit)",
+            "writing the test's note");
+  }
+  NoProgress none;
+  storage::office::sync_project(s.folder / "a.rockface", as_role(s.database, "tablet_a"), {}, none);
+  storage::office::sync_project(s.folder / "b.rockface", as_role(s.database, "tablet_b"), {}, none);
+  // Over TCP with TLS (the socket trusts every role): passwords are checked.
+  s.server = "host=127.0.0.1 port=" + std::to_string(server().port()) + " dbname=" + s.database +
+             " sslmode=verify-full sslrootcert=" + server().ca_certificate().string();
+  return s;
+}
+
+}  // namespace
+
+const Site& site() {
+  static const Site s = make_site();
+  return s;
+}
+
+Site fresh_site() {
+  return make_site();
+}
+
+OfficeServer::OfficeServer(double session_minutes) : OfficeServer(site(), session_minutes) {}
+
+OfficeServer::OfficeServer(const Site& s, double session_minutes) {
+  static int count = 0;
+  const fs::path log = s.folder / ("office-serve-" + std::to_string(++count) + ".out");
+  const std::string binary = std::string(ROCKFACE_BINARY_DIR) + "/rockface";
+  const std::string minutes = std::to_string(session_minutes);
+  const std::string work = s.folder.string();
+  pid_ = ::fork();
+  if (pid_ == 0) {
+    if (!std::freopen(log.c_str(), "w", stdout)) ::_exit(126);
+    ::execl(binary.c_str(), binary.c_str(), "office", "serve", s.server.c_str(), "--listen",
+            "127.0.0.1:0", "--session-minutes", minutes.c_str(), "--work", work.c_str(),
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // "office: serving http://127.0.0.1:PORT/ ..." once it listens: within a
+  // second (issue 46); 20 s before this says it did not start at all.
+  for (int i = 0; i < 200 && port_ == 0; ++i) {
+    std::ifstream in(log);
+    std::string text;
+    std::getline(in, text);
+    const std::size_t at = text.find("127.0.0.1:");
+    if (at != std::string::npos && text.find('/', at) != std::string::npos)
+      port_ = std::stoi(text.substr(at + 10));
+    else
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  if (port_ == 0)
+    throw std::runtime_error("rockface office serve did not start: see " + log.string());
+}
+
+OfficeServer::~OfficeServer() {
+  if (pid_ > 0) {
+    ::kill(pid_, SIGTERM);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+  }
+}
+
+}  // namespace rockface::office_web_test

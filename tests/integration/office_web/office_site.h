@@ -1,0 +1,52 @@
+#pragma once
+// The office web suite's site: one real PostgreSQL server (with TLS and
+// passwords on 127.0.0.1, tests/storage/office/office_environment.h), a
+// database where two tablets synced their projects of tunnel "Main drive"
+// (tablet A with a mapped face: joints, sets, blocks; tablet B two more
+// visits further on), a second tunnel "North adit" with an office role of
+// its own, and a real `rockface office serve` process on a loopback port.
+#include <sys/types.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+namespace rockface::office_web_test {
+
+// Passwords the site's roles log in with (PostgreSQL checks them: scram).
+inline constexpr const char* kOfficePassword = "office pass 1";
+inline constexpr const char* kTabletPassword = "tablet pass 2";
+inline constexpr const char* kAditPassword = "adit pass 3";
+// A note on one of tablet A's visits: a script that must stay text.
+inline constexpr const char* kScriptNote =
+    "<script>window.rockfaceInjected=1</script><img src=x onerror=\"window.rockfaceInjected=2\">";
+
+struct Site {
+  std::string database;
+  std::string server;  // libpq key=value text without user: what `office serve` takes
+  std::filesystem::path folder;
+};
+
+// Built once per test binary (the first call syncs the tablets).
+const Site& site();
+// Another such site, in a database of its own: for a test that syncs more.
+Site fresh_site();
+
+// A running `rockface office serve` on 127.0.0.1 (any free port); stopped
+// (SIGTERM) when destroyed.
+class OfficeServer {
+ public:
+  explicit OfficeServer(double session_minutes = 30);
+  OfficeServer(const Site& s, double session_minutes);
+  ~OfficeServer();
+  OfficeServer(const OfficeServer&) = delete;
+  OfficeServer& operator=(const OfficeServer&) = delete;
+  int port() const { return port_; }
+  std::string origin() const { return "http://127.0.0.1:" + std::to_string(port_); }
+
+ private:
+  pid_t pid_ = -1;
+  int port_ = 0;
+};
+
+}  // namespace rockface::office_web_test

@@ -1,0 +1,377 @@
+// The office in a browser (issue 46), on loopback, bounded in count and
+// time: `rockface office serve` (a child process) on a real PostgreSQL
+// server (tests/support/postgres_server.h, Unix socket with trust: the
+// log-ins' passwords are not checked here, fsync off) holding 3,000 visits
+// of three tablets (1,000 synthetic visits each, synced as a tablet syncs).
+//  - the server's start to listening, on that database;
+//  - 50 client threads, each logged in, reading the drive of 3,000 visits
+//    for a fixed time while a fourth tablet syncs: errors, p50 / p95, the
+//    server's peak memory;
+//  - the drive's first paint in headless Chromium (3,000 rows drawn);
+//  - a visit with a 250,000-vertex 3D image: the decimated face's bytes and
+//    time, the full mesh's, and the field report's generation on demand.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
+
+#include "core/common/progress.h"
+#include "core/tunnel/design_profile.h"
+#include "storage/office/pg_connection.h"
+#include "storage/office/server_schema.h"
+#include "storage/office/sqlite_rows.h"
+#include "storage/office/sync_push.h"
+#include "storage/project/project_store.h"
+#include "tests/integration/office_web/web_driver.h"
+#include "tests/support/postgres_server.h"
+#include "tests/support/sample_records.h"
+
+#include <httplib.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rockface;
+namespace office = storage::office;
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+test::PostgresServer& server() {
+  static test::PostgresServer& s = []() -> test::PostgresServer& {
+    static test::PostgresServer started;
+    // One connection per logged-in person: 50 clients, a syncing tablet and
+    // the benchmark's own need more than the test server's 40 (Debian's
+    // default is 100).
+    started.psql("ALTER SYSTEM SET max_connections = 100", "postgres");
+    started.stop();
+    started.start();
+    return started;
+  }();
+  return s;
+}
+
+fs::path folder() {
+  static const fs::path dir =
+      fs::temp_directory_path() / ("rockface-office-load-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string fresh_database(const std::string& tunnel) {
+  static int n = 0;
+  const std::string db = "load" + std::to_string(++n);
+  server().psql("CREATE DATABASE " + db, "postgres");
+  office::Connection c(server().socket_conninfo(test::PostgresServer::kSuperuser, db));
+  office::init_server(c);
+  office::add_tunnel(c, tunnel);
+  for (const char* t : {"tablet_1", "tablet_2", "tablet_3", "tablet_4"})
+    office::add_tablet(c, t, tunnel);
+  office::add_office_user(c, "office_bench");
+  return db;
+}
+
+// A rough face on a grid of side x side vertices, textured.
+storage::Model grid_model(storage::RecordId capture, int side) {
+  storage::Model m;
+  m.capture_id = capture;
+  m.texture_capture_id = capture;
+  m.texture_side = "left";
+  m.preset = "standard";
+  std::mt19937 rng(7);
+  std::normal_distribution<double> rough(0, 0.02);
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      m.mesh.vertices.push_back({4.0 * i / side, 0.3 + rough(rng), 4.0 * j / side});
+      m.mesh.texcoords.push_back({static_cast<float>(i) / side, static_cast<float>(j) / side});
+    }
+  for (int i = 0; i + 1 < side; ++i)
+    for (int j = 0; j + 1 < side; ++j) {
+      const int a = i * side + j;
+      m.mesh.faces.push_back({a, a + side, a + 1});
+      m.mesh.faces.push_back({a + 1, a + side, a + side + 1});
+    }
+  m.registration.kind = "none";
+  return m;
+}
+
+void add_visit(storage::ProjectStore& store, int i, int width, int height, int mesh_side) {
+  const storage::RecordId visit = store.begin_visit("bench visit " + std::to_string(i));
+  const storage::RecordId cap =
+      store.save_capture(storage::test::sample_capture(visit, i, width, height));
+  const storage::RecordId model = store.save_model(grid_model(cap, mesh_side));
+  std::mt19937 rng(static_cast<unsigned>(i));
+  std::normal_distribution<double> jitter(0, 2.0);
+  std::vector<storage::Measurement> planes;
+  for (const auto& [dip, dipdir] :
+       std::vector<std::pair<double, double>>{{70, 120}, {45, 300}, {20, 30}})
+    for (int k = 0; k < 6; ++k) {
+      storage::Measurement m;
+      m.visit_id = visit;
+      m.model_id = model;
+      m.label = "T" + std::to_string(planes.size() + 1);
+      m.points = {{0, 3.0 * i, 0}, {0.5, 3.0 * i, 0.4}, {1, 3.0 * i, 1}};
+      m.dip_deg = std::clamp(dip + jitter(rng), 0.0, 90.0);
+      m.dipdir_deg = std::fmod(dipdir + jitter(rng) + 360, 360);
+      planes.push_back(m);
+    }
+  store.save_measurements(visit, planes);
+  store.save_analysis(storage::test::sample_analysis(visit, model));
+  storage::VisitPlacement p;
+  p.visit_id = visit;
+  p.chainage = 3.0 * i;
+  store.save_visit_placement(p);
+}
+
+fs::path make_project(const std::string& name, int visits, int width, int height, int side) {
+  const fs::path file = folder() / (name + ".rockface");
+  if (fs::exists(file)) return file;
+  storage::ProjectInfo info;
+  info.name = name;
+  storage::ProjectStore store = storage::ProjectStore::create(file, info);
+  storage::TunnelRecord tunnel;
+  tunnel.name = "bench";
+  tunnel.stations = {{0, {0, 0, 0}}, {10000, {0, 10000, 0}}};
+  tunnel.radii = {0};
+  tunnel.profile = tunnel::circle_profile(3.0);
+  store.save_tunnel(tunnel);
+  for (int i = 0; i < visits; ++i) add_visit(store, i, width, height, side);
+  return file;
+}
+
+fs::path another_tablets_copy(const fs::path& file, const std::string& name) {
+  const fs::path copy = folder() / (name + ".rockface");
+  fs::remove(copy);
+  fs::copy_file(file, copy);
+  storage::sqlite::Connection db(copy, storage::sqlite::Connection::Access::read_write);
+  for (const char* t :
+       {"project", "visit", "camera_body", "calibration", "image", "capture", "model",
+        "measurement", "joint_set", "joint", "analysis", "block", "action_log"})
+    db.exec(std::string("UPDATE ") + t +
+                " SET uuid = lower(hex(randomblob(4)) || '-' || hex(randomblob(2)) || '-4' || "
+                "substr(hex(randomblob(2)), 2) || '-a' || substr(hex(randomblob(2)), 2) || '-' "
+                "|| hex(randomblob(6)))",
+            "new uuids");
+  db.exec("DELETE FROM sync_record; DELETE FROM sync_run; DELETE FROM sync_target", "reset");
+  return copy;
+}
+
+// The 3,000-visit database, made once.
+const std::string& big_database() {
+  static const std::string db = [] {
+    const std::string name = fresh_database("bench");
+    const fs::path file = make_project("thousand", 1000, 640, 480, 50);
+    NoProgress none;
+    for (int t = 1; t <= 3; ++t)
+      office::sync_project(another_tablets_copy(file, "tablet" + std::to_string(t)),
+                           server().socket_conninfo("tablet_" + std::to_string(t), name), {}, none);
+    return name;
+  }();
+  return db;
+}
+
+// `rockface office serve` as a child process; the time to its listening.
+struct Served {
+  pid_t pid = -1;
+  int port = 0;
+  double start_s = 0;
+  explicit Served(const std::string& db) {
+    const std::string conninfo = "host=" + server().folder().string() +
+                                 " port=" + std::to_string(server().port()) + " dbname=" + db;
+    // A log of its own: an earlier server's line must not be read as this one's.
+    static int count = 0;
+    const fs::path log = folder() / ("serve-" + std::to_string(++count) + ".out");
+    const std::string binary = std::string(ROCKFACE_BINARY_DIR) + "/rockface";
+    const auto t0 = Clock::now();
+    pid = ::fork();
+    if (pid == 0) {
+      if (!std::freopen(log.c_str(), "w", stdout)) ::_exit(126);
+      ::execl(binary.c_str(), binary.c_str(), "office", "serve", conninfo.c_str(), "--listen",
+              "127.0.0.1:0", "--work", folder().c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    while (port == 0 && Clock::now() - t0 < std::chrono::seconds(30)) {
+      std::ifstream in(log);
+      std::string line;
+      std::getline(in, line);
+      const auto at = line.find("127.0.0.1:");
+      if (at != std::string::npos && line.find('/', at) != std::string::npos)
+        port = std::stoi(line.substr(at + 10));
+      else
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    start_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+  ~Served() {
+    ::kill(pid, SIGTERM);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+  }
+  std::string origin() const { return "http://127.0.0.1:" + std::to_string(port); }
+  double peak_rss_mb() const {
+    std::ifstream in("/proc/" + std::to_string(pid) + "/status");
+    std::string line;
+    while (std::getline(in, line))
+      if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+    return 0;
+  }
+};
+
+std::string log_in(httplib::Client& c, const std::string& origin) {
+  const auto r =
+      c.Post("/api/login", {{"Origin", origin}},
+             json{{"role", "office_bench"}, {"password", "trust"}}.dump(), "application/json");
+  if (!r || r->status != 200) return "";
+  const std::string set = r->get_header_value("Set-Cookie");
+  return set.substr(0, set.find(';'));
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(p * static_cast<double>(v.size() - 1))];
+}
+
+void BM_OfficeServeStart3000(benchmark::State& state) {
+  const std::string& db = big_database();
+  double start = 0;
+  for (auto _ : state) {
+    Served s(db);
+    start = s.start_s;
+  }
+  state.counters["start_s"] = start;
+}
+BENCHMARK(BM_OfficeServeStart3000)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
+  const std::string& db = big_database();
+  const fs::path small = make_project("small", 20, 640, 480, 50);
+  std::vector<double> latencies;
+  std::atomic<int> errors{0}, requests{0};
+  double rss = 0;
+  for (auto _ : state) {
+    Served s(db);
+    std::mutex lock;
+    std::atomic<bool> stop{false};
+    std::thread tablet([&] {
+      NoProgress none;
+      const fs::path copy = another_tablets_copy(small, "tablet4");
+      office::sync_project(copy, server().socket_conninfo("tablet_4", db), {}, none);
+    });
+    std::vector<std::thread> clients;
+    for (int i = 0; i < 50; ++i)
+      clients.emplace_back([&] {
+        httplib::Client c("127.0.0.1", s.port);
+        c.set_read_timeout(std::chrono::seconds(120));
+        const std::string cookie = log_in(c, s.origin());
+        if (cookie.empty()) {
+          ++errors;
+          return;
+        }
+        std::vector<double> mine;
+        while (!stop) {
+          const auto t0 = Clock::now();
+          const auto r = c.Get("/api/drive?tunnel=bench", {{"Cookie", cookie}});
+          mine.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+          ++requests;
+          if (!r || r->status != 200) ++errors;
+        }
+        std::lock_guard guard(lock);
+        latencies.insert(latencies.end(), mine.begin(), mine.end());
+      });
+    // Bounded: 60 s of load, then every client finishes its request.
+    std::this_thread::sleep_for(std::chrono::seconds(60));
+    stop = true;
+    for (auto& t : clients) t.join();
+    tablet.join();
+    rss = s.peak_rss_mb();
+  }
+  state.counters["requests"] = requests.load();
+  state.counters["errors"] = errors.load();
+  state.counters["p50_ms"] = percentile(latencies, 0.5);
+  state.counters["p95_ms"] = percentile(latencies, 0.95);
+  state.counters["server_peak_RSS_MB"] = rss;
+}
+BENCHMARK(BM_Office50ClientsDrive3000WhileATabletSyncs)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+void BM_DriveFirstPaint3000(benchmark::State& state) {
+  if (!office_web_test::WebDriver::available()) {
+    state.SkipWithError("chromium is not installed");
+    return;
+  }
+  const std::string& db = big_database();
+  Served s(db);
+  double paint = 0;
+  int rows = 0;
+  for (auto _ : state) {
+    office_web_test::WebDriver d(1280, 900);
+    d.go(s.origin() + "/");
+    d.type(d.wait_for("#role"), "office_bench");
+    d.type(d.wait_for("#password"), "trust");
+    d.click(d.wait_for("#login button[type=submit]"));
+    d.wait_for("a.tunnel-link");
+    const auto t0 = Clock::now();
+    d.click(d.wait_for("a.tunnel-link"));
+    d.wait_for("table.visits tbody tr", std::chrono::seconds(120));
+    paint = std::chrono::duration<double>(Clock::now() - t0).count();
+    rows = d.script("return document.querySelectorAll('table.visits tbody tr').length").get<int>();
+  }
+  state.counters["first_paint_s"] = paint;
+  state.counters["rows"] = rows;
+}
+BENCHMARK(BM_DriveFirstPaint3000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_FaceTransferAndReport(benchmark::State& state) {
+  // One visit with two 24 Mpx photographs and a 250,000-vertex 3D image.
+  const std::string db = fresh_database("bench");
+  NoProgress none;
+  office::sync_project(make_project("one-visit", 1, 6000, 4000, 500),
+                       server().socket_conninfo("tablet_1", db), {}, none);
+  Served s(db);
+  httplib::Client c("127.0.0.1", s.port);
+  c.set_read_timeout(std::chrono::seconds(300));
+  const std::string cookie = log_in(c, s.origin());
+  const auto drive = c.Get("/api/drive?tunnel=bench", {{"Cookie", cookie}});
+  const std::string visit = json::parse(drive->body)["visits"][0]["id"];
+  const std::string q = "?tunnel=bench&visit=" + visit;
+  auto timed = [&](const std::string& path, double& seconds, const std::string& more = "") {
+    const auto t0 = Clock::now();
+    const auto r = c.Get((path + q + more).c_str(), {{"Cookie", cookie}});
+    seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return r && r->status == 200 ? r->body.size() : 0;
+  };
+  double first_open = 0, decimated_s = 0, full_s = 0, report_s = 0;
+  std::size_t decimated = 0, full = 0, pdf = 0;
+  for (auto _ : state) {
+    timed("/api/visit", first_open);  // pulls the tunnel for the session
+    decimated = timed("/api/visit/mesh", decimated_s);
+    full = timed("/api/visit/mesh", full_s, "&full=1");
+    pdf = timed("/api/visit/report.pdf", report_s);
+  }
+  state.counters["visit_first_open_s"] = first_open;
+  state.counters["face_kB"] = static_cast<double>(decimated) / 1024;
+  state.counters["face_s"] = decimated_s;
+  state.counters["full_face_kB"] = static_cast<double>(full) / 1024;
+  state.counters["full_face_s"] = full_s;
+  state.counters["report_s"] = report_s;
+  state.counters["report_kB"] = static_cast<double>(pdf) / 1024;
+}
+BENCHMARK(BM_FaceTransferAndReport)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

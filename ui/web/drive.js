@@ -1,0 +1,111 @@
+// A tunnel's drive: a strip along the chainage with every visit, each
+// set's dip and dip direction against chainage (new, turning and vanishing
+// sets flagged), the visits' blocks; filters by date and tablet; the page
+// asks the server every few seconds whether a tablet synced and redraws
+// when one did.
+import { get } from './api.js';
+import { el, svg, table, section, setColour } from './dom.js';
+
+let poll = null;
+const POLL_MS = 4000;
+
+export function stopDrive() {
+  if (poll) clearInterval(poll);
+  poll = null;
+}
+
+function chart(title, unit, visits, tracks, value, lo, hi) {
+  const w = 900, h = 170, left = 48, right = 12, top = 22, bottom = 28;
+  const placed = visits.filter((v) => typeof v.chainage === 'number');
+  const chs = placed.map((v) => v.chainage).concat(tracks.flatMap((t) => t.points.map((p) => p.chainage)));
+  let c0 = Math.min(...chs), c1 = Math.max(...chs);
+  if (!isFinite(c0)) { c0 = 0; c1 = 1; }
+  if (c1 - c0 < 1) { c0 -= 0.5; c1 += 0.5; }
+  const x = (c) => left + ((c - c0) / (c1 - c0)) * (w - left - right);
+  const y = (v) => top + (1 - (v - lo) / (hi - lo)) * (h - top - bottom);
+  const g = svg('svg', { viewBox: `0 0 ${w} ${h}`, class: 'chart', role: 'img', 'aria-label': title });
+  g.append(svg('text', { x: 4, y: 14, class: 'chart-title', text: `${title} (${unit})` }));
+  for (const v of [lo, (lo + hi) / 2, hi]) {
+    g.append(svg('line', { x1: left, x2: w - right, y1: y(v), y2: y(v), class: 'grid' }));
+    g.append(svg('text', { x: left - 4, y: y(v) + 4, class: 'axis', 'text-anchor': 'end', text: `${v}${unit}` }));
+  }
+  for (const [c, anchor] of [[c0, 'start'], [(c0 + c1) / 2, 'middle'], [c1, 'end']])
+    g.append(svg('text', { x: x(c), y: h - 8, class: 'axis', 'text-anchor': anchor, text: `ch ${c.toFixed(1)} m` }));
+  tracks.forEach((t, i) => {
+    const pts = t.points.map((p) => `${x(p.chainage).toFixed(1)},${y(value(p)).toFixed(1)}`).join(' ');
+    g.append(svg('polyline', { points: pts, class: 'track', stroke: setColour(i) }));
+    for (const p of t.points) {
+      const dot = svg('circle', { cx: x(p.chainage), cy: y(value(p)), r: p.turned ? 6 : 4, fill: setColour(i), class: p.turned ? 'turned' : '' });
+      dot.append(svg('title', { text: `${t.name}, ${p.text}${p.turned ? ' — turned' : ''}` }));
+      g.append(dot);
+    }
+  });
+  return g;
+}
+
+function strip(visits) {
+  const w = 900, h = 60, left = 48, right = 12;
+  const placed = visits.filter((v) => typeof v.chainage === 'number');
+  const g = svg('svg', { viewBox: `0 0 ${w} ${h}`, class: 'chart strip', role: 'img', 'aria-label': 'visits along the drive' });
+  g.append(svg('text', { x: 4, y: 14, class: 'chart-title', text: 'Visits along the drive (chainage, m); red: blocks that move' }));
+  if (!placed.length) return g;
+  let c0 = Math.min(...placed.map((v) => v.chainage)), c1 = Math.max(...placed.map((v) => v.chainage));
+  if (c1 - c0 < 1) { c0 -= 0.5; c1 += 0.5; }
+  const x = (c) => left + ((c - c0) / (c1 - c0)) * (w - left - right);
+  g.append(svg('line', { x1: left, x2: w - right, y1: 36, y2: 36, class: 'axis-line' }));
+  for (const v of placed) {
+    const a = svg('a', { href: `#/visit/${encodeURIComponent(v.tunnel)}/${v.id}` });
+    const mark = svg('rect', { x: x(v.chainage) - 3, y: 26, width: 6, height: 20, class: v.moving > 0 ? 'visit moving' : 'visit' });
+    mark.append(svg('title', { text: `${v.date}, ${v.tablet}, ch ${v.chainage_text}, ${v.blocks} blocks, ${v.moving} move` }));
+    a.append(mark);
+    g.append(a);
+  }
+  return g;
+}
+
+async function draw(host, tunnel, filter, stamp) {
+  const d = await get('/api/drive', { tunnel, ...filter });
+  stamp.value = d.stamp;
+  for (const v of d.visits) v.tunnel = tunnel;
+  const tablet = el('select', { id: 'filter-tablet' }, el('option', { value: '', text: 'every tablet' }),
+    ...d.tablets.map((t) => el('option', { value: t, text: t })));
+  tablet.value = filter.tablet || '';
+  const from = el('input', { type: 'date', id: 'filter-from', value: filter.from || '' });
+  const to = el('input', { type: 'date', id: 'filter-to', value: filter.to || '' });
+  const apply = () => {
+    filter.from = from.value; filter.to = to.value; filter.tablet = tablet.value;
+    draw(host, tunnel, filter, stamp);
+  };
+  for (const f of [tablet, from, to]) f.addEventListener('change', apply);
+  const filters = el('form', { className: 'filters' },
+    el('label', { text: 'From ' }, from), el('label', { text: 'To ' }, to), el('label', { text: 'Tablet ' }, tablet));
+  const setRows = d.sets.map((t, i) => [el('span', { className: `set-dot set-${i % 8}`, text: t.name }),
+    t.points.length ? t.points[t.points.length - 1].text : '–', t.flags || '–', (t.events || []).join('; ') || '–']);
+  const visitRows = d.visits.map((v) => [
+    el('a', { href: `#/visit/${encodeURIComponent(tunnel)}/${v.id}`, text: v.date, className: 'visit-link' }),
+    v.chainage_text, v.tablet, v.project, String(v.blocks), String(v.moving), v.largest_block, v.note || '']);
+  host.replaceChildren(
+    el('h1', { text: `Drive of ${tunnel}` }),
+    filters,
+    el('p', { className: 'muted', id: 'drive-count', text: `${d.visits.length} visits, ${d.tablets.length} tablets` }),
+    strip(d.visits),
+    d.sets.length ? chart('Dip of each set', '°', d.visits, d.sets, (p) => p.dip, 0, 90) : el('p', { text: d.sets_note }),
+    d.sets.length ? chart('Dip direction of each set', '°', d.visits, d.sets, (p) => p.dipdir, 0, 360) : null,
+    section('Sets along the drive', table(['Set', 'Last seen (dip / dip direction ± α95)', 'Flags', 'Events'], setRows)),
+    section('Visits', table(['Date', 'Chainage', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note'], visitRows, 'visits')));
+}
+
+export async function showDrive(host, tunnel) {
+  const filter = { from: '', to: '', tablet: '' };
+  const stamp = { value: '' };
+  await draw(host, tunnel, filter, stamp);
+  poll = setInterval(async () => {
+    try {
+      const s = await get('/api/stamp', { tunnel });
+      if (s.stamp !== stamp.value) await draw(host, tunnel, filter, stamp);
+    } catch (err) {
+      stopDrive();
+      window.dispatchEvent(new CustomEvent('rockface-logged-out', { detail: err.message }));
+    }
+  }, POLL_MS);
+}

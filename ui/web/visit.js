@@ -1,0 +1,73 @@
+// A visit: its photographs (a click zooms), its 3D face, joints and sets
+// with the stereonet, blocks with verdict, margin, mode, FoS and motion
+// after failure, the round in the tunnel, the wedges, the rock mass, the
+// support, the field report as PDF and the exports as downloads.
+import { get, url } from './api.js';
+import { el, table, section, lines } from './dom.js';
+import { stereonet } from './stereonet.js';
+
+export async function showVisit(host, tunnel, visitId) {
+  host.replaceChildren(el('p', { className: 'muted', text: 'reading the visit…' }));
+  const v = await get('/api/visit', { tunnel, visit: visitId });
+  const q = { tunnel, visit: visitId };
+
+  const photos = el('div', { className: 'photos' }, ...v.photos.map((p) => {
+    const img = el('img', { src: url('/api/visit/photo', { ...q, capture: p.capture, side: p.side }), alt: `photograph ${p.capture}, ${p.side}`, loading: 'lazy' });
+    img.addEventListener('click', () => img.classList.toggle('zoomed'));
+    return el('figure', {}, img, el('figcaption', { text: `pair ${p.capture}, ${p.side}` }));
+  }));
+
+  const faceHost = el('div', { id: 'face', className: 'face' });
+  const faceStatus = el('p', { className: 'muted', id: 'face-status', text: v.has_face ? 'drawing the 3D face…' : 'This visit has no 3D image.' });
+  const fullButton = el('button', { type: 'button', text: 'Full resolution' });
+
+  const report = el('a', { href: url('/api/visit/report.pdf', q), target: '_blank', rel: 'noopener', id: 'report-link', text: 'Field report (PDF)' });
+  const exportsList = el('ul', { className: 'lines', id: 'exports' });
+  const exportsButton = el('button', { type: 'button', id: 'exports-button', text: 'Prepare the exports' });
+  exportsButton.addEventListener('click', async () => {
+    exportsButton.disabled = true;
+    exportsList.replaceChildren(el('li', { text: 'exporting…' }));
+    try {
+      const e = await get('/api/visit/exports', q);
+      exportsList.replaceChildren(...e.files.map((f) => el('li', {}, el('a', { href: url('/api/visit/export', { ...q, name: f.name }), download: f.name, text: f.name }), el('span', { text: ` (${f.size})` }))));
+    } catch (err) {
+      exportsList.replaceChildren(el('li', { className: 'error', text: err.message }));
+    }
+    exportsButton.disabled = false;
+  });
+
+  const figures = table(['Figure', 'Value'], v.figures.map((f) => [f.name, f.value]));
+  const blocks = table(['Block', 'Verdict', 'Margin', 'Mode', 'FoS', 'Volume', 'Mass', 'Rotation', 'After failure'],
+    v.blocks.map((b) => [b.label, b.verdict, b.margin, b.mode, b.fos, b.volume, b.mass, b.rotation, b.motion]), 'blocks');
+  const sets = table(['Set', 'Dip / dip direction', 'Planes', 'Fisher K', 'α95'], v.sets.map((s) => [s.label, s.orientation, String(s.count), s.fisher_k, s.alpha95]));
+  const joints = table(['Joint', 'Set', 'Dip / dip direction', 'Friction', 'Cohesion'], v.joints.map((j) => [j.label, j.set, j.orientation, j.friction, j.cohesion]));
+
+  const parts = [
+    el('h1', { text: `Visit of ${v.started_at}` }),
+    el('p', { className: 'muted', text: `${v.project}; ${v.source}; camera ${v.camera || '–'}; preset ${v.preset || '–'}` }),
+    el('p', { className: 'actions' }, report),
+    section('3D face', faceHost, faceStatus, v.has_face ? fullButton : null,
+      el('p', { className: 'muted', text: 'Traces coloured by set; blocks red removable, green keyed, grey infinite.' })),
+    section('Photographs', photos),
+    section('Accuracy', figures, lines(v.warnings)),
+    section('Joint sets', el('div', { className: 'side' }, stereonet(v.poles, v.sets), sets)),
+    section('Joints', joints),
+    section('Blocks', blocks),
+  ];
+  if (v.tunnel && v.tunnel.name)
+    parts.push(section('The round in the tunnel', el('p', { text: `${v.tunnel.name}, ${v.tunnel.profile}, chainage ${v.tunnel.chainage}` }), lines(v.tunnel.lines)));
+  if (v.wedges && v.wedges.rows) parts.push(section('Wedges around the excavation', lines(v.wedges.lines), table(v.wedges.rows[0] ? v.wedges.rows[0].map((_, i) => (i ? '' : 'Wedge')) : [], v.wedges.rows), lines(v.wedges.notes)));
+  parts.push(section('Rock mass', v.rockmass.rmr ? lines([v.rockmass.rmr, v.rockmass.q, ...v.rockmass.lines]) : el('p', { text: v.rockmass.note || 'not classified' })));
+  if (v.support && v.support.proposals) parts.push(section('Support', lines(v.support.proposals), lines(v.support.decision)));
+  parts.push(section('Exports', exportsButton, exportsList));
+  host.replaceChildren(...parts);
+
+  if (v.has_face) {
+    const texture = v.texture ? url('/api/visit/photo', { ...q, capture: v.texture.capture, side: v.texture.side }) : null;
+    const { showFace } = await import('./face3d.js');
+    const draw = (full) => showFace(faceHost, faceStatus, url('/api/visit/mesh', { ...q, full: full ? '1' : '0' }), texture, v)
+      .catch((err) => { faceStatus.textContent = `The 3D face cannot be drawn here: ${err.message}`; });
+    fullButton.addEventListener('click', () => draw(true));
+    await draw(false);
+  }
+}
