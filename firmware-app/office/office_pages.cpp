@@ -219,10 +219,15 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
   const auto& a = report.accuracy;
   figure("scale from", a.scale_source.empty() ? "–" : a.scale_source);
   if (a.range_pole_m) figure("range pole", format_fixed(*a.range_pole_m, 3, " m"));
-  figure("distance to the face", format_fixed(a.distance_m, 1, " m"));
-  figure("depth precision (1 sigma)", format_fixed(a.sigma_z_m * 1000, 1, " mm"));
-  figure("point spacing", format_fixed(a.point_spacing_m * 1000, 1, " mm"));
-  figure("reprojection RMS", format_fixed(a.reprojection_rms_px, 2, " px"));
+  // What the visit's record does not state is said, never shown as zero
+  // (issue 41: a visit measured on another visit's 3D image).
+  auto known = [](const std::optional<double>& v, double factor, int digits, const char* unit) {
+    return v ? format_fixed(*v * factor, digits, unit) : std::string("not known");
+  };
+  figure("distance to the face", known(a.distance_m, 1, 1, " m"));
+  figure("depth precision (1 sigma)", known(a.sigma_z_m, 1000, 1, " mm"));
+  figure("point spacing", known(a.point_spacing_m, 1000, 1, " mm"));
+  figure("reprojection RMS", known(a.reprojection_rms_px, 1, 2, " px"));
   if (a.control_rms_m)
     figure("control points RMS", format_fixed(*a.control_rms_m * 1000, 1, " mm"));
   out["figures"] = std::move(figures);
