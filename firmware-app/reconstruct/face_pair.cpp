@@ -37,27 +37,26 @@ storage::Model face_image_model(const photogrammetry::FaceRegistration& face, st
   return model;
 }
 
-std::optional<storage::RecordId> visit_face_model(storage::ProjectStore& store,
-                                                  storage::RecordId visit_id,
-                                                  storage::RecordId capture_id) {
+std::optional<storage::Model> visit_face_model(storage::ProjectStore& store,
+                                               storage::RecordId visit_id,
+                                               storage::RecordId capture_id) {
   for (const auto& c : store.list_captures(visit_id)) {
     if (c.id == capture_id) continue;
     for (const auto& m : store.list_models(c.id)) {
       if (m.registration_kind == "none" || m.registration_kind == "face_images") continue;
-      const storage::Model model = store.load_model(m.id);
+      storage::Model model = store.load_model(m.id);
       if (model.texture_capture_id && model.camera_to_mesh && !model.mesh.vertices.empty())
-        return m.id;
+        return model;
     }
   }
   return std::nullopt;
 }
 
-storage::Model face_pair_model(storage::ProjectStore& store, storage::RecordId face_model_id,
+storage::Model face_pair_model(storage::ProjectStore& store, storage::Model face,
                                storage::RecordId capture_id, const cv::Mat& left,
                                const photogrammetry::ReconstructionResult& rec,
                                const photogrammetry::ReconstructionPreset& preset,
                                Progress& progress) {
-  storage::Model face = store.load_model(face_model_id);
   const std::string face_name = "capture " + std::to_string(*face.texture_capture_id);
   const storage::ImageBlob photo = store.load_capture_image(*face.texture_capture_id, "left");
   cv::Mat face_left = cv::imdecode(photo.bytes, cv::IMREAD_COLOR);

@@ -34,16 +34,17 @@ storage::Model face_image_model(const photogrammetry::FaceRegistration& face, st
 // The 3D image of `visit_id` a further pair is tied to: the first model of
 // an earlier capture of the visit that was registered on its own (by the
 // pole, control points or a scanner's frame: not `none`, not itself a
-// further pair) and keeps its photograph and its camera's pose. None when
-// the visit has no such model (the pair is then the visit's first).
-std::optional<storage::RecordId> visit_face_model(storage::ProjectStore& store,
-                                                  storage::RecordId visit_id,
-                                                  storage::RecordId capture_id);
+// further pair) and keeps its photograph and its camera's pose, loaded (its
+// mesh is what the pair is registered to). None when the visit has no such
+// model (the pair is then the visit's first).
+std::optional<storage::Model> visit_face_model(storage::ProjectStore& store,
+                                               storage::RecordId visit_id,
+                                               storage::RecordId capture_id);
 
-// Registers the pair of `capture_id` (reconstructed unregistered: `rec`, its
-// left photograph `left`) to the stored model `face_model_id` and returns
-// the model to store. Throws InputError when the two do not overlap.
-storage::Model face_pair_model(storage::ProjectStore& store, storage::RecordId face_model_id,
+// Registers the pair of `capture_id` (reconstructed: `rec`, its left
+// photograph `left`) to the visit's face model `face` (visit_face_model) and
+// returns the model to store. Throws InputError when the two do not overlap.
+storage::Model face_pair_model(storage::ProjectStore& store, storage::Model face,
                                storage::RecordId capture_id, const cv::Mat& left,
                                const photogrammetry::ReconstructionResult& rec,
                                const photogrammetry::ReconstructionPreset& preset,

@@ -57,15 +57,17 @@ storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project
   // in one frame whichever pairs saw the pole. A pair that overlaps it too
   // little (another face, a pair taken again from elsewhere) keeps its own
   // registration, and its report says why it was not tied.
-  if (const auto face = visit_face_model(store, capture.visit_id, capture_id)) {
+  if (auto face = visit_face_model(store, capture.visit_id, capture_id)) {
+    const storage::RecordId face_id = face->id;
     try {
       const storage::Model model =
-          face_pair_model(store, *face, capture_id, left, rec, preset, progress);
+          face_pair_model(store, std::move(*face), capture_id, left, rec, preset, progress);
       progress.step("saving the model", 0.99);
       return store.save_model(model);
     } catch (const InputError& e) {
-      rec.accuracy.warnings.push_back("not tied to the visit's 3D image " + std::to_string(*face) +
-                                      ": " + e.what() + "; registered on its own");
+      rec.accuracy.warnings.push_back("not tied to the visit's 3D image " +
+                                      std::to_string(face_id) + ": " + e.what() +
+                                      "; registered on its own");
     }
   }
   progress.step("saving the model", 0.99);

@@ -26,18 +26,18 @@ BackgroundTask::~BackgroundTask() {
   wait();
 }
 
-bool BackgroundTask::start(std::string title, Work work, Then then) {
+bool BackgroundTask::start(std::string title, Work work, Then then, bool cancelled) {
   if (running()) return false;
   join_finished();
   then_ = std::move(then);
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    status_ = TaskStatus{true, false, title, "starting", 0, 0};
+    status_ = TaskStatus{true, cancelled, title, "starting", 0, 0};
     outcome_.reset();
     started_at_ = std::chrono::steady_clock::now();
   }
   ++started_;
-  cancel_ = false;
+  cancel_ = cancelled;
   running_ = true;
   thread_ = std::thread([this, title = std::move(title), work = std::move(work)] {
     Reporter reporter(*this);

@@ -48,7 +48,9 @@ class BackgroundTask {
 
   // False (and nothing started) while another task runs or its outcome
   // waits to be taken.
-  bool start(std::string title, Work work, Then then = {});
+  // `cancelled`: started with its cancel already asked (it runs until its
+  // first step(): what it does before, such as saving its input, is done).
+  bool start(std::string title, Work work, Then then = {}, bool cancelled = false);
   void cancel();
   TaskStatus status() const;
   // Busy until the last task's outcome is taken: a task started between

@@ -88,8 +88,13 @@ TabletApp::TabletApp(UiOptions options, FieldServices services) {
 }
 
 TabletApp::~TabletApp() {
+  // Pairs waiting for their 3D image are stored before the app goes (each
+  // job stores its pair before its first step); their 3D images are not made.
   state_.reconstructions.cancel();
-  state_.reconstructions.wait();
+  while (state_.reconstructions.busy()) {
+    state_.reconstructions.wait();
+    state_.reconstructions.poll();
+  }
   state_.task.cancel();
   state_.task.wait();
   state_.model_view = ModelView();  // GL objects go while the context is current

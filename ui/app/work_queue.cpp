@@ -5,12 +5,15 @@
 namespace rockface::ui {
 
 WorkQueue::~WorkQueue() {
-  cancel();
+  // At shutdown the waiting jobs are not started (their input stays where
+  // the caller keeps it); the running one is cancelled and joined.
+  waiting_.clear();
+  task_.cancel();
   wait();
 }
 
 void WorkQueue::add(std::string title, BackgroundTask::Work work, BackgroundTask::Then then) {
-  waiting_.push_back({std::move(title), std::move(work), std::move(then)});
+  waiting_.push_back({std::move(title), std::move(work), std::move(then), false});
   poll();
 }
 
@@ -19,7 +22,7 @@ std::optional<TaskOutcome> WorkQueue::poll() {
   if (!task_.running() && !waiting_.empty()) {
     Job next = std::move(waiting_.front());
     waiting_.pop_front();
-    task_.start(std::move(next.title), std::move(next.work), std::move(next.then));
+    task_.start(std::move(next.title), std::move(next.work), std::move(next.then), next.cancelled);
   }
   return outcome;
 }
@@ -29,7 +32,7 @@ WorkQueueStatus WorkQueue::status() const {
 }
 
 void WorkQueue::cancel() {
-  waiting_.clear();
+  for (Job& j : waiting_) j.cancelled = true;
   task_.cancel();
 }
 

@@ -26,7 +26,10 @@ class WorkQueue {
   WorkQueue() = default;
   WorkQueue(const WorkQueue&) = delete;
   WorkQueue& operator=(const WorkQueue&) = delete;
-  ~WorkQueue();  // the waiting jobs dropped, the running one cancelled and joined
+  // The waiting jobs dropped, the running one cancelled and joined: a
+  // caller whose jobs hold what is not saved elsewhere cancels and drains
+  // the queue first (TabletApp's destructor does).
+  ~WorkQueue();
 
   // Starts the job now when the worker is free, else after the others.
   void add(std::string title, BackgroundTask::Work work, BackgroundTask::Then then = {});
@@ -35,7 +38,10 @@ class WorkQueue {
   std::optional<TaskOutcome> poll();
   bool busy() const { return task_.running() || !waiting_.empty(); }
   WorkQueueStatus status() const;
-  // Cancels the running job and drops the waiting ones (their `then` is not run).
+  // Cancels the running job, and the waiting ones as they come: each still
+  // runs until its first step() (a pair is stored before its 3D image's
+  // first step, so stopping the 3D images never loses a pair) and its
+  // `then` runs with the outcome `cancelled`.
   void cancel();
   // Blocks until the running job has finished: headless scripts and
   // shutdown only, never a frame (its outcome is then taken by poll()).
@@ -46,6 +52,7 @@ class WorkQueue {
     std::string title;
     BackgroundTask::Work work;
     BackgroundTask::Then then;
+    bool cancelled = false;
   };
   BackgroundTask task_;
   std::deque<Job> waiting_;

@@ -5,6 +5,9 @@
 // mock camera goes through the same path.
 #include <GLES3/gl3.h>
 
+#include <atomic>
+#include <memory>
+
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -150,11 +153,17 @@ void store_and_reconstruct(AppState& app) {
   // the camera told over USB.
   if (photo.serial.empty()) photo.serial = app.capture.left->body_serial;
   ReconstructionRunner* runner = app.services.reconstruction;
-  const std::size_t pair = ++app.capture.pairs_queued;
+  // Its place in the visit: the pairs stored, and those on the queue before it.
+  const WorkQueueStatus queued = app.reconstructions.status();
+  const std::size_t pair =
+      app.session->captures().size() + queued.waiting + (queued.current.running ? 1 : 0) + 1;
   app.capture.stored = true;  // on its way: a new shot needs no confirmation
+  // Whether the pair reached the project: a pair whose saving failed (a full
+  // disk) is shown "not stored" again while its shots are still on screen.
+  auto saved = std::make_shared<std::atomic<bool>>(false);
   app.reconstructions.add(
       "Pair " + std::to_string(pair),
-      [file, capture, photo, preset, runner](Progress& progress) mutable {
+      [file, capture, photo, preset, runner, saved](Progress& progress) mutable {
         progress.report("storing the pair", 0.02);
         storage::ProjectStore store = storage::ProjectStore::open(file);
         // The calibration of the camera that took the pair (issue 42: the
@@ -167,6 +176,7 @@ void store_and_reconstruct(AppState& app) {
         const storage::CalibrationChoice choice = storage::choose_calibration(store, photo);
         if (choice.calibration) capture.calibration_id = choice.calibration->id;
         const storage::RecordId id = store.save_capture(capture);
+        *saved = true;
         if (!choice.calibration)
           return "stored as capture " + std::to_string(id) +
                  "; not reconstructed: " + choice.refusal;
@@ -174,7 +184,10 @@ void store_and_reconstruct(AppState& app) {
         const storage::RecordId model = runner->reconstruct(file, id, preset, progress);
         return "stored, 3D image " + std::to_string(model) + " saved (Model)";
       },
-      [&app, file](const TaskOutcome&) {
+      [&app, file, saved, shot = app.capture.left->image.data.data()](const TaskOutcome&) {
+        // The shots on screen are still this pair's (the same bytes in memory).
+        if (!*saved && app.capture.left && app.capture.left->image.data.data() == shot)
+          app.capture.stored = false;
         if (app.session && app.session->file() == file) app.session->refresh();
       });
 }

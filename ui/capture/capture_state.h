@@ -17,8 +17,7 @@ struct CaptureState {
   std::shared_ptr<camera::Camera> camera;  // used on the worker only while a task runs
   std::string connection = "not connected";
   std::optional<camera::Capture> left, right;
-  bool stored = false;           // the pair is saved in the project, or queued to be (issue 45)
-  std::size_t pairs_queued = 0;  // pairs sent to the queue of 3D images this session
+  bool stored = false;  // the pair is saved in the project, or queued to be (issue 45)
   std::vector<std::string> guidance;
   float distance_m = 10;  // to the face, for the base length hint
   // Distance between the pole's target centres: typed once per project
