@@ -38,6 +38,7 @@
 #include "tests/integration/office_web/web_driver.h"
 #include "tests/support/postgres_server.h"
 #include "tests/support/sample_records.h"
+#include "tools/bench/bench_tablet_projects.h"
 
 #include <httplib.h>
 
@@ -107,65 +108,14 @@ storage::Model grid_model(storage::RecordId capture, int side) {
   return m;
 }
 
-void add_visit(storage::ProjectStore& store, int i, int width, int height, int mesh_side) {
-  const storage::RecordId visit = store.begin_visit("bench visit " + std::to_string(i));
-  const storage::RecordId cap =
-      store.save_capture(storage::test::sample_capture(visit, i, width, height));
-  const storage::RecordId model = store.save_model(grid_model(cap, mesh_side));
-  std::mt19937 rng(static_cast<unsigned>(i));
-  std::normal_distribution<double> jitter(0, 2.0);
-  std::vector<storage::Measurement> planes;
-  for (const auto& [dip, dipdir] :
-       std::vector<std::pair<double, double>>{{70, 120}, {45, 300}, {20, 30}})
-    for (int k = 0; k < 6; ++k) {
-      storage::Measurement m;
-      m.visit_id = visit;
-      m.model_id = model;
-      m.label = "T" + std::to_string(planes.size() + 1);
-      m.points = {{0, 3.0 * i, 0}, {0.5, 3.0 * i, 0.4}, {1, 3.0 * i, 1}};
-      m.dip_deg = std::clamp(dip + jitter(rng), 0.0, 90.0);
-      m.dipdir_deg = std::fmod(dipdir + jitter(rng) + 360, 360);
-      planes.push_back(m);
-    }
-  store.save_measurements(visit, planes);
-  store.save_analysis(storage::test::sample_analysis(visit, model));
-  storage::VisitPlacement p;
-  p.visit_id = visit;
-  p.chainage = 3.0 * i;
-  store.save_visit_placement(p);
-}
-
-fs::path make_project(const std::string& name, int visits, int width, int height, int side) {
-  const fs::path file = folder() / (name + ".rockface");
-  if (fs::exists(file)) return file;
-  storage::ProjectInfo info;
-  info.name = name;
-  storage::ProjectStore store = storage::ProjectStore::create(file, info);
-  storage::TunnelRecord tunnel;
-  tunnel.name = "bench";
-  tunnel.stations = {{0, {0, 0, 0}}, {10000, {0, 10000, 0}}};
-  tunnel.radii = {0};
-  tunnel.profile = tunnel::circle_profile(3.0);
-  store.save_tunnel(tunnel);
-  for (int i = 0; i < visits; ++i) add_visit(store, i, width, height, side);
-  return file;
+// The tablets' projects (tools/bench/bench_tablet_projects.h) in this
+// benchmark's folder, with its 3D image.
+fs::path make_project(const std::string& name, int visits, int width, int height, int mesh_side) {
+  return bench::make_bench_project(folder(), name, visits, width, height, mesh_side, grid_model);
 }
 
 fs::path another_tablets_copy(const fs::path& file, const std::string& name) {
-  const fs::path copy = folder() / (name + ".rockface");
-  fs::remove(copy);
-  fs::copy_file(file, copy);
-  storage::sqlite::Connection db(copy, storage::sqlite::Connection::Access::read_write);
-  for (const char* t :
-       {"project", "visit", "camera_body", "calibration", "image", "capture", "model",
-        "measurement", "joint_set", "joint", "analysis", "block", "action_log"})
-    db.exec(std::string("UPDATE ") + t +
-                " SET uuid = lower(hex(randomblob(4)) || '-' || hex(randomblob(2)) || '-4' || "
-                "substr(hex(randomblob(2)), 2) || '-a' || substr(hex(randomblob(2)), 2) || '-' "
-                "|| hex(randomblob(6)))",
-            "new uuids");
-  db.exec("DELETE FROM sync_record; DELETE FROM sync_run; DELETE FROM sync_target", "reset");
-  return copy;
+  return bench::another_tablets_copy(folder(), file, name);
 }
 
 // The 3,000-visit database, made once.
