@@ -41,6 +41,14 @@ fs::path scene_placed_at(const fs::path& dir, double chainage, const std::string
   return out;
 }
 
+// A project a replay comes to with a visit of its own already.
+void project_with_a_visit(const fs::path& p) {
+  rockface::storage::ProjectInfo info;
+  info.name = "replayed before";
+  auto store = rockface::storage::ProjectStore::create(p, info);
+  store.begin_visit("test");
+}
+
 }  // namespace
 
 TEST(ReplayRefusedCli, APlacementOffTheAlignmentLeavesNoProject) {
@@ -66,12 +74,7 @@ TEST(ReplayRefusedCli, AnExistingProjectIsLeftAsItWas) {
   fs::create_directories(dir);
   const fs::path scene = scene_placed_at(dir, -1e308);
   const fs::path p = dir / "p.rockface";
-  {
-    rockface::storage::ProjectInfo info;
-    info.name = "replayed before";
-    auto store = rockface::storage::ProjectStore::create(p, info);
-    store.begin_visit("test");
-  }
+  project_with_a_visit(p);
   const std::string bytes = bytes_of(p);
   const auto r = rockface::test::run_rockface("replay " + scene.string() + " --project " +
                                               p.string() + " --preset fast");
@@ -153,12 +156,7 @@ TEST(ReplayRefusedCli, AnAlignmentBeyondSurveyCoordinatesChangesNothing) {
       << "chainage,easting,northing,elevation,radius\n"
          "0,512340,5211800,410,0\n100,1e308,5211900,410,0\n200,512340,5212000,410,\n";
   const fs::path p = dir / "p.rockface";
-  {
-    rockface::storage::ProjectInfo info;
-    info.name = "replayed before";
-    auto store = rockface::storage::ProjectStore::create(p, info);
-    store.begin_visit("test");
-  }
+  project_with_a_visit(p);
   const std::string bytes = bytes_of(p);
   const auto r = rockface::test::run_rockface("replay " + scene.string() + " --project " +
                                               p.string() + " --preset fast");
