@@ -33,7 +33,9 @@ std::string ContactMode::describe() const {
     case ModeKind::Sliding:
       return "slides on " + joined(planes, " and ");
     case ModeKind::Edge:
-      return "rotates about edge " + pivot;
+      // A pivot that is no edge of the block or the rock is said as a line.
+      return pivot.rfind("a line", 0) == 0 ? "rotates about " + pivot
+                                           : "rotates about edge " + pivot;
     case ModeKind::Corner:
       return "rotates about a corner (" + pivot + ")";
   }
@@ -96,38 +98,60 @@ ContactMode contact_mode(const BlockMotion& motion, const BlockPose& pose,
     mode.kind = ModeKind::Sliding;
     return mode;
   }
-  mode.kind = ModeKind::Edge;
-  if (mode.planes.size() >= 2) {
-    mode.pivot = joined(mode.planes, "-");
+  // A block turning about an edge turns with its angular velocity along
+  // the edge; one whose points still lie on a line but that turns away
+  // from it is lifting off that line's far end: it turns about a corner.
+  const double turning = velocity.w.norm() * length;
+  if (turning > 10 * rest && std::abs(velocity.w.normalized().dot(dir)) < std::cos(kAxisAngleRad)) {
+    mode.kind = ModeKind::Corner;
+    mode.pivot = joined(mode.planes, ", ");
     return mode;
   }
-  // One surface: the edge of its face the points lie on names the other plane.
-  const JointSurface& s = surfaces[*in_contact.begin()];
-  mode.pivot = s.name;
-  for (size_t pi = 0; pi < s.polygons.size(); ++pi)
-    for (size_t k = 0; k < s.polygons[pi].size(); ++k) {
-      const Eigen::Vector2d a2 = s.polygons[pi][k];
-      const Eigen::Vector2d b2 = s.polygons[pi][(k + 1) % s.polygons[pi].size()];
-      const Eigen::Vector3d a = s.origin + a2(0) * s.e1 + a2(1) * s.e2;
-      const Eigen::Vector3d b = s.origin + b2(0) * s.e1 + b2(1) * s.e2;
-      const Eigen::Vector3d e = (b - a).normalized();
-      // The rock's edge (a pivot over the edge of the surface) ...
-      bool all = true;
-      for (const auto& p : points) all = all && line_distance(p, a, e) <= tol;
-      // ... or the block's own edge on the surface (a block turning on its edge).
-      if (!all) {
-        const Eigen::Vector3d ba = motion.geometry().vertex(pose, s.loops[pi][k]);
-        const Eigen::Vector3d bb =
-            motion.geometry().vertex(pose, s.loops[pi][(k + 1) % s.loops[pi].size()]);
-        const Eigen::Vector3d be = (bb - ba).normalized();
-        all = true;
-        for (const auto& p : points) all = all && line_distance(p, ba, be) <= tol;
+  mode.kind = ModeKind::Edge;
+  // The line the loaded points lie on names the edge: an edge of a loaded
+  // surface's face (the rock's lip, or the block's own edge on it) whose
+  // points all lie on it. Two loaded surfaces alone do not make their
+  // line of intersection the pivot: a block pivoting over the lip of J1
+  // at the face still carries a little on J2's corner (issue 39: "rotates
+  // about edge J1-J2" while it turned about J1's edge at the face).
+  for (const int si : in_contact) {
+    const JointSurface& s = surfaces[si];
+    for (size_t pi = 0; pi < s.polygons.size(); ++pi)
+      for (size_t k = 0; k < s.polygons[pi].size(); ++k) {
+        const Eigen::Vector2d a2 = s.polygons[pi][k];
+        const Eigen::Vector2d b2 = s.polygons[pi][(k + 1) % s.polygons[pi].size()];
+        const Eigen::Vector3d a = s.origin + a2(0) * s.e1 + a2(1) * s.e2;
+        const Eigen::Vector3d b = s.origin + b2(0) * s.e1 + b2(1) * s.e2;
+        const Eigen::Vector3d e = (b - a).normalized();
+        bool all = true;
+        for (const auto& p : points) all = all && line_distance(p, a, e) <= tol;
+        if (!all) {
+          const Eigen::Vector3d ba = motion.geometry().vertex(pose, s.loops[pi][k]);
+          const Eigen::Vector3d bb =
+              motion.geometry().vertex(pose, s.loops[pi][(k + 1) % s.loops[pi].size()]);
+          const Eigen::Vector3d be = (bb - ba).normalized();
+          all = true;
+          for (const auto& p : points) all = all && line_distance(p, ba, be) <= tol;
+        }
+        if (all) {
+          mode.pivot = s.name + "-" + s.edge_planes[pi][k];
+          return mode;
+        }
       }
-      if (all) {
-        mode.pivot = s.name + "-" + s.edge_planes[pi][k];
+  }
+  // No face edge holds every point: the line where two loaded surfaces
+  // meet, when the points' line runs along it.
+  for (auto i = in_contact.begin(); i != in_contact.end(); ++i)
+    for (auto j = std::next(i); j != in_contact.end(); ++j) {
+      const Eigen::Vector3d along = surfaces[*i].normal.cross(surfaces[*j].normal);
+      if (along.norm() < 1e-9) continue;
+      if (std::abs(along.normalized().dot(dir)) >= std::cos(kPivotAngleRad)) {
+        mode.pivot = surfaces[*i].name + "-" + surfaces[*j].name;
         return mode;
       }
     }
+  // A line across the loaded surfaces that is none of their edges.
+  mode.pivot = "a line across " + joined(mode.planes, " and ");
   return mode;
 }
 

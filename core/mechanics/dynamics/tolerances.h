@@ -40,6 +40,22 @@ inline constexpr double kLoadedForceRel = 1e-7;
 // corner, to one line an edge (rotation about it); otherwise a face.
 inline constexpr double kPivotSpreadRel = 1e-4;
 
+// An edge's line named after two loaded surfaces only when the loaded
+// points' line runs within this angle of the surfaces' line of
+// intersection: the points lie within kPivotSpreadRel x L of their line,
+// so its direction is known to ~1e-4 L over the points' spread (a few
+// tenths of L): 0.01 rad leaves a wide margin above that and far below
+// the angles between a wedge's edges.
+inline constexpr double kPivotAngleRad = 1e-2;
+
+// A block whose loaded points lie on a line is said to turn about that
+// line only while its angular velocity runs within this angle of it. A
+// rotation about an edge has its angular velocity along the edge to the
+// integration's error (~1e-7 rad); 5 degrees is where a geologist would no
+// longer call the motion a turn about that edge (issue 39: 55 degrees off
+// it was told as "rotates about edge").
+inline constexpr double kAxisAngleRad = 5.0 * 3.14159265358979323846 / 180.0;
+
 // Point-in-polygon tests of the joint surfaces include their boundary
 // within this x L: a corner of the block on the edge of the rock's surface
 // (every corner, at the start) is supported.
