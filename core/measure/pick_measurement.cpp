@@ -1,6 +1,7 @@
 #include "core/measure/pick_measurement.h"
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "core/common/units.h"
 #include "core/measure/joined_traces.h"
 #include "core/measure/least_cost_trace.h"
+#include "core/measure/no_surface_cause.h"
 #include "core/measure/pair_photo.h"
 #include "core/measure/tolerances.h"
 
@@ -52,6 +54,22 @@ void require_in_photograph(const std::string& photo, int width, int height,
   view.camera.width = width;
   view.camera.height = height;
   require_in_image(view, pixels, where);
+}
+
+// Every tap with surface under it; one without says why, from the
+// photograph it was tapped on (issue 39: "no surface" alone on a face too
+// dark to match).
+void require_surface(const MeasureContext& c, const MeshPicker& picker, const PhotoView& view,
+                     const std::string& photo, const std::vector<Eigen::Vector2d>& pixels,
+                     const std::function<std::string(std::size_t)>& where_of) {
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    if (picker.pick(view, pixels[i], where_of(i))) continue;
+    const auto it = c.photos.find(photo);
+    throw InputError(
+        where_of(i),
+        "no surface of the 3D image under this pick: " +
+            no_surface_cause(it == c.photos.end() ? cv::Mat() : it->second, photo, pixels[i]));
+  }
 }
 
 }  // namespace
@@ -138,6 +156,8 @@ MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& c,
       const PhotoView& view = view_of(c, t.photo, where);
       require_in_image(view, t.pixels, where + ".pixels");
       mt.taps = t.pixels;
+      require_surface(c, picker_of(c, t.photo), view, t.photo, t.pixels,
+                      [&](std::size_t i) { return where + ".pixels[" + std::to_string(i) + "]"; });
       mt.m = measure_trace(picker_of(c, t.photo), view, t.id, t.pixels, c.settings, where);
     } else {
       const PhotoView& view = view_of(c, t.photo, where);
@@ -154,10 +174,8 @@ MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& c,
       if (request.cost == TraceCost::Curvature && t.photo != "left")
         throw InputError(where + ".cost",
                          "the curvature cost follows the 3D image on the left photograph only");
-      for (std::size_t k = 0; k < 2; ++k)
-        if (!c.picker->pick(view, ends[k], where))
-          throw InputError(where + ".ends[" + std::to_string(k) + "]",
-                           "no surface of the 3D image under this pick");
+      require_surface(c, *c.picker, view, t.photo, ends,
+                      [&](std::size_t k) { return where + ".ends[" + std::to_string(k) + "]"; });
       const TracedPath path =
           trace_between(photo->second, &c.picker->mesh(), request, where + ".ends");
       // The path may cross small holes of the 3D image (a dark trace is
@@ -198,6 +216,8 @@ MeasuredPicks measure_picks(const Picks& picks, const MeasureContext& c,
     const std::string where = prefix + p.where;
     const PhotoView& view = view_of(c, p.photo, where);
     require_in_image(view, {p.pixel}, where + ".pixel");
+    require_surface(c, picker_of(c, p.photo), view, p.photo, {p.pixel},
+                    [&](std::size_t) { return where + ".pixel"; });
     out.points.push_back(
         measure_point(picker_of(c, p.photo), view, p.id, p.pixel, p.radius, c.settings, where));
   }
