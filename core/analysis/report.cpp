@@ -1,6 +1,8 @@
 // The report's readable summary table and its words for a block's motion.
 #include "core/analysis/report.h"
 
+#include "core/analysis/effect_words.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -41,10 +43,9 @@ std::string event_text(const ReportMotionEvent& e) {
 
 std::string report_summary(const Report& r) {
   std::ostringstream out;
-  out << "effects simulated: ";
-  for (size_t i = 0; i < r.effects_simulated.size(); ++i)
-    out << (i ? ", " : "") << r.effects_simulated[i];
-  out << "\n";
+  // In words, as the field report and the tablet say them (the JSON keeps
+  // the keys of SCENE.md).
+  out << "effects simulated: " << effects_in_words(r.effects_simulated) << "\n";
   if (!r.pyramids.empty()) {
     size_t removable = 0;
     for (const auto& p : r.pyramids) removable += p.removable;

@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "core/analysis/effect_words.h"
 #include "core/common/degrees_per_radian.h"
 #include "firmware-app/wedges/wedges_json.h"
 #include "firmware-app/wedges/wedges_workflow.h"
@@ -26,9 +27,8 @@ void add_wedges_to_report(storage::ProjectStore& store, storage::FieldReport& re
             storage::report_number(s.dipdir_deg, 1);
   w.lines.push_back("sets (dip/dip direction): " + sets +
                     "; joints of unlimited persistence, every wedge at its largest");
-  std::string effects;
-  for (const auto& e : r->analysis.effects_simulated) effects += (effects.empty() ? "" : ", ") + e;
-  w.lines.push_back("effects simulated: " + effects);
+  w.lines.push_back("effects simulated: " +
+                    analysis::effects_in_words(r->analysis.effects_simulated));
   for (const auto& x : r->analysis.wedges)
     w.rows.push_back(
         {x.id, tunnel::wedge_place_name(x.place), x.code, storage::report_number(x.mass.volume, 3),

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/analysis/effect_words.h"
 #include "core/common/degrees_per_radian.h"
 #include "storage/field_report/field_report.h"
 
@@ -231,9 +232,7 @@ std::vector<std::string> wedges_summary(const WedgeRun& run, const tunnel::Wedge
     head << " " << s.id << " " << storage::report_number(s.dip_deg, 1) << "/"
          << storage::report_number(s.dipdir_deg, 1);
   lines.push_back(head.str());
-  std::string effects;
-  for (const auto& e : a.effects_simulated) effects += (effects.empty() ? "" : ", ") + e;
-  lines.push_back("effects simulated: " + effects);
+  lines.push_back("effects simulated: " + analysis::effects_in_words(a.effects_simulated));
   lines.push_back(
       "wedge  place       code      volume m3  weight kN  apex m  bolt to apex m  margin    "
       "mode                FoS     FoS supported");

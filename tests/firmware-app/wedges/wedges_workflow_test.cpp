@@ -101,7 +101,7 @@ TEST(WedgesVerb, SampleSceneEndToEnd) {
   EXPECT_TRUE(roof);
   EXPECT_GT(fs::file_size(dir / "w.png"), 20000u);
   const std::string out = read(dir / "out.txt");
-  EXPECT_NE(out.find("effects simulated: gravity, water, bolts, shotcrete"), std::string::npos);
+  EXPECT_NE(out.find("effects simulated: gravity, water pressure, bolts, shotcrete"), std::string::npos);
 }
 
 TEST(WedgesVerb, NothingComputedThatTheSceneDidNotAskFor) {
