@@ -63,7 +63,7 @@ std::string q_line(const QSystem& q) {
 std::vector<std::string> figures_lines(const RockMassFigures& f) {
   std::vector<std::string> out;
   out.push_back(std::to_string(f.assigned.set_of.size()) + " traces on a face window of " +
-                format_fixed(f.window.area_m2, 1) + " m2: " + std::to_string(f.sets) + " sets, " +
+                format_fixed(f.window.area_m2, 1) + " m²: " + std::to_string(f.sets) + " sets, " +
                 std::to_string(f.assigned.random.size()) + " random");
   for (std::size_t k = 0; k < f.spacings.size(); ++k) {
     const auto& s = f.spacings[k];
@@ -105,28 +105,28 @@ std::vector<std::string> figures_lines(const RockMassFigures& f) {
                   " (mean of the directions, " + "lowest " +
                   format_fixed(*f.scanlines.lowest_percent, 0, " %") + ")");
   if (f.jv.jv)
-    out.push_back("Jv " + format_fixed(*f.jv.jv, 2, " joints per m3") + " (sets " +
+    out.push_back("Jv " + format_fixed(*f.jv.jv, 2, " joints per m³") + " (sets " +
                   format_fixed(f.jv.from_sets, 2) + ", random " +
                   format_fixed(f.jv.from_random, 2) + "); Palmström's RQD from Jv " +
                   format_fixed(*f.jv.rqd_palmstrom, 0, " %"));
   const auto& b = f.blocks;
   if (b.finite_blocks > 0)
     out.push_back(std::to_string(b.finite_blocks) + " finite blocks on the face: V50 " +
-                  format_significant(*b.v50_m3, 3, " m3") + ", mean " +
-                  format_significant(*b.mean_m3, 3, " m3") + ", " +
-                  format_significant(*b.min_m3, 3) + "-" + format_significant(*b.max_m3, 3, " m3") +
+                  format_significant(*b.v50_m3, 3, " m³") + ", mean " +
+                  format_significant(*b.mean_m3, 3, " m³") + ", " +
+                  format_significant(*b.min_m3, 3) + "-" + format_significant(*b.max_m3, 3, " m³") +
                   (b.shape_of_blocks ? ", shape " + b.shape_of_blocks->words + " (beta " +
                                            format_fixed(b.shape_of_blocks->beta, 0) + ")"
                                      : ""));
   if (b.vb_from_spacing_m3)
     out.push_back("Vb from the spacing of " + list(b.spacing_sets) + ": " +
-                  format_significant(*b.vb_from_spacing_m3, 3, " m3") + ", shape " +
+                  format_significant(*b.vb_from_spacing_m3, 3, " m³") + ", shape " +
                   b.shape_from_spacing->words + " (alpha2 " +
                   format_fixed(b.shape_from_spacing->alpha2, 1) + ", alpha3 " +
                   format_fixed(b.shape_from_spacing->alpha3, 1) + ", beta " +
                   format_fixed(b.shape_from_spacing->beta, 0) + ")");
   if (b.vb_from_jv_m3)
-    out.push_back("Vb from Jv: " + format_significant(*b.vb_from_jv_m3, 3, " m3"));
+    out.push_back("Vb from Jv: " + format_significant(*b.vb_from_jv_m3, 3, " m³"));
   if (!b.size_words.empty()) out.push_back("block size: " + b.size_words);
   for (const auto& n : f.notes) out.push_back(n);
   return out;

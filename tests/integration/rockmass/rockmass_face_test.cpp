@@ -200,7 +200,12 @@ TEST_F(RockMassFace, SpacingJvAndRqdAgainstTheTruth) {
   ASSERT_TRUE(visit);
   const rockmass::RockMassInput in = visit_rock_mass_input(*&store, *visit);
   const rockmass::RockMassFigures f = rockmass::rock_mass_figures(in);
-  for (const auto& line : rockmass::figures_lines(f)) std::printf("%s\n", line.c_str());
+  for (const auto& line : rockmass::figures_lines(f)) {
+    std::printf("%s\n", line.c_str());
+    // Units as every screen and the report write them (issue 39): m², m³.
+    EXPECT_EQ(line.find(" m3"), std::string::npos) << line;
+    EXPECT_EQ(line.find(" m2"), std::string::npos) << line;
+  }
   ASSERT_EQ(f.sets, 3);
 
   // The truth of what was mapped: the true planes of the joints picked,
