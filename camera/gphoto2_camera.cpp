@@ -11,46 +11,17 @@
 
 #include "camera/command_thread.h"
 #include "camera/gphoto2_errors.h"
+#include "camera/gphoto2_handles.h"
+#include "camera/gphoto2_widgets.h"
 #include "core/common/atomic_file.h"
 
 namespace rockface::camera {
 
 namespace fs = std::filesystem;
 using Kind = CameraError::Kind;
+using namespace gphoto2;  // handles and widgets (gphoto2_handles.h, gphoto2_widgets.h)
 
 namespace {
-
-// Logical settings and the widget names different makers give them, most
-// common first (Nikon, Canon, Sony, Fuji as libgphoto2's ptp2 camlib names them).
-const std::vector<std::string> kProgramNames{"expprogram", "autoexposuremode", "exposuremode"};
-const std::vector<std::string> kApertureNames{"f-number", "aperture"};
-const std::vector<std::string> kShutterNames{"shutterspeed", "shutterspeed2"};
-const std::vector<std::string> kIsoNames{"iso", "isospeed"};
-const std::vector<std::string> kFormatNames{"imagequality", "imageformat"};
-const std::vector<std::string> kTargetNames{"capturetarget"};
-const std::vector<std::string> kFlashNames{"flashmode", "flashmode2", "canonflashmode"};
-const std::vector<std::string> kFocusModeNames{"focusmode", "focusmode2", "afmode"};
-const std::vector<std::string> kAutofocusNames{"autofocusdrive"};
-const std::vector<std::string> kWhiteBalanceNames{"whitebalance"};
-const std::vector<std::string> kSerialNames{"serialnumber", "eosserialnumber"};
-
-const std::vector<std::string>& names_of(TabletSetting which) {
-  switch (which) {
-    case TabletSetting::iso:
-      return kIsoNames;
-    case TabletSetting::aperture:
-      return kApertureNames;
-    case TabletSetting::shutter_speed:
-      return kShutterNames;
-    case TabletSetting::image_format:
-      return kFormatNames;
-    case TabletSetting::focus_mode:
-      return kFocusModeNames;
-    case TabletSetting::white_balance:
-      break;
-  }
-  return kWhiteBalanceNames;
-}
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -69,88 +40,6 @@ std::pair<std::string, std::string> split_path(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   if (slash == std::string::npos) return {"/", path};
   return {slash == 0 ? "/" : path.substr(0, slash), path.substr(slash + 1)};
-}
-
-struct ListDeleter {
-  void operator()(CameraList* l) const { gp_list_unref(l); }
-};
-using ListPtr = std::unique_ptr<CameraList, ListDeleter>;
-ListPtr new_list() {
-  CameraList* l = nullptr;
-  gp_list_new(&l);
-  return ListPtr(l);
-}
-
-struct FileDeleter {
-  void operator()(CameraFile* f) const { gp_file_unref(f); }
-};
-using FilePtr = std::unique_ptr<CameraFile, FileDeleter>;
-FilePtr new_file() {
-  CameraFile* f = nullptr;
-  gp_file_new(&f);
-  return FilePtr(f);
-}
-
-struct WidgetDeleter {
-  void operator()(CameraWidget* w) const { gp_widget_free(w); }
-};
-using WidgetPtr = std::unique_ptr<CameraWidget, WidgetDeleter>;
-
-CameraSetting describe(CameraWidget* w) {
-  CameraSetting s;
-  const char* text = nullptr;
-  gp_widget_get_name(w, &text);
-  s.name = text ? text : "";
-  text = nullptr;
-  gp_widget_get_label(w, &text);
-  s.label = text ? text : "";
-  int ro = 0;
-  gp_widget_get_readonly(w, &ro);
-  s.read_only = ro != 0;
-  CameraWidgetType type;
-  gp_widget_get_type(w, &type);
-  switch (type) {
-    case GP_WIDGET_TEXT:
-    case GP_WIDGET_RADIO:
-    case GP_WIDGET_MENU: {
-      const char* value = nullptr;
-      if (gp_widget_get_value(w, &value) == GP_OK && value) s.value = value;
-      const int n = gp_widget_count_choices(w);
-      for (int i = 0; i < n; ++i) {
-        const char* choice = nullptr;
-        if (gp_widget_get_choice(w, i, &choice) == GP_OK && choice) s.choices.push_back(choice);
-      }
-      break;
-    }
-    case GP_WIDGET_RANGE: {
-      float value = 0;
-      if (gp_widget_get_value(w, &value) == GP_OK) s.value = std::to_string(value);
-      break;
-    }
-    case GP_WIDGET_TOGGLE:
-    case GP_WIDGET_DATE: {
-      int value = 0;
-      if (gp_widget_get_value(w, &value) == GP_OK) s.value = std::to_string(value);
-      break;
-    }
-    default:
-      break;
-  }
-  return s;
-}
-
-void collect_leaves(CameraWidget* w, std::vector<CameraSetting>& out) {
-  CameraWidgetType type;
-  gp_widget_get_type(w, &type);
-  if (type == GP_WIDGET_WINDOW || type == GP_WIDGET_SECTION) {
-    const int n = gp_widget_count_children(w);
-    for (int i = 0; i < n; ++i) {
-      CameraWidget* child = nullptr;
-      if (gp_widget_get_child(w, i, &child) == GP_OK) collect_leaves(child, out);
-    }
-    return;
-  }
-  if (type != GP_WIDGET_BUTTON) out.push_back(describe(w));
 }
 
 }  // namespace
@@ -305,7 +194,7 @@ struct Gphoto2Camera::State {
     for (const auto& n : kSerialNames) {
       CameraWidget* child = nullptr;
       if (gp_widget_get_child_by_name(root, n.c_str(), &child) == GP_OK)
-        return describe(child).value;
+        return setting_of_widget(child).value;
     }
     return {};
   }
@@ -313,7 +202,7 @@ struct Gphoto2Camera::State {
   // The first of the setting's names this camera has; throws naming the
   // setting when it has none.
   std::string tablet_setting_widget(TabletSetting which, const char* doing) {
-    const std::string name = find_setting(names_of(which));
+    const std::string name = find_setting(widget_names(which));
     if (name.empty())
       throw CameraError(Kind::not_supported, "The " + model + " does not let rockface " + doing +
                                                  " the " + tablet_setting_name(which) +
@@ -418,7 +307,7 @@ struct Gphoto2Camera::State {
     CameraWidget* child = nullptr;
     if (gp_widget_get_child_by_name(root.get(), name.c_str(), &child) < GP_OK)
       throw CameraError(Kind::not_supported, "The " + model + " has no setting \"" + name + "\"");
-    return describe(child);
+    return setting_of_widget(child);
   }
 
   void write_setting(const std::string& name, const std::string& value) {
@@ -426,7 +315,7 @@ struct Gphoto2Camera::State {
     CameraWidget* child = nullptr;
     if (gp_widget_get_child_by_name(root.get(), name.c_str(), &child) < GP_OK)
       throw CameraError(Kind::not_supported, "The " + model + " has no setting \"" + name + "\"");
-    const CameraSetting current = describe(child);
+    const CameraSetting current = setting_of_widget(child);
     if (current.read_only)
       throw CameraError(Kind::not_supported, "The " + model + "'s " + current.label +
                                                  " cannot be changed over USB (set it on the "
@@ -534,7 +423,7 @@ std::vector<CameraSetting> Gphoto2Camera::settings() {
     state_->ensure_connected();
     WidgetPtr root = state_->config_root();
     std::vector<CameraSetting> out;
-    collect_leaves(root.get(), out);
+    collect_leaf_settings(root.get(), out);
     return out;
   });
 }
