@@ -107,4 +107,17 @@ Eigen::Vector2d lay_out_on_perimeter(const SectionPolygon& section,
 // caller names them W1, W2, ... in that order).
 void order_wedges(std::vector<Wedge>& wedges);
 
+// Length of each joint's trace on the excavation (edges between a joint
+// face and a free face), in the order of the block's planes; the longest.
+std::vector<std::pair<std::string, double>> traces_of(const blocks::Polyhedron& b);
+double longest(const std::vector<std::pair<std::string, double>>& t);
+
+// The place around the section of a wedge at angle_deg (0 right, 90 up).
+WedgePlace place_of(double angle_deg);
+
+// Mass, mode, factors of safety and support of a built wedge
+// (wedge_verdict.cpp).
+void analyse_wedge(const Context& c, Wedge& w, const std::vector<WedgePlane>& planes,
+                   const Eigen::Vector3d& apex_local);
+
 }  // namespace rockface::tunnel::wedge_phases
