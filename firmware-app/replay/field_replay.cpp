@@ -180,6 +180,7 @@ StoredCapture store_capture(storage::ProjectStore& store, const ReplayRequest& r
   capture.left_exif = camera::exif_fields(left.exif);
   capture.right_exif = camera::exif_fields(right.exif);
   capture.settings["preset"] = preset_name;
+  storage::record_camera(capture, camera::photo_camera(left.exif));
   out.capture_id = store.save_capture(capture);
   return out;
 }

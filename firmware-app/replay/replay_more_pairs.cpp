@@ -6,6 +6,7 @@
 #include "camera/mock_camera.h"
 #include "firmware-app/reconstruct/face_pair.h"
 #include "firmware-app/replay/replay_capture.h"
+#include "storage/project/calibration_library.h"
 
 namespace rockface::app {
 
@@ -63,6 +64,7 @@ MorePairsOutcome replay_more_pairs(storage::ProjectStore& store, const MorePairs
     capture.left_exif = camera::exif_fields(left.exif);
     capture.right_exif = camera::exif_fields(right.exif);
     capture.settings["preset"] = request.preset_name;
+    storage::record_camera(capture, camera::photo_camera(left.exif));
     out.capture_ids.push_back(store.save_capture(capture));
 
     // Unregistered (levelled camera frame, units of the base): the face

@@ -13,6 +13,7 @@
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
+#include "storage/project/calibration_library.h"
 #include "storage/project/model_registration.h"
 #include "storage/scene/export_scene_json.h"
 #include "storage/scene/face_outline_words.h"
@@ -204,6 +205,14 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
           r.lens = cal.intrinsics.lens;
           for (const auto& b : store.list_camera_bodies())
             if (cal.body_id && b.id == *cal.body_id) r.camera_body = b.make + " " + b.model;
+        }
+        // The body that took the pair, as the capture recorded it (its
+        // serial from USB where the photograph's EXIF has none).
+        if (auto taken = recorded_camera(store.load_capture(c.id))) {
+          taken->lens.clear();
+          taken->focal_mm.reset();
+          taken->width = taken->height = 0;
+          r.camera_body = taken->described();
         }
       } else {
         read_face_registration(read_model_registration(m.registration), r.accuracy);

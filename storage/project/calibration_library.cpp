@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 
 #include "core/common/number_format.h"
 
@@ -86,6 +87,37 @@ CalibrationChoice choose_calibration(ProjectStore& store, const PhotoCamera& pho
                 ": calibrate this camera and lens at this focal length (rockface calibrate "
                 "--project), or choose a calibration";
   return out;
+}
+
+void record_camera(Capture& capture, const PhotoCamera& photo) {
+  const std::pair<const char*, std::string> fields[] = {
+      {"camera_make", photo.make},
+      {"camera_model", photo.model},
+      {"camera_serial", photo.serial},
+      {"camera_lens", photo.lens},
+      {"camera_focal_mm", photo.focal_mm ? format_round_trip(*photo.focal_mm) : std::string()}};
+  for (const auto& [key, value] : fields)
+    if (!value.empty()) capture.settings[key] = value;
+}
+
+std::optional<PhotoCamera> recorded_camera(const Capture& capture) {
+  auto field = [&](const char* key) {
+    const auto it = capture.settings.find(key);
+    return it == capture.settings.end() ? std::string() : it->second;
+  };
+  PhotoCamera photo;
+  photo.make = field("camera_make");
+  photo.model = field("camera_model");
+  photo.serial = field("camera_serial");
+  photo.lens = field("camera_lens");
+  if (photo.make.empty() && photo.model.empty() && photo.serial.empty()) return std::nullopt;
+  const std::string focal = field("camera_focal_mm");
+  if (!focal.empty()) {
+    char* end = nullptr;
+    const double mm = std::strtod(focal.c_str(), &end);
+    if (end != focal.c_str() && std::isfinite(mm) && mm > 0) photo.focal_mm = mm;
+  }
+  return photo;
 }
 
 }  // namespace rockface::storage

@@ -34,4 +34,15 @@ CalibrationChoice choose_calibration(ProjectStore& store, const PhotoCamera& pho
 bool calibration_fits(const Calibration& calibration, const std::optional<CameraBody>& body,
                       const PhotoCamera& photo, std::string* why = nullptr);
 
+// The camera that took a capture, kept with it as its settings
+// camera_make, camera_model, camera_serial, camera_lens and
+// camera_focal_mm (issue 42: the tablet knew the body's serial over USB,
+// chose its calibration by it, and stored nothing of it). Empty fields are
+// left out.
+void record_camera(Capture& capture, const PhotoCamera& photo);
+
+// The camera a capture records (settings camera_*), or nothing when the
+// capture was stored without it (before this record existed).
+std::optional<PhotoCamera> recorded_camera(const Capture& capture);
+
 }  // namespace rockface::storage

@@ -152,6 +152,7 @@ void store_and_reconstruct(AppState& app) {
   // Bodies that keep their serial number in the maker note only: the one
   // the camera told over USB.
   if (photo.serial.empty()) photo.serial = app.capture.left->body_serial;
+  storage::record_camera(capture, photo);
   ReconstructionRunner* runner = app.services.reconstruction;
   // Its place in the visit: the pairs stored, and those on the queue before it.
   const WorkQueueStatus queued = app.reconstructions.status();

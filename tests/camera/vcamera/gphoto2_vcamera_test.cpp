@@ -18,6 +18,8 @@
 #include <gtest/gtest.h>
 
 #include "camera/gphoto2_camera.h"
+#include "storage/project/calibration_library.h"
+#include "storage/project/project_store.h"
 #include "tests/camera/vcamera/virtual_d750.h"
 #include "tests/support/cli_run.h"
 
@@ -259,18 +261,47 @@ TEST_F(VirtualD750Test, DeclaresTheCardFullAtPicture151WithAClearError) {
 // The tablet as the geologist runs it with the body plugged in: `rockface
 // ui` with no --camera takes the DSLR; the Capture screen connects, and
 // both shots are taken although the body gives no focus control over USB.
+// The pair is stored with the body that took it (issue 42: its model and
+// the serial number it gave over USB, which its EXIF does not carry);
+// with no calibration of that body in the project it is stored and not
+// reconstructed, and says so.
 TEST_F(VirtualD750Test, TheTabletShootsAPairWithItOnTheCaptureScreen) {
+  const fs::path project = d750_.folder / "site.rockface";
+  storage::RecordId visit = 0;
+  {
+    storage::ProjectInfo info;
+    info.name = "virtual D750";
+    auto store = storage::ProjectStore::create(project, info);
+    visit = store.begin_visit("tablet");
+  }
   const fs::path steps = d750_.folder / "steps.json";
   std::ofstream(steps) << R"({ "viewport": [1280, 800], "steps": [
     {"tap": "Capture"}, {"tap": "Connect camera"}, {"wait": "task"},
     {"tap": "Shoot left"}, {"wait": "task"}, {"screenshot": "left"},
-    {"tap": "Shoot right"}, {"wait": "task"}, {"screenshot": "pair"} ] })";
+    {"tap": "Shoot right"}, {"wait": "task"}, {"screenshot": "pair"},
+    {"tap": "Store pair and reconstruct"}, {"wait": "task"} ] })";
   const test::CliRun run =
-      test::run_rockface("ui --headless --script " + steps.string() + " --screenshots " +
-                         (d750_.folder / "shots").string());
+      test::run_rockface("ui --headless --project " + project.string() + " --script " +
+                         steps.string() + " --screenshots " + (d750_.folder / "shots").string());
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
-  EXPECT_NE(run.out.find("status: Right shot: right shot captured"), std::string::npos) << run.out;
   EXPECT_TRUE(fs::exists(d750_.folder / "shots" / "pair.png"));
+
+  auto store = storage::ProjectStore::open(project);
+  const auto captures = store.list_captures(visit);
+  ASSERT_EQ(captures.size(), 1u) << run.out;
+  EXPECT_FALSE(captures[0].calibration_id);  // no calibration of this body here
+  const std::optional<photogrammetry::PhotoCamera> body =
+      storage::recorded_camera(store.load_capture(captures[0].id));
+  ASSERT_TRUE(body) << "the pair was stored without its camera";
+  // The card's photographs say "NIKON D750" in their EXIF and carry no
+  // serial number; the body gives "0.1" over USB (vcamera.c's DeviceInfo,
+  // as OpensAndSaysModelAndSerialNumber reads it).
+  EXPECT_EQ(body->serial, "0.1");
+  EXPECT_NE(body->model.find("D750"), std::string::npos) << body->model;
+  EXPECT_NE(run.out.find("status: Pair 1: stored as capture 1; not reconstructed: no calibration "
+                         "of NIKON D750 (serial 0.1)"),
+            std::string::npos)
+      << run.out;
 }
 
 }  // namespace
