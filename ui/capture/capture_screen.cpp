@@ -6,6 +6,7 @@
 #include <GLES3/gl3.h>
 
 #include <atomic>
+#include <filesystem>
 #include <memory>
 
 #include <opencv2/imgcodecs.hpp>
@@ -162,9 +163,14 @@ void store_and_reconstruct(AppState& app) {
   // Whether the pair reached the project: a pair whose saving failed (a full
   // disk) is shown "not stored" again while its shots are still on screen.
   auto saved = std::make_shared<std::atomic<bool>>(false);
+  // The shots' files in the camera's spool: once the pair is in the
+  // project they are copies, and the spool would only grow (a RAW that came
+  // with a shot is not in the project and stays).
+  const std::vector<std::string> spooled{app.capture.left->image.saved_path,
+                                         app.capture.right->image.saved_path};
   app.reconstructions.add(
       "Pair " + std::to_string(pair),
-      [file, capture, photo, preset, runner, saved](Progress& progress) mutable {
+      [file, capture, photo, preset, runner, saved, spooled](Progress& progress) mutable {
         progress.report("storing the pair", 0.02);
         storage::ProjectStore store = storage::ProjectStore::open(file);
         // The calibration of the camera that took the pair (issue 42: the
@@ -178,6 +184,10 @@ void store_and_reconstruct(AppState& app) {
         if (choice.calibration) capture.calibration_id = choice.calibration->id;
         const storage::RecordId id = store.save_capture(capture);
         *saved = true;
+        for (const std::string& path : spooled) {
+          std::error_code ignored;  // a spool file already gone is no fault
+          if (!path.empty()) std::filesystem::remove(path, ignored);
+        }
         if (!choice.calibration)
           return "stored as capture " + std::to_string(id) +
                  "; not reconstructed: " + choice.refusal;

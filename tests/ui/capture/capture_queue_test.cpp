@@ -4,10 +4,13 @@
 // camera of the demo scene, the store's reconstruction); the reconstruction
 // is held at a gate until the next pair is shot, so what is checked does not
 // depend on how fast this machine reconstructs.
+#include <unistd.h>
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -52,7 +55,35 @@ void run_until(HeadlessSession& s, const std::function<bool()>& done) {
   }
 }
 
+// The tablet's camera spools its shots under the temporary folder
+// (FieldCameraConnector); other tests and other tablets' runs write the
+// same names there. This test's shots go to a folder of its own.
+class OwnTemporaryFolder {
+ public:
+  OwnTemporaryFolder()
+      : dir_(fs::temp_directory_path() /
+             ("rockface-capture-queue-tmp-" + std::to_string(::getpid()))) {
+    const char* was = std::getenv("TMPDIR");
+    if (was) was_ = was;
+    fs::create_directories(dir_);
+    ::setenv("TMPDIR", dir_.c_str(), 1);
+  }
+  ~OwnTemporaryFolder() {
+    if (was_)
+      ::setenv("TMPDIR", was_->c_str(), 1);
+    else
+      ::unsetenv("TMPDIR");
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+ private:
+  fs::path dir_;
+  std::optional<std::string> was_;
+};
+
 TEST(CaptureQueue, TheNextPairIsShotWhileTheLastPairsImageIsMade) {
+  const OwnTemporaryFolder own_tmp;
   const fs::path project = test::copy_of_demo("capture-queue");
   std::size_t captures = 0, models = 0;
   {
@@ -82,6 +113,10 @@ TEST(CaptureQueue, TheNextPairIsShotWhileTheLastPairsImageIsMade) {
   s.tap("Shoot right");
   s.settle();
   ASSERT_TRUE(app.capture.left && app.capture.right);
+  // The shots as the camera left them in the tablet's spool.
+  std::vector<std::string> spooled{app.capture.left->image.saved_path,
+                                   app.capture.right->image.saved_path};
+  for (const auto& f : spooled) ASSERT_TRUE(fs::exists(f)) << f;
   s.tap("Store pair and reconstruct");
   run_until(s, [&] { return gated.entered.load(); });
   ASSERT_TRUE(gated.entered) << "the pair went to the queue";
@@ -99,6 +134,8 @@ TEST(CaptureQueue, TheNextPairIsShotWhileTheLastPairsImageIsMade) {
   s.tap("Shoot right");
   run_until(s, [&] { return !app.task.running(); });
   ASSERT_TRUE(app.capture.left && app.capture.right);
+  spooled.push_back(app.capture.left->image.saved_path);
+  spooled.push_back(app.capture.right->image.saved_path);
   EXPECT_TRUE(app.reconstructions.busy()) << "the first pair's 3D image is still being made";
   // And stored behind it: two pairs in the queue.
   s.tap("Store pair and reconstruct");
@@ -110,6 +147,9 @@ TEST(CaptureQueue, TheNextPairIsShotWhileTheLastPairsImageIsMade) {
   EXPECT_FALSE(app.reconstructions.busy());
   auto store = storage::ProjectStore::open(project);
   EXPECT_EQ(store.list_captures().size(), captures + 2);
+  // Each pair's shots left the spool once the pair was in the project (the
+  // spool had kept every shot a tablet ever took).
+  for (const auto& f : spooled) EXPECT_FALSE(fs::exists(f)) << f;
   // Both pairs reconstructed, the second tied to the visit's face (the
   // runner's rule for a further pair; face_pair_runner_test.cpp checks it
   // against the truth).
