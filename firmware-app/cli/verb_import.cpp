@@ -96,11 +96,15 @@ VerbRun setup_import(CLI::App& sub) {
     if (r.skipped_points) std::cout << " (" << r.skipped_points << " without a return)";
     std::cout << "\n";
     if (r.meshed)
-      std::cout << "meshed: " << r.triangles << " triangles over the best plane, point spacing "
-                << r.point_spacing_m * 1000 << " mm, " << r.unused_points
+      std::cout << "meshed: " << r.triangles << " triangles "
+                << (r.round_meshing.empty() ? "over the best plane" : "as " + r.round_meshing)
+                << ", point spacing " << r.point_spacing_m * 1000 << " mm, " << r.unused_points
                 << " points in no triangle (holes kept, never bridged)\n";
     else
       std::cout << "mesh: " << r.triangles << " triangles of the file\n";
+    if (r.noise_sigma_m)
+      std::cout << "scatter normal to the surface: " << *r.noise_sigma_m * 1000
+                << " mm (taken as its depth precision)\n";
     if (r.frame == "survey") {
       std::cout << "survey coordinates: registered by the scanner's registration; file offset "
                 << survey_words(r.file_datum) << "\n";

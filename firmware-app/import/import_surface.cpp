@@ -11,8 +11,10 @@
 
 #include "core/common/error.h"
 #include "core/photogrammetry/surface/cloud_meshing.h"
+#include "core/photogrammetry/surface/cloud_noise.h"
 #include "core/photogrammetry/surface/surface_mesh.h"
 #include "core/photogrammetry/surface/virtual_view.h"
+#include "firmware-app/import/round_meshing.h"
 #include "firmware-app/records/project_visit.h"
 #include "storage/project/model_registration.h"
 
@@ -139,10 +141,35 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
     edges.triangles = triangles;
     meshed.median_spacing = edges.median_edge_length();
   } else {
+    // A scan of a whole round in a project with a tunnel: on the tunnel's
+    // developed view (round_meshing.h); any other cloud over its best plane.
+    std::optional<RoundMesh> round;
+    if (r.frame == "survey")
+      if (const auto tunnel = store.load_tunnel())
+        round = mesh_round(s.mesh.vertices, tunnel->alignment(r.project_datum), tunnel->profile);
     try {
-      meshed = photogrammetry::mesh_point_cloud(s.mesh.vertices);
+      if (!round) meshed = photogrammetry::mesh_point_cloud(s.mesh.vertices);
     } catch (const InputError& e) {
       throw InputError(source, e.reason());
+    }
+    if (round) {
+      meshed.triangles = std::move(round->triangles);
+      meshed.centroid = round->view_centre;
+      meshed.normal = round->toward_viewer;
+      meshed.median_spacing = round->median_spacing;
+      meshed.unused_points = round->unused_points;
+      r.round_meshing = round->words;
+      r.noise_sigma_m = round->noise_sigma_m;
+    } else {
+      // The cloud's scatter normal to its surface, in cells over its plane.
+      const Eigen::Vector3d u = meshed.normal.unitOrthogonal(), v = meshed.normal.cross(u);
+      std::vector<Eigen::Vector2d> uv(s.mesh.vertices.size());
+      for (std::size_t i = 0; i < uv.size(); ++i) {
+        const Eigen::Vector3d d = s.mesh.vertices[i] - meshed.centroid;
+        uv[i] = {d.dot(u), d.dot(v)};
+      }
+      r.noise_sigma_m = photogrammetry::cloud_noise_sigma(s.mesh.vertices, uv,
+                                                          std::max(0.1, 4 * meshed.median_spacing));
     }
     triangles = std::move(meshed.triangles);
     r.meshed = true;
@@ -155,10 +182,17 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
                          " point spacings");
   r.triangles = triangles.size();
   r.point_spacing_m = meshed.median_spacing;
-  const Eigen::Vector3d viewer = toward_viewer(s, triangles, meshed.centroid, meshed.normal,
-                                               view_from, from_file, r.view_side);
-  if (r.meshed && viewer.dot(meshed.normal) < 0)  // counter-clockwise seen from the viewer
-    for (auto& t : triangles) std::swap(t[1], t[2]);
+  Eigen::Vector3d viewer = meshed.normal;
+  if (!r.round_meshing.empty()) {
+    // Its triangles already face the inside; the view looks at the face
+    // from behind it, along the drive.
+    r.view_side = "from behind the face, along the tunnel";
+  } else {
+    viewer = toward_viewer(s, triangles, meshed.centroid, meshed.normal, view_from, from_file,
+                           r.view_side);
+    if (r.meshed && viewer.dot(meshed.normal) < 0)  // counter-clockwise seen from the viewer
+      for (auto& t : triangles) std::swap(t[1], t[2]);
+  }
 
   cv::Mat texture;
   if (!s.texture_file.empty()) {
@@ -213,18 +247,31 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   std::ostringstream words;
   words << request.file.filename().string() << ": " << s.format << ", " << r.points << " points";
   if (r.skipped_points) words << " (" << r.skipped_points << " without a return left out)";
-  words << (r.meshed ? ", meshed here (2.5D Delaunay, holes kept)" : ", its own faces");
+  words << (!r.round_meshing.empty() ? ", meshed here as " + r.round_meshing
+            : r.meshed               ? ", meshed here (2.5D Delaunay, holes kept)"
+                                     : ", its own faces");
   words << (r.frame == "survey" ? ", survey coordinates (file offset " + words_of(s.datum) + ")"
                                 : ", a local frame");
   nlohmann::json p;
   p["format"] = "rockface-import/1";
-  p["import"] = {
-      {"file", source},           {"format", s.format},
-      {"points", r.points},       {"skipped_points", r.skipped_points},
-      {"triangles", r.triangles}, {"meshed", r.meshed},
-      {"frame", r.frame},         {"file_datum", {s.datum.x(), s.datum.y(), s.datum.z()}},
-      {"view_side", r.view_side}, {"words", words.str()}};
+  p["import"] = {{"file", source},
+                 {"format", s.format},
+                 {"points", r.points},
+                 {"skipped_points", r.skipped_points},
+                 {"triangles", r.triangles},
+                 {"meshed", r.meshed},
+                 {"round_meshing", r.round_meshing},
+                 {"frame", r.frame},
+                 {"file_datum", {s.datum.x(), s.datum.y(), s.datum.z()}},
+                 {"view_side", r.view_side},
+                 {"words", words.str()}};
   p["point_spacing"] = r.point_spacing_m;
+  // What the over- and underbreak take as the surface's precision (a
+  // deviation within twice it is not counted): a scan's own scatter.
+  if (r.noise_sigma_m) {
+    p["predicted_depth_sigma_mm"] = *r.noise_sigma_m * 1000;
+    p["import"]["noise_sigma_mm"] = *r.noise_sigma_m * 1000;
+  }
   if (r.frame == "survey")
     p["registration"] = {{"scale_source", storage::kScannerRegistrationWords},
                          {"vertical_source", storage::kScannerRegistrationWords},

@@ -44,12 +44,16 @@ struct ImportResult {
   std::string format;
   std::size_t points = 0, triangles = 0, skipped_points = 0, unused_points = 0;
   bool meshed = false;            // a cloud meshed here (else the file's faces)
+  std::string round_meshing;      // a round meshed on the tunnel's developed view: how
   std::string frame;              // "survey" | "local"
   std::string registration_kind;  // "scanner" | "none"
   Eigen::Vector3d file_datum = Eigen::Vector3d::Zero();  // absolute = stored vertex + datum
   Eigen::Vector3d project_datum = Eigen::Vector3d::Zero();
   bool project_datum_set = false;  // the project took the file's datum
   double point_spacing_m = 0;
+  // A meshed cloud's scatter normal to its surface (cloud_noise.h), stored as
+  // the model's predicted depth precision.
+  std::optional<double> noise_sigma_m;
   int view_width = 0, view_height = 0;
   std::string view_side;  // how the side the view looks from was chosen, in words
 };
