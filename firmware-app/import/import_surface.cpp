@@ -122,9 +122,18 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   }
   for (auto& p : s.mesh.vertices) p += shift;
   std::optional<Eigen::Vector3d> view_from;
-  if (request.view_from)
+  bool from_scanner = false;
+  if (request.view_from) {
     view_from =
         *request.view_from - (r.frame == "survey" ? r.project_datum : Eigen::Vector3d::Zero());
+  } else if (!s.scanner_positions.empty()) {
+    // Where the scanner stood (PTX's header): the side it saw; several
+    // scans, their mean.
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const auto& p : s.scanner_positions) sum += p;
+    view_from = sum / static_cast<double>(s.scanner_positions.size()) + shift;
+    from_scanner = true;
+  }
 
   // A cloud becomes a surface; a mesh keeps its faces.
   const bool from_file = !s.mesh.faces.empty();
@@ -190,6 +199,7 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   } else {
     viewer = toward_viewer(s, triangles, meshed.centroid, meshed.normal, view_from, from_file,
                            r.view_side);
+    if (from_scanner) r.view_side = "from the side the scanner stood on (the file's header)";
     if (r.meshed && viewer.dot(meshed.normal) < 0)  // counter-clockwise seen from the viewer
       for (auto& t : triangles) std::swap(t[1], t[2]);
   }
