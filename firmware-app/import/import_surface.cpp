@@ -14,6 +14,7 @@
 #include "core/photogrammetry/surface/cloud_noise.h"
 #include "core/photogrammetry/surface/surface_mesh.h"
 #include "core/photogrammetry/surface/virtual_view.h"
+#include "firmware-app/import/import_control_points.h"
 #include "firmware-app/import/round_meshing.h"
 #include "firmware-app/records/project_visit.h"
 #include "storage/project/model_registration.h"
@@ -220,6 +221,33 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   in.toward_viewer = viewer;
   in.point_spacing = meshed.median_spacing;
   photogrammetry::VirtualView view = photogrammetry::render_virtual_view(in);
+  photogrammetry::Similarity camera;
+  camera.R = view.pose.R.transpose();
+  camera.t = view.pose.centre;
+  // Ground control picked on the view: the cloud (and the view's camera)
+  // scaled, levelled and turned onto the survey, stored in the project's
+  // frame (import_control_points.h).
+  std::optional<photogrammetry::ControlPointRegistration> control;
+  if (!request.gcp_file.empty()) {
+    if (r.frame != "local")
+      throw InputError("--gcp",
+                       "the cloud is in survey coordinates already (give --frame local "
+                       "if they are a local frame's)");
+    control = register_import_to_control(request.gcp_file, s.mesh.vertices, triangles, view.pixels,
+                                         view.pose.centre);
+    if (project.datum.isZero() && store.list_models().empty()) {
+      r.project_datum = control->datum;
+      r.project_datum_set = true;
+    }
+    photogrammetry::Similarity onto = control->transform;
+    onto.t += control->datum - r.project_datum;
+    for (auto& p : s.mesh.vertices) p = onto.apply(p);
+    camera = camera.then(onto);
+    r.registration_kind = "ground_control";
+    r.control_points = control->residuals.size();
+    r.control_rms_m = control->rms_m;
+    r.control_scale = onto.scale;
+  }
   view.pixels = {};  // the texture coordinates say the same; memory for the store
   r.view_width = view.intrinsics.width;
   r.view_height = view.intrinsics.height;
@@ -249,10 +277,11 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   model.mesh.texcoords = std::move(view.texcoords);  // into the view, the model's texture
   model.texture_side = "left";
   model.registration.kind = r.registration_kind;
-  photogrammetry::Similarity camera;
-  camera.R = view.pose.R.transpose();
-  camera.t = view.pose.centre;
   model.camera_to_mesh = camera;
+  if (control) {
+    for (const auto& e : control->residuals) model.residuals.push_back({e.id, e.residual});
+    model.registration.rms_m = control->rms_m;
+  }
 
   std::ostringstream words;
   words << request.file.filename().string() << ": " << s.format << ", " << r.points << " points";
@@ -282,7 +311,21 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
     p["predicted_depth_sigma_mm"] = *r.noise_sigma_m * 1000;
     p["import"]["noise_sigma_mm"] = *r.noise_sigma_m * 1000;
   }
-  if (r.frame == "survey")
+  if (control) {
+    nlohmann::json residuals = nlohmann::json::array();
+    for (const auto& e : control->residuals)
+      residuals.push_back({{"id", e.id}, {"distance_m", e.distance}});
+    p["registration"] = {{"scale_source", "ground control points"},
+                         {"vertical_source", "ground control points"},
+                         {"north_source", "ground control points"},
+                         {"scaled", true},
+                         {"scale", r.control_scale},
+                         {"control_points",
+                          {{"rms_m", control->rms_m},
+                           {"worst", control->worst_id},
+                           {"worst_m", control->worst_m},
+                           {"residuals", residuals}}}};
+  } else if (r.frame == "survey")
     p["registration"] = {{"scale_source", storage::kScannerRegistrationWords},
                          {"vertical_source", storage::kScannerRegistrationWords},
                          {"north_source", storage::kScannerRegistrationWords},
