@@ -18,7 +18,7 @@ namespace rockface::app {
 namespace {
 
 struct ImportOptions {
-  std::string project, file, columns, offset, view_from, frame;
+  std::string project, file, columns, offset, view_from, frame, gcp;
   storage::RecordId visit = 0;
   bool new_visit = false;
 };
@@ -65,6 +65,9 @@ VerbRun setup_import(CLI::App& sub) {
                  "coordinates are beyond 10 km or an offset is given");
   sub.add_option("--view-from", o->view_from,
                  "E,N,Z: a point the surface is seen from (the scanner's station)");
+  sub.add_option("--gcp", o->gcp,
+                 "a local-frame cloud's ground control points, CSV id,u,v,X,Y,Z (u, v pixels of "
+                 "its virtual view, as `replay --gcp` takes them on the left photograph)");
   return [o] {
     ImportRequest request;
     request.file = o->file;
@@ -73,6 +76,7 @@ VerbRun setup_import(CLI::App& sub) {
     if (!o->offset.empty()) request.file_options.offset = parse_triple(o->offset, "--offset");
     if (!o->view_from.empty()) request.view_from = parse_triple(o->view_from, "--view-from");
     request.frame = o->frame;
+    request.gcp_file = o->gcp;
     if (o->visit != 0) request.visit = o->visit;
     // The file is checked before the project is created or changed.
     if (!std::filesystem::is_regular_file(o->file)) throw InputError(o->file, "no such file");
@@ -96,17 +100,28 @@ VerbRun setup_import(CLI::App& sub) {
     if (r.skipped_points) std::cout << " (" << r.skipped_points << " without a return)";
     std::cout << "\n";
     if (r.meshed)
-      std::cout << "meshed: " << r.triangles << " triangles over the best plane, point spacing "
-                << r.point_spacing_m * 1000 << " mm, " << r.unused_points
+      std::cout << "meshed: " << r.triangles << " triangles "
+                << (r.round_meshing.empty() ? "over the best plane" : "as " + r.round_meshing)
+                << ", point spacing " << r.point_spacing_m * 1000 << " mm, " << r.unused_points
                 << " points in no triangle (holes kept, never bridged)\n";
     else
       std::cout << "mesh: " << r.triangles << " triangles of the file\n";
+    if (r.noise_sigma_m)
+      std::cout << "scatter normal to the surface: " << *r.noise_sigma_m * 1000
+                << " mm (taken as its depth precision)\n";
     if (r.frame == "survey") {
       std::cout << "survey coordinates: registered by the scanner's registration; file offset "
                 << survey_words(r.file_datum) << "\n";
       if (r.project_datum_set)
         std::cout << "the project's datum is now the file's: " << survey_words(r.project_datum)
                   << "\n";
+    } else if (r.control_points > 0) {
+      std::cout << "a local frame registered by " << r.control_points
+                << " ground control points: scale " << r.control_scale << ", rms "
+                << r.control_rms_m * 1000 << " mm\n";
+      if (r.project_datum_set)
+        std::cout << "the project's datum is now the control points': "
+                  << survey_words(r.project_datum) << "\n";
     } else {
       std::cout << "a local frame: not scaled or oriented until control points are picked on it\n";
     }

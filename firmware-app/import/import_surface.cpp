@@ -11,8 +11,11 @@
 
 #include "core/common/error.h"
 #include "core/photogrammetry/surface/cloud_meshing.h"
+#include "core/photogrammetry/surface/cloud_noise.h"
 #include "core/photogrammetry/surface/surface_mesh.h"
 #include "core/photogrammetry/surface/virtual_view.h"
+#include "firmware-app/import/import_control_points.h"
+#include "firmware-app/import/round_meshing.h"
 #include "firmware-app/records/project_visit.h"
 #include "storage/project/model_registration.h"
 
@@ -120,9 +123,18 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   }
   for (auto& p : s.mesh.vertices) p += shift;
   std::optional<Eigen::Vector3d> view_from;
-  if (request.view_from)
+  bool from_scanner = false;
+  if (request.view_from) {
     view_from =
         *request.view_from - (r.frame == "survey" ? r.project_datum : Eigen::Vector3d::Zero());
+  } else if (!s.scanner_positions.empty()) {
+    // Where the scanner stood (PTX's header): the side it saw; several
+    // scans, their mean.
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const auto& p : s.scanner_positions) sum += p;
+    view_from = sum / static_cast<double>(s.scanner_positions.size()) + shift;
+    from_scanner = true;
+  }
 
   // A cloud becomes a surface; a mesh keeps its faces.
   const bool from_file = !s.mesh.faces.empty();
@@ -139,10 +151,35 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
     edges.triangles = triangles;
     meshed.median_spacing = edges.median_edge_length();
   } else {
+    // A scan of a whole round in a project with a tunnel: on the tunnel's
+    // developed view (round_meshing.h); any other cloud over its best plane.
+    std::optional<RoundMesh> round;
+    if (r.frame == "survey")
+      if (const auto tunnel = store.load_tunnel())
+        round = mesh_round(s.mesh.vertices, tunnel->alignment(r.project_datum), tunnel->profile);
     try {
-      meshed = photogrammetry::mesh_point_cloud(s.mesh.vertices);
+      if (!round) meshed = photogrammetry::mesh_point_cloud(s.mesh.vertices);
     } catch (const InputError& e) {
       throw InputError(source, e.reason());
+    }
+    if (round) {
+      meshed.triangles = std::move(round->triangles);
+      meshed.centroid = round->view_centre;
+      meshed.normal = round->toward_viewer;
+      meshed.median_spacing = round->median_spacing;
+      meshed.unused_points = round->unused_points;
+      r.round_meshing = round->words;
+      r.noise_sigma_m = round->noise_sigma_m;
+    } else {
+      // The cloud's scatter normal to its surface, in cells over its plane.
+      const Eigen::Vector3d u = meshed.normal.unitOrthogonal(), v = meshed.normal.cross(u);
+      std::vector<Eigen::Vector2d> uv(s.mesh.vertices.size());
+      for (std::size_t i = 0; i < uv.size(); ++i) {
+        const Eigen::Vector3d d = s.mesh.vertices[i] - meshed.centroid;
+        uv[i] = {d.dot(u), d.dot(v)};
+      }
+      r.noise_sigma_m = photogrammetry::cloud_noise_sigma(s.mesh.vertices, uv,
+                                                          std::max(0.1, 4 * meshed.median_spacing));
     }
     triangles = std::move(meshed.triangles);
     r.meshed = true;
@@ -155,10 +192,18 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
                          " point spacings");
   r.triangles = triangles.size();
   r.point_spacing_m = meshed.median_spacing;
-  const Eigen::Vector3d viewer = toward_viewer(s, triangles, meshed.centroid, meshed.normal,
-                                               view_from, from_file, r.view_side);
-  if (r.meshed && viewer.dot(meshed.normal) < 0)  // counter-clockwise seen from the viewer
-    for (auto& t : triangles) std::swap(t[1], t[2]);
+  Eigen::Vector3d viewer = meshed.normal;
+  if (!r.round_meshing.empty()) {
+    // Its triangles already face the inside; the view looks at the face
+    // from behind it, along the drive.
+    r.view_side = "from behind the face, along the tunnel";
+  } else {
+    viewer = toward_viewer(s, triangles, meshed.centroid, meshed.normal, view_from, from_file,
+                           r.view_side);
+    if (from_scanner) r.view_side = "from the side the scanner stood on (the file's header)";
+    if (r.meshed && viewer.dot(meshed.normal) < 0)  // counter-clockwise seen from the viewer
+      for (auto& t : triangles) std::swap(t[1], t[2]);
+  }
 
   cv::Mat texture;
   if (!s.texture_file.empty()) {
@@ -176,6 +221,33 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   in.toward_viewer = viewer;
   in.point_spacing = meshed.median_spacing;
   photogrammetry::VirtualView view = photogrammetry::render_virtual_view(in);
+  photogrammetry::Similarity camera;
+  camera.R = view.pose.R.transpose();
+  camera.t = view.pose.centre;
+  // Ground control picked on the view: the cloud (and the view's camera)
+  // scaled, levelled and turned onto the survey, stored in the project's
+  // frame (import_control_points.h).
+  std::optional<photogrammetry::ControlPointRegistration> control;
+  if (!request.gcp_file.empty()) {
+    if (r.frame != "local")
+      throw InputError("--gcp",
+                       "the cloud is in survey coordinates already (give --frame local "
+                       "if they are a local frame's)");
+    control = register_import_to_control(request.gcp_file, s.mesh.vertices, triangles, view.pixels,
+                                         view.pose.centre);
+    if (project.datum.isZero() && store.list_models().empty()) {
+      r.project_datum = control->datum;
+      r.project_datum_set = true;
+    }
+    photogrammetry::Similarity onto = control->transform;
+    onto.t += control->datum - r.project_datum;
+    for (auto& p : s.mesh.vertices) p = onto.apply(p);
+    camera = camera.then(onto);
+    r.registration_kind = "ground_control";
+    r.control_points = control->residuals.size();
+    r.control_rms_m = control->rms_m;
+    r.control_scale = onto.scale;
+  }
   view.pixels = {};  // the texture coordinates say the same; memory for the store
   r.view_width = view.intrinsics.width;
   r.view_height = view.intrinsics.height;
@@ -205,27 +277,55 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   model.mesh.texcoords = std::move(view.texcoords);  // into the view, the model's texture
   model.texture_side = "left";
   model.registration.kind = r.registration_kind;
-  photogrammetry::Similarity camera;
-  camera.R = view.pose.R.transpose();
-  camera.t = view.pose.centre;
   model.camera_to_mesh = camera;
+  if (control) {
+    for (const auto& e : control->residuals) model.residuals.push_back({e.id, e.residual});
+    model.registration.rms_m = control->rms_m;
+  }
 
   std::ostringstream words;
   words << request.file.filename().string() << ": " << s.format << ", " << r.points << " points";
   if (r.skipped_points) words << " (" << r.skipped_points << " without a return left out)";
-  words << (r.meshed ? ", meshed here (2.5D Delaunay, holes kept)" : ", its own faces");
+  words << (!r.round_meshing.empty() ? ", meshed here as " + r.round_meshing
+            : r.meshed               ? ", meshed here (2.5D Delaunay, holes kept)"
+                                     : ", its own faces");
   words << (r.frame == "survey" ? ", survey coordinates (file offset " + words_of(s.datum) + ")"
                                 : ", a local frame");
   nlohmann::json p;
   p["format"] = "rockface-import/1";
-  p["import"] = {
-      {"file", source},           {"format", s.format},
-      {"points", r.points},       {"skipped_points", r.skipped_points},
-      {"triangles", r.triangles}, {"meshed", r.meshed},
-      {"frame", r.frame},         {"file_datum", {s.datum.x(), s.datum.y(), s.datum.z()}},
-      {"view_side", r.view_side}, {"words", words.str()}};
+  p["import"] = {{"file", source},
+                 {"format", s.format},
+                 {"points", r.points},
+                 {"skipped_points", r.skipped_points},
+                 {"triangles", r.triangles},
+                 {"meshed", r.meshed},
+                 {"round_meshing", r.round_meshing},
+                 {"frame", r.frame},
+                 {"file_datum", {s.datum.x(), s.datum.y(), s.datum.z()}},
+                 {"view_side", r.view_side},
+                 {"words", words.str()}};
   p["point_spacing"] = r.point_spacing_m;
-  if (r.frame == "survey")
+  // What the over- and underbreak take as the surface's precision (a
+  // deviation within twice it is not counted): a scan's own scatter.
+  if (r.noise_sigma_m) {
+    p["predicted_depth_sigma_mm"] = *r.noise_sigma_m * 1000;
+    p["import"]["noise_sigma_mm"] = *r.noise_sigma_m * 1000;
+  }
+  if (control) {
+    nlohmann::json residuals = nlohmann::json::array();
+    for (const auto& e : control->residuals)
+      residuals.push_back({{"id", e.id}, {"distance_m", e.distance}});
+    p["registration"] = {{"scale_source", "ground control points"},
+                         {"vertical_source", "ground control points"},
+                         {"north_source", "ground control points"},
+                         {"scaled", true},
+                         {"scale", r.control_scale},
+                         {"control_points",
+                          {{"rms_m", control->rms_m},
+                           {"worst", control->worst_id},
+                           {"worst_m", control->worst_m},
+                           {"residuals", residuals}}}};
+  } else if (r.frame == "survey")
     p["registration"] = {{"scale_source", storage::kScannerRegistrationWords},
                          {"vertical_source", storage::kScannerRegistrationWords},
                          {"north_source", storage::kScannerRegistrationWords},

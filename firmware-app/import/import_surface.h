@@ -37,19 +37,28 @@ struct ImportRequest {
   // None: the file's normals or faces say, else the upper side of a surface
   // lying flat, else a side the note names.
   std::optional<Eigen::Vector3d> view_from;
+  // A local-frame cloud's ground control: CSV id,u,v,X,Y,Z, u and v pixels
+  // of its virtual view (import_control_points.h); empty: none.
+  std::string gcp_file;
 };
 
 struct ImportResult {
   storage::RecordId visit = 0, model = 0, capture = 0;
   std::string format;
   std::size_t points = 0, triangles = 0, skipped_points = 0, unused_points = 0;
-  bool meshed = false;            // a cloud meshed here (else the file's faces)
-  std::string frame;              // "survey" | "local"
-  std::string registration_kind;  // "scanner" | "none"
+  bool meshed = false;             // a cloud meshed here (else the file's faces)
+  std::string round_meshing;       // a round meshed on the tunnel's developed view: how
+  std::string frame;               // "survey" | "local"
+  std::string registration_kind;   // "scanner" | "ground_control" | "none"
+  std::size_t control_points = 0;  // ground control: how many, their rms, the scale found
+  double control_rms_m = 0, control_scale = 1;
   Eigen::Vector3d file_datum = Eigen::Vector3d::Zero();  // absolute = stored vertex + datum
   Eigen::Vector3d project_datum = Eigen::Vector3d::Zero();
   bool project_datum_set = false;  // the project took the file's datum
   double point_spacing_m = 0;
+  // A meshed cloud's scatter normal to its surface (cloud_noise.h), stored as
+  // the model's predicted depth precision.
+  std::optional<double> noise_sigma_m;
   int view_width = 0, view_height = 0;
   std::string view_side;  // how the side the view looks from was chosen, in words
 };

@@ -9,7 +9,9 @@ tunnel::FrameRegistration frame_registration(const VisitSurface& surface,
   const storage::Model& m = surface.first;
   const storage::ModelRegistration reg = storage::read_model_registration(m.registration);
   tunnel::FrameRegistration out;
-  if (reg.kind == "ground_control") {
+  if (reg.kind == "ground_control" || reg.kind == storage::kScannerRegistration) {
+    // A scan in survey coordinates was registered to the site's control by
+    // its surveyor: placed as ground control is, with no residuals of ours.
     out.method = tunnel::VisitPlacement::Method::ground_control;
     for (const auto& r : m.residuals) out.residuals.push_back({r.label, r.residual});
     out.rms_m = m.registration.rms_m;
@@ -39,9 +41,18 @@ std::optional<storage::VisitPlacement> known_placement(storage::ProjectStore& st
                                                        storage::RecordId visit_id) {
   if (auto stored = store.load_visit_placement(visit_id)) return stored;
   const auto models = store.list_visit_models(visit_id);
-  if (models.empty() || models.front().registration_kind != "ground_control") return std::nullopt;
-  return place_visit(tunnel.alignment(store.project().datum), tunnel.profile,
-                     visit_surface(store, visit_id), visit_id);
+  if (models.empty()) return std::nullopt;
+  const std::string& kind = models.front().registration_kind;
+  if (kind != "ground_control" && kind != storage::kScannerRegistration) return std::nullopt;
+  storage::VisitPlacement placed =
+      place_visit(tunnel.alignment(store.project().datum), tunnel.profile,
+                  visit_surface(store, visit_id), visit_id);
+  if (kind == storage::kScannerRegistration) {
+    placed.note =
+        std::string("a scan in survey coordinates (") + storage::kScannerRegistrationWords + ")";
+    placed.rms_m.reset();  // the surveyor's residuals are not in the file
+  }
+  return placed;
 }
 
 }  // namespace rockface::app

@@ -17,6 +17,7 @@ void take_datum(ImportedSurface& s) {
   // Rounded to metres: a datum a surveyor can read and type again.
   const Eigen::Vector3d datum = vertices.front().array().round().matrix();
   for (auto& p : vertices) p -= datum;
+  for (auto& p : s.scanner_positions) p -= datum;
   s.datum += datum;
 }
 

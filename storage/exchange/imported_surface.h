@@ -31,6 +31,9 @@ struct ImportedSurface {
   // Points the file holds but that carry no surface: a scanner's "no
   // return" (0, 0, 0 in PTX, NaN in an organised PCD). Counted, not kept.
   std::size_t skipped_points = 0;
+  // Where the scanner stood for each scan, relative to `datum` as the
+  // vertices (PTX's header): the side the surface was seen from.
+  std::vector<Eigen::Vector3d> scanner_positions;
 };
 
 // The absolute coordinates beyond which a datum is taken (10 km: survey

@@ -95,7 +95,8 @@ ImportedSurface parse_ptx(std::string_view bytes, const std::string& source) {
                                    " x " + std::to_string(static_cast<std::uint64_t>(rows)) +
                                    " points do not fit in the file's remaining " +
                                    std::to_string(lines.remaining()) + " bytes");
-    lines.exactly(3, name + "'s scanner position");
+    const auto& position_line = lines.exactly(3, name + "'s scanner position");
+    const Eigen::Vector3d position(position_line[0], position_line[1], position_line[2]);
     for (int k = 0; k < 3; ++k) lines.exactly(3, name + "'s scanner axis");
     Eigen::Matrix4d m;
     for (int i = 0; i < 4; ++i) {
@@ -105,6 +106,10 @@ ImportedSurface parse_ptx(std::string_view bytes, const std::string& source) {
     // PTX writes the matrix for row vectors: p' = p * M, translation last row.
     const Eigen::Matrix3d R = m.topLeftCorner<3, 3>().transpose();
     const Eigen::Vector3d t = m.block<1, 3>(3, 0).transpose();
+    // The header's position is the scanner's, registered (the matrix's
+    // translation, written again); an export that left it 0 0 0 has the
+    // scanner's origin registered by the matrix: its translation.
+    out.scanner_positions.push_back(position.isZero() ? t : position);
     const auto count = static_cast<std::uint64_t>(points);
     out.mesh.vertices.reserve(out.mesh.vertices.size() + count);
     for (std::uint64_t n = 0; n < count; ++n) {

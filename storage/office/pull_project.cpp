@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 #include "storage/office/server_schema.h"
 #include "storage/office/sha256.h"
 #include "storage/office/sqlite_rows.h"
+#include "storage/project/blob_parts.h"
 #include "storage/project/project_store.h"
 
 namespace rockface::storage::office {
@@ -149,7 +151,10 @@ class ProjectWriter {
       } else if (v.is_object() && v.contains("$ref")) {
         st.bind_int64(at, resolve(table, names[i], v["$ref"].get<std::string>(), where));
       } else if (v.is_object() && v.contains("$blob")) {
-        sqlite3_bind_zeroblob64(st.get(), at, v.at("size").get<std::uint64_t>());
+        // A column stored in parts (a model's mesh) stays empty: its bytes
+        // go into its parts table as the tablet's own save writes them.
+        const bool in_parts = parts::parts_table_of(table, names[i]) != nullptr;
+        sqlite3_bind_zeroblob64(st.get(), at, in_parts ? 0 : v.at("size").get<std::uint64_t>());
         blobs.emplace_back(names[i], v);
       } else if (v.is_object() && v.contains("$hex")) {
         const auto bytes = bytes_of_hex(v["$hex"].get<std::string>(), where + "." + names[i]);
@@ -199,7 +204,12 @@ class ProjectWriter {
                            " bytes, the record " + std::to_string(size));
     const std::int64_t chunk = head.int64(0, 2);
     const std::int64_t chunks = (size + chunk - 1) / chunk;
-    BlobWriter writer(db_, table, column, rowid);
+    std::optional<BlobWriter> writer;
+    std::optional<parts::PartWriter> in_parts;
+    if (const auto* table_of_parts = parts::parts_table_of(table, column))
+      in_parts.emplace(db_, *table_of_parts, rowid);
+    else
+      writer.emplace(db_, table, column, rowid);
     Sha256 h;
     std::int64_t at = 0;
     for (std::int64_t i = 0; i < chunks; ++i) {
@@ -216,9 +226,13 @@ class ProjectWriter {
                              "; the pull was abandoned");
       const auto bytes = r.bytes(0, 0);
       h.add(bytes);
-      writer.write(at, bytes.data(), bytes.size());
+      if (in_parts)
+        in_parts->append(bytes.data(), bytes.size());
+      else
+        writer->write(at, bytes.data(), bytes.size());
       at += want;
     }
+    if (in_parts) in_parts->finish();
     const std::string got = h.hex();
     if (got != sha)
       throw InputError(server_.label() + ": " + what,

@@ -68,6 +68,10 @@ BlobReader::BlobReader(sqlite::Connection& db, const std::string& table, const s
       sqlite3_blob_open(db.handle(), "main", table.c_str(), column.c_str(), rowid, 0, &blob_);
   if (rc != SQLITE_OK) sqlite::fail(db.handle(), rc, db.file(), where_);
   size_ = sqlite3_blob_bytes(blob_);
+  if (const auto* table_of_parts = parts::parts_table_of(table, column); table_of_parts && !size_) {
+    parts_.emplace(db, *table_of_parts, rowid, where_);
+    size_ = static_cast<std::int64_t>(parts_->size());
+  }
 }
 
 BlobReader::~BlobReader() {
@@ -75,6 +79,7 @@ BlobReader::~BlobReader() {
 }
 
 void BlobReader::read(std::int64_t offset, std::vector<std::uint8_t>& out) {
+  if (parts_) return parts_->read(static_cast<std::uint64_t>(offset), out);
   const int rc =
       sqlite3_blob_read(blob_, out.data(), static_cast<int>(out.size()), static_cast<int>(offset));
   if (rc != SQLITE_OK) sqlite::fail(db_.handle(), rc, db_.file(), where_);

@@ -8,12 +8,14 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "storage/project/blob_parts.h"
 #include "storage/project/project_sqlite.h"
 
 namespace rockface::storage::office {
@@ -51,7 +53,10 @@ std::vector<ForeignKey> foreign_keys(sqlite::Connection& db, const std::string& 
 std::vector<std::string> column_names(sqlite::Connection& db, const std::string& table);
 
 // Reads a blob column of one row in pieces of `chunk` bytes
-// (sqlite3_blob_open), so that a photograph is never held whole.
+// (sqlite3_blob_open), so that a photograph is never held whole. A column
+// whose bytes are stored in parts (a model's mesh since schema 11:
+// storage/project/blob_parts.h) is read from its parts when the column is
+// empty, so the office gets the same bytes from either layout.
 class BlobReader {
  public:
   BlobReader(sqlite::Connection& db, const std::string& table, const std::string& column,
@@ -66,6 +71,7 @@ class BlobReader {
  private:
   sqlite::Connection& db_;
   sqlite3_blob* blob_ = nullptr;
+  std::optional<parts::PartsReader> parts_;
   std::int64_t size_ = 0;
   std::string where_;
 };

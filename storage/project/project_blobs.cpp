@@ -49,7 +49,9 @@ class Reader {
 
 }  // namespace
 
-std::vector<std::uint8_t> encode_mesh(const Mesh& mesh) {
+namespace {
+
+void check_mesh(const Mesh& mesh) {
   const std::size_t nv = mesh.vertices.size();
   if (!mesh.texcoords.empty() && mesh.texcoords.size() != nv)
     throw InputError("model mesh", "texcoords: " + std::to_string(mesh.texcoords.size()) + " for " +
@@ -62,66 +64,97 @@ std::vector<std::uint8_t> encode_mesh(const Mesh& mesh) {
       if (v < 0 || static_cast<std::size_t>(v) >= nv)
         throw InputError("model mesh", "faces[" + std::to_string(f) + "] refers to vertex " +
                                            std::to_string(v) + " of " + std::to_string(nv));
+}
+
+// The arrays are written and read whole: a vertex is three doubles, a face
+// three i32, a texcoord two f32, a colour three bytes, with no padding, which
+// is the blob's layout on a little-endian machine.
+static_assert(sizeof(Eigen::Vector3d) == 24);
+static_assert(sizeof(std::array<std::int32_t, 3>) == 12);
+static_assert(sizeof(std::array<float, 2>) == 8);
+static_assert(sizeof(std::array<std::uint8_t, 3>) == 3);
+
+}  // namespace
+
+void encode_mesh(const Mesh& mesh, const ByteSink& sink) {
+  check_mesh(mesh);
   std::uint32_t flags = 0;
   if (!mesh.texcoords.empty()) flags |= kHasTexcoords;
   if (!mesh.colours.empty()) flags |= kHasColours;
+  std::vector<std::uint8_t> head(std::begin(kMeshMagic), std::end(kMeshMagic));
+  append_bytes(head, flags);
+  append_bytes(head, static_cast<std::uint64_t>(mesh.vertices.size()));
+  append_bytes(head, static_cast<std::uint64_t>(mesh.faces.size()));
+  sink(head.data(), head.size());
+  sink(mesh.vertices.data(), mesh.vertices.size() * sizeof(mesh.vertices[0]));
+  sink(mesh.faces.data(), mesh.faces.size() * sizeof(mesh.faces[0]));
+  sink(mesh.texcoords.data(), mesh.texcoords.size() * sizeof(mesh.texcoords[0]));
+  sink(mesh.colours.data(), mesh.colours.size() * sizeof(mesh.colours[0]));
+}
 
-  std::vector<std::uint8_t> out(std::begin(kMeshMagic), std::end(kMeshMagic));
-  out.reserve(8 + 4 + 16 + nv * (24 + 8 + 3) + mesh.faces.size() * 12);
-  append_bytes(out, flags);
-  append_bytes(out, static_cast<std::uint64_t>(nv));
-  append_bytes(out, static_cast<std::uint64_t>(mesh.faces.size()));
-  for (const auto& v : mesh.vertices) {
-    append_bytes(out, v.x());
-    append_bytes(out, v.y());
-    append_bytes(out, v.z());
-  }
-  for (const auto& f : mesh.faces)
-    for (std::int32_t i : f) append_bytes(out, i);
-  for (const auto& t : mesh.texcoords) append_bytes(out, t);
-  for (const auto& c : mesh.colours) append_bytes(out, c);
+std::vector<std::uint8_t> encode_mesh(const Mesh& mesh) {
+  std::vector<std::uint8_t> out;
+  out.reserve(8 + 4 + 16 + mesh.vertices.size() * (24 + 8 + 3) + mesh.faces.size() * 12);
+  encode_mesh(mesh, [&](const void* bytes, std::size_t n) {
+    const auto* p = static_cast<const std::uint8_t*>(bytes);
+    out.insert(out.end(), p, p + n);
+  });
   return out;
 }
 
-Mesh decode_mesh(const std::vector<std::uint8_t>& blob, const std::string& where) {
-  Reader in(blob, where);
+Mesh decode_mesh(std::uint64_t size, const ByteSource& take, const std::string& where) {
+  std::uint64_t remaining = size;
+  const auto get = [&](void* dst, std::uint64_t n) {
+    if (n > remaining)
+      throw Error(where + ": stored data is damaged (truncated at byte " +
+                  std::to_string(size - remaining) + " of " + std::to_string(size) + ")");
+    if (n > 0) take(dst, static_cast<std::size_t>(n));
+    remaining -= n;
+  };
   char magic[8];
-  in.take(magic, sizeof(magic));
+  get(magic, sizeof(magic));
   if (std::memcmp(magic, kMeshMagic, sizeof(magic)) != 0)
     throw Error(where + ": stored mesh is damaged or of an unknown format");
-  const auto flags = in.get<std::uint32_t>();
-  const auto nv = in.get<std::uint64_t>();
-  const auto nf = in.get<std::uint64_t>();
+  std::uint32_t flags = 0;
+  std::uint64_t nv = 0, nf = 0;
+  get(&flags, sizeof(flags));
+  get(&nv, sizeof(nv));
+  get(&nf, sizeof(nf));
   const std::uint64_t per_vertex =
       24 + ((flags & kHasTexcoords) ? 8 : 0) + ((flags & kHasColours) ? 3 : 0);
-  // Check the counts against the blob before allocating what they claim.
-  if (nv > in.remaining() / per_vertex || nf > in.remaining() / 12 ||
-      nv * per_vertex + nf * 12 != in.remaining())
+  // Check the counts against the stored size before allocating what they claim.
+  if (nv > remaining / per_vertex || nf > remaining / 12 || nv * per_vertex + nf * 12 != remaining)
     throw Error(where + ": stored mesh is damaged (counts do not match its size)");
   Mesh mesh;
   mesh.vertices.resize(nv);
-  for (auto& v : mesh.vertices) {
-    const double x = in.get<double>(), y = in.get<double>(), z = in.get<double>();
-    v = Eigen::Vector3d(x, y, z);
-  }
+  get(mesh.vertices.data(), nv * sizeof(mesh.vertices[0]));
   mesh.faces.resize(nf);
-  for (auto& f : mesh.faces) {
-    for (auto& i : f) {
-      i = in.get<std::int32_t>();
+  get(mesh.faces.data(), nf * sizeof(mesh.faces[0]));
+  for (const auto& f : mesh.faces)
+    for (const std::int32_t i : f)
       if (i < 0 || static_cast<std::uint64_t>(i) >= nv)
         throw Error(where + ": stored mesh is damaged (face refers to vertex " + std::to_string(i) +
                     ")");
-    }
-  }
   if (flags & kHasTexcoords) {
     mesh.texcoords.resize(nv);
-    in.take(mesh.texcoords.data(), nv * sizeof(mesh.texcoords[0]));
+    get(mesh.texcoords.data(), nv * sizeof(mesh.texcoords[0]));
   }
   if (flags & kHasColours) {
     mesh.colours.resize(nv);
-    in.take(mesh.colours.data(), nv * sizeof(mesh.colours[0]));
+    get(mesh.colours.data(), nv * sizeof(mesh.colours[0]));
   }
   return mesh;
+}
+
+Mesh decode_mesh(const std::vector<std::uint8_t>& blob, const std::string& where) {
+  std::size_t at = 0;
+  return decode_mesh(
+      blob.size(),
+      [&](void* dst, std::size_t n) {
+        std::memcpy(dst, blob.data() + at, n);
+        at += n;
+      },
+      where);
 }
 
 std::vector<std::uint8_t> encode_points(const std::vector<Eigen::Vector3d>& points) {

@@ -23,6 +23,7 @@
 //   8  where a trace came from: by hand, a proposal, a corrected one (issue 25).
 //   9  a trace's compass reading and how far the trace leaves it (issue 27).
 //  10  the tunnel's support classes and each visit's support decision (issue 44).
+//  11  a model's mesh in parts of 8 MiB (issue 43): meshes over 1 GB.
 #include <cstdint>
 
 #include "storage/project/project_sqlite.h"
@@ -31,7 +32,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 10;
+constexpr int kCurrentVersion = 11;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then

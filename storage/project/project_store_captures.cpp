@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "core/common/error.h"
+#include "storage/project/blob_parts.h"
 #include "storage/project/model_registration.h"
 #include "storage/project/project_blobs.h"
 #include "storage/project/project_store_rows.h"
@@ -87,6 +88,22 @@ RecordId ProjectStore::save_capture(const Capture& capture) {
 }
 
 namespace {
+
+// A model's mesh: in its parts (schema 11), read part by part into the mesh's
+// arrays; or, saved before schema 11, whole in the model row's column.
+Mesh load_model_mesh(sqlite::Connection& db, RecordId model_id,
+                     const std::vector<std::uint8_t>& whole, const std::string& where) {
+  if (!whole.empty()) return blobs::decode_mesh(whole, where);
+  const parts::PartsReader stored(db, *parts::parts_table_of("model", "mesh"), model_id, where);
+  std::uint64_t at = 0;
+  return blobs::decode_mesh(
+      stored.size(),
+      [&](void* dst, std::size_t n) {
+        stored.read(at, {static_cast<std::uint8_t*>(dst), n});
+        at += n;
+      },
+      where);
+}
 
 // What the stored reconstruction report says gave north ('' when it does
 // not say): SQL, so that a listing need not parse every model's parameters.
@@ -242,7 +259,6 @@ RecordId ProjectStore::save_model(const Model& model) {
   for (std::size_t i = 0; i < model.mesh.vertices.size(); ++i)
     if (!model.mesh.vertices[i].allFinite())
       throw InputError("model.mesh.vertices[" + std::to_string(i) + "]", "not finite");
-  const std::vector<std::uint8_t> mesh = blobs::encode_mesh(model.mesh);
 
   WriteTransaction tx(db_, doing);
   Statement st(db_,
@@ -258,7 +274,7 @@ RecordId ProjectStore::save_model(const Model& model) {
       .bind(3, model.preset)
       .bind(4, static_cast<std::int64_t>(model.mesh.vertices.size()))
       .bind(5, static_cast<std::int64_t>(model.mesh.faces.size()))
-      .bind_blob(6, mesh)
+      .bind_blob(6, {})  // the mesh goes into model_mesh_part below (schema 11)
       .bind(7, model.texture_capture_id)
       .bind(8, model.texture_side)
       .bind(9, r.kind)
@@ -273,6 +289,12 @@ RecordId ProjectStore::save_model(const Model& model) {
   }  // else the columns stay NULL: no camera pose
   st.run();
   const RecordId id = db_.last_insert_id();
+  // Encoded straight into parts of a few megabytes: the mesh is never held
+  // encoded whole, neither here nor in an SQLite record.
+  parts::PartWriter mesh_parts(db_, *parts::parts_table_of("model", "mesh"), id);
+  blobs::encode_mesh(model.mesh,
+                     [&](const void* bytes, std::size_t n) { mesh_parts.append(bytes, n); });
+  mesh_parts.finish();
   Statement res(db_,
                 "INSERT INTO registration_residual (model_id, idx, label, dx, dy, dz) VALUES (?, "
                 "?, ?, ?, ?, ?)",
@@ -317,7 +339,7 @@ Model ProjectStore::load_model(RecordId id) {
   m.capture_id = row.next_optional_int64();
   m.created_at = row.next_text();
   m.preset = row.next_text();
-  m.mesh = blobs::decode_mesh(row.next_blob(), where);
+  m.mesh = load_model_mesh(db_, id, row.next_blob(), where);
   m.texture_capture_id = row.next_optional_int64();
   m.texture_side = row.next_text();
   auto& r = m.registration;

@@ -48,34 +48,54 @@ BestPlane best_plane(const std::vector<Eigen::Vector3d>& points) {
   return out;
 }
 
-CloudMesh mesh_point_cloud(const std::vector<Eigen::Vector3d>& points,
-                           const CloudMeshingOptions& options) {
-  using namespace cloud_meshing_detail;
+namespace {
+
+void require_meshable(const std::vector<Eigen::Vector3d>& points) {
   if (points.size() < 3)
     throw InputError("point cloud",
                      std::to_string(points.size()) + " points: a surface needs three at least");
   if (points.size() > std::numeric_limits<std::int32_t>::max())
     throw InputError("point cloud", "more points than a mesh can index");
-  CloudMesh out;
+}
+
+}  // namespace
+
+CloudMesh mesh_point_cloud(const std::vector<Eigen::Vector3d>& points,
+                           const CloudMeshingOptions& options) {
+  require_meshable(points);
   const BestPlane plane = best_plane(points);
-  out.centroid = plane.centroid;
-  out.normal = plane.normal;
   const Eigen::Vector3d u = plane.u;
   // (u, v, normal) right-handed: counter-clockwise in (u, v) is
   // counter-clockwise seen from +normal.
   const Eigen::Vector3d v = plane.normal.cross(u);
-
-  // The points in the plane's coordinates, and their order along u: the
-  // cloud is triangulated strip by strip along u, so that the triangulation
-  // in memory is one strip's (CGAL's takes some 160 bytes a point: a
-  // 10-million-point cloud at once would not fit the tablet's 2 GB).
   std::vector<Eigen::Vector2d> uv(points.size());
-  double lo_u = std::numeric_limits<double>::infinity(), hi_u = -lo_u, lo_v = lo_u, hi_v = -lo_u;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3d d = points[i] - out.centroid;
+    const Eigen::Vector3d d = points[i] - plane.centroid;
     uv[i] = {d.dot(u), d.dot(v)};
-    lo_u = std::min(lo_u, uv[i].x()), hi_u = std::max(hi_u, uv[i].x());
-    lo_v = std::min(lo_v, uv[i].y()), hi_v = std::max(hi_v, uv[i].y());
+  }
+  CloudMesh out = mesh_point_cloud_on(points, uv, options);
+  out.centroid = plane.centroid;
+  out.normal = plane.normal;
+  return out;
+}
+
+CloudMesh mesh_point_cloud_on(const std::vector<Eigen::Vector3d>& points,
+                              const std::vector<Eigen::Vector2d>& uv,
+                              const CloudMeshingOptions& options) {
+  using namespace cloud_meshing_detail;
+  require_meshable(points);
+  if (uv.size() != points.size())
+    throw InputError("point cloud", std::to_string(uv.size()) + " surface coordinates for " +
+                                        std::to_string(points.size()) + " points");
+  CloudMesh out;
+  // The points' order along u: the cloud is triangulated strip by strip
+  // along u, so that the triangulation in memory is one strip's (CGAL's
+  // takes some 160 bytes a point: a 10-million-point cloud at once would not
+  // fit the tablet's 2 GB).
+  double lo_u = std::numeric_limits<double>::infinity(), hi_u = -lo_u, lo_v = lo_u, hi_v = -lo_u;
+  for (const auto& p : uv) {
+    lo_u = std::min(lo_u, p.x()), hi_u = std::max(hi_u, p.x());
+    lo_v = std::min(lo_v, p.y()), hi_v = std::max(hi_v, p.y());
   }
   std::vector<std::uint32_t> order(points.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);

@@ -67,4 +67,13 @@ BestPlane best_plane(const std::vector<Eigen::Vector3d>& points);
 CloudMesh mesh_point_cloud(const std::vector<Eigen::Vector3d>& points,
                            const CloudMeshingOptions& options = {});
 
+// The same over coordinates the caller gives each point on a surface the
+// cloud does not fold over (a round's developed view: chainage and arc length
+// of the design outline), in metres, so that the strips and the spacing are
+// those of the surface. Triangles are counter-clockwise in (u, v); centroid
+// and normal are left as they are (no plane).
+CloudMesh mesh_point_cloud_on(const std::vector<Eigen::Vector3d>& points,
+                              const std::vector<Eigen::Vector2d>& uv,
+                              const CloudMeshingOptions& options = {});
+
 }  // namespace rockface::photogrammetry

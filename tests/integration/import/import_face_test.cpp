@@ -8,11 +8,16 @@
 // it was.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -313,6 +318,91 @@ TEST(ImportFace, RockfacesOwnObjAndPlyImportAgainWithTheSameFacets) {
     const auto model = store.load_model(store.list_models().back().id);
     EXPECT_EQ(model.mesh.faces.size(), mesh.triangles.size()) << name;
     EXPECT_EQ(model.registration.kind, "scanner") << name;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// `rockface export`'s own files of the imported face (the textured OBJ, the
+// binary PLY with faces and the cloud PLY without, all in survey
+// coordinates) imported again: every vertex where it was, to the 0.1 mm the
+// issue asks of survey coordinates, and the writer's facets found again by
+// `propose`; the cloud, meshed again, with its points as they were.
+TEST(ImportFace, EveryMeshAndCloudExportImportsAgainWithTheSameFacets) {
+  const Written& w = written();
+  const fs::path first = fresh_project("export-round-trip");
+  ASSERT_EQ(
+      run_rockface("import " + first.string() + " " + (w.dir / "face.las").string()).exit_code, 0);
+  const fs::path out = w.dir / "export-round-trip";
+  fs::remove_all(out);
+  const auto exported = run_rockface("export " + first.string() +
+                                     " --visit 1 --what mesh,cloud --out " + out.string());
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  std::vector<Eigen::Vector3d> original;
+  {
+    auto store = rockface::storage::ProjectStore::open(first);
+    const Eigen::Vector3d datum = store.project().datum;
+    for (const auto& v : store.load_model(store.list_models().back().id).mesh.vertices)
+      original.push_back(v + datum);
+  }
+  for (const char* name :
+       {"visit-1-model-1.obj", "visit-1-model-1.ply", "visit-1-model-1-cloud.ply"}) {
+    ASSERT_TRUE(fs::exists(out / name)) << name << ": " << exported.out;
+    const fs::path project = fresh_project(std::string("export-again-") + name);
+    const auto r = run_rockface("import " + project.string() + " " + (out / name).string());
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    auto store = rockface::storage::ProjectStore::open(project);
+    const Eigen::Vector3d datum = store.project().datum;
+    const auto model = store.load_model(store.list_models().back().id);
+    ASSERT_EQ(model.mesh.vertices.size(), original.size()) << name;
+    // Each vertex against the nearest original one (the OBJ reader orders
+    // vertices by the faces that use them), looked up in 1 cm cells.
+    std::map<std::array<long, 3>, std::vector<std::size_t>> cells;
+    const auto cell_of = [](const Eigen::Vector3d& p) {
+      return std::array<long, 3>{std::lround(std::floor(p.x() / 0.01)),
+                                 std::lround(std::floor(p.y() / 0.01)),
+                                 std::lround(std::floor(p.z() / 0.01))};
+    };
+    for (std::size_t i = 0; i < original.size(); ++i) cells[cell_of(original[i])].push_back(i);
+    double worst = 0;
+    for (const auto& v : model.mesh.vertices) {
+      const Eigen::Vector3d p = v + datum;
+      const auto c = cell_of(p);
+      double nearest = std::numeric_limits<double>::infinity();
+      for (long dx = -1; dx <= 1; ++dx)
+        for (long dy = -1; dy <= 1; ++dy)
+          for (long dz = -1; dz <= 1; ++dz) {
+            const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+            if (it == cells.end()) continue;
+            for (std::size_t i : it->second) nearest = std::min(nearest, (p - original[i]).norm());
+          }
+      worst = std::max(worst, nearest);
+    }
+    // 0.1 mm: the issue's round trip of survey coordinates. The OBJ writes
+    // 4 decimals (0.05 mm a coordinate, 0.087 mm a point at worst); the
+    // PLYs binary doubles about the datum (exact to ~1e-9 m).
+    EXPECT_LT(worst, 1e-4) << name;
+    EXPECT_EQ(model.registration.kind, "scanner") << name;
+    const fs::path proposals_file = w.dir / (std::string(name) + ".export.proposals.json");
+    ASSERT_EQ(
+        run_rockface("propose " + project.string() + " --out " + proposals_file.string()).exit_code,
+        0)
+        << name;
+    std::ifstream in(proposals_file);
+    const json proposals = json::parse(in);
+    for (const auto& f : w.truth["facets"]) {
+      bool found = false;
+      for (const auto& p : proposals["facets"])
+        // 0.3 degrees, as for the LAS itself: the same points (and for the
+        // meshes the same triangles), so the same facets to the writer's
+        // precision.
+        found = found || (std::abs(p["dip"].get<double>() - f["dip"].get<double>()) < 0.3 &&
+                          std::abs(p["dipdir"].get<double>() - f["dipdir"].get<double>()) < 0.3);
+      EXPECT_TRUE(found) << name << ": " << f["name"] << " not among "
+                         << proposals["facets"].dump();
+    }
   }
 }
 
