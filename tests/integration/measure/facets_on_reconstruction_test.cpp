@@ -255,7 +255,15 @@ TEST(FacetsOnReconstruction, FlatWallWithoutJointsGivesNoSet) {
     std::printf("set %s: %zu facets on %d planes\n", s.summary.label.c_str(), s.facet_ids.size(),
                 s.planes);
   EXPECT_TRUE(sets.sets.empty());
-  ASSERT_FALSE(sets.not_sets.empty());
+  // The wall in pieces (until the plane-led growing of issue 38 it came in
+  // two, 23.5 and 9.9 m2) is listed as one surface, not a set; the wall as
+  // one facet makes no cluster at all (a cluster needs two facets).
+  const auto wall_pieces = std::count_if(
+      found.facets.begin(), found.facets.end(),
+      [&](const rm::Facet& f) { return angle_deg(f.plane.fit.normal, n_wall()) < allowed_deg(f); });
+  if (wall_pieces > 1) {
+    ASSERT_FALSE(sets.not_sets.empty());
+  }
   std::printf("%zu facets, the wall's %.1f m2 of %.1f m2 mapped\n", found.facets.size(), wall->area,
               found.mapped_area);
   for (const auto& c : sets.not_sets) std::printf("not a set: %s\n", c.reason.c_str());
