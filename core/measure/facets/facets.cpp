@@ -10,6 +10,7 @@
 #include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/measure/facets/facet_outline.h"
+#include "core/measure/facets/plane_led_growing.h"
 #include "core/measure/facets/triangle_graph.h"
 #include "core/measure/tolerances.h"
 
@@ -107,6 +108,13 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
   const double cos_angle = std::cos(angle), cos_twice = std::cos(2 * angle);
   const double gate = options.planarity_in_sigmas * settings.point_sigma;
   std::vector<int> label(graph.size(), kFree);
+  // The region that failed the planarity tests, per triangle (-1: none):
+  // what is left of it in no facet at the end is the rejected area (a
+  // triangle of a rejected region may still join a facet later, by the
+  // plane-led pass or as a step between terraces, and is then counted
+  // there alone).
+  std::vector<int> rejected_in(graph.size(), -1);
+  int rejected_count = 0;
   std::vector<char> vertex_seen(mesh.vertices.size(), 0);
   std::vector<int> members, queue;
   std::vector<Facet> facets;
@@ -115,10 +123,52 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
   // A region measured as an area picked by hand: its vertices' plane, the
   // planarity, sliver, roughness and relief tests (plane.problem says which
   // failed; empty when it is a facet), area, centroid and margins.
+  // The matching window blends the depths of the two sides of an edge over
+  // its width (the correlation length), and a region grown to the gate of
+  // its plane takes a band across a crease whose points lie on one side of
+  // it: at each end of a strip a different side, which turns the plane
+  // (stepped faces: 1.9 deg for strips whose inner points are 0.6 deg off).
+  // The plane is therefore measured on the region's interior, the triangles
+  // more than a correlation length (in triangle steps) from its border,
+  // when that interior is itself as large as the smallest facet; the area
+  // and outline stay the whole region's.
+  const int border_hops =
+      edge > 0 ? static_cast<int>(std::ceil(settings.correlation_length / edge)) : 0;
+  std::vector<int> region_stamp(graph.size(), -1), hops(graph.size(), 0);
+  int stamp = 0;
+  const auto interior = [&](const std::vector<int>& tris) {
+    if (border_hops <= 0) return tris;
+    ++stamp;
+    for (int t : tris) region_stamp[t] = stamp;
+    std::vector<int> frontier;
+    for (int t : tris) {
+      bool border = false;
+      for (const int k : graph.neighbours[t]) border = border || k < 0 || region_stamp[k] != stamp;
+      hops[t] = border ? 0 : -1;
+      if (border) frontier.push_back(t);
+    }
+    for (std::size_t head = 0; head < frontier.size(); ++head) {
+      const int t = frontier[head];
+      if (hops[t] >= border_hops) continue;
+      for (const int k : graph.neighbours[t])
+        if (k >= 0 && region_stamp[k] == stamp && hops[k] < 0) {
+          hops[k] = hops[t] + 1;
+          frontier.push_back(k);
+        }
+    }
+    std::vector<int> inner;
+    double area = 0;
+    for (int t : tris)
+      if (hops[t] < 0) {
+        inner.push_back(t);
+        area += graph.areas[t];
+      }
+    return area >= options.min_area_m2 ? inner : tris;
+  };
   const auto measured = [&](const std::vector<int>& tris) {
     Facet f;
     std::vector<Eigen::Vector3d> points;
-    for (int t : tris)
+    for (int t : interior(tris))
       for (int v : mesh.triangles[t])
         if (!vertex_seen[v]) {
           vertex_seen[v] = 1;
@@ -340,14 +390,56 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
     }
     Facet f = measured(members);
     if (!f.plane.problem.empty()) {
-      ++out.rejected_regions;
-      out.rejected_area += plane.weight;
-      for (int t : members) label[t] = kDropped;
+      for (int t : members) {
+        label[t] = kDropped;
+        rejected_in[t] = rejected_count;
+      }
+      ++rejected_count;
       continue;
     }
     facets.push_back(std::move(f));
   }
+  // The second pass (plane_led_growing.h) over what the first left: led by
+  // the distance of the points to a fitted plane against the stated point
+  // precision, it finds the planes whose single triangles' normals scatter
+  // beyond the tolerance (a face seen obliquely). A seed patch's points
+  // must lie within two point sigmas RMS of their plane: half the
+  // planarity test a facet passes at the end, so that a seed across a
+  // crease or on a rough patch is refused before it grows.
+  progress.step("facets: plane-led growing", 0.8);
+  {
+    std::vector<char> taken(graph.size(), 0);
+    for (std::size_t t = 0; t < graph.size(); ++t) taken[t] = label[t] >= 0;
+    PlaneLedOptions led;
+    led.gate = gate;
+    led.seed_rms = 2 * settings.point_sigma;
+    led.seed_area = options.min_area_m2;
+    led.refit_growth = options.refit_growth;
+    for (auto& region : plane_led_regions(mesh, graph, taken, seeds, led)) {
+      double area = 0;
+      for (int t : region) area += graph.areas[t];
+      if (area < options.min_area_m2) continue;
+      Facet f = measured(region);
+      if (!f.plane.problem.empty()) {
+        for (int t : region) rejected_in[t] = rejected_count;
+        ++rejected_count;
+        continue;
+      }
+      for (int t : region) label[t] = static_cast<int>(facets.size());
+      facets.push_back(std::move(f));
+    }
+  }
   merge_terraces(facets, label);
+  // The rejected regions, and their area, as far as no facet took them.
+  {
+    std::vector<char> counted(static_cast<std::size_t>(rejected_count), 0);
+    for (std::size_t t = 0; t < graph.size(); ++t)
+      if (rejected_in[t] >= 0 && label[t] < 0) {
+        out.rejected_area += graph.areas[t];
+        counted[rejected_in[t]] = 1;
+      }
+    out.rejected_regions = static_cast<int>(std::count(counted.begin(), counted.end(), 1));
+  }
   progress.step("facets: outlines", 0.95);
   std::stable_sort(facets.begin(), facets.end(),
                    [](const Facet& a, const Facet& b) { return a.area > b.area; });

@@ -2,8 +2,11 @@
 // Planar facets on the 3D image, as qFacets (Dewez et al. 2016) and the
 // Discontinuity Set Extractor (Riquelme et al. 2014) find them: region
 // growing over the mesh's triangles on their (smoothed) normals, each region
-// held to a plane by the planarity test of measuring (plane_measurement.h),
-// then measured like an area picked by hand: dip / dip direction, sigma,
+// held to a plane by the planarity test of measuring (plane_measurement.h);
+// then, over what that left, growing led by the points' distance to a
+// fitted plane (plane_led_growing.h: a face seen obliquely, whose single
+// triangles' normals scatter too much); each region measured like an area
+// picked by hand, its plane on its interior: dip / dip direction, sigma,
 // area, centroid and outline. Sets from facets: facet_sets.h.
 #include <string>
 #include <vector>
@@ -27,7 +30,8 @@ struct Facet {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // area-weighted, model frame
   std::vector<Eigen::Vector3d> outline;                // outer boundary, closed, thinned
   int holes = 0;
-  std::size_t triangles = 0, vertices = 0;
+  std::size_t triangles = 0;
+  std::size_t vertices = 0;  // of its interior, whose plane it is (facets.cpp)
   // Margins of the two tests it passed (positive: inside): planarity in
   // point sigmas (the limit minus the RMS off the plane), and orientation
   // in degrees (kMaxPlaneSigmaDeg minus sigma). A facet is marginal when

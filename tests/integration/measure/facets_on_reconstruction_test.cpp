@@ -207,12 +207,14 @@ TEST(FacetsOnReconstruction, SteppedFaceGivesTheTwoSetsWithTheirSpacing) {
   }
 }
 
-TEST(FacetsOnReconstruction, FlatWallWithoutJointsGivesNoSet) {
-  // A flat wall (80/185, as a face dressed by sprayed concrete) standing on
-  // a flat floor (a scene of one plane is degenerate for relative
-  // orientation). Rendered with the rock texture the stereo needs (real
-  // shotcrete shows its spray texture; a surface with none gives no 3D
-  // image at all). No joints: two surfaces of one plane each, no set.
+// A flat wall (80/185, as a face dressed by sprayed concrete) standing on
+// a flat floor (a scene of one plane is degenerate for relative
+// orientation). Rendered with the rock texture the stereo needs (real
+// shotcrete shows its spray texture; a surface with none gives no 3D
+// image at all). No joints: two surfaces of one plane each, no set.
+namespace {
+
+const Rendered& flat_wall() {
   static const Rendered r = [] {
     auto scene = rockface::testing::synthetic_face(900, 600);
     scene.patches.clear();
@@ -235,6 +237,13 @@ TEST(FacetsOnReconstruction, FlatWallWithoutJointsGivesNoSet) {
     scene.reference_line = {{on_wall(-1.0, 0.0), on_wall(1.0, 0.2)}};
     return render_and_reconstruct(std::move(scene));
   }();
+  return r;
+}
+
+}  // namespace
+
+TEST(FacetsOnReconstruction, FlatWallWithoutJointsGivesNoSet) {
+  const Rendered& r = flat_wall();
   const rm::FacetSearch found = facets_of(r.rec);
   // The wall is found (so "no set" is a verdict, not a failure to see it):
   // a facet at its orientation (within allowed_deg) of at least 10 m2, a
@@ -255,8 +264,34 @@ TEST(FacetsOnReconstruction, FlatWallWithoutJointsGivesNoSet) {
     std::printf("set %s: %zu facets on %d planes\n", s.summary.label.c_str(), s.facet_ids.size(),
                 s.planes);
   EXPECT_TRUE(sets.sets.empty());
-  ASSERT_FALSE(sets.not_sets.empty());
+  // The wall in pieces (until the plane-led growing of issue 38 it came in
+  // two, 23.5 and 9.9 m2) is listed as one surface, not a set; the wall as
+  // one facet makes no cluster at all (a cluster needs two facets).
+  const auto wall_pieces = std::count_if(
+      found.facets.begin(), found.facets.end(),
+      [&](const rm::Facet& f) { return angle_deg(f.plane.fit.normal, n_wall()) < allowed_deg(f); });
+  if (wall_pieces > 1) {
+    ASSERT_FALSE(sets.not_sets.empty());
+  }
   std::printf("%zu facets, the wall's %.1f m2 of %.1f m2 mapped\n", found.facets.size(), wall->area,
               found.mapped_area);
   for (const auto& c : sets.not_sets) std::printf("not a set: %s\n", c.reason.c_str());
+}
+
+// The area of the regions that failed the planarity tests is only what no
+// facet took in the end: a region refused by the first pass may be taken
+// later, by the plane-led pass or as a step between merged terraces, and
+// was then counted twice (on the flat wall: 7.4 m2 "not planar" beside
+// 48.7 m2 of facets, 56.1 m2 in all of 52.4 m2 mapped). Facets, rejected
+// regions and the rest are disjoint parts of the mapped surface: their sums
+// are of the same triangles' areas, equal up to rounding (1e-9 m2).
+TEST(FacetsOnReconstruction, RejectedAreaIsNotAlsoInAFacet) {
+  for (const Rendered* r : {&flat_wall(), &stepped()}) {
+    const rm::FacetSearch found = facets_of(r->rec);
+    std::printf("%.2f m2 of facets, %d regions not planar (%.2f m2), of %.2f m2 mapped\n",
+                found.facet_area, found.rejected_regions, found.rejected_area, found.mapped_area);
+    EXPECT_LE(found.facet_area + found.rejected_area, found.mapped_area + 1e-9);
+    EXPECT_GE(found.rejected_area, 0.0);
+    EXPECT_EQ(found.rejected_regions == 0, found.rejected_area == 0.0);
+  }
 }
