@@ -9,6 +9,7 @@
 
 #include "core/common/error.h"
 #include "core/photogrammetry/camera/camera_cv.h"
+#include "core/photogrammetry/matching/disparity_holes.h"
 
 namespace rockface::photogrammetry {
 
@@ -93,6 +94,9 @@ DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const Di
     }
   }
   out.valid_fraction = static_cast<double>(valid) / static_cast<double>(checked.total());
+  const std::size_t filled = fill_disparity_holes(
+      out.disparity, {preset.disparity_hole_px, preset.disparity_hole_slope_px});
+  out.filled_fraction = static_cast<double>(filled) / static_cast<double>(checked.total());
   out.lr_rejected_fraction =
       matched ? static_cast<double>(rejected) / static_cast<double>(matched) : 0;
   progress.step("dense matching", 1.0);

@@ -2,8 +2,9 @@
 // Rectification and dense matching: the oriented pair is rectified
 // (cv::stereoRectify), matched by semi-global matching (cv::StereoSGBM) at the
 // preset's image scale with sub-pixel disparities, checked left against right
-// (a second SGBM on the mirrored pair gives the right disparity), and cleaned
-// of speckles (cv::filterSpeckles).
+// (a second SGBM on the mirrored pair gives the right disparity), cleaned
+// of speckles (cv::filterSpeckles), and its small holes filled from their
+// rims (disparity_holes.h).
 #include <vector>
 
 #include <Eigen/Core>
@@ -28,6 +29,9 @@ struct DisparityMap {
   DisparityRange range;
   double valid_fraction = 0;        // of all pixels
   double lr_rejected_fraction = 0;  // of the pixels SGBM matched, removed by the left-right check
+  // of all pixels, filled between the rims of a small hole (disparity_holes.h);
+  // not in valid_fraction
+  double filled_fraction = 0;
 };
 
 // Matches a rectified pair (8-bit grey or BGR, same size) over `range`.

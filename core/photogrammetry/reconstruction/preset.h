@@ -36,6 +36,11 @@ struct ReconstructionPreset {
   int speckle_window = 100;        // connected region below this many pixels is removed
   double speckle_range_px = 2.0;   // disparity jump that separates speckle regions
   bool sgbm_three_way = true;      // MODE_SGBM_3WAY (faster, same memory) vs MODE_SGBM
+  // Holes left in the disparity map no longer than this (pixels at dense
+  // scale, along a row or a column) whose rims agree within the slope are
+  // filled from their rims (matching/disparity_holes.h); 0 = never.
+  int disparity_hole_px = 8;
+  double disparity_hole_slope_px = 1.0;  // disparity change per pixel across a hole
 
   // Expected disparity precision after sub-pixel interpolation (pixels at the
   // dense scale), used for the predicted depth precision sigma_Z.

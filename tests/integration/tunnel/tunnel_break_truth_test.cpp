@@ -25,6 +25,7 @@
 #include "firmware-app/replay/field_replay.h"
 #include "firmware-app/tunnel/rendered_tunnel.h"
 #include "firmware-app/tunnel/visit_profile.h"
+#include "firmware-app/tunnel/visit_surface.h"
 #include "storage/project/project_store.h"
 #include "storage/scene/scene.h"
 #include "tests/support/test_paths.h"
@@ -185,6 +186,59 @@ RoundTruth round_truth(const Heading& h, const VisitProfile& measured,
   return t;
 }
 
+// How much of the lining both photographs see the 3D image holds (issue
+// 38: the sample's covered ~30 %). The true lining is the scene's: the
+// design outline displaced by the rendered breaks, sampled every 5 cm of
+// chainage and outline from the rendered walls' far end to 0.25 m short of
+// the face's bulge (nearer, a ray toward the lining may meet the face), and
+// kept where both photographs see it. A sample is covered when the ray from
+// the section's ray centre toward it meets the mesh within 5 cm of it (the
+// 3D image's depth error at the walls is ~1 cm; a hole meets something
+// farther or nothing).
+struct LiningCoverage {
+  int seen = 0, covered = 0;
+  int seen_by_part[3] = {0, 0, 0}, covered_by_part[3] = {0, 0, 0};  // invert, walls, roof
+  double fraction() const { return seen ? static_cast<double>(covered) / seen : 0; }
+};
+
+LiningCoverage lining_coverage(const Heading& h) {
+  storage::ProjectStore store = storage::ProjectStore::open(h.project);
+  const storage::Scene scene = storage::load_scene(h.scene_file.string());
+  const camera::RenderedTunnelSpec spec = rendered_tunnel_spec(*scene.tunnel->render);
+  const auto tunnel = store.load_tunnel();
+  const tunnel::Alignment alignment = tunnel->alignment(store.project().datum);
+  const tunnel::DesignProfile& profile = tunnel->profile;
+  const VisitSurface surface = visit_surface(store, h.outcome.visit_id);
+  const tunnel::MeshRaycaster mesh(surface.vertices, surface.triangles);
+  const double kStepM = 0.05, kCoveredWithinM = 0.05;
+  const double from = spec.chainage_from, to = spec.face_chainage - spec.face_relief_m - 0.25;
+  const double centre_v = profile.ray_centre().y();
+  LiningCoverage out;
+  for (double c = from + kStepM / 2; c < to; c += kStepM) {
+    const tunnel::TunnelFrame frame = alignment.frame_at(c);
+    const Eigen::Vector3d centre = frame.to_local(profile.ray_centre().x(), centre_v);
+    for (double s = kStepM / 2; s < profile.perimeter(); s += kStepM) {
+      const Eigen::Vector2d uv =
+          profile.point_at_length(s) +
+          camera::rendered_deviation(spec, c, s) * profile.outward_normal_at_length(s);
+      const Eigen::Vector3d p = frame.to_local(uv.x(), uv.y());
+      if (!both_photographs_see(scene, alignment.to_survey(p))) continue;
+      const int part = uv.y() < profile.point_at_length(0).y() + 0.3 ? 0
+                       : uv.y() < centre_v                           ? 1
+                                                                     : 2;
+      ++out.seen;
+      ++out.seen_by_part[part];
+      const double r = (p - centre).norm();
+      const auto hit = mesh.first_hit(centre, (p - centre) / r, 0.0, r + 1.0);
+      if (hit && std::abs(hit->t - r) < kCoveredWithinM) {
+        ++out.covered;
+        ++out.covered_by_part[part];
+      }
+    }
+  }
+  return out;
+}
+
 // Distance between two places on the developed view (chainage and arc
 // length, both in metres of excavated surface), the arc length wrapping
 // round the outline.
@@ -195,15 +249,18 @@ double developed_distance(double c1, double s1, double c2, double s2, double per
 }
 
 // NOT YET MET (disabled, issue 38 left open): measured on 2026-11-29 at the
-// standard preset, the sample heading's largest over- and underbreak are
-// within 3 cm and 0.5 m (0.354 m at 109.99 / 5.97 for 0.35 at 110.1 / 6;
-// 0.119 m at 110.23 / 15.70 for 0.12 at 110.2 / 15.7), but its volumes are
-// not within 10 % (overbreak 0.56 for 0.76 m3: the 3D image covers ~30 % of
-// the outline the photographs both see; underbreak 0.17 for 0.13 m3); on
-// the D heading a sheet of mesh 2.2 m below the left invert is counted as
-// the largest overbreak (the invert's own rays are not checked against a
-// plausible depth) and the underbreak reads 0.26 for 0.09 m3. Run with
-// --gtest_also_run_disabled_tests to see the figures.
+// standard preset with the disparity map's small holes filled, the sample
+// heading's largest over- and underbreak are within 3 cm and 0.5 m (0.355 m
+// at 109.98 / 5.97 for 0.35 at 110.1 / 6; 0.112 m at 109.98 / 15.75 for
+// 0.12 at 110.2 / 15.7), but its volumes are not within 10 % (overbreak
+// 0.58 for 0.76 m3: the 3D image covers 46 % of the lining the photographs
+// both see, the coverage tests below; underbreak 0.143 for 0.129 m3, +11 %);
+// on the D heading the largest overbreak is 0.255 m at 57.70 / 3.87 for 0.30
+// at 57.5 / 3.9 (before the holes were filled a sheet 2.2 m below the left
+// invert was counted), overbreak 0.37 for 0.49 m3, underbreak 0.33 for
+// 0.09 m3, the largest underbreak 0.247 m at 59.39 / 6.26 for 0.10 at
+// 58.1 / 14.05 (the terraces of dense matching on the grazing walls read as
+// underbreak). Run with --gtest_also_run_disabled_tests to see the figures.
 class TunnelBreakTruth : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -266,10 +323,45 @@ class TunnelBreakTruth : public ::testing::Test {
         << name;
   }
 
+  static void expect_coverage(const Heading& h, const std::string& name) {
+    const LiningCoverage c = lining_coverage(h);
+    std::cout << name << ": the 3D image covers " << c.covered << " of " << c.seen
+              << " samples of the lining both photographs see (" << 100 * c.fraction()
+              << " %); invert " << c.covered_by_part[0] << "/" << c.seen_by_part[0] << ", walls "
+              << c.covered_by_part[1] << "/" << c.seen_by_part[1] << ", roof "
+              << c.covered_by_part[2] << "/" << c.seen_by_part[2] << "\n";
+    ASSERT_GT(c.seen, 1000) << name;
+    EXPECT_GT(c.fraction(), 0.9) << name;
+  }
+
   static inline fs::path dir_;
   static inline Heading* sample_ = nullptr;
   static inline Heading* d_heading_ = nullptr;
 };
+
+// Issue 38: both photographs see every break, so the 3D image must hold the
+// lining they see. 90 %: the range pole and its targets hide ~2 % of it,
+// the rectified images' border (alpha 0) and the SGBM window's margin
+// ~3-5 % at the frame's edge.
+// NOT YET MET (disabled): on 2026-11-29 at standard the sample's image
+// covers 46 % (35 % before small holes of the disparity map were filled:
+// invert 46 %, walls 33 %, roof 54 %), the D heading's 26 % (17 %). What
+// loses the rest, seen on the sample's disparity map: (1) semi-global
+// matching follows a wall or invert seen at a grazing angle (0.5-0.8 px of
+// disparity per px) as terraces, flat runs and 3-5 px steps (the penalty of
+// one jump, P2 = 4 P1, is cheaper than the 1 px steps), and the lattice
+// mesh cuts every step (max_jump_px 1.5): with P1 2 / P2 64 (and (2)'s
+// padding) the sample covers 59 % and the D heading 40 %; (2) SGBM leaves the first min + num
+// and the last -min columns of the rectified image unmatched, the near
+// walls (padding the pair there gave +3 %, but it maps the stepped face's
+// partly-seen right strip without a facet: FacetsOnReconstruction).
+TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsImageCoversTheLiningBothPhotographsSee) {
+  expect_coverage(*sample_, "sample heading");
+}
+
+TEST_F(TunnelBreakTruth, DISABLED_TheSecondHeadingsImageCoversTheLiningBothPhotographsSee) {
+  expect_coverage(*d_heading_, "D heading");
+}
 
 TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchItsScene) {
   expect_the_truth(*sample_, "sample heading");
