@@ -25,9 +25,9 @@ class StoreAnalysisRunner final : public ui::AnalysisRunner {
 
 class StoreTunnelRunner final : public ui::TunnelRunner {
  public:
-  ui::TunnelPicture profile(const std::filesystem::path& project, storage::RecordId visit_id,
-                            Progress& progress) override;
-  ui::TunnelPicture drive(const std::filesystem::path& project, Progress& progress) override;
+  ui::ExcavationView profile(const std::filesystem::path& project, storage::RecordId visit_id,
+                             Progress& progress) override;
+  ui::DriveJoints drive(const std::filesystem::path& project, Progress& progress) override;
   std::vector<std::string> place(const std::filesystem::path& project, storage::RecordId visit_id,
                                  double chainage, double offset, double height,
                                  Progress& progress) override;
@@ -52,7 +52,7 @@ class StoreTraceMapRunner final : public ui::TraceMapRunner {
 class StoreWedgeRunner final : public ui::WedgeRunner {
  public:
   ui::WedgeTable wedges(const std::filesystem::path& project, storage::RecordId visit_id,
-                        Progress& progress) override;
+                        const ui::WedgeForm& form, Progress& progress) override;
 };
 
 // The tablet's sync to the office server named by its libpq service
@@ -105,6 +105,15 @@ class StoreNorthRunner final : public ui::NorthRunner {
                      double bearing_deg, double declination_deg, Progress& progress) override;
 };
 
+// Issue 44: the round's support on the tablet, by `rockface support`'s
+// workflow (firmware-app/support/visit_support.h).
+class StoreSupportRunner final : public ui::SupportRunner {
+ public:
+  ui::SupportProposals support(const std::filesystem::path& project, storage::RecordId visit_id,
+                               const std::optional<ui::SupportChoice>& decide,
+                               Progress& progress) override;
+};
+
 // source: a scene with an imaging section, a folder of captures, or empty
 // (the first DSLR libgphoto2 finds).
 class FieldCameraConnector final : public ui::CameraConnector {
@@ -133,6 +142,7 @@ struct FieldRunners {
   StoreFieldReportRunner field_report;
   StoreExportRunner exports;
   StoreNorthRunner north;
+  StoreSupportRunner support;
 
   ui::FieldServices services() {
     ui::FieldServices s;
@@ -148,6 +158,7 @@ struct FieldRunners {
     s.field_report = &field_report;
     s.exports = &exports;
     s.north = &north;
+    s.support = &support;
     return s;
   }
 };

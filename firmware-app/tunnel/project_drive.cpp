@@ -38,6 +38,18 @@ std::vector<tunnel::SetObservation> set_observations(
   return out;
 }
 
+std::vector<JointOrientation> visit_joint_orientations(storage::ProjectStore& store,
+                                                       storage::RecordId visit_id) {
+  std::vector<JointOrientation> out;
+  for (const auto& j : store.list_joints(visit_id))
+    out.push_back({j.label, j.dip_deg, j.dipdir_deg});
+  if (!out.empty()) return out;
+  for (const auto& m : store.list_measurements(visit_id))
+    if (m.kind != storage::Measurement::Kind::area && m.dip_deg && m.dipdir_deg)
+      out.push_back({m.label, *m.dip_deg, *m.dipdir_deg});
+  return out;
+}
+
 tunnel::DriveSets project_drive(storage::ProjectStore& store) {
   const auto tunnel = store.load_tunnel();
   if (!tunnel)

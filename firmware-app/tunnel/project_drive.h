@@ -21,6 +21,16 @@ std::vector<tunnel::SetObservation> set_observations(
     const std::vector<storage::JointSet>& sets,
     const std::vector<storage::Measurement>& measurements);
 
+// Issue 39: a visit's measured joints as the tablet plots them along the
+// drive: its joints (the joint table), else its measured planes (traces and
+// point readings with an orientation).
+struct JointOrientation {
+  std::string label;
+  double dip_deg = 0, dipdir_deg = 0;
+};
+std::vector<JointOrientation> visit_joint_orientations(storage::ProjectStore& store,
+                                                       storage::RecordId visit_id);
+
 // Throws InputError naming the project when it has no tunnel.
 tunnel::DriveSets project_drive(storage::ProjectStore& store);
 

@@ -21,11 +21,15 @@ void add_wedges_to_report(storage::ProjectStore& store, storage::FieldReport& re
       (run.chainage ? " at chainage " + storage::report_number(*run.chainage, 2) : "") +
       ", axis trend " + storage::report_number(run.trend_deg, 1) + " deg, plunge " +
       storage::report_number(run.plunge_deg, 1) + " deg");
+  // Issue 39: a visit whose joints form no sets has its joints' wedges.
+  bool joints = !run.sets.empty();
+  for (const auto& s : run.sets) joints = joints && s.source == "joint";
   std::string sets;
   for (const auto& s : run.sets)
     sets += (sets.empty() ? "" : ", ") + s.id + " " + storage::report_number(s.dip_deg, 1) + "/" +
             storage::report_number(s.dipdir_deg, 1);
-  w.lines.push_back("sets (dip/dip direction): " + sets +
+  w.lines.push_back(std::string(joints ? "joints, each taken as a set" : "sets") +
+                    " (dip/dip direction): " + sets +
                     "; joints of unlimited persistence, every wedge at its largest");
   w.lines.push_back("effects simulated: " +
                     analysis::effects_in_words(r->analysis.effects_simulated));

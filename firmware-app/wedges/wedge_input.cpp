@@ -9,6 +9,7 @@
 #include "core/geometry/orientation.h"
 #include "core/tunnel/tolerances.h"
 #include "firmware-app/tunnel/project_drive.h"
+#include "storage/field_report/field_report.h"
 
 namespace rockface::app {
 
@@ -232,6 +233,9 @@ WedgeRun wedge_run_from_project(storage::ProjectStore& store, storage::RecordId 
     origin = alignment.point_at(alignment.first_chainage());
   }
   frame_from_axis(run, axis->first, axis->second, origin, settings.axis ? "--axis" : where);
+  // The visit's sets when its joints form them; else its joints one by one,
+  // as UnWedge takes three orientations (issue 39): a geologist who measured
+  // one joint per orientation expects that joint's wedges.
   const auto observed = visit_set_observations(store, visit);
   for (const auto& s : observed) {
     const geometry::PlaneOrientation o = geometry::plane_orientation(s.normal);
@@ -240,11 +244,41 @@ WedgeRun wedge_run_from_project(storage::ProjectStore& store, storage::RecordId 
         "measured"};
     run.sets.push_back(in);
   }
+  const std::size_t set_count = run.sets.size();
+  int joints_with_friction = 0;
+  std::size_t joint_count = 0;
+  if (set_count < 3) {
+    const auto joints = store.list_joints(visit);
+    joint_count = joints.size();
+    if (joint_count >= 3) {
+      run.sets.clear();
+      for (const auto& j : joints) {
+        WedgeSetInput in{
+            j.label, j.dip_deg, j.dipdir_deg, settings.friction_deg, settings.cohesion_pa, "joint"};
+        // The joint's own strength, unless the geologist typed one for all.
+        if (!settings.friction_given && j.friction_deg) {
+          in.friction_deg = *j.friction_deg;
+          in.cohesion_pa = j.cohesion_pa.value_or(0);
+          ++joints_with_friction;
+        }
+        run.sets.push_back(in);
+      }
+      run.notes.push_back("the visit's " + std::to_string(set_count) +
+                          " measured joint sets are fewer than three: the wedges are those of "
+                          "its " +
+                          std::to_string(joint_count) + " joints, each taken as a set");
+    }
+  }
   if (run.sets.size() < 3)
-    throw InputError(where, "has " + std::to_string(run.sets.size()) +
-                                " measured joint sets; a wedge needs three");
-  if (!settings.friction_given)
-    run.notes.push_back("the measured sets carry no strength: a friction angle of " +
+    throw InputError(where, "has " + std::to_string(set_count) + " measured joint sets and " +
+                                std::to_string(joint_count) +
+                                " joints; a wedge needs three of either");
+  const std::size_t assumed = run.sets.size() - static_cast<std::size_t>(joints_with_friction);
+  if (!settings.friction_given && assumed > 0)
+    run.notes.push_back(std::string(joints_with_friction > 0 ? "the joints stored without strength"
+                                    : set_count >= 3         ? "the measured sets carry no strength"
+                                                             : "the joints carry no strength") +
+                        ": a friction angle of " +
                         std::to_string(static_cast<int>(settings.friction_deg)) +
                         " deg and no cohesion are assumed (--friction)");
   tunnel::WedgeOptions& o = run.options;
@@ -253,6 +287,33 @@ WedgeRun wedge_run_from_project(storage::ProjectStore& store, storage::RecordId 
   o.bolts = settings.bolts;
   o.shotcrete = settings.shotcrete;
   return run;
+}
+
+std::string wedge_sets_line(const WedgeRun& run) {
+  bool joints = !run.sets.empty();
+  for (const auto& s : run.sets) joints = joints && s.source == "joint";
+  std::string line = joints ? "Joints, each taken as a set (dip/dip direction, friction): "
+                            : "Sets (dip/dip direction, friction): ";
+  for (std::size_t k = 0; k < run.sets.size(); ++k) {
+    const WedgeSetInput& s = run.sets[k];
+    line += (k ? ", " : "") + s.id + " " + storage::report_number(s.dip_deg, 1) + "°/" +
+            storage::report_number(s.dipdir_deg, 1) + "°" +
+            (s.friction_deg ? " " + storage::report_number(*s.friction_deg, 1) + "°" : "");
+  }
+  return line;
+}
+
+std::string wedge_support_line(const WedgeRun& run) {
+  std::string line;
+  if (const auto& b = run.options.bolts)
+    line += "bolts " + storage::report_number(b->length, 1) + " m long, " +
+            storage::report_number(b->spacing, 1) + " m apart, " +
+            storage::report_number(b->capacity / 1000, 0) + " kN each";
+  if (const auto& c = run.options.shotcrete)
+    line += (line.empty() ? "" : "; ") + std::string("shotcrete ") +
+            storage::report_number(c->thickness * 1000, 0) + " mm, shear strength " +
+            storage::report_number(c->shear_strength / 1e6, 1) + " MPa";
+  return "Support: " + (line.empty() ? std::string("none") : line);
 }
 
 tunnel::WedgeAnalysis run_wedges(const WedgeRun& run) {

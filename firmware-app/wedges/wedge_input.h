@@ -3,7 +3,9 @@
 // a scene's `wedges` section (sets, profile, axis, trace-length limit,
 // support; water and seismic from the scene's `effects`), or a project's
 // tunnel (its design profile, and the drive's axis and the face at the
-// visit's chainage) with the visit's measured joint sets.
+// visit's chainage) with the visit's measured joint sets, or its joints
+// one by one when they form fewer than three sets (as UnWedge takes three
+// orientations).
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,7 +24,7 @@ struct WedgeSetInput {
   double dip_deg = 0, dipdir_deg = 0;
   std::optional<double> friction_deg;
   double cohesion_pa = 0;
-  std::string source;  // "scene", "measured", ...
+  std::string source;  // "scene", "measured" (a set), "joint" (a joint taken as a set)
 };
 
 struct WedgeRun {
@@ -50,8 +52,10 @@ WedgeRun wedge_run_from_scene(const storage::Scene& scene,
 
 struct ProjectWedgeSettings {
   std::optional<std::pair<double, double>> axis;  // degrees; none: the drive at the visit
-  double friction_deg = 30;     // the sets' friction angle (measured sets carry none)
-  bool friction_given = false;  // false: said to be assumed
+  // The friction angle of every set or joint when given; when not, a joint's
+  // own (stored with the visit) or this default, said to be assumed.
+  double friction_deg = 30;
+  bool friction_given = false;
   double cohesion_pa = 0;
   std::optional<double> trace_length;
   std::optional<tunnel::PatternBolts> bolts;
@@ -61,9 +65,19 @@ struct ProjectWedgeSettings {
 
 // Throws InputError naming the project and visit: no tunnel, a visit not
 // placed in it (without --axis and an origin there is no section), fewer
-// than three sets.
+// than three sets and fewer than three joints.
 WedgeRun wedge_run_from_project(storage::ProjectStore& store, storage::RecordId visit,
                                 const ProjectWedgeSettings& settings);
+
+// What the wedges were made from, in words, for the tablet and the report:
+// "Sets (dip/dip direction, friction): S1 60.0°/200.0° 30°, ..." or, for a
+// visit's joints, "Joints, each taken as a set (...)".
+std::string wedge_sets_line(const WedgeRun& run);
+
+// The support the run checks, in words: "Support: bolts 3.0 m long, 1.5 m
+// apart, 100 kN each; shotcrete 50 mm, shear strength 2.0 MPa" or
+// "Support: none".
+std::string wedge_support_line(const WedgeRun& run);
 
 // The analysis of a run.
 tunnel::WedgeAnalysis run_wedges(const WedgeRun& run);

@@ -31,38 +31,8 @@ cv::Scalar deviation_colour(double t) {
 
 }  // namespace
 
-cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
-                               const tunnel::DesignProfile& profile, int width_px) {
+double developed_view_scale_m(const tunnel::ProfileDeviation& dev) {
   const auto& view = dev.view;
-  const int left = 90, right = 30, top = 74, bottom = 140;
-  const int w = std::max(200, width_px - left - right);
-  const std::size_t rows = view.chainage.size(), cols = view.s.size();
-  // Nothing compared (no wall or roof in view, the round off the
-  // alignment): the message, never a view of zeros.
-  const bool nothing_compared = dev.status == tunnel::DeviationStatus::no_walls_in_view ||
-                                dev.status == tunnel::DeviationStatus::outside_alignment;
-  if (rows == 0 || cols == 0 || nothing_compared) {
-    // The title and the message in as many lines as the picture's width needs.
-    const int margin = 20, title_px = 28, line_px = 22;
-    const auto title =
-        wrap_label("Excavation against the design: nothing to show", width_px - 2 * margin, 0.6);
-    const auto lines = wrap_label(dev.message, width_px - 2 * margin, 0.45);
-    const int text_top = 50 + title_px * static_cast<int>(title.size());
-    cv::Mat img(std::max(160, text_top + line_px * static_cast<int>(lines.size())), width_px,
-                CV_8UC3, kPaper);
-    for (std::size_t i = 0; i < title.size(); ++i)
-      draw_label(img, title[i], {margin, 50 + title_px * static_cast<int>(i)}, 0.6);
-    for (std::size_t i = 0; i < lines.size(); ++i)
-      draw_label(img, lines[i], {margin, text_top + line_px * static_cast<int>(i)}, 0.45);
-    return img;
-  }
-  const double perimeter = profile.perimeter();
-  const double length = std::abs(view.chainage.back() - view.chainage.front());
-  const double px_per_m = w / perimeter;
-  const int h =
-      std::clamp(static_cast<int>(std::lround(std::max(length, 0.5) * px_per_m)), 160, 900);
-  cv::Mat img(top + h + bottom, left + w + right, CV_8UC3, kPaper);
-
   // The scale: the deviation's extent rounded up to 5 cm, at least twice the
   // tolerance, so a tolerance-deep underbreak is a clear mid blue.
   // (The 98th percentile of the seen deviations, so one stray spike does not
@@ -80,6 +50,16 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
   double extent = std::max({0.1, 2 * dev.underbreak_tolerance_m, typical});
   extent = std::ceil(extent / 0.05 - 1e-9) * 0.05;
 
+  return extent;
+}
+
+void draw_developed_view_cells(cv::Mat& img, cv::Point at, int w, int h,
+                               const tunnel::ProfileDeviation& dev,
+                               const tunnel::DesignProfile& profile, double extent) {
+  const auto& view = dev.view;
+  const int left = at.x, top = at.y;
+  const std::size_t rows = view.chainage.size(), cols = view.s.size();
+  const double perimeter = profile.perimeter();
   // Cells: column j spans s[j] +- half a spacing, row i chainage[i]; the
   // last row (the face) at the top.
   auto x_of = [&](double s) { return left + static_cast<int>(std::lround(s / perimeter * w)); };
@@ -122,6 +102,43 @@ cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
     const cv::Point at(x_of(dev.max_underbreak.s), top + h - static_cast<int>(std::lround(f * h)));
     cv::drawMarker(img, at, cv::Scalar(0, 0, 0), cv::MARKER_TILTED_CROSS, 14, 2);
   }
+}
+
+cv::Mat developed_view_picture(const tunnel::ProfileDeviation& dev,
+                               const tunnel::DesignProfile& profile, int width_px) {
+  const auto& view = dev.view;
+  const int left = 90, right = 30, top = 74, bottom = 140;
+  const int w = std::max(200, width_px - left - right);
+  const std::size_t rows = view.chainage.size(), cols = view.s.size();
+  // Nothing compared (no wall or roof in view, the round off the
+  // alignment): the message, never a view of zeros.
+  const bool nothing_compared = dev.status == tunnel::DeviationStatus::no_walls_in_view ||
+                                dev.status == tunnel::DeviationStatus::outside_alignment;
+  if (rows == 0 || cols == 0 || nothing_compared) {
+    // The title and the message in as many lines as the picture's width needs.
+    const int margin = 20, title_px = 28, line_px = 22;
+    const auto title =
+        wrap_label("Excavation against the design: nothing to show", width_px - 2 * margin, 0.6);
+    const auto lines = wrap_label(dev.message, width_px - 2 * margin, 0.45);
+    const int text_top = 50 + title_px * static_cast<int>(title.size());
+    cv::Mat img(std::max(160, text_top + line_px * static_cast<int>(lines.size())), width_px,
+                CV_8UC3, kPaper);
+    for (std::size_t i = 0; i < title.size(); ++i)
+      draw_label(img, title[i], {margin, 50 + title_px * static_cast<int>(i)}, 0.6);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      draw_label(img, lines[i], {margin, text_top + line_px * static_cast<int>(i)}, 0.45);
+    return img;
+  }
+  const double perimeter = profile.perimeter();
+  const double length = std::abs(view.chainage.back() - view.chainage.front());
+  const double px_per_m = w / perimeter;
+  const int h =
+      std::clamp(static_cast<int>(std::lround(std::max(length, 0.5) * px_per_m)), 160, 900);
+  cv::Mat img(top + h + bottom, left + w + right, CV_8UC3, kPaper);
+
+  const double extent = developed_view_scale_m(dev);
+  draw_developed_view_cells(img, {left, top}, w, h, dev, profile, extent);
+  auto x_of = [&](double s) { return left + static_cast<int>(std::lround(s / perimeter * w)); };
 
   // Along the outline: where invert, walls and crown are, and metres.
   struct Named {

@@ -22,6 +22,19 @@ namespace rockface::storage {
 cv::Mat developed_view_picture(const tunnel::ProfileDeviation& deviation,
                                const tunnel::DesignProfile& profile, int width_px = 900);
 
+// The developed view's colour scale: the seen deviations' 98th percentile,
+// at least 10 cm and twice the tolerance, rounded up to 5 cm (m).
+double developed_view_scale_m(const tunnel::ProfileDeviation& deviation);
+
+// The developed view's cells alone into `img`, w x h pixels from `at`
+// (the face at the top), framed, with the underbreak beyond tolerance
+// outlined and the deepest underbreak marked: what the picture above draws
+// and the tablet shows with its own labels (issue 39). The frame takes one
+// pixel past w and h; the outline up to one more on each side.
+void draw_developed_view_cells(cv::Mat& img, cv::Point at, int w, int h,
+                               const tunnel::ProfileDeviation& deviation,
+                               const tunnel::DesignProfile& profile, double scale_m);
+
 // BGR, width_px x height_px: two panels (dip direction above, dip below)
 // against chainage.
 cv::Mat drive_picture(const tunnel::DriveSets& drive, int width_px = 1000, int height_px = 700);

@@ -63,15 +63,67 @@ struct TunnelPicture {
   std::vector<std::string> lines;
 };
 
+// Issue 39: the excavation of a visit's round for the Project screen, as
+// figures and the developed view's cells (the field report's picture
+// without its print-size labels), for the screen to write with the UI's
+// units and its own font.
+struct ExcavationPlace {
+  std::string name;  // "crown", "right wall", ...
+  double s_m = 0;    // along the design line from its start
+};
+struct ExcavationView {
+  std::vector<std::string> lines;  // the round and the placement, in words
+  bool compared = false;           // false: nothing to show, `message` says why
+  std::string message;
+  cv::Mat cells;  // BGR, the face at the top; `cells_margin_px` around
+  int cells_margin_px = 0;
+  double perimeter_m = 0;
+  std::vector<ExcavationPlace> places;
+  double chainage_bottom = 0, chainage_top = 0;  // of the first and last rows
+  double scale_m = 0;                            // the colours' ± extent
+  double tolerance_m = 0;                        // underbreak tolerance
+  double overbreak_m3 = 0, underbreak_m3 = 0, seen_fraction = 0;
+  std::optional<double> overbreak_sigma_m3, underbreak_sigma_m3;
+  std::optional<double> deepest_underbreak_m, deepest_underbreak_chainage, deepest_underbreak_s_m;
+  std::optional<double> largest_overbreak_m, largest_overbreak_chainage, largest_overbreak_s_m;
+  int patches_beyond_tolerance = 0;
+};
+
+// Issue 39: the joints along the drive, for the Project screen to draw at
+// the tablet's size: every placed visit's measured joints (dip and dip
+// direction at its chainage), and the sets where the visits' joints form
+// them (tracked along the drive as `rockface drive` tracks them).
+struct DriveJointMark {
+  storage::RecordId visit_id = 0;
+  double chainage = 0;
+  std::string label;  // "J1"
+  double dip_deg = 0, dipdir_deg = 0;
+};
+struct DriveSetPoint {
+  double chainage = 0, dip_deg = 0, dipdir_deg = 0;
+  bool turned = false;  // turned beyond its cone here
+};
+struct DriveSetTrack {
+  int id = 0;                         // 1, 2, ...: the colour
+  std::vector<DriveSetPoint> points;  // in drive order
+  std::string flags;                  // "new", "turns", "gone" in words; empty when none
+};
+struct DriveJoints {
+  int visits = 0;  // placed in the tunnel
+  std::vector<DriveJointMark> joints;
+  std::vector<DriveSetTrack> sets;
+  std::vector<std::string> lines;  // what `rockface drive` prints
+};
+
 // The tunnel around the visits: the excavation of a visit's round against
 // the design profile, and the joint sets along the drive.
 class TunnelRunner {
  public:
   virtual ~TunnelRunner() = default;
   // Throw rockface::Error / InputError saying why (no tunnel, visit not placed).
-  virtual TunnelPicture profile(const std::filesystem::path& project, storage::RecordId visit_id,
-                                Progress& progress) = 0;
-  virtual TunnelPicture drive(const std::filesystem::path& project, Progress& progress) = 0;
+  virtual ExcavationView profile(const std::filesystem::path& project, storage::RecordId visit_id,
+                                 Progress& progress) = 0;
+  virtual DriveJoints drive(const std::filesystem::path& project, Progress& progress) = 0;
   // Places the visit by the chainage, offset and height (m above the axis)
   // the geologist typed for the range pole's lower target; returns what was
   // placed in words.
@@ -160,12 +212,28 @@ struct WedgeTable {
   cv::Mat bgr;                     // the section and the largest wedges
 };
 
+// Issue 39: the Wedges view's form, the options `rockface wedges --friction
+// --bolts --shotcrete` takes, in the units a geologist types them. Empty:
+// not given (the joints' own friction, else the default; no support).
+struct WedgeBoltsForm {
+  double length_m = 0, spacing_m = 0, capacity_kn = 0;
+};
+struct WedgeShotcreteForm {
+  double thickness_mm = 0, shear_strength_mpa = 0;
+};
+struct WedgeForm {
+  std::optional<double> friction_deg;
+  std::optional<WedgeBoltsForm> bolts;
+  std::optional<WedgeShotcreteForm> shotcrete;
+};
+
 class WedgeRunner {
  public:
   virtual ~WedgeRunner() = default;
-  // Throws rockface::InputError saying why (no tunnel, fewer than three sets).
+  // Throws rockface::InputError saying why (no tunnel, fewer than three sets
+  // and joints, a form value out of its range named by its option).
   virtual WedgeTable wedges(const std::filesystem::path& project, storage::RecordId visit_id,
-                            Progress& progress) = 0;
+                            const WedgeForm& form, Progress& progress) = 0;
 };
 
 // The office server (issue 24): the tablet's one server (a libpq service
@@ -265,6 +333,38 @@ class NorthRunner {
                              double bearing_deg, double declination_deg, Progress& progress) = 0;
 };
 
+// Issue 44 on the tablet: the round's support (the workflow `rockface
+// support` runs): what the Q chart, Bieniawski's table and the designer's
+// classes propose for the visit, side by side, the checks on its wedges and
+// moving blocks, and the decision stored with the visit.
+struct SupportChoice {
+  std::string class_name, by;
+  std::string reason;  // required when the class is not the proposed one
+};
+struct SupportDecided {
+  std::string class_name, proposed, reason, by, at, checks;
+};
+struct SupportProposals {
+  std::string figures;  // "Visit 1 at chainage 111.73 m: RMR89 62, Q 4.2"
+  std::vector<std::string> from_q, from_rmr, from_classes;  // each proposal in words
+  std::vector<std::string> classes;        // the designer's classes, lightest first
+  std::string proposed;                    // the class proposed; empty: none
+  std::vector<std::string> checks;         // the checks in words
+  std::optional<SupportDecided> decision;  // the stored one (the latest)
+  std::vector<std::string> notes;
+};
+
+class SupportRunner {
+ public:
+  virtual ~SupportRunner() = default;
+  // The proposals and the stored decision; with `decide`, the decision is
+  // made and stored first. Throws InputError naming what is wrong (a class
+  // not of the tunnel, no reason for a class other than the proposed one).
+  virtual SupportProposals support(const std::filesystem::path& project, storage::RecordId visit_id,
+                                   const std::optional<SupportChoice>& decide,
+                                   Progress& progress) = 0;
+};
+
 struct FieldServices {
   ReconstructionRunner* reconstruction = nullptr;  // null: the Model screen cannot reconstruct
   AnalysisRunner* analysis = nullptr;              // null: the Blocks screen cannot analyse
@@ -281,6 +381,8 @@ struct FieldServices {
   ExportRunner* exports = nullptr;  // null: no Export to USB stick button
   // Issue 42.
   NorthRunner* north = nullptr;  // null: the Model screen gives no north
+  // Issue 44.
+  SupportRunner* support = nullptr;  // null: the Blocks screen shows no Support view
 };
 
 }  // namespace rockface::ui

@@ -11,6 +11,7 @@
 #include "ui/app/export_to_stick.h"
 #include "ui/app/screens.h"
 #include "ui/blocks/motion_playback.h"
+#include "ui/blocks/support_view.h"
 #include "ui/blocks/wedges_view.h"
 #include "ui/view3d/overlay_legend.h"
 #include "ui/view3d/overlay_text.h"
@@ -193,10 +194,19 @@ void draw_blocks_screen(AppState& app) {
     return;
   }
   // The Wedges view (wedges around the excavation) in place of the blocks.
-  if (app.targets.button(app.blocks.wedges.open ? "Blocks view" : "Wedges view", 0, true))
+  if (!app.blocks.support.open &&
+      app.targets.button(app.blocks.wedges.open ? "Blocks view" : "Wedges view", 0, true))
     app.blocks.wedges.open = !app.blocks.wedges.open;
   if (app.blocks.wedges.open) {
     draw_wedges_view(app);
+    return;
+  }
+  // Issue 44: the round's support in place of the blocks.
+  if (app.targets.button_in_row(app.blocks.support.open ? "Back to the blocks" : "Support view",
+                                app.services.support != nullptr))
+    app.blocks.support.open = !app.blocks.support.open;
+  if (app.blocks.support.open) {
+    draw_support_view(app);
     return;
   }
   const bool can_run = app.services.analysis && app.session->visit() && !app.session->read_only() &&

@@ -1,11 +1,12 @@
 #pragma once
 // The Blocks screen's own state: the block tapped and its motion, and the
-// Wedges and Rock mass views.
+// Wedges, Rock mass and Support views.
 #include <cstddef>
 #include <optional>
 
 #include "ui/blocks/motion_playback.h"
 #include "ui/blocks/rockmass_view.h"
+#include "ui/blocks/support_view.h"
 #include "ui/blocks/wedges_view.h"
 
 namespace rockface::ui {
@@ -15,6 +16,7 @@ struct BlocksState {
   MotionPlayback motion;                      // the selected block's motion after failure
   WedgesState wedges;                         // the Wedges view
   RockMassState rockmass;                     // the Rock mass view
+  SupportViewState support;                   // the Support view (issue 44)
 };
 
 }  // namespace rockface::ui

@@ -31,6 +31,10 @@ void reload_tunnel(AppState& app) {
   t.view.clear();
   t.lines.clear();
   t.picture.clear();
+  t.drive.reset();
+  t.drive_drawn = {};
+  t.excavation.reset();
+  t.excavation_drawn = {};
   try {
     t.record = s.store().load_tunnel();
     if (t.record && s.visit()) t.placement = s.store().load_visit_placement(*s.visit());
@@ -39,29 +43,60 @@ void reload_tunnel(AppState& app) {
   }
 }
 
-void show(AppState& app, const std::string& view) {
+void show_excavation(AppState& app) {
   TunnelRunner* runner = app.services.tunnel;
   const auto file = app.session->file();
   const auto visit = app.session->visit();
-  auto result = std::make_shared<TunnelPicture>();
+  auto result = std::make_shared<ExcavationView>();
   app.task.start(
-      view == "excavation" ? "Excavation against the design" : "Sets along the drive",
-      [runner, file, visit, view, result](Progress& progress) {
-        *result = view == "excavation" ? runner->profile(file, *visit, progress)
-                                       : runner->drive(file, progress);
+      "Excavation against the design",
+      [runner, file, visit, result](Progress& progress) {
+        *result = runner->profile(file, *visit, progress);
         return result->lines.empty() ? std::string("done") : result->lines.front();
       },
-      [&app, view, result](const TaskOutcome& outcome) {
+      [&app, result](const TaskOutcome& outcome) {
         TunnelState& t = app.project.tunnel;
+        t.drive.reset();
+        t.excavation.reset();
+        t.excavation_drawn = {};
+        t.lines.clear();
         if (outcome.kind != TaskOutcome::Kind::done) {
           t.view.clear();
           t.picture.clear();
           t.lines = {outcome.message};
           return;
         }
-        t.view = view;
+        t.view = "excavation";
+        t.picture.set(result->cells);
+        t.excavation = std::move(*result);
+      });
+}
+
+void show_drive(AppState& app) {
+  TunnelRunner* runner = app.services.tunnel;
+  const auto file = app.session->file();
+  auto result = std::make_shared<DriveJoints>();
+  app.task.start(
+      "Sets along the drive",
+      [runner, file, result](Progress& progress) {
+        *result = runner->drive(file, progress);
+        return result->lines.empty() ? std::string("done") : result->lines.front();
+      },
+      [&app, result](const TaskOutcome& outcome) {
+        TunnelState& t = app.project.tunnel;
+        t.picture.clear();
+        t.drive_drawn = {};
+        t.excavation.reset();
+        t.excavation_drawn = {};
+        if (outcome.kind != TaskOutcome::Kind::done) {
+          t.view.clear();
+          t.drive.reset();
+          t.lines = {outcome.message};
+          return;
+        }
+        t.view = "drive";
         t.lines = result->lines;
-        t.picture.set(result->bgr);
+        t.drive = std::move(*result);
       });
 }
 
@@ -142,10 +177,19 @@ void draw_tunnel_panel(AppState& app) {
   }
   const bool idle = !app.task.running() && app.services.tunnel;
   if (app.targets.button("Excavation of this round", 0, idle && t.placement.has_value()))
-    show(app, "excavation");
-  if (app.targets.button_in_row("Sets along the drive", idle)) show(app, "drive");
+    show_excavation(app);
+  if (app.targets.button_in_row("Sets along the drive", idle)) show_drive(app);
+  if (t.view == "drive" && t.drive) {
+    t.drive_drawn = draw_drive_chart(*t.drive, ImGui::GetContentRegionAvail().x);
+    for (const auto& line : t.lines) paragraph(line);
+    return;
+  }
+  if (t.view == "excavation" && t.excavation) {
+    t.excavation_drawn =
+        draw_excavation_view(*t.excavation, t.picture, ImGui::GetContentRegionAvail().x);
+    return;
+  }
   for (const auto& line : t.lines) paragraph(line);
-  t.picture.draw(ImGui::GetContentRegionAvail().x);
 }
 
 }  // namespace rockface::ui

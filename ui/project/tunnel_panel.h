@@ -10,6 +10,9 @@
 #include <vector>
 
 #include "storage/tunnel/tunnel_records.h"
+#include "ui/app/field_services.h"
+#include "ui/project/drive_chart.h"
+#include "ui/project/excavation_view.h"
 #include "ui/widgets/picture_texture.h"
 
 namespace rockface::ui {
@@ -28,6 +31,14 @@ struct TunnelState {
   double typed_chainage = 0, typed_offset = 0, typed_height = 0;
   std::vector<std::string> lines;
   PictureTexture picture;
+  // Issue 39: the joints along the drive ("drive"), drawn at the screen's
+  // size, and what the last frame drew of them.
+  std::optional<DriveJoints> drive;
+  DriveChartDrawn drive_drawn;
+  // The excavation of this round ("excavation"): its figures and developed
+  // view (the cells in `picture`), and what the last frame drew.
+  std::optional<ExcavationView> excavation;
+  ExcavationDrawn excavation_drawn;
 };
 
 void draw_tunnel_panel(AppState& app);

@@ -286,7 +286,7 @@ TEST(WedgesVerb, ProjectVisitWithMeasuredSets) {
   // The tablet's Wedges view: the same wedges, in words and units.
   StoreWedgeRunner runner;
   NoProgress progress;
-  const ui::WedgeTable table = runner.wedges(project, visit, progress);
+  const ui::WedgeTable table = runner.wedges(project, visit, {}, progress);
   ASSERT_EQ(table.rows.size(), j["wedges"].size());
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     ASSERT_EQ(table.rows[i].size(), table.columns.size());

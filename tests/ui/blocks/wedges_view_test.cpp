@@ -17,7 +17,8 @@ class FakeWedges final : public WedgeRunner {
  public:
   int calls = 0;
   bool refuse = false;
-  WedgeTable wedges(const fs::path&, rockface::storage::RecordId, rockface::Progress&) override {
+  WedgeTable wedges(const fs::path&, rockface::storage::RecordId, const WedgeForm&,
+                    rockface::Progress&) override {
     ++calls;
     if (refuse) throw rockface::InputError("project", "the project has no tunnel");
     WedgeTable t;

@@ -1,0 +1,137 @@
+#include "ui/blocks/support_view.h"
+
+#include <memory>
+
+#include <imgui.h>
+
+#include "ui/app/app_state.h"
+#include "ui/widgets/format.h"
+#include "ui/widgets/toggle_button.h"
+#include "ui/widgets/widgets_controls.h"
+#include "ui/widgets/widgets_table.h"
+
+namespace rockface::ui {
+
+namespace {
+
+// Reads the proposals, or with `decide` stores the decision first.
+void load_support(AppState& app, std::optional<SupportChoice> decide) {
+  SupportRunner* runner = app.services.support;
+  const auto file = app.session->file();
+  const auto visit = *app.session->visit();
+  auto result = std::make_shared<SupportProposals>();
+  const bool deciding = decide.has_value();
+  app.task.start(
+      deciding ? "Support decision" : "Support of this round",
+      [runner, file, visit, decide, result](Progress& progress) {
+        *result = runner->support(file, visit, decide, progress);
+        return result->decision && decide ? "decided: class " + result->decision->class_name
+                                          : std::string("proposals read");
+      },
+      [&app, result, deciding](const TaskOutcome& outcome) {
+        SupportViewState& s = app.blocks.support;
+        if (outcome.kind != TaskOutcome::Kind::done) {
+          s.message = outcome.message;
+          if (!deciding) s.proposals.reset();
+          return;
+        }
+        s.message.clear();
+        s.proposals = std::move(*result);
+        if (deciding) s.reason.clear();
+      });
+}
+
+void draw_proposals(AppState& app, const SupportProposals& p) {
+  paragraph(p.figures);
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_RowBg;
+  if (ImGui::BeginTable("support proposals", 3, flags)) {
+    ImGui::TableSetupColumn("From Q (NGI chart)");
+    ImGui::TableSetupColumn("From RMR89 (Bieniawski)");
+    ImGui::TableSetupColumn("The designer's classes");
+    table_headers_row();
+    ImGui::TableNextRow(0, app.targets.target_px());
+    for (const auto* column : {&p.from_q, &p.from_rmr, &p.from_classes}) {
+      ImGui::TableNextColumn();
+      for (const auto& line : *column) paragraph(line);
+    }
+    ImGui::EndTable();
+  }
+  for (const auto& c : p.checks) paragraph("Check " + c);
+  for (const auto& n : p.notes) note(n);
+}
+
+void draw_decision(AppState& app, SupportViewState& s, const SupportProposals& p) {
+  heading("The decision");
+  if (p.decision) {
+    const SupportDecided& d = *p.decision;
+    paragraph("Class " + d.class_name + " decided by " + d.by + " on " + format::date_time(d.at) +
+              (d.proposed.empty()           ? " (no class proposed)"
+               : d.proposed == d.class_name ? " (the proposed class)"
+                                            : " (proposed: " + d.proposed + ")") +
+              ".");
+    if (!d.reason.empty()) paragraph("Why: " + d.reason);
+    if (!d.checks.empty()) paragraph("Checked: " + d.checks);
+  } else {
+    paragraph("No decision stored for this round.");
+  }
+  if (p.classes.empty()) {
+    note("A class is chosen from the tunnel's support classes: none are stored.");
+    return;
+  }
+  label("Class for this round:");
+  for (const auto& c : p.classes) {
+    same_line_if_fits(button_width(c, app.targets.target_px()));
+    if (toggle_button(app.targets, c, s.chosen == c)) s.chosen = c;
+  }
+  label("Decided by");
+  text_field(app.targets, "decided by", &s.by);
+  const bool other = !s.chosen.empty() && s.chosen != p.proposed;
+  label(other ? "Why not the proposed class (required)" : "Remarks (changes, with their reason)");
+  text_field(app.targets, "reason", &s.reason);
+  std::string why;
+  if (s.chosen.empty())
+    why = "Choose a class.";
+  else if (s.by.empty())
+    why = "Say who decides.";
+  else if (other && s.reason.empty())
+    why = "Class " + s.chosen + " is not the proposed " +
+          (p.proposed.empty() ? std::string("(none)") : p.proposed) + ": say why.";
+  if (!why.empty()) paragraph(why);
+  const bool can = why.empty() && !app.task.running() && !app.session->read_only();
+  if (app.targets.button("Decide", 0, can))
+    load_support(app, SupportChoice{s.chosen, s.by, s.reason});
+}
+
+}  // namespace
+
+void draw_support_view(AppState& app) {
+  SupportViewState& s = app.blocks.support;
+  if (!app.session) return;
+  if (s.file != app.session->file() || s.visit != app.session->visit()) {
+    s.file = app.session->file();
+    s.visit = app.session->visit();
+    s.requested = false;
+    s.proposals.reset();
+    s.message.clear();
+    s.chosen.clear();
+    s.reason.clear();
+  }
+  heading("Support of this round");
+  if (!app.services.support) {
+    note("No support workflow in this build.");
+    return;
+  }
+  if (!app.session->visit()) return;
+  if (!s.requested && !app.task.running()) {
+    s.requested = true;
+    load_support(app, std::nullopt);
+  }
+  if (app.targets.button("Read again", 0, !app.task.running())) load_support(app, std::nullopt);
+  if (!s.message.empty()) paragraph(s.message);
+  if (!s.proposals) return;
+  draw_proposals(app, *s.proposals);
+  draw_decision(app, s, *s.proposals);
+}
+
+}  // namespace rockface::ui
