@@ -314,6 +314,8 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
     tunnel["profile"] = t.profile_name;
     tunnel["chainage"] = t.placement ? format_fixed(t.placement->chainage, 2, " m") : "not placed";
     tunnel["lines"] = t.profile_lines;
+    // The developed view is served as a picture (/api/visit/picture).
+    tunnel["has_developed_view"] = !t.developed_view.empty();
   }
   out["tunnel"] = std::move(tunnel);
   json wedges = json::object();
@@ -321,6 +323,7 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
     wedges["lines"] = report.wedges->lines;
     wedges["rows"] = report.wedges->rows;
     wedges["notes"] = report.wedges->notes;
+    wedges["has_picture"] = !report.wedges->picture.empty();
   }
   out["wedges"] = std::move(wedges);
   json rockmass = json::object();
