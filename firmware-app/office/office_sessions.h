@@ -42,6 +42,15 @@ class LoginRefused : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The database could not take the log-in (too many connections, not
+// reachable): not a wrong password, so not counted against the address or
+// the role (login_throttle.h). `what()` is the server's reason for the log,
+// never a password.
+class LoginUnavailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 class SessionStore {
  public:
   SessionStore(std::string server, std::chrono::milliseconds idle,

@@ -1,5 +1,6 @@
 #include "firmware-app/office/office_shared_cache.h"
 
+#include <optional>
 #include <system_error>
 
 #include "core/common/error.h"
@@ -76,20 +77,36 @@ std::string SharedOfficeCache::stamp(OfficeSession& s, const std::string& tunnel
 
 std::string SharedOfficeCache::drive(OfficeSession& s, const std::string& tunnel,
                                      const DriveFilter& filter) {
-  const auto [key, stamp] = checked_stamp(s, tunnel);
+  const auto checked = checked_stamp(s, tunnel);
+  const std::string& key = checked.first;
+  const std::string& stamp = checked.second;
   const auto page = entry(
       pages_, key + '\n' + filter.from + '\n' + filter.to + '\n' + filter.tablet, kDrivePages);
-  std::lock_guard build(page->build);
-  if (page->json.empty() || page->stamp != stamp) {
-    // Built on this session's connection: its role reads the same tunnels
-    // as every session that shares the key.
-    nlohmann::json built = drive_page(s.db, tunnel, filter);
-    // The stamp the page polls against is the one it is kept under.
-    built["stamp"] = stamp;
-    page->json = built.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-    page->stamp = stamp;
+  auto current = [&]() -> std::optional<std::string> {
+    std::lock_guard guard(page->data);
+    if (!page->json.empty() && page->stamp == stamp) return page->json;
+    return std::nullopt;
+  };
+  if (auto ready = current()) return *ready;
+  std::unique_lock build(page->build, std::try_to_lock);
+  if (!build.owns_lock()) {
+    {
+      std::lock_guard guard(page->data);
+      if (!page->json.empty()) return page->json;  // an older state, while the build runs
+    }
+    build.lock();  // nothing to show yet: wait for the build under way
+    if (auto ready = current()) return *ready;
   }
-  return page->json;
+  // Built on this session's connection: its role reads the same tunnels as
+  // every session that shares the key.
+  nlohmann::json built = drive_page(s.db, tunnel, filter);
+  // The stamp the page polls against is the one it is kept under.
+  built["stamp"] = stamp;
+  std::string text = built.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  std::lock_guard guard(page->data);
+  page->stamp = stamp;
+  page->json = text;
+  return text;
 }
 
 std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(OfficeSession& s,

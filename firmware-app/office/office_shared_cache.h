@@ -70,7 +70,11 @@ class SharedOfficeCache {
     std::chrono::steady_clock::time_point asked;
   };
   struct Page {
-    std::mutex build;  // one build at a time; the others wait for it
+    // One build at a time. While one session builds a newer page, the
+    // others get the page as it was (they poll the stamp and come back):
+    // a sync never stalls every reader for the build's time.
+    std::mutex build;
+    std::mutex data;  // guards stamp and json
     std::string stamp, json;
     std::uint64_t used = 0;
   };

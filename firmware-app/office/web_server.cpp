@@ -195,6 +195,10 @@ class OfficeServer {
                                                   static_cast<int>(std::max<std::int64_t>(
                                                       1, sessions_.idle().count() / 1000))));
         send_json(res, json{{"role", s->role}, {"csrf", s->csrf}});
+      } catch (const office_web::LoginUnavailable& e) {
+        std::fill(password.begin(), password.end(), '\0');
+        options_.log_failure(std::string("log-in: ") + e.what());
+        send_error(res, 503, "the database cannot take a log-in now: try again in a moment");
       } catch (const office_web::LoginRefused& e) {
         std::fill(password.begin(), password.end(), '\0');
         throttle_.failed(req.remote_addr, role);
@@ -259,8 +263,8 @@ class OfficeServer {
     h.Get("/api/visit", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, [&](OfficeSession&, storage::ProjectStore& store, storage::RecordId id) {
         const storage::FieldReport report = collect_visit_report(store, id);
-        json page = office_web::visit_page(report, req.get_param_value("visit"),
-                                           office_web::face_origin(store, id));
+        const Eigen::Vector3d origin = office_web::face_origin(store, id);
+        json page = office_web::visit_page(report, req.get_param_value("visit"), origin);
         json photos = json::array();
         for (const auto& c : store.list_captures(id))
           for (const char* side : {"left", "right"})
@@ -273,6 +277,7 @@ class OfficeServer {
           if (m.texture_capture_id)
             page["texture"] = json{{"capture", *m.texture_capture_id}, {"side", m.texture_side}};
           page["face_triangles"] = std::to_string(m.mesh.faces.size()) + " triangles";
+          page["pole"] = office_web::range_pole_overlay(m, origin);
         }
         send_json(res, page);
       });

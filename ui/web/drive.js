@@ -10,6 +10,7 @@ import { el, svg, table, section, setColour } from './dom.js';
 
 let poll = null;
 const POLL_MS = 4000;
+const ROUNDS_AT_ONCE = 300;
 
 export function stopDrive() {
   if (poll) clearInterval(poll);
@@ -139,7 +140,15 @@ async function draw(host, tunnel, filter, stamp) {
     section('Sets along the drive', table(['Set', 'Last seen (dip / dip direction ± α95)', 'Flags', 'Events'], setRows)),
     rounds,
     section('Visits', table(['Date', 'Chainage', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note'], visitRows, 'visits')));
-  drawRounds(rounds, tunnel);
+  // The rounds need the tunnel's pulled copy (every visit's traces): read
+  // at once for a drive of a few hundred visits, on request for a longer
+  // one (its first pull takes minutes and holds the session meanwhile).
+  if (d.visits.length <= ROUNDS_AT_ONCE) drawRounds(rounds, tunnel);
+  else {
+    const read = el('button', { type: 'button', id: 'rounds-button', text: `Read the rounds of ${d.visits.length} visits` });
+    read.addEventListener('click', () => { read.disabled = true; read.textContent = 'reading the rounds…'; drawRounds(rounds, tunnel); });
+    rounds.replaceChildren(rounds.firstChild, el('p', { className: 'muted', text: 'The rounds are read from the whole tunnel: this takes a while on a long drive.' }), read);
+  }
 }
 
 export async function showDrive(host, tunnel) {

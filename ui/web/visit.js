@@ -47,7 +47,7 @@ export async function showVisit(host, tunnel, visitId) {
     el('p', { className: 'muted', text: `${v.project}; ${v.source}; camera ${v.camera || '–'}; preset ${v.preset || '–'}` }),
     el('p', { className: 'actions' }, report),
     section('3D face', faceHost, faceStatus, v.has_face ? fullButton : null,
-      el('p', { className: 'muted', text: 'Traces coloured by set; blocks red removable, green keyed, grey infinite.' })),
+      el('p', { className: 'muted', text: `Traces coloured by set; blocks red removable, green keyed, grey infinite${v.pole ? `; the range pole (${v.pole.length}) orange` : ''}.` })),
     section('Photographs', photos),
     section('Accuracy', figures, lines(v.warnings)),
     section('Joint sets', el('div', { className: 'side' }, stereonet(v.poles, v.sets), sets)),

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -309,6 +310,36 @@ TEST(OfficeWebBrowser, TheRoundsTwoVisitsSideBySideAndTheReportsPictures) {
     EXPECT_EQ(k["state"], "same verdict");
     EXPECT_EQ(k["moved"], "0 cm");
   }
+
+  // The range pole on tablet A's faces: its targets in the mesh's frame
+  // (the mesh's origin, float64 in its header, subtracted) and its length.
+  // (Tablet A's mapped face is measured on its first visit's 3D image.)
+  const bool later_has_face = vb.value("has_face", false);
+  const std::string pole_visit = ab[later_has_face ? "later" : "earlier"]["id"];
+  {
+    const json pole = (later_has_face ? vb : va)["pole"];
+    ASSERT_TRUE(pole.is_object()) << (later_has_face ? vb : va).dump().substr(0, 300);
+    EXPECT_EQ(pole["length"], "2.000 m");
+    const auto mesh =
+        c.Get(("/api/visit/mesh?tunnel=Main%20drive&visit=" + pole_visit).c_str(), auth);
+    ASSERT_TRUE(mesh && mesh->status == 200 && mesh->body.size() > 40);
+    double origin[3];
+    std::memcpy(origin, mesh->body.data() + 16, sizeof origin);
+    const json targets = json::parse(kPoleTargets);
+    for (int t = 0; t < 2; ++t)
+      for (int k = 0; k < 3; ++k)
+        // The overlay is rounded to the millimetre (office_pages.cpp).
+        EXPECT_NEAR(pole["targets"][t][k].get<double>() + origin[k], targets[t][k].get<double>(),
+                    0.0005 + 1e-9)
+            << "target " << t << " axis " << k;
+  }
+  d.script("location.hash = '#/visit/Main%20drive/" + pole_visit + "'");
+  d.wait_for("#face[data-drawn=yes]", std::chrono::seconds(60));
+  EXPECT_EQ(
+      d.script("return document.getElementById('face').dataset.pole || ''").get<std::string>(),
+      "yes")
+      << "the range pole is not drawn on the 3D face";
+  EXPECT_NE(text().find("the range pole (2.000 m) orange"), std::string::npos);
 
   // The field report's pictures, as PNG: served for a visit whose report
   // has them, refused with the reason for one whose has not (the sample's

@@ -71,6 +71,14 @@ Site make_site() {
     for (char ch : note) quoted += ch == '\'' ? std::string("''") : std::string(1, ch);
     db.exec("UPDATE visit SET note = '" + quoted + "' WHERE id = (SELECT min(id) FROM visit)",
             "writing the test's note");
+    // Tablet A's 3D images were scaled by a range pole whose two targets
+    // the reconstruction recorded (kPoleTargets, project frame).
+    db.exec(std::string("UPDATE model SET registration_parameters = json_set(CASE WHEN "
+                        "json_valid(registration_parameters) THEN registration_parameters ELSE "
+                        "'{}' END, '$.registration', json('{\"scale_source\": \"range pole\", "
+                        "\"range_pole\": {\"length_m\": 2.0}}'), '$.targets', json('") +
+                kPoleTargets + "'))",
+            "writing the range pole's targets");
   }
   NoProgress none;
   storage::office::sync_project(s.folder / "a.rockface", as_role(s.database, "tablet_a"), {}, none);

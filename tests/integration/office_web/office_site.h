@@ -24,6 +24,10 @@ inline constexpr const char* kMainOfficePassword = "main pass 4";
 inline constexpr const char* kScriptNote =
     "<script>window.rockfaceInjected=1</script><img src=x onerror=\"window.rockfaceInjected=2\">";
 
+// The range pole's targets on tablet A's 3D images (project frame, m):
+// 2 m apart, on the sample face (y about 4).
+inline constexpr const char* kPoleTargets = "[[0.1, 4.0, 0.2], [0.1, 4.0, 2.2]]";
+
 struct Site {
   std::string database;
   std::string server;  // libpq key=value text without user: what `office serve` takes
