@@ -5,7 +5,6 @@
 // sessions whose roles read the same tunnels (office_shared_cache.h) and
 // made again when a tablet has synced since.
 #include <filesystem>
-#include <map>
 #include <string>
 
 #include "firmware-app/office/office_shared_cache.h"
@@ -18,10 +17,6 @@ struct PulledVisit {
   std::filesystem::path file;              // the pulled project
   storage::RecordId visit_id = 0;          // the visit's id in it
 };
-
-// The server's visit uuids by their ids in a pulled copy of the tunnel.
-std::map<storage::RecordId, std::string> pulled_visit_uuids(storage::office::Connection& c,
-                                                            const std::string& tunnel);
 
 // Call with the session's lock held. Throws InputError when the tunnel or
 // the visit is not readable by the session's role.

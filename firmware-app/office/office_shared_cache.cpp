@@ -7,6 +7,7 @@
 #include "core/common/progress.h"
 #include "firmware-app/office/web_security.h"
 #include "storage/office/pull_project.h"
+#include "storage/project/project_sqlite.h"
 
 namespace rockface::app::office_web {
 
@@ -127,6 +128,12 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(OfficeSession& s,
     // The pull's snapshot transaction may still be open on the session.
     s.db.exec("ROLLBACK", "ending a failed pull");
     throw;
+  }
+  {
+    storage::sqlite::Connection db(copy->file, storage::sqlite::Connection::Access::read_only);
+    storage::sqlite::Statement st(db, "SELECT id, uuid FROM visit WHERE uuid IS NOT NULL",
+                                  "reading the pulled visits' uuids");
+    while (st.step()) copy->visit_ids[st.column_text(1)] = st.column_int(0);
   }
   pull->copy = copy;
   return copy;

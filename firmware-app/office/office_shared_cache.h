@@ -37,6 +37,9 @@ ReadableTunnels readable_tunnels(storage::office::Connection& c);
 struct SharedPull {
   std::filesystem::path file;
   std::string stamp;
+  // The copy's visits: the server's uuid -> the id the pull gave it, read
+  // from the copy itself (a sync since cannot shift them).
+  std::map<std::string, std::int64_t> visit_ids;
   // Pages computed from this copy once (the rounds along the drive), by
   // name: they change only with the copy.
   mutable std::mutex derived_lock;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <system_error>
@@ -243,7 +244,8 @@ class OfficeServer {
         std::lock_guard guard(copy->derived_lock);
         std::string& text = copy->derived["rounds"];
         if (text.empty()) {
-          const auto uuids = office_web::pulled_visit_uuids(s.db, tunnel);
+          std::map<storage::RecordId, std::string> uuids;
+          for (const auto& [uuid, id] : copy->visit_ids) uuids[id] = uuid;
           storage::OpenOptions read;
           read.read_only = true;
           storage::ProjectStore store = storage::ProjectStore::open(copy->file, read);
