@@ -2,13 +2,15 @@
 // set's orientation along the tunnel's chainage over all visits, with the
 // sets that appear, vanish or turn flagged. `rockface drive postgresql://...
 // --tunnel NAME ...` gives the same from the office server, over every
-// tablet's visits. `--support-csv` adds the support of each round (issue 44).
+// tablet's visits. `--support-csv` adds the support of each round (issue 44),
+// from a server too (the tunnel pulled into a temporary project).
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/progress.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/office/office_workflows.h"
 #include "firmware-app/support/support_drive.h"
@@ -24,6 +26,12 @@ struct DriveOptions {
   std::string project, out, csv, tunnel, support_csv;
 };
 
+void write_support(const std::string& file, const std::vector<RoundSupport>& rounds) {
+  write_text_atomically(file, drive_support_csv(rounds));
+  for (const auto& line : drive_support_summary(rounds)) std::cout << line << "\n";
+  std::cout << "support: " << file << "\n";
+}
+
 VerbRun setup_drive(CLI::App& sub) {
   auto o = std::make_shared<DriveOptions>();
   sub.add_option("PROJECT", o->project,
@@ -34,17 +42,17 @@ VerbRun setup_drive(CLI::App& sub) {
   sub.add_option("--out", o->out, "the sets against chainage, a PNG file")->required();
   sub.add_option("--csv", o->csv, "one row per set and visit, a CSV file");
   sub.add_option("--support-csv", o->support_csv,
-                 "project: the support per round against the chainage (RMR89, Q, the class "
-                 "proposed and decided), a CSV file");
+                 "the support per round against the chainage (RMR89, Q, the class proposed "
+                 "and decided), a CSV file; from a server, its tunnel is pulled first");
   return [o] {
     tunnel::DriveSets drive;
     if (is_server_address(o->project)) {
       if (o->tunnel.empty()) throw InputError("--tunnel", "name the server's tunnel");
-      if (!o->support_csv.empty())
-        throw InputError("--support-csv",
-                         "applies to a project file (the office's drive page "
-                         "does not show the support yet)");
       drive = server_drive(o->project, o->tunnel);
+      if (!o->support_csv.empty()) {
+        NoProgress quiet;
+        write_support(o->support_csv, server_drive_support(o->project, o->tunnel, quiet));
+      }
     } else {
       if (!std::filesystem::exists(o->project))
         throw InputError(o->project, "no such project file");
@@ -52,12 +60,7 @@ VerbRun setup_drive(CLI::App& sub) {
       read.read_only = true;
       storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
       drive = project_drive(store);
-      if (!o->support_csv.empty()) {
-        const auto rounds = drive_support(store);
-        write_text_atomically(o->support_csv, drive_support_csv(rounds));
-        for (const auto& line : drive_support_summary(rounds)) std::cout << line << "\n";
-        std::cout << "support: " << o->support_csv << "\n";
-      }
+      if (!o->support_csv.empty()) write_support(o->support_csv, drive_support(store));
     }
     storage::write_image_file(o->out, storage::drive_picture(drive), ".png");
     if (!o->csv.empty()) write_text_atomically(o->csv, drive_csv(drive));

@@ -13,6 +13,7 @@
 #include "core/rockmass/figures_in_words.h"
 #include "firmware-app/office/office_workflows.h"
 #include "storage/office/server_records.h"
+#include "storage/project/model_registration.h"
 
 namespace rockface::app::office_web {
 
@@ -314,6 +315,8 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
     tunnel["profile"] = t.profile_name;
     tunnel["chainage"] = t.placement ? format_fixed(t.placement->chainage, 2, " m") : "not placed";
     tunnel["lines"] = t.profile_lines;
+    // The developed view is served as a picture (/api/visit/picture).
+    tunnel["has_developed_view"] = !t.developed_view.empty();
   }
   out["tunnel"] = std::move(tunnel);
   json wedges = json::object();
@@ -321,6 +324,7 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
     wedges["lines"] = report.wedges->lines;
     wedges["rows"] = report.wedges->rows;
     wedges["notes"] = report.wedges->notes;
+    wedges["has_picture"] = !report.wedges->picture.empty();
   }
   out["wedges"] = std::move(wedges);
   json rockmass = json::object();
@@ -364,6 +368,18 @@ void put(std::vector<std::uint8_t>& out, const T& value) {
 }
 
 }  // namespace
+
+json range_pole_overlay(const storage::Model& model, const Eigen::Vector3d& origin) {
+  const storage::ModelRegistration r = storage::read_model_registration(model.registration);
+  if (!r.has_pole || r.targets_project.size() < 2) return nullptr;
+  json pole;
+  pole["targets"] =
+      json::array({point(r.targets_project[0] - origin), point(r.targets_project[1] - origin)});
+  // The pole's length is set on the tablet to the millimetre.
+  pole["length"] =
+      r.pole_length_m && *r.pole_length_m > 0 ? format_fixed(*r.pole_length_m, 3, " m") : "–";
+  return pole;
+}
 
 Eigen::Vector3d face_origin(storage::ProjectStore& store, storage::RecordId visit_id) {
   const auto models = store.list_visit_models(visit_id);

@@ -59,6 +59,12 @@ struct FaceMesh {
 FaceMesh face_mesh(storage::ProjectStore& store, storage::RecordId visit_id,
                    std::size_t max_triangles);
 
+// The range pole that scaled the model, for the 3D face: its two targets
+// (the reconstruction's record, project frame) in the mesh's local frame
+// (`origin` subtracted) and its length; null when the model was not scaled
+// by a pole or its record does not hold both targets.
+nlohmann::json range_pole_overlay(const storage::Model& model, const Eigen::Vector3d& origin);
+
 // The origin the overlays of visit_page and the mesh of face_mesh share:
 // the centre of the visit's first model's bounding box (project frame).
 Eigen::Vector3d face_origin(storage::ProjectStore& store, storage::RecordId visit_id);

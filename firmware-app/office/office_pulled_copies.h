@@ -1,24 +1,26 @@
 #pragma once
 // The visit pages read a pulled copy of the tunnel (storage/office/
-// pull_project.h), made on the session's own connection so that the role's
-// row-level security decides what it holds, kept in the session's folder
-// and made again when a tablet has synced since.
+// pull_project.h), made on a session's own connection so that the role's
+// row-level security decides what it holds, shared read-only by the
+// sessions whose roles read the same tunnels (office_shared_cache.h) and
+// made again when a tablet has synced since.
 #include <filesystem>
 #include <string>
 
-#include "firmware-app/office/office_sessions.h"
+#include "firmware-app/office/office_shared_cache.h"
 #include "storage/project/project_records.h"
 
 namespace rockface::app::office_web {
 
 struct PulledVisit {
-  std::filesystem::path file;      // the pulled project
-  storage::RecordId visit_id = 0;  // the visit's id in it
+  std::shared_ptr<const SharedPull> copy;  // kept while the visit is read
+  std::filesystem::path file;              // the pulled project
+  storage::RecordId visit_id = 0;          // the visit's id in it
 };
 
 // Call with the session's lock held. Throws InputError when the tunnel or
 // the visit is not readable by the session's role.
-PulledVisit pulled_visit(OfficeSession& session, const std::string& tunnel,
-                         const std::string& visit_uuid);
+PulledVisit pulled_visit(SharedOfficeCache& cache, OfficeSession& session,
+                         const std::string& tunnel, const std::string& visit_uuid);
 
 }  // namespace rockface::app::office_web

@@ -26,7 +26,13 @@ std::string SessionStore::log_in(const std::string& role, const std::string& pas
   try {
     // 10 s: an unreachable server fails the log-in rather than hanging it.
     c = std::make_unique<office::Connection>(server_, role, password, 10);
-  } catch (const office::ServerError&) {
+  } catch (const office::ServerError& e) {
+    // A server too busy or not there says so in libpq's words (English;
+    // a message in another language counts as a refusal: the safe side).
+    const std::string why = e.what();
+    for (const char* busy : {"too many clients", "remaining connection slots", "Connection refused",
+                             "timeout expired"})
+      if (why.find(busy) != std::string::npos) throw LoginUnavailable(why);
     // PostgreSQL's reason (no such role, wrong password, pg_hba) stays
     // here: the page says only that the log-in failed.
     throw LoginRefused("the role or the password is not right");

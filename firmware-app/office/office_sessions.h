@@ -16,31 +16,20 @@
 
 namespace rockface::app::office_web {
 
-// A pulled copy of a tunnel (storage/office/pull_project.h) made for one
-// session: what the visit pages, the report and the exports read. `stamp`
-// says which state of the server it holds (records and their latest sync).
-struct PulledTunnel {
-  std::filesystem::path file;
-  std::string stamp;
-};
-
 struct OfficeSession {
   // One request at a time on the connection (libpq's connections are not
   // shared between threads).
   std::mutex lock;
   storage::office::Connection db;
   std::string role;
-  std::string csrf;                            // sent with every POST in X-Rockface-CSRF
-  std::filesystem::path folder;                // this session's pulled copies, removed with it
-  std::map<std::string, PulledTunnel> pulled;  // by tunnel name
-  // The drive pages this session read, by tunnel and filter: the tunnel's
-  // stamp then and the page's JSON. A page polled with nothing synced
-  // since costs one small query.
-  std::map<std::string, std::pair<std::string, std::string>> drives;
+  std::string csrf;  // sent with every POST in X-Rockface-CSRF
+  // This session's exports and reports, removed with it (the pulled
+  // copies and drive pages are shared: office_shared_cache.h).
+  std::filesystem::path folder;
 
   explicit OfficeSession(storage::office::Connection c) : db(std::move(c)) {}
-  // Removes the pulled copies: the last request on a closed session ends
-  // before they go.
+  // Removes the folder: the last request on a closed session ends before
+  // it goes.
   ~OfficeSession();
   OfficeSession(const OfficeSession&) = delete;
   OfficeSession& operator=(const OfficeSession&) = delete;
@@ -49,6 +38,15 @@ struct OfficeSession {
 // Why a log-in was refused, in the words the page shows (never which of
 // role or password was wrong).
 class LoginRefused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The database could not take the log-in (too many connections, not
+// reachable): not a wrong password, so not counted against the address or
+// the role (login_throttle.h). `what()` is the server's reason for the log,
+// never a password.
+class LoginUnavailable : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

@@ -1,6 +1,9 @@
 #include "firmware-app/office/office_workflows.h"
 
+#include <unistd.h>
+
 #include <cstdlib>
+#include <system_error>
 
 #include "firmware-app/tunnel/project_drive.h"
 #include "storage/field_report/field_report.h"
@@ -8,6 +11,7 @@
 #include "storage/office/pull_project.h"
 #include "storage/office/server_drive.h"
 #include "storage/office/server_schema.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app {
 
@@ -121,6 +125,27 @@ tunnel::DriveSets server_drive(office::Connection& c, const std::string& name) {
   tunnel::DriveSetOptions options;
   options.drive = d.drive;
   return tunnel::track_sets_along_drive(std::move(visits), options);
+}
+
+std::vector<RoundSupport> server_drive_support(const std::string& server, const std::string& name,
+                                               Progress& progress) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                       ("rockface-drive-support-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  // Removed however the reading ends.
+  struct Remove {
+    std::filesystem::path dir;
+    ~Remove() {
+      std::error_code ec;
+      std::filesystem::remove_all(dir, ec);
+    }
+  } remove{folder};
+  const std::filesystem::path file = folder / "pulled.rockface";
+  office::pull_tunnel(server, name, file, progress);
+  storage::OpenOptions read;
+  read.read_only = true;
+  storage::ProjectStore store = storage::ProjectStore::open(file, read);
+  return drive_support(store);
 }
 
 }  // namespace rockface::app

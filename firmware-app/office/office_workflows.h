@@ -10,6 +10,7 @@
 
 #include "core/common/progress.h"
 #include "core/tunnel/drive_sets.h"
+#include "firmware-app/support/support_drive.h"
 #include "storage/office/pg_connection.h"
 #include "storage/office/sync_push.h"
 
@@ -46,5 +47,14 @@ std::vector<std::string> run_server_add_admin(const std::string& server, const s
 tunnel::DriveSets server_drive(const std::string& server, const std::string& tunnel);
 // The same over an open connection (the office's web session).
 tunnel::DriveSets server_drive(storage::office::Connection& c, const std::string& tunnel);
+
+// The support per round of every tablet's visits of the tunnel (`rockface
+// drive postgresql://... --support-csv`): the tunnel pulled into a
+// temporary project (removed after) and read as `rockface drive PROJECT
+// --support-csv` reads a project (firmware-app/support/support_drive.h);
+// RMR and Q need each visit's traces, which only a pull brings. Visits
+// numbered as the pull numbers them.
+std::vector<RoundSupport> server_drive_support(const std::string& server, const std::string& tunnel,
+                                               Progress& progress);
 
 }  // namespace rockface::app

@@ -7,15 +7,22 @@
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <system_error>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "core/common/error.h"
 #include "firmware-app/export/visit_export.h"
+#include "firmware-app/office/login_throttle.h"
 #include "firmware-app/office/office_pages.h"
 #include "firmware-app/office/office_pulled_copies.h"
+#include "firmware-app/office/office_rounds.h"
 #include "firmware-app/office/office_sessions.h"
+#include "firmware-app/office/office_shared_cache.h"
+#include "firmware-app/office/visit_comparison.h"
 #include "firmware-app/office/visit_report.h"
 #include "firmware-app/office/web_assets.h"
 #include "firmware-app/office/web_security.h"
@@ -58,7 +65,8 @@ class OfficeServer {
   explicit OfficeServer(const OfficeServeOptions& o)
       : options_(o),
         tls_(!o.tls_certificate.empty()),
-        sessions_(o.server, o.session_idle, o.work_folder) {
+        sessions_(o.server, o.session_idle, o.work_folder),
+        cache_(o.work_folder / "shared") {
     if (tls_)
       http_ = std::make_unique<httplib::SSLServer>(o.tls_certificate.c_str(), o.tls_key.c_str());
     else
@@ -173,6 +181,12 @@ class OfficeServer {
       }
       const std::string role = body.value("role", "");
       std::string password = body.value("password", "");
+      if (const int wait = throttle_.retry_after(req.remote_addr, role); wait > 0) {
+        std::fill(password.begin(), password.end(), '\0');
+        res.set_header("Retry-After", std::to_string(wait));
+        return send_error(res, 429,
+                          "too many failed log-ins: try again in " + std::to_string(wait) + " s");
+      }
       try {
         const std::string token = sessions_.log_in(role, password);
         std::fill(password.begin(), password.end(), '\0');
@@ -182,8 +196,13 @@ class OfficeServer {
                                                   static_cast<int>(std::max<std::int64_t>(
                                                       1, sessions_.idle().count() / 1000))));
         send_json(res, json{{"role", s->role}, {"csrf", s->csrf}});
+      } catch (const office_web::LoginUnavailable& e) {
+        std::fill(password.begin(), password.end(), '\0');
+        options_.log_failure(std::string("log-in: ") + e.what());
+        send_error(res, 503, "the database cannot take a log-in now: try again in a moment");
       } catch (const office_web::LoginRefused& e) {
         std::fill(password.begin(), password.end(), '\0');
+        throttle_.failed(req.remote_addr, role);
         send_error(res, 403, e.what());
       }
     });
@@ -214,28 +233,40 @@ class OfficeServer {
         f.from = req.get_param_value("from");
         f.to = req.get_param_value("to");
         f.tablet = req.get_param_value("tablet");
+        res.set_content(cache_.drive(s, req.get_param_value("tunnel"), f),
+                        "application/json; charset=utf-8");
+      });
+    });
+    h.Get("/api/drive/rounds", [this](const httplib::Request& req, httplib::Response& res) {
+      with_session(req, res, [&](OfficeSession& s) {
         const std::string tunnel = req.get_param_value("tunnel");
-        const std::string key = tunnel + '\n' + f.from + '\n' + f.to + '\n' + f.tablet;
-        const std::string stamp = office_web::tunnel_stamp(s.db, tunnel);
-        if (s.drives.size() > 16 && !s.drives.count(key)) s.drives.clear();
-        auto& cached = s.drives[key];
-        if (cached.second.empty() || cached.first != stamp)
-          cached = {stamp, office_web::drive_page(s.db, tunnel, f)
-                               .dump(-1, ' ', false, json::error_handler_t::replace)};
-        res.set_content(cached.second, "application/json; charset=utf-8");
+        const auto copy = cache_.pulled(s, tunnel);
+        std::lock_guard guard(copy->derived_lock);
+        std::string& text = copy->derived["rounds"];
+        if (text.empty()) {
+          std::map<storage::RecordId, std::string> uuids;
+          for (const auto& [uuid, id] : copy->visit_ids) uuids[id] = uuid;
+          storage::OpenOptions read;
+          read.read_only = true;
+          storage::ProjectStore store = storage::ProjectStore::open(copy->file, read);
+          text = office_web::rounds_page(store, [&](storage::RecordId id) {
+                   const auto it = uuids.find(id);
+                   return it == uuids.end() ? std::string() : it->second;
+                 }).dump(-1, ' ', false, json::error_handler_t::replace);
+        }
+        res.set_content(text, "application/json; charset=utf-8");
       });
     });
     h.Get("/api/stamp", [this](const httplib::Request& req, httplib::Response& res) {
       with_session(req, res, [&](OfficeSession& s) {
-        send_json(res,
-                  json{{"stamp", office_web::tunnel_stamp(s.db, req.get_param_value("tunnel"))}});
+        send_json(res, json{{"stamp", cache_.stamp(s, req.get_param_value("tunnel"))}});
       });
     });
     h.Get("/api/visit", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, [&](OfficeSession&, storage::ProjectStore& store, storage::RecordId id) {
         const storage::FieldReport report = collect_visit_report(store, id);
-        json page = office_web::visit_page(report, req.get_param_value("visit"),
-                                           office_web::face_origin(store, id));
+        const Eigen::Vector3d origin = office_web::face_origin(store, id);
+        json page = office_web::visit_page(report, req.get_param_value("visit"), origin);
         json photos = json::array();
         for (const auto& c : store.list_captures(id))
           for (const char* side : {"left", "right"})
@@ -248,7 +279,30 @@ class OfficeServer {
           if (m.texture_capture_id)
             page["texture"] = json{{"capture", *m.texture_capture_id}, {"side", m.texture_side}};
           page["face_triangles"] = std::to_string(m.mesh.faces.size()) + " triangles";
+          page["pole"] = office_web::range_pole_overlay(m, origin);
         }
+        send_json(res, page);
+      });
+    });
+    h.Get("/api/compare", [this](const httplib::Request& req, httplib::Response& res) {
+      with_session(req, res, [&](OfficeSession& s) {
+        const std::string tunnel = req.get_param_value("tunnel");
+        const office_web::PulledVisit a =
+            office_web::pulled_visit(cache_, s, tunnel, req.get_param_value("a"));
+        const office_web::PulledVisit b =
+            office_web::pulled_visit(cache_, s, tunnel, req.get_param_value("b"));
+        // Both from one copy: a sync between the two look-ups pulls again.
+        if (a.file != b.file) throw InputError("tunnel " + tunnel, "synced meanwhile: try again");
+        storage::OpenOptions read;
+        read.read_only = true;
+        storage::ProjectStore store = storage::ProjectStore::open(a.file, read);
+        storage::FieldReport ra = collect_visit_report(store, a.visit_id);
+        storage::FieldReport rb = collect_visit_report(store, b.visit_id);
+        json page = ra.visit_started_at <= rb.visit_started_at ? office_web::compare_visits(ra, rb)
+                                                               : office_web::compare_visits(rb, ra);
+        const bool swapped = ra.visit_started_at > rb.visit_started_at;
+        page["earlier"]["id"] = req.get_param_value(swapped ? "b" : "a");
+        page["later"]["id"] = req.get_param_value(swapped ? "a" : "b");
         send_json(res, page);
       });
     });
@@ -277,6 +331,26 @@ class OfficeServer {
         const storage::ImageBlob image = store.load_capture_image(capture, side);
         res.set_content(std::string(image.bytes.begin(), image.bytes.end()),
                         image.format == "png" ? "image/png" : "image/jpeg");
+      });
+    });
+    h.Get("/api/visit/picture", [this](const httplib::Request& req, httplib::Response& res) {
+      with_visit(req, res, [&](OfficeSession&, storage::ProjectStore& store, storage::RecordId id) {
+        // The field report's own pictures: the round's developed view
+        // (over- and underbreak against the design) and the wedges around
+        // the excavation, as the PDF prints them.
+        const storage::FieldReport report = collect_visit_report(store, id);
+        const std::string which = req.get_param_value("which");
+        cv::Mat picture;
+        if (which == "developed" && report.tunnel)
+          picture = report.tunnel->developed_view;
+        else if (which == "wedges" && report.wedges)
+          picture = report.wedges->picture;
+        else if (which != "developed" && which != "wedges")
+          throw InputError("which", "developed or wedges");
+        if (picture.empty()) throw InputError("which", "this visit has no such picture");
+        std::vector<std::uint8_t> png;
+        cv::imencode(".png", picture, png);
+        res.set_content(std::string(png.begin(), png.end()), "image/png");
       });
     });
     h.Get("/api/visit/report.pdf", [this](const httplib::Request& req, httplib::Response& res) {
@@ -323,8 +397,8 @@ class OfficeServer {
   template <typename Body>
   void with_visit(const httplib::Request& req, httplib::Response& res, Body body) {
     with_session(req, res, [&](OfficeSession& s) {
-      const office_web::PulledVisit v =
-          office_web::pulled_visit(s, req.get_param_value("tunnel"), req.get_param_value("visit"));
+      const office_web::PulledVisit v = office_web::pulled_visit(
+          cache_, s, req.get_param_value("tunnel"), req.get_param_value("visit"));
       storage::OpenOptions read;
       read.read_only = true;
       storage::ProjectStore store = storage::ProjectStore::open(v.file, read);
@@ -374,6 +448,8 @@ class OfficeServer {
   OfficeServeOptions options_;
   bool tls_;
   office_web::SessionStore sessions_;
+  office_web::SharedOfficeCache cache_;
+  office_web::LoginThrottle throttle_;
   std::unique_ptr<httplib::Server> http_;
   std::mutex sweep_lock_;
   std::chrono::steady_clock::time_point last_sweep_ = std::chrono::steady_clock::now();

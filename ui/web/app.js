@@ -1,9 +1,11 @@
-// The office's pages: log-in, tunnels, a tunnel's drive, a visit; a hash
-// route (#/drive/NAME, #/visit/NAME/UUID) so a link opens the same page.
+// The office's pages: log-in, tunnels, a tunnel's drive, a visit, two
+// visits side by side; a hash route (#/drive/NAME, #/visit/NAME/UUID,
+// #/compare/NAME/UUID/UUID) so a link opens the same page.
 import { get, post, setCsrf, NotLoggedIn } from './api.js';
 import { el, table, section } from './dom.js';
 import { showDrive, stopDrive } from './drive.js';
 import { showVisit } from './visit.js';
+import { showCompare } from './compare.js';
 
 const page = document.getElementById('page');
 const where = document.getElementById('where');
@@ -70,6 +72,10 @@ async function route() {
       setWhere(el('a', { href: '#/tunnels', text: 'Tunnels' }),
         el('a', { href: `#/drive/${encodeURIComponent(parts[1])}`, text: parts[1] }), el('span', { text: 'visit' }));
       await showVisit(page, parts[1], parts[2]);
+    } else if (parts[0] === 'compare' && parts[1] && parts[2] && parts[3]) {
+      setWhere(el('a', { href: '#/tunnels', text: 'Tunnels' }),
+        el('a', { href: `#/drive/${encodeURIComponent(parts[1])}`, text: parts[1] }), el('span', { text: 'two visits' }));
+      await showCompare(page, parts[1], parts[2], parts[3]);
     } else {
       await showTunnels();
     }

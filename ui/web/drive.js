@@ -1,13 +1,16 @@
 // A tunnel's drive: a strip along the chainage with every visit, each
 // set's dip and dip direction against chainage (new, turning and vanishing
-// sets flagged), the visits' blocks; filters by date and tablet; the page
-// asks the server every few seconds whether a tablet synced and redraws
-// when one did.
+// sets flagged), the visits' blocks, the rounds (RMR89 / Q, the support
+// class proposed and decided, over- and underbreak: read after the rest,
+// from the tunnel's pulled copy); filters by date and tablet; the page asks
+// the server every few seconds whether a tablet synced and redraws when one
+// did.
 import { get } from './api.js';
 import { el, svg, table, section, setColour } from './dom.js';
 
 let poll = null;
 const POLL_MS = 4000;
+const ROUNDS_AT_ONCE = 300;
 
 export function stopDrive() {
   if (poll) clearInterval(poll);
@@ -41,6 +44,47 @@ function chart(title, unit, visits, tracks, value, lo, hi) {
     }
   });
   return g;
+}
+
+// RMR89 of each round against chainage: the class boundaries (20, 40, 60,
+// 80) as grid lines, a round's decided support class in its mark's title.
+function rmrChart(rounds) {
+  const w = 900, h = 150, left = 48, right = 12, top = 22, bottom = 28;
+  const rated = rounds.filter((r) => typeof r.rmr === 'number');
+  const g = svg('svg', { viewBox: `0 0 ${w} ${h}`, class: 'chart rmr', role: 'img', 'aria-label': 'RMR89 per round' });
+  g.append(svg('text', { x: 4, y: 14, class: 'chart-title', text: 'RMR89 per round against chainage' }));
+  let c0 = Math.min(...rounds.map((r) => r.chainage)), c1 = Math.max(...rounds.map((r) => r.chainage));
+  if (!isFinite(c0)) { c0 = 0; c1 = 1; }
+  if (c1 - c0 < 1) { c0 -= 0.5; c1 += 0.5; }
+  const x = (c) => left + ((c - c0) / (c1 - c0)) * (w - left - right);
+  const y = (v) => top + (1 - v / 100) * (h - top - bottom);
+  for (const v of [0, 20, 40, 60, 80, 100]) {
+    g.append(svg('line', { x1: left, x2: w - right, y1: y(v), y2: y(v), class: 'grid' }));
+    g.append(svg('text', { x: left - 4, y: y(v) + 4, class: 'axis', 'text-anchor': 'end', text: String(v) }));
+  }
+  for (const [c, anchor] of [[c0, 'start'], [c1, 'end']])
+    g.append(svg('text', { x: x(c), y: h - 8, class: 'axis', 'text-anchor': anchor, text: `ch ${c.toFixed(1)} m` }));
+  for (const r of rated) {
+    const dot = svg('circle', { cx: x(r.chainage), cy: y(r.rmr), r: 4, class: 'round' });
+    dot.append(svg('title', { text: `ch ${r.chainage_text}: RMR89 ${r.rmr_text}, Q ${r.q_text}, support ${r.decided}` }));
+    g.append(dot);
+  }
+  return g;
+}
+
+async function drawRounds(host, tunnel) {
+  try {
+    const d = await get('/api/drive/rounds', { tunnel });
+    const rows = d.rounds.map((r) => [
+      r.visit ? el('a', { href: `#/visit/${encodeURIComponent(tunnel)}/${r.visit}`, text: r.chainage_text }) : r.chainage_text,
+      r.rmr_text, r.q_text, r.proposed, `${r.decided}${r.decided_by ? ` (${r.decided_by})` : ''}`, r.excavation_text]);
+    host.replaceChildren(el('h2', { text: 'Rounds: rock mass, support class, excavation' }),
+      d.rounds.length ? rmrChart(d.rounds) : el('p', { className: 'muted', text: 'no visit is placed in the tunnel yet' }),
+      table(['Chainage', 'RMR89', 'Q', 'Support proposed', 'Support decided', 'Over- / underbreak'], rows, 'rounds'));
+  } catch (err) {
+    host.replaceChildren(el('h2', { text: 'Rounds: rock mass, support class, excavation' }),
+      el('p', { className: 'error', text: `the rounds could not be read: ${err.message}` }));
+  }
 }
 
 function strip(visits) {
@@ -77,6 +121,8 @@ async function draw(host, tunnel, filter, stamp) {
     draw(host, tunnel, filter, stamp);
   };
   for (const f of [tablet, from, to]) f.addEventListener('change', apply);
+  const rounds = el('section', { id: 'rounds' }, el('h2', { text: 'Rounds: rock mass, support class, excavation' }),
+    el('p', { className: 'muted', text: 'reading the rounds…' }));
   const filters = el('form', { className: 'filters' },
     el('label', { text: 'From ' }, from), el('label', { text: 'To ' }, to), el('label', { text: 'Tablet ' }, tablet));
   const setRows = d.sets.map((t, i) => [el('span', { className: `set-dot set-${i % 8}`, text: t.name }),
@@ -92,7 +138,17 @@ async function draw(host, tunnel, filter, stamp) {
     d.sets.length ? chart('Dip of each set', '°', d.visits, d.sets, (p) => p.dip, 0, 90) : el('p', { text: d.sets_note }),
     d.sets.length ? chart('Dip direction of each set', '°', d.visits, d.sets, (p) => p.dipdir, 0, 360) : null,
     section('Sets along the drive', table(['Set', 'Last seen (dip / dip direction ± α95)', 'Flags', 'Events'], setRows)),
+    rounds,
     section('Visits', table(['Date', 'Chainage', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note'], visitRows, 'visits')));
+  // The rounds need the tunnel's pulled copy (every visit's traces): read
+  // at once for a drive of a few hundred visits, on request for a longer
+  // one (its first pull takes minutes and holds the session meanwhile).
+  if (d.visits.length <= ROUNDS_AT_ONCE) drawRounds(rounds, tunnel);
+  else {
+    const read = el('button', { type: 'button', id: 'rounds-button', text: `Read the rounds of ${d.visits.length} visits` });
+    read.addEventListener('click', () => { read.disabled = true; read.textContent = 'reading the rounds…'; drawRounds(rounds, tunnel); });
+    rounds.replaceChildren(rounds.firstChild, el('p', { className: 'muted', text: 'The rounds are read from the whole tunnel: this takes a while on a long drive.' }), read);
+  }
 }
 
 export async function showDrive(host, tunnel) {

@@ -1,7 +1,7 @@
 // The visit's 3D face in WebGL (three.js from Debian's libjs-three, served
 // by the office server from /usr/share/javascript/three): the textured
 // mesh (decimated by the server; the full mesh on request), the traces
-// coloured by set, the blocks by verdict; drag to turn, wheel to zoom, a
+// coloured by set, the blocks by verdict, the range pole; drag to turn, wheel to zoom, a
 // click on the face marks a point and a second click gives the distance.
 import * as THREE from '/three/build/three.module.js';
 import { OrbitControls } from '/three/examples/jsm/controls/OrbitControls.js';
@@ -78,6 +78,19 @@ export async function showFace(host, status, meshUrl, textureUrl, visit) {
     }
   }
 
+  // The range pole that scaled the face: its two targets and the pole
+  // between them, in orange.
+  if (visit.pole) {
+    const [a, b] = visit.pole.targets.map((p) => new THREE.Vector3(p[0], p[1], p[2]));
+    scene.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints([a, b]), new THREE.LineBasicMaterial({ color: 0xff8c00 })));
+    const r = Math.max(a.distanceTo(b) / 40, 0.005);
+    for (const p of [a, b]) {
+      const target = new THREE.Mesh(new THREE.SphereGeometry(r, 12, 12), new THREE.MeshBasicMaterial({ color: 0xff8c00 }));
+      target.position.copy(p);
+      scene.add(target);
+    }
+    host.dataset.pole = 'yes';
+  }
   const sphere = geometry.boundingSphere;
   const radius = sphere && sphere.radius > 0 ? sphere.radius : 1;
   const centre = sphere ? sphere.center : new THREE.Vector3();

@@ -47,18 +47,36 @@ export async function showVisit(host, tunnel, visitId) {
     el('p', { className: 'muted', text: `${v.project}; ${v.source}; camera ${v.camera || '–'}; preset ${v.preset || '–'}` }),
     el('p', { className: 'actions' }, report),
     section('3D face', faceHost, faceStatus, v.has_face ? fullButton : null,
-      el('p', { className: 'muted', text: 'Traces coloured by set; blocks red removable, green keyed, grey infinite.' })),
+      el('p', { className: 'muted', text: `Traces coloured by set; blocks red removable, green keyed, grey infinite${v.pole ? `; the range pole (${v.pole.length}) orange` : ''}.` })),
     section('Photographs', photos),
     section('Accuracy', figures, lines(v.warnings)),
     section('Joint sets', el('div', { className: 'side' }, stereonet(v.poles, v.sets), sets)),
     section('Joints', joints),
     section('Blocks', blocks),
   ];
+  const picture = (which, alt) => {
+    const img = el('img', { src: url('/api/visit/picture', { ...q, which }), alt, className: 'picture', id: `picture-${which}` });
+    img.addEventListener('click', () => img.classList.toggle('zoomed'));
+    return img;
+  };
   if (v.tunnel && v.tunnel.name)
-    parts.push(section('The round in the tunnel', el('p', { text: `${v.tunnel.name}, ${v.tunnel.profile}, chainage ${v.tunnel.chainage}` }), lines(v.tunnel.lines)));
-  if (v.wedges && v.wedges.rows) parts.push(section('Wedges around the excavation', lines(v.wedges.lines), table(v.wedges.rows[0] ? v.wedges.rows[0].map((_, i) => (i ? '' : 'Wedge')) : [], v.wedges.rows), lines(v.wedges.notes)));
+    parts.push(section('The round in the tunnel', el('p', { text: `${v.tunnel.name}, ${v.tunnel.profile}, chainage ${v.tunnel.chainage}` }), lines(v.tunnel.lines),
+      v.tunnel.has_developed_view ? picture('developed', 'the excavation developed: over- and underbreak against the design profile') : null));
+  if (v.wedges && v.wedges.rows) parts.push(section('Wedges around the excavation', lines(v.wedges.lines),
+    v.wedges.has_picture ? picture('wedges', 'the section with the largest wedges') : null,
+    table(v.wedges.rows[0] ? v.wedges.rows[0].map((_, i) => (i ? '' : 'Wedge')) : [], v.wedges.rows), lines(v.wedges.notes)));
   parts.push(section('Rock mass', v.rockmass.rmr ? lines([v.rockmass.rmr, v.rockmass.q, ...v.rockmass.lines]) : el('p', { text: v.rockmass.note || 'not classified' })));
   if (v.support && v.support.proposals) parts.push(section('Support', lines(v.support.proposals), lines(v.support.decision)));
+  // Another visit of the tunnel to set beside this one (the drive's list,
+  // read from the server's shared copy).
+  const other = el('select', { id: 'compare-with' }, el('option', { value: '', text: 'another visit…' }));
+  other.addEventListener('change', () => {
+    if (other.value) location.hash = `#/compare/${encodeURIComponent(tunnel)}/${visitId}/${other.value}`;
+  });
+  get('/api/drive', { tunnel }).then((d) => {
+    for (const o of d.visits) if (o.id !== visitId) other.append(el('option', { value: o.id, text: `${o.date}, ${o.tablet}, ${o.chainage_text}` }));
+  }).catch(() => {});
+  parts.push(section('Compare', el('label', { text: 'Side by side with ' }, other)));
   parts.push(section('Exports', exportsButton, exportsList));
   host.replaceChildren(...parts);
 

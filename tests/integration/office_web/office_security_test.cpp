@@ -7,6 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
 #include <string>
 #include <thread>
 
@@ -95,6 +98,152 @@ TEST(OfficeWebSecurity, AnOfficeRoleOfOneTunnelSeesOnlyThatTunnel) {
   ASSERT_TRUE(drive);
   EXPECT_EQ(drive->status, 404) << drive->body;
   EXPECT_EQ(drive->body.find("tablet_a"), std::string::npos);
+}
+
+// The drive pages and pulled copies are shared by sessions whose roles read
+// the same tunnels (firmware-app/office/office_shared_cache.h): each role
+// here reads a different set, and each request is made right after another
+// role's filled the cache with what it may not read.
+TEST(OfficeWebSecurity, RolesOfDifferentTunnelsNeverSeeEachOthersVisitsThroughTheCache) {
+  OfficeServer server;
+  httplib::Client c("127.0.0.1", server.port());
+  const Login all = log_in(c, server.origin(), "office_reader", kOfficePassword);
+  const Login adit = log_in(c, server.origin(), "adit_office", kAditPassword);
+  const Login main = log_in(c, server.origin(), "main_office", kMainOfficePassword);
+  ASSERT_EQ(all.status, 200) << all.error;
+  ASSERT_EQ(adit.status, 200) << adit.error;
+  ASSERT_EQ(main.status, 200) << main.error;
+  auto get = [&](const Login& who, const std::string& path) {
+    const auto r = c.Get(path.c_str(), httplib::Headers{{"Cookie", who.cookie}});
+    EXPECT_TRUE(r) << path;
+    return r ? std::make_pair(r->status, r->body) : std::make_pair(0, std::string());
+  };
+  auto visit_ids = [](const std::string& body) {
+    std::set<std::string> ids;
+    const json page = json::parse(body);
+    for (const auto& v : page["visits"]) ids.insert(v["id"].get<std::string>());
+    return ids;
+  };
+  auto tablets = [](const std::string& body) {
+    std::set<std::string> t;
+    const json page = json::parse(body);
+    for (const auto& v : page["visits"]) t.insert(v["tablet"].get<std::string>());
+    return t;
+  };
+  const std::string main_drive = "/api/drive?tunnel=Main%20drive";
+  const std::string adit_drive = "/api/drive?tunnel=North%20adit";
+
+  // rockface_office fills the cache with both tunnels.
+  const auto all_main = get(all, main_drive);
+  const auto all_adit = get(all, adit_drive);
+  ASSERT_EQ(all_main.first, 200) << all_main.second;
+  ASSERT_EQ(all_adit.first, 200) << all_adit.second;
+  const std::set<std::string> main_ids = visit_ids(all_main.second);
+  const std::set<std::string> adit_ids = visit_ids(all_adit.second);
+  ASSERT_EQ(main_ids.size(), 4u) << "tablet A's two, tablet B's two";
+  ASSERT_FALSE(adit_ids.empty());
+  EXPECT_EQ(tablets(all_adit.second), std::set<std::string>{"tablet_c"});
+
+  // Each one-tunnel role: the other tunnel as if it did not exist, its own
+  // tunnel with exactly its own visits.
+  const auto adit_main = get(adit, main_drive);
+  EXPECT_EQ(adit_main.first, 404) << adit_main.second;
+  EXPECT_EQ(adit_main.second.find("tablet_a"), std::string::npos);
+  const auto adit_adit = get(adit, adit_drive);
+  ASSERT_EQ(adit_adit.first, 200) << adit_adit.second;
+  EXPECT_EQ(visit_ids(adit_adit.second), adit_ids);
+  const auto main_adit = get(main, adit_drive);
+  EXPECT_EQ(main_adit.first, 404) << main_adit.second;
+  EXPECT_EQ(main_adit.second.find("tablet_c"), std::string::npos);
+  const auto main_main = get(main, main_drive);
+  ASSERT_EQ(main_main.first, 200) << main_main.second;
+  EXPECT_EQ(visit_ids(main_main.second), main_ids);
+  EXPECT_EQ(tablets(main_main.second), (std::set<std::string>{"tablet_a", "tablet_b"}));
+  // The stamp the pages poll: refused the same way.
+  EXPECT_EQ(get(adit, "/api/stamp?tunnel=Main%20drive").first, 404);
+
+  // A visit of the other tunnel, once its tunnel has been pulled for a
+  // role that may read it: named under the role's own tunnel or the other.
+  const std::string main_visit = *main_ids.begin();
+  ASSERT_EQ(get(all, "/api/visit?tunnel=Main%20drive&visit=" + main_visit).first, 200);
+  const auto by_own = get(adit, "/api/visit?tunnel=North%20adit&visit=" + main_visit);
+  EXPECT_EQ(by_own.first, 404) << by_own.second;
+  const auto by_other = get(adit, "/api/visit?tunnel=Main%20drive&visit=" + main_visit);
+  EXPECT_EQ(by_other.first, 404) << by_other.second;
+  EXPECT_EQ(get(main, "/api/visit?tunnel=Main%20drive&visit=" + main_visit).first, 200);
+}
+
+TEST(OfficeWebSecurity, FiveFailedLogInsAMinuteThenTheAddressWaits) {
+  OfficeServer server;  // a server of its own: its count starts at zero
+  httplib::Client c("127.0.0.1", server.port());
+  for (int i = 0; i < 5; ++i)
+    EXPECT_EQ(log_in(c, server.origin(), "office_reader", "guess " + std::to_string(i)).status, 403)
+        << i;
+  // The right password now waits too: PostgreSQL is not even asked.
+  httplib::Headers h = {{"Origin", server.origin()}};
+  const auto held =
+      c.Post("/api/login", h, json{{"role", "office_reader"}, {"password", kOfficePassword}}.dump(),
+             "application/json");
+  ASSERT_TRUE(held);
+  EXPECT_EQ(held->status, 429) << held->body;
+  EXPECT_EQ(held->get_header_value("Set-Cookie"), "");
+  const int wait = std::stoi("0" + held->get_header_value("Retry-After"));
+  // Five failures within the last few seconds: the first leaves the
+  // one-minute window in at most 60 s and at least 1 s.
+  EXPECT_GE(wait, 1);
+  EXPECT_LE(wait, 60);
+  EXPECT_NE(json::parse(held->body).value("error", "").find("try again"), std::string::npos);
+  // Another role from the same address waits as well.
+  EXPECT_EQ(log_in(c, server.origin(), "adit_office", kAditPassword).status, 429);
+}
+
+// `office serve --tls`: a self-signed certificate for 127.0.0.1 made here
+// with openssl, a client that verifies it, the session's cookie Secure and
+// __Host- prefixed, HSTS on every answer, and no plain HTTP on that port.
+TEST(OfficeWebSecurity, OverTlsTheCookieIsSecureAndHostOnly) {
+  namespace fs = std::filesystem;
+  const fs::path dir = site().folder / "tls";
+  fs::create_directories(dir);
+  const fs::path cert = dir / "cert.pem", key = dir / "key.pem";
+  const std::string make =
+      "openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 1 "
+      "-subj /CN=127.0.0.1 -addext subjectAltName=IP:127.0.0.1 -keyout '" +
+      key.string() + "' -out '" + cert.string() + "' 2>/dev/null";
+  ASSERT_EQ(std::system(make.c_str()), 0) << "openssl (Debian: openssl) made no certificate";
+  OfficeServer server(site(), 30, {"--tls", cert.string() + "," + key.string()});
+  const std::string origin = "https://127.0.0.1:" + std::to_string(server.port());
+
+  httplib::SSLClient c("127.0.0.1", server.port());
+  c.set_ca_cert_path(cert.c_str());
+  c.enable_server_certificate_verification(true);
+  const auto r = c.Post("/api/login", {{"Origin", origin}},
+                        json{{"role", "office_reader"}, {"password", kOfficePassword}}.dump(),
+                        "application/json");
+  ASSERT_TRUE(r) << "the HTTPS request failed: " << httplib::to_string(r.error());
+  ASSERT_EQ(r->status, 200) << r->body;
+  const std::string set = r->get_header_value("Set-Cookie");
+  EXPECT_EQ(set.rfind("__Host-rockface_session=", 0), 0u) << set;
+  EXPECT_NE(set.find("; Secure"), std::string::npos) << set;
+  EXPECT_NE(set.find("HttpOnly"), std::string::npos) << set;
+  EXPECT_NE(set.find("Path=/"), std::string::npos) << "__Host- cookies need Path=/: " << set;
+  EXPECT_EQ(set.find("Domain"), std::string::npos) << "__Host- cookies have no Domain: " << set;
+  EXPECT_NE(r->get_header_value("Strict-Transport-Security").find("max-age="), std::string::npos);
+  const std::string cookie = set.substr(0, set.find(';'));
+  const auto tunnels = c.Get("/api/tunnels", {{"Cookie", cookie}});
+  ASSERT_TRUE(tunnels);
+  EXPECT_EQ(tunnels->status, 200) << tunnels->body;
+  expect_security_headers(tunnels, "/api/tunnels over TLS");
+  // The plain-HTTP cookie's name is not this server's session.
+  const auto plain_name = c.Get(
+      "/api/tunnels", {{"Cookie", "rockface_session=" + cookie.substr(cookie.find('=') + 1)}});
+  ASSERT_TRUE(plain_name);
+  EXPECT_EQ(plain_name->status, 401);
+
+  // Plain HTTP to the TLS port gets no page.
+  httplib::Client plain("127.0.0.1", server.port());
+  plain.set_read_timeout(std::chrono::seconds(5));
+  const auto p = plain.Get("/api/session");
+  EXPECT_TRUE(!p || p->status >= 400) << "plain HTTP was answered " << (p ? p->status : 0);
 }
 
 TEST(OfficeWebSecurity, ForgedAndExpiredSessionsAreRefused) {

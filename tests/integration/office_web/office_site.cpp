@@ -36,10 +36,13 @@ Site make_site() {
     storage::office::Connection c(as_superuser(s.database));
     storage::office::add_tunnel(c, "North adit");
     storage::office::add_office_user(c, "adit_office", "North adit");
+    storage::office::add_office_user(c, "main_office", "Main drive");
+    storage::office::add_tablet(c, "tablet_c", "North adit");
   }
   server().psql(std::string("ALTER ROLE office_reader PASSWORD '") + kOfficePassword +
                     "'; ALTER ROLE tablet_a PASSWORD '" + kTabletPassword +
-                    "'; ALTER ROLE adit_office PASSWORD '" + kAditPassword + "'",
+                    "'; ALTER ROLE adit_office PASSWORD '" + kAditPassword +
+                    "'; ALTER ROLE main_office PASSWORD '" + kMainOfficePassword + "'",
                 s.database);
 
   TabletProject a;
@@ -50,8 +53,16 @@ Site make_site() {
   b.name = "tablet B";
   b.seed = 2;
   b.first_chainage = 107;
+  // Tablet C maps the other tunnel: what its office role, and only it
+  // (besides rockface_office), may read.
+  TabletProject c;
+  c.name = "tablet C";
+  c.seed = 3;
+  c.visits = 1;
+  c.tunnel = "North adit";
   make_tablet_project(s.folder / "a.rockface", a);
   make_tablet_project(s.folder / "b.rockface", b);
+  make_tablet_project(s.folder / "adit-c.rockface", c);
   {
     storage::sqlite::Connection db(s.folder / "a.rockface",
                                    storage::sqlite::Connection::Access::read_write);
@@ -60,10 +71,20 @@ Site make_site() {
     for (char ch : note) quoted += ch == '\'' ? std::string("''") : std::string(1, ch);
     db.exec("UPDATE visit SET note = '" + quoted + "' WHERE id = (SELECT min(id) FROM visit)",
             "writing the test's note");
+    // Tablet A's 3D images were scaled by a range pole whose two targets
+    // the reconstruction recorded (kPoleTargets, project frame).
+    db.exec(std::string("UPDATE model SET registration_parameters = json_set(CASE WHEN "
+                        "json_valid(registration_parameters) THEN registration_parameters ELSE "
+                        "'{}' END, '$.registration', json('{\"scale_source\": \"range pole\", "
+                        "\"range_pole\": {\"length_m\": 2.0}}'), '$.targets', json('") +
+                kPoleTargets + "'))",
+            "writing the range pole's targets");
   }
   NoProgress none;
   storage::office::sync_project(s.folder / "a.rockface", as_role(s.database, "tablet_a"), {}, none);
   storage::office::sync_project(s.folder / "b.rockface", as_role(s.database, "tablet_b"), {}, none);
+  storage::office::sync_project(s.folder / "adit-c.rockface", as_role(s.database, "tablet_c"), {},
+                                none);
   // Over TCP with TLS (the socket trusts every role): passwords are checked.
   s.server = "host=127.0.0.1 port=" + std::to_string(server().port()) + " dbname=" + s.database +
              " sslmode=verify-full sslrootcert=" + server().ca_certificate().string();
@@ -83,7 +104,11 @@ Site fresh_site() {
 
 OfficeServer::OfficeServer(double session_minutes) : OfficeServer(site(), session_minutes) {}
 
-OfficeServer::OfficeServer(const Site& s, double session_minutes) {
+OfficeServer::OfficeServer(const Site& s, double session_minutes)
+    : OfficeServer(s, session_minutes, {}) {}
+
+OfficeServer::OfficeServer(const Site& s, double session_minutes,
+                           const std::vector<std::string>& more) {
   static int count = 0;
   const fs::path log = s.folder / ("office-serve-" + std::to_string(++count) + ".out");
   const std::string binary = std::string(ROCKFACE_BINARY_DIR) + "/rockface";
@@ -92,9 +117,14 @@ OfficeServer::OfficeServer(const Site& s, double session_minutes) {
   pid_ = ::fork();
   if (pid_ == 0) {
     if (!std::freopen(log.c_str(), "w", stdout)) ::_exit(126);
-    ::execl(binary.c_str(), binary.c_str(), "office", "serve", s.server.c_str(), "--listen",
-            "127.0.0.1:0", "--session-minutes", minutes.c_str(), "--work", work.c_str(),
-            static_cast<char*>(nullptr));
+    std::vector<std::string> args = {
+        binary,  "office", "serve", s.server, "--listen", "127.0.0.1:0", "--session-minutes",
+        minutes, "--work", work};
+    args.insert(args.end(), more.begin(), more.end());
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(binary.c_str(), argv.data());
     ::_exit(127);
   }
   // "office: serving http://127.0.0.1:PORT/ ..." once it listens: within a

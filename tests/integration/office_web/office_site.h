@@ -4,12 +4,14 @@
 // database where two tablets synced their projects of tunnel "Main drive"
 // (tablet A with a mapped face: joints, sets, blocks; tablet B two more
 // visits further on), a second tunnel "North adit" with an office role of
-// its own, and a real `rockface office serve` process on a loopback port.
+// its own and tablet C's visit, an office role of "Main drive" only, and a real `rockface office
+// serve` process on a loopback port.
 #include <sys/types.h>
 
 #include <chrono>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace rockface::office_web_test {
 
@@ -17,9 +19,14 @@ namespace rockface::office_web_test {
 inline constexpr const char* kOfficePassword = "office pass 1";
 inline constexpr const char* kTabletPassword = "tablet pass 2";
 inline constexpr const char* kAditPassword = "adit pass 3";
+inline constexpr const char* kMainOfficePassword = "main pass 4";
 // A note on one of tablet A's visits: a script that must stay text.
 inline constexpr const char* kScriptNote =
     "<script>window.rockfaceInjected=1</script><img src=x onerror=\"window.rockfaceInjected=2\">";
+
+// The range pole's targets on tablet A's 3D images (project frame, m):
+// 2 m apart, on the sample face (y about 4).
+inline constexpr const char* kPoleTargets = "[[0.1, 4.0, 0.2], [0.1, 4.0, 2.2]]";
 
 struct Site {
   std::string database;
@@ -38,6 +45,8 @@ class OfficeServer {
  public:
   explicit OfficeServer(double session_minutes = 30);
   OfficeServer(const Site& s, double session_minutes);
+  // With more arguments for `office serve` (e.g. {"--tls", "CERT,KEY"}).
+  OfficeServer(const Site& s, double session_minutes, const std::vector<std::string>& more);
   ~OfficeServer();
   OfficeServer(const OfficeServer&) = delete;
   OfficeServer& operator=(const OfficeServer&) = delete;

@@ -101,6 +101,10 @@ TEST(OfficeSync, TwoTabletsSyncToOneServerAndPullBack) {
   EXPECT_EQ(app::drive_csv(from_server), app::drive_csv(from_pulled));
   EXPECT_EQ(app::drive_summary(from_server), app::drive_summary(from_pulled));
   EXPECT_EQ(from_server.visits.size(), 4u);
+  // And its support per round (`drive postgresql://... --support-csv`).
+  const auto rounds = app::server_drive_support(as_role(db, "office_reader"), "Main drive", none);
+  EXPECT_EQ(app::drive_support_csv(rounds), app::drive_support_csv(app::drive_support(pulled)));
+  EXPECT_EQ(rounds.size(), 4u) << "one round per placed visit";
 }
 
 TEST(OfficeSync, PulledProjectGivesTheSameAnalysisBitForBit) {

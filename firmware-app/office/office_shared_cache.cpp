@@ -1,0 +1,142 @@
+#include "firmware-app/office/office_shared_cache.h"
+
+#include <optional>
+#include <system_error>
+
+#include "core/common/error.h"
+#include "core/common/progress.h"
+#include "firmware-app/office/web_security.h"
+#include "storage/office/pull_project.h"
+#include "storage/project/project_sqlite.h"
+
+namespace rockface::app::office_web {
+
+namespace office = storage::office;
+
+ReadableTunnels readable_tunnels(office::Connection& c) {
+  // Row-level security answers: the tunnels this role may read, no more.
+  const office::Result r =
+      c.query("SELECT id, name FROM rockface.tunnel ORDER BY id", {}, "reading the tunnels");
+  ReadableTunnels out;
+  for (int i = 0; i < r.rows(); ++i) {
+    out.key += (i ? "," : "") + std::to_string(r.int64(i, 0));
+    out.by_name[r.text(i, 1)] = r.int64(i, 0);
+  }
+  return out;
+}
+
+SharedPull::~SharedPull() {
+  std::error_code ec;
+  std::filesystem::remove(file, ec);
+}
+
+SharedOfficeCache::SharedOfficeCache(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+template <typename Entry>
+std::shared_ptr<Entry> SharedOfficeCache::entry(std::map<std::string, std::shared_ptr<Entry>>& map,
+                                                const std::string& key, std::size_t limit) {
+  std::lock_guard guard(lock_);
+  auto& e = map[key];
+  if (!e) {
+    e = std::make_shared<Entry>();
+    // The least recently used goes; a session still reading it keeps its
+    // own reference until it is done.
+    while (map.size() > limit) {
+      auto oldest = map.end();
+      for (auto it = map.begin(); it != map.end(); ++it)
+        if (it->first != key && (oldest == map.end() || it->second->used < oldest->second->used))
+          oldest = it;
+      map.erase(oldest);
+    }
+  }
+  e->used = ++clock_;
+  return e;
+}
+
+std::pair<std::string, std::string> SharedOfficeCache::checked_stamp(OfficeSession& s,
+                                                                     const std::string& tunnel) {
+  const ReadableTunnels readable = readable_tunnels(s.db);
+  // The same answer as for a tunnel that does not exist.
+  if (!readable.by_name.count(tunnel))
+    throw InputError("tunnel " + tunnel, "no such tunnel for this log-in");
+  const std::string key = readable.key + '\n' + tunnel;
+  const auto now = std::chrono::steady_clock::now();
+  {
+    std::lock_guard guard(lock_);
+    const auto it = stamps_.find(key);
+    if (it != stamps_.end() && now - it->second.asked < kStampFresh) return {key, it->second.value};
+  }
+  const std::string value = tunnel_stamp(s.db, tunnel);
+  std::lock_guard guard(lock_);
+  stamps_[key] = {value, now};
+  return {key, value};
+}
+
+std::string SharedOfficeCache::stamp(OfficeSession& s, const std::string& tunnel) {
+  return checked_stamp(s, tunnel).second;
+}
+
+std::string SharedOfficeCache::drive(OfficeSession& s, const std::string& tunnel,
+                                     const DriveFilter& filter) {
+  const auto checked = checked_stamp(s, tunnel);
+  const std::string& key = checked.first;
+  const std::string& stamp = checked.second;
+  const auto page = entry(
+      pages_, key + '\n' + filter.from + '\n' + filter.to + '\n' + filter.tablet, kDrivePages);
+  auto current = [&]() -> std::optional<std::string> {
+    std::lock_guard guard(page->data);
+    if (!page->json.empty() && page->stamp == stamp) return page->json;
+    return std::nullopt;
+  };
+  if (auto ready = current()) return *ready;
+  std::unique_lock build(page->build, std::try_to_lock);
+  if (!build.owns_lock()) {
+    {
+      std::lock_guard guard(page->data);
+      if (!page->json.empty()) return page->json;  // an older state, while the build runs
+    }
+    build.lock();  // nothing to show yet: wait for the build under way
+    if (auto ready = current()) return *ready;
+  }
+  // Built on this session's connection: its role reads the same tunnels as
+  // every session that shares the key.
+  nlohmann::json built = drive_page(s.db, tunnel, filter);
+  // The stamp the page polls against is the one it is kept under.
+  built["stamp"] = stamp;
+  std::string text = built.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  std::lock_guard guard(page->data);
+  page->stamp = stamp;
+  page->json = text;
+  return text;
+}
+
+std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(OfficeSession& s,
+                                                            const std::string& tunnel) {
+  const auto [key, stamp] = checked_stamp(s, tunnel);
+  const auto pull = entry(pulls_, key, kPulledCopies);
+  std::lock_guard build(pull->build);
+  if (pull->copy && pull->copy->stamp == stamp && std::filesystem::exists(pull->copy->file))
+    return pull->copy;
+  std::filesystem::create_directories(folder_);
+  auto copy = std::make_shared<SharedPull>();
+  copy->file = folder_ / ("tunnel-" + random_token().substr(0, 32) + ".rockface");
+  copy->stamp = stamp;
+  NoProgress quiet;
+  try {
+    office::pull_tunnel(s.db, tunnel, copy->file, quiet);
+  } catch (...) {
+    // The pull's snapshot transaction may still be open on the session.
+    s.db.exec("ROLLBACK", "ending a failed pull");
+    throw;
+  }
+  {
+    storage::sqlite::Connection db(copy->file, storage::sqlite::Connection::Access::read_only);
+    storage::sqlite::Statement st(db, "SELECT id, uuid FROM visit WHERE uuid IS NOT NULL",
+                                  "reading the pulled visits' uuids");
+    while (st.step()) copy->visit_ids[st.column_text(1)] = st.column_int(0);
+  }
+  pull->copy = copy;
+  return copy;
+}
+
+}  // namespace rockface::app::office_web

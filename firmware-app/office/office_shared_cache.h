@@ -1,0 +1,105 @@
+#pragma once
+// What the office's sessions share (issue 46, the drive under load): fifty
+// people opening the same drive must not each build it, nor each pull the
+// tunnel. A drive page and a pulled copy are shared by the sessions whose
+// roles may read the same set of tunnels — asked of PostgreSQL under each
+// session's own role on every request, so the server's row-level security
+// still decides what each person sees — and at the same state of the
+// server's records (tunnel_stamp). A role of one tunnel never shares with a
+// role of another, or of every tunnel.
+//
+// Bounded: at most kDrivePages drive pages and kPulledCopies pulled copies
+// are kept, the least recently used dropped first; one build of each at a
+// time (the others wait for it and take its result).
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "firmware-app/office/office_pages.h"
+#include "firmware-app/office/office_sessions.h"
+
+namespace rockface::app::office_web {
+
+// The tunnels the session's role may read, by name, and the key of that
+// set ("id,id,...": the same for every role that reads the same tunnels).
+struct ReadableTunnels {
+  std::string key;
+  std::map<std::string, std::int64_t> by_name;
+};
+ReadableTunnels readable_tunnels(storage::office::Connection& c);
+
+// A pulled copy of one tunnel shared read-only by sessions; its file is
+// removed when the last session using it lets go.
+struct SharedPull {
+  std::filesystem::path file;
+  std::string stamp;
+  // The copy's visits: the server's uuid -> the id the pull gave it, read
+  // from the copy itself (a sync since cannot shift them).
+  std::map<std::string, std::int64_t> visit_ids;
+  // Pages computed from this copy once (the rounds along the drive), by
+  // name: they change only with the copy.
+  mutable std::mutex derived_lock;
+  mutable std::map<std::string, std::string> derived;
+  ~SharedPull();
+};
+
+class SharedOfficeCache {
+ public:
+  static constexpr std::size_t kDrivePages = 32;
+  static constexpr std::size_t kPulledCopies = 4;
+  // A stamp asked this recently is taken as current: a page polled by fifty
+  // people costs one query a second, and a sync shows within that.
+  static constexpr std::chrono::milliseconds kStampFresh{1000};
+
+  explicit SharedOfficeCache(std::filesystem::path folder);
+
+  // The drive page's JSON text for the session's role (office_pages.h's
+  // drive_page). Throws InputError when the role may not read the tunnel.
+  // Call with the session's lock held.
+  std::string drive(OfficeSession& s, const std::string& tunnel, const DriveFilter& filter);
+  // The tunnel's stamp for the session's role (shared, kStampFresh).
+  std::string stamp(OfficeSession& s, const std::string& tunnel);
+  // The tunnel pulled at its current stamp, made on the session's own
+  // connection when no session of the same readable tunnels has it.
+  std::shared_ptr<const SharedPull> pulled(OfficeSession& s, const std::string& tunnel);
+
+ private:
+  struct Stamp {
+    std::string value;
+    std::chrono::steady_clock::time_point asked;
+  };
+  struct Page {
+    // One build at a time. While one session builds a newer page, the
+    // others get the page as it was (they poll the stamp and come back):
+    // a sync never stalls every reader for the build's time.
+    std::mutex build;
+    std::mutex data;  // guards stamp and json
+    std::string stamp, json;
+    std::uint64_t used = 0;
+  };
+  struct Pull {
+    std::mutex build;
+    std::shared_ptr<const SharedPull> copy;
+    std::uint64_t used = 0;
+  };
+
+  // The readable set's key and the tunnel's current stamp; throws
+  // InputError when the role may not read the tunnel.
+  std::pair<std::string, std::string> checked_stamp(OfficeSession& s, const std::string& tunnel);
+  template <typename Entry>
+  std::shared_ptr<Entry> entry(std::map<std::string, std::shared_ptr<Entry>>& map,
+                               const std::string& key, std::size_t limit);
+
+  std::filesystem::path folder_;
+  std::mutex lock_;  // guards the maps and the clock, never held while building
+  std::uint64_t clock_ = 0;
+  std::map<std::string, Stamp> stamps_;
+  std::map<std::string, std::shared_ptr<Page>> pages_;
+  std::map<std::string, std::shared_ptr<Pull>> pulls_;
+};
+
+}  // namespace rockface::app::office_web
