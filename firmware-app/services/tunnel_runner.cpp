@@ -34,7 +34,8 @@ ui::ExcavationView StoreTunnelRunner::profile(const std::filesystem::path& proje
   progress.step("developed view", 0.9);
   const tunnel::ProfileDeviation& d = p.deviation;
   ui::ExcavationView v;
-  v.lines.push_back("Face at chainage " + format_fixed(p.placement.chainage, 2) +
+  v.lines.push_back("tunnel " + p.tunnel.name + ", face at chainage " +
+                    format_fixed(p.placement.chainage, 2) +
                     " m; the round from chainage " + format_fixed(p.round_from, 2) + " m (" +
                     p.round_from_source + ") to " + format_fixed(p.round_to, 2) + " m.");
   v.message = d.message;

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "core/common/number_format.h"
+#include "ui/view3d/overlay_text.h"
 #include "ui/widgets/widgets_text.h"
 
 namespace rockface::ui {
@@ -93,6 +94,8 @@ DriveChartDrawn draw_drive_chart(const DriveJoints& drive, float width) {
   ImGui::Dummy(ImVec2(width, total_h));
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + total_h), kChartPaper);
+  // Every word of the chart lies on it (recorded for the screen walk).
+  const TextArea area{origin, ImVec2(origin.x + width, origin.y + total_h), "chart of the drive"};
 
   const float x0 = origin.x + axis_w;
   auto x_of = [&](double c) { return x0 + static_cast<float>((c - c0) / (c1 - c0)) * plot_w; };
@@ -107,14 +110,14 @@ DriveChartDrawn draw_drive_chart(const DriveJoints& drive, float width) {
     return p.top + panel_h - static_cast<float>(v / p.hi) * panel_h;
   };
   for (const auto& p : panels) {
-    dl->AddText(ImVec2(x0, p.top - label_h), kChartInk, p.name);
+    draw_text(dl, ImVec2(x0, p.top - label_h), kChartInk, p.name, area);
     const double step = p.hi == 360 ? 90 : 30;
     for (double v = 0; v <= p.hi + 1e-9; v += step) {
       const float y = y_of(p, v);
       dl->AddLine(ImVec2(x0, y), ImVec2(x0 + plot_w, y), kChartGrid);
       const std::string t = format_fixed(v, 0) + "°";
       const ImVec2 size = ImGui::CalcTextSize(t.c_str());
-      dl->AddText(ImVec2(x0 - size.x - 0.25f * line, y - size.y / 2), kChartInk, t.c_str());
+      draw_text(dl, ImVec2(x0 - size.x - 0.25f * line, y - size.y / 2), kChartInk, t.c_str(), area);
     }
     dl->AddRect(ImVec2(x0, p.top), ImVec2(x0 + plot_w, p.top + panel_h), kChartInk);
   }
@@ -128,12 +131,12 @@ DriveChartDrawn draw_drive_chart(const DriveJoints& drive, float width) {
     for (const auto& p : panels)
       dl->AddLine(ImVec2(x, p.top + panel_h), ImVec2(x, p.top + panel_h + 0.25f * line), kChartInk);
     const std::string t = format_fixed(c, step < 1 ? 1 : decimals);
-    dl->AddText(ImVec2(x - ImGui::CalcTextSize(t.c_str()).x / 2, bottom + 0.3f * line), kChartInk,
-                t.c_str());
+    draw_text(dl, ImVec2(x - ImGui::CalcTextSize(t.c_str()).x / 2, bottom + 0.3f * line), kChartInk,
+              t.c_str(), area);
   }
   const char* axis = "chainage (m)";
-  dl->AddText(ImVec2(x0 + plot_w - ImGui::CalcTextSize(axis).x, bottom + 1.3f * line), kChartInk,
-              axis);
+  draw_text(dl, ImVec2(x0 + plot_w - ImGui::CalcTextSize(axis).x, bottom + 1.3f * line), kChartInk,
+            axis, area);
 
   // The sets' tracks, then the joints over them.
   const float r = std::max(3.0f, 0.22f * line);
@@ -164,7 +167,7 @@ DriveChartDrawn draw_drive_chart(const DriveJoints& drive, float width) {
     for (const ImVec2& at : {dd, dip}) {
       dl->AddCircle(at, r, kChartJoint, 0, 2);
       if (labelled)
-        dl->AddText(ImVec2(at.x + 1.5f * r, at.y - line / 2), kChartInk, j.label.c_str());
+        draw_text(dl, ImVec2(at.x + 1.5f * r, at.y - line / 2), kChartInk, j.label.c_str(), area);
     }
     ++drawn.joint_marks;
   }
@@ -177,10 +180,10 @@ DriveChartDrawn draw_drive_chart(const DriveJoints& drive, float width) {
       dl->AddCircle(at, r, kChartJoint, 0, 2);
     else
       dl->AddCircleFilled(at, 1.4f * r, colour);
-    dl->AddText(ImVec2(lx + line, ly), kChartInk, text.c_str());
+    draw_text(dl, ImVec2(lx + line, ly), kChartInk, text.c_str(), area);
     ly += line;
   }
-  if (!drive.sets.empty()) dl->AddText(ImVec2(lx, ly), kChartInk, "ringed: turned");
+  if (!drive.sets.empty()) draw_text(dl, ImVec2(lx, ly), kChartInk, "ringed: turned", area);
   return drawn;
 }
 

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "core/common/number_format.h"
+#include "ui/view3d/overlay_text.h"
 #include "ui/widgets/format.h"
 #include "ui/widgets/widgets_text.h"
 
@@ -99,7 +100,7 @@ ExcavationDrawn draw_excavation_view(const ExcavationView& v, const PictureTextu
       std::max(ImGui::CalcTextSize(top.c_str()).x, ImGui::CalcTextSize(bottom.c_str()).x) +
       0.5f * line;
   const char* chainage_title = "chainage (m), the face at the top";
-  ImGui::TextUnformatted(chainage_title);
+  label(chainage_title);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::SetCursorScreenPos(ImVec2(origin.x + axis_w, origin.y));
   const float image_w =
@@ -113,8 +114,13 @@ ExcavationDrawn draw_excavation_view(const ExcavationView& v, const PictureTextu
   const float cells_w = (static_cast<float>(v.cells.cols - 1) - 2 * v.cells_margin_px) * k;
   const float y_top = origin.y + m;
   const float y_bottom = origin.y + (static_cast<float>(v.cells.rows - 1) - v.cells_margin_px) * k;
-  dl->AddText(ImVec2(origin.x, y_top), kViewInk, top.c_str());
-  dl->AddText(ImVec2(origin.x, y_bottom - line), kViewInk, bottom.c_str());
+  // The view's words lie beside and under its cells; the scale's under the
+  // bar (recorded for the screen walk).
+  const TextArea view_area{origin,
+                           ImVec2(origin.x + width, ImGui::GetCursorScreenPos().y + 2.5f * line),
+                           "developed view"};
+  draw_text(dl, ImVec2(origin.x, y_top), kViewInk, top.c_str(), view_area);
+  draw_text(dl, ImVec2(origin.x, y_bottom - line), kViewInk, bottom.c_str(), view_area);
   // The places along the outline under the view, each centred on its tick,
   // kept inside the view and clear of the one before.
   const float ty = ImGui::GetCursorScreenPos().y;
@@ -124,13 +130,13 @@ ExcavationDrawn draw_excavation_view(const ExcavationView& v, const PictureTextu
     dl->AddLine(ImVec2(x, y_bottom), ImVec2(x, ty + 0.3f * line), kViewInk, 2);
     const float tw = ImGui::CalcTextSize(p.name.c_str()).x;
     const float tx = std::clamp(x - tw / 2, free_from, x0 + cells_w - tw);
-    dl->AddText(ImVec2(tx, ty + 0.3f * line), kViewInk, p.name.c_str());
+    draw_text(dl, ImVec2(tx, ty + 0.3f * line), kViewInk, p.name.c_str(), view_area);
     free_from = tx + tw + 0.5f * line;
   }
   const std::string along =
       "along the design line, " + format::text(format::Length{v.perimeter_m}) + " around";
-  dl->AddText(ImVec2(x0 + cells_w - ImGui::CalcTextSize(along.c_str()).x, ty + 1.3f * line),
-              kViewInk, along.c_str());
+  draw_text(dl, ImVec2(x0 + cells_w - ImGui::CalcTextSize(along.c_str()).x, ty + 1.3f * line),
+            kViewInk, along.c_str(), view_area);
   ImGui::Dummy(ImVec2(width, 2.5f * line));
 
   // The legend: the colour scale in cm, then the swatches.
@@ -147,10 +153,12 @@ ExcavationDrawn draw_excavation_view(const ExcavationView& v, const PictureTextu
   const std::string cm = format_fixed(v.scale_m * 100, 0);
   const std::string under = "-" + cm + " cm under", over = "+" + cm + " cm over";
   const float ly = bar.y + bar_h + 0.2f * line;
-  dl->AddText(ImVec2(bar.x, ly), kViewInk, under.c_str());
-  dl->AddText(ImVec2(mid.x - ImGui::CalcTextSize("0").x / 2, ly), kViewInk, "0");
-  dl->AddText(ImVec2(bar.x + bar_w - ImGui::CalcTextSize(over.c_str()).x, ly), kViewInk,
-              over.c_str());
+  const TextArea scale_area{bar, ImVec2(bar.x + std::max(bar_w, width), ly + 1.2f * line),
+                            "colour scale"};
+  draw_text(dl, ImVec2(bar.x, ly), kViewInk, under.c_str(), scale_area);
+  draw_text(dl, ImVec2(mid.x - ImGui::CalcTextSize("0").x / 2, ly), kViewInk, "0", scale_area);
+  draw_text(dl, ImVec2(bar.x + bar_w - ImGui::CalcTextSize(over.c_str()).x, ly), kViewInk,
+            over.c_str(), scale_area);
   ImGui::Dummy(ImVec2(bar_w, bar_h + 1.3f * line));
   ++drawn.legend_entries;
   const std::string entries[] = {"not seen, or left out", "the range pole (not rock)",
@@ -163,7 +171,7 @@ ExcavationDrawn draw_excavation_view(const ExcavationView& v, const PictureTextu
     const ImVec2 at = ImGui::GetCursorScreenPos();
     legend_swatch(dl, ImVec2(at.x, at.y + 0.1f * line), 0.8f * line, kind);
     ImGui::SetCursorScreenPos(ImVec2(at.x + 1.2f * line, at.y));
-    ImGui::TextUnformatted(entries[kind].c_str());
+    label(entries[kind]);
     ++drawn.legend_entries;
   }
   return drawn;
