@@ -6,33 +6,12 @@
 #include <sstream>
 
 #include "core/common/error.h"
-#include "core/tunnel/support_ranges.h"
 #include "firmware-app/records/project_visit.h"
+#include "firmware-app/wedges/support_options.h"
 
 namespace rockface::app {
 
 namespace {
-
-std::vector<double> numbers(const std::string& text, const std::string& where, std::size_t min,
-                            std::size_t max, const std::string& form) {
-  std::vector<double> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    // strtod, not stod: a value beyond the range of a double (1e-320,
-    // 1e309) is read as what it is and refused by its range, not as "not
-    // a number".
-    char* end = nullptr;
-    const double v = std::strtod(item.c_str(), &end);
-    if (item.empty() || end != item.c_str() + item.size())
-      throw InputError(where, "\"" + text + "\" is not " + form);
-    out.push_back(v);
-    if (!(out.back() > 0)) throw InputError(where, "every value of " + form + " must be positive");
-  }
-  if (out.size() < min || out.size() > max)
-    throw InputError(where, "\"" + text + "\" is not " + form);
-  return out;
-}
 
 bool looks_like_json(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -84,33 +63,8 @@ WedgesResult wedges_from_input(const WedgesRequest& q) {
       if (!(*q.trace_length_m > 0)) throw InputError("--trace-length", "must be positive (m)");
       s.trace_length = q.trace_length_m;
     }
-    if (q.bolts) {
-      const auto v =
-          numbers(*q.bolts, "--bolts", 3, 4, "LENGTH,SPACING,CAPACITY[,BOND] (m, m, N, N/m)");
-      const std::pair<const char*, const tunnel::SupportRange*> parts[] = {
-          {"LENGTH", &tunnel::kBoltLengthRange},
-          {"SPACING", &tunnel::kBoltSpacingRange},
-          {"CAPACITY", &tunnel::kBoltCapacityRange},
-          {"BOND", &tunnel::kBoltBondRange}};
-      for (std::size_t i = 0; i < v.size(); ++i)
-        if (!parts[i].second->contains(v[i]))
-          throw InputError("--bolts", std::string(parts[i].first) + ": " +
-                                          tunnel::outside_range_text(v[i], *parts[i].second,
-                                                                     "the bolts' setting"));
-      tunnel::PatternBolts b;
-      b.length = v[0];
-      b.spacing = v[1];
-      b.capacity = v[2];
-      if (v.size() == 4) b.bond_strength = v[3];
-      s.bolts = b;
-    }
-    if (q.shotcrete) {
-      const auto v = numbers(*q.shotcrete, "--shotcrete", 2, 2, "THICKNESS,SHEAR_STRENGTH (m, Pa)");
-      tunnel::Shotcrete sc;
-      sc.thickness = v[0];
-      sc.shear_strength = v[1];
-      s.shotcrete = sc;
-    }
+    if (q.bolts) s.bolts = parse_pattern_bolts(*q.bolts, "--bolts");
+    if (q.shotcrete) s.shotcrete = parse_shotcrete(*q.shotcrete, "--shotcrete");
     if (q.preset) s.preset = parse_preset(*q.preset, "--preset");
     out.run = wedge_run_from_project(store, *visit, s);
   }

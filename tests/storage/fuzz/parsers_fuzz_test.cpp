@@ -16,11 +16,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,7 @@
 #include "core/common/error.h"
 #include "core/photogrammetry/estimators/registration.h"
 #include "core/photogrammetry/targets/reference_line.h"
+#include "firmware-app/wedges/support_options.h"
 #include "storage/exchange/las_reader.h"
 #include "storage/exchange/obj_reader.h"
 #include "storage/exchange/pcd_reader.h"
@@ -190,6 +193,30 @@ TEST(Fuzz, ReferenceLine) {
   fuzz("reference_line", files_in(kCorpus / "reference_line"), true, iterations(100000),
        [](const std::string& in) {
          rockface::photogrammetry::parse_reference_line(in, "--reference-line");
+       });
+}
+
+// The support typed for the wedges (`rockface wedges --bolts / --shotcrete`,
+// the tablet's Wedges form): each text through both parsers, as a geologist
+// may type either into either field. A refusal is an InputError; what is
+// accepted must lie within the scene's ranges.
+TEST(Fuzz, WedgeSupportOptions) {
+  fuzz("wedge_support", files_in(kCorpus / "wedge_support"), true, iterations(100000),
+       [](const std::string& in) {
+         try {
+           const auto b = rockface::app::parse_pattern_bolts(in, "--bolts");
+           // Accepted: every value within the scene's ranges.
+           if (!(b.length >= 0.3 && b.length <= 30 && b.spacing >= 0.3 && b.spacing <= 10))
+             throw std::logic_error("bolts accepted out of range: " + in);
+         } catch (const rockface::InputError&) {
+         }
+         try {
+           const auto sc = rockface::app::parse_shotcrete(in, "--shotcrete");
+           if (!(sc.thickness >= 1e-3 && sc.thickness <= 2 && std::isfinite(sc.shear_strength) &&
+                 sc.shear_strength > 0))
+             throw std::logic_error("shotcrete accepted out of range: " + in);
+         } catch (const rockface::InputError&) {
+         }
        });
 }
 
