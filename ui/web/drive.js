@@ -138,8 +138,10 @@ async function draw(host, tunnel, filter, stamp) {
     d.sets.length ? chart('Dip of each set', '°', d.visits, d.sets, (p) => p.dip, 0, 90) : el('p', { text: d.sets_note }),
     d.sets.length ? chart('Dip direction of each set', '°', d.visits, d.sets, (p) => p.dipdir, 0, 360) : null,
     section('Sets along the drive', table(['Set', 'Last seen (dip / dip direction ± α95)', 'Flags', 'Events'], setRows)),
-    rounds,
-    section('Visits', table(['Date', 'Chainage', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note'], visitRows, 'visits')));
+    // The rounds arrive later and grow: below the visits, so that the list
+    // a person is about to tap does not move under the finger.
+    section('Visits', table(['Date', 'Chainage', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note'], visitRows, 'visits')),
+    rounds);
   // The rounds need the tunnel's pulled copy (every visit's traces): read
   // at once for a drive of a few hundred visits, on request for a longer
   // one (its first pull takes minutes and holds the session meanwhile).
