@@ -15,10 +15,7 @@
 #include "firmware-app/propose/proposals_picture.h"
 #include "firmware-app/propose/propose_workflow.h"
 #include "firmware-app/propose/report_facets.h"
-#include "firmware-app/rockmass/rock_mass_report.h"
-#include "firmware-app/support/report_support.h"
-#include "firmware-app/tunnel/report_tunnel.h"
-#include "firmware-app/wedges/report_wedges.h"
+#include "firmware-app/records/visit_field_report.h"
 #include "storage/exchange/image_file.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
@@ -71,11 +68,7 @@ VerbRun setup_propose(CLI::App& sub) {
       storage::OpenOptions read;
       read.read_only = true;
       storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
-      storage::FieldReport report = storage::collect_field_report(store, r.visit);
-      add_tunnel_to_report(store, report);
-      add_wedges_to_report(store, report);
-      add_rock_mass_to_report(store, report);
-      add_support_to_report(store, report);
+      storage::FieldReport report = collect_visit_report(store, r.visit);
       add_facets_to_report(r, request.preset, report);
       storage::write_field_report_pdf(report, o->report);
       std::cout << "field report of visit " << r.visit << ": " << o->report << "\n";

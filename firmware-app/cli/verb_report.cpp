@@ -7,10 +7,7 @@
 
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
-#include "firmware-app/rockmass/rock_mass_report.h"
-#include "firmware-app/support/report_support.h"
-#include "firmware-app/tunnel/report_tunnel.h"
-#include "firmware-app/wedges/report_wedges.h"
+#include "firmware-app/records/visit_field_report.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
 #include "storage/project/project_store.h"
@@ -35,11 +32,7 @@ VerbRun setup_report(CLI::App& sub) {
     storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
     const auto visit = o->visit ? o->visit : store.latest_visit();
     if (!visit) throw InputError(o->project, "the project has no visit to report");
-    storage::FieldReport report = storage::collect_field_report(store, *visit);
-    add_tunnel_to_report(store, report);
-    add_wedges_to_report(store, report);
-    add_rock_mass_to_report(store, report);
-    add_support_to_report(store, report);
+    const storage::FieldReport report = collect_visit_report(store, *visit);
     storage::write_field_report_pdf(report, o->out);
     std::cout << "field report of visit " << *visit << ": " << o->out << " ("
               << report.blocks.size() << " blocks, " << report.joints.size() << " joints)\n";

@@ -5,23 +5,9 @@
 #include <system_error>
 
 #include "firmware-app/office/web_security.h"
-#include "firmware-app/rockmass/rock_mass_report.h"
-#include "firmware-app/support/report_support.h"
-#include "firmware-app/tunnel/report_tunnel.h"
-#include "firmware-app/wedges/report_wedges.h"
 #include "storage/field_report/field_report_pdf.h"
 
 namespace rockface::app {
-
-storage::FieldReport collect_visit_report(storage::ProjectStore& store, storage::RecordId visit) {
-  // The same steps, in the same order, as firmware-app/cli/verb_report.cpp.
-  storage::FieldReport report = storage::collect_field_report(store, visit);
-  add_tunnel_to_report(store, report);
-  add_wedges_to_report(store, report);
-  add_rock_mass_to_report(store, report);
-  add_support_to_report(store, report);
-  return report;
-}
 
 std::vector<std::uint8_t> visit_report_pdf(const storage::FieldReport& report,
                                            const std::filesystem::path& folder) {

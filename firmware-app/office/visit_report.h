@@ -6,11 +6,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "firmware-app/records/visit_field_report.h"
 #include "storage/field_report/field_report.h"
 
 namespace rockface::app {
-
-storage::FieldReport collect_visit_report(storage::ProjectStore& store, storage::RecordId visit);
 
 // The report as PDF bytes (storage/field_report/field_report_pdf.h), written
 // through a temporary file in `folder`.

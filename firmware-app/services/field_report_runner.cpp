@@ -1,11 +1,8 @@
 // The tablet's "Field report" (ui::FieldReportRunner): the same PDF as
 // `rockface report` (cli/verb_report.cpp), from its own read-only
 // connection to the project (one per thread).
-#include "firmware-app/rockmass/rock_mass_report.h"
+#include "firmware-app/records/visit_field_report.h"
 #include "firmware-app/services/ui_services.h"
-#include "firmware-app/support/report_support.h"
-#include "firmware-app/tunnel/report_tunnel.h"
-#include "firmware-app/wedges/report_wedges.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
 #include "storage/project/project_store.h"
@@ -19,12 +16,7 @@ std::string StoreFieldReportRunner::write(const std::filesystem::path& project,
   read.read_only = true;
   storage::ProjectStore store = storage::ProjectStore::open(project, read);
   progress.step("collecting the visit", 0.1);
-  storage::FieldReport report = storage::collect_field_report(store, visit_id);
-  progress.step("tunnel, wedges and rock mass", 0.4);
-  add_tunnel_to_report(store, report);
-  add_wedges_to_report(store, report);
-  add_rock_mass_to_report(store, report);
-  add_support_to_report(store, report);
+  const storage::FieldReport report = collect_visit_report(store, visit_id);
   progress.step("writing the PDF", 0.7);
   storage::write_field_report_pdf(report, pdf);
   return std::to_string(report.blocks.size()) +
