@@ -545,7 +545,7 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
       out.message += "; the 3D image states no depth precision: every deviation is counted";
     if (out.lining_offset.cells > 0)
       out.message += "; the lining lies " + format_fixed(1000 * out.lining_offset.median_m, 1) +
-                     " +- " + format_fixed(1000 * out.lining_offset.standard_error_m, 1) +
+                     " ± " + format_fixed(1000 * out.lining_offset.standard_error_m, 1) +
                      " mm off the design as a whole" +
                      (out.lining_offset_removed
                           ? " (within the noise: taken as the 3D image's bias and removed)"

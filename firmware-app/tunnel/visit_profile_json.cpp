@@ -134,12 +134,12 @@ std::vector<std::string> visit_profile_summary(const VisitProfile& v) {
     return lines;
   }
   const auto plus_minus = [](const std::optional<double>& sigma) {
-    return sigma ? " +- " + storage::report_number(*sigma, 3) : std::string();
+    return sigma ? " ± " + storage::report_number(*sigma, 3) : std::string();
   };
   lines.push_back("overbreak " + storage::report_number(d.overbreak_volume_m3, 2) +
-                  plus_minus(d.overbreak_volume_sigma_m3) + " m3, underbreak " +
+                  plus_minus(d.overbreak_volume_sigma_m3) + " m³, underbreak " +
                   storage::report_number(d.underbreak_volume_m3, 2) +
-                  plus_minus(d.underbreak_volume_sigma_m3) + " m3 over the round; " +
+                  plus_minus(d.underbreak_volume_sigma_m3) + " m³ over the round; " +
                   storage::report_number(d.seen_fraction * 100, 0) + " % of the outline seen");
   if (d.max_overbreak_m > 0)
     lines.push_back("largest overbreak " + storage::report_number(d.max_overbreak_m * 100, 1) +

@@ -215,6 +215,11 @@ TEST_F(TunnelRound, TheFieldReportPlacesTheVisitAndPrintsItsRound) {
   EXPECT_NE(body.find("tunnel Main drive"), std::string::npos);
   EXPECT_NE(body.find("placed by the typed chainage and the compass line"), std::string::npos);
   EXPECT_NE(body.find("overbreak"), std::string::npos);
+  // The round's volumes in the report's units and signs (issue 39: "m3"
+  // and "+-" were printed).
+  EXPECT_NE(body.find(" m³ over the round"), std::string::npos) << body;
+  EXPECT_EQ(body.find(" m3"), std::string::npos) << body;
+  EXPECT_EQ(body.find("+-"), std::string::npos) << body;
   // Each joint against the drive in Bieniawski's words.
   EXPECT_NE(body.find("strike parallel to the axis"), std::string::npos);
 }
