@@ -8,7 +8,11 @@
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
 
 #include "core/common/progress.h"
 #include "storage/office/pg_connection.h"
@@ -32,6 +36,20 @@ Site make_site() {
   s.folder = fs::temp_directory_path() /
              ("rockface-office-web-" + std::to_string(::getpid()) + "-" + s.database);
   fs::create_directories(s.folder);
+  // The sites' folders (tablets' projects, the servers' logs) go when the
+  // process's tests all passed, and stay to be read when one failed.
+  struct RemovedIfPassed {
+    std::vector<fs::path> folders;
+    ~RemovedIfPassed() {
+      if (!::testing::UnitTest::GetInstance()->Passed()) return;
+      for (const auto& f : folders) {
+        std::error_code ignored;
+        fs::remove_all(f, ignored);
+      }
+    }
+  };
+  static RemovedIfPassed made;
+  made.folders.push_back(s.folder);
   {
     storage::office::Connection c(as_superuser(s.database));
     storage::office::add_tunnel(c, "North adit");
