@@ -9,12 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
-#include "firmware-app/services/ui_services.h"
 #include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 #include "tests/ui/drive_project.h"
+#include "tests/ui/drive_tablet.h"
 #include "ui/app/app_state.h"
-#include "ui/platform/headless_session.h"
 
 namespace {
 
@@ -71,15 +70,8 @@ TEST(SupportView, AClassChosenOnTheTabletIsStoredAndReadBack) {
     proposed = j["classes"]["proposed"].get<std::string>();
   }
 
-  app::FieldRunners runners{""};
-  ui::FieldServices services = runners.services();
-  services.sync = nullptr;
-  services.camera = nullptr;
-  ui::UiOptions options;
-  options.project = project;
-  options.max_display_triangles = 20000;
-  ui::HeadlessSession s(options, services, 1280, 800);
-  s.settle();
+  test::DriveTablet tablet(project);
+  ui::HeadlessSession& s = tablet.session;
   ui::AppState& app = s.state();
   s.tap("Blocks");
   s.tap("Support view");

@@ -13,13 +13,12 @@
 
 #include "core/geometry/orientation.h"
 #include "core/tunnel/wedge_analysis.h"
-#include "firmware-app/services/ui_services.h"
 #include "firmware-app/wedges/wedge_input.h"
 #include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 #include "tests/ui/drive_project.h"
+#include "tests/ui/drive_tablet.h"
 #include "ui/app/app_state.h"
-#include "ui/platform/headless_session.h"
 
 namespace {
 
@@ -95,15 +94,8 @@ TEST(WedgesFromJoints, TheCommandLineGivesTheWedgesOfTheVisitsThreeJoints) {
 
 TEST(WedgesFromJoints, TheTabletsWedgesViewShowsThem) {
   const tunnel::WedgeAnalysis truth = true_wedges();
-  app::FieldRunners runners{""};
-  ui::FieldServices services = runners.services();
-  services.sync = nullptr;
-  services.camera = nullptr;
-  ui::UiOptions options;
-  options.project = test::drive_project();
-  options.max_display_triangles = 20000;
-  ui::HeadlessSession s(options, services, 1280, 800);
-  s.settle();
+  test::DriveTablet tablet(test::drive_project());
+  ui::HeadlessSession& s = tablet.session;
   ui::AppState& app = s.state();
   s.tap("Blocks");
   s.tap("Wedges view");

@@ -10,11 +10,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "firmware-app/services/ui_services.h"
 #include "tests/support/cli_run.h"
 #include "tests/ui/drive_project.h"
+#include "tests/ui/drive_tablet.h"
 #include "ui/app/app_state.h"
-#include "ui/platform/headless_session.h"
 
 namespace {
 
@@ -35,15 +34,8 @@ std::size_t column(const ui::WedgeTable& t, const std::string& name) {
 }
 
 TEST(WedgesSupportForm, TypedSupportGivesTheFactorsOfSafetyTheCommandLineGives) {
-  app::FieldRunners runners{""};
-  ui::FieldServices services = runners.services();
-  services.sync = nullptr;
-  services.camera = nullptr;
-  ui::UiOptions options;
-  options.project = test::drive_project();
-  options.max_display_triangles = 20000;
-  ui::HeadlessSession s(options, services, 1280, 800);
-  s.settle();
+  test::DriveTablet tablet(test::drive_project());
+  ui::HeadlessSession& s = tablet.session;
   ui::AppState& app = s.state();
   s.tap("Blocks");
   s.tap("Wedges view");

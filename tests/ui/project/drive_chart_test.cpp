@@ -8,25 +8,17 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
-#include "firmware-app/services/ui_services.h"
 #include "tests/ui/drive_project.h"
+#include "tests/ui/drive_tablet.h"
 #include "ui/app/app_state.h"
-#include "ui/platform/headless_session.h"
 
 namespace {
 
 using namespace rockface;
 
 TEST(DriveChart, TheDriveSamplesJointsArePlottedAlongTheChainage) {
-  app::FieldRunners runners{""};
-  ui::FieldServices services = runners.services();
-  services.sync = nullptr;
-  services.camera = nullptr;
-  ui::UiOptions options;
-  options.project = test::drive_project();
-  options.max_display_triangles = 20000;
-  ui::HeadlessSession s(options, services, 1280, 800);
-  s.settle();
+  test::DriveTablet tablet(test::drive_project());
+  ui::HeadlessSession& s = tablet.session;
   ui::AppState& app = s.state();
   s.tap("Project");
   s.tap("Sets along the drive");
