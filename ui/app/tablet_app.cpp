@@ -10,6 +10,7 @@
 
 #include "ui/app/screens.h"
 #include "ui/widgets/format.h"
+#include "ui/widgets/toggle_button.h"
 
 namespace rockface::ui {
 
@@ -235,11 +236,8 @@ void TabletApp::draw_tabs() {
        {Screen::project, Screen::capture, Screen::model, Screen::mapping, Screen::blocks}) {
     if (!first) same_line_if_fits(tab);
     first = false;
-    const bool current = s == state_.screen;
-    if (current)
-      ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    if (state_.targets.button(screen_name(s), tab)) state_.screen = s;
-    if (current) ImGui::PopStyleColor();
+    if (toggle_button(state_.targets, screen_name(s), s == state_.screen, true, tab))
+      state_.screen = s;
   }
   // The project's name at the right of the tabs (below them when they fill
   // the line): shortened to its place, the whole name one tap away.

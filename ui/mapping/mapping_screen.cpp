@@ -21,6 +21,7 @@
 #include "ui/view3d/overlay_legend.h"
 #include "ui/view3d/overlay_traces.h"
 #include "ui/widgets/format.h"
+#include "ui/widgets/toggle_button.h"
 
 namespace rockface::ui {
 
@@ -243,11 +244,7 @@ void draw_face_and_undo(AppState& app) {
   if (!app.services.trace_map) return;
   ImGui::Separator();
   const bool outlining = app.mapping.outlining;
-  if (outlining)
-    ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-  const bool pressed = app.targets.button("Outline the face");
-  if (outlining) ImGui::PopStyleColor();
-  if (pressed) app.mapping.outlining = !outlining;
+  if (toggle_button(app.targets, "Outline the face", outlining)) app.mapping.outlining = !outlining;
   draw_undo_saved_trace(app);
   draw_compass_button(app);  // issue 27
 }
@@ -277,12 +274,6 @@ void draw_controls(AppState& app) {
   TraceMarker& marker = app.mapping.marker;
   const TraceContext context = trace_context(app);
   const bool idle = !app.task.running();
-  auto toggle = [&](const char* label, bool on, bool enabled = true) {
-    if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    const bool pressed = app.targets.button(label, 0, enabled);
-    if (on) ImGui::PopStyleColor();
-    return pressed;
-  };
   // A visit photographed as several pairs: its 3D images, all in the face
   // frame; traces mapped on any of them land in that frame.
   const auto& pairs = app.session->pairs();
@@ -297,7 +288,7 @@ void draw_controls(AppState& app) {
       const bool chosen = !marker.taps().empty() && !current
                               ? app.targets.confirmed_button(
                                     name, "The trace being marked is not saved. Leave it?", idle)
-                              : toggle(name.c_str(), current, idle);
+                              : toggle_button(app.targets, name, current, idle);
       if (chosen && !current) {
         marker.clear();
         app.session->choose_pair(k);
@@ -305,12 +296,14 @@ void draw_controls(AppState& app) {
     }
   }
   const bool outlining = app.mapping.outlining;
-  if (toggle("Tap points", !outlining && marker.mode() == TraceMarker::Mode::points)) {
+  if (toggle_button(app.targets, "Tap points",
+                    !outlining && marker.mode() == TraceMarker::Mode::points)) {
     marker.set_mode(TraceMarker::Mode::points);
     app.mapping.outlining = false;
   }
   same_line_if_fits(button_width("Two taps", app.targets.target_px()));
-  if (toggle("Two taps", !outlining && marker.mode() == TraceMarker::Mode::two_taps)) {
+  if (toggle_button(app.targets, "Two taps",
+                    !outlining && marker.mode() == TraceMarker::Mode::two_taps)) {
     marker.set_mode(TraceMarker::Mode::two_taps);
     app.mapping.outlining = false;
   }
@@ -334,7 +327,8 @@ void draw_controls(AppState& app) {
   for (const auto& joint : labels) {
     const std::string name = joint.empty() ? std::string("none") : joint;
     same_line_if_fits(button_width(name, app.targets.target_px()));
-    if (toggle(name.c_str(), app.mapping.joint_label == joint)) app.mapping.joint_label = joint;
+    if (toggle_button(app.targets, name, app.mapping.joint_label == joint))
+      app.mapping.joint_label = joint;
   }
   draw_fit(marker);
 }

@@ -11,6 +11,7 @@
 #include "ui/project/office_panel.h"
 #include "ui/project/tunnel_panel.h"
 #include "ui/widgets/format.h"
+#include "ui/widgets/toggle_button.h"
 #include "ui/widgets/widgets_controls.h"
 
 namespace rockface::ui {
@@ -33,10 +34,7 @@ void draw_theme_choice(AppState& app) {
   for (const Theme t : {Theme::daylight, Theme::tunnel}) {
     const bool on = app.settings.theme == t;
     const std::string name = t == Theme::daylight ? "Daylight" : "Tunnel (dark)";
-    if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    const bool pressed = app.targets.button_in_row(name);
-    if (on) ImGui::PopStyleColor();
-    if (pressed && !on) {
+    if (toggle_button_in_row(app.targets, name, on) && !on) {
       app.settings.theme = t;
       app.theme_wanted = t;
       try {
