@@ -170,14 +170,32 @@ std::int64_t Connection::last_insert_id() const {
   return sqlite3_last_insert_rowid(db_);
 }
 
+namespace {
+
+sqlite3_file* main_file(sqlite3* db, const std::filesystem::path& path, std::string_view doing) {
+  sqlite3_file* file = nullptr;
+  const int rc = sqlite3_file_control(db, "main", SQLITE_FCNTL_FILE_POINTER, &file);
+  if (rc != SQLITE_OK) fail(nullptr, rc, path, doing);
+  if (file == nullptr || file->pMethods == nullptr) fail(nullptr, SQLITE_CANTOPEN, path, doing);
+  return file;
+}
+
+}  // namespace
+
+std::int64_t Connection::size_on_disk() {
+  const std::string_view doing = "reading the file's length";
+  sqlite3_file* file = main_file(db_, file_, doing);
+  sqlite3_int64 size = 0;
+  const int rc = file->pMethods->xFileSize(file, &size);
+  if (rc != SQLITE_OK) fail(nullptr, rc, file_, doing);
+  return size;
+}
+
 std::vector<std::uint8_t> Connection::read_start(std::size_t count) {
   const std::string_view doing = "reading the file's header";
-  sqlite3_file* file = nullptr;
-  int rc = sqlite3_file_control(db_, "main", SQLITE_FCNTL_FILE_POINTER, &file);
-  if (rc != SQLITE_OK) fail(nullptr, rc, file_, doing);
-  if (file == nullptr || file->pMethods == nullptr) fail(nullptr, SQLITE_CANTOPEN, file_, doing);
+  sqlite3_file* file = main_file(db_, file_, doing);
   sqlite3_int64 size = 0;
-  rc = file->pMethods->xFileSize(file, &size);
+  int rc = file->pMethods->xFileSize(file, &size);
   if (rc != SQLITE_OK) fail(nullptr, rc, file_, doing);
   std::vector<std::uint8_t> out(static_cast<std::size_t>(
       std::clamp<sqlite3_int64>(size, 0, static_cast<sqlite3_int64>(count))));

@@ -60,6 +60,8 @@ class Connection {
   // write-ahead log deleted by another program while this one still uses
   // it: the two then write different logs into one file and damage it.
   std::vector<std::uint8_t> read_start(std::size_t count);
+  // The main file's length in bytes, through the same open descriptor.
+  std::int64_t size_on_disk();
 
   void close() noexcept;
 

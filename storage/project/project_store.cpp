@@ -81,18 +81,6 @@ void check_header(Connection& probe) {
   }
 }
 
-IntegrityReport run_check(Connection& db, OpenOptions::Check depth) {
-  IntegrityReport report;
-  Statement st(
-      db,
-      depth == OpenOptions::Check::full ? "PRAGMA integrity_check(20)" : "PRAGMA quick_check(20)",
-      "checking the project's integrity");
-  while (st.step()) report.problems.push_back(st.column_text(0));
-  report.ok = report.problems.size() == 1 && report.problems[0] == "ok";
-  if (report.ok) report.problems.clear();
-  return report;
-}
-
 void configure_reader(Connection& db, const OpenOptions& options) {
   sqlite3_busy_timeout(db.handle(), static_cast<int>(options.busy_timeout.count()));
 }
@@ -274,8 +262,8 @@ ProjectStore ProjectStore::open(const fs::path& file, const OpenOptions& options
     configure_reader(probe, options);
     IntegrityReport report;
     try {
-      report = run_check(probe, options.check);
-      version = schema::version_of(probe);
+      report = check_project_pages(probe, options.check);
+      if (report.ok) version = schema::version_of(probe);
     } catch (const InputError& e) {
       throw InputError(file.string(), "the project file is damaged and cannot be read (" +
                                           std::string(e.reason()) + ")");
@@ -328,6 +316,11 @@ ProjectStore ProjectStore::open_or_create(const fs::path& file, const ProjectInf
   std::error_code ec;
   if (fs::exists(file, ec)) return open(file, options);
   return create(file, info, options);
+}
+
+void ProjectStore::stop_writing(std::string reason) {
+  read_only_ = true;
+  read_only_reason_ = std::move(reason);
 }
 
 void ProjectStore::require_writable(const std::string& doing) const {
@@ -462,7 +455,7 @@ std::vector<ActionLogEntry> ProjectStore::list_actions(std::optional<RecordId> v
 // ---------------------------------------------------------------- maintenance
 
 IntegrityReport ProjectStore::check_integrity(OpenOptions::Check depth) {
-  return run_check(db_, depth);
+  return check_project_pages(db_, depth);
 }
 
 void ProjectStore::checkpoint() {

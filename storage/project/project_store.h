@@ -36,6 +36,7 @@
 #include "core/analysis/support_classes.h"
 #include "core/analysis/support_decision.h"
 #include "core/rockmass/classification_form.h"
+#include "storage/project/project_integrity.h"
 #include "storage/project/project_records.h"
 #include "storage/project/project_sqlite.h"
 #include "storage/tunnel/tunnel_records.h"
@@ -44,10 +45,12 @@ namespace rockface::storage {
 
 struct OpenOptions {
   bool read_only = false;
-  // How thoroughly to check the file when opening: quick_check reads every
-  // page but skips index cross-checks (the measured cost is in
-  // docs/accuracy-cost.md); full runs integrity_check.
-  enum class Check { quick, full };
+  // How thoroughly to check the file when opening
+  // (storage/project/project_integrity.h): quick reads every page, full runs
+  // integrity_check, rows leaves the photographs' and 3D images' pages to
+  // be checked as they are read (the tablet: it checks the whole file on a
+  // worker after opening).
+  using Check = IntegrityDepth;
   Check check = Check::quick;
   // How long a write waits for another connection's write to finish.
   std::chrono::milliseconds busy_timeout{30000};
@@ -195,6 +198,9 @@ class ProjectStore {
   std::vector<analysis::SupportDecision> list_support_decisions(RecordId visit_id);  // oldest first
 
   IntegrityReport check_integrity(OpenOptions::Check depth = OpenOptions::Check::full);
+  // A whole-file check made after opening (on another connection) found
+  // the file damaged: nothing more is saved to it; the reason says why.
+  void stop_writing(std::string reason);
   // Moves the write-ahead log into the main file (done on close anyway); a
   // file copied after this is complete on its own.
   void checkpoint();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "storage/project/project_store.h"
+#include "ui/app/project_file_check.h"
 #include "ui/blocks/block_view.h"
 
 namespace rockface::ui {
@@ -24,6 +25,14 @@ class ProjectSession {
   storage::ProjectStore& store() { return store_; }
   const std::filesystem::path& file() const { return store_.file(); }
   bool read_only() const { return store_.read_only(); }
+  // The whole file's check after an opening (ui/app/project_file_check.h):
+  // once, when it found the file damaged, the problem (the store has then
+  // stopped saving); nothing while it runs or when the file is sound.
+  std::optional<std::string> take_file_problem();
+  bool checking_file() const { return file_check_ && file_check_->running(); }
+  void wait_for_file_check() {
+    if (file_check_) file_check_->wait();
+  }
   const std::string& read_only_reason() const { return store_.read_only_reason(); }
   const storage::ProjectInfo& info() const { return info_; }
 
@@ -56,6 +65,7 @@ class ProjectSession {
  private:
   explicit ProjectSession(storage::ProjectStore store);
   storage::ProjectStore store_;
+  std::unique_ptr<ProjectFileCheck> file_check_;
   storage::ProjectInfo info_;
   std::vector<storage::Visit> visits_;
   std::optional<storage::RecordId> visit_;

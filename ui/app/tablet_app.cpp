@@ -153,6 +153,9 @@ void TabletApp::keep_model_loaded() {
     else if (outcome->title != kLoadingTitle || where == static_cast<std::size_t>(Screen::model))
       state_.statuses.say(where, text);
   }
+  if (state_.session)
+    if (auto problem = state_.session->take_file_problem())
+      state_.statuses.error(static_cast<std::size_t>(Screen::project), std::move(*problem));
   if (!state_.session || state_.task.running()) return;
   const auto& wanted = state_.session->model();
   if (!wanted || wanted->id == state_.model_view.model_id()) return;

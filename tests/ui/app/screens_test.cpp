@@ -5,6 +5,7 @@
 #include <sqlite3.h>
 
 #include <cmath>
+#include <fstream>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -326,6 +327,49 @@ TEST(UiScreens, MappingOnAFurtherPairLandsInTheFaceFrameWithThatPair) {
     std::printf("trace point on pair 2: %.3f m from pair 1's surface\n", nearest);
     EXPECT_LT(nearest, 0.05);
   }
+}
+
+// Issue 45: a project opens without reading every photograph first (a
+// project of 50 visits is gigabytes); the whole file is checked on a thread
+// of its own after, and a damaged photograph found there stops the saves
+// and says so, where before the tablet refused to open the project at all.
+TEST(UiScreens, APhotographDamagedOnTheCardIsFoundAfterTheProjectOpened) {
+  const fs::path copy = copy_of_demo("damaged-photograph");
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(copy.c_str(), &db), SQLITE_OK);
+  sqlite3_stmt* st = nullptr;
+  ASSERT_EQ(
+      sqlite3_prepare_v2(db,
+                         "SELECT pageno, (SELECT page_size FROM pragma_page_size) FROM dbstat "
+                         "WHERE name = 'image' AND pagetype = 'overflow' ORDER BY pageno "
+                         "LIMIT 1 OFFSET 20",
+                         -1, &st, nullptr),
+      SQLITE_OK);
+  ASSERT_EQ(sqlite3_step(st), SQLITE_ROW) << "the demo has no photograph pages";
+  const sqlite3_int64 page = sqlite3_column_int64(st, 0), page_size = sqlite3_column_int64(st, 1);
+  sqlite3_finalize(st);
+  ASSERT_EQ(sqlite3_exec(db, "PRAGMA wal_checkpoint(TRUNCATE)", nullptr, nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(db);
+  {
+    std::fstream f(copy, std::ios::in | std::ios::out | std::ios::binary);
+    const std::string pattern(static_cast<std::size_t>(page_size), '\x5A');
+    f.seekp((page - 1) * page_size);
+    f.write(pattern.data(), static_cast<std::streamsize>(pattern.size()));
+  }
+  auto s = open_session(copy);
+  ASSERT_TRUE(s->state().session) << s->state().statuses.line(0);
+  s->state().session->wait_for_file_check();
+  s->frame();
+  EXPECT_TRUE(s->state().session->read_only());
+  const std::string reason = s->state().session->read_only_reason();
+  EXPECT_NE(reason.find("damaged"), std::string::npos) << reason;
+  EXPECT_NE(reason.find(copy.string()), std::string::npos) << reason;
+  EXPECT_NE(s->state().statuses.line(0).find("damaged"), std::string::npos)
+      << s->state().statuses.line(0);
+  s->tap("Project");
+  ASSERT_TRUE(s->state().targets.find("New visit"));
+  EXPECT_FALSE(s->state().targets.find("New visit")->enabled);
 }
 
 TEST(UiScreens, ReadOnlyProjectSaysWhy) {
