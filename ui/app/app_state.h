@@ -55,6 +55,9 @@ struct AppState {
   WorkQueue reconstructions;
   TouchTargets targets;
   ModelView model_view;  // the 3D image, shared by the Model, Mapping and Blocks screens
+  // A 3D image whose loading failed (a damaged page, a model the program
+  // cannot read): said once, not tried again at every frame.
+  std::optional<storage::RecordId> model_load_failed;
   // Each screen's own state, in its room (ui/<screen>/<screen>_state.h).
   ProjectScreenState project;
   CaptureState capture;

@@ -48,6 +48,7 @@ void AppState::open_project(const std::filesystem::path& file) {
   try {
     session = ProjectSession::open(file);
     model_view.clear();
+    model_load_failed.reset();
     blocks.selected_block.reset();
     mapping = {};
     // The pole is the project's: its length as typed for the last pair.
@@ -159,6 +160,7 @@ void TabletApp::keep_model_loaded() {
   if (!state_.session || state_.task.running()) return;
   const auto& wanted = state_.session->model();
   if (!wanted || wanted->id == state_.model_view.model_id()) return;
+  if (state_.model_load_failed == wanted->id) return;
   const auto file = state_.session->file();
   const auto id = wanted->id;
   const std::size_t budget = state_.options.max_display_triangles;
@@ -170,9 +172,11 @@ void TabletApp::keep_model_loaded() {
         *prepared = prepare_model(file, id, budget);
         return "3D image " + std::to_string(id) + " loaded";
       },
-      [this, prepared](const TaskOutcome& outcome) {
+      [this, prepared, id](const TaskOutcome& outcome) {
         if (outcome.kind == TaskOutcome::Kind::done)
           state_.model_view.install(std::move(*prepared));
+        else if (outcome.kind == TaskOutcome::Kind::failed)
+          state_.model_load_failed = id;
       });
   // The model is the Model screen's business, whichever screen is open.
   state_.task_screen = Screen::model;
