@@ -231,15 +231,32 @@ void fill(storage::ProjectStore& store, storage::RecordId visit,
 analysis::SupportCheck check_class(storage::ProjectStore& store, storage::RecordId visit,
                                    const analysis::SupportClass& c,
                                    const std::vector<analysis::MovingBlock>& blocks) {
-  std::optional<tunnel::WedgeAnalysis> supported;
+  std::optional<tunnel::WedgeAnalysis> supported, face_supported;
+  std::optional<WedgeRun> run;
   try {
-    WedgeRun run = wedge_run_from_project(store, visit, {});
-    run.options = analysis::with_class_support(run.options, c);
-    supported = run_wedges(run);
+    run = wedge_run_from_project(store, visit, {});
+    WedgeRun pattern = *run;
+    pattern.options = analysis::with_class_support(run->options, c);
+    supported = run_wedges(pattern);
   } catch (const InputError&) {
     // No tunnel or fewer than three sets: said by check_support.
   }
-  return analysis::check_support(c, supported ? &*supported : nullptr, blocks);
+  std::string face_refused;
+  if (supported && analysis::has_face_support(c)) {
+    // The face wedges again, under the class's face support.
+    try {
+      WedgeRun face = *run;
+      face.options = analysis::with_class_face_support(run->options, c);
+      face_supported = run_wedges(face);
+    } catch (const InputError& e) {
+      face_refused = e.what();  // a face support outside the ranges a wedge analysis takes
+    }
+  }
+  analysis::SupportCheck out = analysis::check_support(c, supported ? &*supported : nullptr, blocks,
+                                                       face_supported ? &*face_supported : nullptr);
+  if (!face_refused.empty())
+    out.notes.push_back("face support on the face wedges: " + face_refused);
+  return out;
 }
 
 void add_checks(storage::ProjectStore& store, VisitSupport& out,
