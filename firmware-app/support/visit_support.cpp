@@ -10,6 +10,7 @@
 #include "core/geometry/orientation.h"
 #include "firmware-app/records/project_visit.h"
 #include "firmware-app/rockmass/visit_rock_mass.h"
+#include "firmware-app/support/support_change_text.h"
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/support/support_classes_json.h"
 
@@ -310,6 +311,8 @@ VisitSupport visit_support(const SupportRequest& q) {
   if (q.decide && !q.by) throw InputError("--by", "a decision names who decided (--by NAME)");
   if (!q.decide && (q.by || q.reason))
     throw InputError(q.by ? "--by" : "--reason", "goes with --decide CLASS");
+  if (!q.decide && !q.changes.empty()) throw InputError("--change", "goes with --decide CLASS");
+  for (const auto& c : q.changes) require_complete(c, "--change");
   // Read the classes before opening the project for writing: a refused
   // file leaves the project as it was.
   std::optional<analysis::SupportClasses> file_classes;
@@ -345,6 +348,7 @@ VisitSupport visit_support(const SupportRequest& q) {
     d.class_name = *q.decide;
     d.proposed = proposed;
     d.reason = q.reason.value_or("");
+    d.changes = q.changes;
     d.decided_by = *q.by;
     d.decided_at = storage::utc_now_iso8601();
     out.decision = d;
