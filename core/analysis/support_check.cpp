@@ -66,9 +66,43 @@ tunnel::WedgeOptions with_class_support(tunnel::WedgeOptions base, const Support
   return base;
 }
 
+bool has_face_support(const SupportClass& c) {
+  return c.face.bolts || (c.face.shotcrete_m > 0 && c.shotcrete_shear_pa);
+}
+
+tunnel::WedgeOptions with_class_face_support(tunnel::WedgeOptions base, const SupportClass& c) {
+  base.bolts.reset();
+  base.shotcrete.reset();
+  base.perimeter = false;
+  base.face = true;
+  const tunnel::SupportPlaces face_only{false, false, false, true};
+  if (c.face.bolts) {
+    tunnel::PatternBolts b;
+    b.length = c.face.bolts->length_m;
+    b.spacing = c.face.bolts->spacing_m;
+    b.capacity = c.face.bolts->capacity_n;
+    b.bond_strength = c.face.bolts->bond_n_per_m;
+    b.places = face_only;
+    base.bolts = b;
+  }
+  if (c.face.shotcrete_m > 0 && c.shotcrete_shear_pa) {
+    tunnel::Shotcrete s;
+    s.thickness = c.face.shotcrete_m;
+    s.shear_strength = *c.shotcrete_shear_pa;
+    s.places = face_only;
+    base.shotcrete = s;
+  }
+  return base;
+}
+
 WedgeSupportCheck check_wedge(const tunnel::Wedge& w, const SupportClass& c) {
   WedgeSupportCheck out;
   const double target = target_fos(c);
+  // A face wedge is held by the face bolts (along the drive), the others
+  // by the pattern of the roof and walls.
+  const bool on_face = w.place == tunnel::WedgePlace::face;
+  const std::optional<BoltPattern>& pattern = on_face ? c.face.bolts : c.bolts;
+  const std::string bolts_name = on_face ? "face bolts" : "bolts";
   out.id = w.id;
   out.place = tunnel::wedge_place_name(w.place);
   out.volume_m3 = w.mass.volume;
@@ -80,10 +114,10 @@ WedgeSupportCheck check_wedge(const tunnel::Wedge& w, const SupportClass& c) {
   out.bolts = static_cast<int>(w.bolts.size());
   out.bolts_anchored = w.bolts_anchored;
   double anchorage = kMinBoltAnchorageM;
-  if (c.bolts && c.bolts->bond_n_per_m)
-    anchorage = std::max(anchorage, c.bolts->capacity_n / *c.bolts->bond_n_per_m);
+  if (pattern && pattern->bond_n_per_m)
+    anchorage = std::max(anchorage, pattern->capacity_n / *pattern->bond_n_per_m);
   out.required_bolt_length_m = w.bolt_length_to_apex + anchorage;
-  out.bolts_reach_past_apex = c.bolts && c.bolts->length_m > w.bolt_length_to_apex;
+  out.bolts_reach_past_apex = pattern && pattern->length_m > w.bolt_length_to_apex;
 
   // The capacity per bolt that, with every bolt of the pattern on it
   // anchored, brings it to the target (the shotcrete as the analysis
@@ -103,22 +137,23 @@ WedgeSupportCheck check_wedge(const tunnel::Wedge& w, const SupportClass& c) {
   out.below_target = moves && out.fos_supported && *out.fos_supported < target;
   if (moves && !out.fos_supported) out.below_target = true;  // no friction angle: not shown safe
   if (!out.below_target) return out;
-  if (!c.bolts) {
-    out.fixes.push_back("bolts: the class has none");
+  if (!pattern) {
+    out.fixes.push_back(bolts_name + ": the class has none");
   } else if (w.bolts.empty()) {
-    out.fixes.push_back("the pattern at " + m(c.bolts->spacing_m) + " puts no bolt on its face (" +
+    out.fixes.push_back("the " + std::string(on_face ? "face pattern" : "pattern") + " at " +
+                        m(pattern->spacing_m) + " puts no bolt on its face (" +
                         format_significant(w.face_area, 3, " m²") + "): spot bolts");
   } else {
     if (!out.bolts_reach_past_apex || out.bolts_anchored < out.bolts)
-      out.fixes.push_back("bolts of at least " + m(out.required_bolt_length_m) + " (apex " +
+      out.fixes.push_back(bolts_name + " of at least " + m(out.required_bolt_length_m) + " (apex " +
                           m(w.bolt_length_to_apex) + " deep, plus anchorage)");
     if (!out.required_capacity_n)
-      out.fixes.push_back("no bolt capacity at " + m(c.bolts->spacing_m) +
+      out.fixes.push_back("no bolt capacity at " + m(pattern->spacing_m) +
                           " spacing holds it: a closer pattern or heavier support");
-    else if (*out.required_capacity_n > c.bolts->capacity_n)
-      out.fixes.push_back("bolts of at least " + kn(*out.required_capacity_n) + " at " +
-                          m(c.bolts->spacing_m) + " spacing (the class's " +
-                          kn(c.bolts->capacity_n) + ")");
+    else if (*out.required_capacity_n > pattern->capacity_n)
+      out.fixes.push_back(bolts_name + " of at least " + kn(*out.required_capacity_n) + " at " +
+                          m(pattern->spacing_m) + " spacing (the class's " +
+                          kn(pattern->capacity_n) + ")");
   }
   if (!out.fos_supported) out.fixes.push_back("a friction angle of its joints to check it at all");
   return out;
@@ -205,16 +240,37 @@ BlockSupportCheck check_block(const MovingBlock& b, const SupportClass& c) {
 }
 
 SupportCheck check_support(const SupportClass& c, const tunnel::WedgeAnalysis* supported,
-                           const std::vector<MovingBlock>& blocks) {
+                           const std::vector<MovingBlock>& blocks,
+                           const tunnel::WedgeAnalysis* face_supported) {
   SupportCheck out;
   out.class_name = c.name;
   out.target_fos = target_fos(c);
   if (supported) {
+    int face_unmatched = 0;
     for (const auto& w : supported->wedges) {
       if (!w.mode) continue;  // not removable: nothing to hold
-      out.wedges.push_back(check_wedge(w, c));
+      const tunnel::Wedge* held = &w;
+      if (w.place == tunnel::WedgePlace::face && has_face_support(c)) {
+        // The same wedge (its sets and pyramid) under the face support.
+        const tunnel::Wedge* match = nullptr;
+        if (face_supported)
+          for (const auto& f : face_supported->wedges)
+            if (f.place == tunnel::WedgePlace::face && f.code == w.code && f.sets == w.sets &&
+                f.mode)
+              match = &f;
+        if (match)
+          held = match;
+        else
+          ++face_unmatched;
+      }
+      out.wedges.push_back(check_wedge(*held, c));
+      out.wedges.back().id = w.id;  // the name the wedge list gives it
       if (out.wedges.back().below_target) ++out.below_target;
     }
+    if (face_unmatched > 0)
+      out.notes.push_back(std::to_string(face_unmatched) +
+                          " face wedges checked without the class's face support (no wedge "
+                          "analysis with it)");
   } else {
     out.notes.push_back("no wedge analysis: the class's pattern is not checked on wedges");
   }

@@ -5,7 +5,11 @@
 //
 // Wedges: the wedge analysis is run with the class's pattern
 // (with_class_support; core/tunnel/wedge_support.h counts each bolt that
-// reaches past the wedge and its shotcrete). Each removable wedge gets its
+// reaches past the wedge and its shotcrete), and the wedges of the face a
+// second time with the class's face support (with_class_face_support: the
+// face bolts along the drive and the face shotcrete, on the face only; a
+// face wedge's exposed face is the face, which the pattern of the roof and
+// walls does not reach). Each removable wedge gets its
 // FoS with the support, whether the bolts reach past its apex, the bolt
 // length that would (the apex's depth plus kMinBoltAnchorageM, or the bond
 // length of the bolt's capacity when a bond strength is given), and the
@@ -97,13 +101,27 @@ struct SupportCheck {
 // walls) in place of base's support.
 tunnel::WedgeOptions with_class_support(tunnel::WedgeOptions base, const SupportClass& c);
 
-// supported: the wedge analysis run with with_class_support's options.
+// The wedge options with the class's face support (its face bolts and face
+// shotcrete, on the face only) in place of base's support, and only the
+// face's wedges looked for. Whether the class has any face support to
+// count: has_face_support.
+tunnel::WedgeOptions with_class_face_support(tunnel::WedgeOptions base, const SupportClass& c);
+bool has_face_support(const SupportClass& c);
+
+// w: a wedge of the analysis run with with_class_support's options, or a
+// face wedge of the one run with with_class_face_support's; a face wedge is
+// checked against the class's face bolts, the others against its pattern.
 WedgeSupportCheck check_wedge(const tunnel::Wedge& w, const SupportClass& c);
 
 BlockSupportCheck check_block(const MovingBlock& b, const SupportClass& c);
 
-// Both, with the count below the target.
+// Both, with the count below the target. face_supported: the face wedges
+// with the class's face support (with_class_face_support's run); a face
+// wedge of `supported` is checked as it stands there (matched by its sets
+// and code), and without it when the class has face support and that run
+// is missing (said in the notes).
 SupportCheck check_support(const SupportClass& c, const tunnel::WedgeAnalysis* supported,
-                           const std::vector<MovingBlock>& blocks);
+                           const std::vector<MovingBlock>& blocks,
+                           const tunnel::WedgeAnalysis* face_supported = nullptr);
 
 }  // namespace rockface::analysis

@@ -23,6 +23,15 @@
 // 8|9). That is a simplification of the drawing: it matches the chart
 // near De = 10 (a 10-13 m road or rail tunnel) and departs from it towards
 // the chart's corners, which the result says in its note.
+// Checked against the published chart (issue 44): the handbook prints the
+// boundaries 2|3 to 8|9 as a drawing only; neither it nor Grimstad &
+// Barton (1993) gives equations or tabulated points for them, and none
+// were found in the public material searched (handbook excerpts, papers
+// re-using the chart, open code that draws it: those overlay a scanned
+// image of the chart). What is published as formulas is encoded as such:
+// the ESR table, L = 2 + 0.15 B / ESR and the unsupported span 2 ESR
+// Q^0.4 (the boundary 1|2). The limits at De = 10 and the spacing lines
+// remain readings of the printed chart.
 // The bolt spacings (in the shotcreted and the unshotcreted area) are read
 // from the chart's spacing lines as functions of Q, the shotcrete
 // thickness from the category, the bolt length is L = 2 + 0.15 B / ESR.

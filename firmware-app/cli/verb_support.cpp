@@ -1,5 +1,6 @@
 // `rockface support PROJECT --visit N [--classes FILE] [--esr USE]
-// [--decide CLASS --by NAME [--reason TEXT]] --out F.json [--png F.png]`:
+// [--decide CLASS --by NAME [--reason TEXT] [--change "WHAT: FROM -> TO:
+// REASON"]...] --out F.json [--png F.png]`:
 // the round's support: what the Q chart and Bieniawski's table call for,
 // the designer's class the visit meets, the proposed and the chosen class
 // checked on the visit's wedges and the face's moving blocks, and the
@@ -9,6 +10,7 @@
 
 #include "core/common/atomic_file.h"
 #include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/support/support_change_text.h"
 #include "firmware-app/support/support_json.h"
 #include "firmware-app/support/visit_support.h"
 #include "storage/exchange/image_file.h"
@@ -22,6 +24,7 @@ struct SupportOptions {
   long long visit = 0;
   std::string out;
   std::optional<std::string> png;
+  std::vector<std::string> changes;  // as typed: support_change_text.h
 };
 
 VerbRun setup_support(CLI::App& sub) {
@@ -38,10 +41,15 @@ VerbRun setup_support(CLI::App& sub) {
   sub.add_option("--decide", q.decide, "the class chosen for the round (stored with the visit)");
   sub.add_option("--by", q.by, "who decided");
   sub.add_option("--reason", q.reason, "why (required when the class is not the proposed one)");
+  sub.add_option("--change", o->changes,
+                 "a change to the chosen class for this round, \"WHAT: FROM -> TO: REASON\" "
+                 "(e.g. \"bolt spacing: 1.5 m -> 1.2 m: wedge W3\"); repeat for each");
   sub.add_option("--out", o->out, "the support, a JSON file")->required();
   sub.add_option("--png", o->png, "the Q chart with the visit's point, a PNG file");
   return [o] {
     o->request.visit = o->visit;
+    for (const auto& text : o->changes)
+      o->request.changes.push_back(parse_support_change(text, "--change"));
     const VisitSupport s = visit_support(o->request);
     write_text_atomically(o->out, support_json(s).dump(2) + "\n");
     for (const auto& line : support_summary(s)) std::cout << line << "\n";

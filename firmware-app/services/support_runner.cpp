@@ -1,6 +1,7 @@
 // The tablet's Support view (ui::SupportRunner): the round's support as
 // `rockface support PROJECT --visit N [--decide CLASS --by NAME --reason
-// TEXT]` finds and stores it, laid out in words for the three proposals.
+// TEXT] [--change ...]` finds and stores it, laid out in words for the
+// three proposals.
 #include "core/common/number_format.h"
 #include "firmware-app/services/ui_services.h"
 #include "firmware-app/support/support_json.h"
@@ -20,6 +21,7 @@ ui::SupportProposals StoreSupportRunner::support(const std::filesystem::path& pr
     q.decide = decide->class_name;
     q.by = decide->by;
     if (!decide->reason.empty()) q.reason = decide->reason;
+    q.changes = decide->changes;
   }
   const VisitSupport s = visit_support(q);
   ui::SupportProposals out;
@@ -56,9 +58,9 @@ ui::SupportProposals StoreSupportRunner::support(const std::filesystem::path& pr
   }
   for (const auto& c : s.checks) out.checks.push_back(checks_words(c));
   if (s.decision)
-    out.decision =
-        ui::SupportDecided{s.decision->class_name, s.decision->proposed,   s.decision->reason,
-                           s.decision->decided_by, s.decision->decided_at, s.decision->checks};
+    out.decision = ui::SupportDecided{
+        s.decision->class_name, s.decision->proposed, s.decision->reason, s.decision->decided_by,
+        s.decision->decided_at, s.decision->checks,   s.decision->changes};
   out.notes = s.notes;
   return out;
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/common/number_format.h"
+#include "firmware-app/support/support_change_text.h"
 #include "firmware-app/support/support_json.h"
 #include "firmware-app/support/visit_support.h"
 #include "storage/field_report/support_pictures.h"
@@ -66,9 +67,7 @@ void add_support_to_report(storage::ProjectStore& store, storage::FieldReport& r
     out.decision.push_back("class " + d.class_name +
                            " (proposed: " + (d.proposed.empty() ? "none" : d.proposed) + ")");
     if (!d.reason.empty()) out.decision.push_back("reason: " + d.reason);
-    for (const auto& c : d.changes)
-      out.decision.push_back("change " + c.what + ": " + c.from + " -> " + c.to + " (" + c.reason +
-                             ")");
+    for (const auto& c : d.changes) out.decision.push_back("change: " + support_change_words(c));
     out.decision.push_back("decided by " + d.decided_by + " at " + d.decided_at);
     if (!d.checks.empty()) out.decision.push_back("checks then: " + d.checks);
   } else {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/common/number_format.h"
+#include "firmware-app/support/support_change_text.h"
 
 namespace rockface::app {
 
@@ -215,6 +216,8 @@ std::vector<std::string> support_summary(const VisitSupport& s) {
     out.push_back("decision: " + s.decision->class_name + " by " + s.decision->decided_by + " at " +
                   s.decision->decided_at +
                   (s.decision->reason.empty() ? "" : " (" + s.decision->reason + ")"));
+  if (s.decision)
+    for (const auto& c : s.decision->changes) out.push_back("  change: " + support_change_words(c));
   for (const auto& n : s.notes) out.push_back("note: " + n);
   return out;
 }

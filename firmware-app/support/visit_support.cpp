@@ -10,6 +10,7 @@
 #include "core/geometry/orientation.h"
 #include "firmware-app/records/project_visit.h"
 #include "firmware-app/rockmass/visit_rock_mass.h"
+#include "firmware-app/support/support_change_text.h"
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/support/support_classes_json.h"
 
@@ -231,15 +232,32 @@ void fill(storage::ProjectStore& store, storage::RecordId visit,
 analysis::SupportCheck check_class(storage::ProjectStore& store, storage::RecordId visit,
                                    const analysis::SupportClass& c,
                                    const std::vector<analysis::MovingBlock>& blocks) {
-  std::optional<tunnel::WedgeAnalysis> supported;
+  std::optional<tunnel::WedgeAnalysis> supported, face_supported;
+  std::optional<WedgeRun> run;
   try {
-    WedgeRun run = wedge_run_from_project(store, visit, {});
-    run.options = analysis::with_class_support(run.options, c);
-    supported = run_wedges(run);
+    run = wedge_run_from_project(store, visit, {});
+    WedgeRun pattern = *run;
+    pattern.options = analysis::with_class_support(run->options, c);
+    supported = run_wedges(pattern);
   } catch (const InputError&) {
     // No tunnel or fewer than three sets: said by check_support.
   }
-  return analysis::check_support(c, supported ? &*supported : nullptr, blocks);
+  std::string face_refused;
+  if (supported && analysis::has_face_support(c)) {
+    // The face wedges again, under the class's face support.
+    try {
+      WedgeRun face = *run;
+      face.options = analysis::with_class_face_support(run->options, c);
+      face_supported = run_wedges(face);
+    } catch (const InputError& e) {
+      face_refused = e.what();  // a face support outside the ranges a wedge analysis takes
+    }
+  }
+  analysis::SupportCheck out = analysis::check_support(c, supported ? &*supported : nullptr, blocks,
+                                                       face_supported ? &*face_supported : nullptr);
+  if (!face_refused.empty())
+    out.notes.push_back("face support on the face wedges: " + face_refused);
+  return out;
 }
 
 void add_checks(storage::ProjectStore& store, VisitSupport& out,
@@ -293,6 +311,8 @@ VisitSupport visit_support(const SupportRequest& q) {
   if (q.decide && !q.by) throw InputError("--by", "a decision names who decided (--by NAME)");
   if (!q.decide && (q.by || q.reason))
     throw InputError(q.by ? "--by" : "--reason", "goes with --decide CLASS");
+  if (!q.decide && !q.changes.empty()) throw InputError("--change", "goes with --decide CLASS");
+  for (const auto& c : q.changes) require_complete(c, "--change");
   // Read the classes before opening the project for writing: a refused
   // file leaves the project as it was.
   std::optional<analysis::SupportClasses> file_classes;
@@ -328,6 +348,7 @@ VisitSupport visit_support(const SupportRequest& q) {
     d.class_name = *q.decide;
     d.proposed = proposed;
     d.reason = q.reason.value_or("");
+    d.changes = q.changes;
     d.decided_by = *q.by;
     d.decided_at = storage::utc_now_iso8601();
     out.decision = d;

@@ -24,8 +24,10 @@ struct SupportRequest {
   std::optional<std::string> classes_file;  // read, refused by name, stored in the project
   std::optional<std::string> esr_use;       // a key of the ESR table; default: the form's ESR
   // A decision: the class chosen, by whom, why (required when it is not
-  // the proposed class).
+  // the proposed class), and the changes made to the class for this round
+  // (each with what, from, to and why: support_change_text.h).
   std::optional<std::string> decide, by, reason;
+  std::vector<analysis::SupportChange> changes;
 };
 
 struct VisitSupport {
@@ -50,7 +52,8 @@ struct VisitSupport {
 // tunnel unless the request gives a file); stores the classes and the
 // decision when asked. InputError naming the option for a bad request
 // (an unknown class, a decision without --by, a class other than the
-// proposed one without --reason).
+// proposed one without --reason, a change without its reason or without
+// --decide).
 VisitSupport visit_support(const SupportRequest& request);
 
 // The same on an open store, without storing anything (the field report,

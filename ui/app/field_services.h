@@ -18,6 +18,7 @@
 
 #include "camera/camera.h"
 #include "core/analysis/block_verdict.h"
+#include "core/analysis/support_decision.h"
 #include "core/common/preset.h"
 #include "core/common/progress.h"
 #include "core/measure/compass_reading.h"
@@ -339,10 +340,12 @@ class NorthRunner {
 // moving blocks, and the decision stored with the visit.
 struct SupportChoice {
   std::string class_name, by;
-  std::string reason;  // required when the class is not the proposed one
+  std::string reason;                            // required when the class is not the proposed one
+  std::vector<analysis::SupportChange> changes;  // each with what, from, to and why
 };
 struct SupportDecided {
   std::string class_name, proposed, reason, by, at, checks;
+  std::vector<analysis::SupportChange> changes;
 };
 struct SupportProposals {
   std::string figures;  // "Visit 1 at chainage 111.73 m: RMR89 62, Q 4.2"

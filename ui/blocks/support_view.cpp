@@ -1,6 +1,8 @@
 #include "ui/blocks/support_view.h"
 
+#include <cstddef>
 #include <memory>
+#include <optional>
 
 #include <imgui.h>
 
@@ -37,7 +39,10 @@ void load_support(AppState& app, std::optional<SupportChoice> decide) {
         }
         s.message.clear();
         s.proposals = std::move(*result);
-        if (deciding) s.reason.clear();
+        if (deciding) {
+          s.reason.clear();
+          s.changes.clear();
+        }
       });
 }
 
@@ -61,6 +66,30 @@ void draw_proposals(AppState& app, const SupportProposals& p) {
   for (const auto& n : p.notes) note(n);
 }
 
+// The changes to the chosen class for this round, each in four fields, and
+// the buttons to add and remove one. What is missing from one, in words
+// ("" when every change is complete).
+std::string draw_changes(AppState& app, SupportViewState& s) {
+  label("Changes to the class for this round");
+  std::string missing;
+  std::optional<std::size_t> remove;
+  for (std::size_t i = 0; i < s.changes.size(); ++i) {
+    analysis::SupportChange& c = s.changes[i];
+    const std::string n = std::to_string(i + 1);
+    label("Change " + n + ": what (e.g. bolt spacing), from, to, why");
+    text_field(app.targets, "change " + n + " what", &c.what);
+    text_field(app.targets, "change " + n + " from", &c.from);
+    text_field(app.targets, "change " + n + " to", &c.to);
+    text_field(app.targets, "change " + n + " why", &c.reason);
+    if (app.targets.button("Remove change " + n)) remove = i;
+    if (missing.empty() && (c.what.empty() || c.from.empty() || c.to.empty() || c.reason.empty()))
+      missing = "Change " + n + ": say what was changed, from what, to what and why.";
+  }
+  if (remove) s.changes.erase(s.changes.begin() + static_cast<std::ptrdiff_t>(*remove));
+  if (app.targets.button("Add a change")) s.changes.emplace_back();
+  return missing;
+}
+
 void draw_decision(AppState& app, SupportViewState& s, const SupportProposals& p) {
   heading("The decision");
   if (p.decision) {
@@ -71,6 +100,8 @@ void draw_decision(AppState& app, SupportViewState& s, const SupportProposals& p
                                             : " (proposed: " + d.proposed + ")") +
               ".");
     if (!d.reason.empty()) paragraph("Why: " + d.reason);
+    for (const auto& c : d.changes)
+      paragraph("Changed " + c.what + ": " + c.from + " -> " + c.to + " (" + c.reason + ")");
     if (!d.checks.empty()) paragraph("Checked: " + d.checks);
   } else {
     paragraph("No decision stored for this round.");
@@ -87,8 +118,9 @@ void draw_decision(AppState& app, SupportViewState& s, const SupportProposals& p
   label("Decided by");
   text_field(app.targets, "decided by", &s.by);
   const bool other = !s.chosen.empty() && s.chosen != p.proposed;
-  label(other ? "Why not the proposed class (required)" : "Remarks (changes, with their reason)");
+  label(other ? "Why not the proposed class (required)" : "Remarks");
   text_field(app.targets, "reason", &s.reason);
+  const std::string incomplete = draw_changes(app, s);
   std::string why;
   if (s.chosen.empty())
     why = "Choose a class.";
@@ -97,10 +129,12 @@ void draw_decision(AppState& app, SupportViewState& s, const SupportProposals& p
   else if (other && s.reason.empty())
     why = "Class " + s.chosen + " is not the proposed " +
           (p.proposed.empty() ? std::string("(none)") : p.proposed) + ": say why.";
+  else
+    why = incomplete;
   if (!why.empty()) paragraph(why);
   const bool can = why.empty() && !app.task.running() && !app.session->read_only();
   if (app.targets.button("Decide", 0, can))
-    load_support(app, SupportChoice{s.chosen, s.by, s.reason});
+    load_support(app, SupportChoice{s.chosen, s.by, s.reason, s.changes});
 }
 
 }  // namespace
@@ -116,6 +150,7 @@ void draw_support_view(AppState& app) {
     s.message.clear();
     s.chosen.clear();
     s.reason.clear();
+    s.changes.clear();
   }
   heading("Support of this round");
   if (!app.services.support) {

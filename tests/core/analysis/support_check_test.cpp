@@ -2,7 +2,10 @@
 // wedge (the regular tetrahedron of tests/core/tunnel/wedge_analysis_test)
 // that the class's pattern holds, and the same wedge under bolts too short
 // to reach past it; a block of the face sliding on one plane, with and
-// without the class's face bolts.
+// without the class's face bolts; a wedge of the face sliding out of it on
+// one plane, held by the class's face bolts or face shotcrete (the wedge
+// analysis run with them) and not held without them or with face bolts
+// too short.
 #include <cmath>
 #include <numbers>
 
@@ -194,6 +197,155 @@ TEST(SupportCheck, TheFaceBlockWithoutFaceSupportIsFlaggedWithTheForceThatHoldsI
   EXPECT_TRUE(short_bolts.below_target);
   ASSERT_FALSE(short_bolts.fixes.empty());
   EXPECT_NE(short_bolts.fixes[0].find("2.50 m"), std::string::npos) << short_bolts.fixes[0];
+}
+
+// Three sets whose pyramid opens back out of the face of a 6 m square
+// section driven north: J1 dips beta = 60 toward the tunnel (south) under
+// the wedge, J2 and J3 are J1 turned +-120 degrees about the drive and
+// close it above. On the face they cut an equilateral triangle (J1's
+// trace horizontal), the largest of which in the section has side 6 m; the
+// apex lies r / tan(beta) = 1 m ahead of the face (r: the triangle's
+// inradius). The wedge slides out of the face on J1 alone (J2 and J3 open
+// along J1's dip) with FoS = tan(phi) / tan(beta) = 0.333 for phi = 30.
+// Face bolts along the drive with total force T and a face lining of
+// capacity P (against the motion) give, as for the face block above,
+//   FoS = ((W cos(beta) + T sin(beta)) tan(phi) + T cos(beta) + P) / (W sin(beta)).
+struct FaceWedge {
+  double B = 6, beta = 60 * kRad, phi = 30 * kRad;
+  tunnel::WedgeAnalysis analyse(const tunnel::WedgeOptions& o) const {
+    const Eigen::Vector3d j1(0, -std::sin(beta), std::cos(beta));  // upward normal
+    std::vector<tunnel::WedgeJointSet> sets{{"J1", j1, phi, 0}};
+    for (const double turn : {120.0, -120.0}) {
+      const double t = turn * kRad;
+      // J1's block-side normal (= j1) turned about the drive, then upward.
+      const Eigen::Vector3d n(std::cos(beta) * std::sin(t), -std::sin(beta),
+                              std::cos(beta) * std::cos(t));
+      sets.push_back({"J" + std::to_string(sets.size() + 1), -n, phi, 0});
+    }
+    return tunnel::analyse_wedges(tunnel::rectangle_profile(B, B, 0),
+                                  tunnel::axis_frame(0, 0, Eigen::Vector3d::Zero(), "axis"),
+                                  Eigen::Vector3d::Zero(), sets, o);
+  }
+  // The triangle's inradius, the apex's depth and the weight A h / 3 with
+  // A = 3 sqrt(3) r^2: sqrt(3) r^2 h x 2700 x 9.81 (138 kN).
+  double r() const { return B / (2 * std::sqrt(3.0)); }
+  double h() const { return r() / std::tan(beta); }
+  double weight() const { return std::sqrt(3.0) * r() * r() * h() * 2700 * 9.81; }
+  double fos(double W, double T, double P) const {
+    return ((W * std::cos(beta) + T * std::sin(beta)) * std::tan(phi) + T * std::cos(beta) + P) /
+           (W * std::sin(beta));
+  }
+};
+
+const tunnel::Wedge& the_face_wedge(const tunnel::WedgeAnalysis& a) {
+  const tunnel::Wedge* found = nullptr;
+  for (const auto& w : a.wedges)
+    if (w.place == tunnel::WedgePlace::face && w.mode &&
+        w.mode->type == kinematics::ModeType::Sliding) {
+      if (found) throw std::runtime_error("two sliding face wedges");
+      found = &w;
+    }
+  if (!found) throw std::runtime_error("no sliding face wedge");
+  return *found;
+}
+
+// Both runs of the check, as firmware-app/support runs them.
+SupportCheck check_on_face(const FaceWedge& g, const SupportClass& c) {
+  const tunnel::WedgeAnalysis pattern = g.analyse(with_class_support({}, c));
+  const tunnel::WedgeAnalysis face = g.analyse(with_class_face_support({}, c));
+  return check_support(c, &pattern, {}, &face);
+}
+
+WedgeSupportCheck face_check(const SupportCheck& s) {
+  for (const auto& w : s.wedges)
+    if (w.place == "face") return w;
+  throw std::runtime_error("no face wedge checked");
+}
+
+TEST(SupportCheck, TheFaceWedgeIsTheLargestTriangleAndSlidesOutOfTheFace) {
+  const FaceWedge g;
+  const tunnel::WedgeAnalysis a = g.analyse({});
+  const tunnel::Wedge& w = the_face_wedge(a);
+  // The triangle's side 6 m and depth 1 m: the fit's bisection and the
+  // chords, ~1e-9 m.
+  double side = 0;
+  for (int i = 0; i < 3; ++i) side = std::max(side, (w.outline[i] - w.outline[(i + 1) % 3]).norm());
+  EXPECT_NEAR(side, g.B, 1e-6);
+  EXPECT_NEAR(w.apex_height, g.h(), 1e-6);
+  // The solid's weight against A h / 3: the fit's 1e-9 m on 6 m and 1 m.
+  EXPECT_NEAR(w.weight, g.weight(), 1e-6 * g.weight());
+  ASSERT_TRUE(w.fos);
+  EXPECT_NEAR(*w.fos, std::tan(g.phi) / std::tan(g.beta), 1e-9);
+}
+
+TEST(SupportCheck, TheClassesFaceBoltsHoldTheFaceWedge) {
+  const FaceWedge g;
+  SupportClass c = pattern_class(4.0, 1.0, 1e5);  // roof and walls: they do not reach the face
+  c.face.bolts = BoltPattern{4.0, 1.0, 5e4, std::nullopt};  // GRP 4 m, 1 m, 50 kN
+  const SupportCheck s = check_on_face(g, c);
+  const WedgeSupportCheck w = face_check(s);
+  EXPECT_EQ(w.mode, "sliding");
+  ASSERT_GT(w.bolts, 6);                 // ~15 m² of face at 1 m
+  EXPECT_EQ(w.bolts_anchored, w.bolts);  // 4 m reach past the 1 m apex
+  EXPECT_TRUE(w.bolts_reach_past_apex);
+  ASSERT_TRUE(w.fos_supported);
+  // The fit's 1e-9 m in the weight: 1e-6 relative.
+  EXPECT_NEAR(*w.fos_supported, g.fos(g.weight(), w.bolts * 5e4, 0), 1e-6 * *w.fos_supported);
+  EXPECT_FALSE(w.below_target);
+  // The apex 1 m ahead plus 1 m of anchorage.
+  EXPECT_NEAR(w.required_bolt_length_m, g.h() + kMinBoltAnchorageM, 1e-6);
+  EXPECT_EQ(s.below_target, 0);
+}
+
+TEST(SupportCheck, TheFaceWedgeWithoutFaceSupportOrWithShortFaceBoltsIsFlagged) {
+  const FaceWedge g;
+  // The pattern of the roof and walls alone: the face wedge as it stands.
+  const SupportClass none = pattern_class(4.0, 1.0, 1e5);
+  const WedgeSupportCheck bare = face_check(check_on_face(g, none));
+  ASSERT_TRUE(bare.fos_supported);
+  EXPECT_NEAR(*bare.fos_supported, std::tan(g.phi) / std::tan(g.beta), 1e-9);
+  EXPECT_EQ(bare.bolts, 0);
+  EXPECT_TRUE(bare.below_target);
+  ASSERT_EQ(bare.fixes.size(), 1u);
+  EXPECT_NE(bare.fixes[0].find("face bolts: the class has none"), std::string::npos)
+      << bare.fixes[0];
+
+  // Face bolts of 0.3 m: only those within 0.3 m of the wedge's edges on
+  // the face (its depth there below 0.3 m) reach past it. Their capacity
+  // would give FoS 2 were they all anchored.
+  SupportClass short_bolts = none;
+  short_bolts.face.bolts = BoltPattern{0.3, 1.0, 1e3, std::nullopt};
+  const int n = face_check(check_on_face(g, short_bolts)).bolts;
+  ASSERT_GT(n, 6);
+  const double W = g.weight();
+  // FoS(T) = 2, linear in T.
+  const double t2 = (2 * W * std::sin(g.beta) - W * std::cos(g.beta) * std::tan(g.phi)) /
+                    (std::sin(g.beta) * std::tan(g.phi) + std::cos(g.beta));
+  short_bolts.face.bolts->capacity_n = t2 / n;
+  const WedgeSupportCheck w = face_check(check_on_face(g, short_bolts));
+  EXPECT_FALSE(w.bolts_reach_past_apex);
+  ASSERT_LT(w.bolts_anchored, 0.7 * n);  // FoS(0.7 T2) < 1.5
+  ASSERT_TRUE(w.fos_supported);
+  // The fit's 1e-9 m in the weight: 1e-6.
+  EXPECT_NEAR(*w.fos_supported, g.fos(W, w.bolts_anchored * t2 / n, 0), 1e-6);
+  EXPECT_TRUE(w.below_target);
+  ASSERT_FALSE(w.fixes.empty());
+  EXPECT_NE(w.fixes[0].find("face bolts of at least 2.00 m"), std::string::npos) << w.fixes[0];
+}
+
+TEST(SupportCheck, TheClassesFaceShotcreteResistsTheFaceWedgeOverItsOutline) {
+  const FaceWedge g;
+  SupportClass c;
+  c.name = "SC3";
+  c.face.shotcrete_m = 0.01;
+  c.shotcrete_shear_pa = 1e5;  // P = 0.01 m x 0.1 MPa x 18 m = 18 kN
+  const WedgeSupportCheck w = face_check(check_on_face(g, c));
+  const double P = 0.01 * 1e5 * 3 * g.B;
+  ASSERT_TRUE(w.fos_supported);
+  // The outline from the solid's edges: ~1e-9 relative.
+  EXPECT_NEAR(*w.fos_supported, g.fos(g.weight(), 0, P), 1e-6);
+  EXPECT_GT(*w.fos_supported, std::tan(g.phi) / std::tan(g.beta));
+  EXPECT_TRUE(w.below_target);  // 18 kN against a 138 kN wedge: FoS 0.48
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 // and nothing is stored.
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +23,7 @@
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
+#include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
 #include "storage/tunnel/tunnel_files.h"
 #include "tests/support/temp_folders.h"
@@ -214,6 +216,56 @@ TEST(SupportVerb, ClassesProposedCheckedDecidedReportedAndAlongTheDrive) {
   storage::write_field_report_pdf(report, dir / "report.pdf");
   EXPECT_GT(fs::file_size(dir / "report.pdf"), 20000u);
 
+  // The class with changes of its own for this round, each with its
+  // reason: stored with the visit, in the JSON, the terminal's lines and
+  // the field report.
+  EXPECT_EQ(run(base + " --change 'bolt spacing: 1.5 m -> 1.2 m: wedge W3' --out " +
+                    (dir / "c.json").string(),
+                dir),
+            2)
+      << "a change without --decide";
+  EXPECT_NE(read(dir / "err.txt").find("--change"), std::string::npos) << read(dir / "err.txt");
+  EXPECT_EQ(run(base + " --decide " + other + " --by Ana --reason 'water at the left wall'" +
+                    " --change 'bolt spacing: 1.5 m -> 1.2 m' --out " + (dir / "c.json").string(),
+                dir),
+            2)
+      << "a change without its reason";
+  EXPECT_NE(read(dir / "err.txt").find("REASON"), std::string::npos) << read(dir / "err.txt");
+  EXPECT_EQ(read_store.list_support_decisions(visit).size(), 1u) << "nothing stored";
+  ASSERT_EQ(run(base + " --decide " + other + " --by Ana --reason 'water at the left wall'" +
+                    " --change 'bolt spacing: 1.5 m -> 1.2 m: wedge W3 below FoS 1.5'" +
+                    " --change 'shotcrete: 50 mm -> 100 mm: water: the lining bonds badly' --out " +
+                    (dir / "c.json").string(),
+                dir),
+            0)
+      << read(dir / "err.txt");
+  const auto changed = read_store.load_support_decision(visit);
+  ASSERT_TRUE(changed);
+  ASSERT_EQ(changed->changes.size(), 2u);
+  EXPECT_EQ(changed->changes[0].what, "bolt spacing");
+  EXPECT_EQ(changed->changes[0].from, "1.5 m");
+  EXPECT_EQ(changed->changes[0].to, "1.2 m");
+  EXPECT_EQ(changed->changes[0].reason, "wedge W3 below FoS 1.5");
+  EXPECT_EQ(changed->changes[1].reason, "water: the lining bonds badly");  // colons kept
+  EXPECT_EQ(changed->reason, "water at the left wall");  // the reason stays the class's
+  const json cj = json::parse(read(dir / "c.json"));
+  ASSERT_EQ(cj["decision"]["changes"].size(), 2u);
+  EXPECT_EQ(cj["decision"]["changes"][1]["what"], "shotcrete");
+  EXPECT_EQ(cj["decision"]["changes"][1]["from"], "50 mm");
+  EXPECT_EQ(cj["decision"]["changes"][1]["to"], "100 mm");
+  EXPECT_NE(read(dir / "out.txt")
+                .find("change: bolt spacing 1.5 m -> 1.2 m (wedge W3 below FoS "
+                      "1.5)"),
+            std::string::npos)
+      << read(dir / "out.txt");
+  storage::FieldReport changed_report = storage::collect_field_report(read_store, visit);
+  add_support_to_report(read_store, changed_report);
+  ASSERT_TRUE(changed_report.support);
+  const auto& lines = changed_report.support->decision;
+  EXPECT_NE(std::find(lines.begin(), lines.end(),
+                      "change: shotcrete 50 mm -> 100 mm (water: the lining bonds badly)"),
+            lines.end());
+
   // Along the drive: the round's class against its chainage.
   ASSERT_EQ(run("drive " + project.string() + " --out " + (dir / "drive.png").string() +
                     " --support-csv " + (dir / "support.csv").string(),
@@ -223,6 +275,56 @@ TEST(SupportVerb, ClassesProposedCheckedDecidedReportedAndAlongTheDrive) {
   const std::string csv = read(dir / "support.csv");
   EXPECT_NE(csv.find("105.00," + std::to_string(visit) + ","), std::string::npos) << csv;
   EXPECT_NE(csv.find("," + expected + "," + other + ",Ana,"), std::string::npos) << csv;
+}
+
+// A decision stored before changes had a field of their own (its JSON
+// without "changes", the changes in its reason): the project opens, the
+// verb and the field report read it with no changes, and a new decision
+// with changes is stored beside it.
+TEST(SupportVerb, ADecisionWithoutTheChangesFieldIsReadAsBefore) {
+  const fs::path dir = temp_dir("old");
+  const fs::path project = dir / "drive.rockface";
+  const storage::RecordId visit = make_project(project, true);
+  std::ofstream(dir / "classes.json") << kRmrClasses;
+  const std::string base = "support " + project.string() + " --visit " + std::to_string(visit);
+  ASSERT_EQ(run(base + " --classes " + (dir / "classes.json").string() + " --out " +
+                    (dir / "s.json").string(),
+                dir),
+            0)
+      << read(dir / "err.txt");
+  {
+    storage::sqlite::Connection db(project, storage::sqlite::Connection::Access::read_write);
+    db.exec(
+        "INSERT INTO support_decision (visit_id, class_name, decision_json, decided_at) "
+        "VALUES (" +
+            std::to_string(visit) +
+            ", 'SC2', '{\"class\": \"SC2\", \"proposed\": \"SC2\", \"reason\": \"bolt "
+            "spacing 1.5 -> 1.2 m for W3\", \"decided_by\": \"Ana\", \"decided_at\": "
+            "\"2026-11-20T08:00:00.000Z\", \"checks\": \"\"}', '2026-11-20T08:00:00.000Z')",
+        "test");
+  }
+  ASSERT_EQ(run(base + " --out " + (dir / "r.json").string(), dir), 0) << read(dir / "err.txt");
+  const json j = json::parse(read(dir / "r.json"));
+  ASSERT_TRUE(j["decision"].is_object()) << j.dump(2);
+  EXPECT_EQ(j["decision"]["reason"], "bolt spacing 1.5 -> 1.2 m for W3");
+  EXPECT_TRUE(j["decision"]["changes"].empty());
+  storage::ProjectStore store = storage::ProjectStore::open(project, {});
+  storage::FieldReport report = storage::collect_field_report(store, visit);
+  add_support_to_report(store, report);
+  ASSERT_TRUE(report.support);
+  for (const auto& line : report.support->decision)
+    EXPECT_EQ(line.rfind("change", 0), std::string::npos) << line;
+  ASSERT_EQ(run(base + " --decide SC2 --by Ana --reason 'as before'" +
+                    " --change 'bolt spacing: 1.5 m -> 1.2 m: wedge W3' --out " +
+                    (dir / "d.json").string(),
+                dir),
+            0)
+      << read(dir / "err.txt");
+  const auto all = store.list_support_decisions(visit);
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_TRUE(all[0].changes.empty());
+  ASSERT_EQ(all[1].changes.size(), 1u);
+  EXPECT_EQ(all[1].changes[0].to, "1.2 m");
 }
 
 TEST(SupportVerb, OpenQLinesProposeNothingFromQAndAreNamed) {

@@ -1,7 +1,8 @@
 // Issue 44 on the tablet: the Blocks screen's Support view on the
 // tunnel-drive sample's project with a classification form and the
 // designer's classes: the three proposals side by side, a class chosen on
-// the tablet with who decided and why, stored with the visit, and read back
+// the tablet with who decided, why and a change to the class (with its
+// reason), stored with the visit, and read back
 // by `rockface support` (a separate process) from the project.
 #include <fstream>
 
@@ -94,10 +95,21 @@ TEST(SupportView, AClassChosenOnTheTabletIsStoredAndReadBack) {
   EXPECT_THROW(s.tap("Decide"), InputError) << "no reason yet: Decide is disabled";
   app.blocks.support.reason = "water at the face";
   s.frame();
+  // A change to the class for this round: refused until it says why.
+  s.tap("Add a change");
+  ASSERT_EQ(app.blocks.support.changes.size(), 1u);
+  app.blocks.support.changes[0] = {"bolt spacing", "1.5 m", "1.2 m", ""};  // as typed
+  s.frame();
+  EXPECT_THROW(s.tap("Decide"), InputError) << "the change has no reason: Decide is disabled";
+  app.blocks.support.changes[0].reason = "wedge W3 below FoS 1.5";
+  s.frame();
   s.tap("Decide");
   s.settle();
   ASSERT_TRUE(v.proposals && v.proposals->decision) << v.message;
   EXPECT_EQ(v.proposals->decision->class_name, chosen);
+  ASSERT_EQ(v.proposals->decision->changes.size(), 1u);
+  EXPECT_EQ(v.proposals->decision->changes[0].to, "1.2 m");
+  EXPECT_TRUE(app.blocks.support.changes.empty()) << "the form is cleared once decided";
   s.screenshot();
 
   // Read back by the command line from the project.
@@ -113,6 +125,11 @@ TEST(SupportView, AClassChosenOnTheTabletIsStoredAndReadBack) {
   EXPECT_EQ(d.at("decided_by"), "A. Geologist");
   EXPECT_EQ(d.at("reason"), "water at the face");
   EXPECT_EQ(d.at("proposed"), proposed);
+  ASSERT_EQ(d.at("changes").size(), 1u);
+  EXPECT_EQ(d["changes"][0].at("what"), "bolt spacing");
+  EXPECT_EQ(d["changes"][0].at("from"), "1.5 m");
+  EXPECT_EQ(d["changes"][0].at("to"), "1.2 m");
+  EXPECT_EQ(d["changes"][0].at("reason"), "wedge W3 below FoS 1.5");
   EXPECT_FALSE(d.at("decided_at").get<std::string>().empty());
 }
 
