@@ -87,6 +87,10 @@ Eigen::Vector3d toward_viewer(const storage::ImportedSurface& s,
   return n;
 }
 
+nlohmann::json json_vector(const Eigen::Vector3d& p) {
+  return {p.x(), p.y(), p.z()};
+}
+
 }  // namespace import_detail
 
 ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request) {
@@ -96,6 +100,23 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   if (request.visit) require_visit(store, *request.visit);
   if (!request.frame.empty() && request.frame != "survey" && request.frame != "local")
     throw InputError("--frame", "'" + request.frame + "' (survey or local)");
+
+  if (request.pole && !request.gcp_file.empty())
+    throw InputError("--pole", "the range pole or ground control (--gcp), not both");
+  if (request.north && !request.pole)
+    throw InputError("--azimuth",
+                     "a compass line turns a cloud the range pole has levelled: give --pole");
+  std::optional<double> pole_length = request.pole_length_m;
+  if (request.pole && !pole_length) {
+    // The length the geologist typed for this project's photographs.
+    if (const auto typed = store.latest_capture_setting("range_pole_m")) try {
+        pole_length = std::stod(*typed);
+      } catch (const std::exception&) {
+      }
+    if (!pole_length)
+      throw InputError("--range-pole",
+                       "give the pole's length between its targets (the project has none typed)");
+  }
 
   // Everything read and checked before anything is stored.
   storage::ImportedSurface s = storage::read_imported_surface(request.file, request.file_options);
@@ -248,6 +269,36 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
     r.control_rms_m = control->rms_m;
     r.control_scale = onto.scale;
   }
+  // The range pole's targets picked on the cloud (import_range_pole.h): the
+  // cloud and the view's camera scaled, levelled and, by a compass line,
+  // turned to north; the lower target at the origin as a photographed pole's.
+  std::optional<ImportPoleRegistration> pole;
+  nlohmann::json pole_targets = nlohmann::json::array();
+  if (request.pole) {
+    if (r.frame != "local")
+      throw InputError("--pole",
+                       "the cloud is in survey coordinates already (give --frame local "
+                       "if they are a local frame's)");
+    pole = register_import_to_pole(*request.pole, *pole_length, request.north, camera);
+    const char* which[2] = {"lower", "upper"};
+    const Eigen::Vector3d ends[2] = {request.pole->lower, request.pole->upper};
+    for (int k = 0; k < 2; ++k) {
+      // Its pixel in the view, where the 3D view and the report show it.
+      const Eigen::Vector3d c = view.pose.to_camera(ends[k]);
+      const Eigen::Vector2d px(view.intrinsics.fx * c.x() / c.z() + view.intrinsics.cx,
+                               view.intrinsics.fy * c.y() / c.z() + view.intrinsics.cy);
+      pole_targets.push_back({{"which", which[k]},
+                              {"left_px", {px.x(), px.y()}},
+                              {"file", {ends[k].x(), ends[k].y(), ends[k].z()}},
+                              {"world", json_vector(pole->transform.apply(ends[k]))}});
+    }
+    for (auto& p : s.mesh.vertices) p = pole->transform.apply(p);
+    camera = camera.then(pole->transform);
+    r.registration_kind =
+        storage::registration_kind("range pole", request.north ? "compass" : "none");
+    r.pole_length_m = pole_length;
+    r.north_rotation_deg = pole->north_rotation_deg;
+  }
   view.pixels = {};  // the texture coordinates say the same; memory for the store
   r.view_width = view.intrinsics.width;
   r.view_height = view.intrinsics.height;
@@ -291,6 +342,9 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
                                      : ", its own faces");
   words << (r.frame == "survey" ? ", survey coordinates (file offset " + words_of(s.datum) + ")"
                                 : ", a local frame");
+  if (pole)
+    words << (request.north ? " scaled and levelled by the range pole, north by the compass line"
+                            : " scaled and levelled by the range pole (no north)");
   nlohmann::json p;
   p["format"] = "rockface-import/1";
   p["import"] = {{"file", source},
@@ -325,6 +379,19 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
                            {"worst", control->worst_id},
                            {"worst_m", control->worst_m},
                            {"residuals", residuals}}}};
+  } else if (pole) {
+    p["registration"] = {{"scale_source", "range pole"},
+                         {"vertical_source", "range pole"},
+                         {"north_source", request.north ? "compass" : "none"},
+                         {"scaled", true},
+                         {"scale", pole->transform.scale},
+                         {"range_pole", {{"length_m", *pole_length}, {"targets", pole_targets}}}};
+    if (request.north)
+      p["registration"]["north"] = {
+          {"azimuth_deg", request.north->azimuth_deg},
+          {"declination_deg", request.north->declination_deg},
+          {"reference_line", {json_vector(request.north->from), json_vector(request.north->to)}},
+          {"rotation_about_vertical_deg", pole->north_rotation_deg.value_or(0.0)}};
   } else if (r.frame == "survey")
     p["registration"] = {{"scale_source", storage::kScannerRegistrationWords},
                          {"vertical_source", storage::kScannerRegistrationWords},
