@@ -94,6 +94,12 @@ nlohmann::json json_vector(const Eigen::Vector3d& p) {
 }  // namespace import_detail
 
 ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request) {
+  NoProgress quiet;
+  return import_surface(store, request, quiet);
+}
+
+ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request,
+                            Progress& progress) {
   using namespace import_detail;
   if (store.read_only())
     throw InputError(store.file().string(), "cannot import: " + store.read_only_reason());
@@ -119,6 +125,7 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   }
 
   // Everything read and checked before anything is stored.
+  progress.step("reading the file", 0.02);
   storage::ImportedSurface s = storage::read_imported_surface(request.file, request.file_options);
   const std::string source = request.file.string();
   ImportResult r;
@@ -158,6 +165,7 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   }
 
   // A cloud becomes a surface; a mesh keeps its faces.
+  progress.step(s.mesh.faces.empty() ? "meshing the cloud" : "reading its faces", 0.3);
   const bool from_file = !s.mesh.faces.empty();
   std::vector<std::array<int, 3>> triangles;
   photogrammetry::CloudMesh meshed;
@@ -226,6 +234,7 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
       for (auto& t : triangles) std::swap(t[1], t[2]);
   }
 
+  progress.step("drawing the view to map on", 0.6);
   cv::Mat texture;
   if (!s.texture_file.empty()) {
     texture = cv::imread(s.texture_file, cv::IMREAD_COLOR);
@@ -414,6 +423,7 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   capture.right = capture.left;  // one view: the image is stored once
   capture.settings = {{"source", "import"}, {"file", source}, {"format", s.format}};
 
+  progress.step("storing the 3D image", 0.85);
   store.in_one_transaction("importing " + source, [&] {
     if (r.project_datum_set) {
       storage::ProjectInfo info = project;

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include "core/common/progress.h"
 #include "firmware-app/import/import_range_pole.h"
 #include "storage/exchange/import_reader.h"
 #include "storage/project/project_records.h"
@@ -73,6 +74,10 @@ struct ImportResult {
   std::string view_side;  // how the side the view looks from was chosen, in words
 };
 
+// `progress` hears each stage (reading, meshing, the view, storing); a
+// cancel before the storing stores nothing.
+ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request,
+                            Progress& progress);
 ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request);
 
 }  // namespace rockface::app

@@ -8,6 +8,7 @@
 
 #include "ui/app/export_to_stick.h"
 #include "ui/app/screens.h"
+#include "ui/project/import_picker.h"
 #include "ui/project/office_panel.h"
 #include "ui/project/tunnel_panel.h"
 #include "ui/widgets/format.h"
@@ -160,6 +161,7 @@ bool draw_project(AppState& app, ProjectSession& s) {
     }
   }
   ImGui::PopStyleVar();
+  draw_import_picker(app);
   if (s.visit()) {
     ImGui::Separator();
     draw_visit(s);
