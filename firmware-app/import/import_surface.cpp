@@ -183,9 +183,12 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
     // A scan of a whole round in a project with a tunnel: on the tunnel's
     // developed view (round_meshing.h); any other cloud over its best plane.
     std::optional<RoundMesh> round;
-    if (r.frame == "survey")
+    // (A cloud with texture coordinates but no faces keeps its order: the
+    // round's reordering moves points and colours only.)
+    if (r.frame == "survey" && s.mesh.texcoords.empty())
       if (const auto tunnel = store.load_tunnel())
-        round = mesh_round(s.mesh.vertices, tunnel->alignment(r.project_datum), tunnel->profile);
+        round = mesh_round(s.mesh.vertices, s.mesh.colours, tunnel->alignment(r.project_datum),
+                           tunnel->profile);
     try {
       if (!round) meshed = photogrammetry::mesh_point_cloud(s.mesh.vertices);
     } catch (const InputError& e) {

@@ -66,6 +66,8 @@ ImportedSurface read_imported_surface(const std::filesystem::path& file,
   ImportedSurface out;
   if (ext == ".obj") {
     out = read_obj(file);
+  } else if (ext == ".las") {
+    out = read_las_file(file);  // in chunks: the largest clouds come as LAS
   } else {
     const std::string bytes = read_whole_file(source);
     if (ext == ".ply") {
@@ -77,8 +79,6 @@ ImportedSurface read_imported_surface(const std::filesystem::path& file,
           std::filesystem::path(out.texture_file).is_relative())
         out.texture_file = (file.parent_path() / out.texture_file).string();
       out.format = "PLY";
-    } else if (ext == ".las") {
-      out = parse_las(bytes, source);
     } else if (ext == ".pcd") {
       out = parse_pcd(bytes, source);
     } else if (ext == ".ptx") {
