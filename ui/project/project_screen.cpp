@@ -161,7 +161,6 @@ bool draw_project(AppState& app, ProjectSession& s) {
     }
   }
   ImGui::PopStyleVar();
-  draw_import_picker(app);
   if (s.visit()) {
     ImGui::Separator();
     draw_visit(s);
@@ -191,6 +190,7 @@ void draw_project_screen(AppState& app) {
   begin_side_panel("project tunnel and office", layout);
   draw_tunnel_panel(app);
   draw_office_panel(app);
+  draw_import_picker(app);
   ImGui::EndChild();
 }
 
