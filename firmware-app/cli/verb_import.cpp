@@ -1,14 +1,20 @@
 // `rockface import PROJECT FILE [--visit N | --new-visit] [--columns x,y,z,...]
-//  [--offset E,N,Z] [--frame survey|local] [--view-from E,N,Z]`: a point cloud
+//  [--offset E,N,Z] [--frame survey|local] [--view-from E,N,Z] [--gcp FILE |
+//  --pole X1,Y1,Z1,X2,Y2,Z2 [--range-pole M] [--azimuth DEG --reference-line
+//  X1,Y1,Z1,X2,Y2,Z2 [--declination DEG]]]`: a point cloud
 // or a mesh made elsewhere (PLY, OBJ, PCD, XYZ / TXT / CSV / ASC, PTS, PTX,
 // LAS) becomes a visit's 3D image (firmware-app/import/import_surface.h).
 // A refused file stops the verb (exit 2) naming the file and the place, with
 // nothing stored.
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
+#include <vector>
 
 #include "core/common/error.h"
 #include "firmware-app/cli/verb_registry.h"
@@ -18,7 +24,8 @@ namespace rockface::app {
 namespace {
 
 struct ImportOptions {
-  std::string project, file, columns, offset, view_from, frame, gcp;
+  std::string project, file, columns, offset, view_from, frame, gcp, pole, reference_line;
+  std::optional<double> range_pole, azimuth, declination;
   storage::RecordId visit = 0;
   bool new_visit = false;
 };
@@ -36,6 +43,29 @@ Eigen::Vector3d parse_triple(const std::string& text, const std::string& option)
   }
   if (in >> comma) throw InputError(option, "'" + text + "' is not three numbers E,N,Z");
   return v;
+}
+
+// "X1,Y1,Z1,X2,Y2,Z2": two points of the cloud, in the file's coordinates.
+std::array<Eigen::Vector3d, 2> parse_two_points(const std::string& text,
+                                                const std::string& option) {
+  std::vector<double> v;
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || item.find_first_not_of(" ", used) != std::string::npos || !std::isfinite(x))
+      throw InputError(option, "'" + text + "' is not six numbers X1,Y1,Z1,X2,Y2,Z2");
+    v.push_back(x);
+  }
+  if (v.size() != 6)
+    throw InputError(option, "'" + text + "' is not six numbers X1,Y1,Z1,X2,Y2,Z2");
+  return {Eigen::Vector3d(v[0], v[1], v[2]), Eigen::Vector3d(v[3], v[4], v[5])};
 }
 
 // E N Z to the millimetre, as a surveyor reads them.
@@ -68,6 +98,17 @@ VerbRun setup_import(CLI::App& sub) {
   sub.add_option("--gcp", o->gcp,
                  "a local-frame cloud's ground control points, CSV id,u,v,X,Y,Z (u, v pixels of "
                  "its virtual view, as `replay --gcp` takes them on the left photograph)");
+  sub.add_option("--pole", o->pole,
+                 "a local-frame cloud's range pole: its lower and upper target's centres in the "
+                 "file's coordinates, X1,Y1,Z1,X2,Y2,Z2 (scales and levels it)");
+  sub.add_option("--range-pole", o->range_pole,
+                 "m between the pole's targets; default: the length typed last in the project");
+  sub.add_option("--azimuth", o->azimuth,
+                 "with --pole: the compass bearing of --reference-line, degrees (gives north)");
+  sub.add_option("--reference-line", o->reference_line,
+                 "with --azimuth: the line's two points in the file's coordinates, "
+                 "X1,Y1,Z1,X2,Y2,Z2");
+  sub.add_option("--declination", o->declination, "degrees, east positive (with --azimuth)");
   return [o] {
     ImportRequest request;
     request.file = o->file;
@@ -77,6 +118,23 @@ VerbRun setup_import(CLI::App& sub) {
     if (!o->view_from.empty()) request.view_from = parse_triple(o->view_from, "--view-from");
     request.frame = o->frame;
     request.gcp_file = o->gcp;
+    if (!o->pole.empty()) {
+      const auto ends = parse_two_points(o->pole, "--pole");
+      request.pole = ImportPole{ends[0], ends[1]};
+    } else if (o->range_pole) {
+      throw InputError("--range-pole", "needs --pole (the targets' centres on the cloud)");
+    }
+    request.pole_length_m = o->range_pole;
+    if (o->azimuth.has_value() != !o->reference_line.empty())
+      throw InputError(o->azimuth ? "--reference-line" : "--azimuth",
+                       "--azimuth and --reference-line go together (the compass bearing of a "
+                       "line given by two points of the cloud)");
+    if (o->declination && !o->azimuth)
+      throw InputError("--declination", "needs --azimuth and --reference-line");
+    if (o->azimuth) {
+      const auto ends = parse_two_points(o->reference_line, "--reference-line");
+      request.north = ImportCompassLine{ends[0], ends[1], *o->azimuth, o->declination.value_or(0)};
+    }
     if (o->visit != 0) request.visit = o->visit;
     // The file is checked before the project is created or changed.
     if (!std::filesystem::is_regular_file(o->file)) throw InputError(o->file, "no such file");
@@ -122,6 +180,14 @@ VerbRun setup_import(CLI::App& sub) {
       if (r.project_datum_set)
         std::cout << "the project's datum is now the control points': "
                   << survey_words(r.project_datum) << "\n";
+    } else if (r.pole_length_m) {
+      std::cout << "a local frame scaled and levelled by the range pole (" << *r.pole_length_m
+                << " m between its targets)";
+      if (r.north_rotation_deg)
+        std::cout << ", north by the compass line (turned " << *r.north_rotation_deg << " deg)";
+      else
+        std::cout << ", no north: +y is the view's direction, not north";
+      std::cout << "\n";
     } else {
       std::cout << "a local frame: not scaled or oriented until control points are picked on it\n";
     }

@@ -87,9 +87,19 @@ Eigen::Vector3d toward_viewer(const storage::ImportedSurface& s,
   return n;
 }
 
+nlohmann::json json_vector(const Eigen::Vector3d& p) {
+  return {p.x(), p.y(), p.z()};
+}
+
 }  // namespace import_detail
 
 ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request) {
+  NoProgress quiet;
+  return import_surface(store, request, quiet);
+}
+
+ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request,
+                            Progress& progress) {
   using namespace import_detail;
   if (store.read_only())
     throw InputError(store.file().string(), "cannot import: " + store.read_only_reason());
@@ -97,7 +107,25 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   if (!request.frame.empty() && request.frame != "survey" && request.frame != "local")
     throw InputError("--frame", "'" + request.frame + "' (survey or local)");
 
+  if (request.pole && !request.gcp_file.empty())
+    throw InputError("--pole", "the range pole or ground control (--gcp), not both");
+  if (request.north && !request.pole)
+    throw InputError("--azimuth",
+                     "a compass line turns a cloud the range pole has levelled: give --pole");
+  std::optional<double> pole_length = request.pole_length_m;
+  if (request.pole && !pole_length) {
+    // The length the geologist typed for this project's photographs.
+    if (const auto typed = store.latest_capture_setting("range_pole_m")) try {
+        pole_length = std::stod(*typed);
+      } catch (const std::exception&) {
+      }
+    if (!pole_length)
+      throw InputError("--range-pole",
+                       "give the pole's length between its targets (the project has none typed)");
+  }
+
   // Everything read and checked before anything is stored.
+  progress.step("reading the file", 0.02);
   storage::ImportedSurface s = storage::read_imported_surface(request.file, request.file_options);
   const std::string source = request.file.string();
   ImportResult r;
@@ -137,6 +165,7 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   }
 
   // A cloud becomes a surface; a mesh keeps its faces.
+  progress.step(s.mesh.faces.empty() ? "meshing the cloud" : "reading its faces", 0.3);
   const bool from_file = !s.mesh.faces.empty();
   std::vector<std::array<int, 3>> triangles;
   photogrammetry::CloudMesh meshed;
@@ -154,9 +183,12 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
     // A scan of a whole round in a project with a tunnel: on the tunnel's
     // developed view (round_meshing.h); any other cloud over its best plane.
     std::optional<RoundMesh> round;
-    if (r.frame == "survey")
+    // (A cloud with texture coordinates but no faces keeps its order: the
+    // round's reordering moves points and colours only.)
+    if (r.frame == "survey" && s.mesh.texcoords.empty())
       if (const auto tunnel = store.load_tunnel())
-        round = mesh_round(s.mesh.vertices, tunnel->alignment(r.project_datum), tunnel->profile);
+        round = mesh_round(s.mesh.vertices, s.mesh.colours, tunnel->alignment(r.project_datum),
+                           tunnel->profile);
     try {
       if (!round) meshed = photogrammetry::mesh_point_cloud(s.mesh.vertices);
     } catch (const InputError& e) {
@@ -205,6 +237,7 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
       for (auto& t : triangles) std::swap(t[1], t[2]);
   }
 
+  progress.step("drawing the view to map on", 0.6);
   cv::Mat texture;
   if (!s.texture_file.empty()) {
     texture = cv::imread(s.texture_file, cv::IMREAD_COLOR);
@@ -247,6 +280,36 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
     r.control_points = control->residuals.size();
     r.control_rms_m = control->rms_m;
     r.control_scale = onto.scale;
+  }
+  // The range pole's targets picked on the cloud (import_range_pole.h): the
+  // cloud and the view's camera scaled, levelled and, by a compass line,
+  // turned to north; the lower target at the origin as a photographed pole's.
+  std::optional<ImportPoleRegistration> pole;
+  nlohmann::json pole_targets = nlohmann::json::array();
+  if (request.pole) {
+    if (r.frame != "local")
+      throw InputError("--pole",
+                       "the cloud is in survey coordinates already (give --frame local "
+                       "if they are a local frame's)");
+    pole = register_import_to_pole(*request.pole, *pole_length, request.north, camera);
+    const char* which[2] = {"lower", "upper"};
+    const Eigen::Vector3d ends[2] = {request.pole->lower, request.pole->upper};
+    for (int k = 0; k < 2; ++k) {
+      // Its pixel in the view, where the 3D view and the report show it.
+      const Eigen::Vector3d c = view.pose.to_camera(ends[k]);
+      const Eigen::Vector2d px(view.intrinsics.fx * c.x() / c.z() + view.intrinsics.cx,
+                               view.intrinsics.fy * c.y() / c.z() + view.intrinsics.cy);
+      pole_targets.push_back({{"which", which[k]},
+                              {"left_px", {px.x(), px.y()}},
+                              {"file", {ends[k].x(), ends[k].y(), ends[k].z()}},
+                              {"world", json_vector(pole->transform.apply(ends[k]))}});
+    }
+    for (auto& p : s.mesh.vertices) p = pole->transform.apply(p);
+    camera = camera.then(pole->transform);
+    r.registration_kind =
+        storage::registration_kind("range pole", request.north ? "compass" : "none");
+    r.pole_length_m = pole_length;
+    r.north_rotation_deg = pole->north_rotation_deg;
   }
   view.pixels = {};  // the texture coordinates say the same; memory for the store
   r.view_width = view.intrinsics.width;
@@ -291,6 +354,9 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
                                      : ", its own faces");
   words << (r.frame == "survey" ? ", survey coordinates (file offset " + words_of(s.datum) + ")"
                                 : ", a local frame");
+  if (pole)
+    words << (request.north ? " scaled and levelled by the range pole, north by the compass line"
+                            : " scaled and levelled by the range pole (no north)");
   nlohmann::json p;
   p["format"] = "rockface-import/1";
   p["import"] = {{"file", source},
@@ -325,6 +391,19 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
                            {"worst", control->worst_id},
                            {"worst_m", control->worst_m},
                            {"residuals", residuals}}}};
+  } else if (pole) {
+    p["registration"] = {{"scale_source", "range pole"},
+                         {"vertical_source", "range pole"},
+                         {"north_source", request.north ? "compass" : "none"},
+                         {"scaled", true},
+                         {"scale", pole->transform.scale},
+                         {"range_pole", {{"length_m", *pole_length}, {"targets", pole_targets}}}};
+    if (request.north)
+      p["registration"]["north"] = {
+          {"azimuth_deg", request.north->azimuth_deg},
+          {"declination_deg", request.north->declination_deg},
+          {"reference_line", {json_vector(request.north->from), json_vector(request.north->to)}},
+          {"rotation_about_vertical_deg", pole->north_rotation_deg.value_or(0.0)}};
   } else if (r.frame == "survey")
     p["registration"] = {{"scale_source", storage::kScannerRegistrationWords},
                          {"vertical_source", storage::kScannerRegistrationWords},
@@ -347,6 +426,7 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   capture.right = capture.left;  // one view: the image is stored once
   capture.settings = {{"source", "import"}, {"file", source}, {"format", s.format}};
 
+  progress.step("storing the 3D image", 0.85);
   store.in_one_transaction("importing " + source, [&] {
     if (r.project_datum_set) {
       storage::ProjectInfo info = project;

@@ -20,6 +20,8 @@
 
 #include <Eigen/Core>
 
+#include "core/common/progress.h"
+#include "firmware-app/import/import_range_pole.h"
 #include "storage/exchange/import_reader.h"
 #include "storage/project/project_records.h"
 #include "storage/project/project_store.h"
@@ -40,6 +42,13 @@ struct ImportRequest {
   // A local-frame cloud's ground control: CSV id,u,v,X,Y,Z, u and v pixels
   // of its virtual view (import_control_points.h); empty: none.
   std::string gcp_file;
+  // A local-frame cloud's range pole (import_range_pole.h): its two targets
+  // in the file's coordinates, the pole's length (none: the length the
+  // geologist last typed in this project, `range_pole_m`), and a compass
+  // line for north.
+  std::optional<ImportPole> pole;
+  std::optional<double> pole_length_m;
+  std::optional<ImportCompassLine> north;
 };
 
 struct ImportResult {
@@ -49,9 +58,11 @@ struct ImportResult {
   bool meshed = false;             // a cloud meshed here (else the file's faces)
   std::string round_meshing;       // a round meshed on the tunnel's developed view: how
   std::string frame;               // "survey" | "local"
-  std::string registration_kind;   // "scanner" | "ground_control" | "none"
+  std::string registration_kind;   // "scanner" | "ground_control" | "range_pole[_compass]" | "none"
   std::size_t control_points = 0;  // ground control: how many, their rms, the scale found
   double control_rms_m = 0, control_scale = 1;
+  std::optional<double> pole_length_m;       // the range pole's, when it registered the cloud
+  std::optional<double> north_rotation_deg;  // the compass line's turn about the vertical
   Eigen::Vector3d file_datum = Eigen::Vector3d::Zero();  // absolute = stored vertex + datum
   Eigen::Vector3d project_datum = Eigen::Vector3d::Zero();
   bool project_datum_set = false;  // the project took the file's datum
@@ -63,6 +74,10 @@ struct ImportResult {
   std::string view_side;  // how the side the view looks from was chosen, in words
 };
 
+// `progress` hears each stage (reading, meshing, the view, storing); a
+// cancel before the storing stores nothing.
+ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request,
+                            Progress& progress);
 ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& request);
 
 }  // namespace rockface::app

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "core/common/error.h"
@@ -28,13 +29,22 @@ constexpr double kNoiseCellM = 0.1, kNoiseCellSpacings = 4;
 
 }  // namespace
 
-std::optional<RoundMesh> mesh_round(const std::vector<Eigen::Vector3d>& points,
+std::optional<RoundMesh> mesh_round(std::vector<Eigen::Vector3d>& points,
+                                    std::vector<std::array<std::uint8_t, 3>>& colours,
                                     const tunnel::Alignment& alignment,
                                     const tunnel::DesignProfile& profile) {
+  if (!colours.empty() && colours.size() != points.size())
+    throw Error("mesh_round: " + std::to_string(colours.size()) + " colours for " +
+                std::to_string(points.size()) + " points");
   const Eigen::Vector2d centre = profile.ray_centre();
   const double perimeter = profile.perimeter();
-  std::vector<int> walls, face;
-  std::vector<Eigen::Vector2d> developed;  // of walls
+  // Memory (issue 43: a 10-million-point round must fit the tablet): the
+  // walls are meshed on the cloud's own vectors, reordered in place (walls
+  // first), never on a copy of them; what is done with is freed before the
+  // next step's vectors are made.
+  std::vector<bool> is_wall(points.size(), false);
+  std::vector<Eigen::Vector2d> developed(points.size());  // (chainage, s) of each wall point
+  std::size_t wall_count = 0;
   constexpr int kBins = 36;
   std::array<bool, kBins> covered{};
   double lo_c = std::numeric_limits<double>::infinity(), hi_c = -lo_c;
@@ -45,84 +55,103 @@ std::optional<RoundMesh> mesh_round(const std::vector<Eigen::Vector3d>& points,
     const tunnel::ProfileHit hit = profile.ray_hit(angle);
     const double ratio = d.norm() / hit.distance;
     if (ratio >= kWallInner && ratio <= kWallOuter) {
-      walls.push_back(static_cast<int>(i));
-      developed.emplace_back(place.chainage, hit.s);
+      is_wall[i] = true;
+      ++wall_count;
+      developed[i] = {place.chainage, hit.s};
       const int bin =
           std::clamp(static_cast<int>((angle + M_PI) / (2 * M_PI) * kBins), 0, kBins - 1);
       covered[static_cast<std::size_t>(bin)] = true;
       lo_c = std::min(lo_c, place.chainage);
       hi_c = std::max(hi_c, place.chainage);
-    } else {
-      face.push_back(static_cast<int>(i));
     }
   }
   const auto around = std::count(covered.begin(), covered.end(), true);
-  if (static_cast<double>(walls.size()) < kRoundWallShare * static_cast<double>(points.size()) ||
+  if (static_cast<double>(wall_count) < kRoundWallShare * static_cast<double>(points.size()) ||
       around < kBins / 2 || hi_c - lo_c < 1.0)
     return std::nullopt;
 
-  RoundMesh out;
-  out.wall_points = walls.size();
-  out.face_points = face.size();
-  // The seam: the walls within kSeamBandM of the outline's start again past
-  // its end; a triangle is kept when its centroid lies in
-  // [band / 2, perimeter + band / 2), so the seam's triangles come once,
-  // from where the band has neighbours on both sides.
-  const double band = std::min(kSeamBandM, perimeter / 4);
-  std::vector<Eigen::Vector3d> wall_xyz;
-  std::vector<Eigen::Vector2d> wall_uv;
-  std::vector<int> original;  // wall mesh vertex -> cloud index
-  wall_xyz.reserve(walls.size());
-  for (std::size_t k = 0; k < walls.size(); ++k) {
-    wall_xyz.push_back(points[static_cast<std::size_t>(walls[k])]);
-    wall_uv.push_back(developed[k]);
-    original.push_back(walls[k]);
-  }
-  for (std::size_t k = 0; k < walls.size(); ++k)
-    if (developed[k].y() < band) {
-      wall_xyz.push_back(points[static_cast<std::size_t>(walls[k])]);
-      wall_uv.emplace_back(developed[k].x(), developed[k].y() + perimeter);
-      original.push_back(walls[k]);
+  // Walls first, the face after them: the cloud's points, colours and
+  // developed coordinates swapped together.
+  for (std::size_t i = 0, j = points.size(); i < j;) {
+    if (is_wall[i]) {
+      ++i;
+      continue;
     }
-  developed = {};
-  photogrammetry::CloudMesh wall_mesh = photogrammetry::mesh_point_cloud_on(wall_xyz, wall_uv);
+    --j;
+    if (!is_wall[j]) continue;
+    std::swap(points[i], points[j]);
+    if (!colours.empty()) std::swap(colours[i], colours[j]);
+    std::swap(developed[i], developed[j]);
+    is_wall[i] = true;
+    is_wall[j] = false;
+    ++i;
+  }
+  is_wall = {};
+  RoundMesh out;
+  out.wall_points = wall_count;
+  out.face_points = points.size() - wall_count;
+  // The face's points aside while the walls are meshed on `points` itself.
+  std::vector<Eigen::Vector3d> face_xyz(points.begin() + static_cast<std::ptrdiff_t>(wall_count),
+                                        points.end());
+  points.resize(wall_count);
+  developed.resize(wall_count);
+  // The seam: the walls within kSeamBandM of the outline's start again past
+  // its end (appended, their source in `band_source`); a triangle is kept
+  // when its centroid lies in [band / 2, perimeter + band / 2), so the
+  // seam's triangles come once, from where the band has neighbours on both
+  // sides.
+  const double band = std::min(kSeamBandM, perimeter / 4);
+  std::vector<int> band_source;
+  for (std::size_t k = 0; k < wall_count; ++k)
+    if (developed[k].y() < band) band_source.push_back(static_cast<int>(k));
+  points.reserve(wall_count + band_source.size());
+  developed.reserve(wall_count + band_source.size());
+  for (int k : band_source) {
+    points.push_back(points[static_cast<std::size_t>(k)]);
+    developed.emplace_back(developed[static_cast<std::size_t>(k)].x(),
+                           developed[static_cast<std::size_t>(k)].y() + perimeter);
+  }
+  const auto cloud_index = [&](int v) {
+    return static_cast<std::size_t>(v) < wall_count
+               ? v
+               : band_source[static_cast<std::size_t>(v) - wall_count];
+  };
+  photogrammetry::CloudMesh wall_mesh = photogrammetry::mesh_point_cloud_on(points, developed);
   out.median_spacing = wall_mesh.median_spacing;
   out.noise_sigma_m = photogrammetry::cloud_noise_sigma(
-      wall_xyz, wall_uv, std::max(kNoiseCellM, kNoiseCellSpacings * out.median_spacing));
+      points, developed, std::max(kNoiseCellM, kNoiseCellSpacings * out.median_spacing));
+  // The cloud whole again (walls, then the face).
+  points.resize(wall_count);
+  points.insert(points.end(), face_xyz.begin(), face_xyz.end());
   // Every triangle counter-clockwise in (chainage, s) faces one side of the
   // walls (the developed view is a continuous map): the side the majority of
-  // a sample faces, against the axis, is flipped for all.
+  // a sample faces, against the axis, is flipped for all. The triangles
+  // kept are mapped to the cloud's indices in place (no second list).
   double toward_axis = 0;
   const std::size_t stride = std::max<std::size_t>(1, wall_mesh.triangles.size() / 1000);
-  std::vector<std::array<int, 3>> kept;
-  kept.reserve(wall_mesh.triangles.size());
-  for (std::size_t t = 0; t < wall_mesh.triangles.size(); ++t) {
-    const auto& tri = wall_mesh.triangles[t];
-    const double s = (wall_uv[static_cast<std::size_t>(tri[0])].y() +
-                      wall_uv[static_cast<std::size_t>(tri[1])].y() +
-                      wall_uv[static_cast<std::size_t>(tri[2])].y()) /
-                     3;
+  std::vector<std::array<int, 3>> kept = std::move(wall_mesh.triangles);
+  std::size_t kept_count = 0;
+  for (std::size_t t = 0; t < kept.size(); ++t) {
+    const std::array<int, 3> tri = kept[t];
+    const auto uv = [&](int k) { return developed[static_cast<std::size_t>(tri[k])]; };
+    const double s = (uv(0).y() + uv(1).y() + uv(2).y()) / 3;
     if (s < band / 2 || s >= perimeter + band / 2) continue;
-    const std::array<int, 3> mapped{original[static_cast<std::size_t>(tri[0])],
-                                    original[static_cast<std::size_t>(tri[1])],
-                                    original[static_cast<std::size_t>(tri[2])]};
+    const std::array<int, 3> mapped{cloud_index(tri[0]), cloud_index(tri[1]), cloud_index(tri[2])};
     if (t % stride == 0) {
       const Eigen::Vector3d& a = points[static_cast<std::size_t>(mapped[0])];
       const Eigen::Vector3d n = (points[static_cast<std::size_t>(mapped[1])] - a)
                                     .cross(points[static_cast<std::size_t>(mapped[2])] - a);
-      const double c = (wall_uv[static_cast<std::size_t>(tri[0])].x() +
-                        wall_uv[static_cast<std::size_t>(tri[1])].x() +
-                        wall_uv[static_cast<std::size_t>(tri[2])].x()) /
-                       3;
+      const double c = (uv(0).x() + uv(1).x() + uv(2).x()) / 3;
       const Eigen::Vector3d axis = alignment.frame_at(c).to_local(centre.x(), centre.y());
       toward_axis += n.normalized().dot((axis - a).normalized());
     }
-    kept.push_back(mapped);
+    kept[kept_count++] = mapped;
   }
+  kept.resize(kept_count);
   if (toward_axis < 0)
     for (auto& t : kept) std::swap(t[1], t[2]);
-  wall_xyz = {};
-  wall_uv = {};
+  developed = {};
+  band_source = {};
 
   // The face's end of the round and the direction back along the drive.
   const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
@@ -131,17 +160,14 @@ std::optional<RoundMesh> mesh_round(const std::vector<Eigen::Vector3d>& points,
   out.toward_viewer = -at_front.along;
   out.view_centre = at_front.to_local(centre.x(), centre.y());
   std::string face_words = "no face";
-  if (face.size() >= 3) {
-    std::vector<Eigen::Vector3d> face_xyz;
-    face_xyz.reserve(face.size());
-    for (int i : face) face_xyz.push_back(points[static_cast<std::size_t>(i)]);
+  if (face_xyz.size() >= 3) {
     try {
       const photogrammetry::CloudMesh face_mesh = photogrammetry::mesh_point_cloud(face_xyz);
       const bool flip = face_mesh.normal.dot(out.toward_viewer) < 0;
+      kept.reserve(kept.size() + face_mesh.triangles.size());
+      const int first = static_cast<int>(wall_count);  // the face's points follow the walls
       for (const auto& t : face_mesh.triangles) {
-        std::array<int, 3> mapped{face[static_cast<std::size_t>(t[0])],
-                                  face[static_cast<std::size_t>(t[1])],
-                                  face[static_cast<std::size_t>(t[2])]};
+        std::array<int, 3> mapped{first + t[0], first + t[1], first + t[2]};
         if (flip) std::swap(mapped[1], mapped[2]);
         kept.push_back(mapped);
       }

@@ -11,6 +11,7 @@
 // (arc length 0 = perimeter) is closed by meshing a band of the outline's
 // start again past its end.
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,11 +41,15 @@ struct RoundMesh {
 };
 
 // `points`: datum-relative, as `alignment` (the project's tunnel at the
-// project's datum). None when the cloud is not a round: fewer than 75 % of
-// its points within 0.7 to 1.6 times the design radius toward them, or those
-// covering less than half of the way round the outline, or less than 1 m of
-// chainage.
-std::optional<RoundMesh> mesh_round(const std::vector<Eigen::Vector3d>& points,
+// project's datum); `colours`: empty or one per point. None when the cloud
+// is not a round: fewer than 75 % of its points within 0.7 to 1.6 times the
+// design radius toward them, or those covering less than half of the way
+// round the outline, or less than 1 m of chainage; the cloud is then as it
+// was. A round's points and colours are reordered in place, the walls'
+// first and the face's after them (the triangles index the new order): its
+// 10 million points are meshed without a copy of them (issue 43's peak).
+std::optional<RoundMesh> mesh_round(std::vector<Eigen::Vector3d>& points,
+                                    std::vector<std::array<std::uint8_t, 3>>& colours,
                                     const tunnel::Alignment& alignment,
                                     const tunnel::DesignProfile& profile);
 

@@ -87,15 +87,23 @@ class StoreFieldReportRunner final : public ui::FieldReportRunner {
 };
 
 // Issue 43: the visit's exports onto a USB stick, as `rockface export`
-// writes them, from its own read-only connection to the project. The sticks
-// are the drives mounted under /media or /run/media (udisks2's automount of
-// removable drives), or the folder ROCKFACE_USB_DIR names (a tablet whose
-// stick has a fixed mount point; the tests).
+// writes them, from its own read-only connection to the project (the sticks:
+// firmware-app/services/removable_drives.h).
 class StoreExportRunner final : public ui::ExportRunner {
  public:
   std::vector<ui::ExportTarget> targets() override;
   std::string write(const std::filesystem::path& project, storage::RecordId visit_id,
                     const ui::ExportTarget& target, Progress& progress) override;
+};
+
+// Issue 43: a 3D image made elsewhere as a new visit, as `rockface import`
+// makes it (firmware-app/import/import_surface.h), from the tablet's storage
+// or a USB stick (removable_drives.h).
+class StoreImportRunner final : public ui::ImportRunner {
+ public:
+  std::vector<ui::ImportFolder> sticks() override;
+  ui::ImportedVisit import(const std::filesystem::path& project, const std::filesystem::path& file,
+                           Progress& progress) override;
 };
 
 class StoreNorthRunner final : public ui::NorthRunner {
@@ -143,6 +151,7 @@ struct FieldRunners {
   StoreExportRunner exports;
   StoreNorthRunner north;
   StoreSupportRunner support;
+  StoreImportRunner imports;
 
   ui::FieldServices services() {
     ui::FieldServices s;
@@ -159,6 +168,7 @@ struct FieldRunners {
     s.exports = &exports;
     s.north = &north;
     s.support = &support;
+    s.imports = &imports;
     return s;
   }
 };

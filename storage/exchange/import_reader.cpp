@@ -16,12 +16,35 @@ std::string imported_surface_extensions() {
   return ".ply, .obj, .pcd, .xyz, .txt, .csv, .asc, .pts, .ptx, .las";
 }
 
-ImportedSurface read_imported_surface(const std::filesystem::path& file,
-                                      const ImportFileOptions& options) {
-  const std::string source = file.string();
+namespace {
+
+std::string lower_extension(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+std::string imported_surface_format_by_name(const std::filesystem::path& file) {
+  const std::string ext = lower_extension(file);
+  if (ext == ".ply") return "PLY";
+  if (ext == ".obj") return "OBJ";
+  if (ext == ".pcd") return "PCD";
+  if (ext == ".xyz" || ext == ".txt" || ext == ".csv" || ext == ".asc") return "text cloud";
+  if (ext == ".pts") return "PTS";
+  if (ext == ".ptx") return "PTX";
+  if (ext == ".las") return "LAS";
+  if (ext == ".laz") return "LAZ";
+  if (ext == ".e57") return "E57";
+  return {};
+}
+
+ImportedSurface read_imported_surface(const std::filesystem::path& file,
+                                      const ImportFileOptions& options) {
+  const std::string source = file.string();
+  const std::string ext = lower_extension(file);
   if (ext == ".laz")
     throw InputError(source,
                      "LAZ (compressed LAS) is not read: decompress it to LAS first, e.g. `laszip "
@@ -43,6 +66,8 @@ ImportedSurface read_imported_surface(const std::filesystem::path& file,
   ImportedSurface out;
   if (ext == ".obj") {
     out = read_obj(file);
+  } else if (ext == ".las") {
+    out = read_las_file(file);  // in chunks: the largest clouds come as LAS
   } else {
     const std::string bytes = read_whole_file(source);
     if (ext == ".ply") {
@@ -54,8 +79,6 @@ ImportedSurface read_imported_surface(const std::filesystem::path& file,
           std::filesystem::path(out.texture_file).is_relative())
         out.texture_file = (file.parent_path() / out.texture_file).string();
       out.format = "PLY";
-    } else if (ext == ".las") {
-      out = parse_las(bytes, source);
     } else if (ext == ".pcd") {
       out = parse_pcd(bytes, source);
     } else if (ext == ".ptx") {

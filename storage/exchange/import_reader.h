@@ -27,4 +27,10 @@ ImportedSurface read_imported_surface(const std::filesystem::path& file,
 // The names read, for messages and help: ".ply, .obj, ...".
 std::string imported_surface_extensions();
 
+// The format a file's name says, as the import names it ("PLY", "LAS",
+// "text cloud"; "LAZ" and "E57", which the import refuses saying how to
+// convert them), empty when its name says none: what the tablet's file
+// picker lists.
+std::string imported_surface_format_by_name(const std::filesystem::path& file);
+
 }  // namespace rockface::storage

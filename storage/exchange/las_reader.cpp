@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -63,12 +65,26 @@ std::optional<RecordLayout> layout_of(int format) {
 
 }  // namespace las_detail
 
-ImportedSurface parse_las(std::string_view bytes, const std::string& source) {
+namespace {
+
+// A LAS file's bytes: its head (the header, at least its first 375 bytes or
+// the whole file when shorter), its size, and any range of it on demand.
+struct LasBytes {
+  std::string_view head;
+  std::uint64_t size = 0;
+  std::function<std::string_view(std::uint64_t at, std::size_t n)> fetch;
+};
+
+// The points are taken in chunks of about 8 MiB of records.
+constexpr std::size_t kChunkBytes = std::size_t{8} << 20;
+
+ImportedSurface parse_las_bytes(const LasBytes& file, const std::string& source) {
   using las_detail::little;
+  const std::string_view bytes = file.head;
   if (bytes.size() < 4 || bytes.substr(0, 4) != "LASF")
     throw InputError(source, "not a LAS file (it does not begin with LASF)");
-  if (bytes.size() < 227)
-    throw InputError(source, "the header is cut short (" + std::to_string(bytes.size()) +
+  if (file.size < 227)
+    throw InputError(source, "the header is cut short (" + std::to_string(file.size) +
                                  " bytes; a LAS header takes at least 227)");
   const int major = static_cast<unsigned char>(bytes[24]);
   const int minor = static_cast<unsigned char>(bytes[25]);
@@ -84,14 +100,14 @@ ImportedSurface parse_las(std::string_view bytes, const std::string& source) {
     throw InputError(source, "header: its size " + std::to_string(header_size) +
                                  " is less than LAS " + version + "'s " +
                                  std::to_string(las_detail::header_size_of(minor)) + " bytes");
-  if (header_size > bytes.size())
+  if (header_size > file.size)
     throw InputError(source, "header: its size " + std::to_string(header_size) +
-                                 " is more than the file's " + std::to_string(bytes.size()) +
+                                 " is more than the file's " + std::to_string(file.size) +
                                  " bytes");
-  if (point_offset < header_size || point_offset > bytes.size())
+  if (point_offset < header_size || point_offset > file.size)
     throw InputError(source, "header: the points are said to start at byte " +
                                  std::to_string(point_offset) + ", outside the file's " +
-                                 std::to_string(bytes.size()) + " bytes after its header");
+                                 std::to_string(file.size) + " bytes after its header");
   // LASzip marks a compressed file by setting the format's two high bits.
   if (format_byte & 0xC0)
     throw InputError(source, "a LAZ (compressed LAS) file: decompress it first, e.g. `laszip -i " +
@@ -117,12 +133,12 @@ ImportedSurface parse_las(std::string_view bytes, const std::string& source) {
                                    " disagree");
     count = wide;
   }
-  const std::uint64_t room = (bytes.size() - point_offset) / record_length;
+  const std::uint64_t room = (file.size - point_offset) / record_length;
   if (count > room)
     throw InputError(source, "header: " + std::to_string(count) + " points of " +
                                  std::to_string(record_length) + " bytes do not fit in the " +
-                                 std::to_string(bytes.size() - point_offset) +
-                                 " bytes after byte " + std::to_string(point_offset));
+                                 std::to_string(file.size - point_offset) + " bytes after byte " +
+                                 std::to_string(point_offset));
   Eigen::Vector3d scale, offset, lo, hi;
   for (int k = 0; k < 3; ++k) {
     scale[k] = little<double>(bytes, 131 + 8 * static_cast<std::size_t>(k));
@@ -151,12 +167,21 @@ ImportedSurface parse_las(std::string_view bytes, const std::string& source) {
   // A point may lie outside the header's bounds by the rounding of the
   // bounds themselves: half a scale unit, and the doubles' own rounding.
   const Eigen::Vector3d slack = scale.cwiseAbs() + 1e-9 * (lo.cwiseAbs() + hi.cwiseAbs());
+  const std::uint64_t per_chunk = std::max<std::uint64_t>(1, kChunkBytes / record_length);
+  std::string_view chunk;
+  std::uint64_t chunk_first = 0;
   for (std::uint64_t n = 0; n < count; ++n) {
-    const std::size_t at = point_offset + n * record_length;
+    if (n == 0 || n - chunk_first == per_chunk) {
+      chunk_first = n;
+      const std::uint64_t records = std::min(per_chunk, count - n);
+      chunk = file.fetch(point_offset + n * record_length,
+                         static_cast<std::size_t>(records * record_length));
+    }
+    const std::size_t at = static_cast<std::size_t>((n - chunk_first) * record_length);
     Eigen::Vector3d p;
     for (int k = 0; k < 3; ++k)
       p[k] =
-          little<std::int32_t>(bytes, at + 4 * static_cast<std::size_t>(k)) * scale[k] + offset[k];
+          little<std::int32_t>(chunk, at + 4 * static_cast<std::size_t>(k)) * scale[k] + offset[k];
     for (int k = 0; k < 3; ++k)
       if (p[k] < lo[k] - slack[k] || p[k] > hi[k] + slack[k])
         throw InputError(source, "point " + std::to_string(n) + ": " + "XYZ"[k] + " " +
@@ -167,7 +192,7 @@ ImportedSurface parse_las(std::string_view bytes, const std::string& source) {
     if (layout->rgb_at) {
       std::array<std::uint16_t, 3> c{};
       for (std::size_t k = 0; k < 3; ++k) {
-        c[k] = little<std::uint16_t>(bytes, at + layout->rgb_at + 2 * k);
+        c[k] = little<std::uint16_t>(chunk, at + layout->rgb_at + 2 * k);
         brightest = std::max(brightest, c[k]);
       }
       rgb16.push_back(c);
@@ -182,6 +207,43 @@ ImportedSurface parse_las(std::string_view bytes, const std::string& source) {
                             static_cast<std::uint8_t>(c[2] >> shift)});
   take_datum(out);
   return out;
+}
+
+}  // namespace
+
+ImportedSurface parse_las(std::string_view bytes, const std::string& source) {
+  LasBytes file;
+  file.head = bytes;
+  file.size = bytes.size();
+  file.fetch = [bytes](std::uint64_t at, std::size_t n) {
+    return bytes.substr(static_cast<std::size_t>(at), n);
+  };
+  return parse_las_bytes(file, source);
+}
+
+ImportedSurface read_las_file(const std::filesystem::path& path) {
+  const std::string source = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(source, "cannot open the file");
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw InputError(source, "cannot read the file's size");
+  // 375 bytes: a LAS 1.4 header, the longest.
+  std::string head(static_cast<std::size_t>(std::min<std::uint64_t>(size, 375)), '\0');
+  if (!in.read(head.data(), static_cast<std::streamsize>(head.size())))
+    throw InputError(source, "cannot read the file");
+  std::string buffer;
+  LasBytes file;
+  file.head = head;
+  file.size = size;
+  file.fetch = [&](std::uint64_t at, std::size_t n) {
+    buffer.resize(n);
+    in.seekg(static_cast<std::streamoff>(at));
+    if (!in.read(buffer.data(), static_cast<std::streamsize>(n)))
+      throw InputError(source, "cannot read the file at byte " + std::to_string(at));
+    return std::string_view(buffer);
+  };
+  return parse_las_bytes(file, source);
 }
 
 }  // namespace rockface::storage

@@ -12,6 +12,7 @@
 // file is refused), the legacy and 64-bit counts of LAS 1.4 agreeing, finite
 // non-zero scales; then every point against the header's bounding box (a
 // header that lies about its points is refused).
+#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -21,5 +22,10 @@ namespace rockface::storage {
 
 // `bytes` is the whole file; `source` names it in errors.
 ImportedSurface parse_las(std::string_view bytes, const std::string& source);
+
+// The same read from the file in chunks of 8 MiB of records: a 10-million-
+// point file (360 MB) is never held whole (issue 43's peak), with the same
+// checks and the same words.
+ImportedSurface read_las_file(const std::filesystem::path& file);
 
 }  // namespace rockface::storage

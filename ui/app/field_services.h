@@ -25,6 +25,7 @@
 #include "core/measure/proposals/trace_proposals.h"
 #include "core/rockmass/classification_form.h"
 #include "storage/project/project_records.h"
+#include "ui/app/import_runner.h"
 
 namespace rockface::ui {
 
@@ -386,6 +387,7 @@ struct FieldServices {
   NorthRunner* north = nullptr;  // null: the Model screen gives no north
   // Issue 44.
   SupportRunner* support = nullptr;  // null: the Blocks screen shows no Support view
+  ImportRunner* imports = nullptr;   // null: no Import a 3D image (issue 43)
 };
 
 }  // namespace rockface::ui

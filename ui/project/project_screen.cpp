@@ -8,6 +8,7 @@
 
 #include "ui/app/export_to_stick.h"
 #include "ui/app/screens.h"
+#include "ui/project/import_picker.h"
 #include "ui/project/office_panel.h"
 #include "ui/project/tunnel_panel.h"
 #include "ui/widgets/format.h"
@@ -187,6 +188,7 @@ void draw_project_screen(AppState& app) {
   begin_side_panel("project tunnel and office", layout);
   draw_tunnel_panel(app);
   draw_office_panel(app);
+  draw_import_picker(app);
   ImGui::EndChild();
 }
 

@@ -3,6 +3,7 @@
 // panel and the sync to the office.
 #include <string>
 
+#include "ui/project/import_picker.h"
 #include "ui/project/office_panel.h"
 #include "ui/project/tunnel_panel.h"
 
@@ -10,8 +11,9 @@ namespace rockface::ui {
 
 struct ProjectScreenState {
   std::string new_project_name = "site";
-  TunnelState tunnel;  // the project's tunnel and the round's excavation
-  OfficeState office;  // the sync to the office
+  TunnelState tunnel;        // the project's tunnel and the round's excavation
+  OfficeState office;        // the sync to the office
+  ImportPickerState import;  // a 3D image made elsewhere, as a visit (issue 43)
 };
 
 }  // namespace rockface::ui

@@ -2,6 +2,8 @@
 // xyz_reader.h, ptx_reader.h, pcd_reader.h, obj_reader.h, import_reader.h):
 // what each reads as meant, survey coordinates to 0.1 mm, and every class of
 // malformation refused naming the file and the place.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -121,6 +123,45 @@ TEST(LasReader, Formats0And3OfLas12) {
   const ImportedSurface rgb = parse_las(las_file(pts, 2, 3), "rgb.las");
   ASSERT_EQ(rgb.mesh.colours.size(), 3u);
   EXPECT_EQ(rgb.mesh.colours[2][1], 255);
+}
+
+// Issue 43's peak: a LAS file is read from disk in chunks of 8 MiB of
+// records, never whole. Read so, a file of several chunks (300,000 points of
+// 36 bytes: 10.8 MB, a chunk boundary inside it) gives exactly what the
+// bytes in memory give, and a file cut short or whose header lies is refused
+// in the same words, the lie found in a later chunk too.
+TEST(LasReader, AFileReadInChunksIsTheFileReadWhole) {
+  std::vector<LasPoint> pts;
+  for (int i = 0; i < 300000; ++i)
+    pts.push_back(
+        {kUtm + Eigen::Vector3d(0.0001 * (i % 1000), 0.0001 * (i / 1000), 0.001 * (i % 7)),
+         {static_cast<std::uint16_t>(i % 65536), 256, 0}});
+  const std::string bytes = las_file(pts, 4, 7);
+  const fs::path dir = fs::temp_directory_path() / ("las-chunks-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const auto write = [&](const std::string& name, const std::string& b) {
+    std::ofstream(dir / name, std::ios::binary) << b;
+    return dir / name;
+  };
+  const ImportedSurface whole = parse_las(bytes, "scan.las");
+  const ImportedSurface chunked = read_las_file(write("scan.las", bytes));
+  ASSERT_EQ(chunked.mesh.vertices.size(), pts.size());
+  EXPECT_EQ(chunked.datum, whole.datum);
+  EXPECT_EQ(chunked.mesh.vertices, whole.mesh.vertices);  // bit for bit
+  EXPECT_EQ(chunked.mesh.colours, whole.mesh.colours);
+  EXPECT_EQ(chunked.format, whole.format);
+
+  std::string cut = bytes;
+  cut.resize(cut.size() - 10);
+  EXPECT_EQ(refusal([&] { read_las_file(write("cut.las", cut)); }),
+            refusal([&] { parse_las(cut, (dir / "cut.las").string()); }));
+  std::string lies = bytes;
+  // Point 290,000 (in the second chunk) 200 km east of the header's bounds.
+  put<std::int32_t>(lies, 375 + 290000 * 36, 2'000'000'000);
+  const std::string why = refusal([&] { read_las_file(write("lies.las", lies)); });
+  EXPECT_NE(why.find("outside the header's bounds"), std::string::npos) << why;
+  EXPECT_EQ(why, refusal([&] { parse_las(lies, (dir / "lies.las").string()); }));
+  fs::remove_all(dir);
 }
 
 TEST(LasReader, RefusesTruncatedFiles) {

@@ -1,0 +1,211 @@
+// Issue 43: a cloud in a local frame (a drone model in its software's units,
+// a scanner's own frame) is scaled and levelled by the range pole standing at
+// the face, and turned to north by a compass line, as a photographed visit
+// is. The test's face and pole are made in the site's frame (x East, y North,
+// z Up), with 2 mm of scanner noise, then moved, turned and scaled into a
+// local frame by a known similarity; the pole's targets and the compass
+// line's ends are picked as the cloud's own (noisy) points, as CloudCompare's
+// point picking gives them. The truth is the applied similarity: the stored
+// 3D image must be the site's frame with the lower target at the origin.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "storage/project/model_registration.h"
+#include "storage/project/project_store.h"
+#include "tests/support/cli_run.h"
+#include "tests/support/temp_folders.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rockface::test::run_rockface;
+
+constexpr double kNoise = 0.002;     // the scanner's scatter per coordinate, m
+constexpr double kPoleLength = 2.0;  // m between the targets' centres
+
+struct LocalCloud {
+  fs::path dir, file;
+  std::vector<Eigen::Vector3d> site;         // noise-free, the site's frame, in the file's order
+  std::vector<Eigen::Vector3d> file_points;  // as written (noisy, local frame)
+  std::size_t lower = 0, upper = 0, line_from = 0, line_to = 0;  // indices of the picks
+};
+
+std::string triple(const Eigen::Vector3d& p) {
+  char text[120];
+  std::snprintf(text, sizeof text, "%.7f,%.7f,%.7f", p.x(), p.y(), p.z());
+  return text;
+}
+
+// A face 3 x 2.5 m facing south, 10 cm of relief, every 2 cm; the pole 15 cm
+// in front of it, its targets 0.5 and 2.5 m up, a few points on each.
+LocalCloud write_local_cloud(const std::string& name) {
+  LocalCloud c;
+  c.dir = fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
+  fs::remove_all(c.dir);
+  fs::create_directories(c.dir);
+  rockface::test::remove_when_passed(c.dir);
+  const int columns = 151, rows = 126;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const double a = 0.02 * i, b = 0.02 * j;
+      c.site.emplace_back(a, 0.1 * std::sin(2 * a) * std::cos(3 * b), b);
+    }
+  c.line_from = 90 * columns + 10;  // a line across the face 1.8 m up, 2.6 m long
+  c.line_to = 90 * columns + 140;
+  for (const double height : {0.5, 0.5 + kPoleLength}) {
+    // Each target a 3 x 3 patch of points 1 cm apart facing south; its
+    // centre is the middle one.
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (dx == 0 && dz == 0) (height < 1 ? c.lower : c.upper) = c.site.size();
+        c.site.emplace_back(1.51 + 0.01 * dx, -0.15, height + 0.01 * dz);
+      }
+  }
+  // The local frame: local = k Q site + t (k: the drone software's units).
+  const double k = 0.37;
+  const Eigen::Matrix3d Q =
+      (Eigen::AngleAxisd(130 * M_PI / 180, Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd(25 * M_PI / 180, Eigen::Vector3d(1, 1, 0).normalized()))
+          .toRotationMatrix();
+  const Eigen::Vector3d t(12.3, -4.5, 101.0);
+  std::mt19937 random(43);
+  std::normal_distribution<double> noise(0.0, kNoise);
+  c.file = c.dir / "face-local.xyz";
+  std::FILE* f = std::fopen(c.file.c_str(), "w");
+  for (const auto& p : c.site) {
+    const Eigen::Vector3d scanned =
+        p + Eigen::Vector3d(noise(random), noise(random), noise(random));
+    Eigen::Vector3d local = k * (Q * scanned) + t;
+    char text[100];
+    std::snprintf(text, sizeof text, "%.7f %.7f %.7f", local.x(), local.y(), local.z());
+    std::sscanf(text, "%lf %lf %lf", &local.x(), &local.y(), &local.z());
+    std::fprintf(f, "%s\n", text);
+    c.file_points.push_back(local);  // the numbers as written: what a pick reads
+  }
+  std::fclose(f);
+  return c;
+}
+
+// The similarity stored = s R (site - lower target) + t, fitted by Eigen's
+// Umeyama over every point (not the code under test).
+struct Fit {
+  double scale = 0, tilt_deg = 0, heading_deg = 0;
+};
+
+Fit fit_stored_to_site(const std::vector<Eigen::Vector3d>& stored, const LocalCloud& c) {
+  const auto n = static_cast<Eigen::Index>(c.site.size());
+  Eigen::Matrix3Xd src(3, n), dst(3, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    src.col(i) = c.site[static_cast<std::size_t>(i)] - c.site[c.lower];
+    dst.col(i) = stored[static_cast<std::size_t>(i)];
+  }
+  const Eigen::Matrix4d M = Eigen::umeyama(src, dst, true);
+  Fit fit;
+  fit.scale = M.block<3, 1>(0, 0).norm();
+  const Eigen::Matrix3d R = M.topLeftCorner<3, 3>() / fit.scale;
+  fit.tilt_deg = std::acos(std::clamp((R * Eigen::Vector3d::UnitZ()).z(), -1.0, 1.0)) * 180 / M_PI;
+  const Eigen::Vector3d east = R * Eigen::Vector3d::UnitX();
+  fit.heading_deg = std::atan2(east.y(), east.x()) * 180 / M_PI;
+  return fit;
+}
+
+// Each target and each end of the line is a point picked with the scanner's
+// noise (kNoise per coordinate): a length between two picks is off by about
+// sqrt(2) kNoise, so 3 sigma of the pole's scale is 3 sqrt(2) kNoise / L
+// (0.42 %), of its vertical the same in radians (0.24 deg), and of the
+// compass line's bearing 3 sqrt(2) kNoise / 2.6 m (0.19 deg) plus what the
+// tilt carries into it.
+const double kScaleTolerance = 3 * std::sqrt(2.0) * kNoise / kPoleLength;
+const double kTiltToleranceDeg = kScaleTolerance * 180 / M_PI;
+const double kHeadingToleranceDeg =
+    3 * std::sqrt(2.0) * kNoise / 2.6 * 180 / M_PI + kTiltToleranceDeg;
+
+TEST(ImportRangePole, ALocalCloudIsScaledLevelledAndTurnedToNorthByThePoleAndACompassLine) {
+  const LocalCloud c = write_local_cloud("import-pole");
+  // The compass bearing of the line as the geologist measured it on site
+  // (noise-free site points).
+  const Eigen::Vector3d line = c.site[c.line_to] - c.site[c.line_from];
+  const double azimuth = std::atan2(line.x(), line.y()) * 180 / M_PI;
+  const fs::path project = c.dir / "pole.rockface";
+  const auto r = run_rockface(
+      "import " + project.string() + " " + c.file.string() + " --frame local --pole " +
+      triple(c.file_points[c.lower]) + "," + triple(c.file_points[c.upper]) + " --range-pole " +
+      std::to_string(kPoleLength) + " --azimuth " + std::to_string(azimuth) + " --reference-line " +
+      triple(c.file_points[c.line_from]) + "," + triple(c.file_points[c.line_to]));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("scaled and levelled by the range pole"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("north by the compass line"), std::string::npos) << r.out;
+  auto store = rockface::storage::ProjectStore::open(project);
+  const auto model = store.load_model(store.list_models().back().id);
+  ASSERT_EQ(model.mesh.vertices.size(), c.site.size());
+  const auto reg = rockface::storage::read_model_registration(model.registration);
+  EXPECT_EQ(reg.kind, "range_pole_compass");
+  EXPECT_TRUE(reg.has_pole);
+  EXPECT_EQ(reg.pole_targets.size(), 2u);
+  EXPECT_TRUE(reg.oriented());
+  EXPECT_TRUE(reg.is_scaled());
+  // The lower target's pick is the origin, as a photographed pole's.
+  EXPECT_LT(model.mesh.vertices[c.lower].norm(), 1e-9);
+  const Fit fit = fit_stored_to_site(model.mesh.vertices, c);
+  std::printf(
+      "measured: scale %.6f (tolerance %.6f), tilt %.4f deg (%.4f), heading %.4f deg (%.4f)\n",
+      fit.scale, kScaleTolerance, fit.tilt_deg, kTiltToleranceDeg, fit.heading_deg,
+      kHeadingToleranceDeg);
+  EXPECT_NEAR(fit.scale, 1.0, kScaleTolerance);
+  EXPECT_LT(fit.tilt_deg, kTiltToleranceDeg);
+  EXPECT_NEAR(fit.heading_deg, 0.0, kHeadingToleranceDeg);
+}
+
+TEST(ImportRangePole, WithoutACompassLineThePoleScalesAndLevelsAndNorthIsNotClaimed) {
+  const LocalCloud c = write_local_cloud("import-pole-level");
+  const fs::path project = c.dir / "level.rockface";
+  // The length the geologist typed for the project's photographs is taken
+  // when the import gives none: a first import without it is refused.
+  const std::string pole = " --frame local --pole " + triple(c.file_points[c.lower]) + "," +
+                           triple(c.file_points[c.upper]);
+  const auto refused = run_rockface("import " + project.string() + " " + c.file.string() + pole);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--range-pole"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(project));  // nothing stored, no project left behind
+  const auto r = run_rockface("import " + project.string() + " " + c.file.string() + pole +
+                              " --range-pole " + std::to_string(kPoleLength));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("no north"), std::string::npos) << r.out;
+  auto store = rockface::storage::ProjectStore::open(project);
+  const auto model = store.load_model(store.list_models().back().id);
+  const auto reg = rockface::storage::read_model_registration(model.registration);
+  EXPECT_EQ(reg.kind, "range_pole");
+  EXPECT_FALSE(reg.oriented());
+  ASSERT_EQ(model.mesh.vertices.size(), c.site.size());
+  const Fit fit = fit_stored_to_site(model.mesh.vertices, c);
+  std::printf(
+      "measured: scale %.6f (tolerance %.6f), tilt %.4f deg (%.4f), heading %.4f deg (%.4f)\n",
+      fit.scale, kScaleTolerance, fit.tilt_deg, kTiltToleranceDeg, fit.heading_deg,
+      kHeadingToleranceDeg);
+  EXPECT_NEAR(fit.scale, 1.0, kScaleTolerance);
+  EXPECT_LT(fit.tilt_deg, kTiltToleranceDeg);
+}
+
+TEST(ImportRangePole, ThePoleAndGroundControlAreNotTakenTogether) {
+  const LocalCloud c = write_local_cloud("import-pole-gcp");
+  const fs::path project = c.dir / "both.rockface";
+  const auto r =
+      run_rockface("import " + project.string() + " " + c.file.string() +
+                   " --frame local --range-pole 2 --gcp " + c.file.string() + " --pole " +
+                   triple(c.file_points[c.lower]) + "," + triple(c.file_points[c.upper]));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("not both"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(project));
+}
+
+}  // namespace
