@@ -75,14 +75,16 @@ FacetOutline facet_outline(const photogrammetry::SurfaceMesh& mesh,
     probe.reserve(edge_count);
     return probe.bucket_count();
   }();
-  std::vector<std::uint64_t> keys(edge_count);  // in the order the triangles list them
+  std::vector<std::uint64_t> keys(edge_count);       // in the order the triangles list them
+  std::vector<std::uint32_t> bucket_of(edge_count);  // the modulo, taken once
   std::vector<std::uint32_t> bucket_start(bucket_count + 1, 0);
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const auto& tri = mesh.triangles[static_cast<std::size_t>(triangles[i])];
     for (int s = 0; s < 3; ++s) {
-      const std::uint64_t k = key(tri[s], tri[(s + 1) % 3]);
-      keys[3 * i + static_cast<std::size_t>(s)] = k;
-      ++bucket_start[k % bucket_count + 1];
+      const std::size_t e = 3 * i + static_cast<std::size_t>(s);
+      keys[e] = key(tri[s], tri[(s + 1) % 3]);
+      bucket_of[e] = static_cast<std::uint32_t>(keys[e] % bucket_count);
+      ++bucket_start[bucket_of[e] + 1];
     }
   }
   for (std::size_t b = 0; b < bucket_count; ++b) bucket_start[b + 1] += bucket_start[b];
@@ -91,11 +93,10 @@ FacetOutline facet_outline(const photogrammetry::SurfaceMesh& mesh,
   {
     std::vector<std::uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
     for (std::size_t i = 0; i < edge_count; ++i)
-      in_bucket[fill[keys[i] % bucket_count]++] = static_cast<std::uint32_t>(i);
+      in_bucket[fill[bucket_of[i]]++] = static_cast<std::uint32_t>(i);
   }
-  // The first edge with key k in its bucket (edge_count: none).
-  const auto first_with = [&](std::uint64_t k) -> std::size_t {
-    const std::size_t b = k % bucket_count;
+  // The first edge with key k, in its bucket b (edge_count: none).
+  const auto first_with = [&](std::uint64_t k, std::size_t b) -> std::size_t {
     for (std::uint32_t j = bucket_start[b]; j < bucket_start[b + 1]; ++j)
       if (keys[in_bucket[j]] == k) return in_bucket[j];
     return edge_count;
@@ -108,9 +109,12 @@ FacetOutline facet_outline(const photogrammetry::SurfaceMesh& mesh,
   std::vector<BoundaryEdge> boundary;
   for (std::size_t i = 0; i < edge_count; ++i) {
     const int u = static_cast<int>(keys[i] >> 32), v = static_cast<int>(keys[i] & 0xffffffffu);
-    if (first_with(keys[i]) != i || first_with(key(v, u)) != edge_count) continue;
-    const std::size_t b = keys[i] % bucket_count;
-    boundary.push_back({in_bucket[bucket_start[b]], static_cast<std::uint32_t>(i), u, v});
+    const std::uint64_t reverse = key(v, u);
+    if (first_with(keys[i], bucket_of[i]) != i ||
+        first_with(reverse, reverse % bucket_count) != edge_count)
+      continue;
+    boundary.push_back(
+        {in_bucket[bucket_start[bucket_of[i]]], static_cast<std::uint32_t>(i), u, v});
   }
   std::sort(boundary.begin(), boundary.end(), [](const BoundaryEdge& x, const BoundaryEdge& y) {
     return x.bucket_first != y.bucket_first ? x.bucket_first > y.bucket_first : x.first > y.first;
