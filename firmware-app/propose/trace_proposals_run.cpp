@@ -1,5 +1,7 @@
 #include "firmware-app/propose/trace_proposals_run.h"
 
+#include <memory>
+
 #include "core/analysis/preset_options.h"
 #include "core/common/units.h"
 #include "firmware-app/measure/measures_json.h"
@@ -15,25 +17,67 @@ std::vector<measure::ProposalFacet> proposal_facets(const measure::FacetSearch& 
   return out;
 }
 
+namespace {
+
+// How many of the longest chains the first proposals come from: on the
+// 24 Mpx dense face, a handful of the strongest traces, measured in a few
+// hundredths of a second once the cues are found.
+constexpr std::size_t kFirstChains = 16;
+
+// The options of the preset with the model's depth precision.
+measure::ProposalOptions options_for(Preset preset, double point_sigma_m) {
+  measure::ProposalOptions options = analysis::preset_options(preset).proposals;
+  options.measure.point_sigma = point_sigma_m;
+  return options;
+}
+
+// A mesh with texture coordinates only, given its lattice's pixels from
+// them (the inverse of firmware-app/records/project_mesh.cpp); null when
+// the mesh has its pixels already (or nothing to make them from).
+std::unique_ptr<photogrammetry::SurfaceMesh> with_lattice(const photogrammetry::SurfaceMesh& mesh,
+                                                          const cv::Mat& photo) {
+  if (!mesh.pixels.empty() || photo.empty() || mesh.texcoords.size() != mesh.size()) return nullptr;
+  auto lattice = std::make_unique<photogrammetry::SurfaceMesh>(mesh);
+  const float w = static_cast<float>(photo.cols), h = static_cast<float>(photo.rows);
+  lattice->texture_width = photo.cols;
+  lattice->texture_height = photo.rows;
+  lattice->pixels.reserve(lattice->texcoords.size());
+  for (const auto& t : lattice->texcoords)
+    lattice->pixels.emplace_back(t.x() * w - 0.5f, (1.0f - t.y()) * h - 0.5f);
+  return lattice;
+}
+
+}  // namespace
+
 measure::ProposalResult propose_on_model(const photogrammetry::SurfaceMesh& mesh,
                                          const measure::MeshPicker& picker,
                                          const measure::PhotoView& view, const cv::Mat& photo,
                                          const std::vector<measure::ProposalFacet>& facets,
                                          Preset preset, double point_sigma_m, Progress& progress) {
-  measure::ProposalOptions options = analysis::preset_options(preset).proposals;
-  options.measure.point_sigma = point_sigma_m;
-  if (!mesh.pixels.empty() || photo.empty() || mesh.texcoords.size() != mesh.size())
-    return measure::propose_traces(mesh, picker, view, photo, facets, options, progress,
-                                   "proposals");
-  photogrammetry::SurfaceMesh lattice = mesh;
-  const float w = static_cast<float>(photo.cols), h = static_cast<float>(photo.rows);
-  lattice.texture_width = photo.cols;
-  lattice.texture_height = photo.rows;
-  lattice.pixels.reserve(lattice.texcoords.size());
-  for (const auto& t : lattice.texcoords)
-    lattice.pixels.emplace_back(t.x() * w - 0.5f, (1.0f - t.y()) * h - 0.5f);
-  return measure::propose_traces(lattice, picker, view, photo, facets, options, progress,
-                                 "proposals");
+  const auto lattice = with_lattice(mesh, photo);
+  return measure::propose_traces(lattice ? *lattice : mesh, picker, view, photo, facets,
+                                 options_for(preset, point_sigma_m), progress, "proposals");
+}
+
+measure::ProposalResult propose_first_then_facets(const photogrammetry::SurfaceMesh& mesh,
+                                                  const measure::MeshPicker& picker,
+                                                  const measure::PhotoView& view,
+                                                  const cv::Mat& photo, Preset preset,
+                                                  double point_sigma_m, Progress& progress,
+                                                  const FirstProposals& first) {
+  std::unique_ptr<measure::ProposalSearch> search;
+  {
+    const auto lattice = with_lattice(mesh, photo);
+    search = std::make_unique<measure::ProposalSearch>(lattice ? *lattice : mesh, picker, view,
+                                                       photo, options_for(preset, point_sigma_m),
+                                                       progress, "proposals");
+  }
+  if (first) first(search->longest(kFirstChains, progress));
+  measure::MeasureSettings settings;
+  settings.point_sigma = point_sigma_m;
+  const measure::FacetSearch facets =
+      measure::find_facets(mesh, settings, analysis::preset_options(preset).facets, progress);
+  return search->finish(proposal_facets(facets), progress);
 }
 
 json trace_proposals_json(const measure::ProposalResult& r, const Eigen::Vector3d& datum) {

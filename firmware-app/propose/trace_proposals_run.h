@@ -4,6 +4,7 @@
 // in the left photograph, or only its texture coordinates (a stored model),
 // linked to the facets found on the same image; and their JSON for
 // PROPOSALS.json ("trace_proposals", docs/scene-extensions.md).
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -13,6 +14,7 @@
 #include "core/common/preset.h"
 #include "core/common/progress.h"
 #include "core/measure/facets/facets.h"
+#include "core/measure/proposals/proposal_search.h"
 #include "core/measure/proposals/trace_proposals.h"
 
 namespace rockface::app {
@@ -30,6 +32,21 @@ measure::ProposalResult propose_on_model(const photogrammetry::SurfaceMesh& mesh
                                          const measure::PhotoView& view, const cv::Mat& photo,
                                          const std::vector<measure::ProposalFacet>& facets,
                                          Preset preset, double point_sigma_m, Progress& progress);
+
+// The tablet's Find traces (issue 45: the first proposals within 2 s, the
+// rest as they come): the proposals' cues and chains, the proposals of the
+// longest chains handed to `first` as soon as they are measured (unnamed,
+// not yet linked to a facet), then the facets of the model (the preset's
+// knobs, `point_sigma_m` as their point precision), then every proposal
+// linked to them. The result is that of find_facets then propose_on_model;
+// `first` may be empty (nothing handed out early).
+using FirstProposals = std::function<void(const std::vector<measure::TraceProposal>&)>;
+measure::ProposalResult propose_first_then_facets(const photogrammetry::SurfaceMesh& mesh,
+                                                  const measure::MeshPicker& picker,
+                                                  const measure::PhotoView& view,
+                                                  const cv::Mat& photo, Preset preset,
+                                                  double point_sigma_m, Progress& progress,
+                                                  const FirstProposals& first);
 
 // {"proposals": [...], "notes": [...], ...}; coordinates absolute (+ datum).
 nlohmann::json trace_proposals_json(const measure::ProposalResult& result,

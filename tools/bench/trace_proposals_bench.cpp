@@ -15,15 +15,24 @@
 // before each run through /proc/self/clear_refs), and what it adds to the
 // resident set before the run (the model, picker and photograph are
 // already loaded, as on the tablet).
+//
+// Issue 45's budget (BM_FacetsAndProposals24Mpx): the dense face at 6000 x
+// 4000 reconstructed at the preset it is proposed at, as the tablet's Find
+// traces runs it (the cues, the first proposals, the facets, the rest
+// linked to them): the CPU time of each stage (the thread's, between the
+// stages' progress reports), to the first proposals, to the whole, and the
+// peak memory added.
 #include <benchmark/benchmark.h>
 
 #include <ctime>
 #include <fstream>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "core/measure/facets/facets.h"
 #include "core/photogrammetry/reconstruction/preset.h"
+#include "firmware-app/propose/trace_proposals_run.h"
 #include "tests/support/dark_trace_faces.h"
 #include "tests/support/proposal_faces.h"
 
@@ -43,6 +52,34 @@ double status_mb(const char* field) {
 void reset_peak() {
   std::ofstream("/proc/self/clear_refs") << "5";
 }
+
+double thread_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// The thread's CPU time at each new stage a worker reports: the time of a
+// stage is the CPU from its report to the next stage's.
+class StageClock final : public rockface::Progress {
+ public:
+  void report(std::string_view stage, double) override {
+    if (!stages_.empty() && stages_.back().first == stage) return;
+    stages_.emplace_back(std::string(stage), thread_cpu_s());
+  }
+  bool cancel_requested() const override { return false; }
+  // (stage, CPU seconds) up to `end`.
+  std::vector<std::pair<std::string, double>> durations(double end) const {
+    std::vector<std::pair<std::string, double>> out;
+    for (std::size_t i = 0; i < stages_.size(); ++i)
+      out.emplace_back(stages_[i].first,
+                       (i + 1 < stages_.size() ? stages_[i + 1].second : end) - stages_[i].second);
+    return out;
+  }
+
+ private:
+  std::vector<std::pair<std::string, double>> stages_;
+};
 
 struct Face {
   rt::ProposalFace face;
@@ -132,7 +169,61 @@ void BM_DarkTraceProposals(benchmark::State& state) {
   state.counters["mesh_points"] = static_cast<double>(f.rec.mesh.size());
 }
 
+// Facets and proposals of the dense face at 24 Mpx, reconstructed at the
+// preset they are found at, as the tablet's Find traces runs them
+// (propose_first_then_facets: the cues, the first proposals, the facets,
+// the rest): CPU to the first proposals and to the whole result.
+void BM_FacetsAndProposals24Mpx(benchmark::State& state) {
+  const auto preset = static_cast<rockface::Preset>(state.range(0));
+  auto scene = rt::proposal_face_scene(rt::JointDensity::dense);
+  scene.camera = rockface::testing::synthetic_face(6000, 4000, false, 2.0).camera;
+  const rt::ProposalFace f = rt::build_proposal_face_from(rt::JointDensity::dense, scene, preset);
+  const rm::MeshPicker picker(f.rec.mesh);
+  rm::ProposalResult result;
+  StageClock clock;
+  double first_s = 0, total_s = 0;
+  std::size_t first_count = 0;
+  const double before = status_mb("VmRSS:");
+  reset_peak();
+  for (auto _ : state) {
+    const double from = thread_cpu_s();
+    result = rockface::app::propose_first_then_facets(
+        f.rec.mesh, picker, f.left, f.render.images[0], preset, f.rec.accuracy.sigma_z, clock,
+        [&](const std::vector<rm::TraceProposal>& first) {
+          first_s = thread_cpu_s() - from;
+          first_count = first.size();
+        });
+    total_s = thread_cpu_s() - from;
+    benchmark::DoNotOptimize(result);
+  }
+  const double peak = status_mb("VmHWM:");
+  double facets_s = 0;
+  for (const auto& [stage, s] : clock.durations(thread_cpu_s())) {
+    state.counters["s:" + stage] = s;
+    if (stage.rfind("facets", 0) == 0) facets_s += s;
+  }
+  const auto score = rt::score_proposals(f, result.proposals, picker, 0.05);
+  state.SetLabel(std::string(rockface::preset_name(preset)));
+  state.counters["facets_s"] = facets_s;
+  state.counters["first_s"] = first_s;
+  state.counters["first_proposals"] = static_cast<double>(first_count);
+  state.counters["total_s"] = total_s;
+  state.counters["precision"] = score.precision;
+  state.counters["recall"] = score.recall;
+  state.counters["proposals"] = static_cast<double>(score.proposals);
+  state.counters["mesh_points"] = static_cast<double>(f.rec.mesh.size());
+  state.counters["peak_MB"] = peak;
+  state.counters["added_MB"] = peak - before;
+}
+
 }  // namespace
+
+BENCHMARK(BM_FacetsAndProposals24Mpx)
+    ->Arg(static_cast<int>(rockface::Preset::fast))
+    ->Arg(static_cast<int>(rockface::Preset::standard))
+    ->Arg(static_cast<int>(rockface::Preset::precise))
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 BENCHMARK(BM_DarkTraceProposals)
     ->ArgsProduct({{0, 1, 2}, {0, 1, 2}})

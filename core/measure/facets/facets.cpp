@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <numeric>
 
 #include <Eigen/Eigenvalues>
@@ -101,8 +103,21 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
   if (surface.squaredNorm() > 0) out.surface_normal = surface.normalized();
   if (out.surface_normal.z() < 0) out.surface_normal = -out.surface_normal;
   // Flattest first (qFacets and DSE seed where the surface is most planar);
-  // ties by index keep the result independent of the sort's whims.
-  std::stable_sort(seeds.begin(), seeds.end(), [&](int a, int b) { return bend[a] < bend[b]; });
+  // ties by index keep the result independent of the sort's whims. Sorted
+  // as one 64-bit key per seed, the bend's bits above the index (a bend is
+  // never negative, so its bits order as its value): the order a stable
+  // sort on the bend gives, without its indirect reads.
+  {
+    std::vector<std::uint64_t> keys(seeds.size());
+    for (std::size_t i = 0; i < seeds.size(); ++i) {
+      std::uint32_t bits = 0;
+      std::memcpy(&bits, &bend[seeds[i]], sizeof bits);
+      keys[i] = (static_cast<std::uint64_t>(bits) << 32) | static_cast<std::uint32_t>(seeds[i]);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 0; i < seeds.size(); ++i)
+      seeds[i] = static_cast<int>(keys[i] & 0xffffffffu);
+  }
 
   const double angle = deg_to_rad(options.angle_tolerance_deg);
   const double cos_angle = std::cos(angle), cos_twice = std::cos(2 * angle);
@@ -279,6 +294,10 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
     std::iota(root.begin(), root.end(), 0);
     std::vector<std::vector<int>> group(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) group[i] = found[i].mesh_triangles;
+    // A merged group's measure: that of its last merge, which measured
+    // exactly the group's triangles in their order (kept, not measured
+    // again below).
+    std::vector<Facet> merged(static_cast<std::size_t>(n));
     const auto find = [&](int x) {
       while (root[x] != x) x = root[x] = root[root[x]];
       return x;
@@ -289,8 +308,10 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
       if (ra == rb) continue;
       std::vector<int> both = group[ra];
       both.insert(both.end(), group[rb].begin(), group[rb].end());
-      if (!measured(both).plane.problem.empty()) continue;
+      Facet joined = measured(both);
+      if (!joined.plane.problem.empty()) continue;
       root[rb] = ra;
+      merged[ra] = std::move(joined);
       group[ra] = std::move(both);
       group[rb].clear();
       merged_any = true;
@@ -303,7 +324,7 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
         kept.push_back(std::move(found[i]));
         continue;
       }
-      Facet f = measured(group[i]);
+      Facet f = std::move(merged[i]);
       // The steps: triangles of no facet next to the merged plane's, all
       // three corners within the gate of it.
       const Eigen::Vector3d normal = f.plane.fit.normal;

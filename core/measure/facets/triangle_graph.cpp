@@ -53,17 +53,32 @@ TriangleGraph triangle_graph(const photogrammetry::SurfaceMesh& mesh) {
       edges.push_back({key, static_cast<int>(t), side});
     }
   }
-  std::sort(edges.begin(), edges.end(),
-            [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i + 1;
-    while (j < edges.size() && edges[j].key == edges[i].key) ++j;
-    if (j - i == 2) {  // a manifold edge: exactly two triangles share it
-      g.neighbours[edges[i].triangle][edges[i].side] = edges[i + 1].triangle;
-      g.neighbours[edges[i + 1].triangle][edges[i + 1].side] = edges[i].triangle;
-    }
-    i = j;
+  // The uses of each edge: grouped by their lower vertex (a counting sort
+  // over the vertices), then matched on their higher vertex within the
+  // group, a few uses long on a lattice. The pairs a sort of all the keys
+  // finds, without sorting millions of them.
+  const auto lower = [](const EdgeUse& e) { return static_cast<std::size_t>(e.key >> 32); };
+  std::vector<std::size_t> group_start(static_cast<std::size_t>(vertex_count) + 1, 0);
+  for (const EdgeUse& e : edges) ++group_start[lower(e) + 1];
+  for (std::size_t v = 0; v + 1 < group_start.size(); ++v) group_start[v + 1] += group_start[v];
+  std::vector<const EdgeUse*> by_lower(edges.size());
+  {
+    std::vector<std::size_t> fill(group_start.begin(), group_start.end() - 1);
+    for (const EdgeUse& e : edges) by_lower[fill[lower(e)]++] = &e;
   }
+  for (std::size_t v = 0; v + 1 < group_start.size(); ++v)
+    for (std::size_t a = group_start[v]; a < group_start[v + 1]; ++a) {
+      const EdgeUse& use = *by_lower[a];
+      int uses = 0;
+      const EdgeUse* other = nullptr;
+      for (std::size_t b = group_start[v]; b < group_start[v + 1]; ++b)
+        if (by_lower[b]->key == use.key) {
+          ++uses;
+          if (b != a) other = by_lower[b];
+        }
+      // A manifold edge: exactly two triangles share it.
+      if (uses == 2) g.neighbours[use.triangle][use.side] = other->triangle;
+    }
   return g;
 }
 

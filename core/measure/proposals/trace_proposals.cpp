@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <numeric>
+#include <stdexcept>
 
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
@@ -9,6 +12,7 @@
 #include "core/common/error.h"
 #include "core/measure/proposals/line_chains.h"
 #include "core/measure/proposals/line_evidence.h"
+#include "core/measure/proposals/proposal_search.h"
 #include "core/measure/proposals/trace_proposals_phases.h"
 
 namespace rockface::measure {
@@ -316,7 +320,8 @@ double proposal_confidence(const Evidence& e, double length_m, const ProposalOpt
 MeasuredChains measure_chains(const std::vector<pr::Chain>& chains, const EvidenceMaps& maps,
                               const MeshPicker& picker, const PhotoView& view,
                               const WorkingImage& image, const ProposalOptions& options,
-                              Progress& progress, const std::string& where) {
+                              Progress& progress, const std::string& where,
+                              const std::vector<std::size_t>* which) {
   const double scale = image.scale;
   const double min_length_px = options.min_length_m * image.px_per_m;
   // Turns are read over two widths of the widest line: within that the
@@ -349,10 +354,12 @@ MeasuredChains measure_chains(const std::vector<pr::Chain>& chains, const Eviden
     const auto m = measure_piece(poly);
     return m && m->plane.known;
   };
-  for (std::size_t ci = 0; ci < chains.size(); ++ci) {
-    if (ci % 64 == 0)
+  const std::size_t count = which ? which->size() : chains.size();
+  for (std::size_t at = 0; at < count; ++at) {
+    const std::size_t ci = which ? (*which)[at] : at;
+    if (at % 64 == 0)
       progress.step("measuring proposals",
-                    0.65 + 0.3 * static_cast<double>(ci) / static_cast<double>(chains.size()));
+                    0.65 + 0.3 * static_cast<double>(at) / static_cast<double>(count));
     if (pr::chain_length(chains[ci]) < min_length_px) {
       ++short_chains;
       continue;
@@ -385,6 +392,7 @@ MeasuredChains measure_chains(const std::vector<pr::Chain>& chains, const Eviden
         p.confidence = proposal_confidence(e, m->length, options);
         p.trace = std::move(*m);
         found.push_back(std::move(p));
+        out.chain_of.push_back(ci);
       }
     }
   }
@@ -408,12 +416,26 @@ std::vector<std::string> left_out_notes(const MeasuredChains& measured,
 
 void link_facets(std::vector<TraceProposal>& found, const std::vector<ProposalFacet>& facets,
                  const ProposalOptions& options) {
+  // Each outline's bounding box: a point farther than the tolerance from
+  // the box is farther from the outline, and its segments need not be
+  // read (1 nm more than the tolerance: the box's distance and the
+  // segments' are rounded differently).
+  std::vector<Eigen::AlignedBox3d> boxes;
+  boxes.reserve(facets.size());
+  for (const ProposalFacet& f : facets) {
+    Eigen::AlignedBox3d box;
+    for (const auto& x : f.outline) box.extend(x);
+    boxes.push_back(box);
+  }
+  const double reach = options.facet_tolerance_m + 1e-9;
   for (TraceProposal& p : found) {
-    for (const ProposalFacet& f : facets) {
+    for (std::size_t i = 0; i < facets.size(); ++i) {
+      const ProposalFacet& f = facets[i];
       if (f.outline.size() < 2 || p.trace.points.empty()) continue;
       std::size_t near = 0;
       for (const auto& x : p.trace.points)
-        near += distance_to_outline(f.outline, x) <= options.facet_tolerance_m;
+        near += boxes[i].exteriorDistance(x) <= reach &&
+                distance_to_outline(f.outline, x) <= options.facet_tolerance_m;
       const double fraction =
           static_cast<double>(near) / static_cast<double>(p.trace.points.size());
       if (fraction >= options.facet_fraction && fraction > p.facet_fraction) {
@@ -446,32 +468,53 @@ void rank_proposals(std::vector<TraceProposal>& found, const ProposalOptions& op
 
 }  // namespace proposal_phases
 
-ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const MeshPicker& picker,
-                              const PhotoView& view, const cv::Mat& photo,
-                              const std::vector<ProposalFacet>& facets,
-                              const ProposalOptions& options, Progress& progress,
-                              const std::string& where) {
+struct ProposalSearch::State {
+  const MeshPicker* picker = nullptr;
+  const PhotoView* view = nullptr;
+  ProposalOptions options;
+  std::string where;
+  proposal_phases::WorkingImage image;
+  proposal_phases::EvidenceMaps maps;
+  std::vector<pr::Chain> chains;
+  ProposalResult result;  // the figures of the cues; the proposals come at the end
+  // The chains by falling length (ties: the earlier first), how many of
+  // them are measured, and what they gave.
+  std::vector<std::size_t> longest_first;
+  std::size_t measured_count = 0;
+  proposal_phases::MeasuredChains measured;
+  bool finished = false;
+};
+
+ProposalSearch::ProposalSearch(const photogrammetry::SurfaceMesh& mesh, const MeshPicker& picker,
+                               const PhotoView& view, const cv::Mat& photo,
+                               const ProposalOptions& options, Progress& progress,
+                               const std::string& where)
+    : state_(std::make_unique<State>()) {
   using namespace proposal_phases;
   check_proposal_input(mesh, view, photo, options, where);
+  State& s = *state_;
+  s.picker = &picker;
+  s.view = &view;
+  s.options = options;
+  s.where = where;
 
-  ProposalResult result;
   progress.step("reading the photograph", 0.05);
-  const WorkingImage image = working_image(mesh, photo, options);
-  const double scale = image.scale;
-  const double work_px_per_m = image.px_per_m;
-  result.pixel_scale = scale;
+  s.image = working_image(mesh, photo, options);
+  const double work_px_per_m = s.image.px_per_m;
+  s.result.pixel_scale = s.image.scale;
 
   progress.step("drawing the surface", 0.15);
   const double spacing = mesh.median_edge_length();
   const double smoothing_px =
       std::max(options.fold_scale_m * work_px_per_m, 3.0 * spacing * work_px_per_m);
-  const pr::SurfaceImage surface = pr::draw_surface(
-      mesh, image.grey.size(), scale, view.pose.centre, kJumpEdgeSpacings * spacing, smoothing_px);
+  const pr::SurfaceImage surface =
+      pr::draw_surface(mesh, s.image.grey.size(), s.image.scale, view.pose.centre,
+                       kJumpEdgeSpacings * spacing, smoothing_px);
 
   progress.step("finding dark lines", 0.3);
-  const pr::DarkLines dark = find_dark_lines_on(image, surface, options);
-  result.line_noise = dark.noise;
-  result.dark_pixels = static_cast<std::size_t>(cv::countNonZero(dark.lines));
+  const pr::DarkLines dark = find_dark_lines_on(s.image, surface, options);
+  s.result.line_noise = dark.noise;
+  s.result.dark_pixels = static_cast<std::size_t>(cv::countNonZero(dark.lines));
 
   progress.step("finding folds", 0.45);
   pr::FoldSettings fold_settings;
@@ -479,25 +522,90 @@ ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const Mes
   fold_settings.seed_deg = options.min_fold_deg;
   fold_settings.keep_deg = options.fold_keep_deg;
   const pr::Folds folds = pr::find_folds(surface, fold_settings);
-  result.fold_pixels = static_cast<std::size_t>(cv::countNonZero(folds.lines));
+  s.result.fold_pixels = static_cast<std::size_t>(cv::countNonZero(folds.lines));
 
   progress.step("joining lines", 0.55);
-  const EvidenceMaps maps = evidence_maps(dark, folds, smoothing_px);
-  const std::vector<pr::Chain> chains =
-      candidate_chains(dark, folds, maps.dark_near_fold, options.max_gap_m * work_px_per_m);
+  s.maps = evidence_maps(dark, folds, smoothing_px);
+  s.chains =
+      candidate_chains(dark, folds, s.maps.dark_near_fold, options.max_gap_m * work_px_per_m);
+  std::vector<double> length(s.chains.size());
+  for (std::size_t i = 0; i < s.chains.size(); ++i) length[i] = pr::chain_length(s.chains[i]);
+  s.longest_first.resize(s.chains.size());
+  std::iota(s.longest_first.begin(), s.longest_first.end(), std::size_t{0});
+  std::stable_sort(s.longest_first.begin(), s.longest_first.end(),
+                   [&](std::size_t a, std::size_t b) { return length[a] > length[b]; });
+}
 
-  progress.step("measuring proposals", 0.65);
-  MeasuredChains measured =
-      measure_chains(chains, maps, picker, view, image, options, progress, where);
-  result.notes = left_out_notes(measured, options);
-  std::vector<TraceProposal>& found = measured.found;
+ProposalSearch::~ProposalSearch() = default;
+
+std::vector<TraceProposal> ProposalSearch::longest(std::size_t count, Progress& progress) {
+  State& s = *state_;
+  if (s.finished) throw std::logic_error("ProposalSearch::longest after finish");
+  const std::size_t from = s.measured_count;
+  const std::size_t to = std::min(s.chains.size(), from + count);
+  const std::vector<std::size_t> which(s.longest_first.begin() + static_cast<std::ptrdiff_t>(from),
+                                       s.longest_first.begin() + static_cast<std::ptrdiff_t>(to));
+  proposal_phases::MeasuredChains batch = proposal_phases::measure_chains(
+      s.chains, s.maps, *s.picker, *s.view, s.image, s.options, progress, s.where, &which);
+  s.measured_count = to;
+  std::vector<TraceProposal> shown;
+  for (const TraceProposal& p : batch.found)
+    if (p.confidence >= s.options.min_confidence) shown.push_back(p);
+  std::stable_sort(shown.begin(), shown.end(), [](const TraceProposal& a, const TraceProposal& b) {
+    return a.confidence > b.confidence;
+  });
+  auto& m = s.measured;
+  m.found.insert(m.found.end(), std::make_move_iterator(batch.found.begin()),
+                 std::make_move_iterator(batch.found.end()));
+  m.chain_of.insert(m.chain_of.end(), batch.chain_of.begin(), batch.chain_of.end());
+  m.short_chains += batch.short_chains;
+  m.unmeasurable += batch.unmeasurable;
+  return shown;
+}
+
+ProposalResult ProposalSearch::finish(const std::vector<ProposalFacet>& facets,
+                                      Progress& progress) {
+  using namespace proposal_phases;
+  State& s = *state_;
+  if (s.finished) throw std::logic_error("ProposalSearch::finish twice");
+  if (s.measured_count == 0) {
+    progress.step("measuring proposals", 0.65);
+    s.measured =
+        measure_chains(s.chains, s.maps, *s.picker, *s.view, s.image, s.options, progress, s.where);
+  } else {
+    longest(s.chains.size(), progress);
+    // In the chains' own order, as measuring them all in one go lists
+    // them: the ranking's ties, and so the names, come out the same.
+    std::vector<std::size_t> order(s.measured.found.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return s.measured.chain_of[a] < s.measured.chain_of[b];
+    });
+    std::vector<TraceProposal> found;
+    found.reserve(order.size());
+    for (std::size_t i : order) found.push_back(std::move(s.measured.found[i]));
+    s.measured.found = std::move(found);
+  }
+  s.finished = true;
+  ProposalResult result = std::move(s.result);
+  result.notes = left_out_notes(s.measured, s.options);
+  std::vector<TraceProposal>& found = s.measured.found;
 
   progress.step("linking facets", 0.95);
-  link_facets(found, facets, options);
-  rank_proposals(found, options, result.notes);
+  link_facets(found, facets, s.options);
+  rank_proposals(found, s.options, result.notes);
   result.proposals = std::move(found);
   progress.step("proposals ready", 1.0);
   return result;
+}
+
+ProposalResult propose_traces(const photogrammetry::SurfaceMesh& mesh, const MeshPicker& picker,
+                              const PhotoView& view, const cv::Mat& photo,
+                              const std::vector<ProposalFacet>& facets,
+                              const ProposalOptions& options, Progress& progress,
+                              const std::string& where) {
+  ProposalSearch search(mesh, picker, view, photo, options, progress, where);
+  return search.finish(facets, progress);
 }
 
 }  // namespace rockface::measure

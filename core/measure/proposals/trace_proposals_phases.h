@@ -106,15 +106,18 @@ double proposal_confidence(const Evidence& e, double length_m, const ProposalOpt
 // Every chain long enough measured as traces: simplified, cut into its
 // runs over the surface, split at sharp turns, each piece measured on the
 // mesh and scored on the evidence; the chains and pieces left out counted.
+// `which`: the chains to measure (indices, in that order), null for all.
 struct MeasuredChains {
   std::vector<TraceProposal> found;
-  int short_chains = 0;  // shorter than options.min_length_m
-  int unmeasurable = 0;  // no surface of the 3D image under them
+  std::vector<std::size_t> chain_of;  // the chain each of `found` came from
+  int short_chains = 0;               // shorter than options.min_length_m
+  int unmeasurable = 0;               // no surface of the 3D image under them
 };
 MeasuredChains measure_chains(const std::vector<proposals::Chain>& chains, const EvidenceMaps& maps,
                               const MeshPicker& picker, const PhotoView& view,
                               const WorkingImage& image, const ProposalOptions& options,
-                              Progress& progress, const std::string& where);
+                              Progress& progress, const std::string& where,
+                              const std::vector<std::size_t>* which = nullptr);
 // What measure_chains left out, in words.
 std::vector<std::string> left_out_notes(const MeasuredChains& measured,
                                         const ProposalOptions& options);

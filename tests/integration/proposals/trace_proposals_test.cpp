@@ -5,6 +5,7 @@
 // proposals found with the fast preset. Precision and recall are against
 // the true traces within 5 cm (the issue's tolerance), printed for the
 // record (docs/accuracy-cost.md has them per preset) and bounded.
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -13,6 +14,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/units.h"
+#include "core/measure/proposals/proposal_search.h"
 #include "tests/support/proposal_faces.h"
 
 namespace rm = rockface::measure;
@@ -189,4 +191,49 @@ TEST(TraceProposals, BadInputIsRefusedByName) {
     EXPECT_EQ(e.where(), "visit 1");
     EXPECT_NE(std::string(e.what()).find("600 x 400"), std::string::npos) << e.what();
   }
+}
+
+// Issue 45: the tablet shows the longest chains' proposals first, then the
+// rest. Each of the first is one of the whole result (the same pixels,
+// points and confidence), and the whole result, after a first batch, is
+// what finding them in one go gives: names, order and facets included.
+TEST(TraceProposals, TheFirstProposalsAreAmongTheWholeResult) {
+  const FaceRun& r = run(rt::JointDensity::medium);
+  rockface::NoProgress progress;
+  auto options = rm::proposal_options(rockface::Preset::fast);
+  options.measure.point_sigma = r.face.rec.accuracy.sigma_z;
+  rm::ProposalSearch search(r.face.rec.mesh, *r.picker, r.face.left, r.face.render.images[0],
+                            options, progress, "proposals");
+  const std::vector<rm::TraceProposal> first = search.longest(4, progress);
+  const rm::ProposalResult whole = search.finish(r.face.facets, progress);
+  ASSERT_FALSE(first.empty()) << "the four longest chains of the medium face are traces";
+  ASSERT_LT(first.size(), whole.proposals.size()) << "the first batch is not the whole";
+  const auto same_line = [](const rm::TraceProposal& a, const rm::TraceProposal& b) {
+    if (a.trace.picks.size() != b.trace.picks.size() ||
+        a.trace.points.size() != b.trace.points.size())
+      return false;
+    for (std::size_t i = 0; i < a.trace.picks.size(); ++i)
+      if (a.trace.picks[i].pixel != b.trace.picks[i].pixel) return false;
+    for (std::size_t i = 0; i < a.trace.points.size(); ++i)
+      if (a.trace.points[i] != b.trace.points[i]) return false;
+    return a.confidence == b.confidence && a.cue == b.cue;
+  };
+  double last = 1.0;
+  for (const auto& p : first) {
+    EXPECT_LE(p.confidence, last) << "the first batch comes by falling confidence";
+    last = p.confidence;
+    EXPECT_GE(p.confidence, options.min_confidence);
+    EXPECT_TRUE(std::any_of(whole.proposals.begin(), whole.proposals.end(),
+                            [&](const rm::TraceProposal& q) { return same_line(p, q); }))
+        << "a first proposal of " << p.trace.length << " m is not in the whole result";
+  }
+  // The whole result as propose_traces gives it (run() found it in one go).
+  ASSERT_EQ(whole.proposals.size(), r.result.proposals.size());
+  for (std::size_t i = 0; i < whole.proposals.size(); ++i) {
+    EXPECT_EQ(whole.proposals[i].id, r.result.proposals[i].id);
+    EXPECT_TRUE(same_line(whole.proposals[i], r.result.proposals[i])) << r.result.proposals[i].id;
+    EXPECT_EQ(whole.proposals[i].facet_id, r.result.proposals[i].facet_id)
+        << r.result.proposals[i].id;
+  }
+  EXPECT_EQ(whole.notes, r.result.notes);
 }
