@@ -38,6 +38,9 @@ struct Site {
 const Site& site();
 // Another such site, in a database of its own: for a test that syncs more.
 Site fresh_site();
+// A site whose database holds one project's visits, synced by tablet_a
+// (a tablet of `tunnel`), and the office_reader role with kOfficePassword.
+Site site_of_project(const std::filesystem::path& project, const std::string& tunnel);
 
 // A running `rockface office serve` on 127.0.0.1 (any free port); stopped
 // (SIGTERM) when destroyed.
@@ -51,11 +54,15 @@ class OfficeServer {
   OfficeServer(const OfficeServer&) = delete;
   OfficeServer& operator=(const OfficeServer&) = delete;
   int port() const { return port_; }
+  // The server's own work folder (`--work` + rockface-office-PID): its
+  // pulled copies are in shared/.
+  std::filesystem::path work_folder() const { return work_folder_; }
   std::string origin() const { return "http://127.0.0.1:" + std::to_string(port_); }
 
  private:
   pid_t pid_ = -1;
   int port_ = 0;
+  std::filesystem::path work_folder_;
 };
 
 }  // namespace rockface::office_web_test
