@@ -111,9 +111,11 @@ std::string SharedOfficeCache::drive(OfficeSession& s, const std::string& tunnel
 }
 
 std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(OfficeSession& s,
-                                                            const std::string& tunnel) {
+                                                            const std::string& tunnel,
+                                                            bool photographs) {
   const auto [key, stamp] = checked_stamp(s, tunnel);
-  const auto pull = entry(pulls_, key, kPulledCopies);
+  const auto pull =
+      entry(pulls_, key + (photographs ? "" : "\nwithout photographs"), kPulledCopies);
   std::lock_guard build(pull->build);
   if (pull->copy && pull->copy->stamp == stamp && std::filesystem::exists(pull->copy->file))
     return pull->copy;
@@ -123,7 +125,9 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(OfficeSession& s,
   copy->stamp = stamp;
   NoProgress quiet;
   try {
-    office::pull_tunnel(s.db, tunnel, copy->file, quiet);
+    office::PullOptions options;
+    options.photographs = photographs;
+    office::pull_tunnel(s.db, tunnel, copy->file, quiet, options);
   } catch (...) {
     // The pull's snapshot transaction may still be open on the session.
     s.db.exec("ROLLBACK", "ending a failed pull");

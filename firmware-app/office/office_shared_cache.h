@@ -64,8 +64,12 @@ class SharedOfficeCache {
   // The tunnel's stamp for the session's role (shared, kStampFresh).
   std::string stamp(OfficeSession& s, const std::string& tunnel);
   // The tunnel pulled at its current stamp, made on the session's own
-  // connection when no session of the same readable tunnels has it.
-  std::shared_ptr<const SharedPull> pulled(OfficeSession& s, const std::string& tunnel);
+  // connection when no session of the same readable tunnels has it. Without
+  // photographs (`photographs` false): the copy the figures along the drive
+  // are read from, kept apart from the visits' copy with them — a drive of
+  // 3,000 visits lists its rounds without fetching 6,000 photographs.
+  std::shared_ptr<const SharedPull> pulled(OfficeSession& s, const std::string& tunnel,
+                                           bool photographs = true);
 
  private:
   struct Stamp {

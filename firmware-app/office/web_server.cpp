@@ -240,7 +240,8 @@ class OfficeServer {
     h.Get("/api/drive/rounds", [this](const httplib::Request& req, httplib::Response& res) {
       with_session(req, res, [&](OfficeSession& s) {
         const std::string tunnel = req.get_param_value("tunnel");
-        const auto copy = cache_.pulled(s, tunnel);
+        // The figures only: the rounds show no photograph.
+        const auto copy = cache_.pulled(s, tunnel, false);
         std::lock_guard guard(copy->derived_lock);
         std::string& text = copy->derived["rounds"];
         if (text.empty()) {

@@ -13,34 +13,13 @@
 #include <string>
 #include <thread>
 
+#include "tests/integration/office_web/office_client.h"
 #include "tests/integration/office_web/office_site.h"
 
 namespace rockface::office_web_test {
 namespace {
 
 using nlohmann::json;
-
-struct Login {
-  int status = 0;
-  std::string cookie;  // "name=value" for a Cookie header
-  std::string set_cookie, csrf, error;
-};
-
-Login log_in(httplib::Client& c, const std::string& origin, const std::string& role,
-             const std::string& password) {
-  httplib::Headers h = {{"Origin", origin}, {"Sec-Fetch-Site", "same-origin"}};
-  const auto r = c.Post("/api/login", h, json{{"role", role}, {"password", password}}.dump(),
-                        "application/json");
-  Login out;
-  if (!r) return out;
-  out.status = r->status;
-  out.set_cookie = r->get_header_value("Set-Cookie");
-  out.cookie = out.set_cookie.substr(0, out.set_cookie.find(';'));
-  const json body = json::parse(r->body);
-  out.csrf = body.value("csrf", "");
-  out.error = body.value("error", "");
-  return out;
-}
 
 void expect_security_headers(const httplib::Result& r, const std::string& what) {
   ASSERT_TRUE(r) << what;
