@@ -82,6 +82,8 @@ std::string fresh_database(const std::string& tunnel) {
   for (const char* t : {"tablet_1", "tablet_2", "tablet_3", "tablet_4"})
     office::add_tablet(c, t, tunnel);
   office::add_office_user(c, "office_bench");
+  // The web server's service role, its pooled connections' (socket: trust).
+  office::add_web_service(c, "office_web_bench");
   return db;
 }
 
@@ -142,7 +144,8 @@ struct Served {
   // before / after on the same database); "" is this build's.
   explicit Served(const std::string& db, const std::string& other_binary = "") {
     const std::string conninfo = "host=" + server().folder().string() +
-                                 " port=" + std::to_string(server().port()) + " dbname=" + db;
+                                 " port=" + std::to_string(server().port()) + " dbname=" + db +
+                                 " user=office_web_bench";
     // A log of its own: an earlier server's line must not be read as this one's.
     static int count = 0;
     const fs::path log = folder() / ("serve-" + std::to_string(++count) + ".out");

@@ -52,9 +52,26 @@ Site empty_site(const std::string& tunnel) {
   };
   static RemovedIfPassed made;
   made.folders.push_back(s.folder);
+  // The office server's own role, which its pooled connections log in as
+  // (its password from a passfile, as a site's service has it).
+  {
+    storage::office::Connection c(as_superuser(s.database));
+    storage::office::add_web_service(c, "office_web");
+  }
+  server().psql(std::string("ALTER ROLE office_web PASSWORD '") + kWebServicePassword + "'",
+                s.database);
+  const fs::path passfile = s.folder / "office-web.pgpass";
+  {
+    std::ofstream out(passfile);
+    out << "127.0.0.1:" << server().port() << ":" << s.database
+        << ":office_web:" << kWebServicePassword << "\n";
+  }
+  fs::permissions(passfile, fs::perms::owner_read | fs::perms::owner_write,
+                  fs::perm_options::replace);
   // Over TCP with TLS (the socket trusts every role): passwords are checked.
   s.server = "host=127.0.0.1 port=" + std::to_string(server().port()) + " dbname=" + s.database +
-             " sslmode=verify-full sslrootcert=" + server().ca_certificate().string();
+             " sslmode=verify-full sslrootcert=" + server().ca_certificate().string() +
+             " user=office_web passfile=" + passfile.string();
   return s;
 }
 

@@ -20,6 +20,8 @@ inline constexpr const char* kOfficePassword = "office pass 1";
 inline constexpr const char* kTabletPassword = "tablet pass 2";
 inline constexpr const char* kAditPassword = "adit pass 3";
 inline constexpr const char* kMainOfficePassword = "main pass 4";
+// The office web server's service role (office_web), from its passfile.
+inline constexpr const char* kWebServicePassword = "web pass 5";
 // A note on one of tablet A's visits: a script that must stay text.
 inline constexpr const char* kScriptNote =
     "<script>window.rockfaceInjected=1</script><img src=x onerror=\"window.rockfaceInjected=2\">";
@@ -30,7 +32,9 @@ inline constexpr const char* kPoleTargets = "[[0.1, 4.0, 0.2], [0.1, 4.0, 2.2]]"
 
 struct Site {
   std::string database;
-  std::string server;  // libpq key=value text without user: what `office serve` takes
+  // libpq key=value text naming the web server's service role and its
+  // passfile: what `office serve` takes.
+  std::string server;
   std::filesystem::path folder;
 };
 
