@@ -19,6 +19,8 @@ namespace {
 struct OfficeOptions {
   std::string server, listen = "127.0.0.1:8046", tls, work;
   double session_minutes = 30;
+  int pool = 8;
+  double pool_wait_seconds = 10;
 };
 
 VerbRun setup_office(CLI::App& sub) {
@@ -28,8 +30,9 @@ VerbRun setup_office(CLI::App& sub) {
       "serve", "serve the office's pages: tunnels, drives, visits, 3D faces, reports");
   serve
       ->add_option("SERVER", o->server,
-                   "the office database (postgresql://HOST/DB or service=NAME), without a user: "
-                   "each person logs in with their own role")
+                   "the office database as the web server's own role (`rockface server add-web`; "
+                   "postgresql://ROLE@HOST/DB or service=NAME, its password in a passfile): each "
+                   "person logs in with their own role, which the server's connections act as")
       ->required();
   serve->add_option("--listen", o->listen, "ADDR:PORT to listen on (default 127.0.0.1:8046)");
   serve->add_option("--tls", o->tls, "CERT,KEY: serve HTTPS with this certificate (PEM files)");
@@ -38,6 +41,15 @@ VerbRun setup_office(CLI::App& sub) {
                    "a session ends after this many minutes without a request (default 30; "
                    "a fraction for tests)")
       ->check(CLI::Range(0.001, 24.0 * 60));
+  serve
+      ->add_option("--pool", o->pool,
+                   "database connections shared by every logged-in person (default 8)")
+      ->check(CLI::Range(1, 200));
+  serve
+      ->add_option("--pool-wait-seconds", o->pool_wait_seconds,
+                   "a request waits this long for a free connection, then is answered \"busy, "
+                   "try again\" (default 10)")
+      ->check(CLI::Range(0.001, 600.0));
   serve->add_option("--work", o->work, "folder for the sessions' pulled copies (default: /tmp)");
   return [o] {
     OfficeServeOptions options;
@@ -60,6 +72,9 @@ VerbRun setup_office(CLI::App& sub) {
     options.session_idle =
         std::chrono::milliseconds(static_cast<std::int64_t>(o->session_minutes * 60000));
     options.work_folder = o->work;
+    options.pool_size = static_cast<std::size_t>(o->pool);
+    options.pool_wait =
+        std::chrono::milliseconds(static_cast<std::int64_t>(o->pool_wait_seconds * 1000));
     options.log_failure = [](const std::string& what) {
       std::cerr << "office: " << what << std::endl;
     };
@@ -80,7 +95,8 @@ VerbRun setup_office(CLI::App& sub) {
     serve_office(options, [&](int port) {
       std::cout << "office: serving " << (options.tls_certificate.empty() ? "http" : "https")
                 << "://" << options.listen_host << ":" << port << "/ (sessions end after "
-                << o->session_minutes << " min idle)" << std::endl;
+                << o->session_minutes << " min idle; " << o->pool << " database connections)"
+                << std::endl;
     });
     std::cout << "office: stopped\n";
     return 0;

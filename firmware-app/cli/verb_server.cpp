@@ -1,4 +1,4 @@
-// `rockface server init|add-tunnel|add-tablet|add-office|add-admin SERVER ...`: the
+// `rockface server init|add-tunnel|add-tablet|add-office|add-web|add-admin SERVER ...`: the
 // site's PostgreSQL server set up by its administrator (schema, roles,
 // row-level security; tunnels; tablet and office logins).
 #include <iostream>
@@ -40,17 +40,23 @@ VerbRun setup_server(CLI::App& sub) {
   server_arg(office);
   office->add_option("ROLE", o->name, "the role name")->required();
   office->add_option("--tunnel", o->office_tunnel, "the one tunnel it reads (default: all)");
+  CLI::App* web = sub.add_subcommand(
+      "add-web",
+      "the login role `office serve` connects as: it acts as each office user, and as no other");
+  server_arg(web);
+  web->add_option("ROLE", o->name, "the role name")->required();
   CLI::App* admin = sub.add_subcommand(
       "add-admin",
       "a login role that creates tunnels, tablets and office users (needs a superuser)");
   server_arg(admin);
   admin->add_option("ROLE", o->name, "the role name")->required();
-  return [o, init, tunnel, tablet, office, admin] {
+  return [o, init, tunnel, tablet, office, web, admin] {
     std::vector<std::string> lines;
     if (init->parsed()) lines = run_server_init(o->server);
     if (tunnel->parsed()) lines = run_server_add_tunnel(o->server, o->name);
     if (tablet->parsed()) lines = run_server_add_tablet(o->server, o->name, o->tunnel);
     if (office->parsed()) lines = run_server_add_office(o->server, o->name, o->office_tunnel);
+    if (web->parsed()) lines = run_server_add_web(o->server, o->name);
     if (admin->parsed()) lines = run_server_add_admin(o->server, o->name);
     for (const auto& line : lines) std::cout << line << "\n";
     return 0;
@@ -60,7 +66,7 @@ VerbRun setup_server(CLI::App& sub) {
 const VerbRegistrar server_verb{
     "server",
     "set up the site's PostgreSQL server: init (schema, roles, policies), add-tunnel, add-tablet, "
-    "add-office, add-admin",
+    "add-office, add-web, add-admin",
     setup_server};
 
 }  // namespace

@@ -35,6 +35,17 @@ void LoginThrottle::failed(const std::string& address, const std::string& role,
   failures_["r:" + role].push_back(now);
 }
 
+int LoginThrottle::retry_after_known(const std::string& token, Clock::time_point now) {
+  std::lock_guard guard(lock_);
+  return wait_for("k:" + token, now);
+}
+
+void LoginThrottle::failed_known(const std::string& token, Clock::time_point now) {
+  std::lock_guard guard(lock_);
+  if (failures_.size() > 4096) forget_old(now);
+  failures_["k:" + token].push_back(now);
+}
+
 void LoginThrottle::forget_old(Clock::time_point now) {
   for (auto it = failures_.begin(); it != failures_.end();) {
     auto& times = it->second;

@@ -27,6 +27,10 @@ class LoginThrottle {
                   Clock::time_point now = Clock::now());
   void failed(const std::string& address, const std::string& role,
               Clock::time_point now = Clock::now());
+  // The same for a log-in that brought a known browser's token for its
+  // role (known_browsers.h): counted and held by the token alone.
+  int retry_after_known(const std::string& token, Clock::time_point now = Clock::now());
+  void failed_known(const std::string& token, Clock::time_point now = Clock::now());
 
  private:
   int wait_for(const std::string& key, Clock::time_point now);
@@ -35,7 +39,8 @@ class LoginThrottle {
   int max_failures_;
   std::chrono::seconds window_;
   std::mutex lock_;
-  std::map<std::string, std::deque<Clock::time_point>> failures_;  // "a:ADDR" / "r:ROLE"
+  // "a:ADDR" / "r:ROLE" / "k:TOKEN"
+  std::map<std::string, std::deque<Clock::time_point>> failures_;
 };
 
 }  // namespace rockface::app::office_web

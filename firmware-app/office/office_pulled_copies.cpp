@@ -4,10 +4,10 @@
 
 namespace rockface::app::office_web {
 
-PulledVisit pulled_visit(SharedOfficeCache& cache, OfficeSession& session,
+PulledVisit pulled_visit(SharedOfficeCache& cache, storage::office::Connection& db,
                          const std::string& tunnel, const std::string& visit_uuid) {
   PulledVisit out;
-  out.copy = cache.pulled(session, tunnel);
+  out.copy = cache.pulled(db, tunnel);
   out.file = out.copy->file;
   const auto it = out.copy->visit_ids.find(visit_uuid);
   if (it == out.copy->visit_ids.end())

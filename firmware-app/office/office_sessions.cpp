@@ -14,8 +14,8 @@ OfficeSession::~OfficeSession() {
 }
 
 SessionStore::SessionStore(std::string server, std::chrono::milliseconds idle,
-                           std::filesystem::path work_folder)
-    : server_(std::move(server)), idle_(idle), work_folder_(std::move(work_folder)) {}
+                           std::filesystem::path work_folder, office::ConnectionPool& pool)
+    : server_(std::move(server)), idle_(idle), work_folder_(std::move(work_folder)), pool_(pool) {}
 
 SessionStore::~SessionStore() = default;
 
@@ -48,10 +48,24 @@ std::string SessionStore::log_in(const std::string& role, const std::string& pas
   if (!office_role)
     throw LoginRefused(tablet_role ? "a tablet's role cannot log in to the office"
                                    : "this role is not an office role of rockface");
-  // Read-only for the whole session: the web reads; a page that ever writes
-  // must ask for it explicitly.
-  c->exec("SET SESSION CHARACTERISTICS AS TRANSACTION READ ONLY", "making the session read-only");
-  auto session = std::make_shared<OfficeSession>(std::move(*c));
+  // The person's own connection has checked the log-in: its slot goes
+  // back to the server now.
+  c.reset();
+  // The pool may act as this role (the role is granted to rockface_web by
+  // `server add-office`): asked now, so the log-in fails rather than its
+  // first page.
+  try {
+    pool_.acquire(role);
+  } catch (const office::PoolBusy& e) {
+    throw LoginUnavailable(e.what());
+  } catch (const office::ServerError& e) {
+    if (e.sqlstate() == "42501")
+      throw LoginUnavailable("the office server's role may not act as " + role +
+                             ": an administrator runs `rockface server add-office` for it (" +
+                             e.what() + ")");
+    throw LoginUnavailable(e.what());
+  }
+  auto session = std::make_shared<OfficeSession>();
   session->role = role;
   session->csrf = random_token();
   const std::string token = random_token();

@@ -53,9 +53,9 @@ std::shared_ptr<Entry> SharedOfficeCache::entry(std::map<std::string, std::share
   return e;
 }
 
-std::pair<std::string, std::string> SharedOfficeCache::checked_stamp(OfficeSession& s,
-                                                                     const std::string& tunnel) {
-  const ReadableTunnels readable = readable_tunnels(s.db);
+std::pair<std::string, std::string> SharedOfficeCache::checked_stamp(
+    storage::office::Connection& db, const std::string& tunnel) {
+  const ReadableTunnels readable = readable_tunnels(db);
   // The same answer as for a tunnel that does not exist.
   if (!readable.by_name.count(tunnel))
     throw InputError("tunnel " + tunnel, "no such tunnel for this log-in");
@@ -66,19 +66,19 @@ std::pair<std::string, std::string> SharedOfficeCache::checked_stamp(OfficeSessi
     const auto it = stamps_.find(key);
     if (it != stamps_.end() && now - it->second.asked < kStampFresh) return {key, it->second.value};
   }
-  const std::string value = tunnel_stamp(s.db, tunnel);
+  const std::string value = tunnel_stamp(db, tunnel);
   std::lock_guard guard(lock_);
   stamps_[key] = {value, now};
   return {key, value};
 }
 
-std::string SharedOfficeCache::stamp(OfficeSession& s, const std::string& tunnel) {
-  return checked_stamp(s, tunnel).second;
+std::string SharedOfficeCache::stamp(storage::office::Connection& db, const std::string& tunnel) {
+  return checked_stamp(db, tunnel).second;
 }
 
-std::string SharedOfficeCache::drive(OfficeSession& s, const std::string& tunnel,
+std::string SharedOfficeCache::drive(storage::office::Connection& db, const std::string& tunnel,
                                      const DriveFilter& filter) {
-  const auto checked = checked_stamp(s, tunnel);
+  const auto checked = checked_stamp(db, tunnel);
   const std::string& key = checked.first;
   const std::string& stamp = checked.second;
   const auto page = entry(
@@ -98,9 +98,9 @@ std::string SharedOfficeCache::drive(OfficeSession& s, const std::string& tunnel
     build.lock();  // nothing to show yet: wait for the build under way
     if (auto ready = current()) return *ready;
   }
-  // Built on this session's connection: its role reads the same tunnels as
+  // Built on this request's connection: its role reads the same tunnels as
   // every session that shares the key.
-  nlohmann::json built = drive_page(s.db, tunnel, filter);
+  nlohmann::json built = drive_page(db, tunnel, filter);
   // The stamp the page polls against is the one it is kept under.
   built["stamp"] = stamp;
   std::string text = built.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -110,10 +110,12 @@ std::string SharedOfficeCache::drive(OfficeSession& s, const std::string& tunnel
   return text;
 }
 
-std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(OfficeSession& s,
-                                                            const std::string& tunnel) {
-  const auto [key, stamp] = checked_stamp(s, tunnel);
-  const auto pull = entry(pulls_, key, kPulledCopies);
+std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Connection& db,
+                                                            const std::string& tunnel,
+                                                            bool photographs) {
+  const auto [key, stamp] = checked_stamp(db, tunnel);
+  const auto pull =
+      entry(pulls_, key + (photographs ? "" : "\nwithout photographs"), kPulledCopies);
   std::lock_guard build(pull->build);
   if (pull->copy && pull->copy->stamp == stamp && std::filesystem::exists(pull->copy->file))
     return pull->copy;
@@ -123,10 +125,12 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(OfficeSession& s,
   copy->stamp = stamp;
   NoProgress quiet;
   try {
-    office::pull_tunnel(s.db, tunnel, copy->file, quiet);
+    office::PullOptions options;
+    options.photographs = photographs;
+    office::pull_tunnel(db, tunnel, copy->file, quiet, options);
   } catch (...) {
-    // The pull's snapshot transaction may still be open on the session.
-    s.db.exec("ROLLBACK", "ending a failed pull");
+    // The pull's snapshot transaction may still be open on the connection.
+    db.exec("ROLLBACK", "ending a failed pull");
     throw;
   }
   {

@@ -57,15 +57,20 @@ class SharedOfficeCache {
 
   explicit SharedOfficeCache(std::filesystem::path folder);
 
-  // The drive page's JSON text for the session's role (office_pages.h's
-  // drive_page). Throws InputError when the role may not read the tunnel.
-  // Call with the session's lock held.
-  std::string drive(OfficeSession& s, const std::string& tunnel, const DriveFilter& filter);
-  // The tunnel's stamp for the session's role (shared, kStampFresh).
-  std::string stamp(OfficeSession& s, const std::string& tunnel);
-  // The tunnel pulled at its current stamp, made on the session's own
-  // connection when no session of the same readable tunnels has it.
-  std::shared_ptr<const SharedPull> pulled(OfficeSession& s, const std::string& tunnel);
+  // The drive page's JSON text for the role `db` acts as (office_pages.h's
+  // drive_page; `db` a pooled connection acting as the session's role).
+  // Throws InputError when the role may not read the tunnel.
+  std::string drive(storage::office::Connection& db, const std::string& tunnel,
+                    const DriveFilter& filter);
+  // The tunnel's stamp for the role `db` acts as (shared, kStampFresh).
+  std::string stamp(storage::office::Connection& db, const std::string& tunnel);
+  // The tunnel pulled at its current stamp, made on `db` (acting as the
+  // session's role) when no session of the same readable tunnels has it. Without
+  // photographs (`photographs` false): the copy the figures along the drive
+  // are read from, kept apart from the visits' copy with them — a drive of
+  // 3,000 visits lists its rounds without fetching 6,000 photographs.
+  std::shared_ptr<const SharedPull> pulled(storage::office::Connection& db,
+                                           const std::string& tunnel, bool photographs = true);
 
  private:
   struct Stamp {
@@ -89,7 +94,8 @@ class SharedOfficeCache {
 
   // The readable set's key and the tunnel's current stamp; throws
   // InputError when the role may not read the tunnel.
-  std::pair<std::string, std::string> checked_stamp(OfficeSession& s, const std::string& tunnel);
+  std::pair<std::string, std::string> checked_stamp(storage::office::Connection& db,
+                                                    const std::string& tunnel);
   template <typename Entry>
   std::shared_ptr<Entry> entry(std::map<std::string, std::shared_ptr<Entry>>& map,
                                const std::string& key, std::size_t limit);

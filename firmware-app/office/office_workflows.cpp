@@ -111,6 +111,15 @@ std::vector<std::string> run_server_add_admin(const std::string& server, const s
           "\\password, or a client certificate)"};
 }
 
+std::vector<std::string> run_server_add_web(const std::string& server, const std::string& role) {
+  office::Connection c(server);
+  office::require_compatible_server(c);
+  office::add_web_service(c, role);
+  return {c.label() + ": role " + role +
+          " is the office web server's (`rockface office serve` connects as it and acts as each "
+          "office user; give it a password with psql's \\password and the web server a passfile)"};
+}
+
 tunnel::DriveSets server_drive(const std::string& server, const std::string& name) {
   office::Connection c(server);
   return server_drive(c, name);

@@ -40,6 +40,9 @@ std::vector<std::string> run_server_add_tablet(const std::string& server, const 
 std::vector<std::string> run_server_add_office(const std::string& server, const std::string& role,
                                                const std::string& tunnel = "");
 std::vector<std::string> run_server_add_admin(const std::string& server, const std::string& role);
+// The role `rockface office serve` connects as (storage/office/
+// server_schema.h's add_web_service).
+std::vector<std::string> run_server_add_web(const std::string& server, const std::string& role);
 
 // The drive of every tablet's visits of the tunnel, from the server: the
 // same sets, tracks and events as `rockface drive` of one project holding

@@ -58,6 +58,16 @@ std::string cleared_session_cookie(bool tls) {
          (tls ? "; Secure" : "");
 }
 
+std::string known_browser_cookie_name(bool tls) {
+  return tls ? "__Host-rockface_known" : "rockface_known";
+}
+
+std::string known_browser_cookie(bool tls, const std::string& token, int max_age_s) {
+  return known_browser_cookie_name(tls) + "=" + token +
+         "; Path=/; Max-Age=" + std::to_string(max_age_s) + "; HttpOnly; SameSite=Strict" +
+         (tls ? "; Secure" : "");
+}
+
 std::string cookie_value(std::string_view header, std::string_view name) {
   std::size_t at = 0;
   while (at < header.size()) {

@@ -26,6 +26,10 @@ std::string session_cookie_name(bool tls);
 std::string session_cookie(bool tls, const std::string& token, int max_age_s);
 // Set-Cookie that removes the cookie (log-out, expired session).
 std::string cleared_session_cookie(bool tls);
+// The known browser's cookie (known_browsers.h): "__Host-" prefixed under
+// TLS as the session's, HttpOnly, SameSite=Strict, kept `max_age_s`.
+std::string known_browser_cookie_name(bool tls);
+std::string known_browser_cookie(bool tls, const std::string& token, int max_age_s);
 // The value of cookie `name` in a Cookie header, "" when absent.
 std::string cookie_value(std::string_view header, std::string_view name);
 

@@ -10,12 +10,14 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <system_error>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
 #include "firmware-app/export/visit_export.h"
+#include "firmware-app/office/known_browsers.h"
 #include "firmware-app/office/login_throttle.h"
 #include "firmware-app/office/office_pages.h"
 #include "firmware-app/office/office_pulled_copies.h"
@@ -26,6 +28,7 @@
 #include "firmware-app/office/visit_report.h"
 #include "firmware-app/office/web_assets.h"
 #include "firmware-app/office/web_security.h"
+#include "storage/office/connection_pool.h"
 #include "storage/office/pg_connection.h"
 #include "storage/project/project_store.h"
 
@@ -65,7 +68,8 @@ class OfficeServer {
   explicit OfficeServer(const OfficeServeOptions& o)
       : options_(o),
         tls_(!o.tls_certificate.empty()),
-        sessions_(o.server, o.session_idle, o.work_folder),
+        pool_(o.server, o.pool_size, o.pool_wait),
+        sessions_(o.server, o.session_idle, o.work_folder, pool_),
         cache_(o.work_folder / "shared") {
     if (tls_)
       http_ = std::make_unique<httplib::SSLServer>(o.tls_certificate.c_str(), o.tls_key.c_str());
@@ -125,37 +129,36 @@ class OfficeServer {
     sessions_.expire();
   }
 
-  // Runs `body` on the session's connection under its lock; refusals of
-  // the reader's rights and bad input become 403 / 404 with the reason.
+  // Runs `body(session, db)` under the session's lock on a pooled
+  // connection acting as the session's role; refusals of the reader's
+  // rights and bad input become 403 / 404 with the reason, a pool busy
+  // past its wait 503 with Retry-After. The connection goes back to the
+  // pool (its transaction rolled back, its role reset) when the request
+  // ends.
   template <typename Body>
   void with_session(const httplib::Request& req, httplib::Response& res, Body body) {
     auto s = session_of(req, res);
     if (!s) return;
     std::lock_guard guard(s->lock);
+    std::optional<office::ConnectionPool::Lease> lease;
     try {
-      body(*s);
+      lease.emplace(pool_.acquire(s->role));
+      body(*s, lease->db());
+    } catch (const office::PoolBusy& e) {
+      options_.log_failure(req.path + ": " + e.what());
+      res.set_header("Retry-After", "2");
+      send_error(res, 503, "the office server is busy: try again in a moment");
     } catch (const InputError& e) {
-      rollback(*s);
       send_error(res, 404, e.what());
     } catch (const office::ServerError& e) {
-      rollback(*s);
       options_.log_failure(req.path + ": " + e.what());
       if (e.sqlstate() == "42501")
         send_error(res, 403, "this log-in may not read that");
       else
         send_error(res, 503, "the database could not answer: try again");
     } catch (const std::exception& e) {
-      rollback(*s);
       options_.log_failure(req.path + ": " + e.what());
       send_error(res, 500, e.what());
-    }
-  }
-
-  static void rollback(OfficeSession& s) {
-    try {
-      s.db.exec("ROLLBACK", "ending a failed request");
-    } catch (...) {
-      // The connection is gone: the next request says so.
     }
   }
 
@@ -181,7 +184,14 @@ class OfficeServer {
       }
       const std::string role = body.value("role", "");
       std::string password = body.value("password", "");
-      if (const int wait = throttle_.retry_after(req.remote_addr, role); wait > 0) {
+      // A browser that logged in as this role before is held by its own
+      // count only: a stranger's guesses at the role do not keep it out.
+      const std::string known = office_web::cookie_value(
+          req.get_header_value("Cookie"), office_web::known_browser_cookie_name(tls_));
+      const bool vouched = known_browsers_.vouches(known, role);
+      const int wait = vouched ? throttle_.retry_after_known(known)
+                               : throttle_.retry_after(req.remote_addr, role);
+      if (wait > 0) {
         std::fill(password.begin(), password.end(), '\0');
         res.set_header("Retry-After", std::to_string(wait));
         return send_error(res, 429,
@@ -195,6 +205,13 @@ class OfficeServer {
                        office_web::session_cookie(tls_, token,
                                                   static_cast<int>(std::max<std::int64_t>(
                                                       1, sessions_.idle().count() / 1000))));
+        if (!vouched)
+          res.set_header("Set-Cookie",
+                         office_web::known_browser_cookie(
+                             tls_, known_browsers_.remember(role),
+                             static_cast<int>(std::chrono::duration_cast<std::chrono::seconds>(
+                                                  office_web::KnownBrowsers::kKept)
+                                                  .count())));
         send_json(res, json{{"role", s->role}, {"csrf", s->csrf}});
       } catch (const office_web::LoginUnavailable& e) {
         std::fill(password.begin(), password.end(), '\0');
@@ -202,7 +219,10 @@ class OfficeServer {
         send_error(res, 503, "the database cannot take a log-in now: try again in a moment");
       } catch (const office_web::LoginRefused& e) {
         std::fill(password.begin(), password.end(), '\0');
-        throttle_.failed(req.remote_addr, role);
+        if (vouched)
+          throttle_.failed_known(known);
+        else
+          throttle_.failed(req.remote_addr, role);
         send_error(res, 403, e.what());
       }
     });
@@ -224,23 +244,25 @@ class OfficeServer {
       send_json(res, json{{"role", s->role}, {"csrf", s->csrf}});
     });
     h.Get("/api/tunnels", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res,
-                   [&](OfficeSession& s) { send_json(res, office_web::tunnels_page(s.db)); });
+      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
+        send_json(res, office_web::tunnels_page(db));
+      });
     });
     h.Get("/api/drive", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession& s) {
+      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
         office_web::DriveFilter f;
         f.from = req.get_param_value("from");
         f.to = req.get_param_value("to");
         f.tablet = req.get_param_value("tablet");
-        res.set_content(cache_.drive(s, req.get_param_value("tunnel"), f),
+        res.set_content(cache_.drive(db, req.get_param_value("tunnel"), f),
                         "application/json; charset=utf-8");
       });
     });
     h.Get("/api/drive/rounds", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession& s) {
+      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
         const std::string tunnel = req.get_param_value("tunnel");
-        const auto copy = cache_.pulled(s, tunnel);
+        // The figures only: the rounds show no photograph.
+        const auto copy = cache_.pulled(db, tunnel, false);
         std::lock_guard guard(copy->derived_lock);
         std::string& text = copy->derived["rounds"];
         if (text.empty()) {
@@ -258,8 +280,8 @@ class OfficeServer {
       });
     });
     h.Get("/api/stamp", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession& s) {
-        send_json(res, json{{"stamp", cache_.stamp(s, req.get_param_value("tunnel"))}});
+      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
+        send_json(res, json{{"stamp", cache_.stamp(db, req.get_param_value("tunnel"))}});
       });
     });
     h.Get("/api/visit", [this](const httplib::Request& req, httplib::Response& res) {
@@ -285,12 +307,12 @@ class OfficeServer {
       });
     });
     h.Get("/api/compare", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession& s) {
+      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
         const std::string tunnel = req.get_param_value("tunnel");
         const office_web::PulledVisit a =
-            office_web::pulled_visit(cache_, s, tunnel, req.get_param_value("a"));
+            office_web::pulled_visit(cache_, db, tunnel, req.get_param_value("a"));
         const office_web::PulledVisit b =
-            office_web::pulled_visit(cache_, s, tunnel, req.get_param_value("b"));
+            office_web::pulled_visit(cache_, db, tunnel, req.get_param_value("b"));
         // Both from one copy: a sync between the two look-ups pulls again.
         if (a.file != b.file) throw InputError("tunnel " + tunnel, "synced meanwhile: try again");
         storage::OpenOptions read;
@@ -396,9 +418,9 @@ class OfficeServer {
 
   template <typename Body>
   void with_visit(const httplib::Request& req, httplib::Response& res, Body body) {
-    with_session(req, res, [&](OfficeSession& s) {
+    with_session(req, res, [&](OfficeSession& s, office::Connection& db) {
       const office_web::PulledVisit v = office_web::pulled_visit(
-          cache_, s, req.get_param_value("tunnel"), req.get_param_value("visit"));
+          cache_, db, req.get_param_value("tunnel"), req.get_param_value("visit"));
       storage::OpenOptions read;
       read.read_only = true;
       storage::ProjectStore store = storage::ProjectStore::open(v.file, read);
@@ -447,9 +469,12 @@ class OfficeServer {
 
   OfficeServeOptions options_;
   bool tls_;
+  // Before the sessions, which log in through it.
+  office::ConnectionPool pool_;
   office_web::SessionStore sessions_;
   office_web::SharedOfficeCache cache_;
   office_web::LoginThrottle throttle_;
+  office_web::KnownBrowsers known_browsers_;
   std::unique_ptr<httplib::Server> http_;
   std::mutex sweep_lock_;
   std::chrono::steady_clock::time_point last_sweep_ = std::chrono::steady_clock::now();

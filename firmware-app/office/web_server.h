@@ -3,10 +3,11 @@
 // (issue 46). A cpp-httplib server (Debian's libcpp-httplib) serving the
 // pages compiled into the binary (web_assets.h), three.js from Debian's
 // libjs-three, and the pages' data as JSON from the same reads as `rockface
-// drive postgresql://...` and `pull`, each request on the session's own
-// connection (office_sessions.h). Plain HTTP only on a loopback address;
+// drive postgresql://...` and `pull`, each request on a pooled connection
+// acting as the session's role (office_sessions.h). Plain HTTP only on a loopback address;
 // anything else needs --tls.
 #include <chrono>
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -14,11 +15,19 @@
 namespace rockface::app {
 
 struct OfficeServeOptions {
-  std::string server;       // libpq connection string, without user or password
-  std::string listen_host;  // e.g. "127.0.0.1"
-  int listen_port = 8046;   // 0: any free port (reported by on_listening)
+  // libpq connection string of the web server's service role (`rockface
+  // server add-web`; its password in a passfile), which the pool connects
+  // as; the log-ins' own user and password replace its user to check them.
+  std::string server;
+  std::string listen_host;                         // e.g. "127.0.0.1"
+  int listen_port = 8046;                          // 0: any free port (reported by on_listening)
   std::filesystem::path tls_certificate, tls_key;  // both or neither
   std::chrono::milliseconds session_idle{30 * 60 * 1000};
+  // The database connections the sessions' requests share (storage/office/
+  // connection_pool.h: acting as each person's role); a request waits this
+  // long for one, then is answered 503 "busy, try again".
+  std::size_t pool_size = 8;
+  std::chrono::milliseconds pool_wait{10000};
   // Where the sessions' pulled copies live (removed with each session);
   // empty: a folder under the system's temporary folder.
   std::filesystem::path work_folder;

@@ -29,9 +29,14 @@ using nlohmann::json;
 
 class ProjectWriter {
  public:
-  ProjectWriter(sqlite::Connection& db, Connection& server, bool keep_ids, PullResult& result,
-                Progress& progress)
-      : db_(db), server_(server), keep_ids_(keep_ids), result_(result), progress_(progress) {}
+  ProjectWriter(sqlite::Connection& db, Connection& server, bool keep_ids,
+                const PullOptions& options, PullResult& result, Progress& progress)
+      : db_(db),
+        server_(server),
+        keep_ids_(keep_ids),
+        options_(options),
+        result_(result),
+        progress_(progress) {}
 
   // Inserts one record (and its children); returns its row id.
   void insert(const ServerRecord& rec) {
@@ -154,8 +159,15 @@ class ProjectWriter {
         // A column stored in parts (a model's mesh) stays empty: its bytes
         // go into its parts table as the tablet's own save writes them.
         const bool in_parts = parts::parts_table_of(table, names[i]) != nullptr;
-        sqlite3_bind_zeroblob64(st.get(), at, in_parts ? 0 : v.at("size").get<std::uint64_t>());
-        blobs.emplace_back(names[i], v);
+        // A photograph left on the server: an empty blob (the column is
+        // NOT NULL), its size kept in the row's byte_size.
+        const bool left = table == "image" && !options_.photographs;
+        sqlite3_bind_zeroblob64(st.get(), at,
+                                in_parts || left ? 0 : v.at("size").get<std::uint64_t>());
+        if (left)
+          ++result_.photographs_left;
+        else
+          blobs.emplace_back(names[i], v);
       } else if (v.is_object() && v.contains("$hex")) {
         const auto bytes = bytes_of_hex(v["$hex"].get<std::string>(), where + "." + names[i]);
         sqlite3_bind_blob(st.get(), at, bytes.data(), static_cast<int>(bytes.size()),
@@ -245,6 +257,7 @@ class ProjectWriter {
   sqlite::Connection& db_;
   Connection& server_;
   bool keep_ids_;
+  PullOptions options_;
   PullResult& result_;
   Progress& progress_;
   std::map<std::pair<std::string, std::string>, std::int64_t> ids_;  // (kind, uuid) -> key
@@ -344,7 +357,7 @@ PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel_na
 }
 
 PullResult pull_tunnel(Connection& server, const std::string& tunnel_name, const fs::path& out,
-                       Progress& progress) {
+                       Progress& progress, const PullOptions& options) {
   if (fs::exists(out)) throw InputError(out.string(), "exists already: pull makes a new project");
   PullResult result;
   result.server_label = server.label();
@@ -410,7 +423,7 @@ PullResult pull_tunnel(Connection& server, const std::string& tunnel_name, const
           st.bind_null(1);
         st.step();
       }
-      ProjectWriter writer(db, server, keep_ids, result, progress);
+      ProjectWriter writer(db, server, keep_ids, options, result, progress);
       for (std::size_t i = 0; i < records.size(); ++i) {
         const ServerRecord& r = records[i];
         if (r.kind == "project") continue;

@@ -20,10 +20,21 @@ namespace rockface::storage::office {
 struct PullResult {
   std::string server_label;
   int projects = 0, visits = 0, records = 0, blobs = 0;
-  std::int64_t blob_bytes = 0;
+  std::int64_t blob_bytes = 0;  // read from the server
+  // Photographs left on the server (PullOptions::photographs false).
+  int photographs_left = 0;
   // What the geologist must check in the pulled project, in words: e.g.
   // tablets that carry different designs of the tunnel (one is kept).
   std::vector<std::string> warnings;
+};
+
+// What a pull leaves out. A copy for the figures along the drive (the
+// office's rounds: rock mass, support, over- and underbreak) needs no
+// photograph: each image row keeps its format and byte_size but its bytes
+// stay empty and are never read from the server. Meshes always come (the
+// over- and underbreak are measured on them).
+struct PullOptions {
+  bool photographs = true;
 };
 
 PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel,
@@ -33,6 +44,7 @@ PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel,
 // decides what the pull may read); the connection must be outside a
 // transaction.
 PullResult pull_tunnel(Connection& server, const std::string& tunnel,
-                       const std::filesystem::path& out, Progress& progress);
+                       const std::filesystem::path& out, Progress& progress,
+                       const PullOptions& options = {});
 
 }  // namespace rockface::storage::office

@@ -72,6 +72,7 @@ InitResult init_server(Connection& c) {
   // layout's transaction so that a second database on the cluster finds them.
   c.exec(sql::kRoles, "creating the rockface roles");
   c.exec(sql::kRolesVersion2, "creating the rockface roles");
+  c.exec(sql::kRolesWeb, "creating the rockface roles");
   Transaction tx(c, "creating the rockface layout");
   // One initialiser at a time: a second waits here, then finds the layout.
   c.exec("SELECT pg_advisory_xact_lock(7526351)", "creating the rockface layout");
@@ -116,6 +117,9 @@ void add_tablet(Connection& c, const std::string& role, const std::string& tunne
 
 void add_office_user(Connection& c, const std::string& role, const std::string& tunnel) {
   require_role_name(role);
+  // The web server's group, on a server set up before it (cluster roles:
+  // `server init` of this version may not have run on it yet).
+  c.exec(sql::kRolesWeb, "creating the rockface roles");
   Transaction tx(c, "adding office user " + role);
   const bool one_tunnel = !tunnel.empty();
   const std::int64_t id = one_tunnel ? tunnel_id(c, tunnel) : 0;
@@ -131,6 +135,23 @@ void add_office_user(Connection& c, const std::string& role, const std::string& 
         "ON CONFLICT DO NOTHING",
         {Param::of(id), Param::of(role)}, "adding office user " + role + " to tunnel " + tunnel);
   }
+  // The office web server may act as this user (kRolesWeb).
+  c.exec("GRANT " + role + " TO rockface_web", "adding office user " + role);
+  tx.commit();
+}
+
+void add_web_service(Connection& c, const std::string& role) {
+  require_role_name(role);
+  c.exec(sql::kRolesWeb, "creating the rockface roles");
+  Transaction tx(c, "adding the office web server's role " + role);
+  const Result exists = c.query("SELECT 1 FROM pg_roles WHERE rolname = $1", {Param::of(role)},
+                                "adding the office web server's role");
+  // NOINHERIT: alone it reads nothing; each request acts as one person.
+  if (exists.rows() == 0)
+    c.exec("CREATE ROLE " + role + " LOGIN NOINHERIT", "adding the office web server's role");
+  else
+    c.exec("ALTER ROLE " + role + " NOINHERIT", "adding the office web server's role");
+  c.exec("GRANT rockface_web TO " + role, "adding the office web server's role");
   tx.commit();
 }
 

@@ -57,6 +57,12 @@ void add_tablet(Connection& c, const std::string& role, const std::string& tunne
 // (member of rockface_tunnel_office and of the tunnel, schema version 2).
 // Neither writes.
 void add_office_user(Connection& c, const std::string& role, const std::string& tunnel = "");
+// Admin: the login role `rockface office serve` connects as (its pooled
+// connections, storage/office/connection_pool.h): NOINHERIT, a member of
+// rockface_web, so it may act as each office user and as nothing else.
+// Its password is set by the admin (ALTER ROLE ... PASSWORD) and given to
+// the web server in a passfile.
+void add_web_service(Connection& c, const std::string& role);
 // Superuser (or an admin): a login role that administers the site (member
 // of rockface_admin, with CREATEROLE so that it can add tablets and office
 // users itself: role attributes are not inherited through membership). An

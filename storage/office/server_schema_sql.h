@@ -30,6 +30,31 @@ DO $$ BEGIN
 END $$;
 )sql";
 
+// The office web server's group (issue 46): a member of every office user,
+// so that the web server's service role (a member of this group) may act
+// as an office user (SET ROLE) on its pooled connections — and as no
+// tablet or admin. The office users made before it are granted here; new
+// ones by add_office_user. Roles belong to the cluster.
+inline constexpr const char* kRolesWeb = R"sql(
+DO $$ DECLARE r record; BEGIN
+  IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'rockface_web') THEN
+    CREATE ROLE rockface_web NOLOGIN NOINHERIT;
+  END IF;
+  FOR r IN SELECT u.rolname FROM pg_roles u
+           WHERE u.rolcanlogin AND u.rolname <> 'rockface_web'
+             AND (pg_has_role(u.oid, 'rockface_office', 'MEMBER')
+                  OR pg_has_role(u.oid, 'rockface_tunnel_office', 'MEMBER'))
+             AND NOT pg_has_role(u.oid, 'rockface_admin', 'MEMBER')
+             AND NOT pg_has_role(u.oid, 'rockface_tablet', 'MEMBER')
+             -- the service roles themselves (members of office users
+             -- through this group)
+             AND NOT pg_has_role(u.oid, 'rockface_web', 'MEMBER')
+             AND NOT pg_has_role('rockface_web', u.oid, 'MEMBER') LOOP
+    EXECUTE format('GRANT %I TO rockface_web', r.rolname);
+  END LOOP;
+END $$;
+)sql";
+
 // Version 1. Records are append-only: a change on a tablet is a new revision
 // (kind, uuid, revision), so the server keeps every record's history and a
 // tablet never needs UPDATE or DELETE. A record's body is the tablet's row

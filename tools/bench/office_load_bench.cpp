@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -81,6 +82,8 @@ std::string fresh_database(const std::string& tunnel) {
   for (const char* t : {"tablet_1", "tablet_2", "tablet_3", "tablet_4"})
     office::add_tablet(c, t, tunnel);
   office::add_office_user(c, "office_bench");
+  // The web server's service role, its pooled connections' (socket: trust).
+  office::add_web_service(c, "office_web_bench");
   return db;
 }
 
@@ -137,13 +140,17 @@ struct Served {
   pid_t pid = -1;
   int port = 0;
   double start_s = 0;
-  explicit Served(const std::string& db) {
+  // `binary`: another build's rockface to serve (e.g. main's, for a
+  // before / after on the same database); "" is this build's.
+  explicit Served(const std::string& db, const std::string& other_binary = "") {
     const std::string conninfo = "host=" + server().folder().string() +
-                                 " port=" + std::to_string(server().port()) + " dbname=" + db;
+                                 " port=" + std::to_string(server().port()) + " dbname=" + db +
+                                 " user=office_web_bench";
     // A log of its own: an earlier server's line must not be read as this one's.
     static int count = 0;
     const fs::path log = folder() / ("serve-" + std::to_string(++count) + ".out");
-    const std::string binary = std::string(ROCKFACE_BINARY_DIR) + "/rockface";
+    const std::string binary =
+        other_binary.empty() ? std::string(ROCKFACE_BINARY_DIR) + "/rockface" : other_binary;
     const auto t0 = Clock::now();
     pid = ::fork();
     if (pid == 0) {
@@ -259,6 +266,64 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
   state.counters["server_peak_RSS_MB"] = rss;
 }
 BENCHMARK(BM_Office50ClientsDrive3000WhileATabletSyncs)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+// The rounds along the drive of 3,000 visits (issue 46: the rounds pulled
+// the whole tunnel with its photographs): the first request's time (the
+// pull and the rounds' figures), the bytes of the server's pulled copy,
+// a second request's time (the page kept), the server's peak memory.
+// With `binary_variable` set, the rockface named by that environment
+// variable serves instead of this build's.
+void BM_OfficeRounds3000(benchmark::State& state, const char* binary_variable) {
+  std::string binary;
+  if (*binary_variable) {
+    const char* named = std::getenv(binary_variable);
+    if (!named) {
+      state.SkipWithError(
+          (std::string("set ") + binary_variable + " to measure another build").c_str());
+      return;
+    }
+    binary = named;
+  }
+  const std::string& db = big_database();
+  double first_s = 0, again_s = 0, copy_mb = 0, rss = 0, page_kb = 0;
+  int rounds = 0;
+  for (auto _ : state) {
+    Served s(db, binary);
+    httplib::Client c("127.0.0.1", s.port);
+    c.set_read_timeout(std::chrono::seconds(1800));
+    const std::string cookie = log_in(c, s.origin());
+    auto t0 = Clock::now();
+    const auto r = c.Get("/api/drive/rounds?tunnel=bench", {{"Cookie", cookie}});
+    first_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (!r || r->status != 200) {
+      state.SkipWithError("the rounds were not served");
+      return;
+    }
+    rounds = static_cast<int>(json::parse(r->body)["rounds"].size());
+    page_kb = static_cast<double>(r->body.size()) / 1024;
+    t0 = Clock::now();
+    c.Get("/api/drive/rounds?tunnel=bench", {{"Cookie", cookie}});
+    again_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    std::uintmax_t bytes = 0;
+    const fs::path shared = folder() / ("rockface-office-" + std::to_string(s.pid)) / "shared";
+    for (const auto& e : fs::directory_iterator(shared))
+      if (e.path().extension() == ".rockface") bytes += fs::file_size(e.path());
+    copy_mb = static_cast<double>(bytes) / (1024 * 1024);
+    rss = s.peak_rss_mb();
+  }
+  state.counters["rounds"] = rounds;
+  state.counters["first_s"] = first_s;
+  state.counters["again_s"] = again_s;
+  state.counters["pulled_copy_MB"] = copy_mb;
+  state.counters["page_kB"] = page_kb;
+  state.counters["server_peak_RSS_MB"] = rss;
+}
+BENCHMARK_CAPTURE(BM_OfficeRounds3000, other_build, "ROCKFACE_OTHER_BINARY")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(BM_OfficeRounds3000, this_build, "")
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

@@ -54,16 +54,17 @@ export async function showVisit(host, tunnel, visitId) {
     section('Joints', joints),
     section('Blocks', blocks),
   ];
-  const picture = (which, alt) => {
-    const img = el('img', { src: url('/api/visit/picture', { ...q, which }), alt, className: 'picture', id: `picture-${which}` });
+  // The field report's pictures with the caption the PDF prints under them.
+  const picture = (which, caption) => {
+    const img = el('img', { src: url('/api/visit/picture', { ...q, which }), alt: caption, className: 'picture', id: `picture-${which}` });
     img.addEventListener('click', () => img.classList.toggle('zoomed'));
-    return img;
+    return el('figure', { className: 'picture' }, img, el('figcaption', { id: `caption-${which}`, text: caption }));
   };
   if (v.tunnel && v.tunnel.name)
     parts.push(section('The round in the tunnel', el('p', { text: `${v.tunnel.name}, ${v.tunnel.profile}, chainage ${v.tunnel.chainage}` }), lines(v.tunnel.lines),
-      v.tunnel.has_developed_view ? picture('developed', 'the excavation developed: over- and underbreak against the design profile') : null));
+      v.tunnel.has_developed_view ? picture('developed', 'The round developed: overbreak red, underbreak blue, not seen hatched') : null));
   if (v.wedges && v.wedges.rows) parts.push(section('Wedges around the excavation', lines(v.wedges.lines),
-    v.wedges.has_picture ? picture('wedges', 'the section with the largest wedges') : null,
+    v.wedges.has_picture ? picture('wedges', 'The wedges along the drive, and the largest in perspective') : null,
     table(v.wedges.rows[0] ? v.wedges.rows[0].map((_, i) => (i ? '' : 'Wedge')) : [], v.wedges.rows), lines(v.wedges.notes)));
   parts.push(section('Rock mass', v.rockmass.rmr ? lines([v.rockmass.rmr, v.rockmass.q, ...v.rockmass.lines]) : el('p', { text: v.rockmass.note || 'not classified' })));
   if (v.support && v.support.proposals) parts.push(section('Support', lines(v.support.proposals), lines(v.support.decision)));

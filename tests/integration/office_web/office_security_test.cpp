@@ -13,34 +13,13 @@
 #include <string>
 #include <thread>
 
+#include "tests/integration/office_web/office_client.h"
 #include "tests/integration/office_web/office_site.h"
 
 namespace rockface::office_web_test {
 namespace {
 
 using nlohmann::json;
-
-struct Login {
-  int status = 0;
-  std::string cookie;  // "name=value" for a Cookie header
-  std::string set_cookie, csrf, error;
-};
-
-Login log_in(httplib::Client& c, const std::string& origin, const std::string& role,
-             const std::string& password) {
-  httplib::Headers h = {{"Origin", origin}, {"Sec-Fetch-Site", "same-origin"}};
-  const auto r = c.Post("/api/login", h, json{{"role", role}, {"password", password}}.dump(),
-                        "application/json");
-  Login out;
-  if (!r) return out;
-  out.status = r->status;
-  out.set_cookie = r->get_header_value("Set-Cookie");
-  out.cookie = out.set_cookie.substr(0, out.set_cookie.find(';'));
-  const json body = json::parse(r->body);
-  out.csrf = body.value("csrf", "");
-  out.error = body.value("error", "");
-  return out;
-}
 
 void expect_security_headers(const httplib::Result& r, const std::string& what) {
   ASSERT_TRUE(r) << what;
@@ -195,6 +174,46 @@ TEST(OfficeWebSecurity, FiveFailedLogInsAMinuteThenTheAddressWaits) {
   EXPECT_NE(json::parse(held->body).value("error", "").find("try again"), std::string::npos);
   // Another role from the same address waits as well.
   EXPECT_EQ(log_in(c, server.origin(), "adit_office", kAditPassword).status, 429);
+}
+
+// The count per role let anyone keep a person out of their own role for a
+// minute (five wrong guesses at it). The person's own browser, known from
+// an earlier log-in as that role, still logs in; a stranger, and the same
+// browser as another role, are still held; the known browser's own
+// failures hold it.
+TEST(OfficeWebSecurity, GuessesAtARoleDoNotKeepItsOwnBrowserOut) {
+  OfficeServer server;  // a server of its own: its count starts at zero
+  httplib::Client c("127.0.0.1", server.port());
+  const Login first = log_in(c, server.origin(), "main_office", kMainOfficePassword);
+  ASSERT_EQ(first.status, 200) << first.error;
+  ASSERT_FALSE(first.known.empty()) << "no known-browser cookie: " << first.set_cookie;
+  // A stranger guesses at main_office five times (another browser: no cookie).
+  for (int i = 0; i < 5; ++i)
+    EXPECT_EQ(log_in(c, server.origin(), "main_office", "guess " + std::to_string(i)).status, 403)
+        << i;
+  EXPECT_EQ(log_in(c, server.origin(), "main_office", kMainOfficePassword).status, 429)
+      << "a browser never seen is held by the role's count";
+  // The person's browser: let in with the right password.
+  const Login again = log_in(c, server.origin(), "main_office", kMainOfficePassword, first.known);
+  EXPECT_EQ(again.status, 200) << again.error;
+  EXPECT_TRUE(again.known.empty()) << "an already known browser gets no second token";
+  // Its token is for main_office only: as another role it is a stranger
+  // from an address that has failed five times.
+  EXPECT_EQ(log_in(c, server.origin(), "adit_office", kAditPassword, first.known).status, 429);
+  // A forged token vouches for nothing.
+  EXPECT_EQ(log_in(c, server.origin(), "main_office", kMainOfficePassword,
+                   "rockface_known=" + std::string(64, 'a'))
+                .status,
+            429);
+  // The known browser's own wrong guesses are counted against it: five,
+  // then it waits too.
+  for (int i = 0; i < 5; ++i)
+    EXPECT_EQ(
+        log_in(c, server.origin(), "main_office", "wrong " + std::to_string(i), first.known).status,
+        403)
+        << i;
+  EXPECT_EQ(log_in(c, server.origin(), "main_office", kMainOfficePassword, first.known).status,
+            429);
 }
 
 // `office serve --tls`: a self-signed certificate for 127.0.0.1 made here

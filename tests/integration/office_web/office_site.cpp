@@ -30,9 +30,11 @@ using namespace office_test;
 
 namespace {
 
-Site make_site() {
+// A fresh database with tunnel `tunnel` (office_environment.h's roles)
+// and the site's folder.
+Site empty_site(const std::string& tunnel) {
   Site s;
-  s.database = fresh_database("Main drive");
+  s.database = fresh_database(tunnel);
   s.folder = fs::temp_directory_path() /
              ("rockface-office-web-" + std::to_string(::getpid()) + "-" + s.database);
   fs::create_directories(s.folder);
@@ -50,6 +52,31 @@ Site make_site() {
   };
   static RemovedIfPassed made;
   made.folders.push_back(s.folder);
+  // The office server's own role, which its pooled connections log in as
+  // (its password from a passfile, as a site's service has it).
+  {
+    storage::office::Connection c(as_superuser(s.database));
+    storage::office::add_web_service(c, "office_web");
+  }
+  server().psql(std::string("ALTER ROLE office_web PASSWORD '") + kWebServicePassword + "'",
+                s.database);
+  const fs::path passfile = s.folder / "office-web.pgpass";
+  {
+    std::ofstream out(passfile);
+    out << "127.0.0.1:" << server().port() << ":" << s.database
+        << ":office_web:" << kWebServicePassword << "\n";
+  }
+  fs::permissions(passfile, fs::perms::owner_read | fs::perms::owner_write,
+                  fs::perm_options::replace);
+  // Over TCP with TLS (the socket trusts every role): passwords are checked.
+  s.server = "host=127.0.0.1 port=" + std::to_string(server().port()) + " dbname=" + s.database +
+             " sslmode=verify-full sslrootcert=" + server().ca_certificate().string() +
+             " user=office_web passfile=" + passfile.string();
+  return s;
+}
+
+Site make_site() {
+  Site s = empty_site("Main drive");
   {
     storage::office::Connection c(as_superuser(s.database));
     storage::office::add_tunnel(c, "North adit");
@@ -103,9 +130,6 @@ Site make_site() {
   storage::office::sync_project(s.folder / "b.rockface", as_role(s.database, "tablet_b"), {}, none);
   storage::office::sync_project(s.folder / "adit-c.rockface", as_role(s.database, "tablet_c"), {},
                                 none);
-  // Over TCP with TLS (the socket trusts every role): passwords are checked.
-  s.server = "host=127.0.0.1 port=" + std::to_string(server().port()) + " dbname=" + s.database +
-             " sslmode=verify-full sslrootcert=" + server().ca_certificate().string();
   return s;
 }
 
@@ -118,6 +142,15 @@ const Site& site() {
 
 Site fresh_site() {
   return make_site();
+}
+
+Site site_of_project(const fs::path& project, const std::string& tunnel) {
+  Site s = empty_site(tunnel);
+  server().psql(std::string("ALTER ROLE office_reader PASSWORD '") + kOfficePassword + "'",
+                s.database);
+  NoProgress none;
+  storage::office::sync_project(project, as_role(s.database, "tablet_a"), {}, none);
+  return s;
 }
 
 OfficeServer::OfficeServer(double session_minutes) : OfficeServer(site(), session_minutes) {}
@@ -159,6 +192,7 @@ OfficeServer::OfficeServer(const Site& s, double session_minutes,
   }
   if (port_ == 0)
     throw std::runtime_error("rockface office serve did not start: see " + log.string());
+  work_folder_ = s.folder / ("rockface-office-" + std::to_string(pid_));
 }
 
 OfficeServer::~OfficeServer() {

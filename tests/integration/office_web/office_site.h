@@ -20,6 +20,8 @@ inline constexpr const char* kOfficePassword = "office pass 1";
 inline constexpr const char* kTabletPassword = "tablet pass 2";
 inline constexpr const char* kAditPassword = "adit pass 3";
 inline constexpr const char* kMainOfficePassword = "main pass 4";
+// The office web server's service role (office_web), from its passfile.
+inline constexpr const char* kWebServicePassword = "web pass 5";
 // A note on one of tablet A's visits: a script that must stay text.
 inline constexpr const char* kScriptNote =
     "<script>window.rockfaceInjected=1</script><img src=x onerror=\"window.rockfaceInjected=2\">";
@@ -30,7 +32,9 @@ inline constexpr const char* kPoleTargets = "[[0.1, 4.0, 0.2], [0.1, 4.0, 2.2]]"
 
 struct Site {
   std::string database;
-  std::string server;  // libpq key=value text without user: what `office serve` takes
+  // libpq key=value text naming the web server's service role and its
+  // passfile: what `office serve` takes.
+  std::string server;
   std::filesystem::path folder;
 };
 
@@ -38,6 +42,9 @@ struct Site {
 const Site& site();
 // Another such site, in a database of its own: for a test that syncs more.
 Site fresh_site();
+// A site whose database holds one project's visits, synced by tablet_a
+// (a tablet of `tunnel`), and the office_reader role with kOfficePassword.
+Site site_of_project(const std::filesystem::path& project, const std::string& tunnel);
 
 // A running `rockface office serve` on 127.0.0.1 (any free port); stopped
 // (SIGTERM) when destroyed.
@@ -51,11 +58,15 @@ class OfficeServer {
   OfficeServer(const OfficeServer&) = delete;
   OfficeServer& operator=(const OfficeServer&) = delete;
   int port() const { return port_; }
+  // The server's own work folder (`--work` + rockface-office-PID): its
+  // pulled copies are in shared/.
+  std::filesystem::path work_folder() const { return work_folder_; }
   std::string origin() const { return "http://127.0.0.1:" + std::to_string(port_); }
 
  private:
   pid_t pid_ = -1;
   int port_ = 0;
+  std::filesystem::path work_folder_;
 };
 
 }  // namespace rockface::office_web_test

@@ -1,0 +1,168 @@
+// The office server's database connections (issue 46): a bounded pool
+// shared by every logged-in person, each request acting as its person's
+// role, where each person held a connection of their own (fifty people,
+// fifty of PostgreSQL's slots).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "storage/office/connection_pool.h"
+#include "storage/office/pg_connection.h"
+#include "storage/office/server_schema.h"
+#include "tests/integration/office_web/office_site.h"
+#include "tests/storage/office/office_environment.h"
+
+// Last: <resolv.h>, which httplib.h includes, defines the macro _res that
+// Eigen uses as a parameter name.
+#include "tests/integration/office_web/office_client.h"
+
+namespace rockface::office_web_test {
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+namespace office = storage::office;
+
+std::string current_user(office::Connection& c) {
+  return c.query("SELECT current_user", {}, "asking who").text(0, 0);
+}
+
+TEST(OfficePool, ALeaseActsAsItsRoleAndTheSlotsAreBounded) {
+  const Site& s = site();
+  office::ConnectionPool pool(s.server, 1, std::chrono::milliseconds(300));
+  {
+    auto adit = pool.acquire("adit_office");
+    EXPECT_EQ(current_user(adit.db()), "adit_office");
+    // Row-level security as that person: one tunnel.
+    const office::Result r =
+        adit.db().query("SELECT name FROM rockface.tunnel", {}, "reading the tunnels");
+    ASSERT_EQ(r.rows(), 1);
+    EXPECT_EQ(r.text(0, 0), "North adit");
+    // The one slot is lent: the next waits its 300 ms, then is told so.
+    const auto t0 = Clock::now();
+    EXPECT_THROW(pool.acquire("office_reader"), office::PoolBusy);
+    EXPECT_GE(Clock::now() - t0, std::chrono::milliseconds(300));
+    // A request that failed inside a transaction gives its connection back usable.
+    adit.db().exec("BEGIN", "a request");
+    EXPECT_THROW(adit.db().exec("SELECT no_such_column FROM rockface.tunnel", "a bad request"),
+                 office::ServerError);
+  }
+  // The same connection, reset: the next person is who they are.
+  auto reader = pool.acquire("office_reader");
+  EXPECT_EQ(current_user(reader.db()), "office_reader");
+  EXPECT_EQ(pool.open(), 1u);
+  // Read-only whoever it acts as.
+  EXPECT_THROW(reader.db().exec("CREATE TEMP TABLE t (x int)", "writing"), office::ServerError);
+}
+
+TEST(OfficePool, TheServiceRoleActsAsNoTabletAndNoOtherRole) {
+  const Site& s = site();
+  office::ConnectionPool pool(s.server, 1, std::chrono::seconds(5));
+  for (const char* role : {"tablet_a", "postgres", "rockface_admin"}) {
+    try {
+      pool.acquire(role);
+      ADD_FAILURE() << "the pool acted as " << role;
+    } catch (const office::ServerError& e) {
+      EXPECT_EQ(e.sqlstate(), "42501") << role << ": " << e.what();
+    }
+  }
+}
+
+// Six people on a server of two connections, all asking at once: every
+// request served, each person seeing their own tunnels, never more than two
+// connections of the server at the database, and no person's own.
+TEST(OfficePool, MoreUsersThanConnectionsAreAllServed) {
+  const Site& s = site();
+  const std::map<std::string, std::string> passwords = {
+      {"office_reader", kOfficePassword}, {"main_office", kMainOfficePassword},
+      {"adit_office", kAditPassword},     {"pool_reader_1", "pool pass 1"},
+      {"pool_reader_2", "pool pass 2"},   {"pool_reader_3", "pool pass 3"}};
+  {
+    office::Connection c(office_test::as_superuser(s.database));
+    for (int i = 1; i <= 3; ++i) office::add_office_user(c, "pool_reader_" + std::to_string(i));
+  }
+  for (int i = 1; i <= 3; ++i)
+    office_test::server().psql("ALTER ROLE pool_reader_" + std::to_string(i) +
+                                   " PASSWORD 'pool pass " + std::to_string(i) + "'",
+                               s.database);
+  OfficeServer server(s, 30, {"--pool", "2", "--pool-wait-seconds", "120"});
+  std::map<std::string, std::string> cookies;
+  for (const auto& [role, password] : passwords) {
+    httplib::Client c("127.0.0.1", server.port());
+    const Login l = log_in(c, server.origin(), role, password);
+    ASSERT_EQ(l.status, 200) << role << ": " << l.error;
+    cookies[role] = l.cookie;
+  }
+  office::Connection super(office_test::as_superuser(s.database));
+  auto backends = [&](const std::string& who) {
+    return static_cast<int>(super
+                                .query("SELECT count(*) FROM pg_stat_activity WHERE usename = "
+                                       "ANY(string_to_array($1, ','))",
+                                       {office::Param::of(who)}, "counting connections")
+                                .int64(0, 0));
+  };
+  std::string people;
+  for (const auto& [role, password] : passwords) people += (people.empty() ? "" : ",") + role;
+  EXPECT_EQ(backends(people), 0) << "a logged-in person holds a connection of their own";
+
+  std::atomic<bool> done{false};
+  std::atomic<int> most{0};
+  std::thread watch([&] {
+    office::Connection w(office_test::as_superuser(s.database));
+    while (!done) {
+      const int n = static_cast<int>(
+          w.query("SELECT count(*) FROM pg_stat_activity WHERE usename = 'office_web'", {},
+                  "counting the pool's connections")
+              .int64(0, 0));
+      most = std::max(most.load(), n);
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  });
+  std::map<std::string, std::vector<std::string>> seen;
+  std::map<std::string, int> failed;
+  std::mutex lock;
+  std::vector<std::thread> people_asking;
+  for (const auto& [role, cookie] : cookies)
+    people_asking.emplace_back([&, role = role, cookie = cookie] {
+      httplib::Client c("127.0.0.1", server.port());
+      c.set_read_timeout(std::chrono::seconds(180));
+      for (int i = 0; i < 3; ++i) {
+        const auto t = c.Get("/api/tunnels", {{"Cookie", cookie}});
+        const auto tunnels = t && t->status == 200 ? json::parse(t->body) : json();
+        std::vector<std::string> names;
+        for (const auto& tunnel : tunnels) names.push_back(tunnel["name"]);
+        const std::string mine = names.empty() ? "Main drive" : names.front();
+        const auto d =
+            c.Get(("/api/drive?tunnel=" + (mine == "North adit" ? std::string("North%20adit")
+                                                                : std::string("Main%20drive")))
+                      .c_str(),
+                  {{"Cookie", cookie}});
+        std::lock_guard guard(lock);
+        if (!t || t->status != 200) ++failed[role];
+        if (!d || d->status != 200) ++failed[role];
+        seen[role] = names;
+      }
+    });
+  for (auto& t : people_asking) t.join();
+  done = true;
+  watch.join();
+  for (const auto& [role, n] : failed) ADD_FAILURE() << role << ": " << n << " requests failed";
+  EXPECT_EQ(seen["adit_office"], std::vector<std::string>{"North adit"});
+  EXPECT_EQ(seen["main_office"], std::vector<std::string>{"Main drive"});
+  EXPECT_EQ(seen["office_reader"].size(), 2u);
+  EXPECT_EQ(seen["pool_reader_1"].size(), 2u);
+  EXPECT_GT(most.load(), 0);
+  EXPECT_LE(most.load(), 2) << "the server held more connections than its pool";
+  EXPECT_EQ(backends(people), 0) << "a person's own connection stayed open";
+}
+
+}  // namespace
+}  // namespace rockface::office_web_test
