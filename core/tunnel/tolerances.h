@@ -80,6 +80,17 @@ inline constexpr double kWedgeCornerRad = 0.017453292519943295;
 // (the pieces of a wedge compute shared corners separately; they agree to
 // ~1e-13 relative rounding).
 inline constexpr double kWedgeVertexMergeRel = 1e-9;
+// A corner of a perimeter wedge's piece this close to the wedge's apex,
+// relative to the wedge's size, is the apex. Each piece finds the apex
+// again as the meeting point of its joints; with two sets nearly parallel
+// (0.001-0.04 deg) they meet at a grazing angle and the pieces' apexes
+// scattered by ~1e-9 of the size, past kWedgeVertexMergeRel (the rounding
+// is amplified by one over the angle: 1e-16 / 2e-5 rad ~ 5e-12 per
+// operation, and the clipping takes several). 1e-6 keeps a margin of 50 at
+// the smallest angle, and lies far below the apex's distance from the
+// excavation (a wedge whose apex is within the chords' sagitta is left out
+// as a sliver).
+inline constexpr double kWedgeApexSnapRel = 1e-6;
 // A joint pyramid edge whose projection on the cross-section is shorter than
 // this (sine of its angle to the axis) runs along the axis: the wedges it
 // bounds never end along the tunnel (a margin of 0).
