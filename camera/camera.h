@@ -84,6 +84,14 @@ class Camera {
 
   // Takes one picture and downloads it with everything that belongs to it.
   virtual Capture capture() = 0;
+  // A picture the camera took but did not send (it stopped answering
+  // mid-download), fetched now with everything that belongs to it; nothing
+  // when none waits. Throws CameraError while it still cannot be fetched
+  // (the picture stays on the camera). A camera that downloads nothing
+  // (the mock camera) has none.
+  virtual std::optional<Capture> fetch_pending_capture() { return std::nullopt; }
+  // The camera's paths of the files such a picture left behind.
+  virtual std::vector<std::string> pending_downloads() { return {}; }
   // One live-view frame (BGR).
   virtual cv::Mat live_view() = 0;
   // Events that arrive within timeout_ms (at least a timeout event).

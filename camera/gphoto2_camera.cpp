@@ -42,6 +42,23 @@ std::pair<std::string, std::string> split_path(const std::string& path) {
   return {slash == 0 ? "/" : path.substr(0, slash), path.substr(slash + 1)};
 }
 
+// The files of one shot as a Capture: the JPEG is the image, everything
+// else (a RAW) a companion.
+Capture as_capture(std::vector<CapturedFile> got, const std::string& body_serial) {
+  auto is_jpeg = [](const CapturedFile& f) {
+    const std::string ext = lower(fs::path(f.camera_path).extension().string());
+    return ext == ".jpg" || ext == ".jpeg";
+  };
+  auto jpeg = std::find_if(got.begin(), got.end(), is_jpeg);
+  if (jpeg != got.end()) std::iter_swap(got.begin(), jpeg);
+  Capture c;
+  c.image = std::move(got.front());
+  c.companions.assign(std::make_move_iterator(got.begin() + 1), std::make_move_iterator(got.end()));
+  c.exif = read_exif(c.image.data);
+  c.body_serial = body_serial;
+  return c;
+}
+
 }  // namespace
 
 const char* tablet_setting_name(TabletSetting setting) {
@@ -537,20 +554,19 @@ Capture Gphoto2Camera::capture() {
       }
     std::vector<CapturedFile> got;
     for (const auto& f : files) got.push_back(s.download(f));
-    // The JPEG is the image; everything else is a companion.
-    auto is_jpeg = [](const CapturedFile& f) {
-      const std::string ext = lower(fs::path(f.camera_path).extension().string());
-      return ext == ".jpg" || ext == ".jpeg";
-    };
-    auto jpeg = std::find_if(got.begin(), got.end(), is_jpeg);
-    if (jpeg != got.end()) std::iter_swap(got.begin(), jpeg);
-    Capture c;
-    c.image = std::move(got.front());
-    c.companions.assign(std::make_move_iterator(got.begin() + 1),
-                        std::make_move_iterator(got.end()));
-    c.exif = read_exif(c.image.data);
-    c.body_serial = s.serial;
-    return c;
+    return as_capture(std::move(got), s.serial);
+  });
+}
+
+std::optional<Capture> Gphoto2Camera::fetch_pending_capture() {
+  return thread_->call([this]() -> std::optional<Capture> {
+    State& s = *state_;
+    if (s.pending.empty()) return std::nullopt;
+    // A file fetched leaves the list (safe in the spool); one that fails
+    // stays on it for the next try, and the failure is said.
+    std::vector<CapturedFile> got;
+    for (const auto& f : std::vector<std::string>(s.pending)) got.push_back(s.download(f));
+    return as_capture(std::move(got), s.serial);
   });
 }
 

@@ -85,6 +85,7 @@ class Gphoto2Camera final : public Camera {
   // Waits event_drain_ms for the shot's follow-up files (the RAW of a
   // RAW+JPEG pair) and spools every file as it is downloaded.
   Capture capture() override;
+  std::optional<Capture> fetch_pending_capture() override;
   // Waits up to timeout_ms on the camera.
   std::vector<CameraEvent> events(int timeout_ms) override;
   // Files on the camera or card, as "folder/name" paths, folders walked
@@ -93,7 +94,7 @@ class Gphoto2Camera final : public Camera {
   // Downloads one file into the spool folder.
   CapturedFile download(const std::string& camera_path);
   // Shots taken but not downloaded because the camera failed in between.
-  std::vector<std::string> pending_downloads();
+  std::vector<std::string> pending_downloads() override;
   // Downloads them now; those that fail stay pending. Throws nothing for a
   // file that fails; returns what was fetched.
   std::vector<CapturedFile> retry_pending();

@@ -1,12 +1,9 @@
 // `rockface tunnel PROJECT --alignment ALIGNMENT.csv --profile PROFILE.json|csv
 //  [--name NAME] [--drive ascending|descending] [--underbreak-tolerance M]`:
 // gives a project its tunnel from the surveyor's and the designer's files.
-#include <filesystem>
 #include <iostream>
 #include <memory>
 
-#include "core/common/error.h"
-#include "core/common/number_format.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/tunnel/tunnel_from_files.h"
 
@@ -31,18 +28,8 @@ VerbRun setup_tunnel(CLI::App& sub) {
   sub.add_option("--underbreak-tolerance", o->files.underbreak_tolerance_m,
                  "underbreak not counted up to this depth, m (default 0.05)");
   return [o] {
-    // Everything read and checked before the project is opened for writing.
-    const storage::TunnelRecord tunnel = tunnel_from_files(o->files);
-    if (!std::filesystem::exists(o->project)) throw InputError(o->project, "no such project file");
-    storage::ProjectStore store = storage::ProjectStore::open(o->project);
-    if (store.read_only())
-      throw InputError(o->project, "cannot add a tunnel: " + store.read_only_reason());
-    give_project_its_tunnel(store, tunnel);
-    const tunnel::Alignment a = tunnel.alignment(store.project().datum);
-    std::cout << "project " << o->project << ": tunnel " << tunnel.name << ", chainage "
-              << format_fixed(a.first_chainage(), 2) << " to " << format_fixed(a.last_chainage(), 2)
-              << ", " << tunnel.stations.size() << " stations, profile "
-              << format_fixed(tunnel.profile.area(), 2, " m²") << "\n";
+    const GivenTunnel given = give_project_its_tunnel(o->project, o->files);
+    std::cout << "project " << o->project << ": " << given.summary << "\n";
     return 0;
   };
 }

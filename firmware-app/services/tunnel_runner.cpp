@@ -1,6 +1,6 @@
 // The tablet's tunnel views (ui::TunnelRunner): each opens its own
-// connection to the project (one per thread) and draws what the verbs
-// `profile` and `drive` write.
+// connection to the project (one per thread) and runs what the verbs
+// `tunnel`, `profile`, `drive` and `place` run.
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +9,7 @@
 #include "core/common/number_format.h"
 #include "firmware-app/services/ui_services.h"
 #include "firmware-app/tunnel/project_drive.h"
+#include "firmware-app/tunnel/tunnel_from_files.h"
 #include "firmware-app/tunnel/typed_placement.h"
 #include "firmware-app/tunnel/visit_profile.h"
 #include "storage/field_report/tunnel_pictures.h"
@@ -26,6 +27,16 @@ storage::ProjectStore open_read_only(const std::filesystem::path& project) {
 
 }  // namespace
 
+std::string StoreTunnelRunner::give_tunnel(const std::filesystem::path& project,
+                                           const ui::TunnelFileChoice& files, Progress& progress) {
+  progress.step("reading the alignment and the design profile", 0.1);
+  TunnelFiles options;
+  options.alignment = files.alignment.string();
+  options.profile = files.profile.string();
+  options.name = files.name;
+  return give_project_its_tunnel(project, options).summary;
+}
+
 ui::ExcavationView StoreTunnelRunner::profile(const std::filesystem::path& project,
                                               storage::RecordId visit_id, Progress& progress) {
   progress.step("excavation against the design", 0.1);
@@ -35,9 +46,9 @@ ui::ExcavationView StoreTunnelRunner::profile(const std::filesystem::path& proje
   const tunnel::ProfileDeviation& d = p.deviation;
   ui::ExcavationView v;
   v.lines.push_back("tunnel " + p.tunnel.name + ", face at chainage " +
-                    format_fixed(p.placement.chainage, 2) +
-                    " m; the round from chainage " + format_fixed(p.round_from, 2) + " m (" +
-                    p.round_from_source + ") to " + format_fixed(p.round_to, 2) + " m.");
+                    format_fixed(p.placement.chainage, 2) + " m; the round from chainage " +
+                    format_fixed(p.round_from, 2) + " m (" + p.round_from_source + ") to " +
+                    format_fixed(p.round_to, 2) + " m.");
   v.message = d.message;
   v.compared = !d.view.chainage.empty() && !d.view.s.empty() &&
                d.status != tunnel::DeviationStatus::no_walls_in_view &&

@@ -25,6 +25,8 @@ class StoreAnalysisRunner final : public ui::AnalysisRunner {
 
 class StoreTunnelRunner final : public ui::TunnelRunner {
  public:
+  std::string give_tunnel(const std::filesystem::path& project, const ui::TunnelFileChoice& files,
+                          Progress& progress) override;
   ui::ExcavationView profile(const std::filesystem::path& project, storage::RecordId visit_id,
                              Progress& progress) override;
   ui::DriveJoints drive(const std::filesystem::path& project, Progress& progress) override;

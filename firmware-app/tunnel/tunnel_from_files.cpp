@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "storage/tunnel/tunnel_files.h"
 
 namespace rockface::app {
@@ -39,6 +40,23 @@ void give_project_its_tunnel(storage::ProjectStore& store, const storage::Tunnel
                                                 has->alignment_source +
                                                 "); its visits are placed along it");
   store.save_tunnel(tunnel);
+}
+
+GivenTunnel give_project_its_tunnel(const std::filesystem::path& project,
+                                    const TunnelFiles& files) {
+  GivenTunnel given{tunnel_from_files(files), {}};
+  if (!std::filesystem::exists(project)) throw InputError(project.string(), "no such project file");
+  storage::ProjectStore store = storage::ProjectStore::open(project);
+  if (store.read_only())
+    throw InputError(project.string(), "cannot add a tunnel: " + store.read_only_reason());
+  give_project_its_tunnel(store, given.record);
+  const storage::TunnelRecord& t = given.record;
+  const tunnel::Alignment a = t.alignment(store.project().datum);
+  given.summary = "tunnel " + t.name + ", chainage " + format_fixed(a.first_chainage(), 2) +
+                  " to " + format_fixed(a.last_chainage(), 2) + ", " +
+                  std::to_string(t.stations.size()) + " stations, profile " +
+                  format_fixed(t.profile.area(), 2, " m²");
+  return given;
 }
 
 }  // namespace rockface::app

@@ -3,6 +3,7 @@
 // scene (issue 42: a project got its tunnel only by replaying a scene): the
 // alignment CSV and the design profile (JSON or CSV), as the scene's
 // `tunnel` section takes them (docs/scene-extensions.md).
+#include <filesystem>
 #include <string>
 
 #include "storage/project/project_store.h"
@@ -23,5 +24,15 @@ storage::TunnelRecord tunnel_from_files(const TunnelFiles& files);
 // Stores it in the project. A project that has a tunnel keeps it: refused
 // naming it (its visits are placed along that alignment).
 void give_project_its_tunnel(storage::ProjectStore& store, const storage::TunnelRecord& tunnel);
+
+// The whole of `rockface tunnel`, for the verb and the tablet's Project
+// screen alike: the files read and checked before the project is opened for
+// writing (a bad file leaves the project untouched), then stored. Throws
+// InputError naming the file, option or project at fault.
+struct GivenTunnel {
+  storage::TunnelRecord record;
+  std::string summary;  // "tunnel NAME, chainage A to B, N stations, profile X m²"
+};
+GivenTunnel give_project_its_tunnel(const std::filesystem::path& project, const TunnelFiles& files);
 
 }  // namespace rockface::app

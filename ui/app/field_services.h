@@ -117,11 +117,27 @@ struct DriveJoints {
   std::vector<std::string> lines;  // what `rockface drive` prints
 };
 
-// The tunnel around the visits: the excavation of a visit's round against
-// the design profile, and the joint sets along the drive.
+// Issue 42: the files the geologist chose on the Project screen for the
+// project's tunnel (from the tablet's storage or a USB stick), as `rockface
+// tunnel` takes them.
+struct TunnelFileChoice {
+  std::filesystem::path alignment;  // the surveyor's CSV of stations
+  std::filesystem::path profile;    // the design profile, JSON or CSV
+  std::string name;                 // empty: the alignment file's stem
+};
+
+// The tunnel around the visits: the project's tunnel from its files, the
+// excavation of a visit's round against the design profile, and the joint
+// sets along the drive.
 class TunnelRunner {
  public:
   virtual ~TunnelRunner() = default;
+  // Gives the project its tunnel by the workflow `rockface tunnel` runs;
+  // returns what was stored in words. Throws InputError as the command line
+  // says it (the file and line at fault, a project that has a tunnel), the
+  // project unchanged.
+  virtual std::string give_tunnel(const std::filesystem::path& project,
+                                  const TunnelFileChoice& files, Progress& progress) = 0;
   // Throw rockface::Error / InputError saying why (no tunnel, visit not placed).
   virtual ExcavationView profile(const std::filesystem::path& project, storage::RecordId visit_id,
                                  Progress& progress) = 0;

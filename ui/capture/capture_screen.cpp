@@ -82,14 +82,35 @@ void shoot(AppState& app, bool left) {
   app.task.start(
       left ? "Left shot" : "Right shot",
       [cam, shot, left](Progress& progress) {
+        const std::string side = left ? "left" : "right";
+        // Issue 42: a shot of this station that the camera took and did not
+        // send (it stopped answering mid-download) is fetched from its card,
+        // not taken again: the station's picture is the one already shot.
+        progress.step("fetching a shot left on the camera", 0.1);
+        if (auto waiting = cam->fetch_pending_capture()) {
+          *shot = std::move(*waiting);
+          return side + " shot fetched from the camera's card (" +
+                 std::filesystem::path(shot->image.camera_path).filename().string() +
+                 ", taken before the camera stopped answering)";
+        }
         progress.step("focus and shoot", 0.2);
         // The right shot keeps the left's focus. A body that gives no focus
         // control over USB still shoots: the geologist focuses it by hand
         // (refusing the shot left no way to take it at all), and is told.
         std::string by_hand;
         if (left) by_hand = lock_focus_or_say_why(*cam);
-        *shot = cam->capture();
-        std::string said = std::string(left ? "left" : "right") + " shot captured";
+        try {
+          *shot = cam->capture();
+        } catch (const camera::CameraError& e) {
+          const std::vector<std::string> waiting = cam->pending_downloads();
+          if (waiting.empty()) throw;
+          throw camera::CameraError(
+              e.kind(), std::string(e.what()) + ". The picture is on the camera's card (" +
+                            std::filesystem::path(waiting.front()).filename().string() +
+                            "): once the camera answers, tap Shoot " + side +
+                            " again and it is fetched, not taken again");
+        }
+        std::string said = side + " shot captured";
         if (!by_hand.empty()) said += " with the focus as set by hand (" + by_hand + ")";
         return said;
       },

@@ -35,6 +35,7 @@ void reload_tunnel(AppState& app) {
   t.drive_drawn = {};
   t.excavation.reset();
   t.excavation_drawn = {};
+  t.picker = {};
   try {
     t.record = s.store().load_tunnel();
     if (t.record && s.visit()) t.placement = s.store().load_visit_placement(*s.visit());
@@ -152,8 +153,16 @@ void draw_tunnel_panel(AppState& app) {
   TunnelState& t = app.project.tunnel;
   ImGui::Separator();
   if (!t.record) {
-    note("No tunnel in this project (a replay of a scene with a tunnel adds one).");
+    note(
+        "No tunnel in this project: give it its alignment and design profile from their files "
+        "(or replay a scene with a tunnel).");
     for (const auto& line : t.lines) paragraph(line);
+    if (t.picker.open) {
+      draw_tunnel_files_picker(app);
+      return;
+    }
+    const bool can = !app.task.running() && app.services.tunnel && !app.session->read_only();
+    if (app.targets.button("Tunnel from files", 0, can)) open_tunnel_files_picker(app);
     return;
   }
   const auto& r = *t.record;

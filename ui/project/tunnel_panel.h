@@ -1,6 +1,7 @@
 #pragma once
 // The tunnel on the Project screen: the project's tunnel (alignment,
-// design profile, drive, tolerance), where the current visit lies in it and
+// design profile, drive, tolerance) or, when it has none, its files chosen
+// on the tablet (tunnel_files_picker.h), where the current visit lies in it and
 // how it was placed, and on request two views made on the worker: the
 // excavation of the visit's round against the design (developed view) and
 // the joint sets along the drive.
@@ -13,6 +14,7 @@
 #include "ui/app/field_services.h"
 #include "ui/project/drive_chart.h"
 #include "ui/project/excavation_view.h"
+#include "ui/project/tunnel_files_picker.h"
 #include "ui/widgets/picture_texture.h"
 
 namespace rockface::ui {
@@ -39,6 +41,8 @@ struct TunnelState {
   // view (the cells in `picture`), and what the last frame drew.
   std::optional<ExcavationView> excavation;
   ExcavationDrawn excavation_drawn;
+  // Issue 42: a project with no tunnel gets one from its files.
+  TunnelFilesPicker picker;
 };
 
 void draw_tunnel_panel(AppState& app);

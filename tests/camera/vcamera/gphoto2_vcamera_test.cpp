@@ -221,6 +221,45 @@ TEST_F(VirtualD750Test, AShotTheSpoolCannotTakeStaysPendingUntilThereIsRoom) {
   EXPECT_TRUE(cam.pending_downloads().empty());
 }
 
+// Issue 42: the camera stops sending a picture halfway through its download
+// (virtual_d750.h CardCutMidShot: the card's file cut to half between the
+// shot and the download; the vusb port itself cannot be pulled out, its
+// device being a file read once per process, and vcamera.c never answers
+// DeviceBusy). The shot is not lost: it stays pending on the camera,
+// nothing partial lies in the spool, and once the camera answers again it
+// is fetched whole as the shot it was; the next shot is a new picture.
+TEST_F(VirtualD750Test, AShotItCouldNotSendIsFetchedFromItsCardOnceItAnswers) {
+  Gphoto2Camera cam(options());
+  const std::string serial = cam.serial_number();
+  CameraError::Kind kind{};
+  std::string why;
+  {
+    test::CardCutMidShot cut(d750_);
+    why = message_of([&] { cam.capture(); }, &kind);
+    ASSERT_TRUE(cut.cut()) << why;
+    cut.restore();
+  }
+  const auto pending = cam.pending_downloads();
+  ASSERT_EQ(pending.size(), 1u) << why;
+  // What failed and where: the download of that picture, on the camera.
+  EXPECT_EQ(why.rfind("Downloading " + pending[0] + ": ", 0), 0u) << why;
+  EXPECT_TRUE(!fs::exists(spool_) || files_in(spool_).empty());
+
+  const std::optional<Capture> fetched = cam.fetch_pending_capture();
+  ASSERT_TRUE(fetched);
+  EXPECT_EQ(fetched->image.camera_path, pending[0]);
+  EXPECT_EQ(bytes_of(fetched->image.saved_path), d750_.card_jpeg);
+  EXPECT_EQ(fetched->exif.model, "NIKON D750");
+  EXPECT_EQ(fetched->body_serial, serial);
+  EXPECT_TRUE(cam.pending_downloads().empty());
+  EXPECT_FALSE(cam.fetch_pending_capture());
+
+  const Capture next = cam.capture();
+  EXPECT_NE(next.image.camera_path, pending[0]);
+  EXPECT_EQ(bytes_of(next.image.saved_path), d750_.card_jpeg);
+  EXPECT_EQ(files_in(spool_).size(), 2u);
+}
+
 TEST_F(VirtualD750Test, RefusesLiveViewSayingTheBodyCannotAndStillShoots) {
   Gphoto2Camera cam(options());
   CameraError::Kind kind{};

@@ -1,7 +1,10 @@
 #include "tests/camera/vcamera/virtual_d750.h"
 
+#include <poll.h>
+#include <sys/inotify.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -60,7 +63,7 @@ std::vector<uint8_t> d750_jpeg() {
 
 }  // namespace
 
-VirtualD750 set_up_virtual_d750() {
+VirtualD750 set_up_virtual_d750(std::vector<uint8_t> card_jpeg) {
   VirtualD750 d;
   const std::string version = installed_libgphoto2_version();
   const fs::path iolibs = cached_iolibs(version);
@@ -81,13 +84,62 @@ VirtualD750 set_up_virtual_d750() {
   const unsigned char ids[4] = {0xb0, 0x04, 0x37, 0x04};
   std::ofstream(d.folder / "001,001", std::ios::binary)
       .write(reinterpret_cast<const char*>(ids), 4);
-  d.card_jpeg = d750_jpeg();
+  d.card_jpeg = card_jpeg.empty() ? d750_jpeg() : std::move(card_jpeg);
   std::ofstream(d.folder / "vcamera" / "DCIM" / "100NIKON" / "DSC_0001.JPG", std::ios::binary)
       .write(reinterpret_cast<const char*>(d.card_jpeg.data()),
              static_cast<std::streamsize>(d.card_jpeg.size()));
   // The port's file and the card are found relative to the working folder.
   fs::current_path(d.folder);
   return d;
+}
+
+CardPair same_size_jpegs(std::vector<uint8_t> left, std::vector<uint8_t> right) {
+  // Bytes after the end-of-image marker are no part of the picture:
+  // decoders and the EXIF reader stop before them.
+  const std::size_t size = std::max(left.size(), right.size());
+  left.resize(size, 0);
+  right.resize(size, 0);
+  return {std::move(left), std::move(right)};
+}
+
+void put_on_card(const VirtualD750& d750, const std::vector<uint8_t>& jpeg) {
+  std::ofstream(d750.folder / "vcamera" / "DCIM" / "100NIKON" / "DSC_0001.JPG", std::ios::binary)
+      .write(reinterpret_cast<const char*>(jpeg.data()), static_cast<std::streamsize>(jpeg.size()));
+}
+
+namespace {
+fs::path card_file(const VirtualD750& d750) {
+  return d750.folder / "vcamera" / "DCIM" / "100NIKON" / "DSC_0001.JPG";
+}
+}  // namespace
+
+CardCutMidShot::CardCutMidShot(const VirtualD750& d750) : d750_(d750) {
+  fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (fd_ < 0 || ::inotify_add_watch(fd_, card_file(d750).c_str(), IN_CLOSE_NOWRITE) < 0) return;
+  watcher_ = std::thread([this] {
+    while (!stop_) {
+      pollfd p{fd_, POLLIN, 0};
+      if (::poll(&p, 1, 50) <= 0) continue;
+      char events[4096];
+      if (::read(fd_, events, sizeof events) <= 0) continue;
+      // Read once (the object's info): the download reads it next.
+      fs::resize_file(card_file(d750_), d750_.card_jpeg.size() / 2);
+      cut_ = true;
+      return;
+    }
+  });
+}
+
+CardCutMidShot::~CardCutMidShot() {
+  stop_ = true;
+  if (watcher_.joinable()) watcher_.join();
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void CardCutMidShot::restore() {
+  stop_ = true;
+  if (watcher_.joinable()) watcher_.join();
+  put_on_card(d750_, d750_.card_jpeg);
 }
 
 }  // namespace rockface::test

@@ -5,9 +5,11 @@
 // camera: ./001,001 (the USB ids the vusb port matches the model by) and
 // ./vcamera/DCIM/100NIKON/DSC_0001.JPG (its card). The virtual camera reads
 // its card once per process, so this runs before the first camera call.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace rockface::test {
@@ -22,6 +24,42 @@ struct VirtualD750 {
 };
 
 // Looks for the port drivers and, when they are there, sets the process up.
-VirtualD750 set_up_virtual_d750();
+// `card_jpeg`: the card's one JPEG (empty: a small one with a D750's EXIF).
+VirtualD750 set_up_virtual_d750(std::vector<uint8_t> card_jpeg = {});
+
+// Issue 42: a stereo pair through the virtual camera. vcamera.c serves
+// every capture from the card's one JPEG, reading the file when the picture
+// is downloaded, with the size it had when the card was read: the pair's
+// two JPEGs, padded after their end-of-image marker to one size, are put
+// on the card in turn (the left, then the right before the right shot).
+struct CardPair {
+  std::vector<uint8_t> left, right;  // the same size
+};
+CardPair same_size_jpegs(std::vector<uint8_t> left, std::vector<uint8_t> right);
+// Puts `jpeg` on the card in place of its JPEG (the same size).
+void put_on_card(const VirtualD750& d750, const std::vector<uint8_t>& jpeg);
+
+// Issue 42: the camera stops sending a picture halfway. vcamera.c reads a
+// capture's file from the card twice: whole for the new object's info when
+// the shot is taken, and again for its data when it is downloaded. From
+// its making until it is destroyed, this cuts the card's file to half its
+// length once it has been read once (inotify, IN_CLOSE_NOWRITE): the shot
+// is taken, and its download comes back short, which vcamera.c answers
+// with PTP's GeneralError. `restore` puts the whole JPEG back.
+class CardCutMidShot {
+ public:
+  explicit CardCutMidShot(const VirtualD750& d750);
+  ~CardCutMidShot();
+  CardCutMidShot(const CardCutMidShot&) = delete;
+  CardCutMidShot& operator=(const CardCutMidShot&) = delete;
+  bool cut() const { return cut_; }
+  void restore();
+
+ private:
+  const VirtualD750& d750_;
+  int fd_ = -1;
+  std::atomic<bool> stop_{false}, cut_{false};
+  std::thread watcher_;
+};
 
 }  // namespace rockface::test
