@@ -15,9 +15,10 @@ namespace rockface::photogrammetry {
 
 struct TextureCheck {
   int window_px = 5;  // the matching window (the SGBM block), dense-scale pixels
-  // A window is textured when its texture band's energy exceeds the
-  // noise's by this ratio of texture to noise (amplitudes): 1 = as much
-  // texture as noise. 0 = no check.
+  // A window is textured when its grey levels' variance, the noise's taken
+  // out, exceeds the noise's by this ratio of texture to noise (amplitudes):
+  // 1 = as much texture as noise. 0 = no check. The noise is measured where
+  // the image is flattest (texture_mask.cpp).
   double min_texture_to_noise = 3.0;  // the presets' (reconstruction/preset.h)
 };
 
