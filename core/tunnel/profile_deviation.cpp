@@ -187,6 +187,7 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
   require_positive(options.ray_spacing_m, "ray_spacing_m");
   require_positive(options.max_overbreak_m, "max_overbreak_m");
   require_positive(options.plausible_slope, "plausible_slope");
+  require_positive(options.max_invert_overbreak_m, "max_invert_overbreak_m");
   if (options.rays_per_cell_side < 1 || options.rays_per_cell_side > 15)
     throw InputError("options.rays_per_cell_side",
                      "must be 1 to 15, got " + std::to_string(options.rays_per_cell_side));
@@ -211,6 +212,7 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
 
   ProfileDeviation out;
   out.underbreak_tolerance_m = options.underbreak_tolerance_m;
+  out.max_invert_overbreak_m = options.max_invert_overbreak_m;
   double lo = std::min(options.chainage_from, options.chainage_to);
   double hi = std::max(options.chainage_from, options.chainage_to);
   std::string clipped;
@@ -300,9 +302,11 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
         normal_dev[k] = median_of(nd);
         ray_dev[k] = median_of(rd);
         const Ray& r = rays[j];
-        if (r.region != Region::floor && centre.y() + (r.design + ray_dev[k]) * std::sin(r.angle) <
-                                             invert_v - out.noise_threshold_m)
-          state[k] = kBelowInvert;
+        const bool below = r.region == Region::floor
+                               ? normal_dev[k] > options.max_invert_overbreak_m
+                               : centre.y() + (r.design + ray_dev[k]) * std::sin(r.angle) <
+                                     invert_v - out.noise_threshold_m;
+        if (below) state[k] = kBelowInvert;
       } else if (excluded > 0) {
         state[k] = kExcluded;
       }
@@ -535,7 +539,10 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
     if (out.cells_off_lining + out.cells_below_invert > 0)
       out.message += "; left out: " + std::to_string(out.cells_off_lining) +
                      " cells off any plausible lining (no neighbour agrees with them), " +
-                     std::to_string(out.cells_below_invert) + " below the invert";
+                     std::to_string(out.cells_below_invert) +
+                     " below the invert (wall or roof rays that met the surface below it, floor "
+                     "rays more than " +
+                     format_fixed(options.max_invert_overbreak_m, 2) + " m below the design)";
     if (out.noise_threshold_m > 0)
       out.message += "; deviations within " + format_fixed(1000 * out.noise_threshold_m, 1) +
                      " mm (" + format_fixed(options.noise_sigmas, 0) +

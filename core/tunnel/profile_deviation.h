@@ -79,6 +79,13 @@ struct DeviationOptions {
   // blast leaves that is wider than two cells): a cell no neighbour agrees
   // with within it (plus twice the noise threshold) is off the lining.
   double plausible_slope = 2.0;
+  // How far below the design invert a floor ray's surface plausibly lies
+  // (m, normal to the invert): the lifters' overbreak and the muck left on
+  // the floor are a few decimetres. A floor cell met deeper is a stray sheet
+  // seen through a hole in the floor's mesh (a reconstruction's background,
+  // issue 38: 1.8 m below the floor was counted as the round's largest
+  // overbreak), not rock: it is left out as below the invert, and said.
+  double max_invert_overbreak_m = 0.5;
 };
 
 // The options of a preset (the knobs beside their component, issue 37):
@@ -186,8 +193,11 @@ struct ProfileDeviation {
   // it is kept, and stated.
   LiningOffset lining_offset;
   bool lining_offset_removed = false;
-  std::size_t cells_off_lining = 0;    // left out: no neighbour agrees with them
-  std::size_t cells_below_invert = 0;  // left out: a wall or roof ray met them below the invert
+  std::size_t cells_off_lining = 0;  // left out: no neighbour agrees with them
+  // Left out: a wall or roof ray met them below the invert, or a floor ray
+  // more than max_invert_overbreak_m below the design.
+  std::size_t cells_below_invert = 0;
+  double max_invert_overbreak_m = 0;  // the bound applied (options)
   std::vector<SectionsLeftOut> sections_left_out;
   // One sigma of the volumes (the depth sigma and the offset's standard
   // error over the counted area, taken as fully correlated) and of a single

@@ -77,7 +77,8 @@ std::string visit_profile_json(const VisitProfile& v) {
                           {"cells", d.lining_offset.cells},
                           {"removed", d.lining_offset_removed}};
   j["cells_left_out"] = {{"off_the_lining", d.cells_off_lining},
-                         {"below_the_invert", d.cells_below_invert}};
+                         {"below_the_invert", d.cells_below_invert},
+                         {"max_invert_overbreak_m", round_to(d.max_invert_overbreak_m, 0.001)}};
   json left_out = json::array();
   for (const auto& l : d.sections_left_out)
     left_out.push_back({{"chainage_from", round_to(l.chainage_from, 0.001)},

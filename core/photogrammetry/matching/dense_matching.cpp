@@ -10,6 +10,8 @@
 #include "core/common/error.h"
 #include "core/photogrammetry/camera/camera_cv.h"
 #include "core/photogrammetry/matching/disparity_holes.h"
+#include "core/photogrammetry/matching/disparity_terraces.h"
+#include "core/photogrammetry/matching/texture_mask.h"
 
 namespace rockface::photogrammetry {
 
@@ -34,7 +36,8 @@ cv::Mat sgbm_disparity(const cv::Mat& left, const cv::Mat& right, const Disparit
 }  // namespace
 
 DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const DisparityRange& range,
-                             const ReconstructionPreset& preset, Progress& progress) {
+                             const ReconstructionPreset& preset, Progress& progress,
+                             const cv::Mat& texture_left) {
   if (left.size() != right.size() || left.type() != right.type())
     throw InputError("rectified pair", "left and right differ in size or type");
   if (range.num_disparities <= 0 || range.num_disparities % 16 != 0)
@@ -73,6 +76,11 @@ DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const Di
       }
     }
   }
+  // No texture in the window, nothing measured (texture_mask.h): removed
+  // before the speckle filter, which then takes the specks the noise left.
+  const cv::Mat textured = textured_pixels(texture_left.empty() ? left : texture_left,
+                                           {preset.sgbm_block_size, preset.min_texture_to_noise});
+  const std::size_t untextured = remove_untextured(checked, invalid, textured);
   cv::filterSpeckles(checked, invalid, preset.speckle_window,
                      static_cast<int>(std::lround(preset.speckle_range_px * 16)));
 
@@ -94,11 +102,18 @@ DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const Di
     }
   }
   out.valid_fraction = static_cast<double>(valid) / static_cast<double>(checked.total());
+  TerraceSmoothing terraces;
+  terraces.max_tread_px = preset.terrace_max_tread_px;
+  terraces.max_riser_px = preset.terrace_max_riser_px;
+  const std::size_t smoothed = smooth_disparity_terraces(out.disparity, terraces);
+  out.terraced_fraction = static_cast<double>(smoothed) / static_cast<double>(checked.total());
   const std::size_t filled = fill_disparity_holes(
       out.disparity, {preset.disparity_hole_px, preset.disparity_hole_slope_px});
   out.filled_fraction = static_cast<double>(filled) / static_cast<double>(checked.total());
   out.lr_rejected_fraction =
       matched ? static_cast<double>(rejected) / static_cast<double>(matched) : 0;
+  out.untextured_fraction =
+      matched ? static_cast<double>(untextured) / static_cast<double>(matched) : 0;
   progress.step("dense matching", 1.0);
   return out;
 }

@@ -3,8 +3,9 @@
 // (cv::stereoRectify), matched by semi-global matching (cv::StereoSGBM) at the
 // preset's image scale with sub-pixel disparities, checked left against right
 // (a second SGBM on the mirrored pair gives the right disparity), cleaned
-// of speckles (cv::filterSpeckles), and its small holes filled from their
-// rims (disparity_holes.h).
+// of untextured pixels (texture_mask.h) and speckles (cv::filterSpeckles),
+// its terraces smoothed into their slope (disparity_terraces.h) and its
+// small holes filled from their rims (disparity_holes.h).
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,14 +30,23 @@ struct DisparityMap {
   DisparityRange range;
   double valid_fraction = 0;        // of all pixels
   double lr_rejected_fraction = 0;  // of the pixels SGBM matched, removed by the left-right check
+  // of the pixels SGBM matched, removed where the left image has no texture
+  // (texture_mask.h); left-right rejected ones included
+  double untextured_fraction = 0;
   // of all pixels, filled between the rims of a small hole (disparity_holes.h);
   // not in valid_fraction
   double filled_fraction = 0;
+  // of all pixels, moved from a terrace onto its slope (disparity_terraces.h)
+  double terraced_fraction = 0;
 };
 
 // Matches a rectified pair (8-bit grey or BGR, same size) over `range`.
+// texture_left: the left image whose texture is checked (texture_mask.h),
+// when `left` is not it (brightness-normalised views lift the background's
+// noise to the rock's level); empty = `left`.
 DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const DisparityRange& range,
-                             const ReconstructionPreset& preset, Progress& progress);
+                             const ReconstructionPreset& preset, Progress& progress,
+                             const cv::Mat& texture_left = cv::Mat());
 
 // The rectification of an oriented pair at a working scale.
 struct Rectification {

@@ -18,7 +18,8 @@ constexpr int kWorkingWidth = 1000;  // the fast preset's dense matching width
 constexpr double kFineSigma = 1.0, kCoarseSigma = 4.0;
 constexpr int kWindow = 15;
 
-// The band-pass of the texture measure.
+}  // namespace
+
 cv::Mat band_pass(const cv::Mat& f) {
   cv::Mat fine, coarse;
   cv::GaussianBlur(f, fine, cv::Size(0, 0), kFineSigma, 0, cv::BORDER_REFLECT);
@@ -26,8 +27,6 @@ cv::Mat band_pass(const cv::Mat& f) {
   return fine - coarse;
 }
 
-// How much of a white noise's variance the band-pass keeps: its kernel's
-// energy, from the response to one impulse.
 double band_pass_noise_gain() {
   cv::Mat delta = cv::Mat::zeros(61, 61, CV_32F);
   delta.at<float>(30, 30) = 1;
@@ -35,17 +34,7 @@ double band_pass_noise_gain() {
   return cv::sum(k.mul(k))[0];
 }
 
-}  // namespace
-
-ImageContrast measure_contrast(const cv::Mat& image) {
-  cv::Mat grey = to_grey(image);
-  if (grey.cols > kWorkingWidth) {
-    const double s = static_cast<double>(kWorkingWidth) / grey.cols;
-    cv::resize(grey, grey, cv::Size(), s, s, cv::INTER_AREA);
-  }
-  cv::Mat f;
-  grey.convertTo(f, CV_32F);
-  ImageContrast out;
+double sensor_noise_grey(const cv::Mat& f) {
   // Immerkaer (1996): the mask [1 -2 1; -2 4 -2; 1 -2 1] cancels smooth
   // image structure; the mean absolute response of Gaussian noise is
   // sigma * 6 sqrt(2 / pi)... (sum of squares of the mask is 36).
@@ -62,7 +51,19 @@ ImageContrast measure_contrast(const cv::Mat& image) {
   // responses; for Gaussian noise the median |response| is 0.6745 * 6 sigma.
   auto mid = abs_lap.begin() + static_cast<std::ptrdiff_t>(abs_lap.size() / 2);
   std::nth_element(abs_lap.begin(), mid, abs_lap.end());
-  out.noise_grey = abs_lap.empty() ? 0.0 : *mid / (0.6745 * 6.0);
+  return abs_lap.empty() ? 0.0 : *mid / (0.6745 * 6.0);
+}
+
+ImageContrast measure_contrast(const cv::Mat& image) {
+  cv::Mat grey = to_grey(image);
+  if (grey.cols > kWorkingWidth) {
+    const double s = static_cast<double>(kWorkingWidth) / grey.cols;
+    cv::resize(grey, grey, cv::Size(), s, s, cv::INTER_AREA);
+  }
+  cv::Mat f;
+  grey.convertTo(f, CV_32F);
+  ImageContrast out;
+  out.noise_grey = sensor_noise_grey(f);
 
   std::vector<uchar> levels(grey.begin<uchar>(), grey.end<uchar>());
   auto p90 =

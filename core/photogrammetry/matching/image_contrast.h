@@ -25,6 +25,17 @@ struct ImageContrast {
 
 ImageContrast measure_contrast(const cv::Mat& image);
 
+// The parts of the measure, for the dense matching's texture check
+// (texture_mask.h). All take a grey CV_32F image.
+// The texture band: a difference of Gaussians (sigma 1 and 4 px).
+cv::Mat band_pass(const cv::Mat& grey_f32);
+// How much of a white noise's variance the band-pass keeps (its kernel's
+// energy).
+double band_pass_noise_gain();
+// Sensor noise, rms per pixel (Immerkaer's estimator, the median of its
+// responses so that edges and traces do not count).
+double sensor_noise_grey(const cv::Mat& grey_f32);
+
 // Below this texture (grey levels rms, noise taken out) the fast preset no
 // longer registers the synthetic face (tests/integration/lighting, measured
 // by tools/bench/tunnel_lighting_bench.cpp): the face at 10 m keeps 2.5

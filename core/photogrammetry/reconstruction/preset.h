@@ -35,12 +35,26 @@ struct ReconstructionPreset {
   int lr_max_difference_px = 1;    // left-right consistency, pixels at dense scale
   int speckle_window = 100;        // connected region below this many pixels is removed
   double speckle_range_px = 2.0;   // disparity jump that separates speckle regions
-  bool sgbm_three_way = true;      // MODE_SGBM_3WAY (faster, same memory) vs MODE_SGBM
+  // A pixel whose matching window has less texture than this ratio to the
+  // sensor's noise is not matched (matching/texture_mask.h): 1 = the
+  // texture's amplitude equals the noise's; 0 = no check. 3: on the
+  // synthetic face against its dark background (tests/integration/
+  // reconstruct/face_edge_test.cpp) a ratio of 1 left 1.9 % of the standard
+  // preset's vertices up to 51 px beyond the rock, 2 left 0.16 % up to
+  // 8 px, 3 leaves 0.04 % within 6 px (none at fast).
+  double min_texture_to_noise = 3.0;
+  bool sgbm_three_way = true;  // MODE_SGBM_3WAY (faster, same memory) vs MODE_SGBM
   // Holes left in the disparity map no longer than this (pixels at dense
   // scale, along a row or a column) whose rims agree within the slope are
   // filled from their rims (matching/disparity_holes.h); 0 = never.
   int disparity_hole_px = 8;
   double disparity_hole_slope_px = 1.0;  // disparity change per pixel across a hole
+
+  // The terraces SGBM leaves on surfaces seen at a grazing angle, smoothed
+  // back into their slope (matching/disparity_terraces.h): treads up to
+  // this long (pixels at dense scale; 0 = never), risers up to this high.
+  int terrace_max_tread_px = 16;
+  double terrace_max_riser_px = 6.0;
 
   // Expected disparity precision after sub-pixel interpolation (pixels at the
   // dense scale), used for the predicted depth precision sigma_Z.

@@ -123,7 +123,7 @@ ReconstructionResult reconstruct(const cv::Mat& left_image, const cv::Mat& right
       disparity =
           match_rectified(normalise_local_brightness(rect_left, kShadingNormalisationSigmaPx),
                           normalise_local_brightness(rect_right, kShadingNormalisationSigmaPx),
-                          out.disparity_range, preset, p);
+                          out.disparity_range, preset, p, rect_left);
     else
       disparity = match_rectified(rect_left, rect_right, out.disparity_range, preset, p);
   }

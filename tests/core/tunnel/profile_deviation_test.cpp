@@ -454,6 +454,50 @@ TEST(ProfileDeviation, ASheetBelowTheInvertSeenThroughAHoleIsLeftOutAndCounted) 
   EXPECT_NE(d.message.find("below the invert"), std::string::npos) << d.message;
 }
 
+TEST(ProfileDeviation, AFloorMetFarBelowTheDesignIsLeftOutAndARealFloorBreakIsCounted) {
+  // Issue 38: the floor (rays 65 to 85 degrees below horizontal: the
+  // invert's rays, whose outline normal points down within 45 degrees; the
+  // tube's facets run from -90 degrees) has a hole 0.7 m long;
+  // behind it, 1.8 m below the design, a sheet of mesh (a reconstruction's
+  // stray background). Elsewhere on the floor a real break 0.4 m deep,
+  // 1.2 m long: within the plausible 0.5 m, it counts. Both end between
+  // the sections (every 0.25 m from 2), so no section straddles an edge.
+  const Alignment al = north_tunnel();
+  const double lo = -85 * kPi / 180, hi = -65 * kPi / 180;
+  const auto in_hole = [&](double t, double c) { return t > lo && t < hi && c > 4.9 && c < 5.6; };
+  const auto in_break = [&](double t, double c) { return t > lo && t < hi && c > 6.9 && c < 8.1; };
+  Mesh m;
+  add_tube(
+      m, al, {0, 0}, steps(0, 12, 0.1),
+      [&](double t, double c) { return in_break(t, c) ? 3.4 : 3.0; },
+      [&](double t, double c) { return !in_hole(t, c); });
+  add_tube(
+      m, al, {0, 0}, steps(4.5, 6.0, 0.1), [](double, double) { return 4.8; },
+      [&](double t, double) { return t > lo - 0.05 && t < hi + 0.05; });
+  DeviationOptions o = one_ray_per_facet(3.0, 2, 10, 0.25);
+  o.rays_per_cell_side = 3;
+  const ProfileDeviation d = profile_deviation(m.input(), al, circle_profile(3.0), o);
+  ASSERT_EQ(d.status, DeviationStatus::ok) << d.message;
+  // The hole's 3 sections (5.0, 5.25, 5.5) by 40 facets are left out, said
+  // with the bound.
+  EXPECT_GE(d.cells_below_invert, 3 * 40u - 6) << d.message;
+  EXPECT_NE(d.message.find("floor rays more than 0.50 m below the design"), std::string::npos)
+      << d.message;
+  EXPECT_EQ(d.max_invert_overbreak_m, 0.5);
+  // The largest overbreak is the real break, 0.4 m but for the facets'
+  // sagitta (3.4 m x (1 - cos 0.25 deg) = 3.2e-5 m, where the cell's rays
+  // meet the chords), inside its stretch.
+  EXPECT_NEAR(d.max_overbreak_m, 0.4, 1e-4) << d.max_overbreak.chainage << " " << d.max_overbreak.s;
+  EXPECT_GT(d.max_overbreak.chainage, 6.9);
+  EXPECT_LT(d.max_overbreak.chainage, 8.1);
+  // Its volume: 1/2 (3.4^2 - 3^2) x 20 degrees x 1.2 m = 0.534 m3. The
+  // trapezoid over the sections (7.0 to 8.0 in it, 6.75 and 8.25 not) gives
+  // 1.25 m of chainage for its 1.2 (+4 %), and the columns at its sides
+  // straddle its edges by a facet: 5 % either way.
+  const double truth = 0.5 * (3.4 * 3.4 - 9.0) * (hi - lo) * 1.2;
+  EXPECT_NEAR(d.overbreak_volume_m3, truth, 0.05 * truth);
+}
+
 TEST(ProfileDeviation, NoiseWithinTheStatedPrecisionIsNotCountedAndTheOffsetIsStated) {
   // A lining 3 mm inside the design line with +-7 mm of noise per facet (as
   // a reconstruction's surface: a bias and noise), and one pocket of

@@ -198,6 +198,9 @@ RoundTruth round_truth(const Heading& h, const VisitProfile& measured,
 struct LiningCoverage {
   int seen = 0, covered = 0;
   int seen_by_part[3] = {0, 0, 0}, covered_by_part[3] = {0, 0, 0};  // invert, walls, roof
+  // The depth error of the covered samples along the ray (the mesh's hit
+  // less the true lining's distance): sum and sum of squares, per part.
+  double error_sum[3] = {0, 0, 0}, error_sq[3] = {0, 0, 0};
   double fraction() const { return seen ? static_cast<double>(covered) / seen : 0; }
 };
 
@@ -233,6 +236,8 @@ LiningCoverage lining_coverage(const Heading& h) {
       if (hit && std::abs(hit->t - r) < kCoveredWithinM) {
         ++out.covered;
         ++out.covered_by_part[part];
+        out.error_sum[part] += hit->t - r;
+        out.error_sq[part] += (hit->t - r) * (hit->t - r);
       }
     }
   }
@@ -330,6 +335,12 @@ class TunnelBreakTruth : public ::testing::Test {
               << " %); invert " << c.covered_by_part[0] << "/" << c.seen_by_part[0] << ", walls "
               << c.covered_by_part[1] << "/" << c.seen_by_part[1] << ", roof "
               << c.covered_by_part[2] << "/" << c.seen_by_part[2] << "\n";
+    const char* part_name[3] = {"invert", "walls", "roof"};
+    for (int p = 0; p < 3; ++p)
+      if (c.covered_by_part[p] > 0)
+        std::cout << "  " << part_name[p] << ": depth error along the ray, mean "
+                  << 1000 * c.error_sum[p] / c.covered_by_part[p] << " mm, rms "
+                  << 1000 * std::sqrt(c.error_sq[p] / c.covered_by_part[p]) << " mm\n";
     ASSERT_GT(c.seen, 1000) << name;
     EXPECT_GT(c.fraction(), 0.9) << name;
   }
