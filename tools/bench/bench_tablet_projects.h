@@ -53,6 +53,29 @@ inline void add_bench_visit(storage::ProjectStore& store, int i, int width, int 
   store.save_visit_placement(p);
 }
 
+// A 3D image of side x side vertices: a rough face on a grid (2 cm of
+// roughness), textured by its grid position.
+inline storage::Model grid_model(storage::RecordId capture, int side, const std::string& preset) {
+  storage::Model m;
+  m.capture_id = capture;
+  m.preset = preset;
+  std::mt19937 rng(3);
+  std::normal_distribution<double> rough(0, 0.02);
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      m.mesh.vertices.push_back({0.01 * i, rough(rng), 0.01 * j});
+      m.mesh.texcoords.push_back({static_cast<float>(i) / side, static_cast<float>(j) / side});
+    }
+  for (int i = 0; i + 1 < side; ++i)
+    for (int j = 0; j + 1 < side; ++j) {
+      const int a = i * side + j;
+      m.mesh.faces.push_back({a, a + 1, a + side});
+      m.mesh.faces.push_back({a + 1, a + side + 1, a + side});
+    }
+  m.registration.kind = "none";
+  return m;
+}
+
 // `folder`/NAME.rockface, made once (kept when it exists).
 inline std::filesystem::path make_bench_project(const std::filesystem::path& folder,
                                                 const std::string& name, int visits, int width,

@@ -58,24 +58,7 @@ std::string fresh_database() {
 
 // A 3D image of about `vertices` vertices: a rough face on a grid.
 storage::Model grid_model(storage::RecordId capture, int side) {
-  storage::Model m;
-  m.capture_id = capture;
-  m.preset = "standard";
-  std::mt19937 rng(3);
-  std::normal_distribution<double> rough(0, 0.02);
-  for (int i = 0; i < side; ++i)
-    for (int j = 0; j < side; ++j) {
-      m.mesh.vertices.push_back({0.01 * i, rough(rng), 0.01 * j});
-      m.mesh.texcoords.push_back({static_cast<float>(i) / side, static_cast<float>(j) / side});
-    }
-  for (int i = 0; i + 1 < side; ++i)
-    for (int j = 0; j + 1 < side; ++j) {
-      const int a = i * side + j;
-      m.mesh.faces.push_back({a, a + 1, a + side});
-      m.mesh.faces.push_back({a + 1, a + side + 1, a + side});
-    }
-  m.registration.kind = "none";
-  return m;
+  return bench::grid_model(capture, side, "standard");
 }
 
 // The tablets' projects (tools/bench/bench_tablet_projects.h) in this
