@@ -22,7 +22,10 @@ std::unique_ptr<ProjectSession> ProjectSession::open(const std::filesystem::path
   options.check = storage::OpenOptions::Check::rows;
   auto session = std::unique_ptr<ProjectSession>(
       new ProjectSession(storage::ProjectStore::open(file, options)));
-  session->file_check_ = std::make_unique<ProjectFileCheck>(file);
+  // A project opened read-only saves nothing, and on write-protected media
+  // a second connection could not share the write-ahead log's index: its
+  // check would fail as if the file were damaged.
+  if (!session->read_only()) session->file_check_ = std::make_unique<ProjectFileCheck>(file);
   return session;
 }
 
