@@ -30,24 +30,11 @@ struct ImportOptions {
   bool new_visit = false;
 };
 
-// "E,N,Z": three finite numbers.
-Eigen::Vector3d parse_triple(const std::string& text, const std::string& option) {
-  Eigen::Vector3d v;
-  std::istringstream in(text);
-  char comma = 0;
-  for (int k = 0; k < 3; ++k) {
-    if (!(in >> v[k]) || !std::isfinite(v[k]))
-      throw InputError(option, "'" + text + "' is not three numbers E,N,Z");
-    if (k < 2 && (!(in >> comma) || comma != ','))
-      throw InputError(option, "'" + text + "' is not three numbers E,N,Z");
-  }
-  if (in >> comma) throw InputError(option, "'" + text + "' is not three numbers E,N,Z");
-  return v;
-}
-
-// "X1,Y1,Z1,X2,Y2,Z2": two points of the cloud, in the file's coordinates.
-std::array<Eigen::Vector3d, 2> parse_two_points(const std::string& text,
-                                                const std::string& option) {
+// `count` finite numbers separated by commas; `shape` names them in the
+// refusal ("three numbers E,N,Z").
+std::vector<double> parse_numbers(const std::string& text, std::size_t count,
+                                  const std::string& option, const std::string& shape) {
+  const std::string refusal = "'" + text + "' is not " + shape;
   std::vector<double> v;
   std::istringstream in(text);
   std::string item;
@@ -60,11 +47,22 @@ std::array<Eigen::Vector3d, 2> parse_two_points(const std::string& text,
       used = 0;
     }
     if (used == 0 || item.find_first_not_of(" ", used) != std::string::npos || !std::isfinite(x))
-      throw InputError(option, "'" + text + "' is not six numbers X1,Y1,Z1,X2,Y2,Z2");
+      throw InputError(option, refusal);
     v.push_back(x);
   }
-  if (v.size() != 6)
-    throw InputError(option, "'" + text + "' is not six numbers X1,Y1,Z1,X2,Y2,Z2");
+  if (v.size() != count || (!text.empty() && text.back() == ',')) throw InputError(option, refusal);
+  return v;
+}
+
+Eigen::Vector3d parse_triple(const std::string& text, const std::string& option) {
+  const auto v = parse_numbers(text, 3, option, "three numbers E,N,Z");
+  return {v[0], v[1], v[2]};
+}
+
+// Two points of the cloud, in the file's coordinates.
+std::array<Eigen::Vector3d, 2> parse_two_points(const std::string& text,
+                                                const std::string& option) {
+  const auto v = parse_numbers(text, 6, option, "six numbers X1,Y1,Z1,X2,Y2,Z2");
   return {Eigen::Vector3d(v[0], v[1], v[2]), Eigen::Vector3d(v[3], v[4], v[5])};
 }
 
