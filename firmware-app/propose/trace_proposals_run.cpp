@@ -23,6 +23,10 @@ namespace {
 // 24 Mpx dense face, a handful of the strongest traces, measured in a few
 // hundredths of a second once the cues are found.
 constexpr std::size_t kFirstChains = 16;
+// The chains after the facets, this many at a time: each batch a fraction
+// of a second on the dense 24 Mpx face, so the screen fills in steps the
+// eye follows without a batch's hand-over costing anything measurable.
+constexpr std::size_t kLaterChains = 64;
 
 // The options of the preset with the model's depth precision.
 measure::ProposalOptions options_for(Preset preset, double point_sigma_m) {
@@ -64,7 +68,7 @@ measure::ProposalResult propose_first_then_facets(const photogrammetry::SurfaceM
                                                   const measure::PhotoView& view,
                                                   const cv::Mat& photo, Preset preset,
                                                   double point_sigma_m, Progress& progress,
-                                                  const FirstProposals& first) {
+                                                  const ProposalBatch& batch) {
   std::unique_ptr<measure::ProposalSearch> search;
   {
     const auto lattice = with_lattice(mesh, photo);
@@ -72,11 +76,12 @@ measure::ProposalResult propose_first_then_facets(const photogrammetry::SurfaceM
                                                        photo, options_for(preset, point_sigma_m),
                                                        progress, "proposals");
   }
-  if (first) first(search->longest(kFirstChains, progress));
+  if (batch) batch(search->longest(kFirstChains, progress));
   measure::MeasureSettings settings;
   settings.point_sigma = point_sigma_m;
   const measure::FacetSearch facets =
       measure::find_facets(mesh, settings, analysis::preset_options(preset).facets, progress);
+  while (batch && search->chains_left() > 0) batch(search->longest(kLaterChains, progress));
   return search->finish(proposal_facets(facets), progress);
 }
 

@@ -35,18 +35,20 @@ measure::ProposalResult propose_on_model(const photogrammetry::SurfaceMesh& mesh
 
 // The tablet's Find traces (issue 45: the first proposals within 2 s, the
 // rest as they come): the proposals' cues and chains, the proposals of the
-// longest chains handed to `first` as soon as they are measured (unnamed,
-// not yet linked to a facet), then the facets of the model (the preset's
-// knobs, `point_sigma_m` as their point precision), then every proposal
-// linked to them. The result is that of find_facets then propose_on_model;
-// `first` may be empty (nothing handed out early).
-using FirstProposals = std::function<void(const std::vector<measure::TraceProposal>&)>;
+// longest chains handed to `batch` as soon as they are measured, then the
+// facets of the model (the preset's knobs, `point_sigma_m` as their point
+// precision), then the other chains' proposals, a batch at a time, then
+// every proposal linked to the facets, ranked and named. The batches'
+// proposals are unnamed and not linked to a facet; each is one of the
+// result's. The result is that of find_facets then propose_on_model;
+// `batch` may be empty (nothing handed out early).
+using ProposalBatch = std::function<void(const std::vector<measure::TraceProposal>&)>;
 measure::ProposalResult propose_first_then_facets(const photogrammetry::SurfaceMesh& mesh,
                                                   const measure::MeshPicker& picker,
                                                   const measure::PhotoView& view,
                                                   const cv::Mat& photo, Preset preset,
                                                   double point_sigma_m, Progress& progress,
-                                                  const FirstProposals& first);
+                                                  const ProposalBatch& batch);
 
 // {"proposals": [...], "notes": [...], ...}; coordinates absolute (+ datum).
 nlohmann::json trace_proposals_json(const measure::ProposalResult& result,

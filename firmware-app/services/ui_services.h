@@ -78,7 +78,8 @@ class StoreRockMassRunner final : public ui::RockMassRunner {
 // propose` does).
 class FieldProposalRunner final : public ui::ProposalRunner {
  public:
-  measure::ProposalResult propose(const ui::ProposalInput& input, Progress& progress) override;
+  measure::ProposalResult propose(const ui::ProposalInput& input, Progress& progress,
+                                  const Batch& batch) override;
 };
 
 // Issue 27: the field report from the tablet, as `rockface report` writes it.

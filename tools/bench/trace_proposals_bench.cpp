@@ -172,7 +172,7 @@ void BM_DarkTraceProposals(benchmark::State& state) {
 // Facets and proposals of the dense face at 24 Mpx, reconstructed at the
 // preset they are found at, as the tablet's Find traces runs them
 // (propose_first_then_facets: the cues, the first proposals, the facets,
-// the rest): CPU to the first proposals and to the whole result.
+// the rest in batches): CPU to the first proposals and to the whole result.
 void BM_FacetsAndProposals24Mpx(benchmark::State& state) {
   const auto preset = static_cast<rockface::Preset>(state.range(0));
   auto scene = rt::proposal_face_scene(rt::JointDensity::dense);
@@ -189,9 +189,10 @@ void BM_FacetsAndProposals24Mpx(benchmark::State& state) {
     const double from = thread_cpu_s();
     result = rockface::app::propose_first_then_facets(
         f.rec.mesh, picker, f.left, f.render.images[0], preset, f.rec.accuracy.sigma_z, clock,
-        [&](const std::vector<rm::TraceProposal>& first) {
+        [&, batches = 0](const std::vector<rm::TraceProposal>& batch) mutable {
+          if (batches++ > 0) return;  // the first batch: what the screen shows first
           first_s = thread_cpu_s() - from;
-          first_count = first.size();
+          first_count = batch.size();
         });
     total_s = thread_cpu_s() - from;
     benchmark::DoNotOptimize(result);

@@ -8,6 +8,7 @@
 // connection per thread), saves what it made as soon as it is made, and
 // returns the id of the record.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -304,10 +305,15 @@ struct ProposalInput {
 
 class ProposalRunner {
  public:
+  // Called on the worker with each batch of proposals as it is measured
+  // (issue 45: the first within 2 s, the rest as they come): unnamed, not
+  // linked to a facet, each one of the result's (the same points).
+  using Batch = std::function<void(const std::vector<measure::TraceProposal>&)>;
   virtual ~ProposalRunner() = default;
   // Throws InputError saying why (no photograph, a mesh without lattice);
-  // Cancelled when cancelled.
-  virtual measure::ProposalResult propose(const ProposalInput& input, Progress& progress) = 0;
+  // Cancelled when cancelled. `batch` may be empty.
+  virtual measure::ProposalResult propose(const ProposalInput& input, Progress& progress,
+                                          const Batch& batch) = 0;
 };
 
 // Issue 27: the field report of a visit, written from the tablet (the

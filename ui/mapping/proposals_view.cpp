@@ -89,6 +89,67 @@ double point_sigma(const AppState& app) {
   return measure::MeasureSettings{}.point_sigma;
 }
 
+// The name of an arriving proposal until the whole result names it.
+std::string arrival_name(std::size_t index) {
+  return "found " + std::to_string(index + 1);
+}
+
+// The batches the worker has measured since the last frame, added to the
+// provisional result (in the order they came: the list does not reorder
+// under a finger).
+void take_arriving(AppState& app) {
+  ProposalsState& s = app.mapping.proposals;
+  if (!s.arriving) return;
+  std::vector<measure::TraceProposal> fresh;
+  {
+    std::lock_guard<std::mutex> lock(s.arriving->mutex);
+    const auto& all = s.arriving->proposals;
+    if (all.size() == s.arrived) return;
+    fresh.assign(all.begin() + static_cast<std::ptrdiff_t>(s.arrived), all.end());
+    s.arrived = all.size();
+  }
+  auto result = std::make_shared<measure::ProposalResult>();
+  if (s.provisional && s.result) {
+    result->proposals = s.result->proposals;
+  } else {
+    // The first batch: whatever was shown before (another model, or an
+    // earlier search on this one) gives way, the search's hand-over kept.
+    ProposalsState next;
+    next.arriving = std::move(s.arriving);
+    next.arriving_model = s.arriving_model;
+    next.arrived = s.arrived;
+    next.photo = std::move(s.photo);
+    if (s.model_id == s.arriving_model) next.rejected = std::move(s.rejected);
+    s = std::move(next);
+    s.model_id = s.arriving_model;
+  }
+  for (auto& p : fresh) {
+    p.id = arrival_name(result->proposals.size());
+    p.trace.id = p.id;
+    result->proposals.push_back(std::move(p));
+  }
+  s.result = std::move(result);
+  s.provisional = true;
+  s.photo_stale = true;
+  mark_mapped(app);
+}
+
+// The whole result in place of the arriving proposals: what the geologist
+// rejected or selected among them carries over to the same proposal (the
+// same points) under its final name.
+void carry_over_arrivals(ProposalsState& s, const measure::ProposalResult& whole) {
+  if (!s.provisional || !s.result) return;
+  const auto& early = s.result->proposals;
+  const std::optional<std::size_t> selected = s.selected;
+  s.selected.reset();
+  for (std::size_t i = 0; i < whole.proposals.size(); ++i)
+    for (std::size_t k = 0; k < early.size(); ++k) {
+      if (early[k].trace.points != whole.proposals[i].trace.points) continue;
+      if (s.rejected.erase(early[k].id)) s.rejected.insert(whole.proposals[i].id);
+      if (selected == k) s.selected = i;
+    }
+}
+
 void find_traces(AppState& app) {
   ProposalInput input;
   input.mesh = app.model_view.surface();
@@ -104,27 +165,50 @@ void find_traces(AppState& app) {
   ProposalRunner* runner = app.services.proposals;
   auto result = std::make_shared<measure::ProposalResult>();
   const storage::RecordId model = app.model_view.model_id();
-  app.task.start(
+  auto arriving = std::make_shared<ArrivingProposals>();
+  const bool started = app.task.start(
       "Finding traces",
-      [runner, input, view, result](Progress& progress) mutable {
+      [runner, input, view, result, arriving](Progress& progress) mutable {
         input.view = view.get();
-        *result = runner->propose(input, progress);
+        *result = runner->propose(
+            input, progress, [arriving](const std::vector<measure::TraceProposal>& batch) {
+              std::lock_guard<std::mutex> lock(arriving->mutex);
+              arriving->proposals.insert(arriving->proposals.end(), batch.begin(), batch.end());
+            });
         return std::to_string(result->proposals.size()) + " traces proposed";
       },
-      [&app, model, result](const TaskOutcome& outcome) {
+      [&app, model, result, arriving](const TaskOutcome& outcome) {
         ProposalsState& s = app.mapping.proposals;
+        if (s.arriving == arriving) s.arriving.reset();
         if (outcome.kind == TaskOutcome::Kind::failed) s.problem = outcome.message;
-        if (outcome.kind != TaskOutcome::Kind::done) return;
+        if (outcome.kind != TaskOutcome::Kind::done) {
+          // Cancelled or failed: the arriving proposals were never named
+          // nor ranked; none is offered to store.
+          if (s.provisional) {
+            s.result.reset();
+            s.provisional = false;
+            s.selected.reset();
+            s.photo_stale = true;
+          }
+          return;
+        }
         if (s.model_id != model) s = ProposalsState{};  // another model: start afresh
+        carry_over_arrivals(s, *result);
+        if (!s.provisional) s.selected.reset();
         s.model_id = model;
         s.result = result;
+        s.provisional = false;
         s.problem.clear();
-        s.selected.reset();
         s.ends.reset();
         s.corrected.reset();
         s.photo_stale = true;
         mark_mapped(app);
       });
+  if (!started) return;
+  ProposalsState& s = app.mapping.proposals;
+  s.arriving = arriving;
+  s.arriving_model = model;
+  s.arrived = 0;
 }
 
 // A trace record of a measurement made on the left photograph of the model
@@ -241,7 +325,8 @@ void draw_selected(AppState& app, const measure::TraceProposal& p) {
       s.photo_stale = true;
     }
     ImGui::SameLine();
-    if (app.targets.button("Correct", 0, !p.trace.points.empty())) {
+    // A correction waits for the whole result, which would end it.
+    if (app.targets.button("Correct", 0, !p.trace.points.empty() && !s.provisional)) {
       s.ends = std::array<Eigen::Vector3d, 2>{p.trace.points.front(), p.trace.points.back()};
       retrace(app);
     }
@@ -277,6 +362,7 @@ void draw_selected(AppState& app, const measure::TraceProposal& p) {
 
 void draw_proposal_panel(AppState& app) {
   if (!app.services.proposals) return;
+  take_arriving(app);
   ProposalsState& s = app.mapping.proposals;
   ImGui::Separator();
   const bool ready = app.model_view.left_view() && !app.model_view.photo().empty() &&
@@ -291,11 +377,16 @@ void draw_proposal_panel(AppState& app) {
   const auto& proposals = s.result->proposals;
   std::size_t left = 0;
   for (const auto& p : proposals) left += shown(s, p);
-  paragraph(format::count(static_cast<std::int64_t>(left), "proposed trace", "proposed traces") +
-            " to decide; " + format::count(static_cast<std::int64_t>(s.accepted.size())) +
-            " accepted, " + format::count(static_cast<std::int64_t>(s.rejected.size())) +
-            " rejected, " + format::count(static_cast<std::int64_t>(s.mapped.size())) +
-            " already mapped");
+  if (s.provisional)
+    paragraph(format::count(static_cast<std::int64_t>(left), "proposed trace", "proposed traces") +
+              " so far, the longest first; the rest as they are found (they can be stored "
+              "once all are found)");
+  else
+    paragraph(format::count(static_cast<std::int64_t>(left), "proposed trace", "proposed traces") +
+              " to decide; " + format::count(static_cast<std::int64_t>(s.accepted.size())) +
+              " accepted, " + format::count(static_cast<std::int64_t>(s.rejected.size())) +
+              " rejected, " + format::count(static_cast<std::int64_t>(s.mapped.size())) +
+              " already mapped");
   if (s.selected && *s.selected < proposals.size()) {
     draw_selected(app, proposals[*s.selected]);
   } else {
@@ -321,6 +412,7 @@ void draw_proposal_panel(AppState& app) {
 }
 
 void draw_proposals_on_model(AppState& app) {
+  take_arriving(app);
   if (!current(app)) return;
   ProposalsState& s = app.mapping.proposals;
   const float scale = app.targets.scale();

@@ -14,9 +14,11 @@
 // "proposal P3" (what a script taps).
 #include <array>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 #include <Eigen/Core>
@@ -29,9 +31,23 @@ namespace rockface::ui {
 struct AppState;
 class PictureTexture;
 
+// Find traces running: the worker appends each batch of proposals as it
+// is measured; the screen takes what is new at each frame.
+struct ArrivingProposals {
+  std::mutex mutex;
+  std::vector<measure::TraceProposal> proposals;
+};
+
 struct ProposalsState {
   storage::RecordId model_id = 0;  // the model the proposals were found on
   std::shared_ptr<const measure::ProposalResult> result;
+  // While Find traces runs: the batches so far, how many of them `result`
+  // holds, and whether `result` is made of them (unnamed proposals, named
+  // "found N" by arrival, until the whole result replaces them).
+  std::shared_ptr<ArrivingProposals> arriving;
+  storage::RecordId arriving_model = 0;
+  std::size_t arrived = 0;
+  bool provisional = false;
   std::set<std::string> rejected, accepted;  // hidden for the session
   // Hidden too: proposals that lie along a trace already stored on this
   // model (the geologist mapped it by hand or accepted it before).

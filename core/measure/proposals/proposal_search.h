@@ -33,6 +33,8 @@ class ProposalSearch {
   // finish()'s proposals, there named and linked to its facet (here
   // without a name or facet).
   std::vector<TraceProposal> longest(std::size_t count, Progress& progress);
+  // How many chains longest() has not measured yet (0: finish() only ranks).
+  std::size_t chains_left() const;
   // Every chain not yet measured, then the facets linked, the proposals
   // ranked and named: propose_traces' result. Once.
   ProposalResult finish(const std::vector<ProposalFacet>& facets, Progress& progress);

@@ -563,6 +563,10 @@ std::vector<TraceProposal> ProposalSearch::longest(std::size_t count, Progress& 
   return shown;
 }
 
+std::size_t ProposalSearch::chains_left() const {
+  return state_->chains.size() - state_->measured_count;
+}
+
 ProposalResult ProposalSearch::finish(const std::vector<ProposalFacet>& facets,
                                       Progress& progress) {
   using namespace proposal_phases;

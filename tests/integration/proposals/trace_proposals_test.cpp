@@ -194,9 +194,10 @@ TEST(TraceProposals, BadInputIsRefusedByName) {
 }
 
 // Issue 45: the tablet shows the longest chains' proposals first, then the
-// rest. Each of the first is one of the whole result (the same pixels,
-// points and confidence), and the whole result, after a first batch, is
-// what finding them in one go gives: names, order and facets included.
+// rest as they come. Each of the first is one of the whole result (the same
+// pixels, points and confidence), every proposal of the result came in a
+// batch, and the whole result, after the batches, is what finding them in
+// one go gives: names, order and facets included.
 TEST(TraceProposals, TheFirstProposalsAreAmongTheWholeResult) {
   const FaceRun& r = run(rt::JointDensity::medium);
   rockface::NoProgress progress;
@@ -205,9 +206,18 @@ TEST(TraceProposals, TheFirstProposalsAreAmongTheWholeResult) {
   rm::ProposalSearch search(r.face.rec.mesh, *r.picker, r.face.left, r.face.render.images[0],
                             options, progress, "proposals");
   const std::vector<rm::TraceProposal> first = search.longest(4, progress);
+  // Then the rest a batch at a time, as the tablet's Find traces takes them.
+  std::vector<rm::TraceProposal> batches = first;
+  int later_batches = 0;
+  while (search.chains_left() > 0) {
+    const auto batch = search.longest(4, progress);
+    batches.insert(batches.end(), batch.begin(), batch.end());
+    ++later_batches;
+  }
   const rm::ProposalResult whole = search.finish(r.face.facets, progress);
   ASSERT_FALSE(first.empty()) << "the four longest chains of the medium face are traces";
   ASSERT_LT(first.size(), whole.proposals.size()) << "the first batch is not the whole";
+  EXPECT_GE(later_batches, 2) << "the medium face's chains are more than two batches of four";
   const auto same_line = [](const rm::TraceProposal& a, const rm::TraceProposal& b) {
     if (a.trace.picks.size() != b.trace.picks.size() ||
         a.trace.points.size() != b.trace.points.size())
@@ -227,6 +237,12 @@ TEST(TraceProposals, TheFirstProposalsAreAmongTheWholeResult) {
                             [&](const rm::TraceProposal& q) { return same_line(p, q); }))
         << "a first proposal of " << p.trace.length << " m is not in the whole result";
   }
+  // Every proposal of the result came in a batch: nothing waits for the end.
+  EXPECT_EQ(batches.size(), whole.proposals.size());
+  for (const auto& q : whole.proposals)
+    EXPECT_TRUE(std::any_of(batches.begin(), batches.end(),
+                            [&](const rm::TraceProposal& p) { return same_line(p, q); }))
+        << q.id << " came in no batch";
   // The whole result as propose_traces gives it (run() found it in one go).
   ASSERT_EQ(whole.proposals.size(), r.result.proposals.size());
   for (std::size_t i = 0; i < whole.proposals.size(); ++i) {
