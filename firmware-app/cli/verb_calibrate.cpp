@@ -10,6 +10,7 @@
 #include "camera/exif.h"
 #include "core/common/error.h"
 #include "core/photogrammetry/camera/calibration.h"
+#include "core/photogrammetry/camera/calibration_coverage.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "storage/project/project_store.h"
 #include "storage/scene/camera_json.h"
@@ -76,6 +77,9 @@ VerbRun setup_calibrate(CLI::App& sub) {
                     v.outlier ? "  outlier: left out, retake this view" : "");
       std::cout << line;
     }
+    // Said before the figures are stored: the user can retake views now.
+    const auto coverage = photogrammetry::calibration_coverage(out.views, out.result, out.size);
+    if (coverage.poor()) std::cout << "warning: " << coverage.warning() << "\n";
     photogrammetry::CameraIntrinsics cam = out.result.intrinsics;
     cam.body = opts->body;
     cam.lens = opts->lens;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numeric>
+#include <utility>
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core/eigen.hpp>
@@ -278,6 +279,8 @@ CalibrationFromImages calibrate_from_images(const std::vector<std::string>& path
                          (missing.empty() ? std::string() : " (not found in: " + missing + ")"));
   }
   out.result = calibrate_camera(views, pattern, size, options);
+  out.views = std::move(views);
+  out.size = size;
   return out;
 }
 

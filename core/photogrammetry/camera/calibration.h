@@ -83,6 +83,10 @@ struct CalibrationImageReport {
 struct CalibrationFromImages {
   CalibrationResult result;
   std::vector<CalibrationImageReport> images;  // in input order
+  // The views the pattern was found in (result.views' order) and the
+  // images' size: what calibration_coverage reads.
+  std::vector<CalibrationView> views;
+  cv::Size size;
 };
 
 // Loads the images, detects the pattern and calibrates. Throws InputError

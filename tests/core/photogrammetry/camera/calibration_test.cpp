@@ -2,6 +2,7 @@
 #include "tests/support/test_paths.h"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -11,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.h"
+#include "core/photogrammetry/camera/calibration_coverage.h"
 #include "tests/core/photogrammetry/camera/board_views.h"
 
 namespace rockface::photogrammetry {
@@ -139,10 +141,7 @@ cv::Point2d distort(const cv::Point2d& p, const double* k) {
 // absorbed by the board poses, so comparing whole projections would mix the
 // two.) Outside the seen area k2 and k3 extrapolate freely.
 double max_distortion_difference_px(const test::BoardCamera& truth, const CameraIntrinsics& est,
-                                    const std::vector<CalibrationView>& views) {
-  std::vector<cv::Point2d> seen;
-  for (const auto& v : views)
-    for (const auto& p : v.image_points) seen.emplace_back(p.x, p.y);
+                                    const std::vector<cv::Point2d>& seen) {
   std::vector<cv::Point2d> n;
   cv::undistortPoints(seen, n, truth.K, truth.dist, cv::noArray(), cv::noArray(),
                       cv::TermCriteria(cv::TermCriteria::COUNT, 10, 0));
@@ -152,6 +151,14 @@ double max_distortion_difference_px(const test::BoardCamera& truth, const Camera
     worst = std::max(worst, std::hypot(est.fx * (a.x - b.x), est.fy * (a.y - b.y)));
   }
   return worst;
+}
+
+double max_distortion_difference_px(const test::BoardCamera& truth, const CameraIntrinsics& est,
+                                    const std::vector<CalibrationView>& views) {
+  std::vector<cv::Point2d> seen;
+  for (const auto& v : views)
+    for (const auto& p : v.image_points) seen.emplace_back(p.x, p.y);
+  return max_distortion_difference_px(truth, est, seen);
 }
 
 TEST(CalibrationSynthetic, RecoversKnownIntrinsicsAndDistortion) {
@@ -182,6 +189,56 @@ TEST(CalibrationSynthetic, RecoversKnownIntrinsicsAndDistortion) {
   // Corner localisation error of clean synthetic views.
   EXPECT_LT(r.rms_px, 0.1);
   EXPECT_TRUE(r.outlier_names().empty());
+}
+
+// Issue 42: views of the pattern near the image centre only leave the
+// distortion at the image's edges to the polynomial's extrapolation. The
+// coverage says so, and the true lens agrees: at the image's corners the
+// distortion of the central views' calibration is off by pixels, that of
+// the twelve views reaching the corners by a fraction of one.
+TEST(CalibrationCoverage, CentralViewsAreWarnedOfAndTheirCornersAreWrong) {
+  const auto& data = twelve_views();
+  ASSERT_EQ(data.views.size(), 12u);
+  const CalibrationPattern pattern{CalibrationPattern::Kind::chessboard, 9, 6, 0.03};
+  // The first five boards are tilted at the centre, shifted 2 cm at most
+  // at 0.5 m (synthetic_views).
+  const std::vector<CalibrationView> central(data.views.begin(), data.views.begin() + 5);
+  const cv::Size size = data.cam.size;
+  const auto whole = calibrate_camera(data.views, pattern, size);
+  const auto centre_only = calibrate_camera(central, pattern, size);
+  const CalibrationCoverage seen_whole = calibration_coverage(data.views, whole, size);
+  const CalibrationCoverage seen_central = calibration_coverage(central, centre_only, size);
+  EXPECT_FALSE(seen_whole.poor()) << seen_whole.warning();
+  ASSERT_TRUE(seen_central.poor()) << seen_central.radius_fraction;
+  const std::string warning = seen_central.warning();
+  EXPECT_NE(warning.find("extrapolated"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("add views"), std::string::npos) << warning;
+
+  const double w = size.width - 1, h = size.height - 1;
+  const std::vector<cv::Point2d> corners = {{0, 0}, {w, 0}, {0, h}, {w, h}};
+  const double off_whole = max_distortion_difference_px(data.cam, whole.intrinsics, corners);
+  const double off_central =
+      max_distortion_difference_px(data.cam, centre_only.intrinsics, corners);
+  std::printf("image corners' distortion off by %.3f px (twelve views), %.3f px (central)\n",
+              off_whole, off_central);
+  // The twelve views reach the corners' cells: the corners' error is a few
+  // times the 0.05 px corner noise (0.17 px seen), bound 1 px. The central
+  // views' polynomial runs free past 46 % of the half-diagonal: tens of
+  // pixels (47 seen); 3 px, a stereo pair's disparity error a geologist
+  // would see as centimetres at the face, is the bound it must exceed.
+  EXPECT_LT(off_whole, 1.0);
+  EXPECT_GT(off_central, 3.0);
+}
+
+// The OpenCV sample's thirteen views, whose calibration is the reference
+// above: what a usable set of real views covers.
+TEST(CalibrationCoverage, TheRealSampleViewsCoverTheImage) {
+  const auto out =
+      calibrate_from_images(left_images(), parse_calibration_pattern("chessboard:9x6:0.025"));
+  ASSERT_EQ(out.views.size(), out.result.views.size());
+  const CalibrationCoverage c = calibration_coverage(out.views, out.result, out.size);
+  std::printf("radius %.3f, cells %d\n", c.radius_fraction, c.cells_seen);
+  EXPECT_FALSE(c.poor()) << c.warning();
 }
 
 TEST(CalibrationSynthetic, ReportsAndExcludesAnOutlierView) {
