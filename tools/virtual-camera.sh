@@ -39,7 +39,11 @@ report() {
   if [ "${1:-}" = "--env" ]; then echo "export IOLIBS=$iolibs"; else echo "$iolibs"; fi
 }
 
-if [ -f "$iolibs/vusb.so" ]; then
+# The build is of this version with these patches: a patch changed since
+# rebuilds it (the stamp holds the patches' checksum).
+patches=("$repo"/tools/virtual-camera/*.patch)
+stamp=$(cat "${patches[@]}" | sha256sum | cut -c1-16)
+if [ -f "$iolibs/vusb.so" ] && [ "$(cat "$iolibs/patches.sha" 2> /dev/null)" = "$stamp" ]; then
   report "${1:-}"
   exit 0
 fi
@@ -69,7 +73,9 @@ echo "virtual-camera: building vusb.so from Debian's libgphoto2 $version in $wor
 # Debian's patches applied, as the installed libraries were built.
 apt-get source -qq "libgphoto2=$version" > source.log 2>&1 || { cat source.log >&2; exit 1; }
 src=$(find . -maxdepth 1 -type d -name 'libgphoto2-*' | head -1)
-patch -d "$src" -p1 --quiet < "$repo/tools/virtual-camera/vcamera-no-replay.patch"
+# Ours, in name order: vcamera-faults.patch (faults a test stages),
+# vcamera-no-replay.patch (the port's id file is not a session to replay).
+for p in "${patches[@]}"; do patch -d "$src" -p1 --quiet < "$p"; done
 
 cd "$src/libgphoto2_port"
 ./configure --enable-vusb --disable-nls --quiet > "$work/configure.log" 2>&1 ||
@@ -88,6 +94,7 @@ for driver in "$driverdir"/*.so; do
   [ "$(basename "$driver")" = usb1.so ] || ln -s "$driver" "$staging/"
 done
 cp .libs/vusb.so "$staging/vusb.so"
+echo "$stamp" > "$staging/patches.sha"
 rm -rf "$iolibs"
 mv "$staging" "$iolibs"
 chmod 755 "$iolibs"

@@ -5,6 +5,7 @@
 // capture, the download into the spool and the events all run the code a
 // real body runs. What the virtual camera does not emulate (live view,
 // bulb, each maker's own setting names): docs/virtual-camera.md.
+#include <dlfcn.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -258,6 +259,108 @@ TEST_F(VirtualD750Test, AShotItCouldNotSendIsFetchedFromItsCardOnceItAnswers) {
   EXPECT_NE(next.image.camera_path, pending[0]);
   EXPECT_EQ(bytes_of(next.image.saved_path), d750_.card_jpeg);
   EXPECT_EQ(files_in(spool_).size(), 2u);
+}
+
+// Issue 42: the faults of a real USB camera, staged on the virtual camera
+// by a file in its working folder (tools/virtual-camera/vcamera-faults.patch:
+// the port answers each as libgphoto2's libusb port does).
+// The virtual camera keeps its card's new pictures in the port library's
+// memory, which libgphoto2 unloads when the last camera on it is closed (as
+// rockface closes a camera that stopped answering): the library is held
+// loaded here, so that the card keeps its pictures across a reconnection
+// as a real card does.
+class Plug {
+ public:
+  Plug(const fs::path& folder, const fs::path& iolibs) : folder_(folder) {
+    held_ = ::dlopen((iolibs / "vusb.so").c_str(), RTLD_NOW | RTLD_NODELETE);
+    EXPECT_TRUE(held_) << ::dlerror();
+  }
+  ~Plug() {
+    for (const char* f : {"vcamera-unplugged", "vcamera-claimed", "vcamera-unplug-on-download"})
+      fs::remove(folder_ / f);
+  }
+  void set(const char* fault) const { std::ofstream(folder_ / fault).put('\n'); }
+  void clear(const char* fault) const { fs::remove(folder_ / fault); }
+  bool has(const char* fault) const { return fs::exists(folder_ / fault); }
+
+ private:
+  fs::path folder_;
+  void* held_ = nullptr;  // never closed (RTLD_NODELETE): the card lives with the process
+};
+
+// Unplugged between two shots: the next command says the camera stopped
+// answering, the one after (still unplugged) that it is not connected;
+// plugged back in, the next shot reconnects and is taken.
+TEST_F(VirtualD750Test, AnUnpluggedCameraIsSaidSoAndReconnectsWhenPluggedBackIn) {
+  Gphoto2Camera cam(options());
+  const std::string serial = cam.serial_number();
+  const Capture first = cam.capture();
+  const Plug plug(d750_.folder, d750_.iolibs);
+  plug.set("vcamera-unplugged");
+  CameraError::Kind kind{};
+  std::string why = message_of([&] { cam.capture(); }, &kind);
+  EXPECT_EQ(kind, CameraError::Kind::disconnected) << why;
+  EXPECT_NE(why.find("unplugged"), std::string::npos) << why;
+  why = message_of([&] { cam.capture(); }, &kind);
+  EXPECT_EQ(kind, CameraError::Kind::no_camera) << why;
+  EXPECT_NE(why.find("No camera found"), std::string::npos) << why;
+  EXPECT_EQ(files_in(spool_).size(), 1u) << "the picture downloaded before is safe";
+
+  plug.clear("vcamera-unplugged");
+  const Capture next = cam.capture();
+  EXPECT_NE(next.image.camera_path, first.image.camera_path);
+  EXPECT_EQ(bytes_of(next.image.saved_path), d750_.card_jpeg);
+  EXPECT_EQ(cam.serial_number(), serial) << "the same body after the reconnection";
+  EXPECT_EQ(files_in(spool_).size(), 2u);
+}
+
+// The cable pulled as the shot is downloaded: the shot is taken on the
+// card but never reaches the tablet. It is not lost: it stays pending,
+// nothing partial lies in the spool, and once the camera is plugged back
+// in it is fetched whole as the shot it was, not taken again.
+TEST_F(VirtualD750Test, AShotWhoseDownloadTheUnplugCutIsFetchedOnceItIsBack) {
+  Gphoto2Camera cam(options());
+  const std::string serial = cam.serial_number();
+  const Plug plug(d750_.folder, d750_.iolibs);
+  plug.set("vcamera-unplug-on-download");
+  CameraError::Kind kind{};
+  const std::string why = message_of([&] { cam.capture(); }, &kind);
+  ASSERT_TRUE(plug.has("vcamera-unplugged")) << "the download was never asked for: " << why;
+  EXPECT_EQ(kind, CameraError::Kind::disconnected) << why;
+  EXPECT_NE(why.find("unplugged"), std::string::npos) << why;
+  const auto pending = cam.pending_downloads();
+  ASSERT_EQ(pending.size(), 1u) << why;
+  EXPECT_EQ(why.rfind("Downloading " + pending[0] + ": ", 0), 0u) << why;
+  EXPECT_TRUE(!fs::exists(spool_) || files_in(spool_).empty());
+  // Still unplugged: nothing to fetch from, and the shot stays pending.
+  EXPECT_THROW(cam.fetch_pending_capture(), CameraError);
+  EXPECT_EQ(cam.pending_downloads().size(), 1u);
+
+  plug.clear("vcamera-unplugged");
+  const std::optional<Capture> fetched = cam.fetch_pending_capture();
+  ASSERT_TRUE(fetched);
+  EXPECT_EQ(fetched->image.camera_path, pending[0]);
+  EXPECT_EQ(bytes_of(fetched->image.saved_path), d750_.card_jpeg);
+  EXPECT_EQ(fetched->body_serial, serial);
+  EXPECT_TRUE(cam.pending_downloads().empty());
+  EXPECT_EQ(files_in(spool_).size(), 1u);
+}
+
+// Another program holds the camera's USB interface (on a desktop a photo
+// importer): connecting says so and what to do; once it lets go, the
+// camera connects and shoots (the Capture screen's Connect camera again).
+TEST_F(VirtualD750Test, ACameraHeldByAnotherProgramIsSaidSoUntilItLetsGo) {
+  const Plug plug(d750_.folder, d750_.iolibs);
+  plug.set("vcamera-claimed");
+  CameraError::Kind kind{};
+  const std::string why = message_of([&] { Gphoto2Camera held(options()); }, &kind);
+  EXPECT_EQ(kind, CameraError::Kind::usb_claimed) << why;
+  EXPECT_NE(why.find("another program is using the camera's USB connection"), std::string::npos)
+      << why;
+  EXPECT_TRUE(!fs::exists(spool_) || files_in(spool_).empty());
+  plug.clear("vcamera-claimed");
+  Gphoto2Camera cam(options());
+  EXPECT_EQ(bytes_of(cam.capture().image.saved_path), d750_.card_jpeg);
 }
 
 TEST_F(VirtualD750Test, RefusesLiveViewSayingTheBodyCannotAndStillShoots) {
