@@ -6,6 +6,7 @@
 #include "core/common/error.h"
 #include "ui/app/tablet_app.h"
 #include "ui/platform/egl_context.h"
+#include "ui/platform/frame_pacer.h"
 #include "ui/platform/framebuffer.h"
 #include "ui/platform/window_runner.h"
 
@@ -187,7 +188,11 @@ class WindowSession final : public UiDriver {
 
 void run_in_window(const UiOptions& options, const FieldServices& services) {
   WindowSession session(options, services, kDefaultWidth, kDefaultHeight);
-  while (session.open()) session.frame();
+  FramePacer pacer;
+  while (session.open()) {
+    session.frame();
+    pacer.wait();
+  }
 }
 
 ScriptRun run_script_in_window(const UiOptions& options, const FieldServices& services,
