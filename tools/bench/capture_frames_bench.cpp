@@ -8,8 +8,9 @@
 // it. The queue's worker is a thread of its own; on 2 cores it shares them
 // with the renderer's threads and the UI thread, which is what is measured.
 // Frames are paced as the tablet's window paces them (60 a second): drawn
-// back to back, the Capture screen's frames (a third of a millisecond each)
-// took a core from the reconstruction and made it five times slower.
+// back to back (a third of a millisecond each), the headless frames took
+// the cores from the reconstruction and made it 3-4 times slower, which
+// is not what the tablet's window does.
 //
 // The project: the demo's (`tools/demo.sh` writes
 // out/tunnel-face-demo.rockface, 6000 x 4000 pairs of the tunnel-face

@@ -1,10 +1,14 @@
 #pragma once
-// The tablet's frames at most a display's rate. On Mesa's software renderer
-// the buffer swap does not wait for the display, so a screen drawn in a
-// millisecond (the Capture screen) was drawn a thousand times a second,
-// taking a core from the worker that makes the pairs' 3D images beside it
-// (issue 45: tools/bench/capture_frames_bench.cpp). Sixty frames a second
-// is what the eye and a finger's drag need.
+// The tablet's frames at most a display's rate, whatever the platform's
+// buffer swap does: a swap that does not wait for the display (Mesa's
+// software renderer may not) would draw a screen made in a millisecond (the
+// Capture screen) hundreds of times a second and take a core from the
+// worker that makes the pairs' 3D images beside it. Drawn back to back, the
+// headless session's frames made a 24 Mpx pair's 3D image 3-4 times slower
+// (issue 45: tools/bench/capture_frames_bench.cpp). Under Xvfb the window's
+// swap already held the frames back (27 % of a core on the Project screen
+// with and without the pacer); sixty frames a second is what the eye and a
+// finger's drag need.
 #include <chrono>
 
 namespace rockface::ui {
