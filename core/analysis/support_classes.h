@@ -20,7 +20,18 @@
 #include <string>
 #include <vector>
 
+#include "core/tunnel/support_ranges.h"
+
 namespace rockface::analysis {
+
+// The ranges a class's figures are taken in (besides the bolts' ranges of
+// core/tunnel/support_ranges.h), by the classes file and by a decision's
+// changes alike: a round longer than 10 m is no drill-and-blast round;
+// shotcrete up to half a metre (a cast lining is not shotcrete); its shear
+// strength 0.1-10 MPa (young to strong fibre-reinforced shotcrete).
+inline constexpr tunnel::SupportRange kRoundLengthRange{0.1, 10.0, "m"};
+inline constexpr tunnel::SupportRange kShotcreteThicknessRange{0.0, 0.5, "m"};
+inline constexpr tunnel::SupportRange kShotcreteShearRange{1e5, 1e7, "Pa"};
 
 // A range of a figure: [min, max), either end open when absent.
 struct FigureRange {

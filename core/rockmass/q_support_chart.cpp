@@ -46,28 +46,32 @@ double boundary_log10_q(int k, double de) {
 }
 
 const std::array<QSupportCategory, 9>& categories() {
+  // The legend of NGI 2015 (the header says each column's source): number,
+  // name, words, shotcrete min and max, ribs, systematic bolting, special
+  // evaluation, the Sfr's energy absorption class and its joules.
   static const std::array<QSupportCategory, 9> c = {{
-      {1, "unsupported or spot bolting", "unsupported or spot bolting", 0, 0, "", false, false},
-      {2, "SB", "spot bolting", 0, 0, "", false, false},
+      {1, "unsupported or spot bolting", "unsupported or spot bolting", 0, 0, "", "", 0, false,
+       false},
+      {2, "SB", "spot bolting", 0, 0, "", "", 0, false, false},
       {3, "B + Sfr 5-6 cm", "systematic bolting, fibre reinforced sprayed concrete 5-6 cm", 0.05,
-       0.06, "", true, false},
+       0.06, "", "", 0, true, false},
       {4, "Sfr 6-9 cm + B", "fibre reinforced sprayed concrete and bolting, 6-9 cm", 0.06, 0.09, "",
-       true, false},
+       "E500", 500, true, false},
       {5, "Sfr 9-12 cm + B", "fibre reinforced sprayed concrete and bolting, 9-12 cm", 0.09, 0.12,
-       "", true, false},
+       "", "E700", 700, true, false},
       {6, "Sfr 12-15 cm + RRS I + B",
        "fibre reinforced sprayed concrete and bolting, 12-15 cm, with reinforced ribs of sprayed "
        "concrete (RRS I)",
-       0.12, 0.15, "RRS I", true, false},
+       0.12, 0.15, "RRS I", "E700", 700, true, false},
       {7, "Sfr > 15 cm + RRS II + B",
        "fibre reinforced sprayed concrete over 15 cm, reinforced ribs of sprayed concrete (RRS "
        "II) and bolting",
-       0.15, 0.25, "RRS II", true, false},
+       0.15, 0.25, "RRS II", "E1000", 1000, true, false},
       {8, "CCA or Sfr > 25 cm + RRS III + B",
        "cast concrete lining, or fibre reinforced sprayed concrete over 25 cm with reinforced ribs "
        "of sprayed concrete (RRS III) and bolting",
-       0.25, 0.25, "RRS III", true, false},
-      {9, "special evaluation", "special evaluation", 0, 0, "", false, true},
+       0.25, 0.25, "RRS III", "E1000", 1000, true, false},
+      {9, "special evaluation", "special evaluation", 0, 0, "", "", 0, false, true},
   }};
   return c;
 }

@@ -36,6 +36,22 @@
 // from the chart's spacing lines as functions of Q, the shotcrete
 // thickness from the category, the bolt length is L = 2 + 0.15 B / ESR.
 //
+// Energy absorption of the fibre reinforced sprayed concrete: the 2015
+// chart's legend adds to the Sfr of categories 4 to 8 the energy the
+// sprayed concrete must absorb in the plate test (EN 14488-5): E500 (500
+// J) for category 4, E700 for 5 and 6, E1000 for 7 and 8; categories 1-3
+// state none (3's 5-6 cm of Sfr carries no class). The classes come from
+// the NGI update of the chart for poor rock (Grimstad, Kankes, Bhasin,
+// Magnussen & Kaynia 2002, "Rock mass quality Q used in designing
+// reinforced ribs of sprayed concrete and energy absorption", which took
+// the energy absorption of the sprayed concrete into the chart). Searched
+// for this change (issue 44): that paper's summary and the handbook's
+// table of contents are public; the legend's text itself was not found in
+// the material searched, so the mapping above is the legend as the 2015
+// handbook prints it ("Sfr (E500)+B", "Sfr (E700)+B", "Sfr (E700)+RRS
+// I+B", "Sfr (E1000)+RRS II+B", "CCA or Sfr (E1000)+RRS III+B"), to be
+// read against the printed chart like its boundaries.
+//
 // A point on or within kQChartMarginalLog10 of a boundary is given the
 // heavier category (the conservative side, the chart's convention that the
 // line belongs to the support above it) and marked marginal with the
@@ -62,6 +78,10 @@ struct QSupportCategory {
   const char* words = "";                           // the chart's legend in words
   double shotcrete_min_m = 0, shotcrete_max_m = 0;  // 0 when none
   const char* ribs = "";                            // "", "RRS I", "RRS II", "RRS III"
+  // The Sfr's energy absorption class of the 2015 legend, "" none ("E700"),
+  // and its energy in joules (0 none).
+  const char* energy_class = "";
+  int energy_absorption_j = 0;
   bool systematic_bolting = false;
   bool special_evaluation = false;
 };

@@ -57,6 +57,10 @@ ui::SupportProposals StoreSupportRunner::support(const std::filesystem::path& pr
         "None: the tunnel has no support classes (rockface support --classes FILE)");
   }
   for (const auto& c : s.checks) out.checks.push_back(checks_words(c));
+  if (s.decided_check) {
+    out.decided_check.push_back(checks_words(*s.decided_check));
+    for (const auto& n : s.decided_check->notes) out.decided_check.push_back(n);
+  }
   if (s.decision)
     out.decision = ui::SupportDecided{
         s.decision->class_name, s.decision->proposed, s.decision->reason, s.decision->decided_by,

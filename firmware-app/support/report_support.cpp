@@ -42,15 +42,26 @@ void add_support_to_report(storage::ProjectStore& store, storage::FieldReport& r
   }
   if (s.q_point) out.chart = storage::q_chart_picture(s.q_point);
   const analysis::SupportCheck* chosen = nullptr;
-  for (const auto& c : s.checks) {
+  auto check_lines = [&out](const analysis::SupportCheck& c) {
     out.checks.push_back(checks_words(c));
     for (const auto& w : c.wedges)
       for (const auto& f : w.fixes) out.checks.push_back("  " + w.id + ": " + f);
     for (const auto& b : c.blocks)
       for (const auto& f : b.fixes) out.checks.push_back("  block " + b.id + ": " + f);
+  };
+  for (const auto& c : s.checks) {
+    check_lines(c);
     if (s.decision ? c.class_name == s.decision->class_name : !chosen) chosen = &c;
   }
+  // The pattern as decided, beside the class unchanged above; its rows
+  // are the table's.
+  if (s.decided_check) {
+    check_lines(*s.decided_check);
+    for (const auto& n : s.decided_check->notes) out.checks.push_back("  " + n);
+    chosen = &*s.decided_check;
+  }
   if (chosen) {
+    out.rows_pattern = chosen->class_name;
     for (const auto& w : chosen->wedges)
       out.rows.push_back({w.id, w.place, w.mode, fos_text(w.fos_unsupported),
                           fos_text(w.fos_supported),
@@ -70,6 +81,7 @@ void add_support_to_report(storage::ProjectStore& store, storage::FieldReport& r
     for (const auto& c : d.changes) out.decision.push_back("change: " + support_change_words(c));
     out.decision.push_back("decided by " + d.decided_by + " at " + d.decided_at);
     if (!d.checks.empty()) out.decision.push_back("checks then: " + d.checks);
+    if (s.decided_check) out.decision.push_back("checks now: " + decision_checks_words(s));
   } else {
     out.decision.push_back("not decided yet");
   }

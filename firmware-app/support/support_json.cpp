@@ -84,6 +84,9 @@ std::string q_support_words(const rockmass::QSupport& q) {
   if (q.category.shotcrete_max_m > 0)
     s += "; shotcrete " + format_fixed(q.category.shotcrete_min_m * 100, 0) + "-" +
          format_fixed(q.category.shotcrete_max_m * 100, 0, " cm");
+  if (*q.category.energy_class)
+    s += ", fibre reinforced, energy absorption " + std::string(q.category.energy_class) + " (" +
+         std::to_string(q.category.energy_absorption_j) + " J, EN 14488-5 plate)";
   if (*q.category.ribs)
     s += "; reinforced ribs of sprayed concrete (" + std::string(q.category.ribs) + ")";
   return s;
@@ -120,6 +123,11 @@ json support_json(const VisitSupport& s) {
         {"bolt_spacing_shotcreted", optional_figure(q.bolt_spacing_shotcreted_m, 2, " m")},
         {"bolt_spacing_unshotcreted", optional_figure(q.bolt_spacing_unshotcreted_m, 2, " m")},
         {"max_unsupported_span", format_fixed(q.max_unsupported_span_m, 2, " m")},
+        // The Sfr's energy absorption class of the 2015 chart's legend.
+        {"energy_absorption",
+         *q.category.energy_class ? json(q.category.energy_class) : json(nullptr)},
+        {"energy_absorption_j",
+         q.category.energy_absorption_j > 0 ? json(q.category.energy_absorption_j) : json(nullptr)},
         {"marginal", q.marginal},
         {"marginal_note", q.marginal_note},
         {"source", q.source},
@@ -162,6 +170,9 @@ json support_json(const VisitSupport& s) {
   json checks = json::array();
   for (const auto& c : s.checks) checks.push_back(check_json(c));
   out["checks"] = checks;
+  // The pattern as decided (the chosen class with the decision's changes);
+  // null when the decision changes nothing: its class's check above is it.
+  out["decided_check"] = s.decided_check ? check_json(*s.decided_check) : json(nullptr);
   if (s.decision) {
     json changes = json::array();
     for (const auto& c : s.decision->changes)
@@ -205,12 +216,17 @@ std::vector<std::string> support_summary(const VisitSupport& s) {
     out.push_back("classes: none stored for the tunnel (--classes FILE)");
   if (s.proposal)
     for (const auto& n : s.proposal->notes) out.push_back("  " + n);
-  for (const auto& c : s.checks) {
+  auto check_lines = [&out](const analysis::SupportCheck& c) {
     out.push_back("check " + checks_words(c));
     for (const auto& w : c.wedges)
       for (const auto& f : w.fixes) out.push_back("  " + w.id + ": " + f);
     for (const auto& b : c.blocks)
       for (const auto& f : b.fixes) out.push_back("  block " + b.id + ": " + f);
+  };
+  for (const auto& c : s.checks) check_lines(c);
+  if (s.decided_check) {
+    check_lines(*s.decided_check);
+    for (const auto& n : s.decided_check->notes) out.push_back("  " + n);
   }
   if (s.decision)
     out.push_back("decision: " + s.decision->class_name + " by " + s.decision->decided_by + " at " +

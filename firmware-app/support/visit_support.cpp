@@ -5,6 +5,7 @@
 #include <map>
 #include <numbers>
 
+#include "core/analysis/support_changes.h"
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 #include "core/geometry/orientation.h"
@@ -273,6 +274,29 @@ void add_checks(storage::ProjectStore& store, VisitSupport& out,
       out.checks.push_back(check_class(store, out.visit, *c, blocks));
 }
 
+// The chosen class with the decision's changes, checked. A decision being
+// made (`deciding`) has its changes refused by name (InputError naming
+// --change); a stored one whose changes no longer apply (made before they
+// were checked, or the classes replaced since) is said in the notes.
+void add_decided_check(storage::ProjectStore& store, VisitSupport& out,
+                       const std::vector<analysis::MovingBlock>& blocks, bool deciding) {
+  if (!out.classes || !out.decision || out.decision->changes.empty()) return;
+  const analysis::SupportClass* c = analysis::find_class(*out.classes, out.decision->class_name);
+  if (!c) return;
+  std::optional<analysis::ChangedPattern> changed;
+  try {
+    changed = analysis::apply_support_changes(*c, out.decision->changes, "--change");
+  } catch (const InputError& e) {
+    if (deciding) throw;
+    out.notes.push_back("the decision's changes are not applied to its check (" + e.reason() +
+                        "): the check shown is the class's");
+    return;
+  }
+  changed->pattern.name = c->name + " as changed";
+  out.decided_check = check_class(store, out.visit, changed->pattern, blocks);
+  for (const auto& n : changed->notes) out.decided_check->notes.push_back(n);
+}
+
 }  // namespace
 
 std::string checks_words(const analysis::SupportCheck& c) {
@@ -294,6 +318,16 @@ std::string checks_words(const analysis::SupportCheck& c) {
          format_significant(c.target_fos, 3) + (which.empty() ? "" : " (" + which + ")");
 }
 
+std::string decision_checks_words(const VisitSupport& s) {
+  if (!s.decision) return "";
+  const analysis::SupportCheck* unchanged = nullptr;
+  for (const auto& c : s.checks)
+    if (c.class_name == s.decision->class_name) unchanged = &c;
+  if (!s.decided_check) return unchanged ? checks_words(*unchanged) : "";
+  return checks_words(*s.decided_check) +
+         (unchanged ? "; the class unchanged: " + checks_words(*unchanged) : "");
+}
+
 VisitSupport visit_support(storage::ProjectStore& store, storage::RecordId visit,
                            const std::optional<std::string>& esr_use) {
   require_visit(store, visit);
@@ -304,6 +338,7 @@ VisitSupport visit_support(storage::ProjectStore& store, storage::RecordId visit
   if (out.classes) out.proposal = analysis::match_support_classes(*out.classes, out.figures);
   out.decision = store.load_support_decision(visit);
   add_checks(store, out, blocks);
+  add_decided_check(store, out, blocks, false);
   return out;
 }
 
@@ -352,13 +387,17 @@ VisitSupport visit_support(const SupportRequest& q) {
     d.decided_by = *q.by;
     d.decided_at = storage::utc_now_iso8601();
     out.decision = d;
+    // The changes refused before anything is checked or stored.
+    analysis::apply_support_changes(*analysis::find_class(*out.classes, d.class_name), d.changes,
+                                    "--change");
     add_checks(store, out, blocks);
-    for (const auto& c : out.checks)
-      if (c.class_name == d.class_name) out.decision->checks = checks_words(c);
+    add_decided_check(store, out, blocks, true);
+    out.decision->checks = decision_checks_words(out);
     store.save_support_decision(q.visit, *out.decision);
     return out;
   }
   add_checks(store, out, blocks);
+  add_decided_check(store, out, blocks, false);
   return out;
 }
 

@@ -44,6 +44,13 @@ struct VisitSupport {
   std::optional<analysis::SupportClasses> classes;
   std::optional<analysis::ClassProposal> proposal;
   std::vector<analysis::SupportCheck> checks;  // the proposed and the chosen class
+  // The chosen class with the decision's changes applied
+  // (core/analysis/support_changes.h), checked: its class_name is the
+  // class's with " as changed", its notes say what of the changes the check
+  // does not use. None when the decision changes nothing (the chosen
+  // class's check in `checks` is the pattern as decided) or when a stored
+  // decision's changes cannot be applied to the class (said in `notes`).
+  std::optional<analysis::SupportCheck> decided_check;
   std::optional<analysis::SupportDecision> decision;
   std::vector<std::string> notes;
 };
@@ -63,5 +70,11 @@ VisitSupport visit_support(storage::ProjectStore& store, storage::RecordId visit
 
 // The checks in one line ("SC2: 1 of 6 wedges and 0 of 2 blocks below FoS 1.5 (W3)").
 std::string checks_words(const analysis::SupportCheck& check);
+
+// The check of the pattern as decided, in one line, with the class's
+// unchanged check beside it when the decision changed the class ("SC2 as
+// changed: 0 of 6 ...; the class unchanged: SC2: 1 of 6 ..."); "" without
+// a decision or a check of its class.
+std::string decision_checks_words(const VisitSupport& support);
 
 }  // namespace rockface::app

@@ -133,8 +133,9 @@ struct ReportedSupport {
   std::vector<std::string> proposals;          // the Q chart's, Bieniawski's, the classes'
   std::vector<std::string> checks;             // per class checked, and what would fix it
   std::vector<std::vector<std::string>> rows;  // the chosen class on each wedge and block
-  std::vector<std::string> decision;           // the class chosen, changes, who, when
-  cv::Mat chart;                               // BGR: the Q chart with the visit's point
+  std::string rows_pattern;  // whose rows: "SC2", "SC2 as changed" (the decision's changes)
+  std::vector<std::string> decision;  // the class chosen, changes, who, when
+  cv::Mat chart;                      // BGR: the Q chart with the visit's point
 };
 
 struct FieldReport {

@@ -512,6 +512,8 @@ void support_section(PdfPages& pdf, const FieldReport& r) {
     pdf.line("the Q-system support chart with the visit's point (a ring: marginal)", kSmall);
   }
   for (const auto& line : s.checks) pdf.line(line, kSmall);
+  if (!s.rows.empty() && !s.rows_pattern.empty())
+    pdf.line("each wedge and block under " + s.rows_pattern, kSmall);
   if (!s.rows.empty())
     pdf.table({"wedge/block", "place", "mode", "FoS", "supported", "bolts", "needs m", "below"},
               s.rows, kSmall);

@@ -22,11 +22,12 @@ using nlohmann::json;
 // The figures' ranges as the tables allow them.
 constexpr double kRmrLo = 0, kRmrHi = 100;
 constexpr double kQLo = 0.001, kQHi = 1000;
-// Shotcrete: up to half a metre (a cast lining is not shotcrete); shear
-// strength 0.1-10 MPa (young to strong fibre-reinforced shotcrete).
-constexpr double kShotcreteMaxM = 0.5;
-constexpr double kShotcreteShearLo = 1e5, kShotcreteShearHi = 1e7;
-constexpr double kRoundMaxM = 10;  // a round longer than 10 m is no drill-and-blast round
+// Shotcrete and the round: core/analysis/support_classes.h's ranges.
+constexpr double kShotcreteMaxM = analysis::kShotcreteThicknessRange.hi;
+constexpr double kShotcreteShearLo = analysis::kShotcreteShearRange.lo,
+                 kShotcreteShearHi = analysis::kShotcreteShearRange.hi;
+constexpr double kRoundMinM = analysis::kRoundLengthRange.lo,
+                 kRoundMaxM = analysis::kRoundLengthRange.hi;
 
 double in_range(const Reader& r, const json& v, const std::string& path,
                 const tunnel::SupportRange& range, const char* what, double scale = 1) {
@@ -155,7 +156,7 @@ SupportClasses parse_support_classes(const std::string& text, const std::string&
     if (const auto* v = r.optional(o, p, "description"))
       c.description = r.string(*v, Reader::join(p, "description"));
     c.round_length_m = r.number_in(r.require(o, p, "round_length_m"),
-                                   Reader::join(p, "round_length_m"), 0.1, kRoundMaxM);
+                                   Reader::join(p, "round_length_m"), kRoundMinM, kRoundMaxM);
     if (const auto* v = r.optional(o, p, "bolts"))
       c.bolts = read_bolts(r, *v, Reader::join(p, "bolts"));
     if (const auto* v = r.optional(o, p, "shotcrete_m"))

@@ -373,9 +373,13 @@ struct SupportDecided {
 struct SupportProposals {
   std::string figures;  // "Visit 1 at chainage 111.73 m: RMR89 62, Q 4.2"
   std::vector<std::string> from_q, from_rmr, from_classes;  // each proposal in words
-  std::vector<std::string> classes;        // the designer's classes, lightest first
-  std::string proposed;                    // the class proposed; empty: none
-  std::vector<std::string> checks;         // the checks in words
+  std::vector<std::string> classes;  // the designer's classes, lightest first
+  std::string proposed;              // the class proposed; empty: none
+  std::vector<std::string> checks;   // the checks in words
+  // The pattern as decided (the chosen class with the decision's changes):
+  // its check in words, then what of the changes the check does not use;
+  // empty when the decision changes nothing.
+  std::vector<std::string> decided_check;
   std::optional<SupportDecided> decision;  // the stored one (the latest)
   std::vector<std::string> notes;
 };

@@ -63,6 +63,13 @@ void draw_proposals(AppState& app, const SupportProposals& p) {
     ImGui::EndTable();
   }
   for (const auto& c : p.checks) paragraph("Check " + c);
+  // The pattern as decided beside its class unchanged (above): the
+  // effect of the changes.
+  for (std::size_t i = 0; i < p.decided_check.size(); ++i)
+    if (i == 0)
+      paragraph("Check as decided, " + p.decided_check[i]);
+    else
+      note(p.decided_check[i]);
   for (const auto& n : p.notes) note(n);
 }
 
@@ -76,7 +83,7 @@ std::string draw_changes(AppState& app, SupportViewState& s) {
   for (std::size_t i = 0; i < s.changes.size(); ++i) {
     analysis::SupportChange& c = s.changes[i];
     const std::string n = std::to_string(i + 1);
-    label("Change " + n + ": what (e.g. bolt spacing), from, to, why");
+    label("Change " + n + ": what (e.g. bolt spacing), from, to (with units: 1.5 m), why");
     text_field(app.targets, "change " + n + " what", &c.what);
     text_field(app.targets, "change " + n + " from", &c.from);
     text_field(app.targets, "change " + n + " to", &c.to);

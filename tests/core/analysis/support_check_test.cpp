@@ -5,12 +5,15 @@
 // without the class's face bolts; a wedge of the face sliding out of it on
 // one plane, held by the class's face bolts or face shotcrete (the wedge
 // analysis run with them) and not held without them or with face bolts
-// too short.
+// too short. A decision's change applied to the class and the wedge checked
+// again: the class's 2 m bolts do not hold the roof wedge and the changed
+// 4 m bolts do; a spacing widened from 0.7 m to 1.2 m leaves it flagged.
 #include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
+#include "core/analysis/support_changes.h"
 #include "core/analysis/support_check.h"
 #include "core/geometry/orientation.h"
 
@@ -32,14 +35,18 @@ struct RoofWedge {
     return std::sqrt(3.0) * std::pow(r(), 3) * std::tan(alpha) * 2700 * 9.81;
   }
   // Bolts of a square pattern of spacing s from the crown on its base.
-  int bolts_on(double s) const {
+  int bolts_on(double s) const { return anchored_on(s, 1e9); }
+  // Of those, the bolts of length L that reach past the wedge: a bolt m
+  // from the base's nearest edge meets the face dipping alpha above it at
+  // the depth m tan(alpha).
+  int anchored_on(double s, double L) const {
     int n = 0;
     for (int i = -20; i <= 20; ++i)
       for (int j = -20; j <= 20; ++j) {
         const double x = i * s, y = j * s;
         const double m = std::min({r() - y, r() - (std::sqrt(3.0) / 2 * x - 0.5 * y),
                                    r() - (-std::sqrt(3.0) / 2 * x - 0.5 * y)});
-        if (m > 0) ++n;
+        if (m > 0 && m * std::tan(alpha) < L) ++n;
       }
     return n;
   }
@@ -125,6 +132,72 @@ TEST(SupportCheck, TooWeakBoltsAskForTheirCapacity) {
   EXPECT_TRUE(w.below_target);
   ASSERT_EQ(w.fixes.size(), 1u);
   EXPECT_NE(w.fixes[0].find("kN at 0.70 m spacing"), std::string::npos) << w.fixes[0];
+}
+
+// The decision changes the class's 2 m bolts to 4 m: the wedge's apex is
+// 3 m deep, so the class's bolts reach past it only within 2 / tan(60) =
+// 1.15 m of its base's edges (the anchored count in closed form: 94 % of
+// them at 0.7 m), and with a capacity of 1.55 W / n per bolt the class
+// leaves it at FoS = 1.55 anchored / n < 1.5, while the changed 4 m bolts
+// all anchor and hold it at FoS 1.55.
+TEST(SupportCheck, TheDecisionsLongerBoltsHoldTheWedgeTheClassesDoNot) {
+  const RoofWedge g;
+  const double s = 0.7;
+  const int n = g.bolts_on(s), anchored_2m = g.anchored_on(s, 2.0);
+  ASSERT_LT(anchored_2m, n);
+  const double capacity = 1.55 * g.weight() / n;
+  ASSERT_LT(1.55 * anchored_2m / n, 1.5) << "the class's bolts must leave the wedge below 1.5";
+  const SupportClass c = pattern_class(2.0, s, capacity);
+  const WedgeSupportCheck before = check_wedge(roof_wedge(g.analyse(c)), c);
+  EXPECT_EQ(before.bolts, n);
+  EXPECT_EQ(before.bolts_anchored, anchored_2m);
+  EXPECT_FALSE(before.bolts_reach_past_apex);
+  ASSERT_TRUE(before.fos_supported);
+  EXPECT_NEAR(*before.fos_supported, 1.55 * anchored_2m / n, kSumRel);
+  EXPECT_TRUE(before.below_target);
+  ASSERT_FALSE(before.fixes.empty());
+  EXPECT_NE(before.fixes[0].find("bolts of at least 4.00 m"), std::string::npos) << before.fixes[0];
+
+  const ChangedPattern changed =
+      apply_support_changes(c, {{"bolt length", "2 m", "4 m", "W1's apex is 3 m deep"}}, "test");
+  ASSERT_TRUE(changed.pattern.bolts);
+  EXPECT_EQ(changed.pattern.bolts->length_m, 4.0);
+  EXPECT_EQ(changed.pattern.bolts->spacing_m, s);  // the rest of the class as it was
+  EXPECT_EQ(changed.pattern.bolts->capacity_n, capacity);
+  const WedgeSupportCheck after =
+      check_wedge(roof_wedge(g.analyse(changed.pattern)), changed.pattern);
+  EXPECT_EQ(after.bolts_anchored, n);
+  EXPECT_TRUE(after.bolts_reach_past_apex);
+  ASSERT_TRUE(after.fos_supported);
+  EXPECT_NEAR(*after.fos_supported, 1.55, kSumRel * 2);
+  EXPECT_FALSE(after.below_target);
+  EXPECT_TRUE(after.fixes.empty());
+}
+
+// The reverse: the class's 0.7 m pattern of long bolts holds the wedge at
+// FoS 2; the decision widens it to 1.2 m, which puts n' = bolts_on(1.2)
+// bolts on its base, FoS = 2 n' / n (under 1.5: the wedge is flagged, and
+// the capacity per bolt at the wider spacing that would hold it is said).
+TEST(SupportCheck, TheDecisionsWiderSpacingLeavesTheWedgeFlagged) {
+  const RoofWedge g;
+  const int n = g.bolts_on(0.7), wide = g.bolts_on(1.2);
+  ASSERT_LT(2.0 * wide / n, 1.5);
+  const double capacity = 2 * g.weight() / n;
+  const SupportClass c = pattern_class(g.h() + 1.5, 0.7, capacity);
+  const WedgeSupportCheck before = check_wedge(roof_wedge(g.analyse(c)), c);
+  EXPECT_FALSE(before.below_target);
+  const ChangedPattern changed = apply_support_changes(
+      c, {{"bolt spacing", "700 mm", "1.2 m", "the jumbo's boom reaches 1.2 m"}}, "test");
+  const WedgeSupportCheck after =
+      check_wedge(roof_wedge(g.analyse(changed.pattern)), changed.pattern);
+  EXPECT_EQ(after.bolts, wide);
+  EXPECT_EQ(after.bolts_anchored, wide);
+  ASSERT_TRUE(after.fos_supported);
+  EXPECT_NEAR(*after.fos_supported, 2.0 * wide / n, kSumRel * 2);
+  EXPECT_TRUE(after.below_target);
+  // FoS = wide C' / W = 1.5 at C' = 1.5 W / wide.
+  ASSERT_TRUE(after.required_capacity_n);
+  EXPECT_NEAR(*after.required_capacity_n, 1.5 * g.weight() / wide, kBisectionRel * g.weight());
 }
 
 // A block of the face on a plane dipping beta = 50 toward the tunnel (the

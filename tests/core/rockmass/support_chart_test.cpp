@@ -88,6 +88,30 @@ TEST(QSupportChart, CategoriesAlongDeTenAreTheChartsReading) {
   EXPECT_DOUBLE_EQ(*one.bolt_spacing_shotcreted_m, 2.0);
 }
 
+// The 2015 legend's energy absorption of the fibre reinforced sprayed
+// concrete, row by row: "Sfr (E500)+B" in category 4, "Sfr (E700)+B" in 5,
+// "Sfr (E700)+RRS I+B" in 6, "Sfr (E1000)+RRS II+B" in 7, "CCA or Sfr
+// (E1000)+RRS III+B" in 8; none where the legend gives no Sfr class (1-3, 9).
+// Read at De = 10 across the chart (the categories of the test above).
+TEST(QSupportChart, TheLegendsEnergyAbsorptionClassByCategory) {
+  const struct {
+    double q;
+    int category;
+    const char* energy_class;
+    int joules;
+  } legend[] = {{100, 1, "", 0},          {20, 2, "", 0},           {6, 3, "", 0},
+                {2, 4, "E500", 500},      {0.6, 5, "E700", 700},    {0.2, 6, "E700", 700},
+                {0.05, 7, "E1000", 1000}, {0.01, 8, "E1000", 1000}, {0.002, 9, "", 0}};
+  for (const auto& row : legend) {
+    const QSupport s = q_support({row.q, 10.0, 1.0});
+    ASSERT_EQ(s.category.number, row.category) << "Q " << row.q;
+    EXPECT_STREQ(s.category.energy_class, row.energy_class) << "category " << row.category;
+    EXPECT_EQ(s.category.energy_absorption_j, row.joules) << "category " << row.category;
+    // A class only with fibre reinforced sprayed concrete in the category.
+    EXPECT_EQ(row.joules > 0, s.category.shotcrete_max_m > 0 && row.category >= 4);
+  }
+}
+
 TEST(QSupportChart, EveryBoundaryFromBothSidesAndOnTheLine) {
   for (const double de : {2.0, 10.0, 35.0}) {
     for (int k = 1; k <= 8; ++k) {

@@ -19,6 +19,7 @@
 
 #include "core/common/number_format.h"
 #include "firmware-app/support/report_support.h"
+#include "firmware-app/support/support_json.h"
 #include "firmware-app/support/visit_support.h"
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/field_report/field_report.h"
@@ -218,7 +219,11 @@ TEST(SupportVerb, ClassesProposedCheckedDecidedReportedAndAlongTheDrive) {
 
   // The class with changes of its own for this round, each with its
   // reason: stored with the visit, in the JSON, the terminal's lines and
-  // the field report.
+  // the field report. Each FROM is what the chosen class gives (SC2: bolts
+  // at 1.5 m, 100 mm of shotcrete; SC3: 1 m, 200 mm).
+  const std::string spacing_from = other == "SC3" ? "1 m" : "1.5 m";
+  const std::string shotcrete_from = other == "SC3" ? "200 mm" : "100 mm";
+  const std::string shotcrete_to = other == "SC3" ? "250 mm" : "150 mm";
   EXPECT_EQ(run(base + " --change 'bolt spacing: 1.5 m -> 1.2 m: wedge W3' --out " +
                     (dir / "c.json").string(),
                 dir),
@@ -232,18 +237,19 @@ TEST(SupportVerb, ClassesProposedCheckedDecidedReportedAndAlongTheDrive) {
       << "a change without its reason";
   EXPECT_NE(read(dir / "err.txt").find("REASON"), std::string::npos) << read(dir / "err.txt");
   EXPECT_EQ(read_store.list_support_decisions(visit).size(), 1u) << "nothing stored";
-  ASSERT_EQ(run(base + " --decide " + other + " --by Ana --reason 'water at the left wall'" +
-                    " --change 'bolt spacing: 1.5 m -> 1.2 m: wedge W3 below FoS 1.5'" +
-                    " --change 'shotcrete: 50 mm -> 100 mm: water: the lining bonds badly' --out " +
-                    (dir / "c.json").string(),
-                dir),
-            0)
+  ASSERT_EQ(
+      run(base + " --decide " + other + " --by Ana --reason 'water at the left wall'" +
+              " --change 'bolt spacing: " + spacing_from + " -> 1.2 m: wedge W3 below FoS 1.5'" +
+              " --change 'shotcrete: " + shotcrete_from + " -> " + shotcrete_to +
+              ": water: the lining bonds badly' --out " + (dir / "c.json").string(),
+          dir),
+      0)
       << read(dir / "err.txt");
   const auto changed = read_store.load_support_decision(visit);
   ASSERT_TRUE(changed);
   ASSERT_EQ(changed->changes.size(), 2u);
   EXPECT_EQ(changed->changes[0].what, "bolt spacing");
-  EXPECT_EQ(changed->changes[0].from, "1.5 m");
+  EXPECT_EQ(changed->changes[0].from, spacing_from);
   EXPECT_EQ(changed->changes[0].to, "1.2 m");
   EXPECT_EQ(changed->changes[0].reason, "wedge W3 below FoS 1.5");
   EXPECT_EQ(changed->changes[1].reason, "water: the lining bonds badly");  // colons kept
@@ -251,20 +257,32 @@ TEST(SupportVerb, ClassesProposedCheckedDecidedReportedAndAlongTheDrive) {
   const json cj = json::parse(read(dir / "c.json"));
   ASSERT_EQ(cj["decision"]["changes"].size(), 2u);
   EXPECT_EQ(cj["decision"]["changes"][1]["what"], "shotcrete");
-  EXPECT_EQ(cj["decision"]["changes"][1]["from"], "50 mm");
-  EXPECT_EQ(cj["decision"]["changes"][1]["to"], "100 mm");
-  EXPECT_NE(read(dir / "out.txt")
-                .find("change: bolt spacing 1.5 m -> 1.2 m (wedge W3 below FoS "
-                      "1.5)"),
-            std::string::npos)
+  EXPECT_EQ(cj["decision"]["changes"][1]["from"], shotcrete_from);
+  EXPECT_EQ(cj["decision"]["changes"][1]["to"], shotcrete_to);
+  EXPECT_NE(
+      read(dir / "out.txt")
+          .find("change: bolt spacing " + spacing_from + " -> 1.2 m (wedge W3 below FoS 1.5)"),
+      std::string::npos)
       << read(dir / "out.txt");
+  // The pattern as decided checked beside the class unchanged: in the
+  // JSON, the terminal's lines and the decision's record.
+  EXPECT_EQ(cj["decided_check"]["class"], other + " as changed") << cj.dump(2);
+  EXPECT_EQ(cj["checks"].back()["class"], other);
+  EXPECT_NE(read(dir / "out.txt").find("check " + other + " as changed: "), std::string::npos)
+      << read(dir / "out.txt");
+  EXPECT_EQ(changed->checks.rfind(other + " as changed: ", 0), 0u) << changed->checks;
+  EXPECT_NE(changed->checks.find("; the class unchanged: " + other + ": "), std::string::npos)
+      << changed->checks;
   storage::FieldReport changed_report = storage::collect_field_report(read_store, visit);
   add_support_to_report(read_store, changed_report);
   ASSERT_TRUE(changed_report.support);
   const auto& lines = changed_report.support->decision;
   EXPECT_NE(std::find(lines.begin(), lines.end(),
-                      "change: shotcrete 50 mm -> 100 mm (water: the lining bonds badly)"),
+                      "change: shotcrete " + shotcrete_from + " -> " + shotcrete_to +
+                          " (water: the lining bonds badly)"),
             lines.end());
+  // The report's table is the pattern as decided's.
+  EXPECT_EQ(changed_report.support->rows_pattern, other + " as changed");
 
   // Along the drive: the round's class against its chainage.
   ASSERT_EQ(run("drive " + project.string() + " --out " + (dir / "drive.png").string() +
@@ -325,6 +343,133 @@ TEST(SupportVerb, ADecisionWithoutTheChangesFieldIsReadAsBefore) {
   EXPECT_TRUE(all[0].changes.empty());
   ASSERT_EQ(all[1].changes.size(), 1u);
   EXPECT_EQ(all[1].changes[0].to, "1.2 m");
+}
+
+// A decision that shortens the class's 4 m bolts to 0.5 m: the wedges are
+// checked again with the changed pattern, beside the class unchanged. Each
+// wedge's bolts reach past its apex exactly when their length exceeds the
+// apex's depth (the class's 4 m, the decision's 0.5 m; the face's wedges
+// are the face bolts', which the change leaves); the decision's
+// record, read again from the project, is checked with its changes. A WHAT
+// the check cannot apply is refused by name and nothing is stored; a stored
+// decision whose change no longer applies is checked as its class and said.
+TEST(SupportVerb, ADecisionsChangesAreCheckedBesideTheClassUnchanged) {
+  const fs::path dir = temp_dir("changed");
+  const fs::path project = dir / "drive.rockface";
+  const storage::RecordId visit = make_project(project, true);
+  std::ofstream(dir / "classes.json") << kRmrClasses;
+  const std::string base = "support " + project.string() + " --visit " + std::to_string(visit);
+  ASSERT_EQ(run(base + " --classes " + (dir / "classes.json").string() + " --decide SC2 --by Ana" +
+                    " --reason 'the designer asked for SC2' --change 'bolt length: 4 m -> 0.5 m:" +
+                    " the rig is down' --out " + (dir / "d.json").string(),
+                dir),
+            0)
+      << read(dir / "err.txt");
+  storage::ProjectStore store = storage::ProjectStore::open(project, {});
+  const VisitSupport s = visit_support(store, visit);  // the stored decision, checked again
+  ASSERT_TRUE(s.decision);
+  ASSERT_TRUE(s.decided_check) << "the stored decision's changes applied";
+  EXPECT_EQ(s.decided_check->class_name, "SC2 as changed");
+  const analysis::SupportCheck* unchanged = nullptr;
+  for (const auto& c : s.checks)
+    if (c.class_name == "SC2") unchanged = &c;
+  ASSERT_TRUE(unchanged);
+  ASSERT_EQ(s.decided_check->wedges.size(), unchanged->wedges.size());
+  ASSERT_FALSE(unchanged->wedges.empty());
+  int differ = 0;
+  for (std::size_t i = 0; i < unchanged->wedges.size(); ++i) {
+    const auto& before = unchanged->wedges[i];
+    const auto& after = s.decided_check->wedges[i];
+    EXPECT_EQ(after.id, before.id);
+    if (after.place == "face") {  // held by the face bolts (SC2 has none), not changed
+      EXPECT_EQ(after.bolts_reach_past_apex, before.bolts_reach_past_apex) << after.id;
+      continue;
+    }
+    EXPECT_EQ(before.bolts_reach_past_apex, 4.0 > before.apex_depth_m) << before.id;
+    EXPECT_EQ(after.bolts_reach_past_apex, 0.5 > after.apex_depth_m) << after.id;
+    EXPECT_LE(after.bolts_anchored, before.bolts_anchored) << after.id;
+    differ += after.bolts_reach_past_apex != before.bolts_reach_past_apex ? 1 : 0;
+  }
+  EXPECT_GT(differ, 0) << "no wedge's apex lies between 0.5 m and 4 m deep";
+  const json j = json::parse(read(dir / "d.json"));
+  EXPECT_EQ(j["decided_check"]["class"], "SC2 as changed");
+  EXPECT_EQ(j["decided_check"]["wedges"].size(), unchanged->wedges.size());
+  EXPECT_EQ(s.decision->checks, decision_checks_words(s)) << "the record as checked now";
+  // The field report: both checks, the table under the pattern as decided.
+  storage::FieldReport report = storage::collect_field_report(store, visit);
+  add_support_to_report(store, report);
+  ASSERT_TRUE(report.support);
+  const auto& checks = report.support->checks;
+  EXPECT_NE(std::find(checks.begin(), checks.end(), checks_words(*unchanged)), checks.end());
+  EXPECT_NE(std::find(checks.begin(), checks.end(), checks_words(*s.decided_check)), checks.end());
+  EXPECT_EQ(report.support->rows_pattern, "SC2 as changed");
+
+  // Refused by name, nothing stored: a WHAT the check cannot apply, a unit
+  // of another quantity, a FROM the class does not give.
+  const std::size_t stored = store.list_support_decisions(visit).size();
+  for (const std::string& change :
+       {std::string("bolt pattern: 4 m -> 6 m: W2"), std::string("bolt length: 4 m -> 150 kN: W2"),
+        std::string("bolt length: 3 m -> 6 m: W2")}) {
+    EXPECT_EQ(run(base + " --decide SC2 --by Ana --reason x --change '" + change + "' --out " +
+                      (dir / "r.json").string(),
+                  dir),
+              2)
+        << change;
+    const std::string err = read(dir / "err.txt");
+    EXPECT_NE(err.find("--change: change 1 (\"" + change.substr(0, change.find(':')) + "\")"),
+              std::string::npos)
+        << err;
+  }
+  EXPECT_EQ(store.list_support_decisions(visit).size(), stored);
+
+  // A decision stored with a change the check cannot apply (made before
+  // changes were checked): read as before, checked as its class, said.
+  {
+    storage::sqlite::Connection db(project, storage::sqlite::Connection::Access::read_write);
+    db.exec(
+        "INSERT INTO support_decision (visit_id, class_name, decision_json, decided_at) "
+        "VALUES (" +
+            std::to_string(visit) +
+            ", 'SC2', '{\"class\": \"SC2\", \"proposed\": \"SC2\", \"changes\": "
+            "[{\"what\": \"rock bolts\", \"from\": \"4\", \"to\": \"5\", \"reason\": "
+            "\"W3\"}], \"reason\": \"\", \"decided_by\": \"Ana\", \"decided_at\": "
+            "\"2026-11-29T08:00:00.000Z\", \"checks\": \"\"}', '2026-11-29T08:00:00.000Z')",
+        "test");
+  }
+  storage::ProjectStore again = storage::ProjectStore::open(project, {});
+  const VisitSupport old = visit_support(again, visit);
+  ASSERT_TRUE(old.decision);
+  ASSERT_EQ(old.decision->changes.size(), 1u);
+  EXPECT_FALSE(old.decided_check);
+  bool said = false;
+  for (const auto& n : old.notes)
+    said = said || n.find("changes are not applied to its check") != std::string::npos;
+  EXPECT_TRUE(said);
+}
+
+// The Q chart's proposal with the sprayed concrete's energy absorption
+// class of the 2015 legend (category 5 at Q 0.6, De 10: E700), in the JSON
+// and the terminal's line (the field report prints the same words); a
+// category without one (3 at Q 6) gives null and says none.
+TEST(SupportVerb, TheQProposalGivesTheSprayedConcretesEnergyClass) {
+  VisitSupport s;
+  s.q_support = rockmass::q_support({0.6, 10.0, 1.0});
+  ASSERT_EQ(s.q_support->category.number, 5);
+  const json j = support_json(s);
+  EXPECT_EQ(j["q_chart"]["energy_absorption"], "E700");
+  EXPECT_EQ(j["q_chart"]["energy_absorption_j"], 700);
+  EXPECT_NE(j["q_chart"]["words"].get<std::string>().find("energy absorption E700 (700 J"),
+            std::string::npos)
+      << j["q_chart"]["words"];
+  const auto lines = support_summary(s);
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_NE(lines[1].find("E700"), std::string::npos) << lines[1];
+  s.q_support = rockmass::q_support({6.0, 10.0, 1.0});
+  ASSERT_EQ(s.q_support->category.number, 3);
+  const json none = support_json(s);
+  EXPECT_TRUE(none["q_chart"]["energy_absorption"].is_null());
+  EXPECT_EQ(none["q_chart"]["words"].get<std::string>().find("energy absorption"),
+            std::string::npos);
 }
 
 TEST(SupportVerb, OpenQLinesProposeNothingFromQAndAreNamed) {

@@ -2,7 +2,8 @@
 // tunnel-drive sample's project with a classification form and the
 // designer's classes: the three proposals side by side, a class chosen on
 // the tablet with who decided, why and a change to the class (with its
-// reason), stored with the visit, and read back
+// reason), stored with the visit, checked with the change beside the class
+// unchanged, and read back
 // by `rockface support` (a separate process) from the project.
 #include <fstream>
 
@@ -98,7 +99,9 @@ TEST(SupportView, AClassChosenOnTheTabletIsStoredAndReadBack) {
   // A change to the class for this round: refused until it says why.
   s.tap("Add a change");
   ASSERT_EQ(app.blocks.support.changes.size(), 1u);
-  app.blocks.support.changes[0] = {"bolt spacing", "1.5 m", "1.2 m", ""};  // as typed
+  // FROM is what the chosen class gives (SC2 1.5 m, SC3 1 m).
+  const std::string spacing_from = chosen == "SC3" ? "1 m" : "1.5 m";
+  app.blocks.support.changes[0] = {"bolt spacing", spacing_from, "1.2 m", ""};  // as typed
   s.frame();
   EXPECT_THROW(s.tap("Decide"), InputError) << "the change has no reason: Decide is disabled";
   app.blocks.support.changes[0].reason = "wedge W3 below FoS 1.5";
@@ -110,6 +113,16 @@ TEST(SupportView, AClassChosenOnTheTabletIsStoredAndReadBack) {
   ASSERT_EQ(v.proposals->decision->changes.size(), 1u);
   EXPECT_EQ(v.proposals->decision->changes[0].to, "1.2 m");
   EXPECT_TRUE(app.blocks.support.changes.empty()) << "the form is cleared once decided";
+  // The pattern as decided checked, beside the class unchanged.
+  ASSERT_FALSE(v.proposals->decided_check.empty());
+  EXPECT_EQ(v.proposals->decided_check[0].rfind(chosen + " as changed: ", 0), 0u)
+      << v.proposals->decided_check[0];
+  bool unchanged = false;
+  for (const auto& c : v.proposals->checks) unchanged = unchanged || c.rfind(chosen + ": ", 0) == 0;
+  EXPECT_TRUE(unchanged);
+  EXPECT_NE(v.proposals->decision->checks.find("the class unchanged: " + chosen + ": "),
+            std::string::npos)
+      << v.proposals->decision->checks;
   s.screenshot();
 
   // Read back by the command line from the project.
@@ -127,7 +140,7 @@ TEST(SupportView, AClassChosenOnTheTabletIsStoredAndReadBack) {
   EXPECT_EQ(d.at("proposed"), proposed);
   ASSERT_EQ(d.at("changes").size(), 1u);
   EXPECT_EQ(d["changes"][0].at("what"), "bolt spacing");
-  EXPECT_EQ(d["changes"][0].at("from"), "1.5 m");
+  EXPECT_EQ(d["changes"][0].at("from"), spacing_from);
   EXPECT_EQ(d["changes"][0].at("to"), "1.2 m");
   EXPECT_EQ(d["changes"][0].at("reason"), "wedge W3 below FoS 1.5");
   EXPECT_FALSE(d.at("decided_at").get<std::string>().empty());
