@@ -17,7 +17,9 @@ storage::TunnelRecord tunnel_from_files(const TunnelFiles& f) {
         f.underbreak_tolerance_m <= 1))
     throw InputError("--underbreak-tolerance", "must be 0 to 1 m");
   storage::TunnelRecord rec;
-  const storage::AlignmentTable table = storage::read_alignment_csv(f.alignment);
+  // Checked against the datum it is built with below (one build, kept).
+  const storage::AlignmentTable table =
+      storage::read_alignment_csv(f.alignment, Eigen::Vector3d::Zero());
   rec.stations = table.stations;
   rec.radii = table.radii;
   rec.polyline = table.polyline;

@@ -443,7 +443,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       if (!t.joint.empty() && !s.joint(t.joint))
         r.fail(t.where + ".joint", "unknown joint id \"" + t.joint + "\"");
   }
-  if (auto* t = r.optional(doc, "", "tunnel")) s.tunnel = read_scene_tunnel(r, *t, source);
+  if (auto* t = r.optional(doc, "", "tunnel"))
+    s.tunnel = read_scene_tunnel(r, *t, source, s.has_datum ? s.datum : Eigen::Vector3d::Zero());
   if (auto* w = r.optional(doc, "", "wedges")) {
     s.wedges = read_scene_wedges(r, *w, source);
     for (std::size_t i = 0; i < s.wedges->sets.size(); ++i)

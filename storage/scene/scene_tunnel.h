@@ -48,7 +48,9 @@ struct SceneTunnel {
 };
 
 // Reads `tunnel`; files named in it are relative to the scene file's folder.
+// origin: the scene's datum (zero without one), which the alignment is
+// checked against and built for once (the record keeps it).
 SceneTunnel read_scene_tunnel(const Reader& r, const nlohmann::json& section,
-                              const std::string& scene_path);
+                              const std::string& scene_path, const Eigen::Vector3d& origin);
 
 }  // namespace rockface::storage

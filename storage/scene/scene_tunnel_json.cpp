@@ -2,11 +2,14 @@
 // tunnel's own files (storage/tunnel/tunnel_files.h), named relative to the scene,
 // or written inline (the alignment as station objects, the profile as the
 // profile file's JSON object).
+#include <cmath>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
+#include "core/tunnel/survey_ranges.h"
 #include "storage/json_reader.h"
 #include "storage/scene/scene_tunnel.h"
 #include "storage/tunnel/tunnel_files.h"
@@ -23,9 +26,10 @@ fs::path beside(const std::string& scene_path, const std::string& name) {
   return p.is_absolute() ? p : fs::path(scene_path).parent_path() / p;
 }
 
-AlignmentTable read_alignment(const Reader& r, const json& v, const std::string& scene_path) {
+AlignmentTable read_alignment(const Reader& r, const json& v, const std::string& scene_path,
+                              const Eigen::Vector3d& origin) {
   const std::string p = "tunnel.alignment";
-  if (v.is_string()) return read_alignment_csv(beside(scene_path, v.get<std::string>()));
+  if (v.is_string()) return read_alignment_csv(beside(scene_path, v.get<std::string>()), origin);
   if (!v.is_object())
     r.fail(p, "must be the alignment CSV's file name or an object with \"stations\"");
   r.only_fields(v, p, {"stations"});
@@ -65,7 +69,8 @@ tunnel::DesignProfile read_profile(const Reader& r, const json& v, const std::st
 
 }  // namespace
 
-SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string& scene_path) {
+SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string& scene_path,
+                              const Eigen::Vector3d& origin) {
   const std::string p = "tunnel";
   if (!t.is_object()) r.fail(p, "must be an object");
   r.only_fields(
@@ -75,10 +80,20 @@ SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string&
   TunnelRecord& rec = out.record;
   if (auto* v = r.optional(t, p, "name")) rec.name = r.string(*v, p + ".name");
   const json& alignment = r.require(t, p, "alignment");
-  const AlignmentTable table = read_alignment(r, alignment, scene_path);
+  // The datum is checked before the alignment is built against it (its
+  // own field named, not the alignment's).
+  if (!(std::abs(origin.x()) <= tunnel::kMaxSurveyHorizontalM &&
+        std::abs(origin.y()) <= tunnel::kMaxSurveyHorizontalM &&
+        std::abs(origin.z()) <= tunnel::kMaxSurveyElevationM))
+    r.fail("datum", "must be survey coordinates for a tunnel (easting and northing within +-" +
+                        format_significant(tunnel::kMaxSurveyHorizontalM, 6) +
+                        " m, elevation within +-" +
+                        format_significant(tunnel::kMaxSurveyElevationM, 6) + " m)");
+  const AlignmentTable table = read_alignment(r, alignment, scene_path, origin);
   rec.stations = table.stations;
   rec.radii = table.radii;
   rec.polyline = table.polyline;
+  rec.built = table.built;  // built against the origin already, for a file
   rec.alignment_source = alignment.is_string() ? alignment.get<std::string>() : "scene";
   const json& profile = r.require(t, p, "profile");
   rec.profile = read_profile(r, profile, scene_path);
@@ -136,9 +151,10 @@ SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string&
     out.render = render;
   }
   // The alignment must build (ordering, element lengths, radii): refused
-  // here, naming the scene, rather than at the first use.
+  // here, naming the scene, rather than at the first use; built against
+  // the scene's datum, as the replay and the analysis use it, and kept.
   try {
-    (void)rec.alignment(Eigen::Vector3d::Zero());
+    (void)rec.alignment(origin);
   } catch (const InputError& e) {
     r.fail(p + ".alignment", e.what());
   }

@@ -160,14 +160,14 @@ void require_field_count(const Csv& csv, const Csv::Row& row) {
 
 tunnel::Alignment AlignmentTable::build(const Eigen::Vector3d& datum, tunnel::Drive drive) const {
   try {
-    return polyline ? tunnel::Alignment::from_polyline(stations, datum, drive)
-                    : tunnel::Alignment::from_elements(stations, radii, datum, drive);
+    return built->get(stations, radii, polyline, drive, datum);
   } catch (const InputError& e) {
     rethrow_at_line(e, source, line_of);
   }
 }
 
-AlignmentTable parse_alignment_csv(const std::string& text, const std::string& source) {
+AlignmentTable parse_alignment_csv(const std::string& text, const std::string& source,
+                                   const std::optional<Eigen::Vector3d>& check_datum) {
   const Csv csv = read_csv(text, source);
   const auto at = columns(csv, {{"chainage", "chainage"},
                                 {"station", "chainage"},
@@ -212,12 +212,13 @@ AlignmentTable parse_alignment_csv(const std::string& text, const std::string& s
   }
   // Checks order, duplicates, element lengths and radii now (the datum does
   // not change them): a bad table is refused when read, not when used.
-  table.build(table.stations.front().survey, tunnel::Drive::ascending);
+  table.build(check_datum.value_or(table.stations.front().survey), tunnel::Drive::ascending);
   return table;
 }
 
-AlignmentTable read_alignment_csv(const std::filesystem::path& file) {
-  return parse_alignment_csv(read_text(file), file.string());
+AlignmentTable read_alignment_csv(const std::filesystem::path& file,
+                                  const std::optional<Eigen::Vector3d>& check_datum) {
+  return parse_alignment_csv(read_text(file), file.string(), check_datum);
 }
 
 std::string alignment_csv_text(const AlignmentTable& table) {

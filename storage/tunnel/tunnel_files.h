@@ -13,6 +13,8 @@
 // Every bad file is refused with an InputError naming the file, the line (CSV)
 // or field path (JSON), the field and the reason.
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,7 @@
 
 #include "core/tunnel/alignment.h"
 #include "core/tunnel/design_profile.h"
+#include "storage/tunnel/built_alignment.h"
 
 namespace rockface::storage {
 
@@ -31,13 +34,22 @@ struct AlignmentTable {
   bool polyline = true;
   // The alignment (checked: ordering, element lengths, radii). Errors name
   // `source` and the station's line when the table came from a file.
+  // Built once per datum (built_alignment.h); a TunnelRecord made from the
+  // table may share it.
   tunnel::Alignment build(const Eigen::Vector3d& datum, tunnel::Drive drive) const;
   std::string source;        // file name, for messages
   std::vector<int> line_of;  // per station: its line in the file (1-based)
+  std::shared_ptr<BuiltAlignment> built = std::make_shared<BuiltAlignment>();
 };
 
-AlignmentTable read_alignment_csv(const std::filesystem::path& file);
-AlignmentTable parse_alignment_csv(const std::string& text, const std::string& source);
+// The table is checked by building its alignment relative to check_datum
+// (default: its first station): the datum it will be used with, so that
+// the check's build is the one kept.
+AlignmentTable read_alignment_csv(const std::filesystem::path& file,
+                                  const std::optional<Eigen::Vector3d>& check_datum = std::nullopt);
+AlignmentTable parse_alignment_csv(
+    const std::string& text, const std::string& source,
+    const std::optional<Eigen::Vector3d>& check_datum = std::nullopt);
 std::string alignment_csv_text(const AlignmentTable& table);
 
 // Both forms are checked with DesignProfile::validate() (the error names the

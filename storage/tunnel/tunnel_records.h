@@ -2,6 +2,7 @@
 // The tunnel as a project stores it (schema 5): one tunnel per project (its
 // name, alignment table, design profile, drive direction, underbreak
 // tolerance), and per visit its place in the tunnel and how it was found.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "core/tunnel/design_profile.h"
 #include "core/tunnel/visit_placement.h"
 #include "storage/project/project_records.h"
+#include "storage/tunnel/built_alignment.h"
 
 namespace rockface::storage {
 
@@ -28,7 +30,10 @@ struct TunnelRecord {
   std::string alignment_source, profile_source;  // the files they came from
   std::string created_at;                        // empty = now
 
+  // The alignment relative to datum: built once per datum and table, and
+  // shared by the record's copies (built_alignment.h).
   tunnel::Alignment alignment(const Eigen::Vector3d& datum) const;
+  std::shared_ptr<BuiltAlignment> built = std::make_shared<BuiltAlignment>();
 };
 
 // How a visit was placed in the tunnel (the geometry and how it was found:
