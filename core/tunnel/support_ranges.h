@@ -1,8 +1,8 @@
 #pragma once
 // The ranges a geologist sets pattern bolts in, the ranges of the loads on
-// a wedge, and the bound on the number of joint sets of one wedge analysis. Every reader of these values (the
-// scene's wedges.support, `wedges --bolts`, analyse_wedges itself) checks
-// them against the same numbers and says the range when it refuses one.
+// a wedge, and the bound on the number of joint sets of one wedge analysis. Every reader of these
+// values (the scene's wedges.support, `wedges --bolts`, analyse_wedges itself) checks them against
+// the same numbers and says the range when it refuses one.
 //
 // Why ranges and not just "positive": the work of a wedge analysis grows
 // with the number of bolts of the pattern (as 1 / spacing^2) and with the
@@ -37,6 +37,11 @@ inline constexpr SupportRange kBoltCapacityRange{1e3, 1e7, "N"};
 // Bond strength per metre of anchorage: 1 kN/m (poor grout in weak rock)
 // to 100 MN/m (far above resin in strong rock, ~0.5 MN/m).
 inline constexpr SupportRange kBoltBondRange{1e3, 1e8, "N/m"};
+// Shotcrete's shear strength: 0.1 MPa (young shotcrete) to 10 MPa (strong
+// fibre-reinforced), as the designer's support classes take it
+// (storage/support/support_classes_json.cpp). 1e308 was taken and printed
+// in 309 digits (issue 41).
+inline constexpr SupportRange kShotcreteShearRange{1e5, 1e7, "Pa"};
 
 // The loads on a wedge: a rock's density (pumice to the heaviest ores,
 // 500-8000 kg/m^3, with room), a pseudo-static acceleration's size (design

@@ -5,6 +5,13 @@
 // 41). Every reader of an alignment (core/tunnel/alignment.h builds every
 // one) and of a typed placement refuses them naming the field and the
 // range.
+#include <cmath>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "core/common/number_format.h"
+
 namespace rockface::tunnel {
 
 // Eastings and northings of any national grid or UTM zone (UTM northings
@@ -16,5 +23,19 @@ inline constexpr double kMaxSurveyElevationM = 1e5;
 // cavern is wider or higher than 100 m, so it is at most 50 m from the
 // axis across and up or down.
 inline constexpr double kMaxTypedOffsetM = 50;
+
+// Whether a point (E, N, elevation) lies within the ranges above: any
+// point of a scene does, in survey coordinates or a local frame.
+inline bool within_survey_ranges(const Eigen::Vector3d& v) {
+  return std::abs(v.x()) <= kMaxSurveyHorizontalM && std::abs(v.y()) <= kMaxSurveyHorizontalM &&
+         std::abs(v.z()) <= kMaxSurveyElevationM;
+}
+// "must be survey coordinates (easting and northing within +-1e+08 m,
+// elevation within +-100000 m)", as the alignment's datum is refused.
+inline std::string survey_ranges_refusal() {
+  return "must be survey coordinates (easting and northing within +-" +
+         format_significant(kMaxSurveyHorizontalM, 6) + " m, elevation within +-" +
+         format_significant(kMaxSurveyElevationM, 6) + " m)";
+}
 
 }  // namespace rockface::tunnel

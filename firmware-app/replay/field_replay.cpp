@@ -68,7 +68,11 @@ ReplaySource open_source(const ReplayRequest& request) {
     check_picks_before_capture(*out.scene, std::max<std::size_t>(1, out.synthetic->pairs.size()));
     // A typed placement off the alignment: refused before the camera
     // spools a shot or the project is created (issue 41).
-    out.typed_pole = typed_range_pole(*out.scene);
+    try {
+      out.typed_pole = typed_range_pole(*out.scene);
+    } catch (const InputError& e) {
+      throw InputError(request.source, e.what());  // the scene named, as its reader names it
+    }
     out.camera = camera::MockCamera::synthetic(out.synthetic->scene, out.spool.string());
     out.intrinsics = camera::rendered_intrinsics(out.synthetic->scene);
     out.intrinsics.body = "rockface synthetic camera";

@@ -64,9 +64,8 @@ tunnel::PatternBolts parse_pattern_bolts(const std::string& text, const std::str
 tunnel::Shotcrete parse_shotcrete(const std::string& text, const std::string& where) {
   const auto v = numbers(text, where, 2, 2, "THICKNESS,SHEAR_STRENGTH (m, Pa)");
   require_in(v[0], kShotcreteThicknessRange, "THICKNESS", where, "the shotcrete's setting");
-  // Positive (numbers() checks it) and finite, as the scene takes it.
-  if (!std::isfinite(v[1]))
-    throw InputError(where, "SHEAR_STRENGTH: must be a finite number of Pa");
+  require_in(v[1], tunnel::kShotcreteShearRange, "SHEAR_STRENGTH", where,
+             "the shotcrete's setting");
   tunnel::Shotcrete sc;
   sc.thickness = v[0];
   sc.shear_strength = v[1];

@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "core/analysis/preset_options.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/geometry/orientation.h"
 #include "core/tunnel/tolerances.h"
 #include "firmware-app/tunnel/project_drive.h"
@@ -53,14 +53,17 @@ void require_on_alignment(const tunnel::Alignment& a, double chainage, const std
   if (chainage >= first - tunnel::kChainageMismatchM &&
       chainage <= last + tunnel::kChainageMismatchM)
     return;
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(3);
-  s << "chainage " << chainage << " m lies beyond the alignment (" << first << " to " << last
-    << " m) by " << (chainage < first ? first - chainage : chainage - last)
-    << " m: a section there is not in the drive; correct the chainage or extend the "
-       "alignment's table";
-  throw InputError(where, s.str());
+  // To the millimetre; a value beyond any drive (1e308, a typo or a fuzzed
+  // file) to 6 significant digits, not 309 (issue 41).
+  auto metres = [](double v) {
+    constexpr double kLongestChainageM = 1e9;
+    return std::abs(v) < kLongestChainageM ? format_fixed(v, 3) : format_significant(v, 6);
+  };
+  throw InputError(where, "chainage " + metres(chainage) + " m lies beyond the alignment (" +
+                              metres(first) + " to " + metres(last) + " m) by " +
+                              metres(chainage < first ? first - chainage : chainage - last) +
+                              " m: a section there is not in the drive; correct the chainage or "
+                              "extend the alignment's table");
 }
 
 }  // namespace

@@ -11,11 +11,6 @@ namespace rockface::storage {
 
 using namespace rows;  // row helpers and the SQLite wrappers
 
-tunnel::Alignment TunnelRecord::alignment(const Eigen::Vector3d& datum) const {
-  return polyline ? tunnel::Alignment::from_polyline(stations, datum, drive)
-                  : tunnel::Alignment::from_elements(stations, radii, datum, drive);
-}
-
 const char* placement_method_name(VisitPlacement::Method m) {
   return m == VisitPlacement::Method::ground_control ? "ground_control" : "chainage_compass";
 }

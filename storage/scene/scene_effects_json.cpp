@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/tunnel/survey_ranges.h"
 #include "storage/json_reader.h"
 
 namespace rockface::storage {
@@ -20,6 +21,10 @@ analysis::SceneWater read_water(const Reader& r, const json& w) {
   const json& ps = r.require(w, wp, "phreatic_surface");
   r.only_fields(ps, pp, {"point", "dip", "dipdir"});
   water.phreatic_point = r.vec3(r.require(ps, pp, "point"), pp + ".point");
+  // Issue 41: a water table through a point 1e308 away put every wedge
+  // under (or out of) water and read "stable".
+  if (!tunnel::within_survey_ranges(water.phreatic_point))
+    r.fail(pp + ".point", tunnel::survey_ranges_refusal());
   water.phreatic_dip = r.number(r.require(ps, pp, "dip"), pp + ".dip");
   water.phreatic_dipdir = r.number(r.require(ps, pp, "dipdir"), pp + ".dipdir");
   if (water.phreatic_dipdir == 360) water.phreatic_dipdir = 0;  // one direction

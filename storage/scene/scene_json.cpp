@@ -12,6 +12,7 @@
 #include "core/analysis/analysis_input_check.h"
 #include "core/common/error.h"
 #include "core/common/preset.h"
+#include "core/tunnel/survey_ranges.h"
 #include "storage/json_reader.h"
 #include "storage/scene/picks_json.h"
 #include "storage/scene/rockmass_form_json.h"
@@ -421,6 +422,9 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   if (auto* v = r.optional(doc, "", "name")) s.name = r.string(*v, "name");
   if (auto* v = r.optional(doc, "", "datum")) {
     s.datum = r.vec3(*v, "datum");
+    // Issue 41: a datum of 1e308 was taken and every survey coordinate
+    // made from it overflowed; any survey lies within these ranges.
+    if (!tunnel::within_survey_ranges(s.datum)) r.fail("datum", tunnel::survey_ranges_refusal());
     s.has_datum = true;
   }
   if (auto* rock = r.optional(doc, "", "rock")) {

@@ -136,9 +136,12 @@ SceneTunnel read_scene_tunnel(const Reader& r, const json& t, const std::string&
     out.render = render;
   }
   // The alignment must build (ordering, element lengths, radii): refused
-  // here, naming the scene, rather than at the first use.
+  // here, naming the scene, rather than at the first use. Built relative to
+  // the first station, as the alignment file's own check builds it: for a
+  // file that is the build kept then (built_alignment.h), not another.
   try {
-    (void)rec.alignment(Eigen::Vector3d::Zero());
+    (void)rec.alignment(rec.stations.empty() ? Eigen::Vector3d::Zero()
+                                             : Eigen::Vector3d(rec.stations.front().survey));
   } catch (const InputError& e) {
     r.fail(p + ".alignment", e.what());
   }

@@ -5,6 +5,7 @@
 
 #include "core/common/error.h"
 #include "core/tunnel/support_ranges.h"
+#include "core/tunnel/survey_ranges.h"
 #include "storage/json_reader.h"
 #include "storage/scene/scene_wedges.h"
 #include "storage/tunnel/tunnel_files.h"
@@ -107,7 +108,13 @@ analysis::SceneWedges read_scene_wedges(const Reader& r, const json& w,
     out.plunge = r.number_in(r.require(*a, ap, "plunge"), ap + ".plunge", -89, 89);
   }
   if (auto* c = r.optional(w, p, "chainage")) out.chainage = r.number(*c, p + ".chainage");
-  if (auto* o = r.optional(w, p, "origin")) out.origin = r.vec3(*o, p + ".origin");
+  if (auto* o = r.optional(w, p, "origin")) {
+    out.origin = r.vec3(*o, p + ".origin");
+    // Issue 41: an origin of 1e308 gave wedges of no size ("lifts", FoS 0)
+    // and null coordinates in the wedges' JSON.
+    if (!tunnel::within_survey_ranges(*out.origin))
+      r.fail(p + ".origin", tunnel::survey_ranges_refusal());
+  }
   if (auto* t = r.optional(w, p, "trace_length"))
     out.trace_length = r.positive(*t, p + ".trace_length");
   if (auto* b = r.optional(w, p, "perimeter")) out.perimeter = r.boolean(*b, p + ".perimeter");
@@ -144,7 +151,11 @@ analysis::SceneWedges read_scene_wedges(const Reader& r, const json& w,
       r.only_fields(*c, cp, {"thickness", "shear_strength", "on"});
       analysis::SceneWedgeShotcrete sc;
       sc.thickness = r.number_in(r.require(*c, cp, "thickness"), cp + ".thickness", 1e-3, 2);
-      sc.shear_strength = r.positive(r.require(*c, cp, "shear_strength"), cp + ".shear_strength");
+      sc.shear_strength = r.number(r.require(*c, cp, "shear_strength"), cp + ".shear_strength");
+      if (!tunnel::kShotcreteShearRange.contains(sc.shear_strength))
+        r.fail(cp + ".shear_strength",
+               tunnel::outside_range_text(sc.shear_strength, tunnel::kShotcreteShearRange,
+                                          "shotcrete's shear strength"));
       if (auto* x = r.optional(*c, cp, "on")) sc.on = read_places(r, *x, cp + ".on");
       out.shotcrete = sc;
     }

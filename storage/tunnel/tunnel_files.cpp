@@ -15,6 +15,7 @@
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 #include "storage/json_reader.h"
+#include "storage/tunnel/built_alignment.h"
 
 namespace rockface::storage {
 
@@ -160,8 +161,9 @@ void require_field_count(const Csv& csv, const Csv::Row& row) {
 
 tunnel::Alignment AlignmentTable::build(const Eigen::Vector3d& datum, tunnel::Drive drive) const {
   try {
-    return polyline ? tunnel::Alignment::from_polyline(stations, datum, drive)
-                    : tunnel::Alignment::from_elements(stations, radii, datum, drive);
+    // Kept for the process: the table's check below and its uses after are
+    // one build per datum (built_alignment.h).
+    return built_alignment(stations, radii, polyline, drive, datum);
   } catch (const InputError& e) {
     rethrow_at_line(e, source, line_of);
   }

@@ -345,9 +345,12 @@ bool controlled_step(const Stepper& stepper, const Scales& k, Integration& in, B
   if (!stepper.try_step(in.x, in.tau, h)) {
     ++out.rejected_steps;
     in.dt = h;
-    if (h < 1e-14)
-      throw Error("dynamics: the step size vanished at t = " + std::to_string(in.t0 * k.time) +
-                  " s");
+    if (h < kStepFloorRel)
+      in.stopped =
+          "the step size fell below the step floor (" + format_significant(kStepFloorRel, 2) +
+          " of the block's free-fall time) at t = " + format_significant(in.t0 * k.time, 3, " s") +
+          ": the error control (abs_tol, rel_tol) cannot be met within the rounding of "
+          "this motion";
     return false;
   }
   ++out.steps;
@@ -419,7 +422,10 @@ Integration integrate(const BlockMotion& motion, const Scales& k,
     if (options.progress && (out.steps % 64) == 0)
       options.progress->step("dynamics", std::min(1.0, in.tau / in.tau_end));
     sample_up_to(motion, k, in, out);
-    if (!controlled_step(stepper, k, in, out)) continue;
+    if (!controlled_step(stepper, k, in, out)) {
+      if (!in.stopped.empty()) break;  // the step floor
+      continue;
+    }
     // Events inside the step: a contact closing into the rock, the floor,
     // a change of the contact mode. The earliest is found by bisection.
     const ContactMode new_mode = cut_at_event(motion, k, floor, stepper, in);

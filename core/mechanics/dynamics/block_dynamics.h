@@ -54,7 +54,9 @@ struct DynamicsOptions {
   std::optional<DynamicsFloor> floor;
   // The integration always ends: at most this many evaluations of the
   // equations of motion (a step budget, free of the wall clock) and this
-  // many events; past either it stops and says why (BlockDynamics::stopped).
+  // many events; past either, or where the error control asks for a step
+  // below the step floor (tolerances.h), it stops and says why
+  // (BlockDynamics::stopped).
   int max_evaluations = kDynamicsEvaluationBudget;
   int max_events = kMaxDynamicsEvents;
   Progress* progress = nullptr;

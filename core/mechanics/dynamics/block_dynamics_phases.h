@@ -126,7 +126,7 @@ struct Integration {
   double dt = 0;  // the next step to try
   ContactMode mode;
   bool landed = false;
-  std::string stopped;  // why it stopped before its end (the budget), or empty
+  std::string stopped;  // why it stopped before its end (the budget, the step floor), or empty
 };
 
 // The phases of integrate, in the order of one step:
@@ -134,8 +134,9 @@ struct Integration {
 // budget_spent: why the integration must stop now (the evaluations of the
 //   options' step budget or its event limit spent), or none;
 // sample_up_to: the samples due at the current time;
-// controlled_step: one step (false: rejected, a shorter one is next), of
-//   the error control's length, never shortened to meet a sample;
+// controlled_step: one step (false: rejected, a shorter one is next, or
+//   none below the step floor: `stopped` says so), of the error control's
+//   length, never shortened to meet a sample;
 // cut_at_event: the step cut at its earliest event (impact, landing, a
 //   change of contact mode); returns the contact mode there;
 // sample_within_step: the samples inside the step just taken, each one

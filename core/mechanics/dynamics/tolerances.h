@@ -94,4 +94,9 @@ inline constexpr int kDynamicsEvaluationBudget = 2000000;
 // has a handful; thousands within a few seconds are a chatter the model
 // cannot follow, and the integration stops saying so.
 inline constexpr int kMaxDynamicsEvents = 1000;
+// The step floor: a step the error control shrinks below this x T is lost
+// in the rounding of the time it is added to (T is about 1 in these units,
+// the time up to ~1e3). The integration stops there and says so, as at the
+// budget; it used to throw, which lost the report of every block.
+inline constexpr double kStepFloorRel = 1e-14;
 }  // namespace rockface::mechanics

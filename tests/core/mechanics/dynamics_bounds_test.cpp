@@ -62,6 +62,23 @@ TEST(DynamicsBounds, TheEventLimitStopsTheIntegrationAndSaysWhy) {
   EXPECT_EQ(d.outcome, "stopped before the end of the duration");
 }
 
+TEST(DynamicsBounds, TheStepFloorStopsTheIntegrationAndSaysWhy) {
+  // Tolerances no step can meet (the scene holds them to 1e-15 / 1e-14;
+  // the core takes any positive value): every step is rejected and halved
+  // until it falls below the floor. It threw, and the analysis lost every
+  // block's report.
+  DynamicsOptions o = options(2.0, 0.1);
+  o.abs_tol = 1e-300;
+  o.rel_tol = 1e-300;
+  const BlockDynamics d = run(roof_block(), 30, gravity(), o);
+  EXPECT_EQ(d.outcome, "stopped before the end of the duration");
+  EXPECT_EQ(d.stopped.substr(0, 62),
+            "the step size fell below the step floor (1e-14 of the block's ");
+  EXPECT_LT(d.end_time, 2.0);
+  // Far inside the budget: the floor, not the budget, stopped it.
+  EXPECT_LT(d.evaluations, kDynamicsEvaluationBudget);
+}
+
 TEST(DynamicsBounds, MoreStepsThanTheBoundAskedForAreRefusedByName) {
   // 600 s in steps of at most 1 us: 6e8 steps, hours of integration.
   DynamicsOptions o = options(600, 1);

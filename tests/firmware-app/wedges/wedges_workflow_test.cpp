@@ -18,11 +18,13 @@
 #include "core/geometry/orientation.h"
 #include "firmware-app/services/ui_services.h"
 #include "firmware-app/wedges/report_wedges.h"
+#include "firmware-app/wedges/wedge_input.h"
 #include "firmware-app/wedges/wedges_json.h"
 #include "firmware-app/wedges/wedges_workflow.h"
 #include "storage/field_report/field_report.h"
 #include "storage/field_report/field_report_pdf.h"
 #include "storage/project/project_store.h"
+#include "storage/scene/scene.h"
 #include "storage/tunnel/tunnel_files.h"
 #include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
@@ -101,7 +103,8 @@ TEST(WedgesVerb, SampleSceneEndToEnd) {
   EXPECT_TRUE(roof);
   EXPECT_GT(fs::file_size(dir / "w.png"), 20000u);
   const std::string out = read(dir / "out.txt");
-  EXPECT_NE(out.find("effects simulated: gravity, water pressure, bolts, shotcrete"), std::string::npos);
+  EXPECT_NE(out.find("effects simulated: gravity, water pressure, bolts, shotcrete"),
+            std::string::npos);
 }
 
 TEST(WedgesVerb, NothingComputedThatTheSceneDidNotAskFor) {
@@ -181,6 +184,65 @@ TEST(WedgesVerb, ProjectBoltsOutsideTheirRangeAreRefusedByName) {
   EXPECT_EQ(said("3,1,1e5,1e308"),
             "--bolts: BOND: 1e+308 N/m is outside [1000, 1e+08] N/m (the range of the bolts' "
             "setting)");
+}
+
+// Issue 41: `--shotcrete 0.05,1e308` was taken (any finite positive shear
+// strength) and printed in 309 digits; it is held to the range the
+// designer's support classes take (0.1-10 MPa), as the scene's is.
+TEST(WedgesVerb, ProjectShotcreteShearOutsideItsRangeIsRefusedByName) {
+  const fs::path dir = temp_dir("shotcrete-range");
+  const fs::path project = dir / "p.rockface";
+  {
+    storage::ProjectStore store = storage::ProjectStore::create(project, storage::ProjectInfo{});
+    store.begin_visit("face");
+  }
+  auto said = [&](const std::string& shotcrete) {
+    WedgesRequest q;
+    q.input = project.string();
+    q.shotcrete = shotcrete;
+    try {
+      wedges_from_input(q);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(said("0.05,1e308"),
+            "--shotcrete: SHEAR_STRENGTH: 1e+308 Pa is outside [100000, 1e+07] Pa (the range of "
+            "the shotcrete's setting)");
+  EXPECT_EQ(said("0.05,10"),
+            "--shotcrete: SHEAR_STRENGTH: 10 Pa is outside [100000, 1e+07] Pa (the range of the "
+            "shotcrete's setting)");
+}
+
+// Issue 41: a section asked for at chainage 1e308 of a tunnel scene was
+// refused with the chainage in 309 digits; it is said in 6 significant
+// digits, and a chainage near the drive still to the millimetre.
+TEST(WedgesVerb, AChainageBeyondAnyDriveIsSaidInSixDigits) {
+  auto said = [](double chainage) {
+    json scene = read_json(kSamples / "tunnel-drive.scene.json");
+    scene["wedges"] = {{"sets", {"J1", "J2", "J3"}}, {"profile", "tunnel"}, {"chainage", chainage}};
+    const fs::path dir = temp_dir("far-chainage");
+    const fs::path file = dir / "far.scene.json";
+    std::ofstream(file) << scene.dump();
+    for (const char* f : {"tunnel-drive.alignment.csv", "tunnel-drive.profile.json"})
+      fs::copy_file(kSamples / f, dir / f);
+    try {
+      (void)wedge_run_from_scene(storage::load_scene(file.string()));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string far = said(1e308);
+  EXPECT_NE(
+      far.find("chainage 1e+308 m lies beyond the alignment (0.000 to 200.000 m) by 1e+308 m"),
+      std::string::npos)
+      << far;
+  EXPECT_LT(far.size(), 300u) << far;
+  EXPECT_NE(said(200.5).find("chainage 200.500 m lies beyond the alignment (0.000 to 200.000 m) "
+                             "by 0.500 m"),
+            std::string::npos);
 }
 
 // Issue 41: an overflowed factor of safety (NaN) was shown as "stable";

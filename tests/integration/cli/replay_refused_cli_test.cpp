@@ -60,7 +60,9 @@ TEST(ReplayRefusedCli, APlacementOffTheAlignmentLeavesNoProject) {
   const auto r = rockface::test::run_rockface("replay " + scene.string() + " --project " +
                                               p.string() + " --preset fast");
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("tunnel.placement.chainage"), std::string::npos) << r.err;
+  // The scene file and its field, as every refusal of a scene's value says
+  // them (it said only the field).
+  EXPECT_NE(r.err.find(scene.string() + ": tunnel.placement.chainage"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("off the alignment"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(p));
   EXPECT_FALSE(fs::exists(dir / "p.rockface.spool"));

@@ -33,6 +33,7 @@
 #include "core/common/error.h"
 #include "core/photogrammetry/estimators/registration.h"
 #include "core/photogrammetry/targets/reference_line.h"
+#include "core/tunnel/support_ranges.h"
 #include "firmware-app/wedges/support_options.h"
 #include "storage/exchange/las_reader.h"
 #include "storage/exchange/obj_reader.h"
@@ -212,8 +213,8 @@ TEST(Fuzz, WedgeSupportOptions) {
          }
          try {
            const auto sc = rockface::app::parse_shotcrete(in, "--shotcrete");
-           if (!(sc.thickness >= 1e-3 && sc.thickness <= 2 && std::isfinite(sc.shear_strength) &&
-                 sc.shear_strength > 0))
+           if (!(sc.thickness >= 1e-3 && sc.thickness <= 2 &&
+                 rockface::tunnel::kShotcreteShearRange.contains(sc.shear_strength)))
              throw std::logic_error("shotcrete accepted out of range: " + in);
          } catch (const rockface::InputError&) {
          }
