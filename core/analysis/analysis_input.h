@@ -23,6 +23,11 @@
 
 namespace rockface::analysis {
 
+// A joint's cohesion is taken in [0, 100 MPa]: joints' cohesion is rarely
+// above 1 MPa and intact rock's below ~50 MPa; 1e308 was taken, and a
+// wedge's factor of safety overflowed (issue 41).
+inline constexpr double kMaxJointCohesionPa = 1e8;
+
 struct SceneJoint {
   std::string id;
   double dip = 0, dipdir = 0;            // degrees

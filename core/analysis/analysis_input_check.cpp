@@ -66,7 +66,7 @@ void check_joints(const InputCheck& c, const std::vector<SceneJoint>& joints) {
     c.orientation(j.dip, j.dipdir, path);
     if (j.point) c.finite(*j.point, path + ".point");
     if (j.friction) c.in(*j.friction, path + ".friction", 0, 90, true);
-    if (j.cohesion) c.non_negative(*j.cohesion, path + ".cohesion");
+    if (j.cohesion) c.in(*j.cohesion, path + ".cohesion", 0, kMaxJointCohesionPa);
   }
 }
 

@@ -28,10 +28,10 @@ namespace rockface::analysis {
 // core/tunnel/support_ranges.h), by the classes file and by a decision's
 // changes alike: a round longer than 10 m is no drill-and-blast round;
 // shotcrete up to half a metre (a cast lining is not shotcrete); its shear
-// strength 0.1-10 MPa (young to strong fibre-reinforced shotcrete).
+// strength core/tunnel's, as the wedges take it (0.1-10 MPa).
 inline constexpr tunnel::SupportRange kRoundLengthRange{0.1, 10.0, "m"};
 inline constexpr tunnel::SupportRange kShotcreteThicknessRange{0.0, 0.5, "m"};
-inline constexpr tunnel::SupportRange kShotcreteShearRange{1e5, 1e7, "Pa"};
+using tunnel::kShotcreteShearRange;
 
 // A range of a figure: [min, max), either end open when absent.
 struct FigureRange {

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/analysis/analysis_input.h"
 #include "core/common/error.h"
 #include "firmware-app/records/project_visit.h"
 #include "firmware-app/wedges/support_options.h"
@@ -56,7 +57,8 @@ WedgesResult wedges_from_input(const WedgesRequest& q) {
       s.friction_given = true;
     }
     if (q.cohesion_pa) {
-      if (!(*q.cohesion_pa >= 0)) throw InputError("--cohesion", "must not be negative (Pa)");
+      if (!(*q.cohesion_pa >= 0 && *q.cohesion_pa <= analysis::kMaxJointCohesionPa))
+        throw InputError("--cohesion", "must be in [0, 1e8] Pa (a joint's cohesion)");
       s.cohesion_pa = *q.cohesion_pa;
     }
     if (q.trace_length_m) {

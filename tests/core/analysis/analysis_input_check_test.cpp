@@ -61,7 +61,10 @@ TEST(AnalysisInputCheck, ANumberOutOfItsRangeIsQuotedAsWritten) {
   EXPECT_EQ(refusal_of(in), "S: joints[0].friction: 90 is outside [0, 90)");
   in = good_input();
   in.joints[0].cohesion = -0.5;
-  EXPECT_EQ(refusal_of(in), "S: joints[0].cohesion: -0.5 must not be negative");
+  EXPECT_EQ(refusal_of(in), "S: joints[0].cohesion: -0.5 is outside [0, 1e+08]");
+  in = good_input();
+  in.joints[0].cohesion = 1e308;  // issue 41: a wedge's FoS overflowed
+  EXPECT_EQ(refusal_of(in), "S: joints[0].cohesion: 1e+308 is outside [0, 1e+08]");
   in = good_input();
   in.density = 0;
   EXPECT_EQ(refusal_of(in), "S: rock.density: 0 must be positive");

@@ -215,6 +215,28 @@ TEST(WedgesVerb, ProjectShotcreteShearOutsideItsRangeIsRefusedByName) {
             "shotcrete's setting)");
 }
 
+// Issue 41: a joint cohesion of 1e308 for the project's sets was taken.
+TEST(WedgesVerb, ProjectCohesionOutsideItsRangeIsRefusedByName) {
+  const fs::path dir = temp_dir("cohesion-range");
+  const fs::path project = dir / "p.rockface";
+  {
+    storage::ProjectStore store = storage::ProjectStore::create(project, storage::ProjectInfo{});
+    store.begin_visit("face");
+  }
+  for (const double cohesion : {1e308, -1.0}) {
+    WedgesRequest q;
+    q.input = project.string();
+    q.cohesion_pa = cohesion;
+    try {
+      wedges_from_input(q);
+      ADD_FAILURE() << cohesion << " Pa was taken";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where(), "--cohesion") << e.what();
+      EXPECT_NE(std::string(e.what()).find("[0, 1e8] Pa"), std::string::npos) << e.what();
+    }
+  }
+}
+
 // Issue 41: a section asked for at chainage 1e308 of a tunnel scene was
 // refused with the chainage in 309 digits; it is said in 6 significant
 // digits, and a chainage near the drive still to the millimetre.
