@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/photogrammetry/surface/cloud_meshing.h"
 #include "core/photogrammetry/surface/cloud_noise.h"
 #include "core/photogrammetry/surface/surface_mesh.h"
@@ -24,11 +25,7 @@ namespace rockface::app {
 namespace import_detail {
 
 std::string words_of(const Eigen::Vector3d& p) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(3);
-  s << p.x() << " " << p.y() << " " << p.z();
-  return s.str();
+  return format_fixed(p.x(), 3) + " " + format_fixed(p.y(), 3) + " " + format_fixed(p.z(), 3);
 }
 
 // The side the view looks from: the --view-from point, the file's own
@@ -79,11 +76,8 @@ Eigen::Vector3d toward_viewer(const storage::ImportedSurface& s,
   }
   if (std::atan2(n.x(), n.y()) < 0) n = -n;
   const double bearing = std::atan2(n.x(), n.y()) * 180 / M_PI;
-  std::ostringstream s_how;
-  s_how.precision(3);
-  s_how << "from bearing " << bearing
-        << " deg (the file says no side: give --view-from if that is behind the rock)";
-  how = s_how.str();
+  how = "from bearing " + format_significant(bearing, 3) +
+        " deg (the file says no side: give --view-from if that is behind the rock)";
   return n;
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/analysis/preset_options.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/geometry/orientation.h"
 #include "core/tunnel/tolerances.h"
 #include "firmware-app/tunnel/project_drive.h"
@@ -53,14 +54,12 @@ void require_on_alignment(const tunnel::Alignment& a, double chainage, const std
   if (chainage >= first - tunnel::kChainageMismatchM &&
       chainage <= last + tunnel::kChainageMismatchM)
     return;
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(3);
-  s << "chainage " << chainage << " m lies beyond the alignment (" << first << " to " << last
-    << " m) by " << (chainage < first ? first - chainage : chainage - last)
-    << " m: a section there is not in the drive; correct the chainage or extend the "
-       "alignment's table";
-  throw InputError(where, s.str());
+  throw InputError(where,
+                   "chainage " + format_fixed(chainage, 3) + " m lies beyond the alignment (" +
+                       format_fixed(first, 3) + " to " + format_fixed(last, 3) + " m) by " +
+                       format_fixed(chainage < first ? first - chainage : chainage - last, 3) +
+                       " m: a section there is not in the drive; correct the chainage or "
+                       "extend the alignment's table");
 }
 
 }  // namespace
