@@ -24,6 +24,7 @@
 #include "storage/field_report/field_report_pdf.h"
 #include "storage/project/project_store.h"
 #include "storage/tunnel/tunnel_files.h"
+#include "tests/support/run_in_dir.h"
 #include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 
@@ -34,26 +35,16 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("rockface-wedges-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  rockface::test::remove_when_passed(d);
-  return d;
+  return test::fresh_test_dir("rockface-wedges-" + name);
 }
 
+// `rockface wedges ARGS`.
 int run(const std::string& args, const fs::path& dir) {
-  const std::string cmd = std::string(ROCKFACE_BINARY_DIR) + "/rockface wedges " + args + " > " +
-                          (dir / "out.txt").string() + " 2> " + (dir / "err.txt").string();
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return test::run_rockface_in("wedges " + args, dir);
 }
 
 std::string read(const fs::path& f) {
-  std::ifstream in(f);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return test::read_text(f);
 }
 
 json read_json(const fs::path& f) {
@@ -101,7 +92,8 @@ TEST(WedgesVerb, SampleSceneEndToEnd) {
   EXPECT_TRUE(roof);
   EXPECT_GT(fs::file_size(dir / "w.png"), 20000u);
   const std::string out = read(dir / "out.txt");
-  EXPECT_NE(out.find("effects simulated: gravity, water pressure, bolts, shotcrete"), std::string::npos);
+  EXPECT_NE(out.find("effects simulated: gravity, water pressure, bolts, shotcrete"),
+            std::string::npos);
 }
 
 TEST(WedgesVerb, NothingComputedThatTheSceneDidNotAskFor) {
