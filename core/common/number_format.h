@@ -22,6 +22,13 @@ std::string format_fixed(double v, int decimals, std::string_view unit = {});
 // "0.0123", format_significant(1234567, 3) is "1.23e+06".
 std::string format_significant(double v, int digits, std::string_view unit = {});
 
+// `decimals` places, zero-padded on the left to at least `width` characters
+// ("%0*.*f"): bearings and dip directions as a geologist writes them,
+// format_zero_padded(45, 5, 1, "°") is "045.0°", format_zero_padded(7, 2, 0)
+// is "07"; a longer value is never cut (format_zero_padded(1234.5, 3, 1) is
+// "1234.5").
+std::string format_zero_padded(double v, int width, int decimals, std::string_view unit = {});
+
 // The value to 17 significant digits ("%.17g"), which every double reads
 // back as itself: the form for numbers written to a file that is read again
 // (format_round_trip(0.1) is "0.10000000000000001"; not the shortest such

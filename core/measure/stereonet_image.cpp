@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace rockface::measure {
@@ -89,9 +89,8 @@ std::vector<Eigen::Vector2d> daylight_envelope(const KinematicOverlay& k,
 }
 
 std::string orientation_text(const g::PlaneOrientation& o) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%02.0f/%03.0f", rad_to_deg(o.dip), rad_to_deg(o.dipdir));
-  return text;
+  return format_zero_padded(rad_to_deg(o.dip), 2, 0) + "/" +
+         format_zero_padded(rad_to_deg(o.dipdir), 3, 0);
 }
 
 // Planar sliding (Markland): dips steeper than the friction angle, daylights

@@ -180,9 +180,10 @@ ProfileDeviation profile_deviation(const SurfaceInput& surface, const Alignment&
   return profile_deviation(caster, surface, alignment, profile, options);
 }
 
-ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInput& surface,
-                                   const Alignment& alignment, const DesignProfile& profile,
-                                   const DeviationOptions& options) {
+namespace {
+
+void check_deviation_input(const SurfaceInput& surface, const DesignProfile& profile,
+                           const DeviationOptions& options) {
   require_positive(options.section_spacing_m, "section_spacing_m");
   require_positive(options.ray_spacing_m, "ray_spacing_m");
   require_positive(options.max_overbreak_m, "max_overbreak_m");
@@ -209,19 +210,18 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
                      "one flag per triangle (" + std::to_string(surface.triangles.size()) +
                          "), got " + std::to_string(surface.not_rock_triangle.size()));
   profile.require_valid("profile");
+}
 
-  ProfileDeviation out;
-  out.underbreak_tolerance_m = options.underbreak_tolerance_m;
-  out.max_invert_overbreak_m = options.max_invert_overbreak_m;
-  double lo = std::min(options.chainage_from, options.chainage_to);
-  double hi = std::max(options.chainage_from, options.chainage_to);
-  std::string clipped;
+// The chainage range cut to the alignment (`clipped` says so); false, with
+// out's status and message, when it lies wholly outside it.
+bool clip_to_alignment(const Alignment& alignment, double& lo, double& hi, std::string& clipped,
+                       ProfileDeviation& out) {
   if (hi < alignment.first_chainage() || lo > alignment.last_chainage()) {
     out.status = DeviationStatus::outside_alignment;
     out.message = "chainage " + format_fixed(lo, 3) + " to " + format_fixed(hi, 3) +
                   " lies outside the alignment (" + format_fixed(alignment.first_chainage(), 3) +
                   " to " + format_fixed(alignment.last_chainage(), 3) + ")";
-    return out;
+    return false;
   }
   if (lo < alignment.first_chainage() || hi > alignment.last_chainage()) {
     clipped = "; the range was cut to the alignment's " +
@@ -230,8 +230,11 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
     lo = std::max(lo, alignment.first_chainage());
     hi = std::min(hi, alignment.last_chainage());
   }
+  return true;
+}
 
-  out.triangles = caster.triangle_count();
+// Per triangle: 1 where it, or one of its corners, is not rock.
+std::vector<std::uint8_t> not_rock_triangles(const SurfaceInput& surface) {
   std::vector<std::uint8_t> masked(surface.triangles.size(), 0);
   for (std::size_t i = 0; i < surface.triangles.size(); ++i) {
     bool m = !surface.not_rock_triangle.empty() && surface.not_rock_triangle[i] != 0;
@@ -240,38 +243,66 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
         m = m || surface.not_rock_vertex[static_cast<std::size_t>(k)] != 0;
     masked[i] = m ? 1 : 0;
   }
+  return masked;
+}
 
-  const std::vector<Ray> rays = rays_of(profile, options.ray_spacing_m);
-  const std::size_t cols = rays.size();
-  const std::size_t all_rows =
-      hi > lo
-          ? static_cast<std::size_t>(std::ceil((hi - lo) / options.section_spacing_m - 1e-9)) + 1
-          : 1;
-  const double dc = all_rows > 1 ? (hi - lo) / static_cast<double>(all_rows - 1) : 0;
-  const double cell_c = all_rows > 1 ? dc : options.section_spacing_m;
-  const double cell_s = profile.perimeter() / static_cast<double>(cols);
-  const Eigen::Vector2d centre = profile.ray_centre();
-  const std::size_t n = static_cast<std::size_t>(options.rays_per_cell_side);
-  // The cell's rays along the outline: n evenly inside each column.
-  const std::vector<Ray> sub_rays = sub_rays_of(profile, rays, n, cell_s);
+// The developed view's cells: a row per cross-section over the chainage
+// range, a column per ray of the outline, each cell cast with n x n rays.
+struct DeviationCells {
+  std::vector<Ray> rays, sub_rays;
+  std::size_t cols = 0, all_rows = 0, rows = 0, n = 1;
+  double lo = 0, dc = 0, cell_c = 0, cell_s = 0;
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   // The design's lowest point: a wall or roof ray whose surface lies below
   // it (by more than the noise) went through a hole in the invert's mesh.
   double invert_v = std::numeric_limits<double>::infinity();
-  for (const Ray& r : sub_rays)
-    invert_v = std::min(invert_v, centre.y() + r.design * std::sin(r.angle));
-  out.noise_threshold_m = options.depth_sigma_m * options.noise_sigmas;
+  // Per cell: its state, the median normal and ray deviations of its rays;
+  // per row, its chainage.
+  std::vector<std::uint8_t> state;
+  std::vector<double> normal_dev, ray_dev, chainage;
+};
 
-  // Per cell: its state, the median normal and ray deviations of its rays.
-  std::vector<std::uint8_t> state(all_rows * cols, kNotSeen);
-  std::vector<double> normal_dev(all_rows * cols, 0.0), ray_dev(all_rows * cols, 0.0);
-  std::vector<double> chainage(all_rows);
+DeviationCells cells_over(const DesignProfile& profile, const DeviationOptions& options, double lo,
+                          double hi) {
+  DeviationCells g;
+  g.rays = rays_of(profile, options.ray_spacing_m);
+  g.cols = g.rays.size();
+  g.all_rows =
+      hi > lo
+          ? static_cast<std::size_t>(std::ceil((hi - lo) / options.section_spacing_m - 1e-9)) + 1
+          : 1;
+  g.lo = lo;
+  g.dc = g.all_rows > 1 ? (hi - lo) / static_cast<double>(g.all_rows - 1) : 0;
+  g.cell_c = g.all_rows > 1 ? g.dc : options.section_spacing_m;
+  g.cell_s = profile.perimeter() / static_cast<double>(g.cols);
+  g.centre = profile.ray_centre();
+  g.n = static_cast<std::size_t>(options.rays_per_cell_side);
+  // The cell's rays along the outline: n evenly inside each column.
+  g.sub_rays = sub_rays_of(profile, g.rays, g.n, g.cell_s);
+  for (const Ray& r : g.sub_rays)
+    g.invert_v = std::min(g.invert_v, g.centre.y() + r.design * std::sin(r.angle));
+  g.state.assign(g.all_rows * g.cols, kNotSeen);
+  g.normal_dev.assign(g.all_rows * g.cols, 0.0);
+  g.ray_dev.assign(g.all_rows * g.cols, 0.0);
+  g.chainage.resize(g.all_rows);
+  return g;
+}
+
+// Every cell's rays cast on the surface: the cell is rock where its rays
+// met more rock than not rock (the median of those that did); at the frayed
+// edge of a reconstruction a few rays are all there is.
+void cast_cell_rays(DeviationCells& g, const MeshRaycaster& caster, const Alignment& alignment,
+                    const std::vector<std::uint8_t>& masked, const DeviationOptions& options,
+                    double noise_threshold) {
+  const std::size_t n = g.n, cols = g.cols, all_rows = g.all_rows;
+  const Eigen::Vector2d centre = g.centre;
   parallel_for(all_rows, [&](std::size_t i) {
-    const double c = all_rows > 1 ? lo + dc * static_cast<double>(i) : lo;
-    chainage[i] = c;
+    const double c = all_rows > 1 ? g.lo + g.dc * static_cast<double>(i) : g.lo;
+    g.chainage[i] = c;
     std::vector<TunnelFrame> frames;
     for (std::size_t a = 0; a < n; ++a)
       frames.push_back(alignment.frame_at(
-          std::clamp(c + ((static_cast<double>(a) + 0.5) / static_cast<double>(n) - 0.5) * cell_c,
+          std::clamp(c + ((static_cast<double>(a) + 0.5) / static_cast<double>(n) - 0.5) * g.cell_c,
                      alignment.first_chainage(), alignment.last_chainage())));
     std::vector<double> nd, rd;
     for (std::size_t j = 0; j < cols; ++j) {
@@ -281,7 +312,7 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
       for (const TunnelFrame& f : frames) {
         const Eigen::Vector3d origin = f.to_local(centre.x(), centre.y());
         for (std::size_t b = 0; b < n; ++b) {
-          const Ray& r = sub_rays[j * n + b];
+          const Ray& r = g.sub_rays[j * n + b];
           const Eigen::Vector3d dir = std::cos(r.angle) * f.right + std::sin(r.angle) * f.up;
           const auto hit = caster.first_hit(origin, dir, 0.0, r.design + options.max_overbreak_m);
           if (!hit) continue;
@@ -293,32 +324,32 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
           nd.push_back((hit->t - r.design) * r.cos_incidence);
         }
       }
-      // The cell is rock where its rays met more rock than not rock (the
-      // median of those that did); at the frayed edge of a reconstruction
-      // a few rays are all there is.
       const std::size_t k = i * cols + j;
       if (!nd.empty() && nd.size() >= excluded) {
-        state[k] = kSeen;
-        normal_dev[k] = median_of(nd);
-        ray_dev[k] = median_of(rd);
-        const Ray& r = rays[j];
+        g.state[k] = kSeen;
+        g.normal_dev[k] = median_of(nd);
+        g.ray_dev[k] = median_of(rd);
+        const Ray& r = g.rays[j];
         const bool below = r.region == Region::floor
-                               ? normal_dev[k] > options.max_invert_overbreak_m
-                               : centre.y() + (r.design + ray_dev[k]) * std::sin(r.angle) <
-                                     invert_v - out.noise_threshold_m;
-        if (below) state[k] = kBelowInvert;
+                               ? g.normal_dev[k] > options.max_invert_overbreak_m
+                               : centre.y() + (r.design + g.ray_dev[k]) * std::sin(r.angle) <
+                                     g.invert_v - noise_threshold;
+        if (below) g.state[k] = kBelowInvert;
       } else if (excluded > 0) {
-        state[k] = kExcluded;
+        g.state[k] = kExcluded;
       }
     }
   });
+}
 
-  // The round is measured where the surface is: sections at its ends that
-  // met nothing are left out, and said.
+// The round is measured where the surface is: sections at its ends that met
+// nothing are left out, and said.
+void trim_unmet_ends(DeviationCells& g, ProfileDeviation& out) {
+  const std::size_t cols = g.cols, all_rows = g.all_rows;
   std::size_t first = 0, last = all_rows;
   auto row_met_something = [&](std::size_t i) {
     for (std::size_t j = 0; j < cols; ++j)
-      if (state[i * cols + j] != kNotSeen) return true;
+      if (g.state[i * cols + j] != kNotSeen) return true;
     return false;
   };
   while (first < all_rows && !row_met_something(first)) ++first;
@@ -328,110 +359,108 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
     last = all_rows;
   } else {
     const char* why = "the surface does not reach there (the photographs do not both see it)";
-    if (first > 0) out.sections_left_out.push_back({chainage[0], chainage[first - 1], first, why});
+    if (first > 0)
+      out.sections_left_out.push_back({g.chainage[0], g.chainage[first - 1], first, why});
     if (last < all_rows)
       out.sections_left_out.push_back(
-          {chainage[last], chainage[all_rows - 1], all_rows - last, why});
+          {g.chainage[last], g.chainage[all_rows - 1], all_rows - last, why});
   }
-  const std::size_t rows = last - first;
+  g.rows = last - first;
   auto keep_rows = [&](auto& v, std::size_t per_row) {
     v.erase(v.begin() + static_cast<std::ptrdiff_t>(last * per_row), v.end());
     v.erase(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(first * per_row));
   };
-  keep_rows(state, cols);
-  keep_rows(normal_dev, cols);
-  keep_rows(ray_dev, cols);
-  keep_rows(chainage, 1);
+  keep_rows(g.state, cols);
+  keep_rows(g.normal_dev, cols);
+  keep_rows(g.ray_dev, cols);
+  keep_rows(g.chainage, 1);
+}
 
-  // Cells off any plausible lining.
-  {
-    std::vector<std::uint8_t> seen(rows * cols);
-    for (std::size_t k = 0; k < rows * cols; ++k) seen[k] = state[k] == kSeen ? 1 : 0;
-    const std::vector<std::uint8_t> off =
-        cells_off_the_lining(rows, cols, normal_dev, seen, {cell_c, cell_s},
-                             options.plausible_slope, 2 * out.noise_threshold_m);
-    for (std::size_t k = 0; k < rows * cols; ++k)
-      if (off[k]) state[k] = kOffLining;
-  }
-  // The lining's offset from the design as a whole.
-  {
-    std::vector<double> kept;
-    for (std::size_t k = 0; k < rows * cols; ++k)
-      if (state[k] == kSeen) kept.push_back(normal_dev[k]);
-    out.lining_offset = lining_offset(kept);
-  }
-  out.lining_offset_removed = out.noise_threshold_m > 0 && out.lining_offset.cells > 0 &&
-                              std::abs(out.lining_offset.median_m) <= out.noise_threshold_m;
-  const double offset = out.lining_offset_removed ? out.lining_offset.median_m : 0.0;
+// Cells off any plausible lining.
+void mark_off_lining(DeviationCells& g, const DeviationOptions& options, double noise_threshold) {
+  const std::size_t cells = g.rows * g.cols;
+  std::vector<std::uint8_t> seen(cells);
+  for (std::size_t k = 0; k < cells; ++k) seen[k] = g.state[k] == kSeen ? 1 : 0;
+  const std::vector<std::uint8_t> off =
+      cells_off_the_lining(g.rows, g.cols, g.normal_dev, seen, {g.cell_c, g.cell_s},
+                           options.plausible_slope, 2 * noise_threshold);
+  for (std::size_t k = 0; k < cells; ++k)
+    if (off[k]) g.state[k] = kOffLining;
+}
 
-  DevelopedView& view = out.view;
-  view.chainage = chainage;
-  view.s.resize(cols);
-  for (std::size_t j = 0; j < cols; ++j) view.s[j] = rays[j].s;
-  view.deviation_m.assign(rows * cols, std::numeric_limits<float>::quiet_NaN());
-  view.state.assign(rows * cols, kNotSeen);
-  std::vector<ProfilePosition> position(rows * cols);
-  out.sections.resize(rows);
-
-  // Rays of each region, to turn what was seen into fractions.
-  std::size_t region_rays[3] = {0, 0, 0};
-  for (const Ray& r : rays) ++region_rays[static_cast<int>(r.region)];
-
-  // Which cells count as over- or underbreak: those beyond the noise
-  // threshold, and the flanks of such a break down to half the threshold
-  // (connected cells of the same sign, 4-neighbours, the outline wrapping):
-  // a break's flanks are not lost to the threshold, and noise that never
-  // reaches it counts for nothing.
+// Which cells count as over- or underbreak: those beyond the noise
+// threshold, and the flanks of such a break down to half the threshold
+// (connected cells of the same sign, 4-neighbours, the outline wrapping): a
+// break's flanks are not lost to the threshold, and noise that never
+// reaches it counts for nothing.
+std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset, double thr) {
+  const std::size_t rows = g.rows, cols = g.cols;
   std::vector<std::uint8_t> counted(rows * cols, 0);
-  {
-    const double thr = out.noise_threshold_m;
-    auto dev = [&](std::size_t k) { return normal_dev[k] - offset; };
-    std::vector<std::size_t> stack;
-    for (std::size_t start = 0; start < rows * cols; ++start) {
-      if (counted[start] || state[start] != kSeen || !(std::abs(dev(start)) > thr)) continue;
-      const bool over = dev(start) > 0;
-      counted[start] = 1;
-      stack.assign(1, start);
-      while (!stack.empty()) {
-        const std::size_t k = stack.back();
-        stack.pop_back();
-        const std::size_t r = k / cols, c = k % cols;
-        const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
-                                   r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
-        for (std::size_t q : nb) {
-          if (counted[q] || state[q] != kSeen) continue;
-          const double d = dev(q);
-          if ((d > 0) == over && std::abs(d) > 0.5 * thr) {
-            counted[q] = 1;
-            stack.push_back(q);
-          }
+  auto dev = [&](std::size_t k) { return g.normal_dev[k] - offset; };
+  std::vector<std::size_t> stack;
+  for (std::size_t start = 0; start < rows * cols; ++start) {
+    if (counted[start] || g.state[start] != kSeen || !(std::abs(dev(start)) > thr)) continue;
+    const bool over = dev(start) > 0;
+    counted[start] = 1;
+    stack.assign(1, start);
+    while (!stack.empty()) {
+      const std::size_t k = stack.back();
+      stack.pop_back();
+      const std::size_t r = k / cols, c = k % cols;
+      const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
+                                 r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
+      for (std::size_t q : nb) {
+        if (counted[q] || g.state[q] != kSeen) continue;
+        const double d = dev(q);
+        if ((d > 0) == over && std::abs(d) > 0.5 * thr) {
+          counted[q] = 1;
+          stack.push_back(q);
         }
       }
     }
   }
+  return counted;
+}
 
-  double counted_over_area = 0, counted_under_area = 0;  // developed, m^2
+// The developed area (m^2) of the cells counted as over- and underbreak.
+struct CountedArea {
+  double over = 0, under = 0;
+};
+
+// Each cross-section from its cells: the developed view's states and
+// deviations (the lining's offset taken out), each seen cell's place, the
+// over- and underbreak areas and the largest of each, the fractions seen.
+CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, double offset,
+                             const std::vector<std::uint8_t>& counted, ProfileDeviation& out,
+                             std::vector<ProfilePosition>& position) {
+  const std::size_t rows = g.rows, cols = g.cols;
+  DevelopedView& view = out.view;
+  // Rays of each region, to turn what was seen into fractions.
+  std::size_t region_rays[3] = {0, 0, 0};
+  for (const Ray& r : g.rays) ++region_rays[static_cast<int>(r.region)];
+  CountedArea area;
   for (std::size_t i = 0; i < rows; ++i) {
-    const double c = chainage[i];
+    const double c = g.chainage[i];
     const TunnelFrame f = alignment.frame_at(c);
-    const Eigen::Vector3d origin = f.to_local(centre.x(), centre.y());
+    const Eigen::Vector3d origin = f.to_local(g.centre.x(), g.centre.y());
     SectionDeviation& sec = out.sections[i];
     sec.chainage = c;
     std::size_t seen_rays = 0, excluded_rays = 0, region_seen[3] = {0, 0, 0};
     for (std::size_t j = 0; j < cols; ++j) {
-      const Ray& r = rays[j];
+      const Ray& r = g.rays[j];
       const std::size_t k = i * cols + j;
-      view.state[k] = state[k] == kSeen       ? kSeen
-                      : state[k] == kExcluded ? kExcluded
-                      : state[k] == kNotSeen  ? kNotSeen
-                                              : kLeftOut;
-      if (state[k] == kExcluded) ++excluded_rays;
-      if (state[k] != kSeen) continue;
-      const double nd = normal_dev[k] - offset;
-      const double rd = ray_dev[k] - (r.cos_incidence > 0.2 ? offset / r.cos_incidence : offset);
+      const std::uint8_t state = g.state[k];
+      view.state[k] = state == kSeen       ? kSeen
+                      : state == kExcluded ? kExcluded
+                      : state == kNotSeen  ? kNotSeen
+                                           : kLeftOut;
+      if (state == kExcluded) ++excluded_rays;
+      if (state != kSeen) continue;
+      const double nd = g.normal_dev[k] - offset;
+      const double rd = g.ray_dev[k] - (r.cos_incidence > 0.2 ? offset / r.cos_incidence : offset);
       const double t = r.design + rd;
       view.deviation_m[k] = static_cast<float>(nd);
-      normal_dev[k] = nd;
+      g.normal_dev[k] = nd;
       const Eigen::Vector3d dir = std::cos(r.angle) * f.right + std::sin(r.angle) * f.up;
       ProfilePosition& pos = position[k];
       pos.chainage = c;
@@ -448,10 +477,10 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
       const double a = 0.5 * (t * t - r.design * r.design) * r.dtheta;
       if (a > 0) {
         sec.overbreak_area_m2 += a;
-        counted_over_area += cell_s * cell_c;
+        area.over += g.cell_s * g.cell_c;
       } else {
         sec.underbreak_area_m2 -= a;
-        counted_under_area += cell_s * cell_c;
+        area.under += g.cell_s * g.cell_c;
       }
       sec.max_overbreak_m = std::max(sec.max_overbreak_m, nd);
       sec.max_underbreak_m = std::max(sec.max_underbreak_m, -nd);
@@ -475,41 +504,21 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
     sec.walls_seen = part(region_seen[1], region_rays[1]);
     sec.floor_seen = part(region_seen[2], region_rays[2]);
   }
-  out.rays_cast = all_rows * cols * n * n;
+  return area;
+}
 
-  // Volumes (trapezoidal along the chainage), the fractions.
-  std::size_t seen = 0, excluded = 0;
-  for (std::size_t k = 0; k < rows * cols; ++k) {
-    if (state[k] == kSeen) ++seen;
-    if (state[k] == kExcluded) ++excluded;
-    if (state[k] == kOffLining) ++out.cells_off_lining;
-    if (state[k] == kBelowInvert) ++out.cells_below_invert;
-  }
-  for (std::size_t i = 0; i + 1 < rows; ++i) {
-    out.overbreak_volume_m3 +=
-        0.5 * (out.sections[i].overbreak_area_m2 + out.sections[i + 1].overbreak_area_m2) * dc;
-    out.underbreak_volume_m3 +=
-        0.5 * (out.sections[i].underbreak_area_m2 + out.sections[i + 1].underbreak_area_m2) * dc;
-  }
-  if (options.depth_sigma_m > 0) {
-    const double sigma = options.depth_sigma_m + out.lining_offset.standard_error_m;
-    out.overbreak_volume_sigma_m3 = sigma * counted_over_area;
-    out.underbreak_volume_sigma_m3 = sigma * counted_under_area;
-    out.cell_sigma_m = options.depth_sigma_m;
-  }
-  out.seen_fraction = static_cast<double>(seen) / static_cast<double>(rows * cols);
-  out.excluded_fraction = static_cast<double>(excluded) / static_cast<double>(rows * cols);
-  out.beyond_tolerance = patches_of(out, options.underbreak_tolerance_m, cell_s, cell_c, position);
-
-  // What the geologist is told.
+// What the geologist is told: the status and its message, with what the
+// figures leave out and why.
+void tell_the_geologist(ProfileDeviation& out, const DeviationOptions& options, std::size_t seen,
+                        std::size_t excluded, const std::string& clipped) {
   bool walls_or_roof = false;
   std::size_t thin = 0;
   for (const auto& s : out.sections) {
     walls_or_roof = walls_or_roof || s.walls_seen > 0 || s.roof_seen > 0;
     if (s.seen_fraction < options.min_seen_fraction) ++thin;
   }
-  const std::string range = "chainage " + format_fixed(view.chainage.front(), 3) + " to " +
-                            format_fixed(view.chainage.back(), 3) + clipped;
+  const std::string range = "chainage " + format_fixed(out.view.chainage.front(), 3) + " to " +
+                            format_fixed(out.view.chainage.back(), 3) + clipped;
   if (!walls_or_roof) {
     out.status = DeviationStatus::no_walls_in_view;
     out.message = (seen == 0 ? std::string("nothing of the profile was in view")
@@ -517,48 +526,119 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
                   " (" + range + ", " + std::to_string(out.rays_cast) + " rays cast, " +
                   std::to_string(excluded) +
                   " stopped by what is not rock): no over- or underbreak can be given, not zero";
-  } else {
-    if (thin > 0) {
-      out.status = DeviationStatus::partly_seen;
-      out.message =
-          std::to_string(thin) + " of " + std::to_string(out.sections.size()) +
-          " cross-sections saw less than " + format_fixed(100 * options.min_seen_fraction, 0) +
-          " % of the profile; areas and volumes cover only what was seen (" +
-          format_fixed(100 * out.seen_fraction, 1) + " % of the outline over " + range + ")";
-    } else {
-      out.status = DeviationStatus::ok;
-      out.message =
-          format_fixed(100 * out.seen_fraction, 1) + " % of the outline seen over " + range;
-    }
-    // What the figures leave out, and why (issue 38).
-    for (const auto& l : out.sections_left_out)
-      out.message += "; " + std::to_string(l.sections) + " cross-section" +
-                     (l.sections == 1 ? "" : "s") + " at chainage " +
-                     format_fixed(l.chainage_from, 2) + " to " + format_fixed(l.chainage_to, 2) +
-                     " left out: " + l.why;
-    if (out.cells_off_lining + out.cells_below_invert > 0)
-      out.message += "; left out: " + std::to_string(out.cells_off_lining) +
-                     " cells off any plausible lining (no neighbour agrees with them), " +
-                     std::to_string(out.cells_below_invert) +
-                     " below the invert (wall or roof rays that met the surface below it, floor "
-                     "rays more than " +
-                     format_fixed(options.max_invert_overbreak_m, 2) + " m below the design)";
-    if (out.noise_threshold_m > 0)
-      out.message += "; deviations within " + format_fixed(1000 * out.noise_threshold_m, 1) +
-                     " mm (" + format_fixed(options.noise_sigmas, 0) +
-                     " sigma of the 3D image's stated depth precision) are not counted, "
-                     "but for the flanks of a break beyond them down to half of that";
-    else
-      out.message += "; the 3D image states no depth precision: every deviation is counted";
-    if (out.lining_offset.cells > 0)
-      out.message += "; the lining lies " + format_fixed(1000 * out.lining_offset.median_m, 1) +
-                     " ± " + format_fixed(1000 * out.lining_offset.standard_error_m, 1) +
-                     " mm off the design as a whole" +
-                     (out.lining_offset_removed
-                          ? " (within the noise: taken as the 3D image's bias and removed)"
-                      : out.noise_threshold_m > 0 ? " (beyond the noise: kept)"
-                                                  : "");
+    return;
   }
+  if (thin > 0) {
+    out.status = DeviationStatus::partly_seen;
+    out.message =
+        std::to_string(thin) + " of " + std::to_string(out.sections.size()) +
+        " cross-sections saw less than " + format_fixed(100 * options.min_seen_fraction, 0) +
+        " % of the profile; areas and volumes cover only what was seen (" +
+        format_fixed(100 * out.seen_fraction, 1) + " % of the outline over " + range + ")";
+  } else {
+    out.status = DeviationStatus::ok;
+    out.message = format_fixed(100 * out.seen_fraction, 1) + " % of the outline seen over " + range;
+  }
+  // What the figures leave out, and why (issue 38).
+  for (const auto& l : out.sections_left_out)
+    out.message += "; " + std::to_string(l.sections) + " cross-section" +
+                   (l.sections == 1 ? "" : "s") + " at chainage " +
+                   format_fixed(l.chainage_from, 2) + " to " + format_fixed(l.chainage_to, 2) +
+                   " left out: " + l.why;
+  if (out.cells_off_lining + out.cells_below_invert > 0)
+    out.message += "; left out: " + std::to_string(out.cells_off_lining) +
+                   " cells off any plausible lining (no neighbour agrees with them), " +
+                   std::to_string(out.cells_below_invert) +
+                   " below the invert (wall or roof rays that met the surface below it, floor "
+                   "rays more than " +
+                   format_fixed(options.max_invert_overbreak_m, 2) + " m below the design)";
+  if (out.noise_threshold_m > 0)
+    out.message += "; deviations within " + format_fixed(1000 * out.noise_threshold_m, 1) +
+                   " mm (" + format_fixed(options.noise_sigmas, 0) +
+                   " sigma of the 3D image's stated depth precision) are not counted, "
+                   "but for the flanks of a break beyond them down to half of that";
+  else
+    out.message += "; the 3D image states no depth precision: every deviation is counted";
+  if (out.lining_offset.cells > 0)
+    out.message +=
+        "; the lining lies " + format_fixed(1000 * out.lining_offset.median_m, 1) + " ± " +
+        format_fixed(1000 * out.lining_offset.standard_error_m, 1) +
+        " mm off the design as a whole" +
+        (out.lining_offset_removed ? " (within the noise: taken as the 3D image's bias and removed)"
+         : out.noise_threshold_m > 0 ? " (beyond the noise: kept)"
+                                     : "");
+}
+
+}  // namespace
+
+ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInput& surface,
+                                   const Alignment& alignment, const DesignProfile& profile,
+                                   const DeviationOptions& options) {
+  check_deviation_input(surface, profile, options);
+  ProfileDeviation out;
+  out.underbreak_tolerance_m = options.underbreak_tolerance_m;
+  out.max_invert_overbreak_m = options.max_invert_overbreak_m;
+  double lo = std::min(options.chainage_from, options.chainage_to);
+  double hi = std::max(options.chainage_from, options.chainage_to);
+  std::string clipped;
+  if (!clip_to_alignment(alignment, lo, hi, clipped, out)) return out;
+
+  out.triangles = caster.triangle_count();
+  const std::vector<std::uint8_t> masked = not_rock_triangles(surface);
+  DeviationCells g = cells_over(profile, options, lo, hi);
+  out.noise_threshold_m = options.depth_sigma_m * options.noise_sigmas;
+  cast_cell_rays(g, caster, alignment, masked, options, out.noise_threshold_m);
+  trim_unmet_ends(g, out);
+  const std::size_t rows = g.rows, cols = g.cols;
+  mark_off_lining(g, options, out.noise_threshold_m);
+  // The lining's offset from the design as a whole.
+  {
+    std::vector<double> kept;
+    for (std::size_t k = 0; k < rows * cols; ++k)
+      if (g.state[k] == kSeen) kept.push_back(g.normal_dev[k]);
+    out.lining_offset = lining_offset(kept);
+  }
+  out.lining_offset_removed = out.noise_threshold_m > 0 && out.lining_offset.cells > 0 &&
+                              std::abs(out.lining_offset.median_m) <= out.noise_threshold_m;
+  const double offset = out.lining_offset_removed ? out.lining_offset.median_m : 0.0;
+
+  DevelopedView& view = out.view;
+  view.chainage = g.chainage;
+  view.s.resize(cols);
+  for (std::size_t j = 0; j < cols; ++j) view.s[j] = g.rays[j].s;
+  view.deviation_m.assign(rows * cols, std::numeric_limits<float>::quiet_NaN());
+  view.state.assign(rows * cols, kNotSeen);
+  std::vector<ProfilePosition> position(rows * cols);
+  out.sections.resize(rows);
+  const std::vector<std::uint8_t> counted = counted_cells(g, offset, out.noise_threshold_m);
+  const CountedArea counted_area = measure_sections(g, alignment, offset, counted, out, position);
+  out.rays_cast = g.all_rows * cols * g.n * g.n;
+
+  // Volumes (trapezoidal along the chainage), the fractions.
+  std::size_t seen = 0, excluded = 0;
+  for (std::size_t k = 0; k < rows * cols; ++k) {
+    if (g.state[k] == kSeen) ++seen;
+    if (g.state[k] == kExcluded) ++excluded;
+    if (g.state[k] == kOffLining) ++out.cells_off_lining;
+    if (g.state[k] == kBelowInvert) ++out.cells_below_invert;
+  }
+  for (std::size_t i = 0; i + 1 < rows; ++i) {
+    out.overbreak_volume_m3 +=
+        0.5 * (out.sections[i].overbreak_area_m2 + out.sections[i + 1].overbreak_area_m2) * g.dc;
+    out.underbreak_volume_m3 +=
+        0.5 * (out.sections[i].underbreak_area_m2 + out.sections[i + 1].underbreak_area_m2) * g.dc;
+  }
+  if (options.depth_sigma_m > 0) {
+    const double sigma = options.depth_sigma_m + out.lining_offset.standard_error_m;
+    out.overbreak_volume_sigma_m3 = sigma * counted_area.over;
+    out.underbreak_volume_sigma_m3 = sigma * counted_area.under;
+    out.cell_sigma_m = options.depth_sigma_m;
+  }
+  out.seen_fraction = static_cast<double>(seen) / static_cast<double>(rows * cols);
+  out.excluded_fraction = static_cast<double>(excluded) / static_cast<double>(rows * cols);
+  out.beyond_tolerance =
+      patches_of(out, options.underbreak_tolerance_m, g.cell_s, g.cell_c, position);
+  tell_the_geologist(out, options, seen, excluded, clipped);
   return out;
 }
 

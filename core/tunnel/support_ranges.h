@@ -9,8 +9,9 @@
 // cube of the number of sets. A spacing of 5 mm took 26 s and 633 MB and
 // one of 1 mm never ended (issue 41); no support design has either.
 #include <cmath>
-#include <cstdio>
 #include <string>
+
+#include "core/common/number_format.h"
 
 namespace rockface::tunnel {
 
@@ -20,9 +21,15 @@ struct SupportRange {
   bool contains(double v) const { return std::isfinite(v) && v >= lo && v <= hi; }
   // "[0.3, 10] m"
   std::string text() const {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "[%g, %g] %s", lo, hi, unit);
-    return buf;
+    // Appended piece by piece: GCC 12's -Wrestrict misreads a string literal
+    // put before a std::string here.
+    std::string t(1, '[');
+    t += format_significant(lo, 6);
+    t += ", ";
+    t += format_significant(hi, 6);
+    t += "] ";
+    t += unit;
+    return t;
   }
 };
 
@@ -60,10 +67,8 @@ inline constexpr int kMaxWedgeSets = 12;
 
 // "0.001 m is outside [0.3, 10] m (the range of a bolt pattern's spacing)".
 inline std::string outside_range_text(double v, const SupportRange& r, const char* what) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return std::string(buf) + " " + r.unit + " is outside " + r.text() + " (the range of " + what +
-         ")";
+  return format_significant(v, 6) + " " + r.unit + " is outside " + r.text() + " (the range of " +
+         what + ")";
 }
 
 }  // namespace rockface::tunnel

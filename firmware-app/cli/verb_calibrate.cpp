@@ -9,6 +9,7 @@
 
 #include "camera/exif.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/photogrammetry/camera/calibration.h"
 #include "core/photogrammetry/camera/calibration_coverage.h"
 #include "firmware-app/cli/verb_registry.h"
@@ -110,12 +111,10 @@ VerbRun setup_calibrate(CLI::App& sub) {
       std::cout << "stored in " << opts->project << " as calibration " << id << " of "
                 << described.described() << "\n";
     }
-    char summary[256];
-    std::snprintf(summary, sizeof summary,
-                  "RMS %.3f px over %d view(s); fx %.2f fy %.2f cx %.2f cy %.2f; written to %s\n",
-                  out.result.rms_px, out.result.views_used(), cam.fx, cam.fy, cam.cx, cam.cy,
-                  opts->out.c_str());
-    std::cout << summary;
+    std::cout << "RMS " << format_fixed(out.result.rms_px, 3, " px") << " over "
+              << out.result.views_used() << " view(s); fx " << format_fixed(cam.fx, 2) << " fy "
+              << format_fixed(cam.fy, 2) << " cx " << format_fixed(cam.cx, 2) << " cy "
+              << format_fixed(cam.cy, 2) << "; written to " << opts->out << "\n";
     return 0;
   };
 }

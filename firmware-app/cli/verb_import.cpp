@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/import/import_surface.h"
 
@@ -68,9 +69,8 @@ std::array<Eigen::Vector3d, 2> parse_two_points(const std::string& text,
 
 // E N Z to the millimetre, as a surveyor reads them.
 std::string survey_words(const Eigen::Vector3d& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "E %.3f N %.3f Z %.3f", p.x(), p.y(), p.z());
-  return text;
+  return "E " + format_fixed(p.x(), 3) + " N " + format_fixed(p.y(), 3) + " Z " +
+         format_fixed(p.z(), 3);
 }
 
 VerbRun setup_import(CLI::App& sub) {

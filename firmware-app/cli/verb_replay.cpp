@@ -31,9 +31,7 @@ class StderrProgress final : public Progress {
 void print_joint_comparisons(const std::vector<JointComparison>& joints) {
   if (joints.empty()) return;
   const auto plane = [](double dip, double dipdir) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f/%05.1f", dip, dipdir);
-    return std::string(text);
+    return format_fixed(dip, 1) + "/" + format_zero_padded(dipdir, 5, 1);
   };
   std::cout << "\njoints measured from the picked traces (dip/dip direction, degrees):\n"
             << std::left << std::setw(7) << "joint" << std::setw(20) << "measured (1 sigma)"
@@ -47,9 +45,8 @@ void print_joint_comparisons(const std::vector<JointComparison>& joints) {
       for (const auto& read : j.compass_read)
         if (read == t) traces += " (compass)";
     }
-    char sigma[16], apart[16];
-    std::snprintf(sigma, sizeof sigma, " (%.1f)", j.sigma);
-    std::snprintf(apart, sizeof apart, "%.1f deg", j.angle);
+    const std::string sigma = " (" + format_fixed(j.sigma, 1) + ")";
+    const std::string apart = format_fixed(j.angle, 1, " deg");
     std::cout << std::setw(7) << j.id << std::setw(20)
               << (j.measured ? plane(j.dip, j.dipdir) + sigma : "unknown") << std::setw(13)
               << plane(j.scene_dip, j.scene_dipdir) << std::setw(10) << (j.measured ? apart : "-")

@@ -1,10 +1,10 @@
 #include "firmware-app/export/visit_export.h"
 
 #include <algorithm>
-#include <cstdio>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "firmware-app/export/visit_drawing.h"
 #include "firmware-app/records/project_visit.h"
 #include "firmware-app/tunnel/visit_profile.h"
@@ -33,10 +33,8 @@ void lacking(const ExportRequest& request, const std::string& item, const std::s
 }
 
 std::string datum_words(const Eigen::Vector3d& datum) {
-  char text[160];
-  std::snprintf(text, sizeof text, "datum (added to every coordinate) E %.4f N %.4f Z %.4f",
-                datum.x(), datum.y(), datum.z());
-  return text;
+  return "datum (added to every coordinate) E " + format_fixed(datum.x(), 4) + " N " +
+         format_fixed(datum.y(), 4) + " Z " + format_fixed(datum.z(), 4);
 }
 
 }  // namespace

@@ -26,28 +26,28 @@ constexpr double kSeamBandM = 0.5;
 // The cells the walls' scatter is measured in: 10 cm or 4 point spacings,
 // tens of points each, small beside a break's bump (a metre or more).
 constexpr double kNoiseCellM = 0.1, kNoiseCellSpacings = 4;
+// The outline's sectors a round's walls are counted around in.
+constexpr int kOutlineSectors = 36;
 
-}  // namespace
-
-std::optional<RoundMesh> mesh_round(std::vector<Eigen::Vector3d>& points,
-                                    std::vector<std::array<std::uint8_t, 3>>& colours,
-                                    const tunnel::Alignment& alignment,
-                                    const tunnel::DesignProfile& profile) {
-  if (!colours.empty() && colours.size() != points.size())
-    throw Error("mesh_round: " + std::to_string(colours.size()) + " colours for " +
-                std::to_string(points.size()) + " points");
-  const Eigen::Vector2d centre = profile.ray_centre();
-  const double perimeter = profile.perimeter();
-  // Memory (issue 43: a 10-million-point round must fit the tablet): the
-  // walls are meshed on the cloud's own vectors, reordered in place (walls
-  // first), never on a copy of them; what is done with is freed before the
-  // next step's vectors are made.
-  std::vector<bool> is_wall(points.size(), false);
-  std::vector<Eigen::Vector2d> developed(points.size());  // (chainage, s) of each wall point
-  std::size_t wall_count = 0;
-  constexpr int kBins = 36;
-  std::array<bool, kBins> covered{};
+// Which points are the round's walls (within kWallInner..kWallOuter of the
+// design outline along their ray), their developed coordinates, and how far
+// around and along the drive they reach.
+struct WallPoints {
+  std::vector<bool> is_wall;
+  std::vector<Eigen::Vector2d> developed;  // (chainage, s) of each wall point
+  std::size_t count = 0;
+  long around = 0;  // of the outline's sectors, those with a wall point
   double lo_c = std::numeric_limits<double>::infinity(), hi_c = -lo_c;
+};
+
+WallPoints find_wall_points(const std::vector<Eigen::Vector3d>& points,
+                            const tunnel::Alignment& alignment,
+                            const tunnel::DesignProfile& profile, const Eigen::Vector2d& centre) {
+  WallPoints w;
+  w.is_wall.assign(points.size(), false);
+  w.developed.resize(points.size());
+  constexpr int kBins = kOutlineSectors;
+  std::array<bool, kBins> covered{};
   for (std::size_t i = 0; i < points.size(); ++i) {
     const tunnel::AlignmentPlace place = alignment.place(points[i]);
     const Eigen::Vector2d d = Eigen::Vector2d(place.offset, place.height) - centre;
@@ -55,52 +55,53 @@ std::optional<RoundMesh> mesh_round(std::vector<Eigen::Vector3d>& points,
     const tunnel::ProfileHit hit = profile.ray_hit(angle);
     const double ratio = d.norm() / hit.distance;
     if (ratio >= kWallInner && ratio <= kWallOuter) {
-      is_wall[i] = true;
-      ++wall_count;
-      developed[i] = {place.chainage, hit.s};
+      w.is_wall[i] = true;
+      ++w.count;
+      w.developed[i] = {place.chainage, hit.s};
       const int bin =
           std::clamp(static_cast<int>((angle + M_PI) / (2 * M_PI) * kBins), 0, kBins - 1);
       covered[static_cast<std::size_t>(bin)] = true;
-      lo_c = std::min(lo_c, place.chainage);
-      hi_c = std::max(hi_c, place.chainage);
+      w.lo_c = std::min(w.lo_c, place.chainage);
+      w.hi_c = std::max(w.hi_c, place.chainage);
     }
   }
-  const auto around = std::count(covered.begin(), covered.end(), true);
-  if (static_cast<double>(wall_count) < kRoundWallShare * static_cast<double>(points.size()) ||
-      around < kBins / 2 || hi_c - lo_c < 1.0)
-    return std::nullopt;
+  w.around = std::count(covered.begin(), covered.end(), true);
+  return w;
+}
 
-  // Walls first, the face after them: the cloud's points, colours and
-  // developed coordinates swapped together.
+// A round: mostly walls, around at least half the outline, over a metre of
+// the drive.
+bool is_a_round(const WallPoints& w, std::size_t points) {
+  return !(static_cast<double>(w.count) < kRoundWallShare * static_cast<double>(points) ||
+           w.around < kOutlineSectors / 2 || w.hi_c - w.lo_c < 1.0);
+}
+
+// Walls first, the face after them: the cloud's points, colours and
+// developed coordinates swapped together.
+void put_walls_first(std::vector<Eigen::Vector3d>& points,
+                     std::vector<std::array<std::uint8_t, 3>>& colours, WallPoints& w) {
   for (std::size_t i = 0, j = points.size(); i < j;) {
-    if (is_wall[i]) {
+    if (w.is_wall[i]) {
       ++i;
       continue;
     }
     --j;
-    if (!is_wall[j]) continue;
+    if (!w.is_wall[j]) continue;
     std::swap(points[i], points[j]);
     if (!colours.empty()) std::swap(colours[i], colours[j]);
-    std::swap(developed[i], developed[j]);
-    is_wall[i] = true;
-    is_wall[j] = false;
+    std::swap(w.developed[i], w.developed[j]);
+    w.is_wall[i] = true;
+    w.is_wall[j] = false;
     ++i;
   }
-  is_wall = {};
-  RoundMesh out;
-  out.wall_points = wall_count;
-  out.face_points = points.size() - wall_count;
-  // The face's points aside while the walls are meshed on `points` itself.
-  std::vector<Eigen::Vector3d> face_xyz(points.begin() + static_cast<std::ptrdiff_t>(wall_count),
-                                        points.end());
-  points.resize(wall_count);
-  developed.resize(wall_count);
-  // The seam: the walls within kSeamBandM of the outline's start again past
-  // its end (appended, their source in `band_source`); a triangle is kept
-  // when its centroid lies in [band / 2, perimeter + band / 2), so the
-  // seam's triangles come once, from where the band has neighbours on both
-  // sides.
-  const double band = std::min(kSeamBandM, perimeter / 4);
+}
+
+// The seam: the walls within `band` of the outline's start again past its
+// end, appended to the wall points and their developed coordinates; returns
+// each appended point's source.
+std::vector<int> append_seam_band(std::vector<Eigen::Vector3d>& points,
+                                  std::vector<Eigen::Vector2d>& developed, std::size_t wall_count,
+                                  double band, double perimeter) {
   std::vector<int> band_source;
   for (std::size_t k = 0; k < wall_count; ++k)
     if (developed[k].y() < band) band_source.push_back(static_cast<int>(k));
@@ -111,25 +112,27 @@ std::optional<RoundMesh> mesh_round(std::vector<Eigen::Vector3d>& points,
     developed.emplace_back(developed[static_cast<std::size_t>(k)].x(),
                            developed[static_cast<std::size_t>(k)].y() + perimeter);
   }
+  return band_source;
+}
+
+// The walls' triangles kept (their centroid in [band / 2, perimeter +
+// band / 2), so the seam's come once), mapped to the cloud's indices in
+// place (no second list) and turned to face the axis. Every triangle
+// counter-clockwise in (chainage, s) faces one side of the walls (the
+// developed view is a continuous map): the side the majority of a sample
+// faces, against the axis, is flipped for all.
+std::vector<std::array<int, 3>> keep_wall_triangles(
+    std::vector<std::array<int, 3>> kept, const std::vector<Eigen::Vector3d>& points,
+    const std::vector<Eigen::Vector2d>& developed, std::size_t wall_count,
+    const std::vector<int>& band_source, double band, double perimeter,
+    const tunnel::Alignment& alignment, const Eigen::Vector2d& centre) {
   const auto cloud_index = [&](int v) {
     return static_cast<std::size_t>(v) < wall_count
                ? v
                : band_source[static_cast<std::size_t>(v) - wall_count];
   };
-  photogrammetry::CloudMesh wall_mesh = photogrammetry::mesh_point_cloud_on(points, developed);
-  out.median_spacing = wall_mesh.median_spacing;
-  out.noise_sigma_m = photogrammetry::cloud_noise_sigma(
-      points, developed, std::max(kNoiseCellM, kNoiseCellSpacings * out.median_spacing));
-  // The cloud whole again (walls, then the face).
-  points.resize(wall_count);
-  points.insert(points.end(), face_xyz.begin(), face_xyz.end());
-  // Every triangle counter-clockwise in (chainage, s) faces one side of the
-  // walls (the developed view is a continuous map): the side the majority of
-  // a sample faces, against the axis, is flipped for all. The triangles
-  // kept are mapped to the cloud's indices in place (no second list).
   double toward_axis = 0;
-  const std::size_t stride = std::max<std::size_t>(1, wall_mesh.triangles.size() / 1000);
-  std::vector<std::array<int, 3>> kept = std::move(wall_mesh.triangles);
+  const std::size_t stride = std::max<std::size_t>(1, kept.size() / 1000);
   std::size_t kept_count = 0;
   for (std::size_t t = 0; t < kept.size(); ++t) {
     const std::array<int, 3> tri = kept[t];
@@ -150,38 +153,93 @@ std::optional<RoundMesh> mesh_round(std::vector<Eigen::Vector3d>& points,
   kept.resize(kept_count);
   if (toward_axis < 0)
     for (auto& t : kept) std::swap(t[1], t[2]);
+  return kept;
+}
+
+// The face's points (after the walls' in the cloud) meshed over their best
+// plane, facing the viewer, appended to `triangles`; the view's centre
+// moved to the face's. Returns the face's meshing in words.
+std::string add_face_triangles(const std::vector<Eigen::Vector3d>& face_xyz, std::size_t wall_count,
+                               RoundMesh& out, std::vector<std::array<int, 3>>& triangles) {
+  if (face_xyz.size() < 3) return "no face";
+  try {
+    const photogrammetry::CloudMesh face_mesh = photogrammetry::mesh_point_cloud(face_xyz);
+    const bool flip = face_mesh.normal.dot(out.toward_viewer) < 0;
+    triangles.reserve(triangles.size() + face_mesh.triangles.size());
+    const int first = static_cast<int>(wall_count);  // the face's points follow the walls
+    for (const auto& t : face_mesh.triangles) {
+      std::array<int, 3> mapped{first + t[0], first + t[1], first + t[2]};
+      if (flip) std::swap(mapped[1], mapped[2]);
+      triangles.push_back(mapped);
+    }
+    out.view_centre = face_mesh.centroid;
+    return "the face over its best plane";
+  } catch (const InputError&) {
+    return "the points inside the outline on a line: left out";
+  }
+}
+
+std::size_t points_in_no_triangle(std::size_t points,
+                                  const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<bool> used(points, false);
+  for (const auto& t : triangles)
+    for (int i : t) used[static_cast<std::size_t>(i)] = true;
+  return static_cast<std::size_t>(std::count(used.begin(), used.end(), false));
+}
+
+}  // namespace
+
+std::optional<RoundMesh> mesh_round(std::vector<Eigen::Vector3d>& points,
+                                    std::vector<std::array<std::uint8_t, 3>>& colours,
+                                    const tunnel::Alignment& alignment,
+                                    const tunnel::DesignProfile& profile) {
+  if (!colours.empty() && colours.size() != points.size())
+    throw Error("mesh_round: " + std::to_string(colours.size()) + " colours for " +
+                std::to_string(points.size()) + " points");
+  const Eigen::Vector2d centre = profile.ray_centre();
+  const double perimeter = profile.perimeter();
+  // Memory (issue 43: a 10-million-point round must fit the tablet): the
+  // walls are meshed on the cloud's own vectors, reordered in place (walls
+  // first), never on a copy of them; what is done with is freed before the
+  // next step's vectors are made.
+  WallPoints walls = find_wall_points(points, alignment, profile, centre);
+  if (!is_a_round(walls, points.size())) return std::nullopt;
+  put_walls_first(points, colours, walls);
+  walls.is_wall = {};
+  const std::size_t wall_count = walls.count;
+  std::vector<Eigen::Vector2d>& developed = walls.developed;
+  RoundMesh out;
+  out.wall_points = wall_count;
+  out.face_points = points.size() - wall_count;
+  // The face's points aside while the walls are meshed on `points` itself.
+  std::vector<Eigen::Vector3d> face_xyz(points.begin() + static_cast<std::ptrdiff_t>(wall_count),
+                                        points.end());
+  points.resize(wall_count);
+  developed.resize(wall_count);
+  const double band = std::min(kSeamBandM, perimeter / 4);
+  std::vector<int> band_source = append_seam_band(points, developed, wall_count, band, perimeter);
+  photogrammetry::CloudMesh wall_mesh = photogrammetry::mesh_point_cloud_on(points, developed);
+  out.median_spacing = wall_mesh.median_spacing;
+  out.noise_sigma_m = photogrammetry::cloud_noise_sigma(
+      points, developed, std::max(kNoiseCellM, kNoiseCellSpacings * out.median_spacing));
+  // The cloud whole again (walls, then the face).
+  points.resize(wall_count);
+  points.insert(points.end(), face_xyz.begin(), face_xyz.end());
+  std::vector<std::array<int, 3>> kept =
+      keep_wall_triangles(std::move(wall_mesh.triangles), points, developed, wall_count,
+                          band_source, band, perimeter, alignment, centre);
   developed = {};
   band_source = {};
 
   // The face's end of the round and the direction back along the drive.
   const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
-  const double front = sense > 0 ? hi_c : lo_c;
+  const double front = sense > 0 ? walls.hi_c : walls.lo_c;
   const tunnel::TunnelFrame at_front = alignment.frame_at(front);
   out.toward_viewer = -at_front.along;
   out.view_centre = at_front.to_local(centre.x(), centre.y());
-  std::string face_words = "no face";
-  if (face_xyz.size() >= 3) {
-    try {
-      const photogrammetry::CloudMesh face_mesh = photogrammetry::mesh_point_cloud(face_xyz);
-      const bool flip = face_mesh.normal.dot(out.toward_viewer) < 0;
-      kept.reserve(kept.size() + face_mesh.triangles.size());
-      const int first = static_cast<int>(wall_count);  // the face's points follow the walls
-      for (const auto& t : face_mesh.triangles) {
-        std::array<int, 3> mapped{first + t[0], first + t[1], first + t[2]};
-        if (flip) std::swap(mapped[1], mapped[2]);
-        kept.push_back(mapped);
-      }
-      out.view_centre = face_mesh.centroid;
-      face_words = "the face over its best plane";
-    } catch (const InputError&) {
-      face_words = "the points inside the outline on a line: left out";
-    }
-  }
+  const std::string face_words = add_face_triangles(face_xyz, wall_count, out, kept);
   out.triangles = std::move(kept);
-  std::vector<bool> used(points.size(), false);
-  for (const auto& t : out.triangles)
-    for (int i : t) used[static_cast<std::size_t>(i)] = true;
-  out.unused_points = static_cast<std::size_t>(std::count(used.begin(), used.end(), false));
+  out.unused_points = points_in_no_triangle(points.size(), out.triangles);
   out.words = "a round: its walls meshed on the tunnel's developed view (" +
               std::to_string(out.wall_points) + " points), " + face_words + " (" +
               std::to_string(out.face_points) + " points)";

@@ -1,13 +1,13 @@
 #include "firmware-app/records/orient_visit.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "core/analysis/preset_options.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/photogrammetry/estimators/registration.h"
 #include "firmware-app/records/project_mesh.h"
@@ -37,12 +37,9 @@ Eigen::Vector3d on_surface(const photogrammetry::SurfaceMesh& mesh, const Eigen:
                            double radius, const std::string& where) {
   const auto p = mesh.point_at_pixel(px, radius);
   if (!p) {
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "no 3D image at pixel (%.1f, %.1f) of the left photograph: tap the line's ends "
-                  "on rock",
-                  px.x(), px.y());
-    throw InputError(where, text);
+    throw InputError(where, "no 3D image at pixel (" + format_fixed(px.x(), 1) + ", " +
+                                format_fixed(px.y(), 1) +
+                                ") of the left photograph: tap the line's ends on rock");
   }
   return *p;
 }
@@ -141,10 +138,8 @@ VisitOrientation orient_visit_by_compass(storage::ProjectStore& store, storage::
     m.created_at.clear();
     store.save_model(m);
   }
-  char text[96];
-  std::snprintf(text, sizeof text, "north from the compass line at %05.1f°, turned by %.2f°",
-                north.azimuth_deg, out.turned_deg);
-  out.note = text;
+  out.note = "north from the compass line at " + format_zero_padded(north.azimuth_deg, 5, 1, "°") +
+             ", turned by " + format_fixed(out.turned_deg, 2, "°");
   return out;
 }
 

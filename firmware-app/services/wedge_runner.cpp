@@ -1,10 +1,10 @@
 // The tablet's Wedges view (ui::WedgeRunner): the wedges of the project's
 // tunnel around the visit's face with its measured sets, as `rockface
 // wedges PROJECT --visit N` finds them, laid out as a table in words.
-#include <cstdio>
 #include <numbers>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "firmware-app/services/ui_services.h"
 #include "firmware-app/wedges/wedges_json.h"
 #include "firmware-app/wedges/wedges_workflow.h"
@@ -19,9 +19,7 @@ namespace {
 // A number as the command line takes it (all its digits: the form's value
 // is read back exactly).
 std::string option_number(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  return format_round_trip(v);
 }
 
 // The form as `rockface wedges`' options, so that the tablet and the

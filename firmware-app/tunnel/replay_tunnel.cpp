@@ -1,7 +1,5 @@
 #include "firmware-app/tunnel/replay_tunnel.h"
 
-#include <cstdio>
-
 #include "core/common/number_format.h"
 #include "firmware-app/tunnel/visit_placement.h"
 #include "firmware-app/tunnel/visit_surface.h"
@@ -36,11 +34,9 @@ std::string place_replayed_visit(storage::ProjectStore& store, const storage::Sc
   const storage::VisitPlacement placement =
       place_visit(alignment, tunnel->profile, surface, visit_id, typed);
   store.save_visit_placement(placement);
-  char text[160];
-  std::snprintf(text, sizeof text,
-                "visit placed in the tunnel: face at chainage %.2f, offset %.2f m",
-                placement.chainage, placement.offset_m);
-  return note + text + " (" + placement.note + ")";
+  return note + "visit placed in the tunnel: face at chainage " +
+         format_fixed(placement.chainage, 2) + ", offset " +
+         format_fixed(placement.offset_m, 2, " m") + " (" + placement.note + ")";
 }
 
 }  // namespace rockface::app

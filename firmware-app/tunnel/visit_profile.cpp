@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "core/analysis/preset_options.h"
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/tunnel/face_front.h"
 #include "core/tunnel/surface_reach.h"
 #include "firmware-app/tunnel/visit_placement.h"
@@ -74,13 +74,11 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
     // invert to hold against the design. Said so, never zero over- and
     // underbreak.
     out.deviation.status = tunnel::DeviationStatus::no_walls_in_view;
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "the 3D image holds only the face (its surface starts at chainage %.2f, the "
-                  "face reaches back to %.2f): no walls, roof or invert in view to compare with "
-                  "the design profile",
-                  out.round_from, out.round_to + sense * kFaceClearM);
-    out.deviation.message = text;
+    out.deviation.message =
+        "the 3D image holds only the face (its surface starts at chainage " +
+        format_fixed(out.round_from, 2) + ", the face reaches back to " +
+        format_fixed(out.round_to + sense * kFaceClearM, 2) +
+        "): no walls, roof or invert in view to compare with the design profile";
     out.deviation.underbreak_tolerance_m = out.tunnel.underbreak_tolerance_m;
     return out;
   }

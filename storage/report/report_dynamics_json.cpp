@@ -1,9 +1,10 @@
 #include "storage/report/report_dynamics_json.h"
 
 #include <cmath>
-#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
+#include "core/common/number_format.h"
 #include "storage/report/report_numbers.h"
 
 namespace rockface::storage {
@@ -17,9 +18,7 @@ double tidy_dynamics(double v) {
   // 9 significant digits: far beyond what the integration gives. An unknown
   // (NaN, infinity) stays one: the JSON writes it as null, not as 0.
   if (!std::isfinite(v)) return v;
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return std::strtod(buf, nullptr);
+  return std::strtod(format_significant(v, 9).c_str(), nullptr);
 }
 
 ordered vec_dynamics(const Eigen::Vector3d& v) {

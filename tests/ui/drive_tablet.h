@@ -28,6 +28,21 @@ struct DriveTablet {
       : session(drive_tablet_options(project), drive_tablet_services(runners), 1280, 800) {
     session.settle();
   }
+  // A screen's view: its tab and the view's button tapped, then the frames
+  // run until the tablet is idle.
+  void show(const char* screen, const char* view) {
+    session.tap(screen);
+    session.tap(view);
+    session.settle();
+  }
+  // The Blocks screen's Wedges view with its wedges found on the visit.
+  void find_wedges() {
+    session.tap("Blocks");
+    session.tap("Wedges view");
+    session.tap("Find wedges");
+    session.settle();
+  }
+
   app::FieldRunners runners{""};  // before the session, which holds its runners
   ui::HeadlessSession session;
 };

@@ -36,9 +36,9 @@
 #include "storage/office/sqlite_rows.h"
 #include "storage/office/sync_push.h"
 #include "storage/project/project_store.h"
-#include "tests/integration/office_web/web_driver.h"
 #include "tests/support/postgres_server.h"
 #include "tests/support/sample_records.h"
+#include "tests/support/web_driver.h"
 #include "tools/bench/bench_tablet_projects.h"
 
 #include <httplib.h>

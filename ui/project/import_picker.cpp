@@ -1,11 +1,11 @@
 #include "ui/project/import_picker.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <memory>
 
 #include <imgui.h>
 
+#include "core/common/number_format.h"
 #include "storage/exchange/import_reader.h"
 #include "ui/app/app_state.h"
 #include "ui/widgets/format.h"
@@ -17,12 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string size_words(std::uintmax_t bytes) {
-  char text[32];
-  if (bytes < 1000 * 1000)
-    std::snprintf(text, sizeof text, "%.0f kB", static_cast<double>(bytes) / 1000);
-  else
-    std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / 1e6);
-  return text;
+  if (bytes < 1000 * 1000) return format_fixed(static_cast<double>(bytes) / 1000, 0, " kB");
+  return format_fixed(static_cast<double>(bytes) / 1e6, 1, " MB");
 }
 
 // Read on the tap that opens the list or looks again, never every frame: a

@@ -1,8 +1,8 @@
 #include "ui/view3d/overlay_north_arrow.h"
 
 #include <cmath>
-#include <cstdio>
 
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "storage/project/model_registration.h"
 #include "ui/view3d/overlay_text.h"
@@ -59,11 +59,12 @@ DrawnRect draw_north_arrow(const ModelView& view, float scale) {
                 IM_COL32(255, 255, 255, 160), 2 * scale);
   draw_text(draw, ImVec2(head.x - 4 * scale, head.y - 8 * scale), IM_COL32(255, 255, 255, 255), "N",
             view.text_area(), TextHalo::dark);
-  char text[64];
-  if (const auto azimuth = view_azimuth_deg(view))
-    std::snprintf(text, sizeof text, "looking %03.0f°", std::fmod(std::round(*azimuth), 360.0));
-  else
-    std::snprintf(text, sizeof text, "looking straight down");
+  const std::optional<double> looking_to = view_azimuth_deg(view);
+  const std::string looking =
+      looking_to
+          ? "looking " + format_zero_padded(std::fmod(std::round(*looking_to), 360.0), 3, 0, "°")
+          : "looking straight down";
+  const char* text = looking.c_str();
   draw_text(draw, ImVec2(view.panel_min().x + pad, centre.y + r + 8 * scale),
             IM_COL32(255, 255, 255, 255), text, view.text_area(), TextHalo::dark);
   drawn.add_text(ImVec2(view.panel_min().x + pad, centre.y + r + 8 * scale), text);

@@ -11,12 +11,6 @@ namespace rockface::ui::format {
 
 namespace {
 
-std::string printf_text(const char* fmt, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, v);
-  return buf;
-}
-
 // `v` to `decimals` places, but never more than six significant digits (a
 // figure the field never measures that finely): fewer places for a large
 // value, and powers of ten beyond a million.
@@ -106,8 +100,8 @@ std::string azimuth(double deg) {
   if (!std::isfinite(deg)) return unknown();
   double d = std::fmod(deg, 360.0);
   if (d < 0) d += 360;
-  if (d >= 359.95) d = 0;            // 359.97 rounds to 360.0, which is 000.0
-  return printf_text("%05.1f°", d);  // 0 to 360: never more than four digits
+  if (d >= 359.95) d = 0;                   // 359.97 rounds to 360.0, which is 000.0
+  return format_zero_padded(d, 5, 1, "°");  // 0 to 360: never more than four digits
 }
 
 std::string dip_and_direction(double dip_deg, double dipdir_deg) {

@@ -67,6 +67,469 @@ struct RunningPlane {
   }
 };
 
+// The facet search over one mesh: its triangle graph, smoothed normals and
+// bending, the tests' thresholds, and each triangle's state as the phases
+// (growing, plane-led growing, merging terraces, outlines) go.
+class FacetFinder {
+ public:
+  FacetFinder(const photogrammetry::SurfaceMesh& mesh, const MeasureSettings& settings,
+              const FacetOptions& options)
+      : mesh_(mesh),
+        settings_(settings),
+        options_(options),
+        graph_(triangle_graph(mesh)),
+        normals_(smoothed_normals(graph_, options.smoothing_passes)),
+        bend_(bending(graph_, normals_)) {}
+
+  // The usable triangles (their area mapped, their normals summed into the
+  // surface's), flattest first: the seeds. Empty when there are none.
+  std::vector<int> seeds_flattest_first(FacetSearch& out) const;
+  // What is set once the seeds are known: the thresholds and the state.
+  void prepare();
+  // The first pass: regions grown from the seeds, flattest first, by the
+  // angle of their normals and the gate of their running plane.
+  void grow_by_normals(const std::vector<int>& seeds, Progress& progress);
+  // The second pass (plane_led_growing.h) over what the first left.
+  void grow_led_by_planes(const std::vector<int>& seeds);
+  void merge_terraces();
+  // The rejected regions, and their area, as far as no facet took them.
+  void count_rejected(FacetSearch& out) const;
+  // Largest first, numbered, outlined; into `out`.
+  void outline_facets(FacetSearch& out);
+
+ private:
+  std::vector<int> interior(const std::vector<int>& tris);
+  Facet measured(const std::vector<int>& tris);
+  std::vector<int> grow_region(int seed, int region, RunningPlane& plane);
+  void add_or_reject(std::vector<int>& region, bool drop_rejected);
+  std::vector<std::vector<int>> facets_within_terrace_hops() const;
+  std::vector<int> with_steps(const Facet& merged, const std::vector<int>& group);
+
+  const photogrammetry::SurfaceMesh& mesh_;
+  const MeasureSettings& settings_;
+  const FacetOptions& options_;
+  const TriangleGraph graph_;
+  const std::vector<Eigen::Vector3d> normals_;
+  const std::vector<float> bend_;
+  double angle_ = 0, cos_angle_ = 1, cos_twice_ = 1, gate_ = 0, edge_ = 0;
+  std::vector<int> label_;
+  // The region that failed the planarity tests, per triangle (-1: none):
+  // what is left of it in no facet at the end is the rejected area (a
+  // triangle of a rejected region may still join a facet later, by the
+  // plane-led pass or as a step between terraces, and is then counted
+  // there alone).
+  std::vector<int> rejected_in_;
+  int rejected_count_ = 0;
+  std::vector<char> vertex_seen_;
+  std::vector<int> queue_;
+  std::vector<Facet> facets_;
+  std::size_t done_ = 0;
+  int border_hops_ = 0;
+  std::vector<int> region_stamp_, hops_;
+  int stamp_ = 0;
+};
+
+std::vector<int> FacetFinder::seeds_flattest_first(FacetSearch& out) const {
+  Eigen::Vector3d surface = Eigen::Vector3d::Zero();
+  std::vector<int> seeds;
+  for (std::size_t t = 0; t < graph_.size(); ++t)
+    if (graph_.usable(t)) {
+      out.mapped_area += graph_.areas[t];
+      surface += graph_.areas[t] * graph_.normals[t];
+      seeds.push_back(static_cast<int>(t));
+    }
+  if (seeds.empty()) return seeds;
+  if (surface.squaredNorm() > 0) out.surface_normal = surface.normalized();
+  if (out.surface_normal.z() < 0) out.surface_normal = -out.surface_normal;
+  // Flattest first (qFacets and DSE seed where the surface is most planar);
+  // ties by index keep the result independent of the sort's whims. Sorted
+  // as one 64-bit key per seed, the bend's bits above the index (a bend is
+  // never negative, so its bits order as its value): the order a stable
+  // sort on the bend gives, without its indirect reads.
+  std::vector<std::uint64_t> keys(seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &bend_[seeds[i]], sizeof bits);
+    keys[i] = (static_cast<std::uint64_t>(bits) << 32) | static_cast<std::uint32_t>(seeds[i]);
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 0; i < seeds.size(); ++i) seeds[i] = static_cast<int>(keys[i] & 0xffffffffu);
+  return seeds;
+}
+
+void FacetFinder::prepare() {
+  angle_ = deg_to_rad(options_.angle_tolerance_deg);
+  cos_angle_ = std::cos(angle_);
+  cos_twice_ = std::cos(2 * angle_);
+  gate_ = options_.planarity_in_sigmas * settings_.point_sigma;
+  label_.assign(graph_.size(), kFree);
+  rejected_in_.assign(graph_.size(), -1);
+  vertex_seen_.assign(mesh_.vertices.size(), 0);
+  edge_ = mesh_.median_edge_length();
+  // The matching window blends the depths of the two sides of an edge over
+  // its width (the correlation length), and a region grown to the gate of
+  // its plane takes a band across a crease whose points lie on one side of
+  // it: at each end of a strip a different side, which turns the plane
+  // (stepped faces: 1.9 deg for strips whose inner points are 0.6 deg off).
+  // The plane is therefore measured on the region's interior, the triangles
+  // more than a correlation length (in triangle steps) from its border,
+  // when that interior is itself as large as the smallest facet; the area
+  // and outline stay the whole region's.
+  border_hops_ = edge_ > 0 ? static_cast<int>(std::ceil(settings_.correlation_length / edge_)) : 0;
+  region_stamp_.assign(graph_.size(), -1);
+  hops_.assign(graph_.size(), 0);
+}
+
+std::vector<int> FacetFinder::interior(const std::vector<int>& tris) {
+  if (border_hops_ <= 0) return tris;
+  ++stamp_;
+  for (int t : tris) region_stamp_[t] = stamp_;
+  std::vector<int> frontier;
+  for (int t : tris) {
+    bool border = false;
+    for (const int k : graph_.neighbours[t]) border = border || k < 0 || region_stamp_[k] != stamp_;
+    hops_[t] = border ? 0 : -1;
+    if (border) frontier.push_back(t);
+  }
+  for (std::size_t head = 0; head < frontier.size(); ++head) {
+    const int t = frontier[head];
+    if (hops_[t] >= border_hops_) continue;
+    for (const int k : graph_.neighbours[t])
+      if (k >= 0 && region_stamp_[k] == stamp_ && hops_[k] < 0) {
+        hops_[k] = hops_[t] + 1;
+        frontier.push_back(k);
+      }
+  }
+  std::vector<int> inner;
+  double area = 0;
+  for (int t : tris)
+    if (hops_[t] < 0) {
+      inner.push_back(t);
+      area += graph_.areas[t];
+    }
+  return area >= options_.min_area_m2 ? inner : tris;
+}
+
+// A region measured as an area picked by hand: its vertices' plane, the
+// planarity, sliver, roughness and relief tests (plane.problem says which
+// failed; empty when it is a facet), area, centroid and margins.
+Facet FacetFinder::measured(const std::vector<int>& tris) {
+  Facet f;
+  std::vector<Eigen::Vector3d> points;
+  for (int t : interior(tris))
+    for (int v : mesh_.triangles[t])
+      if (!vertex_seen_[v]) {
+        vertex_seen_[v] = 1;
+        points.push_back(mesh_.vertices[v]);
+      }
+  for (int t : tris)
+    for (int v : mesh_.triangles[t]) vertex_seen_[v] = 0;
+  f.plane = plane_of_points(points, settings_);
+  f.plane.problem =
+      planarity_problem(f.plane, settings_, options_.planarity_in_sigmas, "the facet");
+  const double sigma_deg = rad_to_deg(f.plane.sigma);
+  // The area measurement's sliver test: a region no wider than the noise
+  // (a band along a crease, where the smoothed normals turn from one
+  // plane to the next) is a line, not a plane.
+  if (f.plane.problem.empty() && f.plane.fit.relief() < kMinReliefInSigmas * settings_.point_sigma)
+    f.plane.problem = "orientation unknown: the region is a sliver (" +
+                      format_fixed(f.plane.fit.relief() * 1000, 0) + " mm wide RMS)";
+  // The growing kept triangles near its running plane: on a surface
+  // rougher than the point precision it picks its way between the rest,
+  // and the points it keeps can pass the RMS test only because the others
+  // were left out. Their tail gives it away: under the stated precision a
+  // point lies beyond the 4-sigma gate with odds of 6e-5.
+  std::size_t off = 0;
+  for (const auto& p : points) off += std::abs(f.plane.fit.plane().signed_distance(p)) > gate_;
+  const double off_share = static_cast<double>(off) / static_cast<double>(points.size());
+  if (f.plane.problem.empty() && off_share > kMaxOffPlaneShare)
+    f.plane.problem = "orientation unknown: the surface is rougher than the point precision (" +
+                      format_fixed(100 * off_share, 0) + " % of its points more than " +
+                      format_fixed(options_.planarity_in_sigmas, 1) +
+                      " point sigmas off its plane)";
+  if (f.plane.problem.empty() && sigma_deg > settings_.max_plane_sigma_deg)
+    f.plane.problem = "orientation unknown: too little relief for a reliable plane (" +
+                      format_fixed(sigma_deg, 1) + " deg)";
+  if (!f.plane.problem.empty()) return f;
+  f.plane.known = true;
+  double area = 0;
+  Eigen::Vector3d sum_centre = Eigen::Vector3d::Zero();
+  for (int t : tris) {
+    area += graph_.areas[t];
+    sum_centre += graph_.areas[t] * graph_.centres[t];
+  }
+  f.area = area;
+  f.centroid = sum_centre / area;
+  f.triangles = tris.size();
+  f.vertices = points.size();
+  f.planarity_margin_sigmas =
+      options_.planarity_in_sigmas - f.plane.fit.rms_off_plane() / settings_.point_sigma;
+  f.orientation_margin_deg = settings_.max_plane_sigma_deg - sigma_deg;
+  f.marginal = f.planarity_margin_sigmas < 1.0 || f.orientation_margin_deg < sigma_deg;
+  f.mesh_triangles = tris;
+  return f;
+}
+
+// The region grown from `seed` (labelled `region`), its running plane in
+// `plane`.
+std::vector<int> FacetFinder::grow_region(int seed, int region, RunningPlane& plane) {
+  std::vector<int> members(1, seed);
+  queue_.assign(1, seed);
+  label_[seed] = region;
+  plane.add(graph_.centres[seed], normals_[seed], graph_.areas[seed]);
+  plane.refit(gate_ * 10);
+  double next_refit = 3;
+  for (std::size_t head = 0; head < queue_.size(); ++head) {
+    const int t = queue_[head];
+    for (const int k : graph_.neighbours[t]) {
+      if (k < 0 || label_[k] != kFree || !graph_.usable(static_cast<std::size_t>(k))) continue;
+      // On the plane: all three corners within the planarity gate and
+      // the normal within twice the tolerance (a noisy normal does not
+      // keep a triangle that lies on the plane out, but one across a
+      // ridge, whose smoothed normal is bent half way, stays out).
+      // Else: its normal agrees and its centre is within the gate.
+      // Only once the region's plane is fitted (wide enough): against a
+      // plane still set by a few smoothed normals the corners' test would
+      // pick points toward that first guess.
+      // Nor where the surface creases (bending over the tolerance): the
+      // corners of a triangle across a ridge lie within the gate of both
+      // planes and would tilt the facet toward its neighbour.
+      bool on_plane =
+          plane.fitted && bend_[k] <= angle_ && normals_[k].dot(plane.mean_normal) >= cos_twice_;
+      for (const int v : mesh_.triangles[k])
+        on_plane = on_plane &&
+                   std::abs(plane.plane_normal.dot(mesh_.vertices[v] - plane.centroid)) <= gate_;
+      if (!on_plane &&
+          (normals_[k].dot(plane.mean_normal) < cos_angle_ ||
+           std::abs(plane.plane_normal.dot(graph_.centres[k] - plane.centroid)) > gate_))
+        continue;
+      label_[k] = region;
+      members.push_back(k);
+      queue_.push_back(k);
+      plane.add(graph_.centres[k], normals_[k], graph_.areas[k]);
+      if (static_cast<double>(members.size()) >= next_refit) {
+        // Ten times the gate across the region: its fitted tilt is then
+        // known to a few tenths of the angle tolerance.
+        plane.refit(gate_ * 10);
+        next_refit = std::max(next_refit + 1, next_refit * options_.refit_growth);
+      }
+    }
+  }
+  return members;
+}
+
+// A grown region measured: a facet, or rejected (its triangles dropped
+// from the growing when `drop_rejected`).
+void FacetFinder::add_or_reject(std::vector<int>& region, bool drop_rejected) {
+  Facet f = measured(region);
+  if (!f.plane.problem.empty()) {
+    for (int t : region) {
+      if (drop_rejected) label_[t] = kDropped;
+      rejected_in_[t] = rejected_count_;
+    }
+    ++rejected_count_;
+    return;
+  }
+  if (!drop_rejected)
+    for (int t : region) label_[t] = static_cast<int>(facets_.size());
+  facets_.push_back(std::move(f));
+}
+
+void FacetFinder::grow_by_normals(const std::vector<int>& seeds, Progress& progress) {
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    const int seed = seeds[s];
+    if ((s & 0xfff) == 0)
+      progress.step("facets: growing",
+                    static_cast<double>(done_) / static_cast<double>(seeds.size()));
+    if (label_[seed] != kFree) continue;
+    // The rest of the surface bends more than the tolerance at every
+    // triangle: edges, creases, noise. No facet grows from there.
+    if (bend_[seed] > angle_) break;
+    RunningPlane plane;
+    std::vector<int> members = grow_region(seed, static_cast<int>(facets_.size()), plane);
+    done_ += members.size();
+    if (plane.weight < options_.min_area_m2) {
+      for (int t : members) label_[t] = kDropped;
+      continue;
+    }
+    add_or_reject(members, true);
+  }
+}
+
+// Led by the distance of the points to a fitted plane against the stated
+// point precision, it finds the planes whose single triangles' normals
+// scatter beyond the tolerance (a face seen obliquely). A seed patch's
+// points must lie within two point sigmas RMS of their plane: half the
+// planarity test a facet passes at the end, so that a seed across a crease
+// or on a rough patch is refused before it grows.
+void FacetFinder::grow_led_by_planes(const std::vector<int>& seeds) {
+  std::vector<char> taken(graph_.size(), 0);
+  for (std::size_t t = 0; t < graph_.size(); ++t) taken[t] = label_[t] >= 0;
+  PlaneLedOptions led;
+  led.gate = gate_;
+  led.seed_rms = 2 * settings_.point_sigma;
+  led.seed_area = options_.min_area_m2;
+  led.refit_growth = options_.refit_growth;
+  for (auto& region : plane_led_regions(mesh_, graph_, taken, seeds, led)) {
+    double area = 0;
+    for (int t : region) area += graph_.areas[t];
+    if (area < options_.min_area_m2) continue;
+    add_or_reject(region, false);
+  }
+}
+
+// For each facet, the later facets within kTerraceHops usable triangles of
+// it (ascending, once each).
+std::vector<std::vector<int>> FacetFinder::facets_within_terrace_hops() const {
+  const int n = static_cast<int>(facets_.size());
+  std::vector<std::vector<int>> near(static_cast<std::size_t>(n));
+  std::vector<int> stamp(graph_.size(), -1), depth(graph_.size(), 0), frontier;
+  for (int i = 0; i < n; ++i) {
+    frontier.clear();
+    for (int t : facets_[i].mesh_triangles) {
+      stamp[t] = i;
+      depth[t] = 0;
+      frontier.push_back(t);
+    }
+    for (std::size_t head = 0; head < frontier.size(); ++head) {
+      const int t = frontier[head];
+      for (const int k : graph_.neighbours[t]) {
+        if (k < 0 || stamp[k] == i || !graph_.usable(static_cast<std::size_t>(k))) continue;
+        stamp[k] = i;
+        if (label_[k] >= 0) {
+          if (label_[k] > i) near[i].push_back(label_[k]);
+        } else if (depth[t] < kTerraceHops) {
+          depth[k] = depth[t] + 1;
+          frontier.push_back(k);
+        }
+      }
+    }
+    std::sort(near[i].begin(), near[i].end());
+    near[i].erase(std::unique(near[i].begin(), near[i].end()), near[i].end());
+  }
+  return near;
+}
+
+// A merged group's triangles and the steps between its terraces: triangles
+// of no facet next to the merged plane's, all three corners within the gate
+// of it (marked -3 in label_, as the group's own).
+std::vector<int> FacetFinder::with_steps(const Facet& merged, const std::vector<int>& group) {
+  const Eigen::Vector3d normal = merged.plane.fit.normal;
+  const Eigen::Vector3d centre = merged.plane.fit.centroid;
+  std::vector<int> tris = group;
+  for (int t : tris) label_[t] = -3;  // in this group
+  for (std::size_t head = 0; head < tris.size(); ++head)
+    for (const int k : graph_.neighbours[tris[head]]) {
+      if (k < 0 || label_[k] >= 0 || label_[k] == -3 || !graph_.usable(static_cast<std::size_t>(k)))
+        continue;
+      bool within = true;
+      for (const int v : mesh_.triangles[k])
+        within = within && std::abs(normal.dot(mesh_.vertices[v] - centre)) <= gate_;
+      if (!within) continue;
+      label_[k] = -3;
+      tris.push_back(k);
+    }
+  return tris;
+}
+
+// Dense matching's terraces (issue 38): on a face seen nearly square,
+// sub-pixel disparities lock to whole pixels, and a plane comes out as
+// strips a few pixels wide, each tilted a few degrees the same way, with a
+// step between them where the normals turn further than the tolerance:
+// the growing stops at every step and gives one facet per strip, tilted
+// as the strips are. Facets within kTerraceHops triangles of each other
+// (across the steps) whose normals agree within the tolerance and whose
+// points together pass the planarity tests are one plane: merged (most
+// alike first), then the steps between them, whose corners lie within
+// the gate of the merged plane, taken in. The merged plane is the
+// terraces' mean: the true plane.
+void FacetFinder::merge_terraces() {
+  const int n = static_cast<int>(facets_.size());
+  if (n < 2) return;
+  const std::vector<std::vector<int>> near = facets_within_terrace_hops();
+  struct Pair {
+    double angle;
+    int a, b;
+  };
+  std::vector<Pair> pairs;
+  for (int i = 0; i < n; ++i)
+    for (int j : near[i]) {
+      const double a = std::acos(std::clamp(
+          std::abs(facets_[i].plane.fit.normal.dot(facets_[j].plane.fit.normal)), 0.0, 1.0));
+      if (a <= angle_) pairs.push_back({a, i, j});
+    }
+  if (pairs.empty()) return;
+  std::stable_sort(pairs.begin(), pairs.end(),
+                   [](const Pair& x, const Pair& y) { return x.angle < y.angle; });
+  std::vector<int> root(static_cast<std::size_t>(n));
+  std::iota(root.begin(), root.end(), 0);
+  std::vector<std::vector<int>> group(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) group[i] = facets_[i].mesh_triangles;
+  // A merged group's measure: that of its last merge, which measured
+  // exactly the group's triangles in their order (kept, not measured
+  // again below).
+  std::vector<Facet> merged(static_cast<std::size_t>(n));
+  const auto find = [&](int x) {
+    while (root[x] != x) x = root[x] = root[root[x]];
+    return x;
+  };
+  bool merged_any = false;
+  for (const Pair& p : pairs) {
+    const int ra = find(p.a), rb = find(p.b);
+    if (ra == rb) continue;
+    std::vector<int> both = group[ra];
+    both.insert(both.end(), group[rb].begin(), group[rb].end());
+    Facet joined = measured(both);
+    if (!joined.plane.problem.empty()) continue;
+    root[rb] = ra;
+    merged[ra] = std::move(joined);
+    group[ra] = std::move(both);
+    group[rb].clear();
+    merged_any = true;
+  }
+  if (!merged_any) return;
+  std::vector<Facet> kept;
+  for (int i = 0; i < n; ++i) {
+    if (find(i) != i) continue;
+    if (group[i].size() == facets_[i].mesh_triangles.size()) {
+      kept.push_back(std::move(facets_[i]));
+      continue;
+    }
+    Facet f = std::move(merged[i]);
+    Facet steps_in = measured(with_steps(f, group[i]));
+    kept.push_back(steps_in.plane.problem.empty() ? std::move(steps_in) : std::move(f));
+  }
+  facets_ = std::move(kept);
+  for (std::size_t i = 0; i < facets_.size(); ++i)
+    for (int t : facets_[i].mesh_triangles) label_[t] = static_cast<int>(i);
+}
+
+void FacetFinder::count_rejected(FacetSearch& out) const {
+  std::vector<char> counted(static_cast<std::size_t>(rejected_count_), 0);
+  for (std::size_t t = 0; t < graph_.size(); ++t)
+    if (rejected_in_[t] >= 0 && label_[t] < 0) {
+      out.rejected_area += graph_.areas[t];
+      counted[rejected_in_[t]] = 1;
+    }
+  out.rejected_regions = static_cast<int>(std::count(counted.begin(), counted.end(), 1));
+}
+
+void FacetFinder::outline_facets(FacetSearch& out) {
+  std::stable_sort(facets_.begin(), facets_.end(),
+                   [](const Facet& a, const Facet& b) { return a.area > b.area; });
+  for (std::size_t i = 0; i < facets_.size(); ++i) {
+    Facet& f = facets_[i];
+    f.id = static_cast<int>(i) + 1;
+    // Thinned to two point spacings: the outline keeps the facet's shape
+    // to the resolution of the 3D image without its lattice staircase.
+    const FacetOutline outline = facet_outline(mesh_, f.mesh_triangles, 2.0 * edge_);
+    f.outline = outline.outer;
+    f.holes = outline.holes;
+    out.facet_area += f.area;
+  }
+  out.facets = std::move(facets_);
+}
+
 }  // namespace
 
 FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSettings& settings,
@@ -85,396 +548,20 @@ FacetSearch find_facets(const photogrammetry::SurfaceMesh& mesh, const MeasureSe
     return out;
   }
   progress.step("facets: mesh", 0.0);
-  const TriangleGraph graph = triangle_graph(mesh);
-  const std::vector<Eigen::Vector3d> normals = smoothed_normals(graph, options.smoothing_passes);
-  const std::vector<float> bend = bending(graph, normals);
-  Eigen::Vector3d surface = Eigen::Vector3d::Zero();
-  std::vector<int> seeds;
-  for (std::size_t t = 0; t < graph.size(); ++t)
-    if (graph.usable(t)) {
-      out.mapped_area += graph.areas[t];
-      surface += graph.areas[t] * graph.normals[t];
-      seeds.push_back(static_cast<int>(t));
-    }
+  FacetFinder finder(mesh, settings, options);
+  const std::vector<int> seeds = finder.seeds_flattest_first(out);
   if (seeds.empty()) {
     out.notes.push_back("the 3D image has no usable triangle (all degenerate): no facets");
     return out;
   }
-  if (surface.squaredNorm() > 0) out.surface_normal = surface.normalized();
-  if (out.surface_normal.z() < 0) out.surface_normal = -out.surface_normal;
-  // Flattest first (qFacets and DSE seed where the surface is most planar);
-  // ties by index keep the result independent of the sort's whims. Sorted
-  // as one 64-bit key per seed, the bend's bits above the index (a bend is
-  // never negative, so its bits order as its value): the order a stable
-  // sort on the bend gives, without its indirect reads.
-  {
-    std::vector<std::uint64_t> keys(seeds.size());
-    for (std::size_t i = 0; i < seeds.size(); ++i) {
-      std::uint32_t bits = 0;
-      std::memcpy(&bits, &bend[seeds[i]], sizeof bits);
-      keys[i] = (static_cast<std::uint64_t>(bits) << 32) | static_cast<std::uint32_t>(seeds[i]);
-    }
-    std::sort(keys.begin(), keys.end());
-    for (std::size_t i = 0; i < seeds.size(); ++i)
-      seeds[i] = static_cast<int>(keys[i] & 0xffffffffu);
-  }
-
-  const double angle = deg_to_rad(options.angle_tolerance_deg);
-  const double cos_angle = std::cos(angle), cos_twice = std::cos(2 * angle);
-  const double gate = options.planarity_in_sigmas * settings.point_sigma;
-  std::vector<int> label(graph.size(), kFree);
-  // The region that failed the planarity tests, per triangle (-1: none):
-  // what is left of it in no facet at the end is the rejected area (a
-  // triangle of a rejected region may still join a facet later, by the
-  // plane-led pass or as a step between terraces, and is then counted
-  // there alone).
-  std::vector<int> rejected_in(graph.size(), -1);
-  int rejected_count = 0;
-  std::vector<char> vertex_seen(mesh.vertices.size(), 0);
-  std::vector<int> members, queue;
-  std::vector<Facet> facets;
-  const double edge = mesh.median_edge_length();
-  std::size_t done = 0;
-  // A region measured as an area picked by hand: its vertices' plane, the
-  // planarity, sliver, roughness and relief tests (plane.problem says which
-  // failed; empty when it is a facet), area, centroid and margins.
-  // The matching window blends the depths of the two sides of an edge over
-  // its width (the correlation length), and a region grown to the gate of
-  // its plane takes a band across a crease whose points lie on one side of
-  // it: at each end of a strip a different side, which turns the plane
-  // (stepped faces: 1.9 deg for strips whose inner points are 0.6 deg off).
-  // The plane is therefore measured on the region's interior, the triangles
-  // more than a correlation length (in triangle steps) from its border,
-  // when that interior is itself as large as the smallest facet; the area
-  // and outline stay the whole region's.
-  const int border_hops =
-      edge > 0 ? static_cast<int>(std::ceil(settings.correlation_length / edge)) : 0;
-  std::vector<int> region_stamp(graph.size(), -1), hops(graph.size(), 0);
-  int stamp = 0;
-  const auto interior = [&](const std::vector<int>& tris) {
-    if (border_hops <= 0) return tris;
-    ++stamp;
-    for (int t : tris) region_stamp[t] = stamp;
-    std::vector<int> frontier;
-    for (int t : tris) {
-      bool border = false;
-      for (const int k : graph.neighbours[t]) border = border || k < 0 || region_stamp[k] != stamp;
-      hops[t] = border ? 0 : -1;
-      if (border) frontier.push_back(t);
-    }
-    for (std::size_t head = 0; head < frontier.size(); ++head) {
-      const int t = frontier[head];
-      if (hops[t] >= border_hops) continue;
-      for (const int k : graph.neighbours[t])
-        if (k >= 0 && region_stamp[k] == stamp && hops[k] < 0) {
-          hops[k] = hops[t] + 1;
-          frontier.push_back(k);
-        }
-    }
-    std::vector<int> inner;
-    double area = 0;
-    for (int t : tris)
-      if (hops[t] < 0) {
-        inner.push_back(t);
-        area += graph.areas[t];
-      }
-    return area >= options.min_area_m2 ? inner : tris;
-  };
-  const auto measured = [&](const std::vector<int>& tris) {
-    Facet f;
-    std::vector<Eigen::Vector3d> points;
-    for (int t : interior(tris))
-      for (int v : mesh.triangles[t])
-        if (!vertex_seen[v]) {
-          vertex_seen[v] = 1;
-          points.push_back(mesh.vertices[v]);
-        }
-    for (int t : tris)
-      for (int v : mesh.triangles[t]) vertex_seen[v] = 0;
-    f.plane = plane_of_points(points, settings);
-    f.plane.problem =
-        planarity_problem(f.plane, settings, options.planarity_in_sigmas, "the facet");
-    const double sigma_deg = rad_to_deg(f.plane.sigma);
-    // The area measurement's sliver test: a region no wider than the noise
-    // (a band along a crease, where the smoothed normals turn from one
-    // plane to the next) is a line, not a plane.
-    if (f.plane.problem.empty() && f.plane.fit.relief() < kMinReliefInSigmas * settings.point_sigma)
-      f.plane.problem = "orientation unknown: the region is a sliver (" +
-                        format_fixed(f.plane.fit.relief() * 1000, 0) + " mm wide RMS)";
-    // The growing kept triangles near its running plane: on a surface
-    // rougher than the point precision it picks its way between the rest,
-    // and the points it keeps can pass the RMS test only because the others
-    // were left out. Their tail gives it away: under the stated precision a
-    // point lies beyond the 4-sigma gate with odds of 6e-5.
-    std::size_t off = 0;
-    for (const auto& p : points) off += std::abs(f.plane.fit.plane().signed_distance(p)) > gate;
-    const double off_share = static_cast<double>(off) / static_cast<double>(points.size());
-    if (f.plane.problem.empty() && off_share > kMaxOffPlaneShare)
-      f.plane.problem = "orientation unknown: the surface is rougher than the point precision (" +
-                        format_fixed(100 * off_share, 0) + " % of its points more than " +
-                        format_fixed(options.planarity_in_sigmas, 1) +
-                        " point sigmas off its plane)";
-    if (f.plane.problem.empty() && sigma_deg > settings.max_plane_sigma_deg)
-      f.plane.problem = "orientation unknown: too little relief for a reliable plane (" +
-                        format_fixed(sigma_deg, 1) + " deg)";
-    if (!f.plane.problem.empty()) return f;
-    f.plane.known = true;
-    double area = 0;
-    Eigen::Vector3d sum_centre = Eigen::Vector3d::Zero();
-    for (int t : tris) {
-      area += graph.areas[t];
-      sum_centre += graph.areas[t] * graph.centres[t];
-    }
-    f.area = area;
-    f.centroid = sum_centre / area;
-    f.triangles = tris.size();
-    f.vertices = points.size();
-    f.planarity_margin_sigmas =
-        options.planarity_in_sigmas - f.plane.fit.rms_off_plane() / settings.point_sigma;
-    f.orientation_margin_deg = settings.max_plane_sigma_deg - sigma_deg;
-    f.marginal = f.planarity_margin_sigmas < 1.0 || f.orientation_margin_deg < sigma_deg;
-    f.mesh_triangles = tris;
-    return f;
-  };
-
-  // Dense matching's terraces (issue 38): on a face seen nearly square,
-  // sub-pixel disparities lock to whole pixels, and a plane comes out as
-  // strips a few pixels wide, each tilted a few degrees the same way, with a
-  // step between them where the normals turn further than the tolerance:
-  // the growing stops at every step and gives one facet per strip, tilted
-  // as the strips are. Facets within kTerraceHops triangles of each other
-  // (across the steps) whose normals agree within the tolerance and whose
-  // points together pass the planarity tests are one plane: merged (most
-  // alike first), then the steps between them, whose corners lie within
-  // the gate of the merged plane, taken in. The merged plane is the
-  // terraces' mean: the true plane.
-  const auto merge_terraces = [&](std::vector<Facet>& found, std::vector<int>& owner) {
-    const int n = static_cast<int>(found.size());
-    if (n < 2) return;
-    std::vector<std::vector<int>> near(static_cast<std::size_t>(n));
-    std::vector<int> stamp(graph.size(), -1), depth(graph.size(), 0), frontier;
-    for (int i = 0; i < n; ++i) {
-      frontier.clear();
-      for (int t : found[i].mesh_triangles) {
-        stamp[t] = i;
-        depth[t] = 0;
-        frontier.push_back(t);
-      }
-      for (std::size_t head = 0; head < frontier.size(); ++head) {
-        const int t = frontier[head];
-        for (const int k : graph.neighbours[t]) {
-          if (k < 0 || stamp[k] == i || !graph.usable(static_cast<std::size_t>(k))) continue;
-          stamp[k] = i;
-          if (owner[k] >= 0) {
-            if (owner[k] > i) near[i].push_back(owner[k]);
-          } else if (depth[t] < kTerraceHops) {
-            depth[k] = depth[t] + 1;
-            frontier.push_back(k);
-          }
-        }
-      }
-      std::sort(near[i].begin(), near[i].end());
-      near[i].erase(std::unique(near[i].begin(), near[i].end()), near[i].end());
-    }
-    struct Pair {
-      double angle;
-      int a, b;
-    };
-    std::vector<Pair> pairs;
-    for (int i = 0; i < n; ++i)
-      for (int j : near[i]) {
-        const double a = std::acos(std::clamp(
-            std::abs(found[i].plane.fit.normal.dot(found[j].plane.fit.normal)), 0.0, 1.0));
-        if (a <= angle) pairs.push_back({a, i, j});
-      }
-    if (pairs.empty()) return;
-    std::stable_sort(pairs.begin(), pairs.end(),
-                     [](const Pair& x, const Pair& y) { return x.angle < y.angle; });
-    std::vector<int> root(static_cast<std::size_t>(n));
-    std::iota(root.begin(), root.end(), 0);
-    std::vector<std::vector<int>> group(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) group[i] = found[i].mesh_triangles;
-    // A merged group's measure: that of its last merge, which measured
-    // exactly the group's triangles in their order (kept, not measured
-    // again below).
-    std::vector<Facet> merged(static_cast<std::size_t>(n));
-    const auto find = [&](int x) {
-      while (root[x] != x) x = root[x] = root[root[x]];
-      return x;
-    };
-    bool merged_any = false;
-    for (const Pair& p : pairs) {
-      const int ra = find(p.a), rb = find(p.b);
-      if (ra == rb) continue;
-      std::vector<int> both = group[ra];
-      both.insert(both.end(), group[rb].begin(), group[rb].end());
-      Facet joined = measured(both);
-      if (!joined.plane.problem.empty()) continue;
-      root[rb] = ra;
-      merged[ra] = std::move(joined);
-      group[ra] = std::move(both);
-      group[rb].clear();
-      merged_any = true;
-    }
-    if (!merged_any) return;
-    std::vector<Facet> kept;
-    for (int i = 0; i < n; ++i) {
-      if (find(i) != i) continue;
-      if (group[i].size() == found[i].mesh_triangles.size()) {
-        kept.push_back(std::move(found[i]));
-        continue;
-      }
-      Facet f = std::move(merged[i]);
-      // The steps: triangles of no facet next to the merged plane's, all
-      // three corners within the gate of it.
-      const Eigen::Vector3d normal = f.plane.fit.normal;
-      const Eigen::Vector3d centre = f.plane.fit.centroid;
-      std::vector<int> tris = group[i];
-      for (int t : tris) owner[t] = -3;  // in this group
-      for (std::size_t head = 0; head < tris.size(); ++head)
-        for (const int k : graph.neighbours[tris[head]]) {
-          if (k < 0 || owner[k] >= 0 || owner[k] == -3 ||
-              !graph.usable(static_cast<std::size_t>(k)))
-            continue;
-          bool within = true;
-          for (const int v : mesh.triangles[k])
-            within = within && std::abs(normal.dot(mesh.vertices[v] - centre)) <= gate;
-          if (!within) continue;
-          owner[k] = -3;
-          tris.push_back(k);
-        }
-      Facet with_steps = measured(tris);
-      kept.push_back(with_steps.plane.problem.empty() ? std::move(with_steps) : std::move(f));
-    }
-    found = std::move(kept);
-    for (std::size_t i = 0; i < found.size(); ++i)
-      for (int t : found[i].mesh_triangles) owner[t] = static_cast<int>(i);
-  };
-
-  for (std::size_t s = 0; s < seeds.size(); ++s) {
-    const int seed = seeds[s];
-    if ((s & 0xfff) == 0)
-      progress.step("facets: growing",
-                    static_cast<double>(done) / static_cast<double>(seeds.size()));
-    if (label[seed] != kFree) continue;
-    // The rest of the surface bends more than the tolerance at every
-    // triangle: edges, creases, noise. No facet grows from there.
-    if (bend[seed] > angle) break;
-    const int region = static_cast<int>(facets.size());
-    members.assign(1, seed);
-    queue.assign(1, seed);
-    label[seed] = region;
-    RunningPlane plane;
-    plane.add(graph.centres[seed], normals[seed], graph.areas[seed]);
-    plane.refit(gate * 10);
-    double next_refit = 3;
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const int t = queue[head];
-      for (const int k : graph.neighbours[t]) {
-        if (k < 0 || label[k] != kFree || !graph.usable(static_cast<std::size_t>(k))) continue;
-        // On the plane: all three corners within the planarity gate and
-        // the normal within twice the tolerance (a noisy normal does not
-        // keep a triangle that lies on the plane out, but one across a
-        // ridge, whose smoothed normal is bent half way, stays out).
-        // Else: its normal agrees and its centre is within the gate.
-        // Only once the region's plane is fitted (wide enough): against a
-        // plane still set by a few smoothed normals the corners' test would
-        // pick points toward that first guess.
-        // Nor where the surface creases (bending over the tolerance): the
-        // corners of a triangle across a ridge lie within the gate of both
-        // planes and would tilt the facet toward its neighbour.
-        bool on_plane =
-            plane.fitted && bend[k] <= angle && normals[k].dot(plane.mean_normal) >= cos_twice;
-        for (const int v : mesh.triangles[k])
-          on_plane = on_plane &&
-                     std::abs(plane.plane_normal.dot(mesh.vertices[v] - plane.centroid)) <= gate;
-        if (!on_plane &&
-            (normals[k].dot(plane.mean_normal) < cos_angle ||
-             std::abs(plane.plane_normal.dot(graph.centres[k] - plane.centroid)) > gate))
-          continue;
-        label[k] = region;
-        members.push_back(k);
-        queue.push_back(k);
-        plane.add(graph.centres[k], normals[k], graph.areas[k]);
-        if (static_cast<double>(members.size()) >= next_refit) {
-          // Ten times the gate across the region: its fitted tilt is then
-          // known to a few tenths of the angle tolerance.
-          plane.refit(gate * 10);
-          next_refit = std::max(next_refit + 1, next_refit * options.refit_growth);
-        }
-      }
-    }
-    done += members.size();
-    if (plane.weight < options.min_area_m2) {
-      for (int t : members) label[t] = kDropped;
-      continue;
-    }
-    Facet f = measured(members);
-    if (!f.plane.problem.empty()) {
-      for (int t : members) {
-        label[t] = kDropped;
-        rejected_in[t] = rejected_count;
-      }
-      ++rejected_count;
-      continue;
-    }
-    facets.push_back(std::move(f));
-  }
-  // The second pass (plane_led_growing.h) over what the first left: led by
-  // the distance of the points to a fitted plane against the stated point
-  // precision, it finds the planes whose single triangles' normals scatter
-  // beyond the tolerance (a face seen obliquely). A seed patch's points
-  // must lie within two point sigmas RMS of their plane: half the
-  // planarity test a facet passes at the end, so that a seed across a
-  // crease or on a rough patch is refused before it grows.
+  finder.prepare();
+  finder.grow_by_normals(seeds, progress);
   progress.step("facets: plane-led growing", 0.8);
-  {
-    std::vector<char> taken(graph.size(), 0);
-    for (std::size_t t = 0; t < graph.size(); ++t) taken[t] = label[t] >= 0;
-    PlaneLedOptions led;
-    led.gate = gate;
-    led.seed_rms = 2 * settings.point_sigma;
-    led.seed_area = options.min_area_m2;
-    led.refit_growth = options.refit_growth;
-    for (auto& region : plane_led_regions(mesh, graph, taken, seeds, led)) {
-      double area = 0;
-      for (int t : region) area += graph.areas[t];
-      if (area < options.min_area_m2) continue;
-      Facet f = measured(region);
-      if (!f.plane.problem.empty()) {
-        for (int t : region) rejected_in[t] = rejected_count;
-        ++rejected_count;
-        continue;
-      }
-      for (int t : region) label[t] = static_cast<int>(facets.size());
-      facets.push_back(std::move(f));
-    }
-  }
-  merge_terraces(facets, label);
-  // The rejected regions, and their area, as far as no facet took them.
-  {
-    std::vector<char> counted(static_cast<std::size_t>(rejected_count), 0);
-    for (std::size_t t = 0; t < graph.size(); ++t)
-      if (rejected_in[t] >= 0 && label[t] < 0) {
-        out.rejected_area += graph.areas[t];
-        counted[rejected_in[t]] = 1;
-      }
-    out.rejected_regions = static_cast<int>(std::count(counted.begin(), counted.end(), 1));
-  }
+  finder.grow_led_by_planes(seeds);
+  finder.merge_terraces();
+  finder.count_rejected(out);
   progress.step("facets: outlines", 0.95);
-  std::stable_sort(facets.begin(), facets.end(),
-                   [](const Facet& a, const Facet& b) { return a.area > b.area; });
-  for (std::size_t i = 0; i < facets.size(); ++i) {
-    Facet& f = facets[i];
-    f.id = static_cast<int>(i) + 1;
-    // Thinned to two point spacings: the outline keeps the facet's shape
-    // to the resolution of the 3D image without its lattice staircase.
-    const FacetOutline outline = facet_outline(mesh, f.mesh_triangles, 2.0 * edge);
-    f.outline = outline.outer;
-    f.holes = outline.holes;
-    out.facet_area += f.area;
-  }
-  out.facets = std::move(facets);
+  finder.outline_facets(out);
   if (out.facets.empty())
     out.notes.push_back("no planar region of at least " + format_fixed(options.min_area_m2, 2) +
                         " m2 within " + format_fixed(options.angle_tolerance_deg, 0) + " deg and " +

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/photogrammetry/matching/feature_matching.h"
 
 namespace rockface::photogrammetry {
@@ -92,41 +93,42 @@ ImageContrast measure_contrast(const cv::Mat& image) {
 
 void require_matchable_contrast(const cv::Mat& image, const std::string& which) {
   const ImageContrast c = measure_contrast(image);
+  // Grey levels to two decimals.
+  const auto grey = [](double v) { return format_fixed(v, 2); };
   std::ostringstream s;
-  s.precision(2);
-  s << std::fixed;
   if (c.darkest_grey + kBlankRange >= c.brightest_grey) {
-    s << "the image is blank, black or uniform (grey levels " << c.darkest_grey << " to "
-      << c.brightest_grey
+    s << "the image is blank, black or uniform (grey levels " << grey(c.darkest_grey) << " to "
+      << grey(c.brightest_grey)
       << "): nothing to match; the lens cap on, the shot taken in the dark, or a failed capture";
     throw InputError(which, s.str());
   }
   if (c.texture_grey < kMinMatchableTexture && c.median_grey >= kClippedImage) {
-    s << "over-exposed: half the photograph is at " << c.median_grey
-      << " grey levels or brighter, where the rock's texture is clipped (" << c.texture_grey
-      << " grey levels rms left, at least " << kMinMatchableTexture
+    s << "over-exposed: half the photograph is at " << grey(c.median_grey)
+      << " grey levels or brighter, where the rock's texture is clipped (" << grey(c.texture_grey)
+      << " grey levels rms left, at least " << grey(kMinMatchableTexture)
       << " needed): less flash or lamp on the face, or a shorter exposure";
     throw InputError(which, s.str());
   }
   if (c.texture_grey < kMinMatchableTexture && c.bright_grey < kDarkImage) {
-    s << "under-exposed: the photograph is dark (nine pixels in ten below " << c.bright_grey
-      << " grey levels) and the face's texture only " << c.texture_grey
-      << " grey levels rms, at least " << kMinMatchableTexture
+    s << "under-exposed: the photograph is dark (nine pixels in ten below " << grey(c.bright_grey)
+      << " grey levels) and the face's texture only " << grey(c.texture_grey)
+      << " grey levels rms, at least " << grey(kMinMatchableTexture)
       << " needed: light the face (flash, lamps) or expose longer";
     throw InputError(which, s.str());
   }
   if (c.texture_grey < kMinMatchableTexture) {
-    s << "dust haze: the face's contrast is too low for matching: its texture is " << c.texture_grey
-      << " grey levels rms (sensor noise " << c.noise_grey << " taken out), at least "
-      << kMinMatchableTexture
+    s << "dust haze: the face's contrast is too low for matching: its texture is "
+      << grey(c.texture_grey) << " grey levels rms (sensor noise " << grey(c.noise_grey)
+      << " taken out), at least " << grey(kMinMatchableTexture)
       << " needed; dust or fog between the camera and the face, too little light on it, or a "
          "fogged lens: wait for the dust to settle or ventilate, light the face, or come closer";
     throw InputError(which, s.str());
   }
   if (c.texture_grey < kMinTextureToNoise * c.noise_grey) {
-    s << "sensor noise: the noise (" << c.noise_grey << " grey levels rms per pixel) outweighs "
-      << "the face's texture (" << c.texture_grey << " grey levels rms), a ratio of "
-      << c.texture_grey / c.noise_grey << " where at least " << kMinTextureToNoise
+    s << "sensor noise: the noise (" << grey(c.noise_grey)
+      << " grey levels rms per pixel) outweighs "
+      << "the face's texture (" << grey(c.texture_grey) << " grey levels rms), a ratio of "
+      << grey(c.texture_grey / c.noise_grey) << " where at least " << grey(kMinTextureToNoise)
       << " is needed; a lower ISO with a longer exposure on a tripod, or more light on the face";
     throw InputError(which, s.str());
   }

@@ -512,8 +512,6 @@ std::string why_targets_missed(const cv::Mat& image, const CameraIntrinsics& cam
   std::sort(missed.begin(), missed.end(),
             [](const auto& a, const auto& b) { return a.centre_px.y() > b.centre_px.y(); });
   std::ostringstream s;
-  s.precision(0);
-  s << std::fixed;
   for (std::size_t k = 0; k < missed.size() && k < 2; ++k) {
     const TargetObservation& t = missed[k];
     std::string name = "target";

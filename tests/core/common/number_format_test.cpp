@@ -6,9 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace rockface {
 namespace {
@@ -36,6 +38,14 @@ TEST(NumberFormat, RoundTripReadsBackAsTheSameDouble) {
   EXPECT_EQ(format_round_trip(1234.5, " m"), "1234.5 m");
   for (const double v : {0.1 + 0.2, 1.0 / 3, 5211870.123456789, -7.5e-7, 6.02e23, 1e-300})
     EXPECT_EQ(std::stod(format_round_trip(v)), v) << format_round_trip(v);
+}
+
+TEST(NumberFormat, ZeroPaddedToAWidth) {
+  EXPECT_EQ(format_zero_padded(45, 5, 1, "°"), "045.0°");
+  EXPECT_EQ(format_zero_padded(7.4, 2, 0), "07");
+  EXPECT_EQ(format_zero_padded(359.94, 5, 1), "359.9");
+  EXPECT_EQ(format_zero_padded(1234.5, 3, 1), "1234.5") << "a longer value is never cut";
+  EXPECT_EQ(format_zero_padded(-2.5, 6, 1), "-002.5") << "the sign counts in the width";
 }
 
 TEST(NumberFormat, TheUnitFollowsAsGiven) {
@@ -76,6 +86,13 @@ TEST(NumberFormat, SameTextAsTheStreams) {
       general.precision(p);
       general << v;
       EXPECT_EQ(format_significant(v, p), general.str()) << v << " to " << p << " digits";
+    }
+  // Bearings and dip directions were written "%05.1f", "%03.0f", "%02.0f".
+  for (const double v : values)
+    for (const auto& [width, decimals] : {std::pair{5, 1}, std::pair{3, 0}, std::pair{2, 0}}) {
+      char printed[512];
+      std::snprintf(printed, sizeof printed, "%0*.*f", width, decimals, v);
+      EXPECT_EQ(format_zero_padded(v, width, decimals), printed) << v << " in " << width;
     }
   // tunnel_files wrote its tables with a stream of precision 17.
   for (const double v : values) {

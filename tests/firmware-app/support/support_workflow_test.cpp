@@ -27,6 +27,8 @@
 #include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
 #include "storage/tunnel/tunnel_files.h"
+#include "tests/support/run_in_dir.h"
+#include "tests/support/support_form.h"
 #include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 
@@ -39,26 +41,15 @@ using nlohmann::json;
 const fs::path kSamples = fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples";
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("rockface-support-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  rockface::test::remove_when_passed(d);
-  return d;
+  return test::fresh_test_dir("rockface-support-" + name);
 }
 
 int run(const std::string& args, const fs::path& dir) {
-  const std::string cmd = std::string(ROCKFACE_BINARY_DIR) + "/rockface " + args + " > " +
-                          (dir / "out.txt").string() + " 2> " + (dir / "err.txt").string();
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return test::run_rockface_in(args, dir);
 }
 
 std::string read(const fs::path& f) {
-  std::ifstream in(f);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return test::read_text(f);
 }
 
 // Classes by RMR only (every RMR has one), lightest first, with pattern
@@ -113,17 +104,8 @@ storage::RecordId make_project(const fs::path& project, bool q_complete) {
   p.chainage = 105;
   p.note = "typed";
   store.save_visit_placement(p);
-  rockmass::ClassificationForm f;
-  f.ucs_mpa = 80;
-  f.condition_rating = 15;
-  f.groundwater = rockmass::Groundwater::damp;
-  f.rqd_percent = 70;
-  f.spacing_m = 0.5;
-  if (q_complete) f.jr = 1.5;
-  f.ja = 2;
-  f.jw = 1;
-  f.srf = 1;
-  f.esr = 1.3;
+  rockmass::ClassificationForm f = test::sample_support_form();
+  if (!q_complete) f.jr.reset();  // Q's Jr left open
   store.save_rockmass_form(visit, f);
   return visit;
 }

@@ -26,6 +26,7 @@
 #include "storage/project/project_store.h"
 #include "storage/scene/scene.h"
 #include "storage/tunnel/tunnel_files.h"
+#include "tests/support/run_in_dir.h"
 #include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 
@@ -36,26 +37,16 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("rockface-wedges-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  rockface::test::remove_when_passed(d);
-  return d;
+  return test::fresh_test_dir("rockface-wedges-" + name);
 }
 
+// `rockface wedges ARGS`.
 int run(const std::string& args, const fs::path& dir) {
-  const std::string cmd = std::string(ROCKFACE_BINARY_DIR) + "/rockface wedges " + args + " > " +
-                          (dir / "out.txt").string() + " 2> " + (dir / "err.txt").string();
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return test::run_rockface_in("wedges " + args, dir);
 }
 
 std::string read(const fs::path& f) {
-  std::ifstream in(f);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return test::read_text(f);
 }
 
 json read_json(const fs::path& f) {

@@ -24,6 +24,7 @@
 #include "tests/support/cli_run.h"
 #include "tests/support/pdf_word_boxes.h"
 #include "tests/support/test_paths.h"
+#include "tests/support/tunnel_drive_scene.h"
 
 namespace {
 
@@ -139,16 +140,8 @@ TEST_F(ReportLayout, TheDemoReportReadsAsPrinted) {
 TEST_F(ReportLayout, TheTunnelDriveReportReadsAsPrinted) {
   // The sample's round, its tunnel files by absolute path (the scene is
   // written here), at 900 x 600 with the same field of view to be quick.
-  std::ifstream in(kSamples / "tunnel-drive.scene.json");
-  nlohmann::json s = nlohmann::json::parse(in);
-  s["tunnel"]["alignment"] = (kSamples / "tunnel-drive.alignment.csv").string();
-  s["tunnel"]["profile"] = (kSamples / "tunnel-drive.profile.json").string();
-  auto& cam = s["imaging"]["camera"];
-  cam["width"] = 900;
-  cam["height"] = 600;
-  cam["fx"] = cam["fy"] = 600.0;
-  cam["cx"] = 449.5;
-  cam["cy"] = 299.5;
+  nlohmann::json s = rockface::test::tunnel_drive_scene();
+  rockface::test::at_900_by_600(s);
   const fs::path scene = dir_ / "drive.scene.json", project = dir_ / "drive.rockface";
   std::ofstream(scene) << s.dump(2);
   const auto replay =

@@ -22,9 +22,9 @@
 #include "core/common/progress.h"
 #include "storage/office/sync_push.h"
 #include "tests/integration/office_web/office_site.h"
-#include "tests/integration/office_web/web_driver.h"
 #include "tests/storage/office/office_environment.h"
 #include "tests/storage/office/tablet_projects.h"
+#include "tests/support/web_driver.h"
 
 namespace rockface::office_web_test {
 namespace {

@@ -26,8 +26,8 @@
 #include "firmware-app/records/visit_field_report.h"
 #include "storage/project/project_store.h"
 #include "tests/integration/office_web/office_site.h"
-#include "tests/integration/office_web/web_driver.h"
 #include "tests/support/test_paths.h"
+#include "tests/support/web_driver.h"
 
 namespace rockface::office_web_test {
 namespace {

@@ -26,6 +26,7 @@
 #include "storage/project/project_store.h"
 #include "storage/scene/scene.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/tunnel_drive_scene.h"
 
 namespace rockface::app {
 namespace {
@@ -43,16 +44,6 @@ struct ScannedRound {
   std::string import_out;
 };
 
-// The sample heading's scene with its files' paths made absolute.
-json sample_scene() {
-  const fs::path samples = fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples";
-  std::ifstream in(samples / "tunnel-drive.scene.json");
-  json s = json::parse(in);
-  s["tunnel"]["alignment"] = (samples / "tunnel-drive.alignment.csv").string();
-  s["tunnel"]["profile"] = (samples / "tunnel-drive.profile.json").string();
-  return s;
-}
-
 // The scan: the round's walls from 2 m behind the rendered walls' start to
 // the face, every kSpacingM of chainage and outline (jittered by a quarter
 // spacing), displaced by the scene's breaks along the outline's normal; the
@@ -65,7 +56,7 @@ ScannedRound scan_round() {
   fs::remove_all(r.dir);
   fs::create_directories(r.dir);
   r.scene_file = r.dir / "heading.scene.json";
-  const json scene_json = sample_scene();
+  const json scene_json = test::tunnel_drive_scene();
   std::ofstream(r.scene_file) << scene_json.dump(2);
   const storage::Scene scene = storage::load_scene(r.scene_file.string());
   r.spec = rendered_tunnel_spec(*scene.tunnel->render);

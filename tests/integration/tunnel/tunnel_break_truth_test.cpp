@@ -29,21 +29,13 @@
 #include "storage/project/project_store.h"
 #include "storage/scene/scene.h"
 #include "tests/support/test_paths.h"
+#include "tests/support/tunnel_drive_scene.h"
 
 namespace rockface::app {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-json sample_scene() {
-  const fs::path samples = fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples";
-  std::ifstream in(samples / "tunnel-drive.scene.json");
-  json s = json::parse(in);
-  s["tunnel"]["alignment"] = (samples / "tunnel-drive.alignment.csv").string();
-  s["tunnel"]["profile"] = (samples / "tunnel-drive.profile.json").string();
-  return s;
-}
 
 // The second heading: the same alignment (straight and level, chainage c at
 // northing 5211800 + c, the axis at 410 m), a D-shaped profile 5.0 m wide
@@ -53,7 +45,7 @@ json sample_scene() {
 // the drive direction): right invert 0-2.5, right wall 2.5-5.0, crown arc
 // 5.0-12.854, left wall 12.854-15.354, left invert 15.354-17.854.
 json d_heading_scene() {
-  json s = sample_scene();
+  json s = test::tunnel_drive_scene();
   s["name"] = "second heading: D profile, face at chainage 62";
   s["tunnel"]["profile"] = {
       {"format", "rockface-tunnel-profile/1"},
@@ -272,7 +264,7 @@ class TunnelBreakTruth : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("rockface-break-truth-" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    sample_ = new Heading(replay_heading(dir_, "sample", sample_scene()));
+    sample_ = new Heading(replay_heading(dir_, "sample", test::tunnel_drive_scene()));
     d_heading_ = new Heading(replay_heading(dir_, "d-heading", d_heading_scene()));
   }
   static void TearDownTestSuite() {

@@ -26,6 +26,7 @@
 #include "storage/project/project_store.h"
 #include "storage/scene/scene.h"
 #include "tests/support/test_paths.h"
+#include "tests/support/tunnel_drive_scene.h"
 
 namespace rockface::app {
 namespace {
@@ -127,12 +128,8 @@ json face_picks(const storage::Scene& scene) {
 }
 
 json visit_scene(int v) {
-  const fs::path samples = fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples";
-  std::ifstream in(samples / "tunnel-drive.scene.json");
-  json s = json::parse(in);
+  json s = test::tunnel_drive_scene();
   const double face = 102.0 + 2.5 * v;
-  s["tunnel"]["alignment"] = (samples / "tunnel-drive.alignment.csv").string();
-  s["tunnel"]["profile"] = (samples / "tunnel-drive.profile.json").string();
   s["tunnel"]["placement"] = {{"chainage", face - 1.4}, {"offset", 1.3}, {"height", -1.05}};
   s["tunnel"]["render"] = {{"from_chainage", face - 12},
                            {"face_chainage", face},

@@ -24,6 +24,7 @@
 #include "storage/project/project_store.h"
 #include "storage/scene/scene.h"
 #include "tests/support/test_paths.h"
+#include "tests/support/tunnel_drive_scene.h"
 
 namespace rockface::app {
 namespace {
@@ -35,17 +36,8 @@ using nlohmann::json;
 // absolute path; `edit` changes it further.
 fs::path write_scene(const fs::path& dir, const std::string& name,
                      const std::function<void(json&)>& edit = {}) {
-  const fs::path samples = fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples";
-  std::ifstream in(samples / "tunnel-drive.scene.json");
-  json s = json::parse(in);
-  s["tunnel"]["alignment"] = (samples / "tunnel-drive.alignment.csv").string();
-  s["tunnel"]["profile"] = (samples / "tunnel-drive.profile.json").string();
-  auto& cam = s["imaging"]["camera"];
-  cam["width"] = 900;
-  cam["height"] = 600;
-  cam["fx"] = cam["fy"] = 600.0;
-  cam["cx"] = 449.5;
-  cam["cy"] = 299.5;
+  json s = test::tunnel_drive_scene();
+  test::at_900_by_600(s);
   if (edit) edit(s);
   const fs::path file = dir / (name + ".scene.json");
   std::ofstream(file) << s.dump(2);

@@ -13,6 +13,7 @@
 #include "core/common/error.h"
 #include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/support_form.h"
 #include "tests/ui/drive_project.h"
 #include "tests/ui/drive_tablet.h"
 #include "ui/app/app_state.h"
@@ -42,19 +43,9 @@ TEST(SupportView, AClassChosenOnTheTabletIsStoredAndReadBack) {
     storage::ProjectStore store = storage::ProjectStore::open(project);
     visit = *store.latest_visit();
     // A complete form (RMR89 and Q both known).
-    rockmass::ClassificationForm f;
-    f.ucs_mpa = 80;
-    f.condition_rating = 15;
-    f.groundwater = rockmass::Groundwater::damp;
-    f.rqd_percent = 70;
-    f.spacing_m = 0.5;
+    rockmass::ClassificationForm f = test::sample_support_form();
     // The joints form no sets to derive it from: the geologist's reading.
     f.orientation = rockmass::OrientationClass::fair;
-    f.jr = 1.5;
-    f.ja = 2;
-    f.jw = 1;
-    f.srf = 1;
-    f.esr = 1.3;
     store.save_rockmass_form(visit, f);
   }
   const fs::path classes = test::ui_test_dir() / "support-classes.json";
@@ -75,9 +66,7 @@ TEST(SupportView, AClassChosenOnTheTabletIsStoredAndReadBack) {
   test::DriveTablet tablet(project);
   ui::HeadlessSession& s = tablet.session;
   ui::AppState& app = s.state();
-  s.tap("Blocks");
-  s.tap("Support view");
-  s.settle();
+  tablet.show("Blocks", "Support view");
   const auto& v = app.blocks.support;
   ASSERT_TRUE(v.proposals) << v.message;
   // The three proposals side by side, the proposed class named.

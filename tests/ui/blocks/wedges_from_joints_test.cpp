@@ -97,10 +97,7 @@ TEST(WedgesFromJoints, TheTabletsWedgesViewShowsThem) {
   test::DriveTablet tablet(test::drive_project());
   ui::HeadlessSession& s = tablet.session;
   ui::AppState& app = s.state();
-  s.tap("Blocks");
-  s.tap("Wedges view");
-  s.tap("Find wedges");
-  s.settle();
+  tablet.find_wedges();
   const auto& w = app.blocks.wedges;
   ASSERT_TRUE(w.table) << w.message;
   ASSERT_EQ(w.table->rows.size(), truth.wedges.size());

@@ -37,10 +37,7 @@ TEST(WedgesSupportForm, TypedSupportGivesTheFactorsOfSafetyTheCommandLineGives) 
   test::DriveTablet tablet(test::drive_project());
   ui::HeadlessSession& s = tablet.session;
   ui::AppState& app = s.state();
-  s.tap("Blocks");
-  s.tap("Wedges view");
-  s.tap("Find wedges");
-  s.settle();
+  tablet.find_wedges();
   const auto& w = app.blocks.wedges;
   ASSERT_TRUE(w.table) << w.message;
   const std::size_t fos_col = column(*w.table, "Factor of safety");

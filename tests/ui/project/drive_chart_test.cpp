@@ -20,9 +20,7 @@ TEST(DriveChart, TheDriveSamplesJointsArePlottedAlongTheChainage) {
   test::DriveTablet tablet(test::drive_project());
   ui::HeadlessSession& s = tablet.session;
   ui::AppState& app = s.state();
-  s.tap("Project");
-  s.tap("Sets along the drive");
-  s.settle();
+  tablet.show("Project", "Sets along the drive");
   const auto& t = app.project.tunnel;
   ASSERT_TRUE(t.drive) << (t.lines.empty() ? "" : t.lines.front());
   EXPECT_EQ(t.drive->visits, 1);

@@ -24,9 +24,7 @@ TEST(ExcavationView, TheRoundsDevelopedViewWithItsLegendAndFiguresInUnits) {
   test::DriveTablet tablet(test::drive_project());
   ui::HeadlessSession& s = tablet.session;
   ui::AppState& app = s.state();
-  s.tap("Project");
-  s.tap("Excavation of this round");
-  s.settle();
+  tablet.show("Project", "Excavation of this round");
   const auto& t = app.project.tunnel;
   ASSERT_TRUE(t.excavation) << (t.lines.empty() ? "" : t.lines.front());
   ASSERT_TRUE(t.excavation->compared) << t.excavation->message;

@@ -1,4 +1,4 @@
-#include "tests/integration/office_web/web_driver.h"
+#include "tests/support/web_driver.h"
 
 #include <netinet/in.h>
 #include <signal.h>
