@@ -14,7 +14,10 @@
 //   3. `rockface measure P` with taps where the face's joint traces run,
 //      the Blocks screen's Run analysis, `rockface report`.
 // Checked against the scene's truth (the renderer's record and the scene's
-// joints), never against what the route computes.
+// joints), never against what the route computes. The tablet runs in this
+// process (as capture_screen_camera_fault_test.cpp), not as `rockface ui
+// --script`: the card takes the right photograph between the two shots,
+// and the compass line's ends are tapped where the photograph is drawn.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -73,8 +76,8 @@ json small_demo_scene() {
 }
 
 // What a D750 writes of itself in each photograph (the fields rockface
-// reads); a 50 mm lens gives the demo's 1786 px focal length on its 35.9 mm
-// wide sensor at 1200 px.
+// reads). The focal setting only names the calibration the photographs
+// take (the views' and the pair's the same): the lens is the render's.
 std::vector<uint8_t> as_d750_jpeg(const cv::Mat& image) {
   std::vector<uint8_t> jpeg;
   cv::imencode(".jpg", image, jpeg, {cv::IMWRITE_JPEG_QUALITY, 95});
@@ -277,8 +280,9 @@ TEST(VirtualD750PairToReport, APairShotOnTheTabletGivesAScaledOrientedVisitItsBl
     s.tap("Connect camera");
     s.settle();
     ASSERT_TRUE(app.capture.camera) << app.capture.connection;
-    // The pole's length as the geologist set it for the project (the demo's
-    // pole: 2 m between its targets), the visit's preset the default.
+    // The pole's length on its slider: the demo's pole, 2 m between its
+    // targets, is the slider's first value (it takes no typed length); the
+    // visit's preset the default.
     EXPECT_EQ(app.capture.range_pole_m, truth.at("range_pole").at("length").get<float>());
     EXPECT_EQ(app.capture.preset, Preset::standard);
     s.tap("Shoot left");
