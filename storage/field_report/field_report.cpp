@@ -185,38 +185,42 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
   const auto captures = store.list_captures(visit_id);
   bool first_model = true;
   for (const auto& c : captures) {
-    for (const auto& summary : store.list_models(c.id)) {
-      const Model m = store.load_model(summary.id);
-      if (first_model) {
-        first_model = false;
-        r.preset = m.preset;
-        const photogrammetry::Similarity s = similarity_of(m.registration);
-        r.model_scale = s.scale;
-        r.model_rotation = s.R;
-        r.model_translation = s.t;
-        read_accuracy(read_model_registration(m.registration), r.accuracy);
-        const ImageBlob left = store.load_capture_image(c.id, "left");
-        r.photograph = cv::imdecode(left.bytes, cv::IMREAD_COLOR);
-        if (c.calibration_id) {
-          const Calibration cal = store.load_calibration(*c.calibration_id);
-          r.intrinsics = cal.intrinsics;
-          r.calibration_known = true;
-          r.calibration_method = cal.method;
-          r.lens = cal.intrinsics.lens;
-          for (const auto& b : store.list_camera_bodies())
-            if (cal.body_id && b.id == *cal.body_id) r.camera_body = b.make + " " + b.model;
-        }
-        // The body that took the pair, as the capture recorded it (its
-        // serial from USB where the photograph's EXIF has none).
-        if (auto taken = recorded_camera(store.load_capture(c.id))) {
-          taken->lens.clear();
-          taken->focal_mm.reset();
-          taken->width = taken->height = 0;
-          r.camera_body = taken->described();
-        }
-      } else {
-        read_face_registration(read_model_registration(m.registration), r.accuracy);
+    // Each pair's newest 3D image (as list_visit_models): north given after
+    // the reconstruction (the tablet's compass line, `rockface orient`)
+    // stores the visit's models turned anew, the first one unturned (issue
+    // 42: a visit oriented on the tablet was reported "north: none").
+    const std::vector<ModelSummary> models = store.list_models(c.id);
+    if (models.empty()) continue;
+    const Model m = store.load_model(models.back().id);
+    if (first_model) {
+      first_model = false;
+      r.preset = m.preset;
+      const photogrammetry::Similarity s = similarity_of(m.registration);
+      r.model_scale = s.scale;
+      r.model_rotation = s.R;
+      r.model_translation = s.t;
+      read_accuracy(read_model_registration(m.registration), r.accuracy);
+      const ImageBlob left = store.load_capture_image(c.id, "left");
+      r.photograph = cv::imdecode(left.bytes, cv::IMREAD_COLOR);
+      if (c.calibration_id) {
+        const Calibration cal = store.load_calibration(*c.calibration_id);
+        r.intrinsics = cal.intrinsics;
+        r.calibration_known = true;
+        r.calibration_method = cal.method;
+        r.lens = cal.intrinsics.lens;
+        for (const auto& b : store.list_camera_bodies())
+          if (cal.body_id && b.id == *cal.body_id) r.camera_body = b.make + " " + b.model;
       }
+      // The body that took the pair, as the capture recorded it (its
+      // serial from USB where the photograph's EXIF has none).
+      if (auto taken = recorded_camera(store.load_capture(c.id))) {
+        taken->lens.clear();
+        taken->focal_mm.reset();
+        taken->width = taken->height = 0;
+        r.camera_body = taken->described();
+      }
+    } else {
+      read_face_registration(read_model_registration(m.registration), r.accuracy);
     }
   }
   // The traces as the analysis takes them: the pieces of one trace stored
