@@ -15,16 +15,22 @@
 #include "camera/camera_error.h"
 #include "camera/capture_guidance.h"
 #include "camera/exif.h"
+#include "core/common/number_format.h"
 #include "storage/project/calibration_library.h"
 #include "storage/project/project_store.h"
 #include "ui/app/screens.h"
 #include "ui/widgets/format.h"
+#include "ui/widgets/keypad.h"
 #include "ui/widgets/widgets_controls.h"
 #include "ui/widgets/widgets_text.h"
 
 namespace rockface::ui {
 
 namespace {
+
+// The range pole's targets: from a short pole's 0.3 m to a long one's 10 m
+// (the store's last length is taken back up to 50 m: tablet_app.cpp).
+constexpr double kMinPoleM = 0.3, kMaxPoleM = 10.0;
 
 // The settings a stereo pair depends on, by libgphoto2 widget name.
 constexpr const char* kKeySettings[] = {"focallength", "focusmode", "f-number",
@@ -269,14 +275,43 @@ void draw_guidance(AppState& app) {
          " between the shots (1/8 to 1/5 of the distance).");
   bullet("Same focal length, focus and aperture for both shots; no flash.");
   bullet("The range pole (both targets) in view of both shots.");
-  label("Range pole: distance between its target centres");
-  slider(app.targets, "range pole", &c.range_pole_m, 0.5f, 5, "%.2f m",
-         std::min(400 * s, ImGui::GetContentRegionAvail().x));
+  draw_pole_length(app);
   label("3D image");
   const std::vector<std::string> presets{"fast: a first look", "standard", "precise"};
   const std::size_t at = c.preset == Preset::fast ? 0 : c.preset == Preset::standard ? 1 : 2;
   if (const auto chosen = choice(app.targets, "Preset", presets[at], presets, at))
     c.preset = *chosen == 0 ? Preset::fast : *chosen == 1 ? Preset::standard : Preset::precise;
+}
+
+// The range pole's length, typed in millimetres as its makers mark it
+// (a slider could not say 2.000 m exactly; issue 42), kept for the
+// project's next pairs.
+void draw_pole_length(AppState& app) {
+  CaptureState& c = app.capture;
+  field("Range pole", format_fixed(c.range_pole_m, 3, " m") + " between its target centres");
+  if (!c.typing_pole) {
+    if (app.targets.button("Type pole length")) {
+      c.typing_pole = true;
+      c.pole_mm.clear();
+    }
+    return;
+  }
+  label(c.pole_mm.text().empty() ? std::string("Type the length in millimetres")
+                                 : c.pole_mm.text() + " mm");
+  if (const auto k = draw_keypad(app.targets)) c.pole_mm.key(*k);
+  const double m = c.pole_mm.value() / 1000;
+  const bool typed = !c.pole_mm.text().empty();
+  const bool fits = m >= kMinPoleM && m <= kMaxPoleM;
+  if (typed && !fits)
+    paragraph("A range pole of " + format_fixed(m, 3, " m") + "? Its targets are " +
+              format_fixed(kMinPoleM, 1, " m") + " to " + format_fixed(kMaxPoleM, 0, " m") +
+              " apart: type the length in millimetres (2 m is 2000).");
+  if (app.targets.button("Set pole length", 0, typed && fits)) {
+    c.range_pole_m = static_cast<float>(m);
+    c.typing_pole = false;
+  }
+  ImGui::SameLine();
+  if (app.targets.button_in_row("Cancel pole length")) c.typing_pole = false;
 }
 
 // The camera and the shots: what the geologist taps at the face, first.

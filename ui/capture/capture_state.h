@@ -10,6 +10,7 @@
 
 #include "camera/camera.h"
 #include "core/common/preset.h"
+#include "ui/widgets/keypad.h"
 
 namespace rockface::ui {
 
@@ -21,8 +22,11 @@ struct CaptureState {
   std::vector<std::string> guidance;
   float distance_m = 10;  // to the face, for the base length hint
   // Distance between the pole's target centres: typed once per project
-  // (AppState::open_project takes the project's last), issue 42.
+  // (AppState::open_project takes the project's last), issue 42, in
+  // millimetres on the keypad while `typing_pole`.
   float range_pole_m = 2.0f;
+  bool typing_pole = false;
+  TypedNumber pole_mm{6};
   // The visit's reconstruction preset: standard unless the geologist wants
   // a fast first look (issue 42: the tablet always took fast).
   Preset preset = Preset::standard;

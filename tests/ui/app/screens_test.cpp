@@ -108,6 +108,28 @@ TEST(UiScreens, EachScreenRendersWithTheDemoProjectLoaded) {
   EXPECT_GT(drawn, 0.2 * (b.x - a.x) * (b.y - a.y));
 }
 
+// Issue 42: the range pole's length is typed (in millimetres, as the pole
+// is marked), not dragged on a slider that could not say 1.500 m; a length
+// no pole has is not taken, and says why.
+TEST(UiScreens, TheRangePolesLengthIsTypedInMillimetres) {
+  auto s = open_session(demo_project());
+  s->tap("Capture");
+  s->tap("Type pole length");
+  for (const char* key : {"1", "5", "0", "0"}) s->tap(key);
+  s->tap("Set pole length");
+  EXPECT_FLOAT_EQ(s->state().capture.range_pole_m, 1.5f);
+  EXPECT_FALSE(s->state().capture.typing_pole);
+
+  s->tap("Type pole length");
+  for (const char* key : {"5", "0"}) s->tap(key);  // 50 mm: a pole's metres typed as mm?
+  s->screenshot();
+  const auto set = s->state().targets.find("Set pole length");
+  ASSERT_TRUE(set);
+  EXPECT_FALSE(set->enabled) << "a 5 cm pole was offered to set";
+  s->tap("Cancel pole length");
+  EXPECT_FLOAT_EQ(s->state().capture.range_pole_m, 1.5f) << "a cancelled entry changed the length";
+}
+
 TEST(UiScreens, TheModelIsDrawnWhereTheOverlaysProjectIt) {
   // The GLES renderer and the overlays (targets, traces, blocks) use the
   // same camera: the rendered silhouette's bounding box is the box of the
