@@ -18,6 +18,12 @@ namespace rockface::blocks {
 
 namespace {
 
+// Planes whose least-squares point lies within this (x size) of each meet
+// there to rounding (~1e-15 relative per operation, a few operations): a
+// survey's snap leaves them as given, so exact input gives the block it
+// always gave.
+constexpr double kMeetToRoundingRel = 1e-12;
+
 // Determinant of three unit normals below this: the planes share a direction
 // to working precision and meet in no single point.
 constexpr double kSingularTriple = 1e-15;
@@ -111,14 +117,15 @@ std::vector<Eigen::Vector3d> corners_on_their_planes(const ClippedSolid& solid,
 
 // Planes that pass within `snap` of a corner where four or more of them
 // meet, moved (offsets b only) to pass through the least-squares point of
-// that group, when none moves by more than `snap`. corners: the feasible
+// that group, when none moves by more than `snap` and one by more than
+// `rounding`. corners: the feasible
 // intersections of three planes. A plane already moved for one corner is
 // not moved for another (the second group keeps its planes): each move
 // stays within the precision. Returns the planes moved and the largest move.
 std::pair<std::vector<int>, double> snap_shared_corners(const std::vector<Eigen::Vector3d>& n,
                                                         std::vector<double>& b,
                                                         const std::vector<Eigen::Vector3d>& corners,
-                                                        double snap) {
+                                                        double snap, double rounding) {
   const int m = static_cast<int>(n.size());
   std::vector<bool> moved(m, false);
   std::vector<std::vector<int>> groups;
@@ -149,7 +156,9 @@ std::pair<std::vector<int>, double> snap_shared_corners(const std::vector<Eigen:
     if (!y.allFinite()) continue;
     double worst = 0;
     for (int i : g) worst = std::max(worst, std::abs(n[i].dot(y) - b[i]));
-    if (worst > snap) continue;
+    // Planes that meet to rounding are one corner already (the clipping's
+    // merge): they keep their places, and the block stays what it was.
+    if (worst > snap || worst <= rounding) continue;
     for (int i : g) {
       b[i] = n[i].dot(y);
       moved[i] = true;
@@ -286,7 +295,8 @@ ConvexConstruction build_convex_block(const std::string& block_id,
   // short edges whose number and lengths follow the survey's rounding.
   const double snap = std::min(survey_precision, kSurveySnapRel * size);
   if (snap > kVertexMergeRel * size) {
-    std::tie(out.snapped, out.snap_move) = snap_shared_corners(n, b, raw, snap);
+    std::tie(out.snapped, out.snap_move) =
+        snap_shared_corners(n, b, raw, snap, kMeetToRoundingRel * size);
     if (!out.snapped.empty()) {
       raw = feasible_corners(n, b, ref, 0.0);
       if (raw.size() < 4) {
