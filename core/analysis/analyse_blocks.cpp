@@ -130,7 +130,7 @@ void analyse_scene_blocks(const AnalysisInput& scene, Report& report, Progress& 
       }
       blocks::ConvexConstruction cc;
       try {
-        cc = blocks::build_convex_block(sb.id, hs, datum);
+        cc = blocks::build_convex_block(sb.id, hs, datum, scene.analysis.survey_precision_m);
       } catch (const InputError& e) {
         throw InputError(block_where(scene, i), e.reason());
       } catch (const Cancelled&) {
@@ -142,6 +142,15 @@ void analyse_scene_blocks(const AnalysisInput& scene, Report& report, Progress& 
         // and the rest of the report is written (issue 40).
         report.blocks.push_back(unbuilt_block(std::move(rb), hs, uncertainty, e.what()));
         continue;
+      }
+      if (!cc.snapped.empty()) {
+        std::string names;
+        for (int k : cc.snapped) names += (names.empty() ? "" : ", ") + hs[k].name;
+        rb.notes.push_back("planes " + names + " of block " + sb.id +
+                           " taken through one corner: they pass within " +
+                           format_significant(cc.snap_move, 2, " m") +
+                           " of it, inside the survey's precision (analysis.survey_precision_m " +
+                           format_significant(scene.analysis.survey_precision_m, 2, " m") + ")");
       }
       for (int r : cc.redundant)
         rb.notes.push_back("plane " + hs[r].name + " bounds no face of block " + sb.id +

@@ -98,6 +98,11 @@ struct SceneAnalysis {
   double orientation_uncertainty_deg = 1.0;  // verdicts inside it are marginal
   std::optional<double> reference_mass;      // kg, scales `forces` for pyramids
   double snap_tolerance = 0.05;              // m, trace snapping
+  // m: how well the planes' points are known. Four or more planes of a
+  // block that pass within it of one corner are taken through one point
+  // (blocks::build_convex_block); the default, a micrometre, is the
+  // rounding of coordinates written to six decimals.
+  double survey_precision_m = 1e-6;
   // Equilibrium path (stability "equilibrium_path"); none: the preset's.
   std::optional<int> contact_density;       // sub-divisions per triangle edge
   std::optional<double> continuation_step;  // initial arc-length step (lambda units)

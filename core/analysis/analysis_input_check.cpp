@@ -162,6 +162,10 @@ void check_analysis(const InputCheck& c, const SceneAnalysis& a) {
   c.in(a.orientation_uncertainty_deg, p + ".orientation_uncertainty_deg", 0, 45);
   if (a.reference_mass) c.positive(*a.reference_mass, p + ".reference_mass");
   c.non_negative(a.snap_tolerance, p + ".snap_tolerance");
+  // A micrometre (coordinates to six decimals) to a metre (a point paced
+  // out): finer is below what any survey states, coarser moves planes by
+  // more than a block's joints are apart.
+  c.in(a.survey_precision_m, p + ".survey_precision_m", 1e-6, 1);
   if (a.contact_density && (*a.contact_density < 1 || *a.contact_density > 64))
     c.fail(p + ".contact_density", "must be between 1 and 64 sub-divisions per edge");
   if (a.continuation_step) c.in(*a.continuation_step, p + ".continuation_step", 1e-6, 10);

@@ -18,6 +18,12 @@ namespace rockface::blocks {
 
 namespace {
 
+// Planes whose least-squares point lies within this (x size) of each meet
+// there to rounding (~1e-15 relative per operation, a few operations): a
+// survey's snap leaves them as given, so exact input gives the block it
+// always gave.
+constexpr double kMeetToRoundingRel = 1e-12;
+
 // Determinant of three unit normals below this: the planes share a direction
 // to working precision and meet in no single point.
 constexpr double kSingularTriple = 1e-15;
@@ -109,6 +115,61 @@ std::vector<Eigen::Vector3d> corners_on_their_planes(const ClippedSolid& solid,
   return out;
 }
 
+// Planes that pass within `snap` of a corner where four or more of them
+// meet, moved (offsets b only) to pass through the least-squares point of
+// that group, when none moves by more than `snap` and one by more than
+// `rounding`. corners: the feasible
+// intersections of three planes. A plane already moved for one corner is
+// not moved for another (the second group keeps its planes): each move
+// stays within the precision. Returns the planes moved and the largest move.
+std::pair<std::vector<int>, double> snap_shared_corners(const std::vector<Eigen::Vector3d>& n,
+                                                        std::vector<double>& b,
+                                                        const std::vector<Eigen::Vector3d>& corners,
+                                                        double snap, double rounding) {
+  const int m = static_cast<int>(n.size());
+  std::vector<bool> moved(m, false);
+  std::vector<std::vector<int>> groups;
+  for (const auto& x : corners) {
+    std::vector<int> g;
+    for (int i = 0; i < m; ++i)
+      if (std::abs(n[i].dot(x) - b[i]) <= snap) g.push_back(i);
+    if (g.size() >= 4 && std::find(groups.begin(), groups.end(), g) == groups.end())
+      groups.push_back(std::move(g));
+  }
+  // The largest group first: with five or six planes through a corner,
+  // four of them may pass within `snap` of one of its triple points and all
+  // of them of another; taking the four first left the others unmoved.
+  std::stable_sort(groups.begin(), groups.end(),
+                   [](const auto& x, const auto& y) { return x.size() > y.size(); });
+  std::vector<int> out;
+  double largest = 0;
+  for (const auto& g : groups) {
+    if (std::any_of(g.begin(), g.end(), [&](int i) { return moved[i]; })) continue;
+    const int k = static_cast<int>(g.size());
+    Eigen::MatrixXd A(k, 3);
+    Eigen::VectorXd rhs(k);
+    for (int r = 0; r < k; ++r) {
+      A.row(r) = n[g[r]].transpose();
+      rhs[r] = b[g[r]];
+    }
+    const Eigen::Vector3d y = A.colPivHouseholderQr().solve(rhs);
+    if (!y.allFinite()) continue;
+    double worst = 0;
+    for (int i : g) worst = std::max(worst, std::abs(n[i].dot(y) - b[i]));
+    // Planes that meet to rounding are one corner already (the clipping's
+    // merge): they keep their places, and the block stays what it was.
+    if (worst > snap || worst <= rounding) continue;
+    for (int i : g) {
+      b[i] = n[i].dot(y);
+      moved[i] = true;
+      out.push_back(i);
+    }
+    largest = std::max(largest, worst);
+  }
+  std::sort(out.begin(), out.end());
+  return {out, largest};
+}
+
 // A face's loop turned to start at its corner of least angle about its
 // mean, in the plane basis of its outward normal.
 std::vector<int> loop_from_least_angle(const std::vector<int>& loop,
@@ -137,7 +198,7 @@ std::vector<int> loop_from_least_angle(const std::vector<int>& loop,
 
 ConvexConstruction build_convex_block(const std::string& block_id,
                                       const std::vector<HalfSpaceInput>& halfspaces,
-                                      const Eigen::Vector3d& datum) {
+                                      const Eigen::Vector3d& datum, double survey_precision) {
   const std::string where = "block " + block_id;
   ConvexConstruction out;
   const int m = static_cast<int>(halfspaces.size());
@@ -210,20 +271,40 @@ ConvexConstruction build_convex_block(const std::string& block_id,
     return out;
   }
 
-  const std::vector<Eigen::Vector3d> raw = feasible_corners(n, b, ref, 0.0);
+  std::vector<Eigen::Vector3d> raw = feasible_corners(n, b, ref, 0.0);
   if (raw.size() < 4) {
     out.outcome = ConvexOutcome::Empty;
     return out;
   }
-  Eigen::Vector3d lo = raw[0], hi = raw[0];
-  for (const auto& x : raw) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  const double size = (hi - lo).norm();
+  auto extent = [&](Eigen::Vector3d& lo, Eigen::Vector3d& hi) {
+    lo = hi = raw[0];
+    for (const auto& x : raw) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    return (hi - lo).norm();
+  };
+  Eigen::Vector3d lo, hi;
+  double size = extent(lo, hi);
   if (!(size > 0)) {
     out.outcome = ConvexOutcome::Empty;
     return out;
+  }
+  // Planes through one surveyed corner, known to the survey's precision,
+  // are taken through one point: their corners then are one vertex, not
+  // short edges whose number and lengths follow the survey's rounding.
+  const double snap = std::min(survey_precision, kSurveySnapRel * size);
+  if (snap > kVertexMergeRel * size) {
+    std::tie(out.snapped, out.snap_move) =
+        snap_shared_corners(n, b, raw, snap, kMeetToRoundingRel * size);
+    if (!out.snapped.empty()) {
+      raw = feasible_corners(n, b, ref, 0.0);
+      if (raw.size() < 4) {
+        out.outcome = ConvexOutcome::Empty;
+        return out;
+      }
+      size = extent(lo, hi);
+    }
   }
 
   // The solid itself: the box around the feasible corners cut by every
@@ -267,6 +348,10 @@ ConvexConstruction build_convex_block(const std::string& block_id,
     const double len = halfspaces[i].plane.normal.norm();
     bp.plane.normal = halfspaces[i].plane.normal / len;
     bp.plane.offset = halfspaces[i].plane.offset / len;
+    // A plane snapped through a shared corner lies where it was moved to
+    // (b is the inward offset: the side's sign turns it back).
+    if (std::binary_search(out.snapped.begin(), out.snapped.end(), i))
+      bp.plane.offset = geometry::side_sign(halfspaces[i].side) * b[i];
     bp.side = halfspaces[i].side;
     FaceLoop fl;
     fl.plane = static_cast<int>(planes.size());

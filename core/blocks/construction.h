@@ -38,20 +38,32 @@ struct ConvexConstruction {
   // Input indices (into the half-space list) of planes that bound no face:
   // they touch the block at most along an edge or at a corner, or miss it.
   std::vector<int> redundant;
+  // Input indices of planes moved (along their normals, by at most the
+  // survey's precision) so that four or more meet in one corner, and the
+  // largest move (m).
+  std::vector<int> snapped;
+  double snap_move = 0;
 };
 
 // The intersection of the half-spaces: a box around its corners cut by each
 // half-space in turn (core/blocks/convex_clipping.h), so that its faces stay
 // consistent however close its corners come. Corners where four or more
 // planes meet (exactly or within kVertexMergeRel x block size) become one
-// vertex; corners further apart are joined by a short edge. Throws
+// vertex; corners further apart are joined by a short edge.
+// survey_precision (m, 0: none) ties that to how well the planes' points
+// are known: four or more planes that pass within it of one corner of the
+// block (and within kSurveySnapRel x size) are moved along their normals,
+// each by at most that, to pass through their least-squares point, so they
+// meet in one vertex whatever the survey's rounding; `snapped` says which.
+// Planes that miss each other by more keep their places. Throws
 // InputError naming the block for fewer than 4 half-spaces or a plane with a
 // zero normal; unbounded or empty input is an outcome, not an error. Throws
 // Error naming the block in the unforeseen case that the cuts do not close
 // (callers report that block alone and go on).
 ConvexConstruction build_convex_block(const std::string& block_id,
                                       const std::vector<HalfSpaceInput>& halfspaces,
-                                      const Eigen::Vector3d& datum = Eigen::Vector3d::Zero());
+                                      const Eigen::Vector3d& datum = Eigen::Vector3d::Zero(),
+                                      double survey_precision = 0);
 
 // A face of a block given by vertices: the plane it lies on and its loop.
 struct FaceInput {

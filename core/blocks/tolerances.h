@@ -11,6 +11,12 @@ namespace rockface::blocks {
 // by the conditioning of the 3x3 solve).
 inline constexpr double kVertexMergeRel = 1e-9;
 
+// A survey's precision snaps planes through a shared corner by at most this
+// (x size): the snap joins corners a block's planes miss each other by, it
+// does not reshape a block whose size is near the survey's precision (such a
+// block keeps its planes as given).
+inline constexpr double kSurveySnapRel = 1e-3;
+
 // A vertex lies on a plane when its distance is below this (x size); slightly
 // larger than the merge distance so that a merged corner stays on every
 // plane that produced it.

@@ -121,4 +121,9 @@ inline constexpr double kWedgeTraceRel = 1e-6;
 // orientation uncertainty when that is larger, are one set: a set listed
 // twice differs by the rounding of degrees to a normal (~1e-15).
 inline constexpr double kWedgeSameSetRad = 1e-9;
+// Two sets of a wedge whose poles are closer than this (radians, 1 degree)
+// are named near-parallel when its solid cannot be made: their planes meet
+// at a grazing angle, the apex runs far out (14 m to 1.8e7 m on the issue's
+// draws, sets 0.001 degree apart) and that is why (issue 40).
+inline constexpr double kWedgeNearParallelRad = 0.017453292519943295;
 }  // namespace rockface::tunnel

@@ -205,6 +205,36 @@ SetPyramid set_pyramid(const std::vector<WedgeJointSet>& sets, const std::array<
   return p;
 }
 
+NoWedge unbuilt_wedge(const SetPyramid& p, double apex_out, const std::string& why) {
+  // The two sets of the three whose poles are closest.
+  double closest = kPi;
+  std::size_t a = 0, b = 1;
+  for (std::size_t i = 0; i < p.planes.size(); ++i)
+    for (std::size_t j = i + 1; j < p.planes.size(); ++j) {
+      const Eigen::Vector3d& ni = p.planes[i].normal;
+      const Eigen::Vector3d& nj = p.planes[j].normal;
+      const double angle = std::atan2(ni.cross(nj).norm(), std::abs(ni.dot(nj)));
+      if (angle < closest) {
+        closest = angle;
+        a = i;
+        b = j;
+      }
+    }
+  const std::string pair =
+      p.ids[a] + "/" + p.ids[b] + " at " + format_significant(closest * kDegPerRad, 3, " deg");
+  NoWedge n;
+  n.code = p.code;
+  n.sets = p.ids;
+  n.margin = 0;
+  n.unbuilt = true;
+  n.marginal = true;
+  n.reason = "marginal: apex " + format_significant(apex_out, 3, " m") + " out (" +
+             (closest < kWedgeNearParallelRad ? "near-parallel sets " + pair
+                                              : "its closest sets " + pair) +
+             "): its solid could not be built (" + why + ")";
+  return n;
+}
+
 FoundWedge face_wedge(const Context& c, const SetPyramid& p,
                       const std::vector<Eigen::Vector3d>& edges, const geometry::Cone& face_ep) {
   FoundWedge out;
@@ -265,7 +295,7 @@ FoundWedge face_wedge(const Context& c, const SetPyramid& p,
   try {
     w.block = face_wedge_block(p.code, frame, c.datum, p.planes, fit, first_free + 1000);
   } catch (const std::exception& e) {
-    out.none = NoWedge{p.code, p.ids, 0, std::string("could not be built: ") + e.what(), true};
+    out.none = unbuilt_wedge(p, fit.scale, e.what());
     return out;
   }
   const Eigen::Vector3d apex = frame.to_local(fit.offset.x(), fit.offset.y(), fit.scale);
@@ -382,7 +412,7 @@ FoundWedge perimeter_wedge(const Context& c, const SetPyramid& p,
       w.scale = longest(w.trace_lengths) / full;
     }
   } catch (const std::exception& e) {
-    out.none = NoWedge{p.code, p.ids, 0, std::string("could not be built: ") + e.what(), true};
+    out.none = unbuilt_wedge(p, section.distance(q), e.what());
     return out;
   }
   w.removable = geometry::decide(std::min(jp_margin, sector.margin), options.uncertainty);

@@ -80,6 +80,14 @@ struct FoundWedge {
   std::optional<Wedge> wedge;
   std::optional<NoWedge> none;
 };
+// A wedge found whose solid could not be made, as an honest marginal "no
+// wedge": no margin claimed, the apex's distance from the excavation
+// (apex_out, m) and the pyramid's two closest sets with their angle said
+// (near-parallel sets are the usual cause: their planes meet at a grazing
+// angle far out), and why the solid failed, in words that keep "could not
+// be built" (issue 40).
+NoWedge unbuilt_wedge(const SetPyramid& p, double apex_out, const std::string& why);
+
 // The largest wedge of a pyramid that opens toward the tunnel, on the face.
 FoundWedge face_wedge(const Context& c, const SetPyramid& p,
                       const std::vector<Eigen::Vector3d>& edges, const geometry::Cone& face_ep);

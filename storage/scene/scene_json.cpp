@@ -234,10 +234,11 @@ analysis::SceneAnalysis read_analysis(const Reader& r, const json& doc) {
   const json* an = r.optional(doc, "", "analysis");
   if (!an) return a;
   const std::string p = "analysis";
-  r.only_fields(*an, p,
-                {"pyramids", "blocks", "rotation", "remote_axis", "stability", "preset",
-                 "orientation_uncertainty_deg", "reference_mass", "snap_tolerance",
-                 "contact_density", "continuation_step", "max_steps", "lambda_max", "dynamics"});
+  r.only_fields(
+      *an, p,
+      {"pyramids", "blocks", "rotation", "remote_axis", "stability", "preset",
+       "orientation_uncertainty_deg", "reference_mass", "snap_tolerance", "survey_precision_m",
+       "contact_density", "continuation_step", "max_steps", "lambda_max", "dynamics"});
   if (auto* v = r.optional(*an, p, "pyramids")) a.pyramids = r.boolean(*v, p + ".pyramids");
   if (auto* v = r.optional(*an, p, "blocks")) a.blocks = r.boolean(*v, p + ".blocks");
   if (auto* v = r.optional(*an, p, "rotation")) a.rotation = r.boolean(*v, p + ".rotation");
@@ -266,6 +267,8 @@ analysis::SceneAnalysis read_analysis(const Reader& r, const json& doc) {
     a.reference_mass = r.number(*v, p + ".reference_mass");
   if (auto* v = r.optional(*an, p, "snap_tolerance"))
     a.snap_tolerance = r.number(*v, p + ".snap_tolerance");
+  if (auto* v = r.optional(*an, p, "survey_precision_m"))
+    a.survey_precision_m = r.number(*v, p + ".survey_precision_m");
   if (auto* v = r.optional(*an, p, "contact_density"))
     a.contact_density = r.integer(*v, p + ".contact_density");
   if (auto* v = r.optional(*an, p, "continuation_step"))

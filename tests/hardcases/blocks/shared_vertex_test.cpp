@@ -23,97 +23,18 @@
 #include "core/geometry/orientation.h"
 #include "core/kinematics/block_analysis.h"
 #include "core/kinematics/effects/effect_gravity.h"
-#include "tests/core/blocks/block_shapes.h"
+#include "tests/hardcases/blocks/surveyed_pyramid.h"
 
 namespace rockface::blocks {
 namespace {
 
-using geometry::HalfSpace;
-using test::halfspace;
-
-// A pyramid: joints through `apex` with the rock below each (their upward
-// normals point out of the block), on the free face z = 0 (rock above).
-struct Pyramid {
-  Eigen::Vector3d apex;
-  std::vector<Eigen::Vector3d> normals;  // upward unit normals of the joints
-  std::vector<Eigen::Vector3d> points;   // a point of each joint
-};
-
-std::vector<HalfSpaceInput> halfspaces(const Pyramid& p) {
-  std::vector<HalfSpaceInput> h;
-  for (size_t k = 0; k < p.normals.size(); ++k)
-    h.push_back(halfspace(static_cast<int>(k), "J" + std::to_string(k), PlaneKind::Joint,
-                          p.normals[k], p.points[k], HalfSpace::Lower));
-  h.push_back(halfspace(static_cast<int>(p.normals.size()), "F", PlaneKind::FreeFace,
-                        Eigen::Vector3d::UnitZ(), Eigen::Vector3d::Zero(), HalfSpace::Upper));
-  return h;
-}
-
-// The exact volume when every joint passes through the apex: a cone over
-// its base on z = 0, the polygon n_k . (x - apex) <= 0 of all k (a square
-// clipped by half-planes, no 3D construction), times height / 3.
-double exact_volume(const Pyramid& p) {
-  std::vector<Eigen::Vector2d> poly{{-1e3, -1e3}, {1e3, -1e3}, {1e3, 1e3}, {-1e3, 1e3}};
-  for (const auto& n : p.normals) {
-    const Eigen::Vector2d a(n.x(), n.y());
-    const double c = n.dot(p.apex);
-    std::vector<Eigen::Vector2d> out;
-    for (size_t i = 0; i < poly.size(); ++i) {
-      const Eigen::Vector2d& u = poly[i];
-      const Eigen::Vector2d& v = poly[(i + 1) % poly.size()];
-      const double fu = a.dot(u) - c, fv = a.dot(v) - c;
-      if (fu <= 0) out.push_back(u);
-      if ((fu < 0 && fv > 0) || (fu > 0 && fv < 0)) out.push_back(u + fu / (fu - fv) * (v - u));
-    }
-    poly = out;
-  }
-  double area2 = 0;
-  for (size_t i = 0; i < poly.size(); ++i) {
-    const Eigen::Vector2d& u = poly[i];
-    const Eigen::Vector2d& v = poly[(i + 1) % poly.size()];
-    area2 += u.x() * v.y() - u.y() * v.x();
-  }
-  return area2 / 2 * p.apex.z() / 3;
-}
-
-double surface_area(const Polyhedron& p) {
-  double s = 0;
-  for (const Face& f : p.faces()) {
-    Eigen::Vector3d a2 = Eigen::Vector3d::Zero();
-    const auto& x = p.vertices();
-    for (size_t k = 1; k + 1 < f.loop.size(); ++k)
-      a2 += (x[f.loop[k]] - x[f.loop[0]]).cross(x[f.loop[k + 1]] - x[f.loop[0]]);
-    s += a2.norm() / 2;
-  }
-  return s;
-}
-
-// m joints around a vertical through a random apex 4-5 m up, dipping 40-70
-// degrees toward directions spread around the compass (each gap < 180
-// degrees: a bounded pyramid).
-Pyramid random_pyramid(std::mt19937_64& rng, int m) {
-  std::uniform_real_distribution<double> u(0, 1);
-  Pyramid p;
-  p.apex = Eigen::Vector3d(3 * u(rng), 2 * u(rng), 4 + u(rng));
-  const double turn = 360 * u(rng);
-  for (int k = 0; k < m; ++k) {
-    const double dipdir = std::fmod(turn + 360.0 * k / m + 20 * (u(rng) - 0.5) + 360, 360);
-    p.normals.push_back(geometry::plane_normal_deg(40 + 30 * u(rng), dipdir));
-    p.points.push_back(p.apex);
-  }
-  return p;
-}
-
-std::string text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
-
-double log_uniform(std::mt19937_64& rng, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(rng));
-}
+using test::exact_volume;
+using test::halfspaces;
+using test::log_uniform;
+using test::Pyramid;
+using test::random_pyramid;
+using test::surface_area;
+using test::text;
 
 kinematics::BlockAnalysis analyse(const Polyhedron& p, const kinematics::Effects& g) {
   kinematics::BlockAnalysisInput in;
