@@ -5,6 +5,8 @@
 // does a replay refused after its visit began (its face off the alignment:
 // it left a new project with a half-stored visit, and a visit in an
 // existing one).
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -52,7 +54,8 @@ void project_with_a_visit(const fs::path& p) {
 }  // namespace
 
 TEST(ReplayRefusedCli, APlacementOffTheAlignmentLeavesNoProject) {
-  const fs::path dir = fs::temp_directory_path() / "replay-refused-cli";
+  const fs::path dir =
+      fs::temp_directory_path() / ("replay-refused-cli-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path scene = scene_placed_at(dir, 1e308);
@@ -71,7 +74,8 @@ TEST(ReplayRefusedCli, APlacementOffTheAlignmentLeavesNoProject) {
 }
 
 TEST(ReplayRefusedCli, AnExistingProjectIsLeftAsItWas) {
-  const fs::path dir = fs::temp_directory_path() / "replay-refused-cli-existing";
+  const fs::path dir =
+      fs::temp_directory_path() / ("replay-refused-cli-existing-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path scene = scene_placed_at(dir, -1e308);
@@ -96,7 +100,8 @@ TEST(ReplayRefusedCli, AnExistingProjectIsLeftAsItWas) {
 constexpr double kPoleBeforeTheEnd = 199.5;
 
 TEST(ReplayRefusedCli, AFaceOffTheAlignmentFoundAfterTheVisitBeganLeavesNoProject) {
-  const fs::path dir = fs::temp_directory_path() / "replay-refused-cli-face";
+  const fs::path dir =
+      fs::temp_directory_path() / ("replay-refused-cli-face-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path scene = scene_placed_at(dir, kPoleBeforeTheEnd);
@@ -114,7 +119,8 @@ TEST(ReplayRefusedCli, AFaceOffTheAlignmentFoundAfterTheVisitBeganLeavesNoProjec
 }
 
 TEST(ReplayRefusedCli, AFaceOffTheAlignmentChangesNothingInAProjectWithVisits) {
-  const fs::path dir = fs::temp_directory_path() / "replay-refused-cli-face-existing";
+  const fs::path dir = fs::temp_directory_path() /
+                       ("replay-refused-cli-face-existing-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path good = scene_placed_at(dir, 110.6, "good");  // the sample's own placement
@@ -150,7 +156,8 @@ TEST(ReplayRefusedCli, AFaceOffTheAlignmentChangesNothingInAProjectWithVisits) {
 }
 
 TEST(ReplayRefusedCli, AnAlignmentBeyondSurveyCoordinatesChangesNothing) {
-  const fs::path dir = fs::temp_directory_path() / "replay-refused-cli-alignment";
+  const fs::path dir =
+      fs::temp_directory_path() / ("replay-refused-cli-alignment-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path scene = scene_placed_at(dir, 110.6);
