@@ -112,10 +112,13 @@ std::string SharedOfficeCache::drive(storage::office::Connection& db, const std:
 
 std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Connection& db,
                                                             const std::string& tunnel,
-                                                            bool photographs) {
+                                                            const PullScope& scope) {
   const auto [key, stamp] = checked_stamp(db, tunnel);
-  const auto pull =
-      entry(pulls_, key + (photographs ? "" : "\nwithout photographs"), kPulledCopies);
+  std::string scoped = key + (scope.photographs ? "" : "\nwithout photographs") +
+                       (scope.meshes ? "" : "\nwithout meshes");
+  for (const std::string& v : scope.visits) scoped += "\nvisit " + v;
+  const auto pull = scope.visits.empty() ? entry(pulls_, scoped, kPulledCopies)
+                                         : entry(visit_pulls_, scoped, kVisitCopies);
   std::lock_guard build(pull->build);
   if (pull->copy && pull->copy->stamp == stamp && std::filesystem::exists(pull->copy->file))
     return pull->copy;
@@ -126,7 +129,9 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Con
   NoProgress quiet;
   try {
     office::PullOptions options;
-    options.photographs = photographs;
+    options.photographs = scope.photographs;
+    options.meshes = scope.meshes;
+    options.visits = scope.visits;
     office::pull_tunnel(db, tunnel, copy->file, quiet, options);
   } catch (...) {
     // The pull's snapshot transaction may still be open on the connection.
