@@ -76,10 +76,16 @@ std::string kept_rounds_page(SharedOfficeCache& cache, office::Connection& db,
   }
 
   if (!to_measure.empty()) {
-    // Measured on a copy with the meshes, photographs still left out.
+    // Measured on a copy with the meshes, photographs still left out: after
+    // a sync, of the visits to measure only (with the drive's placements,
+    // where each round starts), used once; when most of the drive is to
+    // be measured, of the whole drive, shared.
     PullScope with_meshes;
     with_meshes.photographs = false;
-    const auto meshes = cache.pulled(db, tunnel, with_meshes);
+    const bool most = to_measure.size() * 2 > placements.size();
+    if (!most) with_meshes.visits.assign(to_measure.begin(), to_measure.end());
+    const auto meshes =
+        most ? cache.pulled(db, tunnel, with_meshes) : cache.pulled_once(db, tunnel, with_meshes);
     storage::ProjectStore measured_store = open_copy(*meshes);
     std::map<std::string, office::KeptRound> fresh;
     for (const std::string& uuid : to_measure) {

@@ -122,6 +122,20 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Con
   std::lock_guard build(pull->build);
   if (pull->copy && pull->copy->stamp == stamp && std::filesystem::exists(pull->copy->file))
     return pull->copy;
+  pull->copy = make_copy(db, tunnel, stamp, scope);
+  return pull->copy;
+}
+
+std::shared_ptr<const SharedPull> SharedOfficeCache::pulled_once(storage::office::Connection& db,
+                                                                 const std::string& tunnel,
+                                                                 const PullScope& scope) {
+  return make_copy(db, tunnel, checked_stamp(db, tunnel).second, scope);
+}
+
+std::shared_ptr<const SharedPull> SharedOfficeCache::make_copy(storage::office::Connection& db,
+                                                               const std::string& tunnel,
+                                                               const std::string& stamp,
+                                                               const PullScope& scope) {
   std::filesystem::create_directories(folder_);
   auto copy = std::make_shared<SharedPull>();
   copy->file = folder_ / ("tunnel-" + random_token().substr(0, 32) + ".rockface");
@@ -144,7 +158,6 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Con
                                   "reading the pulled visits' uuids");
     while (st.step()) copy->visit_ids[st.column_text(1)] = st.column_int(0);
   }
-  pull->copy = copy;
   return copy;
 }
 

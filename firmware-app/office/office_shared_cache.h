@@ -87,6 +87,10 @@ class SharedOfficeCache {
   // 2,999 visits.
   std::shared_ptr<const SharedPull> pulled(storage::office::Connection& db,
                                            const std::string& tunnel, const PullScope& scope = {});
+  // The same, made for one use and not shared (the rounds measured after a
+  // sync: a copy of those visits, used once); its file goes with it.
+  std::shared_ptr<const SharedPull> pulled_once(storage::office::Connection& db,
+                                                const std::string& tunnel, const PullScope& scope);
 
  private:
   struct Stamp {
@@ -112,6 +116,9 @@ class SharedOfficeCache {
   // InputError when the role may not read the tunnel.
   std::pair<std::string, std::string> checked_stamp(storage::office::Connection& db,
                                                     const std::string& tunnel);
+  std::shared_ptr<const SharedPull> make_copy(storage::office::Connection& db,
+                                              const std::string& tunnel, const std::string& stamp,
+                                              const PullScope& scope);
   template <typename Entry>
   std::shared_ptr<Entry> entry(std::map<std::string, std::shared_ptr<Entry>>& map,
                                const std::string& key, std::size_t limit);

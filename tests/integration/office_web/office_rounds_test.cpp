@@ -193,6 +193,11 @@ TEST(OfficeRounds, EachRoundsFiguresAreMeasuredOnceAndKept) {
     ASSERT_EQ(third.status, 200) << third.body;
     EXPECT_EQ(third.measured, 1);
     EXPECT_EQ(third.body, first.body);
+    // Measured on a copy of that visit, used once and gone: no copy of the
+    // whole drive's meshes was pulled for one round.
+    const std::vector<fs::path> copies = pulled_copies(server);
+    ASSERT_EQ(copies.size(), 1u);
+    EXPECT_EQ(count_of(copies.front(), "SELECT count(*) FROM model_mesh_part"), 0);
   }
   const auto after = kept_at(s);
   for (const auto& [visit, at] : kept)
