@@ -256,8 +256,10 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
             ++errors;
             continue;
           }
-          if (ids.empty())
-            for (const auto& v : json::parse(r->body)["visits"]) ids.push_back(v["id"]);
+          if (ids.empty()) {
+            const json drive = json::parse(r->body);
+            for (const auto& v : drive["visits"]) ids.push_back(v["id"]);
+          }
           if (ids.empty() || stop) continue;
           const std::string& visit = ids[pick() % ids.size()];
           t0 = Clock::now();
