@@ -1,11 +1,13 @@
 #pragma once
-// The visit pages read a pulled copy of the tunnel (storage/office/
-// pull_project.h), made on a connection acting as the session's role so that the role's
-// row-level security decides what it holds, shared read-only by the
-// sessions whose roles read the same tunnels (office_shared_cache.h) and
-// made again when a tablet has synced since.
+// The visit pages read a pulled copy holding the visit (storage/office/
+// pull_project.h: the visit's records, the drive's visits and placements,
+// the tunnel), made on a connection acting as the session's role so that
+// the role's row-level security decides what it holds, shared read-only by
+// the sessions whose roles read the same tunnels (office_shared_cache.h)
+// and made again when a tablet has synced since.
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "firmware-app/office/office_shared_cache.h"
 #include "storage/project/project_records.h"
@@ -18,9 +20,18 @@ struct PulledVisit {
   storage::RecordId visit_id = 0;          // the visit's id in it
 };
 
-// `db` acts as the session's role. Throws InputError when the tunnel or
-// the visit is not readable by the session's role.
+// `db` acts as the session's role. Without `photographs` the copy's images
+// are empty (a page fetches each one it shows from the server); the field
+// report and the exports, which print them, ask for them. Throws
+// InputError when the tunnel or the visit is not readable by the session's
+// role.
 PulledVisit pulled_visit(SharedOfficeCache& cache, storage::office::Connection& db,
-                         const std::string& tunnel, const std::string& visit_uuid);
+                         const std::string& tunnel, const std::string& visit_uuid,
+                         bool photographs = false);
+// Two visits in one copy (side by side), without photographs.
+std::pair<PulledVisit, PulledVisit> pulled_visits(SharedOfficeCache& cache,
+                                                  storage::office::Connection& db,
+                                                  const std::string& tunnel, const std::string& a,
+                                                  const std::string& b);
 
 }  // namespace rockface::app::office_web

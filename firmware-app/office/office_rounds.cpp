@@ -11,8 +11,54 @@ namespace rockface::app::office_web {
 
 using nlohmann::json;
 
+json round_excavation(storage::ProjectStore& store, storage::RecordId visit) {
+  json round;
+  try {
+    const VisitProfile p = visit_profile(store, visit);
+    const double sense = p.tunnel.drive == tunnel::Drive::ascending ? 1.0 : -1.0;
+    round["round_to"] = p.round_to;
+    round["sense"] = sense;
+    const auto previous = previous_face(store.list_visit_placements(), visit, p.round_to, sense);
+    round["previous_face"] = previous ? json(previous->chainage) : json(nullptr);
+    const auto& d = p.deviation;
+    using tunnel::DeviationStatus;
+    if (d.status == DeviationStatus::no_walls_in_view) {
+      // Unknown, never zero (issue 38).
+      round["excavation_text"] = "unknown: the 3D image saw no wall or roof of the round";
+    } else if (d.status == DeviationStatus::outside_alignment) {
+      round["excavation_text"] = "unknown: the round lies off the tunnel's alignment";
+    } else {
+      // A round's volumes to 0.01 m³ (10 litres): a finer figure is
+      // beyond the surface's depth precision over a round's area.
+      round["overbreak_m3"] = d.overbreak_volume_m3;
+      round["underbreak_m3"] = d.underbreak_volume_m3;
+      round["excavation_text"] = "over " + format_fixed(d.overbreak_volume_m3, 2, " m³") +
+                                 ", under " + format_fixed(d.underbreak_volume_m3, 2, " m³") +
+                                 " (" + format_fixed(d.seen_fraction * 100, 0, " %") +
+                                 " seen, ch " + format_fixed(p.round_from, 1, " m") + " to " +
+                                 format_fixed(p.round_to, 1, " m") + ")";
+    }
+  } catch (const InputError& e) {
+    // Nothing measured: no earlier face to check it against later (the
+    // visit's own records decide it).
+    round["excavation_text"] = std::string("not evaluated: ") + e.what();
+  }
+  return round;
+}
+
+bool kept_excavation_holds(const json& kept, const std::vector<storage::VisitPlacement>& placements,
+                           storage::RecordId visit) {
+  if (!kept.contains("round_to")) return kept.contains("excavation_text");
+  const auto previous = previous_face(placements, visit, kept.at("round_to").get<double>(),
+                                      kept.at("sense").get<double>());
+  const json& was = kept.at("previous_face");
+  // The same stored chainage read back: exact equality.
+  return previous ? was.is_number() && was.get<double>() == previous->chainage : was.is_null();
+}
+
 json rounds_page(storage::ProjectStore& store,
-                 const std::function<std::string(storage::RecordId)>& visit_uuid) {
+                 const std::function<std::string(storage::RecordId)>& visit_uuid,
+                 const std::function<json(storage::RecordId)>& excavation) {
   json rounds = json::array();
   for (const RoundSupport& r : drive_support(store)) {
     json round;
@@ -40,34 +86,20 @@ json rounds_page(storage::ProjectStore& store,
     round["decided_by"] = r.decided.empty() ? ""
                                             : "by " + r.decided_by +
                                                   (r.decided_at.empty() ? "" : ", " + r.decided_at);
-    try {
-      const VisitProfile p = visit_profile(store, r.visit);
-      const auto& d = p.deviation;
-      using tunnel::DeviationStatus;
-      if (d.status == DeviationStatus::no_walls_in_view) {
-        // Unknown, never zero (issue 38).
-        round["excavation_text"] = "unknown: the 3D image saw no wall or roof of the round";
-      } else if (d.status == DeviationStatus::outside_alignment) {
-        round["excavation_text"] = "unknown: the round lies off the tunnel's alignment";
-      } else {
-        // A round's volumes to 0.01 m³ (10 litres): a finer figure is
-        // beyond the surface's depth precision over a round's area.
-        round["overbreak_m3"] = d.overbreak_volume_m3;
-        round["underbreak_m3"] = d.underbreak_volume_m3;
-        round["excavation_text"] = "over " + format_fixed(d.overbreak_volume_m3, 2, " m³") +
-                                   ", under " + format_fixed(d.underbreak_volume_m3, 2, " m³") +
-                                   " (" + format_fixed(d.seen_fraction * 100, 0, " %") +
-                                   " seen, ch " + format_fixed(p.round_from, 1, " m") + " to " +
-                                   format_fixed(p.round_to, 1, " m") + ")";
-      }
-    } catch (const InputError& e) {
-      round["excavation_text"] = std::string("not evaluated: ") + e.what();
-    }
+    const json e = excavation(r.visit);
+    for (const char* key : {"excavation_text", "overbreak_m3", "underbreak_m3"})
+      if (e.contains(key)) round[key] = e.at(key);
     rounds.push_back(std::move(round));
   }
   json out;
   out["rounds"] = std::move(rounds);
   return out;
+}
+
+json rounds_page(storage::ProjectStore& store,
+                 const std::function<std::string(storage::RecordId)>& visit_uuid) {
+  return rounds_page(store, visit_uuid,
+                     [&](storage::RecordId visit) { return round_excavation(store, visit); });
 }
 
 }  // namespace rockface::app::office_web

@@ -10,6 +10,7 @@
 // text with its unit; the numbers a drawing needs beside it.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -17,8 +18,31 @@
 
 namespace rockface::app::office_web {
 
+// One round's over- and underbreak as the rounds page shows it
+// (excavation_text; overbreak_m3 and underbreak_m3 when measured) and what
+// the figures rest on besides the visit's own records and the tunnel's,
+// so that kept figures can be checked against the drive as it is later:
+// where the round ends (round_to), the drive's sense (+1 / -1), and the
+// earlier face it was measured from (previous_face: its chainage, null
+// when none). Measured on the visit's 3D image: seconds on a real one.
+nlohmann::json round_excavation(storage::ProjectStore& store, storage::RecordId visit);
+
+// Whether kept figures of round_excavation still hold among `placements`
+// (the drive's stored placements now): the round's earlier face is the one
+// they were measured from. A visit placed since between that face and the
+// round's end starts the round elsewhere.
+bool kept_excavation_holds(const nlohmann::json& kept,
+                           const std::vector<storage::VisitPlacement>& placements,
+                           storage::RecordId visit);
+
 // `visit_uuid` names a visit of the pulled copy as the server does (the
 // page links to the visit); "" leaves the round without a link.
+// `excavation` gives a round's over- and underbreak (round_excavation's or
+// kept figures).
+nlohmann::json rounds_page(storage::ProjectStore& store,
+                           const std::function<std::string(storage::RecordId)>& visit_uuid,
+                           const std::function<nlohmann::json(storage::RecordId)>& excavation);
+// Every round measured here.
 nlohmann::json rounds_page(storage::ProjectStore& store,
                            const std::function<std::string(storage::RecordId)>& visit_uuid);
 

@@ -112,13 +112,30 @@ std::string SharedOfficeCache::drive(storage::office::Connection& db, const std:
 
 std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Connection& db,
                                                             const std::string& tunnel,
-                                                            bool photographs) {
+                                                            const PullScope& scope) {
   const auto [key, stamp] = checked_stamp(db, tunnel);
-  const auto pull =
-      entry(pulls_, key + (photographs ? "" : "\nwithout photographs"), kPulledCopies);
+  std::string scoped = key + (scope.photographs ? "" : "\nwithout photographs") +
+                       (scope.meshes ? "" : "\nwithout meshes");
+  for (const std::string& v : scope.visits) scoped += "\nvisit " + v;
+  const auto pull = scope.visits.empty() ? entry(pulls_, scoped, kPulledCopies)
+                                         : entry(visit_pulls_, scoped, kVisitCopies);
   std::lock_guard build(pull->build);
   if (pull->copy && pull->copy->stamp == stamp && std::filesystem::exists(pull->copy->file))
     return pull->copy;
+  pull->copy = make_copy(db, tunnel, stamp, scope);
+  return pull->copy;
+}
+
+std::shared_ptr<const SharedPull> SharedOfficeCache::pulled_once(storage::office::Connection& db,
+                                                                 const std::string& tunnel,
+                                                                 const PullScope& scope) {
+  return make_copy(db, tunnel, checked_stamp(db, tunnel).second, scope);
+}
+
+std::shared_ptr<const SharedPull> SharedOfficeCache::make_copy(storage::office::Connection& db,
+                                                               const std::string& tunnel,
+                                                               const std::string& stamp,
+                                                               const PullScope& scope) {
   std::filesystem::create_directories(folder_);
   auto copy = std::make_shared<SharedPull>();
   copy->file = folder_ / ("tunnel-" + random_token().substr(0, 32) + ".rockface");
@@ -126,7 +143,9 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Con
   NoProgress quiet;
   try {
     office::PullOptions options;
-    options.photographs = photographs;
+    options.photographs = scope.photographs;
+    options.meshes = scope.meshes;
+    options.visits = scope.visits;
     office::pull_tunnel(db, tunnel, copy->file, quiet, options);
   } catch (...) {
     // The pull's snapshot transaction may still be open on the connection.
@@ -139,7 +158,6 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Con
                                   "reading the pulled visits' uuids");
     while (st.step()) copy->visit_ids[st.column_text(1)] = st.column_int(0);
   }
-  pull->copy = copy;
   return copy;
 }
 

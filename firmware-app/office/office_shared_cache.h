@@ -18,6 +18,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "firmware-app/office/office_pages.h"
 #include "firmware-app/office/office_sessions.h"
@@ -47,10 +48,25 @@ struct SharedPull {
   ~SharedPull();
 };
 
+// What a pulled copy holds (storage/office/pull_project.h's PullOptions):
+// the drive's rounds need no photograph, and no mesh once their figures
+// are kept (office_round_figures.h); a visit page needs its visit only,
+// its photographs fetched one by one when shown.
+struct PullScope {
+  bool photographs = true;
+  bool meshes = true;
+  std::vector<std::string> visits;  // server uuids; empty: every visit
+};
+
 class SharedOfficeCache {
  public:
   static constexpr std::size_t kDrivePages = 32;
+  // Copies of the whole drive (the rounds' figures; a few hundred MB at
+  // 3,000 visits with meshes) and copies of a visit or two (one visit's
+  // records and 3D image, and the drive's visit and placement rows):
+  // fifty people open different visits.
   static constexpr std::size_t kPulledCopies = 4;
+  static constexpr std::size_t kVisitCopies = 32;
   // A stamp asked this recently is taken as current: a page polled by fifty
   // people costs one query a second, and a sync shows within that.
   static constexpr std::chrono::milliseconds kStampFresh{1000};
@@ -65,12 +81,16 @@ class SharedOfficeCache {
   // The tunnel's stamp for the role `db` acts as (shared, kStampFresh).
   std::string stamp(storage::office::Connection& db, const std::string& tunnel);
   // The tunnel pulled at its current stamp, made on `db` (acting as the
-  // session's role) when no session of the same readable tunnels has it. Without
-  // photographs (`photographs` false): the copy the figures along the drive
-  // are read from, kept apart from the visits' copy with them — a drive of
-  // 3,000 visits lists its rounds without fetching 6,000 photographs.
+  // session's role) when no session of the same readable tunnels has it,
+  // holding what `scope` asks: a drive of 3,000 visits lists its rounds
+  // without fetching 6,000 photographs, a visit page without the other
+  // 2,999 visits.
   std::shared_ptr<const SharedPull> pulled(storage::office::Connection& db,
-                                           const std::string& tunnel, bool photographs = true);
+                                           const std::string& tunnel, const PullScope& scope = {});
+  // The same, made for one use and not shared (the rounds measured after a
+  // sync: a copy of those visits, used once); its file goes with it.
+  std::shared_ptr<const SharedPull> pulled_once(storage::office::Connection& db,
+                                                const std::string& tunnel, const PullScope& scope);
 
  private:
   struct Stamp {
@@ -96,6 +116,9 @@ class SharedOfficeCache {
   // InputError when the role may not read the tunnel.
   std::pair<std::string, std::string> checked_stamp(storage::office::Connection& db,
                                                     const std::string& tunnel);
+  std::shared_ptr<const SharedPull> make_copy(storage::office::Connection& db,
+                                              const std::string& tunnel, const std::string& stamp,
+                                              const PullScope& scope);
   template <typename Entry>
   std::shared_ptr<Entry> entry(std::map<std::string, std::shared_ptr<Entry>>& map,
                                const std::string& key, std::size_t limit);
@@ -105,7 +128,7 @@ class SharedOfficeCache {
   std::uint64_t clock_ = 0;
   std::map<std::string, Stamp> stamps_;
   std::map<std::string, std::shared_ptr<Page>> pages_;
-  std::map<std::string, std::shared_ptr<Pull>> pulls_;
+  std::map<std::string, std::shared_ptr<Pull>> pulls_, visit_pulls_;
 };
 
 }  // namespace rockface::app::office_web

@@ -21,7 +21,7 @@
 #include "firmware-app/office/login_throttle.h"
 #include "firmware-app/office/office_pages.h"
 #include "firmware-app/office/office_pulled_copies.h"
-#include "firmware-app/office/office_rounds.h"
+#include "firmware-app/office/office_round_figures.h"
 #include "firmware-app/office/office_sessions.h"
 #include "firmware-app/office/office_shared_cache.h"
 #include "firmware-app/office/visit_comparison.h"
@@ -30,6 +30,8 @@
 #include "firmware-app/office/web_security.h"
 #include "storage/office/connection_pool.h"
 #include "storage/office/pg_connection.h"
+#include "storage/office/server_blobs.h"
+#include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
 
 // Last: <resolv.h>, which httplib.h includes, defines the macro _res that
@@ -259,23 +261,14 @@ class OfficeServer {
       });
     });
     h.Get("/api/drive/rounds", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
-        const std::string tunnel = req.get_param_value("tunnel");
-        // The figures only: the rounds show no photograph.
-        const auto copy = cache_.pulled(db, tunnel, false);
-        std::lock_guard guard(copy->derived_lock);
-        std::string& text = copy->derived["rounds"];
-        if (text.empty()) {
-          std::map<storage::RecordId, std::string> uuids;
-          for (const auto& [uuid, id] : copy->visit_ids) uuids[id] = uuid;
-          storage::OpenOptions read;
-          read.read_only = true;
-          storage::ProjectStore store = storage::ProjectStore::open(copy->file, read);
-          text = office_web::rounds_page(store, [&](storage::RecordId id) {
-                   const auto it = uuids.find(id);
-                   return it == uuids.end() ? std::string() : it->second;
-                 }).dump(-1, ' ', false, json::error_handler_t::replace);
-        }
+      with_session(req, res, [&](OfficeSession& s, office::Connection& db) {
+        // The figures only, each round's over- and underbreak as kept on
+        // the server: the rounds show no photograph and measure no kept
+        // round again.
+        office_web::RoundsCount count;
+        const std::string text = office_web::kept_rounds_page(
+            cache_, db, req.get_param_value("tunnel"), s.role, options_.log_failure, &count);
+        res.set_header("X-Rockface-Rounds-Measured", std::to_string(count.measured));
         res.set_content(text, "application/json; charset=utf-8");
       });
     });
@@ -285,36 +278,36 @@ class OfficeServer {
       });
     });
     h.Get("/api/visit", [this](const httplib::Request& req, httplib::Response& res) {
-      with_visit(req, res, [&](OfficeSession&, storage::ProjectStore& store, storage::RecordId id) {
-        const storage::FieldReport report = collect_visit_report(store, id);
-        const Eigen::Vector3d origin = office_web::face_origin(store, id);
-        json page = office_web::visit_page(report, req.get_param_value("visit"), origin);
-        json photos = json::array();
-        for (const auto& c : store.list_captures(id))
-          for (const char* side : {"left", "right"})
-            photos.push_back(json{{"capture", c.id}, {"side", side}});
-        page["photos"] = std::move(photos);
-        const auto models = store.list_visit_models(id);
-        page["has_face"] = !models.empty();
-        if (!models.empty()) {
-          const storage::Model m = store.load_model(models.front().id);
-          if (m.texture_capture_id)
-            page["texture"] = json{{"capture", *m.texture_capture_id}, {"side", m.texture_side}};
-          page["face_triangles"] = std::to_string(m.mesh.faces.size()) + " triangles";
-          page["pole"] = office_web::range_pole_overlay(m, origin);
-        }
-        send_json(res, page);
-      });
+      with_visit(req, res, false,
+                 [&](OfficeSession&, office::Connection&, storage::ProjectStore& store,
+                     storage::RecordId id) {
+                   const storage::FieldReport report = collect_visit_report(store, id);
+                   const Eigen::Vector3d origin = office_web::face_origin(store, id);
+                   json page = office_web::visit_page(report, req.get_param_value("visit"), origin);
+                   json photos = json::array();
+                   for (const auto& c : store.list_captures(id))
+                     for (const char* side : {"left", "right"})
+                       photos.push_back(json{{"capture", c.id}, {"side", side}});
+                   page["photos"] = std::move(photos);
+                   const auto models = store.list_visit_models(id);
+                   page["has_face"] = !models.empty();
+                   if (!models.empty()) {
+                     const storage::Model m = store.load_model(models.front().id);
+                     if (m.texture_capture_id)
+                       page["texture"] =
+                           json{{"capture", *m.texture_capture_id}, {"side", m.texture_side}};
+                     page["face_triangles"] = std::to_string(m.mesh.faces.size()) + " triangles";
+                     page["pole"] = office_web::range_pole_overlay(m, origin);
+                   }
+                   send_json(res, page);
+                 });
     });
     h.Get("/api/compare", [this](const httplib::Request& req, httplib::Response& res) {
       with_session(req, res, [&](OfficeSession&, office::Connection& db) {
         const std::string tunnel = req.get_param_value("tunnel");
-        const office_web::PulledVisit a =
-            office_web::pulled_visit(cache_, db, tunnel, req.get_param_value("a"));
-        const office_web::PulledVisit b =
-            office_web::pulled_visit(cache_, db, tunnel, req.get_param_value("b"));
-        // Both from one copy: a sync between the two look-ups pulls again.
-        if (a.file != b.file) throw InputError("tunnel " + tunnel, "synced meanwhile: try again");
+        // Both visits in one copy, without photographs.
+        const auto [a, b] = office_web::pulled_visits(cache_, db, tunnel, req.get_param_value("a"),
+                                                      req.get_param_value("b"));
         storage::OpenOptions read;
         read.read_only = true;
         storage::ProjectStore store = storage::ProjectStore::open(a.file, read);
@@ -329,65 +322,79 @@ class OfficeServer {
       });
     });
     h.Get("/api/visit/mesh", [this](const httplib::Request& req, httplib::Response& res) {
-      with_visit(req, res, [&](OfficeSession&, storage::ProjectStore& store, storage::RecordId id) {
-        const bool full = req.get_param_value("full") == "1";
-        office_web::FaceMesh m = office_web::face_mesh(store, id, full ? 0 : kFaceTriangles);
-        res.set_header("X-Rockface-Triangles",
-                       std::to_string(m.triangles) + " of " + std::to_string(m.full_triangles));
-        res.set_content(std::string(m.bytes.begin(), m.bytes.end()), "application/octet-stream");
-      });
+      with_visit(req, res, false,
+                 [&](OfficeSession&, office::Connection&, storage::ProjectStore& store,
+                     storage::RecordId id) {
+                   const bool full = req.get_param_value("full") == "1";
+                   office_web::FaceMesh m =
+                       office_web::face_mesh(store, id, full ? 0 : kFaceTriangles);
+                   res.set_header("X-Rockface-Triangles", std::to_string(m.triangles) + " of " +
+                                                              std::to_string(m.full_triangles));
+                   res.set_content(std::string(m.bytes.begin(), m.bytes.end()),
+                                   "application/octet-stream");
+                 });
     });
     h.Get("/api/visit/photo", [this](const httplib::Request& req, httplib::Response& res) {
-      with_visit(req, res, [&](OfficeSession&, storage::ProjectStore& store, storage::RecordId id) {
-        const std::string side = req.get_param_value("side");
-        if (side != "left" && side != "right") throw InputError("side", "left or right");
-        const storage::RecordId capture = std::stoll("0" + req.get_param_value("capture"));
-        bool of_visit = false;
-        for (const auto& c : store.list_captures(id)) of_visit |= c.id == capture;
-        // A texture may be a capture of an earlier visit of the same project.
-        for (const auto& m : store.list_visit_models(id)) {
-          const storage::Model model = store.load_model(m.id);
-          of_visit |= model.texture_capture_id == capture;
-        }
-        if (!of_visit) throw InputError("capture", "not a photograph of this visit");
-        const storage::ImageBlob image = store.load_capture_image(capture, side);
-        res.set_content(std::string(image.bytes.begin(), image.bytes.end()),
-                        image.format == "png" ? "image/png" : "image/jpeg");
-      });
+      with_visit(req, res, false,
+                 [&](OfficeSession&, office::Connection& db, storage::ProjectStore& store,
+                     storage::RecordId id) {
+                   const std::string side = req.get_param_value("side");
+                   if (side != "left" && side != "right") throw InputError("side", "left or right");
+                   const storage::RecordId capture =
+                       std::stoll("0" + req.get_param_value("capture"));
+                   bool of_visit = false;
+                   for (const auto& c : store.list_captures(id)) of_visit |= c.id == capture;
+                   // A texture may be a capture of an earlier visit of the same project.
+                   for (const auto& m : store.list_visit_models(id)) {
+                     const storage::Model model = store.load_model(m.id);
+                     of_visit |= model.texture_capture_id == capture;
+                   }
+                   if (!of_visit) throw InputError("capture", "not a photograph of this visit");
+                   // The visit's copy holds no photograph: this one comes from the
+                   // server, read under the person's role and checked by its hash.
+                   const office::ServerPhotograph image =
+                       office::read_server_photograph(db, photograph_uuid(store, capture, side));
+                   res.set_content(std::string(image.bytes.begin(), image.bytes.end()),
+                                   image.format == "png" ? "image/png" : "image/jpeg");
+                 });
     });
     h.Get("/api/visit/picture", [this](const httplib::Request& req, httplib::Response& res) {
-      with_visit(req, res, [&](OfficeSession&, storage::ProjectStore& store, storage::RecordId id) {
-        // The field report's own pictures: the round's developed view
-        // (over- and underbreak against the design) and the wedges around
-        // the excavation, as the PDF prints them.
-        const storage::FieldReport report = collect_visit_report(store, id);
-        const std::string which = req.get_param_value("which");
-        cv::Mat picture;
-        if (which == "developed" && report.tunnel)
-          picture = report.tunnel->developed_view;
-        else if (which == "wedges" && report.wedges)
-          picture = report.wedges->picture;
-        else if (which != "developed" && which != "wedges")
-          throw InputError("which", "developed or wedges");
-        if (picture.empty()) throw InputError("which", "this visit has no such picture");
-        std::vector<std::uint8_t> png;
-        cv::imencode(".png", picture, png);
-        res.set_content(std::string(png.begin(), png.end()), "image/png");
-      });
+      with_visit(req, res, false,
+                 [&](OfficeSession&, office::Connection&, storage::ProjectStore& store,
+                     storage::RecordId id) {
+                   // The field report's own pictures: the round's developed view
+                   // (over- and underbreak against the design) and the wedges around
+                   // the excavation, as the PDF prints them.
+                   const storage::FieldReport report = collect_visit_report(store, id);
+                   const std::string which = req.get_param_value("which");
+                   cv::Mat picture;
+                   if (which == "developed" && report.tunnel)
+                     picture = report.tunnel->developed_view;
+                   else if (which == "wedges" && report.wedges)
+                     picture = report.wedges->picture;
+                   else if (which != "developed" && which != "wedges")
+                     throw InputError("which", "developed or wedges");
+                   if (picture.empty()) throw InputError("which", "this visit has no such picture");
+                   std::vector<std::uint8_t> png;
+                   cv::imencode(".png", picture, png);
+                   res.set_content(std::string(png.begin(), png.end()), "image/png");
+                 });
     });
     h.Get("/api/visit/report.pdf", [this](const httplib::Request& req, httplib::Response& res) {
-      with_visit(
-          req, res, [&](OfficeSession& s, storage::ProjectStore& store, storage::RecordId id) {
-            const storage::FieldReport report = collect_visit_report(store, id);
-            const auto pdf = visit_report_pdf(report, s.folder);
-            res.set_header("Content-Disposition",
-                           "inline; filename=\"visit-" + std::to_string(id) + "-report.pdf\"");
-            res.set_content(std::string(pdf.begin(), pdf.end()), "application/pdf");
-          });
+      with_visit(req, res, true,
+                 [&](OfficeSession& s, office::Connection&, storage::ProjectStore& store,
+                     storage::RecordId id) {
+                   const storage::FieldReport report = collect_visit_report(store, id);
+                   const auto pdf = visit_report_pdf(report, s.folder);
+                   res.set_header("Content-Disposition", "inline; filename=\"visit-" +
+                                                             std::to_string(id) + "-report.pdf\"");
+                   res.set_content(std::string(pdf.begin(), pdf.end()), "application/pdf");
+                 });
     });
     h.Get("/api/visit/exports", [this](const httplib::Request& req, httplib::Response& res) {
-      with_visit(req, res,
-                 [&](OfficeSession& s, storage::ProjectStore& store, storage::RecordId id) {
+      with_visit(req, res, true,
+                 [&](OfficeSession& s, office::Connection&, storage::ProjectStore& store,
+                     storage::RecordId id) {
                    const fs::path dir = exports_folder(s, store, id);
                    json files = json::array();
                    for (const auto& e : fs::directory_iterator(dir))
@@ -397,8 +404,9 @@ class OfficeServer {
                  });
     });
     h.Get("/api/visit/export", [this](const httplib::Request& req, httplib::Response& res) {
-      with_visit(req, res,
-                 [&](OfficeSession& s, storage::ProjectStore& store, storage::RecordId id) {
+      with_visit(req, res, true,
+                 [&](OfficeSession& s, office::Connection&, storage::ProjectStore& store,
+                     storage::RecordId id) {
                    const fs::path dir = exports_folder(s, store, id);
                    const std::string name = req.get_param_value("name");
                    // Only a name the export wrote: no path reaches the file system.
@@ -416,16 +424,37 @@ class OfficeServer {
     });
   }
 
+  // Runs `body(session, db, store, visit id)` on a copy of the request's
+  // visit (office_pulled_copies.h): its photographs in it only when
+  // `photographs` (the field report and the exports print them); a page
+  // fetches each photograph it shows (/api/visit/photo).
   template <typename Body>
-  void with_visit(const httplib::Request& req, httplib::Response& res, Body body) {
+  void with_visit(const httplib::Request& req, httplib::Response& res, bool photographs,
+                  Body body) {
     with_session(req, res, [&](OfficeSession& s, office::Connection& db) {
       const office_web::PulledVisit v = office_web::pulled_visit(
-          cache_, db, req.get_param_value("tunnel"), req.get_param_value("visit"));
+          cache_, db, req.get_param_value("tunnel"), req.get_param_value("visit"), photographs);
       storage::OpenOptions read;
       read.read_only = true;
       storage::ProjectStore store = storage::ProjectStore::open(v.file, read);
-      body(s, store, v.visit_id);
+      body(s, db, store, v.visit_id);
     });
+  }
+
+  // The server's uuid of a capture's photograph in a pulled copy.
+  static std::string photograph_uuid(storage::ProjectStore& store, storage::RecordId capture,
+                                     const std::string& side) {
+    storage::sqlite::Connection db(store.file(), storage::sqlite::Connection::Access::read_only);
+    storage::sqlite::Statement st(db,
+                                  std::string("SELECT i.uuid FROM capture c JOIN image i ON i.id = "
+                                              "c.") +
+                                      (side == "left" ? "left" : "right") +
+                                      "_image_id WHERE c.id = ?",
+                                  "finding the photograph");
+    st.bind(1, capture);
+    if (!st.step() || st.column_text(0).empty())
+      throw InputError("capture", "this visit has no such photograph");
+    return st.column_text(0);
   }
 
   static fs::path exports_folder(OfficeSession& s, storage::ProjectStore& store,

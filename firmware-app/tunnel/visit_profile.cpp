@@ -19,6 +19,17 @@ constexpr double kFaceClearM = 0.15;
 
 }  // namespace
 
+std::optional<storage::VisitPlacement> previous_face(
+    const std::vector<storage::VisitPlacement>& placements, storage::RecordId visit_id,
+    double round_to, double sense) {
+  std::optional<storage::VisitPlacement> previous;
+  for (const auto& p : placements)
+    if (p.visit_id != visit_id && sense * p.chainage < sense * round_to &&
+        (!previous || sense * p.chainage > sense * previous->chainage))
+      previous = p;
+  return previous;
+}
+
 VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit_id,
                            Preset preset) {
   VisitProfile out;
@@ -53,15 +64,10 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
   // and said (profile_deviation.h).
   const double start = reach ? reach->first : 0;
   out.round_to = (front ? front->nearest_chainage : out.placement.chainage) - sense * kFaceClearM;
-  std::optional<double> previous;
-  for (const auto& p : store.list_visit_placements())
-    if (p.visit_id != visit_id && sense * p.chainage < sense * out.round_to &&
-        (!previous || sense * p.chainage > sense * *previous)) {
-      previous = p.chainage;
-      out.round_from_source = "face of visit " + std::to_string(p.visit_id);
-    }
-  if (previous && sense * *previous >= sense * start) {
-    out.round_from = *previous;
+  const auto previous = previous_face(store.list_visit_placements(), visit_id, out.round_to, sense);
+  if (previous && sense * previous->chainage >= sense * start) {
+    out.round_from = previous->chainage;
+    out.round_from_source = "face of visit " + std::to_string(previous->visit_id);
   } else {
     // No earlier face, or it lies behind what the cameras saw: the round is
     // measured where there is surface to measure.

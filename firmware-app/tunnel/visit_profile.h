@@ -5,6 +5,7 @@
 // this one, with the over- and underbreak in numbers and as a developed view.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/common/preset.h"
 #include "core/tunnel/profile_deviation.h"
@@ -25,6 +26,14 @@ struct VisitProfile {
   tunnel::ProfileDeviation deviation;
   std::size_t pole_vertices = 0;  // surface vertices not counted: the range pole
 };
+
+// The face a round that ends at `round_to` starts from: the nearest stored
+// placement of another visit behind it in the drive's sense (`sense` +1
+// ascending, -1 descending), none when no visit lies behind. The round
+// starts there unless the 3D image starts farther on (VisitProfile).
+std::optional<storage::VisitPlacement> previous_face(
+    const std::vector<storage::VisitPlacement>& placements, storage::RecordId visit_id,
+    double round_to, double sense);
 
 // Throws InputError naming the project or visit when the project has no
 // tunnel, the visit is not placed in it, or it has no 3D image.

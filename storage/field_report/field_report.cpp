@@ -201,7 +201,9 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
       r.model_translation = s.t;
       read_accuracy(read_model_registration(m.registration), r.accuracy);
       const ImageBlob left = store.load_capture_image(c.id, "left");
-      r.photograph = cv::imdecode(left.bytes, cv::IMREAD_COLOR);
+      // A copy pulled without its photographs (the office's visit pages,
+      // which fetch each photograph they show) reports none.
+      if (!left.bytes.empty()) r.photograph = cv::imdecode(left.bytes, cv::IMREAD_COLOR);
       if (c.calibration_id) {
         const Calibration cal = store.load_calibration(*c.calibration_id);
         r.intrinsics = cal.intrinsics;

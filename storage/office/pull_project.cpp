@@ -161,11 +161,14 @@ class ProjectWriter {
         const bool in_parts = parts::parts_table_of(table, names[i]) != nullptr;
         // A photograph left on the server: an empty blob (the column is
         // NOT NULL), its size kept in the row's byte_size.
-        const bool left = table == "image" && !options_.photographs;
-        sqlite3_bind_zeroblob64(st.get(), at,
-                                in_parts || left ? 0 : v.at("size").get<std::uint64_t>());
-        if (left)
+        const bool photograph_left = table == "image" && !options_.photographs;
+        const bool mesh_left = in_parts && !options_.meshes;
+        sqlite3_bind_zeroblob64(
+            st.get(), at, in_parts || photograph_left ? 0 : v.at("size").get<std::uint64_t>());
+        if (photograph_left)
           ++result_.photographs_left;
+        else if (mesh_left)
+          ++result_.meshes_left;
         else
           blobs.emplace_back(names[i], v);
       } else if (v.is_object() && v.contains("$hex")) {
@@ -365,7 +368,9 @@ PullResult pull_tunnel(Connection& server, const std::string& tunnel_name, const
   // One snapshot of the server for the whole pull.
   server.exec("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY", "reading the tunnel");
   const ServerTunnel tunnel = read_server_tunnel(server, tunnel_name);
-  std::vector<ServerRecord> records = read_current_records(server, tunnel.id, {});
+  std::vector<ServerRecord> records = options.visits.empty()
+                                          ? read_current_records(server, tunnel.id, {})
+                                          : read_visit_records(server, tunnel.id, options.visits);
   const ServerRecord base = base_project(records, tunnel);  // a copy: records are sorted below
   result.projects = static_cast<int>(tunnel.projects.size());
   result.visits = static_cast<int>(tunnel.visits.size());

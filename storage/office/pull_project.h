@@ -21,8 +21,8 @@ struct PullResult {
   std::string server_label;
   int projects = 0, visits = 0, records = 0, blobs = 0;
   std::int64_t blob_bytes = 0;  // read from the server
-  // Photographs left on the server (PullOptions::photographs false).
-  int photographs_left = 0;
+  // Photographs and meshes left on the server (PullOptions).
+  int photographs_left = 0, meshes_left = 0;
   // What the geologist must check in the pulled project, in words: e.g.
   // tablets that carry different designs of the tunnel (one is kept).
   std::vector<std::string> warnings;
@@ -33,8 +33,21 @@ struct PullResult {
 // photograph: each image row keeps its format and byte_size but its bytes
 // stay empty and are never read from the server. Meshes always come (the
 // over- and underbreak are measured on them).
+//
+// A copy for the office's visit pages (issue 46) holds the visits it names
+// and what their pages show of the tunnel (server_records.h's
+// read_visit_records): the whole drive's visits and placements, none of
+// the other visits' photographs, 3D images, joints or analyses. Its
+// photographs may stay on the server too: a page fetches each one when it
+// is shown (server_blobs.h).
+//
+// A copy for figures already kept (the rounds' over- and underbreak,
+// round_figures.h) needs no mesh either: each model row keeps its
+// registration, its mesh stays on the server.
 struct PullOptions {
   bool photographs = true;
+  bool meshes = true;
+  std::vector<std::string> visits;  // server uuids; empty: every visit
 };
 
 PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel,

@@ -1,5 +1,9 @@
 #include "storage/office/server_records.h"
 
+#include <set>
+
+#include <nlohmann/json.hpp>
+
 #include "core/common/error.h"
 #include "storage/project/project_schema.h"
 
@@ -54,6 +58,79 @@ std::vector<ServerRecord> read_current_records(Connection& c, std::int64_t tunne
                            std::to_string(rec.project_schema) + ", this program knows up to " +
                            std::to_string(schema::kCurrentVersion) + "): update rockface");
     out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+namespace {
+
+std::string text_array(const std::vector<std::string>& items) {
+  std::string list = "{";
+  for (std::size_t i = 0; i < items.size(); ++i) list += (i ? "," : "") + items[i];
+  return list + "}";
+}
+
+// The uuids a record's body refers to ({"$ref": uuid}, in its row or its
+// children's rows).
+void referred_uuids(const nlohmann::json& j, std::set<std::string>& out) {
+  if (j.is_object()) {
+    const auto ref = j.find("$ref");
+    if (ref != j.end() && ref->is_string()) out.insert(ref->get<std::string>());
+    for (const auto& [k, v] : j.items()) referred_uuids(v, out);
+  } else if (j.is_array()) {
+    for (const auto& v : j) referred_uuids(v, out);
+  }
+}
+
+std::vector<ServerRecord> latest_records(Connection& c, const std::string& where,
+                                         const std::vector<Param>& params) {
+  // DISTINCT ON inside the tunnel's rows, as read_current_records does.
+  const Result r = c.query(
+      "SELECT kind, uuid::text, visit_uuid::text, project_uuid::text, coalesce(local_id, 0), "
+      "project_schema, body::text FROM (SELECT DISTINCT ON (kind, uuid) * FROM rockface.record "
+      "WHERE tunnel_id = $1 AND (" +
+          where + ") ORDER BY kind, uuid, revision DESC) latest WHERE NOT deleted",
+      params, "reading the visits' records");
+  std::vector<ServerRecord> out;
+  out.reserve(static_cast<std::size_t>(r.rows()));
+  for (int i = 0; i < r.rows(); ++i) {
+    ServerRecord rec{r.text(i, 0), r.text(i, 1),  r.optional_text(i, 2),
+                     r.text(i, 3), r.int64(i, 4), static_cast<int>(r.int64(i, 5)),
+                     r.text(i, 6)};
+    if (rec.project_schema > schema::kCurrentVersion)
+      throw InputError(rec.kind + " " + rec.uuid,
+                       "written by a newer rockface (project schema " +
+                           std::to_string(rec.project_schema) + ", this program knows up to " +
+                           std::to_string(schema::kCurrentVersion) + "): update rockface");
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<ServerRecord> read_visit_records(Connection& c, std::int64_t tunnel_id,
+                                             const std::vector<std::string>& visit_uuids) {
+  std::vector<ServerRecord> out =
+      latest_records(c,
+                     "visit_uuid IS NULL OR visit_uuid = ANY($2::uuid[]) OR kind IN ('visit', "
+                     "'visit_placement')",
+                     {Param::of(tunnel_id), Param::of(text_array(visit_uuids))});
+  std::set<std::string> have;
+  for (const ServerRecord& r : out) have.insert(r.uuid);
+  // What the records refer to outside them, until nothing is missing (a
+  // capture of an earlier visit, then that capture's photographs).
+  for (std::vector<ServerRecord> added = out; !added.empty();) {
+    std::set<std::string> refs;
+    for (const ServerRecord& r : added) referred_uuids(nlohmann::json::parse(r.body), refs);
+    std::vector<std::string> missing;
+    for (const std::string& u : refs)
+      if (!have.count(u)) missing.push_back(u);
+    if (missing.empty()) break;
+    added = latest_records(c, "uuid = ANY($2::uuid[])",
+                           {Param::of(tunnel_id), Param::of(text_array(missing))});
+    for (const ServerRecord& r : added) have.insert(r.uuid);
+    out.insert(out.end(), added.begin(), added.end());
   }
   return out;
 }

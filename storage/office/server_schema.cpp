@@ -13,7 +13,7 @@ struct Step {
   int to_version;
   const char* sql;
 };
-constexpr Step kSteps[] = {{1, sql::kVersion1}, {2, sql::kVersion2}};
+constexpr Step kSteps[] = {{1, sql::kVersion1}, {2, sql::kVersion2}, {3, sql::kVersion3}};
 
 // A role name as rockface creates them: plain lower-case words, so that it
 // needs no quoting in pg_hba.conf or a service file either.

@@ -17,13 +17,17 @@
 //   1  tunnels and their members, projects, visits, records (one row per
 //      revision of a record, body as JSON), blobs stored once by SHA-256 in
 //      chunks, sync runs; the policies above.
+//   2  blobs readable only through a readable record (blob_ref); office
+//      roles of one tunnel.
+//   3  each round's over- and underbreak kept (round_figures), written only
+//      by the office web server's group.
 #include <string>
 
 #include "storage/office/pg_connection.h"
 
 namespace rockface::storage::office {
 
-constexpr int kServerSchemaVersion = 2;
+constexpr int kServerSchemaVersion = 3;
 
 // The server's schema version, 0 when it has no rockface layout.
 int server_schema_version(Connection& c);

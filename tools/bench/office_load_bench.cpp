@@ -32,6 +32,7 @@
 #include "core/common/progress.h"
 #include "core/tunnel/design_profile.h"
 #include "storage/office/pg_connection.h"
+#include "storage/office/pull_project.h"
 #include "storage/office/server_schema.h"
 #include "storage/office/sqlite_rows.h"
 #include "storage/office/sync_push.h"
@@ -217,7 +218,7 @@ BENCHMARK(BM_OfficeServeStart3000)->Unit(benchmark::kMillisecond)->Iterations(3)
 void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
   const std::string& db = big_database();
   const fs::path small = make_project("small", 20, 640, 480, 50);
-  std::vector<double> latencies;
+  std::vector<double> latencies, visit_latencies;
   std::atomic<int> errors{0}, requests{0}, login_errors{0};
   double rss = 0;
   for (auto _ : state) {
@@ -231,7 +232,7 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
     });
     std::vector<std::thread> clients;
     for (int i = 0; i < 50; ++i)
-      clients.emplace_back([&] {
+      clients.emplace_back([&, i] {
         httplib::Client c("127.0.0.1", s.port);
         c.set_read_timeout(std::chrono::seconds(120));
         const std::string cookie = log_in(c, s.origin());
@@ -240,16 +241,36 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
           ++login_errors;
           return;
         }
-        std::vector<double> mine;
+        // Each client reads the drive, then opens one of its visits at
+        // random (the issue's load: "reading the drive ... and opening
+        // visits at random"), over and over.
+        std::mt19937 pick(static_cast<unsigned>(i + 1));
+        std::vector<std::string> ids;
+        std::vector<double> mine, my_visits;
         while (!stop) {
-          const auto t0 = Clock::now();
+          auto t0 = Clock::now();
           const auto r = c.Get("/api/drive?tunnel=bench", {{"Cookie", cookie}});
           mine.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
           ++requests;
-          if (!r || r->status != 200) ++errors;
+          if (!r || r->status != 200) {
+            ++errors;
+            continue;
+          }
+          if (ids.empty()) {
+            const json drive = json::parse(r->body);
+            for (const auto& v : drive["visits"]) ids.push_back(v["id"]);
+          }
+          if (ids.empty() || stop) continue;
+          const std::string& visit = ids[pick() % ids.size()];
+          t0 = Clock::now();
+          const auto v = c.Get("/api/visit?tunnel=bench&visit=" + visit, {{"Cookie", cookie}});
+          my_visits.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+          ++requests;
+          if (!v || v->status != 200) ++errors;
         }
         std::lock_guard guard(lock);
         latencies.insert(latencies.end(), mine.begin(), mine.end());
+        visit_latencies.insert(visit_latencies.end(), my_visits.begin(), my_visits.end());
       });
     // Bounded: 60 s of load, then every client finishes its request.
     std::this_thread::sleep_for(std::chrono::seconds(60));
@@ -263,6 +284,9 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
   state.counters["login_errors"] = login_errors.load();
   state.counters["p50_ms"] = percentile(latencies, 0.5);
   state.counters["p95_ms"] = percentile(latencies, 0.95);
+  state.counters["visits_opened"] = static_cast<double>(visit_latencies.size());
+  state.counters["visit_p50_ms"] = percentile(visit_latencies, 0.5);
+  state.counters["visit_p95_ms"] = percentile(visit_latencies, 0.95);
   state.counters["server_peak_RSS_MB"] = rss;
 }
 BENCHMARK(BM_Office50ClientsDrive3000WhileATabletSyncs)
@@ -270,9 +294,12 @@ BENCHMARK(BM_Office50ClientsDrive3000WhileATabletSyncs)
     ->Iterations(1);
 
 // The rounds along the drive of 3,000 visits (issue 46: the rounds pulled
-// the whole tunnel with its photographs): the first request's time (the
-// pull and the rounds' figures), the bytes of the server's pulled copy,
-// a second request's time (the page kept), the server's peak memory.
+// the whole tunnel with its photographs, then measured 3,000 meshes on
+// every server's first request): the first request's time (the pull and
+// the rounds' figures) and how many rounds it measured, the bytes of the
+// server's pulled copies, a second request's time (the page kept), a
+// fresh server's first request (the figures kept on the database: none
+// measured), the server's peak memory.
 // With `binary_variable` set, the rockface named by that environment
 // variable serves instead of this build's.
 void BM_OfficeRounds3000(benchmark::State& state, const char* binary_variable) {
@@ -287,8 +314,8 @@ void BM_OfficeRounds3000(benchmark::State& state, const char* binary_variable) {
     binary = named;
   }
   const std::string& db = big_database();
-  double first_s = 0, again_s = 0, copy_mb = 0, rss = 0, page_kb = 0;
-  int rounds = 0;
+  double first_s = 0, again_s = 0, fresh_s = 0, copy_mb = 0, rss = 0, page_kb = 0;
+  int rounds = 0, measured = 0, fresh_measured = 0;
   for (auto _ : state) {
     Served s(db, binary);
     httplib::Client c("127.0.0.1", s.port);
@@ -303,6 +330,7 @@ void BM_OfficeRounds3000(benchmark::State& state, const char* binary_variable) {
     }
     rounds = static_cast<int>(json::parse(r->body)["rounds"].size());
     page_kb = static_cast<double>(r->body.size()) / 1024;
+    measured = std::stoi("0" + r->get_header_value("X-Rockface-Rounds-Measured"));
     t0 = Clock::now();
     c.Get("/api/drive/rounds?tunnel=bench", {{"Cookie", cookie}});
     again_s = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -312,10 +340,24 @@ void BM_OfficeRounds3000(benchmark::State& state, const char* binary_variable) {
       if (e.path().extension() == ".rockface") bytes += fs::file_size(e.path());
     copy_mb = static_cast<double>(bytes) / (1024 * 1024);
     rss = s.peak_rss_mb();
+    // A server started afresh on the same database: the figures kept by the
+    // first (this build's), measured again by a build that keeps none.
+    Served fresh(db, binary);
+    httplib::Client f("127.0.0.1", fresh.port);
+    f.set_read_timeout(std::chrono::seconds(1800));
+    const std::string fresh_cookie = log_in(f, fresh.origin());
+    t0 = Clock::now();
+    const auto again = f.Get("/api/drive/rounds?tunnel=bench", {{"Cookie", fresh_cookie}});
+    fresh_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (again && again->status == 200)
+      fresh_measured = std::stoi("0" + again->get_header_value("X-Rockface-Rounds-Measured"));
   }
   state.counters["rounds"] = rounds;
   state.counters["first_s"] = first_s;
+  state.counters["first_measured"] = measured;
   state.counters["again_s"] = again_s;
+  state.counters["fresh_server_s"] = fresh_s;
+  state.counters["fresh_server_measured"] = fresh_measured;
   state.counters["pulled_copy_MB"] = copy_mb;
   state.counters["page_kB"] = page_kb;
   state.counters["server_peak_RSS_MB"] = rss;
@@ -326,6 +368,67 @@ BENCHMARK_CAPTURE(BM_OfficeRounds3000, other_build, "ROCKFACE_OTHER_BINARY")
 BENCHMARK_CAPTURE(BM_OfficeRounds3000, this_build, "")
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
+
+// Opening one visit of the 3,000-visit drive (issue 46: the visit page
+// pulled the whole tunnel with its photographs): the visit page's first
+// request, the bytes the server pulled for it, then one photograph shown;
+// beside it the pull the page made before (the whole tunnel with its
+// photographs, pull_tunnel as `rockface pull` runs it: a build from
+// before schema 3 cannot serve this database).
+void BM_OfficeVisitOpen3000(benchmark::State& state) {
+  const std::string& db = big_database();
+  double open_s = 0, photo_s = 0, copy_mb = 0, photo_kb = 0, whole_s = 0, whole_mb = 0;
+  for (auto _ : state) {
+    Served s(db);
+    httplib::Client c("127.0.0.1", s.port);
+    c.set_read_timeout(std::chrono::seconds(1800));
+    const std::string cookie = log_in(c, s.origin());
+    const auto d = c.Get("/api/drive?tunnel=bench", {{"Cookie", cookie}});
+    if (!d || d->status != 200) {
+      state.SkipWithError("the drive was not served");
+      return;
+    }
+    const json visits = json::parse(d->body)["visits"];
+    // A visit in the drive's middle.
+    const std::string visit = visits[visits.size() / 2]["id"];
+    auto t0 = Clock::now();
+    const auto v = c.Get("/api/visit?tunnel=bench&visit=" + visit, {{"Cookie", cookie}});
+    open_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (!v || v->status != 200) {
+      state.SkipWithError("the visit was not served");
+      return;
+    }
+    const json photo = json::parse(v->body)["photos"][0];
+    t0 = Clock::now();
+    const auto p = c.Get("/api/visit/photo?tunnel=bench&visit=" + visit +
+                             "&capture=" + std::to_string(photo["capture"].get<std::int64_t>()) +
+                             "&side=" + photo["side"].get<std::string>(),
+                         {{"Cookie", cookie}});
+    photo_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (p && p->status == 200) photo_kb = static_cast<double>(p->body.size()) / 1024;
+    std::uintmax_t bytes = 0;
+    const fs::path shared = folder() / ("rockface-office-" + std::to_string(s.pid)) / "shared";
+    for (const auto& e : fs::directory_iterator(shared))
+      if (e.path().extension() == ".rockface") bytes += fs::file_size(e.path());
+    copy_mb = static_cast<double>(bytes) / (1024 * 1024);
+
+    const fs::path whole = folder() / "whole-tunnel.rockface";
+    fs::remove(whole);
+    NoProgress none;
+    t0 = Clock::now();
+    office::pull_tunnel(server().socket_conninfo("office_bench", db), "bench", whole, none);
+    whole_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    whole_mb = static_cast<double>(fs::file_size(whole)) / (1024 * 1024);
+    fs::remove(whole);
+  }
+  state.counters["open_s"] = open_s;
+  state.counters["pulled_copy_MB"] = copy_mb;
+  state.counters["photo_s"] = photo_s;
+  state.counters["photo_kB"] = photo_kb;
+  state.counters["whole_pull_s"] = whole_s;
+  state.counters["whole_pull_MB"] = whole_mb;
+}
+BENCHMARK(BM_OfficeVisitOpen3000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_DriveFirstPaint3000(benchmark::State& state) {
   if (!office_web_test::WebDriver::available()) {

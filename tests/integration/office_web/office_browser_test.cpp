@@ -95,6 +95,7 @@ struct Walk {
   std::string drive_text, visit_text, visit_uuid, cookie;
   double face_drawn = 0, face_turned = 0;
   int page_width = 0, window_width = 0;
+  int photograph_width = 0;  // the first photograph as the page shows it
 };
 
 // Log in, open the drive of Main drive, open the visit with blocks, wait
@@ -133,6 +134,15 @@ Walk walk(const OfficeServer& server, int width, int height) {
   d.drag(d.wait_for("#face-canvas"), width / 5, 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   w.face_turned = changed_fraction(before, d.screenshot(), rect);
+  // The visit's photographs are fetched from the server as they are shown
+  // (its copy on the web server holds none): the first, scrolled to, loads.
+  w.photograph_width =
+      d.script(
+           "const i = document.querySelector('img[alt^=\"photograph\"]'); if (!i) return 0; "
+           "i.scrollIntoView(); return new Promise(r => { let n = 0; const t = setInterval(() => "
+           "{ if (i.naturalWidth > 0 || ++n > 200) { clearInterval(t); r(i.naturalWidth); } }, "
+           "100); })")
+          .get<int>();
   w.page_width = d.script("return document.documentElement.scrollWidth").get<int>();
   w.window_width = d.script("return window.innerWidth").get<int>();
   w.cookie = d.cookie("rockface_session");
@@ -157,6 +167,9 @@ void expect_walk(const Walk& w, const std::string& name) {
   // than 2 % of the canvas changes.
   EXPECT_GT(w.face_turned, 0.02) << name << ": dragging did not turn the face";
   EXPECT_LE(w.page_width, w.window_width) << name << ": the page is wider than the window";
+  // The site's photographs are hundreds of pixels wide: a decoded picture,
+  // not a broken image (0).
+  EXPECT_GT(w.photograph_width, 100) << name << ": the visit's photograph did not load";
 }
 
 TEST(OfficeWebBrowser, LaptopWalkAndTheFieldReport) {

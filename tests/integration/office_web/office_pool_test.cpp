@@ -10,6 +10,7 @@
 #include <chrono>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -162,6 +163,60 @@ TEST(OfficePool, MoreUsersThanConnectionsAreAllServed) {
   EXPECT_GT(most.load(), 0);
   EXPECT_LE(most.load(), 2) << "the server held more connections than its pool";
   EXPECT_EQ(backends(people), 0) << "a person's own connection stayed open";
+}
+
+// More people than the pool's one connection over HTTP: while a request
+// holds it (stalled at the database: the test holds a lock on the
+// tunnels), a second person is told "busy, try again" with 503 and
+// Retry-After once the pool's wait is over — not a hang, not a 500 — and
+// the held request is served when the database answers; so is the second
+// person's next request.
+TEST(OfficePool, ARequestWaitingPastThePoolsWaitIsToldToTryAgain) {
+  const Site& s = site();
+  OfficeServer server(s, 30, {"--pool", "1", "--pool-wait-seconds", "1"});
+  httplib::Client first("127.0.0.1", server.port()), second("127.0.0.1", server.port());
+  first.set_read_timeout(std::chrono::seconds(120));
+  second.set_read_timeout(std::chrono::seconds(120));
+  const Login a = log_in(first, server.origin(), "office_reader", kOfficePassword);
+  const Login b = log_in(second, server.origin(), "main_office", kMainOfficePassword);
+  ASSERT_EQ(a.status, 200) << a.error;
+  ASSERT_EQ(b.status, 200) << b.error;
+
+  office::Connection locker(office_test::as_superuser(s.database));
+  locker.exec("BEGIN; LOCK TABLE rockface.tunnel IN ACCESS EXCLUSIVE MODE", "holding the tunnels");
+  std::optional<httplib::Result> held;
+  std::thread holding([&] { held.emplace(first.Get("/api/tunnels", {{"Cookie", a.cookie}})); });
+  // The first request has the pool's only connection once it waits on the
+  // lock at the database.
+  office::Connection watch(office_test::as_superuser(s.database));
+  const auto until = Clock::now() + std::chrono::seconds(60);
+  while (Clock::now() < until &&
+         watch.query("SELECT count(*) FROM pg_stat_activity WHERE usename = 'office_web' AND "
+                     "wait_event_type = 'Lock'",
+                     {}, "watching the pool")
+                 .int64(0, 0) == 0)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+
+  const auto t0 = Clock::now();
+  const auto busy = second.Get("/api/tunnels", {{"Cookie", b.cookie}});
+  const auto waited = Clock::now() - t0;
+  ASSERT_TRUE(busy);
+  EXPECT_EQ(busy->status, 503) << busy->body;
+  EXPECT_FALSE(busy->get_header_value("Retry-After").empty());
+  EXPECT_NE(json::parse(busy->body).value("error", "").find("busy"), std::string::npos)
+      << busy->body;
+  // It waited the pool's second (and not the held request's time). The
+  // upper bound is the machine's slack under load, not the server's.
+  EXPECT_GE(waited, std::chrono::milliseconds(1000));
+  EXPECT_LT(waited, std::chrono::seconds(30));
+
+  locker.exec("COMMIT", "letting the tunnels go");
+  holding.join();
+  ASSERT_TRUE(held.has_value() && *held);
+  EXPECT_EQ((*held)->status, 200) << (*held)->body;
+  const auto again = second.Get("/api/tunnels", {{"Cookie", b.cookie}});
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->status, 200) << again->body;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
 #include "tests/integration/office_web/office_site.h"
+#include "tests/storage/office/office_environment.h"
 
 // Last: <resolv.h>, which httplib.h includes, defines the macro _res that
 // Eigen uses as a parameter name.
@@ -80,8 +82,22 @@ TEST(OfficeRounds, ACopyWithoutPhotographsGivesTheSameRounds) {
   EXPECT_EQ(rounds_of(figures), rounds_of(full));
 }
 
-// The office's rounds route pulls the copy without photographs: after the
-// rounds alone, the server's only pulled copy holds none.
+std::vector<fs::path> pulled_copies(const OfficeServer& server) {
+  std::vector<fs::path> copies;
+  for (const auto& e : fs::directory_iterator(server.work_folder() / "shared"))
+    if (e.path().extension() == ".rockface") copies.push_back(e.path());
+  return copies;
+}
+
+std::int64_t count_of(const fs::path& project, const std::string& sql) {
+  storage::sqlite::Connection db(project, storage::sqlite::Connection::Access::read_only);
+  storage::sqlite::Statement st(db, sql, "counting");
+  st.step();
+  return st.column_int(0);
+}
+
+// The office's rounds route pulls copies without photographs: after the
+// rounds alone, none of the server's pulled copies holds one.
 TEST(OfficeRounds, TheDrivesRoundsReadNoPhotograph) {
   OfficeServer server;
   httplib::Client c("127.0.0.1", server.port());
@@ -92,13 +108,138 @@ TEST(OfficeRounds, TheDrivesRoundsReadNoPhotograph) {
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
   EXPECT_FALSE(json::parse(r->body)["rounds"].empty());
-  std::vector<fs::path> copies;
-  for (const auto& e : fs::directory_iterator(server.work_folder() / "shared"))
-    if (e.path().extension() == ".rockface") copies.push_back(e.path());
-  ASSERT_EQ(copies.size(), 1u) << "the rounds made more than their own copy";
-  const Images images = images_of(copies.front());
-  EXPECT_GT(images.rows, 0);
-  EXPECT_EQ(images.bytes, 0) << "the rounds' copy holds photographs";
+  const std::vector<fs::path> copies = pulled_copies(server);
+  ASSERT_FALSE(copies.empty());
+  for (const fs::path& copy : copies) {
+    const Images images = images_of(copy);
+    EXPECT_GT(images.rows, 0);
+    EXPECT_EQ(images.bytes, 0) << "a copy of the rounds holds photographs";
+  }
+}
+
+struct Rounds {
+  int status = 0, measured = -1;
+  std::string body;
+};
+
+Rounds rounds_from(const OfficeServer& server) {
+  httplib::Client c("127.0.0.1", server.port());
+  c.set_read_timeout(std::chrono::seconds(300));
+  const Login office = log_in(c, server.origin(), "office_reader", kOfficePassword);
+  if (office.status != 200) return {office.status, -1, office.error};
+  const auto r = c.Get("/api/drive/rounds?tunnel=Main%20drive", {{"Cookie", office.cookie}});
+  if (!r) return {};
+  return {r->status, std::stoi("0" + r->get_header_value("X-Rockface-Rounds-Measured")), r->body};
+}
+
+// visit uuid -> when its figures were kept (the server's clock, text).
+std::map<std::string, std::string> kept_at(const Site& s) {
+  storage::office::Connection su(office_test::as_superuser(s.database));
+  const storage::office::Result r = su.query(
+      "SELECT visit_uuid::text, computed_at::text FROM rockface.round_figures", {}, "reading");
+  std::map<std::string, std::string> out;
+  for (int i = 0; i < r.rows(); ++i) out[r.text(i, 0)] = r.text(i, 1);
+  return out;
+}
+
+// Issue 46: the first rounds request of a 3,000-visit drive measured 3,000
+// meshes (753 s), and a restarted server measured them all again. Each
+// round's over- and underbreak is now measured once and kept on the
+// server: a second server measures none (the route's count of rounds
+// measured, and the kept rows' times unchanged) and pulls no mesh; a
+// round whose inputs no longer match what its figures were kept for is
+// measured again, alone.
+TEST(OfficeRounds, EachRoundsFiguresAreMeasuredOnceAndKept) {
+  const Site s = fresh_site();
+  Rounds first;
+  {
+    OfficeServer server(s, 30);
+    first = rounds_from(server);
+    ASSERT_EQ(first.status, 200) << first.body;
+  }
+  const json page = json::parse(first.body);
+  const int rounds = static_cast<int>(page["rounds"].size());
+  ASSERT_GT(rounds, 0);
+  EXPECT_EQ(first.measured, rounds) << "a fresh database has no figures kept";
+  // Every round says what its 3D image gave (the site's see the face only:
+  // "unknown", never zero).
+  for (const auto& r : page["rounds"]) EXPECT_TRUE(r.contains("excavation_text")) << r;
+  const auto kept = kept_at(s);
+  EXPECT_EQ(static_cast<int>(kept.size()), rounds);
+
+  {
+    OfficeServer server(s, 30);
+    const Rounds again = rounds_from(server);
+    ASSERT_EQ(again.status, 200) << again.body;
+    EXPECT_EQ(again.measured, 0);
+    EXPECT_EQ(again.body, first.body);
+    // Only the copy without photographs or meshes was pulled.
+    const std::vector<fs::path> copies = pulled_copies(server);
+    ASSERT_EQ(copies.size(), 1u);
+    EXPECT_EQ(count_of(copies.front(), "SELECT count(*) FROM model_mesh_part"), 0);
+    EXPECT_GT(count_of(copies.front(), "SELECT count(*) FROM model"), 0);
+  }
+  EXPECT_EQ(kept_at(s), kept) << "kept figures were written again";
+
+  // One round's kept inputs no longer those of its records (as after a
+  // re-sync of its visit): that round alone is measured again.
+  const std::string stale = kept.begin()->first;
+  office_test::server().psql(
+      "UPDATE rockface.round_figures SET inputs = 'stale' WHERE visit_uuid = '" + stale + "'",
+      s.database);
+  {
+    OfficeServer server(s, 30);
+    const Rounds third = rounds_from(server);
+    ASSERT_EQ(third.status, 200) << third.body;
+    EXPECT_EQ(third.measured, 1);
+    EXPECT_EQ(third.body, first.body);
+    // Measured on a copy of that visit, used once and gone: no copy of the
+    // whole drive's meshes was pulled for one round.
+    const std::vector<fs::path> copies = pulled_copies(server);
+    ASSERT_EQ(copies.size(), 1u);
+    EXPECT_EQ(count_of(copies.front(), "SELECT count(*) FROM model_mesh_part"), 0);
+  }
+  const auto after = kept_at(s);
+  for (const auto& [visit, at] : kept)
+    if (visit == stale)
+      EXPECT_NE(after.at(visit), at) << "the stale round was not measured again";
+    else
+      EXPECT_EQ(after.at(visit), at) << visit;
+}
+
+// The kept figures are the web server's to write (its group, through one
+// function): an office person's own role writes none, directly or through
+// the function, and reads only the rounds of tunnels it may read.
+TEST(OfficeRounds, AnOfficeRoleNeitherWritesKeptFiguresNorReadsOtherTunnels) {
+  const Site& s = site();
+  {
+    OfficeServer server(s, 30);
+    ASSERT_EQ(rounds_from(server).status, 200);
+  }
+  storage::office::Connection office(s.server, "office_reader", kOfficePassword, 10);
+  for (const char* sql :
+       {"SELECT rockface.keep_round_figures(gen_random_uuid(), 'x', '{}'::jsonb)",
+        "INSERT INTO rockface.round_figures (visit_uuid, inputs, figures) SELECT visit_uuid, "
+        "'x', '{}' FROM rockface.round_figures LIMIT 1",
+        "UPDATE rockface.round_figures SET figures = '{}'"}) {
+    try {
+      office.query(sql, {}, "writing figures");
+      ADD_FAILURE() << "an office role ran " << sql;
+    } catch (const storage::office::ServerError& e) {
+      EXPECT_EQ(e.sqlstate(), "42501") << sql << ": " << e.what();
+    }
+  }
+  EXPECT_GT(office.query("SELECT count(*) FROM rockface.round_figures", {}, "reading").int64(0, 0),
+            0);
+  // The adit's office reads none of Main drive's visits, nor their figures.
+  storage::office::Connection adit(s.server, "adit_office", kAditPassword, 10);
+  EXPECT_EQ(adit.query("SELECT count(*) FROM rockface.visit v JOIN rockface.tunnel t ON t.id = "
+                       "v.tunnel_id WHERE t.name = 'Main drive'",
+                       {}, "reading")
+                .int64(0, 0),
+            0);
+  EXPECT_EQ(adit.query("SELECT count(*) FROM rockface.round_figures", {}, "reading").int64(0, 0), 0)
+      << "the adit's office read Main drive's figures";
 }
 
 }  // namespace

@@ -153,7 +153,7 @@ TEST(OfficeBlobs, AVersionOneServerUpgradedKeepsItsTunnelsBlobsApart) {
         "a version 1 server's rows");
     const auto upgraded = storage::office::init_server(su);
     EXPECT_EQ(upgraded.from_version, 1);
-    EXPECT_EQ(upgraded.to_version, 2);
+    EXPECT_EQ(upgraded.to_version, storage::office::kServerSchemaVersion);
     storage::office::add_tablet(su, "tablet_old", "Old drive");
     storage::office::add_tablet(su, "tablet_next", "Next drive");
   }

@@ -1,0 +1,127 @@
+// A visit's pages read a copy of that visit (issue 46: the visit page
+// pulled the whole tunnel with every photograph to show one visit): the
+// visit's own records, the drive's visits and placements, the tunnel — no
+// other visit's photographs, 3D images or joints, and no photograph at all
+// until one is shown, then that one from the server.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "storage/project/project_sqlite.h"
+#include "tests/integration/office_web/office_site.h"
+
+// Last: <resolv.h>, which httplib.h includes, defines the macro _res that
+// Eigen uses as a parameter name.
+#include "tests/integration/office_web/office_client.h"
+
+namespace rockface::office_web_test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::int64_t count_of(const fs::path& project, const std::string& sql, std::int64_t visit) {
+  storage::sqlite::Connection db(project, storage::sqlite::Connection::Access::read_only);
+  storage::sqlite::Statement st(db, sql, "counting");
+  if (sql.find('?') != std::string::npos) st.bind(1, visit);
+  st.step();
+  return st.column_int(0);
+}
+
+TEST(OfficeVisitCopy, AVisitPageReadsThatVisitAndItsPhotographsOnlyWhenShown) {
+  OfficeServer server;
+  httplib::Client c("127.0.0.1", server.port());
+  c.set_read_timeout(std::chrono::seconds(120));
+  const Login office = log_in(c, server.origin(), "office_reader", kOfficePassword);
+  ASSERT_EQ(office.status, 200) << office.error;
+  const httplib::Headers cookie = {{"Cookie", office.cookie}};
+  const auto drive = c.Get("/api/drive?tunnel=Main%20drive", cookie);
+  ASSERT_TRUE(drive);
+  ASSERT_EQ(drive->status, 200) << drive->body;
+  const json visits = json::parse(drive->body)["visits"];
+  ASSERT_GE(visits.size(), 3u) << "the site's drive has visits of two tablets";
+
+  // The first visit with photographs.
+  std::string uuid;
+  json page;
+  for (const auto& v : visits) {
+    const auto r =
+        c.Get("/api/visit?tunnel=Main%20drive&visit=" + v["id"].get<std::string>(), cookie);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    page = json::parse(r->body);
+    if (!page["photos"].empty()) {
+      uuid = v["id"];
+      break;
+    }
+  }
+  ASSERT_FALSE(uuid.empty()) << "no visit of the site has photographs";
+
+  std::vector<fs::path> copies;
+  for (const auto& e : fs::directory_iterator(server.work_folder() / "shared"))
+    if (e.path().extension() == ".rockface") copies.push_back(e.path());
+  ASSERT_FALSE(copies.empty());
+  int copies_of_the_visit = 0;
+  for (const fs::path& copy : copies) {
+    storage::sqlite::Connection db(copy, storage::sqlite::Connection::Access::read_only);
+    storage::sqlite::Statement st(db, "SELECT id FROM visit WHERE uuid = ?", "finding the visit");
+    st.bind(1, uuid);
+    ASSERT_TRUE(st.step()) << "a visit's copy does not list the drive's visits";
+    const std::int64_t id = st.column_int(0);
+    // Each copy holds one visit's records: an earlier visit's is not this one's.
+    if (count_of(copy, "SELECT count(*) FROM capture WHERE visit_id = ?", id) == 0) continue;
+    ++copies_of_the_visit;
+    // Every visit of the drive is listed (its order, the previous face)...
+    EXPECT_EQ(count_of(copy, "SELECT count(*) FROM visit", 0),
+              static_cast<std::int64_t>(visits.size()));
+    // ...but the records of this visit only: no other visit's captures,
+    // 3D images, joints or analyses.
+    EXPECT_EQ(count_of(copy, "SELECT count(*) FROM capture WHERE visit_id <> ?", id), 0);
+    EXPECT_EQ(count_of(copy,
+                       "SELECT count(*) FROM model m JOIN capture c ON c.id = m.capture_id "
+                       "WHERE c.visit_id <> ?",
+                       id),
+              0);
+    EXPECT_EQ(count_of(copy, "SELECT count(*) FROM joint WHERE visit_id <> ?", id), 0);
+    EXPECT_EQ(count_of(copy, "SELECT count(*) FROM analysis WHERE visit_id <> ?", id), 0);
+    // No photograph's bytes were fetched to open the page.
+    EXPECT_EQ(count_of(copy, "SELECT coalesce(sum(length(bytes)), 0) FROM image", 0), 0);
+    EXPECT_GT(count_of(copy, "SELECT count(*) FROM image", 0), 0);
+  }
+  EXPECT_EQ(copies_of_the_visit, 1);
+
+  // A photograph shown is fetched then, whole: its stored size, and a
+  // picture that decodes.
+  const json photo = page["photos"][0];
+  const auto r = c.Get("/api/visit/photo?tunnel=Main%20drive&visit=" + uuid +
+                           "&capture=" + std::to_string(photo["capture"].get<std::int64_t>()) +
+                           "&side=" + photo["side"].get<std::string>(),
+                       cookie);
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const std::vector<std::uint8_t> bytes(r->body.begin(), r->body.end());
+  const cv::Mat decoded = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+  EXPECT_FALSE(decoded.empty());
+  bool sized = false;
+  for (const fs::path& copy : copies)
+    sized |=
+        count_of(copy,
+                 "SELECT count(*) FROM image i JOIN capture c ON i.id = c." +
+                     photo["side"].get<std::string>() +
+                     "_image_id WHERE c.id = ? AND i.byte_size = " + std::to_string(bytes.size()),
+                 photo["capture"].get<std::int64_t>()) > 0;
+  EXPECT_TRUE(sized) << "the photograph served is not the size its row keeps";
+  // A capture that is not this visit's is refused.
+  const auto other = c.Get(
+      "/api/visit/photo?tunnel=Main%20drive&visit=" + uuid + "&capture=987654&side=left", cookie);
+  ASSERT_TRUE(other);
+  EXPECT_EQ(other->status, 404);
+}
+
+}  // namespace
+}  // namespace rockface::office_web_test
