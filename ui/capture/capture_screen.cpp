@@ -262,27 +262,6 @@ bool shoot_button(AppState& app, const char* label, bool taken, bool enabled) {
   return app.targets.button(label, 0, enabled);
 }
 
-void draw_guidance(AppState& app) {
-  CaptureState& c = app.capture;
-  const float s = app.targets.scale();
-  heading("Stereo guidance");
-  label("Distance to the face");
-  slider(app.targets, "distance", &c.distance_m, 2, 100, "%.0f m",
-         std::min(400 * s, ImGui::GetContentRegionAvail().x));
-  const camera::BaseLengthHint hint = camera::base_length_hint(c.distance_m);
-  bullet("Walk " + format::text(format::Length{hint.min_m}) + " to " +
-         format::text(format::Length{hint.max_m}) +
-         " between the shots (1/8 to 1/5 of the distance).");
-  bullet("Same focal length, focus and aperture for both shots; no flash.");
-  bullet("The range pole (both targets) in view of both shots.");
-  draw_pole_length(app);
-  label("3D image");
-  const std::vector<std::string> presets{"fast: a first look", "standard", "precise"};
-  const std::size_t at = c.preset == Preset::fast ? 0 : c.preset == Preset::standard ? 1 : 2;
-  if (const auto chosen = choice(app.targets, "Preset", presets[at], presets, at))
-    c.preset = *chosen == 0 ? Preset::fast : *chosen == 1 ? Preset::standard : Preset::precise;
-}
-
 // The range pole's length, typed in millimetres as its makers mark it
 // (a slider could not say 2.000 m exactly; issue 42), kept for the
 // project's next pairs.
@@ -312,6 +291,27 @@ void draw_pole_length(AppState& app) {
   }
   ImGui::SameLine();
   if (app.targets.button_in_row("Cancel pole length")) c.typing_pole = false;
+}
+
+void draw_guidance(AppState& app) {
+  CaptureState& c = app.capture;
+  const float s = app.targets.scale();
+  heading("Stereo guidance");
+  label("Distance to the face");
+  slider(app.targets, "distance", &c.distance_m, 2, 100, "%.0f m",
+         std::min(400 * s, ImGui::GetContentRegionAvail().x));
+  const camera::BaseLengthHint hint = camera::base_length_hint(c.distance_m);
+  bullet("Walk " + format::text(format::Length{hint.min_m}) + " to " +
+         format::text(format::Length{hint.max_m}) +
+         " between the shots (1/8 to 1/5 of the distance).");
+  bullet("Same focal length, focus and aperture for both shots; no flash.");
+  bullet("The range pole (both targets) in view of both shots.");
+  draw_pole_length(app);
+  label("3D image");
+  const std::vector<std::string> presets{"fast: a first look", "standard", "precise"};
+  const std::size_t at = c.preset == Preset::fast ? 0 : c.preset == Preset::standard ? 1 : 2;
+  if (const auto chosen = choice(app.targets, "Preset", presets[at], presets, at))
+    c.preset = *chosen == 0 ? Preset::fast : *chosen == 1 ? Preset::standard : Preset::precise;
 }
 
 // The camera and the shots: what the geologist taps at the face, first.
