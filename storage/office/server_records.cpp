@@ -30,6 +30,29 @@ ServerTunnel read_server_tunnel(Connection& c, const std::string& name) {
   return t;
 }
 
+namespace {
+
+// The rows of a latest-records query (kind, uuid, visit, project, local id,
+// schema, body); a record of a newer project schema is refused by name.
+std::vector<ServerRecord> records_of(const Result& r) {
+  std::vector<ServerRecord> out;
+  out.reserve(static_cast<std::size_t>(r.rows()));
+  for (int i = 0; i < r.rows(); ++i) {
+    ServerRecord rec{r.text(i, 0), r.text(i, 1),  r.optional_text(i, 2),
+                     r.text(i, 3), r.int64(i, 4), static_cast<int>(r.int64(i, 5)),
+                     r.text(i, 6)};
+    if (rec.project_schema > schema::kCurrentVersion)
+      throw InputError(rec.kind + " " + rec.uuid,
+                       "written by a newer rockface (project schema " +
+                           std::to_string(rec.project_schema) + ", this program knows up to " +
+                           std::to_string(schema::kCurrentVersion) + "): update rockface");
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<ServerRecord> read_current_records(Connection& c, std::int64_t tunnel_id,
                                                const std::vector<std::string>& kinds,
                                                bool with_body) {
@@ -46,20 +69,7 @@ std::vector<ServerRecord> read_current_records(Connection& c, std::int64_t tunne
                   "WHERE tunnel_id = $1 AND ($2::text[] = '{}' OR kind = ANY($2::text[])) "
                   "ORDER BY kind, uuid, revision DESC) latest WHERE NOT deleted",
               {Param::of(tunnel_id), Param::of(list)}, "reading the tunnel's records");
-  std::vector<ServerRecord> out;
-  out.reserve(static_cast<std::size_t>(r.rows()));
-  for (int i = 0; i < r.rows(); ++i) {
-    ServerRecord rec{r.text(i, 0), r.text(i, 1),  r.optional_text(i, 2),
-                     r.text(i, 3), r.int64(i, 4), static_cast<int>(r.int64(i, 5)),
-                     r.text(i, 6)};
-    if (rec.project_schema > schema::kCurrentVersion)
-      throw InputError(rec.kind + " " + rec.uuid,
-                       "written by a newer rockface (project schema " +
-                           std::to_string(rec.project_schema) + ", this program knows up to " +
-                           std::to_string(schema::kCurrentVersion) + "): update rockface");
-    out.push_back(std::move(rec));
-  }
-  return out;
+  return records_of(r);
 }
 
 namespace {
@@ -91,20 +101,7 @@ std::vector<ServerRecord> latest_records(Connection& c, const std::string& where
       "WHERE tunnel_id = $1 AND (" +
           where + ") ORDER BY kind, uuid, revision DESC) latest WHERE NOT deleted",
       params, "reading the visits' records");
-  std::vector<ServerRecord> out;
-  out.reserve(static_cast<std::size_t>(r.rows()));
-  for (int i = 0; i < r.rows(); ++i) {
-    ServerRecord rec{r.text(i, 0), r.text(i, 1),  r.optional_text(i, 2),
-                     r.text(i, 3), r.int64(i, 4), static_cast<int>(r.int64(i, 5)),
-                     r.text(i, 6)};
-    if (rec.project_schema > schema::kCurrentVersion)
-      throw InputError(rec.kind + " " + rec.uuid,
-                       "written by a newer rockface (project schema " +
-                           std::to_string(rec.project_schema) + ", this program knows up to " +
-                           std::to_string(schema::kCurrentVersion) + "): update rockface");
-    out.push_back(std::move(rec));
-  }
-  return out;
+  return records_of(r);
 }
 
 }  // namespace
