@@ -44,6 +44,7 @@
 #include "tests/core/photogrammetry/camera/board_views.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/plane_angle.h"
+#include "tests/support/station_truth.h"
 #include "tests/support/temp_folders.h"
 #include "tests/support/truth_picks.h"
 #include "ui/app/app_state.h"
@@ -141,28 +142,6 @@ std::vector<std::string> board_views(const json& lens, const fs::path& dir) {
 
 std::vector<uint8_t> png_as_d750_jpeg(const fs::path& png) {
   return as_d750_jpeg(cv::imread(png.string(), cv::IMREAD_COLOR));
-}
-
-double bearing_of_axis(const storage::Model& m) {
-  const Eigen::Vector3d axis = m.camera_to_mesh->R * Eigen::Vector3d::UnitZ();
-  const double a = rad_to_deg(std::atan2(axis.x(), axis.y()));
-  return a < 0 ? a + 360 : a;
-}
-
-double true_bearing(const json& station) {
-  const auto p = station.at("position"), q = station.at("look_at");
-  const double a = rad_to_deg(
-      std::atan2(q[0].get<double>() - p[0].get<double>(), q[1].get<double>() - p[1].get<double>()));
-  return a < 0 ? a + 360 : a;
-}
-
-double distance_apart(const json& a, const json& b) {
-  double s = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double d = a.at("position")[i].get<double>() - b.at("position")[i].get<double>();
-    s += d * d;
-  }
-  return std::sqrt(s);
 }
 
 // The geologist's taps: eight along each true trace on the face (its pixels
@@ -346,14 +325,15 @@ TEST(VirtualD750PairToReport, APairShotOnTheTabletGivesAScaledOrientedVisitItsBl
     // 1200 px photographs (JPEG, blur 0.5 px), about 0.4 % of the scale;
     // 1 % also covers the ellipse-centre bias of the printed targets (as
     // card_folder_replay_test.cpp holds the replayed card's).
-    const double base = distance_apart(truth.at("cameras")[0], truth.at("cameras")[1]);
+    const double base = test::true_base_m(truth.at("cameras")[0], truth.at("cameras")[1]);
     ASSERT_TRUE(reg.base_m);
     EXPECT_NEAR(*reg.base_m, base, 0.01 * base);
     // North: the compass line fixes it to ~0.1 deg from exact pixels; 0.5 deg
     // is a compass reading's own tolerance, plus what the taps add.
     ASSERT_TRUE(m.camera_to_mesh);
-    const double off =
-        std::abs(std::remainder(bearing_of_axis(m) - true_bearing(truth.at("cameras")[0]), 360.0));
+    const double off = std::abs(std::remainder(
+        test::model_axis_bearing_deg(m) - test::true_view_bearing_deg(truth.at("cameras")[0]),
+        360.0));
     std::printf("tablet visit: base %.4f m (true %.4f), north %.2f deg off (budget %.2f)\n",
                 *reg.base_m, base, off, 0.5 + taps_deg);
     EXPECT_LT(off, 0.5 + taps_deg);

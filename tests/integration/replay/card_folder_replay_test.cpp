@@ -24,6 +24,7 @@
 #include "storage/project/project_store.h"
 #include "tests/support/card_folder.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/station_truth.h"
 #include "tests/support/temp_folders.h"
 
 namespace rockface {
@@ -89,23 +90,6 @@ class CardFolder : public ::testing::Test {
   static inline json truth_;
 };
 
-// The true bearing of the left camera's axis (station to its look-at point).
-double true_view_azimuth_deg(const json& station) {
-  const auto p = station.at("position"), q = station.at("look_at");
-  double a = rad_to_deg(
-      std::atan2(q[0].get<double>() - p[0].get<double>(), q[1].get<double>() - p[1].get<double>()));
-  return a < 0 ? a + 360 : a;
-}
-
-double true_base_m(const json& left, const json& right) {
-  double s = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double d = right.at("position")[i].get<double>() - left.at("position")[i].get<double>();
-    s += d * d;
-  }
-  return std::sqrt(s);
-}
-
 double bearing_apart(double a, double b) {
   return std::abs(std::remainder(a - b, 360.0));
 }
@@ -133,15 +117,15 @@ TEST_F(CardFolder, VisitFileGivesAScaledNorthOrientedVisit) {
   // 1500 px photographs (JPEG, blur 0.5 px), so the scale is good to about
   // 0.3 %; 1 % also covers the ellipse-centre bias of the printed targets.
   ASSERT_TRUE(reg.base_m);
-  EXPECT_NEAR(*reg.base_m, true_base_m(truth_station(0), truth_station(1)),
-              0.01 * true_base_m(truth_station(0), truth_station(1)));
+  EXPECT_NEAR(*reg.base_m, test::true_base_m(truth_station(0), truth_station(1)),
+              0.01 * test::true_base_m(truth_station(0), truth_station(1)));
   // North: the left camera looks at 5.2 deg; the compass line (4 m long at
   // 9.8 m, its ends given to a fraction of a pixel) fixes north to about
   // 0.1 deg, and the levelling by the pole adds less; 0.5 deg is the
   // tolerance a geologist's compass reading itself has.
-  EXPECT_NEAR(
-      bearing_apart(stored_view_azimuth_deg(project), true_view_azimuth_deg(truth_station(0))), 0,
-      0.5);
+  EXPECT_NEAR(bearing_apart(stored_view_azimuth_deg(project),
+                            test::true_view_bearing_deg(truth_station(0))),
+              0, 0.5);
   // The preset and the note came from the file.
   auto store = storage::ProjectStore::open(project);
   EXPECT_EQ(store.list_models().at(0).preset, "fast");
@@ -166,9 +150,9 @@ TEST_F(CardFolder, OptionsOverrideTheVisitFileAndTheBearingTurnsTheModel) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(stored_registration(project).oriented());
   // 0.5 deg as above, the truth being 30 deg round from the camera's.
-  EXPECT_NEAR(
-      bearing_apart(stored_view_azimuth_deg(project), true_view_azimuth_deg(truth_station(0)) + 30),
-      0, 0.5);
+  EXPECT_NEAR(bearing_apart(stored_view_azimuth_deg(project),
+                            test::true_view_bearing_deg(truth_station(0)) + 30),
+              0, 0.5);
 }
 
 // Without a compass line the pole scales and levels the visit and nothing
@@ -215,9 +199,9 @@ TEST_F(CardFolder, ACompassLineGivenAfterwardsOrientsTheStoredVisit) {
   EXPECT_EQ(reg.kind, "range_pole_compass");
   EXPECT_TRUE(reg.oriented());
   // 0.5 deg as for the line given with the photographs.
-  EXPECT_NEAR(
-      bearing_apart(stored_view_azimuth_deg(project), true_view_azimuth_deg(truth_station(0))), 0,
-      0.5);
+  EXPECT_NEAR(bearing_apart(stored_view_azimuth_deg(project),
+                            test::true_view_bearing_deg(truth_station(0))),
+              0, 0.5);
   // A pixel off the 3D image (the sky above the face) is said, by pixel.
   r = run_rockface("orient " + project.string() +
                    " --visit 1 --reference-line 2,2,40,3 --azimuth 90");

@@ -18,6 +18,7 @@
 #include "storage/project/project_store.h"
 #include "tests/support/card_folder.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/station_truth.h"
 #include "tests/support/temp_folders.h"
 #include "ui/app/app_state.h"
 #include "ui/platform/headless_session.h"
@@ -28,19 +29,6 @@ namespace fs = std::filesystem;
 using namespace rockface;
 using namespace rockface::ui;
 using nlohmann::json;
-
-double bearing_of_axis(const storage::Model& m) {
-  const Eigen::Vector3d axis = m.camera_to_mesh->R * Eigen::Vector3d::UnitZ();
-  const double a = rad_to_deg(std::atan2(axis.x(), axis.y()));
-  return a < 0 ? a + 360 : a;
-}
-
-double true_bearing(const json& station) {
-  const auto p = station.at("position"), q = station.at("look_at");
-  const double a = rad_to_deg(
-      std::atan2(q[0].get<double>() - p[0].get<double>(), q[1].get<double>() - p[1].get<double>()));
-  return a < 0 ? a + 360 : a;
-}
 
 TEST(NorthEntry, ACompassLineTappedOnThePhotographTurnsTheVisitToNorth) {
   const fs::path dir =
@@ -74,8 +62,10 @@ TEST(NorthEntry, ACompassLineTappedOnThePhotographTurnsTheVisitToNorth) {
   ASSERT_FALSE(storage::read_model_registration(app.model_view.model()->registration).oriented());
   // Unoriented, the camera's axis is not where its station looked (the demo's
   // looks 5.2 deg east of north): what the turn below must mend.
-  const double before = std::abs(std::remainder(
-      bearing_of_axis(*app.model_view.model()) - true_bearing(truth.at("cameras").at(0)), 360.0));
+  const double before =
+      std::abs(std::remainder(test::model_axis_bearing_deg(*app.model_view.model()) -
+                                  test::true_view_bearing_deg(truth.at("cameras").at(0)),
+                              360.0));
   EXPECT_GT(before, 1.0);
   s.tap("Give north from a compass line");
   s.frame();
@@ -111,8 +101,9 @@ TEST(NorthEntry, ACompassLineTappedOnThePhotographTurnsTheVisitToNorth) {
   const Eigen::Vector2d a(line.at("left")[0][0].get<double>(), line.at("left")[0][1].get<double>());
   const Eigen::Vector2d b(line.at("left")[1][0].get<double>(), line.at("left")[1][1].get<double>());
   const double taps_deg = rad_to_deg((1.0 / k) / (a - b).norm()) + 0.05;
-  const double off =
-      std::abs(std::remainder(bearing_of_axis(m) - true_bearing(truth.at("cameras").at(0)), 360.0));
+  const double off = std::abs(std::remainder(
+      test::model_axis_bearing_deg(m) - test::true_view_bearing_deg(truth.at("cameras").at(0)),
+      360.0));
   std::printf("north from the tablet: camera axis %.2f deg from its true bearing (budget %.2f)\n",
               off, 0.5 + taps_deg);
   EXPECT_LT(off, 0.5 + taps_deg);
