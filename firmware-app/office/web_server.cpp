@@ -21,7 +21,7 @@
 #include "firmware-app/office/login_throttle.h"
 #include "firmware-app/office/office_pages.h"
 #include "firmware-app/office/office_pulled_copies.h"
-#include "firmware-app/office/office_round_figures.h"
+#include "firmware-app/office/office_rounds_worker.h"
 #include "firmware-app/office/office_sessions.h"
 #include "firmware-app/office/office_shared_cache.h"
 #include "firmware-app/office/visit_comparison.h"
@@ -72,7 +72,8 @@ class OfficeServer {
         tls_(!o.tls_certificate.empty()),
         pool_(o.server, o.pool_size, o.pool_wait),
         sessions_(o.server, o.session_idle, o.work_folder, pool_),
-        cache_(o.work_folder / "shared") {
+        cache_(o.work_folder / "shared"),
+        rounds_(cache_, pool_, o.log_failure) {
     if (tls_)
       http_ = std::make_unique<httplib::SSLServer>(o.tls_certificate.c_str(), o.tls_key.c_str());
     else
@@ -262,13 +263,12 @@ class OfficeServer {
     });
     h.Get("/api/drive/rounds", [this](const httplib::Request& req, httplib::Response& res) {
       with_session(req, res, [&](OfficeSession& s, office::Connection& db) {
-        // The figures only, each round's over- and underbreak as kept on
-        // the server: the rounds show no photograph and measure no kept
-        // round again.
+        // At once, as far as the rounds are read and measured: the rest in
+        // the background (office_rounds_worker.h), the page polls.
         office_web::RoundsCount count;
-        const std::string text = office_web::kept_rounds_page(
-            cache_, db, req.get_param_value("tunnel"), s.role, options_.log_failure, &count);
+        const std::string text = rounds_.page(db, req.get_param_value("tunnel"), s.role, &count);
         res.set_header("X-Rockface-Rounds-Measured", std::to_string(count.measured));
+        res.set_header("X-Rockface-Rounds-Measuring", std::to_string(count.measuring));
         res.set_content(text, "application/json; charset=utf-8");
       });
     });
@@ -502,6 +502,8 @@ class OfficeServer {
   office::ConnectionPool pool_;
   office_web::SessionStore sessions_;
   office_web::SharedOfficeCache cache_;
+  // After the pool and the cache it uses: stopped before them.
+  office_web::RoundsWorker rounds_;
   office_web::LoginThrottle throttle_;
   office_web::KnownBrowsers known_browsers_;
   std::unique_ptr<httplib::Server> http_;

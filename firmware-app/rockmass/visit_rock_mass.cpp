@@ -92,12 +92,26 @@ double profile_width(const tunnel::DesignProfile& p) {
 
 }  // namespace
 
+RockMassProject rock_mass_project(storage::ProjectStore& store) {
+  RockMassProject out;
+  for (const auto& v : store.list_visits()) out.visits.insert(v.id);
+  if (const auto tunnel = store.load_tunnel()) {
+    out.alignment = tunnel->alignment(store.project().datum);
+    out.tunnel_span_m = profile_width(tunnel->profile);
+  }
+  return out;
+}
+
 rockmass::RockMassInput visit_rock_mass_input(
     storage::ProjectStore& store, storage::RecordId visit_id,
     const std::optional<rockmass::ClassificationForm>& form) {
-  bool found = false;
-  for (const auto& v : store.list_visits()) found = found || v.id == visit_id;
-  if (!found)
+  return visit_rock_mass_input(store, rock_mass_project(store), visit_id, form);
+}
+
+rockmass::RockMassInput visit_rock_mass_input(
+    storage::ProjectStore& store, const RockMassProject& project, storage::RecordId visit_id,
+    const std::optional<rockmass::ClassificationForm>& form) {
+  if (!project.visits.count(visit_id))
     throw InputError("--visit", "the project " + store.file().string() + " has no visit " +
                                     std::to_string(visit_id));
   rockmass::RockMassInput in;
@@ -130,16 +144,15 @@ rockmass::RockMassInput visit_rock_mass_input(
   in.blocks = visit_blocks(store, visit_id);
 
   // The sets against the drive, where the visit is placed in a tunnel.
-  const auto tunnel = store.load_tunnel();
-  const auto placement = store.load_visit_placement(visit_id);
-  if (tunnel && placement) {
-    const tunnel::Alignment alignment = tunnel->alignment(store.project().datum);
-    const Eigen::Vector3d drive = alignment.tangent_at(placement->chainage);
-    for (const auto& s : in.sets) {
-      const tunnel::StrikeVsDrive c = tunnel::strike_vs_drive(s.normal, drive);
-      in.drive.push_back({s.label, orientation_of(c.cls), c.words, c.margin_deg, c.marginal});
+  if (project.alignment) {
+    if (const auto placement = store.load_visit_placement(visit_id)) {
+      const Eigen::Vector3d drive = project.alignment->tangent_at(placement->chainage);
+      for (const auto& s : in.sets) {
+        const tunnel::StrikeVsDrive c = tunnel::strike_vs_drive(s.normal, drive);
+        in.drive.push_back({s.label, orientation_of(c.cls), c.words, c.margin_deg, c.marginal});
+      }
+      in.tunnel_span_m = project.tunnel_span_m;
     }
-    in.tunnel_span_m = profile_width(tunnel->profile);
   }
   if (form)
     in.form = *form;
@@ -151,6 +164,12 @@ rockmass::RockMassInput visit_rock_mass_input(
 rockmass::RockMassFigures visit_rock_mass(storage::ProjectStore& store, storage::RecordId visit_id,
                                           const std::optional<rockmass::ClassificationForm>& form) {
   return rockmass::rock_mass_figures(visit_rock_mass_input(store, visit_id, form));
+}
+
+rockmass::RockMassFigures visit_rock_mass(storage::ProjectStore& store,
+                                          const RockMassProject& project,
+                                          storage::RecordId visit_id) {
+  return rockmass::rock_mass_figures(visit_rock_mass_input(store, project, visit_id));
 }
 
 }  // namespace rockface::app

@@ -24,13 +24,15 @@ std::string csv_field(const std::string& s) {
 std::vector<RoundSupport> drive_support(storage::ProjectStore& store) {
   std::vector<RoundSupport> out;
   const auto classes = store.load_support_classes();
+  // Read once for every round, not once per round (issue 46).
+  const RockMassProject project = rock_mass_project(store);
   for (const auto& p : store.list_visit_placements()) {
     RoundSupport r;
     r.visit = p.visit_id;
     r.chainage = p.chainage;
     analysis::VisitFigures f;
     try {
-      const rockmass::RockMassFigures rm = visit_rock_mass(store, p.visit_id);
+      const rockmass::RockMassFigures rm = visit_rock_mass(store, project, p.visit_id);
       r.rmr = rm.rmr.adjusted.value;
       r.q = rm.q.q;
       f.rmr = r.rmr;

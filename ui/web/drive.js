@@ -2,7 +2,7 @@
 // set's dip and dip direction against chainage (new, turning and vanishing
 // sets flagged), the visits' blocks, the rounds (RMR89 / Q, the support
 // class proposed and decided, over- and underbreak: read after the rest,
-// from the tunnel's pulled copy); filters by date and tablet; the page asks
+// filled in as the server measures them); filters by date and tablet; the page asks
 // the server every few seconds whether a tablet synced and redraws when one
 // did.
 import { get } from './api.js';
@@ -10,7 +10,7 @@ import { el, svg, table, section, setColour } from './dom.js';
 
 let poll = null;
 const POLL_MS = 4000;
-const ROUNDS_AT_ONCE = 300;
+const ROUNDS_POLL_MS = 3000;
 
 export function stopDrive() {
   if (poll) clearInterval(poll);
@@ -72,18 +72,31 @@ function rmrChart(rounds) {
   return g;
 }
 
+// The rounds come at once as far as the server has them: before the
+// drive's copy is read, the placed visits only ("reading…"); a round whose
+// over- and underbreak is still being measured on the server says so, and
+// the table is asked again every few seconds until every round is in (no
+// reload; it stops when the page is left or redrawn).
 async function drawRounds(host, tunnel) {
+  const title = () => el('h2', { text: 'Rounds: rock mass, support class, excavation' });
   try {
     const d = await get('/api/drive/rounds', { tunnel });
+    if (!host.isConnected) return;
     const rows = d.rounds.map((r) => [
       r.visit ? el('a', { href: `#/visit/${encodeURIComponent(tunnel)}/${r.visit}`, text: r.chainage_text }) : r.chainage_text,
-      r.rmr_text, r.q_text, r.proposed, `${r.decided}${r.decided_by ? ` (${r.decided_by})` : ''}`, r.excavation_text]);
-    host.replaceChildren(el('h2', { text: 'Rounds: rock mass, support class, excavation' }),
+      r.rmr_text, r.q_text, r.proposed, `${r.decided}${r.decided_by ? ` (${r.decided_by})` : ''}`,
+      r.measuring ? el('span', { className: 'measuring', text: r.excavation_text }) : r.excavation_text]);
+    const waiting = d.measuring > 0 || d.reading;
+    const status = el('p', { className: waiting ? 'muted' : 'muted rounds-done', id: 'rounds-status',
+      text: waiting ? `${d.measuring} of ${d.rounds.length} rounds still being measured on the server; they fill in here as they are done.`
+        : `${d.rounds.length} rounds` });
+    host.replaceChildren(title(), status,
       d.rounds.length ? rmrChart(d.rounds) : el('p', { className: 'muted', text: 'no visit is placed in the tunnel yet' }),
       table(['Chainage', 'RMR89', 'Q', 'Support proposed', 'Support decided', 'Over- / underbreak'], rows, 'rounds'));
+    if (waiting) setTimeout(() => { if (host.isConnected) drawRounds(host, tunnel); }, ROUNDS_POLL_MS);
   } catch (err) {
-    host.replaceChildren(el('h2', { text: 'Rounds: rock mass, support class, excavation' }),
-      el('p', { className: 'error', text: `the rounds could not be read: ${err.message}` }));
+    if (!host.isConnected) return;
+    host.replaceChildren(title(), el('p', { className: 'error', text: `the rounds could not be read: ${err.message}` }));
   }
 }
 
@@ -142,15 +155,9 @@ async function draw(host, tunnel, filter, stamp) {
     // a person is about to tap does not move under the finger.
     section('Visits', table(['Date', 'Chainage', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note'], visitRows, 'visits')),
     rounds);
-  // The rounds need the tunnel's pulled copy (every visit's traces): read
-  // at once for a drive of a few hundred visits, on request for a longer
-  // one (its first pull takes minutes and holds the session meanwhile).
-  if (d.visits.length <= ROUNDS_AT_ONCE) drawRounds(rounds, tunnel);
-  else {
-    const read = el('button', { type: 'button', id: 'rounds-button', text: `Read the rounds of ${d.visits.length} visits` });
-    read.addEventListener('click', () => { read.disabled = true; read.textContent = 'reading the rounds…'; drawRounds(rounds, tunnel); });
-    rounds.replaceChildren(rounds.firstChild, el('p', { className: 'muted', text: 'The rounds are read from the whole tunnel: this takes a while on a long drive.' }), read);
-  }
+  // The server answers the rounds at once and measures the rest in the
+  // background: asked for every drive, however long.
+  drawRounds(rounds, tunnel);
 }
 
 export async function showDrive(host, tunnel) {

@@ -233,8 +233,10 @@ TEST(OfficeWebBrowser, TheRoundsTwoVisitsSideBySideAndTheReportsPictures) {
   WebDriver d(1280, 900);
   open_drive(d, server);
   auto text = [&] { return d.script("return document.body.innerText").get<std::string>(); };
-  // The rounds come after the drive, from the tunnel's pulled copy.
+  // The rounds come after the drive, and their over- and underbreak as the
+  // server measures it in the background: the table fills in, no reload.
   d.wait_for("table.rounds tbody tr", std::chrono::seconds(90));
+  d.wait_for("#rounds-status.rounds-done", std::chrono::seconds(180));
   const int placed = d.script(
                           "return [...document.querySelectorAll('table.visits tbody tr')].filter(r "
                           "=> r.cells[1].textContent !== 'not placed').length")
