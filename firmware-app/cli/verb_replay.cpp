@@ -65,6 +65,9 @@ VerbRun setup_replay(CLI::App& sub) {
   sub.add_option("--project", req->project, "project file (*.rockface); created when missing")
       ->required();
   add_registration_options(sub, req->registration);
+  sub.add_option("--heading", req->heading,
+                 "the face the visit is taken at, when the tunnel is driven from more than one "
+                 "(e.g. \"North portal\", \"Bench\"; default: the visit file's)");
   CLI::Option* preset_option = sub.add_option(
       "--preset", *preset, "fast | standard | precise (default: the scene's analysis.preset)");
   return [req, preset, preset_option] {
@@ -80,6 +83,7 @@ VerbRun setup_replay(CLI::App& sub) {
     else
       std::cout << format_significant(out.predicted_depth_sigma_m, 3)
                 << " base lengths: unscaled, no range pole, control points or baseline)\n";
+    if (!out.heading.empty()) std::cout << "heading: " << out.heading << "\n";
     for (const auto& g : out.guidance) std::cout << "capture: " << g << "\n";
     print_joint_comparisons(out.joints);
     if (out.report) std::cout << analysis::report_summary(*out.report);

@@ -104,7 +104,8 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
   const office::Result r = c.query(
       "WITH live AS (SELECT * FROM (SELECT DISTINCT ON (kind, uuid) kind, uuid, visit_uuid, "
       "project_uuid, local_id, deleted, body FROM rockface.record WHERE tunnel_id = $1 AND kind IN "
-      "('visit', 'visit_placement', 'analysis', 'block') ORDER BY kind, uuid, revision DESC) l "
+      "('visit', 'visit_placement', 'visit_heading', 'analysis', 'block') ORDER BY kind, uuid, "
+      "revision DESC) l "
       "WHERE NOT deleted), "
       "last_analysis AS (SELECT DISTINCT ON (visit_uuid) visit_uuid, uuid::text AS aid FROM live "
       "WHERE kind = 'analysis' ORDER BY visit_uuid, local_id DESC), "
@@ -119,20 +120,25 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
       // grows as the square of the visits (3,000 visits took minutes).
       "placements AS (SELECT visit_uuid, body->'row'->>'chainage' AS chainage FROM live WHERE "
       "kind = 'visit_placement'), "
-      "notes AS (SELECT uuid, body->'row'->>'note' AS note FROM live WHERE kind = 'visit') "
+      "notes AS (SELECT uuid, body->'row'->>'note' AS note FROM live WHERE kind = 'visit'), "
+      // A visit's heading is a record of its own, keyed by the visit's uuid.
+      "headings AS (SELECT uuid, body->'row'->>'heading' AS heading FROM live WHERE kind = "
+      "'visit_heading') "
       "SELECT v.uuid::text, v.started_at, v.owner, p.name, pl.chainage, n.note, bl.n, "
-      "bl.moving, bl.largest "
+      "bl.moving, bl.largest, h.heading "
       "FROM rockface.visit v JOIN rockface.project p ON p.uuid = v.project_uuid "
       "LEFT JOIN placements pl ON pl.visit_uuid = v.uuid LEFT JOIN notes n ON n.uuid = v.uuid "
-      "LEFT JOIN blocks bl ON bl.visit_uuid = v.uuid WHERE v.tunnel_id = $1 "
+      "LEFT JOIN blocks bl ON bl.visit_uuid = v.uuid LEFT JOIN headings h ON h.uuid = v.uuid "
+      "WHERE v.tunnel_id = $1 "
       "AND ($2 = '' OR v.started_at >= $2) AND ($3 = '' OR left(v.started_at, 10) <= $3) "
-      "AND ($4 = '' OR v.owner = $4) "
+      "AND ($4 = '' OR v.owner = $4) AND ($5 = '' OR coalesce(h.heading, $6) = $5) "
       "ORDER BY v.started_at, v.project_uuid, v.local_id",
       {office::Param::of(id), office::Param::of(filter.from), office::Param::of(filter.to),
-       office::Param::of(filter.tablet)},
+       office::Param::of(filter.tablet), office::Param::of(filter.heading),
+       office::Param::of(std::string(kNoHeading))},
       "reading the drive's visits");
   json visits = json::array();
-  std::map<std::string, int> tablets;
+  std::map<std::string, int> tablets, headings;
   for (int i = 0; i < r.rows(); ++i) {
     json v;
     v["id"] = r.text(i, 0);
@@ -148,6 +154,8 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
       v["chainage_text"] = "not placed";
     }
     v["note"] = r.is_null(i, 5) ? "" : r.text(i, 5);
+    v["heading"] = r.is_null(i, 9) ? kNoHeading : r.text(i, 9);
+    ++headings[v["heading"].get<std::string>()];
     const std::int64_t n = r.is_null(i, 6) ? 0 : r.int64(i, 6);
     v["blocks"] = n;
     v["moving"] = r.is_null(i, 7) ? 0 : r.int64(i, 7);
@@ -159,6 +167,12 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
   json tablet_list = json::array();
   for (const auto& [name, n] : tablets) tablet_list.push_back(name);
   out["tablets"] = std::move(tablet_list);
+  // The headings named among the visits ("—" last: the visits without one).
+  json heading_list = json::array();
+  for (const auto& [name, n] : headings)
+    if (name != kNoHeading) heading_list.push_back(name);
+  if (headings.count(kNoHeading)) heading_list.push_back(kNoHeading);
+  out["headings"] = std::move(heading_list);
 
   // The sets along the drive: the same tracks as `rockface drive
   // postgresql://...` (firmware-app/office/office_workflows.h).

@@ -22,7 +22,13 @@ nlohmann::json tunnels_page(storage::office::Connection& c);
 struct DriveFilter {
   std::string from, to;  // visit dates (YYYY-MM-DD), inclusive; empty = open
   std::string tablet;    // a tablet's role; empty = every tablet
+  // The heading the visits were taken at (storage/tunnel/visit_heading.h);
+  // empty = every heading, kNoHeading = the visits without one.
+  std::string heading;
 };
+// How the drive lists a visit without a heading, and the filter that
+// keeps only those (no heading takes this name: checked_heading).
+inline constexpr const char* kNoHeading = "—";
 
 // The drive of a tunnel: every visit (date, tablet, project, chainage,
 // blocks and the blocks that move, the largest removable block), the sets

@@ -82,7 +82,9 @@ std::string SharedOfficeCache::drive(storage::office::Connection& db, const std:
   const std::string& key = checked.first;
   const std::string& stamp = checked.second;
   const auto page = entry(
-      pages_, key + '\n' + filter.from + '\n' + filter.to + '\n' + filter.tablet, kDrivePages);
+      pages_,
+      key + '\n' + filter.from + '\n' + filter.to + '\n' + filter.tablet + '\n' + filter.heading,
+      kDrivePages);
   auto current = [&]() -> std::optional<std::string> {
     std::lock_guard guard(page->data);
     if (!page->json.empty() && page->stamp == stamp) return page->json;

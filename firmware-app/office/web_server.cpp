@@ -257,6 +257,7 @@ class OfficeServer {
         f.from = req.get_param_value("from");
         f.to = req.get_param_value("to");
         f.tablet = req.get_param_value("tablet");
+        f.heading = req.get_param_value("heading");
         res.set_content(cache_.drive(db, req.get_param_value("tunnel"), f),
                         "application/json; charset=utf-8");
       });

@@ -37,6 +37,7 @@
 #include "storage/scene/camera_json.h"
 #include "storage/scene/scene.h"
 #include "storage/scene/visit_file_json.h"
+#include "storage/tunnel/visit_heading.h"
 
 namespace rockface::app {
 
@@ -92,7 +93,7 @@ ReplaySource open_source(const ReplayRequest& request) {
     }
     std::optional<Preset> preset = request.preset;
     out.sources = folder_registration(request.registration, fs::path(request.source) / "visit.json",
-                                      preset, out.visit_note);
+                                      preset, out.visit_note, out.visit_heading);
     out.camera = camera::MockCamera::replay(request.source, out.spool.string());
     out.preset = preset.value_or(Preset::standard);
     return out;
@@ -109,7 +110,7 @@ ReplaySource open_source(const ReplayRequest& request) {
 photogrammetry::RegistrationSources folder_registration(const RegistrationOptions& given,
                                                         const fs::path& visit_file,
                                                         std::optional<Preset>& preset,
-                                                        std::string& note) {
+                                                        std::string& note, std::string& heading) {
   RegistrationOptions o = given;
   if (fs::exists(visit_file)) {
     const storage::VisitFile v = storage::load_visit_file(visit_file.string());
@@ -138,6 +139,7 @@ photogrammetry::RegistrationSources folder_registration(const RegistrationOption
     }
     if (!preset) preset = v.preset;
     note = v.note;
+    heading = v.heading;
   }
   return registration_sources(o);
 }
@@ -522,10 +524,19 @@ ReplayOutcome replay_into_project(const ReplayRequest& request,
 
 ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& progress) {
   // A refusal while the source is read leaves nothing: nothing is written yet.
+  const std::string given_heading = storage::checked_heading(request.heading, "--heading");
   field_replay_phases::ReplaySource source = field_replay_phases::open_source(request);
   const ReplayRefusalUndo undo(request.project, source.spool);
   try {
-    return replay_into_project(request, source, progress);
+    ReplayOutcome out = replay_into_project(request, source, progress);
+    // After the replay's one transaction, on the visit it made: the name
+    // was checked before anything was stored.
+    out.heading = given_heading.empty() ? source.visit_heading : given_heading;
+    if (!out.heading.empty()) {
+      storage::ProjectStore store = storage::ProjectStore::open(request.project);
+      storage::save_visit_heading(store, out.visit_id, out.heading);
+    }
+    return out;
   } catch (const InputError& e) {
     undo.remove_what_the_replay_made();
     throw InputError(e.where(), undo.said(e.reason()));

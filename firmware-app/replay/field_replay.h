@@ -22,6 +22,9 @@ struct ReplayRequest {
   // (visit.json, storage/scene/visit_file_json.h). Refused with a scene,
   // which gives its own.
   RegistrationOptions registration;
+  // The heading the visit is taken at (storage/tunnel/visit_heading.h);
+  // "": the visit file's, if it names one.
+  std::string heading;
 };
 
 // A joint's orientation as measured from its picked traces, beside the
@@ -50,6 +53,7 @@ struct ReplayOutcome {
   // control points or baseline): its lengths are in units of the base.
   bool scaled = true;
   std::vector<std::string> guidance;  // capture guidance notes
+  std::string heading;                // the visit's, "" none
   // With picks: each scene joint's plane measured from its traces beside
   // the scene's (JointComparison), in scene order.
   std::vector<JointComparison> joints;

@@ -56,7 +56,8 @@ struct ReplaySource {
   // --preset, else the scene's analysis.preset; a capture folder has no
   // scene, so its default is the scene's default (standard).
   Preset preset = Preset::standard;
-  std::string visit_note;  // a folder's visit file's note
+  std::string visit_note;     // a folder's visit file's note
+  std::string visit_heading;  // and its heading
   // A folder without camera.json: its photographs take the calibration of
   // their camera from the project's library (calibration_library.h), chosen
   // once the project is open (library_calibration).
@@ -67,11 +68,11 @@ ReplaySource open_source(const ReplayRequest& request);
 
 // A folder's registration: the request's options, each else the visit
 // file's (`visit_file`, when it exists), checked (registration_sources).
-// `preset` and `note` take the file's when it gives them.
+// `preset`, `note` and `heading` take the file's when it gives them.
 photogrammetry::RegistrationSources folder_registration(const RegistrationOptions& given,
                                                         const std::filesystem::path& visit_file,
                                                         std::optional<Preset>& preset,
-                                                        std::string& note);
+                                                        std::string& note, std::string& heading);
 
 // 2. Focus locked after the first shot; the two shots' optics must match
 // (throws otherwise); `guidance`: the capture guidance's notes on the pair.

@@ -61,6 +61,14 @@ const std::vector<RecordKind>& record_kinds() {
        "t.visit_id",
        {},
        {}},
+      // The heading a visit was taken at (issue 46), one per named visit;
+      // a visit whose name is taken away is deleted here, as a record.
+      {"visit_heading",
+       "(SELECT v.uuid FROM visit v WHERE v.id = t.visit_id)",
+       "t.visit_id",
+       "t.visit_id",
+       {},
+       {}},
       // A visit's support decisions (issue 44), every revision.
       {"support_decision", "t.uuid", "t.visit_id", "t.id", {}, {}},
       {"action_log", "t.uuid", "t.visit_id", "t.id", {}, {}},

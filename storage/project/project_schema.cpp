@@ -502,14 +502,26 @@ CREATE TABLE IF NOT EXISTS model_mesh_part (
 );
 )sql";
 
+// Version 12: the heading a visit was taken at (issue 46,
+// storage/tunnel/visit_heading.h): the name of the face ("North portal",
+// "Bench") when the tunnel is driven from more than one. A table of its
+// own, one row per named visit: the visit rows of a project synced before
+// stay as they were on the office server.
+constexpr const char* kVersion11To12 = R"sql(
+CREATE TABLE IF NOT EXISTS visit_heading (
+  visit_id INTEGER PRIMARY KEY REFERENCES visit(id),
+  heading TEXT NOT NULL CHECK (heading <> '')
+);
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
-constexpr Step kSteps[] = {{2, kVersion1To2},   {3, kVersion2To3}, {4, kVersion3To4},
-                           {5, kVersion4To5},   {6, kVersion5To6}, {7, kVersion6To7},
-                           {8, kVersion7To8},   {9, kVersion8To9}, {10, kVersion9To10},
-                           {11, kVersion10To11}};
+constexpr Step kSteps[] = {{2, kVersion1To2},    {3, kVersion2To3},   {4, kVersion3To4},
+                           {5, kVersion4To5},    {6, kVersion5To6},   {7, kVersion6To7},
+                           {8, kVersion7To8},    {9, kVersion8To9},   {10, kVersion9To10},
+                           {11, kVersion10To11}, {12, kVersion11To12}};
 
 }  // namespace
 

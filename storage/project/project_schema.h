@@ -24,6 +24,8 @@
 //   9  a trace's compass reading and how far the trace leaves it (issue 27).
 //  10  the tunnel's support classes and each visit's support decision (issue 44).
 //  11  a model's mesh in parts of 8 MiB (issue 43): meshes over 1 GB.
+//  12  the heading a visit was taken at (issue 46): a tunnel driven from
+//      more than one face (storage/tunnel/visit_heading.h).
 #include <cstdint>
 
 #include "storage/project/project_sqlite.h"
@@ -32,7 +34,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 11;
+constexpr int kCurrentVersion = 12;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then

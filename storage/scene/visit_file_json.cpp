@@ -8,6 +8,7 @@
 
 #include "core/common/error.h"
 #include "storage/json_reader.h"
+#include "storage/tunnel/visit_heading.h"
 
 namespace rockface::storage {
 
@@ -35,9 +36,9 @@ VisitFile parse_visit_file(const std::string& text, const std::string& path) {
   // named by its field (it was "not JSON", no field said; issue 41).
   const json doc = parse_json_naming_nan(text, path);
   const Reader r(path);
-  r.only_fields(
-      doc, "",
-      {"format", "range_pole_m", "compass", "control_points", "baseline_m", "preset", "note"});
+  r.only_fields(doc, "",
+                {"format", "range_pole_m", "compass", "control_points", "baseline_m", "preset",
+                 "heading", "note"});
   if (r.string(r.require(doc, "", "format"), "format") != "rockface-visit/1")
     r.fail("format", "must be \"rockface-visit/1\"");
   VisitFile out;
@@ -66,6 +67,8 @@ VisitFile parse_visit_file(const std::string& text, const std::string& path) {
     out.baseline_m = r.positive(*v, "baseline_m");
   if (const json* v = r.optional(doc, "", "preset"))
     out.preset = parse_preset(r.string(*v, "preset"), r.where("preset"));
+  if (const json* v = r.optional(doc, "", "heading"))
+    out.heading = checked_heading(r.string(*v, "heading"), r.where("heading"));
   if (const json* v = r.optional(doc, "", "note")) out.note = r.string(*v, "note");
   return out;
 }

@@ -11,7 +11,9 @@
 //    "control_points": "gcp.csv",     (beside the visit file)
 //    "baseline_m": 1.8,
 //    "preset": "standard",
-//    "note": "heading 3, round 112"}
+//    "heading": "North portal",       (the face of a tunnel driven from more than one,
+//                                       storage/tunnel/visit_heading.h)
+//    "note": "round 112"}
 #include <array>
 #include <optional>
 #include <string>
@@ -30,6 +32,7 @@ struct VisitFile {
   std::string control_points;  // a path, made absolute against the visit file's folder
   std::optional<double> baseline_m;
   std::optional<Preset> preset;
+  std::string heading;  // "" none
   std::string note;
 };
 

@@ -2,9 +2,9 @@
 // set's dip and dip direction against chainage (new, turning and vanishing
 // sets flagged), the visits' blocks, the rounds (RMR89 / Q, the support
 // class proposed and decided, over- and underbreak: read after the rest,
-// filled in as the server measures them); filters by date and tablet; the page asks
-// the server every few seconds whether a tablet synced and redraws when one
-// did.
+// filled in as the server measures them); filters by date, heading and
+// tablet; the page asks the server every few seconds whether a tablet
+// synced and redraws when one did.
 import { get } from './api.js';
 import { el, svg, table, section, setColour } from './dom.js';
 
@@ -113,7 +113,7 @@ function strip(visits) {
   for (const v of placed) {
     const a = svg('a', { href: `#/visit/${encodeURIComponent(v.tunnel)}/${v.id}` });
     const mark = svg('rect', { x: x(v.chainage) - 3, y: 26, width: 6, height: 20, class: v.moving > 0 ? 'visit moving' : 'visit' });
-    mark.append(svg('title', { text: `${v.date}, ${v.tablet}, ch ${v.chainage_text}, ${v.blocks} blocks, ${v.moving} move` }));
+    mark.append(svg('title', { text: `${v.date}, ${v.tablet}, ${v.heading === '—' ? '' : `${v.heading}, `}ch ${v.chainage_text}, ${v.blocks} blocks, ${v.moving} move` }));
     a.append(mark);
     g.append(a);
   }
@@ -127,22 +127,28 @@ async function draw(host, tunnel, filter, stamp) {
   const tablet = el('select', { id: 'filter-tablet' }, el('option', { value: '', text: 'every tablet' }),
     ...d.tablets.map((t) => el('option', { value: t, text: t })));
   tablet.value = filter.tablet || '';
+  // The face each visit was taken at, for a tunnel driven from more than
+  // one ("—": the visits without one).
+  const heading = el('select', { id: 'filter-heading' }, el('option', { value: '', text: 'every heading' }),
+    ...(d.headings || []).map((h) => el('option', { value: h, text: h === '—' ? '— (none named)' : h })));
+  heading.value = filter.heading || '';
   const from = el('input', { type: 'date', id: 'filter-from', value: filter.from || '' });
   const to = el('input', { type: 'date', id: 'filter-to', value: filter.to || '' });
   const apply = () => {
-    filter.from = from.value; filter.to = to.value; filter.tablet = tablet.value;
+    filter.from = from.value; filter.to = to.value; filter.tablet = tablet.value; filter.heading = heading.value;
     draw(host, tunnel, filter, stamp);
   };
-  for (const f of [tablet, from, to]) f.addEventListener('change', apply);
+  for (const f of [tablet, heading, from, to]) f.addEventListener('change', apply);
   const rounds = el('section', { id: 'rounds' }, el('h2', { text: 'Rounds: rock mass, support class, excavation' }),
     el('p', { className: 'muted', text: 'reading the rounds…' }));
   const filters = el('form', { className: 'filters' },
-    el('label', { text: 'From ' }, from), el('label', { text: 'To ' }, to), el('label', { text: 'Tablet ' }, tablet));
+    el('label', { text: 'From ' }, from), el('label', { text: 'To ' }, to), el('label', { text: 'Tablet ' }, tablet),
+    el('label', { text: 'Heading ' }, heading));
   const setRows = d.sets.map((t, i) => [el('span', { className: `set-dot set-${i % 8}`, text: t.name }),
     t.points.length ? t.points[t.points.length - 1].text : '–', t.flags || '–', (t.events || []).join('; ') || '–']);
   const visitRows = d.visits.map((v) => [
     el('a', { href: `#/visit/${encodeURIComponent(tunnel)}/${v.id}`, text: v.date, className: 'visit-link' }),
-    v.chainage_text, v.tablet, v.project, String(v.blocks), String(v.moving), v.largest_block, v.note || '']);
+    v.chainage_text, v.heading, v.tablet, v.project, String(v.blocks), String(v.moving), v.largest_block, v.note || '']);
   host.replaceChildren(
     el('h1', { text: `Drive of ${tunnel}` }),
     filters,
@@ -153,7 +159,7 @@ async function draw(host, tunnel, filter, stamp) {
     section('Sets along the drive', table(['Set', 'Last seen (dip / dip direction ± α95)', 'Flags', 'Events'], setRows)),
     // The rounds arrive later and grow: below the visits, so that the list
     // a person is about to tap does not move under the finger.
-    section('Visits', table(['Date', 'Chainage', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note'], visitRows, 'visits')),
+    section('Visits', table(['Date', 'Chainage', 'Heading', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note'], visitRows, 'visits')),
     rounds);
   // The server answers the rounds at once and measures the rest in the
   // background: asked for every drive, however long.
@@ -161,7 +167,7 @@ async function draw(host, tunnel, filter, stamp) {
 }
 
 export async function showDrive(host, tunnel) {
-  const filter = { from: '', to: '', tablet: '' };
+  const filter = { from: '', to: '', tablet: '', heading: '' };
   const stamp = { value: '' };
   await draw(host, tunnel, filter, stamp);
   poll = setInterval(async () => {

@@ -21,6 +21,7 @@
 #include "storage/project/project_sqlite.h"
 #include "tests/storage/office/office_environment.h"
 #include "tests/storage/office/tablet_projects.h"
+#include "tests/support/cli_run.h"
 #include "tests/support/test_paths.h"
 
 namespace rockface::office_web_test {
@@ -108,6 +109,15 @@ Site make_site() {
   make_tablet_project(s.folder / "a.rockface", a);
   make_tablet_project(s.folder / "b.rockface", b);
   make_tablet_project(s.folder / "adit-c.rockface", c);
+  {
+    // Tablet B's first visit was taken at the tunnel's south portal, named
+    // with the command line as a geologist names it (issue 46); its
+    // second names no heading.
+    const test::CliRun named = test::run_rockface("place " + (s.folder / "b.rockface").string() +
+                                                  " --visit 1 --heading 'South portal'");
+    if (named.exit_code != 0)
+      throw std::runtime_error("naming tablet B's heading: " + named.out + named.err);
+  }
   {
     storage::sqlite::Connection db(s.folder / "a.rockface",
                                    storage::sqlite::Connection::Access::read_write);
