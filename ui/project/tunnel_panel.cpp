@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include "core/common/number_format.h"
+#include "storage/tunnel/visit_heading.h"
 #include "ui/app/app_state.h"
 #include "ui/widgets/format.h"
 #include "ui/widgets/widgets_controls.h"
@@ -36,9 +37,14 @@ void reload_tunnel(AppState& app) {
   t.excavation.reset();
   t.excavation_drawn = {};
   t.picker = {};
+  t.visit_heading.clear();
   try {
     t.record = s.store().load_tunnel();
-    if (t.record && s.visit()) t.placement = s.store().load_visit_placement(*s.visit());
+    if (t.record && s.visit()) {
+      t.placement = s.store().load_visit_placement(*s.visit());
+      t.visit_heading = storage::load_visit_heading(s.store(), *s.visit());
+    }
+    t.typed_heading = t.visit_heading;
   } catch (const std::exception& e) {
     t.lines = {std::string("The tunnel could not be read: ") + e.what()};
   }
@@ -123,6 +129,34 @@ void place(AppState& app) {
       });
 }
 
+// The face the visit was taken at, for a tunnel driven from more than one
+// (issue 46): typed as the site names it ("North portal", "Bench") and kept
+// on its own, placed or not (nothing moves); the office filters by it.
+void name_heading(AppState& app) {
+  const auto file = app.session->file();
+  const auto visit = *app.session->visit();
+  const std::string name = app.project.tunnel.typed_heading;
+  app.task.start(
+      "Name the heading",
+      [file, visit, name](Progress&) {
+        storage::ProjectStore store = storage::ProjectStore::open(file);
+        storage::save_visit_heading(store, visit, name);
+        const std::string kept = storage::load_visit_heading(store, visit);
+        return kept.empty() ? std::string("no heading named") : "heading: " + kept;
+      },
+      [&app](const TaskOutcome&) { app.project.tunnel.loaded = false; });
+}
+
+void draw_heading_entry(AppState& app) {
+  TunnelState& t = app.project.tunnel;
+  paragraph("Heading (the face this visit was taken at): " +
+            (t.visit_heading.empty() ? std::string("none named") : t.visit_heading));
+  text_field(app.targets, "heading", &t.typed_heading);
+  const bool can = !app.task.running() && !app.session->read_only() &&
+                   app.session->visit().has_value() && t.typed_heading != t.visit_heading;
+  if (app.targets.button_in_row("Name the heading", can)) name_heading(app);
+}
+
 // The form for a visit with no survey target in view: where the range
 // pole's lower target stood.
 void draw_typed_placement(AppState& app) {
@@ -184,6 +218,7 @@ void draw_tunnel_panel(AppState& app) {
     paragraph("This visit is not placed in the tunnel yet.");
     draw_typed_placement(app);
   }
+  if (app.session->visit()) draw_heading_entry(app);
   const bool idle = !app.task.running() && app.services.tunnel;
   if (app.targets.button("Excavation of this round", 0, idle && t.placement.has_value()))
     show_excavation(app);

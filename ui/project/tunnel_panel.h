@@ -31,6 +31,9 @@ struct TunnelState {
   std::string view;  // "excavation" | "drive" | empty
   // The typed placement of the range pole's lower target (m).
   double typed_chainage = 0, typed_offset = 0, typed_height = 0;
+  // Issue 46: the heading the visit was taken at, as stored ("" none) and
+  // as being typed (storage/tunnel/visit_heading.h).
+  std::string visit_heading, typed_heading;
   std::vector<std::string> lines;
   PictureTexture picture;
   // Issue 39: the joints along the drive ("drive"), drawn at the screen's

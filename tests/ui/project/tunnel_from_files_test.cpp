@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "storage/project/project_store.h"
+#include "storage/tunnel/visit_heading.h"
 #include "tests/support/card_folder.h"
 #include "tests/support/cli_run.h"
 #include "tests/ui/demo_project.h"
@@ -71,7 +72,9 @@ fs::path card_project(const fs::path& root) {
       {"range_pole_m", truth.at("range_pole").at("length")},
       {"compass",
        {{"reference_line_px", line.at("left")}, {"azimuth_deg", line.at("azimuth_deg")}}},
-      {"preset", "fast"}}.dump(2);
+      {"preset", "fast"},
+      // Issue 46: the face the visit was taken at, noted on site.
+      {"heading", "North portal"}}.dump(2);
   const fs::path project = root / "card.rockface";
   const test::CliRun r =
       test::run_rockface("replay " + card.string() + " --project " + project.string());
@@ -183,6 +186,19 @@ TEST(TunnelFromFiles, TheTabletGivesTheProjectItsTunnelFromAStickAndPlacesTheVis
   // between, with the fast preset's depth error (~3 cm at 8 m).
   EXPECT_GT(t.placement->chainage, 111.6);
   EXPECT_LT(t.placement->chainage, 112.0);
+
+  // Issue 46: the heading the card's visit file named, shown, and named
+  // anew on the tablet (the office lists and filters visits by it).
+  EXPECT_EQ(t.visit_heading, "North portal");
+  t.typed_heading = "South portal";
+  s.tap("Name the heading");
+  s.settle();
+  s.frame();
+  EXPECT_EQ(t.visit_heading, "South portal");
+  storage::ProjectStore stored = storage::ProjectStore::open(project);
+  const auto visits = stored.list_visits();
+  ASSERT_EQ(visits.size(), 1u);
+  EXPECT_EQ(storage::load_visit_heading(stored, visits.front().id), "South portal");
 }
 
 }  // namespace
