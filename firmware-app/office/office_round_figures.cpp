@@ -129,10 +129,17 @@ void measure_rounds(SharedOfficeCache& cache,
       // Synced away between the two copies: the next copy has it right.
       f["excavation_text"] = "not evaluated: synced meanwhile";
     } else {
-      f = round_excavation(*store, v->second);
-      const auto in = base.inputs.find(uuid);
-      if (in != base.inputs.end())
-        fresh[uuid] = {in->second, f.dump(-1, ' ', false, json::error_handler_t::replace)};
+      try {
+        f = round_excavation(*store, v->second);
+        const auto in = base.inputs.find(uuid);
+        if (in != base.inputs.end())
+          fresh[uuid] = {in->second, f.dump(-1, ' ', false, json::error_handler_t::replace)};
+      } catch (const std::exception& e) {
+        // Shown, not kept: the next server tries again; the other rounds go
+        // on being measured (a bad round never holds up the rest).
+        f = json{{"excavation_text", std::string("not evaluated: ") + e.what()}};
+        log("measuring the round of visit " + uuid + ": " + e.what());
+      }
     }
     shown[uuid] = std::move(f);
     if (shown.size() >= kBatchRounds ||
