@@ -79,15 +79,18 @@ std::string RoundsWorker::page(office::Connection& db, const std::string& tunnel
       if (count) *count = {d.kept, d.measured, 0};
       return d.text;
     }
-    queue(key, d);
     if (d.base) {
       const json page = rounds_with_figures(*d.base, d.figures);
       const int measuring = page.at("measuring").get<int>();
       if (count) *count = {d.kept, d.measured, measuring};
       std::string text = text_of(page);
-      if (measuring == 0) d.text = text;
+      if (measuring == 0)
+        d.text = text;
+      else
+        queue(key, d);  // a run that failed is run again; one under way is left to go on
       return text;
     }
+    queue(key, d);
   }
   // Not read yet: the drive page's placed visits (shared, built once per
   // sync) stand for the rounds meanwhile.
