@@ -3,8 +3,9 @@
 // fixture runs it: the times are the client's and the server's work, not
 // the disk's): sync time and bytes per visit for one visit with two 24 Mpx
 // photographs and a 3D image, and for 1,000 synthetic visits; the second
-// sync of an unchanged project; and the office's drive query over 3,000
-// visits of three tablets (target: under a second).
+// sync of an unchanged project; the office's drive query over 3,000
+// visits of three tablets (target: under a second); the rock mass and
+// support of every round of a drive of 300 and 3,000 visits.
 #include <unistd.h>
 
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "core/common/progress.h"
 #include "core/tunnel/design_profile.h"
 #include "firmware-app/office/office_workflows.h"
+#include "firmware-app/support/support_drive.h"
 #include "storage/office/pg_connection.h"
 #include "storage/office/server_schema.h"
 #include "storage/office/sqlite_rows.h"
@@ -135,6 +137,27 @@ void BM_OfficeDriveQuery3000(benchmark::State& state) {
   state.counters["visits"] = static_cast<double>(placed);
 }
 BENCHMARK(BM_OfficeDriveQuery3000)->Unit(benchmark::kMillisecond)->Iterations(5);
+
+// The rock mass and support of every round of a drive (issue 46:
+// firmware-app/support/support_drive.h, what the office's rounds read from
+// their copy): 300 and 3,000 bench visits in one project. Each round listed
+// every visit and built the tunnel again: the time grew as the square of
+// the visits.
+void BM_DriveRoundsRockMass(benchmark::State& state) {
+  const int visits = static_cast<int>(state.range(0));
+  const fs::path file = make_project("rounds-" + std::to_string(visits), visits, 64, 48, 10);
+  storage::OpenOptions read;
+  read.read_only = true;
+  storage::ProjectStore store = storage::ProjectStore::open(file, read);
+  std::size_t rounds = 0;
+  for (auto _ : state) rounds = app::drive_support(store).size();
+  state.counters["rounds"] = static_cast<double>(rounds);
+}
+BENCHMARK(BM_DriveRoundsRockMass)
+    ->Arg(300)
+    ->Arg(3000)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(2);
 
 }  // namespace
 
