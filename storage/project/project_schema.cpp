@@ -506,12 +506,14 @@ CREATE TABLE IF NOT EXISTS model_mesh_part (
 // storage/tunnel/visit_heading.h): the name of the face ("North portal",
 // "Bench") when the tunnel is driven from more than one. A table of its
 // own, one row per named visit: the visit rows of a project synced before
-// stay as they were on the office server.
+// stay as they were on the office server. And a visit's analyses found by
+// index (a drive's rounds read each visit's latest analysis).
 constexpr const char* kVersion11To12 = R"sql(
 CREATE TABLE IF NOT EXISTS visit_heading (
   visit_id INTEGER PRIMARY KEY REFERENCES visit(id),
   heading TEXT NOT NULL CHECK (heading <> '')
 );
+CREATE INDEX IF NOT EXISTS analysis_by_visit ON analysis(visit_id);
 )sql";
 
 struct Step {

@@ -25,7 +25,8 @@
 //  10  the tunnel's support classes and each visit's support decision (issue 44).
 //  11  a model's mesh in parts of 8 MiB (issue 43): meshes over 1 GB.
 //  12  the heading a visit was taken at (issue 46): a tunnel driven from
-//      more than one face (storage/tunnel/visit_heading.h).
+//      more than one face (storage/tunnel/visit_heading.h); an index of the
+//      analyses by visit.
 #include <cstdint>
 
 #include "storage/project/project_sqlite.h"

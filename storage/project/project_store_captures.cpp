@@ -198,10 +198,10 @@ std::optional<std::string> ProjectStore::latest_capture_setting(const std::strin
 }
 
 std::vector<CaptureSummary> ProjectStore::list_captures(std::optional<RecordId> visit_id) {
-  Statement st(
-      db_,
-      std::string(kCaptureSummarySelect) + " WHERE (?1 IS NULL OR c.visit_id = ?1) ORDER BY c.id",
-      "listing captures");
+  Statement st(db_,
+               std::string(kCaptureSummarySelect) + " WHERE " +
+                   (visit_id ? "c.visit_id = ?1" : "?1 IS NULL") + " ORDER BY c.id",
+               "listing captures");
   st.bind(1, visit_id);
   std::vector<CaptureSummary> out;
   while (st.step()) out.push_back(read_capture_summary(st));
@@ -376,8 +376,8 @@ std::vector<ModelSummary> ProjectStore::list_models(std::optional<RecordId> capt
   Statement st(db_,
                "SELECT id, capture_id, preset, created_at, registration_kind, vertex_count, "
                "face_count, registration_rms_m, " +
-                   std::string(kStoredNorthSource) +
-                   " FROM model WHERE (?1 IS NULL OR capture_id = ?1) ORDER BY id",
+                   std::string(kStoredNorthSource) + " FROM model WHERE " +
+                   (capture_id ? "capture_id = ?1" : "?1 IS NULL") + " ORDER BY id",
                "listing models");
   st.bind(1, capture_id);
   std::vector<ModelSummary> out;

@@ -127,13 +127,16 @@ std::vector<RecordId> ProjectStore::save_measurements(
 }
 
 std::vector<Measurement> ProjectStore::list_measurements(std::optional<RecordId> visit_id) {
+  // One visit's rows by the index on visit_id: "(?1 IS NULL OR visit_id =
+  // ?1)" reads the whole table for every visit (issue 46: a drive's rounds
+  // read every visit's rows once per visit, quadratic in the visits).
   Statement st(
       db_,
-      "SELECT id, visit_id, model_id, kind, label, joint_label, points, dip, dipdir, "
-      "fit_rms_m, rock_side, created_at, photo, photo_capture_id, pixels, sigma_deg, "
-      "trace_length_m, censored, note, origin, compass_dip, compass_dipdir, compass_off_deg "
-      "FROM measurement WHERE (?1 IS NULL OR "
-      "visit_id = ?1) ORDER BY id",
+      std::string("SELECT id, visit_id, model_id, kind, label, joint_label, points, dip, dipdir, "
+                  "fit_rms_m, rock_side, created_at, photo, photo_capture_id, pixels, sigma_deg, "
+                  "trace_length_m, censored, note, origin, compass_dip, compass_dipdir, "
+                  "compass_off_deg FROM measurement WHERE ") +
+          (visit_id ? "visit_id = ?1" : "?1 IS NULL") + " ORDER BY id",
       "listing measurements");
   st.bind(1, visit_id);
   std::vector<Measurement> out;
@@ -306,8 +309,8 @@ std::vector<Joint> ProjectStore::list_joints(std::optional<RecordId> visit_id) {
                "SELECT j.id, j.visit_id, j.label, s.label, j.dip, j.dipdir, j.px, j.py, j.pz, "
                "j.friction_deg, j.cohesion_pa, j.measurement_id, j.source, j.type, "
                "j.persistence_m FROM joint j LEFT "
-               "JOIN joint_set s ON s.id = j.set_id WHERE (?1 IS NULL OR j.visit_id = ?1) "
-               "ORDER BY j.id",
+               "JOIN joint_set s ON s.id = j.set_id WHERE " +
+                   std::string(visit_id ? "j.visit_id = ?1" : "?1 IS NULL") + " ORDER BY j.id",
                "listing joints");
   st.bind(1, visit_id);
   std::vector<Joint> out;
@@ -443,8 +446,8 @@ AnalysisRun ProjectStore::load_analysis(RecordId id) {
 
 std::vector<AnalysisRun> ProjectStore::list_analyses(std::optional<RecordId> visit_id) {
   Statement st(db_,
-               std::string("SELECT ") + kAnalysisColumns +
-                   " FROM analysis WHERE (?1 IS NULL OR visit_id = ?1) ORDER BY id",
+               std::string("SELECT ") + kAnalysisColumns + " FROM analysis WHERE " +
+                   (visit_id ? "visit_id = ?1" : "?1 IS NULL") + " ORDER BY id",
                "listing analyses");
   st.bind(1, visit_id);
   std::vector<AnalysisRun> out;

@@ -253,9 +253,9 @@ std::vector<VisitPlacement> read_placements(sqlite::Connection& db, const std::s
                                             std::optional<RecordId> visit_id) {
   const std::string doing = "loading visit placements";
   Statement st(db,
-               "SELECT visit_id, method, chainage, offset_m, height_m, rms_m, "
-               "compass_azimuth_deg, note, created_at FROM visit_placement WHERE (?1 IS NULL OR "
-               "visit_id = ?1) ORDER BY chainage, visit_id",
+               std::string("SELECT visit_id, method, chainage, offset_m, height_m, rms_m, "
+                           "compass_azimuth_deg, note, created_at FROM visit_placement WHERE ") +
+                   (visit_id ? "visit_id = ?1" : "?1 IS NULL") + " ORDER BY chainage, visit_id",
                doing);
   st.bind(1, visit_id);
   std::vector<VisitPlacement> out;
