@@ -41,10 +41,6 @@ struct SharedPull {
   // The copy's visits: the server's uuid -> the id the pull gave it, read
   // from the copy itself (a sync since cannot shift them).
   std::map<std::string, std::int64_t> visit_ids;
-  // Pages computed from this copy once (the rounds along the drive), by
-  // name: they change only with the copy.
-  mutable std::mutex derived_lock;
-  mutable std::map<std::string, std::string> derived;
   ~SharedPull();
 };
 
