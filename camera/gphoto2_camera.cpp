@@ -468,7 +468,7 @@ struct Gphoto2Camera::State {
           if (e.kind == CameraEvent::Kind::file_added) pending.push_back(e.detail);
           return e;
         },
-        {options.capture_timeout_ms, options.event_drain_ms});
+        {options.capture_timeout_ms, options.file_after_complete_ms, options.event_drain_ms});
   }
 };
 

@@ -50,6 +50,9 @@ class Gphoto2Camera final : public Camera {
     // for the new file without a bound when the body makes none (issue
     // 42), so rockface triggers the shot and waits for it itself.
     int capture_timeout_ms = 30000;
+    // How long the file may follow the body's "capture complete" (a slow
+    // card's write of a large RAW) before the shot is said to have none.
+    int file_after_complete_ms = 10000;
     // A body that answers "busy" (PTP DeviceBusy: still writing the last
     // shot, a menu open) to a shot or a download is asked again this many
     // times, busy_wait_ms apart, before rockface says so.

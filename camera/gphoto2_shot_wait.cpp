@@ -34,10 +34,11 @@ std::vector<std::string> wait_for_shot_files(const std::function<CameraEvent(int
     if (e.kind == CameraEvent::Kind::file_added) {
       files.push_back(e.detail);
     } else if (e.kind == CameraEvent::Kind::capture_complete && !complete) {
-      // Over without a file yet: some bodies send the file after, within
-      // what a follow-up file may take; none comes later than that.
+      // Over without a file yet: some bodies send the file after (once
+      // written to the card), but not without end.
       complete = true;
-      until = std::min(deadline, Clock::now() + std::chrono::milliseconds(wait.follow_up_ms));
+      until =
+          std::min(deadline, Clock::now() + std::chrono::milliseconds(wait.file_after_complete_ms));
     } else if (e.detail.rfind("PTP Event 400a", 0) == 0) {
       // PTP's StoreFull event (0x400A), which ptp2 hands on unnamed.
       throw gphoto2_error(GP_ERROR_NO_SPACE, "Taking a picture",

@@ -14,8 +14,9 @@
 namespace rockface::camera {
 
 struct ShotWait {
-  int capture_timeout_ms = 30000;  // for the shot's first file
-  int follow_up_ms = 3000;  // for its follow-up files (a RAW), and for a file after "complete"
+  int capture_timeout_ms = 30000;      // for the shot's first file
+  int file_after_complete_ms = 10000;  // for it after the body's "capture complete"
+  int follow_up_ms = 3000;             // for its follow-up files (a RAW) after the first
 };
 
 // The camera's paths of the shot's files, in the order the camera named

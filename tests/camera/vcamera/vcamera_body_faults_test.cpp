@@ -77,6 +77,7 @@ class VirtualD750BodyTest : public ::testing::Test {
     o.spool_dir = spool_.string();
     o.event_drain_ms = 200;  // no RAW follows on this body
     o.capture_timeout_ms = 10000;
+    o.file_after_complete_ms = 1000;
     o.busy_wait_ms = 100;
     return o;
   }
@@ -109,9 +110,9 @@ TEST_F(VirtualD750BodyTest, AShotThatGivesNoFileIsSaidWithinItsBoundAndNothingIs
       why.rfind("Taking a picture: the camera took no picture or returned no file within ", 0), 0u)
       << why;
   EXPECT_NE(why.find("(it said the capture was over)"), std::string::npos) << why;
-  // Bounded by what rockface waits after "capture complete" (event_drain_ms,
-  // 0.2 s here) plus the trigger and event round trips; the 10 s capture
-  // bound is never reached.
+  // Bounded by what rockface waits for the file after "capture complete"
+  // (file_after_complete_ms, 1 s here) plus the trigger and event round
+  // trips; the 10 s capture bound is not reached.
   EXPECT_LT(took_s, 10.0) << why;
   EXPECT_TRUE(cam.pending_downloads().empty());
   EXPECT_EQ(files_in(spool_), 1u);
