@@ -55,6 +55,9 @@ struct Capture {
   // The body's serial number as it says over USB (the calibration belongs
   // to the body); empty when the camera gives none.
   std::string body_serial;
+  // Said when the body's battery was low at the shot ("the camera's battery
+  // is at 8 % ..."); empty otherwise or when the body reports no level.
+  std::string battery_warning;
 };
 
 struct CameraEvent {

@@ -17,6 +17,7 @@ class CameraError : public Error {
     disconnected,     // unplugged, switched off, asleep, or the card folder is gone
     card_full,        // no space on the memory card
     not_supported,    // the camera cannot do this over USB
+    no_file,          // the shot ended without a picture (not focused, shutter did not fire)
     file_missing,     // the file is not (or no longer) on the camera or card
     file_unreadable,  // the file is there but cannot be read
     bad_value,        // a setting value the camera does not offer

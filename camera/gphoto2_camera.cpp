@@ -1,9 +1,12 @@
 #include "camera/gphoto2_camera.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
+#include <thread>
 #include <utility>
 
 #include <gphoto2/gphoto2.h>
@@ -12,6 +15,7 @@
 #include "camera/command_thread.h"
 #include "camera/gphoto2_errors.h"
 #include "camera/gphoto2_handles.h"
+#include "camera/gphoto2_shot_wait.h"
 #include "camera/gphoto2_widgets.h"
 #include "core/common/atomic_file.h"
 
@@ -88,6 +92,7 @@ struct Gphoto2Camera::State {
   std::vector<std::string> pending;  // captured on the camera, not yet downloaded
   std::string driver_error;          // the camera driver's last error text (its context error)
   bool reconnecting = false;         // the camera was lost: look it up again by model
+  std::optional<int> last_battery;   // percent, as read at the last shot
 
   ~State() {
     disconnect();
@@ -120,6 +125,14 @@ struct Gphoto2Camera::State {
     if (e.kind() == Kind::disconnected) {
       disconnect();
       reconnecting = true;
+      // A body whose battery runs flat switches itself off and drops off
+      // the bus, which looks like an unplug: the last level read says why.
+      if (last_battery && *last_battery <= Gphoto2Camera::kLowBatteryPercent)
+        throw CameraError(Kind::disconnected,
+                          std::string(e.what()) + ". Its battery read " +
+                              std::to_string(*last_battery) +
+                              " % at the last shot: it has probably switched itself off; "
+                              "change the battery");
     }
     throw e;
   }
@@ -269,9 +282,12 @@ struct Gphoto2Camera::State {
     ensure_connected();
     const auto [folder, name] = split_path(camera_path);
     FilePtr file = new_file();
-    check(gp_camera_file_get(camera, folder.c_str(), name.c_str(), GP_FILE_TYPE_NORMAL, file.get(),
-                             context),
-          "Downloading " + camera_path);
+    with_busy_retries(
+        [&] {
+          return gp_camera_file_get(camera, folder.c_str(), name.c_str(), GP_FILE_TYPE_NORMAL,
+                                    file.get(), context);
+        },
+        "Downloading " + camera_path);
     const char* data = nullptr;
     unsigned long size = 0;
     check(gp_file_get_data_and_size(file.get(), &data, &size), "Reading " + camera_path);
@@ -362,43 +378,97 @@ struct Gphoto2Camera::State {
     check(rc, "Setting " + current.label + " to " + value);
   }
 
+  static long long ms_until(std::chrono::steady_clock::time_point end) {
+    return std::max<long long>(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                   end - std::chrono::steady_clock::now())
+                                   .count(),
+                               0);
+  }
+
   std::vector<CameraEvent> wait_events(int timeout_ms) {
     std::vector<CameraEvent> out;
     const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
     for (;;) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-                            end - std::chrono::steady_clock::now())
-                            .count();
-      CameraEventType type = GP_EVENT_UNKNOWN;
-      void* data = nullptr;
-      check(gp_camera_wait_for_event(camera, static_cast<int>(std::max<long long>(left, 0)), &type,
-                                     &data, context),
-            "Waiting for the camera");
-      CameraEvent e;
-      switch (type) {
-        case GP_EVENT_FILE_ADDED: {
-          const auto* path = static_cast<CameraFilePath*>(data);
-          e.kind = CameraEvent::Kind::file_added;
-          e.detail = join_path(path->folder, path->name);
-          break;
-        }
-        case GP_EVENT_CAPTURE_COMPLETE:
-          e.kind = CameraEvent::Kind::capture_complete;
-          break;
-        case GP_EVENT_TIMEOUT:
-          e.kind = CameraEvent::Kind::timeout;
-          break;
-        case GP_EVENT_UNKNOWN:
-          if (data) e.detail = static_cast<const char*>(data);
-          break;
-        default:
-          break;
-      }
-      free(data);
-      out.push_back(e);
-      if (e.kind == CameraEvent::Kind::timeout || left <= 0) break;
+      const long long left = ms_until(end);
+      out.push_back(next_event(static_cast<int>(left)));
+      if (out.back().kind == CameraEvent::Kind::timeout || left <= 0) break;
     }
     return out;
+  }
+
+  // The camera's next event within timeout_ms (a timeout event if none).
+  CameraEvent next_event(int timeout_ms) {
+    CameraEventType type = GP_EVENT_UNKNOWN;
+    void* data = nullptr;
+    check(gp_camera_wait_for_event(camera, timeout_ms, &type, &data, context),
+          "Waiting for the camera");
+    CameraEvent e;
+    switch (type) {
+      case GP_EVENT_FILE_ADDED: {
+        const auto* path = static_cast<CameraFilePath*>(data);
+        e.kind = CameraEvent::Kind::file_added;
+        e.detail = join_path(path->folder, path->name);
+        break;
+      }
+      case GP_EVENT_CAPTURE_COMPLETE:
+        e.kind = CameraEvent::Kind::capture_complete;
+        break;
+      case GP_EVENT_TIMEOUT:
+        e.kind = CameraEvent::Kind::timeout;
+        break;
+      case GP_EVENT_UNKNOWN:
+        if (data) e.detail = static_cast<const char*>(data);
+        break;
+      default:
+        break;
+    }
+    free(data);
+    return e;
+  }
+
+  // Runs `step` (a libgphoto2 call), asking a body that answers busy again
+  // a bounded number of times before the busy result is said.
+  template <class Step>
+  void with_busy_retries(Step step, const std::string& action) {
+    int rc = step();
+    for (int i = 0; rc == GP_ERROR_CAMERA_BUSY && i < options.busy_retries; ++i) {
+      std::exchange(driver_error, {});
+      std::this_thread::sleep_for(std::chrono::milliseconds(options.busy_wait_ms));
+      rc = step();
+    }
+    if (rc == GP_ERROR_CAMERA_BUSY && options.busy_retries > 0)
+      driver_error = "still busy after " + std::to_string(options.busy_retries + 1) + " tries " +
+                     std::to_string(options.busy_wait_ms) + " ms apart" +
+                     (driver_error.empty() ? "" : "; " + driver_error);
+    check(rc, action);
+  }
+
+  // The body's battery level in percent; none when it gives no number.
+  std::optional<int> read_battery() {
+    for (const auto& n : kBatteryNames) {
+      CameraWidget* w = nullptr;
+      if (gp_camera_get_single_config(camera, n.c_str(), &w, context) < GP_OK) continue;
+      WidgetPtr owned(w);
+      const std::string v = setting_of_widget(w).value;
+      if (v.empty() || !std::isdigit(static_cast<unsigned char>(v.front()))) return std::nullopt;
+      return std::atoi(v.c_str());
+    }
+    std::exchange(driver_error, {});
+    return std::nullopt;
+  }
+
+  // Triggers one shot and waits for its files (gphoto2_shot_wait.h); each
+  // file goes on the pending list as soon as the camera names it.
+  std::vector<std::string> shoot() {
+    with_busy_retries([&] { return gp_camera_trigger_capture(camera, context); },
+                      "Taking a picture");
+    return wait_for_shot_files(
+        [&](int timeout_ms) {
+          CameraEvent e = next_event(timeout_ms);
+          if (e.kind == CameraEvent::Kind::file_added) pending.push_back(e.detail);
+          return e;
+        },
+        {options.capture_timeout_ms, options.file_after_complete_ms, options.event_drain_ms});
   }
 };
 
@@ -541,20 +611,24 @@ Capture Gphoto2Camera::capture() {
   return thread_->call([this] {
     State& s = *state_;
     s.ensure_connected();
-    CameraFilePath path;
-    s.check(gp_camera_capture(s.camera, GP_CAPTURE_IMAGE, &path, s.context), "Taking a picture");
-    const std::string first = join_path(path.folder, path.name);
-    s.pending.push_back(first);
-    std::vector<std::string> files{first};
-    // The RAW of a RAW+JPEG shot arrives as a follow-up "file added" event.
-    for (const auto& e : s.wait_events(s.options.event_drain_ms))
-      if (e.kind == CameraEvent::Kind::file_added) {
-        s.pending.push_back(e.detail);
-        files.push_back(e.detail);
-      }
+    // Kept from the last reading when the body gives none now (gone off).
+    if (const std::optional<int> level = s.read_battery()) s.last_battery = level;
+    const std::vector<std::string> files = s.shoot();
     std::vector<CapturedFile> got;
     for (const auto& f : files) got.push_back(s.download(f));
-    return as_capture(std::move(got), s.serial);
+    Capture c = as_capture(std::move(got), s.serial);
+    if (s.last_battery && *s.last_battery <= kLowBatteryPercent)
+      c.battery_warning = "The camera's battery is at " + std::to_string(*s.last_battery) +
+                          " %: change it before the next pair (a body whose battery runs flat "
+                          "switches itself off, mid-pair)";
+    return c;
+  });
+}
+
+std::optional<int> Gphoto2Camera::battery_percent() {
+  return thread_->call([this] {
+    state_->ensure_connected();
+    return state_->read_battery();
   });
 }
 

@@ -45,7 +45,23 @@ class Gphoto2Camera final : public Camera {
     std::string port;       // e.g. "usb:001,007" or "disk:/media/card"; empty: that of the model
     std::string spool_dir;  // where downloaded files are stored; must be writable
     int event_drain_ms = 3000;  // how long to wait for follow-up files after a capture
+    // How long a shot may take to give its file: the release, autofocus,
+    // the exposure and the write to the card. ptp2's own capture waits
+    // for the new file without a bound when the body makes none (issue
+    // 42), so rockface triggers the shot and waits for it itself.
+    int capture_timeout_ms = 30000;
+    // How long the file may follow the body's "capture complete" (a slow
+    // card's write of a large RAW) before the shot is said to have none.
+    int file_after_complete_ms = 10000;
+    // A body that answers "busy" (PTP DeviceBusy: still writing the last
+    // shot, a menu open) to a shot or a download is asked again this many
+    // times, busy_wait_ms apart, before rockface says so.
+    int busy_retries = 5;
+    int busy_wait_ms = 500;
   };
+
+  // A battery level at or below this (percent) is said with each shot.
+  static constexpr int kLowBatteryPercent = 15;
 
   // Cameras on USB, as libgphoto2 detects them.
   static std::vector<DetectedCamera> detect();
@@ -77,13 +93,20 @@ class Gphoto2Camera final : public Camera {
   void set_tablet_setting(TabletSetting which, const std::string& value);
   // unknown when the camera has no flash setting.
   FlashState flash() override;
+  // The battery level in percent, as the body reports it over USB; none
+  // when it reports none (or on AC power).
+  std::optional<int> battery_percent();
 
   // Shooting, in the order of the workflow: aim, focus, shoot, download.
   cv::Mat live_view() override;
   // Autofocuses once, then switches to the camera's manual focus mode.
   void lock_focus() override;
-  // Waits event_drain_ms for the shot's follow-up files (the RAW of a
-  // RAW+JPEG pair) and spools every file as it is downloaded.
+  // Triggers the shot (asking a busy body again, busy_retries times),
+  // waits up to capture_timeout_ms for its file, then event_drain_ms for
+  // its follow-up files (the RAW of a RAW+JPEG pair), and spools every file
+  // as it is downloaded. A shot that gives no file throws CameraError
+  // (no_file) saying so; a low battery (kLowBatteryPercent) is said in the
+  // Capture's battery_warning.
   Capture capture() override;
   std::optional<Capture> fetch_pending_capture() override;
   // Waits up to timeout_ms on the camera.

@@ -34,6 +34,16 @@ CameraError gphoto2_error(int code, const std::string& action, const std::string
           "another program is using the camera's USB connection (on a desktop usually a "
           "photo importer or the file manager). Close it, or unplug and replug the camera";
       break;
+    case GP_ERROR_TIMEOUT:
+      // On the bus but silent: a body gone to sleep (standby) answers
+      // nothing until it is woken (issue 42).
+      kind = Kind::disconnected;
+      what =
+          "the camera did not answer: it has probably gone to sleep. Wake it (half-press the "
+          "shutter release, or switch it off and on) and try again; set its standby timer "
+          "longer for tethered work. rockface reconnects on the next command, and pictures "
+          "already downloaded are safe";
+      break;
     case GP_ERROR_IO_USB_FIND:
     case GP_ERROR_IO:
     case GP_ERROR_IO_INIT:
@@ -41,7 +51,6 @@ CameraError gphoto2_error(int code, const std::string& action, const std::string
     case GP_ERROR_IO_WRITE:
     case GP_ERROR_IO_UPDATE:
     case GP_ERROR_IO_USB_CLEAR_HALT:
-    case GP_ERROR_TIMEOUT:
       kind = Kind::disconnected;
       what =
           "the camera stopped answering: it was unplugged, switched off or went to sleep. "

@@ -15,6 +15,7 @@ const std::vector<std::string> kFocusModeNames{"focusmode", "focusmode2", "afmod
 const std::vector<std::string> kAutofocusNames{"autofocusdrive"};
 const std::vector<std::string> kWhiteBalanceNames{"whitebalance"};
 const std::vector<std::string> kSerialNames{"serialnumber", "eosserialnumber"};
+const std::vector<std::string> kBatteryNames{"batterylevel"};
 
 const std::vector<std::string>& widget_names(TabletSetting which) {
   switch (which) {

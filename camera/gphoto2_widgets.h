@@ -24,6 +24,9 @@ extern const std::vector<std::string> kFocusModeNames;
 extern const std::vector<std::string> kAutofocusNames;
 extern const std::vector<std::string> kWhiteBalanceNames;
 extern const std::vector<std::string> kSerialNames;
+// ptp2 names the PTP BatteryLevel property (0x5001) "batterylevel" on
+// every maker; its value reads "50%" (Canon EOS bodies say words: "Full").
+extern const std::vector<std::string> kBatteryNames;
 
 // The widget names of one of the tablet's settings.
 const std::vector<std::string>& widget_names(TabletSetting which);

@@ -1,9 +1,11 @@
 // `rockface measure MODEL.ply|PROJECT --traces PICKS.json --out MEASURES.json
-//  [--png STEREONET.png] [--csv DIPS.csv] [--sets N|auto] [--visit N | --model ID]`
+//  [--png STEREONET.png] [--csv DIPS.csv] [--sets N|auto]
+//  [--visit N | --model ID | --add-to-visit N]`
 //
 // Measures the picks on a 3D image: a model file (with the camera it was
 // reconstructed with) or a project's visit, each pick on the 3D image of its
-// pair (core/measure/picks.h `pair`), all in the face frame (the first pair's). Everything
+// pair (core/measure/picks.h `pair`), all in the face frame (the first pair's),
+// stored as a new visit or, with --add-to-visit, in the visit measured on. Everything
 // is measured before anything is written: a bad pick stops the verb (exit 2)
 // naming it, with nothing stored and no output file
 // (firmware-app/measure/measure_workflow.h).
@@ -27,7 +29,19 @@ namespace {
 struct MeasureOptions {
   MeasureRequest request;
   std::string sets;  // a count or "auto"; empty: the picks'
+  std::optional<storage::RecordId> add_to_visit;
 };
+
+// --add-to-visit N: measure on visit N's 3D images and store in it; the
+// visit is then given by this option alone.
+void take_visit_to_add_to(MeasureOptions& o) {
+  if (!o.add_to_visit) return;
+  if (o.request.on.visit || o.request.on.model)
+    throw InputError("--add-to-visit",
+                     "it names the visit measured on and stored in: leave out --visit and --model");
+  o.request.on.visit = o.add_to_visit;
+  o.request.add_to_visit = true;
+}
 
 // --sets: a count in [1, 12], or "auto".
 void parse_sets(const std::string& text, MeasureRequest& request) {
@@ -68,9 +82,11 @@ int run_measure(MeasureOptions& o) {
   check_point_sigma(o.request.on.point_sigma);
   check_friction(o.request.friction_deg);
   parse_sets(o.sets, o.request);
+  take_visit_to_add_to(o);
   const std::string project = o.request.on.source;
   o.request.stored = [&](storage::RecordId visit) {
-    std::cout << "stored in " << project << ", visit " << visit << "\n";
+    std::cout << (o.request.add_to_visit ? "added to " : "stored in ") << project << ", visit "
+              << visit << "\n";
   };
   const measure::MeasuredPicks measured = measure_picks_file(o.request).measured;
   std::size_t known = 0;
@@ -124,6 +140,10 @@ VerbRun setup_measure(CLI::App& sub) {
                  "project: the visit whose 3D images (one per pair; picks name theirs with "
                  "\"pair\") are measured on (default: the newest visit with a model)");
   sub.add_option("--model", r.on.model, "project: measure on this one model instead (pair 1 only)");
+  sub.add_option("--add-to-visit", o->add_to_visit,
+                 "project: measure on this visit's 3D images and store the measurements in it "
+                 "(not in a new visit), so that one visit carries its camera, scale, north and "
+                 "traces; refused for a visit without a 3D image or a label it already holds");
   sub.add_option("--camera", r.on.camera, "model file: the camera it was reconstructed with");
   sub.add_option("--photo", r.on.photo,
                  "model file: the left photograph (default: the model's TextureFile)");

@@ -1,5 +1,6 @@
 #include "firmware-app/measure/measure_workflow.h"
 
+#include <algorithm>
 #include <deque>
 #include <filesystem>
 #include <map>
@@ -61,6 +62,43 @@ cv::Mat stereonet(const measure::MeasuredPicks& r, const std::string& title, dou
   return measure::render_stereonet(pic);
 }
 
+// --add-to-visit: the visit is there and has a 3D image to measure on,
+// said with its name (what started it) before anything is measured.
+void check_visit_to_add_to(storage::ProjectStore& store, const MeasureRequest& r) {
+  const auto visits = store.list_visits();
+  const auto it = std::find_if(visits.begin(), visits.end(),
+                               [&](const storage::Visit& v) { return v.id == *r.on.visit; });
+  if (it == visits.end())
+    throw InputError("--add-to-visit",
+                     "no visit " + std::to_string(*r.on.visit) + " in " + r.on.source);
+  if (store.list_visit_models(it->id).empty())
+    throw InputError("--add-to-visit", "visit " + std::to_string(it->id) + " (" + it->source +
+                                           ") of " + r.on.source +
+                                           " has no 3D image to measure on: reconstruct its "
+                                           "pairs first, or measure on a visit that has one");
+}
+
+// --add-to-visit: no label the visit already holds is stored again (the
+// store keeps one of each per visit); checked before anything is stored.
+void check_new_labels(storage::ProjectStore& store, storage::RecordId visit,
+                      const std::string& picks, const std::vector<storage::Measurement>& records,
+                      const std::vector<storage::JointSet>& sets,
+                      const std::vector<storage::Joint>& joints) {
+  std::set<std::string> held;
+  for (const auto& m : store.list_measurements(visit)) held.insert("measurement " + m.label);
+  for (const auto& j : store.list_joints(visit)) held.insert("joint " + j.label);
+  for (const auto& s : store.list_joint_sets(visit)) held.insert("joint set " + s.label);
+  std::vector<std::string> adding;
+  for (const auto& m : records) adding.push_back("measurement " + m.label);
+  for (const auto& j : joints) adding.push_back("joint " + j.label);
+  for (const auto& s : sets) adding.push_back("joint set " + s.label);
+  for (const auto& a : adding)
+    if (held.count(a))
+      throw InputError(picks, "visit " + std::to_string(visit) + " already holds a " + a +
+                                  ": give the pick another id, or measure into a new visit "
+                                  "(without --add-to-visit); nothing was stored");
+}
+
 }  // namespace
 
 MeasureOutcome measure_picks_file(const MeasureRequest& r) {
@@ -83,6 +121,7 @@ MeasureOutcome measure_picks_file(const MeasureRequest& r) {
     if (store->read_only())
       throw InputError(r.on.source,
                        "cannot store measurements in it: " + store->read_only_reason());
+    if (r.add_to_visit) check_visit_to_add_to(*store, r);
     const ProjectPairs pairs = project_pairs(*store, r.on);
     check_pairs(picks, r, pairs);
     std::set<int> used;
@@ -139,21 +178,26 @@ MeasureOutcome measure_picks_file(const MeasureRequest& r) {
     std::string note = "picks measured on " + on;
     for (const auto& j : measured.joints)
       if (!j.plane.known) note += "; joint " + j.label + ": " + j.plane.problem;
-    const storage::RecordId visit = store->begin_visit("measure " + r.picks, note);
     std::map<std::string, PairRecords> further_records;
     for (const auto& f : further)
       for (const auto& [name, view] : f.views) further_records[name] = {f.model_id, f.capture_id};
+    // The visit id is set on the records once the visit is known.
     auto records =
-        measurement_records(measured, visit, {model.model_id, model.capture_id}, further_records);
+        measurement_records(measured, 0, {model.model_id, model.capture_id}, further_records);
     join_trace_records(joined, records);
     unname_joints_without_plane(measured, records);
+    const std::vector<storage::JointSet> sets = joint_set_records(measured);
+    if (r.add_to_visit) check_new_labels(*store, *r.on.visit, r.picks, records, sets, joints);
+    const storage::RecordId visit =
+        r.add_to_visit ? *r.on.visit : store->begin_visit("measure " + r.picks, note);
+    for (auto& m : records) m.visit_id = visit;
     const auto ids = store->save_measurements(visit, records);
     for (auto& j : joints) {
       j.visit_id = visit;
       for (std::size_t k = 0; k < records.size(); ++k)
         if (records[k].label == j.label) j.measurement_id = ids[k];
     }
-    store->save_joints(visit, joint_set_records(measured), joints);
+    store->save_joints(visit, sets, joints);
     outcome.visit = visit;
     if (r.stored) r.stored(visit);
   }

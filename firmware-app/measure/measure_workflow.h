@@ -3,10 +3,10 @@
 // images loaded (a model file, or a project's visit with one model per
 // pair, measure_models.h), every pick measured on its pair's image in the
 // face frame (the first pair's), the measurements stored in the project as
-// one new visit, and the output files written (rockface-measures/1, the
-// stereonet, the Dips-style CSV). Everything is measured before anything is
-// stored or written: a bad pick throws InputError naming it, with nothing
-// stored and no output file. Run by `rockface measure`.
+// one new visit (or added to the visit measured on), and the output files written
+// (rockface-measures/1, the stereonet, the Dips-style CSV). Everything is measured before anything
+// is stored or written: a bad pick throws InputError naming it, with nothing stored and no output
+// file. Run by `rockface measure`.
 #include <functional>
 #include <optional>
 #include <string>
@@ -28,8 +28,14 @@ struct MeasureRequest {
   std::optional<int> sets;
   bool automatic_sets = false;
   double friction_deg = 30;  // the stereonet's sliding overlay
+  // Project: store the measurements in the visit measured on (on.visit),
+  // not in a new one, so that one visit carries its camera, scale, north
+  // and the traces mapped later at a desk (issue 42). Refused, nothing
+  // stored, for a visit without a 3D image, and for a label the visit
+  // already holds (a measurement, joint or joint set).
+  bool add_to_visit = false;
   // Called once the measurements are stored in the project (the new
-  // visit), before the output files are written.
+  // visit, or the visit added to), before the output files are written.
   std::function<void(storage::RecordId visit)> stored;
 };
 

@@ -118,6 +118,8 @@ void shoot(AppState& app, bool left) {
         }
         std::string said = side + " shot captured";
         if (!by_hand.empty()) said += " with the focus as set by hand (" + by_hand + ")";
+        // Issue 42: a low battery is said with the shot, before the next pair.
+        if (!shot->battery_warning.empty()) said += ". " + shot->battery_warning;
         return said;
       },
       [&app, shot, left](const TaskOutcome& outcome) {

@@ -224,9 +224,9 @@ TEST_F(VirtualD750Test, AShotTheSpoolCannotTakeStaysPendingUntilThereIsRoom) {
 
 // Issue 42: the camera stops sending a picture halfway through its download
 // (virtual_d750.h CardCutMidShot: the card's file cut to half between the
-// shot and the download; the vusb port itself cannot be pulled out, its
-// device being a file read once per process, and vcamera.c never answers
-// DeviceBusy). The shot is not lost: it stays pending on the camera,
+// shot and the download, which vcamera.c answers with PTP's GeneralError;
+// the unplug and the busy body are staged by the faults patch, below and in
+// vcamera_body_faults_test.cpp). The shot is not lost: it stays pending on the camera,
 // nothing partial lies in the spool, and once the camera answers again it
 // is fetched whole as the shot it was; the next shot is a new picture.
 TEST_F(VirtualD750Test, AShotItCouldNotSendIsFetchedFromItsCardOnceItAnswers) {
@@ -392,8 +392,12 @@ TEST_F(VirtualD750Test, DeclaresTheCardFullAtPicture151WithAClearError) {
   ASSERT_FALSE(why.empty()) << "the card never filled";
   EXPECT_EQ(kind, CameraError::Kind::card_full) << why;
   EXPECT_NE(why.find("memory card is full"), std::string::npos) << why;
-  // The driver's own words end the message, for support.
-  EXPECT_NE(why.find("the camera driver: Camera memorycard ran full"), std::string::npos) << why;
+  // What the body said ends the message, for support: PTP's StoreFull
+  // event, which ptp2 hands on unnamed while rockface waits for the file.
+  EXPECT_NE(why.find("the camera driver: the card ran full during the capture (PTP event "
+                     "StoreFull)"),
+            std::string::npos)
+      << why;
   EXPECT_EQ(taken.size(), 26u);
   // Every shot before it is safe in the spool.
   EXPECT_EQ(files_in(spool_).size(), taken.size());

@@ -11,8 +11,10 @@
 //      reconstructs it at the standard preset scaled by the pole; on the
 //      Model screen the compass line is tapped on the photograph and its
 //      bearing typed;
-//   3. `rockface measure P` with taps where the face's joint traces run,
-//      the Blocks screen's Run analysis, `rockface report`.
+//   3. `rockface measure P --add-to-visit N` with taps where the face's
+//      joint traces run, into the tablet's visit; the Blocks screen's Run
+//      analysis; `rockface report` of that one visit, which carries the
+//      camera, the scale, north and the blocks.
 // Checked against the scene's truth (the renderer's record and the scene's
 // joints), never against what the route computes. The tablet runs in this
 // process (as capture_screen_camera_fault_test.cpp), not as `rockface ui
@@ -349,8 +351,10 @@ TEST(VirtualD750PairToReport, APairShotOnTheTabletGivesAScaledOrientedVisitItsBl
   std::set<std::string> by_compass;
   for (const auto& t : picks.at("traces"))
     if (t.contains("compass")) by_compass.insert(t.at("joint").get<std::string>());
+  // Into the tablet's visit: one visit for the geologist's day at the face.
   r = run_rockface("measure " + project.string() + " --traces " + (root / "picks.json").string() +
-                   " --out " + (root / "measures.json").string());
+                   " --out " + (root / "measures.json").string() + " --add-to-visit " +
+                   std::to_string(visit));
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   std::printf("%s", r.out.c_str());
   const json measures = json::parse(std::ifstream(root / "measures.json"));
@@ -361,8 +365,8 @@ TEST(VirtualD750PairToReport, APairShotOnTheTabletGivesAScaledOrientedVisitItsBl
 
   storage::RecordId mapped = 0;
   {
-    // The tablet opens the project on its newest visit, the one the picks
-    // made; its Blocks screen runs the analysis.
+    // The tablet opens the project on its newest visit, its own, now
+    // holding the traces; its Blocks screen runs the analysis.
     app::FieldRunners runners("");
     ui::FieldServices services = runners.services();
     services.sync = nullptr;
@@ -375,7 +379,7 @@ TEST(VirtualD750PairToReport, APairShotOnTheTabletGivesAScaledOrientedVisitItsBl
     ui::AppState& app = s.state();
     ASSERT_TRUE(app.session && app.session->visit());
     mapped = *app.session->visit();
-    EXPECT_NE(mapped, visit);
+    EXPECT_EQ(mapped, visit) << "the traces went into a visit of their own";
     s.tap("Blocks");
     s.tap("Run analysis");
     s.settle();
@@ -410,16 +414,14 @@ TEST(VirtualD750PairToReport, APairShotOnTheTabletGivesAScaledOrientedVisitItsBl
   EXPECT_TRUE(std::any_of(blocks.begin(), blocks.end(),
                           [](const auto& b) { return b.finite && b.removable; }));
 
-  // The reports: the visit the tablet made names its camera and calibration;
-  // the visit the picks made, its blocks with their verdicts.
-  const fs::path tablet_pdf = root / "tablet-visit.pdf", mapped_pdf = root / "mapped-visit.pdf";
+  // One report, of the one visit: its camera and calibration, what scaled
+  // and oriented it, and its blocks with their verdicts.
+  EXPECT_EQ(store.list_visits().size(), 1u);
+  const fs::path visit_pdf = root / "visit.pdf";
   r = run_rockface("report " + project.string() + " --visit " + std::to_string(visit) + " --out " +
-                   tablet_pdf.string());
+                   visit_pdf.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = run_rockface("report " + project.string() + " --visit " + std::to_string(mapped) + " --out " +
-                   mapped_pdf.string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string tablet = pdf_text(tablet_pdf), blocks_text = pdf_text(mapped_pdf);
+  const std::string tablet = pdf_text(visit_pdf), &blocks_text = tablet;
   // The body as it told its serial over USB (vcamera.c's DeviceInfo: "0.1").
   EXPECT_NE(tablet.find("camera: NIKON D750 (serial 0.1)"), std::string::npos) << tablet;
   EXPECT_NE(tablet.find("calibration: chessboard:9x6:0.035"), std::string::npos) << tablet;
