@@ -1,6 +1,6 @@
 // `rockface import PROJECT FILE [--visit N | --new-visit] [--columns x,y,z,...]
 //  [--offset E,N,Z] [--frame survey|local] [--view-from E,N,Z] [--gcp FILE |
-//  --pole X1,Y1,Z1,X2,Y2,Z2 [--range-pole M] [--azimuth DEG --reference-line
+//  --pole X1,Y1,Z1,X2,Y2,Z2|auto [--range-pole M] [--azimuth DEG --reference-line
 //  X1,Y1,Z1,X2,Y2,Z2 [--declination DEG]]]`: a point cloud
 // or a mesh made elsewhere (PLY, OBJ, PCD, XYZ / TXT / CSV / ASC, PTS, PTX,
 // LAS) becomes a visit's 3D image (firmware-app/import/import_surface.h).
@@ -73,6 +73,11 @@ std::string survey_words(const Eigen::Vector3d& p) {
          format_fixed(p.z(), 3);
 }
 
+// A point of a local frame in the file's own numbers, as --pole takes them.
+std::string local_words(const Eigen::Vector3d& p) {
+  return format_fixed(p.x(), 4) + "," + format_fixed(p.y(), 4) + "," + format_fixed(p.z(), 4);
+}
+
 VerbRun setup_import(CLI::App& sub) {
   auto o = std::make_shared<ImportOptions>();
   sub.add_option("PROJECT", o->project, "project file (*.rockface); created when missing")
@@ -98,7 +103,8 @@ VerbRun setup_import(CLI::App& sub) {
                  "its virtual view, as `replay --gcp` takes them on the left photograph)");
   sub.add_option("--pole", o->pole,
                  "a local-frame cloud's range pole: its lower and upper target's centres in the "
-                 "file's coordinates, X1,Y1,Z1,X2,Y2,Z2 (scales and levels it)");
+                 "file's coordinates, X1,Y1,Z1,X2,Y2,Z2, or auto: found in the cloud's colours "
+                 "(scales and levels it)");
   sub.add_option("--range-pole", o->range_pole,
                  "m between the pole's targets; default: the length typed last in the project");
   sub.add_option("--azimuth", o->azimuth,
@@ -116,7 +122,9 @@ VerbRun setup_import(CLI::App& sub) {
     if (!o->view_from.empty()) request.view_from = parse_triple(o->view_from, "--view-from");
     request.frame = o->frame;
     request.gcp_file = o->gcp;
-    if (!o->pole.empty()) {
+    if (o->pole == "auto") {
+      request.find_pole = true;
+    } else if (!o->pole.empty()) {
       const auto ends = parse_two_points(o->pole, "--pole");
       request.pole = ImportPole{ends[0], ends[1]};
     } else if (o->range_pole) {
@@ -181,6 +189,10 @@ VerbRun setup_import(CLI::App& sub) {
     } else if (r.pole_length_m) {
       std::cout << "a local frame scaled and levelled by the range pole (" << *r.pole_length_m
                 << " m between its targets)";
+      if (r.pole_found)
+        std::cout << ", its targets found in the cloud's colours at "
+                  << local_words(r.pole_found->lower) << " and "
+                  << local_words(r.pole_found->upper);
       if (r.north_rotation_deg)
         std::cout << ", north by the compass line (turned " << *r.north_rotation_deg << " deg)";
       else

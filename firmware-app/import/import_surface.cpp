@@ -15,6 +15,7 @@
 #include "core/photogrammetry/surface/cloud_noise.h"
 #include "core/photogrammetry/surface/surface_mesh.h"
 #include "core/photogrammetry/surface/virtual_view.h"
+#include "core/photogrammetry/targets/cloud_range_pole.h"
 #include "firmware-app/import/import_control_points.h"
 #include "firmware-app/import/round_meshing.h"
 #include "firmware-app/records/project_visit.h"
@@ -95,13 +96,14 @@ std::optional<double> checked_pole_length(storage::ProjectStore& store,
   if (!request.frame.empty() && request.frame != "survey" && request.frame != "local")
     throw InputError("--frame", "'" + request.frame + "' (survey or local)");
 
-  if (request.pole && !request.gcp_file.empty())
+  const bool by_pole = request.pole || request.find_pole;
+  if (by_pole && !request.gcp_file.empty())
     throw InputError("--pole", "the range pole or ground control (--gcp), not both");
-  if (request.north && !request.pole)
+  if (request.north && !by_pole)
     throw InputError("--azimuth",
                      "a compass line turns a cloud the range pole has levelled: give --pole");
   std::optional<double> pole_length = request.pole_length_m;
-  if (request.pole && !pole_length) {
+  if (by_pole && !pole_length) {
     if (const auto typed = store.latest_capture_setting("range_pole_m")) try {
         pole_length = std::stod(*typed);
       } catch (const std::exception&) {
@@ -317,6 +319,28 @@ std::optional<photogrammetry::ControlPointRegistration> register_to_control(
   return control;
 }
 
+// `--pole auto`: the pole's two targets found in the cloud's colours (a
+// texture's, a scanner's camera's), seen from where the view is drawn, the
+// file's z taken as up (cloud_range_pole.h). None without it.
+std::optional<ImportPole> find_pole_in_colours(const ImportRequest& request,
+                                               const storage::ImportedSurface& s,
+                                               const ImportTriangles& surface,
+                                               const Eigen::Vector3d& viewer, ImportResult& r) {
+  if (!request.find_pole) return std::nullopt;
+  require_local_frame(r, "--pole auto");
+  try {
+    const photogrammetry::CloudRangePole found = photogrammetry::find_range_pole_in_cloud(
+        s.mesh.vertices, s.mesh.colours, viewer, surface.meshed.median_spacing,
+        Eigen::Vector3d::UnitZ());
+    r.pole_found = ImportPole{found.targets[0].centre, found.targets[1].centre};
+    return r.pole_found;
+  } catch (const InputError& e) {
+    throw InputError("--pole auto", e.reason() +
+                                        "; give the targets' centres instead: --pole "
+                                        "X1,Y1,Z1,X2,Y2,Z2 (lower target first)");
+  }
+}
+
 // The range pole's registration and its two targets as the parameters list
 // them.
 struct ImportPoleOnView {
@@ -328,19 +352,17 @@ struct ImportPoleOnView {
 // cloud and the view's camera scaled, levelled and, by a compass line,
 // turned to north; the lower target at the origin as a photographed pole's.
 // None without --pole.
-std::optional<ImportPoleOnView> register_to_pole(const ImportRequest& request,
-                                                 const std::optional<double>& pole_length,
-                                                 const photogrammetry::VirtualView& view,
-                                                 storage::ImportedSurface& s,
-                                                 photogrammetry::Similarity& camera,
-                                                 ImportResult& r) {
-  if (!request.pole) return std::nullopt;
+std::optional<ImportPoleOnView> register_to_pole(
+    const ImportRequest& request, const std::optional<ImportPole>& ends_given,
+    const std::optional<double>& pole_length, const photogrammetry::VirtualView& view,
+    storage::ImportedSurface& s, photogrammetry::Similarity& camera, ImportResult& r) {
+  if (!ends_given) return std::nullopt;
   require_local_frame(r, "--pole");
   ImportPoleOnView pole;
-  pole.registration = register_import_to_pole(*request.pole, *pole_length, request.north, camera);
+  pole.registration = register_import_to_pole(*ends_given, *pole_length, request.north, camera);
   const ImportPoleRegistration& reg = pole.registration;
   const char* which[2] = {"lower", "upper"};
-  const Eigen::Vector3d ends[2] = {request.pole->lower, request.pole->upper};
+  const Eigen::Vector3d ends[2] = {ends_given->lower, ends_given->upper};
   for (int k = 0; k < 2; ++k) {
     // Its pixel in the view, where the 3D view and the report show it.
     const Eigen::Vector3d c = view.pose.to_camera(ends[k]);
@@ -410,7 +432,8 @@ std::string import_words(const ImportRequest& request, const storage::ImportedSu
                                 : ", a local frame");
   if (by_pole)
     words << (request.north ? " scaled and levelled by the range pole, north by the compass line"
-                            : " scaled and levelled by the range pole (no north)");
+                            : " scaled and levelled by the range pole (no north)")
+          << (request.find_pole ? ", its targets found in the cloud's colours" : "");
   return words.str();
 }
 
@@ -441,7 +464,10 @@ nlohmann::json registration_json(
         {"north_source", request.north ? "compass" : "none"},
         {"scaled", true},
         {"scale", pole->registration.transform.scale},
-        {"range_pole", {{"length_m", *pole_length}, {"targets", pole->targets}}}};
+        {"range_pole",
+         {{"length_m", *pole_length},
+          {"targets", pole->targets},
+          {"targets_from", request.find_pole ? "found in the cloud's colours" : "given"}}}};
     if (request.north)
       registration["north"] = {
           {"azimuth_deg", request.north->azimuth_deg},
@@ -574,11 +600,13 @@ ImportResult import_surface(storage::ProjectStore& store, const ImportRequest& r
   camera.t = view.pose.centre;
   const auto control =
       register_to_control(store, project, request, s, surface.triangles, view, camera, r);
-  const auto pole = register_to_pole(request, pole_length, view, s, camera, r);
+  colour_from_texture(s.mesh, texture);  // a textured mesh's targets are in its texture
+  const std::optional<ImportPole> pole_ends =
+      request.find_pole ? find_pole_in_colours(request, s, surface, viewer, r) : request.pole;
+  const auto pole = register_to_pole(request, pole_ends, pole_length, view, s, camera, r);
   view.pixels = {};  // the texture coordinates say the same; memory for the store
   r.view_width = view.intrinsics.width;
   r.view_height = view.intrinsics.height;
-  colour_from_texture(s.mesh, texture);
   storage::Capture capture = capture_of(request, source, s, view);
 
   storage::Model model = model_of(s, surface.triangles, view, camera, control, r);

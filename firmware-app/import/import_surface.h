@@ -47,6 +47,9 @@ struct ImportRequest {
   // geologist last typed in this project, `range_pole_m`), and a compass
   // line for north.
   std::optional<ImportPole> pole;
+  // `--pole auto`: the two targets found in the cloud's colours
+  // (photogrammetry/targets/cloud_range_pole.h) instead of given.
+  bool find_pole = false;
   std::optional<double> pole_length_m;
   std::optional<ImportCompassLine> north;
 };
@@ -61,7 +64,8 @@ struct ImportResult {
   std::string registration_kind;   // "scanner" | "ground_control" | "range_pole[_compass]" | "none"
   std::size_t control_points = 0;  // ground control: how many, their rms, the scale found
   double control_rms_m = 0, control_scale = 1;
-  std::optional<double> pole_length_m;       // the range pole's, when it registered the cloud
+  std::optional<double> pole_length_m;   // the range pole's, when it registered the cloud
+  std::optional<ImportPole> pole_found;  // `--pole auto`: the targets' centres, the file's frame
   std::optional<double> north_rotation_deg;  // the compass line's turn about the vertical
   Eigen::Vector3d file_datum = Eigen::Vector3d::Zero();  // absolute = stored vertex + datum
   Eigen::Vector3d project_datum = Eigen::Vector3d::Zero();

@@ -23,6 +23,8 @@
 #include "storage/project/model_registration.h"
 #include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/rendered_pole_cloud.h"
+#include "tests/support/synthetic_face.h"
 #include "tests/support/temp_folders.h"
 
 namespace {
@@ -206,6 +208,79 @@ TEST(ImportRangePole, ThePoleAndGroundControlAreNotTakenTogether) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("not both"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(project));
+}
+
+// `--pole auto`: the targets found in the colours of a cloud sampled from
+// the rendered sample face (tests/support/rendered_pole_cloud.h: 2 mm of
+// scanner noise, a local frame at 0.37 of the site's size, turned and
+// tilted). The truth is the scene's target centres carried into the file's
+// frame; what the import stored is compared through Eigen's Umeyama fit of
+// the file's points onto the stored ones (not the code under test).
+TEST(ImportRangePole, WithPoleAutoTheTargetsAreFoundInTheCloudsColours) {
+  rockface::testing::LocalFrame frame;
+  frame.scale = 0.37;
+  frame.R = (Eigen::AngleAxisd(130 * M_PI / 180, Eigen::Vector3d::UnitZ()) *
+             Eigen::AngleAxisd(25 * M_PI / 180, Eigen::Vector3d(1, 1, 0).normalized()))
+                .toRotationMatrix();
+  frame.t = Eigen::Vector3d(12.3, -4.5, 101.0);
+  const auto cloud = rockface::testing::rendered_pole_cloud(
+      rockface::testing::synthetic_face(1200, 800), 1, kNoise, frame);
+  const fs::path dir =
+      fs::temp_directory_path() / ("import-pole-auto-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  rockface::test::remove_when_passed(dir);
+  const fs::path file = dir / "face-local.xyz";
+  std::vector<Eigen::Vector3d> written;
+  {
+    std::FILE* f = std::fopen(file.c_str(), "w");
+    for (std::size_t k = 0; k < cloud.points.size(); ++k) {
+      const Eigen::Vector3d& p = cloud.points[k];
+      char text[120];
+      std::snprintf(text, sizeof text, "%.7f %.7f %.7f", p.x(), p.y(), p.z());
+      Eigen::Vector3d back;
+      std::sscanf(text, "%lf %lf %lf", &back.x(), &back.y(), &back.z());
+      written.push_back(back);
+      std::fprintf(f, "%s %d %d %d\n", text, cloud.colours[k][0], cloud.colours[k][1],
+                   cloud.colours[k][2]);
+    }
+    std::fclose(f);
+  }
+  const fs::path project = dir / "auto.rockface";
+  const auto r = run_rockface("import " + project.string() + " " + file.string() +
+                              " --frame local --pole auto --range-pole 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("found in the cloud's colours"), std::string::npos) << r.out;
+  auto store = rockface::storage::ProjectStore::open(project);
+  const auto model = store.load_model(store.list_models().back().id);
+  ASSERT_EQ(model.mesh.vertices.size(), written.size());
+  const auto reg = rockface::storage::read_model_registration(model.registration);
+  EXPECT_EQ(reg.kind, "range_pole");
+  EXPECT_TRUE(reg.is_scaled());
+  const auto n = static_cast<Eigen::Index>(written.size());
+  Eigen::Matrix3Xd src(3, n), dst(3, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    src.col(i) = written[static_cast<std::size_t>(i)];
+    dst.col(i) = model.mesh.vertices[static_cast<std::size_t>(i)];
+  }
+  const Eigen::Matrix4d M = Eigen::umeyama(src, dst, true);
+  auto stored = [&](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d((M * p.homogeneous()).head<3>());
+  };
+  const Eigen::Vector3d lower = stored(cloud.targets[0]), upper = stored(cloud.targets[1]);
+  // The finder's bound (cloud_range_pole_test.cpp): each centre within half
+  // the picture's pixel, 1.5 sampling footprints, of the truth; in the
+  // stored frame, metres of the site: 0.75 footprints / the frame's scale.
+  // The upper target's stored place carries its own error and the lower's
+  // (the pole's similarity takes the lower to the origin and its scale
+  // from both): twice the bound.
+  const double tolerance = 0.75 * cloud.spacing / frame.scale;
+  std::printf(
+      "pole auto: lower target stored at %.4f %.4f %.4f, upper at %.4f %.4f %.4f "
+      "(tolerance %.4f m)\n",
+      lower.x(), lower.y(), lower.z(), upper.x(), upper.y(), upper.z(), tolerance);
+  EXPECT_LT(lower.norm(), tolerance);  // the lower target at the origin
+  EXPECT_LT((upper - Eigen::Vector3d(0, 0, kPoleLength)).norm(), 2 * tolerance);
 }
 
 }  // namespace
