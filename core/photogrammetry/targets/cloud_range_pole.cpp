@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <sstream>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -117,16 +116,19 @@ CloudPicture draw_cloud(const std::vector<Eigen::Vector3d>& points,
   return p;
 }
 
-// The target in the cloud: the plane of the points drawn in the inner half
-// of its white disk (inside it for disks seen up to 60 degrees obliquely),
-// fitted twice (points beyond 3 robust sigmas of the first fit left out:
-// rock seen through a gap of the plate's sampling), cut by the line of
-// sight through the disk's centre.
+// The target in the cloud: the plane of the points drawn in its white disk
+// (those within the disk's major radius whose grey is above the middle of
+// the disk's white and the ring's black: the disk seen obliquely is
+// narrower across), fitted twice (points beyond 3 robust sigmas of the
+// first fit left out: rock seen through a gap of the plate's sampling), cut
+// by the line of sight through the disk's centre.
 std::optional<CloudTarget> target_in_cloud(const CloudPicture& p,
                                            const std::vector<Eigen::Vector3d>& points,
+                                           const std::vector<std::array<std::uint8_t, 3>>& colours,
                                            const TargetObservation& seen) {
   const double cx = seen.ellipse_centre.x(), cy = seen.ellipse_centre.y();
-  const double radius = 0.25 * seen.white_diameter_px;
+  const double radius = 0.5 * seen.white_diameter_px;
+  const double white_from = seen.white_level - 0.5 * seen.contrast;
   std::vector<Eigen::Vector3d> disk;
   for (int j = static_cast<int>(std::floor(cy - radius)); j <= static_cast<int>(cy + radius); ++j)
     for (int i = static_cast<int>(std::floor(cx - radius)); i <= static_cast<int>(cx + radius);
@@ -135,7 +137,11 @@ std::optional<CloudTarget> target_in_cloud(const CloudPicture& p,
       if (std::hypot(i - cx, j - cy) > radius) continue;
       const int k = p.nearest[static_cast<std::size_t>(j) * static_cast<std::size_t>(p.width) +
                               static_cast<std::size_t>(i)];
-      if (k >= 0) disk.push_back(points[static_cast<std::size_t>(k)]);
+      if (k < 0) continue;
+      const auto& rgb = colours[static_cast<std::size_t>(k)];
+      // ITU-R BT.601 luma, as OpenCV's BGR to grey that the detector saw.
+      const double grey = 0.299 * rgb[0] + 0.587 * rgb[1] + 0.114 * rgb[2];
+      if (grey >= white_from) disk.push_back(points[static_cast<std::size_t>(k)]);
     }
   // 6: a plane through a handful of noisy points is no plane.
   if (disk.size() < 6) return std::nullopt;
@@ -236,7 +242,7 @@ CloudRangePole find_range_pole_in_cloud(const std::vector<Eigen::Vector3d>& poin
   const std::vector<TargetObservation> seen = detect_targets(picture.image, parallel);
   std::vector<CloudTarget> targets;
   for (const auto& s : seen)
-    if (const auto t = target_in_cloud(picture, points, s)) targets.push_back(*t);
+    if (const auto t = target_in_cloud(picture, points, colours, s)) targets.push_back(*t);
 
   CloudRangePole pole;
   pole.targets_seen = targets.size();
