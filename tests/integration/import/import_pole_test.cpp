@@ -210,6 +210,17 @@ TEST(ImportRangePole, ThePoleAndGroundControlAreNotTakenTogether) {
   EXPECT_FALSE(fs::exists(project));
 }
 
+TEST(ImportRangePole, PoleAutoOnACloudWithoutColoursIsRefusedWithNothingStored) {
+  const LocalCloud c = write_local_cloud("import-pole-auto-grey");
+  const fs::path project = c.dir / "grey.rockface";
+  const auto r = run_rockface("import " + project.string() + " " + c.file.string() +
+                              " --frame local --pole auto --range-pole 2");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--pole auto"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no colours"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(project));  // nothing stored, no project left behind
+}
+
 // `--pole auto`: the targets found in the colours of a cloud sampled from
 // the rendered sample face (tests/support/rendered_pole_cloud.h: 2 mm of
 // scanner noise, a local frame at 0.37 of the site's size, turned and
