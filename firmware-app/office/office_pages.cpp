@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <set>
 #include <unordered_map>
 
 #include "core/common/error.h"
@@ -138,7 +139,7 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
        office::Param::of(std::string(kNoHeading))},
       "reading the drive's visits");
   json visits = json::array();
-  std::map<std::string, int> tablets, headings;
+  std::map<std::string, int> tablets;
   for (int i = 0; i < r.rows(); ++i) {
     json v;
     v["id"] = r.text(i, 0);
@@ -155,7 +156,6 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
     }
     v["note"] = r.is_null(i, 5) ? "" : r.text(i, 5);
     v["heading"] = r.is_null(i, 9) ? kNoHeading : r.text(i, 9);
-    ++headings[v["heading"].get<std::string>()];
     const std::int64_t n = r.is_null(i, 6) ? 0 : r.int64(i, 6);
     v["blocks"] = n;
     v["moving"] = r.is_null(i, 7) ? 0 : r.int64(i, 7);
@@ -167,11 +167,22 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
   json tablet_list = json::array();
   for (const auto& [name, n] : tablets) tablet_list.push_back(name);
   out["tablets"] = std::move(tablet_list);
-  // The headings named among the visits ("—" last: the visits without one).
+  // The headings named among all the tunnel's visits, whatever the filter
+  // ("—" last: the visits without one): from a drive filtered by one
+  // heading the others must stay choosable.
+  const office::Result named = c.query(
+      "SELECT DISTINCT coalesce(h.heading, $2) FROM rockface.visit v LEFT JOIN (SELECT uuid, "
+      "body->'row'->>'heading' AS heading FROM (SELECT DISTINCT ON (uuid) uuid, deleted, body FROM "
+      "rockface.record WHERE tunnel_id = $1 AND kind = 'visit_heading' ORDER BY uuid, revision "
+      "DESC) l WHERE NOT deleted) h ON h.uuid = v.uuid WHERE v.tunnel_id = $1",
+      {office::Param::of(id), office::Param::of(std::string(kNoHeading))},
+      "reading the drive's headings");
+  std::set<std::string> all_headings;
+  for (int i = 0; i < named.rows(); ++i) all_headings.insert(named.text(i, 0));
   json heading_list = json::array();
-  for (const auto& [name, n] : headings)
+  for (const auto& name : all_headings)
     if (name != kNoHeading) heading_list.push_back(name);
-  if (headings.count(kNoHeading)) heading_list.push_back(kNoHeading);
+  if (all_headings.count(kNoHeading)) heading_list.push_back(kNoHeading);
   out["headings"] = std::move(heading_list);
 
   // The sets along the drive: the same tracks as `rockface drive
