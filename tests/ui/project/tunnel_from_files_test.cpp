@@ -191,6 +191,7 @@ TEST(TunnelFromFiles, TheTabletGivesTheProjectItsTunnelFromAStickAndPlacesTheVis
   // anew on the tablet (the office lists and filters visits by it).
   EXPECT_EQ(t.visit_heading, "North portal");
   t.typed_heading = "South portal";
+  s.frame();  // the button is drawn enabled once the typed name differs
   s.tap("Name the heading");
   s.settle();
   s.frame();
