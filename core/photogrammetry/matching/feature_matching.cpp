@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 
 #include "core/common/error.h"
+#include "core/photogrammetry/matching/mutual_ratio_matches.h"
 
 namespace rockface::photogrammetry {
 
@@ -87,18 +89,6 @@ ImageFeatures detect(const cv::Mat& image, double scale, const ReconstructionPre
   return d;
 }
 
-// For each query descriptor: index of its best match that passes the ratio test, or -1.
-std::vector<int> ratio_matches(const cv::Mat& query, const cv::Mat& train, double ratio) {
-  std::vector<int> best(query.rows, -1);
-  if (query.rows == 0 || train.rows < 2) return best;
-  cv::BFMatcher matcher(cv::NORM_L2);
-  std::vector<std::vector<cv::DMatch>> knn;
-  matcher.knnMatch(query, train, knn, 2);
-  for (const auto& m : knn)
-    if (m.size() == 2 && m[0].distance < ratio * m[1].distance) best[m[0].queryIdx] = m[0].trainIdx;
-  return best;
-}
-
 }  // namespace
 
 ImageFeatures detect_features(const cv::Mat& image, double scale,
@@ -111,9 +101,11 @@ namespace {
 FeatureMatches match(const ImageFeatures& l, const ImageFeatures& r,
                      const ReconstructionPreset& preset, Progress& progress) {
   progress.step("features: matching", 0.6);
-  const std::vector<int> lr = ratio_matches(l.descriptors, r.descriptors, preset.ratio_test);
+  const MutualRatioMatches both =
+      mutual_ratio_matches(l.descriptors, r.descriptors, preset.ratio_test);
+  const std::vector<int>& lr = both.left_to_right;
+  const std::vector<int>& rl = both.right_to_left;
   progress.step("features: mutual check", 0.9);
-  const std::vector<int> rl = ratio_matches(r.descriptors, l.descriptors, preset.ratio_test);
 
   FeatureMatches out;
   out.keypoints_left = static_cast<int>(l.keypoints.size());
@@ -143,11 +135,15 @@ FeatureMatches match_detected(const ImageFeatures& left, const ImageFeatures& ri
 
 FeatureMatches match_features(const cv::Mat& left, const cv::Mat& right,
                               const ReconstructionPreset& preset, Progress& progress) {
-  progress.step("features: left image", 0.0);
+  progress.step("features: both images", 0.0);
   const double scale = working_scale(std::max(left.cols, right.cols), preset.feature_max_width);
+  // SIFT's own parallel parts leave most of its time on one thread; the
+  // right image is detected beside the left (each with its own detector).
+  auto right_features =
+      std::async(std::launch::async, [&] { return detect(right, scale, preset); });
   const ImageFeatures l = detect(left, scale, preset);
-  progress.step("features: right image", 0.3);
-  const ImageFeatures r = detect(right, scale, preset);
+  const ImageFeatures r = right_features.get();
+  progress.step("features: matched", 0.3);
   return match(l, r, preset, progress);
 }
 
