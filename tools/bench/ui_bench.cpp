@@ -64,6 +64,36 @@ BENCHMARK(BM_ModelFrame)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0);
 
+// The same while a finger turns the model: each frame one move of a drag
+// across the panel (the view draws the display mesh's turning copy, an
+// eighth of the budget; issue 45 asks >= 30 frames a second).
+void BM_ModelTurning(benchmark::State& state) {
+  if (!have_project(state)) return;
+  auto s = open(static_cast<std::size_t>(state.range(0)));
+  s->tap("Model");
+  const ModelView& view = s->state().model_view;
+  const float cx = (view.panel_min().x + view.panel_max().x) / 2,
+              cy = (view.panel_min().y + view.panel_max().y) / 2;
+  s->input().push({TouchEvent::Kind::down, 0, cx, cy});
+  for (int k = 0; k < 3; ++k) s->frame();
+  float dx = 0;
+  for (auto _ : state) {
+    dx = dx > 200 ? -200 : dx + 4;  // back and forth: the view keeps turning
+    s->input().push({TouchEvent::Kind::move, 0, cx + dx, cy});
+    s->frame();
+  }
+  state.counters["drawn_triangles"] = view.drawn_triangles();
+  state.counters["shown_triangles"] = static_cast<double>(view.display_mesh().triangle_count());
+  s->input().push({TouchEvent::Kind::up, 0, cx + dx, cy});
+  for (int k = 0; k < 3; ++k) s->frame();
+}
+BENCHMARK(BM_ModelTurning)
+    ->Arg(200000)
+    ->Arg(400000)
+    ->Arg(1600000)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+
 // Pick + fit of one more tap on a trace of three (what the screen does
 // between the release of the finger and the frame that shows the new dip),
 // and that frame.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 #include <Eigen/Geometry>
@@ -26,6 +27,41 @@ std::vector<std::int32_t> cluster(const storage::Mesh& mesh, double cell,
     representative[i] = first.try_emplace(key, static_cast<std::int32_t>(i)).first->second;
   }
   return representative;
+}
+
+// Triangles of `indices` over `positions` (xyz floats) clustered on a grid
+// grown from `cell` until at most `budget` remain; every kept corner is one
+// of the given vertices, so the vertex buffers are shared.
+std::vector<std::uint32_t> clustered_indices(const std::vector<float>& positions,
+                                             const std::vector<std::uint32_t>& indices, double cell,
+                                             std::size_t budget) {
+  const std::size_t n = positions.size() / 3;
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+  for (std::size_t i = 0; i < n; ++i)
+    low =
+        low.cwiseMin(Eigen::Vector3d(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]));
+  std::vector<std::uint32_t> out;
+  std::vector<std::uint32_t> representative(n);
+  for (;;) {
+    std::unordered_map<std::int64_t, std::uint32_t> first;
+    constexpr std::int64_t kCells = 1 << 20;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d p(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+      const Eigen::Vector3d c = ((p - low) / cell).array().floor();
+      const std::int64_t key =
+          (static_cast<std::int64_t>(c.x()) * kCells + static_cast<std::int64_t>(c.y())) * kCells +
+          static_cast<std::int64_t>(c.z());
+      representative[i] = first.try_emplace(key, static_cast<std::uint32_t>(i)).first->second;
+    }
+    out.clear();
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+      const std::uint32_t a = representative[indices[t]], b = representative[indices[t + 1]],
+                          c = representative[indices[t + 2]];
+      if (a != b && b != c && a != c) out.insert(out.end(), {a, b, c});
+    }
+    if (out.size() / 3 <= budget) return out;
+    cell *= std::sqrt(2.0);
+  }
 }
 
 }  // namespace
@@ -79,6 +115,15 @@ DisplayMesh make_display_mesh(const storage::Mesh& mesh, std::size_t max_triangl
     }
   }
   if (normal_sum.norm() > 0) out.mean_normal = normal_sum.normalized();
+  const std::size_t turning_budget = max_triangles / kTurningBudgetDivisor;
+  if (turning_budget > 0 && out.triangle_count() > turning_budget) {
+    // An eighth of the triangles: a cell about sqrt(8) times the display's.
+    const double start =
+        out.cell > 0 ? out.cell * std::sqrt(8.0)
+                     : 2 * out.radius /
+                           std::sqrt(static_cast<double>(std::max<std::size_t>(turning_budget, 1)));
+    out.turning_indices = clustered_indices(out.positions, out.indices, start, turning_budget);
+  }
   return out;
 }
 

@@ -25,11 +25,19 @@ struct DisplayMesh {
   std::vector<float> texcoords;                            // uv (empty: none)
   std::vector<std::uint8_t> colours;                       // rgb (empty: none)
   std::vector<std::uint32_t> indices;                      // three per triangle
+  // The same vertices clustered again for an eighth of the budget: drawn
+  // while a finger turns the view, when a software renderer cannot draw the
+  // whole budget at the frame rate and nobody reads detail. Empty when the
+  // mesh is already that small (the whole is drawn).
+  std::vector<std::uint32_t> turning_indices;
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
 
-// max_triangles = 0: keep them all.
+// Share of the display budget drawn while the view turns.
+constexpr std::size_t kTurningBudgetDivisor = 8;
+
+// max_triangles = 0: keep them all (and no turning copy).
 DisplayMesh make_display_mesh(const storage::Mesh& mesh, std::size_t max_triangles);
 
 }  // namespace rockface::ui

@@ -51,13 +51,13 @@ constexpr int kMaxTextureSide = 2048;
 ModelRenderer::ModelRenderer() {
   program_ = link_gles_program(kVertexShader, kFragmentShader, "model");
   glGenVertexArrays(1, &vertex_array_);
-  glGenBuffers(4, buffers_);
+  glGenBuffers(5, buffers_);
   glGenTextures(1, &texture_);
 }
 
 ModelRenderer::~ModelRenderer() {
   glDeleteTextures(1, &texture_);
-  glDeleteBuffers(4, buffers_);
+  glDeleteBuffers(5, buffers_);
   glDeleteVertexArrays(1, &vertex_array_);
   glDeleteProgram(program_);
 }
@@ -85,7 +85,14 @@ void ModelRenderer::upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr) 
                static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
                mesh.indices.data(), GL_STATIC_DRAW);
   glBindVertexArray(0);
+  // The turning copy's indices, bound in place of the whole's while turning.
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[4]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+               static_cast<GLsizeiptr>(mesh.turning_indices.size() * sizeof(std::uint32_t)),
+               mesh.turning_indices.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
   index_count_ = static_cast<int>(mesh.indices.size());
+  turning_index_count_ = static_cast<int>(mesh.turning_indices.size());
   origin_ = mesh.centre;
 
   textured_ = !texture_bgr.empty() && !mesh.texcoords.empty();
@@ -106,7 +113,9 @@ void ModelRenderer::upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr) 
   }
 }
 
-unsigned ModelRenderer::render(const OrbitCamera& camera, const OverlayScene& overlay) {
+unsigned ModelRenderer::render(const OrbitCamera& camera, const OverlayScene& overlay,
+                               bool turning) {
+  drawn_triangles_ = 0;
   if (!target_ || target_->width() != camera.width() || target_->height() != camera.height())
     target_ = std::make_unique<Framebuffer>(camera.width(), camera.height());
   target_->bind();
@@ -132,7 +141,13 @@ unsigned ModelRenderer::render(const OrbitCamera& camera, const OverlayScene& ov
     // the face in front of it still hides it.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(4.0f, 8.0f);
-    glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+    const bool coarse = turning && turning_index_count_ > 0;
+    if (coarse) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[4]);
+    const int count = coarse ? turning_index_count_ : index_count_;
+    glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
+    drawn_triangles_ = count / 3;
+    // The vertex array keeps its element buffer: the whole's again.
+    if (coarse) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[3]);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glBindVertexArray(0);
     if (!overlay.empty()) {

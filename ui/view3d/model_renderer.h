@@ -27,7 +27,12 @@ class ModelRenderer {
   // Renders into a framebuffer of the camera's viewport size (made or
   // resized as needed) and returns its colour texture.
   // The overlay is drawn after the model, depth-tested against it.
-  unsigned render(const OrbitCamera& camera, const OverlayScene& overlay = {});
+  // turning: a finger is turning the view; the mesh's turning copy is drawn
+  // (DisplayMesh::turning_indices) when it has one.
+  unsigned render(const OrbitCamera& camera, const OverlayScene& overlay = {},
+                  bool turning = false);
+  // Triangles of the mesh drawn by the last render.
+  int drawn_triangles() const { return drawn_triangles_; }
   // The last render's pixels, BGR, top row first (the rows of
   // OrbitCamera::project); empty before the first render. For tests: the
   // depth test is checked on what the GPU drew, not on a model of it.
@@ -35,8 +40,9 @@ class ModelRenderer {
 
  private:
   unsigned program_ = 0, vertex_array_ = 0, texture_ = 0;
-  unsigned buffers_[4] = {0, 0, 0, 0};  // positions, texcoords, colours, indices
-  int index_count_ = 0;
+  // positions, texcoords, colours, indices, the turning copy's indices
+  unsigned buffers_[5] = {0, 0, 0, 0, 0};
+  int index_count_ = 0, turning_index_count_ = 0, drawn_triangles_ = 0;
   bool textured_ = false;
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // the mesh's centre: positions are relative
   std::unique_ptr<OverlayRenderer> overlay_;

@@ -110,8 +110,11 @@ ModelView::Interaction ModelView::draw(ImVec2 size, const TouchGesture& gesture)
   last_item_takes_drags();
   const ImGuiIO& io = ImGui::GetIO();
   const float slop = kTapSlopPx;
-  if (ImGui::IsItemActive() && io.MouseDragMaxDistanceSqr[0] > slop * slop)
+  bool turning = false;
+  if (ImGui::IsItemActive() && io.MouseDragMaxDistanceSqr[0] > slop * slop) {
     camera_.orbit(io.MouseDelta.x, io.MouseDelta.y);
+    turning = true;
+  }
   if (ImGui::IsItemDeactivated() && io.MouseDragMaxDistanceSqr[0] <= slop * slop)
     out.tap = io.MousePos;
   const bool over = ImGui::IsMouseHoveringRect(panel_min_, panel_max_, false);
@@ -119,10 +122,13 @@ ModelView::Interaction ModelView::draw(ImVec2 size, const TouchGesture& gesture)
     if (over || gesture.active) {
       camera_.zoom(gesture.pinch);
       camera_.pan(gesture.pan.x(), gesture.pan.y());
+      turning = true;
     }
   }
   if (renderer_ && model_) {
-    const unsigned texture = renderer_->render(camera_, overlay_);
+    // While the view moves, the turning copy keeps the frame rate of a
+    // software renderer (issue 45); the whole is drawn again when it stops.
+    const unsigned texture = renderer_->render(camera_, overlay_, turning);
     // The framebuffer's first row is the bottom one: flip v.
     ImGui::GetWindowDrawList()->AddImage(
         reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), panel_min_, panel_max_,

@@ -93,6 +93,8 @@ class ModelView {
   ImVec2 panel_max() const { return panel_max_; }
   // The panel as the area that words drawn on the 3D image belong to.
   TextArea text_area() const { return {panel_min_, panel_max_, "3D image"}; }
+  // Triangles of the 3D image drawn in the last frame (fewer while turning).
+  int drawn_triangles() const { return renderer_ ? renderer_->drawn_triangles() : 0; }
   OrbitCamera& camera() { return camera_; }
   const OrbitCamera& camera() const { return camera_; }
 

@@ -18,6 +18,7 @@
 #include "ui/app/ui_script.h"
 #include "ui/mapping/trace_marker.h"
 #include "ui/platform/headless_session.h"
+#include "ui/view3d/display_mesh.h"
 
 namespace {
 
@@ -249,6 +250,38 @@ TEST(UiScreens, PinchZoomsAndDragOrbitsTheModel) {
   cv::Mat diff;
   cv::absdiff(before, turned, diff);
   EXPECT_GT(cv::countNonZero(diff.reshape(1)), 1000);  // the view turned
+}
+
+// Issue 45: a finger turning the 3D image gets the frame rate of the
+// tablet's software renderer from the display mesh's turning copy (an
+// eighth of the budget); the whole is drawn again when the finger stops.
+TEST(UiScreens, TurningDrawsTheTurningCopyAndTheWholeAgainAfter) {
+  auto s = open_session(demo_project());
+  s->tap("Model");
+  const ModelView& view = s->state().model_view;
+  const int whole = static_cast<int>(view.display_mesh().triangle_count());
+  const int copy = static_cast<int>(view.display_mesh().turning_indices.size() / 3);
+  ASSERT_GT(copy, 0);
+  EXPECT_LE(copy, static_cast<int>(kTriangles / kTurningBudgetDivisor));
+  EXPECT_EQ(view.drawn_triangles(), whole);
+  const Eigen::Vector2f centre((view.panel_min().x + view.panel_max().x) / 2,
+                               (view.panel_min().y + view.panel_max().y) / 2);
+  TouchInput& finger = s->input();
+  finger.push({TouchEvent::Kind::down, 0, centre.x(), centre.y()});
+  for (int k = 0; k < 3; ++k) s->frame();  // the press reaches ImGui
+  std::vector<int> drawn;
+  for (int i = 1; i <= 4; ++i) {
+    finger.push({TouchEvent::Kind::move, 0, centre.x() + 30.0f * i, centre.y()});
+    s->frame();
+    drawn.push_back(view.drawn_triangles());
+  }
+  // The first move may still be within the tap's slop; the later ones turn.
+  EXPECT_EQ(drawn.back(), copy);
+  const cv::Mat turning = s->screenshot();
+  EXPECT_GT(model_pixels(turning, view), 0);  // the copy is drawn, not a blank panel
+  finger.push({TouchEvent::Kind::up, 0, centre.x() + 120.0f, centre.y()});
+  for (int k = 0; k < 3; ++k) s->frame();  // released: the view is still
+  EXPECT_EQ(view.drawn_triangles(), whole);
 }
 
 TEST(UiScreens, TappedTraceAppearsWhereTappedAndIsStoredThere) {
