@@ -125,14 +125,18 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
       // A visit's heading is a record of its own, keyed by the visit's uuid.
       "headings AS (SELECT uuid, body->'row'->>'heading' AS heading FROM live WHERE kind = "
       "'visit_heading') "
+      // Every visit of the tunnel, the filter's verdict a column of its
+      // own: the list of headings is read from all of them (from a drive
+      // filtered by one heading the others must stay choosable), the
+      // latest heading records once for both.
       "SELECT v.uuid::text, v.started_at, v.owner, p.name, pl.chainage, n.note, bl.n, "
-      "bl.moving, bl.largest, h.heading "
+      "bl.moving, bl.largest, h.heading, "
+      "($2 = '' OR v.started_at >= $2) AND ($3 = '' OR left(v.started_at, 10) <= $3) "
+      "AND ($4 = '' OR v.owner = $4) AND ($5 = '' OR coalesce(h.heading, $6) = $5) "
       "FROM rockface.visit v JOIN rockface.project p ON p.uuid = v.project_uuid "
       "LEFT JOIN placements pl ON pl.visit_uuid = v.uuid LEFT JOIN notes n ON n.uuid = v.uuid "
       "LEFT JOIN blocks bl ON bl.visit_uuid = v.uuid LEFT JOIN headings h ON h.uuid = v.uuid "
       "WHERE v.tunnel_id = $1 "
-      "AND ($2 = '' OR v.started_at >= $2) AND ($3 = '' OR left(v.started_at, 10) <= $3) "
-      "AND ($4 = '' OR v.owner = $4) AND ($5 = '' OR coalesce(h.heading, $6) = $5) "
       "ORDER BY v.started_at, v.project_uuid, v.local_id",
       {office::Param::of(id), office::Param::of(filter.from), office::Param::of(filter.to),
        office::Param::of(filter.tablet), office::Param::of(filter.heading),
@@ -140,7 +144,11 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
       "reading the drive's visits");
   json visits = json::array();
   std::map<std::string, int> tablets;
+  // The headings named among all the tunnel's visits, whatever the filter.
+  std::set<std::string> all_headings;
   for (int i = 0; i < r.rows(); ++i) {
+    all_headings.insert(r.is_null(i, 9) ? std::string(kNoHeading) : r.text(i, 9));
+    if (r.text(i, 10) != "t") continue;  // not the filter's
     json v;
     v["id"] = r.text(i, 0);
     v["date"] = r.text(i, 1);
@@ -167,18 +175,7 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
   json tablet_list = json::array();
   for (const auto& [name, n] : tablets) tablet_list.push_back(name);
   out["tablets"] = std::move(tablet_list);
-  // The headings named among all the tunnel's visits, whatever the filter
-  // ("—" last: the visits without one): from a drive filtered by one
-  // heading the others must stay choosable.
-  const office::Result named = c.query(
-      "SELECT DISTINCT coalesce(h.heading, $2) FROM rockface.visit v LEFT JOIN (SELECT uuid, "
-      "body->'row'->>'heading' AS heading FROM (SELECT DISTINCT ON (uuid) uuid, deleted, body FROM "
-      "rockface.record WHERE tunnel_id = $1 AND kind = 'visit_heading' ORDER BY uuid, revision "
-      "DESC) l WHERE NOT deleted) h ON h.uuid = v.uuid WHERE v.tunnel_id = $1",
-      {office::Param::of(id), office::Param::of(std::string(kNoHeading))},
-      "reading the drive's headings");
-  std::set<std::string> all_headings;
-  for (int i = 0; i < named.rows(); ++i) all_headings.insert(named.text(i, 0));
+  // "—" last: the visits without one.
   json heading_list = json::array();
   for (const auto& name : all_headings)
     if (name != kNoHeading) heading_list.push_back(name);

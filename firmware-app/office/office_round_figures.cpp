@@ -61,6 +61,9 @@ RoundsBase read_rounds_base(SharedOfficeCache& cache, office::Connection& db,
 
   storage::ProjectStore store = open_copy(*copy);
   const auto placements = store.list_visit_placements();
+  const auto tunnel_record = store.load_tunnel();
+  const DriveFaces drive =
+      drive_faces(store, tunnel_record ? tunnel_record->drive : tunnel::Drive::ascending);
   // The rounds whose kept figures hold: same inputs, same earlier face.
   for (const auto& p : placements) {
     const std::string uuid = uuid_of(p.visit_id);
@@ -68,7 +71,7 @@ RoundsBase read_rounds_base(SharedOfficeCache& cache, office::Connection& db,
     const auto in = out.inputs.find(uuid);
     if (k != kept.end() && in != out.inputs.end() && k->second.inputs == in->second) {
       json f = json::parse(k->second.figures);
-      if (kept_excavation_holds(f, placements, p.visit_id)) {
+      if (kept_excavation_holds(f, drive, p.visit_id)) {
         out.figures[uuid] = std::move(f);
         continue;
       }
@@ -102,6 +105,10 @@ void measure_rounds(SharedOfficeCache& cache,
   }
   std::optional<storage::ProjectStore> store = open_copy(*meshes);
   const std::string stamp = meshes->stamp;
+  // Every round's start read from one reading of the drive's faces.
+  const auto tunnel_record = store->load_tunnel();
+  const DriveFaces drive =
+      drive_faces(*store, tunnel_record ? tunnel_record->drive : tunnel::Drive::ascending);
 
   std::map<std::string, json> shown;
   std::map<std::string, office::KeptRound> fresh;
@@ -130,7 +137,7 @@ void measure_rounds(SharedOfficeCache& cache,
       f["excavation_text"] = "not evaluated: synced meanwhile";
     } else {
       try {
-        f = round_excavation(*store, v->second);
+        f = round_excavation(*store, v->second, &drive);
         const auto in = base.inputs.find(uuid);
         if (in != base.inputs.end())
           fresh[uuid] = {in->second, f.dump(-1, ' ', false, json::error_handler_t::replace)};
@@ -200,6 +207,29 @@ json rounds_being_read(const json& drive) {
   out["measuring"] = static_cast<int>(rounds.size());
   out["rounds"] = std::move(rounds);
   out["reading"] = true;
+  return out;
+}
+
+json rounds_after_sync(const json& base, const std::map<std::string, json>& figures,
+                       const json& drive, const std::set<std::string>& changed) {
+  const json shown = rounds_with_figures(base, figures);
+  std::map<std::string, const json*> before;
+  for (const json& round : shown.at("rounds")) {
+    const std::string uuid = round.value("visit", "");
+    if (!uuid.empty()) before[uuid] = &round;
+  }
+  json out = rounds_being_read(drive);
+  int measuring = 0;
+  for (json& round : out["rounds"]) {
+    const std::string uuid = round.value("visit", "");
+    const auto it = before.find(uuid);
+    // Moved along the drive: read again.
+    if (it != before.end() && !changed.count(uuid) &&
+        it->second->value("chainage", 0.0) == round.value("chainage", 0.0))
+      round = *it->second;
+    if (round.value("measuring", false)) ++measuring;
+  }
+  out["measuring"] = measuring;
   return out;
 }
 

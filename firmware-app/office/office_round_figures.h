@@ -10,6 +10,7 @@
 // every later server. office_rounds_worker.h runs these in the background.
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,19 @@ void measure_rounds(
 // in the page's "measuring".
 nlohmann::json rounds_with_figures(const nlohmann::json& base,
                                    const std::map<std::string, nlohmann::json>& figures);
+
+// The rounds after a sync, before the drive is read again: each placed
+// visit of `drive` (office_pages.h's drive_page at the new state) with its
+// round as shown before (`base` with `figures`), unless `changed` (visits
+// whose records a sync wrote since, visits_synced_after) names it or it
+// was not a round then — those "measuring" as in rounds_being_read. The
+// page's "reading" true: the worker reads the drive again. A sync that
+// changed the tunnel's or a project's own records ("" in `changed`) shows
+// when the drive has been read again (every round may then change; the
+// rounds stay shown as they were meanwhile, never blank).
+nlohmann::json rounds_after_sync(const nlohmann::json& base,
+                                 const std::map<std::string, nlohmann::json>& figures,
+                                 const nlohmann::json& drive, const std::set<std::string>& changed);
 
 // The rounds as the drive page lists them before their copy was read
 // (office_pages.h's drive_page: each placed visit by chainage), every one

@@ -11,15 +11,15 @@ namespace rockface::app::office_web {
 
 using nlohmann::json;
 
-json round_excavation(storage::ProjectStore& store, storage::RecordId visit) {
+json round_excavation(storage::ProjectStore& store, storage::RecordId visit,
+                      const DriveFaces* drive) {
   json round;
   try {
-    const VisitProfile p = visit_profile(store, visit);
-    const double sense = p.tunnel.drive == tunnel::Drive::ascending ? 1.0 : -1.0;
+    const VisitProfile p = visit_profile(store, visit, Preset::standard, drive);
     round["round_to"] = p.round_to;
-    round["sense"] = sense;
-    const auto previous = previous_face(store.list_visit_placements(), visit, p.round_to, sense);
-    round["previous_face"] = previous ? json(previous->chainage) : json(nullptr);
+    // The heading's drive direction, not the tunnel's (round_start.h).
+    round["sense"] = p.sense;
+    round["previous_face"] = p.previous_face ? json(*p.previous_face) : json(nullptr);
     const auto& d = p.deviation;
     using tunnel::DeviationStatus;
     if (d.status == DeviationStatus::no_walls_in_view) {
@@ -46,11 +46,13 @@ json round_excavation(storage::ProjectStore& store, storage::RecordId visit) {
   return round;
 }
 
-bool kept_excavation_holds(const json& kept, const std::vector<storage::VisitPlacement>& placements,
-                           storage::RecordId visit) {
+bool kept_excavation_holds(const json& kept, const DriveFaces& drive, storage::RecordId visit) {
   if (!kept.contains("round_to")) return kept.contains("excavation_text");
-  const auto previous = previous_face(placements, visit, kept.at("round_to").get<double>(),
-                                      kept.at("sense").get<double>());
+  // The heading read the other way now (its visits since show it) or the
+  // visit named to another heading: measured again.
+  const double sense = drive.sense_of(drive.heading_of(visit));
+  if (kept.at("sense").get<double>() != sense) return false;
+  const auto previous = drive.previous_face(visit, kept.at("round_to").get<double>(), sense);
   const json& was = kept.at("previous_face");
   // The same stored chainage read back: exact equality.
   return previous ? was.is_number() && was.get<double>() == previous->chainage : was.is_null();
@@ -98,8 +100,11 @@ json rounds_page(storage::ProjectStore& store,
 
 json rounds_page(storage::ProjectStore& store,
                  const std::function<std::string(storage::RecordId)>& visit_uuid) {
-  return rounds_page(store, visit_uuid,
-                     [&](storage::RecordId visit) { return round_excavation(store, visit); });
+  const auto tunnel = store.load_tunnel();
+  const DriveFaces drive = drive_faces(store, tunnel ? tunnel->drive : tunnel::Drive::ascending);
+  return rounds_page(store, visit_uuid, [&](storage::RecordId visit) {
+    return round_excavation(store, visit, &drive);
+  });
 }
 
 }  // namespace rockface::app::office_web

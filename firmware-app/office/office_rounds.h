@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "firmware-app/tunnel/round_start.h"
 #include "storage/project/project_store.h"
 
 namespace rockface::app::office_web {
@@ -22,17 +23,21 @@ namespace rockface::app::office_web {
 // (excavation_text; overbreak_m3 and underbreak_m3 when measured) and what
 // the figures rest on besides the visit's own records and the tunnel's,
 // so that kept figures can be checked against the drive as it is later:
-// where the round ends (round_to), the drive's sense (+1 / -1), and the
-// earlier face it was measured from (previous_face: its chainage, null
-// when none). Measured on the visit's 3D image: seconds on a real one.
-nlohmann::json round_excavation(storage::ProjectStore& store, storage::RecordId visit);
+// where the round ends (round_to), its heading's drive direction (sense,
+// +1 / -1), and the earlier face of its heading it was measured from
+// (previous_face: its chainage, null when none; firmware-app/tunnel/
+// round_start.h). Measured on the visit's 3D image: seconds on a real one.
+// `drive`: the store's faces when every round of a drive is measured (read
+// once); else read here.
+nlohmann::json round_excavation(storage::ProjectStore& store, storage::RecordId visit,
+                                const DriveFaces* drive = nullptr);
 
-// Whether kept figures of round_excavation still hold among `placements`
-// (the drive's stored placements now): the round's earlier face is the one
-// they were measured from. A visit placed since between that face and the
-// round's end starts the round elsewhere.
-bool kept_excavation_holds(const nlohmann::json& kept,
-                           const std::vector<storage::VisitPlacement>& placements,
+// Whether kept figures of round_excavation still hold on `drive` (the
+// drive's stored faces now): the round's heading is read in the same
+// direction and its earlier face is the one they were measured from. A
+// visit of the heading placed since between that face and the round's end
+// starts the round elsewhere.
+bool kept_excavation_holds(const nlohmann::json& kept, const DriveFaces& drive,
                            storage::RecordId visit);
 
 // `visit_uuid` names a visit of the pulled copy as the server does (the

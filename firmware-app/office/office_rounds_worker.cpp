@@ -4,6 +4,7 @@
 
 #include "core/common/error.h"
 #include "firmware-app/office/office_round_figures.h"
+#include "storage/office/round_figures.h"
 
 namespace rockface::app::office_web {
 
@@ -44,10 +45,18 @@ void RoundsWorker::queue(const std::string& key, Drive& d) {
 std::string RoundsWorker::page(office::Connection& db, const std::string& tunnel,
                                const std::string& role, RoundsCount* count) {
   const ReadableTunnels readable = readable_tunnels(db);
-  if (!readable.by_name.count(tunnel))
+  const auto tunnel_id = readable.by_name.find(tunnel);
+  if (tunnel_id == readable.by_name.end())
     throw InputError("tunnel " + tunnel, "no such tunnel for this log-in");
   const std::string stamp = cache_.stamp(db, tunnel);
   const std::string key = readable.key + '\n' + tunnel;
+  // The rounds as shown before a sync, while the worker reads the drive
+  // again (below).
+  std::optional<json> earlier;
+  std::map<std::string, json> earlier_figures;
+  std::string earlier_stamp;
+  std::optional<std::set<std::string>> changed;
+  int kept = 0, measured = 0;
   {
     std::lock_guard guard(lock_);
     if (!drives_.count(key)) {
@@ -66,12 +75,12 @@ std::string RoundsWorker::page(office::Connection& db, const std::string& tunnel
     d.used = ++clock_;
     if (d.stamp != stamp) {
       // A tablet synced: read again (a worker under way on the older state
-      // queues the drive again when it sees the stamp moved).
-      const bool queued = d.queued;
-      d = Drive{};
-      d.queued = queued;
-      d.used = clock_;
+      // queues the drive again when it sees the stamp moved). The rounds
+      // read so far stay shown meanwhile, but for the visits the sync
+      // brought or changed.
       d.stamp = stamp;
+      d.text.clear();
+      d.changed.reset();
     }
     d.tunnel = tunnel;
     d.role = role;
@@ -79,7 +88,7 @@ std::string RoundsWorker::page(office::Connection& db, const std::string& tunnel
       if (count) *count = {d.kept, d.measured, 0};
       return d.text;
     }
-    if (d.base) {
+    if (d.base && d.base_stamp == d.stamp) {
       const json page = rounds_with_figures(*d.base, d.figures);
       const int measuring = page.at("measuring").get<int>();
       if (count) *count = {d.kept, d.measured, measuring};
@@ -91,11 +100,34 @@ std::string RoundsWorker::page(office::Connection& db, const std::string& tunnel
       return text;
     }
     queue(key, d);
+    if (d.base) {
+      earlier = d.base;
+      earlier_figures = d.figures;
+      earlier_stamp = d.base_stamp;
+      changed = d.changed;
+      kept = d.kept;
+      measured = d.measured;
+    }
   }
-  // Not read yet: the drive page's placed visits (shared, built once per
-  // sync) stand for the rounds meanwhile.
-  const json page = rounds_being_read(json::parse(cache_.drive(db, tunnel, {})));
-  if (count) *count = {0, 0, page.at("measuring").get<int>()};
+  // Not read at this stamp yet: the drive page's placed visits (shared,
+  // built once per sync) stand for the rounds meanwhile.
+  const json drive = json::parse(cache_.drive(db, tunnel, {}));
+  if (!earlier) {
+    const json page = rounds_being_read(drive);
+    if (count) *count = {0, 0, page.at("measuring").get<int>()};
+    return text_of(page);
+  }
+  if (!changed) {
+    // The visits whose records a sync since the shown rounds' state wrote
+    // (their revisions' time on the server), asked once per sync.
+    const std::string since = earlier_stamp.substr(earlier_stamp.find('/') + 1);
+    changed = office::visits_synced_after(db, tunnel_id->second, since);
+    std::lock_guard guard(lock_);
+    const auto it = drives_.find(key);
+    if (it != drives_.end() && it->second.stamp == stamp) it->second.changed = changed;
+  }
+  const json page = rounds_after_sync(*earlier, earlier_figures, drive, *changed);
+  if (count) *count = {kept, measured, page.at("measuring").get<int>()};
   return text_of(page);
 }
 
@@ -139,9 +171,12 @@ void RoundsWorker::work(const std::string& key) {
       if (it != drives_.end() && (it->second.stamp == asked || it->second.stamp == base.stamp)) {
         Drive& d = it->second;
         d.stamp = base.stamp;
+        d.base_stamp = base.stamp;
         d.base = base.page;
         d.figures = base.figures;
         d.kept = static_cast<int>(base.figures.size());
+        d.measured = 0;  // of this state
+        d.changed.reset();
         shown = base.stamp;
       }
     }

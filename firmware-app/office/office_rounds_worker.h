@@ -8,6 +8,10 @@
 // not kept yet are measured by one background worker
 // (office_round_figures.h), kept on the server a batch at a time and shown
 // to the next request. The page polls until no round is "measuring".
+// After a tablet syncs, the drive is read again in the background: the
+// rounds already shown stay, the visits the sync brought or changed (by
+// their records' revisions on the server) are "measuring" until read and
+// measured — never the whole drive "reading…" again, nor a restart needed.
 //
 // Bounded: one worker thread for the whole server, at most kQueued drives
 // waiting, kDrives drives' states kept (the least recently asked dropped
@@ -19,6 +23,7 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
 
@@ -59,9 +64,15 @@ class RoundsWorker {
   // One drive as the sessions of the same readable tunnels see it.
   struct Drive {
     std::string tunnel, role;  // what the worker reads it as
-    std::string stamp;         // the state below is of this stamp
+    std::string stamp;         // the server's state last asked
+    // The rounds as read at base_stamp, with their figures; after a sync
+    // (stamp moved on) shown until the worker has read the drive again,
+    // but for the visits the sync brought or changed (`changed`, their
+    // uuids, asked of the server once per sync).
+    std::string base_stamp;
     std::optional<nlohmann::json> base;
     std::map<std::string, nlohmann::json> figures;  // by visit uuid
+    std::optional<std::set<std::string>> changed;
     int kept = 0, measured = 0;
     bool queued = false;  // waiting for the worker or under way
     std::string text;     // the page once every round is in

@@ -19,19 +19,8 @@ constexpr double kFaceClearM = 0.15;
 
 }  // namespace
 
-std::optional<storage::VisitPlacement> previous_face(
-    const std::vector<storage::VisitPlacement>& placements, storage::RecordId visit_id,
-    double round_to, double sense) {
-  std::optional<storage::VisitPlacement> previous;
-  for (const auto& p : placements)
-    if (p.visit_id != visit_id && sense * p.chainage < sense * round_to &&
-        (!previous || sense * p.chainage > sense * previous->chainage))
-      previous = p;
-  return previous;
-}
-
-VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit_id,
-                           Preset preset) {
+VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit_id, Preset preset,
+                           const DriveFaces* given) {
   VisitProfile out;
   auto tunnel = store.load_tunnel();
   if (!tunnel)
@@ -44,12 +33,19 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
                      "is not placed in the tunnel: type the chainage of its range pole, or "
                      "register it to monitoring targets");
   out.placement = *placement;
-  const tunnel::Alignment alignment = out.tunnel.alignment(store.project().datum);
+  tunnel::Alignment alignment = out.tunnel.alignment(store.project().datum);
+  // The round is read in its heading's drive direction (round_start.h): a
+  // heading driven from the far portal advances toward the other end.
+  const DriveFaces read = given ? DriveFaces{} : drive_faces(store, out.tunnel.drive);
+  const DriveFaces& drive = given ? *given : read;
+  const double sense = drive.sense_of(drive.heading_of(visit_id));
+  alignment.set_drive(sense > 0 ? tunnel::Drive::ascending : tunnel::Drive::descending);
+  out.sense = sense;
   const VisitSurface surface = visit_surface(store, visit_id);
   out.pole_vertices = surface.pole_vertices;
 
-  // The round: back to the nearest face of an earlier visit behind this one.
-  const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
+  // The round: back to the nearest face of an earlier visit of the same
+  // heading behind this one.
   // The round is measured up to kFaceClearM short of where the face reaches
   // farthest back (face_front.h): a cross-section through the face cuts the
   // face (its bulge, its roughness, the reconstruction's smear into the
@@ -64,7 +60,8 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
   // and said (profile_deviation.h).
   const double start = reach ? reach->first : 0;
   out.round_to = (front ? front->nearest_chainage : out.placement.chainage) - sense * kFaceClearM;
-  const auto previous = previous_face(store.list_visit_placements(), visit_id, out.round_to, sense);
+  const auto previous = drive.previous_face(visit_id, out.round_to, sense);
+  if (previous) out.previous_face = previous->chainage;
   if (previous && sense * previous->chainage >= sense * start) {
     out.round_from = previous->chainage;
     out.round_from_source = "face of visit " + std::to_string(previous->visit_id);

@@ -9,6 +9,7 @@
 
 #include "core/common/preset.h"
 #include "core/tunnel/profile_deviation.h"
+#include "firmware-app/tunnel/round_start.h"
 #include "storage/project/project_store.h"
 #include "storage/tunnel/tunnel_records.h"
 
@@ -17,27 +18,27 @@ namespace rockface::app {
 struct VisitProfile {
   storage::TunnelRecord tunnel;
   storage::VisitPlacement placement;
-  // The round evaluated: from the previous visit's face (in drive order) to
-  // 0.15 m short of where this face reaches farthest back (a section through
-  // the face would cut it); the first visit's round starts where its
-  // surface starts.
+  // The round evaluated: from the previous face of the visit's heading (in
+  // its drive direction, round_start.h) to 0.15 m short of where this face
+  // reaches farthest back (a section through the face would cut it); the
+  // heading's first visit's round starts where its surface starts.
   double round_from = 0, round_to = 0;
   std::string round_from_source;  // "face of visit 3" | "start of the 3D image"
+  // The heading's drive direction the round was read in: +1 toward
+  // ascending chainage, -1 descending; the previous face of the heading
+  // behind round_to (its chainage), whether or not the round starts there.
+  double sense = 1;
+  std::optional<double> previous_face;
   tunnel::ProfileDeviation deviation;
   std::size_t pole_vertices = 0;  // surface vertices not counted: the range pole
 };
 
-// The face a round that ends at `round_to` starts from: the nearest stored
-// placement of another visit behind it in the drive's sense (`sense` +1
-// ascending, -1 descending), none when no visit lies behind. The round
-// starts there unless the 3D image starts farther on (VisitProfile).
-std::optional<storage::VisitPlacement> previous_face(
-    const std::vector<storage::VisitPlacement>& placements, storage::RecordId visit_id,
-    double round_to, double sense);
-
 // Throws InputError naming the project or visit when the project has no
 // tunnel, the visit is not placed in it, or it has no 3D image.
+// `drive`: the project's faces (round_start.h's drive_faces) when the
+// caller reads every round of a drive, so that they are read once, not
+// once per round; else read here.
 VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit_id,
-                           Preset preset = Preset::standard);
+                           Preset preset = Preset::standard, const DriveFaces* drive = nullptr);
 
 }  // namespace rockface::app

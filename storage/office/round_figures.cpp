@@ -32,6 +32,17 @@ std::map<std::string, std::string> round_inputs(Connection& c, std::int64_t tunn
   return visits;
 }
 
+std::set<std::string> visits_synced_after(Connection& c, std::int64_t tunnel_id,
+                                          const std::string& synced_at) {
+  const Result r = c.query(
+      "SELECT DISTINCT coalesce(visit_uuid::text, '') FROM rockface.record WHERE tunnel_id = $1 "
+      "AND synced_at > coalesce(nullif($2, '')::timestamptz, '-infinity')",
+      {Param::of(tunnel_id), Param::of(synced_at)}, "reading what the tablets synced");
+  std::set<std::string> out;
+  for (int i = 0; i < r.rows(); ++i) out.insert(r.text(i, 0));
+  return out;
+}
+
 std::map<std::string, KeptRound> read_kept_rounds(Connection& c, std::int64_t tunnel_id) {
   // Row-level security: the figures of visits the role may read.
   const Result r = c.query(

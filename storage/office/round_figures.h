@@ -11,6 +11,7 @@
 // other inputs, and the round is measured again.
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,14 @@ namespace rockface::storage::office {
 // The inputs of every visit's round of the tunnel, by the visit's uuid, as
 // the role `c` acts as may read them.
 std::map<std::string, std::string> round_inputs(Connection& c, std::int64_t tunnel_id);
+
+// The visits (uuids) of the tunnel with a record revision synced after
+// `synced_at` (the server's timestamptz as text, e.g. the stamp's
+// max(synced_at)): what a sync since brought or changed. A revision of a
+// record of no visit (the tunnel, a project) adds "" to the set; an empty
+// `synced_at` takes every revision. As the role `c` acts as may read them.
+std::set<std::string> visits_synced_after(Connection& c, std::int64_t tunnel_id,
+                                          const std::string& synced_at);
 
 struct KeptRound {
   std::string inputs;

@@ -48,8 +48,8 @@ std::vector<ServerRecord> read_current_records(Connection& c, std::int64_t tunne
 // The latest revision of the records a page of some visits needs (the
 // office's visit pages, issue 46): every record of those visits, the
 // project-level records (the tunnel, its design, cameras, calibrations),
-// every visit and placement record (the drive's order; a round starts at
-// the previous visit's face), and whatever these refer to in other
+// every visit, placement and heading record (the drive's order; a round
+// starts at the previous face of its heading), and whatever these refer to in other
 // visits (a texture taken by an earlier visit, a photograph two visits
 // share) — not the other visits' photographs, models, joints or analyses.
 std::vector<ServerRecord> read_visit_records(Connection& c, std::int64_t tunnel_id,

@@ -158,8 +158,17 @@ struct Served {
       if (!std::freopen(log.c_str(), "w", stdout)) ::_exit(126);
       // The server's failures (stderr) beside its listening line.
       ::dup2(::fileno(stdout), 2);
-      ::execl(binary.c_str(), binary.c_str(), "office", "serve", conninfo.c_str(), "--listen",
-              "127.0.0.1:0", "--work", folder().c_str(), static_cast<char*>(nullptr));
+      // ROCKFACE_OFFICE_BENCH_POOL=N serves with N database connections
+      // (`--pool`; the server's default otherwise): whether a load's
+      // refusals are its pool's.
+      const char* pool = std::getenv("ROCKFACE_OFFICE_BENCH_POOL");
+      if (pool)
+        ::execl(binary.c_str(), binary.c_str(), "office", "serve", conninfo.c_str(), "--listen",
+                "127.0.0.1:0", "--work", folder().c_str(), "--pool", pool,
+                static_cast<char*>(nullptr));
+      else
+        ::execl(binary.c_str(), binary.c_str(), "office", "serve", conninfo.c_str(), "--listen",
+                "127.0.0.1:0", "--work", folder().c_str(), static_cast<char*>(nullptr));
       ::_exit(127);
     }
     while (port == 0 && Clock::now() - t0 < std::chrono::seconds(30)) {

@@ -16,10 +16,13 @@
 #include "firmware-app/office/office_rounds.h"
 #include "storage/office/pg_connection.h"
 #include "storage/office/pull_project.h"
+#include "storage/office/sync_push.h"
 #include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
 #include "tests/integration/office_web/office_site.h"
 #include "tests/storage/office/office_environment.h"
+#include "tests/storage/office/tablet_projects.h"
+#include "tests/support/two_headings.h"
 
 // Last: <resolv.h>, which httplib.h includes, defines the macro _res that
 // Eigen uses as a parameter name.
@@ -104,8 +107,10 @@ struct Rounds {
   std::string body;
 };
 
-Rounds rounds_request(httplib::Client& c, const std::string& cookie) {
-  const auto r = c.Get("/api/drive/rounds?tunnel=Main%20drive", {{"Cookie", cookie}});
+Rounds rounds_request(httplib::Client& c, const std::string& cookie,
+                      const std::string& tunnel = "Main drive") {
+  const auto r = c.Get("/api/drive/rounds?tunnel=" + httplib::detail::encode_query_param(tunnel),
+                       {{"Cookie", cookie}});
   if (!r) return {};
   return {r->status, std::stoi("0" + r->get_header_value("X-Rockface-Rounds-Measured")),
           std::stoi("0" + r->get_header_value("X-Rockface-Rounds-Measuring")), r->body};
@@ -114,14 +119,14 @@ Rounds rounds_request(httplib::Client& c, const std::string& cookie) {
 // The rounds once every round is in: asked again, as the page polls,
 // until none is being measured (bounded: the site's few rounds take
 // seconds; 300 s is the suite's margin on a loaded machine).
-Rounds rounds_from(const OfficeServer& server) {
+Rounds rounds_from(const OfficeServer& server, const std::string& tunnel = "Main drive") {
   httplib::Client c("127.0.0.1", server.port());
   c.set_read_timeout(std::chrono::seconds(300));
   const Login office = log_in(c, server.origin(), "office_reader", kOfficePassword);
   if (office.status != 200) return {office.status, -1, -1, office.error};
   const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(300);
   while (true) {
-    const Rounds r = rounds_request(c, office.cookie);
+    const Rounds r = rounds_request(c, office.cookie, tunnel);
     if (r.status != 200 || r.measuring == 0 || std::chrono::steady_clock::now() > until) return r;
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
   }
@@ -271,6 +276,181 @@ TEST(OfficeRounds, AServerWithoutKeptFiguresAnswersAtOnceAndFillsTheRoundsIn) {
   }
   EXPECT_EQ(static_cast<int>(kept_at(s).size()), static_cast<int>(truth["rounds"].size()))
       << "the figures measured in the background were not kept";
+}
+
+// Issue 46: after a tablet synced a new visit while `office serve` ran,
+// every round read "reading…" until the drive's copy was pulled again.
+// Now the server notices the sync (the records' revisions on the server)
+// while it runs: the rounds already shown stay as they were, the new
+// visit's round is "measuring", and the page's polling fills it in with
+// the figures a pull of the drive gives (measured in the test on a pull of
+// its own), the new round alone measured.
+TEST(OfficeRounds, AVisitSyncedWhileServingFillsItsRoundInAndTheOthersStay) {
+  const Site s = fresh_site();
+  OfficeServer server(s, 30);
+  const Rounds before = rounds_from(server);
+  ASSERT_EQ(before.status, 200) << before.body;
+  ASSERT_EQ(before.measuring, 0) << before.body;
+  const json shown = json::parse(before.body);
+  std::map<std::string, json> shown_by_visit;
+  for (const auto& r : shown["rounds"]) shown_by_visit[r["visit"].get<std::string>()] = r;
+
+  // Tablet B adds its third visit (2.5 m beyond its second) and syncs.
+  office_test::TabletProject b;
+  b.name = "tablet B";
+  b.seed = 2;
+  b.first_chainage = 107;
+  office_test::add_tablet_visit(s.folder / "b.rockface", b, 2);
+  NoProgress none;
+  storage::office::sync_project(s.folder / "b.rockface",
+                                office_test::as_role(s.database, "tablet_b"), {}, none);
+
+  // Asked as the page polls until the new visit is listed (the server sees
+  // a sync within a second; 60 s is the margin of a loaded machine): from
+  // the first answer that lists it, every round shown before is as it was.
+  httplib::Client c("127.0.0.1", server.port());
+  c.set_read_timeout(std::chrono::seconds(300));
+  const Login office = log_in(c, server.origin(), "office_reader", kOfficePassword);
+  ASSERT_EQ(office.status, 200) << office.error;
+  json after;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (true) {
+    const Rounds r = rounds_request(c, office.cookie);
+    ASSERT_EQ(r.status, 200) << r.body;
+    after = json::parse(r.body);
+    if (after["rounds"].size() > shown["rounds"].size() || std::chrono::steady_clock::now() > until)
+      break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_EQ(after["rounds"].size(), shown["rounds"].size() + 1) << after;
+  std::string added;
+  for (const auto& r : after["rounds"]) {
+    const auto was = shown_by_visit.find(r["visit"].get<std::string>());
+    if (was == shown_by_visit.end()) {
+      added = r["visit"].get<std::string>();
+      continue;
+    }
+    EXPECT_FALSE(r.value("measuring", false)) << r;
+    for (const char* key :
+         {"chainage_text", "rmr_text", "q_text", "proposed", "decided", "excavation_text"})
+      EXPECT_EQ(r[key], was->second[key]) << key << ": a round shown before the sync changed";
+  }
+  ASSERT_FALSE(added.empty());
+
+  // The truth: the rounds of a pull of the whole tunnel, measured here.
+  storage::office::Connection reader(s.server, "office_reader", kOfficePassword, 10);
+  const fs::path pulled = s.folder / ("rounds-synced-" + std::to_string(::getpid()) + ".rockface");
+  fs::remove(pulled);
+  storage::office::pull_tunnel(reader, "Main drive", pulled, none);
+  const json truth = json::parse(rounds_of(pulled));
+  fs::remove(pulled);
+
+  const Rounds in = rounds_from(server);
+  ASSERT_EQ(in.status, 200) << in.body;
+  EXPECT_EQ(in.measuring, 0) << in.body;
+  EXPECT_EQ(in.measured, 1) << "the synced visit's round alone is measured";
+  const json filled = json::parse(in.body);
+  ASSERT_EQ(filled["rounds"].size(), truth["rounds"].size());
+  bool found = false;
+  for (std::size_t i = 0; i < truth["rounds"].size(); ++i) {
+    const json& got = filled["rounds"][i];
+    const json& want = truth["rounds"][i];
+    found = found || got["visit"] == added;
+    EXPECT_FALSE(got.contains("measuring")) << got;
+    for (const char* key :
+         {"chainage_text", "rmr_text", "q_text", "proposed", "decided", "excavation_text"})
+      EXPECT_EQ(got[key], want[key]) << key << " of round " << i;
+  }
+  EXPECT_TRUE(found) << "the synced visit has no round";
+}
+
+// visit uuid -> the figures kept for its round.
+std::map<std::string, json> kept_figures(const Site& s) {
+  storage::office::Connection su(office_test::as_superuser(s.database));
+  const storage::office::Result r =
+      su.query("SELECT visit_uuid::text, figures::text FROM rockface.round_figures", {}, "reading");
+  std::map<std::string, json> out;
+  for (int i = 0; i < r.rows(); ++i) out[r.text(i, 0)] = json::parse(r.text(i, 1));
+  return out;
+}
+
+// Issue 46: a round's earlier face was taken from the whole drive, so of
+// two headings driven towards each other the south heading's rounds
+// started at the nearest face of either. Through the office (a tablet's
+// project synced to PostgreSQL, `office serve` measuring the rounds in
+// the background, the figures kept on the server): each round starts at
+// the previous face of its own heading, the south heading read toward
+// descending chainage (tests/support/two_headings.h holds the truth).
+TEST(OfficeRounds, EachHeadingsRoundStartsAtItsOwnPreviousFace) {
+  const fs::path folder =
+      fs::temp_directory_path() / ("rockface-two-headings-" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const auto visits = test::make_two_headings_project(folder / "p.rockface", "Two headings");
+  const Site s = site_of_project(folder / "p.rockface", "Two headings");
+  OfficeServer server(s, 30);
+  const Rounds r = rounds_from(server, "Two headings");
+  ASSERT_EQ(r.status, 200) << r.body;
+  ASSERT_EQ(r.measuring, 0) << r.body;
+  const json page = json::parse(r.body);
+  ASSERT_EQ(page["rounds"].size(), visits.size()) << r.body;
+  const auto kept = kept_figures(s);
+  // The visits' faces are at distinct chainages: a round is found by its own.
+  struct Want {
+    const char* label;
+    json previous;     // the earlier face's chainage, null for none
+    double sense;      // the heading's drive direction
+    const char* text;  // where the page says the round starts
+  };
+  for (const Want& w :
+       {Want{"N1", nullptr, 1, "ch 100.0 m to "}, Want{"S1", nullptr, -1, "ch 128.0 m to "},
+        Want{"N2", 104.0, 1, "ch 104.0 m to "}, Want{"S2", 124.0, -1, "ch 124.0 m to "},
+        Want{"U1", nullptr, 1, "ch 100.0 m to "}}) {
+    double face = 0;
+    for (const auto& v : visits)
+      if (v.label == w.label) face = v.face;
+    const json* round = nullptr;
+    for (const auto& row : page["rounds"])
+      if (row["chainage"].get<double>() == face) round = &row;
+    ASSERT_TRUE(round) << w.label << " has no round in " << r.body;
+    const std::string text = (*round)["excavation_text"].get<std::string>();
+    EXPECT_NE(text.find(w.text), std::string::npos) << w.label << ": " << text;
+    ASSERT_TRUE(kept.count((*round)["visit"].get<std::string>())) << w.label;
+    const json& f = kept.at((*round)["visit"].get<std::string>());
+    EXPECT_EQ(f["previous_face"], w.previous) << w.label << ": " << f;
+    EXPECT_EQ(f["sense"], w.sense) << w.label << ": " << f;
+    // 0.15 m short of the flat face on the heading's side; the rendered
+    // face is placed to rounding (1e-6 m, far below the metres a wrong
+    // heading's face is off).
+    EXPECT_NEAR(f["round_to"].get<double>(), face - w.sense * 0.15, 1e-6) << w.label;
+  }
+  // The drive filtered by one heading lists that heading's visits, and
+  // every heading of the tunnel to choose from ("—" last: U1 names none).
+  httplib::Client c("127.0.0.1", server.port());
+  const Login office = log_in(c, server.origin(), "office_reader", kOfficePassword);
+  ASSERT_EQ(office.status, 200) << office.error;
+  const auto drive =
+      c.Get("/api/drive?tunnel=Two%20headings&heading=North%20portal", {{"Cookie", office.cookie}});
+  ASSERT_TRUE(drive);
+  ASSERT_EQ(drive->status, 200) << drive->body;
+  const json d = json::parse(drive->body);
+  EXPECT_EQ(d["headings"], json::array({"North portal", "South portal", "—"})) << d["headings"];
+  ASSERT_EQ(d["visits"].size(), 2u) << drive->body;
+  for (const auto& v : d["visits"]) EXPECT_EQ(v["heading"], "North portal") << v;
+  // By date (N2 and S2 were taken on 3 March) and by tablet (tablet_a
+  // synced every visit).
+  auto count = [&](const std::string& query) -> int {
+    const auto r = c.Get("/api/drive?tunnel=Two%20headings&" + query, {{"Cookie", office.cookie}});
+    if (!r || r->status != 200) return -1;
+    return static_cast<int>(json::parse(r->body)["visits"].size());
+  };
+  EXPECT_EQ(count("from=2026-03-03&to=2026-03-03"), 2);
+  EXPECT_EQ(count("from=2026-03-03"), 3);
+  EXPECT_EQ(count("to=2026-03-02"), 2);
+  EXPECT_EQ(count("tablet=tablet_a"), 5);
+  EXPECT_EQ(count("tablet=tablet_b"), 0);
+  EXPECT_EQ(count("heading=%E2%80%94"), 1) << "U1 alone names no heading";
+  if (!::testing::Test::HasFailure()) fs::remove_all(folder);
 }
 
 // The kept figures are the web server's to write (its group, through one

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +24,49 @@ namespace rockface::office_test {
 namespace fs = std::filesystem;
 using namespace storage;
 
+namespace {
+
+// Visit `v` of the project's tablet (options `o`): its place, photographs,
+// model, planes and analysis.
+void add_visit(ProjectStore& store, const TabletProject& o, RecordId calibration, int v) {
+  // Scatter of a geologist's planes about a set's mean (degrees).
+  const std::array<double, 6> ddip{-2, -1, 0, 1, 2, 0}, ddir{1, -2, 2, -1, 0, -1};
+  const double chainage = o.first_chainage + 2.5 * v;
+  const RecordId visit = store.begin_visit(o.name + " at " + std::to_string(chainage));
+  Capture capture =
+      storage::test::sample_capture(visit, 100 * o.seed + v, o.image_width, o.image_height);
+  capture.calibration_id = calibration;
+  const RecordId capture_id = store.save_capture(capture);
+  const RecordId model = store.save_model(storage::test::sample_model(capture_id));
+  std::vector<Measurement> planes;
+  auto add = [&](double dip, double dipdir) {
+    for (std::size_t i = 0; i < ddip.size(); ++i) {
+      Measurement m;
+      m.visit_id = visit;
+      m.model_id = model;
+      m.kind = Measurement::Kind::trace;
+      m.label = "T" + std::to_string(planes.size() + 1);
+      m.points = {{0.1 * i, chainage - 70, 0.3}, {1.0 + 0.1 * i, chainage - 70, 1.1}};
+      m.dip_deg = dip + ddip[i] + 0.1 * o.seed;
+      m.dipdir_deg = std::fmod(dipdir + ddir[(i + o.seed) % ddir.size()] + 5.0 * v + 360, 360);
+      planes.push_back(m);
+    }
+  };
+  add(60, 200);
+  add(75, 110);
+  store.save_measurements(visit, planes);
+  if (v == 0)
+    store.save_joints(visit, storage::test::sample_joint_sets(), storage::test::sample_joints());
+  store.save_analysis(storage::test::sample_analysis(visit, model));
+  VisitPlacement p;
+  p.visit_id = visit;
+  p.chainage = chainage;
+  p.note = "typed";
+  store.save_visit_placement(p);
+}
+
+}  // namespace
+
 void make_tablet_project(const fs::path& file, const TabletProject& o) {
   ProjectInfo info = storage::test::sample_project();
   info.name = o.name;
@@ -38,42 +82,7 @@ void make_tablet_project(const fs::path& file, const TabletProject& o) {
   tunnel.profile = read_profile_file(samples / "tunnel-drive.profile.json");
   store.save_tunnel(tunnel);
   const RecordId calibration = store.save_calibration(storage::test::sample_calibration());
-  // Scatter of a geologist's planes about a set's mean (degrees).
-  const std::array<double, 6> ddip{-2, -1, 0, 1, 2, 0}, ddir{1, -2, 2, -1, 0, -1};
-  for (int v = 0; v < o.visits; ++v) {
-    const double chainage = o.first_chainage + 2.5 * v;
-    const RecordId visit = store.begin_visit(o.name + " at " + std::to_string(chainage));
-    Capture capture =
-        storage::test::sample_capture(visit, 100 * o.seed + v, o.image_width, o.image_height);
-    capture.calibration_id = calibration;
-    const RecordId capture_id = store.save_capture(capture);
-    const RecordId model = store.save_model(storage::test::sample_model(capture_id));
-    std::vector<Measurement> planes;
-    auto add = [&](double dip, double dipdir) {
-      for (std::size_t i = 0; i < ddip.size(); ++i) {
-        Measurement m;
-        m.visit_id = visit;
-        m.model_id = model;
-        m.kind = Measurement::Kind::trace;
-        m.label = "T" + std::to_string(planes.size() + 1);
-        m.points = {{0.1 * i, chainage - 70, 0.3}, {1.0 + 0.1 * i, chainage - 70, 1.1}};
-        m.dip_deg = dip + ddip[i] + 0.1 * o.seed;
-        m.dipdir_deg = std::fmod(dipdir + ddir[(i + o.seed) % ddir.size()] + 5.0 * v + 360, 360);
-        planes.push_back(m);
-      }
-    };
-    add(60, 200);
-    add(75, 110);
-    store.save_measurements(visit, planes);
-    if (v == 0)
-      store.save_joints(visit, storage::test::sample_joint_sets(), storage::test::sample_joints());
-    store.save_analysis(storage::test::sample_analysis(visit, model));
-    VisitPlacement p;
-    p.visit_id = visit;
-    p.chainage = chainage;
-    p.note = "typed";
-    store.save_visit_placement(p);
-  }
+  for (int v = 0; v < o.visits; ++v) add_visit(store, o, calibration, v);
   if (o.dense_face_visit) {
     const RecordId visit = store.begin_visit(o.name + " mapped face");
     const rockface::test::DenseFace face =
@@ -110,6 +119,13 @@ void make_tablet_project(const fs::path& file, const TabletProject& o) {
     store.save_measurements(visit, measurements);
     store.save_joints(visit, {}, joints);
   }
+}
+
+void add_tablet_visit(const fs::path& file, const TabletProject& options, int v) {
+  ProjectStore store = ProjectStore::open(file);
+  const auto calibrations = store.list_calibrations();
+  if (calibrations.empty()) throw std::runtime_error(file.string() + " has no calibration");
+  add_visit(store, options, calibrations.front().id, v);
 }
 
 std::string project_content(const fs::path& file) {

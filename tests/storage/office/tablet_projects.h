@@ -23,6 +23,11 @@ struct TabletProject {
 // joints and joint sets.
 void make_tablet_project(const std::filesystem::path& file, const TabletProject& options);
 
+// One more visit in a project make_tablet_project made with `options`:
+// the one it would have made as visit number `v` (at first_chainage +
+// 2.5 v), as a tablet adds a visit between two syncs.
+void add_tablet_visit(const std::filesystem::path& file, const TabletProject& options, int v);
+
 // Every row of the project's tables but the sync's own, as text: equal
 // before and after a sync when the sync changed nothing else.
 std::string project_content(const std::filesystem::path& file);
