@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
 
 namespace rockface::measure {
 
@@ -50,31 +51,34 @@ std::vector<Eigen::Vector3d> thin_closed_polyline(const std::vector<Eigen::Vecto
   return out;
 }
 
-FacetOutline facet_outline(const photogrammetry::SurfaceMesh& mesh,
-                           const std::vector<int>& triangles, double tolerance) {
-  // Directed boundary edges: an edge u->v of a member triangle whose
-  // reverse v->u belongs to no member is on the boundary (triangles of a
-  // lattice mesh are consistently wound).
-  //
-  // The edges are kept in flat arrays grouped by hash bucket, the buckets
-  // a std::unordered_map<std::uint64_t, int> reserved for all of them would
-  // have (key modulo its prime bucket count): one pass to count, one to
-  // place, no allocation per edge (the map's nodes were a quarter of facet
-  // search on a 24 Mpx model). The boundary edges then enter `next` in the
-  // order that map's iteration gave them (the bucket first filled last
-  // first, within a bucket the latest edge first), so that each loop
-  // starts, and each pinch vertex is left, where it was: outlines and their
-  // thinning unchanged.
-  auto key = [](int u, int v) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) |
-           static_cast<std::uint32_t>(v);
-  };
+namespace {
+
+std::uint64_t edge_key(int u, int v) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) |
+         static_cast<std::uint32_t>(v);
+}
+
+// The buckets a std::unordered_map<std::uint64_t, int> reserved for
+// `count` elements has.
+std::size_t map_bucket_count(std::size_t count) {
+  std::unordered_map<std::uint64_t, int> probe;
+  probe.reserve(count);
+  return probe.bucket_count();
+}
+
+struct BoundaryEdge {
+  std::uint32_t bucket_first;  // the first edge of its bucket
+  std::uint32_t first;         // its own first occurrence
+  int from, to;
+};
+
+// The boundary edges from every edge's key: grouped in flat arrays by hash
+// bucket (one pass to count, one to place), each looked up with its
+// reverse.
+std::vector<BoundaryEdge> boundary_by_keys(const photogrammetry::SurfaceMesh& mesh,
+                                           const std::vector<int>& triangles,
+                                           std::size_t bucket_count) {
   const std::size_t edge_count = 3 * triangles.size();
-  const std::size_t bucket_count = [edge_count] {
-    std::unordered_map<std::uint64_t, int> probe;
-    probe.reserve(edge_count);
-    return probe.bucket_count();
-  }();
   std::vector<std::uint64_t> keys(edge_count);       // in the order the triangles list them
   std::vector<std::uint32_t> bucket_of(edge_count);  // the modulo, taken once
   std::vector<std::uint32_t> bucket_start(bucket_count + 1, 0);
@@ -82,7 +86,7 @@ FacetOutline facet_outline(const photogrammetry::SurfaceMesh& mesh,
     const auto& tri = mesh.triangles[static_cast<std::size_t>(triangles[i])];
     for (int s = 0; s < 3; ++s) {
       const std::size_t e = 3 * i + static_cast<std::size_t>(s);
-      keys[e] = key(tri[s], tri[(s + 1) % 3]);
+      keys[e] = edge_key(tri[s], tri[(s + 1) % 3]);
       bucket_of[e] = static_cast<std::uint32_t>(keys[e] % bucket_count);
       ++bucket_start[bucket_of[e] + 1];
     }
@@ -101,21 +105,106 @@ FacetOutline facet_outline(const photogrammetry::SurfaceMesh& mesh,
       if (keys[in_bucket[j]] == k) return in_bucket[j];
     return edge_count;
   };
-  struct BoundaryEdge {
-    std::uint32_t bucket_first;  // the first edge of its bucket
-    std::uint32_t first;         // its own first occurrence
-    int from, to;
-  };
   std::vector<BoundaryEdge> boundary;
   for (std::size_t i = 0; i < edge_count; ++i) {
     const int u = static_cast<int>(keys[i] >> 32), v = static_cast<int>(keys[i] & 0xffffffffu);
-    const std::uint64_t reverse = key(v, u);
+    const std::uint64_t reverse = edge_key(v, u);
     if (first_with(keys[i], bucket_of[i]) != i ||
         first_with(reverse, reverse % bucket_count) != edge_count)
       continue;
     boundary.push_back(
         {in_bucket[bucket_start[bucket_of[i]]], static_cast<std::uint32_t>(i), u, v});
   }
+  return boundary;
+}
+
+// The same boundary edges read off the triangle graph: an edge is on the
+// boundary unless the triangle across it is a member too and runs it the
+// other way (the same way: the earlier of the two is the boundary's, as
+// the first occurrence of its key). Only the boundary edges' buckets are
+// then looked for among all the edges. False (nothing read) when an edge
+// is shared by more than two triangles: the graph does not say which.
+// `position`: -1 for every triangle of the graph; left so.
+bool boundary_by_graph(const photogrammetry::SurfaceMesh& mesh, const TriangleGraph& graph,
+                       const std::vector<int>& triangles, std::size_t bucket_count,
+                       std::vector<int>& position, std::vector<BoundaryEdge>& boundary) {
+  // A triangle listed twice: its copies' edges are duplicates of each
+  // other, which the graph does not see.
+  bool known = true;
+  std::size_t placed = 0;
+  for (; placed < triangles.size() && known; ++placed) {
+    known = position[triangles[placed]] < 0;
+    position[triangles[placed]] = static_cast<int>(placed);
+  }
+  for (std::size_t i = 0; i < triangles.size() && known; ++i) {
+    const int t = triangles[i];
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
+    for (int s = 0; s < 3; ++s) {
+      const int u = tri[s], v = tri[(s + 1) % 3];
+      // The graph's side is the one opposite the edge's third vertex.
+      const int k = graph.neighbours[static_cast<std::size_t>(t)][(s + 2) % 3];
+      if (k == TriangleGraph::kSharedByMore) {
+        known = false;
+        break;
+      }
+      const std::uint32_t e = static_cast<std::uint32_t>(3 * i + static_cast<std::size_t>(s));
+      if (k >= 0 && position[k] >= 0) {
+        const auto& other = mesh.triangles[static_cast<std::size_t>(k)];
+        int same = -1;
+        for (int o = 0; o < 3; ++o)
+          if (other[o] == u && other[(o + 1) % 3] == v) same = o;
+        if (same < 0) continue;  // run the other way: inside the facet
+        if (3 * static_cast<std::size_t>(position[k]) + static_cast<std::size_t>(same) < e)
+          continue;  // the same way, and the other is the first
+      }
+      boundary.push_back({0, e, u, v});
+    }
+  }
+  for (std::size_t i = 0; i < placed; ++i) position[triangles[i]] = -1;
+  if (!known) {
+    boundary.clear();
+    return false;
+  }
+  // Each boundary edge's bucket's first edge among all the facet's edges.
+  std::vector<char> wanted(bucket_count, 0), seen(bucket_count, 0);
+  for (const BoundaryEdge& b : boundary) wanted[edge_key(b.from, b.to) % bucket_count] = 1;
+  std::vector<std::uint32_t> first_of(bucket_count);  // read only where seen
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(triangles[i])];
+    for (int s = 0; s < 3; ++s) {
+      const std::size_t b = edge_key(tri[s], tri[(s + 1) % 3]) % bucket_count;
+      if (wanted[b] && !seen[b]) {
+        seen[b] = 1;
+        first_of[b] = static_cast<std::uint32_t>(3 * i + static_cast<std::size_t>(s));
+      }
+    }
+  }
+  for (BoundaryEdge& b : boundary) b.bucket_first = first_of[edge_key(b.from, b.to) % bucket_count];
+  return true;
+}
+
+}  // namespace
+
+FacetOutline facet_outline(const photogrammetry::SurfaceMesh& mesh,
+                           const std::vector<int>& triangles, double tolerance,
+                           const TriangleGraph* graph, std::vector<int>* position) {
+  // Directed boundary edges: an edge u->v of a member triangle whose
+  // reverse v->u belongs to no member is on the boundary (triangles of a
+  // lattice mesh are consistently wound).
+  //
+  // The boundary edges enter `next` in the order a
+  // std::unordered_map<std::uint64_t, int> of every edge, reserved for all
+  // of them, gave them when it was iterated (the bucket first filled last
+  // first, within a bucket the latest edge first; a bucket is the key
+  // modulo the map's prime bucket count), so that each loop starts, and
+  // each pinch vertex is left, where it was: outlines and their thinning
+  // unchanged since the map (whose nodes were a quarter of facet search on
+  // a 24 Mpx model) was replaced.
+  const std::size_t bucket_count = map_bucket_count(3 * triangles.size());
+  std::vector<BoundaryEdge> boundary;
+  if (!graph || !position ||
+      !boundary_by_graph(mesh, *graph, triangles, bucket_count, *position, boundary))
+    boundary = boundary_by_keys(mesh, triangles, bucket_count);
   std::sort(boundary.begin(), boundary.end(), [](const BoundaryEdge& x, const BoundaryEdge& y) {
     return x.bucket_first != y.bucket_first ? x.bucket_first > y.bucket_first : x.first > y.first;
   });

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "core/measure/facets/triangle_graph.h"
 #include "core/photogrammetry/surface/surface_mesh.h"
 
 namespace rockface::measure {
@@ -17,11 +18,16 @@ struct FacetOutline {
   double perimeter = 0;                // m, of the outer loop before thinning
 };
 
-// `members` marks the facet's triangles (1 = in). The outer loop is the
-// longest boundary loop. `tolerance` (m) is the largest distance of a
-// dropped boundary point from the thinned outline; 0 keeps every point.
+// The outline of the facet made of `triangles` (indices into the mesh).
+// The outer loop is the longest boundary loop. `tolerance` (m) is the
+// largest distance of a dropped boundary point from the thinned outline; 0
+// keeps every point. With the mesh's triangle graph and `position` (-1 for
+// each of its triangles, left so) the boundary is read off the graph's
+// neighbours instead of every edge's key: the same outline, faster.
 FacetOutline facet_outline(const photogrammetry::SurfaceMesh& mesh,
-                           const std::vector<int>& triangles, double tolerance);
+                           const std::vector<int>& triangles, double tolerance,
+                           const TriangleGraph* graph = nullptr,
+                           std::vector<int>* position = nullptr);
 
 // Douglas-Peucker on a closed polyline (at least the two farthest-apart
 // points are kept).

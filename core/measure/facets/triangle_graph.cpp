@@ -21,6 +21,7 @@ struct EdgeUse {
 }  // namespace
 
 TriangleGraph triangle_graph(const photogrammetry::SurfaceMesh& mesh) {
+  constexpr int kBorder = TriangleGraph::kBorder, kSharedByMore = TriangleGraph::kSharedByMore;
   const std::size_t n = mesh.triangles.size();
   if (n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw InputError("mesh", "more than 2^31 triangles: too large for facet search");
@@ -28,7 +29,7 @@ TriangleGraph triangle_graph(const photogrammetry::SurfaceMesh& mesh) {
   g.normals.assign(n, Eigen::Vector3d::Zero());
   g.centres.assign(n, Eigen::Vector3d::Zero());
   g.areas.assign(n, 0.0);
-  g.neighbours.assign(n, {-1, -1, -1});
+  g.neighbours.assign(n, {kBorder, kBorder, kBorder});
   const int vertex_count = static_cast<int>(mesh.vertices.size());
   std::vector<EdgeUse> edges;
   edges.reserve(3 * n);
@@ -76,8 +77,11 @@ TriangleGraph triangle_graph(const photogrammetry::SurfaceMesh& mesh) {
           ++uses;
           if (b != a) other = by_lower[b];
         }
-      // A manifold edge: exactly two triangles share it.
+      // A manifold edge: exactly two triangles share it. More than two:
+      // no neighbour either, marked as such (the outlines' boundary test
+      // needs to tell it from the surface's border).
       if (uses == 2) g.neighbours[use.triangle][use.side] = other->triangle;
+      if (uses > 2) g.neighbours[use.triangle][use.side] = kSharedByMore;
     }
   return g;
 }

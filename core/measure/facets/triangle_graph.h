@@ -17,8 +17,10 @@ struct TriangleGraph {
   std::vector<Eigen::Vector3d> normals;  // unit, or zero for a degenerate triangle
   std::vector<Eigen::Vector3d> centres;
   std::vector<double> areas;  // m^2
-  // Up to three neighbours across the edges (opposite vertex 0, 1, 2); -1:
-  // a border edge, or an edge shared by more than two triangles.
+  // Up to three neighbours across the edges (opposite vertex 0, 1, 2), or
+  // no neighbour (negative): kBorder, an edge of no other usable triangle;
+  // kSharedByMore, an edge shared by more than two.
+  static constexpr int kBorder = -1, kSharedByMore = -2;
   std::vector<std::array<int, 3>> neighbours;
 
   std::size_t size() const { return normals.size(); }

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
+#include <utility>
 
 namespace rockface::measure::proposals {
 
@@ -194,11 +196,40 @@ std::vector<Chain> join_chains(std::vector<Chain> traced, double max_gap_px, dou
   std::vector<bool> linkable(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)
     linkable[i] = chains[i].size() >= 2 && chain_length(chains[i]) > bridge_px;
+  // The chains with an end near one of a chain's ends, from a grid of the
+  // ends whose cells are as wide as the farthest link: the pairs every
+  // pair of chains would give, in the same order (a scan of every pair was
+  // quadratic in the thousands of chains of a 24 Mpx photograph). Two
+  // cells either way: an end exactly the farthest link away may round
+  // into the cell beyond.
+  const double cell = std::max(1.0, kAcrossJunction * max_gap_px);
+  const auto cell_of = [cell](cv::Point2f p) {
+    return std::make_pair(static_cast<long>(std::floor(p.x / cell)),
+                          static_cast<long>(std::floor(p.y / cell)));
+  };
+  std::map<std::pair<long, long>, std::vector<int>> ends_in;
+  for (int i = 0; i < n; ++i)
+    if (linkable[i])
+      for (const cv::Point2f p : {chains[i].front(), chains[i].back()})
+        ends_in[cell_of(p)].push_back(i);
   std::vector<Link> links;
+  std::vector<int> near;
   for (int i = 0; i < n; ++i) {
     if (!linkable[i]) continue;
-    for (int j = i + 1; j < n; ++j) {
-      if (!linkable[j]) continue;
+    near.clear();
+    for (const cv::Point2f p : {chains[i].front(), chains[i].back()}) {
+      const auto [cx, cy] = cell_of(p);
+      for (long dy = -2; dy <= 2; ++dy)
+        for (long dx = -2; dx <= 2; ++dx) {
+          const auto found = ends_in.find({cx + dx, cy + dy});
+          if (found == ends_in.end()) continue;
+          for (const int j : found->second)
+            if (j > i) near.push_back(j);
+        }
+    }
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (const int j : near) {
       for (int ei = 0; ei < 2; ++ei)
         for (int ej = 0; ej < 2; ++ej) {
           const cv::Point2f pi = ei == 0 ? chains[i].front() : chains[i].back();

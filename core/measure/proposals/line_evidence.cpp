@@ -5,11 +5,14 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include <Eigen/Geometry>
 
 #include <opencv2/imgproc.hpp>
-#include <opencv2/ximgproc.hpp>
+
+#include "core/measure/proposals/disc_morphology.h"
+#include "core/measure/proposals/line_thinning.h"
 
 namespace rockface::measure::proposals {
 
@@ -61,18 +64,33 @@ std::pair<double, double> robust_level(const cv::Mat& values, const cv::Mat& mas
 }  // namespace
 
 cv::Mat hysteresis(const cv::Mat& keep, const cv::Mat& seed) {
-  cv::Mat labels;
-  const int n = cv::connectedComponents(keep, labels, 8, CV_32S);
-  std::vector<std::uint8_t> seeded(static_cast<std::size_t>(n), 0);
-  for (int r = 0; r < keep.rows; ++r)
-    for (int c = 0; c < keep.cols; ++c)
-      if (seed.at<std::uint8_t>(r, c) && keep.at<std::uint8_t>(r, c))
-        seeded[static_cast<std::size_t>(labels.at<int>(r, c))] = 255;
-  seeded[0] = 0;
-  cv::Mat out(keep.size(), CV_8U);
-  for (int r = 0; r < keep.rows; ++r)
-    for (int c = 0; c < keep.cols; ++c)
-      out.at<std::uint8_t>(r, c) = seeded[static_cast<std::size_t>(labels.at<int>(r, c))];
+  // Grown from the seeds over the kept pixels only (the lines are a few
+  // thousandths of the image): the groups a labelling of every group of
+  // the whole image finds, without labelling the ones no seed is in.
+  cv::Mat out(keep.size(), CV_8U, cv::Scalar(0));
+  const int w = keep.cols, h = keep.rows;
+  std::vector<cv::Point> queue;
+  for (int r = 0; r < h; ++r) {
+    const std::uint8_t* k = keep.ptr<std::uint8_t>(r);
+    const std::uint8_t* s = seed.ptr<std::uint8_t>(r);
+    std::uint8_t* o = out.ptr<std::uint8_t>(r);
+    for (int c = 0; c < w; ++c)
+      if (s[c] && k[c] && !o[c]) {
+        o[c] = 255;
+        queue.emplace_back(c, r);
+      }
+  }
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const cv::Point p = queue[head];
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = p.x + dx, y = p.y + dy;
+        if (x < 0 || y < 0 || x >= w || y >= h) continue;
+        if (!keep.at<std::uint8_t>(y, x) || out.at<std::uint8_t>(y, x)) continue;
+        out.at<std::uint8_t>(y, x) = 255;
+        queue.emplace_back(x, y);
+      }
+  }
   return out;
 }
 
@@ -136,7 +154,7 @@ DarkLines find_dark_lines(const cv::Mat& grey, const cv::Mat& mask,
       out.sigmas.at<float>(r, c) = static_cast<float>((v - median) / noise);
       out.contrast.at<float>(r, c) = static_cast<float>(contrast);
     }
-  cv::ximgproc::thinning(hysteresis(keep, seed), out.lines, cv::ximgproc::THINNING_ZHANGSUEN);
+  out.lines = zhang_suen_thinning(hysteresis(keep, seed));
   return out;
 }
 
@@ -182,16 +200,25 @@ SurfaceImage draw_surface(const photogrammetry::SurfaceMesh& mesh, cv::Size size
   }
   cv::Mat normals(size, CV_32FC3, cv::Scalar(0, 0, 0)), points(size, CV_32FC3, cv::Scalar(0, 0, 0));
   out.mask = cv::Mat(size, CV_8U, cv::Scalar(0));
+  // A triangle shows in a pixel or a few side by side: its values are
+  // worked out once for a run of pixels.
+  int last = -1;
+  cv::Vec3f last_normal, last_point;
   for (int r = 0; r < size.height; ++r)
     for (int c = 0; c < size.width; ++c) {
       const int i = shown.at<int>(r, c);
       if (i < 0) continue;
-      facing(mesh.triangles[static_cast<std::size_t>(i)], n, centre);
-      const Eigen::Vector3d rel = centre - out.origin;
-      normals.at<cv::Vec3f>(r, c) = cv::Vec3f(static_cast<float>(n.x()), static_cast<float>(n.y()),
-                                              static_cast<float>(n.z()));
-      points.at<cv::Vec3f>(r, c) = cv::Vec3f(
-          static_cast<float>(rel.x()), static_cast<float>(rel.y()), static_cast<float>(rel.z()));
+      if (i != last) {
+        facing(mesh.triangles[static_cast<std::size_t>(i)], n, centre);
+        const Eigen::Vector3d rel = centre - out.origin;
+        last_normal = cv::Vec3f(static_cast<float>(n.x()), static_cast<float>(n.y()),
+                                static_cast<float>(n.z()));
+        last_point = cv::Vec3f(static_cast<float>(rel.x()), static_cast<float>(rel.y()),
+                               static_cast<float>(rel.z()));
+        last = i;
+      }
+      normals.at<cv::Vec3f>(r, c) = last_normal;
+      points.at<cv::Vec3f>(r, c) = last_point;
       out.mask.at<std::uint8_t>(r, c) = 255;
     }
   // Normalised convolution: smoothing does not pull in the zeros beyond
@@ -237,10 +264,7 @@ Folds find_folds(const SurfaceImage& surface, const FoldSettings& settings) {
   // The two sides are read two smoothing widths out, where the smoothed
   // normal is within 2 % of each side's own; both must be on the surface.
   const double reach = 2.0 * settings.smoothing_px;
-  cv::Mat inner;
-  const int erode = static_cast<int>(std::ceil(reach)) + 1;
-  cv::erode(surface.mask, inner,
-            cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * erode + 1, 2 * erode + 1)));
+  const cv::Mat inner = erode_disc(surface.mask, static_cast<int>(std::ceil(reach)) + 1);
 
   Folds out;
   out.angle = cv::Mat(size, CV_32F, cv::Scalar(0));
@@ -272,7 +296,7 @@ Folds find_folds(const SurfaceImage& surface, const FoldSettings& settings) {
       // Convex when the normal turns the way one walks across: a ridge.
       if ((nb - na).dot(pb - pa) > 0) out.ridge.at<std::uint8_t>(r, c) = 255;
     }
-  cv::ximgproc::thinning(hysteresis(keep, seed), out.lines, cv::ximgproc::THINNING_ZHANGSUEN);
+  out.lines = zhang_suen_thinning(hysteresis(keep, seed));
   return out;
 }
 

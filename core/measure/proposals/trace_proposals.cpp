@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.h"
+#include "core/measure/proposals/disc_morphology.h"
 #include "core/measure/proposals/line_chains.h"
 #include "core/measure/proposals/line_evidence.h"
 #include "core/measure/proposals/proposal_search.h"
@@ -38,11 +39,7 @@ constexpr double kJumpEdgeSpacings = 4.0;
 constexpr int kEvidenceReachPx = 2;
 
 cv::Mat dilated(const cv::Mat& m, int radius) {
-  cv::Mat out;
-  cv::dilate(
-      m, out,
-      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1)));
-  return out;
+  return pr::dilate_disc(m, radius);
 }
 
 // The working-image samples of a polyline, one per pixel along it.
@@ -145,13 +142,9 @@ pr::DarkLines find_dark_lines_on(const WorkingImage& image, const pr::SurfaceIma
   dark_settings.seed_sigmas = options.dark_seed_sigmas;
   dark_settings.keep_sigmas = options.dark_keep_sigmas;
   dark_settings.min_contrast_grey = options.min_contrast_grey;
-  cv::Mat dark_mask;
   // The surface's edge is a step to no surface, not a line.
   const int dark_margin = static_cast<int>(std::ceil(widest_px)) + 2;
-  cv::erode(surface.mask, dark_mask,
-            cv::getStructuringElement(cv::MORPH_ELLIPSE,
-                                      cv::Size(2 * dark_margin + 1, 2 * dark_margin + 1)));
-  return pr::find_dark_lines(image.grey, dark_mask, dark_settings);
+  return pr::find_dark_lines(image.grey, pr::erode_disc(surface.mask, dark_margin), dark_settings);
 }
 
 EvidenceMaps evidence_maps(const pr::DarkLines& dark, const pr::Folds& folds, double smoothing_px) {

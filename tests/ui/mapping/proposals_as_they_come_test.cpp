@@ -6,10 +6,12 @@
 // model: the longest chains' proposals drawn and listed, none of them
 // offered to store yet; a proposal rejected then stays rejected under the
 // name the whole result gives it, and every early proposal is one of the
-// whole result's.
+// whole result's. A second runner holds the facet search where it starts:
+// the first batch must be on the screen by then.
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <string_view>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -70,10 +72,74 @@ class HeldAfterFirstBatch final : public ui::ProposalRunner {
   std::vector<measure::TraceProposal> first_;
 };
 
+// The program's proposal runner with its facet search held where it starts
+// (the first progress report of a "facets" stage) until the test lets it go
+// on: what the screen shows then is what a geologist sees while the facets
+// of a 24 Mpx model are sought.
+class HeldAtTheFacets final : public ui::ProposalRunner {
+ public:
+  explicit HeldAtTheFacets(ui::ProposalRunner& real) : real_(real) {}
+
+  measure::ProposalResult propose(const ui::ProposalInput& input, Progress& progress,
+                                  const Batch& batch) override {
+    Gate gate(progress, *this);
+    return real_.propose(input, gate, [&](const std::vector<measure::TraceProposal>& b) {
+      batch(b);
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++batches_;
+    });
+  }
+  // Waits (bounded) until the facet search starts; false when it never did.
+  bool wait_facets(std::chrono::seconds limit) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    return changed_.wait_for(lock, limit, [this] { return batches_before_facets_ >= 0; });
+  }
+  // The batches handed to the screen before the facet search started.
+  int batches_before_facets() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return batches_before_facets_;
+  }
+  void release() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    released_ = true;
+    changed_.notify_all();
+  }
+
+ private:
+  // The worker's progress, held at the first "facets" stage.
+  class Gate final : public Progress {
+   public:
+    Gate(Progress& outer, HeldAtTheFacets& held) : outer_(outer), held_(held) {}
+    void report(std::string_view stage, double fraction) override {
+      outer_.report(stage, fraction);
+      if (stage.rfind("facets", 0) != 0) return;
+      std::unique_lock<std::mutex> lock(held_.mutex_);
+      if (held_.batches_before_facets_ < 0) {
+        held_.batches_before_facets_ = held_.batches_;
+        held_.changed_.notify_all();
+      }
+      held_.changed_.wait(lock, [this] { return held_.released_; });
+    }
+    bool cancel_requested() const override { return outer_.cancel_requested(); }
+
+   private:
+    Progress& outer_;
+    HeldAtTheFacets& held_;
+  };
+
+  ui::ProposalRunner& real_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  int batches_ = 0;
+  int batches_before_facets_ = -1;  // -1: the facet search has not started
+  bool released_ = false;
+};
+
 // Lets the runner go on however the test ends: a held worker would keep the
 // session's task (and its destructor's join) waiting for ever.
+template <typename Held>
 struct ReleaseOnExit {
-  HeldAfterFirstBatch& held;
+  Held& held;
   ~ReleaseOnExit() { held.release(); }
 };
 
@@ -94,7 +160,7 @@ TEST(UiProposals, TheFirstProposalsShowWhileTheRestAreFound) {
   options.scale = 0.6f;
   options.max_display_triangles = 20000;
   ui::HeadlessSession session(options, services, 800, 500);
-  const ReleaseOnExit release_on_exit{held};
+  const ReleaseOnExit<HeldAfterFirstBatch> release_on_exit{held};
   session.settle();
   session.tap("Mapping");
   session.settle();
@@ -161,6 +227,57 @@ TEST(UiProposals, TheFirstProposalsShowWhileTheRestAreFound) {
     }
   }
   EXPECT_FALSE(s.rejected.count(unmapped)) << "the early name outlived the result";
+  fs::remove(project);
+}
+
+// Issue 45: the first proposals are on the screen before the facets are
+// sought (the seconds a 24 Mpx model's facets take are not waited for).
+// The facet search is held where it starts: the first batch must already
+// be drawn and listed then. Were the batch to come after the facets, the
+// held search would give the screen nothing.
+TEST(UiProposals, TheFirstProposalsAreOnTheScreenBeforeTheFacetsAreSought) {
+  const fs::path project = copy_of_demo("proposals-before-facets");
+  app::FieldRunners runners{""};
+  HeldAtTheFacets held(runners.proposals);
+  ui::FieldServices services = runners.services();
+  services.proposals = &held;
+  services.sync = nullptr;
+  services.camera = nullptr;
+  ui::UiOptions options;
+  options.project = project;
+  options.scale = 0.6f;
+  options.max_display_triangles = 20000;
+  ui::HeadlessSession session(options, services, 800, 500);
+  const ReleaseOnExit<HeldAtTheFacets> release_on_exit{held};
+  session.settle();
+  session.tap("Mapping");
+  session.settle();
+  ASSERT_TRUE(session.state().model_view.has_model());
+
+  session.tap("Find traces");
+  // The demo model's cues and first chains take a few seconds on 2 cores;
+  // a minute means the facet search never started.
+  ASSERT_TRUE(held.wait_facets(std::chrono::seconds(60))) << "the facets were never sought";
+  EXPECT_GE(held.batches_before_facets(), 1) << "the first batch waited for the facets";
+  session.frame();
+  session.frame();
+  ASSERT_TRUE(session.state().task.running()) << "the facet search is held: the task goes on";
+  const ui::ProposalsState& s = session.state().mapping.proposals;
+  ASSERT_TRUE(s.provisional) << "no proposal on the screen while the facets are sought";
+  ASSERT_TRUE(s.result);
+  ASSERT_FALSE(s.result->proposals.empty());
+  // Drawn on the model: at least one that no hand-mapped trace hides.
+  bool drawn = false;
+  for (const auto& p : s.result->proposals)
+    drawn = drawn || (shown(s, p) && session.state().targets.find("proposal " + p.id));
+  EXPECT_TRUE(drawn) << "the first proposals are listed but none is drawn";
+
+  held.release();
+  session.settle();
+  session.frame();
+  EXPECT_FALSE(s.provisional);
+  ASSERT_TRUE(s.result);
+  EXPECT_GE(s.result->proposals.size(), 1u);
   fs::remove(project);
 }
 
