@@ -60,10 +60,13 @@ camera::SyntheticScene scanned_square_to_the_face() {
   return scene;
 }
 
-// Disabled: the flow runs (the visit is scaled), but the upper tap lands 7.9 cm
-// off its target (lower 2.0 cm, bound 1.5 cm): to be found (the tap hitting
-// the pole or the face behind a plate the 2.5D mesh cut?).
-TEST(PoleEntry, DISABLED_TheTargetsTappedOnAnImportedCloudScaleAndLevelTheVisit) {
+// Before issue 43's fourth round the upper tap landed 9 cm off its target,
+// the lower 2 cm: ImGui floors the pointer to whole pixels (the tap's ray
+// went up to a pixel up and left of the target), and a ray a third of a
+// pixel off the upper plate's centre met a curtain triangle from the plate
+// to the rock 3 m behind it, kept by the 2.5D meshing's edge test (a lone
+// rock point amid the plate's points took its spacing from the plate).
+TEST(PoleEntry, TheTargetsTappedOnAnImportedCloudScaleAndLevelTheVisit) {
   const fs::path dir =
       fs::temp_directory_path() / ("rockface-pole-entry-" + std::to_string(::getpid()));
   fs::remove_all(dir);
