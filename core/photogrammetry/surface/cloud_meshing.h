@@ -10,11 +10,11 @@
 // The spacing "where it lies" is each point's distance to its nearest
 // neighbour (always a Delaunay neighbour, so the triangulation gives it);
 // a triangle is kept when its longest edge is at most
-// `max_edge_to_spacing` times the middle of its three corners'
-// nearest-neighbour distances (not the largest: a lone point amid another
-// surface, e.g. rock seen past a target plate standing in front of it, has
-// its nearest neighbour as far as that surface). Points (almost) on top of one another in the plane
-// keep one vertex; the others stay in the cloud, in no triangle.
+// `max_edge_to_spacing` times the largest nearest-neighbour distance of its
+// three corners, that taken at most 3 times the middle corner's (a lone
+// point amid another surface, e.g. rock seen past a target plate standing
+// in front of it, has its nearest neighbour as far as that surface). Points (almost) on top of one
+// another in the plane keep one vertex; the others stay in the cloud, in no triangle.
 //
 // A large cloud is triangulated in overlapping strips (CloudMeshingOptions),
 // each triangle kept by the one strip whose core holds its centroid.
