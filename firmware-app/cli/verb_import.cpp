@@ -163,6 +163,9 @@ VerbRun setup_import(CLI::App& sub) {
     std::cout << o->file << ": " << r.format << ", " << r.points << " points";
     if (r.skipped_points) std::cout << " (" << r.skipped_points << " without a return)";
     std::cout << "\n";
+    if (r.intensity_as_grey)
+      std::cout << "colours: none in the file; its intensity drawn as grey ("
+                << intensity_range_words(r) << ", linearly)\n";
     if (r.meshed)
       std::cout << "meshed: " << r.triangles << " triangles "
                 << (r.round_meshing.empty() ? "over the best plane" : "as " + r.round_meshing)

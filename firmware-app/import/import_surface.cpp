@@ -127,6 +127,7 @@ ImportResult result_of_reading(const storage::ImportedSurface& s, const ImportRe
   r.format = s.format;
   r.points = s.mesh.vertices.size();
   r.skipped_points = s.skipped_points;
+  r.intensity_as_grey = s.intensity_as_grey;
   r.frame =
       !request.frame.empty() ? request.frame : (s.datum.isZero() ? std::string("local") : "survey");
   r.registration_kind = r.frame == "survey" ? storage::kScannerRegistration : "none";
@@ -419,12 +420,24 @@ storage::Model model_of(storage::ImportedSurface& s, std::vector<std::array<int,
   return model;
 }
 
+}  // namespace import_detail
+
+std::string intensity_range_words(const ImportResult& r) {
+  if (!r.intensity_as_grey) return {};
+  return format_significant((*r.intensity_as_grey)[0], 6) + " black to " +
+         format_significant((*r.intensity_as_grey)[1], 6) + " white";
+}
+
+namespace import_detail {
+
 // The import in words, as the visit's log and the parameters say it.
 std::string import_words(const ImportRequest& request, const storage::ImportedSurface& s,
                          const ImportResult& r, bool by_pole) {
   std::ostringstream words;
   words << request.file.filename().string() << ": " << s.format << ", " << r.points << " points";
   if (r.skipped_points) words << " (" << r.skipped_points << " without a return left out)";
+  if (r.intensity_as_grey)
+    words << ", no colours: its intensity drawn as grey (" << intensity_range_words(r) << ")";
   words << (!r.round_meshing.empty() ? ", meshed here as " + r.round_meshing
             : r.meshed               ? ", meshed here (2.5D Delaunay, holes kept)"
                                      : ", its own faces");
@@ -506,6 +519,9 @@ nlohmann::json import_parameters(const std::string& source, const storage::Impor
                  {"file_datum", {s.datum.x(), s.datum.y(), s.datum.z()}},
                  {"view_side", r.view_side},
                  {"words", words}};
+  // The colours are the file's intensity, this range drawn black to white.
+  if (r.intensity_as_grey)
+    p["import"]["intensity_as_grey"] = {(*r.intensity_as_grey)[0], (*r.intensity_as_grey)[1]};
   p["point_spacing"] = r.point_spacing_m;
   // What the over- and underbreak take as the surface's precision (a
   // deviation within twice it is not counted): a scan's own scatter.

@@ -14,6 +14,7 @@
 // its points are moved to the project's datum (a project with no datum and no
 // 3D image yet takes the file's). A file in a local frame is stored as it is,
 // registration "none", until control points picked on it place it.
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -58,6 +59,9 @@ struct ImportResult {
   storage::RecordId visit = 0, model = 0, capture = 0;
   std::string format;
   std::size_t points = 0, triangles = 0, skipped_points = 0, unused_points = 0;
+  // A cloud without colours whose file held a scanner's intensity: the
+  // intensity range drawn black to white (storage/exchange/intensity_grey.h).
+  std::optional<std::array<double, 2>> intensity_as_grey;
   bool meshed = false;             // a cloud meshed here (else the file's faces)
   std::string round_meshing;       // a round meshed on the tunnel's developed view: how
   std::string frame;               // "survey" | "local"
@@ -77,6 +81,10 @@ struct ImportResult {
   int view_width = 0, view_height = 0;
   std::string view_side;  // how the side the view looks from was chosen, in words
 };
+
+// "0 black to 4095 white": the intensity range the colours were drawn from;
+// empty when they were not.
+std::string intensity_range_words(const ImportResult& r);
 
 // `progress` hears each stage (reading, meshing, the view, storing); a
 // cancel before the storing stores nothing.

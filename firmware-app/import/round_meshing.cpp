@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 
 #include "core/common/error.h"
 #include "core/photogrammetry/surface/cloud_noise.h"
@@ -96,22 +97,25 @@ void put_walls_first(std::vector<Eigen::Vector3d>& points,
   }
 }
 
-// The seam: the walls within `band` of the outline's start again past its
-// end, appended to the wall points and their developed coordinates; returns
-// each appended point's source.
-std::vector<int> append_seam_band(std::vector<Eigen::Vector3d>& points,
-                                  std::vector<Eigen::Vector2d>& developed, std::size_t wall_count,
-                                  double band, double perimeter) {
+// The developed coordinates of the walls alone (the cloud's first
+// `wall_count` points), with room for the seam: the walls within `band` of
+// the outline's start again past its end, appended as second places of
+// those points (cloud_meshing.h's repeated points; no copy of a point).
+// Returns each second place's point. `developed`, sized for the whole cloud
+// while the walls were found, is replaced by a vector of the walls' size.
+std::vector<int> developed_with_seam(std::vector<Eigen::Vector2d>& developed,
+                                     std::size_t wall_count, double band, double perimeter) {
   std::vector<int> band_source;
   for (std::size_t k = 0; k < wall_count; ++k)
     if (developed[k].y() < band) band_source.push_back(static_cast<int>(k));
-  points.reserve(wall_count + band_source.size());
-  developed.reserve(wall_count + band_source.size());
-  for (int k : band_source) {
-    points.push_back(points[static_cast<std::size_t>(k)]);
-    developed.emplace_back(developed[static_cast<std::size_t>(k)].x(),
-                           developed[static_cast<std::size_t>(k)].y() + perimeter);
-  }
+  std::vector<Eigen::Vector2d> walls;
+  walls.reserve(wall_count + band_source.size());
+  walls.assign(developed.begin(), developed.begin() + static_cast<std::ptrdiff_t>(wall_count));
+  developed = {};  // the whole cloud's size freed before the meshing
+  for (int k : band_source)
+    walls.emplace_back(walls[static_cast<std::size_t>(k)].x(),
+                       walls[static_cast<std::size_t>(k)].y() + perimeter);
+  developed = std::move(walls);
   return band_source;
 }
 
@@ -159,7 +163,7 @@ std::vector<std::array<int, 3>> keep_wall_triangles(
 // The face's points (after the walls' in the cloud) meshed over their best
 // plane, facing the viewer, appended to `triangles`; the view's centre
 // moved to the face's. Returns the face's meshing in words.
-std::string add_face_triangles(const std::vector<Eigen::Vector3d>& face_xyz, std::size_t wall_count,
+std::string add_face_triangles(std::span<const Eigen::Vector3d> face_xyz, std::size_t wall_count,
                                RoundMesh& out, std::vector<std::array<int, 3>>& triangles) {
   if (face_xyz.size() < 3) return "no face";
   try {
@@ -211,25 +215,25 @@ std::optional<RoundMesh> mesh_round(std::vector<Eigen::Vector3d>& points,
   RoundMesh out;
   out.wall_points = wall_count;
   out.face_points = points.size() - wall_count;
-  // The face's points aside while the walls are meshed on `points` itself.
-  std::vector<Eigen::Vector3d> face_xyz(points.begin() + static_cast<std::ptrdiff_t>(wall_count),
-                                        points.end());
-  points.resize(wall_count);
-  developed.resize(wall_count);
+  // The walls are meshed where they lie, the cloud's first wall_count
+  // points (the face's after them, not copied aside), their seam by second
+  // places of the points at the outline's start.
   const double band = std::min(kSeamBandM, perimeter / 4);
-  std::vector<int> band_source = append_seam_band(points, developed, wall_count, band, perimeter);
-  photogrammetry::CloudMesh wall_mesh = photogrammetry::mesh_point_cloud_on(points, developed);
+  std::vector<int> band_source = developed_with_seam(developed, wall_count, band, perimeter);
+  const std::span<const Eigen::Vector3d> wall_xyz(points.data(), wall_count);
+  photogrammetry::CloudMesh wall_mesh =
+      photogrammetry::mesh_point_cloud_on(wall_xyz, developed, band_source);
   out.median_spacing = wall_mesh.median_spacing;
-  out.noise_sigma_m = photogrammetry::cloud_noise_sigma(
-      points, developed, std::max(kNoiseCellM, kNoiseCellSpacings * out.median_spacing));
-  // The cloud whole again (walls, then the face).
-  points.resize(wall_count);
-  points.insert(points.end(), face_xyz.begin(), face_xyz.end());
   std::vector<std::array<int, 3>> kept =
       keep_wall_triangles(std::move(wall_mesh.triangles), points, developed, wall_count,
                           band_source, band, perimeter, alignment, centre);
-  developed = {};
   band_source = {};
+  // The walls' scatter on their developed view (their own places only: the
+  // seam's second places would pair with the face's points).
+  developed.resize(wall_count);
+  out.noise_sigma_m = photogrammetry::cloud_noise_sigma(
+      points, developed, std::max(kNoiseCellM, kNoiseCellSpacings * out.median_spacing));
+  developed = {};
 
   // The face's end of the round and the direction back along the drive.
   const double sense = alignment.drive() == tunnel::Drive::ascending ? 1.0 : -1.0;
@@ -237,7 +241,8 @@ std::optional<RoundMesh> mesh_round(std::vector<Eigen::Vector3d>& points,
   const tunnel::TunnelFrame at_front = alignment.frame_at(front);
   out.toward_viewer = -at_front.along;
   out.view_centre = at_front.to_local(centre.x(), centre.y());
-  const std::string face_words = add_face_triangles(face_xyz, wall_count, out, kept);
+  const std::string face_words = add_face_triangles(
+      std::span<const Eigen::Vector3d>(points).subspan(wall_count), wall_count, out, kept);
   out.triangles = std::move(kept);
   out.unused_points = points_in_no_triangle(points.size(), out.triangles);
   out.words = "a round: its walls meshed on the tunnel's developed view (" +

@@ -23,7 +23,8 @@ ui::ImportedVisit StoreImportRunner::import(const std::filesystem::path& project
   ui::ImportedVisit done;
   done.visit = r.visit;
   done.words = file.filename().string() + ", " + r.format + ", " + std::to_string(r.points) +
-               " points, " + (r.frame == "survey" ? "survey coordinates" : "a local frame");
+               " points, " + (r.frame == "survey" ? "survey coordinates" : "a local frame") +
+               (r.intensity_as_grey ? ", its intensity drawn as grey" : "");
   return done;
 }
 

@@ -11,6 +11,7 @@
 #include "core/analysis/scene_analysis.h"
 #include "core/common/error.h"
 #include "core/photogrammetry/reconstruction/preset.h"
+#include "firmware-app/import/scale_import_by_pole.h"
 #include "firmware-app/reconstruct/face_pair.h"
 #include "firmware-app/records/field_records.h"
 #include "firmware-app/records/orient_visit.h"
@@ -90,6 +91,14 @@ std::string StoreNorthRunner::orient(const fs::path& project, storage::RecordId 
   storage::ProjectStore store = storage::ProjectStore::open(project);
   const VisitOrientation done = orient_visit_by_compass(store, visit_id, north);
   return done.note;
+}
+
+std::string StorePoleRunner::scale(const fs::path& project, storage::RecordId visit_id,
+                                   const Eigen::Vector3d& lower, const Eigen::Vector3d& upper,
+                                   double length_m, Progress& progress) {
+  progress.step("scaling the visit by the range pole", 0.1);
+  storage::ProjectStore store = storage::ProjectStore::open(project);
+  return scale_import_by_pole(store, visit_id, ImportPole{lower, upper}, length_m).note;
 }
 
 storage::RecordId StoreAnalysisRunner::analyse(const fs::path& project, storage::RecordId visit_id,

@@ -116,6 +116,15 @@ class StoreNorthRunner final : public ui::NorthRunner {
                      double bearing_deg, double declination_deg, Progress& progress) override;
 };
 
+// Issue 43: an imported cloud scaled by the pole's targets tapped on its 3D
+// view (firmware-app/import/scale_import_by_pole.h).
+class StorePoleRunner final : public ui::PoleRunner {
+ public:
+  std::string scale(const std::filesystem::path& project, storage::RecordId visit_id,
+                    const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, double length_m,
+                    Progress& progress) override;
+};
+
 // Issue 44: the round's support on the tablet, by `rockface support`'s
 // workflow (firmware-app/support/visit_support.h).
 class StoreSupportRunner final : public ui::SupportRunner {
@@ -153,6 +162,7 @@ struct FieldRunners {
   StoreFieldReportRunner field_report;
   StoreExportRunner exports;
   StoreNorthRunner north;
+  StorePoleRunner pole;
   StoreSupportRunner support;
   StoreImportRunner imports;
 
@@ -170,6 +180,7 @@ struct FieldRunners {
     s.field_report = &field_report;
     s.exports = &exports;
     s.north = &north;
+    s.pole = &pole;
     s.support = &support;
     s.imports = &imports;
     return s;

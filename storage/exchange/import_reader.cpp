@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/common/error.h"
+#include "storage/exchange/intensity_grey.h"
 #include "storage/exchange/las_reader.h"
 #include "storage/exchange/obj_reader.h"
 #include "storage/exchange/pcd_reader.h"
@@ -95,6 +96,7 @@ ImportedSurface read_imported_surface(const std::filesystem::path& file,
   }
   if (options.offset) out.datum += *options.offset;
   if (out.mesh.vertices.empty()) throw InputError(source, "no points in the file");
+  grey_from_intensity(out, source);  // a scanner's cloud without colours: its intensity
   return out;
 }
 

@@ -3,6 +3,8 @@
 // .obj, .pcd, .xyz / .txt / .csv / .asc, .pts, .ptx, .las. LAZ and E57 are
 // refused naming the format and the tools that convert them (no Debian
 // library reads them); any other name is refused listing the formats read.
+// A cloud without colours whose file holds a scanner's intensity gets its
+// colours from it (intensity_grey.h).
 #include <filesystem>
 #include <optional>
 #include <string>

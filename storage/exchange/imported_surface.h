@@ -34,6 +34,14 @@ struct ImportedSurface {
   // Where the scanner stood for each scan, relative to `datum` as the
   // vertices (PTX's header): the side the surface was seen from.
   std::vector<Eigen::Vector3d> scanner_positions;
+  // A scanner's return intensity, one per vertex, as the file holds it
+  // (text clouds' intensity column, PTX, LAS), while the file has no colours;
+  // empty otherwise. read_imported_surface() turns it into grey colours
+  // (intensity_grey.h) and empties it.
+  std::vector<float> intensities;
+  // The file's intensity range drawn as grey (its least black, its most
+  // white), when the colours came from the intensity.
+  std::optional<std::array<double, 2>> intensity_as_grey;
 };
 
 // The absolute coordinates beyond which a datum is taken (10 km: survey

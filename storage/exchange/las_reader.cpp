@@ -161,6 +161,9 @@ ImportedSurface parse_las_bytes(const LasBytes& file, const std::string& source)
   auto& mesh = out.mesh;
   mesh.vertices.reserve(count);
   if (layout->rgb_at) mesh.colours.reserve(count);
+  // Without RGB (formats 0, 1, 6) the intensity is the picture
+  // (intensity_grey.h); every format holds it at byte 12.
+  if (!layout->rgb_at) out.intensities.reserve(count);
   std::vector<std::array<std::uint16_t, 3>> rgb16;
   if (layout->rgb_at) rgb16.reserve(count);
   std::uint16_t brightest = 0;
@@ -189,6 +192,7 @@ ImportedSurface parse_las_bytes(const LasBytes& file, const std::string& source)
                                      std::to_string(lo[k]) + ", " + std::to_string(hi[k]) +
                                      "]: the header does not describe its points");
     mesh.vertices.push_back(p);
+    if (!layout->rgb_at) out.intensities.push_back(little<std::uint16_t>(chunk, at + 12));
     if (layout->rgb_at) {
       std::array<std::uint16_t, 3> c{};
       for (std::size_t k = 0; k < 3; ++k) {

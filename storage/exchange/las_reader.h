@@ -3,8 +3,8 @@
 // 0 to 3 and 6 to 8, the ones laser scanners and drone software write): the
 // points' X, Y, Z as the header's scale and offset make them (doubles, so
 // survey coordinates keep the file's resolution), their RGB where the format
-// has it. Written here: Debian has no LAS library. A LAZ file (compressed LAS)
-// is refused naming the tools that decompress it.
+// has it, else their intensity (drawn as grey: intensity_grey.h). Written here: Debian has no LAS
+// library. A LAZ file (compressed LAS) is refused naming the tools that decompress it.
 //
 // Checked before anything is allocated: the signature, the version, the
 // header's size and the offset to the points, the record format and length,

@@ -127,6 +127,8 @@ ImportedSurface parse_ptx(std::string_view bytes, const std::string& source) {
         continue;
       }
       out.mesh.vertices.push_back(R * p + t);
+      // Without colours the intensity is the picture (intensity_grey.h).
+      if (!coloured) out.intensities.push_back(static_cast<float>(v[3]));
       if (coloured) {
         std::array<std::uint8_t, 3> c{};
         for (std::size_t k = 0; k < 3; ++k) {

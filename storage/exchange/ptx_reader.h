@@ -4,7 +4,9 @@
 // scanner's position and axes, the 4 x 4 matrix that registers it (the last
 // row the translation, as PTX writes it), then columns x rows lines "x y z
 // intensity [r g b]" in the scanner's frame. A point 0 0 0 is a direction
-// with no return: counted, not kept. Points are registered by the matrix;
+// with no return: counted, not kept. Without colours each point's intensity
+// is kept (ImportedSurface::intensities, drawn as grey by intensity_grey.h).
+// Points are registered by the matrix;
 // each scanner's registered position is kept (the side the surface was seen
 // from: import_surface.h's view side).
 // Written here (Debian has no PTX reader).

@@ -31,6 +31,7 @@ std::string canonical(std::string_view raw) {
   if (s == "nx" || s == "normal_x") return "nx";
   if (s == "ny" || s == "normal_y") return "ny";
   if (s == "nz" || s == "normal_z") return "nz";
+  if (s == "i" || s == "intensity" || s == "scalar_intensity") return "i";
   return "";
 }
 
@@ -62,9 +63,9 @@ std::optional<double> number(std::string_view s) {
 // The columns a count says without doubt.
 PointColumns columns_of_count(std::size_t count, bool pts) {
   if (count == 3) return {"x", "y", "z"};
-  if (count == 4) return {"x", "y", "z", ""};
+  if (count == 4) return {"x", "y", "z", "i"};
   if (count == 6 && !pts) return {"x", "y", "z", "r", "g", "b"};
-  if (count == 7 && pts) return {"x", "y", "z", "", "r", "g", "b"};
+  if (count == 7 && pts) return {"x", "y", "z", "i", "r", "g", "b"};
   return {};
 }
 
@@ -72,7 +73,7 @@ void check_columns(const PointColumns& c, const std::string& where) {
   for (const char* name : {"x", "y", "z"})
     if (std::count(c.begin(), c.end(), name) != 1)
       throw InputError(where, std::string("the columns must name ") + name + " once");
-  for (const char* name : {"r", "g", "b", "nx", "ny", "nz"})
+  for (const char* name : {"r", "g", "b", "nx", "ny", "nz", "i"})
     if (std::count(c.begin(), c.end(), name) > 1)
       throw InputError(where, std::string("the columns name ") + name + " more than once");
   const auto has = [&](const char* n) { return std::count(c.begin(), c.end(), n) == 1; };
@@ -92,8 +93,7 @@ PointColumns parse_point_columns(const std::string& text, const std::string& whe
     const std::string name =
         text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const std::string c = xyz_detail::canonical(name);
-    if (c.empty() && name != "-" && xyz_detail::lower(name) != "skip" &&
-        xyz_detail::lower(name) != "i" && xyz_detail::lower(name) != "intensity")
+    if (c.empty() && name != "-" && xyz_detail::lower(name) != "skip")
       throw InputError(where, "'" + name +
                                   "' is no column name (x, y, z, r, g, b, nx, ny, nz, "
                                   "intensity, or - to skip)");
@@ -125,10 +125,13 @@ ImportedSurface parse_xyz(std::string_view bytes, const std::string& source,
     if (it == columns.end()) return std::nullopt;
     return static_cast<std::size_t>(it - columns.begin());
   };
-  std::optional<std::size_t> x, y, z, r, g, b, nx, ny, nz;
+  std::optional<std::size_t> x, y, z, r, g, b, nx, ny, nz, i;
   auto locate = [&] {
     x = at("x"), y = at("y"), z = at("z"), r = at("r"), g = at("g"), b = at("b");
     nx = at("nx"), ny = at("ny"), nz = at("nz");
+    // The intensity is kept only where it is the colours to be
+    // (intensity_grey.h).
+    i = r ? std::nullopt : at("i");
   };
   if (!columns.empty()) locate();
   while (pos < bytes.size()) {
@@ -213,6 +216,11 @@ ImportedSurface parse_xyz(std::string_view bytes, const std::string& source,
         fractional_colour = fractional_colour || v != std::floor(v);
       }
       colours.push_back(c);
+    }
+    if (i) {
+      if (!std::isfinite(values[*i]))
+        throw InputError(source, where + ": the intensity is not a finite number");
+      out.intensities.push_back(static_cast<float>(values[*i]));
     }
     if (nx) {
       const Eigen::Vector3f n(static_cast<float>(values[*nx]), static_cast<float>(values[*ny]),

@@ -6,9 +6,11 @@
 //
 // The columns come from, in this order: the names given (--columns), a
 // header line of names (x, y, z or easting, northing, elevation; r, g, b or
-// red, green, blue; nx, ny, nz; anything else is skipped), or the column
-// count when it says them without doubt (3: x y z; 4: x y z intensity; 6: x y
-// z r g b; PTS's 7: x y z intensity r g b). Otherwise the file is refused
+// red, green, blue; nx, ny, nz; i or intensity; anything else is skipped), or
+// the column count when it says them without doubt (3: x y z; 4: x y z
+// intensity; 6: x y z r g b; PTS's 7: x y z intensity r g b). A file with an
+// intensity and no colours keeps the intensity (ImportedSurface::intensities:
+// a scanner's, drawn as grey by intensity_grey.h). Otherwise the file is refused
 // asking for --columns. A PTS file begins with its point count, which must be
 // the lines that follow.
 //
@@ -23,8 +25,8 @@
 
 namespace rockface::storage {
 
-// What one column holds: "x", "y", "z", "r", "g", "b", "nx", "ny", "nz" or
-// "" (skipped).
+// What one column holds: "x", "y", "z", "r", "g", "b", "nx", "ny", "nz", "i"
+// (intensity) or "" (skipped).
 using PointColumns = std::vector<std::string>;
 
 // "x,y,z,r,g,b" or "x,y,z,-,r,g,b" ("-" or "skip" skips a column); the

@@ -357,6 +357,19 @@ class NorthRunner {
                              double bearing_deg, double declination_deg, Progress& progress) = 0;
 };
 
+// A visit imported in a local frame scaled and levelled by the range pole's
+// two targets tapped on its 3D view (issue 43; the workflow of
+// firmware-app/import/scale_import_by_pole.h): `lower` and `upper` are
+// points of the 3D image as stored. Returns what was done in words; throws
+// rockface::Error naming the visit or the pole.
+class PoleRunner {
+ public:
+  virtual ~PoleRunner() = default;
+  virtual std::string scale(const std::filesystem::path& project, storage::RecordId visit_id,
+                            const Eigen::Vector3d& lower, const Eigen::Vector3d& upper,
+                            double length_m, Progress& progress) = 0;
+};
+
 // Issue 44 on the tablet: the round's support (the workflow `rockface
 // support` runs): what the Q chart, Bieniawski's table and the designer's
 // classes propose for the visit, side by side, the checks on its wedges and
@@ -414,6 +427,7 @@ struct FieldServices {
   // Issue 44.
   SupportRunner* support = nullptr;  // null: the Blocks screen shows no Support view
   ImportRunner* imports = nullptr;   // null: no Import a 3D image (issue 43)
+  PoleRunner* pole = nullptr;        // null: an imported cloud is not scaled on the tablet (43)
 };
 
 }  // namespace rockface::ui

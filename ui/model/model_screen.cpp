@@ -6,6 +6,7 @@
 #include "ui/app/screens.h"
 #include "ui/model/accuracy_summary.h"
 #include "ui/model/north_entry.h"
+#include "ui/model/pole_entry.h"
 #include "ui/view3d/overlay_legend.h"
 #include "ui/view3d/overlay_targets.h"
 #include "ui/widgets/format.h"
@@ -97,8 +98,9 @@ void draw_model_screen(AppState& app) {
                                  lo.y + static_cast<float>(photo.rows) * k));
   } else {
     add_targets_to_overlay(app.model_view, app.targets.scale());  // ui/view3d/overlay_targets.h
-    app.model_view.draw(layout.main, app.gesture);
+    const ModelView::Interaction touch = app.model_view.draw(layout.main, app.gesture);
     ImGui::PushClipRect(app.model_view.panel_min(), app.model_view.panel_max(), true);
+    pole_model_taps(app, touch);  // ui/model/pole_entry.h
     draw_target_labels(app.model_view, app.targets.scale());
     draw_model_overlays(app, ModelScreen::model);  // ui/view3d/overlay_legend.h
     ImGui::PopClipRect();
@@ -123,6 +125,7 @@ void draw_model_screen(AppState& app) {
   ImGui::Separator();
   draw_targets_in_words(app);
   draw_north_section(app);  // ui/model/north_entry.h
+  draw_pole_section(app);   // ui/model/pole_entry.h
   ImGui::Separator();
   draw_accuracy(model);
   ImGui::EndChild();

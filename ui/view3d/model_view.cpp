@@ -115,8 +115,10 @@ ModelView::Interaction ModelView::draw(ImVec2 size, const TouchGesture& gesture)
     camera_.orbit(io.MouseDelta.x, io.MouseDelta.y);
     turning = true;
   }
+  // The finger's own place, not ImGui's floored pixel: a tap on a target
+  // ringed a pixel wide lands where it was aimed (issue 43's pole taps).
   if (ImGui::IsItemDeactivated() && io.MouseDragMaxDistanceSqr[0] <= slop * slop)
-    out.tap = io.MousePos;
+    out.tap = ImVec2(gesture.pointer.x(), gesture.pointer.y());
   const bool over = ImGui::IsMouseHoveringRect(panel_min_, panel_max_, false);
   if (gesture.active || gesture.pinch != 1) {
     if (over || gesture.active) {

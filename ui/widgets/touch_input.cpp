@@ -59,6 +59,7 @@ void TouchInput::apply(ImGuiIO& io) {
     gesture_.pinch *= std::pow(kWheelStepPinch, wheel_);
     wheel_ = 0;
   }
+  gesture_.pointer = mouse_;
   io.MousePos = ImVec2(mouse_.x(), mouse_.y());
   io.MouseDown[0] = mouse_down_;
 }

@@ -30,6 +30,10 @@ struct TouchGesture {
   bool active = false;  // two or more fingers are down
   float pinch = 1;      // ratio of finger spread to last frame's (> 1: fingers apart, zoom in)
   Eigen::Vector2f pan = Eigen::Vector2f::Zero();  // pixels the fingers' centre moved
+  // Where the pointer (the primary finger) is, to the fraction of a pixel:
+  // ImGui floors io.MousePos to whole pixels, up to a pixel up and left of
+  // the finger (a pick on the 3D image wants the finger's own place).
+  Eigen::Vector2f pointer = Eigen::Vector2f::Zero();
 };
 
 class TouchInput {

@@ -11,8 +11,10 @@
 // neighbour (always a Delaunay neighbour, so the triangulation gives it);
 // a triangle is kept when its longest edge is at most
 // `max_edge_to_spacing` times the largest nearest-neighbour distance of its
-// three corners. Points (almost) on top of one another in the plane keep
-// one vertex; the others stay in the cloud, in no triangle.
+// three corners, that taken at most 3 times the middle corner's (a lone
+// point amid another surface, e.g. rock seen past a target plate standing
+// in front of it, has its nearest neighbour as far as that surface). Points (almost) on top of one
+// another in the plane keep one vertex; the others stay in the cloud, in no triangle.
 //
 // A large cloud is triangulated in overlapping strips (CloudMeshingOptions),
 // each triangle kept by the one strip whose core holds its centroid.
@@ -22,6 +24,7 @@
 // triangles it would fold into, so the fold comes out as a hole.
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -60,20 +63,36 @@ struct BestPlane {
 
 // The plane of least squares through the points (a sample of a large
 // cloud). InputError when they lie on a line.
-BestPlane best_plane(const std::vector<Eigen::Vector3d>& points);
+BestPlane best_plane(std::span<const Eigen::Vector3d> points);
 
 // Throws InputError when the points do not span a surface (fewer than three,
-// or all on one line).
-CloudMesh mesh_point_cloud(const std::vector<Eigen::Vector3d>& points,
+// or all on one line). A span: part of a cloud (a round's face, after its
+// walls) is meshed where it lies, without a copy (issue 43's peak).
+CloudMesh mesh_point_cloud(std::span<const Eigen::Vector3d> points,
                            const CloudMeshingOptions& options = {});
+inline CloudMesh mesh_point_cloud(const std::vector<Eigen::Vector3d>& points,
+                                  const CloudMeshingOptions& options = {}) {
+  return mesh_point_cloud(std::span<const Eigen::Vector3d>(points), options);
+}
 
 // The same over coordinates the caller gives each point on a surface the
 // cloud does not fold over (a round's developed view: chainage and arc length
 // of the design outline), in metres, so that the strips and the spacing are
 // those of the surface. Triangles are counter-clockwise in (u, v); centroid
 // and normal are left as they are (no plane).
-CloudMesh mesh_point_cloud_on(const std::vector<Eigen::Vector3d>& points,
+CloudMesh mesh_point_cloud_on(std::span<const Eigen::Vector3d> points,
                               const std::vector<Eigen::Vector2d>& uv,
+                              const CloudMeshingOptions& options = {});
+
+// The same where some points lie twice on the surface (a developed view's
+// seam: the outline's start meshed again past its end): uv[k] is point k's
+// place for k < points.size(), and uv[points.size() + j] a second place of
+// point repeated[j]. The triangles index uv (a second place's index is
+// points.size() + j), unused_points counts the points in no triangle at
+// either place. No copy of a repeated point is made.
+CloudMesh mesh_point_cloud_on(std::span<const Eigen::Vector3d> points,
+                              const std::vector<Eigen::Vector2d>& uv,
+                              const std::vector<int>& repeated,
                               const CloudMeshingOptions& options = {});
 
 }  // namespace rockface::photogrammetry

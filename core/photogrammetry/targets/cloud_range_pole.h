@@ -5,8 +5,9 @@
 // picking the targets' centres.
 //
 // The cloud is drawn as a picture, looking along `toward_viewer` with a
-// parallel projection (each pixel the colour of the point nearest the
-// viewer, a pixel about the point spacing), and the targets are found in it
+// parallel projection (each pixel the colour of the point of the surface
+// nearest the viewer that lies nearest the pixel's centre, a pixel about the
+// point spacing), and the targets are found in it
 // by the photographs' detector (circular_target.h: a white disk in a black
 // ring, checked along rays). Each target's centre is then taken back into
 // the cloud: the plane fitted (least squares) to the points drawn inside its

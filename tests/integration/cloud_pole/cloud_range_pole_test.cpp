@@ -99,6 +99,15 @@ TEST(CloudRangePole, TheTwoTargetsAreFoundInTheColoursWhereTheSceneHasThem) {
         100 * (length / true_length - 1));
     EXPECT_LT(off[0], tolerance);
     EXPECT_LT(off[1], tolerance);
+    // The length: the two centres' errors along the pole, each the residual
+    // of an ellipse fitted to a hundred edge points or more whose colours
+    // come from points within about a third of a pixel of the picture's
+    // pixel centres: 0.02-0.10 px together in these four cases. Before the
+    // picture took each pixel's point nearest its centre (it took the one
+    // nearest the viewer) the lower plate, tilted up toward the scanner,
+    // came out 0.17-0.28 px up the pole and the length 0.13-0.43 px short
+    // in three of the four.
+    EXPECT_LT(std::abs(length - true_length), 0.15 * pole.pixel);
   }
 }
 

@@ -9,6 +9,7 @@
 // 3D image must be the site's frame with the lower target at the origin.
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -221,54 +222,50 @@ TEST(ImportRangePole, PoleAutoOnACloudWithoutColoursIsRefusedWithNothingStored) 
   EXPECT_FALSE(fs::exists(project));  // nothing stored, no project left behind
 }
 
-// `--pole auto`: the targets found in the colours of a cloud sampled from
-// the rendered sample face (tests/support/rendered_pole_cloud.h: 2 mm of
-// scanner noise, a local frame at 0.37 of the site's size, turned and
-// tilted). The truth is the scene's target centres carried into the file's
-// frame; what the import stored is compared through Eigen's Umeyama fit of
-// the file's points onto the stored ones (not the code under test).
-TEST(ImportRangePole, WithPoleAutoTheTargetsAreFoundInTheCloudsColours) {
+// The local frame of the `--pole auto` clouds: 0.37 of the site's size,
+// turned 130 deg about z and tilted 25 deg.
+rockface::testing::LocalFrame pole_auto_frame() {
   rockface::testing::LocalFrame frame;
   frame.scale = 0.37;
   frame.R = (Eigen::AngleAxisd(130 * M_PI / 180, Eigen::Vector3d::UnitZ()) *
              Eigen::AngleAxisd(25 * M_PI / 180, Eigen::Vector3d(1, 1, 0).normalized()))
                 .toRotationMatrix();
   frame.t = Eigen::Vector3d(12.3, -4.5, 101.0);
-  const auto cloud = rockface::testing::rendered_pole_cloud(
-      rockface::testing::synthetic_face(1200, 800), 1, kNoise, frame);
-  const fs::path dir =
-      fs::temp_directory_path() / ("import-pole-auto-" + std::to_string(::getpid()));
+  return frame;
+}
+
+fs::path pole_auto_folder(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   rockface::test::remove_when_passed(dir);
-  const fs::path file = dir / "face-local.xyz";
-  std::vector<Eigen::Vector3d> written;
-  {
-    std::FILE* f = std::fopen(file.c_str(), "w");
-    for (std::size_t k = 0; k < cloud.points.size(); ++k) {
-      const Eigen::Vector3d& p = cloud.points[k];
-      char text[120];
-      std::snprintf(text, sizeof text, "%.7f %.7f %.7f", p.x(), p.y(), p.z());
-      Eigen::Vector3d back;
-      std::sscanf(text, "%lf %lf %lf", &back.x(), &back.y(), &back.z());
-      written.push_back(back);
-      std::fprintf(f, "%s %d %d %d\n", text, cloud.colours[k][0], cloud.colours[k][1],
-                   cloud.colours[k][2]);
-    }
-    std::fclose(f);
-  }
-  const fs::path project = dir / "auto.rockface";
-  const auto r = run_rockface("import " + project.string() + " " + file.string() +
-                              " --frame local --pole auto --range-pole 2");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("found in the cloud's colours"), std::string::npos) << r.out;
+  return dir;
+}
+
+// A point as a file holds it (7 decimals) and as the file's reader reads
+// it back.
+std::string written_point(const Eigen::Vector3d& p, std::vector<Eigen::Vector3d>& written) {
+  char text[120];
+  std::snprintf(text, sizeof text, "%.7f %.7f %.7f", p.x(), p.y(), p.z());
+  Eigen::Vector3d back;
+  std::sscanf(text, "%lf %lf %lf", &back.x(), &back.y(), &back.z());
+  written.push_back(back);
+  return text;
+}
+
+// The scene's two target centres where the import stored them: the file's
+// points fitted onto the stored ones by Eigen's Umeyama (not the code under
+// test), the stored model registered by the range pole.
+std::array<Eigen::Vector3d, 2> stored_targets(const fs::path& project,
+                                              const std::vector<Eigen::Vector3d>& written,
+                                              const rockface::testing::RenderedPoleCloud& cloud) {
   auto store = rockface::storage::ProjectStore::open(project);
   const auto model = store.load_model(store.list_models().back().id);
-  ASSERT_EQ(model.mesh.vertices.size(), written.size());
+  EXPECT_EQ(model.mesh.vertices.size(), written.size());
   const auto reg = rockface::storage::read_model_registration(model.registration);
   EXPECT_EQ(reg.kind, "range_pole");
   EXPECT_TRUE(reg.is_scaled());
-  const auto n = static_cast<Eigen::Index>(written.size());
+  const auto n = static_cast<Eigen::Index>(std::min(written.size(), model.mesh.vertices.size()));
   Eigen::Matrix3Xd src(3, n), dst(3, n);
   for (Eigen::Index i = 0; i < n; ++i) {
     src.col(i) = written[static_cast<std::size_t>(i)];
@@ -278,20 +275,103 @@ TEST(ImportRangePole, WithPoleAutoTheTargetsAreFoundInTheCloudsColours) {
   auto stored = [&](const Eigen::Vector3d& p) {
     return Eigen::Vector3d((M * p.homogeneous()).head<3>());
   };
-  const Eigen::Vector3d lower = stored(cloud.targets[0]), upper = stored(cloud.targets[1]);
-  // The finder's bound (cloud_range_pole_test.cpp): each centre within half
-  // the picture's pixel, 1.5 sampling footprints, of the truth; in the
-  // stored frame, metres of the site: 0.75 footprints / the frame's scale.
-  // The upper target's stored place carries its own error and the lower's
-  // (the pole's similarity takes the lower to the origin and its scale
-  // from both): twice the bound.
-  const double tolerance = 0.75 * cloud.spacing / frame.scale;
+  return {stored(cloud.targets[0]), stored(cloud.targets[1])};
+}
+
+// The finder's bound (cloud_range_pole_test.cpp): each centre within half
+// the picture's pixel, 1.5 sampling footprints, of the truth; in the stored
+// frame, metres of the site: 0.75 footprints / the frame's scale. The upper
+// target's stored place carries its own error and the lower's (the pole's
+// similarity takes the lower to the origin and its scale from both): twice
+// the bound.
+void expect_pole_found(const std::array<Eigen::Vector3d, 2>& at,
+                       const rockface::testing::RenderedPoleCloud& cloud, double frame_scale) {
+  const double tolerance = 0.75 * cloud.spacing / frame_scale;
   std::printf(
       "pole auto: lower target stored at %.4f %.4f %.4f, upper at %.4f %.4f %.4f "
       "(tolerance %.4f m)\n",
-      lower.x(), lower.y(), lower.z(), upper.x(), upper.y(), upper.z(), tolerance);
-  EXPECT_LT(lower.norm(), tolerance);  // the lower target at the origin
-  EXPECT_LT((upper - Eigen::Vector3d(0, 0, kPoleLength)).norm(), 2 * tolerance);
+      at[0].x(), at[0].y(), at[0].z(), at[1].x(), at[1].y(), at[1].z(), tolerance);
+  EXPECT_LT(at[0].norm(), tolerance);  // the lower target at the origin
+  EXPECT_LT((at[1] - Eigen::Vector3d(0, 0, kPoleLength)).norm(), 2 * tolerance);
+}
+
+// `--pole auto`: the targets found in the colours of a cloud sampled from
+// the rendered sample face (tests/support/rendered_pole_cloud.h: 2 mm of
+// scanner noise, a local frame at 0.37 of the site's size, turned and
+// tilted). The truth is the scene's target centres carried into the file's
+// frame.
+TEST(ImportRangePole, WithPoleAutoTheTargetsAreFoundInTheCloudsColours) {
+  const rockface::testing::LocalFrame frame = pole_auto_frame();
+  const auto cloud = rockface::testing::rendered_pole_cloud(
+      rockface::testing::synthetic_face(1200, 800), 1, kNoise, frame);
+  const fs::path dir = pole_auto_folder("import-pole-auto");
+  const fs::path file = dir / "face-local.xyz";
+  std::vector<Eigen::Vector3d> written;
+  {
+    std::FILE* f = std::fopen(file.c_str(), "w");
+    for (std::size_t k = 0; k < cloud.points.size(); ++k)
+      std::fprintf(f, "%s %d %d %d\n", written_point(cloud.points[k], written).c_str(),
+                   cloud.colours[k][0], cloud.colours[k][1], cloud.colours[k][2]);
+    std::fclose(f);
+  }
+  const fs::path project = dir / "auto.rockface";
+  const auto r = run_rockface("import " + project.string() + " " + file.string() +
+                              " --frame local --pole auto --range-pole 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("found in the cloud's colours"), std::string::npos) << r.out;
+  expect_pole_found(stored_targets(project, written, cloud), cloud, frame.scale);
+}
+
+// A terrestrial scanner without a camera: the same rendered face's cloud
+// whose only picture is the return intensity (the rendered grey, ITU-R
+// BT.601 luma of its colour, in a scanner's units), written as "x y z
+// intensity" (12-bit counts, 200 at black to 3900 at white) and as a PTX
+// without colours (0.05 to 0.95, as Leica writes it). The import draws the
+// intensity as grey (its own range black to white) and `--pole auto` finds
+// the targets in it within the same bounds as in colours.
+TEST(ImportRangePole, WithPoleAutoTheTargetsAreFoundInAScannersIntensity) {
+  const rockface::testing::LocalFrame frame = pole_auto_frame();
+  const rockface::camera::SyntheticScene scene = rockface::testing::synthetic_face(1200, 800);
+  const auto cloud = rockface::testing::rendered_pole_cloud(scene, 1, kNoise, frame);
+  const fs::path dir = pole_auto_folder("import-pole-intensity");
+  auto grey = [&](std::size_t k) {
+    const auto& c = cloud.colours[k];
+    return (0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]) / 255.0;
+  };
+  std::vector<Eigen::Vector3d> written;
+  const fs::path text = dir / "scan-intensity.xyz";
+  {
+    std::FILE* f = std::fopen(text.c_str(), "w");
+    for (std::size_t k = 0; k < cloud.points.size(); ++k)
+      std::fprintf(f, "%s %ld\n", written_point(cloud.points[k], written).c_str(),
+                   std::lround(200 + 3700 * grey(k)));
+    std::fclose(f);
+  }
+  // PTX: one scan of all the points (a row of them), the scanner where the
+  // left station stood, registered already (the identity).
+  const fs::path ptx = dir / "scan-intensity.ptx";
+  {
+    std::FILE* f = std::fopen(ptx.c_str(), "w");
+    const Eigen::Vector3d scanner = frame.apply(scene.stations[0].position);
+    std::fprintf(f, "%zu\n1\n%.7f %.7f %.7f\n1 0 0\n0 1 0\n0 0 1\n", cloud.points.size(),
+                 scanner.x(), scanner.y(), scanner.z());
+    std::fprintf(f, "1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
+    std::vector<Eigen::Vector3d> same;  // the same numbers as the text file's
+    for (std::size_t k = 0; k < cloud.points.size(); ++k)
+      std::fprintf(f, "%s %.4f\n", written_point(cloud.points[k], same).c_str(),
+                   0.05 + 0.9 * grey(k));
+    std::fclose(f);
+  }
+  for (const fs::path& file : {text, ptx}) {
+    SCOPED_TRACE(file.filename().string());
+    const fs::path project = dir / (file.extension().string().substr(1) + ".rockface");
+    const auto r = run_rockface("import " + project.string() + " " + file.string() +
+                                " --frame local --pole auto --range-pole 2");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("its intensity drawn as grey"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("found in the cloud's colours"), std::string::npos) << r.out;
+    expect_pole_found(stored_targets(project, written, cloud), cloud, frame.scale);
+  }
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/common/error.h"
@@ -52,6 +53,7 @@ void put(std::string& b, std::size_t at, T v) {
 struct LasPoint {
   Eigen::Vector3d p;
   std::array<std::uint16_t, 3> rgb{};
+  std::uint16_t intensity = 0;
 };
 
 // A LAS file written from the specification (ASPRS LAS 1.4 R15), not by
@@ -85,6 +87,7 @@ std::string las_file(const std::vector<LasPoint>& points, int minor, int format,
       put<std::int32_t>(
           b, at + 4 * k,
           static_cast<std::int32_t>(std::lround((points[i].p[k] - offset[k]) / scale)));
+    put<std::uint16_t>(b, at + 12, points[i].intensity);  // every format: byte 12
     const std::size_t rgb_at = format == 3 ? 28 : format == 7 ? 30 : 0;
     if (rgb_at)
       for (int k = 0; k < 3; ++k) put<std::uint16_t>(b, at + rgb_at + 2 * k, points[i].rgb[k]);
@@ -441,6 +444,70 @@ TEST(ImportReader, OffsetIsAddedToTheDatum) {
   // to the double's resolution at 5e6 m.
   EXPECT_LT((s.mesh.vertices[0] + s.datum - Eigen::Vector3d(276771.1234, 5151636.5, 2385)).norm(),
             1e-9);
+  fs::remove_all(dir);
+}
+
+// A scanner's cloud without colours (issue 43): its intensity becomes its
+// colours, a grey scaled from the file's own range (least black, greatest
+// white), from a text cloud's intensity column (by the count or named), a PTX
+// without RGB and LAS point formats 0, 1 and 6; a file with colours keeps
+// them and says nothing of its intensity. Expected greys are worked by hand.
+TEST(ImportReader, AScannersIntensityIsTheGreyOfACloudWithoutColours) {
+  const fs::path dir = scratch("intensity");
+  auto greys = [](const ImportedSurface& s) {
+    std::vector<int> g;
+    for (const auto& c : s.mesh.colours) {
+      EXPECT_TRUE(c[0] == c[1] && c[1] == c[2]);  // grey
+      g.push_back(c[0]);
+    }
+    return g;
+  };
+  // 12-bit counts: (1100 - 100) / (4195 - 100) of 255 is 62.3.
+  std::ofstream(dir / "count.xyz") << "0 0 0 100\n1 0 0 1100\n0 1 0 4195\n";
+  std::ofstream(dir / "named.csv") << "x,y,z,intensity\n0,0,0,-5\n1,0,0,5\n0,1,0,0\n";
+  const ImportedSurface count = read_imported_surface(dir / "count.xyz");
+  EXPECT_EQ(greys(count), (std::vector<int>{0, 62, 255}));
+  ASSERT_TRUE(count.intensity_as_grey);
+  EXPECT_EQ((*count.intensity_as_grey)[0], 100);
+  EXPECT_EQ((*count.intensity_as_grey)[1], 4195);
+  EXPECT_TRUE(count.intensities.empty());  // freed once drawn
+  // A signed intensity (dB): -5 black, 5 white, 0 half way (127.5 rounds up).
+  EXPECT_EQ(greys(read_imported_surface(dir / "named.csv")), (std::vector<int>{0, 255, 128}));
+  // PTS with colours: they are the colours, the intensity is not.
+  std::ofstream(dir / "rgb.pts") << "2\n0 0 0 5 1 2 3\n1 0 0 9 4 5 6\n";
+  const ImportedSurface rgb = read_imported_surface(dir / "rgb.pts");
+  EXPECT_FALSE(rgb.intensity_as_grey);
+  EXPECT_EQ(rgb.mesh.colours[1][0], 4);
+  // One intensity everywhere says nothing: mid grey.
+  std::ofstream(dir / "flat.xyz") << "0 0 0 7\n1 0 0 7\n0 1 0 7\n";
+  EXPECT_EQ(greys(read_imported_surface(dir / "flat.xyz")), (std::vector<int>{128, 128, 128}));
+  // PTX without colours, Leica's 0..1; the no-return point has no grey.
+  // (0.35 - 0.2) / 0.6 of 255 is 63.75.
+  std::ofstream(dir / "scan.ptx") << ptx_scan("1 0 0 0.2\n0 0 0 0\n0 2 0 0.8\n0 0 3 0.35\n", 2, 2);
+  EXPECT_EQ(greys(read_imported_surface(dir / "scan.ptx")), (std::vector<int>{0, 255, 64}));
+  // LAS without RGB: formats 0 and 1 (LAS 1.2) and 6 (LAS 1.4), 16-bit.
+  auto pts = utm_points();
+  pts[0].intensity = 60000, pts[1].intensity = 0, pts[2].intensity = 30000;
+  for (const auto& [minor, format] : {std::pair{2, 0}, std::pair{2, 1}, std::pair{4, 6}}) {
+    SCOPED_TRACE(format);
+    const fs::path las = dir / ("f" + std::to_string(format) + ".las");
+    const std::string bytes = las_file(pts, minor, format);
+    std::ofstream(las, std::ios::binary)
+        .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    EXPECT_EQ(greys(read_imported_surface(las)), (std::vector<int>{255, 0, 128}));
+  }
+  // With RGB (format 7) the colours are the file's.
+  const std::string bytes = las_file(pts, 4, 7);
+  std::ofstream(dir / "f7.las", std::ios::binary)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  const ImportedSurface f7 = read_imported_surface(dir / "f7.las");
+  EXPECT_FALSE(f7.intensity_as_grey);
+  EXPECT_EQ(f7.mesh.colours[0][0], 255);
+  EXPECT_EQ(f7.mesh.colours[0][1], 0);
+  // A text intensity that is no number is refused by line and column.
+  std::ofstream(dir / "nan.xyz") << "0 0 0 1\n1 0 0 nan\n";
+  EXPECT_NE(refusal([&] { read_imported_surface(dir / "nan.xyz"); }).find("line 2"),
+            std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <span>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -99,3 +101,48 @@ TEST(CloudMeshing, PointsOnALineAreNoSurface) {
 }
 
 }  // namespace
+
+// A developed view's seam (issue 43's round scans): points meshed at a
+// second place of the surface given as repeated points give the triangles
+// that copies of them appended to the cloud give (the way before, which
+// held a copy of every repeated point), indexed alike; the points after the
+// meshed span (a round's face, after its walls) are not touched.
+TEST(CloudMeshing, RepeatedPointsMeshAsTheirCopiesWould) {
+  std::mt19937 rng(17);
+  std::vector<Eigen::Vector3d> points = face_cloud(0.1, rng);
+  std::vector<Eigen::Vector2d> uv;
+  for (const auto& p : points) uv.emplace_back(p.x() - 500000, p.z() - 1000);
+  // The first 20 cm of u again past the end (2 m), as a seam band.
+  std::vector<int> repeated;
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (uv[k].x() < 0.2) repeated.push_back(static_cast<int>(k));
+  std::vector<Eigen::Vector2d> uv_all = uv;
+  std::vector<Eigen::Vector3d> copies = points;
+  for (int k : repeated) {
+    uv_all.emplace_back(uv[static_cast<std::size_t>(k)].x() + 2.0,
+                        uv[static_cast<std::size_t>(k)].y());
+    copies.push_back(points[static_cast<std::size_t>(k)]);
+  }
+  rockface::photogrammetry::CloudMeshingOptions strips;
+  strips.strip_points = 5000;  // a seam across strips too
+  auto canonical = [](std::vector<std::array<int, 3>> t) {
+    for (auto& x : t) std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  const auto copied = rockface::photogrammetry::mesh_point_cloud_on(copies, uv_all, strips);
+  // The cloud with points after the meshed ones (a face), which the span
+  // leaves out.
+  std::vector<Eigen::Vector3d> with_face = points;
+  with_face.emplace_back(0, 0, 0);
+  const auto placed = rockface::photogrammetry::mesh_point_cloud_on(
+      std::span<const Eigen::Vector3d>(with_face).first(points.size()), uv_all, repeated, strips);
+  EXPECT_GT(copied.triangles.size(), 1.9 * static_cast<double>(points.size()));
+  EXPECT_TRUE(canonical(copied.triangles) == canonical(placed.triangles));
+  EXPECT_EQ(copied.median_spacing, placed.median_spacing);
+  EXPECT_EQ(placed.unused_points, 0u);
+  std::vector<int> outside = repeated;
+  outside.front() = -1;  // no such point
+  EXPECT_THROW(rockface::photogrammetry::mesh_point_cloud_on(points, uv_all, outside, strips),
+               rockface::InputError);
+}
