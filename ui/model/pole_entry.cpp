@@ -20,7 +20,7 @@ bool unscaled_import(const storage::Model& model) {
 }
 
 // Why the taps are not yet a pole; empty when they are one.
-std::string problem(const PoleEntryState& e) {
+std::string pole_taps_problem(const PoleEntryState& e) {
   if (e.targets.empty()) return "Tap the pole's lower target on the 3D image.";
   if (e.targets.size() == 1) return "Now tap its upper target.";
   // 1e-9: the same point twice (a double tap).
@@ -78,7 +78,7 @@ void draw_pole_section(AppState& app) {
   label(e.targets.empty()       ? "Targets: none tapped yet"
         : e.targets.size() == 1 ? "Targets: the lower tapped"
                                 : "Targets: both tapped (a third tap starts again)");
-  const std::string why = problem(e);
+  const std::string why = pole_taps_problem(e);
   if (!why.empty()) paragraph(why);
   const bool can = why.empty() && !app.task.running();
   if (app.targets.button("Scale by the pole", 0, can)) scale_by_pole(app);
