@@ -58,6 +58,19 @@ std::string rounds_of(const fs::path& project) {
       .dump();
 }
 
+// The truth of a drive's rounds: those of a pull of the whole tunnel,
+// measured here by the pulled copy's own code.
+json rounds_of_a_whole_pull(const Site& s, const std::string& name) {
+  storage::office::Connection reader(s.server, "office_reader", kOfficePassword, 10);
+  NoProgress none;
+  const fs::path pulled = s.folder / (name + "-" + std::to_string(::getpid()) + ".rockface");
+  fs::remove(pulled);
+  storage::office::pull_tunnel(reader, "Main drive", pulled, none);
+  const json truth = json::parse(rounds_of(pulled));
+  fs::remove(pulled);
+  return truth;
+}
+
 // A pull without photographs reads no photograph from the server (the
 // pull's own count of the blobs it fetched) and gives the same rounds.
 TEST(OfficeRounds, ACopyWithoutPhotographsGivesTheSameRounds) {
@@ -251,14 +264,7 @@ TEST(OfficeRounds, AServerWithoutKeptFiguresAnswersAtOnceAndFillsTheRoundsIn) {
     EXPECT_FALSE(r.contains("overbreak_m3")) << r;
   }
 
-  // The truth: the rounds of a pull of the whole tunnel, measured here.
-  storage::office::Connection reader(s.server, "office_reader", kOfficePassword, 10);
-  NoProgress none;
-  const fs::path pulled = s.folder / ("rounds-truth-" + std::to_string(::getpid()) + ".rockface");
-  fs::remove(pulled);
-  storage::office::pull_tunnel(reader, "Main drive", pulled, none);
-  const json truth = json::parse(rounds_of(pulled));
-  fs::remove(pulled);
+  const json truth = rounds_of_a_whole_pull(s, "rounds-truth");
 
   const Rounds in = rounds_from(server);
   ASSERT_EQ(in.status, 200) << in.body;
@@ -337,13 +343,7 @@ TEST(OfficeRounds, AVisitSyncedWhileServingFillsItsRoundInAndTheOthersStay) {
   }
   ASSERT_FALSE(added.empty());
 
-  // The truth: the rounds of a pull of the whole tunnel, measured here.
-  storage::office::Connection reader(s.server, "office_reader", kOfficePassword, 10);
-  const fs::path pulled = s.folder / ("rounds-synced-" + std::to_string(::getpid()) + ".rockface");
-  fs::remove(pulled);
-  storage::office::pull_tunnel(reader, "Main drive", pulled, none);
-  const json truth = json::parse(rounds_of(pulled));
-  fs::remove(pulled);
+  const json truth = rounds_of_a_whole_pull(s, "rounds-synced");
 
   const Rounds in = rounds_from(server);
   ASSERT_EQ(in.status, 200) << in.body;

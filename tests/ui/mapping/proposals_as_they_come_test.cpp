@@ -147,19 +147,31 @@ bool shown(const ui::ProposalsState& s, const measure::TraceProposal& p) {
   return !s.rejected.count(p.id) && !s.accepted.count(p.id) && !s.mapped.count(p.id);
 }
 
-TEST(UiProposals, TheFirstProposalsShowWhileTheRestAreFound) {
-  const fs::path project = copy_of_demo("proposals-as-they-come");
-  app::FieldRunners runners{""};
-  HeldAfterFirstBatch held(runners.proposals);
+// The program's runners with the proposals held by `held`; no office, no
+// camera.
+ui::FieldServices services_proposing_with(app::FieldRunners& runners, ui::ProposalRunner& held) {
   ui::FieldServices services = runners.services();
   services.proposals = &held;
   services.sync = nullptr;
   services.camera = nullptr;
+  return services;
+}
+
+// A small viewport and a decimated model: the software renderer's cost.
+ui::UiOptions mapping_options(const fs::path& project) {
   ui::UiOptions options;
   options.project = project;
   options.scale = 0.6f;
   options.max_display_triangles = 20000;
-  ui::HeadlessSession session(options, services, 800, 500);
+  return options;
+}
+
+TEST(UiProposals, TheFirstProposalsShowWhileTheRestAreFound) {
+  const fs::path project = copy_of_demo("proposals-as-they-come");
+  app::FieldRunners runners{""};
+  HeldAfterFirstBatch held(runners.proposals);
+  ui::HeadlessSession session(mapping_options(project), services_proposing_with(runners, held), 800,
+                              500);
   const ReleaseOnExit<HeldAfterFirstBatch> release_on_exit{held};
   session.settle();
   session.tap("Mapping");
@@ -239,15 +251,8 @@ TEST(UiProposals, TheFirstProposalsAreOnTheScreenBeforeTheFacetsAreSought) {
   const fs::path project = copy_of_demo("proposals-before-facets");
   app::FieldRunners runners{""};
   HeldAtTheFacets held(runners.proposals);
-  ui::FieldServices services = runners.services();
-  services.proposals = &held;
-  services.sync = nullptr;
-  services.camera = nullptr;
-  ui::UiOptions options;
-  options.project = project;
-  options.scale = 0.6f;
-  options.max_display_triangles = 20000;
-  ui::HeadlessSession session(options, services, 800, 500);
+  ui::HeadlessSession session(mapping_options(project), services_proposing_with(runners, held), 800,
+                              500);
   const ReleaseOnExit<HeldAtTheFacets> release_on_exit{held};
   session.settle();
   session.tap("Mapping");
