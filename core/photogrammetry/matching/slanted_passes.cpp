@@ -123,6 +123,20 @@ SlantedResult match_slanted(const cv::Mat& right, const cv::Mat& first,
   if (candidates.empty()) return out;
   const int k = options.slope_step_px;
   const float nan = std::numeric_limits<float>::quiet_NaN();
+  // What the first pass sees in the right image: per right pixel the
+  // largest (nearest) disparity that maps onto it. A candidate whose right
+  // pixel a nearer measured surface covers would be seen through it: an
+  // occluded pixel, not a match.
+  cv::Mat claimed(first.size(), CV_32F, cv::Scalar(-1e9f));
+  for (int y = 0; y < first.rows; ++y)
+    for (int x = 0; x < first.cols; ++x) {
+      const float v = first.at<float>(y, x);
+      if (std::isnan(v)) continue;
+      const int xr = static_cast<int>(std::lround(x - v));
+      if (xr < 0 || xr >= first.cols) continue;
+      float& c = claimed.at<float>(y, xr);
+      c = std::max(c, v);
+    }
   for (int y = 0; y < first.rows; ++y)
     for (int x = 0; x < first.cols; ++x) {
       // Flatness in each pass's own frame: its map's slope less the pass's.
@@ -151,6 +165,11 @@ SlantedResult match_slanted(const cv::Mat& right, const cv::Mat& first,
         // onto its slope (terraces), not to another surface.
         const float v = candidates[c].at<float>(y, x);
         if (!std::isnan(known) && !(std::abs(v - known) <= options.max_change_px)) continue;
+        if (!std::isnan(v)) {
+          const int xr = static_cast<int>(std::lround(x - v));
+          if (xr >= 0 && xr < first.cols && claimed.at<float>(y, xr) > v + options.occlusion_px)
+            continue;
+        }
         consider(candidates[c], slopes[c], 0.0, true);
       }
       out.disparity.at<float>(y, x) = pick;

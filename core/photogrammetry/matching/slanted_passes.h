@@ -21,13 +21,13 @@
 // pass (left-right checked, cleaned as the first pass is), never
 // interpolated, so an occluding edge stays an edge.
 //
-// Not yet called by match_rectified (dense_matching.h): on the mock
-// camera's tunnel headings it raises the lining the 3D image holds from
-// 62 to 89 % (sample) and 46 to 80 % (D heading) (docs/accuracy-cost.md),
-// but it changes the stepped face of FacetsOnReconstruction: with all six
-// slopes, the row slopes alone or the column slopes alone, padded or not,
-// one or both of its stepped-face tests fail (a 1.1 m2 facet 28 deg off
-// its set; the two sets not found). To be wired once those facets hold.
+// match_rectified (dense_matching.h) fills only the first pass's holes
+// with it (max_change_px 0): the lining of the mock camera's tunnel
+// headings covered 62 -> 76 % (sample) and 46 -> 68 % (D heading). Moving
+// the first pass's terraces too (max_change_px 3) gives 89 % / 80 % but
+// changes the stepped face of FacetsOnReconstruction (a 1.1 m2 facet 28
+// deg off its set, the two sets not found), as does padding the pair for
+// SGBM's edge columns (docs/accuracy-cost.md).
 #include <cstddef>
 #include <functional>
 #include <utility>
@@ -64,6 +64,9 @@ struct SlantedPassOptions {
   // riser (3-5 px) off the slope, while a candidate farther off is another
   // surface (on the stepped face, facets 28-45 deg off their set).
   double max_change_px = 3.0;
+  // A candidate whose right pixel the first pass gives to a surface
+  // nearer by more than this (px of disparity) is occluded there.
+  double occlusion_px = 1.0;
   double first_pass_bias = 0.05;  // a slanted pass wins over the first by this much slope
 };
 

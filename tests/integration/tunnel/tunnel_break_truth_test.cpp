@@ -359,9 +359,10 @@ class TunnelBreakTruth : public ::testing::Test {
 // renders rectified with the true poses, 5 cm bins of the lining, a bin
 // covered when most of its pixels are meshed and within 5 cm along the
 // ray): the sample 62 -> 89 %, the D heading 46 -> 80 %
-// (docs/accuracy-cost.md). The passes are not yet in match_rectified: they
-// change FacetsOnReconstruction's stepped face (its tests fail), and this
-// test's own figures were not rerun. Left for the D heading even then: its
+// (docs/accuracy-cost.md). match_rectified fills only the first pass's
+// holes with them, unpadded (62 -> 76 %, 46 -> 68 %): moving its terraces
+// or padding change FacetsOnReconstruction's stepped face (its tests
+// fail). This test's own figures were not rerun. Left for the D heading: its
 // near walls' disparities lie beyond the first pass's 256-disparity
 // window, and its far walls need 0.5 px for 5 cm.
 TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsImageCoversTheLiningBothPhotographsSee) {
