@@ -21,13 +21,12 @@
 // pass (left-right checked, cleaned as the first pass is), never
 // interpolated, so an occluding edge stays an edge.
 //
-// match_rectified (dense_matching.h) fills only the first pass's holes
-// with it (max_change_px 0): the lining of the mock camera's tunnel
-// headings covered 62 -> 76 % (sample) and 46 -> 68 % (D heading). Moving
-// the first pass's terraces too (max_change_px 3) gives 89 % / 80 % but
-// changes the stepped face of FacetsOnReconstruction (a 1.1 m2 facet 28
-// deg off its set, the two sets not found), as does padding the pair for
-// SGBM's edge columns (docs/accuracy-cost.md).
+// match_rectified (dense_matching.h) runs them only on a tunnel's lining
+// (preset.lining_along_the_drive, set where the 3D image is measured
+// against a tunnel design), on the padded pair, moving the first pass's
+// terraces too (max_change_px 3): on a face they changed the stepped face
+// of FacetsOnReconstruction (a 1.1 m2 facet 28 deg off its set), so a face
+// is matched as before (docs/accuracy-cost.md).
 #include <cstddef>
 #include <functional>
 #include <utility>
