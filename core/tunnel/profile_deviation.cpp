@@ -9,6 +9,7 @@
 #include "core/common/number_format.h"
 #include "core/common/parallel.h"
 #include "core/common/units.h"
+#include "core/tunnel/lining_interpolation.h"
 #include "core/tunnel/lining_statistics.h"
 #include "core/tunnel/mesh_raycast.h"
 
@@ -20,6 +21,9 @@ namespace {
 // measured, "left out" is told apart as off the lining or below the invert.
 constexpr std::uint8_t kSeen = 0, kNotSeen = 1, kExcluded = 2, kLeftOut = 3;
 constexpr std::uint8_t kOffLining = 4, kBelowInvert = 5;
+// Filled from measured neighbours (lining_interpolation.h); state 4 of the
+// developed view.
+constexpr std::uint8_t kInterpolated = 6, kViewInterpolated = 4;
 
 enum class Region : std::uint8_t { roof, wall, floor };
 
@@ -189,6 +193,8 @@ void check_deviation_input(const SurfaceInput& surface, const DesignProfile& pro
   require_positive(options.max_overbreak_m, "max_overbreak_m");
   require_positive(options.plausible_slope, "plausible_slope");
   require_positive(options.max_invert_overbreak_m, "max_invert_overbreak_m");
+  if (!std::isfinite(options.max_interpolated_hole_m) || options.max_interpolated_hole_m < 0)
+    throw InputError("options.max_interpolated_hole_m", "must be a number >= 0 (0: never)");
   if (options.rays_per_cell_side < 1 || options.rays_per_cell_side > 15)
     throw InputError("options.rays_per_cell_side",
                      "must be 1 to 15, got " + std::to_string(options.rays_per_cell_side));
@@ -260,6 +266,7 @@ struct DeviationCells {
   // per row, its chainage.
   std::vector<std::uint8_t> state;
   std::vector<double> normal_dev, ray_dev, chainage;
+  std::vector<double> interpolation_sigma;  // per cell, of the interpolated ones
 };
 
 DeviationCells cells_over(const DesignProfile& profile, const DeviationOptions& options, double lo,
@@ -388,18 +395,42 @@ void mark_off_lining(DeviationCells& g, const DeviationOptions& options, double 
     if (off[k]) g.state[k] = kOffLining;
 }
 
+// Unseen cells inside the measured lining filled from their measured
+// neighbours (lining_interpolation.h); returns how many.
+std::size_t interpolate_holes(DeviationCells& g, const DeviationOptions& options) {
+  const std::size_t cells = g.rows * g.cols;
+  std::vector<std::uint8_t> measured(cells), fillable(cells);
+  for (std::size_t k = 0; k < cells; ++k) {
+    measured[k] = g.state[k] == kSeen ? 1 : 0;
+    fillable[k] = g.state[k] == kNotSeen ? 1 : 0;
+  }
+  g.interpolation_sigma.assign(cells, 0.0);
+  const std::vector<FilledCell> filled =
+      fill_lining_holes(g.rows, g.cols, g.normal_dev, g.ray_dev, measured, fillable,
+                        {g.cell_c, g.cell_s}, options.max_interpolated_hole_m);
+  for (const FilledCell& f : filled) {
+    g.state[f.cell] = kInterpolated;
+    g.normal_dev[f.cell] = f.normal_m;
+    g.ray_dev[f.cell] = f.ray_m;
+    g.interpolation_sigma[f.cell] = f.sigma_m;
+  }
+  return filled.size();
+}
+
 // Which cells count as over- or underbreak: those beyond the noise
 // threshold, and the flanks of such a break down to half the threshold
 // (connected cells of the same sign, 4-neighbours, the outline wrapping): a
 // break's flanks are not lost to the threshold, and noise that never
-// reaches it counts for nothing.
+// reaches it counts for nothing. Interpolated cells count as measured ones
+// do (they lie between measured cells).
 std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset, double thr) {
   const std::size_t rows = g.rows, cols = g.cols;
   std::vector<std::uint8_t> counted(rows * cols, 0);
   auto dev = [&](std::size_t k) { return g.normal_dev[k] - offset; };
+  auto valued = [&](std::size_t k) { return g.state[k] == kSeen || g.state[k] == kInterpolated; };
   std::vector<std::size_t> stack;
   for (std::size_t start = 0; start < rows * cols; ++start) {
-    if (counted[start] || g.state[start] != kSeen || !(std::abs(dev(start)) > thr)) continue;
+    if (counted[start] || !valued(start) || !(std::abs(dev(start)) > thr)) continue;
     const bool over = dev(start) > 0;
     counted[start] = 1;
     stack.assign(1, start);
@@ -410,7 +441,7 @@ std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset, 
       const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
                                  r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
       for (std::size_t q : nb) {
-        if (counted[q] || g.state[q] != kSeen) continue;
+        if (counted[q] || !valued(q)) continue;
         const double d = dev(q);
         if ((d > 0) == over && std::abs(d) > 0.5 * thr) {
           counted[q] = 1;
@@ -425,6 +456,10 @@ std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset, 
 // The developed area (m^2) of the cells counted as over- and underbreak.
 struct CountedArea {
   double over = 0, under = 0;
+  // Of the interpolated cells: per section their over- and underbreak area
+  // (m^2 of cross-section), and their sigma times their developed area.
+  std::vector<double> interpolated_over_m2, interpolated_under_m2;
+  double interpolation_sigma_over = 0, interpolation_sigma_under = 0;
 };
 
 // Each cross-section from its cells: the developed view's states and
@@ -439,6 +474,8 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
   std::size_t region_rays[3] = {0, 0, 0};
   for (const Ray& r : g.rays) ++region_rays[static_cast<int>(r.region)];
   CountedArea area;
+  area.interpolated_over_m2.assign(rows, 0.0);
+  area.interpolated_under_m2.assign(rows, 0.0);
   for (std::size_t i = 0; i < rows; ++i) {
     const double c = g.chainage[i];
     const TunnelFrame f = alignment.frame_at(c);
@@ -450,12 +487,14 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
       const Ray& r = g.rays[j];
       const std::size_t k = i * cols + j;
       const std::uint8_t state = g.state[k];
-      view.state[k] = state == kSeen       ? kSeen
-                      : state == kExcluded ? kExcluded
-                      : state == kNotSeen  ? kNotSeen
-                                           : kLeftOut;
+      view.state[k] = state == kSeen           ? kSeen
+                      : state == kExcluded     ? kExcluded
+                      : state == kNotSeen      ? kNotSeen
+                      : state == kInterpolated ? kViewInterpolated
+                                               : kLeftOut;
       if (state == kExcluded) ++excluded_rays;
-      if (state != kSeen) continue;
+      if (state != kSeen && state != kInterpolated) continue;
+      const bool interpolated = state == kInterpolated;
       const double nd = g.normal_dev[k] - offset;
       const double rd = g.ray_dev[k] - (r.cos_incidence > 0.2 ? offset / r.cos_incidence : offset);
       const double t = r.design + rd;
@@ -468,8 +507,10 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
       pos.angle = r.angle;
       pos.local = origin + t * dir;
       pos.survey = alignment.to_survey(pos.local);
-      ++seen_rays;
-      ++region_seen[static_cast<int>(r.region)];
+      if (!interpolated) {
+        ++seen_rays;
+        ++region_seen[static_cast<int>(r.region)];
+      }
       // The reconstruction's noise, not counted.
       if (!counted[k]) continue;
       // Polar area between the design line and the surface, exact for the
@@ -481,6 +522,19 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
       } else {
         sec.underbreak_area_m2 -= a;
         area.under += g.cell_s * g.cell_c;
+      }
+      if (interpolated) {
+        // Its part of the volumes and its own uncertainty; the largest
+        // breaks are measured ones (an interpolation lies between them).
+        const double sigma_area = g.interpolation_sigma[k] * g.cell_s * g.cell_c;
+        if (a > 0) {
+          area.interpolated_over_m2[i] += a;
+          area.interpolation_sigma_over += sigma_area;
+        } else {
+          area.interpolated_under_m2[i] -= a;
+          area.interpolation_sigma_under += sigma_area;
+        }
+        continue;
       }
       sec.max_overbreak_m = std::max(sec.max_overbreak_m, nd);
       sec.max_underbreak_m = std::max(sec.max_underbreak_m, -nd);
@@ -552,6 +606,12 @@ void tell_the_geologist(ProfileDeviation& out, const DeviationOptions& options, 
                    " below the invert (wall or roof rays that met the surface below it, floor "
                    "rays more than " +
                    format_fixed(options.max_invert_overbreak_m, 2) + " m below the design)";
+  if (out.interpolated_fraction > 0)
+    out.message += "; " + format_fixed(100 * out.interpolated_fraction, 1) +
+                   " % of the outline interpolated across holes of the 3D image up to " +
+                   format_fixed(options.max_interpolated_hole_m, 2) + " m wide (" +
+                   format_fixed(out.interpolated_overbreak_m3, 3) + " m³ of the overbreak, " +
+                   format_fixed(out.interpolated_underbreak_m3, 3) + " m³ of the underbreak)";
   if (out.noise_threshold_m > 0)
     out.message += "; deviations within " + format_fixed(1000 * out.noise_threshold_m, 1) +
                    " mm (" + format_fixed(options.noise_sigmas, 0) +
@@ -610,6 +670,8 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
   view.state.assign(rows * cols, kNotSeen);
   std::vector<ProfilePosition> position(rows * cols);
   out.sections.resize(rows);
+  const std::size_t interpolated = interpolate_holes(g, options);
+  out.max_interpolated_hole_m = options.max_interpolated_hole_m;
   const std::vector<std::uint8_t> counted = counted_cells(g, offset, out.noise_threshold_m);
   const CountedArea counted_area = measure_sections(g, alignment, offset, counted, out, position);
   out.rays_cast = g.all_rows * cols * g.n * g.n;
@@ -627,15 +689,24 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
         0.5 * (out.sections[i].overbreak_area_m2 + out.sections[i + 1].overbreak_area_m2) * g.dc;
     out.underbreak_volume_m3 +=
         0.5 * (out.sections[i].underbreak_area_m2 + out.sections[i + 1].underbreak_area_m2) * g.dc;
+    out.interpolated_overbreak_m3 +=
+        0.5 * (counted_area.interpolated_over_m2[i] + counted_area.interpolated_over_m2[i + 1]) *
+        g.dc;
+    out.interpolated_underbreak_m3 +=
+        0.5 * (counted_area.interpolated_under_m2[i] + counted_area.interpolated_under_m2[i + 1]) *
+        g.dc;
   }
   if (options.depth_sigma_m > 0) {
     const double sigma = options.depth_sigma_m + out.lining_offset.standard_error_m;
-    out.overbreak_volume_sigma_m3 = sigma * counted_area.over;
-    out.underbreak_volume_sigma_m3 = sigma * counted_area.under;
+    out.overbreak_volume_sigma_m3 =
+        sigma * counted_area.over + counted_area.interpolation_sigma_over;
+    out.underbreak_volume_sigma_m3 =
+        sigma * counted_area.under + counted_area.interpolation_sigma_under;
     out.cell_sigma_m = options.depth_sigma_m;
   }
   out.seen_fraction = static_cast<double>(seen) / static_cast<double>(rows * cols);
   out.excluded_fraction = static_cast<double>(excluded) / static_cast<double>(rows * cols);
+  out.interpolated_fraction = static_cast<double>(interpolated) / static_cast<double>(rows * cols);
   out.beyond_tolerance =
       patches_of(out, options.underbreak_tolerance_m, g.cell_s, g.cell_c, position);
   tell_the_geologist(out, options, seen, excluded, clipped);

@@ -86,6 +86,16 @@ struct DeviationOptions {
   // issue 38: 1.8 m below the floor was counted as the round's largest
   // overbreak), not rock: it is left out as below the invert, and said.
   double max_invert_overbreak_m = 0.5;
+  // Unseen cells inside the measured lining (lining_interpolation.h): a hole
+  // of the 3D image no wider than this (m of developed surface, along the
+  // outline or the chainage) between measured cells is filled by
+  // interpolating them, counted in the volumes with its share and its
+  // uncertainty said; a wider hole stays unseen. 0.5 m: two sections at the
+  // standard spacing, half the width of the smallest break a round's
+  // blasting leaves that matters for its volume (a break narrower than the
+  // hole that hides it wholly is missed, and its volume is within the
+  // uncertainty stated). 0 = never.
+  double max_interpolated_hole_m = 0.5;
 };
 
 // The options of a preset (the knobs beside their component, issue 37):
@@ -148,7 +158,9 @@ struct UnderbreakPatch {
 // length (column j at s[j]); value = normal deviation (m, + over; less the
 // lining's offset when that was removed), NaN where not seen, excluded, left
 // out or out of reach. `state` says which (0 seen, 1 not seen, 2 excluded as
-// not rock, 3 left out: off any plausible lining or below the invert).
+// not rock, 3 left out: off any plausible lining or below the invert,
+// 4 interpolated from measured neighbours: its deviation is the
+// interpolation's).
 struct DevelopedView {
   std::vector<double> chainage, s;
   std::vector<float> deviation_m;  // row-major, chainage.size() x s.size()
@@ -171,8 +183,13 @@ struct ProfileDeviation {
   // Over the round, trapezoidal in chainage over the sections (the unseen
   // parts contribute nothing: read with seen_fraction).
   double overbreak_volume_m3 = 0, underbreak_volume_m3 = 0;
-  double seen_fraction = 0;      // of the developed view's cells
-  double excluded_fraction = 0;  // cells excluded as not rock
+  double seen_fraction = 0;  // of the developed view's cells, measured
+  // Of the developed view's cells, interpolated across a hole of the 3D
+  // image (max_interpolated_hole_m); their part of the volumes.
+  double interpolated_fraction = 0;
+  double interpolated_overbreak_m3 = 0, interpolated_underbreak_m3 = 0;
+  double max_interpolated_hole_m = 0;  // the bound applied (options)
+  double excluded_fraction = 0;        // cells excluded as not rock
   bool has_underbreak = false;
   ProfilePosition max_underbreak;  // deepest normal underbreak (valid if has_underbreak)
   double max_underbreak_m = 0;
@@ -200,7 +217,8 @@ struct ProfileDeviation {
   double max_invert_overbreak_m = 0;  // the bound applied (options)
   std::vector<SectionsLeftOut> sections_left_out;
   // One sigma of the volumes (the depth sigma and the offset's standard
-  // error over the counted area, taken as fully correlated) and of a single
+  // error over the counted area, and each interpolated cell's own sigma
+  // over its area, taken as fully correlated) and of a single measured
   // cell's deviation; absent when no depth sigma was stated.
   std::optional<double> overbreak_volume_sigma_m3, underbreak_volume_sigma_m3, cell_sigma_m;
   // Deepest first. A patch's area is that of its cells on the developed

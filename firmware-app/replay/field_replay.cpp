@@ -408,7 +408,7 @@ ReplayOutcome replay_into_project(const ReplayRequest& request,
                                   field_replay_phases::ReplaySource& source, Progress& progress) {
   using namespace field_replay_phases;
   ReplayOutcome out;
-  const photogrammetry::ReconstructionPreset preset =
+  photogrammetry::ReconstructionPreset preset =
       analysis::preset_options(source.preset).reconstruction;
 
   progress.step("capture", 0.0);
@@ -430,6 +430,10 @@ ReplayOutcome replay_into_project(const ReplayRequest& request,
   storage::ProjectStore store = storage::ProjectStore::open_or_create(request.project, info);
   if (store.read_only())
     throw InputError(request.project, "cannot replay into it: " + store.read_only_reason());
+  // A tunnel round's 3D image is measured against the tunnel's design: its
+  // lining, seen along the drive, is matched for it (preset.h).
+  preset.lining_along_the_drive =
+      (source.scene && source.scene->tunnel) || store.load_tunnel().has_value();
   // A folder without camera.json: its camera's calibration from the
   // project's library, chosen before the visit begins (a refusal stores
   // nothing).

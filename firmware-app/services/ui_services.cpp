@@ -50,7 +50,10 @@ storage::RecordId StoreReconstructionRunner::reconstruct(const fs::path& project
   photogrammetry::RegistrationSources sources;
   if (const auto it = capture.settings.find("range_pole_m"); it != capture.settings.end())
     sources.range_pole_m = std::stod(it->second);
-  const auto preset = analysis::preset_options(chosen).reconstruction;
+  auto preset = analysis::preset_options(chosen).reconstruction;
+  // In a tunnel every visit is a round measured against the design: its
+  // lining, seen along the drive, is matched for it (preset.h).
+  preset.lining_along_the_drive = store.load_tunnel().has_value();
   auto rec = photogrammetry::reconstruct(left, right, k, k, preset, sources, progress);
   // A further pair of a visit that has its 3D image already (the left and
   // right pairs of a face beside the middle one, issue 45) is tied to that

@@ -60,6 +60,13 @@ std::string visit_profile_json(const VisitProfile& v) {
   j["underbreak_volume_m3"] = known(round_to(d.underbreak_volume_m3, 0.001));
   j["seen_fraction"] = round_to(d.seen_fraction, 0.001);
   j["excluded_fraction"] = round_to(d.excluded_fraction, 0.001);
+  // Issue 38: the cells filled across holes of the 3D image from their
+  // measured neighbours, and their part of the volumes (included above).
+  j["interpolated"] = {
+      {"fraction", round_to(d.interpolated_fraction, 0.001)},
+      {"overbreak_volume_m3", known(round_to(d.interpolated_overbreak_m3, 0.001))},
+      {"underbreak_volume_m3", known(round_to(d.interpolated_underbreak_m3, 0.001))},
+      {"max_hole_m", round_to(d.max_interpolated_hole_m, 0.001)}};
   j["excluded_vertices_range_pole"] = v.pole_vertices;
   j["max_overbreak_m"] = known(round_to(d.max_overbreak_m, 0.001));
   if (measured && d.max_overbreak_m > 0) j["max_overbreak_at"] = position(d.max_overbreak);

@@ -76,7 +76,7 @@ void draw_developed_view_cells(cv::Mat& img, cv::Point at, int w, int h,
       cv::Scalar colour = kNotSeen;
       if (state == 2)
         colour = kNotRock;
-      else if (state == 0 && std::isfinite(d))
+      else if ((state == 0 || state == 4) && std::isfinite(d))
         colour = deviation_colour(d / extent);
       cv::rectangle(img, {x0, y0}, {x1 - 1, y1 - 1}, colour, cv::FILLED);
       // Not seen, or left out (off any plausible lining, below the invert):
@@ -85,6 +85,11 @@ void draw_developed_view_cells(cv::Mat& img, cv::Point at, int w, int h,
         for (int y = y0; y < y1; ++y)
           for (int x = x0; x < x1; ++x)
             if ((x + y) % 8 == 0) img.at<cv::Vec3b>(y, x) = {150, 150, 150};
+      // Interpolated across a hole of the 3D image: its colour, dotted.
+      if (state == 4)
+        for (int y = y0; y < y1; y += 4)
+          for (int x = x0 + (y / 4) % 2 * 2; x < x1; x += 4)
+            img.at<cv::Vec3b>(y, x) = {150, 150, 150};
       if (state == 0 && std::isfinite(d) && d < -dev.underbreak_tolerance_m)
         cv::rectangle(beyond, {x0 - left, y0 - top}, {x1 - 1 - left, y1 - 1 - top}, 255,
                       cv::FILLED);

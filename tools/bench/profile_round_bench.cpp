@@ -6,7 +6,12 @@
 //   and the 3D image read from the project, the round found, the mesh's
 //   ray caster built, the rays cast), at each preset's section and ray
 //   spacing (0 fast, 1 standard, 2 precise);
-// - BM_ProfileRays/preset: the rays alone, on a caster built once.
+// - BM_ProfileRays/preset: the rays alone, on a caster built once;
+// - BM_LiningPair/lining: the heading's pair reconstructed at standard as a
+//   face (0) and as a tunnel round (1: the pair padded and matched again by
+//   slanted passes, preset.h's lining_along_the_drive, issue 38): the CPU
+//   the lining's matching adds to a pair; counters: vertices of the 3D
+//   image.
 // Counters: rays cast, cells of the developed view, the share of them seen,
 // the triangles, the volumes (so a change of cost can be read beside a
 // change of result).
@@ -17,9 +22,11 @@
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "core/analysis/preset_options.h"
 #include "core/common/progress.h"
+#include "core/photogrammetry/reconstruction/reconstruction.h"
 #include "firmware-app/replay/field_replay.h"
 #include "firmware-app/tunnel/visit_profile.h"
 #include "firmware-app/tunnel/visit_surface.h"
@@ -108,6 +115,34 @@ void BM_ProfileRays(benchmark::State& state) {
   count(state, d);
 }
 BENCHMARK(BM_ProfileRays)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_LiningPair(benchmark::State& state) {
+  const Replayed& r = sample_round();
+  storage::OpenOptions read;
+  read.read_only = true;
+  storage::ProjectStore store = storage::ProjectStore::open(r.project, read);
+  const auto captures = store.list_captures(r.visit);
+  const storage::Capture capture = store.load_capture(captures.front().id);
+  const auto k = store.load_calibration(*capture.calibration_id).intrinsics;
+  const cv::Mat left = cv::imdecode(capture.left.bytes, cv::IMREAD_COLOR);
+  const cv::Mat right = cv::imdecode(capture.right.bytes, cv::IMREAD_COLOR);
+  auto preset = analysis::preset_options(Preset::standard).reconstruction;
+  preset.lining_along_the_drive = state.range(0) != 0;
+  photogrammetry::ReconstructionResult rec;
+  for (auto _ : state) {
+    NoProgress quiet;
+    rec = photogrammetry::reconstruct(left, right, k, k, preset, {}, quiet);
+    benchmark::DoNotOptimize(rec.mesh.vertices.data());
+  }
+  state.counters["vertices"] = static_cast<double>(rec.mesh.size());
+  state.counters["width_px"] = left.cols;
+}
+BENCHMARK(BM_LiningPair)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(2)
+    ->MeasureProcessCPUTime();
 
 }  // namespace
 

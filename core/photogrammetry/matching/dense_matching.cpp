@@ -11,6 +11,7 @@
 #include "core/photogrammetry/camera/camera_cv.h"
 #include "core/photogrammetry/matching/disparity_holes.h"
 #include "core/photogrammetry/matching/disparity_terraces.h"
+#include "core/photogrammetry/matching/slanted_passes.h"
 #include "core/photogrammetry/matching/texture_mask.h"
 
 namespace rockface::photogrammetry {
@@ -33,17 +34,11 @@ cv::Mat sgbm_disparity(const cv::Mat& left, const cv::Mat& right, const Disparit
   return disparity;
 }
 
-}  // namespace
-
-DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const DisparityRange& range,
-                             const ReconstructionPreset& preset, Progress& progress,
-                             const cv::Mat& texture_left) {
-  if (left.size() != right.size() || left.type() != right.type())
-    throw InputError("rectified pair", "left and right differ in size or type");
-  if (range.num_disparities <= 0 || range.num_disparities % 16 != 0)
-    throw InputError("disparity range",
-                     "the number of disparities must be a positive multiple of 16");
-
+// One pass: SGBM both ways, checked, cleaned, its terraces smoothed and its
+// small holes filled.
+DisparityMap match_pass(const cv::Mat& left, const cv::Mat& right, const DisparityRange& range,
+                        const ReconstructionPreset& preset, Progress& progress,
+                        const cv::Mat& texture_left) {
   progress.step("dense matching: left", 0.0);
   const cv::Mat disp_left = sgbm_disparity(left, right, range, preset);
   progress.step("dense matching: right", 0.45);
@@ -114,6 +109,68 @@ DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const Di
       matched ? static_cast<double>(rejected) / static_cast<double>(matched) : 0;
   out.untextured_fraction =
       matched ? static_cast<double>(untextured) / static_cast<double>(matched) : 0;
+  return out;
+}
+
+// One pass over the pair padded with black columns, cropped after: SGBM
+// leaves the first min + num columns of the left image unmatched (it cannot
+// try every disparity there) and the last -min, yet a pixel whose true
+// disparity is smaller than its column has its match in the right image
+// (a tunnel's near wall at the frame's edge). The black border has no
+// texture: nothing is measured on it (texture_mask.h).
+DisparityMap match_padded(const cv::Mat& left, const cv::Mat& right, const DisparityRange& range,
+                          const ReconstructionPreset& preset, Progress& progress,
+                          const cv::Mat& texture_left) {
+  const int before = std::max(0, range.min_disparity + range.num_disparities);
+  const int after = std::max(0, -range.min_disparity);
+  auto pad = [&](const cv::Mat& m) {
+    if (m.empty()) return m;
+    cv::Mat p;
+    cv::copyMakeBorder(m, p, 0, 0, before, after, cv::BORDER_CONSTANT, cv::Scalar::all(0));
+    return p;
+  };
+  DisparityMap out = match_pass(pad(left), pad(right), range, preset, progress, pad(texture_left));
+  const double padded = static_cast<double>(out.disparity.total());
+  out.disparity = out.disparity(cv::Rect(before, 0, left.cols, left.rows)).clone();
+  // Of the image's pixels: what was measured lies inside it.
+  const double ratio = padded / static_cast<double>(out.disparity.total());
+  out.valid_fraction *= ratio;
+  out.filled_fraction *= ratio;
+  out.terraced_fraction *= ratio;
+  return out;
+}
+
+}  // namespace
+
+DisparityMap match_rectified(const cv::Mat& left, const cv::Mat& right, const DisparityRange& range,
+                             const ReconstructionPreset& preset, Progress& progress,
+                             const cv::Mat& texture_left) {
+  if (left.size() != right.size() || left.type() != right.type())
+    throw InputError("rectified pair", "left and right differ in size or type");
+  if (range.num_disparities <= 0 || range.num_disparities % 16 != 0)
+    throw InputError("disparity range",
+                     "the number of disparities must be a positive multiple of 16");
+  if (!preset.lining_along_the_drive)
+    return match_pass(left, right, range, preset, progress, texture_left);
+  // A tunnel's lining seen along the drive (issue 38; only where the 3D
+  // image is measured against a tunnel design, so a face costs nothing
+  // more): the pair padded for SGBM's edge columns, the near walls, and
+  // slanted passes for the walls, invert and roof seen at a grazing angle
+  // (slanted_passes.h), which fill the first pass's holes and move its
+  // terraces onto their slope (3 px at most). The fractions stay the first
+  // pass's: the accuracy prediction's input.
+  DisparityMap out = match_padded(left, right, range, preset, progress, texture_left);
+  NoProgress quiet;
+  SlantedPassOptions slanted;
+  slanted.max_disparities = preset.max_disparities;
+  const SlantedResult s = match_slanted(
+      right, out.disparity, slanted, [&](const cv::Mat& warped, const SlantedRange& r) {
+        progress.step("dense matching: slanted surfaces", 0.95);
+        return match_padded(left, warped, {r.min_disparity, r.num_disparities}, preset, quiet,
+                            texture_left)
+            .disparity;
+      });
+  out.disparity = s.disparity;
   progress.step("dense matching", 1.0);
   return out;
 }

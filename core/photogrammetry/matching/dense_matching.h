@@ -5,7 +5,9 @@
 // (a second SGBM on the mirrored pair gives the right disparity), cleaned
 // of untextured pixels (texture_mask.h) and speckles (cv::filterSpeckles),
 // its terraces smoothed into their slope (disparity_terraces.h) and its
-// small holes filled from their rims (disparity_holes.h).
+// small holes filled from their rims (disparity_holes.h). A tunnel's lining
+// (preset.lining_along_the_drive) is matched on the padded pair and again by
+// slanted passes (slanted_passes.h).
 #include <vector>
 
 #include <Eigen/Core>

@@ -56,6 +56,14 @@ struct ReconstructionPreset {
   int terrace_max_tread_px = 16;
   double terrace_max_riser_px = 6.0;
 
+  // A tunnel's lining seen along the drive (issue 38): the pair padded for
+  // SGBM's edge columns and matched again where walls, invert or roof stand
+  // at a grazing angle (matching/slanted_passes.h). No preset sets it: the
+  // caller does where the visit's 3D image is measured against a tunnel
+  // design (a replayed tunnel scene, a project with a tunnel), so a face's
+  // reconstruction costs nothing more and is unchanged.
+  bool lining_along_the_drive = false;
+
   // Expected disparity precision after sub-pixel interpolation (pixels at the
   // dense scale), used for the predicted depth precision sigma_Z.
   double disparity_sigma_px = 0.3;

@@ -581,6 +581,80 @@ TEST(ProfileDeviation, SectionsThatMeetNothingAtTheEndsAreLeftOutAndSaid) {
   EXPECT_NEAR(d.overbreak_volume_m3, kPi * (faceted(3.1) * faceted(3.1) - 9) * 6, 1e-8);
 }
 
+// Issue 38: a hole of the 3D image inside the measured lining is filled
+// from its measured neighbours when it is no wider than the stated limit,
+// counted in the volume with its share and uncertainty said; a wider one
+// stays unseen. The lining: a tube whose overbreak grows linearly along the
+// chainage (radius 3.1 + 0.01 c m on a 3 m circle), each 0.1 m ring of
+// facets at its middle's radius, the sections through those middles; the
+// hole spans 0.9 m of outline (wider than the limit along it), so only the
+// chainage brackets it. Linear interpolation along the chainage is exact on
+// this lining: the truth is the whole tube's volume.
+Mesh growing_tube_with_hole(const Alignment& al, double hole_from, double hole_to) {
+  Mesh m;
+  add_tube(
+      m, al, {0, 0}, steps(-0.05, 12.05, 0.1), [](double, double c) { return 3.1 + 0.01 * c; },
+      [&](double t, double c) { return !(t >= 0 && t < 0.3 && c > hole_from && c < hole_to); });
+  return m;
+}
+
+double growing_tube_volume(double from, double to, double spacing) {
+  // Trapezoidal over the sections, each a whole faceted ring (as
+  // FullRingOfOverbreakIsPiTimesTheDifferenceOfSquares).
+  double v = 0;
+  const int n = static_cast<int>(std::lround((to - from) / spacing));
+  for (int k = 0; k < n; ++k) {
+    const double a = faceted(3.1 + 0.01 * (from + k * spacing));
+    const double b = faceted(3.1 + 0.01 * (from + (k + 1) * spacing));
+    v += 0.5 * kPi * ((a * a - 9) + (b * b - 9)) * spacing;
+  }
+  return v;
+}
+
+TEST(ProfileDeviation, AHoleWithinTheLimitIsInterpolatedAndAWiderOneStaysUnseen) {
+  const Alignment al = north_tunnel();
+  DeviationOptions o = one_ray_per_facet(3.0, 2, 8, 0.1);
+  ASSERT_EQ(o.max_interpolated_hole_m, 0.5);  // the stated limit
+  // Three sections (5.1-5.3) unseen over 0.9 m of outline: 0.3 m along the
+  // chainage, within the limit.
+  const ProfileDeviation d =
+      profile_deviation(growing_tube_with_hole(al, 5.05, 5.35).input(), al, circle_profile(3.0), o);
+  ASSERT_EQ(d.sections.size(), 61u);
+  // Rounding of ~10^5 polar areas of metre-sized radii: far below 1e-8 m^3.
+  EXPECT_NEAR(d.overbreak_volume_m3, growing_tube_volume(2, 8, 0.1), 1e-8);
+  EXPECT_GT(d.interpolated_fraction, 0);
+  EXPECT_NEAR(d.seen_fraction + d.interpolated_fraction, 1, 1e-12);
+  // The hole's share: its cells' part of the volume, 3 of 61 sections over
+  // a fraction of the outline, between 0 and 3 / 60 of the whole.
+  EXPECT_GT(d.interpolated_overbreak_m3, 0);
+  EXPECT_LT(d.interpolated_overbreak_m3, 3.0 / 60 * d.overbreak_volume_m3);
+  EXPECT_NE(d.message.find("interpolated across holes"), std::string::npos) << d.message;
+  // Its cells are drawn as interpolated, their deviation the lining's.
+  const std::size_t cols = d.view.s.size();
+  std::size_t interpolated = 0;
+  for (std::size_t k = 0; k < d.view.state.size(); ++k)
+    if (d.view.state[k] == 4) {
+      ++interpolated;
+      const double c = d.view.chainage[k / cols];
+      EXPECT_NEAR(d.view.deviation_m[k], faceted(3.1 + 0.01 * c) - 3, 1e-6) << c;  // float
+    }
+  EXPECT_NEAR(static_cast<double>(interpolated) / static_cast<double>(d.view.state.size()),
+              d.interpolated_fraction, 1e-12);
+
+  // Seven sections (5.1-5.7, 0.7 m) unseen: wider than the limit both ways.
+  const ProfileDeviation w =
+      profile_deviation(growing_tube_with_hole(al, 5.05, 5.75).input(), al, circle_profile(3.0), o);
+  EXPECT_EQ(w.interpolated_fraction, 0);
+  EXPECT_LT(w.overbreak_volume_m3, growing_tube_volume(2, 8, 0.1) - 1e-3);
+  for (std::size_t k = 0; k < w.view.state.size(); ++k) EXPECT_NE(w.view.state[k], 4);
+  // Never interpolated when the limit is 0.
+  o.max_interpolated_hole_m = 0;
+  EXPECT_EQ(
+      profile_deviation(growing_tube_with_hole(al, 5.05, 5.35).input(), al, circle_profile(3.0), o)
+          .interpolated_fraction,
+      0);
+}
+
 // cuts the round into more sections and casts more rays, and keeps the
 // other options (tolerances, caps) of a default DeviationOptions.
 TEST(DeviationOptionsOfPreset, FinerPresetsSampleMoreDenselyAndKeepTheRest) {

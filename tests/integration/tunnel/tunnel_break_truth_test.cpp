@@ -16,6 +16,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -245,19 +246,70 @@ double developed_distance(double c1, double s1, double c2, double s2, double per
   return std::hypot(c1 - c2, ds);
 }
 
-// NOT YET MET (disabled, issue 38 left open): measured on 2026-11-29 at the
-// standard preset with the disparity map's small holes filled, the sample
-// heading's largest over- and underbreak are within 3 cm and 0.5 m (0.355 m
-// at 109.98 / 5.97 for 0.35 at 110.1 / 6; 0.112 m at 109.98 / 15.75 for
-// 0.12 at 110.2 / 15.7), but its volumes are not within 10 % (overbreak
-// 0.58 for 0.76 m3: the 3D image covers 46 % of the lining the photographs
-// both see, the coverage tests below; underbreak 0.143 for 0.129 m3, +11 %);
-// on the D heading the largest overbreak is 0.255 m at 57.70 / 3.87 for 0.30
-// at 57.5 / 3.9 (before the holes were filled a sheet 2.2 m below the left
-// invert was counted), overbreak 0.37 for 0.49 m3, underbreak 0.33 for
-// 0.09 m3, the largest underbreak 0.247 m at 59.39 / 6.26 for 0.10 at
-// 58.1 / 14.05 (the terraces of dense matching on the grazing walls read as
-// underbreak). Run with --gtest_also_run_disabled_tests to see the figures.
+// The developed view's cells against the scene's own deviation at their
+// place (camera/synthetic_tunnel's closed description): how far the
+// measured (and the interpolated) cells lie from the truth, and where the
+// counted underbreak lies on lining the scene does not break inward: what
+// a spurious underbreak is made of. Printed, for the figures in the docs.
+void print_cells_against_truth(const Heading& h, const tunnel::ProfileDeviation& d) {
+  const storage::Scene scene = storage::load_scene(h.scene_file.string());
+  const camera::RenderedTunnelSpec spec = rendered_tunnel_spec(*scene.tunnel->render);
+  const auto& v = d.view;
+  const std::size_t cols = v.s.size();
+  struct Tally {
+    std::size_t cells = 0;
+    double sum = 0, sq = 0;
+  } measured, interpolated;
+  struct Worst {
+    double error = 0, c = 0, s = 0, value = 0, truth = 0;
+    int state = 0;
+  };
+  std::vector<Worst> worst;
+  for (std::size_t k = 0; k < v.state.size(); ++k) {
+    if (v.state[k] != 0 && v.state[k] != 4) continue;
+    const double c = v.chainage[k / cols], s = v.s[k % cols];
+    const double truth = camera::rendered_deviation(spec, c, s), e = v.deviation_m[k] - truth;
+    Tally& t = v.state[k] == 0 ? measured : interpolated;
+    ++t.cells;
+    t.sum += e;
+    t.sq += e * e;
+    worst.push_back({e, c, s, v.deviation_m[k], truth, v.state[k]});
+  }
+  for (const auto* t : {&measured, &interpolated})
+    if (t->cells > 0)
+      std::cout << "  " << (t == &measured ? "measured" : "interpolated") << " cells " << t->cells
+                << ": error against the scene mean " << 1000 * t->sum / t->cells << " mm, rms "
+                << 1000 * std::sqrt(t->sq / t->cells) << " mm\n";
+  std::sort(worst.begin(), worst.end(),
+            [](const Worst& a, const Worst& b) { return a.error < b.error; });
+  std::cout << "  the cells most inside the truth (chainage / s: measured, truth, state):";
+  for (std::size_t i = 0; i < std::min<std::size_t>(12, worst.size()); ++i)
+    std::cout << " " << worst[i].c << "/" << worst[i].s << ": " << worst[i].value << ", "
+              << worst[i].truth << ", " << worst[i].state << ";";
+  std::cout << "\n";
+}
+
+// NOT YET MET (disabled, issue 38 left open): measured on 2026-11-29
+// (fifth session) at the standard preset with the tunnel round's lining
+// matched by the padded pair and the slanted passes (preset.h
+// lining_along_the_drive) and holes up to 0.5 m interpolated: the sample's
+// overbreak 0.792 m3 for 0.759 (+4 %, within 10 %), its largest over- and
+// underbreak within 3 cm and 0.5 m (0.333 m at 110.01 / 5.97 for 0.35 at
+// 110.1 / 6; 0.108 m at 110.25 / 15.80 for 0.12 at 110.2 / 15.7), but its
+// underbreak 0.392 m3 for 0.129; the D heading's overbreak 0.556 for 0.490
+// (+13 %), largest 0.287 m at 57.51 / 3.91 (0.30 at 57.5 / 3.9), underbreak
+// 0.457 for 0.094, the largest 0.146 m at 59.45 / 6.31 where the scene has
+// none (0.10 at 58.1 / 14.05). What the spurious underbreak is, read from
+// the cells against the scene (print_cells_against_truth): the measured
+// cells lie 18.2 mm rms from the truth on the sample and 14.2 mm on the D
+// heading (the walls 22 / 13 mm along the ray), while the noise threshold is
+// 2 sigma of the precision predicted at the face's depth (23.5 / 16.2 mm):
+// the grazing walls' error is larger than the stated precision, so their
+// noise passes the threshold and its flanks are counted; and on the D
+// heading a cluster of cells 0.10-0.15 m inside a lining the scene leaves
+// intact, chainage 58.7-60.4, s 2.9-7.3 (the right wall's top and the roof's
+// shoulder, around the range pole at 60 / offset 1.2), not yet explained.
+// Run with --gtest_also_run_disabled_tests to see the figures.
 class TunnelBreakTruth : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -294,7 +346,13 @@ class TunnelBreakTruth : public ::testing::Test {
               << " / " << t.over_s << "), largest underbreak " << d.max_underbreak_m << " m at "
               << d.max_underbreak.chainage << " / " << d.max_underbreak.s << " (true "
               << t.max_under_m << " at " << t.under_chainage << " / " << t.under_s << ")\n"
-              << "  " << d.message << "\n";
+              << "  " << d.message << "\n"
+              << "  measured " << d.seen_fraction << ", interpolated " << d.interpolated_fraction
+              << " of the cells; overbreak +- " << d.overbreak_volume_sigma_m3.value_or(-1)
+              << " (interpolated " << d.interpolated_overbreak_m3 << "), underbreak +- "
+              << d.underbreak_volume_sigma_m3.value_or(-1) << " (interpolated "
+              << d.interpolated_underbreak_m3 << ")\n";
+    print_cells_against_truth(h, d);
     // The truth is a real break in the round (else the test says nothing).
     ASSERT_GT(t.over_m3, 0.1) << name;
     ASSERT_GT(t.under_m3, 0.02) << name;
@@ -346,18 +404,16 @@ class TunnelBreakTruth : public ::testing::Test {
 // lining they see. 90 %: the range pole and its targets hide ~2 % of it,
 // the rectified images' border (alpha 0) and the SGBM window's margin
 // ~3-5 % at the frame's edge.
-// NOT YET MET (disabled): on 2026-11-29 at standard the sample's image
-// covers 46 % (35 % before small holes of the disparity map were filled:
-// invert 46 %, walls 33 %, roof 54 %), the D heading's 26 % (17 %). What
-// loses the rest, seen on the sample's disparity map: (1) semi-global
-// matching follows a wall or invert seen at a grazing angle (0.5-0.8 px of
-// disparity per px) as terraces, flat runs and 3-5 px steps (the penalty of
-// one jump, P2 = 4 P1, is cheaper than the 1 px steps), and the lattice
-// mesh cuts every step (max_jump_px 1.5): with P1 2 / P2 64 (and (2)'s
-// padding) the sample covers 59 % and the D heading 40 %; (2) SGBM leaves the first min + num
-// and the last -min columns of the rectified image unmatched, the near
-// walls (padding the pair there gave +3 %, but it maps the stepped face's
-// partly-seen right strip without a facet: FacetsOnReconstruction).
+// NOT YET MET (disabled): on 2026-11-29 (fifth session) at standard, with
+// the tunnel round's lining matched by the padded pair and the slanted
+// passes (preset.h lining_along_the_drive), the sample's image covers
+// 74.2 % (invert 80 %, walls 72 %, roof 72 %; 46 % before), the D
+// heading's 65.2 % (invert 66 %, walls 60 %, roof 67 %; 26 % before). What
+// loses the rest (stop 55's prototype, docs/accuracy-cost.md): the
+// selection among the passes' candidates, the D heading's near walls
+// beyond the first pass's 256-disparity window, the far walls' 0.5 px for
+// 5 cm; and a sample covered needs its depth within 5 cm, which the walls'
+// 13-22 mm rms error mostly meets.
 TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsImageCoversTheLiningBothPhotographsSee) {
   expect_coverage(*sample_, "sample heading");
 }
