@@ -10,6 +10,7 @@
 #include "core/common/parallel.h"
 #include "core/common/units.h"
 #include "core/tunnel/lining_interpolation.h"
+#include "core/tunnel/lining_precision.h"
 #include "core/tunnel/lining_statistics.h"
 #include "core/tunnel/mesh_raycast.h"
 
@@ -267,6 +268,10 @@ struct DeviationCells {
   std::vector<std::uint8_t> state;
   std::vector<double> normal_dev, ray_dev, chainage;
   std::vector<double> interpolation_sigma;  // per cell, of the interpolated ones
+  // Per cell: the depth sigma predicted for it (lining_precision.h; the
+  // stated one for every cell when no pair was given) and its noise
+  // threshold (noise_sigmas of it).
+  std::vector<double> sigma, threshold;
 };
 
 DeviationCells cells_over(const DesignProfile& profile, const DeviationOptions& options, double lo,
@@ -299,8 +304,7 @@ DeviationCells cells_over(const DesignProfile& profile, const DeviationOptions& 
 // met more rock than not rock (the median of those that did); at the frayed
 // edge of a reconstruction a few rays are all there is.
 void cast_cell_rays(DeviationCells& g, const MeshRaycaster& caster, const Alignment& alignment,
-                    const std::vector<std::uint8_t>& masked, const DeviationOptions& options,
-                    double noise_threshold) {
+                    const std::vector<std::uint8_t>& masked, const DeviationOptions& options) {
   const std::size_t n = g.n, cols = g.cols, all_rows = g.all_rows;
   const Eigen::Vector2d centre = g.centre;
   parallel_for(all_rows, [&](std::size_t i) {
@@ -340,7 +344,7 @@ void cast_cell_rays(DeviationCells& g, const MeshRaycaster& caster, const Alignm
         const bool below = r.region == Region::floor
                                ? g.normal_dev[k] > options.max_invert_overbreak_m
                                : centre.y() + (r.design + g.ray_dev[k]) * std::sin(r.angle) <
-                                     g.invert_v - noise_threshold;
+                                     g.invert_v - g.threshold[k];
         if (below) g.state[k] = kBelowInvert;
       } else if (excluded > 0) {
         g.state[k] = kExcluded;
@@ -380,6 +384,8 @@ void trim_unmet_ends(DeviationCells& g, ProfileDeviation& out) {
   keep_rows(g.state, cols);
   keep_rows(g.normal_dev, cols);
   keep_rows(g.ray_dev, cols);
+  keep_rows(g.sigma, cols);
+  keep_rows(g.threshold, cols);
   keep_rows(g.chainage, 1);
 }
 
@@ -423,14 +429,14 @@ std::size_t interpolate_holes(DeviationCells& g, const DeviationOptions& options
 // break's flanks are not lost to the threshold, and noise that never
 // reaches it counts for nothing. Interpolated cells count as measured ones
 // do (they lie between measured cells).
-std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset, double thr) {
+std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset) {
   const std::size_t rows = g.rows, cols = g.cols;
   std::vector<std::uint8_t> counted(rows * cols, 0);
   auto dev = [&](std::size_t k) { return g.normal_dev[k] - offset; };
   auto valued = [&](std::size_t k) { return g.state[k] == kSeen || g.state[k] == kInterpolated; };
   std::vector<std::size_t> stack;
   for (std::size_t start = 0; start < rows * cols; ++start) {
-    if (counted[start] || !valued(start) || !(std::abs(dev(start)) > thr)) continue;
+    if (counted[start] || !valued(start) || !(std::abs(dev(start)) > g.threshold[start])) continue;
     const bool over = dev(start) > 0;
     counted[start] = 1;
     stack.assign(1, start);
@@ -443,7 +449,7 @@ std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset, 
       for (std::size_t q : nb) {
         if (counted[q] || !valued(q)) continue;
         const double d = dev(q);
-        if ((d > 0) == over && std::abs(d) > 0.5 * thr) {
+        if ((d > 0) == over && std::abs(d) > 0.5 * g.threshold[q]) {
           counted[q] = 1;
           stack.push_back(q);
         }
@@ -456,6 +462,8 @@ std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset, 
 // The developed area (m^2) of the cells counted as over- and underbreak.
 struct CountedArea {
   double over = 0, under = 0;
+  // The same weighted by each cell's predicted depth sigma (m^3).
+  double sigma_over = 0, sigma_under = 0;
   // Of the interpolated cells: per section their over- and underbreak area
   // (m^2 of cross-section), and their sigma times their developed area.
   std::vector<double> interpolated_over_m2, interpolated_under_m2;
@@ -519,9 +527,11 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
       if (a > 0) {
         sec.overbreak_area_m2 += a;
         area.over += g.cell_s * g.cell_c;
+        area.sigma_over += g.sigma[k] * g.cell_s * g.cell_c;
       } else {
         sec.underbreak_area_m2 -= a;
         area.under += g.cell_s * g.cell_c;
+        area.sigma_under += g.sigma[k] * g.cell_s * g.cell_c;
       }
       if (interpolated) {
         // Its part of the volumes and its own uncertainty; the largest
@@ -564,7 +574,8 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
 // What the geologist is told: the status and its message, with what the
 // figures leave out and why.
 void tell_the_geologist(ProfileDeviation& out, const DeviationOptions& options, std::size_t seen,
-                        std::size_t excluded, const std::string& clipped) {
+                        std::size_t excluded, const std::string& clipped,
+                        const CellPrecisionFigures* per_cell) {
   bool walls_or_roof = false;
   std::size_t thin = 0;
   for (const auto& s : out.sections) {
@@ -612,7 +623,16 @@ void tell_the_geologist(ProfileDeviation& out, const DeviationOptions& options, 
                    format_fixed(options.max_interpolated_hole_m, 2) + " m wide (" +
                    format_fixed(out.interpolated_overbreak_m3, 3) + " m³ of the overbreak, " +
                    format_fixed(out.interpolated_underbreak_m3, 3) + " m³ of the underbreak)";
-  if (out.noise_threshold_m > 0)
+  if (per_cell)
+    out.message += "; deviations within " + format_fixed(options.noise_sigmas, 0) +
+                   " sigma of each cell's predicted depth precision (from its distance to the "
+                   "cameras and its incidence: sigma " +
+                   format_fixed(1000 * per_cell->min_sigma_m, 1) + " to " +
+                   format_fixed(1000 * per_cell->max_sigma_m, 1) + " mm, median " +
+                   format_fixed(1000 * per_cell->median_sigma_m, 1) +
+                   " mm) are not counted, but for the flanks of a break beyond them down to half "
+                   "of that";
+  else if (out.noise_threshold_m > 0)
     out.message += "; deviations within " + format_fixed(1000 * out.noise_threshold_m, 1) +
                    " mm (" + format_fixed(options.noise_sigmas, 0) +
                    " sigma of the 3D image's stated depth precision) are not counted, "
@@ -631,9 +651,23 @@ void tell_the_geologist(ProfileDeviation& out, const DeviationOptions& options, 
 
 }  // namespace
 
-ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInput& surface,
-                                   const Alignment& alignment, const DesignProfile& profile,
-                                   const DeviationOptions& options) {
+namespace {
+
+// The median of the cells' values where `use` holds; 0 when none does.
+double median_where(const std::vector<double>& values, const std::vector<std::uint8_t>& state,
+                    bool (*use)(std::uint8_t)) {
+  std::vector<double> kept;
+  for (std::size_t k = 0; k < values.size(); ++k)
+    if (use(state[k])) kept.push_back(values[k]);
+  return kept.empty() ? 0.0 : median_of(kept);
+}
+
+// The round measured; with `precision`, each cell's noise threshold from its
+// own predicted sigma (lining_precision.h), and `extra` gets the figures.
+ProfileDeviation measure_round(const MeshRaycaster& caster, const SurfaceInput& surface,
+                               const Alignment& alignment, const DesignProfile& profile,
+                               const DeviationOptions& options, const LiningPrecision* precision,
+                               PreciseDeviation* extra) {
   check_deviation_input(surface, profile, options);
   ProfileDeviation out;
   out.underbreak_tolerance_m = options.underbreak_tolerance_m;
@@ -646,10 +680,27 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
   out.triangles = caster.triangle_count();
   const std::vector<std::uint8_t> masked = not_rock_triangles(surface);
   DeviationCells g = cells_over(profile, options, lo, hi);
-  out.noise_threshold_m = options.depth_sigma_m * options.noise_sigmas;
-  cast_cell_rays(g, caster, alignment, masked, options, out.noise_threshold_m);
+  const bool per_cell = precision && !precision->pairs.empty();
+  if (per_cell) {
+    for (std::size_t i = 0; i < g.all_rows; ++i)
+      g.chainage[i] = g.all_rows > 1 ? g.lo + g.dc * static_cast<double>(i) : g.lo;
+    std::vector<double> s(g.cols);
+    for (std::size_t j = 0; j < g.cols; ++j) s[j] = g.rays[j].s;
+    g.sigma = cell_sigmas(*precision, alignment, profile, g.chainage, s, options.depth_sigma_m);
+  } else {
+    g.sigma.assign(g.all_rows * g.cols, options.depth_sigma_m);
+  }
+  g.threshold.resize(g.sigma.size());
+  for (std::size_t k = 0; k < g.sigma.size(); ++k)
+    g.threshold[k] = options.noise_sigmas * g.sigma[k];
+  cast_cell_rays(g, caster, alignment, masked, options);
   trim_unmet_ends(g, out);
   const std::size_t rows = g.rows, cols = g.cols;
+  // One figure for what is said and for the checks that take one: the
+  // median measured cell's threshold (the stated one when every cell has it).
+  auto is_seen = [](std::uint8_t state) { return state == kSeen; };
+  out.noise_threshold_m = per_cell ? median_where(g.threshold, g.state, is_seen)
+                                   : options.depth_sigma_m * options.noise_sigmas;
   mark_off_lining(g, options, out.noise_threshold_m);
   // The lining's offset from the design as a whole.
   {
@@ -672,7 +723,7 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
   out.sections.resize(rows);
   const std::size_t interpolated = interpolate_holes(g, options);
   out.max_interpolated_hole_m = options.max_interpolated_hole_m;
-  const std::vector<std::uint8_t> counted = counted_cells(g, offset, out.noise_threshold_m);
+  const std::vector<std::uint8_t> counted = counted_cells(g, offset);
   const CountedArea counted_area = measure_sections(g, alignment, offset, counted, out, position);
   out.rays_cast = g.all_rows * cols * g.n * g.n;
 
@@ -696,20 +747,64 @@ ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInp
         0.5 * (counted_area.interpolated_under_m2[i] + counted_area.interpolated_under_m2[i + 1]) *
         g.dc;
   }
-  if (options.depth_sigma_m > 0) {
-    const double sigma = options.depth_sigma_m + out.lining_offset.standard_error_m;
+  if (options.depth_sigma_m > 0 || per_cell) {
+    // Each counted cell's sigma and the offset's standard error over its
+    // area, taken as fully correlated, and the interpolated cells' own.
+    const double se = out.lining_offset.standard_error_m;
     out.overbreak_volume_sigma_m3 =
-        sigma * counted_area.over + counted_area.interpolation_sigma_over;
+        counted_area.sigma_over + se * counted_area.over + counted_area.interpolation_sigma_over;
     out.underbreak_volume_sigma_m3 =
-        sigma * counted_area.under + counted_area.interpolation_sigma_under;
-    out.cell_sigma_m = options.depth_sigma_m;
+        counted_area.sigma_under + se * counted_area.under + counted_area.interpolation_sigma_under;
+    out.cell_sigma_m = per_cell ? median_where(g.sigma, g.state, is_seen) : options.depth_sigma_m;
+  }
+  std::optional<CellPrecisionFigures> figures;
+  if (per_cell) {
+    figures = CellPrecisionFigures{};
+    figures->model =
+        "each cell's own, from its distance and incidence to the pair that sees it best: "
+        "sqrt((sigma_d r Z cos i / (f B))^2 + (w Z |n.b| / (sqrt(12) f))^2)";
+    std::vector<double> valued;
+    for (std::size_t k = 0; k < rows * cols; ++k)
+      if (g.state[k] == kSeen || g.state[k] == kInterpolated) valued.push_back(g.sigma[k]);
+    if (!valued.empty()) {
+      figures->min_sigma_m = *std::min_element(valued.begin(), valued.end());
+      figures->max_sigma_m = *std::max_element(valued.begin(), valued.end());
+      figures->median_sigma_m = median_of(valued);
+    }
   }
   out.seen_fraction = static_cast<double>(seen) / static_cast<double>(rows * cols);
   out.excluded_fraction = static_cast<double>(excluded) / static_cast<double>(rows * cols);
   out.interpolated_fraction = static_cast<double>(interpolated) / static_cast<double>(rows * cols);
   out.beyond_tolerance =
       patches_of(out, options.underbreak_tolerance_m, g.cell_s, g.cell_c, position);
-  tell_the_geologist(out, options, seen, excluded, clipped);
+  tell_the_geologist(out, options, seen, excluded, clipped, figures ? &*figures : nullptr);
+  if (extra) {
+    extra->precision = figures;
+    extra->cell_sigma_m.assign(rows * cols, std::numeric_limits<float>::quiet_NaN());
+    for (std::size_t k = 0; k < rows * cols; ++k)
+      if (g.state[k] == kSeen || g.state[k] == kInterpolated)
+        extra->cell_sigma_m[k] = static_cast<float>(g.sigma[k]);
+  }
+  return out;
+}
+
+}  // namespace
+
+ProfileDeviation profile_deviation(const MeshRaycaster& caster, const SurfaceInput& surface,
+                                   const Alignment& alignment, const DesignProfile& profile,
+                                   const DeviationOptions& options) {
+  return measure_round(caster, surface, alignment, profile, options, nullptr, nullptr);
+}
+
+// Declared in lining_precision.h (the per-cell thresholds' entry point): it
+// is this file's computation with each cell's own sigma.
+PreciseDeviation profile_deviation_per_cell(const SurfaceInput& surface, const Alignment& alignment,
+                                            const DesignProfile& profile,
+                                            const DeviationOptions& options,
+                                            const LiningPrecision& precision) {
+  const MeshRaycaster caster(surface.vertices, surface.triangles);
+  PreciseDeviation out;
+  out.deviation = measure_round(caster, surface, alignment, profile, options, &precision, &out);
   return out;
 }
 

@@ -90,8 +90,13 @@ VisitProfile visit_profile(storage::ProjectStore& store, storage::RecordId visit
   options.underbreak_tolerance_m = out.tunnel.underbreak_tolerance_m;
   // The 3D images' own stated precision: deviations within it are noise.
   if (surface.depth_sigma_m) options.depth_sigma_m = *surface.depth_sigma_m;
-  out.deviation =
-      tunnel::profile_deviation(surface_input(surface), alignment, out.tunnel.profile, options);
+  // Each cell's threshold from its own distance to the cameras and its
+  // incidence (issue 38): the grazing walls are less precise than the face.
+  tunnel::PreciseDeviation measured = tunnel::profile_deviation_per_cell(
+      surface_input(surface), alignment, out.tunnel.profile, options, surface.precision);
+  out.deviation = std::move(measured.deviation);
+  out.cell_precision = std::move(measured.precision);
+  out.cell_sigma_m = std::move(measured.cell_sigma_m);
   return out;
 }
 

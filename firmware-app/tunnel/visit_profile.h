@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/common/preset.h"
+#include "core/tunnel/lining_precision.h"
 #include "core/tunnel/profile_deviation.h"
 #include "firmware-app/tunnel/round_start.h"
 #include "storage/project/project_store.h"
@@ -30,6 +31,12 @@ struct VisitProfile {
   double sense = 1;
   std::optional<double> previous_face;
   tunnel::ProfileDeviation deviation;
+  // Issue 38: each cell's noise threshold from its own predicted precision
+  // (lining_precision.h) when the models record their pairs' geometry: the
+  // figures (absent otherwise: the stated sigma holds for every cell), and
+  // each cell's sigma (row-major as deviation.view, NaN where no value).
+  std::optional<tunnel::CellPrecisionFigures> cell_precision;
+  std::vector<float> cell_sigma_m;
   std::size_t pole_vertices = 0;  // surface vertices not counted: the range pole
 };
 

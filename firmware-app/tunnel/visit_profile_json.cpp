@@ -78,6 +78,14 @@ std::string visit_profile_json(const VisitProfile& v) {
   j["underbreak_volume_sigma_m3"] = sigma(d.underbreak_volume_sigma_m3, 0.001);
   j["cell_sigma_m"] = sigma(d.cell_sigma_m, 0.0001);
   j["noise_threshold_m"] = round_to(d.noise_threshold_m, 0.0001);
+  // Issue 38: each cell's own precision (its distance and incidence): how
+  // it was predicted and its range; cell_sigma_m and noise_threshold_m are
+  // then the median measured cell's.
+  if (measured && v.cell_precision)
+    j["cell_precision"] = {{"model", v.cell_precision->model},
+                           {"min_sigma_m", round_to(v.cell_precision->min_sigma_m, 0.0001)},
+                           {"median_sigma_m", round_to(v.cell_precision->median_sigma_m, 0.0001)},
+                           {"max_sigma_m", round_to(v.cell_precision->max_sigma_m, 0.0001)}};
   if (measured && d.lining_offset.cells > 0)
     j["lining_offset"] = {{"median_m", round_to(d.lining_offset.median_m, 0.0001)},
                           {"standard_error_m", round_to(d.lining_offset.standard_error_m, 0.0001)},

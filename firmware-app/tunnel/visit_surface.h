@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include "core/tunnel/lining_precision.h"
 #include "core/tunnel/profile_deviation.h"
 #include "storage/project/project_store.h"
 
@@ -29,6 +30,12 @@ struct VisitSurface {
   // (m; every model scaled): the surface's precision. Absent when a model
   // states none or is unscaled (its sigma is then in units of the base).
   std::optional<double> depth_sigma_m;
+  // The stereo pairs that made it (their cameras in the same frame, focal
+  // length and disparity precision), for each cell's own predicted
+  // precision (lining_precision.h). Empty when a model does not record its
+  // pair's geometry (a further pair of a face registration, an imported
+  // cloud, an unscaled model): then the stated depth_sigma_m holds for all.
+  tunnel::LiningPrecision precision;
 };
 
 // Around the pole: the pole is 4 cm across and its targets 25 cm; a radius of

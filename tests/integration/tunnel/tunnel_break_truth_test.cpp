@@ -289,6 +289,95 @@ void print_cells_against_truth(const Heading& h, const tunnel::ProfileDeviation&
   std::cout << "\n";
 }
 
+// The measured cells' error against the scene, per band of depth and of the
+// lining's orientation to the base, beside the depth precision the code
+// predicted for each cell: how well the prediction follows the
+// reconstruction's real spread. The bands are read from the scene itself:
+// the design point of each cell seen from the left station (its depth along
+// that station's optical axis) and the design outline's normal there against
+// the stations' base (along it: the walls; across it: the roof's crown and
+// the invert; between: the shoulders), since the matching's error differs
+// most between those (lining_precision.h). Only cells on lining the scene leaves
+// intact (no break within 0.3 m of the cell: a break's flank smoothed by the
+// matching is not noise) and measured (not interpolated) enter.
+struct PrecisionBand {
+  std::vector<double> error, predicted;
+};
+
+struct PrecisionBands {
+  static constexpr double kDepthEdges[4] = {5.0, 7.0, 9.0, 1e9};
+  static constexpr double kAlongBaseEdges[3] = {0.3, 0.7, 1.01};
+  PrecisionBand band[4][3];
+  // The robust spread (1.4826 x the median absolute deviation about the
+  // median) of a band's errors: the noise's sigma, not the few cells the
+  // flank rule or a stray triangle put off.
+  static double robust_sigma(std::vector<double> v) {
+    if (v.empty()) return 0;
+    auto median = [](std::vector<double> x) {
+      std::nth_element(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2), x.end());
+      return x[x.size() / 2];
+    };
+    const double m = median(v);
+    for (double& x : v) x = std::abs(x - m);
+    return 1.4826 * median(v);
+  }
+};
+
+PrecisionBands precision_bands(const Heading& h, const VisitProfile& m,
+                               const tunnel::Alignment& alignment) {
+  const tunnel::ProfileDeviation& d = m.deviation;
+  const tunnel::DesignProfile& profile = m.tunnel.profile;
+  const storage::Scene scene = storage::load_scene(h.scene_file.string());
+  const camera::RenderedTunnelSpec spec = rendered_tunnel_spec(*scene.tunnel->render);
+  const auto& left = scene.imaging->stations[0];
+  const Eigen::Vector3d axis = (left.look_at - left.position).normalized();
+  const auto& v = d.view;
+  const std::size_t cols = v.s.size();
+  PrecisionBands out;
+  const Eigen::Vector3d base_dir =
+      (scene.imaging->stations[1].position - left.position).normalized();
+  for (std::size_t k = 0; k < v.state.size(); ++k) {
+    if (v.state[k] != 0) continue;
+    const double c = v.chainage[k / cols], s = v.s[k % cols];
+    bool intact = true;
+    for (double dc : {-0.3, 0.0, 0.3})
+      for (double ds : {-0.3, 0.0, 0.3})
+        intact = intact && camera::rendered_deviation(spec, c + dc, s + ds) == 0;
+    if (!intact) continue;
+    const tunnel::TunnelFrame f = alignment.frame_at(c);
+    const Eigen::Vector2d uv = profile.point_at_length(s), n2 = profile.outward_normal_at_length(s);
+    const Eigen::Vector3d p = alignment.to_survey(f.to_local(uv.x(), uv.y()));
+    const Eigen::Vector3d n = n2.x() * f.right + n2.y() * f.up;
+    const Eigen::Vector3d ray = p - left.position;
+    const double depth = ray.dot(axis), along_base = std::abs(n.dot(base_dir));
+    int bz = 0, bc = 0;
+    while (depth > PrecisionBands::kDepthEdges[bz]) ++bz;
+    while (along_base > PrecisionBands::kAlongBaseEdges[bc]) ++bc;
+    out.band[bz][bc].error.push_back(v.deviation_m[k] - camera::rendered_deviation(spec, c, s));
+    out.band[bz][bc].predicted.push_back(m.cell_sigma_m.empty() ? 0.0 : m.cell_sigma_m[k]);
+  }
+  return out;
+}
+
+void print_precision_bands(const PrecisionBands& b) {
+  const char* depth_name[4] = {"< 5 m", "5-7 m", "7-9 m", "> 9 m"};
+  const char* kind_name[3] = {"roof crown / invert", "shoulders", "walls"};
+  std::cout << "  measured cells on intact lining, error against the scene per band of depth "
+               "(left station) and of the normal to the base (cells: robust sigma / predicted "
+               "median, mm):\n";
+  for (int z = 0; z < 4; ++z)
+    for (int c = 0; c < 3; ++c) {
+      const PrecisionBand& p = b.band[z][c];
+      if (p.error.size() < 20) continue;
+      std::vector<double> pred = p.predicted;
+      std::nth_element(pred.begin(), pred.begin() + static_cast<std::ptrdiff_t>(pred.size() / 2),
+                       pred.end());
+      std::cout << "    " << depth_name[z] << ", " << kind_name[c] << ": " << p.error.size()
+                << " cells, " << 1000 * PrecisionBands::robust_sigma(p.error) << " / "
+                << 1000 * pred[pred.size() / 2] << "\n";
+    }
+}
+
 // NOT YET MET (disabled, issue 38 left open): measured on 2026-11-29
 // (fifth session) at the standard preset with the tunnel round's lining
 // matched by the padded pair and the slanted passes (preset.h
@@ -309,6 +398,22 @@ void print_cells_against_truth(const Heading& h, const tunnel::ProfileDeviation&
 // heading a cluster of cells 0.10-0.15 m inside a lining the scene leaves
 // intact, chainage 58.7-60.4, s 2.9-7.3 (the right wall's top and the roof's
 // shoulder, around the range pole at 60 / offset 1.2), not yet explained.
+// Sixth session (2026-11-29): each cell's noise threshold now comes from its
+// own predicted precision (lining_precision.h, checked against the cells'
+// measured spread by the precision tests below), sigma 1.9-15 mm on the
+// sample, 1.5-21 mm on the D heading (the face's single figure was 11.8 /
+// 8.1 mm). The volumes do not come right with it: sample overbreak 0.812
+// (+7 %), underbreak 0.408 for 0.129; D overbreak 0.565 (+15 %), underbreak
+// 0.381 for 0.094, its largest still at 59.45 / 6.31. The spurious
+// underbreak is not noise (the cells' robust spread is 2-24 mm) but
+// systematic errors of 4-15 cm: on the sample at the near lip of the
+// shoulder's overbreak (chainage 108-109.5, s 3-7: the cavity's near flank
+// hidden from the cameras, the matching pulling its far flank toward the
+// lip's depth, i.e. inside the lining); on the D heading in the right wall's
+// top and shoulder 5-70 px right of the face's edge in the photographs (80-210
+// px from the range pole's image, not the pole: its vertices are masked and
+// no bad cell lies within 80 px of it). No threshold drawn from the
+// precision can remove them; the matching there must.
 // Run with --gtest_also_run_disabled_tests to see the figures.
 class TunnelBreakTruth : public ::testing::Test {
  protected:
@@ -353,6 +458,12 @@ class TunnelBreakTruth : public ::testing::Test {
               << d.underbreak_volume_sigma_m3.value_or(-1) << " (interpolated "
               << d.interpolated_underbreak_m3 << ")\n";
     print_cells_against_truth(h, d);
+    if (m.cell_precision)
+      std::cout << "  cell precision: " << m.cell_precision->model << ": "
+                << 1000 * m.cell_precision->min_sigma_m << " to "
+                << 1000 * m.cell_precision->max_sigma_m << " mm, median "
+                << 1000 * m.cell_precision->median_sigma_m << " mm\n";
+    print_precision_bands(precision_bands(h, m, m.tunnel.alignment(store.project().datum)));
     // The truth is a real break in the round (else the test says nothing).
     ASSERT_GT(t.over_m3, 0.1) << name;
     ASSERT_GT(t.under_m3, 0.02) << name;
@@ -376,6 +487,38 @@ class TunnelBreakTruth : public ::testing::Test {
                                  t.under_s, perimeter),
               0.5)
         << name;
+  }
+
+  // Issue 38: the noise threshold is only as good as the precision it is
+  // drawn from. In every band of depth and incidence holding 100 measured
+  // cells or more, the predicted sigma (the band's median) lies within a
+  // factor 3 of the measured spread: the model takes the preset's disparity
+  // precision (0.3 px) for every image, while the headings' sensor noise
+  // (1.5 and 2.5 grey levels) and blur make the real one differ, and its
+  // slant term is the spread of a uniform ramp over the window, not of the
+  // matcher's own aggregation (docs/accuracy-cost.md, "Issue 38 (sixth
+  // session)"). The face's single figure missed the grazing walls and the
+  // invert by a factor 5.
+  static void expect_the_predicted_precision(const Heading& h, const std::string& name) {
+    storage::ProjectStore store = storage::ProjectStore::open(h.project);
+    const VisitProfile m = visit_profile(store, h.outcome.visit_id, Preset::standard);
+    const PrecisionBands b = precision_bands(h, m, m.tunnel.alignment(store.project().datum));
+    std::cout << name << ":\n";
+    print_precision_bands(b);
+    int bands = 0;
+    for (const auto& row : b.band)
+      for (const PrecisionBand& p : row) {
+        if (p.error.size() < 100) continue;
+        ++bands;
+        std::vector<double> pred = p.predicted;
+        std::nth_element(pred.begin(), pred.begin() + static_cast<std::ptrdiff_t>(pred.size() / 2),
+                         pred.end());
+        const double predicted = pred[pred.size() / 2];
+        const double measured = PrecisionBands::robust_sigma(p.error);
+        EXPECT_LT(predicted, 3 * measured) << name << ": " << p.error.size() << " cells";
+        EXPECT_GT(predicted, measured / 3) << name << ": " << p.error.size() << " cells";
+      }
+    EXPECT_GE(bands, 4) << name;  // the walls, the roof and the invert near and far
   }
 
   static void expect_coverage(const Heading& h, const std::string& name) {
@@ -420,6 +563,14 @@ TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsImageCoversTheLiningBothPhoto
 
 TEST_F(TunnelBreakTruth, DISABLED_TheSecondHeadingsImageCoversTheLiningBothPhotographsSee) {
   expect_coverage(*d_heading_, "D heading");
+}
+
+TEST_F(TunnelBreakTruth, EachCellsPredictedPrecisionFollowsTheSampleHeadingsMeasuredSpread) {
+  expect_the_predicted_precision(*sample_, "sample heading");
+}
+
+TEST_F(TunnelBreakTruth, EachCellsPredictedPrecisionFollowsTheSecondHeadingsMeasuredSpread) {
+  expect_the_predicted_precision(*d_heading_, "D heading");
 }
 
 TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchItsScene) {
