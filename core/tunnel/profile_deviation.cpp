@@ -9,10 +9,12 @@
 #include "core/common/number_format.h"
 #include "core/common/parallel.h"
 #include "core/common/units.h"
+#include "core/tunnel/deviation_message.h"
 #include "core/tunnel/lining_interpolation.h"
 #include "core/tunnel/lining_precision.h"
 #include "core/tunnel/lining_statistics.h"
 #include "core/tunnel/mesh_raycast.h"
+#include "core/tunnel/underbreak_patches.h"
 
 namespace rockface::tunnel {
 
@@ -96,70 +98,6 @@ std::vector<Ray> sub_rays_of(const DesignProfile& profile, const std::vector<Ray
       r.cos_incidence = std::max(0.0, profile.outward_normal_at_length(r.s).dot(d / r.design));
       out.push_back(r);
     }
-  return out;
-}
-
-// Connected cells of underbreak beyond tolerance on the developed view
-// (4-neighbours; the arc-length direction wraps round the profile).
-std::vector<UnderbreakPatch> patches_of(const ProfileDeviation& d, double tolerance, double cell_s,
-                                        double cell_c,
-                                        const std::vector<ProfilePosition>& position_of_cell) {
-  const auto& v = d.view;
-  const std::size_t rows = v.chainage.size(), cols = v.s.size();
-  auto beyond = [&](std::size_t k) { return v.state[k] == kSeen && -v.deviation_m[k] > tolerance; };
-  std::vector<char> done(rows * cols, 0);
-  std::vector<UnderbreakPatch> out;
-  std::vector<std::size_t> stack;
-  for (std::size_t start = 0; start < rows * cols; ++start) {
-    if (done[start] || !beyond(start)) continue;
-    UnderbreakPatch p;
-    p.chainage_from = std::numeric_limits<double>::infinity();
-    p.chainage_to = -p.chainage_from;
-    std::vector<std::size_t> col_list;
-    stack.assign(1, start);
-    done[start] = 1;
-    while (!stack.empty()) {
-      const std::size_t k = stack.back();
-      stack.pop_back();
-      const std::size_t r = k / cols, c = k % cols;
-      ++p.cells;
-      p.chainage_from = std::min(p.chainage_from, v.chainage[r]);
-      p.chainage_to = std::max(p.chainage_to, v.chainage[r]);
-      col_list.push_back(c);
-      const double depth = -v.deviation_m[k];
-      if (depth > p.max_depth_m) {
-        p.max_depth_m = depth;
-        p.deepest = position_of_cell[k];
-      }
-      const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
-                                 r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
-      for (std::size_t n : nb)
-        if (!done[n] && beyond(n)) {
-          done[n] = 1;
-          stack.push_back(n);
-        }
-    }
-    p.area_m2 = static_cast<double>(p.cells) * cell_s * cell_c;
-    // Its arc-length span; a patch across s = 0 is unwrapped there, so
-    // s_from > s_to says it wraps.
-    std::sort(col_list.begin(), col_list.end());
-    col_list.erase(std::unique(col_list.begin(), col_list.end()), col_list.end());
-    std::size_t gap_at = 0, gap = 0;
-    for (std::size_t i = 0; i < col_list.size(); ++i) {
-      const std::size_t next = i + 1 < col_list.size() ? col_list[i + 1] : col_list[0] + cols;
-      if (next - col_list[i] > gap) {
-        gap = next - col_list[i];
-        gap_at = i;
-      }
-    }
-    const std::size_t first = col_list[(gap_at + 1) % col_list.size()], last = col_list[gap_at];
-    p.s_from = v.s[first] - cell_s / 2;
-    p.s_to = v.s[last] + cell_s / 2;
-    out.push_back(p);
-  }
-  std::sort(out.begin(), out.end(), [](const UnderbreakPatch& a, const UnderbreakPatch& b) {
-    return a.max_depth_m > b.max_depth_m;
-  });
   return out;
 }
 
@@ -571,84 +509,6 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
   return area;
 }
 
-// What the geologist is told: the status and its message, with what the
-// figures leave out and why.
-void tell_the_geologist(ProfileDeviation& out, const DeviationOptions& options, std::size_t seen,
-                        std::size_t excluded, const std::string& clipped,
-                        const CellPrecisionFigures* per_cell) {
-  bool walls_or_roof = false;
-  std::size_t thin = 0;
-  for (const auto& s : out.sections) {
-    walls_or_roof = walls_or_roof || s.walls_seen > 0 || s.roof_seen > 0;
-    if (s.seen_fraction < options.min_seen_fraction) ++thin;
-  }
-  const std::string range = "chainage " + format_fixed(out.view.chainage.front(), 3) + " to " +
-                            format_fixed(out.view.chainage.back(), 3) + clipped;
-  if (!walls_or_roof) {
-    out.status = DeviationStatus::no_walls_in_view;
-    out.message = (seen == 0 ? std::string("nothing of the profile was in view")
-                             : std::string("only the floor was in view")) +
-                  " (" + range + ", " + std::to_string(out.rays_cast) + " rays cast, " +
-                  std::to_string(excluded) +
-                  " stopped by what is not rock): no over- or underbreak can be given, not zero";
-    return;
-  }
-  if (thin > 0) {
-    out.status = DeviationStatus::partly_seen;
-    out.message =
-        std::to_string(thin) + " of " + std::to_string(out.sections.size()) +
-        " cross-sections saw less than " + format_fixed(100 * options.min_seen_fraction, 0) +
-        " % of the profile; areas and volumes cover only what was seen (" +
-        format_fixed(100 * out.seen_fraction, 1) + " % of the outline over " + range + ")";
-  } else {
-    out.status = DeviationStatus::ok;
-    out.message = format_fixed(100 * out.seen_fraction, 1) + " % of the outline seen over " + range;
-  }
-  // What the figures leave out, and why (issue 38).
-  for (const auto& l : out.sections_left_out)
-    out.message += "; " + std::to_string(l.sections) + " cross-section" +
-                   (l.sections == 1 ? "" : "s") + " at chainage " +
-                   format_fixed(l.chainage_from, 2) + " to " + format_fixed(l.chainage_to, 2) +
-                   " left out: " + l.why;
-  if (out.cells_off_lining + out.cells_below_invert > 0)
-    out.message += "; left out: " + std::to_string(out.cells_off_lining) +
-                   " cells off any plausible lining (no neighbour agrees with them), " +
-                   std::to_string(out.cells_below_invert) +
-                   " below the invert (wall or roof rays that met the surface below it, floor "
-                   "rays more than " +
-                   format_fixed(options.max_invert_overbreak_m, 2) + " m below the design)";
-  if (out.interpolated_fraction > 0)
-    out.message += "; " + format_fixed(100 * out.interpolated_fraction, 1) +
-                   " % of the outline interpolated across holes of the 3D image up to " +
-                   format_fixed(options.max_interpolated_hole_m, 2) + " m wide (" +
-                   format_fixed(out.interpolated_overbreak_m3, 3) + " m³ of the overbreak, " +
-                   format_fixed(out.interpolated_underbreak_m3, 3) + " m³ of the underbreak)";
-  if (per_cell)
-    out.message += "; deviations within " + format_fixed(options.noise_sigmas, 0) +
-                   " sigma of each cell's predicted depth precision (from its distance to the "
-                   "cameras and its incidence: sigma " +
-                   format_fixed(1000 * per_cell->min_sigma_m, 1) + " to " +
-                   format_fixed(1000 * per_cell->max_sigma_m, 1) + " mm, median " +
-                   format_fixed(1000 * per_cell->median_sigma_m, 1) +
-                   " mm) are not counted, but for the flanks of a break beyond them down to half "
-                   "of that";
-  else if (out.noise_threshold_m > 0)
-    out.message += "; deviations within " + format_fixed(1000 * out.noise_threshold_m, 1) +
-                   " mm (" + format_fixed(options.noise_sigmas, 0) +
-                   " sigma of the 3D image's stated depth precision) are not counted, "
-                   "but for the flanks of a break beyond them down to half of that";
-  else
-    out.message += "; the 3D image states no depth precision: every deviation is counted";
-  if (out.lining_offset.cells > 0)
-    out.message +=
-        "; the lining lies " + format_fixed(1000 * out.lining_offset.median_m, 1) + " ± " +
-        format_fixed(1000 * out.lining_offset.standard_error_m, 1) +
-        " mm off the design as a whole" +
-        (out.lining_offset_removed ? " (within the noise: taken as the 3D image's bias and removed)"
-         : out.noise_threshold_m > 0 ? " (beyond the noise: kept)"
-                                     : "");
-}
-
 }  // namespace
 
 namespace {
@@ -776,7 +636,7 @@ ProfileDeviation measure_round(const MeshRaycaster& caster, const SurfaceInput& 
   out.excluded_fraction = static_cast<double>(excluded) / static_cast<double>(rows * cols);
   out.interpolated_fraction = static_cast<double>(interpolated) / static_cast<double>(rows * cols);
   out.beyond_tolerance =
-      patches_of(out, options.underbreak_tolerance_m, g.cell_s, g.cell_c, position);
+      underbreak_patches(out, options.underbreak_tolerance_m, g.cell_s, g.cell_c, position);
   tell_the_geologist(out, options, seen, excluded, clipped, figures ? &*figures : nullptr);
   if (extra) {
     extra->precision = figures;
