@@ -13,6 +13,8 @@
 // virtual view, stored). The face stays the same size: more points are a
 // denser scan.
 //
+// Each surface's triangles against the true face: how far their centroids
+// lie off it (RMS, 99th percentile; the display's clustering cell).
 // Each surface: the stored mesh (what `measure`, `propose`, the tablet's
 // traces and Find traces use), and its display copies: the tablet's Model
 // view at its budgets (`rockface ui --max-triangles`: 50 k, 200 k, 400 k the
@@ -249,6 +251,30 @@ Errors facet_errors(const Imported& m, const rm::FacetSearch& search) {
   return e;
 }
 
+// How far a surface's triangles lie off the true face: the distance of
+// each triangle's centroid from the nearest strip plane about it (the
+// strip under it and its neighbours), mm: RMS and the 99th percentile.
+std::pair<double, double> off_face_mm(const Imported& m,
+                                      const rockface::photogrammetry::SurfaceMesh& mesh) {
+  std::vector<double> d;
+  d.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3d c =
+        local(m, (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3);
+    double best = 1e9;
+    for (const auto& s : strips())
+      if (c.x() > s.x_from - 0.5 && c.x() < s.x_to + 0.5)
+        best = std::min(best, std::abs(s.plane.normal.dot(c) - s.plane.offset));
+    d.push_back(best * 1000);
+  }
+  if (d.empty()) return {0, 0};
+  double sum = 0;
+  for (const double v : d) sum += v * v;
+  const auto at = d.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(d.size() - 1));
+  std::nth_element(d.begin(), at, d.end());
+  return {std::sqrt(sum / static_cast<double>(d.size())), *at};
+}
+
 // A display copy as a surface to measure on (vertices back in the project
 // frame, the display's float offsets from its centre added to it).
 rockface::photogrammetry::SurfaceMesh surface_of(const Eigen::Vector3d& centre,
@@ -292,7 +318,7 @@ void BM_ImportDisplayCopy(benchmark::State& state) {
   settings.point_sigma = m.model.point_sigma;
   settings.correlation_length = m.model.correlation_length;
   rockface::photogrammetry::SurfaceMesh decimated;
-  double decimate_s = 0, bytes = 0;
+  double decimate_s = 0, bytes = 0, cell = 0;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     if (copy == kOffice) {
@@ -307,6 +333,7 @@ void BM_ImportDisplayCopy(benchmark::State& state) {
       bytes =
           static_cast<double>(d.positions.size() * 4 + d.texcoords.size() * 4 + d.colours.size() +
                               d.indices.size() * 4 + d.turning_indices.size() * 4);
+      cell = d.cell;
       decimated = surface_of(d.centre, d.positions, d.indices);
     }
     state.SetIterationTime(std::max(decimate_s, 1e-9));
@@ -320,6 +347,10 @@ void BM_ImportDisplayCopy(benchmark::State& state) {
   state.counters["triangles"] = static_cast<double>(surface.triangles.size());
   state.counters["decimate_s"] = decimate_s;
   state.counters["copy_MB"] = bytes / 1e6;
+  const auto [rms, p99] = off_face_mm(m, surface);
+  state.counters["off_face_rms_mm"] = rms;
+  state.counters["off_face_p99_mm"] = p99;
+  state.counters["cell_mm"] = cell * 1000;
   const Errors area = area_errors(m, surface, settings);
   state.counters["area_dip_err"] = area.dip;
   state.counters["area_dipdir_err"] = area.dipdir;
