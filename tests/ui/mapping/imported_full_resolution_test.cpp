@@ -1,8 +1,9 @@
 // Issue 43, "full resolution for measuring, decimated for the display": on
 // the tablet, a scanner's cloud imported as a visit is drawn from a display
 // copy cut down to the view's triangle budget (ui/view3d/display_mesh.h),
-// while a trace tapped on the Mapping screen and Find traces' facets are
-// measured on the stored surface at full resolution. The scan: a stepped
+// while a trace tapped on the Mapping screen, an area outlined there and
+// Find traces' facets are measured on the stored surface at full
+// resolution. The scan: a stepped
 // face (tests/support/stepped_face.h: strips 0.75 m wide alternately on two
 // joint sets, meeting in ridges 68 degrees apart) with 2 mm of ranging
 // noise, at UTM coordinates, imported by the program's own import. The
@@ -21,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/geometry/orientation.h"
 #include "firmware-app/import/import_surface.h"
 #include "firmware-app/services/ui_services.h"
 #include "storage/project/project_store.h"
@@ -107,7 +109,7 @@ class NotingProposals final : public ui::ProposalRunner {
   std::size_t triangles_ = 0;
 };
 
-TEST(ImportedFullResolution, TracesAndFindTracesMeasureTheStoredSurfaceNotTheDisplayCopy) {
+TEST(ImportedFullResolution, TracesAreasAndFindTracesMeasureTheStoredSurfaceNotTheDisplayCopy) {
   const fs::path dir =
       fs::temp_directory_path() / ("rockface-imported-full-" + std::to_string(::getpid()));
   fs::remove_all(dir);
@@ -187,6 +189,40 @@ TEST(ImportedFullResolution, TracesAndFindTracesMeasureTheStoredSurfaceNotTheDis
   std::printf("trace of %zu points: at most %.2f mm off the scanned face\n",
               traces[0].points.size(), worst * 1000);
   EXPECT_LT(worst, kOnTheScanM) << "the trace's points lie off the scanned face";
+
+  // An area outlined on one strip (corners 10 cm inside its edges): stored
+  // with the strip's true plane. Its plane is fitted to the stored surface's
+  // few thousand points inside the outline (1.25 mm of noise normal to the
+  // face over 0.55 x 2 m: a thousandth of a degree or so); 0.01 degrees
+  // holds that with room, and a neighbouring strip's plane is 68 degrees
+  // away.
+  const test::Facet& strip = strips[6];
+  s.tap("Outline the face");
+  for (const auto& [x, z] :
+       {std::pair{strip.x_from + 0.1, -1.0}, std::pair{strip.x_to - 0.1, -1.0},
+        std::pair{strip.x_to - 0.1, 1.0}, std::pair{strip.x_from + 0.1, 1.0}}) {
+    const auto at = app.model_view.to_screen(on_face(strips, x, z) + to_project);
+    ASSERT_TRUE(at);
+    s.tap(at->x, at->y);
+  }
+  ASSERT_EQ(app.mapping.outline.corners().size(), 4u) << app.mapping.outline.problem();
+  s.tap("Save outline");
+  s.settle();
+  std::vector<storage::Measurement> areas;
+  {
+    storage::ProjectStore store = storage::ProjectStore::open(project);
+    for (const auto& m : store.list_measurements(imported.visit))
+      if (m.kind == storage::Measurement::Kind::area) areas.push_back(m);
+  }
+  ASSERT_EQ(areas.size(), 1u) << "one flat piece";
+  ASSERT_TRUE(areas[0].dip_deg && areas[0].dipdir_deg) << areas[0].note;
+  const geometry::PlaneOrientation want = geometry::plane_orientation(strip.plane.normal);
+  std::printf("area %s: %.4f / %.4f (strip %.4f / %.4f)\n", areas[0].label.c_str(),
+              *areas[0].dip_deg, *areas[0].dipdir_deg, want.dip * 180 / M_PI,
+              want.dipdir * 180 / M_PI);
+  constexpr double kAreaDeg = 0.01;
+  EXPECT_NEAR(*areas[0].dip_deg, want.dip * 180 / M_PI, kAreaDeg);
+  EXPECT_NEAR(*areas[0].dipdir_deg, want.dipdir * 180 / M_PI, kAreaDeg);
 
   // Find traces: the facets are sought on the stored surface.
   s.tap("Find traces");
