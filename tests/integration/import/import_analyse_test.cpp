@@ -2,19 +2,24 @@
 // face cloud written here from plain geometry (no rockface code: a shallow
 // four-sided pyramid of rock standing out of the face, its points on an
 // exact grid in survey coordinates), imported as a visit's 3D image, the
-// traces of three joints tapped on its virtual view where the joints'
-// planes truly cut the pyramid (plane-triangle intersections computed here)
-// and measured into the same visit, as the tablet does. Against the planes
-// written: the measured joints, the keyblock that the analysis finds from
-// the traces (its apex is the one point all three planes pass through), the
-// rock-mass sheet's three sets, and the wedges around the project's tunnel
-// (refused by name while the project has none).
+// traces of six joints (three sets of two) tapped on its virtual view where
+// the joints' planes truly cut the pyramid (plane-triangle intersections
+// computed here), and its four facets outlined as the free surface, all
+// measured into the same visit, as the tablet does. Against the planes
+// written: the measured joints; the keyblock that the analysis finds from
+// the traces, its apex (the one point three of the planes pass through) and
+// its volume (summed here); the rock-mass sheet's three sets and their
+// spacing; the wedges' sets around the project's tunnel (refused by name
+// while the project has none, and asking for the drive's axis while the
+// visit is not placed in it).
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
