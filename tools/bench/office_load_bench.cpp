@@ -23,6 +23,7 @@
 #include <mutex>
 #include <random>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -66,10 +67,18 @@ test::PostgresServer& server() {
   return s;
 }
 
+// This run's folder in the system's temporary folder (the tablets'
+// projects, the servers' work folders and logs: ~2.5 GB a run), removed
+// when the run ends (main).
+fs::path folder_path() {
+  return fs::temp_directory_path() / ("rockface-office-load-" + std::to_string(::getpid()));
+}
+
 fs::path folder() {
-  static const fs::path dir =
-      fs::temp_directory_path() / ("rockface-office-load-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  static const fs::path dir = [] {
+    fs::create_directories(folder_path());
+    return folder_path();
+  }();
   return dir;
 }
 
@@ -546,4 +555,14 @@ BENCHMARK(BM_FaceTransferAndReport)->Unit(benchmark::kMillisecond)->Iterations(1
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  // Every server is stopped by now (each benchmark's own); the PostgreSQL
+  // server's folder goes with its static object at exit.
+  std::error_code ec;
+  fs::remove_all(folder_path(), ec);
+  return 0;
+}
