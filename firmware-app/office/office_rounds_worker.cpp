@@ -112,6 +112,9 @@ std::string RoundsWorker::page(RequestConnection& db, const std::string& tunnel,
   // Not read at this stamp yet: the drive page's placed visits (shared,
   // built once per sync) stand for the rounds meanwhile.
   const json drive = json::parse(cache_.drive(db, tunnel, {}));
+  // The rounds are put together without the connection (leased again for
+  // the one question below, once per sync).
+  db.release();
   if (!earlier) {
     const json page = rounds_being_read(drive);
     if (count) *count = {0, 0, page.at("measuring").get<int>()};
@@ -122,6 +125,7 @@ std::string RoundsWorker::page(RequestConnection& db, const std::string& tunnel,
     // (their revisions' time on the server), asked once per sync.
     const std::string since = earlier_stamp.substr(earlier_stamp.find('/') + 1);
     changed = office::visits_synced_after(db.db(), tunnel_id->second, since);
+    db.release();
     std::lock_guard guard(lock_);
     const auto it = drives_.find(key);
     if (it != drives_.end() && it->second.stamp == stamp) it->second.changed = changed;

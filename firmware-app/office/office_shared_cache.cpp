@@ -106,7 +106,10 @@ std::string SharedOfficeCache::drive(RequestConnection& db, const std::string& t
   }
   // Built on this request's connection: its role reads the same tunnels as
   // every session that shares the key.
-  nlohmann::json built = drive_page(db.db(), tunnel, filter);
+  DriveRead read = read_drive_page(db.db(), tunnel, filter);
+  // The sets are tracked along the drive without the connection.
+  db.release();
+  nlohmann::json built = drive_page(std::move(read));
   // The stamp the page polls against is the one it is kept under.
   built["stamp"] = stamp;
   std::string text = built.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
