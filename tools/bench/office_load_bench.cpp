@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <random>
 #include <string>
@@ -207,11 +208,26 @@ struct Served {
   }
 };
 
-std::string log_in(httplib::Client& c, const std::string& origin) {
+// What a refused request was told: "STATUS message" (the server's error
+// text), or how the connection failed.
+std::string refusal(const httplib::Result& r) {
+  if (!r) return "no answer: " + httplib::to_string(r.error());
+  std::string message = r->body;
+  try {
+    message = json::parse(r->body).value("error", r->body);
+  } catch (const json::exception&) {
+  }
+  return std::to_string(r->status) + " " + message;
+}
+
+std::string log_in(httplib::Client& c, const std::string& origin, std::string* refused = nullptr) {
   const auto r =
       c.Post("/api/login", {{"Origin", origin}},
              json{{"role", "office_bench"}, {"password", "trust"}}.dump(), "application/json");
-  if (!r || r->status != 200) return "";
+  if (!r || r->status != 200) {
+    if (refused) *refused = refusal(r);
+    return "";
+  }
   const std::string set = r->get_header_value("Set-Cookie");
   return set.substr(0, set.find(';'));
 }
@@ -238,6 +254,8 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
   const fs::path small = make_project("small", 20, 640, 480, 50);
   std::vector<double> latencies, visit_latencies;
   std::atomic<int> errors{0}, requests{0}, login_errors{0};
+  // The refusals by what they said (shown as the benchmark's label).
+  std::map<std::string, int> refusals;
   double rss = 0;
   for (auto _ : state) {
     Served s(db);
@@ -253,10 +271,16 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
       clients.emplace_back([&, i] {
         httplib::Client c("127.0.0.1", s.port);
         c.set_read_timeout(std::chrono::seconds(120));
-        const std::string cookie = log_in(c, s.origin());
+        std::string refused;
+        const std::string cookie = log_in(c, s.origin(), &refused);
+        auto count_refusal = [&](const std::string& what, const std::string& why) {
+          std::lock_guard guard(lock);
+          ++refusals[what + ": " + why];
+        };
         if (cookie.empty()) {
           ++errors;
           ++login_errors;
+          count_refusal("log-in", refused);
           return;
         }
         // Each client reads the drive, then opens one of its visits at
@@ -272,6 +296,7 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
           ++requests;
           if (!r || r->status != 200) {
             ++errors;
+            count_refusal("drive", refusal(r));
             continue;
           }
           if (ids.empty()) {
@@ -284,7 +309,10 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
           const auto v = c.Get("/api/visit?tunnel=bench&visit=" + visit, {{"Cookie", cookie}});
           my_visits.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
           ++requests;
-          if (!v || v->status != 200) ++errors;
+          if (!v || v->status != 200) {
+            ++errors;
+            count_refusal("visit", refusal(v));
+          }
         }
         std::lock_guard guard(lock);
         latencies.insert(latencies.end(), mine.begin(), mine.end());
@@ -306,6 +334,9 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
   state.counters["visit_p50_ms"] = percentile(visit_latencies, 0.5);
   state.counters["visit_p95_ms"] = percentile(visit_latencies, 0.95);
   state.counters["server_peak_RSS_MB"] = rss;
+  std::string label;
+  for (const auto& [what, n] : refusals) label += std::to_string(n) + "x " + what + "; ";
+  if (!label.empty()) state.SetLabel(label);
 }
 BENCHMARK(BM_Office50ClientsDrive3000WhileATabletSyncs)
     ->Unit(benchmark::kMillisecond)
