@@ -166,7 +166,10 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::make_copy(RequestConnection
   office::PullRead read = office::read_pull(db.db(), tunnel, copy->file, quiet, options);
   db.release();
   test_gate("copy-build");
-  office::build_pulled_project(read, quiet);
+  {
+    CpuSlots::Slot slot(cpu_slots_);
+    office::build_pulled_project(read, quiet);
+  }
   {
     storage::sqlite::Connection db(copy->file, storage::sqlite::Connection::Access::read_only);
     storage::sqlite::Statement st(db, "SELECT id, uuid FROM visit WHERE uuid IS NOT NULL",

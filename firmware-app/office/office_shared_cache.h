@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "firmware-app/office/cpu_slots.h"
 #include "firmware-app/office/office_pages.h"
 #include "firmware-app/office/office_sessions.h"
 #include "firmware-app/office/request_connection.h"
@@ -91,6 +92,9 @@ class SharedOfficeCache {
   // sync: a copy of those visits, used once); its file goes with it.
   std::shared_ptr<const SharedPull> pulled_once(RequestConnection& db, const std::string& tunnel,
                                                 const PullScope& scope);
+  // The slots a copy's build takes (cpu_slots.h); the server's other heavy
+  // work takes them too.
+  CpuSlots& cpu_slots() { return cpu_slots_; }
 
  private:
   struct Stamp {
@@ -123,6 +127,7 @@ class SharedOfficeCache {
                                const std::string& key, std::size_t limit);
 
   std::filesystem::path folder_;
+  CpuSlots cpu_slots_;
   std::mutex lock_;  // guards the maps and the clock, never held while building
   std::uint64_t clock_ = 0;
   std::map<std::string, Stamp> stamps_;

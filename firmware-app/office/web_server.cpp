@@ -284,6 +284,7 @@ class OfficeServer {
       with_visit(req, res, false,
                  [&](OfficeSession&, office_web::RequestConnection&, storage::ProjectStore& store,
                      storage::RecordId id) {
+                   office_web::CpuSlots::Slot slot(cache_.cpu_slots());
                    const storage::FieldReport report = collect_visit_report(store, id);
                    const Eigen::Vector3d origin = office_web::face_origin(store, id);
                    json page = office_web::visit_page(report, req.get_param_value("visit"), origin);
