@@ -32,6 +32,7 @@
 #include "storage/office/sync_push.h"
 #include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
+#include "tests/integration/office_web/blocks_table_truth.h"
 #include "tests/integration/office_web/office_site.h"
 #include "tests/storage/office/office_environment.h"
 #include "tests/storage/office/tablet_projects.h"
@@ -247,6 +248,7 @@ struct Walk {
   json stereonet;   // the poles and set means drawn, SVG units
   json rock_mass;   // the Rock mass section's lines (or its note)
   json measured;    // two double-clicks on the 3D face: status, points
+  json block_rows;  // the visit's blocks table, each cell's text
 };
 
 // Log in, open the drive of Main drive, open the visit with blocks, wait
@@ -275,6 +277,9 @@ Walk walk(const OfficeServer& server, int width, int height) {
   d.wait_for("#face[data-drawn=yes]", std::chrono::seconds(60));
   w.visit_uuid = d.script("return location.hash.split('/').pop()").get<std::string>();
   w.visit_text = d.script("return document.body.innerText").get<std::string>();
+  w.block_rows = d.script(
+      "return [...document.querySelectorAll('table.blocks tbody tr')].map(r => [...r.cells].map(c "
+      "=> c.textContent))");
   d.script("document.getElementById('face-canvas').scrollIntoView()");
   // The photograph's texture arrives after the mesh.
   std::this_thread::sleep_for(std::chrono::milliseconds(800));
@@ -462,6 +467,9 @@ void expect_pages_against_the_synced_data(const Walk& w, const std::string& name
     EXPECT_EQ(truth::matched_points(expected_sets, w.stereonet["sets"], kShown), sets.size())
         << name << ": set means misplaced: " << w.stereonet["sets"].dump();
   }
+
+  // The blocks table against the tablet's own blocks of the visit.
+  expect_blocks_table(w.block_rows, visit->file, visit->id, name);
 
   // The photograph zoomed by a click: at least half as wide again.
   EXPECT_GT(w.photograph_shown, 50) << name;
