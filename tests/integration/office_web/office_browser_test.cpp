@@ -22,6 +22,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,6 +30,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/progress.h"
+#include "core/tunnel/drive_sets.h"
+#include "firmware-app/office/office_workflows.h"
 #include "storage/office/sync_push.h"
 #include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
@@ -860,6 +863,109 @@ TEST(OfficeWebBrowser, TheDriveIsFilteredByTheHeadingAVisitWasTakenAt) {
   EXPECT_EQ(filter("", all.size()).size(), all.size()) << "every heading again";
   expect_no_raw_data(d.script("return document.body.innerText").get<std::string>(),
                      "drive by heading");
+}
+
+// The drive's sets (issue 46: "the sets along the drive (dip / dip
+// direction against chainage, new and turning sets flagged)"): the page's
+// table and both charts against the sets the server tracks along the drive
+// (`rockface drive postgresql://...`, app::server_drive), which OfficeSync
+// (tests/storage/office/sync_pull_test.cpp) finds equal to the pulled
+// project's drive.
+TEST(OfficeWebBrowser, TheDrivesSetsAreTheSetsTheServerTracksAlongTheDrive) {
+  if (!WebDriver::available()) GTEST_SKIP() << "chromium and chromium-driver are not installed";
+  OfficeServer server;
+  WebDriver d(1280, 900);
+  open_drive(d, server);
+  const tunnel::DriveSets truth =
+      app::server_drive(office_test::as_role(site().database, "office_reader"), "Main drive");
+  ASSERT_FALSE(truth.tracks.empty()) << "the site's drive has no sets to show";
+
+  // The table: one row per track, its name, last point and flags.
+  const json rows = d.script(
+      "const s = [...document.querySelectorAll('section')].find(x => x.querySelector('h2') && "
+      "x.querySelector('h2').textContent === 'Sets along the drive'); if (!s) return null; "
+      "return [...s.querySelectorAll('tbody tr')].map(r => [...r.cells].map(c => "
+      "c.textContent))");
+  ASSERT_TRUE(rows.is_array()) << "no table of the sets along the drive";
+  ASSERT_EQ(rows.size(), truth.tracks.size()) << rows.dump();
+  for (std::size_t i = 0; i < truth.tracks.size(); ++i) {
+    const tunnel::SetTrack& t = truth.tracks[i];
+    const json& row = rows[i];
+    ASSERT_EQ(row.size(), 4u) << row.dump();
+    EXPECT_EQ(row[0], "set " + std::to_string(t.id));
+    const std::string flags = row[2];
+    EXPECT_EQ(flags.find("new") != std::string::npos, t.appears) << row.dump();
+    EXPECT_EQ(flags.find("turns") != std::string::npos, t.turns) << row.dump();
+    EXPECT_EQ(flags.find("vanishes") != std::string::npos, t.vanishes) << row.dump();
+    ASSERT_FALSE(t.points.empty());
+    const tunnel::TrackPoint& last = t.points.back();
+    const std::string seen = row[1];
+    double chainage = 0, dip = 0, dipdir = 0;
+    ASSERT_EQ(std::sscanf(seen.c_str(), "ch %lf m: %lf° / %lf°", &chainage, &dip, &dipdir), 3)
+        << "set " << t.id << "'s last sighting reads \"" << seen << "\"";
+    // Chainage to the decimetre, orientations to the whole degree: half of
+    // each is the rounding.
+    EXPECT_NEAR(chainage, last.chainage, 0.05 + 1e-9) << seen;
+    EXPECT_NEAR(dip, last.dip_deg, 0.5 + 1e-9) << seen;
+    EXPECT_NEAR(dipdir, last.dipdir_deg, 0.5 + 1e-9) << seen;
+    EXPECT_NE(seen.find(" planes)"), std::string::npos) << seen;
+  }
+
+  // The charts (ui/web/drive.js: a 900 x 170 viewBox, the plot from x 48
+  // to 888 over the chainage of the placed visits and the tracks' points,
+  // y from 22 (top of the range) to 142 (its foot)): each track's points
+  // where its dip (0-90°) and dip direction (0-360°) put them, a turned
+  // point drawn larger.
+  double c0 = std::numeric_limits<double>::infinity(), c1 = -c0;
+  for (const auto& file : truth::tablet_files("Main drive")) {
+    storage::sqlite::Connection db(file, storage::sqlite::Connection::Access::read_only);
+    storage::sqlite::Statement p(db, "SELECT chainage FROM visit_placement", "placements");
+    while (p.step()) {
+      c0 = std::min(c0, p.column_double(0));
+      c1 = std::max(c1, p.column_double(0));
+    }
+  }
+  for (const auto& t : truth.tracks)
+    for (const auto& p : t.points) {
+      c0 = std::min(c0, p.chainage);
+      c1 = std::max(c1, p.chainage);
+    }
+  if (c1 - c0 < 1) {
+    c0 -= 0.5;
+    c1 += 0.5;
+  }
+  for (const auto& [label, lo, hi] : {std::tuple{"Dip of each set", 0.0, 90.0},
+                                      std::tuple{"Dip direction of each set", 0.0, 360.0}}) {
+    const json dots = d.script(
+        "const g = document.querySelector(`svg.chart[aria-label=\"${arguments[0]}\"]`); if (!g) "
+        "return null; return [...g.querySelectorAll('circle')].map(c => [+c.getAttribute('cx'), "
+        "+c.getAttribute('cy'), +c.getAttribute('r')])",
+        json::array({label}));
+    ASSERT_TRUE(dots.is_array()) << "no chart \"" << label << "\"";
+    std::size_t points = 0;
+    std::vector<bool> used(dots.size(), false);
+    for (const auto& t : truth.tracks)
+      for (const auto& p : t.points) {
+        ++points;
+        const double value = std::string(label) == "Dip of each set" ? p.dip_deg : p.dipdir_deg;
+        const double x = 48 + (p.chainage - c0) / (c1 - c0) * 840;
+        const double y = 22 + (1 - (value - lo) / (hi - lo)) * 120;
+        bool found = false;
+        for (std::size_t i = 0; i < dots.size() && !found; ++i) {
+          // The page computes the same doubles; 1e-6 of a unit is their
+          // rounding through the attribute's text.
+          if (used[i] || std::abs(dots[i][0].get<double>() - x) > 1e-6 ||
+              std::abs(dots[i][1].get<double>() - y) > 1e-6)
+            continue;
+          used[i] = found = true;
+          EXPECT_EQ(dots[i][2].get<double>(), p.turned ? 6.0 : 4.0)
+              << label << ": set " << t.id << " at ch " << p.chainage << " turned " << p.turned;
+        }
+        EXPECT_TRUE(found) << label << ": set " << t.id << " at ch " << p.chainage << " (" << value
+                           << "°) is not where the chart must put it: " << dots.dump();
+      }
+    EXPECT_EQ(dots.size(), points) << label;
+  }
 }
 
 }  // namespace
