@@ -1,0 +1,53 @@
+#pragma once
+// The cues' image work over stripes of rows on the analysis threads
+// (issue 45: the tablet's first proposals within 2 s on its 2 cores).
+// Every value is the one the whole image gives in one call: OpenCV's
+// filters read a row view's neighbouring rows from the image it is cut
+// from (their border rule applies only at the image's own edges), and
+// per-pixel work writes only its own stripe's rows. ROCKFACE_THREADS=1
+// (core/common/parallel.h) runs the one stripe on the calling thread.
+//
+// OpenCV's element-wise functions treat a continuous image as one array
+// and run it in vectors of up to 16 floats, the last few elements on
+// their own: stripes start at an element that is a multiple of 64 from
+// the image's start, so each element is worked out the same way as in
+// the whole image's one call.
+#include <algorithm>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "core/common/parallel.h"
+
+namespace rockface::measure::proposals {
+
+// The stripes' first rows for an image of `size`, one stripe per thread
+// (fewer for a short image): multiples of the rows that make 64 elements.
+inline std::vector<int> row_stripe_starts(cv::Size size, unsigned threads) {
+  const int step = 64 / std::gcd(std::max(size.width, 1), 64);
+  const int whole_steps = size.height / step;
+  const int stripes = static_cast<int>(
+      std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(whole_steps))));
+  std::vector<int> starts;
+  for (int k = 0; k < stripes; ++k) starts.push_back(whole_steps * k / stripes * step);
+  return starts;
+}
+
+// f(cv::Range rows) for stripes covering the rows of an image of `size`.
+// f must write only the rows of its stripe and read only what no stripe
+// writes.
+template <class F>
+void for_row_stripes(cv::Size size, F&& f) {
+  if (size.height <= 0) return;
+  const std::vector<int> starts = row_stripe_starts(size, analysis_threads());
+  parallel_for(
+      starts.size(),
+      [&](std::size_t i) {
+        f(cv::Range(starts[i], i + 1 < starts.size() ? starts[i + 1] : size.height));
+      },
+      static_cast<unsigned>(starts.size()));
+}
+
+}  // namespace rockface::measure::proposals
