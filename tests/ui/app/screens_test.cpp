@@ -284,6 +284,47 @@ TEST(UiScreens, TurningDrawsTheTurningCopyAndTheWholeAgainAfter) {
   EXPECT_EQ(view.drawn_triangles(), whole);
 }
 
+// Issue 45: a still model is not drawn again each frame (the software
+// renderer took both of the tablet's cores sixty times a second while
+// Find traces worked beside it); a move of the view draws it again.
+TEST(UiScreens, AStillModelIsNotDrawnAgainEachFrame) {
+  auto s = open_session(demo_project());
+  s->tap("Model");
+  s->settle();
+  const ModelView& view = s->state().model_view;
+  const long still = view.frames_drawn();
+  ASSERT_GT(still, 0);
+  // The model's panel on the screen (the rest may change: status lines).
+  const auto panel = [&] {
+    const cv::Rect r(
+        cv::Point(static_cast<int>(view.panel_min().x) + 1,
+                  static_cast<int>(view.panel_min().y) + 1),
+        cv::Point(static_cast<int>(view.panel_max().x), static_cast<int>(view.panel_max().y)));
+    return s->screenshot()(r).clone();
+  };
+  const cv::Mat before = panel();
+  ASSERT_GT(model_pixels(s->screenshot(), view), 0);
+  for (int k = 0; k < 10; ++k) s->frame();
+  EXPECT_EQ(view.frames_drawn(), still);
+  cv::Mat diff;
+  cv::absdiff(before, panel(), diff);
+  EXPECT_EQ(cv::countNonZero(diff.reshape(1)), 0) << "the still model's panel changed";
+  const Eigen::Vector2f centre((view.panel_min().x + view.panel_max().x) / 2,
+                               (view.panel_min().y + view.panel_max().y) / 2);
+  TouchInput& finger = s->input();
+  finger.push({TouchEvent::Kind::down, 0, centre.x(), centre.y()});
+  for (int k = 0; k < 3; ++k) s->frame();
+  for (int i = 1; i <= 4; ++i) {
+    finger.push({TouchEvent::Kind::move, 0, centre.x() + 30.0f * i, centre.y()});
+    s->frame();
+  }
+  finger.push({TouchEvent::Kind::up, 0, centre.x() + 120.0f, centre.y()});
+  for (int k = 0; k < 3; ++k) s->frame();
+  EXPECT_GE(view.frames_drawn(), still + 3) << "the turned view was not drawn";
+  cv::absdiff(before, panel(), diff);
+  EXPECT_GT(cv::countNonZero(diff.reshape(1)), 0) << "the turned view shows the old frame";
+}
+
 TEST(UiScreens, TappedTraceAppearsWhereTappedAndIsStoredThere) {
   const fs::path project = copy_of_demo("mapping");
   auto s = open_session(project);
