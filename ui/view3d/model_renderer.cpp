@@ -7,6 +7,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "ui/platform/texture_generation.h"
 #include "ui/view3d/gles_program.h"
 
 namespace rockface::ui {
@@ -127,6 +128,7 @@ unsigned ModelRenderer::render(const OrbitCamera& camera, const OverlayScene& ov
     target_ = std::make_unique<Framebuffer>(camera.width(), camera.height());
   drawn_ = {view_projection, coarse, uploads_, overlay};
   ++frames_drawn_;
+  note_texture_changed();
   target_->bind();
   // Dark grey behind the model: the face's texture stands out in daylight.
   glClearColor(0.18f, 0.18f, 0.2f, 1.0f);
