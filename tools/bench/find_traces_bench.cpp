@@ -52,7 +52,7 @@ void BM_FindTracesOnTheTablet(benchmark::State& state) {
   // Far more than the search takes on 2 cores: a stuck search, not a slow one.
   constexpr double kGiveUpS = 300;
   double first_s = 0, whole_s = 0, first_cpu_s = 0, whole_cpu_s = 0;
-  long frames = 0, model_frames = 0, first_count = 0, whole_count = 0;
+  long frames = 0, model_frames = 0, first_count = 0, whole_count = 0, screen_frames = 0;
   for (auto _ : state) {
     state.PauseTiming();
     rockface::app::FieldRunners runners{""};
@@ -71,6 +71,7 @@ void BM_FindTracesOnTheTablet(benchmark::State& state) {
     }
     const ProposalsState& proposals = s.state().mapping.proposals;
     const long model_frames_from = s.state().model_view.frames_drawn();
+    const long screen_frames_from = s.frames_drawn();
     state.ResumeTiming();
     const double from = seconds_now(), cpu_from = process_cpu_now();
     s.tap("Find traces");
@@ -98,6 +99,7 @@ void BM_FindTracesOnTheTablet(benchmark::State& state) {
     }
     whole_count = static_cast<long>(proposals.result->proposals.size());
     model_frames = s.state().model_view.frames_drawn() - model_frames_from;
+    screen_frames = s.frames_drawn() - screen_frames_from;
     state.ResumeTiming();
   }
   state.counters["first_s"] = first_s;
@@ -108,8 +110,36 @@ void BM_FindTracesOnTheTablet(benchmark::State& state) {
   state.counters["proposals"] = static_cast<double>(whole_count);
   state.counters["frames"] = static_cast<double>(frames);
   state.counters["model_frames_drawn"] = static_cast<double>(model_frames);
+  state.counters["screen_frames_drawn"] = static_cast<double>(screen_frames);
 }
 BENCHMARK(BM_FindTracesOnTheTablet)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The Mapping screen on the same model with nothing happening: the CPU of
+// a frame built (and drawn only when it shows something new), and how many
+// of them were drawn.
+void BM_MappingScreenStillFrame(benchmark::State& state) {
+  const fs::path project = find_traces_project();
+  if (!fs::exists(project)) {
+    state.SkipWithError(("no project " + project.string() + " (see the bench's header)").c_str());
+    return;
+  }
+  UiOptions options;
+  options.project = project;
+  HeadlessSession s(options, FieldServices{}, 1280, 800);
+  s.settle();
+  s.tap("Mapping");
+  s.settle();
+  const long drawn_from = s.frames_drawn();
+  const double cpu_from = process_cpu_now();
+  long frames = 0;
+  for (auto _ : state) {
+    s.frame();
+    ++frames;
+  }
+  state.counters["cpu_ms_per_frame"] = 1e3 * (process_cpu_now() - cpu_from) / frames;
+  state.counters["screen_frames_drawn"] = static_cast<double>(s.frames_drawn() - drawn_from);
+}
+BENCHMARK(BM_MappingScreenStillFrame)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 }  // namespace
 

@@ -4,7 +4,10 @@
 // Every value is the one the whole image gives in one call: OpenCV's
 // filters read a row view's neighbouring rows from the image it is cut
 // from (their border rule applies only at the image's own edges), and
-// per-pixel work writes only its own stripe's rows. ROCKFACE_THREADS=1
+// per-pixel work writes only its own stripe's rows. The stripes run on
+// OpenCV's own thread pool (cv::parallel_for_), the one its functions use
+// inside: threads started for each stripe of each stage, beside that
+// pool's, cost more CPU than they saved. ROCKFACE_THREADS=1
 // (core/common/parallel.h) runs the one stripe on the calling thread.
 //
 // OpenCV's element-wise functions treat a continuous image as one array
@@ -41,13 +44,24 @@ inline std::vector<int> row_stripe_starts(cv::Size size, unsigned threads) {
 template <class F>
 void for_row_stripes(cv::Size size, F&& f) {
   if (size.height <= 0) return;
-  const std::vector<int> starts = row_stripe_starts(size, analysis_threads());
-  parallel_for(
-      starts.size(),
-      [&](std::size_t i) {
-        f(cv::Range(starts[i], i + 1 < starts.size() ? starts[i + 1] : size.height));
+  const unsigned threads =
+      std::min(analysis_threads(), static_cast<unsigned>(std::max(1, cv::getNumThreads())));
+  const std::vector<int> starts = row_stripe_starts(size, threads);
+  const auto stripe = [&](int i) {
+    const auto k = static_cast<std::size_t>(i);
+    f(cv::Range(starts[k], k + 1 < starts.size() ? starts[k + 1] : size.height));
+  };
+  if (starts.size() == 1) {
+    stripe(0);
+    return;
+  }
+  const int count = static_cast<int>(starts.size());
+  cv::parallel_for_(
+      cv::Range(0, count),
+      [&](const cv::Range& r) {
+        for (int i = r.start; i < r.end; ++i) stripe(i);
       },
-      static_cast<unsigned>(starts.size()));
+      count);
 }
 
 }  // namespace rockface::measure::proposals
