@@ -15,15 +15,11 @@
 
 #include <gtest/gtest.h>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "camera/synthetic_tunnel.h"
-#include "core/tunnel/design_profile.h"
 #include "firmware-app/export/visit_export.h"
-#include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
-#include "storage/tunnel/visit_heading.h"
 #include "tests/support/dxf_reading.h"
+#include "tests/support/rendered_tunnel_project.h"
 
 namespace rockface::app {
 namespace {
@@ -59,61 +55,14 @@ camera::RenderedBreak east_wall_break() {
   return b;
 }
 
-struct SouthVisit {
-  const char* label;
-  camera::RenderedTunnelSpec spec;
-  const char* started_at;
-  storage::RecordId id = 0;
-};
+// The south heading's visits, each placed at its face by a typed chainage.
+test::RenderedTunnelVisit south_visit(const char* label, camera::RenderedTunnelSpec spec,
+                                      const char* started_at) {
+  return {label, "South portal", spec, started_at, "typed"};
+}
 
-void make_project(const fs::path& file, std::vector<SouthVisit>& visits) {
-  storage::ProjectInfo info;
-  info.name = "south heading";
-  info.datum = kDatum;
-  {
-    storage::ProjectStore store = storage::ProjectStore::create(file, info);
-    storage::TunnelRecord tunnel;
-    tunnel.name = "drive";
-    tunnel.stations = {{0, kDatum}, {200, kDatum + Eigen::Vector3d(0, 200, 0)}};
-    tunnel.radii = {0};
-    tunnel.profile = tunnel::circle_profile(kRadius);
-    store.save_tunnel(tunnel);
-    const tunnel::Alignment ascending = tunnel.alignment(kDatum);
-    std::vector<unsigned char> png;
-    cv::imencode(".png", cv::Mat(8, 8, CV_8UC3, cv::Scalar(90, 90, 90)), png);
-    for (auto& v : visits) {
-      v.id = store.begin_visit("tablet", v.label);
-      storage::Model model;
-      for (const auto& patch :
-           camera::rendered_tunnel_patches(v.spec, ascending, tunnel.profile, v.label)) {
-        const int base = static_cast<int>(model.mesh.vertices.size());
-        for (const auto& p : patch.polygon) model.mesh.vertices.push_back(p);
-        for (int k = 1; k + 1 < static_cast<int>(patch.polygon.size()); ++k)
-          model.mesh.faces.push_back({base, base + k, base + k + 1});
-      }
-      model.registration.kind = "ground_control";
-      model.registration.rms_m = 0.005;
-      model.registration.parameters_json = "{}";
-      model.preset = "fast";
-      storage::Capture capture;
-      capture.visit_id = v.id;
-      capture.label = v.label;
-      capture.left.bytes = capture.right.bytes = png;
-      model.capture_id = store.save_capture(capture);
-      store.save_model(model);
-      storage::VisitPlacement placement;
-      placement.visit_id = v.id;
-      placement.chainage = v.spec.face_chainage;
-      placement.note = "typed";
-      store.save_visit_placement(placement);
-      storage::save_visit_heading(store, v.id, "South portal");
-    }
-  }
-  storage::sqlite::Connection db(file, storage::sqlite::Connection::Access::read_write);
-  for (const auto& v : visits)
-    db.exec("UPDATE visit SET started_at = '" + std::string(v.started_at) +
-                "' WHERE id = " + std::to_string(v.id),
-            "dating the test's visits");
+void make_project(const fs::path& file, std::vector<test::RenderedTunnelVisit>& visits) {
+  test::make_rendered_tunnel_project(file, {"south heading", "drive", kDatum, kRadius}, visits);
 }
 
 TEST(RoundDrawing, ADescendingHeadingsBreakIsDrawnOnTheWallItIsOn) {
@@ -121,8 +70,9 @@ TEST(RoundDrawing, ADescendingHeadingsBreakIsDrawnOnTheWallItIsOn) {
       fs::temp_directory_path() / ("rockface-round-drawing-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  std::vector<SouthVisit> visits{{"S1", round_spec(128, 124), "2026-03-02T14:00:00Z"},
-                                 {"S2", round_spec(126, 120), "2026-03-03T14:00:00Z"}};
+  std::vector<test::RenderedTunnelVisit> visits{
+      south_visit("S1", round_spec(128, 124), "2026-03-02T14:00:00Z"),
+      south_visit("S2", round_spec(126, 120), "2026-03-03T14:00:00Z")};
   visits[1].spec.breaks.push_back(east_wall_break());
   const camera::RenderedTunnelSpec& broken = visits[1].spec;
   make_project(dir / "p.rockface", visits);
