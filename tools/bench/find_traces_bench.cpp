@@ -8,30 +8,23 @@
 // process's CPU over the same time; the frames drawn and how many of them
 // the model renderer drew (a still model is not drawn again).
 //
-// The project: `rockface replay tools/samples/tunnel-face.scene.json
-// --preset standard --project P` and ROCKFACE_UI_BENCH_PROJECT=P (the
-// default is ui_bench's out/tunnel-face-24mpx.rockface). Find traces keeps
-// its proposals in the session: the project is not changed.
+// The project: tools/bench/ui_bench_project.h (the figures in
+// docs/accuracy-cost.md: the tunnel face replayed at standard). Find traces
+// keeps its proposals in the session: the project is not changed.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
-#include <filesystem>
 
 #include "firmware-app/services/ui_services.h"
+#include "tools/bench/ui_bench_project.h"
 #include "ui/platform/frame_pacer.h"
 #include "ui/platform/headless_session.h"
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace rockface::ui;
-
-fs::path find_traces_project() {
-  if (const char* p = std::getenv("ROCKFACE_UI_BENCH_PROJECT")) return p;
-  return fs::path(ROCKFACE_SOURCE_DIR) / "out/tunnel-face-24mpx.rockface";
-}
 
 double seconds_now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -44,11 +37,7 @@ double process_cpu_now() {
 }
 
 void BM_FindTracesOnTheTablet(benchmark::State& state) {
-  const fs::path project = find_traces_project();
-  if (!fs::exists(project)) {
-    state.SkipWithError(("no project " + project.string() + " (see the bench's header)").c_str());
-    return;
-  }
+  if (!have_ui_bench_project(state)) return;
   // Far more than the search takes on 2 cores: a stuck search, not a slow one.
   constexpr double kGiveUpS = 300;
   double first_s = 0, whole_s = 0, first_cpu_s = 0, whole_cpu_s = 0;
@@ -60,7 +49,7 @@ void BM_FindTracesOnTheTablet(benchmark::State& state) {
     services.sync = nullptr;
     services.camera = nullptr;
     UiOptions options;
-    options.project = project;
+    options.project = ui_bench_project();
     HeadlessSession s(options, services, 1280, 800);
     s.settle();
     s.tap("Mapping");
@@ -118,13 +107,9 @@ BENCHMARK(BM_FindTracesOnTheTablet)->Unit(benchmark::kMillisecond)->Iterations(1
 // a frame built (and drawn only when it shows something new), and how many
 // of them were drawn.
 void BM_MappingScreenStillFrame(benchmark::State& state) {
-  const fs::path project = find_traces_project();
-  if (!fs::exists(project)) {
-    state.SkipWithError(("no project " + project.string() + " (see the bench's header)").c_str());
-    return;
-  }
+  if (!have_ui_bench_project(state)) return;
   UiOptions options;
-  options.project = project;
+  options.project = ui_bench_project();
   HeadlessSession s(options, FieldServices{}, 1280, 800);
   s.settle();
   s.tap("Mapping");
