@@ -15,6 +15,7 @@
 #include "camera/command_thread.h"
 #include "camera/gphoto2_errors.h"
 #include "camera/gphoto2_handles.h"
+#include "camera/gphoto2_settings.h"
 #include "camera/gphoto2_shot_wait.h"
 #include "camera/gphoto2_widgets.h"
 #include "core/common/atomic_file.h"
@@ -23,7 +24,7 @@ namespace rockface::camera {
 
 namespace fs = std::filesystem;
 using Kind = CameraError::Kind;
-using namespace gphoto2;  // handles and widgets (gphoto2_handles.h, gphoto2_widgets.h)
+using namespace gphoto2;  // gphoto2_handles.h, gphoto2_widgets.h, gphoto2_settings.h
 
 namespace {
 
@@ -64,24 +65,6 @@ Capture as_capture(std::vector<CapturedFile> got, const std::string& body_serial
 }
 
 }  // namespace
-
-const char* tablet_setting_name(TabletSetting setting) {
-  switch (setting) {
-    case TabletSetting::iso:
-      return "ISO";
-    case TabletSetting::aperture:
-      return "aperture";
-    case TabletSetting::shutter_speed:
-      return "shutter speed";
-    case TabletSetting::image_format:
-      return "image format";
-    case TabletSetting::focus_mode:
-      return "focus mode";
-    case TabletSetting::white_balance:
-      break;
-  }
-  return "white balance";
-}
 
 struct Gphoto2Camera::State {
   Options options;
@@ -212,32 +195,20 @@ struct Gphoto2Camera::State {
     reconnecting = false;
     model = want_model;
     port = want_port;
-    serial = read_serial();
+    serial = read_serial_number(camera, context);
   }
 
-  // The first serial-number widget the camera has; empty for none (the
-  // directory camlib, some compacts).
-  std::string read_serial() {
-    CameraWidget* root = nullptr;
-    if (gp_camera_get_config(camera, &root, context) < GP_OK) return {};
-    WidgetPtr owned(root);
-    for (const auto& n : kSerialNames) {
-      CameraWidget* child = nullptr;
-      if (gp_widget_get_child_by_name(root, n.c_str(), &child) == GP_OK)
-        return setting_of_widget(child).value;
-    }
-    return {};
+  // The open camera's settings (gphoto2_settings.h), errors checked as
+  // every other call's.
+  CameraSettings settings() {
+    return CameraSettings(camera, context, model,
+                          [this](int rc, const std::string& action) { check(rc, action); });
   }
 
-  // The first of the setting's names this camera has; throws naming the
-  // setting when it has none.
+  // The first of the tablet setting's names this camera has; throws naming
+  // the setting when it has none.
   std::string tablet_setting_widget(TabletSetting which, const char* doing) {
-    const std::string name = find_setting(widget_names(which));
-    if (name.empty())
-      throw CameraError(Kind::not_supported, "The " + model + " does not let rockface " + doing +
-                                                 " the " + tablet_setting_name(which) +
-                                                 " over USB; set it on the camera");
-    return name;
+    return settings().require(widget_names(which), doing, tablet_setting_name(which));
   }
 
   static std::vector<DetectedCamera> detect_with(GPContext* context) {
@@ -319,65 +290,6 @@ struct Gphoto2Camera::State {
     }
   }
 
-  WidgetPtr config_root() {
-    CameraWidget* root = nullptr;
-    check(gp_camera_get_config(camera, &root, context), "Reading the camera settings");
-    return WidgetPtr(root);
-  }
-
-  // The first of `names` that the camera has, or empty.
-  std::string find_setting(const std::vector<std::string>& names) {
-    WidgetPtr root = config_root();
-    for (const auto& n : names) {
-      CameraWidget* child = nullptr;
-      if (gp_widget_get_child_by_name(root.get(), n.c_str(), &child) == GP_OK) return n;
-    }
-    return {};
-  }
-
-  CameraSetting read_setting(const std::string& name) {
-    WidgetPtr root = config_root();
-    CameraWidget* child = nullptr;
-    if (gp_widget_get_child_by_name(root.get(), name.c_str(), &child) < GP_OK)
-      throw CameraError(Kind::not_supported, "The " + model + " has no setting \"" + name + "\"");
-    return setting_of_widget(child);
-  }
-
-  void write_setting(const std::string& name, const std::string& value) {
-    WidgetPtr root = config_root();
-    CameraWidget* child = nullptr;
-    if (gp_widget_get_child_by_name(root.get(), name.c_str(), &child) < GP_OK)
-      throw CameraError(Kind::not_supported, "The " + model + " has no setting \"" + name + "\"");
-    const CameraSetting current = setting_of_widget(child);
-    if (current.read_only)
-      throw CameraError(Kind::not_supported, "The " + model + "'s " + current.label +
-                                                 " cannot be changed over USB (set it on the "
-                                                 "camera)");
-    if (!current.choices.empty() &&
-        std::find(current.choices.begin(), current.choices.end(), value) == current.choices.end()) {
-      std::string offered;
-      for (const auto& c : current.choices) offered += (offered.empty() ? "" : ", ") + c;
-      throw CameraError(Kind::bad_value, "The " + model + " offers " + current.label + " " +
-                                             offered + "; \"" + value + "\" is not one of them");
-    }
-    CameraWidgetType type;
-    gp_widget_get_type(child, &type);
-    int rc;
-    if (type == GP_WIDGET_TOGGLE || type == GP_WIDGET_DATE) {
-      const int v = std::atoi(value.c_str());
-      rc = gp_widget_set_value(child, &v);
-    } else if (type == GP_WIDGET_RANGE) {
-      const float v = std::strtof(value.c_str(), nullptr);
-      rc = gp_widget_set_value(child, &v);
-    } else {
-      rc = gp_widget_set_value(child, value.c_str());
-    }
-    check(rc, "Setting " + current.label + " to " + value);
-    rc = gp_camera_set_single_config(camera, name.c_str(), child, context);
-    if (rc == GP_ERROR_NOT_SUPPORTED) rc = gp_camera_set_config(camera, root.get(), context);
-    check(rc, "Setting " + current.label + " to " + value);
-  }
-
   static long long ms_until(std::chrono::steady_clock::time_point end) {
     return std::max<long long>(std::chrono::duration_cast<std::chrono::milliseconds>(
                                    end - std::chrono::steady_clock::now())
@@ -445,16 +357,10 @@ struct Gphoto2Camera::State {
 
   // The body's battery level in percent; none when it gives no number.
   std::optional<int> read_battery() {
-    for (const auto& n : kBatteryNames) {
-      CameraWidget* w = nullptr;
-      if (gp_camera_get_single_config(camera, n.c_str(), &w, context) < GP_OK) continue;
-      WidgetPtr owned(w);
-      const std::string v = setting_of_widget(w).value;
-      if (v.empty() || !std::isdigit(static_cast<unsigned char>(v.front()))) return std::nullopt;
-      return std::atoi(v.c_str());
-    }
-    std::exchange(driver_error, {});
-    return std::nullopt;
+    const std::optional<std::string> value = read_battery_value(camera, context);
+    // The failed reads' driver text belongs to no later call.
+    if (!value) std::exchange(driver_error, {});
+    return value ? battery_percent_of(*value) : std::nullopt;
   }
 
   // Triggers one shot and waits for its files (gphoto2_shot_wait.h); each
@@ -508,7 +414,7 @@ std::string Gphoto2Camera::serial_number() {
 std::vector<CameraSetting> Gphoto2Camera::settings() {
   return thread_->call([this] {
     state_->ensure_connected();
-    WidgetPtr root = state_->config_root();
+    WidgetPtr root = state_->settings().root();
     std::vector<CameraSetting> out;
     collect_leaf_settings(root.get(), out);
     return out;
@@ -518,32 +424,24 @@ std::vector<CameraSetting> Gphoto2Camera::settings() {
 CameraSetting Gphoto2Camera::setting(const std::string& name) {
   return thread_->call([&] {
     state_->ensure_connected();
-    return state_->read_setting(name);
+    return state_->settings().read(name);
   });
 }
 
 void Gphoto2Camera::set_setting(const std::string& name, const std::string& value) {
   thread_->call([&] {
     state_->ensure_connected();
-    state_->write_setting(name, value);
+    state_->settings().write(name, value);
   });
 }
 
 void Gphoto2Camera::apply(const ExposureSettings& exposure) {
   thread_->call([&] {
     state_->ensure_connected();
+    const CameraSettings settings = state_->settings();
     auto set = [&](const std::optional<std::string>& value, const std::vector<std::string>& names,
                    const char* what) {
-      if (!value) return;
-      const std::string name = state_->find_setting(names);
-      if (name.empty())
-        throw CameraError(Kind::not_supported, "The " + state_->model +
-                                                   " does not let rockface "
-                                                   "set the " +
-                                                   what +
-                                                   " over USB; set it on "
-                                                   "the camera");
-      state_->write_setting(name, *value);
+      if (value) settings.write(settings.require(names, "set", what), *value);
     };
     set(exposure.program, kProgramNames, "exposure program");
     set(exposure.aperture, kApertureNames, "aperture");
@@ -557,27 +455,24 @@ void Gphoto2Camera::apply(const ExposureSettings& exposure) {
 CameraSetting Gphoto2Camera::tablet_setting(TabletSetting which) {
   return thread_->call([&] {
     state_->ensure_connected();
-    return state_->read_setting(state_->tablet_setting_widget(which, "read"));
+    return state_->settings().read(state_->tablet_setting_widget(which, "read"));
   });
 }
 
 void Gphoto2Camera::set_tablet_setting(TabletSetting which, const std::string& value) {
   thread_->call([&] {
     state_->ensure_connected();
-    state_->write_setting(state_->tablet_setting_widget(which, "set"), value);
+    state_->settings().write(state_->tablet_setting_widget(which, "set"), value);
   });
 }
 
 FlashState Gphoto2Camera::flash() {
   return thread_->call([this] {
     state_->ensure_connected();
-    const std::string name = state_->find_setting(kFlashNames);
+    const CameraSettings settings = state_->settings();
+    const std::string name = settings.find(kFlashNames);
     if (name.empty()) return FlashState::unknown;
-    const std::string v = lower(state_->read_setting(name).value);
-    if (v.find("off") != std::string::npos || v.find("no flash") != std::string::npos ||
-        v.find("suppress") != std::string::npos)
-      return FlashState::off;
-    return FlashState::on;
+    return flash_state_of(settings.read(name).value);
   });
 }
 
@@ -585,21 +480,18 @@ void Gphoto2Camera::lock_focus() {
   thread_->call([this] {
     state_->ensure_connected();
     // Focus once on what the camera sees, then hold it: manual focus mode.
-    const std::string drive = state_->find_setting(kAutofocusNames);
-    if (!drive.empty()) state_->write_setting(drive, "1");
-    const std::string mode = state_->find_setting(kFocusModeNames);
+    const CameraSettings settings = state_->settings();
+    const std::string drive = settings.find(kAutofocusNames);
+    if (!drive.empty()) settings.write(drive, "1");
+    const std::string mode = settings.find(kFocusModeNames);
     if (mode.empty())
       throw CameraError(Kind::not_supported, "The " + state_->model +
                                                  " does not let rockface lock focus over USB: "
                                                  "focus once on the face, then switch the lens "
                                                  "to MF");
-    const CameraSetting s = state_->read_setting(mode);
-    for (const auto& choice : s.choices) {
-      const std::string c = lower(choice);
-      if (c == "mf" || c.find("manual") != std::string::npos || c == "mf (fixed)") {
-        state_->write_setting(mode, choice);
-        return;
-      }
+    if (const auto manual = manual_focus_choice(settings.read(mode).choices)) {
+      settings.write(mode, *manual);
+      return;
     }
     throw CameraError(Kind::not_supported, "The " + state_->model +
                                                " offers no manual focus mode over USB: focus "

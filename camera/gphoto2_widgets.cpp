@@ -93,3 +93,25 @@ void collect_leaf_settings(CameraWidget* w, std::vector<CameraSetting>& out) {
 }
 
 }  // namespace rockface::camera::gphoto2
+
+namespace rockface::camera {
+
+const char* tablet_setting_name(TabletSetting setting) {
+  switch (setting) {
+    case TabletSetting::iso:
+      return "ISO";
+    case TabletSetting::aperture:
+      return "aperture";
+    case TabletSetting::shutter_speed:
+      return "shutter speed";
+    case TabletSetting::image_format:
+      return "image format";
+    case TabletSetting::focus_mode:
+      return "focus mode";
+    case TabletSetting::white_balance:
+      break;
+  }
+  return "white balance";
+}
+
+}  // namespace rockface::camera

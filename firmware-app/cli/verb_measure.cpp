@@ -8,87 +8,29 @@
 // stored as a new visit or, with --add-to-visit, in the visit measured on. Everything
 // is measured before anything is written: a bad pick stops the verb (exit 2)
 // naming it, with nothing stored and no output file
-// (firmware-app/measure/measure_workflow.h).
+// (firmware-app/measure/measure_workflow.h). The options are read into the
+// request by measure_options.h.
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <optional>
-#include <sstream>
-#include <stdexcept>
 
-#include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/measure/joined_traces.h"
 #include "firmware-app/cli/verb_registry.h"
+#include "firmware-app/measure/measure_options.h"
 #include "firmware-app/measure/measure_records.h"
 #include "firmware-app/measure/measure_workflow.h"
 
 namespace rockface::app {
 namespace {
 
-struct MeasureOptions {
-  MeasureRequest request;
-  std::string sets;  // a count or "auto"; empty: the picks'
-  std::optional<storage::RecordId> add_to_visit;
-};
-
-// --add-to-visit N: measure on visit N's 3D images and store in it; the
-// visit is then given by this option alone.
-void take_visit_to_add_to(MeasureOptions& o) {
-  if (!o.add_to_visit) return;
-  if (o.request.on.visit || o.request.on.model)
-    throw InputError("--add-to-visit",
-                     "it names the visit measured on and stored in: leave out --visit and --model");
-  o.request.on.visit = o.add_to_visit;
-  o.request.add_to_visit = true;
-}
-
-// --sets: a count in [1, 12], or "auto".
-void parse_sets(const std::string& text, MeasureRequest& request) {
-  request.automatic_sets = text == "auto";
-  if (text.empty() || text == "auto") return;
-  try {
-    std::size_t used = 0;
-    request.sets = std::stoi(text, &used);
-    if (used != text.size()) throw std::invalid_argument(text);
-  } catch (const std::exception&) {
-    throw InputError("--sets", "\"" + text + "\" is not a count or \"auto\"");
-  }
-  if (*request.sets < 1 || *request.sets > 12)
-    throw InputError("--sets", text + " is outside [1, 12]");
-}
-
-// --point-sigma: a picked point's precision, a length in (0, 10] m (issue
-// 41: nan, inf, 0 or -1 made every joint "orientation unknown").
-void check_point_sigma(const std::optional<double>& sigma) {
-  if (sigma && !(*sigma > 0 && *sigma <= 10)) {
-    std::ostringstream value;
-    value << *sigma;
-    throw InputError("--point-sigma", value.str() + " is outside (0, 10] m");
-  }
-}
-
-// --friction: the stereonet overlay's friction angle, in (0, 90) degrees
-// and finite (issue 41: nan, 90 or 1e308 drew a meaningless overlay).
-void check_friction(double friction_deg) {
-  if (!(friction_deg > 0 && friction_deg < 90)) {
-    std::ostringstream value;
-    value << friction_deg;
-    throw InputError("--friction", value.str() + " is outside (0, 90) degrees");
-  }
-}
-
-int run_measure(MeasureOptions& o) {
-  check_point_sigma(o.request.on.point_sigma);
-  check_friction(o.request.friction_deg);
-  parse_sets(o.sets, o.request);
-  take_visit_to_add_to(o);
-  const std::string project = o.request.on.source;
-  o.request.stored = [&](storage::RecordId visit) {
-    std::cout << (o.request.add_to_visit ? "added to " : "stored in ") << project << ", visit "
-              << visit << "\n";
+int run_measure(const MeasureOptions& o) {
+  MeasureRequest request = measure_request(o);
+  request.stored = [&](storage::RecordId visit) {
+    std::cout << (request.add_to_visit ? "added to " : "stored in ") << request.on.source
+              << ", visit " << visit << "\n";
   };
-  const measure::MeasuredPicks measured = measure_picks_file(o.request).measured;
+  const measure::MeasuredPicks measured = measure_picks_file(request).measured;
   std::size_t known = 0;
   for (const auto& t : measured.traces) known += t.m.plane.known ? 1 : 0;
   std::cout << measured.traces.size() << " traces (" << known << " with a known plane), "

@@ -221,7 +221,12 @@ std::size_t add_blocks(storage::DxfDrawing& drawing,
 
 std::size_t add_profile(storage::DxfDrawing& drawing, const VisitProfile& profile,
                         const Eigen::Vector3d& datum, std::vector<std::string>& notes) {
-  const tunnel::Alignment alignment = profile.tunnel.alignment(datum);
+  // The round's own heading's direction (round_start.h), as its sections
+  // were measured in: the developed view's arc length runs from the right
+  // of the drive, so a heading driven toward descending chainage read in the
+  // tunnel's ascending frame would be drawn mirrored about the axis.
+  tunnel::Alignment alignment = profile.tunnel.alignment(datum);
+  alignment.set_drive(profile.sense > 0 ? tunnel::Drive::ascending : tunnel::Drive::descending);
   const tunnel::DesignProfile& design = profile.tunnel.profile;
   const auto outline = design_outline(design);
   const auto& view = profile.deviation.view;

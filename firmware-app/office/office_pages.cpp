@@ -14,6 +14,7 @@
 #include "core/rockmass/figures_in_words.h"
 #include "firmware-app/office/office_workflows.h"
 #include "storage/office/server_records.h"
+#include "storage/office/server_schema.h"
 #include "storage/project/model_registration.h"
 
 namespace rockface::app::office_web {
@@ -94,8 +95,14 @@ std::string tunnel_stamp(office::Connection& c, const std::string& tunnel) {
 }
 
 json drive_page(office::Connection& c, const std::string& tunnel, const DriveFilter& filter) {
+  return drive_page(read_drive_page(c, tunnel, filter));
+}
+
+DriveRead read_drive_page(office::Connection& c, const std::string& tunnel,
+                          const DriveFilter& filter) {
   const std::int64_t id = tunnel_id(c, tunnel);
-  json out;
+  DriveRead read;
+  json& out = read.page;
   out["tunnel"] = tunnel;
   out["stamp"] = tunnel_stamp(c, tunnel);
   // One query for the visit list: the latest live revision of the records
@@ -182,43 +189,58 @@ json drive_page(office::Connection& c, const std::string& tunnel, const DriveFil
   if (all_headings.count(kNoHeading)) heading_list.push_back(kNoHeading);
   out["headings"] = std::move(heading_list);
 
+  // The drive's records of sets: tracked in drive_page (no server).
+  try {
+    office::require_compatible_server(c);
+    read.drive = office::read_server_drive(c, tunnel);
+  } catch (const InputError& e) {
+    c.exec("ROLLBACK", "ending the drive's reading");
+    read.sets_note = std::string("no sets along the drive: ") + e.what();
+  }
+  return read;
+}
+
+json drive_page(DriveRead read) {
+  json out = std::move(read.page);
   // The sets along the drive: the same tracks as `rockface drive
   // postgresql://...` (firmware-app/office/office_workflows.h).
   json tracks = json::array();
-  try {
-    const tunnel::DriveSets d = server_drive(c, tunnel);
-    for (const auto& t : d.tracks) {
-      json track;
-      track["name"] = "set " + std::to_string(t.id);
-      std::string flags;
-      if (t.appears) flags += "new ";
-      if (t.turns) flags += "turns ";
-      if (t.vanishes) flags += "vanishes";
-      track["flags"] = flags;
-      json points = json::array();
-      for (const auto& p : t.points) {
-        json q;
-        q["chainage"] = p.chainage;
-        q["dip"] = p.dip_deg;
-        q["dipdir"] = p.dipdir_deg;
-        q["turned"] = p.turned;
-        // alpha95 gives the fitting precision of the mean orientation.
-        q["text"] = "ch " + format_fixed(p.chainage, 1, " m") + ": " +
-                    dip_and_direction_text(p.dip_deg, p.dipdir_deg) +
-                    (p.alpha95_deg < 180 ? " ±" + format_fixed(p.alpha95_deg, 0, "°") : "") + " (" +
-                    std::to_string(p.count) + " planes)";
-        points.push_back(std::move(q));
+  out["sets_note"] = read.sets_note;
+  if (read.drive) {
+    try {
+      const tunnel::DriveSets d = server_drive(*read.drive);
+      for (const auto& t : d.tracks) {
+        json track;
+        track["name"] = "set " + std::to_string(t.id);
+        std::string flags;
+        if (t.appears) flags += "new ";
+        if (t.turns) flags += "turns ";
+        if (t.vanishes) flags += "vanishes";
+        track["flags"] = flags;
+        json points = json::array();
+        for (const auto& p : t.points) {
+          json q;
+          q["chainage"] = p.chainage;
+          q["dip"] = p.dip_deg;
+          q["dipdir"] = p.dipdir_deg;
+          q["turned"] = p.turned;
+          // alpha95 gives the fitting precision of the mean orientation.
+          q["text"] = "ch " + format_fixed(p.chainage, 1, " m") + ": " +
+                      dip_and_direction_text(p.dip_deg, p.dipdir_deg) +
+                      (p.alpha95_deg < 180 ? " ±" + format_fixed(p.alpha95_deg, 0, "°") : "") +
+                      " (" + std::to_string(p.count) + " planes)";
+          points.push_back(std::move(q));
+        }
+        track["points"] = std::move(points);
+        json events = json::array();
+        for (const auto& e : t.events) events.push_back(e.message);
+        track["events"] = std::move(events);
+        tracks.push_back(std::move(track));
       }
-      track["points"] = std::move(points);
-      json events = json::array();
-      for (const auto& e : t.events) events.push_back(e.message);
-      track["events"] = std::move(events);
-      tracks.push_back(std::move(track));
+    } catch (const InputError& e) {
+      tracks = json::array();
+      out["sets_note"] = std::string("no sets along the drive: ") + e.what();
     }
-    out["sets_note"] = "";
-  } catch (const InputError& e) {
-    c.exec("ROLLBACK", "ending the drive's reading");
-    out["sets_note"] = std::string("no sets along the drive: ") + e.what();
   }
   out["sets"] = std::move(tracks);
   return out;

@@ -5,6 +5,7 @@
 // it was measured to, so the page never shows a raw number or a key; the
 // numbers the drawings need (chainage, dip) travel beside the text.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 
 #include "storage/field_report/field_report.h"
 #include "storage/office/pg_connection.h"
+#include "storage/office/server_drive.h"
 
 namespace rockface::app::office_web {
 
@@ -37,6 +39,18 @@ inline constexpr const char* kNoHeading = "—";
 // polls it). Throws InputError when the role may not read the tunnel.
 nlohmann::json drive_page(storage::office::Connection& c, const std::string& tunnel,
                           const DriveFilter& filter);
+// The same in two halves, so that the connection goes back to the pool
+// before the sets are tracked along the drive (issue 46): the rows read on
+// `c` (the page's visits, the drive's records of sets), then the page put
+// together without the server.
+struct DriveRead {
+  nlohmann::json page;  // all but the sets
+  std::optional<storage::office::ServerDrive> drive;
+  std::string sets_note;  // why there are no sets, when `drive` is empty
+};
+DriveRead read_drive_page(storage::office::Connection& c, const std::string& tunnel,
+                          const DriveFilter& filter);
+nlohmann::json drive_page(DriveRead read);
 
 // The state of the tunnel's records: changes with every sync.
 std::string tunnel_stamp(storage::office::Connection& c, const std::string& tunnel);

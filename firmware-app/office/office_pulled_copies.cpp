@@ -32,17 +32,15 @@ const std::string& checked_uuid(const std::string& uuid) {
 
 }  // namespace
 
-PulledVisit pulled_visit(SharedOfficeCache& cache, storage::office::Connection& db,
-                         const std::string& tunnel, const std::string& visit_uuid,
-                         bool photographs) {
+PulledVisit pulled_visit(SharedOfficeCache& cache, RequestConnection& db, const std::string& tunnel,
+                         const std::string& visit_uuid, bool photographs) {
   PullScope scope;
   scope.photographs = photographs;
   scope.visits = {checked_uuid(visit_uuid)};
   return visit_of(cache.pulled(db, tunnel, scope), tunnel, visit_uuid);
 }
 
-std::pair<PulledVisit, PulledVisit> pulled_visits(SharedOfficeCache& cache,
-                                                  storage::office::Connection& db,
+std::pair<PulledVisit, PulledVisit> pulled_visits(SharedOfficeCache& cache, RequestConnection& db,
                                                   const std::string& tunnel, const std::string& a,
                                                   const std::string& b) {
   PullScope scope;

@@ -20,17 +20,16 @@ struct PulledVisit {
   storage::RecordId visit_id = 0;          // the visit's id in it
 };
 
-// `db` acts as the session's role. Without `photographs` the copy's images
+// `db` acts as the session's role; it is back in the pool on return (the
+// copy's rows read: SharedOfficeCache::pulled). Without `photographs` the copy's images
 // are empty (a page fetches each one it shows from the server); the field
 // report and the exports, which print them, ask for them. Throws
 // InputError when the tunnel or the visit is not readable by the session's
 // role.
-PulledVisit pulled_visit(SharedOfficeCache& cache, storage::office::Connection& db,
-                         const std::string& tunnel, const std::string& visit_uuid,
-                         bool photographs = false);
+PulledVisit pulled_visit(SharedOfficeCache& cache, RequestConnection& db, const std::string& tunnel,
+                         const std::string& visit_uuid, bool photographs = false);
 // Two visits in one copy (side by side), without photographs.
-std::pair<PulledVisit, PulledVisit> pulled_visits(SharedOfficeCache& cache,
-                                                  storage::office::Connection& db,
+std::pair<PulledVisit, PulledVisit> pulled_visits(SharedOfficeCache& cache, RequestConnection& db,
                                                   const std::string& tunnel, const std::string& a,
                                                   const std::string& b);
 

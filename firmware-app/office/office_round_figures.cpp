@@ -34,9 +34,9 @@ constexpr std::chrono::seconds kBatchTime{5};
 
 }  // namespace
 
-RoundsBase read_rounds_base(SharedOfficeCache& cache, office::Connection& db,
+RoundsBase read_rounds_base(SharedOfficeCache& cache, RequestConnection& db,
                             const std::string& tunnel) {
-  const auto readable = readable_tunnels(db);
+  const auto readable = readable_tunnels(db.db());
   const auto id = readable.by_name.find(tunnel);
   if (id == readable.by_name.end())
     throw InputError("tunnel " + tunnel, "no such tunnel for this log-in");
@@ -44,8 +44,9 @@ RoundsBase read_rounds_base(SharedOfficeCache& cache, office::Connection& db,
   // Read before the copy the rounds are measured on: inputs older than
   // that copy only make a round measured again later; the copy older than
   // the inputs is caught by its stamp when the figures are kept.
-  out.inputs = office::round_inputs(db, id->second);
-  const std::map<std::string, office::KeptRound> kept = office::read_kept_rounds(db, id->second);
+  out.inputs = office::round_inputs(db.db(), id->second);
+  const std::map<std::string, office::KeptRound> kept =
+      office::read_kept_rounds(db.db(), id->second);
 
   PullScope figures_only;
   figures_only.photographs = false;
@@ -82,8 +83,7 @@ RoundsBase read_rounds_base(SharedOfficeCache& cache, office::Connection& db,
   return out;
 }
 
-void measure_rounds(SharedOfficeCache& cache,
-                    const std::function<office::ConnectionPool::Lease()>& connect,
+void measure_rounds(SharedOfficeCache& cache, const std::function<RequestConnection()>& connect,
                     const std::string& tunnel, const std::string& role, const RoundsBase& base,
                     const std::function<void(const std::map<std::string, json>&)>& measured,
                     const std::function<bool()>& stopping,
@@ -100,8 +100,8 @@ void measure_rounds(SharedOfficeCache& cache,
   std::shared_ptr<const SharedPull> meshes;
   {
     auto lease = connect();
-    meshes = most ? cache.pulled(lease.db(), tunnel, with_meshes)
-                  : cache.pulled_once(lease.db(), tunnel, with_meshes);
+    meshes = most ? cache.pulled(lease, tunnel, with_meshes)
+                  : cache.pulled_once(lease, tunnel, with_meshes);
   }
   std::optional<storage::ProjectStore> store = open_copy(*meshes);
   const std::string stamp = meshes->stamp;

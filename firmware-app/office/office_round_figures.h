@@ -36,9 +36,10 @@ struct RoundsBase {
 };
 
 // Read on `db` (acting as the person's role) from the shared copy without
-// photographs or meshes. Throws InputError when the role may not read the
-// tunnel.
-RoundsBase read_rounds_base(SharedOfficeCache& cache, storage::office::Connection& db,
+// photographs or meshes; `db` goes back to the pool once the copy's rows
+// are read, before the rounds are worked out. Throws InputError when the
+// role may not read the tunnel.
+RoundsBase read_rounds_base(SharedOfficeCache& cache, RequestConnection& db,
                             const std::string& tunnel);
 
 // Measures `base.to_measure` on a copy with meshes (photographs left out)
@@ -48,8 +49,7 @@ RoundsBase read_rounds_base(SharedOfficeCache& cache, storage::office::Connectio
 // visit uuid), `stopping` is asked between rounds, `log` hears a failure to
 // keep figures (the figures are shown all the same).
 void measure_rounds(
-    SharedOfficeCache& cache,
-    const std::function<storage::office::ConnectionPool::Lease()>& connect,
+    SharedOfficeCache& cache, const std::function<RequestConnection()>& connect,
     const std::string& tunnel, const std::string& role, const RoundsBase& base,
     const std::function<void(const std::map<std::string, nlohmann::json>&)>& measured,
     const std::function<bool()>& stopping, const std::function<void(const std::string&)>& log);

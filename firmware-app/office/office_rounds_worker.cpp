@@ -42,9 +42,9 @@ void RoundsWorker::queue(const std::string& key, Drive& d) {
   wake_.notify_one();
 }
 
-std::string RoundsWorker::page(office::Connection& db, const std::string& tunnel,
+std::string RoundsWorker::page(RequestConnection& db, const std::string& tunnel,
                                const std::string& role, RoundsCount* count) {
-  const ReadableTunnels readable = readable_tunnels(db);
+  const ReadableTunnels readable = readable_tunnels(db.db());
   const auto tunnel_id = readable.by_name.find(tunnel);
   if (tunnel_id == readable.by_name.end())
     throw InputError("tunnel " + tunnel, "no such tunnel for this log-in");
@@ -112,6 +112,9 @@ std::string RoundsWorker::page(office::Connection& db, const std::string& tunnel
   // Not read at this stamp yet: the drive page's placed visits (shared,
   // built once per sync) stand for the rounds meanwhile.
   const json drive = json::parse(cache_.drive(db, tunnel, {}));
+  // The rounds are put together without the connection (leased again for
+  // the one question below, once per sync).
+  db.release();
   if (!earlier) {
     const json page = rounds_being_read(drive);
     if (count) *count = {0, 0, page.at("measuring").get<int>()};
@@ -121,7 +124,8 @@ std::string RoundsWorker::page(office::Connection& db, const std::string& tunnel
     // The visits whose records a sync since the shown rounds' state wrote
     // (their revisions' time on the server), asked once per sync.
     const std::string since = earlier_stamp.substr(earlier_stamp.find('/') + 1);
-    changed = office::visits_synced_after(db, tunnel_id->second, since);
+    changed = office::visits_synced_after(db.db(), tunnel_id->second, since);
+    db.release();
     std::lock_guard guard(lock_);
     const auto it = drives_.find(key);
     if (it != drives_.end() && it->second.stamp == stamp) it->second.changed = changed;
@@ -158,12 +162,12 @@ void RoundsWorker::work(const std::string& key) {
   // away from it stops the run and queues the drive again.
   std::string shown;
   bool failed = false;
-  auto connect = [&] { return pool_.acquire(role); };
+  auto connect = [&] { return RequestConnection(pool_, role); };
   try {
     RoundsBase base;
     {
       auto lease = connect();
-      base = read_rounds_base(cache_, lease.db(), tunnel);
+      base = read_rounds_base(cache_, lease, tunnel);
     }
     {
       std::lock_guard guard(lock_);

@@ -57,8 +57,8 @@ class RoundsWorker {
   // The rounds page's JSON text for the role `db` acts as (`role`), never
   // waiting for a pull or a measurement. Throws InputError when the role
   // may not read the tunnel.
-  std::string page(storage::office::Connection& db, const std::string& tunnel,
-                   const std::string& role, RoundsCount* count = nullptr);
+  std::string page(RequestConnection& db, const std::string& tunnel, const std::string& role,
+                   RoundsCount* count = nullptr);
 
  private:
   // One drive as the sessions of the same readable tunnels see it.

@@ -5,6 +5,7 @@
 
 #include "core/common/error.h"
 #include "core/common/progress.h"
+#include "firmware-app/office/test_gate.h"
 #include "firmware-app/office/web_security.h"
 #include "storage/office/pull_project.h"
 #include "storage/project/project_sqlite.h"
@@ -53,9 +54,9 @@ std::shared_ptr<Entry> SharedOfficeCache::entry(std::map<std::string, std::share
   return e;
 }
 
-std::pair<std::string, std::string> SharedOfficeCache::checked_stamp(
-    storage::office::Connection& db, const std::string& tunnel) {
-  const ReadableTunnels readable = readable_tunnels(db);
+std::pair<std::string, std::string> SharedOfficeCache::checked_stamp(RequestConnection& db,
+                                                                     const std::string& tunnel) {
+  const ReadableTunnels readable = readable_tunnels(db.db());
   // The same answer as for a tunnel that does not exist.
   if (!readable.by_name.count(tunnel))
     throw InputError("tunnel " + tunnel, "no such tunnel for this log-in");
@@ -66,17 +67,17 @@ std::pair<std::string, std::string> SharedOfficeCache::checked_stamp(
     const auto it = stamps_.find(key);
     if (it != stamps_.end() && now - it->second.asked < kStampFresh) return {key, it->second.value};
   }
-  const std::string value = tunnel_stamp(db, tunnel);
+  const std::string value = tunnel_stamp(db.db(), tunnel);
   std::lock_guard guard(lock_);
   stamps_[key] = {value, now};
   return {key, value};
 }
 
-std::string SharedOfficeCache::stamp(storage::office::Connection& db, const std::string& tunnel) {
+std::string SharedOfficeCache::stamp(RequestConnection& db, const std::string& tunnel) {
   return checked_stamp(db, tunnel).second;
 }
 
-std::string SharedOfficeCache::drive(storage::office::Connection& db, const std::string& tunnel,
+std::string SharedOfficeCache::drive(RequestConnection& db, const std::string& tunnel,
                                      const DriveFilter& filter) {
   const auto checked = checked_stamp(db, tunnel);
   const std::string& key = checked.first;
@@ -97,12 +98,18 @@ std::string SharedOfficeCache::drive(storage::office::Connection& db, const std:
       std::lock_guard guard(page->data);
       if (!page->json.empty()) return page->json;  // an older state, while the build runs
     }
-    build.lock();  // nothing to show yet: wait for the build under way
+    // Nothing to show yet: wait for the build under way, the connection
+    // back in the pool meanwhile.
+    db.release();
+    build.lock();
     if (auto ready = current()) return *ready;
   }
   // Built on this request's connection: its role reads the same tunnels as
   // every session that shares the key.
-  nlohmann::json built = drive_page(db, tunnel, filter);
+  DriveRead read = read_drive_page(db.db(), tunnel, filter);
+  // The sets are tracked along the drive without the connection.
+  db.release();
+  nlohmann::json built = drive_page(std::move(read));
   // The stamp the page polls against is the one it is kept under.
   built["stamp"] = stamp;
   std::string text = built.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -112,7 +119,7 @@ std::string SharedOfficeCache::drive(storage::office::Connection& db, const std:
   return text;
 }
 
-std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Connection& db,
+std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(RequestConnection& db,
                                                             const std::string& tunnel,
                                                             const PullScope& scope) {
   const auto [key, stamp] = checked_stamp(db, tunnel);
@@ -121,20 +128,27 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::pulled(storage::office::Con
   for (const std::string& v : scope.visits) scoped += "\nvisit " + v;
   const auto pull = scope.visits.empty() ? entry(pulls_, scoped, kPulledCopies)
                                          : entry(visit_pulls_, scoped, kVisitCopies);
-  std::lock_guard build(pull->build);
-  if (pull->copy && pull->copy->stamp == stamp && std::filesystem::exists(pull->copy->file))
+  std::unique_lock build(pull->build, std::try_to_lock);
+  if (!build.owns_lock()) {
+    // Another request builds this copy: wait for it without a connection.
+    db.release();
+    build.lock();
+  }
+  if (pull->copy && pull->copy->stamp == stamp && std::filesystem::exists(pull->copy->file)) {
+    db.release();
     return pull->copy;
+  }
   pull->copy = make_copy(db, tunnel, stamp, scope);
   return pull->copy;
 }
 
-std::shared_ptr<const SharedPull> SharedOfficeCache::pulled_once(storage::office::Connection& db,
+std::shared_ptr<const SharedPull> SharedOfficeCache::pulled_once(RequestConnection& db,
                                                                  const std::string& tunnel,
                                                                  const PullScope& scope) {
   return make_copy(db, tunnel, checked_stamp(db, tunnel).second, scope);
 }
 
-std::shared_ptr<const SharedPull> SharedOfficeCache::make_copy(storage::office::Connection& db,
+std::shared_ptr<const SharedPull> SharedOfficeCache::make_copy(RequestConnection& db,
                                                                const std::string& tunnel,
                                                                const std::string& stamp,
                                                                const PullScope& scope) {
@@ -143,16 +157,18 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::make_copy(storage::office::
   copy->file = folder_ / ("tunnel-" + random_token().substr(0, 32) + ".rockface");
   copy->stamp = stamp;
   NoProgress quiet;
-  try {
-    office::PullOptions options;
-    options.photographs = scope.photographs;
-    options.meshes = scope.meshes;
-    options.visits = scope.visits;
-    office::pull_tunnel(db, tunnel, copy->file, quiet, options);
-  } catch (...) {
-    // The pull's snapshot transaction may still be open on the connection.
-    db.exec("ROLLBACK", "ending a failed pull");
-    throw;
+  office::PullOptions options;
+  options.photographs = scope.photographs;
+  options.meshes = scope.meshes;
+  options.visits = scope.visits;
+  // The server's rows and blobs in one snapshot; then the connection goes
+  // back to the pool while the copy is built (no database needed).
+  office::PullRead read = office::read_pull(db.db(), tunnel, copy->file, quiet, options);
+  db.release();
+  test_gate("copy-build");
+  {
+    CpuSlots::Slot slot(cpu_slots_);
+    office::build_pulled_project(read, quiet);
   }
   {
     storage::sqlite::Connection db(copy->file, storage::sqlite::Connection::Access::read_only);

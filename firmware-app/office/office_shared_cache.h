@@ -20,8 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "firmware-app/office/cpu_slots.h"
 #include "firmware-app/office/office_pages.h"
 #include "firmware-app/office/office_sessions.h"
+#include "firmware-app/office/request_connection.h"
 
 namespace rockface::app::office_web {
 
@@ -71,22 +73,28 @@ class SharedOfficeCache {
 
   // The drive page's JSON text for the role `db` acts as (office_pages.h's
   // drive_page; `db` a pooled connection acting as the session's role).
-  // Throws InputError when the role may not read the tunnel.
-  std::string drive(storage::office::Connection& db, const std::string& tunnel,
-                    const DriveFilter& filter);
+  // Throws InputError when the role may not read the tunnel. `db` is given
+  // back to the pool before waiting for another request's build.
+  std::string drive(RequestConnection& db, const std::string& tunnel, const DriveFilter& filter);
   // The tunnel's stamp for the role `db` acts as (shared, kStampFresh).
-  std::string stamp(storage::office::Connection& db, const std::string& tunnel);
-  // The tunnel pulled at its current stamp, made on `db` (acting as the
+  std::string stamp(RequestConnection& db, const std::string& tunnel);
+  // The tunnel pulled at its current stamp, read on `db` (acting as the
   // session's role) when no session of the same readable tunnels has it,
   // holding what `scope` asks: a drive of 3,000 visits lists its rounds
   // without fetching 6,000 photographs, a visit page without the other
-  // 2,999 visits.
-  std::shared_ptr<const SharedPull> pulled(storage::office::Connection& db,
-                                           const std::string& tunnel, const PullScope& scope = {});
+  // 2,999 visits. `db` is given back to the pool once the server's rows
+  // are read (storage/office/pull_project.h's read_pull), before the copy
+  // is built, and before waiting for another request's build of it: it is
+  // not held on return.
+  std::shared_ptr<const SharedPull> pulled(RequestConnection& db, const std::string& tunnel,
+                                           const PullScope& scope = {});
   // The same, made for one use and not shared (the rounds measured after a
   // sync: a copy of those visits, used once); its file goes with it.
-  std::shared_ptr<const SharedPull> pulled_once(storage::office::Connection& db,
-                                                const std::string& tunnel, const PullScope& scope);
+  std::shared_ptr<const SharedPull> pulled_once(RequestConnection& db, const std::string& tunnel,
+                                                const PullScope& scope);
+  // The slots a copy's build takes (cpu_slots.h); the server's other heavy
+  // work takes them too.
+  CpuSlots& cpu_slots() { return cpu_slots_; }
 
  private:
   struct Stamp {
@@ -110,16 +118,16 @@ class SharedOfficeCache {
 
   // The readable set's key and the tunnel's current stamp; throws
   // InputError when the role may not read the tunnel.
-  std::pair<std::string, std::string> checked_stamp(storage::office::Connection& db,
+  std::pair<std::string, std::string> checked_stamp(RequestConnection& db,
                                                     const std::string& tunnel);
-  std::shared_ptr<const SharedPull> make_copy(storage::office::Connection& db,
-                                              const std::string& tunnel, const std::string& stamp,
-                                              const PullScope& scope);
+  std::shared_ptr<const SharedPull> make_copy(RequestConnection& db, const std::string& tunnel,
+                                              const std::string& stamp, const PullScope& scope);
   template <typename Entry>
   std::shared_ptr<Entry> entry(std::map<std::string, std::shared_ptr<Entry>>& map,
                                const std::string& key, std::size_t limit);
 
   std::filesystem::path folder_;
+  CpuSlots cpu_slots_;
   std::mutex lock_;  // guards the maps and the clock, never held while building
   std::uint64_t clock_ = 0;
   std::map<std::string, Stamp> stamps_;

@@ -127,7 +127,10 @@ tunnel::DriveSets server_drive(const std::string& server, const std::string& nam
 
 tunnel::DriveSets server_drive(office::Connection& c, const std::string& name) {
   office::require_compatible_server(c);
-  const office::ServerDrive d = office::read_server_drive(c, name);
+  return server_drive(office::read_server_drive(c, name));
+}
+
+tunnel::DriveSets server_drive(const office::ServerDrive& d) {
   std::vector<tunnel::VisitSets> visits;
   for (const auto& v : d.visits)
     visits.push_back({v.visit_id, v.chainage, set_observations(v.sets, v.measurements)});

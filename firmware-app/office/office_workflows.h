@@ -12,6 +12,7 @@
 #include "core/tunnel/drive_sets.h"
 #include "firmware-app/support/support_drive.h"
 #include "storage/office/pg_connection.h"
+#include "storage/office/server_drive.h"
 #include "storage/office/sync_push.h"
 
 namespace rockface::app {
@@ -50,6 +51,9 @@ std::vector<std::string> run_server_add_web(const std::string& server, const std
 tunnel::DriveSets server_drive(const std::string& server, const std::string& tunnel);
 // The same over an open connection (the office's web session).
 tunnel::DriveSets server_drive(storage::office::Connection& c, const std::string& tunnel);
+// The same from the drive's rows already read (storage/office/
+// server_drive.h's read_server_drive): no server needed.
+tunnel::DriveSets server_drive(const storage::office::ServerDrive& d);
 
 // The support per round of every tablet's visits of the tunnel (`rockface
 // drive postgresql://... --support-csv`): the tunnel pulled into a

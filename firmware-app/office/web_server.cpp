@@ -24,6 +24,8 @@
 #include "firmware-app/office/office_rounds_worker.h"
 #include "firmware-app/office/office_sessions.h"
 #include "firmware-app/office/office_shared_cache.h"
+#include "firmware-app/office/request_connection.h"
+#include "firmware-app/office/test_gate.h"
 #include "firmware-app/office/visit_comparison.h"
 #include "firmware-app/office/visit_report.h"
 #include "firmware-app/office/web_assets.h"
@@ -132,21 +134,21 @@ class OfficeServer {
     sessions_.expire();
   }
 
-  // Runs `body(session, db)` under the session's lock on a pooled
-  // connection acting as the session's role; refusals of the reader's
-  // rights and bad input become 403 / 404 with the reason, a pool busy
-  // past its wait 503 with Retry-After. The connection goes back to the
-  // pool (its transaction rolled back, its role reset) when the request
-  // ends.
+  // Runs `body(session, db)` under the session's lock, `db` the request's
+  // connection (request_connection.h: leased from the pool on its first
+  // read, acting as the session's role; a handler gives it back before the
+  // work that needs no database); refusals of the reader's rights and bad
+  // input become 403 / 404 with the reason, a pool busy past its wait 503
+  // with Retry-After. A connection still held goes back to the pool (its
+  // transaction rolled back, its role reset) when the request ends.
   template <typename Body>
   void with_session(const httplib::Request& req, httplib::Response& res, Body body) {
     auto s = session_of(req, res);
     if (!s) return;
     std::lock_guard guard(s->lock);
-    std::optional<office::ConnectionPool::Lease> lease;
     try {
-      lease.emplace(pool_.acquire(s->role));
-      body(*s, lease->db());
+      office_web::RequestConnection db(pool_, s->role);
+      body(*s, db);
     } catch (const office::PoolBusy& e) {
       options_.log_failure(req.path + ": " + e.what());
       res.set_header("Retry-After", "2");
@@ -247,12 +249,12 @@ class OfficeServer {
       send_json(res, json{{"role", s->role}, {"csrf", s->csrf}});
     });
     h.Get("/api/tunnels", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
-        send_json(res, office_web::tunnels_page(db));
+      with_session(req, res, [&](OfficeSession&, office_web::RequestConnection& db) {
+        send_json(res, office_web::tunnels_page(db.db()));
       });
     });
     h.Get("/api/drive", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
+      with_session(req, res, [&](OfficeSession&, office_web::RequestConnection& db) {
         office_web::DriveFilter f;
         f.from = req.get_param_value("from");
         f.to = req.get_param_value("to");
@@ -263,7 +265,7 @@ class OfficeServer {
       });
     });
     h.Get("/api/drive/rounds", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession& s, office::Connection& db) {
+      with_session(req, res, [&](OfficeSession& s, office_web::RequestConnection& db) {
         // At once, as far as the rounds are read and measured: the rest in
         // the background (office_rounds_worker.h), the page polls.
         office_web::RoundsCount count;
@@ -274,14 +276,15 @@ class OfficeServer {
       });
     });
     h.Get("/api/stamp", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
+      with_session(req, res, [&](OfficeSession&, office_web::RequestConnection& db) {
         send_json(res, json{{"stamp", cache_.stamp(db, req.get_param_value("tunnel"))}});
       });
     });
     h.Get("/api/visit", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, false,
-                 [&](OfficeSession&, office::Connection&, storage::ProjectStore& store,
+                 [&](OfficeSession&, office_web::RequestConnection&, storage::ProjectStore& store,
                      storage::RecordId id) {
+                   office_web::CpuSlots::Slot slot(cache_.cpu_slots());
                    const storage::FieldReport report = collect_visit_report(store, id);
                    const Eigen::Vector3d origin = office_web::face_origin(store, id);
                    json page = office_web::visit_page(report, req.get_param_value("visit"), origin);
@@ -304,11 +307,12 @@ class OfficeServer {
                  });
     });
     h.Get("/api/compare", [this](const httplib::Request& req, httplib::Response& res) {
-      with_session(req, res, [&](OfficeSession&, office::Connection& db) {
+      with_session(req, res, [&](OfficeSession&, office_web::RequestConnection& db) {
         const std::string tunnel = req.get_param_value("tunnel");
         // Both visits in one copy, without photographs.
         const auto [a, b] = office_web::pulled_visits(cache_, db, tunnel, req.get_param_value("a"),
                                                       req.get_param_value("b"));
+        db.release();  // the reports are put together without the database
         storage::OpenOptions read;
         read.read_only = true;
         storage::ProjectStore store = storage::ProjectStore::open(a.file, read);
@@ -324,7 +328,7 @@ class OfficeServer {
     });
     h.Get("/api/visit/mesh", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, false,
-                 [&](OfficeSession&, office::Connection&, storage::ProjectStore& store,
+                 [&](OfficeSession&, office_web::RequestConnection&, storage::ProjectStore& store,
                      storage::RecordId id) {
                    const bool full = req.get_param_value("full") == "1";
                    office_web::FaceMesh m =
@@ -337,8 +341,8 @@ class OfficeServer {
     });
     h.Get("/api/visit/photo", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, false,
-                 [&](OfficeSession&, office::Connection& db, storage::ProjectStore& store,
-                     storage::RecordId id) {
+                 [&](OfficeSession&, office_web::RequestConnection& db,
+                     storage::ProjectStore& store, storage::RecordId id) {
                    const std::string side = req.get_param_value("side");
                    if (side != "left" && side != "right") throw InputError("side", "left or right");
                    const storage::RecordId capture =
@@ -353,15 +357,15 @@ class OfficeServer {
                    if (!of_visit) throw InputError("capture", "not a photograph of this visit");
                    // The visit's copy holds no photograph: this one comes from the
                    // server, read under the person's role and checked by its hash.
-                   const office::ServerPhotograph image =
-                       office::read_server_photograph(db, photograph_uuid(store, capture, side));
+                   const office::ServerPhotograph image = office::read_server_photograph(
+                       db.db(), photograph_uuid(store, capture, side));
                    res.set_content(std::string(image.bytes.begin(), image.bytes.end()),
                                    image.format == "png" ? "image/png" : "image/jpeg");
                  });
     });
     h.Get("/api/visit/picture", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, false,
-                 [&](OfficeSession&, office::Connection&, storage::ProjectStore& store,
+                 [&](OfficeSession&, office_web::RequestConnection&, storage::ProjectStore& store,
                      storage::RecordId id) {
                    // The field report's own pictures: the round's developed view
                    // (over- and underbreak against the design) and the wedges around
@@ -383,7 +387,7 @@ class OfficeServer {
     });
     h.Get("/api/visit/report.pdf", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, true,
-                 [&](OfficeSession& s, office::Connection&, storage::ProjectStore& store,
+                 [&](OfficeSession& s, office_web::RequestConnection&, storage::ProjectStore& store,
                      storage::RecordId id) {
                    const storage::FieldReport report = collect_visit_report(store, id);
                    const auto pdf = visit_report_pdf(report, s.folder);
@@ -394,7 +398,7 @@ class OfficeServer {
     });
     h.Get("/api/visit/exports", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, true,
-                 [&](OfficeSession& s, office::Connection&, storage::ProjectStore& store,
+                 [&](OfficeSession& s, office_web::RequestConnection&, storage::ProjectStore& store,
                      storage::RecordId id) {
                    const fs::path dir = exports_folder(s, store, id);
                    json files = json::array();
@@ -406,7 +410,7 @@ class OfficeServer {
     });
     h.Get("/api/visit/export", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, true,
-                 [&](OfficeSession& s, office::Connection&, storage::ProjectStore& store,
+                 [&](OfficeSession& s, office_web::RequestConnection&, storage::ProjectStore& store,
                      storage::RecordId id) {
                    const fs::path dir = exports_folder(s, store, id);
                    const std::string name = req.get_param_value("name");
@@ -432,9 +436,13 @@ class OfficeServer {
   template <typename Body>
   void with_visit(const httplib::Request& req, httplib::Response& res, bool photographs,
                   Body body) {
-    with_session(req, res, [&](OfficeSession& s, office::Connection& db) {
+    with_session(req, res, [&](OfficeSession& s, office_web::RequestConnection& db) {
+      // The copy's rows read, its connection back in the pool (pulled_visit
+      // gives it back): the page is put together without it.
       const office_web::PulledVisit v = office_web::pulled_visit(
           cache_, db, req.get_param_value("tunnel"), req.get_param_value("visit"), photographs);
+      db.release();
+      office_web::test_gate("visit-assembly");
       storage::OpenOptions read;
       read.read_only = true;
       storage::ProjectStore store = storage::ProjectStore::open(v.file, read);

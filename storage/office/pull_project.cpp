@@ -29,10 +29,10 @@ using nlohmann::json;
 
 class ProjectWriter {
  public:
-  ProjectWriter(sqlite::Connection& db, Connection& server, bool keep_ids,
-                const PullOptions& options, PullResult& result, Progress& progress)
+  ProjectWriter(sqlite::Connection& db, BlobSpool& blobs, bool keep_ids, const PullOptions& options,
+                PullResult& result, Progress& progress)
       : db_(db),
-        server_(server),
+        blobs_(blobs),
         keep_ids_(keep_ids),
         options_(options),
         result_(result),
@@ -184,8 +184,8 @@ class ProjectWriter {
     st.step();
     const std::int64_t rowid = sqlite3_last_insert_rowid(db_.handle());
     for (const auto& [column, ref] : blobs)
-      fetch_blob(table, column, rowid, ref["$blob"].get<std::string>(),
-                 ref["size"].get<std::int64_t>(), where);
+      copy_blob(table, column, rowid, ref["$blob"].get<std::string>(),
+                ref["size"].get<std::int64_t>());
     return rowid;
   }
 
@@ -203,62 +203,32 @@ class ProjectWriter {
                      column + " is a reference this rockface's " + table + " table does not have");
   }
 
-  // Streams one blob from the server into the row, checking its hash.
-  void fetch_blob(const std::string& table, const std::string& column, std::int64_t rowid,
-                  const std::string& sha, std::int64_t size, const std::string& where) {
-    const std::string what = where + " " + column + " (blob " + sha + ")";
-    progress_.step("fetching photographs and meshes", 0.5);
-    const Result head =
-        server_.query("SELECT complete, byte_size, chunk_size FROM rockface.blob WHERE sha256 = $1",
-                      {Param::of(sha)}, "fetching " + what);
-    if (head.rows() == 0 || head.text(0, 0) != "t")
-      throw InputError(server_.label() + ": " + what, "missing or incomplete on the server");
-    if (head.int64(0, 1) != size)
-      throw InputError(server_.label() + ": " + what,
-                       "the server says it has " + std::to_string(head.int64(0, 1)) +
-                           " bytes, the record " + std::to_string(size));
-    const std::int64_t chunk = head.int64(0, 2);
-    const std::int64_t chunks = (size + chunk - 1) / chunk;
+  // Writes one blob, read from the server and checked by read_pull, into
+  // the row (or its parts table).
+  void copy_blob(const std::string& table, const std::string& column, std::int64_t rowid,
+                 const std::string& sha, std::int64_t size) {
+    progress_.step("building the project", 0.5);
     std::optional<BlobWriter> writer;
     std::optional<parts::PartWriter> in_parts;
     if (const auto* table_of_parts = parts::parts_table_of(table, column))
       in_parts.emplace(db_, *table_of_parts, rowid);
     else
       writer.emplace(db_, table, column, rowid);
-    Sha256 h;
     std::int64_t at = 0;
-    for (std::int64_t i = 0; i < chunks; ++i) {
-      progress_.step("fetching photographs and meshes", 0.5);
-      const Result r =
-          server_.query("SELECT bytes FROM rockface.blob_chunk WHERE sha256 = $1 AND idx = $2",
-                        {Param::of(sha), Param::of(i)}, "fetching " + what, true);
-      const std::int64_t want = std::min(chunk, size - at);
-      if (r.rows() == 0 || static_cast<std::int64_t>(r.bytes(0, 0).size()) != want)
-        throw InputError(server_.label() + ": " + what,
-                         "truncated on the server: chunk " + std::to_string(i) + " of " +
-                             std::to_string(chunks) +
-                             (r.rows() == 0 ? " is missing" : " has the wrong length") +
-                             "; the pull was abandoned");
-      const auto bytes = r.bytes(0, 0);
-      h.add(bytes);
+    blobs_.copy(sha, [&](const std::uint8_t* bytes, std::size_t n) {
       if (in_parts)
-        in_parts->append(bytes.data(), bytes.size());
+        in_parts->append(bytes, n);
       else
-        writer->write(at, bytes.data(), bytes.size());
-      at += want;
-    }
+        writer->write(at, bytes, n);
+      at += static_cast<std::int64_t>(n);
+    });
     if (in_parts) in_parts->finish();
-    const std::string got = h.hex();
-    if (got != sha)
-      throw InputError(server_.label() + ": " + what,
-                       "corrupt on the server: its bytes hash to " + got +
-                           ", not to their name; the pull was abandoned");
     ++result_.blobs;
     result_.blob_bytes += size;
   }
 
   sqlite::Connection& db_;
-  Connection& server_;
+  BlobSpool& blobs_;
   bool keep_ids_;
   PullOptions options_;
   PullResult& result_;
@@ -349,6 +319,38 @@ std::vector<std::string> tunnel_disagreements(const std::vector<ServerRecord>& r
           " differ: check which design is current before reading over- and underbreak"};
 }
 
+// Reads into the spool every blob the project will hold: what the options
+// leave on the server is not read (photograph_left / mesh_left in
+// insert_row).
+void spool_blobs(Connection& server, const std::vector<ServerRecord>& records,
+                 const PullOptions& options, BlobSpool& spool, Progress& progress) {
+  auto row_blobs = [&](const std::string& table, const json& row, const std::string& where) {
+    for (auto it = row.begin(); it != row.end(); ++it) {
+      const json& v = it.value();
+      if (!v.is_object() || !v.contains("$blob")) continue;
+      const bool in_parts = parts::parts_table_of(table, it.key()) != nullptr;
+      if (table == "image" && !options.photographs) continue;
+      if (in_parts && !options.meshes) continue;
+      const std::string sha = v["$blob"].get<std::string>();
+      spool.fetch(server, sha, v.at("size").get<std::int64_t>(),
+                  where + " " + it.key() + " (blob " + sha + ")", progress);
+    }
+  };
+  for (const ServerRecord& rec : records) {
+    if (rec.kind == "project") continue;
+    const std::string where = rec.kind + " " + rec.uuid;
+    const json body = json::parse(rec.body);
+    row_blobs(rec.kind, body.at("row"), where);
+    const RecordKind* kind = find_record_kind(rec.kind);
+    if (!kind || !body.contains("children")) continue;
+    for (const ChildTable& child : kind->children) {
+      const auto it = body["children"].find(child.table);
+      if (it == body["children"].end()) continue;
+      for (const json& r : *it) row_blobs(child.table, r, where + " " + child.table);
+    }
+  }
+}
+
 }  // namespace
 
 PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel_name,
@@ -361,42 +363,73 @@ PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel_na
 
 PullResult pull_tunnel(Connection& server, const std::string& tunnel_name, const fs::path& out,
                        Progress& progress, const PullOptions& options) {
+  PullRead read = read_pull(server, tunnel_name, out, progress, options);
+  return build_pulled_project(read, progress);
+}
+
+PullRead read_pull(Connection& server, const std::string& tunnel_name, const fs::path& out,
+                   Progress& progress, const PullOptions& options) {
   if (fs::exists(out)) throw InputError(out.string(), "exists already: pull makes a new project");
-  PullResult result;
+  PullRead read;
+  read.out = out;
+  read.options = options;
+  PullResult& result = read.result;
   result.server_label = server.label();
   require_compatible_server(server);
-  // One snapshot of the server for the whole pull.
+  // One snapshot of the server for the whole read.
   server.exec("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY", "reading the tunnel");
-  const ServerTunnel tunnel = read_server_tunnel(server, tunnel_name);
-  std::vector<ServerRecord> records = options.visits.empty()
-                                          ? read_current_records(server, tunnel.id, {})
-                                          : read_visit_records(server, tunnel.id, options.visits);
-  const ServerRecord base = base_project(records, tunnel);  // a copy: records are sorted below
-  result.projects = static_cast<int>(tunnel.projects.size());
-  result.visits = static_cast<int>(tunnel.visits.size());
-  const bool keep_ids = tunnel.projects.size() == 1;
-  result.warnings = tunnel_disagreements(records, tunnel, base.project_uuid);
+  try {
+    read.tunnel = read_server_tunnel(server, tunnel_name);
+    const ServerTunnel& tunnel = read.tunnel;
+    std::vector<ServerRecord>& records = read.records;
+    records = options.visits.empty() ? read_current_records(server, tunnel.id, {})
+                                     : read_visit_records(server, tunnel.id, options.visits);
+    read.base = base_project(records, tunnel);  // a copy: records are sorted below
+    result.projects = static_cast<int>(tunnel.projects.size());
+    result.visits = static_cast<int>(tunnel.visits.size());
+    read.keep_ids = tunnel.projects.size() == 1;
+    result.warnings = tunnel_disagreements(records, tunnel, read.base.project_uuid);
 
-  // The order records go in: kinds in dependency order; visits in the
-  // server's order; the rest by project, then their local order.
-  std::map<std::string, int> visit_rank, project_rank, kind_rank;
-  for (std::size_t i = 0; i < tunnel.visits.size(); ++i)
-    visit_rank[tunnel.visits[i].uuid] = static_cast<int>(i);
-  for (std::size_t i = 0; i < tunnel.projects.size(); ++i)
-    project_rank[tunnel.projects[i]] = static_cast<int>(i);
-  for (std::size_t i = 0; i < record_kinds().size(); ++i)
-    kind_rank[record_kinds()[i].kind] = static_cast<int>(i);
-  for (const ServerRecord& r : records)
-    if (!kind_rank.count(r.kind))
-      throw InputError(r.kind + " " + r.uuid, "a kind of record this rockface does not know");
-  auto key = [&](const ServerRecord& r) {
-    const int k = kind_rank[r.kind];
-    if (r.kind == "visit") return std::tuple(k, visit_rank[r.uuid], 0, r.local_id);
-    return std::tuple(k, 0, project_rank[r.project_uuid], r.local_id);
-  };
-  std::sort(records.begin(), records.end(),
-            [&](const ServerRecord& a, const ServerRecord& b) { return key(a) < key(b); });
+    // The order records go in: kinds in dependency order; visits in the
+    // server's order; the rest by project, then their local order.
+    std::map<std::string, int> visit_rank, project_rank, kind_rank;
+    for (std::size_t i = 0; i < tunnel.visits.size(); ++i)
+      visit_rank[tunnel.visits[i].uuid] = static_cast<int>(i);
+    for (std::size_t i = 0; i < tunnel.projects.size(); ++i)
+      project_rank[tunnel.projects[i]] = static_cast<int>(i);
+    for (std::size_t i = 0; i < record_kinds().size(); ++i)
+      kind_rank[record_kinds()[i].kind] = static_cast<int>(i);
+    for (const ServerRecord& r : records)
+      if (!kind_rank.count(r.kind))
+        throw InputError(r.kind + " " + r.uuid, "a kind of record this rockface does not know");
+    auto key = [&](const ServerRecord& r) {
+      const int k = kind_rank[r.kind];
+      if (r.kind == "visit") return std::tuple(k, visit_rank[r.uuid], 0, r.local_id);
+      return std::tuple(k, 0, project_rank[r.project_uuid], r.local_id);
+    };
+    std::sort(records.begin(), records.end(),
+              [&](const ServerRecord& a, const ServerRecord& b) { return key(a) < key(b); });
 
+    read.blobs = std::make_unique<BlobSpool>(fs::path(out.string() + ".blobs.partial"));
+    spool_blobs(server, records, options, *read.blobs, progress);
+  } catch (...) {
+    // The snapshot's transaction ends with the read, whatever happened.
+    try {
+      server.exec("ROLLBACK", "ending a failed pull");
+    } catch (...) {
+    }
+    throw;
+  }
+  server.exec("COMMIT", "reading the tunnel");
+  return read;
+}
+
+PullResult build_pulled_project(PullRead& read, Progress& progress) {
+  const fs::path& out = read.out;
+  const std::vector<ServerRecord>& records = read.records;
+  const ServerRecord& base = read.base;
+  PullResult& result = read.result;
+  if (fs::exists(out)) throw InputError(out.string(), "exists already: pull makes a new project");
   const fs::path partial = fs::path(out.string() + ".partial");
   fs::remove(partial);
   fs::remove(fs::path(partial.string() + "-wal"));
@@ -428,7 +461,7 @@ PullResult pull_tunnel(Connection& server, const std::string& tunnel_name, const
           st.bind_null(1);
         st.step();
       }
-      ProjectWriter writer(db, server, keep_ids, options, result, progress);
+      ProjectWriter writer(db, *read.blobs, read.keep_ids, read.options, result, progress);
       for (std::size_t i = 0; i < records.size(); ++i) {
         const ServerRecord& r = records[i];
         if (r.kind == "project") continue;
@@ -448,7 +481,6 @@ PullResult pull_tunnel(Connection& server, const std::string& tunnel_name, const
       }
       tx.commit();
     }
-    server.exec("COMMIT", "reading the tunnel");
     // The pulled file passes the store's full check before it takes its name.
     {
       OpenOptions check;

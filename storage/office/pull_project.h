@@ -9,11 +9,14 @@
 // appears complete or not at all (built beside the target, then renamed).
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/common/progress.h"
+#include "storage/office/blob_spool.h"
 #include "storage/office/pg_connection.h"
+#include "storage/office/server_records.h"
 
 namespace rockface::storage::office {
 
@@ -59,5 +62,27 @@ PullResult pull_tunnel(const std::string& conninfo, const std::string& tunnel,
 PullResult pull_tunnel(Connection& server, const std::string& tunnel,
                        const std::filesystem::path& out, Progress& progress,
                        const PullOptions& options = {});
+
+// A pull in its two halves, for a caller that must give the connection
+// back between them (issue 46: the office's visit openings held a pooled
+// connection through the whole build, and the other people's requests
+// waited for it). read_pull reads all the pull needs in one snapshot of the
+// server — the records, and the blobs it keeps spooled beside `out`, each
+// checked against its SHA-256 — and ends its transaction; the connection is
+// then free. build_pulled_project makes the project at `out` from it
+// without the server. pull_tunnel is the two in a row.
+struct PullRead {
+  std::filesystem::path out;
+  PullOptions options;
+  PullResult result;  // the server's label and the warnings so far
+  ServerTunnel tunnel;
+  std::vector<ServerRecord> records;  // in the order they go in
+  ServerRecord base;                  // the project row every tablet agrees on
+  bool keep_ids = false;
+  std::unique_ptr<BlobSpool> blobs;
+};
+PullRead read_pull(Connection& server, const std::string& tunnel, const std::filesystem::path& out,
+                   Progress& progress, const PullOptions& options = {});
+PullResult build_pulled_project(PullRead& read, Progress& progress);
 
 }  // namespace rockface::storage::office

@@ -20,9 +20,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <random>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -66,10 +68,18 @@ test::PostgresServer& server() {
   return s;
 }
 
+// This run's folder in the system's temporary folder (the tablets'
+// projects, the servers' work folders and logs: ~2.5 GB a run), removed
+// when the run ends (main).
+fs::path folder_path() {
+  return fs::temp_directory_path() / ("rockface-office-load-" + std::to_string(::getpid()));
+}
+
 fs::path folder() {
-  static const fs::path dir =
-      fs::temp_directory_path() / ("rockface-office-load-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  static const fs::path dir = [] {
+    fs::create_directories(folder_path());
+    return folder_path();
+  }();
   return dir;
 }
 
@@ -198,11 +208,26 @@ struct Served {
   }
 };
 
-std::string log_in(httplib::Client& c, const std::string& origin) {
+// What a refused request was told: "STATUS message" (the server's error
+// text), or how the connection failed.
+std::string refusal(const httplib::Result& r) {
+  if (!r) return "no answer: " + httplib::to_string(r.error());
+  std::string message = r->body;
+  try {
+    message = json::parse(r->body).value("error", r->body);
+  } catch (const json::exception&) {
+  }
+  return std::to_string(r->status) + " " + message;
+}
+
+std::string log_in(httplib::Client& c, const std::string& origin, std::string* refused = nullptr) {
   const auto r =
       c.Post("/api/login", {{"Origin", origin}},
              json{{"role", "office_bench"}, {"password", "trust"}}.dump(), "application/json");
-  if (!r || r->status != 200) return "";
+  if (!r || r->status != 200) {
+    if (refused) *refused = refusal(r);
+    return "";
+  }
   const std::string set = r->get_header_value("Set-Cookie");
   return set.substr(0, set.find(';'));
 }
@@ -229,6 +254,8 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
   const fs::path small = make_project("small", 20, 640, 480, 50);
   std::vector<double> latencies, visit_latencies;
   std::atomic<int> errors{0}, requests{0}, login_errors{0};
+  // The refusals by what they said (shown as the benchmark's label).
+  std::map<std::string, int> refusals;
   double rss = 0;
   for (auto _ : state) {
     Served s(db);
@@ -244,10 +271,16 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
       clients.emplace_back([&, i] {
         httplib::Client c("127.0.0.1", s.port);
         c.set_read_timeout(std::chrono::seconds(120));
-        const std::string cookie = log_in(c, s.origin());
+        std::string refused;
+        const std::string cookie = log_in(c, s.origin(), &refused);
+        auto count_refusal = [&](const std::string& what, const std::string& why) {
+          std::lock_guard guard(lock);
+          ++refusals[what + ": " + why];
+        };
         if (cookie.empty()) {
           ++errors;
           ++login_errors;
+          count_refusal("log-in", refused);
           return;
         }
         // Each client reads the drive, then opens one of its visits at
@@ -263,6 +296,7 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
           ++requests;
           if (!r || r->status != 200) {
             ++errors;
+            count_refusal("drive", refusal(r));
             continue;
           }
           if (ids.empty()) {
@@ -275,7 +309,10 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
           const auto v = c.Get("/api/visit?tunnel=bench&visit=" + visit, {{"Cookie", cookie}});
           my_visits.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
           ++requests;
-          if (!v || v->status != 200) ++errors;
+          if (!v || v->status != 200) {
+            ++errors;
+            count_refusal("visit", refusal(v));
+          }
         }
         std::lock_guard guard(lock);
         latencies.insert(latencies.end(), mine.begin(), mine.end());
@@ -297,6 +334,9 @@ void BM_Office50ClientsDrive3000WhileATabletSyncs(benchmark::State& state) {
   state.counters["visit_p50_ms"] = percentile(visit_latencies, 0.5);
   state.counters["visit_p95_ms"] = percentile(visit_latencies, 0.95);
   state.counters["server_peak_RSS_MB"] = rss;
+  std::string label;
+  for (const auto& [what, n] : refusals) label += std::to_string(n) + "x " + what + "; ";
+  if (!label.empty()) state.SetLabel(label);
 }
 BENCHMARK(BM_Office50ClientsDrive3000WhileATabletSyncs)
     ->Unit(benchmark::kMillisecond)
@@ -546,4 +586,14 @@ BENCHMARK(BM_FaceTransferAndReport)->Unit(benchmark::kMillisecond)->Iterations(1
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  // Every server is stopped by now (each benchmark's own); the PostgreSQL
+  // server's folder goes with its static object at exit.
+  std::error_code ec;
+  fs::remove_all(folder_path(), ec);
+  return 0;
+}

@@ -42,7 +42,10 @@ SyntheticScene tunnel_face(int width) {
   s.stations[0] = {{-0.9, 0.5, 1.6}, {0, 10.3, 2.3}};
   s.stations[1] = {{0.9, 0.5, 1.6}, {0, 10.3, 2.3}};
   s.range_pole = rockface::camera::SyntheticRangePole{{1.6, 8.0, 0.9}, 2.0, 0.25};
-  s.effects = {true, 1.5, 0.5, 1.0};
+  s.effects.distortion = true;
+  s.effects.noise_sigma = 1.5;
+  s.effects.blur_px = 0.5;
+  s.effects.exposure = 1.0;
   s.texture_seed = 7;
   return s;
 }

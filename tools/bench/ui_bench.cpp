@@ -8,46 +8,32 @@
 // - start-up: EGL + ImGui + opening the project + loading and preparing the
 //   model (decoding the texture, decimating, building the picker's BVH).
 //
-// The project: `rockface replay tools/samples/tunnel-face.scene.json
-// --preset fast --project out/tunnel-face-24mpx.rockface` (set
-// ROCKFACE_UI_BENCH_PROJECT to use another).
+// The project: tools/bench/ui_bench_project.h.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 
+#include "tools/bench/ui_bench_project.h"
 #include "ui/mapping/trace_marker.h"
 #include "ui/platform/headless_session.h"
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace rockface::ui;
-
-fs::path project_file() {
-  if (const char* p = std::getenv("ROCKFACE_UI_BENCH_PROJECT")) return p;
-  return fs::path(ROCKFACE_SOURCE_DIR) / "out/tunnel-face-24mpx.rockface";
-}
 
 std::unique_ptr<HeadlessSession> open(std::size_t max_triangles) {
   UiOptions options;
-  options.project = project_file();
+  options.project = ui_bench_project();
   options.max_display_triangles = max_triangles;
   auto s = std::make_unique<HeadlessSession>(options, FieldServices{}, 1280, 800);
   s->settle();
   return s;
 }
 
-bool have_project(benchmark::State& state) {
-  if (fs::exists(project_file())) return true;
-  state.SkipWithError(
-      ("no project " + project_file().string() + " (see the bench's header)").c_str());
-  return false;
-}
-
 void BM_ModelFrame(benchmark::State& state) {
-  if (!have_project(state)) return;
+  if (!have_ui_bench_project(state)) return;
   auto s = open(static_cast<std::size_t>(state.range(0)));
   s->tap("Model");
   for (auto _ : state) s->frame();
@@ -68,7 +54,7 @@ BENCHMARK(BM_ModelFrame)
 // across the panel (the view draws the display mesh's turning copy, an
 // eighth of the budget; issue 45 asks >= 30 frames a second).
 void BM_ModelTurning(benchmark::State& state) {
-  if (!have_project(state)) return;
+  if (!have_ui_bench_project(state)) return;
   auto s = open(static_cast<std::size_t>(state.range(0)));
   s->tap("Model");
   const ModelView& view = s->state().model_view;
@@ -98,7 +84,7 @@ BENCHMARK(BM_ModelTurning)
 // between the release of the finger and the frame that shows the new dip),
 // and that frame.
 void BM_TapToDip(benchmark::State& state) {
-  if (!have_project(state)) return;
+  if (!have_ui_bench_project(state)) return;
   auto s = open(400000);
   s->tap("Mapping");
   const ModelView& view = s->state().model_view;
@@ -120,7 +106,7 @@ void BM_TapToDip(benchmark::State& state) {
 BENCHMARK(BM_TapToDip)->Unit(benchmark::kMillisecond);
 
 void BM_StartUp(benchmark::State& state) {
-  if (!have_project(state)) return;
+  if (!have_ui_bench_project(state)) return;
   for (auto _ : state) {
     auto s = open(400000);
     benchmark::DoNotOptimize(s->state().model_view.has_model());

@@ -124,13 +124,17 @@ void TabletApp::build_frame(TouchInput& input, int width, int height, float seco
   ImGui::Render();
 }
 
-void TabletApp::draw() {
+bool TabletApp::draw() {
+  const ImDrawData& data = *ImGui::GetDrawData();
+  if (drawn_.same_as_last(data)) return false;
+  drawn_.remember(data);
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   glViewport(0, 0, static_cast<int>(size.x), static_cast<int>(size.y));
   const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
   glClearColor(bg.x, bg.y, bg.z, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  return true;
 }
 
 void TabletApp::keep_model_loaded() {

@@ -5,6 +5,7 @@
 // context and its GLES 3 renderer; the platform (a window or the headless
 // runner) feeds touch input and says where the frame goes.
 #include "ui/app/app_state.h"
+#include "ui/platform/drawn_frame.h"
 
 namespace rockface::ui {
 
@@ -18,9 +19,14 @@ class TabletApp {
 
   // Builds one frame of width x height pixels (the model view renders into
   // its own framebuffer here), then draw() renders it into the framebuffer
-  // the caller bound in between (the window's or the headless one).
+  // the caller bound in between (the window's or the headless one). draw()
+  // draws nothing and returns false when the frame would draw the pixels
+  // the framebuffer already holds from the last one drawn (DrawnFrame);
+  // draw_again() makes the next frame drawn whatever it holds (a new
+  // framebuffer, an exposed window).
   void build_frame(TouchInput& input, int width, int height, float seconds_since_last);
-  void draw();
+  bool draw();
+  void draw_again() { drawn_.forget(); }
 
   AppState& state() { return state_; }
   const AppState& state() const { return state_; }
@@ -32,6 +38,7 @@ class TabletApp {
   void keep_model_loaded();
 
   AppState state_;
+  DrawnFrame drawn_;
 };
 
 }  // namespace rockface::ui

@@ -19,6 +19,7 @@
 #include "storage/project/calibration_library.h"
 #include "storage/project/project_store.h"
 #include "ui/app/screens.h"
+#include "ui/platform/texture_generation.h"
 #include "ui/widgets/format.h"
 #include "ui/widgets/keypad.h"
 #include "ui/widgets/widgets_controls.h"
@@ -153,6 +154,7 @@ void live_view(AppState& app) {
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.cols, rgba.rows, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                      rgba.data);
+        note_texture_changed();
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         app.capture.live_view = rgba;

@@ -24,7 +24,7 @@ HeadlessSession::~HeadlessSession() {
 void HeadlessSession::frame() {
   app_->build_frame(input_, width_, height_, kFrameSeconds);
   target_.bind();
-  app_->draw();
+  if (app_->draw()) ++frames_drawn_;
   Framebuffer::unbind();
 }
 

@@ -21,12 +21,18 @@ class HeadlessSession final : public UiDriver {
   cv::Mat screenshot() const override { return target_.read_bgr(); }
   AppState& state() override { return app_->state(); }
   std::string renderer() const { return egl_.describe(); }
+  // Frames whose draw data were drawn into the framebuffer (a frame that
+  // would draw what it holds is not: TabletApp::draw).
+  long frames_drawn() const { return frames_drawn_; }
+  // The next frame drawn whatever it holds.
+  void draw_again() { app_->draw_again(); }
 
  private:
   EglContext egl_;
   Framebuffer target_;
   std::unique_ptr<TabletApp> app_;
   int width_, height_;
+  long frames_drawn_ = 0;
 };
 
 }  // namespace rockface::ui

@@ -42,7 +42,8 @@ struct X11Window {
                                  BlackPixel(display, screen), WhitePixel(display, screen));
     XStoreName(display, window, "rockface");
     XSelectInput(display, window,
-                 ButtonPressMask | ButtonReleaseMask | PointerMotionMask | StructureNotifyMask);
+                 ButtonPressMask | ButtonReleaseMask | PointerMotionMask | StructureNotifyMask |
+                     ExposureMask);
     wm_delete = XInternAtom(display, "WM_DELETE_WINDOW", False);
     XSetWMProtocols(display, window, &wm_delete, 1);
     select_touch();
@@ -104,14 +105,18 @@ class WindowSession final : public UiDriver {
 
   void frame() override {
     pump_events();
-    if (target_->width() != width_ || target_->height() != height_)
+    if (target_->width() != width_ || target_->height() != height_) {
       target_ = std::make_unique<Framebuffer>(width_, height_);
+      app_->draw_again();
+    }
     const auto now = std::chrono::steady_clock::now();
     const float dt = std::chrono::duration<float>(now - last_).count();
     last_ = now;
     app_->build_frame(input_, width_, height_, dt);
     target_->bind();
-    app_->draw();
+    // A frame that draws what the window shows is not drawn or swapped:
+    // the window keeps showing it (issue 45).
+    if (!app_->draw()) return;
     target_->blit_to_window();
     egl_.swap_buffers();  // paced by the display (swap interval 1)
   }
@@ -144,6 +149,9 @@ class WindowSession final : public UiDriver {
         case ConfigureNotify:
           width_ = e.xconfigure.width;
           height_ = e.xconfigure.height;
+          break;
+        case Expose:  // uncovered: what it showed is gone, draw it again
+          app_->draw_again();
           break;
         case ClientMessage:
           if (static_cast<Atom>(e.xclient.data.l[0]) == x_.wm_delete) open_ = false;

@@ -7,6 +7,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "ui/platform/texture_generation.h"
 #include "ui/view3d/gles_program.h"
 
 namespace rockface::ui {
@@ -91,6 +92,7 @@ void ModelRenderer::upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr) 
                static_cast<GLsizeiptr>(mesh.turning_indices.size() * sizeof(std::uint32_t)),
                mesh.turning_indices.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  ++uploads_;
   index_count_ = static_cast<int>(mesh.indices.size());
   turning_index_count_ = static_cast<int>(mesh.turning_indices.size());
   origin_ = mesh.centre;
@@ -115,9 +117,18 @@ void ModelRenderer::upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr) 
 
 unsigned ModelRenderer::render(const OrbitCamera& camera, const OverlayScene& overlay,
                                bool turning) {
+  const bool coarse = turning && turning_index_count_ > 0;
+  const Eigen::Matrix4f view_projection = camera.view_projection();
+  if (target_ && target_->width() == camera.width() && target_->height() == camera.height() &&
+      drawn_.upload == uploads_ && drawn_.turning == coarse &&
+      drawn_.view_projection == view_projection && drawn_.overlay == overlay)
+    return target_->texture();
   drawn_triangles_ = 0;
   if (!target_ || target_->width() != camera.width() || target_->height() != camera.height())
     target_ = std::make_unique<Framebuffer>(camera.width(), camera.height());
+  drawn_ = {view_projection, coarse, uploads_, overlay};
+  ++frames_drawn_;
+  note_texture_changed();
   target_->bind();
   // Dark grey behind the model: the face's texture stands out in daylight.
   glClearColor(0.18f, 0.18f, 0.2f, 1.0f);
@@ -128,8 +139,8 @@ unsigned ModelRenderer::render(const OrbitCamera& camera, const OverlayScene& ov
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glUseProgram(program_);
-    const Eigen::Matrix4f vp = camera.view_projection();
-    glUniformMatrix4fv(glGetUniformLocation(program_, "view_projection"), 1, GL_FALSE, vp.data());
+    glUniformMatrix4fv(glGetUniformLocation(program_, "view_projection"), 1, GL_FALSE,
+                       view_projection.data());
     glUniform1i(glGetUniformLocation(program_, "textured"), textured_ ? 1 : 0);
     glUniform1i(glGetUniformLocation(program_, "image"), 0);
     glActiveTexture(GL_TEXTURE0);
@@ -141,7 +152,6 @@ unsigned ModelRenderer::render(const OrbitCamera& camera, const OverlayScene& ov
     // the face in front of it still hides it.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(4.0f, 8.0f);
-    const bool coarse = turning && turning_index_count_ > 0;
     if (coarse) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[4]);
     const int count = coarse ? turning_index_count_ : index_count_;
     glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);

@@ -25,14 +25,21 @@ class ModelRenderer {
   // Uploads a mesh and its texture (BGR; empty: vertex colours).
   void upload(const DisplayMesh& mesh, const cv::Mat& texture_bgr);
   // Renders into a framebuffer of the camera's viewport size (made or
-  // resized as needed) and returns its colour texture.
+  // resized as needed) and returns its colour texture. A frame whose
+  // camera, viewport, overlay, mesh and turning are the last one's is not
+  // drawn again: its texture already holds it (issue 45: the software
+  // renderer drew a still model sixty times a second on both cores of the
+  // tablet, beside the work the geologist waits for).
   // The overlay is drawn after the model, depth-tested against it.
   // turning: a finger is turning the view; the mesh's turning copy is drawn
   // (DisplayMesh::turning_indices) when it has one.
   unsigned render(const OrbitCamera& camera, const OverlayScene& overlay = {},
                   bool turning = false);
-  // Triangles of the mesh drawn by the last render.
+  // Triangles of the mesh in the frame last drawn.
   int drawn_triangles() const { return drawn_triangles_; }
+  // Frames drawn since the renderer was made (a frame not drawn again
+  // does not count).
+  long frames_drawn() const { return frames_drawn_; }
   // The last render's pixels, BGR, top row first (the rows of
   // OrbitCamera::project); empty before the first render. For tests: the
   // depth test is checked on what the GPU drew, not on a model of it.
@@ -47,6 +54,15 @@ class ModelRenderer {
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // the mesh's centre: positions are relative
   std::unique_ptr<OverlayRenderer> overlay_;
   std::unique_ptr<Framebuffer> target_;
+  // What the framebuffer holds: the last drawn frame's inputs.
+  struct Drawn {
+    Eigen::Matrix4f view_projection = Eigen::Matrix4f::Zero();
+    bool turning = false;
+    long upload = -1;
+    OverlayScene overlay;
+  };
+  Drawn drawn_;
+  long uploads_ = 0, frames_drawn_ = 0;
 };
 
 }  // namespace rockface::ui

@@ -95,6 +95,8 @@ class ModelView {
   TextArea text_area() const { return {panel_min_, panel_max_, "3D image"}; }
   // Triangles of the 3D image drawn in the last frame (fewer while turning).
   int drawn_triangles() const { return renderer_ ? renderer_->drawn_triangles() : 0; }
+  // Frames the renderer drew (a still view's frame is not drawn again).
+  long frames_drawn() const { return renderer_ ? renderer_->frames_drawn() : 0; }
   OrbitCamera& camera() { return camera_; }
   const OrbitCamera& camera() const { return camera_; }
 

@@ -19,18 +19,21 @@ struct OverlayLine {
   std::uint32_t rgba = 0xFFFFFFFF;  // ImGui's IM_COL32 layout (R in the low byte)
   float width_px = 3;
   bool dashed = false;
+  bool operator==(const OverlayLine&) const = default;
 };
 
 struct OverlayFill {
   std::string what;
   std::vector<Eigen::Vector3d> triangles;  // three corners per triangle, on the surface
   std::uint32_t rgba = 0x80FFFFFF;
+  bool operator==(const OverlayFill&) const = default;
 };
 
 struct OverlayScene {
   std::vector<OverlayFill> fills;  // drawn first, under the lines
   std::vector<OverlayLine> lines;
   bool empty() const { return fills.empty() && lines.empty(); }
+  bool operator==(const OverlayScene&) const = default;
 };
 
 }  // namespace rockface::ui

@@ -128,6 +128,10 @@ export async function showFace(host, status, meshUrl, textureUrl, visit) {
     } else {
       const d = first.distanceTo(hit.point);
       status.textContent = `Distance: ${d.toFixed(3)} m (the face's precision: see its figures)`;
+      // The two points measured (the mesh's frame), for a test to check
+      // that they lie on the face.
+      host.dataset.measuredFrom = first.toArray().join(' ');
+      host.dataset.measuredTo = hit.point.toArray().join(' ');
       scene.remove(marker);
       first = null;
     }

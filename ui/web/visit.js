@@ -13,8 +13,11 @@ export async function showVisit(host, tunnel, visitId) {
 
   const photos = el('div', { className: 'photos' }, ...v.photos.map((p) => {
     const img = el('img', { src: url('/api/visit/photo', { ...q, capture: p.capture, side: p.side }), alt: `photograph ${p.capture}, ${p.side}`, loading: 'lazy' });
-    img.addEventListener('click', () => img.classList.toggle('zoomed'));
-    return el('figure', {}, img, el('figcaption', { text: `pair ${p.capture}, ${p.side}` }));
+    const figure = el('figure', {}, img, el('figcaption', { text: `pair ${p.capture}, ${p.side}` }));
+    // The figure takes the whole row when zoomed: a flex item sized by its
+    // content would hold the photograph at its own small width.
+    img.addEventListener('click', () => { img.classList.toggle('zoomed'); figure.classList.toggle('zoomed'); });
+    return figure;
   }));
 
   const faceHost = el('div', { id: 'face', className: 'face' });

@@ -7,6 +7,8 @@
 #include <imgui.h>
 #include <opencv2/imgproc.hpp>
 
+#include "ui/platform/texture_generation.h"
+
 namespace rockface::ui {
 
 PictureTexture::~PictureTexture() {
@@ -31,6 +33,7 @@ void PictureTexture::set(const cv::Mat& bgr) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.cols, rgba.rows, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                rgba.data);
+  note_texture_changed();
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   width_ = rgba.cols;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -13,6 +14,7 @@
 
 #include "core/measure/proposals/disc_morphology.h"
 #include "core/measure/proposals/line_thinning.h"
+#include "core/measure/proposals/row_stripes.h"
 
 namespace rockface::measure::proposals {
 
@@ -61,6 +63,65 @@ std::pair<double, double> robust_level(const cv::Mat& values, const cv::Mat& mas
   return {median, std::max(1.4826 * *mid, 1e-6)};
 }
 
+// Each pixel of `shown` (CV_32S, -1 where nothing is drawn) set to the
+// index of the last of the mesh's triangles drawn over it, the ones
+// `drawn(t)` is true for, at `scale` of the mesh's lattice pixels. Each
+// stripe of rows draws, in the mesh's order, every triangle that reaches
+// its rows into rows of its own reaching kStripeMarginPx further: a
+// triangle moved by whole rows covers the same pixels moved, and one that
+// fits inside is not cut (OpenCV's polygon edges start where they enter
+// the image). A triangle taller than the margin has the whole image drawn
+// on one thread, as before.
+template <class Drawn>
+void draw_triangle_indices(const photogrammetry::SurfaceMesh& mesh, double scale, cv::Mat& shown,
+                           const Drawn& drawn) {
+  constexpr int kShift = 4;  // sub-pixel corners: 1/16 px
+  constexpr int kStripeMarginPx = 32;
+  // The rows a triangle's fill and edges may touch: its corners' rows
+  // rounded either way, and one more for the edges' steps.
+  const auto corners_of = [&](const std::array<int, 3>& t, cv::Point* corners, int& top,
+                              int& bottom) {
+    int lo = std::numeric_limits<int>::max(), hi = std::numeric_limits<int>::min();
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2f p = mesh.pixels[t[k]];
+      corners[k] = cv::Point(static_cast<int>(std::lround(p.x() * scale * (1 << kShift))),
+                             static_cast<int>(std::lround(p.y() * scale * (1 << kShift))));
+      lo = std::min(lo, corners[k].y);
+      hi = std::max(hi, corners[k].y);
+    }
+    top = (lo >> kShift) - 1;
+    bottom = (hi >> kShift) + 2;
+  };
+  const auto draw_all = [&](cv::Mat& into, int first_row, int from, int to, bool& too_tall) {
+    cv::Point corners[3];
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+      const auto& t = mesh.triangles[i];
+      int top = 0, bottom = 0;
+      corners_of(t, corners, top, bottom);
+      if (bottom < from || top >= to) continue;
+      if (!drawn(t)) continue;
+      if (top < first_row && first_row > 0) too_tall = true;
+      if (bottom > first_row + into.rows && first_row + into.rows < shown.rows) too_tall = true;
+      for (auto& corner : corners) corner.y -= first_row << kShift;
+      cv::fillConvexPoly(into, corners, 3, cv::Scalar(static_cast<double>(i)), cv::LINE_8, kShift);
+    }
+  };
+  std::atomic<bool> any_too_tall{false};
+  for_row_stripes(shown.size(), [&](cv::Range rows) {
+    const int first = std::max(0, rows.start - kStripeMarginPx);
+    const int last = std::min(shown.rows, rows.end + kStripeMarginPx);
+    cv::Mat own(last - first, shown.cols, CV_32S, cv::Scalar(-1));
+    bool too_tall = false;
+    draw_all(own, first, rows.start, rows.end, too_tall);
+    if (too_tall) any_too_tall = true;
+    own.rowRange(rows.start - first, rows.end - first).copyTo(shown.rowRange(rows));
+  });
+  if (!any_too_tall) return;
+  shown.setTo(cv::Scalar(-1));
+  bool unused = false;
+  draw_all(shown, 0, 0, shown.rows, unused);
+}
+
 }  // namespace
 
 cv::Mat hysteresis(const cv::Mat& keep, const cv::Mat& seed) {
@@ -99,33 +160,44 @@ DarkLines find_dark_lines(const cv::Mat& grey, const cv::Mat& mask,
   const cv::Size size = grey.size();
   cv::Mat best(size, CV_32F, cv::Scalar(-1e30)), angle(size, CV_32F, cv::Scalar(0)),
       width(size, CV_32F, cv::Scalar(0));
+  cv::Mat g(size, CV_32F);
   for (double w : settings.widths_px) {
     // A bar of width w answers the second derivative best at a Gaussian
     // of about half its width; sigma^2 makes the scales comparable.
     const double sigma = std::max(0.8, 0.5 * w);
-    cv::Mat g, dxx, dyy, dxy;
-    cv::GaussianBlur(grey, g, cv::Size(0, 0), sigma);
-    cv::Sobel(g, dxx, CV_32F, 2, 0, 3, 0.25);
-    cv::Sobel(g, dyy, CV_32F, 0, 2, 3, 0.25);
-    cv::Sobel(g, dxy, CV_32F, 1, 1, 3, 0.25);
-    cv::Mat half_diff = 0.5 * (dxx - dyy), root;
-    cv::sqrt(half_diff.mul(half_diff) + dxy.mul(dxy), root);
-    // Largest Hessian eigenvalue: positive across a valley of brightness.
-    const cv::Mat response = (0.5 * (dxx + dyy) + root) * (sigma * sigma);
-    cv::Mat across;  // the eigenvector's angle, doubled
-    cv::phase(cv::Mat(dxx - dyy), cv::Mat(2 * dxy), across);
-    for (int r = 0; r < size.height; ++r)
-      for (int c = 0; c < size.width; ++c)
-        if (response.at<float>(r, c) > best.at<float>(r, c)) {
-          best.at<float>(r, c) = response.at<float>(r, c);
-          angle.at<float>(r, c) = 0.5f * across.at<float>(r, c);
-          width.at<float>(r, c) = static_cast<float>(w);
+    for_row_stripes(size, [&](cv::Range rows) {
+      cv::Mat g_rows = g.rowRange(rows);
+      cv::GaussianBlur(grey.rowRange(rows), g_rows, cv::Size(0, 0), sigma);
+    });
+    for_row_stripes(size, [&](cv::Range rows) {
+      cv::Mat dxx, dyy, dxy;
+      cv::Sobel(g.rowRange(rows), dxx, CV_32F, 2, 0, 3, 0.25);
+      cv::Sobel(g.rowRange(rows), dyy, CV_32F, 0, 2, 3, 0.25);
+      cv::Sobel(g.rowRange(rows), dxy, CV_32F, 1, 1, 3, 0.25);
+      cv::Mat half_diff = 0.5 * (dxx - dyy), root;
+      cv::sqrt(half_diff.mul(half_diff) + dxy.mul(dxy), root);
+      // Largest Hessian eigenvalue: positive across a valley of brightness.
+      const cv::Mat response = (0.5 * (dxx + dyy) + root) * (sigma * sigma);
+      cv::Mat across;  // the eigenvector's angle, doubled
+      cv::phase(cv::Mat(dxx - dyy), cv::Mat(2 * dxy), across);
+      for (int r = rows.start; r < rows.end; ++r)
+        for (int c = 0; c < size.width; ++c) {
+          const int k = r - rows.start;
+          if (response.at<float>(k, c) > best.at<float>(r, c)) {
+            best.at<float>(r, c) = response.at<float>(k, c);
+            angle.at<float>(r, c) = 0.5f * across.at<float>(k, c);
+            width.at<float>(r, c) = static_cast<float>(w);
+          }
         }
+    });
   }
   const auto [median, noise] = robust_level(best, mask);
   // The brightness the sides are compared with: lightly smoothed (noise).
-  cv::Mat smooth;
-  cv::GaussianBlur(grey, smooth, cv::Size(0, 0), 0.8);
+  cv::Mat smooth(size, CV_32F);
+  for_row_stripes(size, [&](cv::Range rows) {
+    cv::Mat smooth_rows = smooth.rowRange(rows);
+    cv::GaussianBlur(grey.rowRange(rows), smooth_rows, cv::Size(0, 0), 0.8);
+  });
 
   DarkLines out;
   out.noise = noise;
@@ -134,26 +206,28 @@ DarkLines find_dark_lines(const cv::Mat& grey, const cv::Mat& mask,
   cv::Mat keep(size, CV_8U, cv::Scalar(0)), seed(size, CV_8U, cv::Scalar(0));
   const double keep_level = median + settings.keep_sigmas * noise;
   const double seed_level = median + settings.seed_sigmas * noise;
-  for (int r = 0; r < size.height; ++r)
-    for (int c = 0; c < size.width; ++c) {
-      const float v = best.at<float>(r, c);
-      if (v < keep_level || !mask.at<std::uint8_t>(r, c)) continue;
-      const double nx = std::cos(angle.at<float>(r, c)), ny = std::sin(angle.at<float>(r, c));
-      // Non-maximum suppression across the line.
-      const float a = sample(best, c + nx, r + ny), b = sample(best, c - nx, r - ny);
-      if ((std::isfinite(a) && a > v) || (std::isfinite(b) && b >= v)) continue;
-      // Darker than both sides: a line, not the dark side of a step.
-      const double d = width.at<float>(r, c) + 1.0;
-      const float side_a = sample(smooth, c + d * nx, r + d * ny);
-      const float side_b = sample(smooth, c - d * nx, r - d * ny);
-      if (!std::isfinite(side_a) || !std::isfinite(side_b)) continue;
-      const double contrast = std::min(side_a, side_b) - smooth.at<float>(r, c);
-      if (contrast < settings.min_contrast_grey) continue;
-      keep.at<std::uint8_t>(r, c) = 255;
-      if (v >= seed_level) seed.at<std::uint8_t>(r, c) = 255;
-      out.sigmas.at<float>(r, c) = static_cast<float>((v - median) / noise);
-      out.contrast.at<float>(r, c) = static_cast<float>(contrast);
-    }
+  for_row_stripes(size, [&](cv::Range rows) {
+    for (int r = rows.start; r < rows.end; ++r)
+      for (int c = 0; c < size.width; ++c) {
+        const float v = best.at<float>(r, c);
+        if (v < keep_level || !mask.at<std::uint8_t>(r, c)) continue;
+        const double nx = std::cos(angle.at<float>(r, c)), ny = std::sin(angle.at<float>(r, c));
+        // Non-maximum suppression across the line.
+        const float a = sample(best, c + nx, r + ny), b = sample(best, c - nx, r - ny);
+        if ((std::isfinite(a) && a > v) || (std::isfinite(b) && b >= v)) continue;
+        // Darker than both sides: a line, not the dark side of a step.
+        const double d = width.at<float>(r, c) + 1.0;
+        const float side_a = sample(smooth, c + d * nx, r + d * ny);
+        const float side_b = sample(smooth, c - d * nx, r - d * ny);
+        if (!std::isfinite(side_a) || !std::isfinite(side_b)) continue;
+        const double contrast = std::min(side_a, side_b) - smooth.at<float>(r, c);
+        if (contrast < settings.min_contrast_grey) continue;
+        keep.at<std::uint8_t>(r, c) = 255;
+        if (v >= seed_level) seed.at<std::uint8_t>(r, c) = 255;
+        out.sigmas.at<float>(r, c) = static_cast<float>((v - median) / noise);
+        out.contrast.at<float>(r, c) = static_cast<float>(contrast);
+      }
+  });
   out.lines = zhang_suen_thinning(hysteresis(keep, seed));
   return out;
 }
@@ -185,81 +259,91 @@ SurfaceImage draw_surface(const photogrammetry::SurfaceMesh& mesh, cv::Size size
   // at a third of the fills (at 24 Mpx, a triangle covers a pixel or two
   // and each fill's own overhead was most of the stage).
   cv::Mat shown(size, CV_32S, cv::Scalar(-1));
-  constexpr int kShift = 4;  // sub-pixel corners: 1/16 px
-  Eigen::Vector3d n, centre;
-  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-    const auto& t = mesh.triangles[i];
-    if (!facing(t, n, centre)) continue;
-    cv::Point corners[3];
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector2f p = mesh.pixels[t[k]];
-      corners[k] = cv::Point(static_cast<int>(std::lround(p.x() * scale * (1 << kShift))),
-                             static_cast<int>(std::lround(p.y() * scale * (1 << kShift))));
-    }
-    cv::fillConvexPoly(shown, corners, 3, cv::Scalar(static_cast<double>(i)), cv::LINE_8, kShift);
-  }
-  cv::Mat normals(size, CV_32FC3, cv::Scalar(0, 0, 0)), points(size, CV_32FC3, cv::Scalar(0, 0, 0));
-  out.mask = cv::Mat(size, CV_8U, cv::Scalar(0));
-  // A triangle shows in a pixel or a few side by side: its values are
-  // worked out once for a run of pixels.
-  int last = -1;
-  cv::Vec3f last_normal, last_point;
-  for (int r = 0; r < size.height; ++r)
-    for (int c = 0; c < size.width; ++c) {
-      const int i = shown.at<int>(r, c);
-      if (i < 0) continue;
-      if (i != last) {
-        facing(mesh.triangles[static_cast<std::size_t>(i)], n, centre);
-        const Eigen::Vector3d rel = centre - out.origin;
-        last_normal = cv::Vec3f(static_cast<float>(n.x()), static_cast<float>(n.y()),
-                                static_cast<float>(n.z()));
-        last_point = cv::Vec3f(static_cast<float>(rel.x()), static_cast<float>(rel.y()),
-                               static_cast<float>(rel.z()));
-        last = i;
+  draw_triangle_indices(mesh, scale, shown, [&](const std::array<int, 3>& t) {
+    Eigen::Vector3d n, centre;
+    return facing(t, n, centre);
+  });
+  cv::Mat normals(size, CV_32FC3), points(size, CV_32FC3);
+  out.mask = cv::Mat(size, CV_8U);
+  cv::Mat weight(size, CV_32F), blurred_weight(size, CV_32F);
+  for_row_stripes(size, [&](cv::Range rows) {
+    // A triangle shows in a pixel or a few side by side: its values are
+    // worked out once for a run of pixels.
+    int last = -1;
+    Eigen::Vector3d n, centre;
+    cv::Vec3f last_normal, last_point;
+    for (int r = rows.start; r < rows.end; ++r)
+      for (int c = 0; c < size.width; ++c) {
+        const int i = shown.at<int>(r, c);
+        if (i < 0) {
+          normals.at<cv::Vec3f>(r, c) = cv::Vec3f(0, 0, 0);
+          points.at<cv::Vec3f>(r, c) = cv::Vec3f(0, 0, 0);
+          out.mask.at<std::uint8_t>(r, c) = 0;
+          weight.at<float>(r, c) = 0;
+          continue;
+        }
+        if (i != last) {
+          facing(mesh.triangles[static_cast<std::size_t>(i)], n, centre);
+          const Eigen::Vector3d rel = centre - out.origin;
+          last_normal = cv::Vec3f(static_cast<float>(n.x()), static_cast<float>(n.y()),
+                                  static_cast<float>(n.z()));
+          last_point = cv::Vec3f(static_cast<float>(rel.x()), static_cast<float>(rel.y()),
+                                 static_cast<float>(rel.z()));
+          last = i;
+        }
+        normals.at<cv::Vec3f>(r, c) = last_normal;
+        points.at<cv::Vec3f>(r, c) = last_point;
+        out.mask.at<std::uint8_t>(r, c) = 255;
+        weight.at<float>(r, c) = 1;  // the mask's 255 scaled by 1 / 255
       }
-      normals.at<cv::Vec3f>(r, c) = last_normal;
-      points.at<cv::Vec3f>(r, c) = last_point;
-      out.mask.at<std::uint8_t>(r, c) = 255;
-    }
+  });
   // Normalised convolution: smoothing does not pull in the zeros beyond
   // the surface's edge.
-  cv::Mat weight, blurred_weight;
-  out.mask.convertTo(weight, CV_32F, 1.0 / 255);
-  cv::GaussianBlur(weight, blurred_weight, cv::Size(0, 0), smoothing_px);
-  cv::GaussianBlur(normals, out.normals, cv::Size(0, 0), smoothing_px);
-  cv::GaussianBlur(points, out.points, cv::Size(0, 0), smoothing_px);
-  for (int r = 0; r < size.height; ++r)
-    for (int c = 0; c < size.width; ++c) {
-      cv::Vec3f& n = out.normals.at<cv::Vec3f>(r, c);
-      const float w = blurred_weight.at<float>(r, c);
-      const float len = static_cast<float>(cv::norm(n));
-      if (w > 1e-3f && len > 1e-6f) {
-        n /= len;
-        out.points.at<cv::Vec3f>(r, c) /= w;
-      } else {
-        n = cv::Vec3f(0, 0, 0);
+  out.normals.create(size, CV_32FC3);
+  out.points.create(size, CV_32FC3);
+  for_row_stripes(size, [&](cv::Range rows) {
+    cv::Mat bw = blurred_weight.rowRange(rows), bn = out.normals.rowRange(rows),
+            bp = out.points.rowRange(rows);
+    cv::GaussianBlur(weight.rowRange(rows), bw, cv::Size(0, 0), smoothing_px);
+    cv::GaussianBlur(normals.rowRange(rows), bn, cv::Size(0, 0), smoothing_px);
+    cv::GaussianBlur(points.rowRange(rows), bp, cv::Size(0, 0), smoothing_px);
+    for (int r = rows.start; r < rows.end; ++r)
+      for (int c = 0; c < size.width; ++c) {
+        cv::Vec3f& n = out.normals.at<cv::Vec3f>(r, c);
+        const float w = blurred_weight.at<float>(r, c);
+        const float len = static_cast<float>(cv::norm(n));
+        if (w > 1e-3f && len > 1e-6f) {
+          n /= len;
+          out.points.at<cv::Vec3f>(r, c) /= w;
+        } else {
+          n = cv::Vec3f(0, 0, 0);
+        }
       }
-    }
+  });
   return out;
 }
 
 Folds find_folds(const SurfaceImage& surface, const FoldSettings& settings) {
   const cv::Size size = surface.normals.size();
-  cv::Mat gx, gy;
-  cv::Sobel(surface.normals, gx, CV_32F, 1, 0, 3, 0.125);
-  cv::Sobel(surface.normals, gy, CV_32F, 0, 1, 3, 0.125);
-  // Structure tensor of the normal field: how fast, and across which
-  // direction, the normal turns.
-  std::vector<cv::Mat> x, y;
-  cv::split(gx, x);
-  cv::split(gy, y);
-  cv::Mat jxx = x[0].mul(x[0]) + x[1].mul(x[1]) + x[2].mul(x[2]);
-  cv::Mat jyy = y[0].mul(y[0]) + y[1].mul(y[1]) + y[2].mul(y[2]);
-  cv::Mat jxy = x[0].mul(y[0]) + x[1].mul(y[1]) + x[2].mul(y[2]);
-  cv::Mat half_diff = 0.5 * (jxx - jyy), root, strength, across;
-  cv::sqrt(half_diff.mul(half_diff) + jxy.mul(jxy), root);
-  cv::sqrt(cv::max(0.5 * (jxx + jyy) + root, 0.0), strength);
-  cv::phase(cv::Mat(jxx - jyy), cv::Mat(2 * jxy), across);
+  cv::Mat strength(size, CV_32F), across(size, CV_32F);
+  for_row_stripes(size, [&](cv::Range rows) {
+    cv::Mat gx, gy;
+    cv::Sobel(surface.normals.rowRange(rows), gx, CV_32F, 1, 0, 3, 0.125);
+    cv::Sobel(surface.normals.rowRange(rows), gy, CV_32F, 0, 1, 3, 0.125);
+    // Structure tensor of the normal field: how fast, and across which
+    // direction, the normal turns.
+    std::vector<cv::Mat> x, y;
+    cv::split(gx, x);
+    cv::split(gy, y);
+    cv::Mat jxx = x[0].mul(x[0]) + x[1].mul(x[1]) + x[2].mul(x[2]);
+    cv::Mat jyy = y[0].mul(y[0]) + y[1].mul(y[1]) + y[2].mul(y[2]);
+    cv::Mat jxy = x[0].mul(y[0]) + x[1].mul(y[1]) + x[2].mul(y[2]);
+    cv::Mat half_diff = 0.5 * (jxx - jyy), root;
+    cv::Mat strength_rows = strength.rowRange(rows), across_rows = across.rowRange(rows);
+    cv::sqrt(half_diff.mul(half_diff) + jxy.mul(jxy), root);
+    cv::sqrt(cv::max(0.5 * (jxx + jyy) + root, 0.0), strength_rows);
+    cv::phase(cv::Mat(jxx - jyy), cv::Mat(2 * jxy), across_rows);
+  });
 
   // The two sides are read two smoothing widths out, where the smoothed
   // normal is within 2 % of each side's own; both must be on the surface.
@@ -271,31 +355,33 @@ Folds find_folds(const SurfaceImage& surface, const FoldSettings& settings) {
   out.ridge = cv::Mat(size, CV_8U, cv::Scalar(0));
   cv::Mat keep(size, CV_8U, cv::Scalar(0)), seed(size, CV_8U, cv::Scalar(0));
   const double keep_cos = std::cos(settings.keep_deg * M_PI / 180);
-  for (int r = 0; r < size.height; ++r)
-    for (int c = 0; c < size.width; ++c) {
-      if (!inner.at<std::uint8_t>(r, c)) continue;
-      const float v = strength.at<float>(r, c);
-      if (v <= 0) continue;
-      const double ux = std::cos(0.5 * across.at<float>(r, c));
-      const double uy = std::sin(0.5 * across.at<float>(r, c));
-      const float a = sample(strength, c + ux, r + uy), b = sample(strength, c - ux, r - uy);
-      if ((std::isfinite(a) && a > v) || (std::isfinite(b) && b >= v)) continue;
-      if (!masked_in(surface.mask, c + reach * ux, r + reach * uy) ||
-          !masked_in(surface.mask, c - reach * ux, r - reach * uy))
-        continue;
-      const cv::Vec3f na = sample3(surface.normals, c - reach * ux, r - reach * uy);
-      const cv::Vec3f nb = sample3(surface.normals, c + reach * ux, r + reach * uy);
-      const double cosine = std::clamp(static_cast<double>(na.dot(nb)), -1.0, 1.0);
-      if (cosine > keep_cos) continue;
-      const double deg = std::acos(cosine) * 180 / M_PI;
-      const cv::Vec3f pa = sample3(surface.points, c - reach * ux, r - reach * uy);
-      const cv::Vec3f pb = sample3(surface.points, c + reach * ux, r + reach * uy);
-      keep.at<std::uint8_t>(r, c) = 255;
-      if (deg >= settings.seed_deg) seed.at<std::uint8_t>(r, c) = 255;
-      out.angle.at<float>(r, c) = static_cast<float>(deg);
-      // Convex when the normal turns the way one walks across: a ridge.
-      if ((nb - na).dot(pb - pa) > 0) out.ridge.at<std::uint8_t>(r, c) = 255;
-    }
+  for_row_stripes(size, [&](cv::Range rows) {
+    for (int r = rows.start; r < rows.end; ++r)
+      for (int c = 0; c < size.width; ++c) {
+        if (!inner.at<std::uint8_t>(r, c)) continue;
+        const float v = strength.at<float>(r, c);
+        if (v <= 0) continue;
+        const double ux = std::cos(0.5 * across.at<float>(r, c));
+        const double uy = std::sin(0.5 * across.at<float>(r, c));
+        const float a = sample(strength, c + ux, r + uy), b = sample(strength, c - ux, r - uy);
+        if ((std::isfinite(a) && a > v) || (std::isfinite(b) && b >= v)) continue;
+        if (!masked_in(surface.mask, c + reach * ux, r + reach * uy) ||
+            !masked_in(surface.mask, c - reach * ux, r - reach * uy))
+          continue;
+        const cv::Vec3f na = sample3(surface.normals, c - reach * ux, r - reach * uy);
+        const cv::Vec3f nb = sample3(surface.normals, c + reach * ux, r + reach * uy);
+        const double cosine = std::clamp(static_cast<double>(na.dot(nb)), -1.0, 1.0);
+        if (cosine > keep_cos) continue;
+        const double deg = std::acos(cosine) * 180 / M_PI;
+        const cv::Vec3f pa = sample3(surface.points, c - reach * ux, r - reach * uy);
+        const cv::Vec3f pb = sample3(surface.points, c + reach * ux, r + reach * uy);
+        keep.at<std::uint8_t>(r, c) = 255;
+        if (deg >= settings.seed_deg) seed.at<std::uint8_t>(r, c) = 255;
+        out.angle.at<float>(r, c) = static_cast<float>(deg);
+        // Convex when the normal turns the way one walks across: a ridge.
+        if ((nb - na).dot(pb - pa) > 0) out.ridge.at<std::uint8_t>(r, c) = 255;
+      }
+  });
   out.lines = zhang_suen_thinning(hysteresis(keep, seed));
   return out;
 }

@@ -14,6 +14,7 @@
 #include "core/measure/proposals/line_chains.h"
 #include "core/measure/proposals/line_evidence.h"
 #include "core/measure/proposals/proposal_search.h"
+#include "core/measure/proposals/row_stripes.h"
 #include "core/measure/proposals/trace_proposals_phases.h"
 
 namespace rockface::measure {
@@ -121,12 +122,19 @@ WorkingImage working_image(const photogrammetry::SurfaceMesh& mesh, const cv::Ma
   const double scale = std::min(1.0, options.pixels_per_line / (narrowest * px_per_m));
   out.scale = scale;
   out.px_per_m = px_per_m * scale;
-  cv::Mat& grey = out.grey;
+  cv::Mat grey_levels;
   if (photo.channels() == 3)
-    cv::cvtColor(photo, grey, cv::COLOR_BGR2GRAY);
+    cv::cvtColor(photo, grey_levels, cv::COLOR_BGR2GRAY);
   else
-    grey = photo;
-  grey.convertTo(grey, CV_32F);
+    grey_levels = photo;
+  // 24 Mpx in floats (96 MB, each page touched for the first time): on the
+  // analysis threads, each its stripe.
+  cv::Mat& grey = out.grey;
+  grey.create(grey_levels.size(), CV_MAKETYPE(CV_32F, grey_levels.channels()));
+  proposals::for_row_stripes(grey_levels.size(), [&](cv::Range rows) {
+    cv::Mat grey_rows = grey.rowRange(rows);
+    grey_levels.rowRange(rows).convertTo(grey_rows, CV_32F);
+  });
   if (scale < 1) cv::resize(grey, grey, cv::Size(), scale, scale, cv::INTER_AREA);
   return out;
 }

@@ -8,8 +8,6 @@
 // right shot is a new picture, and the pair is stored.
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -25,18 +23,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<uint8_t> bytes_of(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::bytes_of;
 
-TEST(CaptureScreenCameraFault, AShotTheCameraCouldNotSendIsFetchedNotTakenAgain) {
-  const test::VirtualD750 d750 = test::set_up_virtual_d750();
-  if (d750.iolibs.empty()) {
-    // CI builds it (tools/test.sh): there, its absence is a failure.
-    if (const char* ci = std::getenv("CI"); ci && std::string(ci) == "true") FAIL() << d750.missing;
-    GTEST_SKIP() << d750.missing;
-  }
+using CaptureScreenCameraFault = test::VirtualD750Fixture;
+
+TEST_F(CaptureScreenCameraFault, AShotTheCameraCouldNotSendIsFetchedNotTakenAgain) {
+  const test::VirtualD750& d750 = d750_;
   // The tablet's spool in the camera's folder, not the shared one.
   ::setenv("TMPDIR", d750.folder.c_str(), 1);
   const fs::path project = d750.folder / "site.rockface";

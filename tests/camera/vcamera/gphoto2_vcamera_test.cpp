@@ -10,10 +10,8 @@
 
 #include <algorithm>
 #include <csignal>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -31,10 +29,8 @@ namespace fs = std::filesystem;
 constexpr const char* kModel = "Nikon DSC D750";
 constexpr const char* kPort = "usb:001,001";
 
-std::vector<uint8_t> bytes_of(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::bytes_of;
+using test::message_of;
 
 std::vector<std::string> files_in(const fs::path& dir) {
   std::vector<std::string> out;
@@ -43,19 +39,8 @@ std::vector<std::string> files_in(const fs::path& dir) {
   return out;
 }
 
-class VirtualD750Test : public ::testing::Test {
+class VirtualD750Test : public test::VirtualD750Fixture {
  protected:
-  void SetUp() override {
-    d750_ = test::set_up_virtual_d750();
-    if (d750_.iolibs.empty()) {
-      // CI builds it (tools/test.sh): there, its absence is a failure.
-      if (const char* ci = std::getenv("CI"); ci && std::string(ci) == "true")
-        FAIL() << d750_.missing;
-      GTEST_SKIP() << d750_.missing;
-    }
-    spool_ = d750_.folder / "spool";
-  }
-
   Gphoto2Camera::Options options() const {
     Gphoto2Camera::Options o;  // model and port empty: the first camera detected
     o.spool_dir = spool_.string();
@@ -64,19 +49,6 @@ class VirtualD750Test : public ::testing::Test {
     o.event_drain_ms = 200;
     return o;
   }
-
-  static std::string message_of(const std::function<void()>& f, CameraError::Kind* kind) {
-    try {
-      f();
-    } catch (const CameraError& e) {
-      *kind = e.kind();
-      return e.what();
-    }
-    return "(no error)";
-  }
-
-  test::VirtualD750 d750_;
-  fs::path spool_;
 };
 
 TEST_F(VirtualD750Test, IsDetectedOnItsUsbPort) {

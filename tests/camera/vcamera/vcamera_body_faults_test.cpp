@@ -8,11 +8,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <iterator>
 #include <thread>
 
@@ -27,10 +24,8 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-std::vector<uint8_t> bytes_of(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::bytes_of;
+using test::message_of;
 
 std::size_t files_in(const fs::path& dir) {
   if (!fs::exists(dir)) return 0;
@@ -38,29 +33,11 @@ std::size_t files_in(const fs::path& dir) {
       std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
 }
 
-// What rockface says, printed for the test's log.
-std::string message_of(const std::function<void()>& f, CameraError::Kind* kind) {
-  try {
-    f();
-  } catch (const CameraError& e) {
-    *kind = e.kind();
-    std::printf("said: %s\n", e.what());
-    return e.what();
-  }
-  return "(no error)";
-}
-
-class VirtualD750BodyTest : public ::testing::Test {
+class VirtualD750BodyTest : public test::VirtualD750Fixture {
  protected:
   void SetUp() override {
-    d750_ = test::set_up_virtual_d750();
-    if (d750_.iolibs.empty()) {
-      // CI builds it (tools/test.sh): there, its absence is a failure.
-      if (const char* ci = std::getenv("CI"); ci && std::string(ci) == "true")
-        FAIL() << d750_.missing;
-      GTEST_SKIP() << d750_.missing;
-    }
-    spool_ = d750_.folder / "spool";
+    test::VirtualD750Fixture::SetUp();
+    if (IsSkipped() || HasFatalFailure()) return;
     // The virtual camera's new pictures live in the port library, which
     // libgphoto2 unloads when rockface closes a camera that stopped
     // answering: held loaded, the card keeps them as a real card does.
@@ -85,9 +62,6 @@ class VirtualD750BodyTest : public ::testing::Test {
     std::ofstream(d750_.folder / fault) << content << '\n';
   }
   void clear(const char* fault) const { fs::remove(d750_.folder / fault); }
-
-  test::VirtualD750 d750_;
-  fs::path spool_;
 };
 
 // The release is taken and the capture ends, but the body makes no picture

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -91,6 +92,33 @@ VirtualD750 set_up_virtual_d750(std::vector<uint8_t> card_jpeg) {
   // The port's file and the card are found relative to the working folder.
   fs::current_path(d.folder);
   return d;
+}
+
+void VirtualD750Fixture::SetUp() {
+  d750_ = set_up_virtual_d750();
+  if (d750_.iolibs.empty()) {
+    // CI builds it (tools/test.sh): there, its absence is a failure.
+    if (const char* ci = std::getenv("CI"); ci && std::string(ci) == "true")
+      FAIL() << d750_.missing;
+    GTEST_SKIP() << d750_.missing;
+  }
+  spool_ = d750_.folder / "spool";
+}
+
+std::vector<uint8_t> bytes_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string message_of(const std::function<void()>& f, camera::CameraError::Kind* kind) {
+  try {
+    f();
+  } catch (const camera::CameraError& e) {
+    *kind = e.kind();
+    std::printf("said: %s\n", e.what());
+    return e.what();
+  }
+  return "(no error)";
 }
 
 CardPair same_size_jpegs(std::vector<uint8_t> left, std::vector<uint8_t> right) {

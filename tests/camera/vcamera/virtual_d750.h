@@ -8,9 +8,14 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <gtest/gtest.h>
+
+#include "camera/camera_error.h"
 
 namespace rockface::test {
 
@@ -26,6 +31,26 @@ struct VirtualD750 {
 // Looks for the port drivers and, when they are there, sets the process up.
 // `card_jpeg`: the card's one JPEG (empty: a small one with a D750's EXIF).
 VirtualD750 set_up_virtual_d750(std::vector<uint8_t> card_jpeg = {});
+
+// The opening of a suite on the virtual D750 with the card's own JPEG: the
+// camera set up, the test skipped where tools/virtual-camera.sh has not
+// built its port drivers (failed on CI, which builds them), and the spool
+// folder named in the camera's working folder. A SetUp of its own calls
+// this one first and returns when it skipped or failed.
+class VirtualD750Fixture : public ::testing::Test {
+ protected:
+  void SetUp() override;
+
+  VirtualD750 d750_;
+  std::filesystem::path spool_;  // made by the camera on its first download
+};
+
+// A file's bytes: a spooled picture's, to compare with the card's.
+std::vector<uint8_t> bytes_of(const std::filesystem::path& file);
+
+// What rockface says when `f` throws CameraError (printed for the test's
+// log), its kind in `kind`; "(no error)" when it throws none.
+std::string message_of(const std::function<void()>& f, camera::CameraError::Kind* kind);
 
 // Issue 42: a stereo pair through the virtual camera. vcamera.c serves
 // every capture from the card's one JPEG, reading the file when the picture

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -275,10 +276,30 @@ TEST(ImportFace, ProposeFindsTheWritersFacets) {
                         std::abs(p["dipdir"].get<double>() - f["dipdir"].get<double>()) < 0.3);
     EXPECT_TRUE(found) << f["name"] << " not among " << proposals["facets"].dump();
   }
-  // The field report names where the 3D image came from.
-  const auto report =
-      run_rockface("report " + project.string() + " --out " + (w.dir / "report.pdf").string());
-  EXPECT_EQ(report.exit_code, 0) << report.err;
+  // The field report names where the 3D image came from, read back by an
+  // independent reader (poppler's pdftotext): the file, its format and its
+  // point count, and the scanner's registration as the scale's source.
+  const fs::path pdf = w.dir / "report.pdf", text = w.dir / "report.txt";
+  const auto report = run_rockface("report " + project.string() + " --out " + pdf.string());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const auto read =
+      rockface::test::run_command("pdftotext -layout " + pdf.string() + " " + text.string());
+  ASSERT_EQ(read.exit_code, 0) << read.out;
+  std::ifstream pdf_text(text);
+  const std::string body((std::istreambuf_iterator<char>(pdf_text)),
+                         std::istreambuf_iterator<char>());
+  // pdftotext may break a long line: words are compared with the spaces
+  // and line breaks between them as one space.
+  std::string words;
+  for (const char c : body)
+    if (!std::isspace(static_cast<unsigned char>(c)) || (!words.empty() && words.back() != ' '))
+      words += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+  const std::size_t points = w.truth["points"].get<std::size_t>();
+  EXPECT_NE(
+      words.find("3D image imported from face.ply: PLY, " + std::to_string(points) + " points"),
+      std::string::npos)
+      << words;
+  EXPECT_NE(words.find("scale: the scanner's registration"), std::string::npos) << words;
 }
 
 }  // namespace

@@ -4,27 +4,47 @@
 // visit, see its 3D face drawn and turn it, fetch its field report; the
 // same walk at a phone's width. Skipped only when Chromium is absent.
 #include <gtest/gtest.h>
-#include <httplib.h>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
+#include <Eigen/Core>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/progress.h"
+#include "core/tunnel/drive_sets.h"
+#include "firmware-app/office/office_workflows.h"
 #include "storage/office/sync_push.h"
+#include "storage/project/project_sqlite.h"
+#include "storage/project/project_store.h"
+#include "tests/integration/office_web/blocks_table_truth.h"
 #include "tests/integration/office_web/office_site.h"
 #include "tests/storage/office/office_environment.h"
 #include "tests/storage/office/tablet_projects.h"
+#include "tests/support/cli_run.h"
 #include "tests/support/web_driver.h"
+
+// Last: <resolv.h>, which httplib.h includes, defines the macro _res that
+// Eigen uses as a parameter name.
+#include <httplib.h>
 
 namespace rockface::office_web_test {
 namespace {
@@ -78,24 +98,160 @@ std::string run(const std::string& command) {
   return out;
 }
 
-// Logs in as the office reader and opens the drive of Main drive by clicks.
-void open_drive(WebDriver& d, const OfficeServer& server) {
+// Logs in as the office reader and opens the drive of Main drive by clicks;
+// `tunnels` (when given) gets the Tunnels page's rows, each cell's text.
+void open_drive(WebDriver& d, const OfficeServer& server, json* tunnels = nullptr) {
   d.go(server.origin() + "/");
   d.type(d.wait_for("#role"), "office_reader");
   d.type(d.wait_for("#password"), kOfficePassword);
   d.click(d.wait_for("#login button[type=submit]"));
   d.wait_for("a.tunnel-link");
+  if (tunnels)
+    *tunnels = d.script(
+        "return [...document.querySelectorAll('table tbody tr')].map(r => [...r.cells].map(c "
+        "=> c.textContent))");
   d.click(d.element_by_script(
       "return [...document.querySelectorAll('a.tunnel-link')].find(a => a.textContent === "
       "'Main drive')"));
   d.wait_for("table.visits tbody tr");
 }
 
+// The truth the pages are checked against: the tablets' own projects that
+// the site synced (office_site.cpp), read here with SQLite, not through the
+// server or the pages.
+namespace truth {
+
+namespace fs = std::filesystem;
+
+// The tablets' project files of a tunnel.
+std::vector<fs::path> tablet_files(const std::string& tunnel) {
+  if (tunnel == "North adit") return {site().folder / "adit-c.rockface"};
+  return {site().folder / "a.rockface", site().folder / "b.rockface"};
+}
+
+struct LocalVisit {
+  fs::path file;
+  std::int64_t id = 0;
+};
+
+// The tablet's project and local id of a visit the server names by uuid.
+std::optional<LocalVisit> visit_of(const std::string& uuid) {
+  for (const auto& file : tablet_files("Main drive")) {
+    storage::sqlite::Connection db(file, storage::sqlite::Connection::Access::read_only);
+    storage::sqlite::Statement st(db, "SELECT id FROM visit WHERE uuid = ?", "finding a visit");
+    st.bind(1, uuid);
+    if (st.step()) return LocalVisit{file, st.column_int(0)};
+  }
+  return std::nullopt;
+}
+
+// Every row of `sql` (one column of doubles per row) on a visit's file,
+// the visit's id bound to each "?".
+std::vector<std::vector<double>> rows(const LocalVisit& v, const std::string& sql, int columns) {
+  storage::sqlite::Connection db(v.file, storage::sqlite::Connection::Access::read_only);
+  storage::sqlite::Statement st(db, sql, "reading the tablet's project");
+  for (int i = 1; i <= static_cast<int>(std::count(sql.begin(), sql.end(), '?')); ++i)
+    st.bind(i, v.id);
+  std::vector<std::vector<double>> out;
+  while (st.step()) {
+    std::vector<double> row;
+    for (int c = 0; c < columns; ++c)
+      row.push_back(st.is_null(c) ? std::numeric_limits<double>::quiet_NaN() : st.column_double(c));
+    out.push_back(row);
+  }
+  return out;
+}
+
+// Where the stereonet (ui/web/stereonet.js: a 260-unit SVG, the net's
+// centre at 130, radius 120) puts the pole of a plane: lower hemisphere,
+// equal area (Schmidt). The pole of a plane dipping d towards a points to
+// a + 180 and lies d from the vertical; equal area puts a line at angle t
+// from the vertical at R * sqrt(2) * sin(t / 2) from the centre, north up.
+std::pair<double, double> stereonet_place(double dip, double dipdir) {
+  constexpr double kDeg = 3.14159265358979323846 / 180.0;
+  const double rho = 120.0 * std::sqrt(2.0) * std::sin(dip * kDeg / 2.0);
+  const double trend = (dipdir + 180.0) * kDeg;
+  return {130.0 + rho * std::sin(trend), 130.0 - rho * std::cos(trend)};
+}
+
+// How many of `expected` are drawn in `drawn` (each drawn point used once),
+// within `tolerance` SVG units.
+std::size_t matched_points(const std::vector<std::pair<double, double>>& expected,
+                           const json& drawn, double tolerance) {
+  std::vector<bool> used(drawn.size(), false);
+  std::size_t found = 0;
+  for (const auto& [x, y] : expected)
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      if (used[i]) continue;
+      if (std::abs(drawn[i][0].get<double>() - x) <= tolerance &&
+          std::abs(drawn[i][1].get<double>() - y) <= tolerance) {
+        used[i] = true;
+        ++found;
+        break;
+      }
+    }
+  return found;
+}
+
+// The distance from `p` (the project frame) to the nearest triangle of the
+// visit's first 3D image, measured where p projects inside a triangle
+// (infinity when it projects into none).
+double distance_to_face(const LocalVisit& v, const Eigen::Vector3d& p) {
+  storage::OpenOptions read;
+  read.read_only = true;
+  storage::ProjectStore store = storage::ProjectStore::open(v.file, read);
+  const auto models = store.list_visit_models(v.id);
+  if (models.empty()) return std::numeric_limits<double>::infinity();
+  const storage::Mesh mesh = store.load_model(models.front().id).mesh;
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& f : mesh.faces) {
+    const Eigen::Vector3d a = mesh.vertices[f[0]], b = mesh.vertices[f[1]], c = mesh.vertices[f[2]];
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    if (n.norm() == 0) continue;
+    const Eigen::Vector3d u = n.normalized();
+    const double off = (p - a).dot(u);
+    const Eigen::Vector3d q = p - off * u;
+    // Barycentric coordinates of q; a little outside is the triangle's edge.
+    const double area = n.norm();
+    const double wa = (b - q).cross(c - q).dot(u) / area;
+    const double wb = (c - q).cross(a - q).dot(u) / area;
+    const double wc = 1.0 - wa - wb;
+    if (wa < -1e-6 || wb < -1e-6 || wc < -1e-6) continue;
+    best = std::min(best, std::abs(off));
+  }
+  return best;
+}
+
+// The centre of the bounding box of the visit's first 3D image: the
+// origin of the mesh frame the browser draws in (office_pages.h).
+Eigen::Vector3d face_centre(const LocalVisit& v) {
+  storage::OpenOptions read;
+  read.read_only = true;
+  storage::ProjectStore store = storage::ProjectStore::open(v.file, read);
+  const storage::Mesh mesh = store.load_model(store.list_visit_models(v.id).front().id).mesh;
+  Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;
+  for (const auto& p : mesh.vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace truth
+
 struct Walk {
   std::string drive_text, visit_text, visit_uuid, cookie;
   double face_drawn = 0, face_turned = 0;
   int page_width = 0, window_width = 0;
   int photograph_width = 0;  // the first photograph as the page shows it
+  // The first photograph's width on the page before and after a click.
+  double photograph_shown = 0, photograph_zoomed = 0;
+  json tunnels;     // the Tunnels page's rows
+  json visit_rows;  // the drive's visits: id, blocks that move, largest
+  json stereonet;   // the poles and set means drawn, SVG units
+  json rock_mass;   // the Rock mass section's lines (or its note)
+  json measured;    // two double-clicks on the 3D face: status, points
+  json block_rows;  // the visit's blocks table, each cell's text
 };
 
 // Log in, open the drive of Main drive, open the visit with blocks, wait
@@ -103,7 +259,11 @@ struct Walk {
 Walk walk(const OfficeServer& server, int width, int height) {
   Walk w;
   WebDriver d(width, height);
-  open_drive(d, server);
+  open_drive(d, server, &w.tunnels);
+  w.visit_rows = d.script(
+      "return [...document.querySelectorAll('table.visits tbody tr')].map(r => ({id: "
+      "r.querySelector('a.visit-link').getAttribute('href').split('/').pop(), moving: "
+      "r.cells[6].textContent, largest: r.cells[7].textContent}))");
   if (const char* keep = std::getenv("ROCKFACE_OFFICE_WEB_SHOTS"))
     cv::imwrite(std::string(keep) + "/drive-" + std::to_string(width) + ".png", d.screenshot());
   w.drive_text = d.script("return document.body.innerText").get<std::string>();
@@ -120,6 +280,9 @@ Walk walk(const OfficeServer& server, int width, int height) {
   d.wait_for("#face[data-drawn=yes]", std::chrono::seconds(60));
   w.visit_uuid = d.script("return location.hash.split('/').pop()").get<std::string>();
   w.visit_text = d.script("return document.body.innerText").get<std::string>();
+  w.block_rows = d.script(
+      "return [...document.querySelectorAll('table.blocks tbody tr')].map(r => [...r.cells].map(c "
+      "=> c.textContent))");
   d.script("document.getElementById('face-canvas').scrollIntoView()");
   // The photograph's texture arrives after the mesh.
   std::this_thread::sleep_for(std::chrono::milliseconds(800));
@@ -128,6 +291,25 @@ Walk walk(const OfficeServer& server, int width, int height) {
       "[Math.round(r.left), Math.round(r.top), Math.round(r.width), Math.round(r.height)]");
   const cv::Mat before = d.screenshot();
   w.face_drawn = drawn_fraction(before, rect);
+  // The stereonet's poles and set means, and the rock mass sheet's lines.
+  w.stereonet = d.script(
+      "const s = document.querySelector('svg.stereonet'); if (!s) return null; return {poles: "
+      "[...s.querySelectorAll('circle.pole')].map(c => [+c.getAttribute('cx'), "
+      "+c.getAttribute('cy')]), sets: [...s.querySelectorAll('rect')].map(r => "
+      "[+r.getAttribute('x') + 5, +r.getAttribute('y') + 5])}");
+  w.rock_mass = d.script(
+      "const s = [...document.querySelectorAll('section')].find(x => x.querySelector('h2') && "
+      "x.querySelector('h2').textContent === 'Rock mass'); if (!s) return null; return "
+      "[...s.querySelectorAll('li, p')].map(e => e.textContent)");
+  // A distance measured on the face: two double-clicks inside the canvas
+  // (the face fills its middle in the first view), as a person makes them.
+  w.measured = d.script(
+      "const c = document.getElementById('face-canvas'); const r = c.getBoundingClientRect(); "
+      "const at = (fx, fy) => c.dispatchEvent(new MouseEvent('dblclick', {bubbles: true, "
+      "clientX: r.left + fx * r.width, clientY: r.top + fy * r.height})); at(0.5, 0.5); "
+      "at(0.6, 0.56); const h = document.getElementById('face'); return {status: "
+      "document.getElementById('face-status').textContent, from: h.dataset.measuredFrom || '', "
+      "to: h.dataset.measuredTo || ''}");
   // ROCKFACE_OFFICE_WEB_SHOTS=FOLDER keeps the screenshots for a person to look at.
   if (const char* keep = std::getenv("ROCKFACE_OFFICE_WEB_SHOTS"))
     cv::imwrite(std::string(keep) + "/face-" + std::to_string(width) + ".png", before);
@@ -143,6 +325,21 @@ Walk walk(const OfficeServer& server, int width, int height) {
            "{ if (i.naturalWidth > 0 || ++n > 200) { clearInterval(t); r(i.naturalWidth); } }, "
            "100); })")
           .get<int>();
+  // A click on the photograph zooms it (and the page stays as wide as the
+  // window, checked below).
+  const std::string photo =
+      d.element_by_script("return document.querySelector('img[alt^=\"photograph\"]')");
+  w.photograph_shown =
+      d.script("return document.querySelector('img[alt^=\"photograph\"]').clientWidth")
+          .get<double>();
+  d.click(photo);
+  // The zoom's transition takes 0.2 s.
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  w.photograph_zoomed =
+      d.script("return document.querySelector('img[alt^=\"photograph\"]').clientWidth")
+          .get<double>();
+  d.click(photo);
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
   w.page_width = d.script("return document.documentElement.scrollWidth").get<int>();
   w.window_width = d.script("return window.innerWidth").get<int>();
   w.cookie = d.cookie("rockface_session");
@@ -172,11 +369,193 @@ void expect_walk(const Walk& w, const std::string& name) {
   EXPECT_GT(w.photograph_width, 100) << name << ": the visit's photograph did not load";
 }
 
+// The bullets of the pages each checked against the synced tablets'
+// projects (namespace truth): the Tunnels page's last visit and drive
+// length, the drive's largest removable block and blocks that move, the
+// stereonet, the rock mass sheet, a distance measured on the 3D face, the
+// photographs zoomable.
+void expect_pages_against_the_synced_data(const Walk& w, const std::string& name) {
+  // Tunnels: each tunnel's visits, last visit and the drive mapped (first
+  // to last placed visit).
+  ASSERT_EQ(w.tunnels.size(), 2u) << name << ": " << w.tunnels.dump();
+  for (const auto& row : w.tunnels) {
+    ASSERT_EQ(row.size(), 4u) << name << ": " << row.dump();
+    const std::string tunnel = row[0];
+    int visits = 0;
+    std::string last;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& file : truth::tablet_files(tunnel)) {
+      storage::sqlite::Connection db(file, storage::sqlite::Connection::Access::read_only);
+      storage::sqlite::Statement v(db, "SELECT started_at FROM visit", "reading the visits");
+      while (v.step()) {
+        ++visits;
+        last = std::max(last, v.column_text(0));
+      }
+      storage::sqlite::Statement p(db, "SELECT chainage FROM visit_placement", "placements");
+      while (p.step()) {
+        lo = std::min(lo, p.column_double(0));
+        hi = std::max(hi, p.column_double(0));
+      }
+    }
+    EXPECT_EQ(row[1], std::to_string(visits)) << name << ": visits of " << tunnel;
+    EXPECT_EQ(row[2], last) << name << ": the last visit of " << tunnel;
+    double length = 0, from = 0, to = 0;
+    const std::string shown = row[3];
+    ASSERT_EQ(std::sscanf(shown.c_str(), "%lf m (ch %lf m to %lf m)", &length, &from, &to), 3)
+        << name << ": the drive mapped of " << tunnel << " reads \"" << shown << "\"";
+    // Shown to the decimetre: half of it is the rounding.
+    EXPECT_NEAR(length, hi - lo, 0.05 + 1e-9) << name << ": the drive length of " << tunnel;
+    EXPECT_NEAR(from, lo, 0.05 + 1e-9) << name << ": " << tunnel;
+    EXPECT_NEAR(to, hi, 0.05 + 1e-9) << name << ": " << tunnel;
+  }
+
+  // The drive: each visit's largest removable block (of its latest
+  // analysis) and its blocks that move (removable, with a mode).
+  ASSERT_FALSE(w.visit_rows.empty()) << name;
+  int with_blocks = 0;
+  for (const auto& row : w.visit_rows) {
+    const auto v = truth::visit_of(row["id"]);
+    ASSERT_TRUE(v) << name << ": visit " << row["id"] << " is in no tablet's project";
+    const auto blocks = truth::rows(
+        *v,
+        "SELECT volume_m3, removable, mode NOT IN ('none', '') FROM block WHERE analysis_id = "
+        "(SELECT max(id) FROM analysis WHERE visit_id = ?)",
+        3);
+    double largest = 0;
+    int moving = 0;
+    for (const auto& b : blocks) {
+      if (b[1] != 0) largest = std::max(largest, b[0]);
+      if (b[1] != 0 && b[2] != 0) ++moving;
+    }
+    EXPECT_EQ(row["moving"], std::to_string(moving)) << name << ": blocks that move";
+    const std::string shown = row["largest"];
+    if (largest == 0) {
+      EXPECT_EQ(shown, "–") << name << ": a visit without a removable block";
+      continue;
+    }
+    ++with_blocks;
+    double value = 0;
+    ASSERT_EQ(std::sscanf(shown.c_str(), "%lf", &value), 1) << name << ": " << shown;
+    EXPECT_NE(shown.find(" m³"), std::string::npos) << name << ": " << shown;
+    // Three significant digits: half a unit of the third is the rounding.
+    const double unit = std::pow(10.0, std::floor(std::log10(largest)) - 2);
+    EXPECT_NEAR(value, largest, 0.5 * unit + 1e-12) << name << ": the largest removable block";
+  }
+  EXPECT_GT(with_blocks, 0) << name << ": no visit of the drive has a removable block";
+
+  const auto visit = truth::visit_of(w.visit_uuid);
+  ASSERT_TRUE(visit) << name;
+  // The stereonet: one pole per joint (the visit's sets are stored) or per
+  // plane measured (they are clustered on the server), each where equal
+  // area puts it; the stored sets' means too.
+  ASSERT_TRUE(w.stereonet.is_object()) << name << ": no stereonet on the visit's page";
+  const auto sets = truth::rows(*visit, "SELECT dip, dipdir FROM joint_set WHERE visit_id = ?", 2);
+  const auto poles =
+      sets.empty() ? truth::rows(*visit,
+                                 "SELECT dip, dipdir FROM measurement WHERE visit_id = ? AND dip "
+                                 "IS NOT NULL AND dipdir IS NOT NULL",
+                                 2)
+                   : truth::rows(*visit, "SELECT dip, dipdir FROM joint WHERE visit_id = ?", 2);
+  ASSERT_GE(poles.size(), 2u) << name;
+  std::vector<std::pair<double, double>> expected_poles, expected_sets;
+  for (const auto& p : poles) expected_poles.push_back(truth::stereonet_place(p[0], p[1]));
+  for (const auto& p : sets) expected_sets.push_back(truth::stereonet_place(p[0], p[1]));
+  // The page writes each place to a tenth of a unit (toFixed(1)).
+  constexpr double kShown = 0.05 + 1e-9;
+  EXPECT_EQ(w.stereonet["poles"].size(), poles.size()) << name << ": poles drawn";
+  EXPECT_EQ(truth::matched_points(expected_poles, w.stereonet["poles"], kShown), poles.size())
+      << name << ": poles not where equal area puts them: " << w.stereonet["poles"].dump();
+  if (!sets.empty()) {
+    EXPECT_EQ(w.stereonet["sets"].size(), sets.size()) << name << ": set means drawn";
+    EXPECT_EQ(truth::matched_points(expected_sets, w.stereonet["sets"], kShown), sets.size())
+        << name << ": set means misplaced: " << w.stereonet["sets"].dump();
+  }
+
+  // The blocks table against the tablet's own blocks of the visit.
+  expect_blocks_table(w.block_rows, visit->file, visit->id, name);
+
+  // The photograph zoomed by a click: at least half as wide again.
+  EXPECT_GT(w.photograph_shown, 50) << name;
+  EXPECT_GT(w.photograph_zoomed, 1.5 * w.photograph_shown)
+      << name << ": a click did not zoom the photograph (" << w.photograph_shown << " -> "
+      << w.photograph_zoomed << " px)";
+
+  // The rock mass sheet: what `rockface rockmass` says of the same visit in
+  // the tablet's own project (a copy: the verb reads it).
+  ASSERT_TRUE(w.rock_mass.is_array()) << name << ": no rock mass section";
+  ASSERT_FALSE(w.rock_mass.empty()) << name;
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() /
+      ("rockface-office-rockmass-" + std::to_string(::getpid()) + "-" + name);
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(visit->file, dir / "tablet.rockface",
+                             std::filesystem::copy_options::overwrite_existing);
+  const test::CliRun cli =
+      test::run_rockface("rockmass " + (dir / "tablet.rockface").string() + " --visit " +
+                         std::to_string(visit->id) + " --out " + (dir / "rockmass.json").string());
+  std::vector<std::string> said;
+  {
+    std::istringstream in(cli.out);
+    for (std::string line; std::getline(in, line);) {
+      line.erase(0, line.find_first_not_of(' '));
+      said.push_back(line);
+    }
+  }
+  if (cli.exit_code == 0) {
+    for (const auto& shown : w.rock_mass) {
+      std::string line = shown;
+      line.erase(0, line.find_first_not_of(' '));
+      EXPECT_TRUE(std::find(said.begin(), said.end(), line) != said.end())
+          << name << ": the rock mass sheet shows \"" << line << "\", which `rockface rockmass` "
+          << "does not say of the visit:\n"
+          << cli.out;
+    }
+    const bool rmr = std::any_of(w.rock_mass.begin(), w.rock_mass.end(), [](const json& l) {
+      return l.get<std::string>().rfind("RMR89", 0) == 0;
+    });
+    EXPECT_TRUE(rmr) << name << ": no RMR89 on the sheet: " << w.rock_mass.dump();
+  } else {
+    // No figures for this visit: the page says why, as the verb does.
+    ASSERT_EQ(w.rock_mass.size(), 1u) << name << ": " << w.rock_mass.dump();
+    const std::string note = w.rock_mass[0];
+    ASSERT_EQ(note.rfind("no rock-mass figures: ", 0), 0u) << name << ": " << note;
+    EXPECT_NE(cli.err.find(note.substr(22)), std::string::npos)
+        << name << ": the page's reason \"" << note << "\" is not the verb's: " << cli.err;
+  }
+  std::error_code ec;
+  if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir, ec);
+
+  // A distance measured by two double-clicks: both points on the synced
+  // face (its frame's origin the face's centre, office_pages.h), the
+  // distance shown that between them.
+  const std::string status = w.measured.value("status", "");
+  double distance = -1;
+  ASSERT_EQ(std::sscanf(status.c_str(), "Distance: %lf m", &distance), 1)
+      << name << ": no distance after two double-clicks on the face: " << status;
+  Eigen::Vector3d from, to;
+  {
+    std::istringstream a(w.measured.value("from", "")), b(w.measured.value("to", ""));
+    a >> from.x() >> from.y() >> from.z();
+    b >> to.x() >> to.y() >> to.z();
+    ASSERT_TRUE(a && b) << name << ": " << w.measured.dump();
+  }
+  const Eigen::Vector3d origin = truth::face_centre(*visit);
+  // The points come from three.js's ray cast on float32 vertices about a
+  // metre from the origin: 1e-7 of a metre; 0.1 mm is far beyond that and
+  // far below the face's relief.
+  EXPECT_LT(truth::distance_to_face(*visit, from + origin), 1e-4) << name << ": first point";
+  EXPECT_LT(truth::distance_to_face(*visit, to + origin), 1e-4) << name << ": second point";
+  // Shown to the millimetre.
+  EXPECT_NEAR(distance, (to - from).norm(), 0.0005 + 1e-9) << name;
+  EXPECT_GT((to - from).norm(), 0.01) << name << ": the two clicks measured one point";
+}
+
 TEST(OfficeWebBrowser, LaptopWalkAndTheFieldReport) {
   if (!WebDriver::available()) GTEST_SKIP() << "chromium and chromium-driver are not installed";
   OfficeServer server;
   const Walk w = walk(server, 1280, 900);
   expect_walk(w, "laptop");
+  expect_pages_against_the_synced_data(w, "laptop");
 
   // The report, made on demand from the browser's session.
   httplib::Client c("127.0.0.1", server.port());
@@ -222,6 +601,7 @@ TEST(OfficeWebBrowser, PhoneWalk) {
   const Walk w = walk(server, 390, 844);
   EXPECT_EQ(w.window_width, 390) << "the page is seen at a phone's width";
   expect_walk(w, "phone");
+  expect_pages_against_the_synced_data(w, "phone");
 }
 
 // The drive's rounds (RMR89 / Q, the support class, over- and underbreak),
@@ -483,6 +863,109 @@ TEST(OfficeWebBrowser, TheDriveIsFilteredByTheHeadingAVisitWasTakenAt) {
   EXPECT_EQ(filter("", all.size()).size(), all.size()) << "every heading again";
   expect_no_raw_data(d.script("return document.body.innerText").get<std::string>(),
                      "drive by heading");
+}
+
+// The drive's sets (issue 46: "the sets along the drive (dip / dip
+// direction against chainage, new and turning sets flagged)"): the page's
+// table and both charts against the sets the server tracks along the drive
+// (`rockface drive postgresql://...`, app::server_drive), which OfficeSync
+// (tests/storage/office/sync_pull_test.cpp) finds equal to the pulled
+// project's drive.
+TEST(OfficeWebBrowser, TheDrivesSetsAreTheSetsTheServerTracksAlongTheDrive) {
+  if (!WebDriver::available()) GTEST_SKIP() << "chromium and chromium-driver are not installed";
+  OfficeServer server;
+  WebDriver d(1280, 900);
+  open_drive(d, server);
+  const tunnel::DriveSets truth =
+      app::server_drive(office_test::as_role(site().database, "office_reader"), "Main drive");
+  ASSERT_FALSE(truth.tracks.empty()) << "the site's drive has no sets to show";
+
+  // The table: one row per track, its name, last point and flags.
+  const json rows = d.script(
+      "const s = [...document.querySelectorAll('section')].find(x => x.querySelector('h2') && "
+      "x.querySelector('h2').textContent === 'Sets along the drive'); if (!s) return null; "
+      "return [...s.querySelectorAll('tbody tr')].map(r => [...r.cells].map(c => "
+      "c.textContent))");
+  ASSERT_TRUE(rows.is_array()) << "no table of the sets along the drive";
+  ASSERT_EQ(rows.size(), truth.tracks.size()) << rows.dump();
+  for (std::size_t i = 0; i < truth.tracks.size(); ++i) {
+    const tunnel::SetTrack& t = truth.tracks[i];
+    const json& row = rows[i];
+    ASSERT_EQ(row.size(), 4u) << row.dump();
+    EXPECT_EQ(row[0], "set " + std::to_string(t.id));
+    const std::string flags = row[2];
+    EXPECT_EQ(flags.find("new") != std::string::npos, t.appears) << row.dump();
+    EXPECT_EQ(flags.find("turns") != std::string::npos, t.turns) << row.dump();
+    EXPECT_EQ(flags.find("vanishes") != std::string::npos, t.vanishes) << row.dump();
+    ASSERT_FALSE(t.points.empty());
+    const tunnel::TrackPoint& last = t.points.back();
+    const std::string seen = row[1];
+    double chainage = 0, dip = 0, dipdir = 0;
+    ASSERT_EQ(std::sscanf(seen.c_str(), "ch %lf m: %lf° / %lf°", &chainage, &dip, &dipdir), 3)
+        << "set " << t.id << "'s last sighting reads \"" << seen << "\"";
+    // Chainage to the decimetre, orientations to the whole degree: half of
+    // each is the rounding.
+    EXPECT_NEAR(chainage, last.chainage, 0.05 + 1e-9) << seen;
+    EXPECT_NEAR(dip, last.dip_deg, 0.5 + 1e-9) << seen;
+    EXPECT_NEAR(dipdir, last.dipdir_deg, 0.5 + 1e-9) << seen;
+    EXPECT_NE(seen.find(" planes)"), std::string::npos) << seen;
+  }
+
+  // The charts (ui/web/drive.js: a 900 x 170 viewBox, the plot from x 48
+  // to 888 over the chainage of the placed visits and the tracks' points,
+  // y from 22 (top of the range) to 142 (its foot)): each track's points
+  // where its dip (0-90°) and dip direction (0-360°) put them, a turned
+  // point drawn larger.
+  double c0 = std::numeric_limits<double>::infinity(), c1 = -c0;
+  for (const auto& file : truth::tablet_files("Main drive")) {
+    storage::sqlite::Connection db(file, storage::sqlite::Connection::Access::read_only);
+    storage::sqlite::Statement p(db, "SELECT chainage FROM visit_placement", "placements");
+    while (p.step()) {
+      c0 = std::min(c0, p.column_double(0));
+      c1 = std::max(c1, p.column_double(0));
+    }
+  }
+  for (const auto& t : truth.tracks)
+    for (const auto& p : t.points) {
+      c0 = std::min(c0, p.chainage);
+      c1 = std::max(c1, p.chainage);
+    }
+  if (c1 - c0 < 1) {
+    c0 -= 0.5;
+    c1 += 0.5;
+  }
+  for (const auto& [label, lo, hi] : {std::tuple{"Dip of each set", 0.0, 90.0},
+                                      std::tuple{"Dip direction of each set", 0.0, 360.0}}) {
+    const json dots = d.script(
+        "const g = document.querySelector(`svg.chart[aria-label=\"${arguments[0]}\"]`); if (!g) "
+        "return null; return [...g.querySelectorAll('circle')].map(c => [+c.getAttribute('cx'), "
+        "+c.getAttribute('cy'), +c.getAttribute('r')])",
+        json::array({label}));
+    ASSERT_TRUE(dots.is_array()) << "no chart \"" << label << "\"";
+    std::size_t points = 0;
+    std::vector<bool> used(dots.size(), false);
+    for (const auto& t : truth.tracks)
+      for (const auto& p : t.points) {
+        ++points;
+        const double value = std::string(label) == "Dip of each set" ? p.dip_deg : p.dipdir_deg;
+        const double x = 48 + (p.chainage - c0) / (c1 - c0) * 840;
+        const double y = 22 + (1 - (value - lo) / (hi - lo)) * 120;
+        bool found = false;
+        for (std::size_t i = 0; i < dots.size() && !found; ++i) {
+          // The page computes the same doubles; 1e-6 of a unit is their
+          // rounding through the attribute's text.
+          if (used[i] || std::abs(dots[i][0].get<double>() - x) > 1e-6 ||
+              std::abs(dots[i][1].get<double>() - y) > 1e-6)
+            continue;
+          used[i] = found = true;
+          EXPECT_EQ(dots[i][2].get<double>(), p.turned ? 6.0 : 4.0)
+              << label << ": set " << t.id << " at ch " << p.chainage << " turned " << p.turned;
+        }
+        EXPECT_TRUE(found) << label << ": set " << t.id << " at ch " << p.chainage << " (" << value
+                           << "°) is not where the chart must put it: " << dots.dump();
+      }
+    EXPECT_EQ(dots.size(), points) << label;
+  }
 }
 
 }  // namespace

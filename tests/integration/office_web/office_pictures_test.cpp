@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -25,6 +26,7 @@
 
 #include "firmware-app/records/visit_field_report.h"
 #include "storage/project/project_store.h"
+#include "tests/integration/office_web/blocks_table_truth.h"
 #include "tests/integration/office_web/office_site.h"
 #include "tests/support/test_paths.h"
 #include "tests/support/web_driver.h"
@@ -59,12 +61,14 @@ TEST(OfficeWebPictures, TheDevelopedViewAndTheWedgesOfARealVisitAreShown) {
   // What the field report of the replayed visit draws (the same code the
   // office runs on its pulled copy): the sizes the browser must show.
   cv::Size developed, wedges;
+  std::int64_t visit_id = 0;
   {
     storage::OpenOptions read;
     read.read_only = true;
     storage::ProjectStore store = storage::ProjectStore::open(drive_project(), read);
     const auto visits = store.list_visits();
     ASSERT_EQ(visits.size(), 1u);
+    visit_id = visits.front().id;
     const storage::FieldReport report = app::collect_visit_report(store, visits.front().id);
     ASSERT_TRUE(report.tunnel && !report.tunnel->developed_view.empty())
         << "the replayed round has no developed view: the sample no longer sees its walls";
@@ -107,6 +111,14 @@ TEST(OfficeWebPictures, TheDevelopedViewAndTheWedgesOfARealVisitAreShown) {
               std::string::npos)
         << which << "'s caption: " << caption;
   }
+  // The blocks table of a real analysis (the replay's: margins, sliding
+  // planes, factors of safety, motion after failure) against the replayed
+  // project's own blocks.
+  d.wait_for("table.blocks tbody tr", std::chrono::seconds(90));
+  const json block_rows = d.script(
+      "return [...document.querySelectorAll('table.blocks tbody tr')].map(r => [...r.cells].map(c "
+      "=> c.textContent))");
+  expect_blocks_table(block_rows, drive_project(), visit_id, "replayed visit");
   // The page's text around them: the round's figures with their units.
   const std::string text = d.script("return document.body.innerText").get<std::string>();
   EXPECT_NE(text.find("The round in the tunnel"), std::string::npos);

@@ -5,9 +5,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -31,6 +36,7 @@ namespace {
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
 namespace office = storage::office;
+namespace fs = std::filesystem;
 
 std::string current_user(office::Connection& c) {
   return c.query("SELECT current_user", {}, "asking who").text(0, 0);
@@ -217,6 +223,79 @@ TEST(OfficePool, ARequestWaitingPastThePoolsWaitIsToldToTryAgain) {
   const auto again = second.Get("/api/tunnels", {{"Cookie", b.cookie}});
   ASSERT_TRUE(again);
   EXPECT_EQ(again->status, 200) << again->body;
+}
+
+// A visit opening gives its connection back once it has read the server
+// (issue 46's load run: fifty people, a visit opening holding the pool's
+// connection through its whole pull, ~10 s, and the others told "busy"
+// after the pool's wait). A server of one connection, a visit opening held
+// by the server's test gate (firmware-app/office/test_gate.h) first while
+// its copy is built, then while its page is put together: each time a
+// second person's requests, which need the pool's one connection, are
+// answered while the opening is still held; then the opening is answered.
+TEST(OfficePool, AVisitOpeningHoldsNoConnectionWhileItsCopyIsBuiltOrItsPageAssembled) {
+  const Site& s = site();
+  const fs::path gate =
+      fs::temp_directory_path() / ("rockface-office-gate-" + std::to_string(::getpid()) + "-" +
+                                   std::to_string(Clock::now().time_since_epoch().count()));
+  fs::create_directories(gate);
+  // The gate is the server's only: this process's other servers have none.
+  ::setenv("ROCKFACE_OFFICE_TEST_GATE", gate.c_str(), 1);
+  std::optional<OfficeServer> server;
+  try {
+    server.emplace(s, 30, std::vector<std::string>{"--pool", "1", "--pool-wait-seconds", "2"});
+  } catch (...) {
+    ::unsetenv("ROCKFACE_OFFICE_TEST_GATE");
+    throw;
+  }
+  ::unsetenv("ROCKFACE_OFFICE_TEST_GATE");
+  httplib::Client opener("127.0.0.1", server->port()), other("127.0.0.1", server->port());
+  opener.set_read_timeout(std::chrono::seconds(180));
+  other.set_read_timeout(std::chrono::seconds(60));
+  const Login a = log_in(opener, server->origin(), "office_reader", kOfficePassword);
+  const Login b = log_in(other, server->origin(), "main_office", kMainOfficePassword);
+  ASSERT_EQ(a.status, 200) << a.error;
+  ASSERT_EQ(b.status, 200) << b.error;
+  const auto drive = other.Get("/api/drive?tunnel=Main%20drive", {{"Cookie", b.cookie}});
+  ASSERT_TRUE(drive && drive->status == 200);
+  const std::string visit = json::parse(drive->body).at("visits").at(0).at("id");
+
+  std::atomic<bool> answered{false};
+  std::optional<httplib::Result> opened;
+  std::thread opening([&] {
+    opened.emplace(opener.Get(("/api/visit?tunnel=Main%20drive&visit=" + visit).c_str(),
+                              {{"Cookie", a.cookie}}));
+    answered = true;
+  });
+  auto reached = [&](const std::string& point) {
+    const auto until = Clock::now() + std::chrono::seconds(120);
+    while (!fs::exists(gate / (point + ".reached")) && !answered && Clock::now() < until)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    return fs::exists(gate / (point + ".reached"));
+  };
+  // What the other person asks while the opening is held: the tunnels (a
+  // query of its own) and the drive (its readable tunnels and stamp).
+  auto others_answered = [&](const std::string& point) {
+    const auto t = other.Get("/api/tunnels", {{"Cookie", b.cookie}});
+    const auto d = other.Get("/api/drive?tunnel=Main%20drive", {{"Cookie", b.cookie}});
+    EXPECT_TRUE(t && t->status == 200) << point << ": " << (t ? t->body : "no answer");
+    EXPECT_TRUE(d && d->status == 200) << point << ": " << (d ? d->body : "no answer");
+    EXPECT_FALSE(answered) << point << ": the opening was not held";
+  };
+  const bool copy_held = reached("copy-build");
+  EXPECT_TRUE(copy_held) << "the visit opening never reached its copy's build";
+  if (copy_held) others_answered("while the visit's copy is built");
+  std::ofstream(gate / "copy-build.go") << "go\n";
+  const bool page_held = reached("visit-assembly");
+  EXPECT_TRUE(page_held) << "the visit opening never reached its page";
+  if (page_held) others_answered("while the visit's page is put together");
+  std::ofstream(gate / "visit-assembly.go") << "go\n";
+  opening.join();
+  ASSERT_TRUE(opened.has_value() && *opened);
+  EXPECT_EQ((*opened)->status, 200) << (*opened)->body;
+  EXPECT_EQ(json::parse((*opened)->body).value("id", ""), visit);
+  server.reset();
+  fs::remove_all(gate);
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 #include <thread>
@@ -20,6 +22,7 @@ namespace rockface::office_web_test {
 namespace {
 
 using nlohmann::json;
+namespace fs = std::filesystem;
 
 void expect_security_headers(const httplib::Result& r, const std::string& what) {
   ASSERT_TRUE(r) << what;
@@ -59,6 +62,20 @@ TEST(OfficeWebSecurity, LogInAsAnOfficeRoleOnlyWithItsPassword) {
   ASSERT_EQ(list.size(), 2u) << "rockface_office reads every tunnel";
   EXPECT_EQ(list[0]["name"], "Main drive");
   EXPECT_EQ(list[0]["visits"], 4) << "tablet A's visit and its mapped face, tablet B's two";
+
+  // No password a person typed is kept or logged by the server: not in its
+  // log (stdout and stderr, what systemd's journal gets) nor in any file
+  // it wrote in its work folder (the site's folder holds both; the web
+  // service's own passfile is the one file meant to hold a password).
+  const Site& s = site();
+  for (const auto& e : fs::recursive_directory_iterator(s.folder)) {
+    if (!e.is_regular_file() || e.path().extension() == ".pgpass") continue;
+    std::ifstream in(e.path(), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const char* typed : {kOfficePassword, kTabletPassword, "not the password"})
+      EXPECT_EQ(bytes.find(typed), std::string::npos)
+          << e.path() << " holds the password \"" << typed << "\"";
+  }
 }
 
 TEST(OfficeWebSecurity, AnOfficeRoleOfOneTunnelSeesOnlyThatTunnel) {

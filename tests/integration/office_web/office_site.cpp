@@ -178,6 +178,8 @@ OfficeServer::OfficeServer(const Site& s, double session_minutes,
   pid_ = ::fork();
   if (pid_ == 0) {
     if (!std::freopen(log.c_str(), "w", stdout)) ::_exit(126);
+    // What the server tells systemd's journal (stderr) in the same log.
+    ::dup2(::fileno(stdout), 2);
     std::vector<std::string> args = {
         binary,  "office", "serve", s.server, "--listen", "127.0.0.1:0", "--session-minutes",
         minutes, "--work", work};

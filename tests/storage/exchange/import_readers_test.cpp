@@ -128,6 +128,115 @@ TEST(LasReader, Formats0And3OfLas12) {
   EXPECT_EQ(rgb.mesh.colours[2][1], 255);
 }
 
+// Point formats 2 (LAS 1.2: RGB, no GPS time) and 8 (LAS 1.4: GPS time, RGB
+// and NIR) laid out byte by byte from the specification's record tables
+// (ASPRS LAS 1.4 R15, tables 9 and 15), every field filled with its own
+// value so that a colour read from the wrong offset reads something else.
+// `record_length` may exceed the format's own (26, 38): the specification
+// lets a writer append extra bytes to every record, which the reader must
+// step over.
+std::string las_rgb_file(const std::vector<LasPoint>& points, int format,
+                         std::size_t record_length) {
+  const bool wide = format == 8;
+  const std::size_t header = wide ? 375 : 227;
+  std::string b(header + points.size() * record_length, '\0');
+  std::memcpy(b.data(), "LASF", 4);
+  b[24] = 1;
+  b[25] = wide ? 4 : 2;
+  put<std::uint16_t>(b, 94, static_cast<std::uint16_t>(header));  // header size
+  put<std::uint32_t>(b, 96, static_cast<std::uint32_t>(header));  // offset to point data
+  b[104] = static_cast<char>(format);                             // point data record format
+  put<std::uint16_t>(b, 105, static_cast<std::uint16_t>(record_length));
+  put<std::uint32_t>(b, 107, wide ? 0u : static_cast<std::uint32_t>(points.size()));
+  const Eigen::Vector3d offset = kUtm.array().floor();
+  Eigen::Vector3d lo = points.front().p, hi = lo;
+  for (const auto& q : points) lo = lo.cwiseMin(q.p), hi = hi.cwiseMax(q.p);
+  for (int k = 0; k < 3; ++k) {
+    put<double>(b, 131 + 8 * k, 1e-4);  // 0.1 mm steps
+    put<double>(b, 155 + 8 * k, offset[k]);
+    put<double>(b, 179 + 16 * k, hi[k]);
+    put<double>(b, 187 + 16 * k, lo[k]);
+  }
+  if (wide) put<std::uint64_t>(b, 247, points.size());  // 1.4's 64-bit point count
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t at = header + i * record_length;
+    for (int k = 0; k < 3; ++k)
+      put<std::int32_t>(
+          b, at + 4 * k,
+          static_cast<std::int32_t>(std::lround((points[i].p[k] - offset[k]) / 1e-4)));
+    put<std::uint16_t>(b, at + 12, 0x7777);  // intensity
+    if (!wide) {
+      b[at + 14] = 0x11;                       // return 1 of 1
+      b[at + 15] = 2;                          // classification: ground
+      b[at + 16] = static_cast<char>(-12);     // scan angle rank, deg
+      b[at + 17] = 0x5A;                       // user data
+      put<std::uint16_t>(b, at + 18, 0xABCD);  // point source ID
+      for (int k = 0; k < 3; ++k) put<std::uint16_t>(b, at + 20 + 2 * k, points[i].rgb[k]);
+    } else {
+      b[at + 14] = 0x11;                                              // return 1 of 1
+      b[at + 15] = 0x40;                                              // scanner channel 1, no flags
+      b[at + 16] = 2;                                                 // classification
+      b[at + 17] = 0x5A;                                              // user data
+      put<std::int16_t>(b, at + 18, -2000);                           // scan angle, 0.006 deg units
+      put<std::uint16_t>(b, at + 20, 0xABCD);                         // point source ID
+      put<double>(b, at + 22, 3.2e8 + 0.5 * static_cast<double>(i));  // GPS time, s
+      for (int k = 0; k < 3; ++k) put<std::uint16_t>(b, at + 30 + 2 * k, points[i].rgb[k]);
+      put<std::uint16_t>(b, at + 36, 0xEEEE);  // NIR
+    }
+    // Extra bytes past the format's own record: a pattern no field holds.
+    for (std::size_t e = wide ? 38 : 26; e < record_length; ++e) b[at + e] = '\x99';
+  }
+  return b;
+}
+
+// The points' coordinates to 0.1 mm and their colours, as written.
+void expect_points_and_colours(const ImportedSurface& s, const std::vector<LasPoint>& pts,
+                               const std::string& what) {
+  ASSERT_EQ(s.mesh.vertices.size(), pts.size()) << what;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    // 1e-6 m: the file holds 0.1 mm steps exactly (scale 1e-4 and these
+    // points on them); the double sum of a datum of 5e6 m and a metre
+    // rounds at 1e-9 m. A record misread by a byte is metres off.
+    EXPECT_LT((s.mesh.vertices[i] + s.datum - pts[i].p).norm(), 1e-6) << what << " point " << i;
+  ASSERT_EQ(s.mesh.colours.size(), pts.size()) << what;
+  // 16-bit colours to 8 bits (the brightest channel is above 255): the
+  // writer's values shifted by 8, nothing of intensity, source ID or NIR.
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k)
+      EXPECT_EQ(s.mesh.colours[i][k], pts[i].rgb[k] >> 8)
+          << what << " point " << i << " channel " << k;
+}
+
+TEST(LasReader, Format2OfLas12ColoursWithoutGpsTime) {
+  const auto pts = utm_points();
+  const ImportedSurface s = parse_las(las_rgb_file(pts, 2, 26), "rgb2.las");
+  EXPECT_EQ(s.format, "LAS 1.2 point format 2");
+  expect_points_and_colours(s, pts, "format 2, 26-byte records");
+  // Four extra bytes a record: the records stride 30 bytes, read the same.
+  expect_points_and_colours(parse_las(las_rgb_file(pts, 2, 30), "rgb2x.las"), pts,
+                            "format 2, 30-byte records");
+  // A record length shorter than the format's 26 bytes is refused by name.
+  const std::string why = refusal([&] { parse_las(las_rgb_file(pts, 2, 25), "short2.las"); });
+  EXPECT_NE(why.find("short2.las"), std::string::npos) << why;
+  EXPECT_NE(why.find("takes 26 bytes"), std::string::npos) << why;
+}
+
+TEST(LasReader, Format8GpsTimeColoursAndNir) {
+  const auto pts = utm_points();
+  const ImportedSurface s = parse_las(las_rgb_file(pts, 8, 38), "rgbn8.las");
+  EXPECT_EQ(s.format, "LAS 1.4 point format 8");
+  expect_points_and_colours(s, pts, "format 8, 38-byte records");
+  expect_points_and_colours(parse_las(las_rgb_file(pts, 8, 44), "rgbn8x.las"), pts,
+                            "format 8, 44-byte records");
+  const std::string why = refusal([&] { parse_las(las_rgb_file(pts, 8, 37), "short8.las"); });
+  EXPECT_NE(why.find("short8.las"), std::string::npos) << why;
+  EXPECT_NE(why.find("takes 38 bytes"), std::string::npos) << why;
+  // Format 8 needs LAS 1.4: the same records under a 1.2 header are refused.
+  std::string old = las_rgb_file(pts, 8, 38);
+  old[25] = 2;
+  EXPECT_NE(refusal([&] { parse_las(old, "old8.las"); }).find("needs LAS 1.4"), std::string::npos);
+}
+
 // Issue 43's peak: a LAS file is read from disk in chunks of 8 MiB of
 // records, never whole. Read so, a file of several chunks (300,000 points of
 // 36 bytes: 10.8 MB, a chunk boundary inside it) gives exactly what the

@@ -5,6 +5,9 @@
 // from the server is the drive of the project holding the same visits; a
 // corrupt or truncated photograph on the server stops a pull by its hash;
 // a client older than the server's schema is refused.
+#include <cmath>
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -12,12 +15,14 @@
 #include "core/analysis/support_classes.h"
 #include "core/analysis/support_decision.h"
 #include "core/common/progress.h"
+#include "firmware-app/import/import_surface.h"
 #include "firmware-app/office/office_workflows.h"
 #include "firmware-app/services/ui_services.h"
 #include "firmware-app/tunnel/project_drive.h"
 #include "storage/office/pg_connection.h"
 #include "storage/office/pull_project.h"
 #include "storage/office/sync_push.h"
+#include "storage/project/model_registration.h"
 #include "storage/project/project_sqlite.h"
 #include "storage/project/project_store.h"
 #include "storage/report/report.h"
@@ -538,6 +543,65 @@ TEST(OfficeSync, TheSupportClassesAndARoundsDecisionsGoUpAndComeBack) {
   ASSERT_EQ(latest->changes.size(), 1u);
   EXPECT_EQ(latest->changes[0].to, "4 m");
   EXPECT_EQ(latest->decided_by, "geologist");
+}
+
+}  // namespace
+}  // namespace rockface::office_test
+
+namespace rockface::office_test {
+namespace {
+
+// Issue 43: a scanner's cloud imported on the tablet as a visit goes up with
+// the tablet's other visits and comes back in the office's pull as the
+// tablet holds it: every row, the model's mesh at full resolution and its
+// import record naming the file (the source line the field report prints).
+TEST(OfficeSync, AnImportedScanGoesUpAndComesBackNamingItsSource) {
+  const std::string db = fresh_database();
+  storage::test::TempDir dir("office-imported-scan");
+  TabletProject a;
+  a.name = "tablet A";
+  a.visits = 1;
+  make_tablet_project(dir / "a.rockface", a);
+  // A gently curved face of 2,500 points, 5 cm apart, at the project's
+  // survey coordinates (the import moves it to the project's datum).
+  const fs::path scan = dir / "scan.xyz";
+  {
+    const Eigen::Vector3d at = storage::test::sample_project().datum + Eigen::Vector3d(3, 8, 1);
+    std::ofstream out(scan);
+    out.precision(12);
+    for (int i = 0; i < 50; ++i)
+      for (int k = 0; k < 50; ++k) {
+        const double x = 0.05 * i, z = 0.05 * k;
+        out << at.x() + x << ' ' << at.y() + 0.02 * std::sin(3 * x) * std::cos(2 * z) << ' '
+            << at.z() + z << '\n';
+      }
+  }
+  app::ImportResult imported;
+  {
+    storage::ProjectStore store = storage::ProjectStore::open(dir / "a.rockface");
+    app::ImportRequest request;
+    request.file = scan;
+    imported = app::import_surface(store, request);
+  }
+  ASSERT_EQ(imported.registration_kind, "scanner");
+  NoProgress none;
+  sync_project(dir / "a.rockface", as_role(db, "tablet_a"), small_chunks(), none);
+  expect_server_holds(as_superuser(db), dir / "a.rockface");
+  storage::office::pull_tunnel(as_role(db, "office_reader"), "Main drive", dir / "p.rockface",
+                               none);
+  // One tablet's project: the pulled one keeps its ids and every row.
+  EXPECT_EQ(
+      first_difference(project_content(dir / "p.rockface"), project_content(dir / "a.rockface")),
+      "");
+  storage::ProjectStore tablet = storage::ProjectStore::open(dir / "a.rockface");
+  storage::ProjectStore pulled = storage::ProjectStore::open(dir / "p.rockface");
+  const storage::Model there = pulled.load_model(imported.model);
+  const storage::Model here = tablet.load_model(imported.model);
+  EXPECT_EQ(there.mesh.vertices, here.mesh.vertices);
+  EXPECT_EQ(there.mesh.faces.size(), imported.triangles);
+  const auto source = storage::read_model_registration(there.registration).imported_from;
+  EXPECT_EQ(source.rfind("scan.xyz: ", 0), 0u) << source;
+  EXPECT_EQ(source, storage::read_model_registration(here.registration).imported_from);
 }
 
 }  // namespace

@@ -284,6 +284,97 @@ TEST(UiScreens, TurningDrawsTheTurningCopyAndTheWholeAgainAfter) {
   EXPECT_EQ(view.drawn_triangles(), whole);
 }
 
+// Issue 45: a still model is not drawn again each frame (the software
+// renderer took both of the tablet's cores sixty times a second while
+// Find traces worked beside it); a move of the view draws it again.
+TEST(UiScreens, AStillModelIsNotDrawnAgainEachFrame) {
+  auto s = open_session(demo_project());
+  s->tap("Model");
+  s->settle();
+  const ModelView& view = s->state().model_view;
+  const long still = view.frames_drawn();
+  ASSERT_GT(still, 0);
+  // The model's panel on the screen (the rest may change: status lines).
+  const auto panel = [&] {
+    const cv::Rect r(
+        cv::Point(static_cast<int>(view.panel_min().x) + 1,
+                  static_cast<int>(view.panel_min().y) + 1),
+        cv::Point(static_cast<int>(view.panel_max().x), static_cast<int>(view.panel_max().y)));
+    return s->screenshot()(r).clone();
+  };
+  const cv::Mat before = panel();
+  ASSERT_GT(model_pixels(s->screenshot(), view), 0);
+  for (int k = 0; k < 10; ++k) s->frame();
+  EXPECT_EQ(view.frames_drawn(), still);
+  cv::Mat diff;
+  cv::absdiff(before, panel(), diff);
+  EXPECT_EQ(cv::countNonZero(diff.reshape(1)), 0) << "the still model's panel changed";
+  const Eigen::Vector2f centre((view.panel_min().x + view.panel_max().x) / 2,
+                               (view.panel_min().y + view.panel_max().y) / 2);
+  TouchInput& finger = s->input();
+  finger.push({TouchEvent::Kind::down, 0, centre.x(), centre.y()});
+  for (int k = 0; k < 3; ++k) s->frame();
+  for (int i = 1; i <= 4; ++i) {
+    finger.push({TouchEvent::Kind::move, 0, centre.x() + 30.0f * i, centre.y()});
+    s->frame();
+  }
+  finger.push({TouchEvent::Kind::up, 0, centre.x() + 120.0f, centre.y()});
+  for (int k = 0; k < 3; ++k) s->frame();
+  EXPECT_GE(view.frames_drawn(), still + 3) << "the turned view was not drawn";
+  cv::absdiff(before, panel(), diff);
+  EXPECT_GT(cv::countNonZero(diff.reshape(1)), 0) << "the turned view shows the old frame";
+}
+
+// Issue 45: a frame that would draw what the screen already shows is not
+// drawn (Mesa rasterised the whole screen sixty times a second); a frame
+// with anything new is, the model turned by a finger (a texture's pixels
+// only) among them, and a screen drawn from its last frame is the screen
+// drawn afresh.
+TEST(UiScreens, AFrameThatShowsNothingNewIsNotDrawn) {
+  auto s = open_session(demo_project());
+  s->tap("Mapping");
+  s->settle();
+  const long drawn = s->frames_drawn();
+  const cv::Mat still = s->screenshot();
+  for (int k = 0; k < 10; ++k) s->frame();
+  EXPECT_EQ(s->frames_drawn(), drawn) << "a frame with nothing new was drawn";
+  s->draw_again();
+  s->frame();
+  EXPECT_EQ(s->frames_drawn(), drawn + 1);
+  cv::Mat diff;
+  cv::absdiff(still, s->screenshot(), diff);
+  EXPECT_EQ(cv::countNonZero(diff.reshape(1)), 0)
+      << "the kept frame is not the screen drawn afresh";
+
+  // The model turned: only the model view's texture changes.
+  const ModelView& view = s->state().model_view;
+  const Eigen::Vector2f centre((view.panel_min().x + view.panel_max().x) / 2,
+                               (view.panel_min().y + view.panel_max().y) / 2);
+  TouchInput& finger = s->input();
+  finger.push({TouchEvent::Kind::down, 0, centre.x(), centre.y()});
+  for (int k = 0; k < 3; ++k) s->frame();
+  const long before_turn = s->frames_drawn();
+  for (int i = 1; i <= 4; ++i) {
+    finger.push({TouchEvent::Kind::move, 0, centre.x() + 30.0f * i, centre.y()});
+    s->frame();
+  }
+  finger.push({TouchEvent::Kind::up, 0, centre.x() + 120.0f, centre.y()});
+  for (int k = 0; k < 3; ++k) s->frame();
+  EXPECT_GE(s->frames_drawn(), before_turn + 3) << "the turning model was not drawn";
+  const cv::Mat turned = s->screenshot();
+  cv::absdiff(still, turned, diff);
+  EXPECT_GT(cv::countNonZero(diff.reshape(1)), 0) << "the screen still shows the model unturned";
+  s->draw_again();
+  s->frame();
+  cv::absdiff(turned, s->screenshot(), diff);
+  EXPECT_EQ(cv::countNonZero(diff.reshape(1)), 0) << "the turned model's screen is stale";
+
+  // A new screen is drawn.
+  const long before_tab = s->frames_drawn();
+  s->tap("Blocks");
+  EXPECT_GT(s->frames_drawn(), before_tab);
+}
+
 TEST(UiScreens, TappedTraceAppearsWhereTappedAndIsStoredThere) {
   const fs::path project = copy_of_demo("mapping");
   auto s = open_session(project);

@@ -13,13 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/units.h"
-#include "firmware-app/services/ui_services.h"
 #include "storage/project/model_registration.h"
 #include "storage/project/project_store.h"
 #include "tests/support/card_folder.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/station_truth.h"
 #include "tests/support/temp_folders.h"
+#include "tests/ui/field_tablet.h"
 #include "ui/app/app_state.h"
 #include "ui/platform/headless_session.h"
 
@@ -46,15 +46,8 @@ TEST(NorthEntry, ACompassLineTappedOnThePhotographTurnsTheVisitToNorth) {
                                                  project.string() + " --preset fast");
   ASSERT_EQ(replay.exit_code, 0) << replay.err;
 
-  app::FieldRunners runners{""};
-  FieldServices services = runners.services();
-  services.sync = nullptr;
-  services.camera = nullptr;
-  UiOptions options;
-  options.project = project;
-  options.max_display_triangles = 20000;
-  HeadlessSession s(options, services, 1280, 800);
-  s.settle();
+  test::FieldTablet tablet(project);
+  HeadlessSession& s = tablet.session;
   AppState& app = s.state();
   ASSERT_TRUE(app.session && app.session->visit());
   s.tap("Model");

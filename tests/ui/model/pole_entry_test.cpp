@@ -19,13 +19,13 @@
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 
-#include "firmware-app/services/ui_services.h"
 #include "storage/project/model_registration.h"
 #include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/rendered_pole_cloud.h"
 #include "tests/support/synthetic_face.h"
 #include "tests/support/temp_folders.h"
+#include "tests/ui/field_tablet.h"
 #include "ui/app/app_state.h"
 #include "ui/platform/headless_session.h"
 
@@ -101,15 +101,8 @@ TEST(PoleEntry, TheTargetsTappedOnAnImportedCloudScaleAndLevelTheVisit) {
       test::run_rockface("import " + project.string() + " " + file.string() + " --frame local");
   ASSERT_EQ(imported.exit_code, 0) << imported.err;
 
-  app::FieldRunners runners{""};
-  FieldServices services = runners.services();
-  services.sync = nullptr;
-  services.camera = nullptr;
-  UiOptions options;
-  options.project = project;
-  options.max_display_triangles = 20000;
-  HeadlessSession s(options, services, 1280, 800);
-  s.settle();
+  test::FieldTablet tablet(project);
+  HeadlessSession& s = tablet.session;
   AppState& app = s.state();
   ASSERT_TRUE(app.session && app.session->visit());
   s.tap("Model");

@@ -14,10 +14,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "firmware-app/services/ui_services.h"
 #include "storage/project/project_store.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/temp_folders.h"
+#include "tests/ui/field_tablet.h"
 #include "ui/app/app_state.h"
 #include "ui/platform/headless_session.h"
 
@@ -75,16 +75,10 @@ TEST(ImportPicker, ACloudOnAStickBecomesAVisitAndACutFileIsRefusedWithNothingSto
     info.name = "site";
     storage::ProjectStore::create(project, info);
   }
-  app::FieldRunners runners{""};
-  FieldServices services = runners.services();
-  services.sync = nullptr;
-  services.camera = nullptr;
-  UiOptions options;
-  options.project = project;
+  UiOptions options = test::field_tablet_options(project);
   options.projects_folder = tablet;
-  options.max_display_triangles = 20000;
-  HeadlessSession s(options, services, 1280, 800);
-  s.settle();
+  test::FieldTablet on_the_tablet(options);
+  HeadlessSession& s = on_the_tablet.session;
   AppState& app = s.state();
   ASSERT_TRUE(app.session);
   const std::size_t visits_before = app.session->visits().size();
