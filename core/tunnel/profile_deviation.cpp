@@ -4,11 +4,13 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 #include "core/common/parallel.h"
 #include "core/common/units.h"
+#include "core/tunnel/break_patches.h"
 #include "core/tunnel/deviation_message.h"
 #include "core/tunnel/lining_interpolation.h"
 #include "core/tunnel/lining_precision.h"
@@ -134,6 +136,12 @@ void check_deviation_input(const SurfaceInput& surface, const DesignProfile& pro
   require_positive(options.max_invert_overbreak_m, "max_invert_overbreak_m");
   if (!std::isfinite(options.max_interpolated_hole_m) || options.max_interpolated_hole_m < 0)
     throw InputError("options.max_interpolated_hole_m", "must be a number >= 0 (0: never)");
+  for (const auto& [v, name] : {std::pair{options.min_break_chainage_m, "min_break_chainage_m"},
+                                std::pair{options.min_break_outline_m, "min_break_outline_m"}})
+    if (!std::isfinite(v) || v < 0)
+      throw InputError(
+          std::string("options.") + name,
+          "must be a number >= 0 (0: every counted cell counts), got " + format_fixed(v, 6));
   if (options.rays_per_cell_side < 1 || options.rays_per_cell_side > 15)
     throw InputError("options.rays_per_cell_side",
                      "must be 1 to 15, got " + std::to_string(options.rays_per_cell_side));
@@ -366,8 +374,10 @@ std::size_t interpolate_holes(DeviationCells& g, const DeviationOptions& options
 // (connected cells of the same sign, 4-neighbours, the outline wrapping): a
 // break's flanks are not lost to the threshold, and noise that never
 // reaches it counts for nothing. Interpolated cells count as measured ones
-// do (they lie between measured cells).
-std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset) {
+// do (they lie between measured cells). Then only patches at least
+// min_break_chainage_m by min_break_outline_m count (break_patches.h).
+std::vector<std::uint8_t> counted_cells(const DeviationCells& g, const DeviationOptions& options,
+                                        double offset) {
   const std::size_t rows = g.rows, cols = g.cols;
   std::vector<std::uint8_t> counted(rows * cols, 0);
   auto dev = [&](std::size_t k) { return g.normal_dev[k] - offset; };
@@ -394,6 +404,19 @@ std::vector<std::uint8_t> counted_cells(const DeviationCells& g, double offset) 
       }
     }
   }
+  // The robust patch rule (break_patches.h): only patches of a break at
+  // least the options' rectangle wide count.
+  std::vector<std::int8_t> sign(rows * cols, 0);
+  std::vector<std::uint8_t> has_value(rows * cols, 0);
+  for (std::size_t k = 0; k < rows * cols; ++k) {
+    has_value[k] = valued(k) ? 1 : 0;
+    if (counted[k]) sign[k] = dev(k) > 0 ? 1 : -1;
+  }
+  const std::vector<std::int8_t> kept =
+      open_break_patches(rows, cols, sign, has_value,
+                         patch_size_for(options.min_break_chainage_m, options.min_break_outline_m,
+                                        g.cell_c, g.cell_s));
+  for (std::size_t k = 0; k < rows * cols; ++k) counted[k] = kept[k] != 0 ? 1 : 0;
   return counted;
 }
 
@@ -583,7 +606,7 @@ ProfileDeviation measure_round(const MeshRaycaster& caster, const SurfaceInput& 
   out.sections.resize(rows);
   const std::size_t interpolated = interpolate_holes(g, options);
   out.max_interpolated_hole_m = options.max_interpolated_hole_m;
-  const std::vector<std::uint8_t> counted = counted_cells(g, offset);
+  const std::vector<std::uint8_t> counted = counted_cells(g, options, offset);
   const CountedArea counted_area = measure_sections(g, alignment, offset, counted, out, position);
   out.rays_cast = g.all_rows * cols * g.n * g.n;
 
