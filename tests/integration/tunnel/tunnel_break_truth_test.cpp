@@ -16,6 +16,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -280,6 +281,21 @@ void print_cells_against_truth(const Heading& h, const tunnel::ProfileDeviation&
       std::cout << "  " << (t == &measured ? "measured" : "interpolated") << " cells " << t->cells
                 << ": error against the scene mean " << 1000 * t->sum / t->cells << " mm, rms "
                 << 1000 * std::sqrt(t->sq / t->cells) << " mm\n";
+  // Where the underbreak beyond the truth lies: per 0.5 m of chainage and
+  // 1 m of outline, the measured and interpolated cells' underbreak less
+  // the scene's (m3), the bins holding 5 litres or more.
+  {
+    const double cell_area = (v.chainage.size() > 1 ? v.chainage[1] - v.chainage[0] : 0.25) *
+                             (cols > 1 ? v.s[1] - v.s[0] : 0.05);
+    std::map<std::pair<int, int>, double> excess;
+    for (const Worst& w : worst)
+      excess[{static_cast<int>(std::floor(w.c / 0.5)), static_cast<int>(std::floor(w.s))}] +=
+          (std::min(0.0, w.truth) - std::min(0.0, w.value)) * cell_area;
+    std::cout << "  underbreak beyond the truth (chainage bin / s bin: m3):";
+    for (const auto& [bin, m3] : excess)
+      if (m3 > 0.005) std::cout << " " << 0.5 * bin.first << "/" << bin.second << ": " << m3 << ";";
+    std::cout << "\n";
+  }
   std::sort(worst.begin(), worst.end(),
             [](const Worst& a, const Worst& b) { return a.error < b.error; });
   std::cout << "  the cells most inside the truth (chainage / s: measured, truth, state):";
@@ -414,6 +430,25 @@ void print_precision_bands(const PrecisionBands& b) {
 // px from the range pole's image, not the pole: its vertices are masked and
 // no bad cell lies within 80 px of it). No threshold drawn from the
 // precision can remove them; the matching there must.
+// Seventh session (2026-11-29, helper tunnel38f): the robust patch rule
+// (break_patches.h: a cell beyond the noise counts only inside a patch of
+// its sign at least 3 sections by 5 rays, 0.74 x 0.25 m) and the round
+// measured 0.4 m short of the face (visit_profile.cpp kFaceClearM, was
+// 0.15) bring the D heading within every figure (overbreak 0.455 for 0.490,
+// -7 %; underbreak 0.088 for 0.094, -6 %; largest underbreak 0.107 m at
+// 57.99 / 14.44): its test is enabled. The sample's overbreak comes within
+// 2 % (0.761 for 0.750) but its underbreak stays 0.307 m3 for 0.128: the
+// cells beyond the truth lie over 1.5 m of chainage and 5 m of outline
+// (chainage 108-109.5, s 2-7: the near right wall and shoulder, 4-5 m from
+// the cameras at the right edge of the photographs, up to the overbreak's
+// lip), a bias of 2-7 cm over metres, wider than any patch rule may drop
+// without dropping real breaks. Tried and measured there without effect
+// (docs/accuracy-cost.md, "Issue 38 (seventh session)"): pixels beside
+// disparity jumps left out (radius 4 px: 0.390 m3; 12 px loses the D
+// heading's reference line), pixels on disparity slopes over 0.9 px/px left
+// out (0.366), four diagonal slanted passes added (0.404), a noise
+// threshold from the cells' own local spread (0.405); without the slanted
+// passes 0.289 (and the D heading's overbreak +69 %).
 // Run with --gtest_also_run_disabled_tests to see the figures.
 class TunnelBreakTruth : public ::testing::Test {
  protected:
@@ -591,7 +626,9 @@ TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchI
   expect_the_truth(*sample_, "sample heading");
 }
 
-TEST_F(TunnelBreakTruth, DISABLED_ASecondHeadingOfAnotherShapeAndTextureMatchesItsScene) {
+// Issue 38's figures on the second heading (enabled in the seventh
+// session: see the comment above the fixture).
+TEST_F(TunnelBreakTruth, ASecondHeadingOfAnotherShapeAndTextureMatchesItsScene) {
   expect_the_truth(*d_heading_, "D heading");
 }
 
