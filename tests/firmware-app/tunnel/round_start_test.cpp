@@ -44,14 +44,14 @@ TEST(RoundStart, EachRoundStartsAtThePreviousFaceOfItsOwnHeading) {
       const char* from_of;  // the visit whose face it is; "" for the 3D image's start
       double sense;         // the heading's drive direction
     };
-    // The round ends 0.15 m short of the face, on the side the heading
+    // The round ends 0.4 m short of the face, on the side the heading
     // comes from (visit_profile.cpp's kFaceClearM).
     for (const Want& w : {Want{"N1", 100, "", 1}, Want{"S1", 128, "", -1}, Want{"N2", 104, "N1", 1},
                           Want{"S2", 124, "S1", -1}, Want{"U1", 100, "", 1}}) {
       const test::HeadingVisit& v = by_label.at(w.label);
       const VisitProfile p = visit_profile(store, v.id, Preset::fast);
       EXPECT_EQ(p.sense, w.sense) << w.label;
-      EXPECT_NEAR(p.round_to, v.face - w.sense * 0.15, kRoundingM) << w.label;
+      EXPECT_NEAR(p.round_to, v.face - w.sense * 0.4, kRoundingM) << w.label;
       EXPECT_NEAR(p.round_from, w.from, kRoundingM) << w.label;
       EXPECT_EQ(p.round_from_source,
                 *w.from_of ? "face of visit " + std::to_string(by_label.at(w.from_of).id)
