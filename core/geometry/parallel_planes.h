@@ -38,7 +38,7 @@ ParallelReduction parallel_reduction(const std::vector<Eigen::Vector3d>& normals
 
 // The cone's margin with the reduction's planes exactly parallel: the
 // largest angle min_k asin(n_k . d) over the other half-spaces k, for unit
-// d in the plane normal to the one axis (on the line normal to two; π/2
+// d in the plane normal to the one axis (on the line normal to two; pi / 2
 // when no other half-space constrains d). Three axes that share no line
 // leave only the origin: then, and with no axes, the ordinary margin
 // (negative for the shut origin). Normals are normalised here.
