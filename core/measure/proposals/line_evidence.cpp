@@ -263,23 +263,26 @@ SurfaceImage draw_surface(const photogrammetry::SurfaceMesh& mesh, cv::Size size
     Eigen::Vector3d n, centre;
     return facing(t, n, centre);
   });
-  cv::Mat normals(size, CV_32FC3), points(size, CV_32FC3);
+  cv::Mat normals(size, CV_32FC3);
+  out.points.create(size, CV_32FC3);
   out.mask = cv::Mat(size, CV_8U);
-  cv::Mat weight(size, CV_32F), blurred_weight(size, CV_32F);
   for_row_stripes(size, [&](cv::Range rows) {
     // A triangle shows in a pixel or a few side by side: its values are
     // worked out once for a run of pixels.
     int last = -1;
     Eigen::Vector3d n, centre;
     cv::Vec3f last_normal, last_point;
-    for (int r = rows.start; r < rows.end; ++r)
+    for (int r = rows.start; r < rows.end; ++r) {
+      const int* index = shown.ptr<int>(r);
+      auto* normal = normals.ptr<cv::Vec3f>(r);
+      auto* point = out.points.ptr<cv::Vec3f>(r);
+      std::uint8_t* in = out.mask.ptr<std::uint8_t>(r);
       for (int c = 0; c < size.width; ++c) {
-        const int i = shown.at<int>(r, c);
+        const int i = index[c];
         if (i < 0) {
-          normals.at<cv::Vec3f>(r, c) = cv::Vec3f(0, 0, 0);
-          points.at<cv::Vec3f>(r, c) = cv::Vec3f(0, 0, 0);
-          out.mask.at<std::uint8_t>(r, c) = 0;
-          weight.at<float>(r, c) = 0;
+          normal[c] = cv::Vec3f(0, 0, 0);
+          point[c] = cv::Vec3f(0, 0, 0);
+          in[c] = 0;
           continue;
         }
         if (i != last) {
@@ -291,34 +294,39 @@ SurfaceImage draw_surface(const photogrammetry::SurfaceMesh& mesh, cv::Size size
                                  static_cast<float>(rel.z()));
           last = i;
         }
-        normals.at<cv::Vec3f>(r, c) = last_normal;
-        points.at<cv::Vec3f>(r, c) = last_point;
-        out.mask.at<std::uint8_t>(r, c) = 255;
-        weight.at<float>(r, c) = 1;  // the mask's 255 scaled by 1 / 255
+        normal[c] = last_normal;
+        point[c] = last_point;
+        in[c] = 255;
       }
+    }
   });
-  // Normalised convolution: smoothing does not pull in the zeros beyond
-  // the surface's edge.
+  // Only the normals are smoothed. Unit normals summed over the Gaussian
+  // are as long as the surface's share of it (less where they spread), so
+  // their length says how much surface is near: beyond the surface's edge
+  // the zeros are not pulled in, they only shorten the sum, which is
+  // normalised away (the normalised convolution without a weight image of
+  // its own). The points were smoothed too once; their one use is the side
+  // of a fold the normal turns to (find_folds), decided 2 x smoothing_px
+  // apart where the surface's own noise is millimetres: the drawn
+  // triangle's centre serves, and the two blurs (weight, points) were 4 of
+  // the 7 channels of the stage's costliest work (issue 45).
   out.normals.create(size, CV_32FC3);
-  out.points.create(size, CV_32FC3);
   for_row_stripes(size, [&](cv::Range rows) {
-    cv::Mat bw = blurred_weight.rowRange(rows), bn = out.normals.rowRange(rows),
-            bp = out.points.rowRange(rows);
-    cv::GaussianBlur(weight.rowRange(rows), bw, cv::Size(0, 0), smoothing_px);
+    cv::Mat bn = out.normals.rowRange(rows);
     cv::GaussianBlur(normals.rowRange(rows), bn, cv::Size(0, 0), smoothing_px);
-    cv::GaussianBlur(points.rowRange(rows), bp, cv::Size(0, 0), smoothing_px);
-    for (int r = rows.start; r < rows.end; ++r)
+    for (int r = rows.start; r < rows.end; ++r) {
+      auto* normal = out.normals.ptr<cv::Vec3f>(r);
       for (int c = 0; c < size.width; ++c) {
-        cv::Vec3f& n = out.normals.at<cv::Vec3f>(r, c);
-        const float w = blurred_weight.at<float>(r, c);
+        cv::Vec3f& n = normal[c];
         const float len = static_cast<float>(cv::norm(n));
-        if (w > 1e-3f && len > 1e-6f) {
+        // 1e-3: the share of surface below which the old weight image
+        // left a pixel without normal.
+        if (len > 1e-3f)
           n /= len;
-          out.points.at<cv::Vec3f>(r, c) /= w;
-        } else {
+        else
           n = cv::Vec3f(0, 0, 0);
-        }
       }
+    }
   });
   return out;
 }
