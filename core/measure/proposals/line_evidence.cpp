@@ -174,21 +174,43 @@ DarkLines find_dark_lines(const cv::Mat& grey, const cv::Mat& mask,
       cv::Sobel(g.rowRange(rows), dxx, CV_32F, 2, 0, 3, 0.25);
       cv::Sobel(g.rowRange(rows), dyy, CV_32F, 0, 2, 3, 0.25);
       cv::Sobel(g.rowRange(rows), dxy, CV_32F, 1, 1, 3, 0.25);
-      cv::Mat half_diff = 0.5 * (dxx - dyy), root;
-      cv::sqrt(half_diff.mul(half_diff) + dxy.mul(dxy), root);
-      // Largest Hessian eigenvalue: positive across a valley of brightness.
-      const cv::Mat response = (0.5 * (dxx + dyy) + root) * (sigma * sigma);
-      cv::Mat across;  // the eigenvector's angle, doubled
-      cv::phase(cv::Mat(dxx - dyy), cv::Mat(2 * dxy), across);
-      for (int r = rows.start; r < rows.end; ++r)
+      // Largest Hessian eigenvalue: positive across a valley of brightness;
+      // its eigenvector's angle, doubled. One pass over the derivatives,
+      // the angle by cv::phase a row at a time (issue 45: whole-stripe
+      // temporaries cost more than the arithmetic).
+      std::vector<float> diff(static_cast<std::size_t>(size.width)),
+          twice(static_cast<std::size_t>(size.width)),
+          response(static_cast<std::size_t>(size.width)),
+          across(static_cast<std::size_t>(size.width));
+      cv::Mat across_row(1, size.width, CV_32F, across.data());
+      const float scale = static_cast<float>(sigma * sigma);
+      for (int r = rows.start; r < rows.end; ++r) {
+        const int k = r - rows.start;
+        const float* xx = dxx.ptr<float>(k);
+        const float* yy = dyy.ptr<float>(k);
+        const float* xy = dxy.ptr<float>(k);
         for (int c = 0; c < size.width; ++c) {
-          const int k = r - rows.start;
-          if (response.at<float>(k, c) > best.at<float>(r, c)) {
-            best.at<float>(r, c) = response.at<float>(k, c);
-            angle.at<float>(r, c) = 0.5f * across.at<float>(k, c);
-            width.at<float>(r, c) = static_cast<float>(w);
+          const auto i = static_cast<std::size_t>(c);
+          const float half_diff = 0.5f * (xx[c] - yy[c]);
+          const float root = std::sqrt(half_diff * half_diff + xy[c] * xy[c]);
+          response[i] = (0.5f * (xx[c] + yy[c]) + root) * scale;
+          diff[i] = xx[c] - yy[c];
+          twice[i] = 2 * xy[c];
+        }
+        cv::phase(cv::Mat(1, size.width, CV_32F, diff.data()),
+                  cv::Mat(1, size.width, CV_32F, twice.data()), across_row);
+        float* b = best.ptr<float>(r);
+        float* a = angle.ptr<float>(r);
+        float* wd = width.ptr<float>(r);
+        for (int c = 0; c < size.width; ++c) {
+          const auto i = static_cast<std::size_t>(c);
+          if (response[i] > b[c]) {
+            b[c] = response[i];
+            a[c] = 0.5f * across[i];
+            wd[c] = static_cast<float>(w);
           }
         }
+      }
     });
   }
   const auto [median, noise] = robust_level(best, mask);
@@ -339,18 +361,33 @@ Folds find_folds(const SurfaceImage& surface, const FoldSettings& settings) {
     cv::Sobel(surface.normals.rowRange(rows), gx, CV_32F, 1, 0, 3, 0.125);
     cv::Sobel(surface.normals.rowRange(rows), gy, CV_32F, 0, 1, 3, 0.125);
     // Structure tensor of the normal field: how fast, and across which
-    // direction, the normal turns.
-    std::vector<cv::Mat> x, y;
-    cv::split(gx, x);
-    cv::split(gy, y);
-    cv::Mat jxx = x[0].mul(x[0]) + x[1].mul(x[1]) + x[2].mul(x[2]);
-    cv::Mat jyy = y[0].mul(y[0]) + y[1].mul(y[1]) + y[2].mul(y[2]);
-    cv::Mat jxy = x[0].mul(y[0]) + x[1].mul(y[1]) + x[2].mul(y[2]);
-    cv::Mat half_diff = 0.5 * (jxx - jyy), root;
-    cv::Mat strength_rows = strength.rowRange(rows), across_rows = across.rowRange(rows);
-    cv::sqrt(half_diff.mul(half_diff) + jxy.mul(jxy), root);
-    cv::sqrt(cv::max(0.5 * (jxx + jyy) + root, 0.0), strength_rows);
-    cv::phase(cv::Mat(jxx - jyy), cv::Mat(2 * jxy), across_rows);
+    // direction, the normal turns. One pass over the gradients (issue 45:
+    // a dozen whole-stripe temporaries, each megabytes to fault in afresh,
+    // were most of the stage's CPU); the doubled angle by cv::phase a row
+    // at a time, as before.
+    std::vector<float> diff(static_cast<std::size_t>(size.width)),
+        twice(static_cast<std::size_t>(size.width));
+    for (int r = rows.start; r < rows.end; ++r) {
+      const int k = r - rows.start;
+      const auto* x = gx.ptr<cv::Vec3f>(k);
+      const auto* y = gy.ptr<cv::Vec3f>(k);
+      float* out_strength = strength.ptr<float>(r);
+      for (int c = 0; c < size.width; ++c) {
+        const cv::Vec3f& a = x[c];
+        const cv::Vec3f& b = y[c];
+        const float jxx = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+        const float jyy = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+        const float jxy = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        const float half_diff = 0.5f * (jxx - jyy);
+        const float root = std::sqrt(half_diff * half_diff + jxy * jxy);
+        out_strength[c] = std::sqrt(std::max(0.5f * (jxx + jyy) + root, 0.0f));
+        diff[static_cast<std::size_t>(c)] = jxx - jyy;
+        twice[static_cast<std::size_t>(c)] = 2 * jxy;
+      }
+      cv::Mat across_row = across.row(r);
+      cv::phase(cv::Mat(1, size.width, CV_32F, diff.data()),
+                cv::Mat(1, size.width, CV_32F, twice.data()), across_row);
+    }
   });
 
   // The two sides are read two smoothing widths out, where the smoothed
