@@ -864,7 +864,13 @@ TEST(OfficeWebBrowser, TheRoundsTwoVisitsSideBySideAndTheReportsPictures) {
       d.script("return document.getElementById('face').dataset.pole || ''").get<std::string>(),
       "yes")
       << "the range pole is not drawn on the 3D face";
-  EXPECT_NE(text().find("the range pole (2.000 m) orange"), std::string::npos);
+  // The face's legend names it with its length, beside its orange swatch.
+  EXPECT_EQ(d.script("const i = [...document.querySelectorAll('#face-legend .legend-item')].find(i "
+                     "=> i.textContent === 'range pole (2.000 m)'); return i ? "
+                     "i.querySelector('rect').getAttribute('fill') : ''")
+                .get<std::string>(),
+            "#ff8c00")
+      << "the legend does not show the range pole";
 
   // The field report's pictures, as PNG: served for a visit whose report
   // has them, refused with the reason for one whose has not (the sample's
