@@ -602,6 +602,11 @@ void expect_pages_against_the_synced_data(const Walk& w, const std::string& name
 
   // The blocks table against the tablet's own blocks of the visit.
   expect_blocks_table(w.block_rows, visit->file, visit->id, name);
+  // The test data (tablet_projects.cpp) gives a failing block its motion
+  // after failure: the column above is checked on a value, not only on "–".
+  EXPECT_TRUE(std::any_of(w.block_rows.begin(), w.block_rows.end(),
+                          [](const json& row) { return row.size() > 8 && row[8] != "–"; }))
+      << name << ": no block of the visit shows a motion after failure";
   expect_face_colours(w, *visit, name);
 
   // The photograph zoomed by a click: at least half as wide again.

@@ -26,7 +26,8 @@ using namespace storage;
 
 namespace {
 
-// The sample analysis (a removable and a keyed block) with a shape for each
+// The sample analysis (a removable block that fails, with its motion
+// after failure, and a keyed block) with a shape for each
 // block on the sample model's face (x 0-1 m, y about 4 m, z 0.1-1.1 m: a
 // tetrahedron standing out of it) and a third, infinite block (its loop on
 // the face), so that the 3D face draws every verdict. Report points are
@@ -42,6 +43,24 @@ AnalysisRun analysis_with_shapes(ProjectStore& store, RecordId visit, RecordId m
   };
   tetrahedron(a.blocks.at(0), 0.15);
   tetrahedron(a.blocks.at(1), 0.6);
+  // B1 fails (FoS below 1) and the analysis followed its motion after
+  // failure: it slides out of the face and lands a metre below.
+  analysis::ReportBlock& b1 = a.blocks.at(0);
+  b1.fos = 0.85;
+  analysis::ReportDynamics motion;
+  motion.trigger = "limit equilibrium: FoS 0.85 < 1";
+  motion.outcome = "lands";
+  motion.duration_s = motion.end_time_s = 0.6;
+  motion.sample_s = 0.3;
+  const Eigen::Vector3d start = datum + Eigen::Vector3d(0.25, 3.95, 0.4);
+  for (int i = 0; i <= 2; ++i) {
+    analysis::ReportMotionSample at;
+    at.time_s = 0.3 * i;
+    at.position = start + Eigen::Vector3d(0, -0.2 * i, -0.5 * i);
+    motion.path.push_back(at);
+  }
+  motion.events = {{0, "slides", "slides on J1", {"J1"}}, {0.6, "lands", "lands", {}}};
+  b1.dynamics = motion;
   analysis::ReportBlock infinite;
   infinite.id = "B3";
   infinite.source = "traces";
