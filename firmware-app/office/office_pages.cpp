@@ -310,19 +310,15 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
   }
   out["poles"] = std::move(poles);
 
-  // Sets by label, for the traces' colours.
-  std::map<std::string, int> set_of_trace;
-  for (const auto& j : report.joints)
-    for (std::size_t s = 0; s < report.sets.size(); ++s)
-      if (j.set_label == report.sets[s].label) set_of_trace[j.label] = static_cast<int>(s);
+  // Each trace with its set (an index into `sets`, the stereonet's and the
+  // legend's colour; -1 none). Traces are stored in the project frame, the
+  // blocks below with the datum added.
   json traces = json::array();
-  for (const auto& [label, pts] : report.traces) {
+  for (std::size_t i = 0; i < report.traces.size(); ++i) {
+    const auto& [label, pts] = report.traces[i];
     json line = json::array();
-    for (const auto& p : pts) line.push_back(point(p - shift));
-    int set = -1;
-    // A joined trace "T1+T4" takes its first piece's set.
-    const std::string first = label.substr(0, label.find('+'));
-    if (auto it = set_of_trace.find(first); it != set_of_trace.end()) set = it->second;
+    for (const auto& p : pts) line.push_back(point(p - origin));
+    const int set = i < report.trace_sets.size() ? report.trace_sets[i] : -1;
     traces.push_back({{"label", label}, {"set", set}, {"points", std::move(line)}});
   }
   out["traces"] = std::move(traces);

@@ -159,6 +159,11 @@ struct FieldReport {
   // The traces, pieces stored from different pairs joined into one (label
   // "T1+T4", points ordered along it): label, points.
   std::vector<std::pair<std::string, std::vector<Eigen::Vector3d>>> traces;
+  // Per trace, the index of its set in `sets` (-1: none): the set of the
+  // joint the geologist assigned it to (its first piece's), else, when the
+  // sets are clustered from the planes measured on the face, the cluster of
+  // its own plane. What the browser's 3D face colours each trace by.
+  std::vector<int> trace_sets;
   // How the stored traces came (issue 25): tapped by hand, proposals
   // accepted as found, proposals corrected by least-cost tracing.
   int traces_by_hand = 0, traces_proposed = 0, traces_corrected = 0;

@@ -169,7 +169,7 @@ OfficeServer::OfficeServer(const Site& s, double session_minutes)
     : OfficeServer(s, session_minutes, {}) {}
 
 OfficeServer::OfficeServer(const Site& s, double session_minutes,
-                           const std::vector<std::string>& more) {
+                           const std::vector<std::string>& more, const std::string& listen) {
   static int count = 0;
   const fs::path log = s.folder / ("office-serve-" + std::to_string(++count) + ".out");
   const std::string binary = std::string(ROCKFACE_BINARY_DIR) + "/rockface";
@@ -181,7 +181,7 @@ OfficeServer::OfficeServer(const Site& s, double session_minutes,
     // What the server tells systemd's journal (stderr) in the same log.
     ::dup2(::fileno(stdout), 2);
     std::vector<std::string> args = {
-        binary,  "office", "serve", s.server, "--listen", "127.0.0.1:0", "--session-minutes",
+        binary,  "office", "serve", s.server, "--listen", listen, "--session-minutes",
         minutes, "--work", work};
     args.insert(args.end(), more.begin(), more.end());
     std::vector<char*> argv;
@@ -190,15 +190,17 @@ OfficeServer::OfficeServer(const Site& s, double session_minutes,
     ::execv(binary.c_str(), argv.data());
     ::_exit(127);
   }
-  // "office: serving http://127.0.0.1:PORT/ ..." once it listens: within a
+  // "office: serving http://ADDR:PORT/ ..." once it listens: within a
   // second (issue 46); 20 s before this says it did not start at all.
   for (int i = 0; i < 200 && port_ == 0; ++i) {
     std::ifstream in(log);
     std::string text;
     std::getline(in, text);
-    const std::size_t at = text.find("127.0.0.1:");
-    if (at != std::string::npos && text.find('/', at) != std::string::npos)
-      port_ = std::stoi(text.substr(at + 10));
+    const std::size_t at = text.find("://");
+    const std::size_t slash = at == std::string::npos ? at : text.find('/', at + 3);
+    const std::size_t colon = slash == std::string::npos ? slash : text.rfind(':', slash);
+    if (colon != std::string::npos && colon > at)
+      port_ = std::stoi(text.substr(colon + 1, slash - colon - 1));
     else
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
