@@ -111,7 +111,7 @@ std::vector<ServerRecord> read_visit_records(Connection& c, std::int64_t tunnel_
   std::vector<ServerRecord> out =
       latest_records(c,
                      "visit_uuid IS NULL OR visit_uuid = ANY($2::uuid[]) OR kind IN ('visit', "
-                     "'visit_placement', 'visit_heading')",
+                     "'visit_placement', 'visit_heading', 'visit_geologist')",
                      {Param::of(tunnel_id), Param::of(text_array(visit_uuids))});
   std::set<std::string> have;
   for (const ServerRecord& r : out) have.insert(r.uuid);

@@ -48,6 +48,8 @@ export async function showVisit(host, tunnel, visitId) {
   const parts = [
     el('h1', { text: `Visit of ${v.started_at}` }),
     el('p', { className: 'muted', text: `${v.project}; ${v.source}; camera ${v.camera || '–'}; preset ${v.preset || '–'}` }),
+    // Who mapped the visit (issue 46): text, whatever the name holds.
+    el('p', { id: 'visit-geologist', text: `Geologist: ${v.geologist || 'not recorded'}` }),
     el('p', { className: 'actions' }, report),
     section('3D face', faceHost, faceStatus, v.has_face ? fullButton : null,
       el('p', { className: 'muted', text: `Traces coloured by set; blocks red removable, green keyed, grey infinite${v.pole ? `; the range pole (${v.pole.length}) orange` : ''}.` })),
