@@ -206,6 +206,7 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
       found = true;
       r.visit_started_at = v.started_at;
       r.visit_source = v.source;
+      r.visit_geologist = v.geologist;
     }
   if (!found)
     throw InputError("--visit",

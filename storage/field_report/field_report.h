@@ -143,6 +143,9 @@ struct FieldReport {
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();
   RecordId visit_id = 0;
   std::string visit_started_at, visit_source;
+  // Who mapped the visit (storage/project/visit_geologist.h); none: not
+  // recorded.
+  std::optional<std::string> visit_geologist;
 
   // Camera and preset.
   std::string camera_body, lens, calibration_method;

@@ -8,6 +8,7 @@
 
 #include "ui/app/export_to_stick.h"
 #include "ui/app/screens.h"
+#include "ui/project/geologist_entry.h"
 #include "ui/project/import_picker.h"
 #include "ui/project/office_panel.h"
 #include "ui/project/tunnel_panel.h"
@@ -63,7 +64,7 @@ void draw_chooser(AppState& app) {
         app.options.projects_folder / (app.project.new_project_name + ".rockface");
     try {
       app.session = ProjectSession::create(file, app.project.new_project_name);
-      app.session->begin_visit();
+      app.session->begin_visit(app.settings.geologist);
       app.say("Created " + file.filename().string() + " with its first visit");
     } catch (const std::exception& e) {
       app.fail(e.what());
@@ -121,8 +122,8 @@ bool draw_project(AppState& app, ProjectSession& s) {
     app.screen = Screen::model;
   }
   if (app.targets.button_in_row("New visit", idle && !s.read_only())) {
-    s.begin_visit();
-    app.status_visit = s.visit();  // this message is about the new visit
+    s.begin_visit(app.settings.geologist);  // the tablet's geologist carried
+    app.status_visit = s.visit();           // this message is about the new visit
     app.say("Visit " + std::to_string(*s.visit()) + " started: take its stereo pair (Capture).");
   }
   // Closing loses an unsaved trace's taps and unstored shots: asked then.
@@ -162,6 +163,7 @@ bool draw_project(AppState& app, ProjectSession& s) {
   if (s.visit()) {
     ImGui::Separator();
     draw_visit(s);
+    draw_geologist_entry(app);
     // Issue 43: the visit's exports for the office, onto a USB stick.
     draw_export_to_stick(app);
   }

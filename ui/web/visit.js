@@ -63,6 +63,8 @@ export async function showVisit(host, tunnel, visitId) {
   const parts = [
     el('h1', { text: `Visit of ${v.started_at}` }),
     el('p', { className: 'muted', text: `${v.project}; ${v.source}; camera ${v.camera || '–'}; preset ${v.preset || '–'}` }),
+    // Who mapped the visit (issue 46): text, whatever the name holds.
+    el('p', { id: 'visit-geologist', text: `Geologist: ${v.geologist || 'not recorded'}` }),
     el('p', { className: 'actions' }, report),
     section('3D face', faceHost, faceStatus, v.has_face ? fullButton : null, faceLegend(v)),
     section('Photographs', photos),

@@ -146,6 +146,17 @@ std::optional<LocalVisit> visit_of(const std::string& uuid) {
   return std::nullopt;
 }
 
+// The geologist the tablet's project names for a visit; none when it
+// names none.
+std::optional<std::string> geologist(const LocalVisit& v) {
+  storage::sqlite::Connection db(v.file, storage::sqlite::Connection::Access::read_only);
+  storage::sqlite::Statement st(db, "SELECT geologist FROM visit_geologist WHERE visit_id = ?",
+                                "reading the visit's geologist");
+  st.bind(1, v.id);
+  if (!st.step()) return std::nullopt;
+  return st.column_text(0);
+}
+
 // Every row of `sql` (one column of doubles per row) on a visit's file,
 // the visit's id bound to each "?".
 std::vector<std::vector<double>> rows(const LocalVisit& v, const std::string& sql, int columns) {
@@ -247,8 +258,13 @@ struct Walk {
   int photograph_width = 0;  // the first photograph as the page shows it
   // The first photograph's width on the page before and after a click.
   double photograph_shown = 0, photograph_zoomed = 0;
-  json tunnels;     // the Tunnels page's rows
-  json visit_rows;  // the drive's visits: id, blocks that move, largest
+  json tunnels;      // the Tunnels page's rows
+  json visit_rows;   // the drive's visits: id, blocks that move, largest, geologist
+  json strip_marks;  // the visit strip's marks: visit id, its title's text
+  // The visit page's geologist line: its text, and whether it holds only
+  // text (no element made of the name's markup).
+  std::string visit_geologist;
+  bool visit_geologist_is_text = false;
   json stereonet;   // the poles and set means drawn, SVG units
   json rock_mass;   // the Rock mass section's lines (or its note)
   json measured;    // two double-clicks on the 3D face: status, points
@@ -268,7 +284,12 @@ Walk walk(const OfficeServer& server, int width, int height) {
   w.visit_rows = d.script(
       "return [...document.querySelectorAll('table.visits tbody tr')].map(r => ({id: "
       "r.querySelector('a.visit-link').getAttribute('href').split('/').pop(), moving: "
-      "r.cells[6].textContent, largest: r.cells[7].textContent}))");
+      "r.cells[6].textContent, largest: r.cells[7].textContent, geologist: r.cells[[...document."
+      "querySelectorAll('table.visits thead th')].findIndex(h => h.textContent === "
+      "'Geologist')]?.textContent}))");
+  w.strip_marks = d.script(
+      "return [...document.querySelectorAll('svg.strip a')].map(a => ({id: "
+      "a.getAttribute('href').split('/').pop(), title: a.querySelector('title').textContent}))");
   if (const char* keep = std::getenv("ROCKFACE_OFFICE_WEB_SHOTS"))
     cv::imwrite(std::string(keep) + "/drive-" + std::to_string(width) + ".png", d.screenshot());
   w.drive_text = d.script("return document.body.innerText").get<std::string>();
@@ -285,6 +306,13 @@ Walk walk(const OfficeServer& server, int width, int height) {
   d.wait_for("#face[data-drawn=yes]", std::chrono::seconds(60));
   w.visit_uuid = d.script("return location.hash.split('/').pop()").get<std::string>();
   w.visit_text = d.script("return document.body.innerText").get<std::string>();
+  {
+    const json g = d.script(
+        "const p = document.getElementById('visit-geologist'); return p ? [p.textContent, "
+        "p.children.length === 0] : ['', false]");
+    w.visit_geologist = g[0];
+    w.visit_geologist_is_text = g[1];
+  }
   w.block_rows = d.script(
       "return [...document.querySelectorAll('table.blocks tbody tr')].map(r => [...r.cells].map(c "
       "=> c.textContent))");
@@ -571,6 +599,41 @@ void expect_pages_against_the_synced_data(const Walk& w, const std::string& name
     EXPECT_NEAR(value, largest, 0.5 * unit + 1e-12) << name << ": the largest removable block";
   }
   EXPECT_GT(with_blocks, 0) << name << ": no visit of the drive has a removable block";
+
+  // Issue 46: each visit's geologist, as the tablet's own project names it
+  // ("not recorded" where it names none), in the visits' table and in the
+  // title of its mark on the strip, as text (the site names one
+  // "O'Brien <b>"); and on the visit's page.
+  std::set<std::string> names_shown;
+  std::size_t marks_checked = 0;
+  for (const auto& row : w.visit_rows) {
+    const auto v = truth::visit_of(row["id"]);
+    ASSERT_TRUE(v) << name;
+    const std::string expected = truth::geologist(*v).value_or("not recorded");
+    const json shown = row.contains("geologist") ? row["geologist"] : json();
+    ASSERT_TRUE(shown.is_string()) << name << ": no Geologist column: " << row.dump();
+    EXPECT_EQ(shown, expected) << name << ": visit " << row["id"];
+    names_shown.insert(expected);
+    for (const auto& mark : w.strip_marks) {
+      if (mark["id"] != row["id"]) continue;
+      ++marks_checked;
+      EXPECT_NE(mark["title"].get<std::string>().find(", geologist " + expected + ","),
+                std::string::npos)
+          << name << ": the strip's mark of visit " << row["id"] << ": " << mark["title"];
+    }
+  }
+  EXPECT_EQ(names_shown, (std::set<std::string>{"O'Brien <b>", "Anna Berger", "not recorded"}))
+      << name << ": the site names two geologists and leaves a visit without";
+  // Every placed visit has its mark on the strip: the site's visits but
+  // tablet A's mapped face, which is not placed (office_site.cpp).
+  EXPECT_GE(marks_checked, 3u) << name << ": " << w.strip_marks.dump();
+  {
+    const auto walked = truth::visit_of(w.visit_uuid);
+    ASSERT_TRUE(walked) << name;
+    EXPECT_EQ(w.visit_geologist, "Geologist: " + truth::geologist(*walked).value_or("not recorded"))
+        << name;
+    EXPECT_TRUE(w.visit_geologist_is_text) << name << ": the name's markup became an element";
+  }
 
   const auto visit = truth::visit_of(w.visit_uuid);
   ASSERT_TRUE(visit) << name;

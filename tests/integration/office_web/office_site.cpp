@@ -8,8 +8,10 @@
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <system_error>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -117,6 +119,20 @@ Site make_site() {
                                                   " --visit 1 --heading 'South portal'");
     if (named.exit_code != 0)
       throw std::runtime_error("naming tablet B's heading: " + named.out + named.err);
+  }
+  // The geologist who mapped each visit (issue 46), named with the command
+  // line: tablet A's visits by a name the pages must show as text, tablet
+  // B's first by another; B's second names none ("not recorded").
+  const std::vector<std::tuple<std::string, int, std::string>> geologists = {
+      {"a.rockface", 1, "\"O'Brien <b>\""},  // shell-quoted
+      {"a.rockface", 2, "\"O'Brien <b>\""},
+      {"b.rockface", 1, "'Anna Berger'"}};
+  for (const auto& [file, visit, name] : geologists) {
+    const test::CliRun named =
+        test::run_rockface("place " + (s.folder / file).string() + " --visit " +
+                           std::to_string(visit) + " --geologist " + name);
+    if (named.exit_code != 0)
+      throw std::runtime_error("naming a visit's geologist: " + named.out + named.err);
   }
   {
     storage::sqlite::Connection db(s.folder / "a.rockface",

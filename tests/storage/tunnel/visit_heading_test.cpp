@@ -89,7 +89,7 @@ TEST(VisitHeading, ASchema11ProjectIsUpgradedWithItsVisitsUnnamed) {
     EXPECT_EQ(schema::version_of(db), 11);
   }
   auto store = ProjectStore::open(file);
-  EXPECT_EQ(store.schema_version(), 12);
+  EXPECT_EQ(store.schema_version(), schema::kCurrentVersion);
   EXPECT_EQ(load_visit_heading(store, 1), "");
   save_visit_heading(store, 1, "Top heading");
   EXPECT_EQ(load_visit_heading(store, 1), "Top heading");
