@@ -13,8 +13,8 @@ namespace rockface::geometry {
 
 namespace {
 
-double min_dot(const std::vector<Eigen::Vector3d>& normals, const std::vector<bool>& skip,
-               const Eigen::Vector3d& d) {
+double min_dot_unskipped(const std::vector<Eigen::Vector3d>& normals, const std::vector<bool>& skip,
+                         const Eigen::Vector3d& d) {
   double m = std::numeric_limits<double>::infinity();
   for (size_t k = 0; k < normals.size(); ++k)
     if (!skip[k]) m = std::min(m, normals[k].dot(d));
@@ -90,7 +90,8 @@ ConeMargin margin_with_parallel_planes(const std::vector<Eigen::Vector3d>& raw_n
     // shut, and the ordinary margin says by how much.
     if (line.isZero()) return Cone(normals).margin();
     if (none_other) return from_sine(1, line);
-    const double up = min_dot(normals, skip, line), down = min_dot(normals, skip, -line);
+    const double up = min_dot_unskipped(normals, skip, line),
+                 down = min_dot_unskipped(normals, skip, -line);
     return up >= down ? from_sine(up, line) : from_sine(down, -line);
   }
 
@@ -109,7 +110,7 @@ ConeMargin margin_with_parallel_planes(const std::vector<Eigen::Vector3d>& raw_n
     const double len = raw.norm();
     if (!(len > kParallelCross)) return;
     const Eigen::Vector3d d = raw / len;
-    const double m = min_dot(normals, skip, d);
+    const double m = min_dot_unskipped(normals, skip, d);
     if (m > best) {
       best = m;
       best_d = d;
@@ -125,7 +126,7 @@ ConeMargin margin_with_parallel_planes(const std::vector<Eigen::Vector3d>& raw_n
       consider(-across);
     }
   }
-  if (!std::isfinite(best)) best = min_dot(normals, skip, best_d);
+  if (!std::isfinite(best)) best = min_dot_unskipped(normals, skip, best_d);
   return from_sine(best, best_d);
 }
 
