@@ -163,7 +163,6 @@ bool draw_project(AppState& app, ProjectSession& s) {
   if (s.visit()) {
     ImGui::Separator();
     draw_visit(s);
-    draw_geologist_entry(app);
     // Issue 43: the visit's exports for the office, onto a USB stick.
     draw_export_to_stick(app);
   }
@@ -188,6 +187,10 @@ void draw_project_screen(AppState& app) {
   ImGui::EndChild();
   if (closed) return;
   begin_side_panel("project tunnel and office", layout);
+  // The visit's geologist beside the visits, not under them: under them it
+  // left the visit's own line where no drag on the visits' panel brought it
+  // into view (tests/ui/app/text_walk_test.cpp walks every text into view).
+  if (s.visit()) draw_geologist_entry(app);
   draw_tunnel_panel(app);
   draw_office_panel(app);
   draw_import_picker(app);
