@@ -13,6 +13,7 @@
 #include "storage/project/project_store.h"
 #include "storage/project/visit_geologist.h"
 #include "storage/scene/visit_file_json.h"
+#include "tests/support/refusal.h"
 #include "tests/support/sample_records.h"
 
 namespace rockface::storage {
@@ -20,16 +21,7 @@ namespace {
 
 using test::TempDir;
 
-// The InputError's text of `f`, "" when it throws none.
-template <typename F>
-std::string refusal(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using rockface::test::refusal;
 
 TEST(VisitGeologist, BegunWithTheVisitRenamedAndTakenAway) {
   TempDir dir("geologist");

@@ -12,6 +12,7 @@
 #include "storage/project/project_store.h"
 #include "storage/scene/visit_file_json.h"
 #include "storage/tunnel/visit_heading.h"
+#include "tests/support/refusal.h"
 #include "tests/support/sample_records.h"
 
 namespace rockface::storage {
@@ -19,16 +20,7 @@ namespace {
 
 using test::TempDir;
 
-// The InputError's text of `f`, "" when it throws none.
-template <typename F>
-std::string refusal(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using rockface::test::refusal;
 
 TEST(VisitHeading, IsNamedRenamedAndTakenAway) {
   TempDir dir("heading");
