@@ -243,6 +243,28 @@ TEST(OfficeWebSecurity, GuessesAtARoleDoNotKeepItsOwnBrowserOut) {
             429);
 }
 
+// A self-signed certificate for `address` (an IP), made with openssl
+// (Debian: openssl); false when none was made.
+bool make_certificate(const std::filesystem::path& cert, const std::filesystem::path& key,
+                      const std::string& address) {
+  const std::string make =
+      "openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 1 "
+      "-subj /CN=" +
+      address + " -addext subjectAltName=IP:" + address + " -keyout '" + key.string() + "' -out '" +
+      cert.string() + "' 2>/dev/null";
+  return std::system(make.c_str()) == 0;
+}
+
+// The office reader's log-in over HTTPS, the server verified by `cert`.
+httplib::Result tls_log_in(httplib::SSLClient& c, const std::filesystem::path& cert,
+                           const std::string& origin) {
+  c.set_ca_cert_path(cert.c_str());
+  c.enable_server_certificate_verification(true);
+  return c.Post("/api/login", {{"Origin", origin}},
+                json{{"role", "office_reader"}, {"password", kOfficePassword}}.dump(),
+                "application/json");
+}
+
 // `office serve --tls`: a self-signed certificate for 127.0.0.1 made here
 // with openssl, a client that verifies it, the session's cookie Secure and
 // __Host- prefixed, HSTS on every answer, and no plain HTTP on that port.
@@ -251,20 +273,13 @@ TEST(OfficeWebSecurity, OverTlsTheCookieIsSecureAndHostOnly) {
   const fs::path dir = site().folder / "tls";
   fs::create_directories(dir);
   const fs::path cert = dir / "cert.pem", key = dir / "key.pem";
-  const std::string make =
-      "openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 1 "
-      "-subj /CN=127.0.0.1 -addext subjectAltName=IP:127.0.0.1 -keyout '" +
-      key.string() + "' -out '" + cert.string() + "' 2>/dev/null";
-  ASSERT_EQ(std::system(make.c_str()), 0) << "openssl (Debian: openssl) made no certificate";
+  ASSERT_TRUE(make_certificate(cert, key, "127.0.0.1"))
+      << "openssl (Debian: openssl) made no certificate";
   OfficeServer server(site(), 30, {"--tls", cert.string() + "," + key.string()});
   const std::string origin = "https://127.0.0.1:" + std::to_string(server.port());
 
   httplib::SSLClient c("127.0.0.1", server.port());
-  c.set_ca_cert_path(cert.c_str());
-  c.enable_server_certificate_verification(true);
-  const auto r = c.Post("/api/login", {{"Origin", origin}},
-                        json{{"role", "office_reader"}, {"password", kOfficePassword}}.dump(),
-                        "application/json");
+  const auto r = tls_log_in(c, cert, origin);
   ASSERT_TRUE(r) << "the HTTPS request failed: " << httplib::to_string(r.error());
   ASSERT_EQ(r->status, 200) << r->body;
   const std::string set = r->get_header_value("Set-Cookie");
@@ -365,20 +380,11 @@ TEST(OfficeWebSecurity, PlainHttpIsServedOnALoopbackAddressOnly) {
   const std::string address = machine_address();
   if (address.empty()) GTEST_SKIP() << "this machine has no address but loopback";
   const fs::path cert = dir / "cert.pem", key = dir / "key.pem";
-  const std::string make =
-      "openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 1 "
-      "-subj /CN=" +
-      address + " -addext subjectAltName=IP:" + address + " -keyout '" + key.string() + "' -out '" +
-      cert.string() + "' 2>/dev/null";
-  ASSERT_EQ(std::system(make.c_str()), 0) << "openssl (Debian: openssl) made no certificate";
+  ASSERT_TRUE(make_certificate(cert, key, address))
+      << "openssl (Debian: openssl) made no certificate";
   OfficeServer server(site(), 30, {"--tls", cert.string() + "," + key.string()}, address + ":0");
   httplib::SSLClient c(address, server.port());
-  c.set_ca_cert_path(cert.c_str());
-  c.enable_server_certificate_verification(true);
-  const std::string origin = "https://" + address + ":" + std::to_string(server.port());
-  const auto r = c.Post("/api/login", {{"Origin", origin}},
-                        json{{"role", "office_reader"}, {"password", kOfficePassword}}.dump(),
-                        "application/json");
+  const auto r = tls_log_in(c, cert, "https://" + address + ":" + std::to_string(server.port()));
   ASSERT_TRUE(r) << "the HTTPS request failed: " << httplib::to_string(r.error());
   ASSERT_EQ(r->status, 200) << r->body;
   const std::string set = r->get_header_value("Set-Cookie");
