@@ -31,6 +31,7 @@
 
 #include "storage/project/project_store.h"
 #include "storage/scene/export_scene_json.h"
+#include "tests/integration/import/imported_view.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/json_file.h"
 
@@ -218,17 +219,10 @@ class ImportAnalyse : public ::testing::Test {
         {"format", "rockface-picks/1"}, {"traces", json::array()}, {"areas", json::array()}};
     {
       auto store = rockface::storage::ProjectStore::open(project);
-      const Eigen::Vector3d datum = store.project().datum;
-      const auto model = store.load_model(store.list_models().back().id);
-      ASSERT_TRUE(model.camera_to_mesh);
-      const auto capture = store.load_capture(*model.texture_capture_id);
-      const auto K = store.load_calibration(*capture.calibration_id).intrinsics;
-      const Eigen::Matrix3d R = model.camera_to_mesh->R.transpose();  // world to camera
-      const Eigen::Vector3d centre = model.camera_to_mesh->t;
-      const auto pixel = [&](const Eigen::Vector3d& p) {
-        const Eigen::Vector3d c = R * (p - datum - centre);
-        return std::array<double, 2>{K.fx * c.x() / c.z() + K.cx, K.fy * c.y() / c.z() + K.cy};
-      };
+      const auto view = rockface::test::newest_imported_view(store);
+      ASSERT_TRUE(view);
+      const auto& K = view->K;
+      const auto pixel = [&](const Eigen::Vector3d& p) { return view->pixel(p); };
       int t = 0;
       for (const auto& j : kJoints) {
         int pieces = 0;

@@ -33,6 +33,7 @@
 
 #include "storage/project/project_store.h"
 #include "storage/scene/export_scene_json.h"
+#include "tests/integration/import/imported_view.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/json_file.h"
 #include "tests/support/truth_picks.h"
@@ -144,18 +145,11 @@ class ImportRenderedRoundTrip : public ::testing::Test {
       // Both projects' frames: the original's datum and the imported one's
       // (the export writes survey coordinates).
       const Eigen::Vector3d from_datum = original.project().datum;
-      const Eigen::Vector3d to_datum = store.project().datum;
-      const auto model = store.load_model(store.list_models().back().id);
-      EXPECT_TRUE(model.camera_to_mesh) << out.file;
-      if (!model.camera_to_mesh) return out;
-      const auto capture = store.load_capture(*model.texture_capture_id);
-      const auto K = store.load_calibration(*capture.calibration_id).intrinsics;
-      const Eigen::Matrix3d R = model.camera_to_mesh->R.transpose();  // mesh to camera
-      const Eigen::Vector3d centre = model.camera_to_mesh->t;
-      const auto pixel = [&](const Eigen::Vector3d& p) {
-        const Eigen::Vector3d c = R * (p + from_datum - to_datum - centre);
-        return std::array<double, 2>{K.fx * c.x() / c.z() + K.cx, K.fy * c.y() / c.z() + K.cy};
-      };
+      const auto view = rockface::test::newest_imported_view(store);
+      EXPECT_TRUE(view) << out.file;
+      if (!view) return out;
+      const auto& K = view->K;
+      const auto pixel = [&](const Eigen::Vector3d& p) { return view->pixel(p + from_datum); };
       const auto in_view = [&](const std::array<double, 2>& uv) {
         return uv[0] > 1 && uv[1] > 1 && uv[0] < K.width - 2 && uv[1] < K.height - 2;
       };
@@ -172,7 +166,7 @@ class ImportRenderedRoundTrip : public ::testing::Test {
           a.visit_id = visit;
           a.model_id.reset();
           a.photo_capture_id.reset();
-          for (auto& p : a.points) p += from_datum - to_datum;
+          for (auto& p : a.points) p += from_datum - view->datum;
           given.push_back(std::move(a));
           continue;
         }
