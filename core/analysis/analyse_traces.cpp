@@ -3,6 +3,7 @@
 // become blocks, and each block gets the same analysis as an explicit one.
 // Reported in blocks[] with source "traces" and the loop's trace ids; what
 // was left out of the map (and why) goes to the report's notes.
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -23,6 +24,8 @@
 #include "core/faces/trace_blocks.h"
 #include "core/faces/trace_network.h"
 #include "core/geometry/orientation.h"
+#include "core/geometry/parallel_planes.h"
+#include "core/geometry/tolerances.h"
 
 namespace rockface::analysis {
 
@@ -65,6 +68,30 @@ void rename_joint_planes(const faces::TraceBlock& b, const faces::TraceNetwork& 
   if (rb.dynamics) rename_dynamics_planes(*rb.dynamics, name);
 }
 
+// Why a block between two joints of one set is removable and marginal:
+// it comes out by sliding between them (core/analysis/README.md, "Joints
+// taken as parallel"), the joints named as the geologist knows them.
+std::string slides_between_note(const faces::TraceBlock& b, const faces::TraceNetwork& net) {
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<std::string> names;
+  for (const auto& bp : b.polyhedron->planes()) {
+    if (bp.kind != blocks::PlaneKind::Joint) continue;
+    normals.push_back(bp.inward_normal());
+    std::string name = bp.name;
+    for (const auto& p : b.planes)
+      if (p.kind == blocks::PlaneKind::Joint && p.name == bp.name && net.groups()[p.group].joint)
+        name += " (joint " + net.groups()[p.group].joint->id + ")";
+    names.push_back(name);
+  }
+  const double tolerance = std::max(b.uncertainty, geometry::kParallelRoundingRad);
+  std::vector<std::string> pairs;
+  for (const auto& [i, j] : geometry::opposite_pairs(normals, tolerance))
+    pairs.push_back(names[i] + " and " + names[j]);
+  return "removable only by sliding between " + join(pairs, ", ") +
+         ", parallel within the orientation uncertainty (taken as parallel): marginal, as "
+         "whether they open or close toward the free face is not measured";
+}
+
 ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInput& scene,
                          const faces::TraceNetwork& net, const Eigen::Vector3d& datum,
                          const std::string& id, const kinematics::Effects& effects) {
@@ -93,6 +120,7 @@ ReportBlock report_block(const faces::TraceBlock& b, const AnalysisInput& scene,
   rb.margin_deg = rad_to_deg(b.finite ? f.removable.margin : f.finite.margin);
   rb.marginal = f.removable.marginal || f.finite.marginal;
   if (b.polyhedron && b.analysis) {
+    if (f.jp_between_parallel && f.removable.value) rb.notes.push_back(slides_between_note(b, net));
     fill_block_report(*b.polyhedron, *b.analysis, scene.analysis, rb);
     if (scene_wants_mechanics(scene) && b.finite)
       analyse_block_mechanics(*b.polyhedron, scene, b.strengths, effects, rb);

@@ -44,4 +44,14 @@ inline constexpr double kConvexCornerSine = 1e-9;
 // decided by the map, and it adds no piece to the block.
 inline constexpr double kThinCellInTolerances = 0.5;
 
+// Two joints of a loop within the orientation uncertainty of parallel, its
+// block between them, that would meet only further than this many times
+// the loop's size from it are parallel for the block's verdicts: nothing
+// measured tells them from parallel, and a trace block assumes its joints
+// persist across the block, not to where two of one set would meet (issue
+// 43: 0.0002 degrees and 0.6 m apart, they met 1,000 km out). Two that meet
+// closer bound a wedge that closes where they meet (a sliver between
+// traces that cross at a corner of the loop): it is built as it is.
+inline constexpr double kParallelMeetInLoopSizes = 10;
+
 }  // namespace rockface::faces

@@ -8,11 +8,14 @@
 
 #include "core/blocks/construction.h"
 #include "core/blocks/mass_properties.h"
+#include "core/blocks/slab_pairs.h"
 #include "core/common/error.h"
 #include "core/common/number_format.h"
 #include "core/common/units.h"
 #include "core/faces/tolerances.h"
 #include "core/faces/trace_block_phases.h"
+#include "core/geometry/parallel_planes.h"
+#include "core/geometry/tolerances.h"
 
 namespace rockface::faces {
 
@@ -128,11 +131,70 @@ kinematics::Finiteness union_finiteness(const CellUnion& u, double shut_margin,
     for (const auto& n : f.joint_pyramid.normals()) seen = seen || (n - inward).norm() < 1e-9;
     if (!seen) f.joint_pyramid.add(inward);
   }
-  f.jp_margin = f.joint_pyramid.margin().angle;
   f.jp_ep_margin = -shut_margin;
   f.finite = geometry::decide(shut_margin, uncertainty);
-  f.removable = geometry::decide(std::min(f.jp_margin, shut_margin), uncertainty);
+  kinematics::decide_removability(f, shut_margin, uncertainty);
   return f;
+}
+
+// The verdicts of a piece open between two joints taken as parallel.
+struct SlabVerdict {
+  kinematics::Finiteness finiteness;
+  std::string note;
+};
+
+// A piece (its half-spaces, joints then patches, and their block-side
+// normals) with two joints parallel within the block's uncertainty on both
+// sides of it, meeting further than kParallelMeetInLoopSizes loop sizes
+// from its loop: its finiteness with them exactly parallel, when that
+// leaves it open (infinite); none when there are no such joints or they
+// leave it shut (the construction then builds it, its corners near).
+std::optional<SlabVerdict> open_slab(const std::vector<blocks::HalfSpaceInput>& hs,
+                                     const std::vector<Eigen::Vector3d>& joint_in,
+                                     const std::vector<Eigen::Vector3d>& free_in,
+                                     const TraceBlock& block) {
+  if (block.surface_polygon.empty()) return std::nullopt;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& x : block.surface_polygon) centre += x;
+  centre /= static_cast<double>(block.surface_polygon.size());
+  double size = 0;
+  for (const auto& x : block.surface_polygon)
+    for (const auto& y : block.surface_polygon) size = std::max(size, (x - y).norm());
+  const double tolerance = std::max(block.uncertainty, geometry::kParallelRoundingRad);
+  std::vector<std::pair<int, int>> parallel;
+  const blocks::SlabPair* widest = nullptr;
+  const std::vector<blocks::SlabPair> pairs =
+      blocks::slab_pairs(hs, tolerance, centre, kParallelMeetInLoopSizes * size);
+  for (const auto& p : pairs) {
+    // The joints only: a joint parallel to a free face is another case.
+    if (hs[p.first].kind != blocks::PlaneKind::Joint ||
+        hs[p.second].kind != blocks::PlaneKind::Joint)
+      continue;
+    parallel.emplace_back(p.first, p.second);
+    if (!widest || p.angle > widest->angle) widest = &p;
+  }
+  if (parallel.empty()) return std::nullopt;
+  SlabVerdict v;
+  v.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty, parallel);
+  if (v.finiteness.finite.value) return std::nullopt;
+  std::vector<Eigen::Vector3d> all = joint_in;
+  all.insert(all.end(), free_in.begin(), free_in.end());
+  const Eigen::Vector3d open =
+      geometry::margin_with_parallel_planes(
+          all, geometry::parallel_reduction(all, parallel,
+                                            std::max(tolerance, v.finiteness.parallel_angle)))
+          .direction;
+  const std::string meet =
+      std::isfinite(widest->meet_distance)
+          ? "they would meet " + format_significant(widest->meet_distance, 3) + " m from the loop"
+          : "they never meet";
+  v.note = "infinite: joints " + hs[widest->first].name + " and " + hs[widest->second].name +
+           " are parallel within " + format_significant(rad_to_deg(widest->angle), 3) +
+           " degrees (taken as parallel: " + meet +
+           "), and the block never ends between them in direction (" +
+           format_significant(open.x(), 3) + ", " + format_significant(open.y(), 3) + ", " +
+           format_significant(open.z(), 3) + ")";
+  return v;
 }
 
 }  // namespace
@@ -291,10 +353,24 @@ PieceCells build_piece_cells(const std::string& id, const std::vector<Piece>& pi
       (bp.kind == blocks::PlaneKind::Joint ? joint_in : free_in)
           .push_back(bp.plane.inward_normal(pieces[k].sides[j]));
     }
+    // Two joints on both sides of the piece, parallel within the
+    // uncertainty and meeting only far from the loop: the piece is open or
+    // shut as it is with them exactly parallel, never by which way the
+    // last hundredth of a degree turns them (a slab open along them came
+    // out finite with corners 1,000 km out, issue 43).
+    const std::optional<SlabVerdict> slab = open_slab(hs, joint_in, free_in, block);
     std::optional<blocks::ConvexConstruction> cc;
     try {
       if (hs.size() >= 4) cc = blocks::build_convex_block(id, hs, options.datum);
     } catch (const Error& e) {
+      if (slab) {
+        // The corners the construction could not close lie where the
+        // parallel joints would meet: the piece is open between them.
+        out.unbounded = true;
+        block.finiteness = slab->finiteness;
+        block.notes.push_back(slab->note);
+        break;
+      }
       // One loop whose geometry cannot be assembled must not stop the map:
       // its finiteness still follows from the cones alone, and the note
       // says what is missing.
@@ -304,7 +380,11 @@ PieceCells build_piece_cells(const std::string& id, const std::vector<Piece>& pi
       block.notes.push_back(std::string("block geometry not assembled: ") + e.what());
       break;
     }
-    if (!cc || cc->outcome == blocks::ConvexOutcome::Unbounded) {
+    if (slab && !(cc && cc->outcome == blocks::ConvexOutcome::Empty)) {
+      out.unbounded = true;
+      block.finiteness = slab->finiteness;
+      block.notes.push_back(slab->note);
+    } else if (!cc || cc->outcome == blocks::ConvexOutcome::Unbounded) {
       out.unbounded = true;
       block.finiteness = kinematics::halfspace_finiteness(joint_in, free_in, block.uncertainty);
       if (cc) {

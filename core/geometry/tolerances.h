@@ -25,6 +25,13 @@ inline constexpr double kParallelCross = 1e-14;
 // generous, not exact.
 inline constexpr double kOppositeNormals = 1e-3;
 
+// Two planes within this angle of parallel are parallel to rounding: the
+// same dip and dip direction through different arithmetic (a normal turned
+// back from a fitted face, the trigonometry of a datum's shift) differ by
+// ~1e-15. Beyond it only the orientation uncertainty of the measurements
+// makes two planes parallel (core/geometry/parallel_planes.h).
+inline constexpr double kParallelRoundingRad = 1e-9;
+
 // Default orientation uncertainty of a hand measurement (compass-clinometer
 // readings are good to 1-2 degrees). A verdict whose margin is inside it is
 // reported as marginal; a scene may set its own value.

@@ -6,24 +6,39 @@
 #include <numbers>
 #include <numeric>
 
+#include "core/geometry/parallel_planes.h"
+#include "core/geometry/tolerances.h"
+
 namespace rockface::kinematics {
 
 namespace {
 
-Finiteness decide_finiteness(geometry::Cone jp, std::vector<geometry::Cone> eps,
-                             double uncertainty) {
+// JP cap EP shut (> 0) or open (< 0) by that angle; with `parallel`
+// (pairs of the joints then the free faces of the one EP, taken as
+// parallel) within their plane.
+Finiteness decide_finiteness(geometry::Cone jp, std::vector<geometry::Cone> eps, double uncertainty,
+                             const std::vector<std::pair<int, int>>& parallel = {}) {
   Finiteness f;
   f.joint_pyramid = std::move(jp);
   // No free face: the excavation pyramid is the whole space.
   if (eps.empty()) eps.emplace_back();
   f.excavation_pyramids = std::move(eps);
-  // Up to ~20 joints: the active sets are cheaper from 7 on (see cone.h).
-  f.jp_margin = geometry::active_set_margin(f.joint_pyramid, 6).angle;
-  const geometry::UnionEmptiness u =
-      geometry::intersection_with_union_empty(f.joint_pyramid, f.excavation_pyramids);
-  f.jp_ep_margin = -u.margin;
-  f.finite = geometry::decide(u.margin, uncertainty);
-  f.removable = geometry::decide(std::min(f.jp_margin, u.margin), uncertainty);
+  double shut = 0;
+  if (parallel.empty()) {
+    shut = geometry::intersection_with_union_empty(f.joint_pyramid, f.excavation_pyramids).margin;
+  } else {
+    std::vector<Eigen::Vector3d> all = f.joint_pyramid.normals();
+    for (const auto& n : f.excavation_pyramids.front().normals()) all.push_back(n);
+    double tolerance = std::max(uncertainty, geometry::kParallelRoundingRad);
+    for (const auto& [i, j] : parallel)
+      tolerance = std::max(tolerance, std::acos(std::clamp(-all[i].dot(all[j]), -1.0, 1.0)));
+    const geometry::ParallelReduction r = geometry::parallel_reduction(all, parallel, tolerance);
+    f.parallel_angle = r.widest;
+    shut = -geometry::margin_with_parallel_planes(all, r).angle;
+  }
+  f.jp_ep_margin = -shut;
+  f.finite = geometry::decide(shut, uncertainty);
+  decide_removability(f, shut, uncertainty);
   return f;
 }
 
@@ -74,12 +89,37 @@ void maximal_cliques(const std::vector<std::vector<bool>>& adjacent, std::vector
 
 }  // namespace
 
+void decide_removability(Finiteness& f, double shut_margin, double uncertainty) {
+  // Up to ~20 joints: the active sets are cheaper from 7 on (see cone.h).
+  f.jp_margin = geometry::active_set_margin(f.joint_pyramid, 6).angle;
+  // Joints on both sides of planes parallel within the uncertainty: JP is
+  // decided within their plane, whatever the hair of an angle between them
+  // (which way it opens is beyond what was measured). A block that can
+  // come out does so by sliding between them: marginal, as the cone has no
+  // width across them.
+  const double tolerance = std::max(uncertainty, geometry::kParallelRoundingRad);
+  const std::vector<Eigen::Vector3d>& joints = f.joint_pyramid.normals();
+  const std::vector<std::pair<int, int>> pairs = geometry::opposite_pairs(joints, tolerance);
+  f.jp_between_parallel = !pairs.empty();
+  if (!f.jp_between_parallel) {
+    f.removable = geometry::decide(std::min(f.jp_margin, shut_margin), uncertainty);
+    return;
+  }
+  f.jp_in_plane_margin = geometry::margin_with_parallel_planes(
+                             joints, geometry::parallel_reduction(joints, pairs, tolerance))
+                             .angle;
+  f.removable = geometry::decide(std::min(f.jp_in_plane_margin, shut_margin), uncertainty);
+  if (f.removable.value) f.removable.marginal = true;
+}
+
 Finiteness halfspace_finiteness(const std::vector<Eigen::Vector3d>& joint_inward_normals,
                                 const std::vector<Eigen::Vector3d>& free_inward_normals,
-                                double uncertainty) {
+                                double uncertainty,
+                                const std::vector<std::pair<int, int>>& parallel) {
   std::vector<geometry::Cone> eps;
   if (!free_inward_normals.empty()) eps.emplace_back(free_inward_normals);
-  return decide_finiteness(geometry::Cone(joint_inward_normals), std::move(eps), uncertainty);
+  return decide_finiteness(geometry::Cone(joint_inward_normals), std::move(eps), uncertainty,
+                           parallel);
 }
 
 Finiteness block_finiteness(const blocks::Polyhedron& block, double uncertainty) {

@@ -5,6 +5,7 @@
 // factor of safety under the effects the scene lists.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -33,6 +34,19 @@ struct Finiteness {
   double jp_ep_margin = 0;      // radians, signed: > 0 JP cap EP open (infinite block)
   geometry::Verdict finite;     // JP cap EP empty
   geometry::Verdict removable;  // finite and JP not empty
+  // Joint faces on both sides of planes within the orientation uncertainty
+  // of parallel (two joints of one set bounding a slab): JP has no width
+  // across them, and its ordinary margin's sign is rounding. JP is then
+  // decided within their plane (on the line of two such pairs), by
+  // jp_in_plane_margin (radians, signed: > 0 the block can slide out
+  // between them); a removable verdict so decided is marginal (whether the
+  // planes open or close toward the free face cannot be told), never a flip
+  // (core/geometry/parallel_planes.h, core/analysis/README.md, "Joints taken as parallel").
+  bool jp_between_parallel = false;
+  double jp_in_plane_margin = 0;
+  // The planes JP cap EP was decided with as parallel (the caller's pairs,
+  // halfspace_finiteness): their widest angle, radians; 0 for none.
+  double parallel_angle = 0;
 };
 
 // From the planes of a block: joints give JP, free faces give the EP. Free
@@ -47,9 +61,22 @@ Finiteness block_finiteness(const blocks::Polyhedron& block, double uncertainty)
 
 // The same for half-spaces alone (a convex block that may be unbounded):
 // joint and free-face block-side normals; the free faces form one EP.
+// parallel: pairs of planes (indices into the joints, then the free faces)
+// the caller takes as exactly parallel from where they are (two planes of a
+// slab that meet only far beyond the block): JP cap EP is then decided
+// within their plane, by the angle it is open or shut there. Without them
+// only JP is (see Finiteness): whether two near-parallel planes meet at the
+// block or far from it is not in the normals.
 Finiteness halfspace_finiteness(const std::vector<Eigen::Vector3d>& joint_inward_normals,
                                 const std::vector<Eigen::Vector3d>& free_inward_normals,
-                                double uncertainty);
+                                double uncertainty,
+                                const std::vector<std::pair<int, int>>& parallel = {});
+
+// Removability from JP and the signed margin by which JP cap EP is shut
+// (> 0: finite), the uncertainty behind them (radians): JP decided within
+// the plane of joints taken as parallel where it has some (see Finiteness).
+// Sets removable, jp_margin, jp_between_parallel and jp_in_plane_margin.
+void decide_removability(Finiteness& f, double shut_margin, double uncertainty);
 
 struct BlockAnalysisInput {
   double density = 2700;                 // kg/m^3

@@ -1,4 +1,4 @@
-// `rockface import PROJECT FILE [--visit N | --new-visit] [--columns x,y,z,...]
+// `rockface import PROJECT FILE [--visit N | --new-visit [--geologist NAME]] [--columns x,y,z,...]
 //  [--offset E,N,Z] [--frame survey|local] [--view-from E,N,Z] [--gcp FILE |
 //  --pole X1,Y1,Z1,X2,Y2,Z2|auto [--range-pole M] [--azimuth DEG --reference-line
 //  X1,Y1,Z1,X2,Y2,Z2 [--declination DEG]]]`: a point cloud
@@ -40,6 +40,7 @@ VerbRun setup_import(CLI::App& sub) {
       ->required();
   auto* visit = sub.add_option("--visit", o->visit, "add it to this visit");
   sub.add_flag("--new-visit", o->new_visit, "a new visit for it (the default)")->excludes(visit);
+  sub.add_option("--geologist", o->geologist, "the geologist who mapped the new visit, by name");
   sub.add_option("--columns", o->columns,
                  "a text cloud's columns when its header does not name them, e.g. x,y,z,r,g,b "
                  "(- skips a column)");

@@ -86,6 +86,8 @@ VerbRun setup_measure(CLI::App& sub) {
                  "project: measure on this visit's 3D images and store the measurements in it "
                  "(not in a new visit), so that one visit carries its camera, scale, north and "
                  "traces; refused for a visit without a 3D image or a label it already holds");
+  sub.add_option("--geologist", r.geologist,
+                 "project: the geologist who mapped the new visit, by name");
   sub.add_option("--camera", r.on.camera, "model file: the camera it was reconstructed with");
   sub.add_option("--photo", r.on.photo,
                  "model file: the left photograph (default: the model's TextureFile)");

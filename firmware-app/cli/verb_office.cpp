@@ -58,6 +58,10 @@ VerbRun setup_office(CLI::App& sub) {
     if (colon == std::string::npos || colon + 1 == o->listen.size())
       throw InputError("--listen", "give ADDR:PORT, e.g. 127.0.0.1:8046");
     options.listen_host = o->listen.substr(0, colon);
+    // An IPv6 address is written in brackets before its port ([::1]:8046).
+    if (options.listen_host.size() > 2 && options.listen_host.front() == '[' &&
+        options.listen_host.back() == ']')
+      options.listen_host = options.listen_host.substr(1, options.listen_host.size() - 2);
     try {
       options.listen_port = std::stoi(o->listen.substr(colon + 1));
     } catch (const std::exception&) {

@@ -1,5 +1,5 @@
 // `rockface place PROJECT --visit N --chainage C [--offset M] [--height M]
-// [--heading NAME]`: places a visit in the project's tunnel by where the
+// [--heading NAME] [--geologist NAME]`: places a visit in the project's tunnel by where the
 // range pole stood, as the geologist types it (the lower target's chainage,
 // offset right of the axis looking in the drive's direction, height above
 // the axis), its 3D image oriented by its compass line. A visit registered
@@ -7,6 +7,9 @@
 // for the rest. `--heading` names the face the visit was taken at
 // (storage/tunnel/visit_heading.h); given alone it names the heading of a
 // visit placed before (nothing moves, so a mapped visit may take one too).
+// `--geologist NAME` names the geologist who mapped the visit
+// (storage/project/visit_geologist.h), placed or not, with or without a
+// tunnel; `--geologist ""` takes the name away.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -15,6 +18,7 @@
 #include "core/common/number_format.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/tunnel/typed_placement.h"
+#include "storage/project/visit_geologist.h"
 #include "storage/tunnel/visit_heading.h"
 
 namespace rockface::app {
@@ -25,6 +29,7 @@ struct PlaceOptions {
   storage::RecordId visit = 0;
   double chainage = 0, offset = 0, height = 0;
   std::string heading;
+  std::string geologist;
 };
 
 VerbRun setup_place(CLI::App& sub) {
@@ -41,13 +46,20 @@ VerbRun setup_place(CLI::App& sub) {
       "--heading", o->heading,
       "the face the visit was taken at, when the tunnel is driven from more than one (e.g. "
       "\"North portal\", \"Bench\"); alone: names a placed visit's heading");
+  CLI::Option* geologist =
+      sub.add_option("--geologist", o->geologist,
+                     "the geologist who mapped the visit, by name (\"\" takes it away); alone: "
+                     "names it, placed or not");
   offset->needs(chainage);
   height->needs(chainage);
-  return [o, chainage, heading] {
-    if (chainage->count() == 0 && heading->count() == 0)
-      throw InputError("--chainage", "give the pole's chainage, or --heading to name the heading");
+  return [o, chainage, heading, geologist] {
+    if (chainage->count() == 0 && heading->count() == 0 && geologist->count() == 0)
+      throw InputError("--chainage",
+                       "give the pole's chainage, --heading to name the heading or --geologist "
+                       "to name the geologist");
     // Checked before anything moves.
     const std::string name = storage::checked_heading(o->heading, "--heading");
+    const std::string geologist_name = storage::checked_geologist(o->geologist, "--geologist");
     if (!std::filesystem::exists(o->project)) throw InputError(o->project, "no such project file");
     storage::ProjectStore store = storage::ProjectStore::open(o->project);
     if (store.read_only())
@@ -59,13 +71,19 @@ VerbRun setup_place(CLI::App& sub) {
                 << format_fixed(p.chainage, 2) << ", offset " << format_fixed(p.offset_m, 2, " m")
                 << (p.height_m ? ", height " + format_fixed(*p.height_m, 2, " m") : std::string())
                 << " (" << p.note << ")\n";
-    } else if (!store.load_visit_placement(o->visit)) {
+    } else if (heading->count() > 0 && !store.load_visit_placement(o->visit)) {
       throw InputError("--heading", "visit " + std::to_string(o->visit) +
                                         " is not placed in the tunnel: give --chainage too");
     }
     if (heading->count() > 0) {
       storage::save_visit_heading(store, o->visit, name);
       std::cout << "visit " << o->visit << " heading: " << (name.empty() ? "none" : name) << "\n";
+    }
+    if (geologist->count() > 0) {
+      store.save_visit_geologist(o->visit, geologist_name);
+      std::cout << "visit " << o->visit << " geologist: "
+                << (geologist_name.empty() ? storage::kGeologistNotRecorded : geologist_name)
+                << "\n";
     }
     return 0;
   };

@@ -68,6 +68,8 @@ VerbRun setup_replay(CLI::App& sub) {
   sub.add_option("--heading", req->heading,
                  "the face the visit is taken at, when the tunnel is driven from more than one "
                  "(e.g. \"North portal\", \"Bench\"; default: the visit file's)");
+  sub.add_option("--geologist", req->geologist,
+                 "the geologist who maps the visit, by name (default: the visit file's)");
   CLI::Option* preset_option = sub.add_option(
       "--preset", *preset, "fast | standard | precise (default: the scene's analysis.preset)");
   return [req, preset, preset_option] {
@@ -84,6 +86,7 @@ VerbRun setup_replay(CLI::App& sub) {
       std::cout << format_significant(out.predicted_depth_sigma_m, 3)
                 << " base lengths: unscaled, no range pole, control points or baseline)\n";
     if (!out.heading.empty()) std::cout << "heading: " << out.heading << "\n";
+    if (!out.geologist.empty()) std::cout << "geologist: " << out.geologist << "\n";
     for (const auto& g : out.guidance) std::cout << "capture: " << g << "\n";
     print_joint_comparisons(out.joints);
     if (out.report) std::cout << analysis::report_summary(*out.report);

@@ -134,7 +134,7 @@ ExportResult export_visit(storage::ProjectStore& store, const ExportRequest& req
   if (asked(request.what, "profile")) {
     std::optional<VisitProfile> profile;
     try {
-      profile = visit_profile(store, request.visit, request.preset);
+      profile = visit_profile(store, request.visit, request.preset, request.drive);
     } catch (const InputError& e) {
       lacking(request, "profile", std::string("has no profile: ") + e.what(), result);
     }

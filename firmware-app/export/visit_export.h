@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/common/preset.h"
+#include "firmware-app/tunnel/round_start.h"
 #include "storage/project/project_store.h"
 
 namespace rockface::app {
@@ -28,6 +29,9 @@ struct ExportRequest {
   // an InputError.
   std::vector<std::string> what;
   Preset preset = Preset::standard;  // of the profile's cross-sections
+  // The drive's faces, where the round starts, when the store does not hold
+  // the whole drive (the office's copy of a visit); null: read from it.
+  const DriveFaces* drive = nullptr;
 };
 
 struct ExportResult {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/common/error.h"
+#include "storage/project/visit_geologist.h"
 
 namespace rockface::app {
 namespace {
@@ -78,6 +79,12 @@ ImportRequest import_request(const ImportOptions& o) {
     request.north = ImportCompassLine{ends[0], ends[1], *o.azimuth, o.declination.value_or(0)};
   }
   if (o.visit != 0) request.visit = o.visit;
+  request.geologist = storage::checked_geologist(o.geologist, "--geologist");
+  if (request.visit && !request.geologist.empty())
+    throw InputError("--geologist", "it names a new visit's geologist: name visit " +
+                                        std::to_string(o.visit) +
+                                        "'s with `rockface place PROJECT --visit " +
+                                        std::to_string(o.visit) + " --geologist NAME`");
   return request;
 }
 

@@ -12,7 +12,8 @@
 namespace rockface::app {
 
 struct ImportOptions {
-  std::string project, file, columns, offset, view_from, frame, gcp, pole, reference_line;
+  std::string project, file, columns, offset, view_from, frame, gcp, pole, reference_line,
+      geologist;
   std::optional<double> range_pole, azimuth, declination;
   storage::RecordId visit = 0;  // 0: a new visit
   bool new_visit = false;
@@ -20,7 +21,9 @@ struct ImportOptions {
 
 // Throws InputError naming the option: a point that is not its count of
 // finite numbers, --range-pole without --pole, --azimuth without
-// --reference-line (or the other way), --declination without --azimuth.
+// --reference-line (or the other way), --declination without --azimuth,
+// a --geologist name storage/project/visit_geologist.h refuses or given
+// with --visit (a new visit's geologist).
 ImportRequest import_request(const ImportOptions& options);
 
 }  // namespace rockface::app

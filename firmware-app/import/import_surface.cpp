@@ -564,7 +564,8 @@ void store_import(storage::ProjectStore& store, const ImportRequest& request,
       info.datum = r.project_datum;
       store.update_project(info);
     }
-    r.visit = request.visit ? *request.visit : store.begin_visit("import " + source);
+    r.visit = request.visit ? *request.visit
+                            : store.begin_visit("import " + source, "", request.geologist);
     capture.visit_id = r.visit;
     capture.calibration_id = store.save_calibration(calibration);
     r.capture = store.save_capture(capture);

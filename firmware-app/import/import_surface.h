@@ -33,6 +33,7 @@ struct ImportRequest {
   std::filesystem::path file;
   storage::ImportFileOptions file_options;
   std::optional<storage::RecordId> visit;  // add to this visit; none: a new visit
+  std::string geologist;                   // who mapped the new visit; "" none
   // "survey" | "local" | "" (from the coordinates: survey beyond 10 km).
   std::string frame;
   // A point the surface is seen from (absolute, as the file's coordinates

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/common/error.h"
+#include "storage/project/visit_geologist.h"
 
 namespace rockface::app {
 namespace {
@@ -19,6 +20,13 @@ void take_visit_to_add_to(const std::optional<storage::RecordId>& add_to_visit,
                      "it names the visit measured on and stored in: leave out --visit and --model");
   request.on.visit = add_to_visit;
   request.add_to_visit = true;
+  // A visit's own geologist is named where the visit is, not by a
+  // measurement added to it.
+  if (!request.geologist.empty())
+    throw InputError("--geologist", "it names a new visit's geologist: name visit " +
+                                        std::to_string(*add_to_visit) +
+                                        "'s with `rockface place PROJECT --visit " +
+                                        std::to_string(*add_to_visit) + " --geologist NAME`");
 }
 
 // --sets: a count in [1, 12], or "auto".
@@ -63,6 +71,7 @@ MeasureRequest measure_request(const MeasureOptions& o) {
   check_point_sigma(request.on.point_sigma);
   check_friction(request.friction_deg);
   parse_sets(o.sets, request);
+  request.geologist = storage::checked_geologist(request.geologist, "--geologist");
   take_visit_to_add_to(o.add_to_visit, request);
   return request;
 }

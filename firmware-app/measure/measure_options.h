@@ -20,7 +20,8 @@ struct MeasureOptions {
 
 // Throws InputError naming the option: --point-sigma outside (0, 10] m,
 // --friction outside (0, 90) degrees, --sets not a count in [1, 12] or
-// "auto", --add-to-visit with --visit or --model.
+// "auto", --add-to-visit with --visit or --model, a --geologist name that
+// storage/project/visit_geologist.h refuses or given with --add-to-visit.
 MeasureRequest measure_request(const MeasureOptions& options);
 
 }  // namespace rockface::app

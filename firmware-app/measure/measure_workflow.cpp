@@ -189,7 +189,7 @@ MeasureOutcome measure_picks_file(const MeasureRequest& r) {
     const std::vector<storage::JointSet> sets = joint_set_records(measured);
     if (r.add_to_visit) check_new_labels(*store, *r.on.visit, r.picks, records, sets, joints);
     const storage::RecordId visit =
-        r.add_to_visit ? *r.on.visit : store->begin_visit("measure " + r.picks, note);
+        r.add_to_visit ? *r.on.visit : store->begin_visit("measure " + r.picks, note, r.geologist);
     for (auto& m : records) m.visit_id = visit;
     const auto ids = store->save_measurements(visit, records);
     for (auto& j : joints) {

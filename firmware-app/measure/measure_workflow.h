@@ -34,6 +34,9 @@ struct MeasureRequest {
   // stored, for a visit without a 3D image, and for a label the visit
   // already holds (a measurement, joint or joint set).
   bool add_to_visit = false;
+  // Project: the geologist who mapped the new visit ("" none; checked by
+  // measure_options.h, storage/project/visit_geologist.h).
+  std::string geologist;
   // Called once the measurements are stored in the project (the new
   // visit, or the visit added to), before the output files are written.
   std::function<void(storage::RecordId visit)> stored;

@@ -16,6 +16,7 @@
 #include "storage/office/server_records.h"
 #include "storage/office/server_schema.h"
 #include "storage/project/model_registration.h"
+#include "storage/project/visit_geologist.h"
 
 namespace rockface::app::office_web {
 
@@ -112,7 +113,8 @@ DriveRead read_drive_page(office::Connection& c, const std::string& tunnel,
   const office::Result r = c.query(
       "WITH live AS (SELECT * FROM (SELECT DISTINCT ON (kind, uuid) kind, uuid, visit_uuid, "
       "project_uuid, local_id, deleted, body FROM rockface.record WHERE tunnel_id = $1 AND kind IN "
-      "('visit', 'visit_placement', 'visit_heading', 'analysis', 'block') ORDER BY kind, uuid, "
+      "('visit', 'visit_placement', 'visit_heading', 'visit_geologist', 'analysis', 'block') "
+      "ORDER BY kind, uuid, "
       "revision DESC) l "
       "WHERE NOT deleted), "
       "last_analysis AS (SELECT DISTINCT ON (visit_uuid) visit_uuid, uuid::text AS aid FROM live "
@@ -131,7 +133,10 @@ DriveRead read_drive_page(office::Connection& c, const std::string& tunnel,
       "notes AS (SELECT uuid, body->'row'->>'note' AS note FROM live WHERE kind = 'visit'), "
       // A visit's heading is a record of its own, keyed by the visit's uuid.
       "headings AS (SELECT uuid, body->'row'->>'heading' AS heading FROM live WHERE kind = "
-      "'visit_heading') "
+      "'visit_heading'), "
+      // And so is the geologist who mapped it (storage/project/visit_geologist.h).
+      "geologists AS (SELECT uuid, body->'row'->>'geologist' AS geologist FROM live WHERE kind = "
+      "'visit_geologist') "
       // Every visit of the tunnel, the filter's verdict a column of its
       // own: the list of headings is read from all of them (from a drive
       // filtered by one heading the others must stay choosable), the
@@ -139,10 +144,12 @@ DriveRead read_drive_page(office::Connection& c, const std::string& tunnel,
       "SELECT v.uuid::text, v.started_at, v.owner, p.name, pl.chainage, n.note, bl.n, "
       "bl.moving, bl.largest, h.heading, "
       "($2 = '' OR v.started_at >= $2) AND ($3 = '' OR left(v.started_at, 10) <= $3) "
-      "AND ($4 = '' OR v.owner = $4) AND ($5 = '' OR coalesce(h.heading, $6) = $5) "
+      "AND ($4 = '' OR v.owner = $4) AND ($5 = '' OR coalesce(h.heading, $6) = $5), "
+      "g.geologist "
       "FROM rockface.visit v JOIN rockface.project p ON p.uuid = v.project_uuid "
       "LEFT JOIN placements pl ON pl.visit_uuid = v.uuid LEFT JOIN notes n ON n.uuid = v.uuid "
       "LEFT JOIN blocks bl ON bl.visit_uuid = v.uuid LEFT JOIN headings h ON h.uuid = v.uuid "
+      "LEFT JOIN geologists g ON g.uuid = v.uuid "
       "WHERE v.tunnel_id = $1 "
       "ORDER BY v.started_at, v.project_uuid, v.local_id",
       {office::Param::of(id), office::Param::of(filter.from), office::Param::of(filter.to),
@@ -171,6 +178,9 @@ DriveRead read_drive_page(office::Connection& c, const std::string& tunnel,
     }
     v["note"] = r.is_null(i, 5) ? "" : r.text(i, 5);
     v["heading"] = r.is_null(i, 9) ? kNoHeading : r.text(i, 9);
+    // Text for the page (its own text node: escaped by the browser), never
+    // "" for a visit without one.
+    v["geologist"] = r.is_null(i, 11) ? std::string(storage::kGeologistNotRecorded) : r.text(i, 11);
     const std::int64_t n = r.is_null(i, 6) ? 0 : r.int64(i, 6);
     v["blocks"] = n;
     v["moving"] = r.is_null(i, 7) ? 0 : r.int64(i, 7);
@@ -252,6 +262,7 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
   out["id"] = visit_uuid;
   out["started_at"] = report.visit_started_at;
   out["source"] = report.visit_source;
+  out["geologist"] = report.visit_geologist.value_or(storage::kGeologistNotRecorded);
   out["project"] = report.project_name;
   out["camera"] = report.camera_body + (report.lens.empty() ? "" : ", " + report.lens);
   out["preset"] = report.preset;
@@ -310,19 +321,15 @@ json visit_page(const storage::FieldReport& report, const std::string& visit_uui
   }
   out["poles"] = std::move(poles);
 
-  // Sets by label, for the traces' colours.
-  std::map<std::string, int> set_of_trace;
-  for (const auto& j : report.joints)
-    for (std::size_t s = 0; s < report.sets.size(); ++s)
-      if (j.set_label == report.sets[s].label) set_of_trace[j.label] = static_cast<int>(s);
+  // Each trace with its set (an index into `sets`, the stereonet's and the
+  // legend's colour; -1 none). Traces are stored in the project frame, the
+  // blocks below with the datum added.
   json traces = json::array();
-  for (const auto& [label, pts] : report.traces) {
+  for (std::size_t i = 0; i < report.traces.size(); ++i) {
+    const auto& [label, pts] = report.traces[i];
     json line = json::array();
-    for (const auto& p : pts) line.push_back(point(p - shift));
-    int set = -1;
-    // A joined trace "T1+T4" takes its first piece's set.
-    const std::string first = label.substr(0, label.find('+'));
-    if (auto it = set_of_trace.find(first); it != set_of_trace.end()) set = it->second;
+    for (const auto& p : pts) line.push_back(point(p - origin));
+    const int set = i < report.trace_sets.size() ? report.trace_sets[i] : -1;
     traces.push_back({{"label", label}, {"set", set}, {"points", std::move(line)}});
   }
   out["traces"] = std::move(traces);

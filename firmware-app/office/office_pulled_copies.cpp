@@ -17,6 +17,7 @@ PulledVisit visit_of(const std::shared_ptr<const SharedPull>& copy, const std::s
   if (it == copy->visit_ids.end())
     throw InputError("visit " + visit_uuid, "no such visit in tunnel " + tunnel);
   out.visit_id = it->second;
+  if (copy->drive) out.drive = &*copy->drive;
   return out;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The visit pages read a pulled copy holding the visit (storage/office/
-// pull_project.h: the visit's records, the drive's visits and placements,
-// the tunnel), made on a connection acting as the session's role so that
-// the role's row-level security decides what it holds, shared read-only by
+// pull_project.h: the visit's records and the tunnel; of the drive's other
+// visits, only their faces, beside the copy: SharedPull::drive), made on a connection acting as the
+// session's role so that the role's row-level security decides what it holds, shared read-only by
 // the sessions whose roles read the same tunnels (office_shared_cache.h)
 // and made again when a tablet has synced since.
 #include <filesystem>
@@ -18,6 +18,9 @@ struct PulledVisit {
   std::shared_ptr<const SharedPull> copy;  // kept while the visit is read
   std::filesystem::path file;              // the pulled project
   storage::RecordId visit_id = 0;          // the visit's id in it
+  // The drive's faces where the visit's round starts (the copy holds no
+  // other visit): for collect_visit_report and the exports.
+  const DriveFaces* drive = nullptr;
 };
 
 // `db` acts as the session's role; it is back in the pool on return (the

@@ -9,6 +9,7 @@
 #include "firmware-app/office/web_security.h"
 #include "storage/office/pull_project.h"
 #include "storage/project/project_sqlite.h"
+#include "storage/project/project_store.h"
 
 namespace rockface::app::office_web {
 
@@ -25,6 +26,27 @@ ReadableTunnels readable_tunnels(office::Connection& c) {
   }
   return out;
 }
+
+namespace {
+
+// The drive's faces (round_start.h's drive_faces, as a copy of the whole
+// tunnel gives them) from the visits read beside a copy of some visits:
+// the tunnel's drive direction from the copy's tunnel record.
+DriveFaces drive_faces_of(const std::filesystem::path& copy,
+                          const std::vector<office::ServerDriveVisit>& visits) {
+  DriveFaces out;
+  storage::OpenOptions read;
+  read.read_only = true;
+  storage::ProjectStore store = storage::ProjectStore::open(copy, read);
+  if (const auto tunnel = store.load_tunnel()) out.tunnel_drive = tunnel->drive;
+  for (const auto& v : visits)
+    if (!v.heading.empty()) out.headings[v.pulled_id] = v.heading;
+  for (const auto& v : visits)
+    if (v.chainage) out.faces.push_back({v.pulled_id, *v.chainage, v.heading, v.started_at});
+  return out;
+}
+
+}  // namespace
 
 SharedPull::~SharedPull() {
   std::error_code ec;
@@ -176,6 +198,7 @@ std::shared_ptr<const SharedPull> SharedOfficeCache::make_copy(RequestConnection
                                   "reading the pulled visits' uuids");
     while (st.step()) copy->visit_ids[st.column_text(1)] = st.column_int(0);
   }
+  if (!scope.visits.empty()) copy->drive = drive_faces_of(copy->file, read.drive_visits);
   return copy;
 }
 

@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include "firmware-app/office/office_pages.h"
 #include "firmware-app/office/office_sessions.h"
 #include "firmware-app/office/request_connection.h"
+#include "firmware-app/tunnel/round_start.h"
 
 namespace rockface::app::office_web {
 
@@ -43,13 +45,19 @@ struct SharedPull {
   // The copy's visits: the server's uuid -> the id the pull gave it, read
   // from the copy itself (a sync since cannot shift them).
   std::map<std::string, std::int64_t> visit_ids;
+  // A copy of some visits (PullScope::visits) holds none of the drive's
+  // other visits: the drive's faces, where their rounds start, read in the
+  // same snapshot under the ids a whole pull gives the visits (the copy's
+  // own visits take theirs too).
+  std::optional<DriveFaces> drive;
   ~SharedPull();
 };
 
 // What a pulled copy holds (storage/office/pull_project.h's PullOptions):
 // the drive's rounds need no photograph, and no mesh once their figures
 // are kept (office_round_figures.h); a visit page needs its visit only,
-// its photographs fetched one by one when shown.
+// its photographs fetched one by one when shown, and of the rest of the
+// drive only what its round's start needs (SharedPull::drive).
 struct PullScope {
   bool photographs = true;
   bool meshes = true;

@@ -1,5 +1,7 @@
 #include "firmware-app/office/web_server.h"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -283,9 +285,9 @@ class OfficeServer {
     h.Get("/api/visit", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, false,
                  [&](OfficeSession&, office_web::RequestConnection&, storage::ProjectStore& store,
-                     storage::RecordId id) {
+                     storage::RecordId id, const DriveFaces* drive) {
                    office_web::CpuSlots::Slot slot(cache_.cpu_slots());
-                   const storage::FieldReport report = collect_visit_report(store, id);
+                   const storage::FieldReport report = collect_visit_report(store, id, drive);
                    const Eigen::Vector3d origin = office_web::face_origin(store, id);
                    json page = office_web::visit_page(report, req.get_param_value("visit"), origin);
                    json photos = json::array();
@@ -316,8 +318,8 @@ class OfficeServer {
         storage::OpenOptions read;
         read.read_only = true;
         storage::ProjectStore store = storage::ProjectStore::open(a.file, read);
-        storage::FieldReport ra = collect_visit_report(store, a.visit_id);
-        storage::FieldReport rb = collect_visit_report(store, b.visit_id);
+        storage::FieldReport ra = collect_visit_report(store, a.visit_id, a.drive);
+        storage::FieldReport rb = collect_visit_report(store, b.visit_id, b.drive);
         json page = ra.visit_started_at <= rb.visit_started_at ? office_web::compare_visits(ra, rb)
                                                                : office_web::compare_visits(rb, ra);
         const bool swapped = ra.visit_started_at > rb.visit_started_at;
@@ -329,7 +331,7 @@ class OfficeServer {
     h.Get("/api/visit/mesh", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, false,
                  [&](OfficeSession&, office_web::RequestConnection&, storage::ProjectStore& store,
-                     storage::RecordId id) {
+                     storage::RecordId id, const DriveFaces*) {
                    const bool full = req.get_param_value("full") == "1";
                    office_web::FaceMesh m =
                        office_web::face_mesh(store, id, full ? 0 : kFaceTriangles);
@@ -342,7 +344,7 @@ class OfficeServer {
     h.Get("/api/visit/photo", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, false,
                  [&](OfficeSession&, office_web::RequestConnection& db,
-                     storage::ProjectStore& store, storage::RecordId id) {
+                     storage::ProjectStore& store, storage::RecordId id, const DriveFaces*) {
                    const std::string side = req.get_param_value("side");
                    if (side != "left" && side != "right") throw InputError("side", "left or right");
                    const storage::RecordId capture =
@@ -366,11 +368,11 @@ class OfficeServer {
     h.Get("/api/visit/picture", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, false,
                  [&](OfficeSession&, office_web::RequestConnection&, storage::ProjectStore& store,
-                     storage::RecordId id) {
+                     storage::RecordId id, const DriveFaces* drive) {
                    // The field report's own pictures: the round's developed view
                    // (over- and underbreak against the design) and the wedges around
                    // the excavation, as the PDF prints them.
-                   const storage::FieldReport report = collect_visit_report(store, id);
+                   const storage::FieldReport report = collect_visit_report(store, id, drive);
                    const std::string which = req.get_param_value("which");
                    cv::Mat picture;
                    if (which == "developed" && report.tunnel)
@@ -388,8 +390,8 @@ class OfficeServer {
     h.Get("/api/visit/report.pdf", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, true,
                  [&](OfficeSession& s, office_web::RequestConnection&, storage::ProjectStore& store,
-                     storage::RecordId id) {
-                   const storage::FieldReport report = collect_visit_report(store, id);
+                     storage::RecordId id, const DriveFaces* drive) {
+                   const storage::FieldReport report = collect_visit_report(store, id, drive);
                    const auto pdf = visit_report_pdf(report, s.folder);
                    res.set_header("Content-Disposition", "inline; filename=\"visit-" +
                                                              std::to_string(id) + "-report.pdf\"");
@@ -399,8 +401,8 @@ class OfficeServer {
     h.Get("/api/visit/exports", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, true,
                  [&](OfficeSession& s, office_web::RequestConnection&, storage::ProjectStore& store,
-                     storage::RecordId id) {
-                   const fs::path dir = exports_folder(s, store, id);
+                     storage::RecordId id, const DriveFaces* drive) {
+                   const fs::path dir = exports_folder(s, store, id, drive);
                    json files = json::array();
                    for (const auto& e : fs::directory_iterator(dir))
                      files.push_back(json{{"name", e.path().filename().string()},
@@ -411,8 +413,8 @@ class OfficeServer {
     h.Get("/api/visit/export", [this](const httplib::Request& req, httplib::Response& res) {
       with_visit(req, res, true,
                  [&](OfficeSession& s, office_web::RequestConnection&, storage::ProjectStore& store,
-                     storage::RecordId id) {
-                   const fs::path dir = exports_folder(s, store, id);
+                     storage::RecordId id, const DriveFaces* drive) {
+                   const fs::path dir = exports_folder(s, store, id, drive);
                    const std::string name = req.get_param_value("name");
                    // Only a name the export wrote: no path reaches the file system.
                    for (const auto& e : fs::directory_iterator(dir)) {
@@ -446,7 +448,7 @@ class OfficeServer {
       storage::OpenOptions read;
       read.read_only = true;
       storage::ProjectStore store = storage::ProjectStore::open(v.file, read);
-      body(s, db, store, v.visit_id);
+      body(s, db, store, v.visit_id, v.drive);
     });
   }
 
@@ -467,7 +469,7 @@ class OfficeServer {
   }
 
   static fs::path exports_folder(OfficeSession& s, storage::ProjectStore& store,
-                                 storage::RecordId id) {
+                                 storage::RecordId id, const DriveFaces* drive) {
     // One export per pulled copy and visit: a new sync makes a new copy.
     const fs::path dir =
         s.folder / ("exports-" + store.file().stem().string() + "-" + std::to_string(id));
@@ -477,6 +479,7 @@ class OfficeServer {
       ExportRequest request;
       request.visit = id;
       request.out_dir = partial;
+      request.drive = drive;
       export_visit(store, request);
       fs::rename(partial, dir);
     }
@@ -523,7 +526,19 @@ class OfficeServer {
 }  // namespace
 
 bool is_loopback_address(const std::string& host) {
-  return host == "localhost" || host == "::1" || host == "[::1]" || host.rfind("127.", 0) == 0;
+  // An address as written, never a name that might resolve elsewhere
+  // ("127.example.org" is a name): "localhost" is the one name taken.
+  if (host == "localhost") return true;
+  in_addr v4{};
+  if (::inet_pton(AF_INET, host.c_str(), &v4) == 1) return (ntohl(v4.s_addr) >> 24) == 127;
+  const std::string bare = host.size() > 2 && host.front() == '[' && host.back() == ']'
+                               ? host.substr(1, host.size() - 2)
+                               : host;
+  in6_addr v6{};
+  if (::inet_pton(AF_INET6, bare.c_str(), &v6) != 1) return false;
+  if (IN6_IS_ADDR_LOOPBACK(&v6)) return true;
+  // ::ffff:127.x.y.z, an IPv4 loopback address written as IPv6.
+  return IN6_IS_ADDR_V4MAPPED(&v6) && v6.s6_addr[12] == 127;
 }
 
 void serve_office(const OfficeServeOptions& options,

@@ -39,8 +39,9 @@ struct OfficeServeOptions {
   std::function<void(const std::string&)> log_failure = [](const std::string&) {};
 };
 
-// Whether a listen address is a loopback one (127.0.0.0/8, ::1,
-// "localhost"): the only ones served without TLS.
+// Whether a listen address is a loopback one (127.0.0.0/8, ::1 with or
+// without brackets, ::ffff:127.0.0.0/104, "localhost"): the only ones
+// served without TLS. Any other name is not, whatever it resolves to.
 bool is_loopback_address(const std::string& host);
 
 // Serves until stop_office_server() (or SIGTERM / SIGINT through the verb).

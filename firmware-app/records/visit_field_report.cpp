@@ -7,9 +7,10 @@
 
 namespace rockface::app {
 
-storage::FieldReport collect_visit_report(storage::ProjectStore& store, storage::RecordId visit) {
+storage::FieldReport collect_visit_report(storage::ProjectStore& store, storage::RecordId visit,
+                                          const DriveFaces* drive) {
   storage::FieldReport report = storage::collect_field_report(store, visit);
-  add_tunnel_to_report(store, report);
+  add_tunnel_to_report(store, report, Preset::standard, drive);
   add_wedges_to_report(store, report);
   add_rock_mass_to_report(store, report);
   add_support_to_report(store, report);

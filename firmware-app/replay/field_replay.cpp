@@ -33,6 +33,7 @@
 #include "firmware-app/tunnel/replay_tunnel.h"
 #include "storage/project/calibration_library.h"
 #include "storage/project/project_store.h"
+#include "storage/project/visit_geologist.h"
 #include "storage/report/reconstruction_report.h"
 #include "storage/scene/camera_json.h"
 #include "storage/scene/scene.h"
@@ -92,8 +93,9 @@ ReplaySource open_source(const ReplayRequest& request) {
                        "beside the photographs, or a project whose calibrations hold it");
     }
     std::optional<Preset> preset = request.preset;
-    out.sources = folder_registration(request.registration, fs::path(request.source) / "visit.json",
-                                      preset, out.visit_note, out.visit_heading);
+    out.sources =
+        folder_registration(request.registration, fs::path(request.source) / "visit.json", preset,
+                            out.visit_note, out.visit_heading, out.visit_geologist);
     out.camera = camera::MockCamera::replay(request.source, out.spool.string());
     out.preset = preset.value_or(Preset::standard);
     return out;
@@ -110,7 +112,8 @@ ReplaySource open_source(const ReplayRequest& request) {
 photogrammetry::RegistrationSources folder_registration(const RegistrationOptions& given,
                                                         const fs::path& visit_file,
                                                         std::optional<Preset>& preset,
-                                                        std::string& note, std::string& heading) {
+                                                        std::string& note, std::string& heading,
+                                                        std::string& geologist) {
   RegistrationOptions o = given;
   if (fs::exists(visit_file)) {
     const storage::VisitFile v = storage::load_visit_file(visit_file.string());
@@ -140,6 +143,7 @@ photogrammetry::RegistrationSources folder_registration(const RegistrationOption
     if (!preset) preset = v.preset;
     note = v.note;
     heading = v.heading;
+    geologist = v.geologist;
   }
   return registration_sources(o);
 }
@@ -446,7 +450,8 @@ ReplayOutcome replay_into_project(const ReplayRequest& request,
   // the visit began (a face off the alignment, picks the analysis refuses)
   // leaves an existing project as it was, byte for byte (issue 41).
   store.in_one_transaction("replaying " + request.source, [&] {
-    out.visit_id = store.begin_visit("replay " + request.source, source.visit_note);
+    out.visit_id =
+        store.begin_visit("replay " + request.source, source.visit_note, source.visit_geologist);
     const StoredCapture stored =
         store_capture(store, request, source, pair, out.visit_id, preset.name);
     out.capture_id = stored.capture_id;
@@ -529,10 +534,14 @@ ReplayOutcome replay_into_project(const ReplayRequest& request,
 ReplayOutcome replay_field_workflow(const ReplayRequest& request, Progress& progress) {
   // A refusal while the source is read leaves nothing: nothing is written yet.
   const std::string given_heading = storage::checked_heading(request.heading, "--heading");
+  const std::string given_geologist = storage::checked_geologist(request.geologist, "--geologist");
   field_replay_phases::ReplaySource source = field_replay_phases::open_source(request);
+  // The option wins over the visit file; the visit begins with it.
+  if (!given_geologist.empty()) source.visit_geologist = given_geologist;
   const ReplayRefusalUndo undo(request.project, source.spool);
   try {
     ReplayOutcome out = replay_into_project(request, source, progress);
+    out.geologist = source.visit_geologist;
     // After the replay's one transaction, on the visit it made: the name
     // was checked before anything was stored.
     out.heading = given_heading.empty() ? source.visit_heading : given_heading;

@@ -25,6 +25,9 @@ struct ReplayRequest {
   // The heading the visit is taken at (storage/tunnel/visit_heading.h);
   // "": the visit file's, if it names one.
   std::string heading;
+  // The geologist who maps the visit (storage/project/visit_geologist.h);
+  // "": the visit file's, if it names one.
+  std::string geologist;
 };
 
 // A joint's orientation as measured from its picked traces, beside the
@@ -54,6 +57,7 @@ struct ReplayOutcome {
   bool scaled = true;
   std::vector<std::string> guidance;  // capture guidance notes
   std::string heading;                // the visit's, "" none
+  std::string geologist;              // the visit's, "" none
   // With picks: each scene joint's plane measured from its traces beside
   // the scene's (JointComparison), in scene order.
   std::vector<JointComparison> joints;

@@ -58,6 +58,8 @@ struct ReplaySource {
   Preset preset = Preset::standard;
   std::string visit_note;     // a folder's visit file's note
   std::string visit_heading;  // and its heading
+  // The geologist who maps the visit: --geologist, else the visit file's.
+  std::string visit_geologist;
   // A folder without camera.json: its photographs take the calibration of
   // their camera from the project's library (calibration_library.h), chosen
   // once the project is open (library_calibration).
@@ -68,11 +70,13 @@ ReplaySource open_source(const ReplayRequest& request);
 
 // A folder's registration: the request's options, each else the visit
 // file's (`visit_file`, when it exists), checked (registration_sources).
-// `preset`, `note` and `heading` take the file's when it gives them.
+// `preset`, `note`, `heading` and `geologist` take the file's when it
+// gives them.
 photogrammetry::RegistrationSources folder_registration(const RegistrationOptions& given,
                                                         const std::filesystem::path& visit_file,
                                                         std::optional<Preset>& preset,
-                                                        std::string& note, std::string& heading);
+                                                        std::string& note, std::string& heading,
+                                                        std::string& geologist);
 
 // 2. Focus locked after the first shot; the two shots' optics must match
 // (throws otherwise); `guidance`: the capture guidance's notes on the pair.

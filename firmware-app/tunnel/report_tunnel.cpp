@@ -11,8 +11,8 @@
 
 namespace rockface::app {
 
-void add_tunnel_to_report(storage::ProjectStore& store, storage::FieldReport& report,
-                          Preset preset) {
+void add_tunnel_to_report(storage::ProjectStore& store, storage::FieldReport& report, Preset preset,
+                          const DriveFaces* faces) {
   const auto record = store.load_tunnel();
   if (!record) return;
   const tunnel::Alignment alignment = record->alignment(store.project().datum);
@@ -32,7 +32,7 @@ void add_tunnel_to_report(storage::ProjectStore& store, storage::FieldReport& re
   if (t.placement && store.list_visit_models(report.visit_id).empty()) {
     t.profile_lines.push_back("no 3D image of this visit: the round is not measured");
   } else if (t.placement) {
-    const VisitProfile profile = visit_profile(store, report.visit_id, preset);
+    const VisitProfile profile = visit_profile(store, report.visit_id, preset, faces);
     // The summary's first line is the visit's place, which the report's
     // tunnel section prints from the placement above it (issue 39: the
     // place was printed twice, in two sizes).

@@ -59,7 +59,10 @@ void read_face_registration(const ModelRegistration& reg, ReportedAccuracy& a) {
   }
 }
 
-void joints_and_sets(ProjectStore& store, FieldReport& r) {
+// Returns, when the poles are the planes measured on the face, each
+// trace's pole (by the label of its first piece): r.pole_sets then gives
+// its cluster.
+std::map<std::string, std::size_t> joints_and_sets(ProjectStore& store, FieldReport& r) {
   for (const auto& j : store.list_joints(r.visit_id)) {
     r.joints.push_back(
         {j.label, j.set_label, j.source, j.dip_deg, j.dipdir_deg, j.friction_deg, j.cohesion_pa});
@@ -75,7 +78,7 @@ void joints_and_sets(ProjectStore& store, FieldReport& r) {
     for (std::size_t i = 0; i < r.joints.size(); ++i)
       for (std::size_t k = 0; k < r.sets.size(); ++k)
         if (r.joints[i].set_label == r.sets[k].label) r.pole_sets[i] = static_cast<int>(k);
-    return;
+    return {};
   }
   // No sets stored: they are clustered here (core/measure), as the tablet
   // would offer: from the planes measured on the face when there are two or
@@ -89,21 +92,26 @@ void joints_and_sets(ProjectStore& store, FieldReport& r) {
     if (t.pieces.size() > 1)
       for (const auto& piece : t.pieces) joined_into[piece] = t.label;
   std::vector<Eigen::Vector3d> measured;
+  std::map<std::string, std::size_t> pole_of_trace;
   for (const auto& m : measurements) {
     if (!m.dip_deg || !m.dipdir_deg) continue;
     const Eigen::Vector3d pole = geometry::plane_normal_deg(*m.dip_deg, *m.dipdir_deg);
     const auto joined =
         m.kind == Measurement::Kind::trace ? joined_into.find(m.label) : joined_into.end();
-    if (joined == joined_into.end())
+    if (joined == joined_into.end()) {
+      if (m.kind == Measurement::Kind::trace) pole_of_trace[m.label] = measured.size();
       measured.push_back(pole);
-    else
+    } else {
       joined_poles[joined->second].push_back(pole);
+    }
   }
-  for (const auto& [label, poles] : joined_poles)
+  for (const auto& [label, poles] : joined_poles) {
+    pole_of_trace[label] = measured.size();
     measured.push_back(measure::fisher_statistics(poles).mean);
+  }
   const bool from_measured = measured.size() >= 2;
   if (from_measured) r.poles = measured;
-  if (r.poles.size() < 2) return;
+  if (r.poles.size() < 2) return {};
   const measure::PoleClusters clusters = measure::cluster_poles(r.poles, {});
   const std::string origin =
       from_measured ? "clustered from " + std::to_string(measured.size()) + " measured planes"
@@ -125,6 +133,27 @@ void joints_and_sets(ProjectStore& store, FieldReport& r) {
   if (!from_measured)
     for (std::size_t i = 0; i < r.joints.size(); ++i)
       if (r.pole_sets[i] >= 0) r.joints[i].set_label = r.sets[r.pole_sets[i]].label;
+  return from_measured ? pole_of_trace : std::map<std::string, std::size_t>{};
+}
+
+// Each trace's set (FieldReport::trace_sets): its joint's set, else its own
+// plane's cluster.
+std::vector<int> sets_of_traces(const FieldReport& r,
+                                const std::vector<photogrammetry::FaceTrace>& traces,
+                                const std::map<std::string, std::size_t>& pole_of_trace) {
+  std::vector<int> out;
+  for (const auto& t : traces) {
+    int set = -1;
+    for (const auto& j : r.joints)
+      if (!t.joint.empty() && j.label == t.joint)
+        for (std::size_t k = 0; k < r.sets.size(); ++k)
+          if (!j.set_label.empty() && r.sets[k].label == j.set_label) set = static_cast<int>(k);
+    const auto pole = pole_of_trace.find(t.label);
+    if (set < 0 && pole != pole_of_trace.end() && pole->second < r.pole_sets.size())
+      set = r.pole_sets[pole->second];
+    out.push_back(set);
+  }
+  return out;
 }
 
 // The face's planes: each outline's first flat piece, and each free face
@@ -177,6 +206,7 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
       found = true;
       r.visit_started_at = v.started_at;
       r.visit_source = v.source;
+      r.visit_geologist = v.geologist;
     }
   if (!found)
     throw InputError("--visit",
@@ -234,12 +264,14 @@ FieldReport collect_field_report(ProjectStore& store, RecordId visit_id) {
       ++(m.origin == "proposed"    ? r.traces_proposed
          : m.origin == "corrected" ? r.traces_corrected
                                    : r.traces_by_hand);
-  for (const auto& t : scene_traces(stored)) {
+  const std::vector<photogrammetry::FaceTrace> traces = scene_traces(stored);
+  for (const auto& t : traces) {
     std::string label = t.label;
     for (std::size_t k = 1; k < t.pieces.size(); ++k) label += "+" + t.pieces[k];
     r.traces.emplace_back(label, t.points);
   }
-  joints_and_sets(store, r);
+  const auto pole_of_trace = joints_and_sets(store, r);
+  r.trace_sets = sets_of_traces(r, traces, pole_of_trace);
   // Issue 27: the mapped face as the geologist outlined it, in its flat
   // pieces (storage/scene/face_outline_words.h); the outlines of one flat
   // piece in one line (issue 39: a face of many filled page 1).

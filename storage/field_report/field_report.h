@@ -143,6 +143,9 @@ struct FieldReport {
   Eigen::Vector3d datum = Eigen::Vector3d::Zero();
   RecordId visit_id = 0;
   std::string visit_started_at, visit_source;
+  // Who mapped the visit (storage/project/visit_geologist.h); none: not
+  // recorded.
+  std::optional<std::string> visit_geologist;
 
   // Camera and preset.
   std::string camera_body, lens, calibration_method;
@@ -159,6 +162,11 @@ struct FieldReport {
   // The traces, pieces stored from different pairs joined into one (label
   // "T1+T4", points ordered along it): label, points.
   std::vector<std::pair<std::string, std::vector<Eigen::Vector3d>>> traces;
+  // Per trace, the index of its set in `sets` (-1: none): the set of the
+  // joint the geologist assigned it to (its first piece's), else, when the
+  // sets are clustered from the planes measured on the face, the cluster of
+  // its own plane. What the browser's 3D face colours each trace by.
+  std::vector<int> trace_sets;
   // How the stored traces came (issue 25): tapped by hand, proposals
   // accepted as found, proposals corrected by least-cost tracing.
   int traces_by_hand = 0, traces_proposed = 0, traces_corrected = 0;

@@ -15,6 +15,7 @@
 #include "storage/field_report/dynamics_picture.h"
 #include "storage/field_report/field_report_pictures.h"
 #include "storage/field_report/table_layout.h"
+#include "storage/project/visit_geologist.h"
 
 namespace rockface::storage {
 
@@ -528,6 +529,8 @@ void write_field_report_pdf(const FieldReport& r, const std::filesystem::path& f
   pdf.title("Field report: " + r.project_name);
   pdf.line("visit " + std::to_string(r.visit_id) + ", started " + r.visit_started_at + " (" +
            file_names_only(r.visit_source) + ")");
+  // Who mapped it (issue 46), said also when nobody was named.
+  pdf.line("geologist: " + r.visit_geologist.value_or(kGeologistNotRecorded));
   pdf.line("project " + std::filesystem::path(r.project_file).filename().string() + "; datum E " +
            report_number(r.datum.x(), 3) + ", N " + report_number(r.datum.y(), 3) + ", Z " +
            report_number(r.datum.z(), 3));

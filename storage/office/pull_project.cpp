@@ -29,14 +29,17 @@ using nlohmann::json;
 
 class ProjectWriter {
  public:
+  // `visit_ids`: the id each visit takes (by uuid), when not its own.
   ProjectWriter(sqlite::Connection& db, BlobSpool& blobs, bool keep_ids, const PullOptions& options,
-                PullResult& result, Progress& progress)
+                PullResult& result, Progress& progress,
+                std::map<std::string, std::int64_t> visit_ids = {})
       : db_(db),
         blobs_(blobs),
         keep_ids_(keep_ids),
         options_(options),
         result_(result),
-        progress_(progress) {}
+        progress_(progress),
+        visit_ids_(std::move(visit_ids)) {}
 
   // Inserts one record (and its children); returns its row id.
   void insert(const ServerRecord& rec) {
@@ -69,7 +72,10 @@ class ProjectWriter {
     // The record keeps its UUID (the body holds it as its key, not a column).
     json with_uuid = row;
     if (has_column(rec.kind, "uuid")) with_uuid["uuid"] = rec.uuid;
-    const std::int64_t rowid = insert_row(rec.kind, with_uuid, where, keep_ids_ ? rec.local_id : 0);
+    std::int64_t keep_id = keep_ids_ ? rec.local_id : 0;
+    if (rec.kind == "visit")
+      if (const auto it = visit_ids_.find(rec.uuid); it != visit_ids_.end()) keep_id = it->second;
+    const std::int64_t rowid = insert_row(rec.kind, with_uuid, where, keep_id);
     ids_[{rec.kind, rec.uuid}] = key_of(rec.kind, "id", rowid);
     if (rec.kind == "visit_placement")
       ids_[{rec.kind, rec.uuid}] = key_of(rec.kind, "visit_id", rowid);
@@ -233,6 +239,7 @@ class ProjectWriter {
   PullOptions options_;
   PullResult& result_;
   Progress& progress_;
+  std::map<std::string, std::int64_t> visit_ids_;
   std::map<std::pair<std::string, std::string>, std::int64_t> ids_;  // (kind, uuid) -> key
   std::map<std::string, std::int64_t> images_;                       // sha/format -> row
   std::map<std::string, std::vector<ForeignKey>> fks_;
@@ -388,6 +395,8 @@ PullRead read_pull(Connection& server, const std::string& tunnel_name, const fs:
     result.projects = static_cast<int>(tunnel.projects.size());
     result.visits = static_cast<int>(tunnel.visits.size());
     read.keep_ids = tunnel.projects.size() == 1;
+    if (!options.visits.empty())
+      read.drive_visits = read_drive_visits(server, tunnel, read.keep_ids);
     result.warnings = tunnel_disagreements(records, tunnel, read.base.project_uuid);
 
     // The order records go in: kinds in dependency order; visits in the
@@ -461,7 +470,12 @@ PullResult build_pulled_project(PullRead& read, Progress& progress) {
           st.bind_null(1);
         st.step();
       }
-      ProjectWriter writer(db, *read.blobs, read.keep_ids, read.options, result, progress);
+      // A copy of some visits numbers them as a pull of the whole tunnel
+      // does: a round's "face of visit N" reads the same in both.
+      std::map<std::string, std::int64_t> visit_ids;
+      for (const ServerDriveVisit& v : read.drive_visits) visit_ids[v.uuid] = v.pulled_id;
+      ProjectWriter writer(db, *read.blobs, read.keep_ids, read.options, result, progress,
+                           std::move(visit_ids));
       for (std::size_t i = 0; i < records.size(); ++i) {
         const ServerRecord& r = records[i];
         if (r.kind == "project") continue;

@@ -38,11 +38,12 @@ struct PullResult {
 // over- and underbreak are measured on them).
 //
 // A copy for the office's visit pages (issue 46) holds the visits it names
-// and what their pages show of the tunnel (server_records.h's
-// read_visit_records): the whole drive's visits and placements, none of
-// the other visits' photographs, 3D images, joints or analyses. Its
-// photographs may stay on the server too: a page fetches each one when it
-// is shown (server_blobs.h).
+// and the project-level records (server_records.h's read_visit_records):
+// none of the other visits' records, each named visit under the id a pull
+// of the whole tunnel gives it. What the pages show of the rest of the
+// drive (where a round starts) is read beside it (PullRead::drive_visits).
+// Its photographs may stay on the server too: a page fetches each one when
+// it is shown (server_blobs.h).
 //
 // A copy for figures already kept (the rounds' over- and underbreak,
 // round_figures.h) needs no mesh either: each model row keeps its
@@ -80,6 +81,9 @@ struct PullRead {
   ServerRecord base;                  // the project row every tablet agrees on
   bool keep_ids = false;
   std::unique_ptr<BlobSpool> blobs;
+  // A copy of some visits (PullOptions::visits): every live visit of the
+  // drive without its records (server_records.h), in the same snapshot.
+  std::vector<ServerDriveVisit> drive_visits;
 };
 PullRead read_pull(Connection& server, const std::string& tunnel, const std::filesystem::path& out,
                    Progress& progress, const PullOptions& options = {});

@@ -69,6 +69,14 @@ const std::vector<RecordKind>& record_kinds() {
        "t.visit_id",
        {},
        {}},
+      // The geologist who mapped a visit (issue 46), one per visit with a
+      // name; a name taken away is deleted here, as a record.
+      {"visit_geologist",
+       "(SELECT v.uuid FROM visit v WHERE v.id = t.visit_id)",
+       "t.visit_id",
+       "t.visit_id",
+       {},
+       {}},
       // A visit's support decisions (issue 44), every revision.
       {"support_decision", "t.uuid", "t.visit_id", "t.id", {}, {}},
       {"action_log", "t.uuid", "t.visit_id", "t.id", {}, {}},

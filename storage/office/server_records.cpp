@@ -1,5 +1,6 @@
 #include "storage/office/server_records.h"
 
+#include <cstdlib>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -109,9 +110,7 @@ std::vector<ServerRecord> latest_records(Connection& c, const std::string& where
 std::vector<ServerRecord> read_visit_records(Connection& c, std::int64_t tunnel_id,
                                              const std::vector<std::string>& visit_uuids) {
   std::vector<ServerRecord> out =
-      latest_records(c,
-                     "visit_uuid IS NULL OR visit_uuid = ANY($2::uuid[]) OR kind IN ('visit', "
-                     "'visit_placement', 'visit_heading')",
+      latest_records(c, "visit_uuid IS NULL OR visit_uuid = ANY($2::uuid[])",
                      {Param::of(tunnel_id), Param::of(text_array(visit_uuids))});
   std::set<std::string> have;
   for (const ServerRecord& r : out) have.insert(r.uuid);
@@ -128,6 +127,45 @@ std::vector<ServerRecord> read_visit_records(Connection& c, std::int64_t tunnel_
                            {Param::of(tunnel_id), Param::of(text_array(missing))});
     for (const ServerRecord& r : added) have.insert(r.uuid);
     out.insert(out.end(), added.begin(), added.end());
+  }
+  return out;
+}
+
+std::vector<ServerDriveVisit> read_drive_visits(Connection& c, const ServerTunnel& tunnel,
+                                                bool keep_ids) {
+  // The three kinds' latest revisions, only the fields the round needs:
+  // no record body crosses the connection whole.
+  const Result r = c.query(
+      "SELECT kind, visit_uuid::text, body->'row'->>'started_at', body->'row'->>'chainage', "
+      "body->'row'->>'heading' FROM (SELECT DISTINCT ON (kind, uuid) kind, uuid, visit_uuid, "
+      "deleted, body FROM rockface.record WHERE tunnel_id = $1 AND kind IN ('visit', "
+      "'visit_placement', 'visit_heading') ORDER BY kind, uuid, revision DESC) latest WHERE NOT "
+      "deleted",
+      {Param::of(tunnel.id)}, "reading the drive's visits");
+  std::map<std::string, ServerDriveVisit> live;
+  std::map<std::string, double> chainage;
+  std::map<std::string, std::string> heading;
+  for (int i = 0; i < r.rows(); ++i) {
+    if (r.is_null(i, 1)) continue;
+    const std::string kind = r.text(i, 0), visit = r.text(i, 1);
+    if (kind == "visit")
+      live[visit].started_at = r.is_null(i, 2) ? "" : r.text(i, 2);
+    else if (kind == "visit_placement" && !r.is_null(i, 3))
+      chainage[visit] = std::strtod(r.text(i, 3).c_str(), nullptr);
+    else if (kind == "visit_heading" && !r.is_null(i, 4))
+      heading[visit] = r.text(i, 4);
+  }
+  // The server's order, as a pull inserts the visits.
+  std::vector<ServerDriveVisit> out;
+  for (const ServerVisit& v : tunnel.visits) {
+    const auto it = live.find(v.uuid);
+    if (it == live.end()) continue;
+    ServerDriveVisit d = it->second;
+    d.uuid = v.uuid;
+    d.pulled_id = keep_ids ? v.local_id : static_cast<std::int64_t>(out.size() + 1);
+    if (const auto ch = chainage.find(v.uuid); ch != chainage.end()) d.chainage = ch->second;
+    if (const auto h = heading.find(v.uuid); h != heading.end()) d.heading = h->second;
+    out.push_back(std::move(d));
   }
   return out;
 }

@@ -48,11 +48,27 @@ std::vector<ServerRecord> read_current_records(Connection& c, std::int64_t tunne
 // The latest revision of the records a page of some visits needs (the
 // office's visit pages, issue 46): every record of those visits, the
 // project-level records (the tunnel, its design, cameras, calibrations),
-// every visit, placement and heading record (the drive's order; a round
-// starts at the previous face of its heading), and whatever these refer to in other
-// visits (a texture taken by an earlier visit, a photograph two visits
-// share) — not the other visits' photographs, models, joints or analyses.
+// and whatever these refer to in other visits (a texture taken by an
+// earlier visit, a photograph two visits share) — not the other visits'
+// records. What a page shows of the rest of the drive (where its round
+// starts: the previous face of its heading) comes from read_drive_visits.
 std::vector<ServerRecord> read_visit_records(Connection& c, std::int64_t tunnel_id,
                                              const std::vector<std::string>& visit_uuids);
+
+// A visit of the drive as a round's start is read from it
+// (firmware-app/tunnel/round_start.h), without its records: the id a pull
+// of the whole tunnel gives it, its start as stored, its stored
+// placement's chainage and its heading.
+struct ServerDriveVisit {
+  std::string uuid, started_at;
+  std::int64_t pulled_id = 0;
+  std::optional<double> chainage;  // none: no placement stored
+  std::string heading;             // "" none
+};
+// Every live visit of `tunnel` (read_server_tunnel), in the server's order.
+// `keep_ids`: a pull keeps the tablet's ids (one project synced the
+// tunnel); otherwise it numbers the live visits 1, 2, ... in that order.
+std::vector<ServerDriveVisit> read_drive_visits(Connection& c, const ServerTunnel& tunnel,
+                                                bool keep_ids);
 
 }  // namespace rockface::storage::office

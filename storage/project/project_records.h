@@ -43,6 +43,9 @@ struct Visit {
   std::string started_at;
   std::string source;  // what started it: "tablet", "replay DIR", ...
   std::string note;
+  // The geologist who mapped it (schema 13, storage/project/visit_geologist.h);
+  // none for a visit of an older project or one nobody named.
+  std::optional<std::string> geologist;
 };
 
 struct CameraBody {

@@ -516,14 +516,27 @@ CREATE TABLE IF NOT EXISTS visit_heading (
 CREATE INDEX IF NOT EXISTS analysis_by_visit ON analysis(visit_id);
 )sql";
 
+// Version 13: the geologist who mapped a visit (issue 46: the office's drive
+// lists "every visit (date, tablet, geologist)"), by name, as typed on the
+// tablet or given to the command line (storage/project/visit_geologist.h).
+// A table of its own, one row per visit with a geologist: a visit of an
+// earlier project has none ("not recorded", never an empty name), and the
+// visit rows already on the office server stay as they were.
+constexpr const char* kVersion12To13 = R"sql(
+CREATE TABLE IF NOT EXISTS visit_geologist (
+  visit_id INTEGER PRIMARY KEY REFERENCES visit(id),
+  geologist TEXT NOT NULL CHECK (geologist <> '')
+);
+)sql";
+
 struct Step {
   int to_version;
   const char* sql;
 };
-constexpr Step kSteps[] = {{2, kVersion1To2},    {3, kVersion2To3},   {4, kVersion3To4},
-                           {5, kVersion4To5},    {6, kVersion5To6},   {7, kVersion6To7},
-                           {8, kVersion7To8},    {9, kVersion8To9},   {10, kVersion9To10},
-                           {11, kVersion10To11}, {12, kVersion11To12}};
+constexpr Step kSteps[] = {{2, kVersion1To2},    {3, kVersion2To3},    {4, kVersion3To4},
+                           {5, kVersion4To5},    {6, kVersion5To6},    {7, kVersion6To7},
+                           {8, kVersion7To8},    {9, kVersion8To9},    {10, kVersion9To10},
+                           {11, kVersion10To11}, {12, kVersion11To12}, {13, kVersion12To13}};
 
 }  // namespace
 

@@ -27,6 +27,8 @@
 //  12  the heading a visit was taken at (issue 46): a tunnel driven from
 //      more than one face (storage/tunnel/visit_heading.h); an index of the
 //      analyses by visit.
+//  13  the geologist who mapped a visit (issue 46), by name
+//      (storage/project/visit_geologist.h).
 #include <cstdint>
 
 #include "storage/project/project_sqlite.h"
@@ -35,7 +37,7 @@ namespace rockface::storage::schema {
 
 // "RocF": PRAGMA application_id of every rockface project file.
 constexpr std::int32_t kApplicationId = 0x526F6346;
-constexpr int kCurrentVersion = 12;
+constexpr int kCurrentVersion = 13;
 
 // Creates the version-1 layout in an empty database, sets application_id and
 // user_version = 1, in one transaction. New projects start here and are then

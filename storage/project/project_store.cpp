@@ -16,6 +16,7 @@
 #include "core/common/number_format.h"
 #include "storage/project/project_schema.h"
 #include "storage/project/project_store_rows.h"
+#include "storage/project/visit_geologist.h"
 
 namespace rockface::storage {
 
@@ -387,8 +388,10 @@ void ProjectStore::in_one_transaction(const std::string& doing, const std::funct
   tx.commit();
 }
 
-RecordId ProjectStore::begin_visit(const std::string& source, const std::string& note) {
+RecordId ProjectStore::begin_visit(const std::string& source, const std::string& note,
+                                   const std::string& geologist) {
   const std::string doing = "starting a visit";
+  const std::string name = checked_geologist(geologist, "geologist");
   require_writable(doing);
   WriteTransaction tx(db_, doing);
   Statement st(db_, "INSERT INTO visit (started_at, source, note) VALUES (?, ?, ?)", doing);
@@ -396,12 +399,16 @@ RecordId ProjectStore::begin_visit(const std::string& source, const std::string&
   st.run();
   const RecordId id = db_.last_insert_id();
   insert_log(id, "visit started", source);
+  if (!name.empty()) put_visit_geologist(id, name, doing);
   tx.commit();
   return id;
 }
 
 std::vector<Visit> ProjectStore::list_visits() {
-  Statement st(db_, "SELECT id, started_at, source, note FROM visit ORDER BY id", "listing visits");
+  Statement st(db_,
+               "SELECT v.id, v.started_at, v.source, v.note, g.geologist FROM visit v "
+               "LEFT JOIN visit_geologist g ON g.visit_id = v.id ORDER BY v.id",
+               "listing visits");
   std::vector<Visit> out;
   while (st.step()) {
     RowReader row(st);
@@ -410,6 +417,7 @@ std::vector<Visit> ProjectStore::list_visits() {
     v.started_at = row.next_text();
     v.source = row.next_text();
     v.note = row.next_text();
+    if (!st.is_null(4)) v.geologist = st.column_text(4);
   }
   return out;
 }

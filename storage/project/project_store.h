@@ -92,8 +92,17 @@ class ProjectStore {
   // leaves the project as it was).
   void in_one_transaction(const std::string& doing, const std::function<void()>& body);
 
-  // A new visit every call (running replay twice gives two visits).
-  RecordId begin_visit(const std::string& source, const std::string& note = {});
+  // A new visit every call (running replay twice gives two visits), with
+  // the geologist who maps it ("" none; checked_geologist, InputError naming
+  // "geologist" before anything is stored).
+  RecordId begin_visit(const std::string& source, const std::string& note = {},
+                       const std::string& geologist = {});
+  // Names the geologist who mapped a visit ("" takes the name away; the
+  // name checked as begin_visit's). InputError naming the visit for an
+  // unknown one.
+  void save_visit_geologist(RecordId visit_id, const std::string& geologist);
+  // None when the visit has no geologist.
+  std::optional<std::string> load_visit_geologist(RecordId visit_id);
   std::vector<Visit> list_visits();
   std::optional<RecordId> latest_visit();
 
@@ -212,6 +221,9 @@ class ProjectStore {
   RecordId insert_log(std::optional<RecordId> visit_id, const std::string& action,
                       const std::string& detail);
   RecordId store_image(const ImageBlob& image, const std::string& where);
+  // Inside the caller's write transaction: the visit's geologist row
+  // (a checked, non-empty name) and its log line.
+  void put_visit_geologist(RecordId visit_id, const std::string& name, const std::string& doing);
 
   std::filesystem::path file_;
   sqlite::Connection db_;

@@ -8,6 +8,7 @@
 
 #include "core/common/error.h"
 #include "storage/json_reader.h"
+#include "storage/project/visit_geologist.h"
 #include "storage/tunnel/visit_heading.h"
 
 namespace rockface::storage {
@@ -38,7 +39,7 @@ VisitFile parse_visit_file(const std::string& text, const std::string& path) {
   const Reader r(path);
   r.only_fields(doc, "",
                 {"format", "range_pole_m", "compass", "control_points", "baseline_m", "preset",
-                 "heading", "note"});
+                 "heading", "geologist", "note"});
   if (r.string(r.require(doc, "", "format"), "format") != "rockface-visit/1")
     r.fail("format", "must be \"rockface-visit/1\"");
   VisitFile out;
@@ -69,6 +70,8 @@ VisitFile parse_visit_file(const std::string& text, const std::string& path) {
     out.preset = parse_preset(r.string(*v, "preset"), r.where("preset"));
   if (const json* v = r.optional(doc, "", "heading"))
     out.heading = checked_heading(r.string(*v, "heading"), r.where("heading"));
+  if (const json* v = r.optional(doc, "", "geologist"))
+    out.geologist = checked_geologist(r.string(*v, "geologist"), r.where("geologist"));
   if (const json* v = r.optional(doc, "", "note")) out.note = r.string(*v, "note");
   return out;
 }

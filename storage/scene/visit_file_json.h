@@ -13,6 +13,7 @@
 //    "preset": "standard",
 //    "heading": "North portal",       (the face of a tunnel driven from more than one,
 //                                       storage/tunnel/visit_heading.h)
+//    "geologist": "Anna Berger",      (who mapped the visit, storage/project/visit_geologist.h)
 //    "note": "round 112"}
 #include <array>
 #include <optional>
@@ -32,7 +33,8 @@ struct VisitFile {
   std::string control_points;  // a path, made absolute against the visit file's folder
   std::optional<double> baseline_m;
   std::optional<Preset> preset;
-  std::string heading;  // "" none
+  std::string heading;    // "" none
+  std::string geologist;  // "" none
   std::string note;
 };
 

@@ -4,6 +4,7 @@
 // translation) as a DSLR on USB.
 #include "camera/gphoto2_camera.h"
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -13,6 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "camera/exif.h"
+#include "tests/support/temp_folders.h"
 
 namespace rockface::camera {
 namespace {
@@ -21,9 +23,11 @@ namespace fs = std::filesystem;
 constexpr const char* kDirectoryModel = "Directory Browse";
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("rockface-gphoto2-" + name);
+  const fs::path dir =
+      fs::temp_directory_path() / ("rockface-gphoto2-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  rockface::test::remove_when_passed(dir);
   return dir;
 }
 

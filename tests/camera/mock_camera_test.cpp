@@ -1,5 +1,6 @@
 #include "camera/mock_camera.h"
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 
@@ -11,6 +12,7 @@
 #include "camera/synthetic_renderer.h"
 #include "core/common/error.h"
 #include "tests/camera/test_scene.h"
+#include "tests/support/temp_folders.h"
 
 namespace rockface::camera {
 namespace {
@@ -18,9 +20,11 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("rockface-mock-" + name);
+  const fs::path dir =
+      fs::temp_directory_path() / ("rockface-mock-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  rockface::test::remove_when_passed(dir);
   return dir;
 }
 

@@ -160,8 +160,12 @@ struct Served {
     // A log of its own: an earlier server's line must not be read as this one's.
     static int count = 0;
     const fs::path log = folder() / ("serve-" + std::to_string(++count) + ".out");
-    const std::string binary =
-        other_binary.empty() ? std::string(ROCKFACE_BINARY_DIR) + "/rockface" : other_binary;
+    // ROCKFACE_OFFICE_BENCH_BINARY=FILE serves every benchmark with another
+    // build's rockface (a before / after of the same benchmark).
+    const char* named = std::getenv("ROCKFACE_OFFICE_BENCH_BINARY");
+    const std::string binary = !other_binary.empty() ? other_binary
+                               : named               ? std::string(named)
+                                       : std::string(ROCKFACE_BINARY_DIR) + "/rockface";
     const auto t0 = Clock::now();
     pid = ::fork();
     if (pid == 0) {

@@ -59,7 +59,7 @@ const Replayed& sample_round() {
     out.project = out.dir / "sample.rockface";
     NoProgress quiet;
     out.visit = app::replay_field_workflow(
-                    {scene.string(), out.project.string(), Preset::standard, {}, {}}, quiet)
+                    {scene.string(), out.project.string(), Preset::standard, {}, {}, {}}, quiet)
                     .visit_id;
     return out;
   }();

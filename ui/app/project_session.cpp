@@ -57,11 +57,23 @@ void ProjectSession::choose_pair(std::size_t index) {
   model_ = pairs_[index];
 }
 
-storage::RecordId ProjectSession::begin_visit() {
-  const storage::RecordId id = store_.begin_visit("tablet");
+storage::RecordId ProjectSession::begin_visit(const std::string& geologist) {
+  const storage::RecordId id = store_.begin_visit("tablet", {}, geologist);
   visits_ = store_.list_visits();
   choose_visit(id);
   return id;
+}
+
+std::optional<std::string> ProjectSession::visit_geologist() const {
+  for (const auto& v : visits_)
+    if (visit_ && v.id == *visit_) return v.geologist;
+  return std::nullopt;
+}
+
+void ProjectSession::name_geologist(const std::string& name) {
+  if (!visit_) throw InputError("geologist", "no visit is chosen");
+  store_.save_visit_geologist(*visit_, name);
+  visits_ = store_.list_visits();
 }
 
 void ProjectSession::refresh() {

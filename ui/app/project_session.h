@@ -39,8 +39,14 @@ class ProjectSession {
   const std::vector<storage::Visit>& visits() const { return visits_; }
   std::optional<storage::RecordId> visit() const { return visit_; }
   void choose_visit(storage::RecordId id);
-  // Starts a visit from the tablet (the project must be writable).
-  storage::RecordId begin_visit();
+  // Starts a visit from the tablet (the project must be writable), mapped
+  // by `geologist` ("" none: storage/project/visit_geologist.h).
+  storage::RecordId begin_visit(const std::string& geologist = {});
+  // The chosen visit's geologist; none when not recorded (or no visit).
+  std::optional<std::string> visit_geologist() const;
+  // Names the chosen visit's geologist ("" takes the name away); InputError
+  // for a name the store refuses, nothing stored then.
+  void name_geologist(const std::string& name);
 
   // Re-reads the lists of the current visit.
   void refresh();

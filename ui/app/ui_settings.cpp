@@ -8,6 +8,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "storage/project/visit_geologist.h"
 
 namespace rockface::ui {
 
@@ -33,6 +34,12 @@ UiSettings load_ui_settings(const std::filesystem::path& file) {
     if (!theme) throw InputError(file.string() + ": theme", "expected \"daylight\" or \"tunnel\"");
     settings.theme = *theme;
   }
+  if (j.contains("geologist")) {
+    if (!j["geologist"].is_string())
+      throw InputError(file.string() + ": geologist", "expected a name (text)");
+    settings.geologist = storage::checked_geologist(j["geologist"].get<std::string>(),
+                                                    file.string() + ": geologist");
+  }
   return settings;
 }
 
@@ -40,7 +47,9 @@ void save_ui_settings(const std::filesystem::path& file, const UiSettings& setti
   if (file.empty()) return;
   std::error_code ec;
   std::filesystem::create_directories(file.parent_path(), ec);
-  write_text_atomically(file, nlohmann::json{{"theme", theme_name(settings.theme)}}.dump(2) + "\n");
+  nlohmann::json j{{"theme", theme_name(settings.theme)}};
+  if (!settings.geologist.empty()) j["geologist"] = settings.geologist;
+  write_text_atomically(file, j.dump(2) + "\n");
 }
 
 }  // namespace rockface::ui

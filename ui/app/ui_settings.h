@@ -4,7 +4,9 @@
 // a colleague's tablet) and the light at one face says nothing about the
 // next user's; so it lives in a settings file of the tablet,
 // $XDG_CONFIG_HOME/rockface/ui.json (else ~/.config/rockface/ui.json),
-// `{"theme": "tunnel"}`.
+// `{"theme": "tunnel", "geologist": "Anna Berger"}`. The geologist who
+// carries the tablet is the tablet's too: each new visit begun on it takes
+// that name, whichever project it is in.
 #include <filesystem>
 #include <string>
 
@@ -14,6 +16,9 @@ namespace rockface::ui {
 
 struct UiSettings {
   Theme theme = Theme::daylight;
+  // The geologist who uses this tablet (issue 46): set once, carried to
+  // each new visit begun here; "" none (storage/project/visit_geologist.h).
+  std::string geologist;
 };
 
 // The tablet's settings file; empty when neither XDG_CONFIG_HOME nor HOME

@@ -8,6 +8,7 @@
 
 #include "ui/app/export_to_stick.h"
 #include "ui/app/screens.h"
+#include "ui/project/geologist_entry.h"
 #include "ui/project/import_picker.h"
 #include "ui/project/office_panel.h"
 #include "ui/project/tunnel_panel.h"
@@ -63,7 +64,7 @@ void draw_chooser(AppState& app) {
         app.options.projects_folder / (app.project.new_project_name + ".rockface");
     try {
       app.session = ProjectSession::create(file, app.project.new_project_name);
-      app.session->begin_visit();
+      app.session->begin_visit(app.settings.geologist);
       app.say("Created " + file.filename().string() + " with its first visit");
     } catch (const std::exception& e) {
       app.fail(e.what());
@@ -121,8 +122,8 @@ bool draw_project(AppState& app, ProjectSession& s) {
     app.screen = Screen::model;
   }
   if (app.targets.button_in_row("New visit", idle && !s.read_only())) {
-    s.begin_visit();
-    app.status_visit = s.visit();  // this message is about the new visit
+    s.begin_visit(app.settings.geologist);  // the tablet's geologist carried
+    app.status_visit = s.visit();           // this message is about the new visit
     app.say("Visit " + std::to_string(*s.visit()) + " started: take its stereo pair (Capture).");
   }
   // Closing loses an unsaved trace's taps and unstored shots: asked then.
@@ -186,6 +187,10 @@ void draw_project_screen(AppState& app) {
   ImGui::EndChild();
   if (closed) return;
   begin_side_panel("project tunnel and office", layout);
+  // The visit's geologist beside the visits, not under them: under them it
+  // left the visit's own line where no drag on the visits' panel brought it
+  // into view (tests/ui/app/text_walk_test.cpp walks every text into view).
+  if (s.visit()) draw_geologist_entry(app);
   draw_tunnel_panel(app);
   draw_office_panel(app);
   draw_import_picker(app);

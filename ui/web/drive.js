@@ -113,7 +113,8 @@ function strip(visits) {
   for (const v of placed) {
     const a = svg('a', { href: `#/visit/${encodeURIComponent(v.tunnel)}/${v.id}` });
     const mark = svg('rect', { x: x(v.chainage) - 3, y: 26, width: 6, height: 20, class: v.moving > 0 ? 'visit moving' : 'visit' });
-    mark.append(svg('title', { text: `${v.date}, ${v.tablet}, ${v.heading === '—' ? '' : `${v.heading}, `}ch ${v.chainage_text}, ${v.blocks} blocks, ${v.moving} move` }));
+    // Date, tablet and geologist first (issue 46); a title's text is text, never markup.
+    mark.append(svg('title', { text: `${v.date}, ${v.tablet}, geologist ${v.geologist}, ${v.heading === '—' ? '' : `${v.heading}, `}ch ${v.chainage_text}, ${v.blocks} blocks, ${v.moving} move` }));
     a.append(mark);
     g.append(a);
   }
@@ -148,7 +149,8 @@ async function draw(host, tunnel, filter, stamp) {
     t.points.length ? t.points[t.points.length - 1].text : '–', t.flags || '–', (t.events || []).join('; ') || '–']);
   const visitRows = d.visits.map((v) => [
     el('a', { href: `#/visit/${encodeURIComponent(tunnel)}/${v.id}`, text: v.date, className: 'visit-link' }),
-    v.chainage_text, v.heading, v.tablet, v.project, String(v.blocks), String(v.moving), v.largest_block, v.note || '']);
+    v.chainage_text, v.heading, v.tablet, v.project, String(v.blocks), String(v.moving), v.largest_block, v.note || '',
+    v.geologist]);
   host.replaceChildren(
     el('h1', { text: `Drive of ${tunnel}` }),
     filters,
@@ -159,7 +161,7 @@ async function draw(host, tunnel, filter, stamp) {
     section('Sets along the drive', table(['Set', 'Last seen (dip / dip direction ± α95)', 'Flags', 'Events'], setRows)),
     // The rounds arrive later and grow: below the visits, so that the list
     // a person is about to tap does not move under the finger.
-    section('Visits', table(['Date', 'Chainage', 'Heading', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note'], visitRows, 'visits')),
+    section('Visits', table(['Date', 'Chainage', 'Heading', 'Tablet', 'Project', 'Blocks', 'Blocks that move', 'Largest removable block', 'Note', 'Geologist'], visitRows, 'visits')),
     rounds);
   // The server answers the rounds at once and measures the rest in the
   // background: asked for every drive, however long.

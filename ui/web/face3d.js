@@ -59,22 +59,32 @@ export async function showFace(host, status, meshUrl, textureUrl, visit) {
   const face = new THREE.Mesh(geometry, material);
   scene.add(face);
 
+  // Each overlay carries what it shows in userData (trace or block, its
+  // label): with the scene kept on the host element (below), a test reads
+  // the colour each trace and block is drawn in.
   for (const t of visit.traces) {
     const g = new THREE.BufferGeometry().setFromPoints(t.points.map((p) => new THREE.Vector3(p[0], p[1], p[2])));
-    scene.add(new THREE.Line(g, new THREE.LineBasicMaterial({ color: setColour(t.set), linewidth: 2 })));
+    const line = new THREE.Line(g, new THREE.LineBasicMaterial({ color: setColour(t.set), linewidth: 2 }));
+    line.userData = { trace: t.label };
+    scene.add(line);
   }
   for (const b of visit.blocks) {
     const colour = verdictColours[b.verdict_kind] || '#888888';
     const pts = b.vertices.map((p) => new THREE.Vector3(p[0], p[1], p[2]));
+    let drawn = null;
     if (b.faces.length) {
       const positions = [];
       for (const f of b.faces)
         for (let i = 1; i + 1 < f.length; ++i) for (const k of [f[0], f[i], f[i + 1]]) positions.push(pts[k].x, pts[k].y, pts[k].z);
       const g = new THREE.BufferGeometry();
       g.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
-      scene.add(new THREE.Mesh(g, new THREE.MeshBasicMaterial({ color: colour, transparent: true, opacity: 0.45, side: THREE.DoubleSide })));
+      drawn = new THREE.Mesh(g, new THREE.MeshBasicMaterial({ color: colour, transparent: true, opacity: 0.45, side: THREE.DoubleSide }));
     } else if (pts.length > 1) {
-      scene.add(new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(pts), new THREE.LineBasicMaterial({ color: colour })));
+      drawn = new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(pts), new THREE.LineBasicMaterial({ color: colour }));
+    }
+    if (drawn) {
+      drawn.userData = { block: b.label };
+      scene.add(drawn);
     }
   }
 
@@ -143,5 +153,6 @@ export async function showFace(host, status, meshUrl, textureUrl, visit) {
   loop();
   const seconds = (performance.now() - started) / 1000;
   status.textContent = `${m.triangles} triangles, ${(buffer.byteLength / 1024).toFixed(1)} kB in ${seconds.toFixed(2)} s. Drag to turn, wheel to zoom, double-click two points to measure.`;
+  host.faceScene = scene;
   host.dataset.drawn = 'yes';
 }

@@ -22,7 +22,7 @@ export function stereonet(poles, sets) {
   }
   sets.forEach((s, i) => {
     const [x, y] = place(s.dip, s.dipdir);
-    g.append(svg('rect', { x: (x - 5).toFixed(1), y: (y - 5).toFixed(1), width: 10, height: 10, fill: 'none', stroke: setColour(i), 'stroke-width': 2 }));
+    g.append(svg('rect', { x: (x - 5).toFixed(1), y: (y - 5).toFixed(1), width: 10, height: 10, fill: 'none', stroke: setColour(i), 'stroke-width': 2, 'data-set': s.label }));
     g.append(svg('text', { x: (x + 7).toFixed(1), y: (y - 6).toFixed(1), class: 'axis', text: s.label }));
   });
   g.append(svg('text', { x: 4, y: 270, class: 'axis', text: 'poles, lower hemisphere, equal area' }));

@@ -3,8 +3,23 @@
 // after failure, the round in the tunnel, the wedges, the rock mass, the
 // support, the field report as PDF and the exports as downloads.
 import { get, url } from './api.js';
-import { el, table, section, lines } from './dom.js';
+import { el, svg, table, section, lines, setColour, verdictColours } from './dom.js';
 import { stereonet } from './stereonet.js';
+
+// The 3D face's legend: each set's colour (the stereonet's), traces of no
+// set, each verdict's colour, the range pole.
+function faceLegend(v) {
+  const item = (colour, text) => el('span', { className: 'legend-item' },
+    svg('svg', { viewBox: '0 0 12 12', width: 12, height: 12, 'aria-hidden': 'true' }, svg('rect', { x: 0, y: 0, width: 12, height: 12, fill: colour })),
+    el('span', { text }));
+  return el('p', { className: 'legend muted', id: 'face-legend' },
+    el('span', { text: 'Traces by set:' }),
+    ...v.sets.map((s, i) => item(setColour(i), s.label)),
+    item(setColour(-1), 'no set'),
+    el('span', { text: 'Blocks by verdict:' }),
+    ...['removable', 'keyed', 'infinite'].map((k) => item(verdictColours[k], k)),
+    v.pole ? item('#ff8c00', `range pole (${v.pole.length})`) : null);
+}
 
 export async function showVisit(host, tunnel, visitId) {
   host.replaceChildren(el('p', { className: 'muted', text: 'reading the visit…' }));
@@ -48,9 +63,10 @@ export async function showVisit(host, tunnel, visitId) {
   const parts = [
     el('h1', { text: `Visit of ${v.started_at}` }),
     el('p', { className: 'muted', text: `${v.project}; ${v.source}; camera ${v.camera || '–'}; preset ${v.preset || '–'}` }),
+    // Who mapped the visit (issue 46): text, whatever the name holds.
+    el('p', { id: 'visit-geologist', text: `Geologist: ${v.geologist || 'not recorded'}` }),
     el('p', { className: 'actions' }, report),
-    section('3D face', faceHost, faceStatus, v.has_face ? fullButton : null,
-      el('p', { className: 'muted', text: `Traces coloured by set; blocks red removable, green keyed, grey infinite${v.pole ? `; the range pole (${v.pole.length}) orange` : ''}.` })),
+    section('3D face', faceHost, faceStatus, v.has_face ? fullButton : null, faceLegend(v)),
     section('Photographs', photos),
     section('Accuracy', figures, lines(v.warnings)),
     section('Joint sets', el('div', { className: 'side' }, stereonet(v.poles, v.sets), sets)),

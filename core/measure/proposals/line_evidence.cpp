@@ -174,21 +174,43 @@ DarkLines find_dark_lines(const cv::Mat& grey, const cv::Mat& mask,
       cv::Sobel(g.rowRange(rows), dxx, CV_32F, 2, 0, 3, 0.25);
       cv::Sobel(g.rowRange(rows), dyy, CV_32F, 0, 2, 3, 0.25);
       cv::Sobel(g.rowRange(rows), dxy, CV_32F, 1, 1, 3, 0.25);
-      cv::Mat half_diff = 0.5 * (dxx - dyy), root;
-      cv::sqrt(half_diff.mul(half_diff) + dxy.mul(dxy), root);
-      // Largest Hessian eigenvalue: positive across a valley of brightness.
-      const cv::Mat response = (0.5 * (dxx + dyy) + root) * (sigma * sigma);
-      cv::Mat across;  // the eigenvector's angle, doubled
-      cv::phase(cv::Mat(dxx - dyy), cv::Mat(2 * dxy), across);
-      for (int r = rows.start; r < rows.end; ++r)
+      // Largest Hessian eigenvalue: positive across a valley of brightness;
+      // its eigenvector's angle, doubled. One pass over the derivatives,
+      // the angle by cv::phase a row at a time (issue 45: whole-stripe
+      // temporaries cost more than the arithmetic).
+      std::vector<float> diff(static_cast<std::size_t>(size.width)),
+          twice(static_cast<std::size_t>(size.width)),
+          response(static_cast<std::size_t>(size.width)),
+          across(static_cast<std::size_t>(size.width));
+      cv::Mat across_row(1, size.width, CV_32F, across.data());
+      const float scale = static_cast<float>(sigma * sigma);
+      for (int r = rows.start; r < rows.end; ++r) {
+        const int k = r - rows.start;
+        const float* xx = dxx.ptr<float>(k);
+        const float* yy = dyy.ptr<float>(k);
+        const float* xy = dxy.ptr<float>(k);
         for (int c = 0; c < size.width; ++c) {
-          const int k = r - rows.start;
-          if (response.at<float>(k, c) > best.at<float>(r, c)) {
-            best.at<float>(r, c) = response.at<float>(k, c);
-            angle.at<float>(r, c) = 0.5f * across.at<float>(k, c);
-            width.at<float>(r, c) = static_cast<float>(w);
+          const auto i = static_cast<std::size_t>(c);
+          const float half_diff = 0.5f * (xx[c] - yy[c]);
+          const float root = std::sqrt(half_diff * half_diff + xy[c] * xy[c]);
+          response[i] = (0.5f * (xx[c] + yy[c]) + root) * scale;
+          diff[i] = xx[c] - yy[c];
+          twice[i] = 2 * xy[c];
+        }
+        cv::phase(cv::Mat(1, size.width, CV_32F, diff.data()),
+                  cv::Mat(1, size.width, CV_32F, twice.data()), across_row);
+        float* b = best.ptr<float>(r);
+        float* a = angle.ptr<float>(r);
+        float* wd = width.ptr<float>(r);
+        for (int c = 0; c < size.width; ++c) {
+          const auto i = static_cast<std::size_t>(c);
+          if (response[i] > b[c]) {
+            b[c] = response[i];
+            a[c] = 0.5f * across[i];
+            wd[c] = static_cast<float>(w);
           }
         }
+      }
     });
   }
   const auto [median, noise] = robust_level(best, mask);
@@ -263,23 +285,26 @@ SurfaceImage draw_surface(const photogrammetry::SurfaceMesh& mesh, cv::Size size
     Eigen::Vector3d n, centre;
     return facing(t, n, centre);
   });
-  cv::Mat normals(size, CV_32FC3), points(size, CV_32FC3);
+  cv::Mat normals(size, CV_32FC3);
+  out.points.create(size, CV_32FC3);
   out.mask = cv::Mat(size, CV_8U);
-  cv::Mat weight(size, CV_32F), blurred_weight(size, CV_32F);
   for_row_stripes(size, [&](cv::Range rows) {
     // A triangle shows in a pixel or a few side by side: its values are
     // worked out once for a run of pixels.
     int last = -1;
     Eigen::Vector3d n, centre;
     cv::Vec3f last_normal, last_point;
-    for (int r = rows.start; r < rows.end; ++r)
+    for (int r = rows.start; r < rows.end; ++r) {
+      const int* index = shown.ptr<int>(r);
+      auto* normal = normals.ptr<cv::Vec3f>(r);
+      auto* point = out.points.ptr<cv::Vec3f>(r);
+      std::uint8_t* in = out.mask.ptr<std::uint8_t>(r);
       for (int c = 0; c < size.width; ++c) {
-        const int i = shown.at<int>(r, c);
+        const int i = index[c];
         if (i < 0) {
-          normals.at<cv::Vec3f>(r, c) = cv::Vec3f(0, 0, 0);
-          points.at<cv::Vec3f>(r, c) = cv::Vec3f(0, 0, 0);
-          out.mask.at<std::uint8_t>(r, c) = 0;
-          weight.at<float>(r, c) = 0;
+          normal[c] = cv::Vec3f(0, 0, 0);
+          point[c] = cv::Vec3f(0, 0, 0);
+          in[c] = 0;
           continue;
         }
         if (i != last) {
@@ -291,34 +316,39 @@ SurfaceImage draw_surface(const photogrammetry::SurfaceMesh& mesh, cv::Size size
                                  static_cast<float>(rel.z()));
           last = i;
         }
-        normals.at<cv::Vec3f>(r, c) = last_normal;
-        points.at<cv::Vec3f>(r, c) = last_point;
-        out.mask.at<std::uint8_t>(r, c) = 255;
-        weight.at<float>(r, c) = 1;  // the mask's 255 scaled by 1 / 255
+        normal[c] = last_normal;
+        point[c] = last_point;
+        in[c] = 255;
       }
+    }
   });
-  // Normalised convolution: smoothing does not pull in the zeros beyond
-  // the surface's edge.
+  // Only the normals are smoothed. Unit normals summed over the Gaussian
+  // are as long as the surface's share of it (less where they spread), so
+  // their length says how much surface is near: beyond the surface's edge
+  // the zeros are not pulled in, they only shorten the sum, which is
+  // normalised away (the normalised convolution without a weight image of
+  // its own). The points were smoothed too once; their one use is the side
+  // of a fold the normal turns to (find_folds), decided 2 x smoothing_px
+  // apart where the surface's own noise is millimetres: the drawn
+  // triangle's centre serves, and the two blurs (weight, points) were 4 of
+  // the 7 channels of the stage's costliest work (issue 45).
   out.normals.create(size, CV_32FC3);
-  out.points.create(size, CV_32FC3);
   for_row_stripes(size, [&](cv::Range rows) {
-    cv::Mat bw = blurred_weight.rowRange(rows), bn = out.normals.rowRange(rows),
-            bp = out.points.rowRange(rows);
-    cv::GaussianBlur(weight.rowRange(rows), bw, cv::Size(0, 0), smoothing_px);
+    cv::Mat bn = out.normals.rowRange(rows);
     cv::GaussianBlur(normals.rowRange(rows), bn, cv::Size(0, 0), smoothing_px);
-    cv::GaussianBlur(points.rowRange(rows), bp, cv::Size(0, 0), smoothing_px);
-    for (int r = rows.start; r < rows.end; ++r)
+    for (int r = rows.start; r < rows.end; ++r) {
+      auto* normal = out.normals.ptr<cv::Vec3f>(r);
       for (int c = 0; c < size.width; ++c) {
-        cv::Vec3f& n = out.normals.at<cv::Vec3f>(r, c);
-        const float w = blurred_weight.at<float>(r, c);
+        cv::Vec3f& n = normal[c];
         const float len = static_cast<float>(cv::norm(n));
-        if (w > 1e-3f && len > 1e-6f) {
+        // 1e-3: the share of surface below which the old weight image
+        // left a pixel without normal.
+        if (len > 1e-3f)
           n /= len;
-          out.points.at<cv::Vec3f>(r, c) /= w;
-        } else {
+        else
           n = cv::Vec3f(0, 0, 0);
-        }
       }
+    }
   });
   return out;
 }
@@ -331,18 +361,33 @@ Folds find_folds(const SurfaceImage& surface, const FoldSettings& settings) {
     cv::Sobel(surface.normals.rowRange(rows), gx, CV_32F, 1, 0, 3, 0.125);
     cv::Sobel(surface.normals.rowRange(rows), gy, CV_32F, 0, 1, 3, 0.125);
     // Structure tensor of the normal field: how fast, and across which
-    // direction, the normal turns.
-    std::vector<cv::Mat> x, y;
-    cv::split(gx, x);
-    cv::split(gy, y);
-    cv::Mat jxx = x[0].mul(x[0]) + x[1].mul(x[1]) + x[2].mul(x[2]);
-    cv::Mat jyy = y[0].mul(y[0]) + y[1].mul(y[1]) + y[2].mul(y[2]);
-    cv::Mat jxy = x[0].mul(y[0]) + x[1].mul(y[1]) + x[2].mul(y[2]);
-    cv::Mat half_diff = 0.5 * (jxx - jyy), root;
-    cv::Mat strength_rows = strength.rowRange(rows), across_rows = across.rowRange(rows);
-    cv::sqrt(half_diff.mul(half_diff) + jxy.mul(jxy), root);
-    cv::sqrt(cv::max(0.5 * (jxx + jyy) + root, 0.0), strength_rows);
-    cv::phase(cv::Mat(jxx - jyy), cv::Mat(2 * jxy), across_rows);
+    // direction, the normal turns. One pass over the gradients (issue 45:
+    // a dozen whole-stripe temporaries, each megabytes to fault in afresh,
+    // were most of the stage's CPU); the doubled angle by cv::phase a row
+    // at a time, as before.
+    std::vector<float> diff(static_cast<std::size_t>(size.width)),
+        twice(static_cast<std::size_t>(size.width));
+    for (int r = rows.start; r < rows.end; ++r) {
+      const int k = r - rows.start;
+      const auto* x = gx.ptr<cv::Vec3f>(k);
+      const auto* y = gy.ptr<cv::Vec3f>(k);
+      float* out_strength = strength.ptr<float>(r);
+      for (int c = 0; c < size.width; ++c) {
+        const cv::Vec3f& a = x[c];
+        const cv::Vec3f& b = y[c];
+        const float jxx = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+        const float jyy = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+        const float jxy = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        const float half_diff = 0.5f * (jxx - jyy);
+        const float root = std::sqrt(half_diff * half_diff + jxy * jxy);
+        out_strength[c] = std::sqrt(std::max(0.5f * (jxx + jyy) + root, 0.0f));
+        diff[static_cast<std::size_t>(c)] = jxx - jyy;
+        twice[static_cast<std::size_t>(c)] = 2 * jxy;
+      }
+      cv::Mat across_row = across.row(r);
+      cv::phase(cv::Mat(1, size.width, CV_32F, diff.data()),
+                cv::Mat(1, size.width, CV_32F, twice.data()), across_row);
+    }
   });
 
   // The two sides are read two smoothing widths out, where the smoothed

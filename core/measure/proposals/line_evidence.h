@@ -38,7 +38,7 @@ DarkLines find_dark_lines(const cv::Mat& grey, const cv::Mat& mask,
 // against the face) are left out, so the jump is a hole, not a fold.
 struct SurfaceImage {
   cv::Mat normals;  // CV_32FC3, smoothed over `smoothing_px`
-  cv::Mat points;   // CV_32FC3, mesh coordinates relative to `origin`
+  cv::Mat points;   // CV_32FC3, the drawn triangle's centre relative to `origin` (not smoothed)
   cv::Mat mask;     // CV_8U, 255 where a triangle was drawn
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 };

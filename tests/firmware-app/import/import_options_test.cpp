@@ -125,5 +125,21 @@ TEST(ImportOptions, OptionsThatGoTogetherAreRefusedAlone) {
   EXPECT_EQ(refusal_of(o), "--declination") << "a declination with no bearing";
 }
 
+// Issue 46: --geologist names the new visit's geologist, trimmed; a name
+// the store would refuse, or one given with --visit (an existing visit's
+// is named with `place --geologist`), is refused naming it.
+TEST(ImportOptions, GeologistNamesTheNewVisitsAndIsCheckedFirst) {
+  ImportOptions o = cloud();
+  o.geologist = " O'Brien <b> ";
+  EXPECT_EQ(import_request(o).geologist, "O'Brien <b>");
+  o.geologist = std::string(81, 'x');
+  std::string reason;
+  EXPECT_EQ(refusal_of(o, &reason), "--geologist") << "81 characters";
+  EXPECT_NE(reason.find("at most 80"), std::string::npos) << reason;
+  o.geologist = "Anna Berger";
+  o.visit = 7;
+  EXPECT_EQ(refusal_of(o), "--geologist") << "with --visit";
+}
+
 }  // namespace
 }  // namespace rockface::app

@@ -74,5 +74,19 @@ TEST(MeasureOptions, AddToVisitIsTheVisitMeasuredOnAndStandsAlone) {
   EXPECT_FALSE(measure_request(o).add_to_visit) << "--visit alone stores a new visit";
 }
 
+// Issue 46: --geologist names the new visit's geologist, trimmed; a name
+// the store would refuse, or one given with --add-to-visit (an existing
+// visit's is named with `place --geologist`), is refused naming it.
+TEST(MeasureOptions, GeologistNamesTheNewVisitsAndIsCheckedFirst) {
+  MeasureOptions o = on_a_project();
+  o.request.geologist = " O'Brien <b> ";
+  EXPECT_EQ(measure_request(o).geologist, "O'Brien <b>");
+  o.request.geologist = "Anna\nBerger";
+  EXPECT_EQ(refusal_of(o), "--geologist") << "two lines";
+  o.request.geologist = "Anna Berger";
+  o.add_to_visit = 4;
+  EXPECT_EQ(refusal_of(o), "--geologist") << "with --add-to-visit";
+}
+
 }  // namespace
 }  // namespace rockface::app

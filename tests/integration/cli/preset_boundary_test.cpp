@@ -2,6 +2,7 @@
 // name the same way (core/common/preset.h): exit code 2, the field named,
 // the valid names listed, nothing done. The scene file, then the verbs'
 // --preset.
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/cli_run.h"
+#include "tests/support/temp_folders.h"
 
 namespace {
 
@@ -22,8 +24,10 @@ using rockface::test::run_rockface;
 const std::string kValidNames = "(fast | standard | precise)";
 
 fs::path work_dir() {
-  const fs::path d = fs::temp_directory_path() / "rockface-preset-boundary";
+  const fs::path d =
+      fs::temp_directory_path() / ("rockface-preset-boundary-" + std::to_string(::getpid()));
   fs::create_directories(d);
+  rockface::test::remove_when_passed(d);
   return d;
 }
 

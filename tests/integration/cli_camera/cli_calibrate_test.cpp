@@ -1,5 +1,6 @@
 // `rockface calibrate` as a user runs it: the real binary on the OpenCV
 // chessboard images.
+#include <unistd.h>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include "storage/scene/camera_json.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/temp_folders.h"
 
 namespace {
 
@@ -29,8 +31,10 @@ std::string left_images(int count) {
 }
 
 fs::path out_dir() {
-  const fs::path d = fs::temp_directory_path() / "rockface-cli-calibrate";
+  const fs::path d =
+      fs::temp_directory_path() / ("rockface-cli-calibrate-" + std::to_string(::getpid()));
   fs::create_directories(d);
+  rockface::test::remove_when_passed(d);
   return d;
 }
 

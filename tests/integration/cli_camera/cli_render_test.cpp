@@ -1,5 +1,6 @@
 // `rockface render` as a user runs it: the real binary, a scene file, the
 // folder it writes.
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -11,6 +12,7 @@
 
 #include "storage/scene/camera_json.h"
 #include "tests/support/cli_run.h"
+#include "tests/support/temp_folders.h"
 
 namespace {
 
@@ -19,8 +21,10 @@ using nlohmann::json;
 using rockface::test::run_rockface;
 
 fs::path work_dir() {
-  const fs::path d = fs::temp_directory_path() / "rockface-cli-render";
+  const fs::path d =
+      fs::temp_directory_path() / ("rockface-cli-render-" + std::to_string(::getpid()));
   fs::create_directories(d);
+  rockface::test::remove_when_passed(d);
   return d;
 }
 

@@ -57,7 +57,9 @@ class ReportVerb : public ::testing::Test {
     fs::create_directories(*dir_);
     const auto replay =
         run_rockface("replay " + std::string(ROCKFACE_SOURCE_DIR) +
-                     "/tools/samples/tunnel-face-demo.scene.json --project " + project().string());
+                     "/tools/samples/tunnel-face-demo.scene.json --project " + project().string() +
+                     // Issue 46: the geologist who maps the visit.
+                     " --geologist 'Anna Berger'");
     ASSERT_EQ(replay.exit_code, 0) << replay.err;
     const auto report =
         run_rockface("report " + project().string() + " --visit 1 --out " + pdf().string());
@@ -278,4 +280,35 @@ TEST_F(ReportVerb, AVisitMadeByMeasureSaysWhatItDoesNotKnow) {
   // The visit's own report keeps every figure it has (the same project).
   EXPECT_NE(text().find("model scale "), std::string::npos);
   EXPECT_NE(text().find(" tie points, reprojection rms "), std::string::npos);
+}
+
+// Issue 46: the report names the geologist who mapped the visit: the one
+// `replay --geologist` gave; "not recorded" once `place --geologist ""`
+// took the name away; the one `measure --geologist` gave its new visit.
+TEST_F(ReportVerb, NamesTheGeologistWhoMappedTheVisit) {
+  EXPECT_NE(text().find("geologist: Anna Berger"), std::string::npos) << text();
+  const fs::path copy = *dir_ / "geologist.rockface";
+  fs::copy_file(project(), copy, fs::copy_options::overwrite_existing);
+  const auto unnamed = run_rockface("place " + copy.string() + " --visit 1 --geologist ''");
+  ASSERT_EQ(unnamed.exit_code, 0) << unnamed.err;
+  EXPECT_NE(unnamed.out.find("visit 1 geologist: not recorded"), std::string::npos) << unnamed.out;
+  const auto measured =
+      run_rockface("measure " + copy.string() + " --traces " + std::string(ROCKFACE_SOURCE_DIR) +
+                   "/tools/samples/tunnel-face-demo.picks.json --out " +
+                   (*dir_ / "g-measures.json").string() + " --geologist \"O'Brien <b>\"");
+  ASSERT_EQ(measured.exit_code, 0) << measured.err;
+  auto report_text = [&](int visit) {
+    const fs::path pdf = *dir_ / ("geologist-" + std::to_string(visit) + ".pdf");
+    const fs::path txt = *dir_ / ("geologist-" + std::to_string(visit) + ".txt");
+    const auto report = run_rockface("report " + copy.string() + " --visit " +
+                                     std::to_string(visit) + " --out " + pdf.string());
+    EXPECT_EQ(report.exit_code, 0) << report.err;
+    EXPECT_EQ(std::system(("pdftotext -layout " + pdf.string() + " " + txt.string()).c_str()), 0);
+    return slurp(txt);
+  };
+  const std::string first = report_text(1);
+  EXPECT_NE(first.find("geologist: not recorded"), std::string::npos) << first;
+  EXPECT_EQ(first.find("Anna Berger"), std::string::npos) << first;
+  const std::string second = report_text(2);
+  EXPECT_NE(second.find("geologist: O'Brien <b>"), std::string::npos) << second;
 }

@@ -26,6 +26,7 @@
 #include "storage/exchange/mesh_export.h"
 #include "storage/project/model_registration.h"
 #include "storage/project/project_store.h"
+#include "tests/integration/import/imported_view.h"
 #include "tests/support/cli_run.h"
 
 namespace {
@@ -186,18 +187,13 @@ TEST(ImportFace, FacetsMeasuredOnTheVirtualViewGiveTheWritersPlanes) {
   json picks = {{"format", "rockface-picks/1"}, {"areas", json::array()}};
   {
     auto store = rockface::storage::ProjectStore::open(project);
-    const Eigen::Vector3d datum = store.project().datum;
-    const auto model = store.load_model(store.list_models().back().id);
-    ASSERT_TRUE(model.camera_to_mesh);
-    const auto capture = store.load_capture(*model.texture_capture_id);
-    const auto K = store.load_calibration(*capture.calibration_id).intrinsics;
-    const Eigen::Matrix3d R = model.camera_to_mesh->R.transpose();  // world to camera
-    const Eigen::Vector3d centre = model.camera_to_mesh->t;
+    const auto view = rockface::test::newest_imported_view(store);
+    ASSERT_TRUE(view);
     for (const auto& f : w.truth["facets"]) {
       json polygon = json::array();
       for (const auto& p : f["polygon"]) {
-        const Eigen::Vector3d c = R * (vec(p) - datum - centre);
-        polygon.push_back({K.fx * c.x() / c.z() + K.cx, K.fy * c.y() / c.z() + K.cy});
+        const auto uv = view->pixel(vec(p));
+        polygon.push_back({uv[0], uv[1]});
       }
       picks["areas"].push_back({{"id", f["name"]}, {"photo", "left"}, {"polygon", polygon}});
     }

@@ -19,6 +19,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -145,6 +146,17 @@ std::optional<LocalVisit> visit_of(const std::string& uuid) {
   return std::nullopt;
 }
 
+// The geologist the tablet's project names for a visit; none when it
+// names none.
+std::optional<std::string> geologist(const LocalVisit& v) {
+  storage::sqlite::Connection db(v.file, storage::sqlite::Connection::Access::read_only);
+  storage::sqlite::Statement st(db, "SELECT geologist FROM visit_geologist WHERE visit_id = ?",
+                                "reading the visit's geologist");
+  st.bind(1, v.id);
+  if (!st.step()) return std::nullopt;
+  return st.column_text(0);
+}
+
 // Every row of `sql` (one column of doubles per row) on a visit's file,
 // the visit's id bound to each "?".
 std::vector<std::vector<double>> rows(const LocalVisit& v, const std::string& sql, int columns) {
@@ -246,12 +258,21 @@ struct Walk {
   int photograph_width = 0;  // the first photograph as the page shows it
   // The first photograph's width on the page before and after a click.
   double photograph_shown = 0, photograph_zoomed = 0;
-  json tunnels;     // the Tunnels page's rows
-  json visit_rows;  // the drive's visits: id, blocks that move, largest
+  json tunnels;      // the Tunnels page's rows
+  json visit_rows;   // the drive's visits: id, blocks that move, largest, geologist
+  json strip_marks;  // the visit strip's marks: visit id, its title's text
+  // The visit page's geologist line: its text, and whether it holds only
+  // text (no element made of the name's markup).
+  std::string visit_geologist;
+  bool visit_geologist_is_text = false;
   json stereonet;   // the poles and set means drawn, SVG units
   json rock_mass;   // the Rock mass section's lines (or its note)
   json measured;    // two double-clicks on the 3D face: status, points
   json block_rows;  // the visit's blocks table, each cell's text
+  // The 3D face's traces and blocks as three.js draws them (each one's
+  // label, material colour and vertices), the stereonet's set means'
+  // colours and the face's legend.
+  json face_overlays;
 };
 
 // Log in, open the drive of Main drive, open the visit with blocks, wait
@@ -263,7 +284,12 @@ Walk walk(const OfficeServer& server, int width, int height) {
   w.visit_rows = d.script(
       "return [...document.querySelectorAll('table.visits tbody tr')].map(r => ({id: "
       "r.querySelector('a.visit-link').getAttribute('href').split('/').pop(), moving: "
-      "r.cells[6].textContent, largest: r.cells[7].textContent}))");
+      "r.cells[6].textContent, largest: r.cells[7].textContent, geologist: r.cells[[...document."
+      "querySelectorAll('table.visits thead th')].findIndex(h => h.textContent === "
+      "'Geologist')]?.textContent}))");
+  w.strip_marks = d.script(
+      "return [...document.querySelectorAll('svg.strip a')].map(a => ({id: "
+      "a.getAttribute('href').split('/').pop(), title: a.querySelector('title').textContent}))");
   if (const char* keep = std::getenv("ROCKFACE_OFFICE_WEB_SHOTS"))
     cv::imwrite(std::string(keep) + "/drive-" + std::to_string(width) + ".png", d.screenshot());
   w.drive_text = d.script("return document.body.innerText").get<std::string>();
@@ -280,6 +306,13 @@ Walk walk(const OfficeServer& server, int width, int height) {
   d.wait_for("#face[data-drawn=yes]", std::chrono::seconds(60));
   w.visit_uuid = d.script("return location.hash.split('/').pop()").get<std::string>();
   w.visit_text = d.script("return document.body.innerText").get<std::string>();
+  {
+    const json g = d.script(
+        "const p = document.getElementById('visit-geologist'); return p ? [p.textContent, "
+        "p.children.length === 0] : ['', false]");
+    w.visit_geologist = g[0];
+    w.visit_geologist_is_text = g[1];
+  }
   w.block_rows = d.script(
       "return [...document.querySelectorAll('table.blocks tbody tr')].map(r => [...r.cells].map(c "
       "=> c.textContent))");
@@ -291,6 +324,16 @@ Walk walk(const OfficeServer& server, int width, int height) {
       "[Math.round(r.left), Math.round(r.top), Math.round(r.width), Math.round(r.height)]");
   const cv::Mat before = d.screenshot();
   w.face_drawn = drawn_fraction(before, rect);
+  w.face_overlays = d.script(
+      "const s = document.getElementById('face').faceScene; if (!s) return null; const colour = "
+      "(o) => '#' + o.material.color.getHexString(); const points = (o) => "
+      "Array.from(o.geometry.getAttribute('position').array); const drawn = (key) => "
+      "s.children.filter(o => o.userData[key] !== undefined).map(o => ({label: o.userData[key], "
+      "colour: colour(o), points: points(o)})); return {traces: drawn('trace'), blocks: "
+      "drawn('block'), sets: [...document.querySelectorAll('svg.stereonet rect[data-set]')].map(r "
+      "=> [r.getAttribute('data-set'), r.getAttribute('stroke')]), legend: "
+      "[...document.querySelectorAll('#face-legend .legend-item')].map(i => [i.textContent, "
+      "i.querySelector('rect').getAttribute('fill')])}");
   // The stereonet's poles and set means, and the rock mass sheet's lines.
   w.stereonet = d.script(
       "const s = document.querySelector('svg.stereonet'); if (!s) return null; return {poles: "
@@ -369,6 +412,120 @@ void expect_walk(const Walk& w, const std::string& name) {
   EXPECT_GT(w.photograph_width, 100) << name << ": the visit's photograph did not load";
 }
 
+// Every point of `drawn` (x y z ...) within `tolerance` of a point of
+// `truth` in each coordinate; false when `drawn` is empty.
+bool drawn_at(const json& drawn, const std::vector<Eigen::Vector3d>& truth, double tolerance) {
+  if (drawn.empty() || drawn.size() % 3 != 0) return false;
+  for (std::size_t i = 0; i < drawn.size(); i += 3) {
+    const Eigen::Vector3d p(drawn[i].get<double>(), drawn[i + 1].get<double>(),
+                            drawn[i + 2].get<double>());
+    const bool near = std::any_of(truth.begin(), truth.end(), [&](const Eigen::Vector3d& t) {
+      return (p - t).cwiseAbs().maxCoeff() <= tolerance;
+    });
+    if (!near) return false;
+  }
+  return true;
+}
+
+// The 3D face's "traces coloured by set, blocks by verdict" (issue 46): each
+// trace of the visit drawn once, where the tablet measured it, in the colour
+// the stereonet gives the set of the joint the geologist assigned it to on
+// the tablet (the legend's "no set" colour for a trace of no set); each
+// block of its latest analysis drawn once, where the tablet's analysis put
+// it, in the legend's colour of its verdict as the tablet stored it
+// (finite, removable). The truth is the tablet's own project.
+void expect_face_colours(const Walk& w, const truth::LocalVisit& visit, const std::string& name) {
+  const json& f = w.face_overlays;
+  ASSERT_TRUE(f.is_object()) << name << ": the 3D face's scene is not on the page";
+  std::map<std::string, std::string> set_colour, legend;
+  for (const auto& s : f["sets"]) set_colour[s[0].get<std::string>()] = s[1];
+  for (const auto& l : f["legend"]) legend[l[0].get<std::string>()] = l[1];
+  // The legend shows each set in the stereonet's colour.
+  for (const auto& [set, colour] : set_colour)
+    EXPECT_EQ(legend[set], colour) << name << ": set " << set << " in the legend";
+  ASSERT_TRUE(legend.count("no set")) << name << ": " << f["legend"].dump();
+
+  storage::OpenOptions read;
+  read.read_only = true;
+  storage::ProjectStore store = storage::ProjectStore::open(visit.file, read);
+  std::map<std::string, std::string> set_of_joint;
+  for (const auto& j : store.list_joints(visit.id)) set_of_joint[j.label] = j.set_label;
+  const Eigen::Vector3d centre = truth::face_centre(visit);
+  // The page sends points to the millimetre (office_pages.cpp), drawn as
+  // float32 a few tens of metres from the face's centre (1e-5 m at most).
+  constexpr double kPoint = 0.0005 + 1e-5;
+  std::set<std::string> set_colours_drawn;
+  int traces = 0, of_no_set = 0;
+  for (const auto& m : store.list_measurements(visit.id)) {
+    if (m.kind != storage::Measurement::Kind::trace) continue;
+    ++traces;
+    const auto set = set_of_joint.find(m.joint_label);
+    const std::string set_label = set == set_of_joint.end() ? std::string() : set->second;
+    const std::string expected = set_label.empty() ? legend["no set"] : set_colour[set_label];
+    ASSERT_FALSE(expected.empty()) << name << ": set " << set_label << " is not on the stereonet";
+    of_no_set += set_label.empty() ? 1 : 0;
+    if (!set_label.empty()) set_colours_drawn.insert(expected);
+    std::vector<Eigen::Vector3d> points;
+    for (const auto& p : m.points) points.push_back(p - centre);
+    int drawn = 0;
+    for (const auto& t : f["traces"]) {
+      if (t["label"] != m.label) continue;
+      ++drawn;
+      EXPECT_EQ(t["colour"], expected)
+          << name << ": trace " << m.label << " (set " << (set_label.empty() ? "none" : set_label)
+          << ") drawn in the wrong colour";
+      EXPECT_TRUE(drawn_at(t["points"], points, kPoint))
+          << name << ": trace " << m.label << " is not drawn where the tablet measured it";
+    }
+    EXPECT_EQ(drawn, 1) << name << ": trace " << m.label << " drawn " << drawn << " times";
+  }
+  EXPECT_EQ(f["traces"].size(), static_cast<std::size_t>(traces)) << name;
+  // The test data (tests/storage/office/tablet_projects.cpp) gives the
+  // walked visit traces of two sets and of none.
+  EXPECT_GE(set_colours_drawn.size(), 2u) << name << ": the visit's traces are of one set only";
+  EXPECT_GT(of_no_set, 0) << name;
+
+  const Eigen::Vector3d datum = store.project().datum;
+  storage::sqlite::Connection db(visit.file, storage::sqlite::Connection::Access::read_only);
+  storage::sqlite::Statement st(db,
+                                "SELECT label, finite, removable, report_json FROM block WHERE "
+                                "analysis_id = (SELECT max(id) FROM analysis WHERE visit_id = ?)",
+                                "reading the tablet's blocks");
+  st.bind(1, visit.id);
+  std::set<std::string> verdicts;
+  int blocks = 0;
+  while (st.step()) {
+    ++blocks;
+    const std::string label = st.column_text(0);
+    const std::string verdict = st.column_int(1) == 0   ? "infinite"
+                                : st.column_int(2) != 0 ? "removable"
+                                                        : "keyed";
+    verdicts.insert(verdict);
+    ASSERT_TRUE(legend.count(verdict)) << name << ": no " << verdict << " in the legend";
+    std::vector<Eigen::Vector3d> vertices;
+    // Stored absolute (the datum added) to 1e-5 m.
+    const json stored = json::parse(st.column_text(3));
+    for (const auto& v : stored["vertices"])
+      vertices.push_back(
+          Eigen::Vector3d(v[0].get<double>(), v[1].get<double>(), v[2].get<double>()) - datum -
+          centre);
+    int drawn = 0;
+    for (const auto& b : f["blocks"]) {
+      if (b["label"] != label) continue;
+      ++drawn;
+      EXPECT_EQ(b["colour"], legend[verdict])
+          << name << ": block " << label << " (" << verdict << ") drawn in the wrong colour";
+      EXPECT_TRUE(drawn_at(b["points"], vertices, kPoint + 1e-5))
+          << name << ": block " << label
+          << " is not drawn where the tablet's analysis put it: " << b["points"].dump()
+          << " against " << stored["vertices"].dump();
+    }
+    EXPECT_EQ(drawn, 1) << name << ": block " << label << " drawn " << drawn << " times";
+  }
+  EXPECT_EQ(f["blocks"].size(), static_cast<std::size_t>(blocks)) << name;
+  EXPECT_EQ(verdicts.size(), 3u) << name << ": the visit's blocks do not have every verdict";
+}
+
 // The bullets of the pages each checked against the synced tablets'
 // projects (namespace truth): the Tunnels page's last visit and drive
 // length, the drive's largest removable block and blocks that move, the
@@ -443,6 +600,41 @@ void expect_pages_against_the_synced_data(const Walk& w, const std::string& name
   }
   EXPECT_GT(with_blocks, 0) << name << ": no visit of the drive has a removable block";
 
+  // Issue 46: each visit's geologist, as the tablet's own project names it
+  // ("not recorded" where it names none), in the visits' table and in the
+  // title of its mark on the strip, as text (the site names one
+  // "O'Brien <b>"); and on the visit's page.
+  std::set<std::string> names_shown;
+  std::size_t marks_checked = 0;
+  for (const auto& row : w.visit_rows) {
+    const auto v = truth::visit_of(row["id"]);
+    ASSERT_TRUE(v) << name;
+    const std::string expected = truth::geologist(*v).value_or("not recorded");
+    const json shown = row.contains("geologist") ? row["geologist"] : json();
+    ASSERT_TRUE(shown.is_string()) << name << ": no Geologist column: " << row.dump();
+    EXPECT_EQ(shown, expected) << name << ": visit " << row["id"];
+    names_shown.insert(expected);
+    for (const auto& mark : w.strip_marks) {
+      if (mark["id"] != row["id"]) continue;
+      ++marks_checked;
+      EXPECT_NE(mark["title"].get<std::string>().find(", geologist " + expected + ","),
+                std::string::npos)
+          << name << ": the strip's mark of visit " << row["id"] << ": " << mark["title"];
+    }
+  }
+  EXPECT_EQ(names_shown, (std::set<std::string>{"O'Brien <b>", "Anna Berger", "not recorded"}))
+      << name << ": the site names two geologists and leaves a visit without";
+  // Every placed visit has its mark on the strip: the site's visits but
+  // tablet A's mapped face, which is not placed (office_site.cpp).
+  EXPECT_GE(marks_checked, 3u) << name << ": " << w.strip_marks.dump();
+  {
+    const auto walked = truth::visit_of(w.visit_uuid);
+    ASSERT_TRUE(walked) << name;
+    EXPECT_EQ(w.visit_geologist, "Geologist: " + truth::geologist(*walked).value_or("not recorded"))
+        << name;
+    EXPECT_TRUE(w.visit_geologist_is_text) << name << ": the name's markup became an element";
+  }
+
   const auto visit = truth::visit_of(w.visit_uuid);
   ASSERT_TRUE(visit) << name;
   // The stereonet: one pole per joint (the visit's sets are stored) or per
@@ -473,6 +665,12 @@ void expect_pages_against_the_synced_data(const Walk& w, const std::string& name
 
   // The blocks table against the tablet's own blocks of the visit.
   expect_blocks_table(w.block_rows, visit->file, visit->id, name);
+  // The test data (tablet_projects.cpp) gives a failing block its motion
+  // after failure: the column above is checked on a value, not only on "–".
+  EXPECT_TRUE(std::any_of(w.block_rows.begin(), w.block_rows.end(),
+                          [](const json& row) { return row.size() > 8 && row[8] != "–"; }))
+      << name << ": no block of the visit shows a motion after failure";
+  expect_face_colours(w, *visit, name);
 
   // The photograph zoomed by a click: at least half as wide again.
   EXPECT_GT(w.photograph_shown, 50) << name;
@@ -734,7 +932,13 @@ TEST(OfficeWebBrowser, TheRoundsTwoVisitsSideBySideAndTheReportsPictures) {
       d.script("return document.getElementById('face').dataset.pole || ''").get<std::string>(),
       "yes")
       << "the range pole is not drawn on the 3D face";
-  EXPECT_NE(text().find("the range pole (2.000 m) orange"), std::string::npos);
+  // The face's legend names it with its length, beside its orange swatch.
+  EXPECT_EQ(d.script("const i = [...document.querySelectorAll('#face-legend .legend-item')].find(i "
+                     "=> i.textContent === 'range pole (2.000 m)'); return i ? "
+                     "i.querySelector('rect').getAttribute('fill') : ''")
+                .get<std::string>(),
+            "#ff8c00")
+      << "the legend does not show the range pole";
 
   // The field report's pictures, as PNG: served for a visit whose report
   // has them, refused with the reason for one whose has not (the sample's

@@ -2,6 +2,13 @@
 // wrong password, a tablet's role, an office role of another tunnel, an
 // expired session, a forged cookie, a request from another site; the
 // security headers on every response; a stored script served as data.
+#include <arpa/inet.h>
+#include <ifaddrs.h>
+#include <net/if.h>
+#include <netinet/in.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <httplib.h>
 #include <nlohmann/json.hpp>
@@ -14,9 +21,12 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <vector>
 
+#include "firmware-app/office/web_server.h"
 #include "tests/integration/office_web/office_client.h"
 #include "tests/integration/office_web/office_site.h"
+#include "tests/support/test_paths.h"
 
 namespace rockface::office_web_test {
 namespace {
@@ -233,6 +243,28 @@ TEST(OfficeWebSecurity, GuessesAtARoleDoNotKeepItsOwnBrowserOut) {
             429);
 }
 
+// A self-signed certificate for `address` (an IP), made with openssl
+// (Debian: openssl); false when none was made.
+bool make_certificate(const std::filesystem::path& cert, const std::filesystem::path& key,
+                      const std::string& address) {
+  const std::string make =
+      "openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 1 "
+      "-subj /CN=" +
+      address + " -addext subjectAltName=IP:" + address + " -keyout '" + key.string() + "' -out '" +
+      cert.string() + "' 2>/dev/null";
+  return std::system(make.c_str()) == 0;
+}
+
+// The office reader's log-in over HTTPS, the server verified by `cert`.
+httplib::Result tls_log_in(httplib::SSLClient& c, const std::filesystem::path& cert,
+                           const std::string& origin) {
+  c.set_ca_cert_path(cert.c_str());
+  c.enable_server_certificate_verification(true);
+  return c.Post("/api/login", {{"Origin", origin}},
+                json{{"role", "office_reader"}, {"password", kOfficePassword}}.dump(),
+                "application/json");
+}
+
 // `office serve --tls`: a self-signed certificate for 127.0.0.1 made here
 // with openssl, a client that verifies it, the session's cookie Secure and
 // __Host- prefixed, HSTS on every answer, and no plain HTTP on that port.
@@ -241,20 +273,13 @@ TEST(OfficeWebSecurity, OverTlsTheCookieIsSecureAndHostOnly) {
   const fs::path dir = site().folder / "tls";
   fs::create_directories(dir);
   const fs::path cert = dir / "cert.pem", key = dir / "key.pem";
-  const std::string make =
-      "openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes -days 1 "
-      "-subj /CN=127.0.0.1 -addext subjectAltName=IP:127.0.0.1 -keyout '" +
-      key.string() + "' -out '" + cert.string() + "' 2>/dev/null";
-  ASSERT_EQ(std::system(make.c_str()), 0) << "openssl (Debian: openssl) made no certificate";
+  ASSERT_TRUE(make_certificate(cert, key, "127.0.0.1"))
+      << "openssl (Debian: openssl) made no certificate";
   OfficeServer server(site(), 30, {"--tls", cert.string() + "," + key.string()});
   const std::string origin = "https://127.0.0.1:" + std::to_string(server.port());
 
   httplib::SSLClient c("127.0.0.1", server.port());
-  c.set_ca_cert_path(cert.c_str());
-  c.enable_server_certificate_verification(true);
-  const auto r = c.Post("/api/login", {{"Origin", origin}},
-                        json{{"role", "office_reader"}, {"password", kOfficePassword}}.dump(),
-                        "application/json");
+  const auto r = tls_log_in(c, cert, origin);
   ASSERT_TRUE(r) << "the HTTPS request failed: " << httplib::to_string(r.error());
   ASSERT_EQ(r->status, 200) << r->body;
   const std::string set = r->get_header_value("Set-Cookie");
@@ -280,6 +305,94 @@ TEST(OfficeWebSecurity, OverTlsTheCookieIsSecureAndHostOnly) {
   plain.set_read_timeout(std::chrono::seconds(5));
   const auto p = plain.Get("/api/session");
   EXPECT_TRUE(!p || p->status >= 400) << "plain HTTP was answered " << (p ? p->status : 0);
+}
+
+// A non-loopback IPv4 address of this machine (an interface that is up),
+// or "" when it has none.
+std::string machine_address() {
+  ifaddrs* list = nullptr;
+  if (::getifaddrs(&list) != 0) return "";
+  std::string found;
+  for (ifaddrs* i = list; i && found.empty(); i = i->ifa_next) {
+    if (!i->ifa_addr || i->ifa_addr->sa_family != AF_INET || !(i->ifa_flags & IFF_UP) ||
+        (i->ifa_flags & IFF_LOOPBACK))
+      continue;
+    char text[INET_ADDRSTRLEN] = {};
+    const auto* in = reinterpret_cast<const sockaddr_in*>(i->ifa_addr);
+    if (::inet_ntop(AF_INET, &in->sin_addr, text, sizeof text)) found = text;
+  }
+  ::freeifaddrs(list);
+  return found;
+}
+
+// `office serve --listen ADDR:PORT` serves plain HTTP on a loopback address
+// only (a reverse proxy speaking TLS in front of it); anywhere else it
+// wants --tls (firmware-app/office/web_server.h): it refuses to start,
+// naming both options, before it listens.
+TEST(OfficeWebSecurity, PlainHttpIsServedOnALoopbackAddressOnly) {
+  // What counts as loopback: addresses as written, never a name that might
+  // resolve elsewhere.
+  for (const char* loopback : {"127.0.0.1", "127.0.0.2", "127.255.255.254", "::1", "[::1]",
+                               "::ffff:127.0.0.1", "localhost"})
+    EXPECT_TRUE(app::is_loopback_address(loopback)) << loopback;
+  for (const char* other :
+       {"0.0.0.0", "::", "[::]", "192.0.2.2", "10.0.0.1", "128.0.0.1", "::ffff:192.0.2.2",
+        "127.example.org", "127.0.0.1.example.org", "localhost.example.org", "", "[::1"})
+    EXPECT_FALSE(app::is_loopback_address(other)) << other;
+
+  // The verb refuses those without --tls. A server that started anyway is
+  // stopped by `timeout` (exit 124).
+  const fs::path dir = site().folder / ("plain-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  for (const std::string& listen :
+       std::vector<std::string>{"0.0.0.0:0", "[::]:0", "192.0.2.77:8046", "127.example.org:0",
+                                machine_address() + ":0"}) {
+    if (listen == ":0") continue;  // no address of this machine but loopback
+    const std::string out = (dir / "out.txt").string(), err = (dir / "err.txt").string();
+    const std::string command = "timeout 30 " + std::string(ROCKFACE_BINARY_DIR) +
+                                "/rockface office serve '" + site().server + "' --listen '" +
+                                listen + "' --work '" + dir.string() + "' >" + out + " 2>" + err;
+    const int status = std::system(command.c_str());
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream in(err);
+    const std::string said((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(code, 124) << listen << ": it served plain HTTP off loopback";
+    EXPECT_NE(code, 0) << listen;
+    EXPECT_NE(said.find("--listen"), std::string::npos) << listen << ": " << said;
+    EXPECT_NE(said.find("--tls CERT,KEY"), std::string::npos) << listen << ": " << said;
+    EXPECT_NE(said.find("loopback"), std::string::npos) << listen << ": " << said;
+  }
+
+  // Another loopback address is served plain, as 127.0.0.1 is (every other
+  // test): a log-in there answers, its cookie not marked Secure (a browser
+  // would not send it back over plain HTTP).
+  {
+    OfficeServer server(site(), 30, {}, "127.0.0.2:0");
+    httplib::Client c("127.0.0.2", server.port());
+    const Login office = log_in(c, "http://127.0.0.2:" + std::to_string(server.port()),
+                                "office_reader", kOfficePassword);
+    ASSERT_EQ(office.status, 200) << office.error;
+    EXPECT_EQ(office.set_cookie.find("Secure"), std::string::npos) << office.set_cookie;
+  }
+
+  // With --tls it serves off loopback: on this machine's own address, its
+  // session cookie Secure.
+  const std::string address = machine_address();
+  if (address.empty()) GTEST_SKIP() << "this machine has no address but loopback";
+  const fs::path cert = dir / "cert.pem", key = dir / "key.pem";
+  ASSERT_TRUE(make_certificate(cert, key, address))
+      << "openssl (Debian: openssl) made no certificate";
+  OfficeServer server(site(), 30, {"--tls", cert.string() + "," + key.string()}, address + ":0");
+  httplib::SSLClient c(address, server.port());
+  const auto r = tls_log_in(c, cert, "https://" + address + ":" + std::to_string(server.port()));
+  ASSERT_TRUE(r) << "the HTTPS request failed: " << httplib::to_string(r.error());
+  ASSERT_EQ(r->status, 200) << r->body;
+  const std::string set = r->get_header_value("Set-Cookie");
+  EXPECT_EQ(set.rfind("__Host-rockface_session=", 0), 0u) << set;
+  EXPECT_NE(set.find("; Secure"), std::string::npos) << set;
+  EXPECT_NE(set.find("HttpOnly"), std::string::npos) << set;
+  std::error_code ec;
+  if (!::testing::Test::HasFailure()) fs::remove_all(dir, ec);
 }
 
 TEST(OfficeWebSecurity, ForgedAndExpiredSessionsAreRefused) {

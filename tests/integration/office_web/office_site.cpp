@@ -8,8 +8,10 @@
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <system_error>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -118,6 +120,20 @@ Site make_site() {
     if (named.exit_code != 0)
       throw std::runtime_error("naming tablet B's heading: " + named.out + named.err);
   }
+  // The geologist who mapped each visit (issue 46), named with the command
+  // line: tablet A's visits by a name the pages must show as text, tablet
+  // B's first by another; B's second names none ("not recorded").
+  const std::vector<std::tuple<std::string, int, std::string>> geologists = {
+      {"a.rockface", 1, "\"O'Brien <b>\""},  // shell-quoted
+      {"a.rockface", 2, "\"O'Brien <b>\""},
+      {"b.rockface", 1, "'Anna Berger'"}};
+  for (const auto& [file, visit, name] : geologists) {
+    const test::CliRun named =
+        test::run_rockface("place " + (s.folder / file).string() + " --visit " +
+                           std::to_string(visit) + " --geologist " + name);
+    if (named.exit_code != 0)
+      throw std::runtime_error("naming a visit's geologist: " + named.out + named.err);
+  }
   {
     storage::sqlite::Connection db(s.folder / "a.rockface",
                                    storage::sqlite::Connection::Access::read_write);
@@ -169,7 +185,7 @@ OfficeServer::OfficeServer(const Site& s, double session_minutes)
     : OfficeServer(s, session_minutes, {}) {}
 
 OfficeServer::OfficeServer(const Site& s, double session_minutes,
-                           const std::vector<std::string>& more) {
+                           const std::vector<std::string>& more, const std::string& listen) {
   static int count = 0;
   const fs::path log = s.folder / ("office-serve-" + std::to_string(++count) + ".out");
   const std::string binary = std::string(ROCKFACE_BINARY_DIR) + "/rockface";
@@ -181,7 +197,7 @@ OfficeServer::OfficeServer(const Site& s, double session_minutes,
     // What the server tells systemd's journal (stderr) in the same log.
     ::dup2(::fileno(stdout), 2);
     std::vector<std::string> args = {
-        binary,  "office", "serve", s.server, "--listen", "127.0.0.1:0", "--session-minutes",
+        binary,  "office", "serve", s.server, "--listen", listen, "--session-minutes",
         minutes, "--work", work};
     args.insert(args.end(), more.begin(), more.end());
     std::vector<char*> argv;
@@ -190,15 +206,17 @@ OfficeServer::OfficeServer(const Site& s, double session_minutes,
     ::execv(binary.c_str(), argv.data());
     ::_exit(127);
   }
-  // "office: serving http://127.0.0.1:PORT/ ..." once it listens: within a
+  // "office: serving http://ADDR:PORT/ ..." once it listens: within a
   // second (issue 46); 20 s before this says it did not start at all.
   for (int i = 0; i < 200 && port_ == 0; ++i) {
     std::ifstream in(log);
     std::string text;
     std::getline(in, text);
-    const std::size_t at = text.find("127.0.0.1:");
-    if (at != std::string::npos && text.find('/', at) != std::string::npos)
-      port_ = std::stoi(text.substr(at + 10));
+    const std::size_t at = text.find("://");
+    const std::size_t slash = at == std::string::npos ? at : text.find('/', at + 3);
+    const std::size_t colon = slash == std::string::npos ? slash : text.rfind(':', slash);
+    if (colon != std::string::npos && colon > at)
+      port_ = std::stoi(text.substr(colon + 1, slash - colon - 1));
     else
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }

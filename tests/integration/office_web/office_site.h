@@ -52,8 +52,10 @@ class OfficeServer {
  public:
   explicit OfficeServer(double session_minutes = 30);
   OfficeServer(const Site& s, double session_minutes);
-  // With more arguments for `office serve` (e.g. {"--tls", "CERT,KEY"}).
-  OfficeServer(const Site& s, double session_minutes, const std::vector<std::string>& more);
+  // With more arguments for `office serve` (e.g. {"--tls", "CERT,KEY"}),
+  // listening on `listen` (ADDR:PORT; port 0 any free one).
+  OfficeServer(const Site& s, double session_minutes, const std::vector<std::string>& more,
+               const std::string& listen = "127.0.0.1:0");
   ~OfficeServer();
   OfficeServer(const OfficeServer&) = delete;
   OfficeServer& operator=(const OfficeServer&) = delete;

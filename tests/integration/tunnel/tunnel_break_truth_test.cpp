@@ -99,7 +99,7 @@ Heading replay_heading(const fs::path& dir, const std::string& name, const json&
   std::ofstream(h.scene_file) << scene.dump(2);
   NoProgress quiet;
   h.outcome = replay_field_workflow(
-      {h.scene_file.string(), h.project.string(), Preset::standard, {}, {}}, quiet);
+      {h.scene_file.string(), h.project.string(), Preset::standard, {}, {}, {}}, quiet);
   return h;
 }
 

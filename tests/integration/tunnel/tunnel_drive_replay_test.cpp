@@ -195,7 +195,7 @@ TEST(TunnelDriveReplay, FiveReplayedVisitsFindTheTurnAndTheNewSet) {
     std::ofstream(file) << s.dump();
     NoProgress quiet;
     const ReplayOutcome out =
-        replay_field_workflow({file.string(), project.string(), Preset::fast, {}, {}}, quiet);
+        replay_field_workflow({file.string(), project.string(), Preset::fast, {}, {}, {}}, quiet);
     storage::ProjectStore store = storage::ProjectStore::open(project);
     const auto placed = store.load_visit_placement(out.visit_id);
     ASSERT_TRUE(placed);

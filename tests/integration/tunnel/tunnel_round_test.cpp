@@ -53,7 +53,7 @@ class TunnelRound : public ::testing::Test {
     scene_file_ = write_scene(dir_, "round");
     NoProgress quiet;
     ReplayRequest request{
-        scene_file_.string(), (dir_ / "round.rockface").string(), Preset::fast, {}, {}};
+        scene_file_.string(), (dir_ / "round.rockface").string(), Preset::fast, {}, {}, {}};
     outcome_ = new ReplayOutcome(replay_field_workflow(request, quiet));
   }
   static void TearDownTestSuite() {
@@ -256,7 +256,7 @@ TEST(TunnelNoWalls, AVisitThatSeesOnlyTheFaceSaysSoInsteadOfZero) {
   });
   NoProgress quiet;
   const ReplayOutcome out = replay_field_workflow(
-      {scene.string(), (dir / "face-only.rockface").string(), Preset::fast, {}, {}}, quiet);
+      {scene.string(), (dir / "face-only.rockface").string(), Preset::fast, {}, {}, {}}, quiet);
   storage::ProjectStore store = storage::ProjectStore::open(dir / "face-only.rockface");
   const VisitProfile p = visit_profile(store, out.visit_id, Preset::standard);
   EXPECT_EQ(p.deviation.status, tunnel::DeviationStatus::no_walls_in_view)

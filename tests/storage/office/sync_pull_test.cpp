@@ -7,6 +7,8 @@
 // a client older than the server's schema is refused.
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -602,6 +604,52 @@ TEST(OfficeSync, AnImportedScanGoesUpAndComesBackNamingItsSource) {
   const auto source = storage::read_model_registration(there.registration).imported_from;
   EXPECT_EQ(source.rfind("scan.xyz: ", 0), 0u) << source;
   EXPECT_EQ(source, storage::read_model_registration(here.registration).imported_from);
+}
+
+// Issue 46: the geologist who mapped a visit goes up with it as a record of
+// its own and comes back with `pull`; renamed, the new name comes back; a
+// name taken away comes back as none, and a visit nobody named stays so.
+TEST(OfficeSync, AVisitsGeologistGoesUpAndComesBackRenamedAndTakenAway) {
+  const std::string db = fresh_database();
+  storage::test::TempDir dir("office-geologist");
+  TabletProject a;
+  a.name = "tablet A";
+  make_tablet_project(dir / "a.rockface", a);
+  storage::RecordId named = 0, unnamed = 0;
+  {
+    storage::ProjectStore tablet = storage::ProjectStore::open(dir / "a.rockface");
+    const auto visits = tablet.list_visits();
+    ASSERT_EQ(visits.size(), 2u);
+    named = visits[0].id;
+    unnamed = visits[1].id;
+    // Stored as typed: the office's pages escape it.
+    tablet.save_visit_geologist(named, "O'Brien <b>");
+  }
+  // The pulled project's geologist of each visit, by the visit's id.
+  auto pulled_geologists = [&](const std::string& copy) {
+    NoProgress none;
+    sync_project(dir / "a.rockface", as_role(db, "tablet_a"), small_chunks(), none);
+    storage::office::pull_tunnel(as_role(db, "office_reader"), "Main drive", dir / copy, none);
+    storage::ProjectStore pulled = storage::ProjectStore::open(dir / copy);
+    std::map<storage::RecordId, std::optional<std::string>> out;
+    for (const auto& v : pulled.list_visits()) out[v.id] = v.geologist;
+    return out;
+  };
+  using Named = std::optional<std::string>;
+  auto first = pulled_geologists("first.rockface");
+  EXPECT_EQ(first[named], Named("O'Brien <b>"));
+  EXPECT_EQ(first[unnamed], std::nullopt);
+  expect_server_holds(as_superuser(db), dir / "a.rockface");
+
+  storage::ProjectStore::open(dir / "a.rockface").save_visit_geologist(named, "Anna Berger");
+  auto renamed = pulled_geologists("renamed.rockface");
+  EXPECT_EQ(renamed[named], Named("Anna Berger"));
+  EXPECT_EQ(renamed[unnamed], std::nullopt);
+
+  storage::ProjectStore::open(dir / "a.rockface").save_visit_geologist(named, "");
+  auto taken_away = pulled_geologists("taken-away.rockface");
+  EXPECT_EQ(taken_away.size(), 2u);
+  EXPECT_EQ(taken_away[named], std::nullopt);
 }
 
 }  // namespace

@@ -26,6 +26,53 @@ using namespace storage;
 
 namespace {
 
+// The sample analysis (a removable block that fails, with its motion
+// after failure, and a keyed block) with a shape for each
+// block on the sample model's face (x 0-1 m, y about 4 m, z 0.1-1.1 m: a
+// tetrahedron standing out of it) and a third, infinite block (its loop on
+// the face), so that the 3D face draws every verdict. Report points are
+// absolute: the datum added.
+AnalysisRun analysis_with_shapes(ProjectStore& store, RecordId visit, RecordId model) {
+  AnalysisRun a = storage::test::sample_analysis(visit, model);
+  const Eigen::Vector3d datum = store.project().datum;
+  auto tetrahedron = [&](analysis::ReportBlock& b, double x) {
+    b.vertices = {datum + Eigen::Vector3d(x, 4.0, 0.3), datum + Eigen::Vector3d(x + 0.25, 4.0, 0.3),
+                  datum + Eigen::Vector3d(x + 0.1, 4.0, 0.6),
+                  datum + Eigen::Vector3d(x + 0.1, 3.8, 0.4)};
+    b.faces = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  };
+  tetrahedron(a.blocks.at(0), 0.15);
+  tetrahedron(a.blocks.at(1), 0.6);
+  // B1 fails (FoS below 1) and the analysis followed its motion after
+  // failure: it slides out of the face and lands a metre below.
+  analysis::ReportBlock& b1 = a.blocks.at(0);
+  b1.fos = 0.85;
+  analysis::ReportDynamics motion;
+  motion.trigger = "limit equilibrium: FoS 0.85 < 1";
+  motion.outcome = "lands";
+  motion.duration_s = motion.end_time_s = 0.6;
+  motion.sample_s = 0.3;
+  const Eigen::Vector3d start = datum + Eigen::Vector3d(0.25, 3.95, 0.4);
+  for (int i = 0; i <= 2; ++i) {
+    analysis::ReportMotionSample at;
+    at.time_s = 0.3 * i;
+    at.position = start + Eigen::Vector3d(0, -0.2 * i, -0.5 * i);
+    motion.path.push_back(at);
+  }
+  motion.events = {{0, "slides", "slides on J1", {"J1"}}, {0.6, "lands", "lands", {}}};
+  b1.dynamics = motion;
+  analysis::ReportBlock infinite;
+  infinite.id = "B3";
+  infinite.source = "traces";
+  infinite.code = "0011";
+  infinite.finite = infinite.removable = false;
+  infinite.vertices = {datum + Eigen::Vector3d(0.2, 4.0, 0.8),
+                       datum + Eigen::Vector3d(0.5, 4.0, 0.8),
+                       datum + Eigen::Vector3d(0.35, 4.0, 1.0)};
+  a.blocks.push_back(infinite);
+  return a;
+}
+
 // Visit `v` of the project's tablet (options `o`): its place, photographs,
 // model, planes and analysis.
 void add_visit(ProjectStore& store, const TabletProject& o, RecordId calibration, int v) {
@@ -46,6 +93,13 @@ void add_visit(ProjectStore& store, const TabletProject& o, RecordId calibration
       m.model_id = model;
       m.kind = Measurement::Kind::trace;
       m.label = "T" + std::to_string(planes.size() + 1);
+      // The first visit's joints (below) with traces assigned to them as
+      // the geologist assigns them on the tablet: T1-T5 to J1 (set S1),
+      // T7-T11 to J2 (set S2), T6 to J3 (a joint of no set), T12 to none.
+      if (v == 0) {
+        const std::size_t n = planes.size() + 1;
+        m.joint_label = n == 6 ? "J3" : n == 12 ? "" : n < 6 ? "J1" : "J2";
+      }
       m.points = {{0.1 * i, chainage - 70, 0.3}, {1.0 + 0.1 * i, chainage - 70, 1.1}};
       m.dip_deg = dip + ddip[i] + 0.1 * o.seed;
       m.dipdir_deg = std::fmod(dipdir + ddir[(i + o.seed) % ddir.size()] + 5.0 * v + 360, 360);
@@ -57,7 +111,7 @@ void add_visit(ProjectStore& store, const TabletProject& o, RecordId calibration
   store.save_measurements(visit, planes);
   if (v == 0)
     store.save_joints(visit, storage::test::sample_joint_sets(), storage::test::sample_joints());
-  store.save_analysis(storage::test::sample_analysis(visit, model));
+  store.save_analysis(analysis_with_shapes(store, visit, model));
   VisitPlacement p;
   p.visit_id = visit;
   p.chainage = chainage;

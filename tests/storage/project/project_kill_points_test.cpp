@@ -173,73 +173,103 @@ std::string content_before(const fs::path& file, const fs::path& scratch) {
   return c;
 }
 
+// The write-like calls `op` makes when nothing kills it.
+int write_calls(const Operation& op, const fs::path& dir) {
+  const fs::path counted = dir / "counted.rockface";
+  op.prepare(counted);
+  test::FaultyVfs::arm(0);
+  op.run(counted);
+  const int calls = test::FaultyVfs::calls();
+  remove_project(counted);
+  return calls;
+}
+
+const Operation& operation_named(const std::string& name) {
+  static const std::vector<Operation> ops = operations();
+  for (const Operation& op : ops)
+    if (op.name == name) return op;
+  throw std::logic_error("no operation " + name);
+}
+
 }  // namespace
 
-TEST(ProjectKillPoints, SigkillBeforeEveryWriteOfEveryOperationLosesNothingCommitted) {
+// Issue 16: at least 100 distinct kill points across the five operations.
+TEST(ProjectKillPoints, TheFiveOperationsMakeAtLeastAHundredWrites) {
   test::FaultyVfs::install();
-  test::TempDir dir("kill-points");
-  int total_kills = 0;
+  test::TempDir dir("kill-points-count");
+  int total = 0;
   for (const Operation& op : operations()) {
-    SCOPED_TRACE(op.name);
-    // The number of write-like calls the operation makes.
-    const bool upgrade = op.name == "upgrade";
-    int calls = 0;
-    {
-      const fs::path counted = dir / "counted.rockface";
-      op.prepare(counted);
-      test::FaultyVfs::arm(0);
-      op.run(counted);
-      calls = test::FaultyVfs::calls();
-      remove_project(counted);
-    }
-    ASSERT_GT(calls, 3) << "the operation writes nothing through the faulty VFS";
+    const int calls = write_calls(op, dir.path());
+    EXPECT_GT(calls, 3) << op.name << " writes nothing through the faulty VFS";
     RecordProperty(op.name + " write calls", calls);
-
-    int old_state = 0;
-    for (int n = 1; n <= calls; ++n) {
-      SCOPED_TRACE("killed before write call " + std::to_string(n));
-      const fs::path file = dir / ("kill-" + std::to_string(n) + ".rockface");
-      op.prepare(file);
-      // The content before (a version-1 file is read only after its
-      // upgrade) and after the operation run without a kill, on a copy.
-      const std::string before = upgrade ? "" : content_before(file, dir / "scratch.rockface");
-      const fs::path twin = dir / "twin.rockface";
-      copy_project(file, twin);
-      ASSERT_FALSE(run_killed([&] { op.run(twin); }, 0));
-      const std::string after = content_of(twin);
-      remove_project(twin);
-      ASSERT_TRUE(run_killed([&] { op.run(file); }, n));
-      ++total_kills;
-      if (!fs::exists(file)) {
-        // Only a project being created may be absent, and then it can be
-        // created afresh (no leftover blocks the name).
-        EXPECT_EQ(op.name, "create");
-        ProjectStore::create(file, test::sample_project());
-        ++old_state;
-      } else {
-        std::string now;
-        ASSERT_NO_THROW(now = content_of(file));
-        if (upgrade) {
-          // Opening upgrades: every record of version 1 is there either way.
-          EXPECT_EQ(now, after);
-        } else {
-          EXPECT_TRUE(now == before || now == after) << "after the kill:\n"
-                                                     << now << "before:\n"
-                                                     << before << "complete:\n"
-                                                     << after;
-          if (now == before) ++old_state;
-        }
-      }
-      remove_project(file);
-    }
-    // The first kills come before anything is committed.
-    if (!upgrade) {
-      EXPECT_GE(old_state, 1);
-    }
+    total += calls;
   }
-  RecordProperty("kill_points", total_kills);
-  // Issue 16: at least 100 distinct kill points across the five operations.
-  EXPECT_GE(total_kills, 100);
+  EXPECT_GE(total, 100);
 }
+
+// One test per operation (each kills it before every one of its writes, a
+// child process each time): CTest runs them side by side.
+class ProjectKillPoints : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ProjectKillPoints, SigkillBeforeEveryWriteLosesNothingCommitted) {
+  test::FaultyVfs::install();
+  const Operation& op = operation_named(GetParam());
+  test::TempDir dir("kill-points");
+  // The number of write-like calls the operation makes.
+  const bool upgrade = op.name == "upgrade";
+  const int calls = write_calls(op, dir.path());
+  ASSERT_GT(calls, 3) << "the operation writes nothing through the faulty VFS";
+
+  int old_state = 0;
+  for (int n = 1; n <= calls; ++n) {
+    SCOPED_TRACE("killed before write call " + std::to_string(n));
+    const fs::path file = dir / ("kill-" + std::to_string(n) + ".rockface");
+    op.prepare(file);
+    // The content before (a version-1 file is read only after its
+    // upgrade) and after the operation run without a kill, on a copy.
+    const std::string before = upgrade ? "" : content_before(file, dir / "scratch.rockface");
+    const fs::path twin = dir / "twin.rockface";
+    copy_project(file, twin);
+    ASSERT_FALSE(run_killed([&] { op.run(twin); }, 0));
+    const std::string after = content_of(twin);
+    remove_project(twin);
+    ASSERT_TRUE(run_killed([&] { op.run(file); }, n));
+    if (!fs::exists(file)) {
+      // Only a project being created may be absent, and then it can be
+      // created afresh (no leftover blocks the name).
+      EXPECT_EQ(op.name, "create");
+      ProjectStore::create(file, test::sample_project());
+      ++old_state;
+    } else {
+      std::string now;
+      ASSERT_NO_THROW(now = content_of(file));
+      if (upgrade) {
+        // Opening upgrades: every record of version 1 is there either way.
+        EXPECT_EQ(now, after);
+      } else {
+        EXPECT_TRUE(now == before || now == after) << "after the kill:\n"
+                                                   << now << "before:\n"
+                                                   << before << "complete:\n"
+                                                   << after;
+        if (now == before) ++old_state;
+      }
+    }
+    remove_project(file);
+  }
+  // The first kills come before anything is committed.
+  if (!upgrade) {
+    EXPECT_GE(old_state, 1);
+  }
+  RecordProperty("kill_points", calls);
+}
+
+INSTANTIATE_TEST_SUITE_P(EachOperation, ProjectKillPoints,
+                         ::testing::Values("create", "capture save", "model save", "analysis save",
+                                           "upgrade"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name;
+                           for (char c : info.param) name += c == ' ' ? '_' : c;
+                           return name;
+                         });
 
 }  // namespace rockface::storage

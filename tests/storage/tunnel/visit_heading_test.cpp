@@ -12,6 +12,7 @@
 #include "storage/project/project_store.h"
 #include "storage/scene/visit_file_json.h"
 #include "storage/tunnel/visit_heading.h"
+#include "tests/support/refusal.h"
 #include "tests/support/sample_records.h"
 
 namespace rockface::storage {
@@ -19,16 +20,7 @@ namespace {
 
 using test::TempDir;
 
-// The InputError's text of `f`, "" when it throws none.
-template <typename F>
-std::string refusal(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using rockface::test::refusal;
 
 TEST(VisitHeading, IsNamedRenamedAndTakenAway) {
   TempDir dir("heading");
@@ -89,7 +81,7 @@ TEST(VisitHeading, ASchema11ProjectIsUpgradedWithItsVisitsUnnamed) {
     EXPECT_EQ(schema::version_of(db), 11);
   }
   auto store = ProjectStore::open(file);
-  EXPECT_EQ(store.schema_version(), 12);
+  EXPECT_EQ(store.schema_version(), schema::kCurrentVersion);
   EXPECT_EQ(load_visit_heading(store, 1), "");
   save_visit_heading(store, 1, "Top heading");
   EXPECT_EQ(load_visit_heading(store, 1), "Top heading");

@@ -38,7 +38,7 @@ TEST(UiSettings, TheThemeIsRememberedAndABadFileIsRefusedByField) {
   const auto file = dir / "rockface" / "ui.json";
   std::filesystem::remove_all(dir);
   EXPECT_EQ(load_ui_settings(file).theme, Theme::daylight);  // no file: the default
-  save_ui_settings(file, UiSettings{Theme::tunnel});
+  save_ui_settings(file, UiSettings{Theme::tunnel, {}});
   EXPECT_EQ(load_ui_settings(file).theme, Theme::tunnel);
   std::ofstream(file) << R"({"theme": "sunset"})";
   try {

@@ -64,7 +64,7 @@ class Walk {
  public:
   Walk(const fs::path& project, const Tablet& tablet) : tablet_(tablet) {
     const fs::path settings = rockface::test::ui_test_dir() / ("walk-" + tablet.name + ".json");
-    save_ui_settings(settings, UiSettings{tablet.theme});
+    save_ui_settings(settings, UiSettings{tablet.theme, {}});
     UiOptions options;
     options.project = project;
     options.scale = tablet.scale;

@@ -74,7 +74,9 @@ fs::path card_project(const fs::path& root) {
        {{"reference_line_px", line.at("left")}, {"azimuth_deg", line.at("azimuth_deg")}}},
       {"preset", "fast"},
       // Issue 46: the face the visit was taken at, noted on site.
-      {"heading", "North portal"}}.dump(2);
+      {"heading", "North portal"},
+      // And who mapped it.
+      {"geologist", "Anna Berger"}}.dump(2);
   const fs::path project = root / "card.rockface";
   const test::CliRun r =
       test::run_rockface("replay " + card.string() + " --project " + project.string());
@@ -200,6 +202,9 @@ TEST(TunnelFromFiles, TheTabletGivesTheProjectItsTunnelFromAStickAndPlacesTheVis
   const auto visits = stored.list_visits();
   ASSERT_EQ(visits.size(), 1u);
   EXPECT_EQ(storage::load_visit_heading(stored, visits.front().id), "South portal");
+  // The card's visit file named its geologist; the tablet shows it.
+  EXPECT_EQ(visits.front().geologist, std::optional<std::string>("Anna Berger"));
+  EXPECT_EQ(s.state().session->visit_geologist(), std::optional<std::string>("Anna Berger"));
 }
 
 }  // namespace

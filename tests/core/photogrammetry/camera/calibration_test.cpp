@@ -1,6 +1,7 @@
 #include "core/photogrammetry/camera/calibration.h"
 #include "tests/support/test_paths.h"
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "core/common/error.h"
 #include "core/photogrammetry/camera/calibration_coverage.h"
 #include "tests/core/photogrammetry/camera/board_views.h"
+#include "tests/support/temp_folders.h"
 
 namespace rockface::photogrammetry {
 namespace {
@@ -34,9 +36,11 @@ std::vector<std::string> left_images() {
 }
 
 fs::path temp_dir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("rockface-calib-" + name);
+  fs::path dir =
+      fs::temp_directory_path() / ("rockface-calib-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  rockface::test::remove_when_passed(dir);
   return dir;
 }
 
