@@ -889,6 +889,34 @@ TEST(OfficeWebBrowser, TheRoundsTwoVisitsSideBySideAndTheReportsPictures) {
   }
   EXPECT_EQ(blocks_earlier, va["blocks"].size());
   EXPECT_EQ(blocks_later, vb["blocks"].size());
+  // Who mapped each visit, as the tablet named them (truth::geologist),
+  // shown as text beside each: tablet A's name holds markup. Tablet B's two
+  // (its first named, its second not) through the same answer the page
+  // draws from, each on its side.
+  auto named = [](const std::string& id) {
+    const auto v = truth::visit_of(id);
+    EXPECT_TRUE(v) << "visit " << id << " is not in the tablets' files";
+    return v ? truth::geologist(*v).value_or("not recorded") : std::string("?");
+  };
+  for (const char* side : {"earlier", "later"})
+    EXPECT_EQ(d.script("const s = document.getElementById(`compare-geologist-${arguments[0]}`); "
+                       "return s && s.children.length === 0 ? s.textContent : null",
+                       json::array({side})),
+              "geologist: " + named(ab[side]["id"]))
+        << side;
+  std::vector<std::string> of_b;
+  const json drive_now = get_json("/api/drive?tunnel=Main%20drive");
+  for (const auto& v : drive_now["visits"])
+    if (v["tablet"] == "tablet_b") of_b.push_back(v["id"]);
+  ASSERT_EQ(of_b.size(), 2u);
+  const json b_pair = get_json("/api/compare?tunnel=Main%20drive&a=" + of_b[0] + "&b=" + of_b[1]);
+  std::set<std::string> b_names;
+  for (const char* side : {"earlier", "later"}) {
+    EXPECT_EQ(b_pair[side]["geologist"], named(b_pair[side]["id"])) << side;
+    b_names.insert(named(b_pair[side]["id"]));
+  }
+  EXPECT_EQ(b_names, (std::set<std::string>{"Anna Berger", "not recorded"}))
+      << "tablet B's visits were named by one geologist and by none (office_site.cpp)";
   // A visit against itself: every set matched unchanged, every block found
   // where it was with its verdict.
   const json same = get_json("/api/compare?tunnel=Main%20drive&a=" + b + "&b=" + b);
