@@ -5,6 +5,7 @@
 #include "core/analysis/preset_options.h"
 #include "core/common/units.h"
 #include "firmware-app/measure/measures_json.h"
+#include "firmware-app/propose/huge_page_images.h"
 #include "firmware-app/propose/kept_working_memory.h"
 
 namespace rockface::app {
@@ -66,6 +67,7 @@ measure::ProposalResult propose_first_then_facets(const photogrammetry::SurfaceM
                                                   double point_sigma_m, Progress& progress,
                                                   const ProposalBatch& batch) {
   const KeptWorkingMemory kept;
+  const HugePageImages huge;
   std::unique_ptr<measure::ProposalSearch> search;
   {
     const auto lattice = with_lattice(mesh, photo);
