@@ -14,6 +14,7 @@
 #include "core/photogrammetry/matching/image_contrast.h"
 #include "core/photogrammetry/matching/tie_point_refinement.h"
 #include "core/photogrammetry/matching/view_shading.h"
+#include "core/photogrammetry/surface/surface_pick.h"
 
 namespace rockface::photogrammetry {
 
@@ -44,6 +45,18 @@ cv::Mat resized(const cv::Mat& image, double scale) {
 Eigen::Vector3d surface_at(const SurfaceMesh& mesh, const Eigen::Vector2d& px, double radius,
                            const std::string& where) {
   const auto p = mesh.point_at_pixel(px, radius);
+  if (!p)
+    throw InputError(where, "no reconstructed surface at pixel (" + std::to_string(px.x()) + ", " +
+                                std::to_string(px.y()) + ") of the left image");
+  return *p;
+}
+
+// The compass line's ends: its bearing turns the whole model about the
+// pole, so each end is read from the plane around it, not one vertex
+// (surface_pick.h).
+Eigen::Vector3d surface_at_pick(const SurfaceMesh& mesh, const Eigen::Vector2d& px,
+                                const CameraIntrinsics& left, const std::string& where) {
+  const auto p = surface_point_at_pick(mesh, px, left);
   if (!p)
     throw InputError(where, "no reconstructed surface at pixel (" + std::to_string(px.x()) + ", " +
                                 std::to_string(px.y()) + ") of the left image");
@@ -182,10 +195,10 @@ ReconstructionResult reconstruct(const cv::Mat& left_image, const cv::Mat& right
     }
     if (sources.north) {
       const std::string& where = sources.north->where;
-      const Eigen::Vector3d a = T.apply(
-          surface_at(out.mesh, sources.north->from_px, pick_radius, where + " first point"));
+      const Eigen::Vector3d a =
+          T.apply(surface_at_pick(out.mesh, sources.north->from_px, left, where + " first point"));
       const Eigen::Vector3d b =
-          T.apply(surface_at(out.mesh, sources.north->to_px, pick_radius, where + " second point"));
+          T.apply(surface_at_pick(out.mesh, sources.north->to_px, left, where + " second point"));
       // About the vertical through the frame's origin (the lower target, or
       // the left camera without a pole), so the origin stays where
       // registration.h says it is.
