@@ -3,7 +3,8 @@
 // sets that appear, vanish or turn flagged. `rockface drive postgresql://...
 // --tunnel NAME ...` gives the same from the office server, over every
 // tablet's visits. `--support-csv` adds the support of each round (issue 44),
-// from a server too (the tunnel pulled into a temporary project).
+// from a server too (the tunnel pulled into a temporary project). The CSV's
+// rows and the printed events name the geologist who mapped each visit.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -40,15 +41,19 @@ VerbRun setup_drive(CLI::App& sub) {
       ->required();
   sub.add_option("--tunnel", o->tunnel, "the server's tunnel (with a server)");
   sub.add_option("--out", o->out, "the sets against chainage, a PNG file")->required();
-  sub.add_option("--csv", o->csv, "one row per set and visit, a CSV file");
+  sub.add_option("--csv", o->csv,
+                 "one row per set and visit (the visit's geologist last), a CSV file");
   sub.add_option("--support-csv", o->support_csv,
                  "the support per round against the chainage (RMR89, Q, the class proposed "
                  "and decided), a CSV file; from a server, its tunnel is pulled first");
   return [o] {
     tunnel::DriveSets drive;
+    DriveGeologists geologists;
     if (is_server_address(o->project)) {
       if (o->tunnel.empty()) throw InputError("--tunnel", "name the server's tunnel");
-      drive = server_drive(o->project, o->tunnel);
+      const storage::office::ServerDrive records = server_drive_records(o->project, o->tunnel);
+      drive = server_drive(records);
+      geologists = server_drive_geologists(records);
       if (!o->support_csv.empty()) {
         NoProgress quiet;
         write_support(o->support_csv, server_drive_support(o->project, o->tunnel, quiet));
@@ -60,11 +65,12 @@ VerbRun setup_drive(CLI::App& sub) {
       read.read_only = true;
       storage::ProjectStore store = storage::ProjectStore::open(o->project, read);
       drive = project_drive(store);
+      geologists = drive_geologists(store);
       if (!o->support_csv.empty()) write_support(o->support_csv, drive_support(store));
     }
     storage::write_image_file(o->out, storage::drive_picture(drive), ".png");
-    if (!o->csv.empty()) write_text_atomically(o->csv, drive_csv(drive));
-    for (const auto& line : drive_summary(drive)) std::cout << line << "\n";
+    if (!o->csv.empty()) write_text_atomically(o->csv, drive_csv(drive, geologists));
+    for (const auto& line : drive_summary(drive, geologists)) std::cout << line << "\n";
     std::cout << "drive: " << o->out << "\n";
     return 0;
   };

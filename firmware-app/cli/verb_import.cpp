@@ -40,7 +40,8 @@ VerbRun setup_import(CLI::App& sub) {
       ->required();
   auto* visit = sub.add_option("--visit", o->visit, "add it to this visit");
   sub.add_flag("--new-visit", o->new_visit, "a new visit for it (the default)")->excludes(visit);
-  sub.add_option("--geologist", o->geologist, "the geologist who mapped the new visit, by name");
+  sub.add_option("--geologist", o->geologist, "the geologist who mapped the new visit, by name")
+      ->type_name("NAME");
   sub.add_option("--columns", o->columns,
                  "a text cloud's columns when its header does not name them, e.g. x,y,z,r,g,b "
                  "(- skips a column)");

@@ -87,7 +87,8 @@ VerbRun setup_measure(CLI::App& sub) {
                  "(not in a new visit), so that one visit carries its camera, scale, north and "
                  "traces; refused for a visit without a 3D image or a label it already holds");
   sub.add_option("--geologist", r.geologist,
-                 "project: the geologist who mapped the new visit, by name");
+                 "project: the geologist who mapped the new visit, by name")
+      ->type_name("NAME");
   sub.add_option("--camera", r.on.camera, "model file: the camera it was reconstructed with");
   sub.add_option("--photo", r.on.photo,
                  "model file: the left photograph (default: the model's TextureFile)");

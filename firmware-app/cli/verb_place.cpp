@@ -34,7 +34,10 @@ struct PlaceOptions {
 
 VerbRun setup_place(CLI::App& sub) {
   auto o = std::make_shared<PlaceOptions>();
-  sub.add_option("PROJECT", o->project, "project file (*.rockface) with a tunnel")->required();
+  sub.add_option("PROJECT", o->project,
+                 "project file (*.rockface); with a tunnel to place a visit (--chainage), not "
+                 "to name its geologist alone")
+      ->required();
   sub.add_option("--visit", o->visit, "visit id")->required();
   CLI::Option* chainage =
       sub.add_option("--chainage", o->chainage, "chainage of the pole's lower target, m");
@@ -42,14 +45,17 @@ VerbRun setup_place(CLI::App& sub) {
       sub.add_option("--offset", o->offset, "its offset right of the axis, m (default 0)");
   CLI::Option* height =
       sub.add_option("--height", o->height, "its height above the axis, m (default 0)");
-  CLI::Option* heading = sub.add_option(
-      "--heading", o->heading,
-      "the face the visit was taken at, when the tunnel is driven from more than one (e.g. "
-      "\"North portal\", \"Bench\"); alone: names a placed visit's heading");
+  CLI::Option* heading =
+      sub.add_option(
+             "--heading", o->heading,
+             "the face the visit was taken at, when the tunnel is driven from more than one (e.g. "
+             "\"North portal\", \"Bench\"); alone: names a placed visit's heading")
+          ->type_name("NAME");
   CLI::Option* geologist =
       sub.add_option("--geologist", o->geologist,
                      "the geologist who mapped the visit, by name (\"\" takes it away); alone: "
-                     "names it, placed or not");
+                     "names it, placed or not")
+          ->type_name("NAME");
   offset->needs(chainage);
   height->needs(chainage);
   return [o, chainage, heading, geologist] {

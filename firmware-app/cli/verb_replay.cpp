@@ -67,9 +67,11 @@ VerbRun setup_replay(CLI::App& sub) {
   add_registration_options(sub, req->registration);
   sub.add_option("--heading", req->heading,
                  "the face the visit is taken at, when the tunnel is driven from more than one "
-                 "(e.g. \"North portal\", \"Bench\"; default: the visit file's)");
+                 "(e.g. \"North portal\", \"Bench\"; default: the visit file's)")
+      ->type_name("NAME");
   sub.add_option("--geologist", req->geologist,
-                 "the geologist who maps the visit, by name (default: the visit file's)");
+                 "the geologist who maps the visit, by name (default: the visit file's)")
+      ->type_name("NAME");
   CLI::Option* preset_option = sub.add_option(
       "--preset", *preset, "fast | standard | precise (default: the scene's analysis.preset)");
   return [req, preset, preset_option] {

@@ -139,6 +139,19 @@ tunnel::DriveSets server_drive(const office::ServerDrive& d) {
   return tunnel::track_sets_along_drive(std::move(visits), options);
 }
 
+office::ServerDrive server_drive_records(const std::string& server, const std::string& name) {
+  office::Connection c(server);
+  office::require_compatible_server(c);
+  return office::read_server_drive(c, name);
+}
+
+DriveGeologists server_drive_geologists(const office::ServerDrive& d) {
+  DriveGeologists out;
+  for (const auto& v : d.visits)
+    if (v.geologist) out[v.visit_id] = *v.geologist;
+  return out;
+}
+
 std::vector<RoundSupport> server_drive_support(const std::string& server, const std::string& name,
                                                Progress& progress) {
   const std::filesystem::path folder = std::filesystem::temp_directory_path() /

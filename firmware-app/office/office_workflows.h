@@ -11,6 +11,7 @@
 #include "core/common/progress.h"
 #include "core/tunnel/drive_sets.h"
 #include "firmware-app/support/support_drive.h"
+#include "firmware-app/tunnel/project_drive.h"
 #include "storage/office/pg_connection.h"
 #include "storage/office/server_drive.h"
 #include "storage/office/sync_push.h"
@@ -54,6 +55,13 @@ tunnel::DriveSets server_drive(storage::office::Connection& c, const std::string
 // The same from the drive's rows already read (storage/office/
 // server_drive.h's read_server_drive): no server needed.
 tunnel::DriveSets server_drive(const storage::office::ServerDrive& d);
+// The drive's rows as the server holds them (read_server_drive after the
+// server's schema is checked): its sets and who mapped each visit, from one
+// snapshot.
+storage::office::ServerDrive server_drive_records(const std::string& server,
+                                                  const std::string& tunnel);
+// Who mapped each of the drive's visits, by the drive's visit ids.
+DriveGeologists server_drive_geologists(const storage::office::ServerDrive& d);
 
 // The support per round of every tablet's visits of the tunnel (`rockface
 // drive postgresql://... --support-csv`): the tunnel pulled into a

@@ -7,6 +7,7 @@
 
 #include "core/common/number_format.h"
 #include "core/geometry/orientation.h"
+#include "storage/project/visit_geologist.h"
 
 namespace rockface::app::office_web {
 
@@ -65,8 +66,14 @@ std::vector<std::tuple<std::size_t, std::size_t, double>> match_nearest_first(
 
 json compare_visits(const storage::FieldReport& earlier, const storage::FieldReport& later) {
   json out;
-  out["earlier"] = {{"started_at", earlier.visit_started_at}, {"project", earlier.project_name}};
-  out["later"] = {{"started_at", later.visit_started_at}, {"project", later.project_name}};
+  // Who mapped each: a round later it may be someone else.
+  out["earlier"] = {
+      {"started_at", earlier.visit_started_at},
+      {"project", earlier.project_name},
+      {"geologist", earlier.visit_geologist.value_or(storage::kGeologistNotRecorded)}};
+  out["later"] = {{"started_at", later.visit_started_at},
+                  {"project", later.project_name},
+                  {"geologist", later.visit_geologist.value_or(storage::kGeologistNotRecorded)}};
 
   const auto& sa = earlier.sets;
   const auto& sb = later.sets;

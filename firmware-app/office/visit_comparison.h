@@ -6,7 +6,8 @@
 // of the earlier visit left unmatched has vanished, one of the later is new.
 // Blocks are matched by centroid, nearest first, within kSameBlockM and
 // with volumes within a factor kSameBlockVolume; a match says whether the
-// verdict changed. Every figure as text with its unit.
+// verdict changed. Every figure as text with its unit; each visit says who
+// mapped it (its geologist, or "not recorded").
 #include <string>
 
 #include <nlohmann/json.hpp>

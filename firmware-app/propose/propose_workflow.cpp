@@ -5,6 +5,7 @@
 #include "core/analysis/preset_options.h"
 #include "core/common/error.h"
 #include "core/measure/mesh_picker.h"
+#include "firmware-app/propose/huge_page_images.h"
 #include "firmware-app/propose/kept_working_memory.h"
 #include "firmware-app/propose/trace_proposals_run.h"
 #include "storage/project/project_store.h"
@@ -43,6 +44,7 @@ ProposeResult propose_for_visit(const ProposeRequest& request, Progress& progres
                      "are in metres; replay or reconstruct the pair with a range pole in view "
                      "(--range-pole) or control points (--gcp)");
   const KeptWorkingMemory kept;  // for the facets' and proposals' working arrays
+  const HugePageImages huge;     // and their large images
   measure::MeasureSettings settings;
   settings.point_sigma = r.model.point_sigma;
   settings.correlation_length = r.model.correlation_length;

@@ -5,6 +5,7 @@
 #include "core/analysis/preset_options.h"
 #include "core/common/units.h"
 #include "firmware-app/measure/measures_json.h"
+#include "firmware-app/propose/huge_page_images.h"
 #include "firmware-app/propose/kept_working_memory.h"
 
 namespace rockface::app {
@@ -37,18 +38,13 @@ measure::ProposalOptions options_for(Preset preset, double point_sigma_m) {
 }
 
 // A mesh with texture coordinates only, given its lattice's pixels from
-// them (the inverse of firmware-app/records/project_mesh.cpp); null when
+// them (SurfaceMesh::pixels_from_texcoords); null when
 // the mesh has its pixels already (or nothing to make them from).
 std::unique_ptr<photogrammetry::SurfaceMesh> with_lattice(const photogrammetry::SurfaceMesh& mesh,
                                                           const cv::Mat& photo) {
   if (!mesh.pixels.empty() || photo.empty() || mesh.texcoords.size() != mesh.size()) return nullptr;
   auto lattice = std::make_unique<photogrammetry::SurfaceMesh>(mesh);
-  const float w = static_cast<float>(photo.cols), h = static_cast<float>(photo.rows);
-  lattice->texture_width = photo.cols;
-  lattice->texture_height = photo.rows;
-  lattice->pixels.reserve(lattice->texcoords.size());
-  for (const auto& t : lattice->texcoords)
-    lattice->pixels.emplace_back(t.x() * w - 0.5f, (1.0f - t.y()) * h - 0.5f);
+  lattice->pixels_from_texcoords(photo.cols, photo.rows);
   return lattice;
 }
 
@@ -71,6 +67,7 @@ measure::ProposalResult propose_first_then_facets(const photogrammetry::SurfaceM
                                                   double point_sigma_m, Progress& progress,
                                                   const ProposalBatch& batch) {
   const KeptWorkingMemory kept;
+  const HugePageImages huge;
   std::unique_ptr<measure::ProposalSearch> search;
   {
     const auto lattice = with_lattice(mesh, photo);

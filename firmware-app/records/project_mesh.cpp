@@ -23,14 +23,8 @@ photogrammetry::SurfaceMesh surface_mesh(storage::Mesh&& m, int texture_width, i
   s.texture_height = texture_height;
   if (m.texcoords.size() == s.vertices.size() && texture_width > 0 && texture_height > 0) {
     s.texcoords.reserve(m.texcoords.size());
-    s.pixels.reserve(m.texcoords.size());
-    // The inverse of core/photogrammetry/estimators/triangulation.cpp: u = (x + 0.5) / W,
-    // v = 1 - (y + 0.5) / H.
-    for (const auto& t : m.texcoords) {
-      s.texcoords.emplace_back(t[0], t[1]);
-      s.pixels.emplace_back(t[0] * static_cast<float>(texture_width) - 0.5f,
-                            (1.0f - t[1]) * static_cast<float>(texture_height) - 0.5f);
-    }
+    for (const auto& t : m.texcoords) s.texcoords.emplace_back(t[0], t[1]);
+    s.pixels_from_texcoords(texture_width, texture_height);
   }
   return s;
 }

@@ -113,7 +113,7 @@ ui::DriveJoints StoreTunnelRunner::drive(const std::filesystem::path& project, P
       if (on) track.flags += (track.flags.empty() ? "" : ", ") + std::string(word);
     out.sets.push_back(std::move(track));
   }
-  out.lines = drive_summary(d);
+  out.lines = drive_summary(d, drive_geologists(store));
   out.lines.front() += ", " + std::to_string(out.joints.size()) + " measured joints";
   return out;
 }

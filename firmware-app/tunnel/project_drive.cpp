@@ -1,16 +1,29 @@
 #include "firmware-app/tunnel/project_drive.h"
 
+#include <algorithm>
+#include <set>
 #include <sstream>
+#include <utility>
 
 #include "core/common/error.h"
 #include "core/common/units.h"
 #include "core/geometry/orientation.h"
 #include "core/measure/joint_sets.h"
+#include "storage/exchange/csv_record.h"
 #include "storage/field_report/field_report.h"
+#include "storage/project/visit_geologist.h"
 
 namespace rockface::app {
 
-namespace {}  // namespace
+namespace {
+
+const std::string& geologist_of(const DriveGeologists& geologists, std::int64_t visit_id) {
+  static const std::string none = storage::kGeologistNotRecorded;
+  const auto it = geologists.find(visit_id);
+  return it == geologists.end() ? none : it->second;
+}
+
+}  // namespace
 
 std::vector<tunnel::SetObservation> visit_set_observations(storage::ProjectStore& store,
                                                            storage::RecordId visit_id) {
@@ -63,10 +76,21 @@ tunnel::DriveSets project_drive(storage::ProjectStore& store) {
   return tunnel::track_sets_along_drive(std::move(visits), options);
 }
 
-std::string drive_csv(const tunnel::DriveSets& drive) {
+DriveGeologists drive_geologists(storage::ProjectStore& store) {
+  std::set<storage::RecordId> placed;
+  for (const auto& p : store.list_visit_placements()) placed.insert(p.visit_id);
+  DriveGeologists out;
+  for (const auto& v : store.list_visits())
+    if (v.geologist && placed.count(v.id)) out[v.id] = *v.geologist;
+  return out;
+}
+
+std::string drive_csv(const tunnel::DriveSets& drive, const DriveGeologists& geologists) {
   std::ostringstream out;
+  // The geologist last: the columns before keep their places for the
+  // spreadsheets that read them (docs/scene-extensions.md).
   out << "set,visit,chainage,name,dip_deg,dipdir_deg,fisher_k,count,alpha95_deg,"
-         "angle_to_running_mean_deg,turn_cone_deg,event\n";
+         "angle_to_running_mean_deg,turn_cone_deg,event,geologist\n";
   for (const auto& t : drive.tracks) {
     for (const auto& p : t.points) {
       std::string event = p.turned ? "turns" : "";
@@ -79,20 +103,39 @@ std::string drive_csv(const tunnel::DriveSets& drive) {
           << "," << p.count << ","
           << (p.alpha95_deg < 180 ? storage::report_number(p.alpha95_deg, 1) : "") << ","
           << storage::report_number(p.angle_to_running_mean_deg, 1) << ","
-          << storage::report_number(p.turn_cone_deg, 1) << "," << event << "\n";
+          << storage::report_number(p.turn_cone_deg, 1) << "," << event << ","
+          << storage::csv_field(geologist_of(geologists, p.visit_id)) << "\n";
     }
     for (const auto& e : t.events)
       if (e.kind == tunnel::TrackEvent::Kind::vanishes)
         out << t.id << "," << e.visit_id << "," << storage::report_number(e.chainage, 3)
-            << ",,,,,,,,,vanishes\n";
+            << ",,,,,,,,,vanishes," << storage::csv_field(geologist_of(geologists, e.visit_id))
+            << "\n";
   }
   return out.str();
 }
 
-std::vector<std::string> drive_summary(const tunnel::DriveSets& drive) {
+std::vector<std::string> drive_summary(const tunnel::DriveSets& drive,
+                                       const DriveGeologists& geologists) {
   std::vector<std::string> lines;
   lines.push_back(std::to_string(drive.visits.size()) + " visits placed in the tunnel, " +
                   std::to_string(drive.tracks.size()) + " joint sets along the drive");
+  // Who mapped them, in the order they first mapped along the drive.
+  std::vector<std::pair<std::string, int>> mapped;
+  for (const auto& v : drive.visits) {
+    const std::string name = geologist_of(geologists, v.visit_id);
+    auto it =
+        std::find_if(mapped.begin(), mapped.end(), [&](const auto& m) { return m.first == name; });
+    if (it == mapped.end()) it = mapped.insert(mapped.end(), {name, 0});
+    ++it->second;
+  }
+  if (!mapped.empty()) {
+    std::string line = "geologists:";
+    for (std::size_t i = 0; i < mapped.size(); ++i)
+      line += std::string(i ? "," : "") + " " + mapped[i].first + " (" +
+              std::to_string(mapped[i].second) + (mapped[i].second == 1 ? " visit)" : " visits)");
+    lines.push_back(line);
+  }
   for (const auto& t : drive.tracks) {
     const auto& a = t.points.front();
     const auto& b = t.points.back();
@@ -102,7 +145,9 @@ std::vector<std::string> drive_summary(const tunnel::DriveSets& drive) {
         storage::report_number(b.chainage, 2) + ", " + storage::report_number(a.dip_deg, 0) + "/" +
         storage::report_number(a.dipdir_deg, 0) + " to " + storage::report_number(b.dip_deg, 0) +
         "/" + storage::report_number(b.dipdir_deg, 0));
-    for (const auto& e : t.events) lines.push_back("  " + e.message);
+    for (const auto& e : t.events)
+      lines.push_back("  " + e.message + " (geologist: " + geologist_of(geologists, e.visit_id) +
+                      ")");
   }
   return lines;
 }

@@ -4,6 +4,8 @@
 // (those stored with its joints, else its measured planes clustered as the
 // field report clusters them), and core/tunnel matches them across visits
 // by orientation and flags a set that appears, vanishes or turns.
+#include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -34,10 +36,18 @@ std::vector<JointOrientation> visit_joint_orientations(storage::ProjectStore& st
 // Throws InputError naming the project when it has no tunnel.
 tunnel::DriveSets project_drive(storage::ProjectStore& store);
 
-// One row per set and visit (and one per event), for a spreadsheet.
-std::string drive_csv(const tunnel::DriveSets& drive);
+// Who mapped each visit of the drive (issue 46), by the drive's visit id; a
+// visit nobody named is absent, and shown as storage::kGeologistNotRecorded.
+using DriveGeologists = std::map<std::int64_t, std::string>;
+DriveGeologists drive_geologists(storage::ProjectStore& store);
 
-// The lines the verb prints: each set's track and its events.
-std::vector<std::string> drive_summary(const tunnel::DriveSets& drive);
+// One row per set and visit (and one per event), for a spreadsheet; the
+// last column the geologist of the row's visit (RFC 4180 quoting).
+std::string drive_csv(const tunnel::DriveSets& drive, const DriveGeologists& geologists);
+
+// The lines the verb prints: the visits' geologists, each set's track and
+// its events (each naming who mapped the visit where it was found).
+std::vector<std::string> drive_summary(const tunnel::DriveSets& drive,
+                                       const DriveGeologists& geologists);
 
 }  // namespace rockface::app

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 
@@ -138,18 +139,29 @@ class ProjectWriter {
     }
     std::string sql = "INSERT INTO " + table + " (";
     std::string marks;
-    if (keep_id > 0 && has_column(table, "id")) {
+    const bool with_id = keep_id > 0 && has_column(table, "id");
+    if (with_id) {
       sql += "id, ";
-      marks += std::to_string(keep_id) + ", ";
+      marks += "?, ";
     }
     for (std::size_t i = 0; i < names.size(); ++i) {
       sql += (i ? ", " : "") + names[i];
       marks += (i ? ", ?" : "?");
     }
     sql += ") VALUES (" + marks + ")";
-    RawStatement st(db_, sql, "writing " + where);
+    // Prepared once per table and column list, not per row: parsing each
+    // INSERT (and coding the table's triggers into it) was most of a
+    // visit's copy (docs/accuracy-cost.md, issue 46's profile).
+    auto prepared = inserts_.find(sql);
+    if (prepared == inserts_.end())
+      prepared =
+          inserts_.emplace(sql, std::make_unique<RawStatement>(db_, sql, "writing " + where)).first;
+    RawStatement& st = *prepared->second;
+    st.reset("writing " + where);
+    if (with_id) st.bind_int64(1, keep_id);
+    const int first = with_id ? 2 : 1;
     for (std::size_t i = 0; i < names.size(); ++i) {
-      const int at = static_cast<int>(i + 1);
+      const int at = static_cast<int>(i) + first;
       const json& v = *values[i];
       if (v.is_null()) {
         st.bind_null(at);
@@ -244,6 +256,7 @@ class ProjectWriter {
   std::map<std::string, std::int64_t> images_;                       // sha/format -> row
   std::map<std::string, std::vector<ForeignKey>> fks_;
   std::map<std::string, std::set<std::string>> columns_;
+  std::map<std::string, std::unique_ptr<RawStatement>> inserts_;  // by their SQL
 };
 
 // The project row every tablet's project of the tunnel must agree on: its

@@ -78,6 +78,12 @@ ServerDrive read_server_drive(Connection& c, const std::string& name) {
     if (!planes.is_null(i, 4)) m.dipdir_deg = number(planes, i, 4);
     it->second.measurements.push_back(std::move(m));
   }
+  const Result geologists = latest(c, t.id, "visit_geologist", {"geologist"});
+  for (int i = 0; i < geologists.rows(); ++i) {
+    const auto it = visits.find(geologists.text(i, 0));
+    if (it != visits.end() && !geologists.is_null(i, 3))
+      it->second.geologist = geologists.text(i, 3);
+  }
   c.exec("COMMIT", "reading the drive");
   for (auto& [uuid, v] : visits) out.visits.push_back(std::move(v));
   std::sort(out.visits.begin(), out.visits.end(), [](const auto& a, const auto& b) {

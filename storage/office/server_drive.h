@@ -1,10 +1,12 @@
 #pragma once
 // What the office's drive (`rockface drive postgresql://... --tunnel NAME`)
 // needs from the server, across every tablet's visits of a tunnel: the
-// tunnel's drive direction and, per placed visit, its chainage, joint sets
-// and measured planes — read with a few queries over the latest revisions,
+// tunnel's drive direction and, per placed visit, its chainage, joint sets,
+// measured planes and geologist — read with a few queries over the latest revisions,
 // not by pulling the projects. Visits are numbered as a pull numbers them
 // (one tablet's project: its own visit ids; several: the server's order).
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/tunnel/alignment.h"
@@ -18,6 +20,7 @@ struct DriveVisitRecords {
   double chainage = 0;
   std::vector<JointSet> sets;             // in their stored order
   std::vector<Measurement> measurements;  // dip and dip direction only
+  std::optional<std::string> geologist;   // who mapped it; none: nobody named
 };
 
 struct ServerDrive {

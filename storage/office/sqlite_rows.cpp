@@ -26,6 +26,11 @@ void RawStatement::reset() {
   sqlite3_clear_bindings(st_);
 }
 
+void RawStatement::reset(const std::string& doing) {
+  reset();
+  doing_ = doing;
+}
+
 std::string RawStatement::text(int c) const {
   const auto* p = sqlite3_column_text(st_, c);
   return p ? std::string(reinterpret_cast<const char*>(p),

@@ -29,6 +29,9 @@ class RawStatement {
   RawStatement& operator=(const RawStatement&) = delete;
   bool step();
   void reset();
+  // Reset for another row, a failure then said as `doing` (a statement
+  // prepared once and stepped for many records).
+  void reset(const std::string& doing);
   sqlite3_stmt* get() const { return st_; }
   int columns() const { return sqlite3_column_count(st_); }
   std::string name(int c) const { return sqlite3_column_name(st_, c); }

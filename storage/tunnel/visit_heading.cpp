@@ -1,6 +1,7 @@
 #include "storage/tunnel/visit_heading.h"
 
 #include "core/common/error.h"
+#include "storage/project/one_line_name.h"
 #include "storage/project/project_sqlite.h"
 
 namespace rockface::storage {
@@ -21,23 +22,10 @@ Connection open_of(ProjectStore& store, bool write) {
 }  // namespace
 
 std::string checked_heading(const std::string& name, const std::string& field) {
-  const auto first = name.find_first_not_of(' ');
-  if (first == std::string::npos) return {};
-  const std::string trimmed = name.substr(first, name.find_last_not_of(' ') - first + 1);
-  for (unsigned char c : trimmed)
-    if (c < 0x20 || c == 0x7f)
-      throw InputError(field, "a heading's name is one line of text (\"North portal\", \"Bench\")");
   // The office lists a visit without a heading as "—" (and filters by it).
-  if (trimmed == "—")
-    throw InputError(field, "\"—\" stands for no heading: give the face's name, or none");
-  // Characters, not bytes: a UTF-8 name counts each of its letters once.
-  std::size_t chars = 0;
-  for (unsigned char c : trimmed) chars += (c & 0xC0) != 0x80;
-  if (chars > kHeadingMaxChars)
-    throw InputError(field, "a heading's name has at most " + std::to_string(kHeadingMaxChars) +
-                                " characters (\"" + trimmed.substr(0, 20) + "…\" has " +
-                                std::to_string(chars) + ")");
-  return trimmed;
+  static const OneLineNameRule rule{"a heading's name", "(\"North portal\", \"Bench\")", "—",
+                                    "no heading: give the face's name, or none", kHeadingMaxChars};
+  return checked_one_line_name(name, rule, field);
 }
 
 void save_visit_heading(ProjectStore& store, RecordId visit_id, const std::string& heading) {

@@ -1,5 +1,7 @@
 #include "tests/support/sample_records.h"
 
+#include "storage/project/project_schema.h"
+
 #include <unistd.h>
 
 #include <fstream>
@@ -229,6 +231,19 @@ TempDir::~TempDir() {
 std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), {});
+}
+
+sqlite::Connection project_at_schema(const std::filesystem::path& file, int version) {
+  sqlite::Connection db(file, sqlite::Connection::Access::read_write_create);
+  schema::create_version_1(db);
+  schema::migrate_to(db, version);
+  db.exec(
+      "INSERT INTO project (id, name, datum_x, datum_y, datum_z, created_at, created_by) "
+      "VALUES (1, 'site', 0, 0, 0, '2026-01-01T00:00:00.000Z', 'rockface');"
+      "INSERT INTO visit (id, started_at, source) VALUES (1, '2026-01-02T08:00:00.000Z', "
+      "'tablet');",
+      "writing a schema " + std::to_string(version) + " project");
+  return db;
 }
 
 }  // namespace rockface::storage::test

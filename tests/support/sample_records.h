@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "storage/project/project_records.h"
+#include "storage/project/project_sqlite.h"
 
 namespace rockface::storage::test {
 
@@ -36,5 +37,10 @@ class TempDir {
 };
 
 std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file);
+
+// A project file as rockface wrote it at an older schema `version`: schema 1
+// upgraded step by step, then the project's row and one visit (id 1).
+// The connection is left open for the test's own rows of that schema.
+sqlite::Connection project_at_schema(const std::filesystem::path& file, int version);
 
 }  // namespace rockface::storage::test

@@ -13,6 +13,7 @@
 #include <iterator>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -43,25 +44,28 @@ inline std::string demo_scene() {
   return std::string(ROCKFACE_SOURCE_DIR) + "/tools/samples/tunnel-face-demo.scene.json";
 }
 
-inline const std::filesystem::path& demo_project() {
-  static const std::filesystem::path project = [] {
-    const auto p = ui_test_dir() / "demo.rockface";
-    if (run_rockface_logged("replay " + demo_scene() + " --preset fast --project " + p.string(),
-                            ui_test_dir() / "replay.txt") != 0)
-      throw std::runtime_error("rockface replay of the demo failed: see " +
-                               (ui_test_dir() / "replay.txt").string());
-    return p;
-  }();
-  return project;
+// The variable CTest sets to the folder where its ui_demo_projects fixture
+// (tests/ui/demo_projects_main.cpp) replayed the demo projects once for all
+// the UI suites' processes (tests/ui/CMakeLists.txt).
+inline constexpr const char* kSharedDemoProjects = "ROCKFACE_TEST_DEMO_PROJECTS";
+
+// `rockface replay` of `scene` at the fast preset into `project` (a new
+// file), its output in `log`.
+inline void replay_demo_scene(const std::filesystem::path& scene,
+                              const std::filesystem::path& project,
+                              const std::filesystem::path& log) {
+  std::filesystem::remove(project);
+  if (run_rockface_logged(
+          "replay " + scene.string() + " --preset fast --project " + project.string(), log) != 0)
+    throw std::runtime_error("rockface replay of " + scene.filename().string() + " failed: see " +
+                             log.string());
 }
 
-// The demo face photographed as `pairs` stereo pairs (each further pair
-// `step_m` west of the one before; 1.2 m as in replay_face_picks_test.cpp
-// for two; closer for three, whose third pair must still see the lit face
-// and the pole), replayed
-// at the fast preset: a visit with several 3D images in one face frame.
-// Made once per test binary and pair count, only by the tests that ask.
-inline std::filesystem::path replay_of_pairs(int pairs, double step_m, const std::string& name) {
+// The demo scene with the face photographed as `pairs` stereo pairs (each
+// further pair `step_m` west of the one before; 1.2 m as in
+// replay_face_picks_test.cpp for two; closer for three, whose third pair
+// must still see the lit face and the pole), written to `file`.
+inline void write_pairs_scene(int pairs, double step_m, const std::filesystem::path& file) {
   std::ifstream in(demo_scene());
   nlohmann::json scene = nlohmann::json::parse(in);
   const nlohmann::json first = scene["imaging"]["stations"];
@@ -71,23 +75,71 @@ inline std::filesystem::path replay_of_pairs(int pairs, double step_m, const std
       st["look_at"][0] = st["look_at"][0].get<double>() - step_m * k;
       scene["imaging"]["stations"].push_back(st);
     }
-  const auto file = ui_test_dir() / (name + ".scene.json");
   std::ofstream(file) << scene.dump(2);
-  const auto p = ui_test_dir() / (name + ".rockface");
-  if (run_rockface_logged("replay " + file.string() + " --preset fast --project " + p.string(),
-                          ui_test_dir() / ("replay-" + name + ".txt")) != 0)
-    throw std::runtime_error("rockface replay of the " + name + " demo failed: see " +
-                             (ui_test_dir() / ("replay-" + name + ".txt")).string());
-  return p;
 }
 
+// The demo projects the UI suites open: the demo face (one pair) and the
+// visits of two and three pairs. Each is made by `make` (writing the scene
+// file it replays into the folder it is given), and named `name`.rockface.
+struct DemoProjectRecipe {
+  std::string name;
+  int pairs;
+  double step_m;
+};
+inline const std::vector<DemoProjectRecipe>& demo_project_recipes() {
+  static const std::vector<DemoProjectRecipe> recipes = {
+      {"demo", 1, 0.0}, {"two-pairs", 2, 1.2}, {"three-pairs", 3, 0.7}};
+  return recipes;
+}
+
+// Replays recipe `r` into `dir` (its scene file and log beside it).
+inline std::filesystem::path make_demo_project(const DemoProjectRecipe& r,
+                                               const std::filesystem::path& dir) {
+  std::filesystem::path scene = demo_scene();
+  if (r.pairs > 1) {
+    scene = dir / (r.name + ".scene.json");
+    write_pairs_scene(r.pairs, r.step_m, scene);
+  }
+  const auto project = dir / (r.name + ".rockface");
+  replay_demo_scene(scene, project, dir / ("replay-" + r.name + ".txt"));
+  return project;
+}
+
+// The demo project `name` in this process's folder, made once per process.
+// Under CTest it is a copy of the replay the ui_demo_projects fixture made
+// for every UI suite (the same `rockface replay` of the same scene: a
+// replay is ~8 s of CPU, and each suite's process, each test of the
+// session suite, made its own); run by hand, the process replays it.
+inline std::filesystem::path demo_project_named(const std::string& name) {
+  const auto project = ui_test_dir() / (name + ".rockface");
+  if (const char* shared = std::getenv(kSharedDemoProjects); shared && *shared) {
+    const auto made = std::filesystem::path(shared) / (name + ".rockface");
+    if (!std::filesystem::exists(made))
+      throw std::runtime_error(made.string() + " is missing: the ui_demo_projects fixture (" +
+                               std::string(kSharedDemoProjects) + ") did not make it");
+    std::filesystem::copy_file(made, project, std::filesystem::copy_options::overwrite_existing);
+    return project;
+  }
+  for (const DemoProjectRecipe& r : demo_project_recipes())
+    if (r.name == name) return make_demo_project(r, ui_test_dir());
+  throw std::logic_error("no demo project " + name);
+}
+
+inline const std::filesystem::path& demo_project() {
+  static const std::filesystem::path project = demo_project_named("demo");
+  return project;
+}
+
+// The demo face photographed as two and as three pairs, replayed at the
+// fast preset: a visit with several 3D images in one face frame. Made once
+// per test binary and pair count, only by the tests that ask.
 inline const std::filesystem::path& two_pair_project() {
-  static const std::filesystem::path project = replay_of_pairs(2, 1.2, "two-pairs");
+  static const std::filesystem::path project = demo_project_named("two-pairs");
   return project;
 }
 
 inline const std::filesystem::path& three_pair_project() {
-  static const std::filesystem::path project = replay_of_pairs(3, 0.7, "three-pairs");
+  static const std::filesystem::path project = demo_project_named("three-pairs");
   return project;
 }
 

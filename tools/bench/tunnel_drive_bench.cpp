@@ -71,7 +71,7 @@ void BM_ProjectDrive(benchmark::State& state) {
     storage::ProjectStore store = storage::ProjectStore::open(file, read);
     const tunnel::DriveSets drive = app::project_drive(store);
     const cv::Mat picture = storage::drive_picture(drive);
-    const std::string csv = app::drive_csv(drive);
+    const std::string csv = app::drive_csv(drive, app::drive_geologists(store));
     benchmark::DoNotOptimize(picture.data);
     benchmark::DoNotOptimize(csv.data());
     tracks = drive.tracks.size();

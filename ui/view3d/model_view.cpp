@@ -18,7 +18,11 @@ constexpr float kTapSlopPx = 12;
 
 namespace {
 
-photogrammetry::SurfaceMesh surface_of(storage::Mesh&& mesh) {
+// The stored mesh as a lattice on its photograph (`texture`, empty when it
+// has none): the pixels from the texture coordinates once here, on the
+// worker that opens the model, so that Find traces does not copy the whole
+// mesh to add them after the geologist's tap (issue 45).
+photogrammetry::SurfaceMesh surface_of(storage::Mesh&& mesh, const cv::Mat& texture) {
   photogrammetry::SurfaceMesh s;
   s.vertices = std::move(mesh.vertices);
   s.triangles.reserve(mesh.faces.size());
@@ -26,6 +30,7 @@ photogrammetry::SurfaceMesh surface_of(storage::Mesh&& mesh) {
   s.texcoords.reserve(mesh.texcoords.size());
   for (const auto& t : mesh.texcoords) s.texcoords.emplace_back(t[0], t[1]);
   s.colours = std::move(mesh.colours);
+  if (!texture.empty()) s.pixels_from_texcoords(texture.cols, texture.rows);
   return s;
 }
 
@@ -51,7 +56,8 @@ PreparedModel prepare_model(const std::filesystem::path& project, storage::Recor
       out.left_view = measure::left_view(
           *model->camera_to_mesh, store.load_calibration(*capture.calibration_id).intrinsics);
   }
-  auto surface = std::make_shared<photogrammetry::SurfaceMesh>(surface_of(std::move(model->mesh)));
+  auto surface = std::make_shared<photogrammetry::SurfaceMesh>(
+      surface_of(std::move(model->mesh), out.photo_bgr));
   model->mesh = {};
   out.picker = std::make_shared<measure::MeshPicker>(*surface);
   out.targets = locate_targets(*model, out.left_view, *surface, *out.picker);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -15,6 +14,7 @@
 #include "core/measure/proposals/disc_morphology.h"
 #include "core/measure/proposals/line_thinning.h"
 #include "core/measure/proposals/row_stripes.h"
+#include "core/measure/proposals/triangle_index_raster.h"
 
 namespace rockface::measure::proposals {
 
@@ -64,62 +64,43 @@ std::pair<double, double> robust_level(const cv::Mat& values, const cv::Mat& mas
 }
 
 // Each pixel of `shown` (CV_32S, -1 where nothing is drawn) set to the
-// index of the last of the mesh's triangles drawn over it, the ones
-// `drawn(t)` is true for, at `scale` of the mesh's lattice pixels. Each
-// stripe of rows draws, in the mesh's order, every triangle that reaches
-// its rows into rows of its own reaching kStripeMarginPx further: a
-// triangle moved by whole rows covers the same pixels moved, and one that
-// fits inside is not cut (OpenCV's polygon edges start where they enter
-// the image). A triangle taller than the margin has the whole image drawn
-// on one thread, as before.
+// index of the last of the mesh's triangles, in the mesh's order, that
+// reaches its square, of the ones `drawn(t)` is true for, at `scale`
+// of the mesh's lattice pixels (core/measure/proposals/
+// triangle_index_raster.h). Each stripe of rows draws the triangles that
+// reach its rows, into its rows only: the rule gives a pixel the same
+// triangle wherever the image is cut.
 template <class Drawn>
 void draw_triangle_indices(const photogrammetry::SurfaceMesh& mesh, double scale, cv::Mat& shown,
                            const Drawn& drawn) {
-  constexpr int kShift = 4;  // sub-pixel corners: 1/16 px
-  constexpr int kStripeMarginPx = 32;
-  // The rows a triangle's fill and edges may touch: its corners' rows
-  // rounded either way, and one more for the edges' steps.
-  const auto corners_of = [&](const std::array<int, 3>& t, cv::Point* corners, int& top,
-                              int& bottom) {
-    int lo = std::numeric_limits<int>::max(), hi = std::numeric_limits<int>::min();
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector2f p = mesh.pixels[t[k]];
-      corners[k] = cv::Point(static_cast<int>(std::lround(p.x() * scale * (1 << kShift))),
-                             static_cast<int>(std::lround(p.y() * scale * (1 << kShift))));
-      lo = std::min(lo, corners[k].y);
-      hi = std::max(hi, corners[k].y);
+  // The corners in fixed point once, not once a stripe for each of the
+  // six triangles a lattice vertex is a corner of.
+  std::vector<cv::Point> fixed(mesh.pixels.size());
+  const double to_fixed = scale * (1 << kRasterShift);
+  cv::parallel_for_(cv::Range(0, static_cast<int>(fixed.size())), [&](const cv::Range& range) {
+    for (int i = range.start; i < range.end; ++i) {
+      const Eigen::Vector2f& p = mesh.pixels[static_cast<std::size_t>(i)];
+      fixed[static_cast<std::size_t>(i)] =
+          cv::Point(cvRound(p.x() * to_fixed), cvRound(p.y() * to_fixed));
     }
-    top = (lo >> kShift) - 1;
-    bottom = (hi >> kShift) + 2;
-  };
-  const auto draw_all = [&](cv::Mat& into, int first_row, int from, int to, bool& too_tall) {
+  });
+  for_row_stripes(shown.size(), [&](cv::Range rows) {
+    cv::Mat own = shown.rowRange(rows);
+    // The rows a triangle may reach: within half a pixel of its corners'.
+    constexpr int kHalf = 1 << (kRasterShift - 1);
+    const int from = (rows.start << kRasterShift) - kHalf;
+    const int to = ((rows.end - 1) << kRasterShift) + kHalf;
     cv::Point corners[3];
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
       const auto& t = mesh.triangles[i];
-      int top = 0, bottom = 0;
-      corners_of(t, corners, top, bottom);
-      if (bottom < from || top >= to) continue;
+      for (int k = 0; k < 3; ++k) corners[k] = fixed[static_cast<std::size_t>(t[k])];
+      if (std::max({corners[0].y, corners[1].y, corners[2].y}) < from ||
+          std::min({corners[0].y, corners[1].y, corners[2].y}) > to)
+        continue;
       if (!drawn(t)) continue;
-      if (top < first_row && first_row > 0) too_tall = true;
-      if (bottom > first_row + into.rows && first_row + into.rows < shown.rows) too_tall = true;
-      for (auto& corner : corners) corner.y -= first_row << kShift;
-      cv::fillConvexPoly(into, corners, 3, cv::Scalar(static_cast<double>(i)), cv::LINE_8, kShift);
+      draw_triangle_index(own, rows.start, corners, static_cast<int>(i));
     }
-  };
-  std::atomic<bool> any_too_tall{false};
-  for_row_stripes(shown.size(), [&](cv::Range rows) {
-    const int first = std::max(0, rows.start - kStripeMarginPx);
-    const int last = std::min(shown.rows, rows.end + kStripeMarginPx);
-    cv::Mat own(last - first, shown.cols, CV_32S, cv::Scalar(-1));
-    bool too_tall = false;
-    draw_all(own, first, rows.start, rows.end, too_tall);
-    if (too_tall) any_too_tall = true;
-    own.rowRange(rows.start - first, rows.end - first).copyTo(shown.rowRange(rows));
   });
-  if (!any_too_tall) return;
-  shown.setTo(cv::Scalar(-1));
-  bool unused = false;
-  draw_all(shown, 0, 0, shown.rows, unused);
 }
 
 }  // namespace

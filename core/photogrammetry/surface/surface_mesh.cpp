@@ -24,6 +24,18 @@ std::optional<Eigen::Vector3d> SurfaceMesh::point_at_pixel(const Eigen::Vector2d
   return found;
 }
 
+void SurfaceMesh::pixels_from_texcoords(int width, int height) {
+  if (texcoords.size() != vertices.size() || width <= 0 || height <= 0) return;
+  texture_width = width;
+  texture_height = height;
+  const float w = static_cast<float>(width), h = static_cast<float>(height);
+  // The inverse of core/photogrammetry/estimators/triangulation.cpp:
+  // u = (x + 0.5) / W, v = 1 - (y + 0.5) / H.
+  pixels.clear();
+  pixels.reserve(texcoords.size());
+  for (const auto& t : texcoords) pixels.emplace_back(t.x() * w - 0.5f, (1.0f - t.y()) * h - 0.5f);
+}
+
 double SurfaceMesh::median_edge_length() const {
   std::vector<double> lengths;
   // A sample of the triangles is plenty for a median.

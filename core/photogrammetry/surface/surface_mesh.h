@@ -31,6 +31,13 @@ struct SurfaceMesh {
   std::optional<Eigen::Vector3d> point_at_pixel(const Eigen::Vector2d& pixel,
                                                 double max_distance_px) const;
 
+  // Every vertex's pixel in the left photograph (`texture_width` x
+  // `texture_height`) from its texture coordinates, and that size kept:
+  // what a stored mesh, which keeps only the texture coordinates, needs to
+  // be a lattice again. Nothing when the texture coordinates are not one
+  // per vertex or the size is unknown.
+  void pixels_from_texcoords(int texture_width, int texture_height);
+
   // Median length of the lattice edges (the point spacing), model units.
   double median_edge_length() const;
 };

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
+
 #include "core/common/error.h"
 #include "core/geometry/orientation.h"
 
@@ -97,6 +99,50 @@ TEST(DriveSets, TurnNewAndVanishedSetsAreFoundAtTheirChainage) {
       std::acos(1 - (30 - R) / R * (std::pow(20.0, 1.0 / 29) - 1)) * 180 / std::numbers::pi;
   EXPECT_NEAR(b->points[0].alpha95_deg, a95, 1e-12);
   EXPECT_NEAR(fisher_alpha95_deg(100, 30), a95, 1e-12);
+}
+
+// The turning rule at its threshold: two visits of one set, 20 poles at
+// K = 50 each, the second turned (its dip steeper, about the strike) by the
+// two visits' alpha95 together (the running mean before it is the first
+// visit alone) less or more 0.01 deg. alpha95 from Fisher's formula written
+// out here. 0.01 deg is far above the rounding of the angle between two
+// unit vectors (about 1e-7 deg) and below any change a geologist reads.
+TEST(DriveSets, ASetTurnsJustBeyondTheTwoConesAndNotJustWithinThem) {
+  const int n = 20;
+  const double k = 50;
+  const double r = n - (n - 1) / k;
+  const double a95 =
+      std::acos(1 - (n - r) / r * (std::pow(20.0, 1.0 / (n - 1)) - 1)) * 180 / std::numbers::pi;
+  const double cone = 2 * a95;  // about 2 x 4.5 deg
+  // Dip 40 towards 300: the strike (horizontal, across the dip direction)
+  // is the axis that steepens the dip.
+  const double dd = 300 * std::numbers::pi / 180, dip = 40 * std::numbers::pi / 180;
+  const Eigen::Vector3d before(std::sin(dip) * std::sin(dd), std::sin(dip) * std::cos(dd),
+                               std::cos(dip));
+  const Eigen::Vector3d strike(-std::cos(dd), std::sin(dd), 0);
+  for (const double margin : {-0.01, 0.01}) {
+    const double turn = cone + margin;
+    const Eigen::Vector3d after = Eigen::AngleAxisd(turn * std::numbers::pi / 180, strike) * before;
+    const DriveSets d = track_sets_along_drive(
+        {{1, 10.0, {{"J1", before, k, n}}}, {2, 12.5, {{"J1", after, k, n}}}});
+    ASSERT_EQ(d.tracks.size(), 1u) << margin;
+    const SetTrack& t = d.tracks[0];
+    ASSERT_EQ(t.points.size(), 2u) << margin;
+    EXPECT_NEAR(t.points[1].dip_deg, 40 + turn, 1e-6) << "the turn steepens the dip";
+    EXPECT_NEAR(t.points[1].turn_cone_deg, cone, 1e-9) << margin;
+    EXPECT_NEAR(t.points[1].angle_to_running_mean_deg, turn, 1e-6) << margin;
+    EXPECT_EQ(t.turns, margin > 0) << "turned by " << turn << " deg against cones of " << cone;
+    EXPECT_EQ(t.points[1].turned, margin > 0) << margin;
+    EXPECT_FALSE(t.points[0].turned);
+    if (margin > 0) {
+      ASSERT_EQ(t.events.size(), 1u);
+      EXPECT_EQ(t.events[0].kind, TrackEvent::Kind::turns);
+      EXPECT_DOUBLE_EQ(t.events[0].chainage, 12.5);
+      EXPECT_DOUBLE_EQ(t.events[0].previous_chainage, 10.0);
+    } else {
+      EXPECT_TRUE(t.events.empty());
+    }
+  }
 }
 
 TEST(DriveSets, ADescendingDriveWalksTheVisitsByFallingChainage) {

@@ -18,6 +18,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -888,6 +889,34 @@ TEST(OfficeWebBrowser, TheRoundsTwoVisitsSideBySideAndTheReportsPictures) {
   }
   EXPECT_EQ(blocks_earlier, va["blocks"].size());
   EXPECT_EQ(blocks_later, vb["blocks"].size());
+  // Who mapped each visit, as the tablet named them (truth::geologist),
+  // shown as text beside each: tablet A's name holds markup. Tablet B's two
+  // (its first named, its second not) through the same answer the page
+  // draws from, each on its side.
+  auto named = [](const std::string& id) {
+    const auto v = truth::visit_of(id);
+    EXPECT_TRUE(v) << "visit " << id << " is not in the tablets' files";
+    return v ? truth::geologist(*v).value_or("not recorded") : std::string("?");
+  };
+  for (const char* side : {"earlier", "later"})
+    EXPECT_EQ(d.script("const s = document.getElementById(`compare-geologist-${arguments[0]}`); "
+                       "return s && s.children.length === 0 ? s.textContent : null",
+                       json::array({side})),
+              "geologist: " + named(ab[side]["id"]))
+        << side;
+  std::vector<std::string> of_b;
+  const json drive_now = get_json("/api/drive?tunnel=Main%20drive");
+  for (const auto& v : drive_now["visits"])
+    if (v["tablet"] == "tablet_b") of_b.push_back(v["id"]);
+  ASSERT_EQ(of_b.size(), 2u);
+  const json b_pair = get_json("/api/compare?tunnel=Main%20drive&a=" + of_b[0] + "&b=" + of_b[1]);
+  std::set<std::string> b_names;
+  for (const char* side : {"earlier", "later"}) {
+    EXPECT_EQ(b_pair[side]["geologist"], named(b_pair[side]["id"])) << side;
+    b_names.insert(named(b_pair[side]["id"]));
+  }
+  EXPECT_EQ(b_names, (std::set<std::string>{"Anna Berger", "not recorded"}))
+      << "tablet B's visits were named by one geologist and by none (office_site.cpp)";
   // A visit against itself: every set matched unchanged, every block found
   // where it was with its verdict.
   const json same = get_json("/api/compare?tunnel=Main%20drive&a=" + b + "&b=" + b);
@@ -1069,6 +1098,67 @@ TEST(OfficeWebBrowser, TheDriveIsFilteredByTheHeadingAVisitWasTakenAt) {
                      "drive by heading");
 }
 
+// A plane's unit normal from its dip and dip direction (degrees; x east,
+// y north, z up), written out here rather than taken from the code under
+// test.
+Eigen::Vector3d normal_of(const DipAndDirection& o) {
+  const double dip = o.dip_deg * std::numbers::pi / 180, dd = o.dipdir_deg * std::numbers::pi / 180;
+  return {std::sin(dip) * std::sin(dd), std::sin(dip) * std::cos(dd), std::cos(dip)};
+}
+
+// The sets designed along the drive (office_site.h), found in the page's
+// table of sets (rows: name, last sighting, flags, events) by the
+// orientation and chainage they were put in at: the turning set is new
+// where it first came and turns where its dip was made steeper, by the
+// angle put in; the steady set carries no flag, and no other set turns.
+void expect_the_designed_sets_flagged(const json& rows) {
+  const double first = kTabletBChainage, turned = kTabletBChainage + 2.5;
+  // The row last seen at `chainage` near `o`: a visit's mean of six planes
+  // lies within 0.4 deg of the mean put in (their scatter's offsets,
+  // tablet_projects.cpp), shown to the whole degree (0.5 more).
+  auto row_of = [&](const DipAndDirection& o, double chainage) -> std::optional<json> {
+    for (const auto& row : rows) {
+      double ch = 0, dip = 0, dipdir = 0;
+      if (std::sscanf(row[1].get<std::string>().c_str(), "ch %lf m: %lf° / %lf°", &ch, &dip,
+                      &dipdir) != 3)
+        continue;
+      if (std::abs(ch - chainage) < 0.05 && std::abs(dip - o.dip_deg) <= 0.9 &&
+          std::abs(std::remainder(dipdir - o.dipdir_deg, 360.0)) <= 0.9)
+        return row;
+    }
+    return std::nullopt;
+  };
+  const std::optional<json> steady = row_of(kSteadySet, turned);
+  const std::optional<json> turning = row_of(kTurnsTo, turned);
+  ASSERT_TRUE(steady) << "no set last seen at ch " << turned << " near the steady set's "
+                      << kSteadySet.dip_deg << "/" << kSteadySet.dipdir_deg << ": " << rows.dump();
+  ASSERT_TRUE(turning) << "no set last seen at ch " << turned << " near the turned set's "
+                       << kTurnsTo.dip_deg << "/" << kTurnsTo.dipdir_deg << ": " << rows.dump();
+  EXPECT_EQ((*steady)[2], "–") << "the steady set is flagged: " << steady->dump();
+  const std::string flags = (*turning)[2], events = (*turning)[3];
+  EXPECT_NE(flags.find("new"), std::string::npos) << turning->dump();
+  EXPECT_NE(flags.find("turns"), std::string::npos) << turning->dump();
+  // New where it was first put in (tablet A's visit at ch 102 has it not).
+  char at[80];
+  std::snprintf(at, sizeof at, "appears at chainage %.2f", first);
+  EXPECT_NE(events.find(at), std::string::npos) << events;
+  // It turns between the two visits by the angle between the two means put
+  // in (12 deg); the visits' means, scattered alike about them, differ
+  // from it by less than 0.2 deg, and the page shows a tenth.
+  const double put_in =
+      std::acos(normal_of(kTurnsFrom).dot(normal_of(kTurnsTo))) * 180 / std::numbers::pi;
+  std::snprintf(at, sizeof at, "turns between chainage %.2f and %.2f: ", first, turned);
+  const std::size_t turn = events.find(at);
+  ASSERT_NE(turn, std::string::npos) << events;
+  const double shown = std::stod(events.substr(turn + std::strlen(at)));
+  EXPECT_NEAR(shown, put_in, 0.25) << events;
+  for (const auto& row : rows) {
+    if (row == *turning) continue;
+    EXPECT_EQ(row[2].get<std::string>().find("turns"), std::string::npos)
+        << "a set that was not turned is flagged as turning: " << row.dump();
+  }
+}
+
 // The drive's sets (issue 46: "the sets along the drive (dip / dip
 // direction against chainage, new and turning sets flagged)"): the page's
 // table and both charts against the sets the server tracks along the drive
@@ -1114,6 +1204,7 @@ TEST(OfficeWebBrowser, TheDrivesSetsAreTheSetsTheServerTracksAlongTheDrive) {
     EXPECT_NEAR(dipdir, last.dipdir_deg, 0.5 + 1e-9) << seen;
     EXPECT_NE(seen.find(" planes)"), std::string::npos) << seen;
   }
+  expect_the_designed_sets_flagged(rows);
 
   // The charts (ui/web/drive.js: a 900 x 170 viewBox, the plot from x 48
   // to 888 over the chainage of the placed visits and the tracks' points,
@@ -1169,6 +1260,9 @@ TEST(OfficeWebBrowser, TheDrivesSetsAreTheSetsTheServerTracksAlongTheDrive) {
                            << "°) is not where the chart must put it: " << dots.dump();
       }
     EXPECT_EQ(dots.size(), points) << label;
+    // One point turned along the drive: the turning set's at its turn.
+    EXPECT_EQ(std::count_if(dots.begin(), dots.end(), [](const json& c) { return c[2] == 6.0; }), 1)
+        << label << ": " << dots.dump();
   }
 }
 

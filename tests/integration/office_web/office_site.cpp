@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -93,14 +94,20 @@ Site make_site() {
                     "'; ALTER ROLE main_office PASSWORD '" + kMainOfficePassword + "'",
                 s.database);
 
+  const std::array<double, 2> steady{kSteadySet.dip_deg, kSteadySet.dipdir_deg};
   TabletProject a;
   a.name = "tablet A";
   a.visits = 1;
   a.dense_face_visit = true;  // joints, sets and blocks to show
+  a.designed_sets = {{"S3", {steady}}};
   TabletProject b;
   b.name = "tablet B";
   b.seed = 2;
-  b.first_chainage = 107;
+  b.first_chainage = kTabletBChainage;
+  b.designed_sets = {{"S3", {steady, steady}},
+                     {"S4",
+                      {std::array<double, 2>{kTurnsFrom.dip_deg, kTurnsFrom.dipdir_deg},
+                       std::array<double, 2>{kTurnsTo.dip_deg, kTurnsTo.dipdir_deg}}}};
   // Tablet C maps the other tunnel: what its office role, and only it
   // (besides rockface_office), may read.
   TabletProject c;

@@ -30,6 +30,24 @@ inline constexpr const char* kScriptNote =
 // 2 m apart, on the sample face (y about 4).
 inline constexpr const char* kPoleTargets = "[[0.1, 4.0, 0.2], [0.1, 4.0, 2.2]]";
 
+// Two sets designed along Main drive (issue 46: "new and turning sets
+// flagged"), each measured as six planes within 2 deg of its mean
+// (tablet_projects.h's DesignedSet) where the tablets see it:
+// - the steady set, at every placed visit (tablet A's at ch 102, tablet B's
+//   at kTabletBChainage and 2.5 m on): flagged nothing;
+// - the turning set, first seen at kTabletBChainage (new there) dipping
+//   kTurnsFrom; at tablet B's next visit, 2.5 m on, kTurnsTo: its dip 12
+//   deg steeper, the same dip direction. 12 deg is far beyond the
+//   confidence cones of six planes this close (a few degrees), and within
+//   the 20 deg that keeps a set one track (core/tunnel/drive_sets.h).
+struct DipAndDirection {
+  double dip_deg = 0, dipdir_deg = 0;
+};
+inline constexpr DipAndDirection kSteadySet{80, 30};
+inline constexpr DipAndDirection kTurnsFrom{35, 340}, kTurnsTo{47, 340};
+// Tablet B's first visit's chainage (m); its second is 2.5 m on.
+inline constexpr double kTabletBChainage = 107;
+
 struct Site {
   std::string database;
   // libpq key=value text naming the web server's service role and its

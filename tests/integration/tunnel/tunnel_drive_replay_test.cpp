@@ -204,7 +204,7 @@ TEST(TunnelDriveReplay, FiveReplayedVisitsFindTheTurnAndTheNewSet) {
   storage::ProjectStore store = storage::ProjectStore::open(project);
   const tunnel::DriveSets drive = project_drive(store);
   ASSERT_EQ(drive.visits.size(), 5u);
-  for (const auto& line : drive_summary(drive)) std::cout << line << "\n";
+  for (const auto& line : drive_summary(drive, drive_geologists(store))) std::cout << line << "\n";
   const tunnel::SetTrack* turning = nullptr;
   const tunnel::SetTrack* fresh = nullptr;
   for (const auto& t : drive.tracks) {

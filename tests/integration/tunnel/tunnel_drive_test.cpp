@@ -3,18 +3,21 @@
 // scatter), one set turning by 20 degrees over the 10 m, one steady, one
 // present only in the last two visits. The `drive` verb must find the turn
 // and the new set by orientation alone (the sets carry no names), and write
-// the picture and the table.
+// the picture and the table, naming who mapped each visit.
 #include <unistd.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
-#include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "storage/exchange/csv_record.h"
 #include "storage/project/project_store.h"
 #include "storage/tunnel/tunnel_files.h"
 #include "tests/support/test_paths.h"
@@ -24,18 +27,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// RFC 4180 records (a geologist's name may hold a comma).
 std::vector<std::vector<std::string>> read_csv(const fs::path& file) {
   std::ifstream in(file);
   std::vector<std::vector<std::string>> rows;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> row;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(cell);
-    if (!line.empty() && line.back() == ',') row.emplace_back();
-    rows.push_back(row);
-  }
+  for (std::vector<std::string> row; storage::read_csv_record(in, row);) rows.push_back(row);
   return rows;
 }
+
+// Who mapped each of the five visits (issue 46): the first three one
+// geologist, the fourth another whose name holds a comma, the last nobody.
+const std::array<const char*, 5> kGeologists = {"Anna Berger", "Anna Berger", "Anna Berger",
+                                                "Smith, J.", ""};
 
 TEST(TunnelDrive, ATurningSetAndANewSetAreFoundAtTheirChainage) {
   const fs::path dir =
@@ -44,6 +47,7 @@ TEST(TunnelDrive, ATurningSetAndANewSetAreFoundAtTheirChainage) {
   fs::create_directories(dir);
   const fs::path samples = fs::path(ROCKFACE_SOURCE_DIR) / "tools/samples";
   const fs::path project = dir / "drive.rockface";
+  std::map<std::string, std::string> visit_geologist;  // by the CSV's visit column
   {
     storage::ProjectInfo info;
     info.name = "drive";
@@ -62,7 +66,9 @@ TEST(TunnelDrive, ATurningSetAndANewSetAreFoundAtTheirChainage) {
     const std::array<double, 6> ddip{-2, -1, 0, 1, 2, 0}, ddir{1, -2, 2, -1, 0, -1};
     for (int v = 0; v < 5; ++v) {
       const double chainage = 102.0 + 2.5 * v;
-      const storage::RecordId visit = store.begin_visit("visit at " + std::to_string(chainage));
+      const storage::RecordId visit =
+          store.begin_visit("visit at " + std::to_string(chainage), {}, kGeologists[v]);
+      visit_geologist[std::to_string(visit)] = *kGeologists[v] ? kGeologists[v] : "not recorded";
       std::vector<storage::Measurement> planes;
       auto add = [&](double dip, double dipdir) {
         for (std::size_t i = 0; i < ddip.size(); ++i) {
@@ -96,7 +102,29 @@ TEST(TunnelDrive, ATurningSetAndANewSetAreFoundAtTheirChainage) {
   const auto rows = read_csv(csv);
   ASSERT_GT(rows.size(), 1u);
   // Columns: set, visit, chainage, name, dip, dipdir, K, count, alpha95,
-  // angle to running mean, cone, event.
+  // angle to running mean, cone, event as before (docs/scene-extensions.md),
+  // then the visit's geologist.
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"set", "visit", "chainage", "name", "dip_deg",
+                                               "dipdir_deg", "fisher_k", "count", "alpha95_deg",
+                                               "angle_to_running_mean_deg", "turn_cone_deg",
+                                               "event", "geologist"}));
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), rows[0].size()) << "row " << r;
+    EXPECT_EQ(rows[r][12], visit_geologist.at(rows[r][1])) << "row " << r;
+  }
+  {
+    std::ifstream in(dir / "out.txt");
+    const std::string printed((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+    EXPECT_NE(printed.find("\ngeologists: Anna Berger (3 visits), Smith, J. (1 visit), not "
+                           "recorded (1 visit)\n"),
+              std::string::npos)
+        << printed;
+    // The new set is found at the fourth visit, Smith's.
+    EXPECT_NE(printed.find("appears at chainage 109.50, not seen before (geologist: Smith, J.)"),
+              std::string::npos)
+        << printed;
+  }
   std::map<std::string, std::vector<std::vector<std::string>>> by_set;
   for (std::size_t r = 1; r < rows.size(); ++r) by_set[rows[r][0]].push_back(rows[r]);
   ASSERT_EQ(by_set.size(), 3u) << "three sets along the drive";

@@ -57,6 +57,12 @@ TEST(OfficeSync, TwoTabletsSyncToOneServerAndPullBack) {
   b.first_chainage = 107;
   make_tablet_project(dir / "a.rockface", a);
   make_tablet_project(dir / "b.rockface", b);
+  {
+    // Tablet A's first visit names its geologist (a comma in the name, for
+    // the drive's CSV); the others name none.
+    storage::ProjectStore store = storage::ProjectStore::open(dir / "a.rockface");
+    store.save_visit_geologist(store.list_visits().front().id, "Anna Berger, site geologist");
+  }
   // The schema-6 upgrade of a fresh project happens at create: take the
   // content after one open so that the comparison sees only the sync.
   const std::string before_a = project_content(dir / "a.rockface");
@@ -103,10 +109,22 @@ TEST(OfficeSync, TwoTabletsSyncToOneServerAndPullBack) {
   EXPECT_TRUE(found) << "tablet B's first capture is in the pulled project";
 
   // The office's drive from the server is the drive of the pulled project.
-  const auto from_server = app::server_drive(as_role(db, "office_reader"), "Main drive");
+  // Who mapped each visit too, read from the server with the drive.
+  const storage::office::ServerDrive records =
+      app::server_drive_records(as_role(db, "office_reader"), "Main drive");
+  const auto from_server = app::server_drive(records);
   const auto from_pulled = app::project_drive(pulled);
-  EXPECT_EQ(app::drive_csv(from_server), app::drive_csv(from_pulled));
-  EXPECT_EQ(app::drive_summary(from_server), app::drive_summary(from_pulled));
+  const app::DriveGeologists named = app::server_drive_geologists(records);
+  EXPECT_EQ(named, app::drive_geologists(pulled));
+  ASSERT_EQ(named.size(), 1u) << "tablet A's first visit alone names its geologist";
+  EXPECT_EQ(named.begin()->second, "Anna Berger, site geologist");
+  EXPECT_EQ(app::drive_csv(from_server, named),
+            app::drive_csv(from_pulled, app::drive_geologists(pulled)));
+  EXPECT_EQ(app::drive_summary(from_server, named),
+            app::drive_summary(from_pulled, app::drive_geologists(pulled)));
+  EXPECT_NE(app::drive_csv(from_server, named).find(",\"Anna Berger, site geologist\"\n"),
+            std::string::npos)
+      << "the name, quoted for its comma, ends its visit's rows";
   EXPECT_EQ(from_server.visits.size(), 4u);
   // And its support per round (`drive postgresql://... --support-csv`).
   const auto rounds = app::server_drive_support(as_role(db, "office_reader"), "Main drive", none);

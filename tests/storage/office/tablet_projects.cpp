@@ -10,6 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/common/degrees_per_radian.h"
+#include "core/geometry/orientation.h"
+#include "core/measure/joint_sets.h"
 #include "storage/office/pg_connection.h"
 #include "storage/office/record_documents.h"
 #include "storage/office/sqlite_rows.h"
@@ -86,7 +89,8 @@ void add_visit(ProjectStore& store, const TabletProject& o, RecordId calibration
   const RecordId capture_id = store.save_capture(capture);
   const RecordId model = store.save_model(storage::test::sample_model(capture_id));
   std::vector<Measurement> planes;
-  auto add = [&](double dip, double dipdir) {
+  // Six planes about (dip, dipdir), turned by `shift_deg` in dip direction.
+  auto add = [&](double dip, double dipdir, double shift_deg) {
     for (std::size_t i = 0; i < ddip.size(); ++i) {
       Measurement m;
       m.visit_id = visit;
@@ -96,21 +100,40 @@ void add_visit(ProjectStore& store, const TabletProject& o, RecordId calibration
       // The first visit's joints (below) with traces assigned to them as
       // the geologist assigns them on the tablet: T1-T5 to J1 (set S1),
       // T7-T11 to J2 (set S2), T6 to J3 (a joint of no set), T12 to none.
+      // The designed sets' traces (13 on) are assigned to no joint.
       if (v == 0) {
         const std::size_t n = planes.size() + 1;
-        m.joint_label = n == 6 ? "J3" : n == 12 ? "" : n < 6 ? "J1" : "J2";
+        m.joint_label = n < 6 ? "J1" : n == 6 ? "J3" : n < 12 ? "J2" : "";
       }
       m.points = {{0.1 * i, chainage - 70, 0.3}, {1.0 + 0.1 * i, chainage - 70, 1.1}};
       m.dip_deg = dip + ddip[i] + 0.1 * o.seed;
-      m.dipdir_deg = std::fmod(dipdir + ddir[(i + o.seed) % ddir.size()] + 5.0 * v + 360, 360);
+      m.dipdir_deg = std::fmod(dipdir + ddir[(i + o.seed) % ddir.size()] + shift_deg + 360, 360);
       planes.push_back(m);
     }
   };
-  add(60, 200);
-  add(75, 110);
+  add(60, 200, 5.0 * v);
+  add(75, 110, 5.0 * v);
+  std::vector<JointSet> sets = storage::test::sample_joint_sets();
+  for (const DesignedSet& d : o.designed_sets) {
+    if (static_cast<std::size_t>(v) >= d.per_visit.size() || !d.per_visit[v]) continue;
+    const std::size_t first = planes.size();
+    add((*d.per_visit[v])[0], (*d.per_visit[v])[1], 0);
+    std::vector<Eigen::Vector3d> poles;
+    for (std::size_t i = first; i < planes.size(); ++i)
+      poles.push_back(geometry::plane_normal_deg(*planes[i].dip_deg, *planes[i].dipdir_deg));
+    // Stored as the tablet computes a set: the Fisher statistics of its poles.
+    const measure::FisherStatistics f = measure::fisher_statistics(poles);
+    JointSet js;
+    js.label = d.label;
+    js.dip_deg = f.plane().dip * kDegPerRad;
+    js.dipdir_deg = f.plane().dipdir * kDegPerRad;
+    js.fisher_k = f.kappa;
+    js.count = static_cast<int>(f.count);
+    js.alpha95_deg = f.alpha95 * kDegPerRad;
+    sets.push_back(js);
+  }
   store.save_measurements(visit, planes);
-  if (v == 0)
-    store.save_joints(visit, storage::test::sample_joint_sets(), storage::test::sample_joints());
+  if (v == 0) store.save_joints(visit, sets, storage::test::sample_joints());
   store.save_analysis(analysis_with_shapes(store, visit, model));
   VisitPlacement p;
   p.visit_id = visit;

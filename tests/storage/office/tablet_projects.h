@@ -1,10 +1,24 @@
 #pragma once
 // Small tablet projects for the office suite, and the checks that a server
 // holds exactly what a tablet sent.
+#include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace rockface::office_test {
+
+// A set of planes a test designs along the drive (e.g. one that turns),
+// beside the two families every visit measures: its mean dip / dip
+// direction (degrees) at each visit, none where the visit does not see it.
+// Six planes scattered about that mean as the others are (within 2 deg);
+// at visit 0, whose sets are stored, the set is stored too, with the Fisher
+// statistics of its planes.
+struct DesignedSet {
+  std::string label;  // its stored set's label at visit 0 ("S3", ...)
+  std::vector<std::optional<std::array<double, 2>>> per_visit;
+};
 
 struct TabletProject {
   std::string name = "tablet";
@@ -15,6 +29,7 @@ struct TabletProject {
   bool dense_face_visit = false;  // one more visit: a mapped face with joints, for the analysis
   std::string tunnel = "Main drive";
   double underbreak_tolerance_m = 0.05;  // another value: the same tunnel, designed differently
+  std::vector<DesignedSet> designed_sets;
 };
 
 // A project with the sample tunnel (tools/samples/tunnel-drive.*), and per

@@ -88,15 +88,7 @@ TEST(ProjectCompass, ASchema8ProjectIsUpgradedKeepingItsRows) {
   TempDir dir("compass-migration");
   const auto file = dir / "eight.rockface";
   {
-    sqlite::Connection db(file, sqlite::Connection::Access::read_write_create);
-    schema::create_version_1(db);
-    schema::migrate_to(db, 8);
-    db.exec(
-        "INSERT INTO project (id, name, datum_x, datum_y, datum_z, created_at, created_by) "
-        "VALUES (1, 'site', 0, 0, 0, '2026-01-01T00:00:00.000Z', 'rockface');"
-        "INSERT INTO visit (id, started_at, source) VALUES (1, '2026-01-02T08:00:00.000Z', "
-        "'tablet');",
-        "test");
+    sqlite::Connection db = test::project_at_schema(file, 8);
     sqlite::Statement st(db,
                          "INSERT INTO measurement (visit_id, kind, label, joint_label, points, "
                          "dip, dipdir, fit_rms_m, rock_side, created_at, note, origin) VALUES (1, "

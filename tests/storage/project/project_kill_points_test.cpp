@@ -220,19 +220,26 @@ TEST_P(ProjectKillPoints, SigkillBeforeEveryWriteLosesNothingCommitted) {
   const int calls = write_calls(op, dir.path());
   ASSERT_GT(calls, 3) << "the operation writes nothing through the faulty VFS";
 
+  // The state before the operation is made once, and each kill starts from
+  // a copy of it (the project file with its log, as a kill would find it on
+  // the card; the twin below has always been such a copy): the same bytes
+  // before every kill, so the content before the operation (a version-1
+  // file is read only after its upgrade) and after it run without a kill, on
+  // a copy, are the same for every n and are taken once.
+  const fs::path prepared = dir / "prepared.rockface";
+  op.prepare(prepared);
+  const std::string before = upgrade ? "" : content_before(prepared, dir / "scratch.rockface");
+  const fs::path twin = dir / "twin.rockface";
+  copy_project(prepared, twin);
+  ASSERT_FALSE(run_killed([&] { op.run(twin); }, 0));
+  const std::string after = content_of(twin);
+  remove_project(twin);
+
   int old_state = 0;
   for (int n = 1; n <= calls; ++n) {
     SCOPED_TRACE("killed before write call " + std::to_string(n));
     const fs::path file = dir / ("kill-" + std::to_string(n) + ".rockface");
-    op.prepare(file);
-    // The content before (a version-1 file is read only after its
-    // upgrade) and after the operation run without a kill, on a copy.
-    const std::string before = upgrade ? "" : content_before(file, dir / "scratch.rockface");
-    const fs::path twin = dir / "twin.rockface";
-    copy_project(file, twin);
-    ASSERT_FALSE(run_killed([&] { op.run(twin); }, 0));
-    const std::string after = content_of(twin);
-    remove_project(twin);
+    copy_project(prepared, file);
     ASSERT_TRUE(run_killed([&] { op.run(file); }, n));
     if (!fs::exists(file)) {
       // Only a project being created may be absent, and then it can be

@@ -78,15 +78,7 @@ TEST(VisitGeologist, ASchema12ProjectIsUpgradedWithItsVisitsGeologistNotRecorded
   TempDir dir("geologist-migration");
   const auto file = dir / "twelve.rockface";
   {
-    sqlite::Connection db(file, sqlite::Connection::Access::read_write_create);
-    schema::create_version_1(db);
-    schema::migrate_to(db, 12);
-    db.exec(
-        "INSERT INTO project (id, name, datum_x, datum_y, datum_z, created_at, created_by) "
-        "VALUES (1, 'site', 0, 0, 0, '2026-01-01T00:00:00.000Z', 'rockface');"
-        "INSERT INTO visit (id, started_at, source) VALUES (1, '2026-01-02T08:00:00.000Z', "
-        "'tablet');",
-        "test");
+    sqlite::Connection db = test::project_at_schema(file, 12);
     EXPECT_EQ(schema::version_of(db), 12);
   }
   auto store = ProjectStore::open(file);

@@ -69,15 +69,7 @@ TEST(VisitHeading, ASchema11ProjectIsUpgradedWithItsVisitsUnnamed) {
   TempDir dir("heading-migration");
   const auto file = dir / "eleven.rockface";
   {
-    sqlite::Connection db(file, sqlite::Connection::Access::read_write_create);
-    schema::create_version_1(db);
-    schema::migrate_to(db, 11);
-    db.exec(
-        "INSERT INTO project (id, name, datum_x, datum_y, datum_z, created_at, created_by) "
-        "VALUES (1, 'site', 0, 0, 0, '2026-01-01T00:00:00.000Z', 'rockface');"
-        "INSERT INTO visit (id, started_at, source) VALUES (1, '2026-01-02T08:00:00.000Z', "
-        "'tablet');",
-        "test");
+    sqlite::Connection db = test::project_at_schema(file, 11);
     EXPECT_EQ(schema::version_of(db), 11);
   }
   auto store = ProjectStore::open(file);
