@@ -426,6 +426,45 @@ TEST(ProfileDeviation, OneStrayTriangleBehindAHoleDoesNotMakeTheMaximum) {
   EXPECT_NE(d.message.find("1 cells off any plausible lining"), std::string::npos) << d.message;
 }
 
+TEST(ProfileDeviation, OneCellFarOffItsBreaksFlankDoesNotMakeTheLargest) {
+  // A smooth overbreak (sin^2 over chainage 3-7 and 60 deg of the ring,
+  // 0.30 m deep at chainage 5 and 30 deg) with one facet on its flank, at
+  // chainage 4.9-5.1, 0.45 m out where the bump is 0.14 m (issue 38: the
+  // sample heading read 0.40 m on a flank the scene has at 0.03 m). Its
+  // neighbours along the chainage are 0.25 m away, so a slope of 1.2 keeps
+  // it on a plausible lining and the flank rule counts it with the break.
+  const Alignment al = north_tunnel();
+  const double from = 0, to = kPi / 3;
+  auto bump = [](double x, double a, double b) {
+    if (!(x > a && x < b)) return 0.0;
+    const double t = std::sin(kPi * (x - a) / (b - a));
+    return t * t;
+  };
+  auto depth = [&](double t, double c) { return 0.30 * bump(c, 3, 7) * bump(t, from, to); };
+  const double spike_theta = 2 * kPi * 208.5 / kFacets - kPi / 2;  // facet 208: 14.25 deg
+  auto is_spike = [&](double t, double c) {
+    return std::abs(t - spike_theta) < 1e-9 && c > 4.9 && c < 5.1;
+  };
+  Mesh m;
+  add_tube(
+      m, al, {0, 0}, steps(0, 10, 0.05),
+      [&](double t, double c) { return is_spike(t, c) ? 3.45 : 3.0 + depth(t, c); }, kEverywhere);
+  ASSERT_NEAR(depth(spike_theta, 5.0), 0.14, 0.01);  // the flank under the spike
+  const ProfileDeviation d =
+      profile_deviation(m.input(), al, circle_profile(3.0), one_ray_per_facet(3.0, 1, 9, 0.25));
+  ASSERT_EQ(d.status, DeviationStatus::ok) << d.message;
+  EXPECT_EQ(d.cells_off_lining, 0u) << d.message;
+  // The crest's depth: the median of the crest cell and its neighbours,
+  // which lie 0.5 deg along the outline (0.30 x sin^2 of 89.25 deg:
+  // 0.2995 m) and 0.25 m along the chainage (0.289 m); the facets' sagitta
+  // is 3e-5 m. 1 mm holds the first and not the spike (0.45 m).
+  EXPECT_NEAR(d.max_overbreak_m, 0.30, 1e-3)
+      << d.max_overbreak.chainage << " / " << d.max_overbreak.angle;
+  // At the crest: its cell or the next along the outline (0.5 deg, 2.6 cm).
+  EXPECT_NEAR(d.max_overbreak.chainage, 5.0, 1e-9);
+  EXPECT_NEAR(d.max_overbreak.angle, kPi / 6, 0.6 * kPi / 180);
+}
+
 TEST(ProfileDeviation, ASheetBelowTheInvertSeenThroughAHoleIsLeftOutAndCounted) {
   // The lower right wall (rays 36 to 44 degrees below horizontal: the
   // outline's normal there points less than 45 degrees down, so these are

@@ -305,6 +305,13 @@ void print_cells_against_truth(const Heading& h, const tunnel::ProfileDeviation&
     std::cout << " " << worst[i].c << "/" << worst[i].s << ": " << worst[i].value << ", "
               << worst[i].truth << ", " << worst[i].state << ";";
   std::cout << "\n";
+  std::cout << "  the cells most outside the truth (chainage / s: measured, truth, state):";
+  for (std::size_t i = 0; i < std::min<std::size_t>(12, worst.size()); ++i) {
+    const Worst& w = worst[worst.size() - 1 - i];
+    std::cout << " " << w.c << "/" << w.s << ": " << w.value << ", " << w.truth << ", " << w.state
+              << ";";
+  }
+  std::cout << "\n";
 }
 
 // The measured cells' error against the scene, per band of depth and of the
