@@ -42,12 +42,15 @@ void tell_the_geologist(ProfileDeviation& out, const DeviationOptions& options, 
                    format_fixed(l.chainage_from, 2) + " to " + format_fixed(l.chainage_to, 2) +
                    " left out: " + l.why;
   if (out.cells_off_lining + out.cells_below_invert > 0)
-    out.message += "; left out: " + std::to_string(out.cells_off_lining) +
-                   " cells off any plausible lining (no neighbour agrees with them), " +
-                   std::to_string(out.cells_below_invert) +
-                   " below the invert (wall or roof rays that met the surface below it, floor "
-                   "rays more than " +
-                   format_fixed(options.max_invert_overbreak_m, 2) + " m below the design)";
+    out.message +=
+        "; left out: " + std::to_string(out.cells_off_lining) +
+        " cells off any plausible lining (stray: no neighbour agrees with them, or a piece "
+        "smaller than the smallest break counted that jumps off the lining all "
+        "round), " +
+        std::to_string(out.cells_below_invert) +
+        " below the invert (wall or roof rays that met the surface below it, floor "
+        "rays more than " +
+        format_fixed(options.max_invert_overbreak_m, 2) + " m below the design)";
   if (out.interpolated_fraction > 0)
     out.message += "; " + format_fixed(100 * out.interpolated_fraction, 1) +
                    " % of the outline interpolated across holes of the 3D image up to " +

@@ -27,14 +27,18 @@ struct LiningOffset {
 };
 LiningOffset lining_offset(std::span<const double> deviations);
 
-// Cells off any plausible lining: a cell whose deviation agrees with none of
-// its seen 8-neighbours, where two cells agree when they differ by less
-// than `slope` x their distance on the developed view plus `noise_m`. A
+// Cells off any plausible lining. Two seen cells agree when their
+// deviations differ by less than `slope` x their distance on the developed
+// view plus `noise_m`; agreeing 8-neighbours join into pieces of surface. A
 // surface, even one with a step where a block fell out, continues into at
-// least one neighbour; a stray triangle or a speck of noise does not. A seen
-// cell with no seen neighbour is off the lining too (nothing supports it).
-// `deviation` is row-major rows x cols (the arc length wraps), `seen` says
-// which cells hold a value; returns one flag per cell.
+// least one neighbour; a stray triangle or a speck of noise does not. So a
+// cell that agrees with none of its seen neighbours (or has none) is off
+// the lining, and so is a piece smaller than `max_island_m2` that meets
+// other seen cells only across a jump: a cluster of stray triangles seen
+// through a hole of the wall (issue 38: the D heading's 2-3 cells 0.85 m
+// behind the wall, whose interpolated neighbours added 0.07 m3 of
+// overbreak). `deviation` is row-major rows x cols (the arc length wraps),
+// `seen` says which cells hold a value; returns one flag per cell.
 struct NeighbourSpacing {
   double along_chainage_m = 0, along_outline_m = 0;
 };
@@ -42,6 +46,6 @@ std::vector<std::uint8_t> cells_off_the_lining(std::size_t rows, std::size_t col
                                                std::span<const double> deviation,
                                                std::span<const std::uint8_t> seen,
                                                const NeighbourSpacing& spacing, double slope,
-                                               double noise_m);
+                                               double noise_m, double max_island_m2);
 
 }  // namespace rockface::tunnel

@@ -336,14 +336,16 @@ void trim_unmet_ends(DeviationCells& g, ProfileDeviation& out) {
   keep_rows(g.chainage, 1);
 }
 
-// Cells off any plausible lining.
+// Cells off any plausible lining (lining_statistics.h). A piece smaller
+// than the smallest break the round counts (the patch rule's rectangle)
+// that jumps off the seen lining all round is stray, not a break.
 void mark_off_lining(DeviationCells& g, const DeviationOptions& options, double noise_threshold) {
   const std::size_t cells = g.rows * g.cols;
   std::vector<std::uint8_t> seen(cells);
   for (std::size_t k = 0; k < cells; ++k) seen[k] = g.state[k] == kSeen ? 1 : 0;
-  const std::vector<std::uint8_t> off =
-      cells_off_the_lining(g.rows, g.cols, g.normal_dev, seen, {g.cell_c, g.cell_s},
-                           options.plausible_slope, 2 * noise_threshold);
+  const std::vector<std::uint8_t> off = cells_off_the_lining(
+      g.rows, g.cols, g.normal_dev, seen, {g.cell_c, g.cell_s}, options.plausible_slope,
+      2 * noise_threshold, options.min_break_chainage_m * options.min_break_outline_m);
   for (std::size_t k = 0; k < cells; ++k)
     if (off[k]) g.state[k] = kOffLining;
 }

@@ -77,7 +77,10 @@ struct DeviationOptions {
   // cells (m of deviation per m on the developed view; 2 = a rock face at
   // 63 degrees to the design line, steeper than the flank of any break a
   // blast leaves that is wider than two cells): a cell no neighbour agrees
-  // with within it (plus twice the noise threshold) is off the lining.
+  // with within it (plus twice the noise threshold) is off the lining, and
+  // so is a piece of agreeing cells smaller than min_break_chainage_m x
+  // min_break_outline_m that meets the seen lining only across such a jump
+  // (lining_statistics.h).
   double plausible_slope = 2.0;
   // How far below the design invert a floor ray's surface plausibly lies
   // (m, normal to the invert): the lifters' overbreak and the muck left on
@@ -220,7 +223,7 @@ struct ProfileDeviation {
   // it is kept, and stated.
   LiningOffset lining_offset;
   bool lining_offset_removed = false;
-  std::size_t cells_off_lining = 0;  // left out: no neighbour agrees with them
+  std::size_t cells_off_lining = 0;  // left out: stray cells and pieces (plausible_slope)
   // Left out: a wall or roof ray met them below the invert, or a floor ray
   // more than max_invert_overbreak_m below the design.
   std::size_t cells_below_invert = 0;

@@ -465,6 +465,37 @@ TEST(ProfileDeviation, OneCellFarOffItsBreaksFlankDoesNotMakeTheLargest) {
   EXPECT_NEAR(d.max_overbreak.angle, kPi / 6, 0.6 * kPi / 180);
 }
 
+TEST(ProfileDeviation, AClusterOfStrayCellsBehindAHoleIsLeftOutNotInterpolated) {
+  // A wall on the design line with a hole three facets wide and 0.4 m
+  // long; behind it, 0.85 m outside the wall, a stray sheet (issue 38: the
+  // D heading's cells 0.85 m behind its wall, whose interpolated neighbours
+  // added 0.07 m3 of overbreak). Its cells agree with each other, so the
+  // one-cell rule keeps them; as a piece they meet the wall only across the
+  // jump and are far smaller than the smallest break the round counts.
+  const Alignment al = north_tunnel();
+  const double hole_from = 2 * kPi * 200 / kFacets - kPi / 2;
+  const double hole_to = 2 * kPi * 203 / kFacets - kPi / 2;
+  const auto in_hole = [&](double t, double c) {
+    return t > hole_from && t < hole_to && c > 4.8 && c < 5.2;
+  };
+  Mesh m;
+  add_tube(
+      m, al, {0, 0}, steps(0, 12, 0.1), [](double, double) { return 3.0; },
+      [&](double t, double c) { return !in_hole(t, c); });
+  add_tube(
+      m, al, {0, 0}, steps(4.6, 5.4, 0.1), [](double, double) { return 3.85; },
+      [&](double t, double) { return t > hole_from - 0.05 && t < hole_to + 0.05; });
+  DeviationOptions o = one_ray_per_facet(3.0, 2, 10, 0.1);
+  const ProfileDeviation d = profile_deviation(m.input(), al, circle_profile(3.0), o);
+  ASSERT_EQ(d.status, DeviationStatus::ok) << d.message;
+  // Sections 4.9, 5.0 and 5.1 by the hole's 3 facets.
+  EXPECT_EQ(d.cells_off_lining, 9u) << d.message;
+  EXPECT_LT(d.max_overbreak_m, 1e-3) << d.max_overbreak.chainage << " " << d.max_overbreak.s;
+  EXPECT_LT(d.overbreak_volume_m3, 1e-6);
+  // Left out, they are not interpolated from (a hole of a wall stays one).
+  EXPECT_EQ(d.interpolated_overbreak_m3, 0.0);
+}
+
 TEST(ProfileDeviation, ASheetBelowTheInvertSeenThroughAHoleIsLeftOutAndCounted) {
   // The lower right wall (rays 36 to 44 degrees below horizontal: the
   // outline's normal there points less than 45 degrees down, so these are

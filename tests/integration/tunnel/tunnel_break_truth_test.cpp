@@ -254,11 +254,38 @@ double developed_distance(double c1, double s1, double c2, double s2, double per
 // measured (and the interpolated) cells lie from the truth, and where the
 // counted underbreak lies on lining the scene does not break inward: what
 // a spurious underbreak is made of. Printed, for the figures in the docs.
-void print_cells_against_truth(const Heading& h, const tunnel::ProfileDeviation& d) {
+void print_cells_against_truth(const Heading& h, const tunnel::ProfileDeviation& d,
+                               const tunnel::DesignProfile& profile) {
   const storage::Scene scene = storage::load_scene(h.scene_file.string());
   const camera::RenderedTunnelSpec spec = rendered_tunnel_spec(*scene.tunnel->render);
   const auto& v = d.view;
   const std::size_t cols = v.s.size();
+  {
+    // The scene's volumes over the cells the round valued (measured or
+    // interpolated), the trapezoid's weights along the chainage.
+    const std::size_t rows = v.chainage.size();
+    const double dc = rows > 1 ? v.chainage[1] - v.chainage[0] : 0.25;
+    const double ds = cols > 1 ? v.s[1] - v.s[0] : 0.05;
+    double over = 0, under = 0, over_measured = 0, under_measured = 0;
+    for (std::size_t i = 0; i < rows; ++i) {
+      const double w = (i == 0 || i + 1 == rows) ? 0.5 * dc : dc;
+      for (std::size_t j = 0; j < cols; ++j) {
+        const std::uint8_t st = v.state[i * cols + j];
+        if (st != 0 && st != 4) continue;
+        const auto piece = camera::rendered_section_truth(spec, profile, v.chainage[i],
+                                                          v.s[j] - ds / 2, v.s[j] + ds / 2);
+        over += piece.overbreak_m2 * w;
+        under += piece.underbreak_m2 * w;
+        if (st == 0) {
+          over_measured += piece.overbreak_m2 * w;
+          under_measured += piece.underbreak_m2 * w;
+        }
+      }
+    }
+    std::cout << "  the scene's volumes over the valued cells: overbreak " << over
+              << " m3, underbreak " << under << " m3 (over the measured ones " << over_measured
+              << " / " << under_measured << ")\n";
+  }
   struct Tally {
     std::size_t cells = 0;
     double sum = 0, sq = 0;
@@ -517,7 +544,7 @@ class TunnelBreakTruth : public ::testing::Test {
               << " (interpolated " << d.interpolated_overbreak_m3 << "), underbreak +- "
               << d.underbreak_volume_sigma_m3.value_or(-1) << " (interpolated "
               << d.interpolated_underbreak_m3 << ")\n";
-    print_cells_against_truth(h, d);
+    print_cells_against_truth(h, d, m.tunnel.profile);
     if (m.cell_precision)
       std::cout << "  cell precision: " << m.cell_precision->model << ": "
                 << 1000 * m.cell_precision->min_sigma_m << " to "
