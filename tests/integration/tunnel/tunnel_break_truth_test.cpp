@@ -651,11 +651,13 @@ class TunnelBreakTruth : public ::testing::Test {
     // (surface_pick.h). One vertex's predicted depth sigma there is 16-25
     // mm (Z^2 sigma_d / (f B)), but the dense matching's errors are
     // correlated over tens of pixels (on the sample's face they ramp over
-    // 40 px), so the plane is taken as no better than a third of it, 5-8 mm
-    // per end: sqrt(2) x 8 mm / 2.9 m = 0.22 deg, the bound. The pole's two
+    // 40 px), so the plane is taken as no better than a third to a half of
+    // it: 5-10 mm per end, as the diagnostic measured the ends against the
+    // truth (docs/accuracy-cost.md, eighth session): sqrt(2) x 10 mm / 2.9 m
+    // = 0.28 deg, the bound (measured: sample 0.216, D 0.143). The pole's two
     // targets, 2 m apart at 6.6-7 m, are located to a tenth of a pixel: a
     // few millimetres of depth, 0.2 deg of tilt at most.
-    EXPECT_LT(std::abs(heading_deg), 0.22) << name;
+    EXPECT_LT(std::abs(heading_deg), 0.28) << name;
     EXPECT_LT(tilt_deg, 0.2) << name;
   }
 
@@ -734,6 +736,15 @@ TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchI
 // single vertex because of that -0.11 deg: the volumes move by tens of
 // percent for a quarter of a degree of heading, which is what the compass
 // line can give (docs/accuracy-cost.md, "Issue 38 (eighth session)").
+// Ninth session: the largest breaks from the crest's robust depth and stray
+// pieces of cells left out. Both headings' largest over- and underbreak
+// now meet 3 cm and 0.5 m; the volumes (sample / D, against the truth
+// here): overbreak -11 % / +7.6 %, underbreak +11 % / +36 %. With the
+// compass reading turned by the measured heading error (a diagnostic, not
+// the product) the D heading meets every figure (overbreak 0.475 for
+// 0.490, underbreak 0.0933 for 0.0935) and the sample reads overbreak
+// 0.636 for 0.748 (0.690 over the cells it valued: a part of its pocket
+// is hidden behind its own lip) and underbreak 0.114 for 0.128.
 TEST_F(TunnelBreakTruth, DISABLED_ASecondHeadingOfAnotherShapeAndTextureMatchesItsScene) {
   expect_the_truth(*d_heading_, "D heading");
 }
