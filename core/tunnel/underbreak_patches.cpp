@@ -7,7 +7,8 @@ namespace rockface::tunnel {
 
 namespace {
 
-constexpr std::uint8_t kSeen = 0;  // the developed view's measured cells (profile_deviation.h)
+constexpr std::uint8_t kMeasuredViewCell =
+    0;  // the developed view's measured cells (profile_deviation.h)
 
 }  // namespace
 
@@ -16,7 +17,9 @@ std::vector<UnderbreakPatch> underbreak_patches(
     const std::vector<ProfilePosition>& position_of_cell) {
   const auto& v = d.view;
   const std::size_t rows = v.chainage.size(), cols = v.s.size();
-  auto beyond = [&](std::size_t k) { return v.state[k] == kSeen && -v.deviation_m[k] > tolerance; };
+  auto beyond = [&](std::size_t k) {
+    return v.state[k] == kMeasuredViewCell && -v.deviation_m[k] > tolerance;
+  };
   std::vector<char> done(rows * cols, 0);
   std::vector<UnderbreakPatch> out;
   std::vector<std::size_t> stack;
