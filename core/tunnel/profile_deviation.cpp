@@ -423,30 +423,39 @@ std::vector<std::uint8_t> counted_cells(const DeviationCells& g, const Deviation
   return counted;
 }
 
-// A counted cell's depth as a candidate for the round's largest break: the
-// median of it and its four neighbours that carry a value (the outline
-// wrapping), at least three of them. A break's crest is smooth over a cell
-// (a 3 m sin^2 bump falls 6 % at the next section 0.25 m away, far less
-// along the outline's 5 cm), so the median keeps its depth, while one cell
-// that a stray triangle or a hole's edge put far off its neighbours (issue
-// 38: 0.40 m read where the scene has 0.03 m) cannot make the round's
-// largest. Nothing when fewer than three cells carry a value.
-std::optional<double> crest_depth(const DeviationCells& g, std::size_t k, double offset) {
+// A counted cell's depth as a candidate for the round's largest break: its
+// own deviation, but no deeper than the second deepest of its four
+// neighbours that carry a value (the outline wrapping), so that one cell,
+// or two side by side, that a stray triangle or a hole's edge put far off
+// their neighbours (issue 38: 0.40 m read where the scene has 0.03 m)
+// cannot make the round's largest. On a break's crest the neighbours along
+// the outline (5 cm away) lie within a millimetre of it, so the largest
+// stays the crest's depth. Nothing when fewer than two neighbours carry a
+// value. `over` asks for the deepest outward, else inward.
+std::optional<double> crest_depth(const DeviationCells& g, std::size_t k, double offset,
+                                  bool over) {
   const std::size_t rows = g.rows, cols = g.cols, r = k / cols, c = k % cols;
   auto valued = [&](std::size_t q) { return g.state[q] == kSeen || g.state[q] == kInterpolated; };
-  double v[5];
+  const double sign = over ? 1.0 : -1.0;  // depths counted positive either way
+  double first = -std::numeric_limits<double>::infinity(), second = first;
   std::size_t n = 0;
   auto take = [&](std::size_t q) {
-    if (valued(q)) v[n++] = g.normal_dev[q] - offset;
+    if (!valued(q)) return;
+    ++n;
+    const double depth = sign * (g.normal_dev[q] - offset);
+    if (depth > first) {
+      second = first;
+      first = depth;
+    } else if (depth > second) {
+      second = depth;
+    }
   };
-  take(k);
   if (r > 0) take(k - cols);
   if (r + 1 < rows) take(k + cols);
   take(r * cols + (c + cols - 1) % cols);
   take(r * cols + (c + 1) % cols);
-  if (n < 3) return std::nullopt;
-  std::nth_element(v, v + n / 2, v + n);
-  return v[n / 2];
+  if (n < 2) return std::nullopt;
+  return sign * std::min(sign * (g.normal_dev[k] - offset), second);
 }
 
 // The developed area (m^2) of the cells counted as over- and underbreak.
@@ -474,7 +483,8 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
   // Before the loop below takes the offset out of the cells in place.
   std::vector<std::optional<double>> crest(rows * cols);
   for (std::size_t k = 0; k < rows * cols; ++k)
-    if (counted[k] && g.state[k] == kSeen) crest[k] = crest_depth(g, k, offset);
+    if (counted[k] && g.state[k] == kSeen)
+      crest[k] = crest_depth(g, k, offset, g.normal_dev[k] - offset > 0);
   CountedArea area;
   area.interpolated_over_m2.assign(rows, 0.0);
   area.interpolated_under_m2.assign(rows, 0.0);
@@ -540,8 +550,8 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
         }
         continue;
       }
-      // The largest breaks from the crest's robust depth, of the cell's own
-      // sign (a cell at the rim of its break can have a median across it).
+      // The largest breaks from the crest's robust depth (crest_depth), of
+      // the cell's own sign.
       if (!crest[k]) continue;
       const double depth = a > 0 ? std::max(0.0, *crest[k]) : std::min(0.0, *crest[k]);
       sec.max_overbreak_m = std::max(sec.max_overbreak_m, depth);

@@ -454,10 +454,10 @@ TEST(ProfileDeviation, OneCellFarOffItsBreaksFlankDoesNotMakeTheLargest) {
       profile_deviation(m.input(), al, circle_profile(3.0), one_ray_per_facet(3.0, 1, 9, 0.25));
   ASSERT_EQ(d.status, DeviationStatus::ok) << d.message;
   EXPECT_EQ(d.cells_off_lining, 0u) << d.message;
-  // The crest's depth: the median of the crest cell and its neighbours,
-  // which lie 0.5 deg along the outline (0.30 x sin^2 of 89.25 deg:
-  // 0.2995 m) and 0.25 m along the chainage (0.289 m); the facets' sagitta
-  // is 3e-5 m. 1 mm holds the first and not the spike (0.45 m).
+  // The crest's depth: the crest cell capped by its second deepest
+  // neighbour, those along the outline 0.5 deg away (0.30 x sin^2 of 89.25
+  // deg: 0.2995 m; along the chainage, 0.25 m away, 0.289 m); the facets'
+  // sagitta is 3e-5 m. 1 mm holds the first and not the spike (0.45 m).
   EXPECT_NEAR(d.max_overbreak_m, 0.30, 1e-3)
       << d.max_overbreak.chainage << " / " << d.max_overbreak.angle;
   // At the crest: its cell or the next along the outline (0.5 deg, 2.6 cm).

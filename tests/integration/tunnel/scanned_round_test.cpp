@@ -161,11 +161,17 @@ TEST(ScannedRound, OverAndUnderbreakOfAScannedRoundMatchTheSurfaceItWasSampledFr
   // at the invert's seam and the face's corners. Measured: 0.2 %.
   EXPECT_NEAR(d.overbreak_volume_m3, over, 0.03 * over);
   EXPECT_NEAR(d.underbreak_volume_m3, under, 0.03 * under);
-  // The deepest of each within 5 mm: a cell's median of 9 rays through a
-  // surface with 3 mm noise (~1.5 mm) on the flat crest of a sin^2 bump
-  // (within 1 mm of its depth over +-0.03 of its width). Measured: 1 mm.
-  EXPECT_NEAR(d.max_overbreak_m, max_over, 0.005);
-  EXPECT_NEAR(d.max_underbreak_m, max_under, 0.005);
+  // The deepest of each within 8 mm. The round's largest is a cell's
+  // depth capped by its second deepest neighbour (profile_deviation.cpp,
+  // crest_depth), no longer the noisiest cell's: the sections lie 0.25 m
+  // apart, so the crest can fall 0.125 m from the nearest one, where a
+  // sin^2 bump 3 m long is 1.7 % shallower (6 mm of 0.35 m; here 0.107 m:
+  // 4.4 mm); the neighbours along the outline 5 cm away cap it by under
+  // 1 mm, and a cell's median of 9 rays through 3 mm of noise scatters
+  // ~1.5 mm. Measured: 5.1 mm (overbreak) and 4.7 mm (underbreak); 1 mm
+  // and 0.8 mm with the largest single cell, whose noise lifted it.
+  EXPECT_NEAR(d.max_overbreak_m, max_over, 0.008);
+  EXPECT_NEAR(d.max_underbreak_m, max_under, 0.008);
   fs::remove_all(r.dir);
 }
 
