@@ -20,7 +20,7 @@ struct VisitProfile {
   storage::TunnelRecord tunnel;
   storage::VisitPlacement placement;
   // The round evaluated: from the previous face of the visit's heading (in
-  // its drive direction, round_start.h) to 0.15 m short of where this face
+  // its drive direction, round_start.h) to 0.4 m short of where this face
   // reaches farthest back (a section through the face would cut it); the
   // heading's first visit's round starts where its surface starts.
   double round_from = 0, round_to = 0;

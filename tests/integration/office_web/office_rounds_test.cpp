@@ -419,10 +419,10 @@ TEST(OfficeRounds, EachHeadingsRoundStartsAtItsOwnPreviousFace) {
     const json& f = kept.at((*round)["visit"].get<std::string>());
     EXPECT_EQ(f["previous_face"], w.previous) << w.label << ": " << f;
     EXPECT_EQ(f["sense"], w.sense) << w.label << ": " << f;
-    // 0.15 m short of the flat face on the heading's side; the rendered
-    // face is placed to rounding (1e-6 m, far below the metres a wrong
-    // heading's face is off).
-    EXPECT_NEAR(f["round_to"].get<double>(), face - w.sense * 0.15, 1e-6) << w.label;
+    // 0.4 m short of the flat face on the heading's side (visit_profile.cpp's
+    // kFaceClearM); the rendered face is placed to rounding (1e-6 m, far
+    // below the metres a wrong heading's face is off).
+    EXPECT_NEAR(f["round_to"].get<double>(), face - w.sense * 0.4, 1e-6) << w.label;
   }
   // The drive filtered by one heading lists that heading's visits, and
   // every heading of the tunnel to choose from ("—" last: U1 names none).
