@@ -11,6 +11,7 @@
 #include "core/common/number_format.h"
 #include "core/common/parallel.h"
 #include "core/common/units.h"
+#include "core/tunnel/break_crest.h"
 #include "core/tunnel/break_patches.h"
 #include "core/tunnel/deviation_message.h"
 #include "core/tunnel/lining_interpolation.h"
@@ -423,41 +424,6 @@ std::vector<std::uint8_t> counted_cells(const DeviationCells& g, const Deviation
   return counted;
 }
 
-// A counted cell's depth as a candidate for the round's largest break: its
-// own deviation, but no deeper than the second deepest of its four
-// neighbours that carry a value (the outline wrapping), so that one cell,
-// or two side by side, that a stray triangle or a hole's edge put far off
-// their neighbours (issue 38: 0.40 m read where the scene has 0.03 m)
-// cannot make the round's largest. On a break's crest the neighbours along
-// the outline (5 cm away) lie within a millimetre of it, so the largest
-// stays the crest's depth. Nothing when fewer than two neighbours carry a
-// value. `over` asks for the deepest outward, else inward.
-std::optional<double> crest_depth(const DeviationCells& g, std::size_t k, double offset,
-                                  bool over) {
-  const std::size_t rows = g.rows, cols = g.cols, r = k / cols, c = k % cols;
-  auto valued = [&](std::size_t q) { return g.state[q] == kSeen || g.state[q] == kInterpolated; };
-  const double sign = over ? 1.0 : -1.0;  // depths counted positive either way
-  double first = -std::numeric_limits<double>::infinity(), second = first;
-  std::size_t n = 0;
-  auto take = [&](std::size_t q) {
-    if (!valued(q)) return;
-    ++n;
-    const double depth = sign * (g.normal_dev[q] - offset);
-    if (depth > first) {
-      second = first;
-      first = depth;
-    } else if (depth > second) {
-      second = depth;
-    }
-  };
-  if (r > 0) take(k - cols);
-  if (r + 1 < rows) take(k + cols);
-  take(r * cols + (c + cols - 1) % cols);
-  take(r * cols + (c + 1) % cols);
-  if (n < 2) return std::nullopt;
-  return sign * std::min(sign * (g.normal_dev[k] - offset), second);
-}
-
 // The developed area (m^2) of the cells counted as over- and underbreak.
 struct CountedArea {
   double over = 0, under = 0;
@@ -481,10 +447,15 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
   std::size_t region_rays[3] = {0, 0, 0};
   for (const Ray& r : g.rays) ++region_rays[static_cast<int>(r.region)];
   // Before the loop below takes the offset out of the cells in place.
-  std::vector<std::optional<double>> crest(rows * cols);
-  for (std::size_t k = 0; k < rows * cols; ++k)
-    if (counted[k] && g.state[k] == kSeen)
-      crest[k] = crest_depth(g, k, offset, g.normal_dev[k] - offset > 0);
+  std::vector<double> deviation(rows * cols);
+  std::vector<std::uint8_t> valued(rows * cols), candidate(rows * cols);
+  for (std::size_t k = 0; k < rows * cols; ++k) {
+    deviation[k] = g.normal_dev[k] - offset;
+    valued[k] = g.state[k] == kSeen || g.state[k] == kInterpolated ? 1 : 0;
+    candidate[k] = counted[k] && g.state[k] == kSeen ? 1 : 0;
+  }
+  const std::vector<std::optional<double>> crest =
+      break_crest_depths(rows, cols, deviation, valued, candidate);
   CountedArea area;
   area.interpolated_over_m2.assign(rows, 0.0);
   area.interpolated_under_m2.assign(rows, 0.0);
@@ -550,7 +521,7 @@ CountedArea measure_sections(DeviationCells& g, const Alignment& alignment, doub
         }
         continue;
       }
-      // The largest breaks from the crest's robust depth (crest_depth), of
+      // The largest breaks from the crest's robust depth (break_crest.h), of
       // the cell's own sign.
       if (!crest[k]) continue;
       const double depth = a > 0 ? std::max(0.0, *crest[k]) : std::min(0.0, *crest[k]);
