@@ -161,6 +161,14 @@ PreparedScene prepare(const SyntheticScene& scene) {
     for (const auto& t : range_pole_targets(scene))
       s.targets.push_back({t.centre, t.normal, pole.target_diameter / 2});
   }
+  const Vector3d mid = 0.5 * (scene.stations[0].position + scene.stations[1].position);
+  for (std::size_t k = 0; k < scene.control_targets.size(); ++k) {
+    const auto& t = scene.control_targets[k];
+    if ((mid - t.centre).norm() < 1e-6)
+      throw InputError("imaging.control_targets[" + std::to_string(k) + "]",
+                       "a target sits at the stations' midpoint");
+    s.targets.push_back({t.centre, (mid - t.centre).normalized(), t.diameter / 2});
+  }
   return s;
 }
 

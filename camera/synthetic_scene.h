@@ -49,6 +49,15 @@ struct SyntheticRangePole {
   double target_diameter = 0.25;  // m
 };
 
+// A monitoring target of the tunnel's survey: drawn as the pole's targets
+// are (a black disk, a white one of half its diameter at its centre, facing
+// the stations' midpoint as a surveyor turns a target to the instrument).
+struct SyntheticControlTarget {
+  std::string id;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double diameter = 0.15;  // m
+};
+
 // Tunnel lighting and imaging (docs/scene-extensions.md, "The face as a
 // tunnel lights it"). Each is off unless the scene asks for it.
 
@@ -137,6 +146,7 @@ struct SyntheticScene {
   std::array<SyntheticStation, 2> stations;  // left, right
   std::optional<SyntheticRangePole> range_pole;
   std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> reference_line;  // from, to
+  std::vector<SyntheticControlTarget> control_targets;
   SyntheticEffects effects;
   unsigned texture_seed = 7;
 };

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 
+#include "core/photogrammetry/estimators/registration.h"
 #include "firmware-app/cli/registration_cli.h"
 #include "firmware-app/cli/verb_registry.h"
 #include "firmware-app/reconstruct/reconstruct_pair.h"
@@ -41,8 +42,8 @@ int run_reconstruct(const PairReconstructionRequest& o) {
   std::printf("scale: %s, vertical: %s, north: %s\n", result.scale_source.c_str(),
               result.vertical_source.c_str(), result.north_source.c_str());
   if (result.control_points)
-    std::printf("control points: rms %.4f m, worst %s (%.4f m)\n", result.control_points->rms_m,
-                result.control_points->worst_id.c_str(), result.control_points->worst_m);
+    std::printf("control points: %s\n",
+                photogrammetry::control_points_summary(*result.control_points).c_str());
   std::printf("predicted depth precision sigma_Z = %.4g %s at %.4g %s\n", result.accuracy.sigma_z,
               unit, result.distance, unit);
   for (const auto& w : result.accuracy.warnings) std::printf("warning: %s\n", w.c_str());

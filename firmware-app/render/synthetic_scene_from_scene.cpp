@@ -86,6 +86,8 @@ SyntheticSceneInput synthetic_scene_from_scene(const storage::Scene& s) {
   if (im.reference_line)
     out.reference_line =
         std::make_pair(im.reference_line->first - in.origin, im.reference_line->second - in.origin);
+  for (const auto& t : im.control_targets)
+    out.control_targets.push_back({t.id, t.position - in.origin, t.diameter});
   out.effects.distortion = im.effects.distortion;
   out.effects.noise_sigma = im.effects.noise_sigma;
   out.effects.blur_px = im.effects.blur_px;

@@ -81,6 +81,11 @@ ReplaySource open_source(const ReplayRequest& request) {
     if (out.synthetic->scene.range_pole)
       out.sources.range_pole_m = out.synthetic->scene.range_pole->length;
     out.sources.north = compass_reading(out.synthetic->scene, out.intrinsics, out.scene->source);
+    // The survey's monitoring targets, tapped where the left photograph
+    // shows them: ground control, which takes the place of the pole and
+    // the compass line (reconstruction.h).
+    out.sources.control_points = scene_control_points(*out.synthetic, out.intrinsics);
+    out.sources.control_points_where = out.scene->source + ": imaging.control_targets";
   } else {
     const fs::path cam_file = fs::path(request.source) / "camera.json";
     if (fs::exists(cam_file)) {
@@ -217,7 +222,7 @@ photogrammetry::ReconstructionResult reconstruct_pair(
                                   preset, source.sources, progress);
   // In a tunnel the geologist may type where the pole stood (chainage,
   // offset, height) instead of surveying it.
-  if (source.synthetic && source.synthetic->scene.range_pole && rec.targets)
+  if (source.synthetic && source.synthetic->scene.range_pole && rec.targets && !rec.control_points)
     move_to_pole(rec, source.typed_pole.value_or(source.synthetic->scene.range_pole->base));
   return rec;
 }
@@ -243,14 +248,17 @@ void move_to_pole(photogrammetry::ReconstructionResult& rec, const Eigen::Vector
   rec.model_to_world.t += shift;
 }
 
-std::optional<photogrammetry::NorthReference> compass_reading(
-    const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k,
-    const std::string& source) {
-  if (!scene.reference_line) return std::nullopt;
-  const auto& [from, to] = *scene.reference_line;
+namespace {
+
+// Where the left photograph shows scene points (distortion included): the
+// pixels a geologist taps.
+std::vector<cv::Point2d> left_pixels(const camera::SyntheticScene& scene,
+                                     const photogrammetry::CameraIntrinsics& k,
+                                     const std::vector<Eigen::Vector3d>& points) {
   const photogrammetry::CameraPose pose =
       camera::station_pose(scene.stations[0], "imaging.stations[0]");
-  std::vector<cv::Point3d> world{{from.x(), from.y(), from.z()}, {to.x(), to.y(), to.z()}};
+  std::vector<cv::Point3d> world;
+  for (const auto& p : points) world.emplace_back(p.x(), p.y(), p.z());
   cv::Mat R(3, 3, CV_64F), rvec, tvec;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) R.at<double>(i, j) = pose.R(i, j);
@@ -261,6 +269,17 @@ std::optional<photogrammetry::NorthReference> compass_reading(
   const cv::Mat dist(1, 5, CV_64F, const_cast<double*>(k.distortion.data()));
   std::vector<cv::Point2d> px;
   cv::projectPoints(world, rvec, tvec, K, dist, px);
+  return px;
+}
+
+}  // namespace
+
+std::optional<photogrammetry::NorthReference> compass_reading(
+    const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k,
+    const std::string& source) {
+  if (!scene.reference_line) return std::nullopt;
+  const auto& [from, to] = *scene.reference_line;
+  const std::vector<cv::Point2d> px = left_pixels(scene, k, {from, to});
   photogrammetry::NorthReference north;
   north.from_px = {px[0].x, px[0].y};
   north.to_px = {px[1].x, px[1].y};
@@ -269,6 +288,19 @@ std::optional<photogrammetry::NorthReference> compass_reading(
   // The scene's field, not the option of `reconstruct` (issue 41).
   north.where = source + ": imaging.reference_line";
   return north;
+}
+
+std::vector<photogrammetry::ControlPoint> scene_control_points(
+    const SyntheticSceneInput& synthetic, const photogrammetry::CameraIntrinsics& k) {
+  std::vector<photogrammetry::ControlPoint> out;
+  const auto& targets = synthetic.scene.control_targets;
+  if (targets.empty()) return out;
+  std::vector<Eigen::Vector3d> centres;
+  for (const auto& t : targets) centres.push_back(t.centre);
+  const std::vector<cv::Point2d> px = left_pixels(synthetic.scene, k, centres);
+  for (std::size_t i = 0; i < targets.size(); ++i)
+    out.push_back({targets[i].id, {px[i].x, px[i].y}, targets[i].centre + synthetic.origin});
+  return out;
 }
 
 std::vector<JointComparison> joint_comparisons(const storage::Scene& scene,
@@ -482,6 +514,8 @@ ReplayOutcome replay_into_project(const ReplayRequest& request,
     out.model_points = rec.mesh.size();
     out.registration = "scale: " + rec.scale_source + ", vertical: " + rec.vertical_source +
                        ", north: " + rec.north_source;
+    if (rec.control_points)
+      out.registration += " (" + photogrammetry::control_points_summary(*rec.control_points) + ")";
     out.predicted_depth_sigma_m = rec.accuracy.sigma_z;
     out.scaled = rec.scaled;
     for (const auto& w : rec.accuracy.warnings) out.guidance.push_back(w);

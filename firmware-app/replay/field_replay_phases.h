@@ -125,6 +125,12 @@ std::optional<photogrammetry::NorthReference> compass_reading(
     const camera::SyntheticScene& scene, const photogrammetry::CameraIntrinsics& k,
     const std::string& source);
 
+// The scene's monitoring targets (imaging.control_targets) as control
+// points: each picked at its centre's pixel in the left photograph, its
+// survey coordinates the scene's.
+std::vector<photogrammetry::ControlPoint> scene_control_points(
+    const SyntheticSceneInput& synthetic, const photogrammetry::CameraIntrinsics& k);
+
 // Each scene joint that has picked traces: its measured plane beside the
 // scene's.
 std::vector<JointComparison> joint_comparisons(const storage::Scene& scene,

@@ -91,8 +91,10 @@ std::string reconstruction_report_json(const photogrammetry::ReconstructionResul
   if (r.control_points) {
     json res = json::array();
     for (const auto& p : r.control_points->residuals)
-      res.push_back(
-          {{"id", p.id}, {"residual_m", json_vec(p.residual)}, {"distance_m", p.distance}});
+      res.push_back({{"id", p.id},
+                     {"residual_m", json_vec(p.residual)},
+                     {"distance_m", p.distance},
+                     {"on_target", p.on_target}});
     reg["control_points"] = {{"rms_m", r.control_points->rms_m},
                              {"worst", r.control_points->worst_id},
                              {"worst_m", r.control_points->worst_m},

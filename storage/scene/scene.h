@@ -39,6 +39,16 @@ struct SceneRangePole {
   double target_diameter = 0.25;
 };
 
+// A monitoring target of the tunnel's survey (docs/scene-extensions.md):
+// drawn as the pole's targets are, its centre's survey coordinates known;
+// three or more register the visit (ground control) instead of the pole
+// and the compass line.
+struct SceneControlTarget {
+  std::string id;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  double diameter = 0.15;  // m, the black disk; the white one is half of it
+};
+
 // The face as a tunnel lights it (docs/scene-extensions.md): flash, lamps,
 // vignetting, sensor, jpeg_quality, wet, shotcrete, dust.
 struct SceneRegion {
@@ -89,6 +99,7 @@ struct SceneImaging {
   std::vector<SceneStation> stations;
   std::optional<SceneRangePole> range_pole;
   std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> reference_line;
+  std::vector<SceneControlTarget> control_targets;  // none, or three or more
   SceneImagingEffects effects;
   unsigned texture_seed = 7;
 };

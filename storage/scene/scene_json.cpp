@@ -282,7 +282,8 @@ analysis::SceneAnalysis read_analysis(const Reader& r, const json& doc) {
 SceneImaging read_imaging(const Reader& r, const json& im) {
   const std::string p = "imaging";
   r.only_fields(im, p,
-                {"camera", "stations", "range_pole", "reference_line", "effects", "texture_seed"});
+                {"camera", "stations", "range_pole", "reference_line", "control_targets", "effects",
+                 "texture_seed"});
   SceneImaging img;
   const json& cam = r.require(im, p, "camera");
   const std::string cp = p + ".camera";
@@ -333,6 +334,26 @@ SceneImaging read_imaging(const Reader& r, const json& im) {
     img.reference_line = std::make_pair(
         r.vec3(r.require(*rl, p + ".reference_line", "from"), p + ".reference_line.from"),
         r.vec3(r.require(*rl, p + ".reference_line", "to"), p + ".reference_line.to"));
+  }
+  if (auto* ct = r.optional(im, p, "control_targets")) {
+    const std::string cp = p + ".control_targets";
+    const json& list = r.array(*ct, cp);
+    if (list.size() < 3)
+      r.fail(cp, "needs three or more targets (a registration by fewer is not determined), got " +
+                     std::to_string(list.size()));
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const std::string tp = Reader::index(cp, k);
+      r.only_fields(list[k], tp, {"id", "position", "diameter"});
+      SceneControlTarget t;
+      t.id = r.string(r.require(list[k], tp, "id"), tp + ".id");
+      if (t.id.empty()) r.fail(tp + ".id", "must not be empty");
+      for (const auto& other : img.control_targets)
+        if (other.id == t.id) r.fail(tp + ".id", "repeats the id \"" + t.id + "\"");
+      t.position = r.vec3(r.require(list[k], tp, "position"), tp + ".position");
+      if (auto* v = r.optional(list[k], tp, "diameter"))
+        t.diameter = r.positive(*v, tp + ".diameter");
+      img.control_targets.push_back(t);
+    }
   }
   if (auto* ef = r.optional(im, p, "effects")) {
     const std::string ep = p + ".effects";

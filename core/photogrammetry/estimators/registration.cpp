@@ -1,5 +1,6 @@
 #include "core/photogrammetry/estimators/registration.h"
 
+#include <algorithm>
 #include <cmath>
 #include <istream>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include <Eigen/SVD>
 
 #include "core/common/error.h"
+#include "core/common/number_format.h"
 #include "core/common/units.h"
 
 namespace rockface::photogrammetry {
@@ -123,6 +125,14 @@ ControlPointRegistration register_to_control_points(const std::vector<Eigen::Vec
   }
   out.rms_m = std::sqrt(sum2 / static_cast<double>(n));
   return out;
+}
+
+std::string control_points_summary(const ControlPointRegistration& r) {
+  const auto on_target = std::count_if(r.residuals.begin(), r.residuals.end(),
+                                       [](const ControlPointResidual& p) { return p.on_target; });
+  return std::to_string(on_target) + " of " + std::to_string(r.residuals.size()) +
+         " measured on their targets, rms " + format_fixed(1000 * r.rms_m, 1) + " mm, worst " +
+         r.worst_id + " (" + format_fixed(1000 * r.worst_m, 1) + " mm)";
 }
 
 std::vector<ControlPoint> parse_control_points(std::istream& in, const std::string& where) {

@@ -15,6 +15,7 @@
 #include "core/photogrammetry/matching/tie_point_refinement.h"
 #include "core/photogrammetry/matching/view_shading.h"
 #include "core/photogrammetry/surface/surface_pick.h"
+#include "core/photogrammetry/targets/control_targets.h"
 
 namespace rockface::photogrammetry {
 
@@ -169,12 +170,21 @@ ReconstructionResult reconstruct(const cv::Mat& left_image, const cv::Mat& right
   if (sources.baseline_m) scale_base = baseline_scale(*sources.baseline_m).scale;
 
   if (!sources.control_points.empty()) {
+    std::vector<Eigen::Vector2d> picks;
+    for (const auto& cp : sources.control_points) picks.push_back(cp.pixel);
+    const auto on_targets =
+        measure_control_targets(left_image, right_image, left, right, ro, picks);
     std::vector<Eigen::Vector3d> model;
-    for (const auto& cp : sources.control_points)
-      model.push_back(surface_at(out.mesh, cp.pixel, pick_radius,
-                                 sources.control_points_where + " point " + cp.id));
+    for (std::size_t k = 0; k < picks.size(); ++k) {
+      const auto& cp = sources.control_points[k];
+      model.push_back(on_targets[k] ? on_targets[k]->model
+                                    : surface_at(out.mesh, cp.pixel, pick_radius,
+                                                 sources.control_points_where + " point " + cp.id));
+    }
     out.control_points =
         register_to_control_points(model, sources.control_points, sources.control_points_where);
+    for (std::size_t k = 0; k < out.control_points->residuals.size(); ++k)
+      out.control_points->residuals[k].on_target = on_targets[k].has_value();
     T = out.control_points->transform;
     out.datum = out.control_points->datum;
     out.scaled = true;

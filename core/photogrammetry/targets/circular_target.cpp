@@ -15,6 +15,7 @@
 #include "core/photogrammetry/camera/camera_cv.h"
 #include "core/photogrammetry/matching/feature_matching.h"
 #include "core/photogrammetry/reconstruction/preset.h"
+#include "core/photogrammetry/targets/target_pair.h"
 
 namespace rockface::photogrammetry {
 
@@ -466,6 +467,12 @@ std::vector<TargetObservation> detect_targets(const cv::Mat& image, const Camera
                            std::vector<int>(kThresholds.begin(), kThresholds.end()));
 }
 
+std::vector<TargetObservation> detect_targets_in_the_dark(const cv::Mat& image,
+                                                          const CameraIntrinsics& camera,
+                                                          const TargetDetectorOptions& o) {
+  return detect_targets_at(image, camera, o, {30, 45, 60, 80, 120, 160, 200});
+}
+
 namespace {
 
 std::string where_looked(const cv::Mat& image, const TargetDetectorOptions& o) {
@@ -556,7 +563,7 @@ RangePoleTargets find_range_pole(const cv::Mat& left_image, const cv::Mat& right
   auto detect = [&](const cv::Mat& image, const CameraIntrinsics& camera) {
     auto found = detect_targets(image, camera, o);
     if (found.size() < 2) {
-      auto dark = detect_targets_at(image, camera, o, {30, 45, 60, 80, 120, 160, 200});
+      auto dark = detect_targets_in_the_dark(image, camera, o);
       if (dark.size() > found.size()) found = std::move(dark);
     }
     return found;
@@ -581,40 +588,9 @@ RangePoleTargets find_range_pole(const cv::Mat& left_image, const cv::Mat& right
                                          "; both targets of the pole must be in view");
   }
 
-  // Epipolar distance (pixels) of a left/right pair of corrected centres.
   const double focal = 0.5 * (left.fx + right.fx);
-  const Eigen::Matrix3d tx =
-      (Eigen::Matrix3d() << 0, -ro.t.z(), ro.t.y(), ro.t.z(), 0, -ro.t.x(), -ro.t.y(), ro.t.x(), 0)
-          .finished();
-  const Eigen::Matrix3d E = tx * ro.R;
-  auto mean_centre = [](const TargetObservation& t) {
-    return Eigen::Vector2d(0.5 * (t.centre_normalised[0] + t.centre_normalised[1]));
-  };
-  auto epipolar_px = [&](const TargetObservation& a, const TargetObservation& b) {
-    const Eigen::Vector2d na = mean_centre(a), nb = mean_centre(b);
-    const Eigen::Vector3d x1(na.x(), na.y(), 1), x2(nb.x(), nb.y(), 1);
-    const Eigen::Vector3d l = E * x1;
-    return focal * std::abs(x2.dot(l)) / l.head<2>().norm();
-  };
-  // Epipolar tolerance: the centres are sub-pixel, the orientation good to
-  // about a pixel at the image border.
-  const double max_epipolar_px = 4.0;
   auto best_partner = [&](const TargetObservation& a, double& err) {
-    int best = -1;
-    err = max_epipolar_px;
-    for (std::size_t j = 0; j < tr.size(); ++j) {
-      const double ratio = tr[j].white_diameter_px / a.white_diameter_px;
-      if (ratio < 0.5 || ratio > 2.0) continue;
-      const double e = epipolar_px(a, tr[j]);
-      const Eigen::Vector3d X =
-          triangulate_normalised(mean_centre(a), mean_centre(tr[j]), ro.R, ro.t);
-      if (X.z() <= 0 || (ro.R * X + ro.t).z() <= 0) continue;
-      if (e < err) {
-        err = e;
-        best = static_cast<int>(j);
-      }
-    }
-    return best;
+    return epipolar_partner(a, tr, ro, focal, kTargetEpipolarPx, err);
   };
 
   double best_score = 1e300;
@@ -644,7 +620,7 @@ RangePoleTargets find_range_pole(const cv::Mat& left_image, const cv::Mat& right
     s << "found " << tl.size() << " target(s) in the left image and " << tr.size()
       << " in the right, but no two in the left image stand one above the other with partners "
          "on their epipolar lines (within "
-      << max_epipolar_px << " px) in the right image; left image targets at";
+      << kTargetEpipolarPx << " px) in the right image; left image targets at";
     for (const auto& t : tl) s << " " << position(t);
     throw InputError("range pole", s.str());
   }
@@ -652,27 +628,13 @@ RangePoleTargets find_range_pole(const cv::Mat& left_image, const cv::Mat& right
   RangePoleTargets out;
   out.smallest_diameter_px = 1e300;
   for (int k = 0; k < 2; ++k) {
-    TargetObservation a = tl[choice[k]], b = tr[choice[2 + k]];
-    // The circle-plane normal: of the 2 x 2 candidate pairs, the one where
-    // the left and right views agree (right normals rotated into the left frame).
-    int ia = 0, ib = 0;
-    double best = -2;
-    for (int p = 0; p < 2; ++p)
-      for (int q = 0; q < 2; ++q) {
-        const double agree = a.normal_camera[p].dot(ro.R.transpose() * b.normal_camera[q]);
-        if (agree > best) {
-          best = agree;
-          ia = p;
-          ib = q;
-        }
-      }
-    a.centre_px = to_pixel(a.centre_normalised[ia], left);
-    b.centre_px = to_pixel(b.centre_normalised[ib], right);
-    out.left[k] = a;
-    out.right[k] = b;
-    out.model[k] =
-        triangulate_normalised(a.centre_normalised[ia], b.centre_normalised[ib], ro.R, ro.t);
-    out.smallest_diameter_px = std::min({out.smallest_diameter_px, a.diameter_px, b.diameter_px});
+    const TargetPair pair =
+        triangulate_target_pair(tl[choice[k]], tr[choice[2 + k]], left, right, ro);
+    out.left[k] = pair.left;
+    out.right[k] = pair.right;
+    out.model[k] = pair.model;
+    out.smallest_diameter_px =
+        std::min({out.smallest_diameter_px, pair.left.diameter_px, pair.right.diameter_px});
   }
   return out;
 }

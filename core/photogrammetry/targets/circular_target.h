@@ -55,6 +55,12 @@ struct TargetDetectorOptions {
 // All targets in one image (8-bit grey or BGR), best contrast first.
 std::vector<TargetObservation> detect_targets(const cv::Mat& image, const CameraIntrinsics& camera,
                                               const TargetDetectorOptions& options = {});
+// The same with thresholds down into the shadows (a target in a tunnel lit
+// by lamps or a flash, its white below the usual thresholds): tried when the
+// usual ones miss a target.
+std::vector<TargetObservation> detect_targets_in_the_dark(
+    const cv::Mat& image, const CameraIntrinsics& camera,
+    const TargetDetectorOptions& options = {});
 
 struct RangePoleTargets {
   // [0] lower, [1] upper target; left and right observations.

@@ -6,8 +6,12 @@
 // of another shape (a D: flat invert, vertical walls, a semicircular crown),
 // another lens, texture and sensor noise, with two overbreaks and one
 // underbreak. Each is replayed through the mock camera at the standard
-// preset, placed by the typed chainage of its range pole and measured by
-// `visit_profile` as `rockface profile` does.
+// preset, registered and placed by five monitoring targets of the tunnel's
+// survey (imaging.control_targets: ground control) and measured by
+// `visit_profile` as `rockface profile` does. A round's volumes need the
+// 3D image placed to a few hundredths of a degree: a quarter of a degree
+// moves them by tens of percent, and the compass line read from this 3D
+// image turns it by 0.14-0.22 deg (docs/accuracy-cost.md, issue 38).
 #include <unistd.h>
 
 #include <algorithm>
@@ -89,6 +93,48 @@ json d_heading_scene() {
   return s;
 }
 
+// The tunnel surveyor's monitoring targets instead of the range pole and
+// the compass line: five targets 0.15 m across on bolts 0.2 m off the
+// design lining (clear of the rock where a break leaves it inside the
+// design), on both walls and the crown, each given as (chainage, offset,
+// height) on the straight, level alignment (chainage c at northing
+// 5211800 + c, the axis at 410 m). Each is tapped at its centre's pixel in
+// the left photograph (field_replay.h).
+json with_monitoring_targets(json s, const std::vector<std::array<double, 3>>& places) {
+  s["imaging"].erase("range_pole");
+  s["imaging"].erase("reference_line");
+  s["tunnel"].erase("placement");
+  json targets = json::array();
+  for (std::size_t k = 0; k < places.size(); ++k) {
+    const auto& [c, u, v] = places[k];
+    targets.push_back({{"id", "M" + std::to_string(k + 1)},
+                       {"position", {512340.0 + u, 5211800.0 + c, 410.0 + v}},
+                       {"diameter", 0.15}});
+  }
+  s["imaging"]["control_targets"] = targets;
+  return s;
+}
+
+// The sample heading (horseshoe, walls at offset +-2.9 m at the axis's
+// height, crown 4.0 m above it) photographed from chainage 104.
+json sample_heading_scene() {
+  return with_monitoring_targets(test::tunnel_drive_scene(), {{109.0, -2.7, 0.5},
+                                                              {111.0, -2.7, -0.3},
+                                                              {109.5, 2.7, 0.5},
+                                                              {111.0, 2.7, -0.5},
+                                                              {110.5, 0.0, 3.8}});
+}
+
+// The D heading (walls at +-2.5 m, crown 3.5 m above the axis)
+// photographed from chainage 53.
+json d_heading_with_targets() {
+  return with_monitoring_targets(d_heading_scene(), {{57.0, -2.3, 0.0},
+                                                     {60.0, -2.3, -0.8},
+                                                     {56.0, 2.3, 0.0},
+                                                     {59.5, 2.3, -0.8},
+                                                     {58.5, 0.0, 3.3}});
+}
+
 struct Heading {
   fs::path scene_file, project;
   ReplayOutcome outcome;
@@ -126,8 +172,39 @@ bool both_photographs_see(const storage::Scene& scene, const Eigen::Vector3d& po
   return true;
 }
 
+// Whether the scene's own lining hides `point` (survey coordinates, on the
+// lining) from a station: the ray from the station is marched (1 cm steps
+// over its last 3 m, where a break's lip or an underbreak's bulge can stand
+// in the way of a grazing ray; 5 cm before) and hidden when a sample lies
+// beyond the true outline of its section (the design outline moved by the
+// scene's deviation along its normal, met along the ray from the profile's
+// ray centre). The last 3 cm, the point's own surface, are not tested.
+bool lining_hides(const camera::RenderedTunnelSpec& spec, const tunnel::DesignProfile& profile,
+                  const tunnel::Alignment& alignment, const Eigen::Vector3d& station,
+                  const Eigen::Vector3d& point) {
+  const Eigen::Vector3d ray = point - station;
+  const double length = ray.norm();
+  const Eigen::Vector2d centre = profile.ray_centre();
+  for (double d = 0.5; d < length - 0.03; d += (length - d > 3.0 ? 0.05 : 0.01)) {
+    const Eigen::Vector3d q = station + ray * (d / length);
+    const tunnel::AlignmentPlace place = alignment.place_survey(q);
+    if (place.chainage < spec.chainage_from || place.chainage > spec.face_chainage) continue;
+    const Eigen::Vector2d uv(place.offset, place.height);
+    const Eigen::Vector2d from_centre = uv - centre;
+    const double r = from_centre.norm();
+    if (r < 1e-6) continue;
+    const tunnel::ProfileHit hit = profile.ray_hit(std::atan2(from_centre.y(), from_centre.x()));
+    const double along = std::max(0.2, (from_centre / r).dot(hit.outward_normal));
+    const double outline =
+        hit.distance + camera::rendered_deviation(spec, place.chainage, hit.s) / along;
+    if (r > outline + 0.002) return true;
+  }
+  return false;
+}
+
 // The truth over the round the measurement chose and over what both
-// photographs see of it (the scene's geometry, not the reconstruction):
+// photographs see of it, in their frames and not hidden by the lining
+// itself (the scene's geometry, not the reconstruction):
 // volumes integrated from the scene's breaks (2 cm of chainage by 2 cm of
 // outline, each piece integrated every millimetre by camera/synthetic_tunnel
 // and kept when both photographs see its centre), and the deepest over- and
@@ -160,7 +237,10 @@ RoundTruth round_truth(const Heading& h, const VisitProfile& measured,
       const Eigen::Vector2d uv =
           profile.point_at_length(s) +
           camera::rendered_deviation(spec, c, s) * profile.outward_normal_at_length(s);
-      if (!both_photographs_see(scene, alignment.to_survey(frame.to_local(uv.x(), uv.y()))))
+      const Eigen::Vector3d point = alignment.to_survey(frame.to_local(uv.x(), uv.y()));
+      if (!both_photographs_see(scene, point) ||
+          lining_hides(spec, profile, alignment, scene.imaging->stations[0].position, point) ||
+          lining_hides(spec, profile, alignment, scene.imaging->stations[1].position, point))
         continue;
       t.over_m3 += piece.overbreak_m2 * dc;
       t.under_m3 += piece.underbreak_m2 * dc;
@@ -508,8 +588,8 @@ class TunnelBreakTruth : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("rockface-break-truth-" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    sample_ = new Heading(replay_heading(dir_, "sample", test::tunnel_drive_scene()));
-    d_heading_ = new Heading(replay_heading(dir_, "d-heading", d_heading_scene()));
+    sample_ = new Heading(replay_heading(dir_, "sample", sample_heading_scene()));
+    d_heading_ = new Heading(replay_heading(dir_, "d-heading", d_heading_with_targets()));
   }
   static void TearDownTestSuite() {
     delete sample_;
@@ -626,8 +706,8 @@ class TunnelBreakTruth : public ::testing::Test {
   // frame against the truth. The model frame is the left camera's
   // (relative_orientation.h), so the true rotation is the left station's
   // camera-to-world rotation; what is left of their product is the
-  // registration's error: about the vertical, the compass line's heading;
-  // about a horizontal axis, the range pole's tilt. The sample heading's
+  // registration's error: about the vertical, its heading; about a
+  // horizontal axis, its tilt. The sample heading's
   // near walls were measured 2.5-3.5 cm inside the lining and its left wall
   // 3.2 cm outside because the heading was 0.96 deg off: the compass line's
   // right end, read from its one nearest vertex, lies 20 px beside the range
@@ -646,19 +726,18 @@ class TunnelBreakTruth : public ::testing::Test {
     const double heading_deg = rad_to_deg(w.z()), tilt_deg = rad_to_deg(w.head<2>().norm());
     std::cout << name << ": registration's heading error " << heading_deg << " deg, tilt "
               << tilt_deg << " deg\n";
-    // What the compass line's reading allows: its ends 2.9-3 m apart at
-    // 7.8-9 m, each read from the plane of ~1000 vertices within 20 px
-    // (surface_pick.h). One vertex's predicted depth sigma there is 16-25
-    // mm (Z^2 sigma_d / (f B)), but the dense matching's errors are
-    // correlated over tens of pixels (on the sample's face they ramp over
-    // 40 px), so the plane is taken as no better than a third to a half of
-    // it: 5-10 mm per end, as the diagnostic measured the ends against the
-    // truth (docs/accuracy-cost.md, eighth session): sqrt(2) x 10 mm / 2.9 m
-    // = 0.28 deg, the bound (measured: sample 0.216, D 0.143). The pole's two
-    // targets, 2 m apart at 6.6-7 m, are located to a tenth of a pixel: a
-    // few millimetres of depth, 0.2 deg of tilt at most.
-    EXPECT_LT(std::abs(heading_deg), 0.28) << name;
-    EXPECT_LT(tilt_deg, 0.2) << name;
+    // What the five monitoring targets allow (tenth session: they replaced
+    // the pole and the compass line here, which turned these models 0.216
+    // and 0.143 deg, docs/accuracy-cost.md "Issue 38 (tenth session)"):
+    // each centre located to a tenth of a pixel at 5-7 m is
+    // Z^2 x 0.1 px / (f B) = 3-4 mm of depth (fx 800 / 600, base 1.4 m), along
+    // the view, i.e. along the drive; over targets +-2.3-2.7 m across, the
+    // least-squares heading is good to ~3.5 mm / sqrt(4 x 2.5^2 m^2) = 0.04
+    // deg, and the tilt alike (the crown target 3.3-3.8 m above the walls').
+    // 0.1 deg: 2.5 sigma (measured: sample -0.019, D -0.027 deg; tilt 0.008
+    // and 0.025 deg).
+    EXPECT_LT(std::abs(heading_deg), 0.1) << name;
+    EXPECT_LT(tilt_deg, 0.1) << name;
   }
 
   static void expect_coverage(const Heading& h, const std::string& name) {
@@ -721,6 +800,19 @@ TEST_F(TunnelBreakTruth, TheSecondHeadingsModelIsRegisteredWithItsTrueHeading) {
   expect_the_true_heading(*d_heading_, "D heading");
 }
 
+// NOT YET MET (disabled) in the tenth session, registered by five
+// monitoring targets (heading error -0.019 deg, was 0.216): underbreak
+// 0.116 m3 for 0.128 (-9 %, within 10 %), both largest breaks within 3 cm
+// and 0.5 m (0.353 m at 110.02 / 5.92; 0.108 m at 110.02 / 15.65), but the
+// overbreak 0.644 m3 for 0.748 (-14 %). Its truth counts every piece both
+// photographs see in their frames and that the lining itself does not hide
+// (lining_hides, new: nothing of this pocket is hidden), yet 0.055 m3 of it
+// lies on cells the round has no value for (the pocket's near flank, which
+// turns away from the cameras: seen at grazing incidence, where the dense
+// matching leaves holes wider than the 0.5 m interpolated), and on the cells
+// it valued the overbreak reads 7 % under their truth (0.644 for 0.693:
+// the noise threshold trims the bump's shallow edges and the measured cells
+// lie 2.3 mm inside the truth on average).
 TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchItsScene) {
   expect_the_truth(*sample_, "sample heading");
 }
@@ -745,7 +837,15 @@ TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchI
 // 0.490, underbreak 0.0933 for 0.0935) and the sample reads overbreak
 // 0.636 for 0.748 (0.690 over the cells it valued: a part of its pocket
 // is hidden behind its own lip) and underbreak 0.114 for 0.128.
-TEST_F(TunnelBreakTruth, DISABLED_ASecondHeadingOfAnotherShapeAndTextureMatchesItsScene) {
+// Tenth session (2026-11-30): both headings registered and placed by five
+// monitoring targets of the tunnel's survey (ground control, each target
+// measured in both photographs: control_targets.h) instead of the pole and
+// the compass line. Heading error -0.027 deg (was 0.143), and every figure
+// is met: overbreak 0.498 m3 for 0.477 (+4 %), underbreak 0.0996 for
+// 0.0935 (+7 %), largest overbreak 0.284 m at 57.38 / 3.91 (0.30 at 57.5 /
+// 3.9), largest underbreak 0.093 m at 58.11 / 14.09 (0.10 at 58.1 /
+// 14.05). Enabled again.
+TEST_F(TunnelBreakTruth, ASecondHeadingOfAnotherShapeAndTextureMatchesItsScene) {
   expect_the_truth(*d_heading_, "D heading");
 }
 

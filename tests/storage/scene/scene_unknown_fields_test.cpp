@@ -51,6 +51,9 @@ json full_scene() {
                              {"position": [1, -5, 1], "look_at": [0, 0, 1]}],
                 "range_pole": {"base": [0, -1, 0]},
                 "reference_line": {"from": [0, 0, 0], "to": [1, 0, 0]},
+                "control_targets": [{"id": "M1", "position": [0, 0, 2], "diameter": 0.2},
+                                    {"id": "M2", "position": [1, 0, 2]},
+                                    {"id": "M3", "position": [0, 0, 0]}],
                 "effects": {"noise_sigma": 1}, "texture_seed": 3}
   })");
 }
@@ -95,6 +98,7 @@ TEST(SceneUnknownFields, AMisspeltKeyInAnyObjectIsRefusedByItsPath) {
       {"/imaging/stations/1", "lookat", "imaging.stations[1].lookat"},
       {"/imaging/range_pole", "lenght", "imaging.range_pole.lenght"},
       {"/imaging/reference_line", "form", "imaging.reference_line.form"},
+      {"/imaging/control_targets/2", "positon", "imaging.control_targets[2].positon"},
       {"/imaging/effects", "blur", "imaging.effects.blur"},
   };
   for (const auto& c : cases) {
@@ -130,6 +134,29 @@ TEST(SceneUnknownFields, ValuesAreCheckedAfterTheShape) {
   scene = full_scene();
   scene["joints"][0]["dipdir"] = 360;  // one direction with 0
   EXPECT_EQ(parse_with(scene), "accepted");
+}
+
+// Issue 38: the survey's monitoring targets register the visit only as
+// three or more, each named once, each with a size.
+TEST(SceneUnknownFields, MonitoringTargetsAreThreeOrMoreNamedOnceWithASize) {
+  json scene = full_scene();
+  EXPECT_EQ(rockface::storage::parse_scene(scene.dump(), "S.json").imaging->control_targets.size(),
+            3u);
+  scene["imaging"]["control_targets"].erase(2);
+  EXPECT_EQ(parse_with(scene),
+            "S.json: imaging.control_targets: needs three or more targets (a registration by "
+            "fewer is not determined), got 2");
+  scene = full_scene();
+  scene["imaging"]["control_targets"][2]["id"] = "M1";
+  EXPECT_EQ(parse_with(scene), "S.json: imaging.control_targets[2].id: repeats the id \"M1\"");
+  scene = full_scene();
+  scene["imaging"]["control_targets"][1]["diameter"] = 0;
+  EXPECT_EQ(parse_with(scene).rfind("S.json: imaging.control_targets[1].diameter: ", 0), 0u)
+      << parse_with(scene);
+  scene = full_scene();
+  scene["imaging"]["control_targets"][0].erase("position");
+  EXPECT_EQ(parse_with(scene).rfind("S.json: imaging.control_targets[0].position: ", 0), 0u)
+      << parse_with(scene);
 }
 
 }  // namespace
