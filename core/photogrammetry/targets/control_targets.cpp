@@ -15,7 +15,7 @@ int target_at_pick(const std::vector<TargetObservation>& found, const Eigen::Vec
   double best_d = 0;
   for (std::size_t k = 0; k < found.size(); ++k) {
     const double d = (found[k].centre_px - pick).norm();
-    if (d > std::max(o.min_search_px, found[k].diameter_px)) continue;
+    if (d > std::max(o.min_search_px, 0.5 * found[k].diameter_px)) continue;
     if (best < 0 || d < best_d) {
       best = static_cast<int>(k);
       best_d = d;

@@ -22,9 +22,9 @@ namespace rockface::photogrammetry {
 
 struct ControlTargetOptions {
   // How far (left image pixels) a pick may lie from its target's centre:
-  // within the target's own diameter (a tap on it), or this much for a
-  // target only a few pixels across. A natural point (a trace's end) beside
-  // a target is not taken for it.
+  // inside the target's own disk (a tap on it), or this much for a target
+  // only a few pixels across. A natural point (a trace's end) beside a
+  // target is not taken for it.
   double min_search_px = 10;
 };
 

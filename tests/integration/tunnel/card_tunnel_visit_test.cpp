@@ -236,6 +236,13 @@ TEST(CardTunnelVisit, MonitoringTargetsPlaceTheVisitInSurveyCoordinates) {
   CliRun r = run_rockface("replay " + card.string() + " --project " + project.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("scale: control points"), std::string::npos) << r.out;
+  // Natural points on the rock, none on a target: each read from the 3D
+  // image, not from the range pole's targets standing in front of the face
+  // (control_targets.h; a trace's end beside a pole target was once taken
+  // for it, and the camera placed 0.85 m off).
+  EXPECT_NE(r.out.find("(0 of " + std::to_string(n) + " measured on their targets"),
+            std::string::npos)
+      << r.out;
   {
     storage::ProjectStore store = storage::ProjectStore::open(project);
     const auto models = store.list_models();

@@ -725,7 +725,10 @@ class TunnelBreakTruth : public ::testing::Test {
     const Eigen::Vector3d w = error.angle() * error.axis();  // world axes: east, north, up
     const double heading_deg = rad_to_deg(w.z()), tilt_deg = rad_to_deg(w.head<2>().norm());
     std::cout << name << ": registration's heading error " << heading_deg << " deg, tilt "
-              << tilt_deg << " deg\n";
+              << tilt_deg << " deg; " << h.outcome.registration << "\n";
+    // Every monitoring target measured on itself in both photographs.
+    EXPECT_NE(h.outcome.registration.find("(5 of 5 measured on their targets"), std::string::npos)
+        << name << ": " << h.outcome.registration;
     // What the five monitoring targets allow (tenth session: they replaced
     // the pole and the compass line here, which turned these models 0.216
     // and 0.143 deg, docs/accuracy-cost.md "Issue 38 (tenth session)"):
