@@ -4,6 +4,7 @@
 // The binary's folder goes when its tests pass (tests/support/temp_folders.h).
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tests/support/demo_projects.h"
 #include "tests/support/temp_folders.h"
 #include "tests/support/test_paths.h"
 
@@ -31,78 +32,9 @@ inline std::filesystem::path ui_test_dir() {
   return dir;
 }
 
-// `prefix` goes before the binary (e.g. "env -u DISPLAY ").
-inline int run_rockface_logged(const std::string& args, const std::filesystem::path& log,
-                               const std::string& prefix = "") {
-  const std::string cmd = prefix + std::string(ROCKFACE_BINARY_DIR) + "/rockface " + args + " >" +
-                          log.string() + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
+// The demo scene's file (the UI suites' name for it).
 inline std::string demo_scene() {
-  return std::string(ROCKFACE_SOURCE_DIR) + "/tools/samples/tunnel-face-demo.scene.json";
-}
-
-// The variable CTest sets to the folder where its ui_demo_projects fixture
-// (tests/ui/demo_projects_main.cpp) replayed the demo projects once for all
-// the UI suites' processes (tests/ui/CMakeLists.txt).
-inline constexpr const char* kSharedDemoProjects = "ROCKFACE_TEST_DEMO_PROJECTS";
-
-// `rockface replay` of `scene` at the fast preset into `project` (a new
-// file), its output in `log`.
-inline void replay_demo_scene(const std::filesystem::path& scene,
-                              const std::filesystem::path& project,
-                              const std::filesystem::path& log) {
-  std::filesystem::remove(project);
-  if (run_rockface_logged(
-          "replay " + scene.string() + " --preset fast --project " + project.string(), log) != 0)
-    throw std::runtime_error("rockface replay of " + scene.filename().string() + " failed: see " +
-                             log.string());
-}
-
-// The demo scene with the face photographed as `pairs` stereo pairs (each
-// further pair `step_m` west of the one before; 1.2 m as in
-// replay_face_picks_test.cpp for two; closer for three, whose third pair
-// must still see the lit face and the pole), written to `file`.
-inline void write_pairs_scene(int pairs, double step_m, const std::filesystem::path& file) {
-  std::ifstream in(demo_scene());
-  nlohmann::json scene = nlohmann::json::parse(in);
-  const nlohmann::json first = scene["imaging"]["stations"];
-  for (int k = 1; k < pairs; ++k)
-    for (auto st : first) {
-      st["position"][0] = st["position"][0].get<double>() - step_m * k;
-      st["look_at"][0] = st["look_at"][0].get<double>() - step_m * k;
-      scene["imaging"]["stations"].push_back(st);
-    }
-  std::ofstream(file) << scene.dump(2);
-}
-
-// The demo projects the UI suites open: the demo face (one pair) and the
-// visits of two and three pairs. Each is made by `make` (writing the scene
-// file it replays into the folder it is given), and named `name`.rockface.
-struct DemoProjectRecipe {
-  std::string name;
-  int pairs;
-  double step_m;
-};
-inline const std::vector<DemoProjectRecipe>& demo_project_recipes() {
-  static const std::vector<DemoProjectRecipe> recipes = {
-      {"demo", 1, 0.0}, {"two-pairs", 2, 1.2}, {"three-pairs", 3, 0.7}};
-  return recipes;
-}
-
-// Replays recipe `r` into `dir` (its scene file and log beside it).
-inline std::filesystem::path make_demo_project(const DemoProjectRecipe& r,
-                                               const std::filesystem::path& dir) {
-  std::filesystem::path scene = demo_scene();
-  if (r.pairs > 1) {
-    scene = dir / (r.name + ".scene.json");
-    write_pairs_scene(r.pairs, r.step_m, scene);
-  }
-  const auto project = dir / (r.name + ".rockface");
-  replay_demo_scene(scene, project, dir / ("replay-" + r.name + ".txt"));
-  return project;
+  return demo_scene_file();
 }
 
 // The demo project `name` in this process's folder, made once per process.
