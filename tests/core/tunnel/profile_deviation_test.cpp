@@ -684,7 +684,9 @@ double growing_tube_volume(double from, double to, double spacing) {
 TEST(ProfileDeviation, AHoleWithinTheLimitIsInterpolatedAndAWiderOneStaysUnseen) {
   const Alignment al = north_tunnel();
   DeviationOptions o = one_ray_per_facet(3.0, 2, 8, 0.1);
-  ASSERT_EQ(o.max_interpolated_hole_m, 0.5);  // the stated limit
+  // The stated limit: the smallest break the round counts.
+  ASSERT_EQ(o.max_interpolated_hole_m, 0.75);
+  ASSERT_EQ(o.max_interpolated_hole_m, o.min_break_chainage_m);
   // Three sections (5.1-5.3) unseen over 0.9 m of outline: 0.3 m along the
   // chainage, within the limit.
   const ProfileDeviation d =
@@ -711,9 +713,9 @@ TEST(ProfileDeviation, AHoleWithinTheLimitIsInterpolatedAndAWiderOneStaysUnseen)
   EXPECT_NEAR(static_cast<double>(interpolated) / static_cast<double>(d.view.state.size()),
               d.interpolated_fraction, 1e-12);
 
-  // Seven sections (5.1-5.7, 0.7 m) unseen: wider than the limit both ways.
+  // Nine sections (5.1-5.9, 0.9 m) unseen: wider than the limit both ways.
   const ProfileDeviation w =
-      profile_deviation(growing_tube_with_hole(al, 5.05, 5.75).input(), al, circle_profile(3.0), o);
+      profile_deviation(growing_tube_with_hole(al, 5.05, 5.95).input(), al, circle_profile(3.0), o);
   EXPECT_EQ(w.interpolated_fraction, 0);
   EXPECT_LT(w.overbreak_volume_m3, growing_tube_volume(2, 8, 0.1) - 1e-3);
   for (std::size_t k = 0; k < w.view.state.size(); ++k) EXPECT_NE(w.view.state[k], 4);

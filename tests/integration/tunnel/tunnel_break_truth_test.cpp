@@ -815,7 +815,16 @@ TEST_F(TunnelBreakTruth, TheSecondHeadingsModelIsRegisteredWithItsTrueHeading) {
 // matching leaves holes wider than the 0.5 m interpolated), and on the cells
 // it valued the overbreak reads 7 % under their truth (0.644 for 0.693:
 // the noise threshold trims the bump's shallow edges and the measured cells
-// lie 2.3 mm inside the truth on average).
+// lie 2.3 mm inside the truth on average). With holes filled up to the
+// smallest counted break's length (0.75 m, profile_deviation.h; was 0.5)
+// the near flank is interpolated: overbreak 0.686 for 0.748 (-8.3 %),
+// underbreak 0.116 for 0.128 (-9.3 %), both within 10 % here. Still
+// disabled: the underbreak's margin is 0.7 % of its truth, about one cell
+// of the developed view (0.05 x 0.25 m at 0.1 m deep is 1 % of it), so a
+// cell passing the noise threshold or not on another machine's floating
+// point would turn the test; a figure that turns on the machine is not met
+// (the facet test's lesson). What is left: the noise threshold's trimming of
+// a break's shallow edges, taken as a bias and stated or removed.
 TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchItsScene) {
   expect_the_truth(*sample_, "sample heading");
 }
@@ -844,10 +853,10 @@ TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchI
 // monitoring targets of the tunnel's survey (ground control, each target
 // measured in both photographs: control_targets.h) instead of the pole and
 // the compass line. Heading error -0.027 deg (was 0.143), and every figure
-// is met: overbreak 0.498 m3 for 0.477 (+4 %), underbreak 0.0996 for
-// 0.0935 (+7 %), largest overbreak 0.284 m at 57.38 / 3.91 (0.30 at 57.5 /
-// 3.9), largest underbreak 0.093 m at 58.11 / 14.09 (0.10 at 58.1 /
-// 14.05). Enabled again.
+// is met: overbreak 0.498 m3 for 0.477 (+4 %; 0.500, +4.8 %, with holes
+// filled up to 0.75 m), underbreak 0.0996 for 0.0935 (+7 %), largest overbreak 0.284 m at 57.38
+// / 3.91 (0.30 at 57.5 / 3.9), largest underbreak 0.093 m at 58.11 / 14.09 (0.10 at 58.1 / 14.05).
+// Enabled again.
 TEST_F(TunnelBreakTruth, ASecondHeadingOfAnotherShapeAndTextureMatchesItsScene) {
   expect_the_truth(*d_heading_, "D heading");
 }
