@@ -13,6 +13,8 @@
 //   midpoint of the two stations (its normal points from the target centre
 //   to that midpoint), so both cameras see it nearly face-on. Its edges are
 //   anti-aliased over the pixel footprint.
+// - the survey's monitoring targets (scene control_targets): drawn as the
+//   pole's targets are, each of its own diameter, facing the same midpoint.
 // - nothing hit: a dark background (tunnel darkness).
 //
 // Deterministic: the same scene gives the same pixels bit for bit (integer
