@@ -44,17 +44,8 @@ inline std::string demo_scene() {
 // session suite, made its own); run by hand, the process replays it.
 inline std::filesystem::path demo_project_named(const std::string& name) {
   const auto project = ui_test_dir() / (name + ".rockface");
-  if (const char* shared = std::getenv(kSharedDemoProjects); shared && *shared) {
-    const auto made = std::filesystem::path(shared) / (name + ".rockface");
-    if (!std::filesystem::exists(made))
-      throw std::runtime_error(made.string() + " is missing: the ui_demo_projects fixture (" +
-                               std::string(kSharedDemoProjects) + ") did not make it");
-    std::filesystem::copy_file(made, project, std::filesystem::copy_options::overwrite_existing);
-    return project;
-  }
-  for (const DemoProjectRecipe& r : demo_project_recipes())
-    if (r.name == name) return make_demo_project(r, ui_test_dir());
-  throw std::logic_error("no demo project " + name);
+  copy_of_shared_demo_project(name, project);
+  return project;
 }
 
 inline const std::filesystem::path& demo_project() {

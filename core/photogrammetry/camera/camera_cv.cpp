@@ -45,6 +45,11 @@ std::vector<Eigen::Vector2d> project(const std::vector<Eigen::Vector3d>& points_
   return out;
 }
 
+Eigen::Vector2d pixel_of_normalised(const Eigen::Vector2d& normalised,
+                                    const CameraIntrinsics& camera) {
+  return project({Eigen::Vector3d(normalised.x(), normalised.y(), 1.0)}, camera)[0];
+}
+
 CameraIntrinsics scaled(const CameraIntrinsics& camera, double s) {
   CameraIntrinsics c = camera;
   c.width = static_cast<int>(std::lround(camera.width * s));

@@ -21,6 +21,9 @@ std::vector<Eigen::Vector2d> undistort_to_normalised(const std::vector<Eigen::Ve
 // Projects points given in the camera frame to (distorted) pixels.
 std::vector<Eigen::Vector2d> project(const std::vector<Eigen::Vector3d>& points_camera,
                                      const CameraIntrinsics& camera);
+// The (distorted) pixel of one undistorted, normalised image point.
+Eigen::Vector2d pixel_of_normalised(const Eigen::Vector2d& normalised,
+                                    const CameraIntrinsics& camera);
 
 // The same camera for an image resized by `scale` (pixel centres follow
 // OpenCV's resize convention, (x + 0.5) * s - 0.5).

@@ -350,10 +350,6 @@ bool is_printed_target(const RingStats& ring, const TargetDetectorOptions& o) {
          ring.printed_rays >= kMinPrintedRays;
 }
 
-Eigen::Vector2d to_pixel(const Eigen::Vector2d& normalised, const CameraIntrinsics& camera) {
-  return project({Eigen::Vector3d(normalised.x(), normalised.y(), 1.0)}, camera)[0];
-}
-
 }  // namespace
 
 namespace {
@@ -445,8 +441,8 @@ std::vector<TargetObservation> detect_targets_at(const cv::Mat& image,
     obs.normal_camera = circle.normal;
     obs.centre_normalised = circle.centre;
     const Eigen::Vector3d ec = Kinv * Eigen::Vector3d(e.center.x, e.center.y, 1.0);
-    obs.ellipse_centre = to_pixel(ec.head<2>(), camera);
-    obs.centre_px = to_pixel(0.5 * (circle.centre[0] + circle.centre[1]), camera);
+    obs.ellipse_centre = pixel_of_normalised(ec.head<2>(), camera);
+    obs.centre_px = pixel_of_normalised(0.5 * (circle.centre[0] + circle.centre[1]), camera);
     obs.white_diameter_px = std::max(e.size.width, e.size.height);
     obs.ring_ratio = c.ring.ring_ratio;
     obs.diameter_px = obs.white_diameter_px * std::max(1.0, obs.ring_ratio);

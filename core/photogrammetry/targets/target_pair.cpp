@@ -12,10 +12,6 @@ Eigen::Vector2d mean_candidate_centre(const TargetObservation& t) {
   return 0.5 * (t.centre_normalised[0] + t.centre_normalised[1]);
 }
 
-Eigen::Vector2d pixel_of_centre(const Eigen::Vector2d& normalised, const CameraIntrinsics& camera) {
-  return project({Eigen::Vector3d(normalised.x(), normalised.y(), 1.0)}, camera)[0];
-}
-
 }  // namespace
 
 double target_epipolar_px(const TargetObservation& left, const TargetObservation& right,
@@ -66,8 +62,8 @@ TargetPair triangulate_target_pair(TargetObservation a, TargetObservation b,
     }
   TargetPair out;
   out.epipolar_px = target_epipolar_px(a, b, ro, 0.5 * (left_camera.fx + right_camera.fx));
-  a.centre_px = pixel_of_centre(a.centre_normalised[ia], left_camera);
-  b.centre_px = pixel_of_centre(b.centre_normalised[ib], right_camera);
+  a.centre_px = pixel_of_normalised(a.centre_normalised[ia], left_camera);
+  b.centre_px = pixel_of_normalised(b.centre_normalised[ib], right_camera);
   out.model = triangulate_normalised(a.centre_normalised[ia], b.centre_normalised[ib], ro.R, ro.t);
   out.left = a;
   out.right = b;
