@@ -19,12 +19,14 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "storage/project/project_store.h"
 #include "tests/support/card_folder.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/dxf_reading.h"
+#include "tests/support/tunnel_drive_scene.h"
 
 namespace rockface {
 namespace {
@@ -187,29 +189,88 @@ TEST(CardTunnelVisit, PhotographsPoleAndCompassGiveAPlacedRoundWithItsOverbreak)
   fs::remove_all(root);
 }
 
-// The round's photographs with monitoring targets instead of the pole and
-// compass: five points on the face whose survey coordinates and pixels
-// the renderer records (ends of joint traces, truth.json), given as the
-// visit file's control points. The visit is in survey coordinates (the new
-// project's datum at their centroid), and once the project has its tunnel
-// it is placed by them (issue 42: a `--gcp` model was recorded as "control
-// points" and could never be placed so).
+// The round's photographs with ground control instead of the pole and
+// compass, as the visit file's control points (gcp.csv): five of the
+// tunnel survey's monitoring targets (circular targets 0.15 m across by the
+// walls and the crown, rendered into the photographs) tapped a few pixels
+// off their centres, and five natural points on the face whose survey
+// coordinates and pixels the renderer records (ends of joint traces,
+// truth.json). The targets are measured on their targets in both
+// photographs, the natural points read from the 3D image. The visit is in
+// survey coordinates (the new project's datum at their centroid), and once
+// the project has its tunnel it is placed by them (issue 42: a `--gcp` model
+// was recorded as "control points" and could never be placed so).
 TEST(CardTunnelVisit, MonitoringTargetsPlaceTheVisitInSurveyCoordinates) {
   const fs::path root =
       fs::temp_directory_path() / ("rockface-card-gcp-" + std::to_string(::getpid()));
   fs::remove_all(root);
   fs::create_directories(root);
   const std::string samples = std::string(ROCKFACE_SOURCE_DIR) + "/tools/samples/";
-  const json truth = test::render_sample("tunnel-drive.scene.json", root);
-  ASSERT_FALSE(HasFailure());
+  // The targets as the truth test places them (tunnel_break_truth_test.cpp):
+  // (chainage, offset, height) on the straight, level alignment, chainage c
+  // at northing 5211800 + c, the axis at 410 m, 0.2 m off the walls and the
+  // crown.
+  const std::vector<std::array<double, 3>> places = {{109.0, -2.7, 0.5},
+                                                     {111.0, -2.7, -0.3},
+                                                     {109.5, 2.7, 0.5},
+                                                     {111.0, 2.7, -0.5},
+                                                     {110.5, 0.0, 3.8}};
+  json scene = test::tunnel_drive_scene();
+  json targets = json::array();
+  for (std::size_t k = 0; k < places.size(); ++k)
+    targets.push_back(
+        {{"id", "M" + std::to_string(k + 1)},
+         {"position", {512340.0 + places[k][1], 5211800.0 + places[k][0], 410.0 + places[k][2]}},
+         {"diameter", 0.15}});
+  scene["imaging"]["control_targets"] = targets;
+  std::ofstream(root / "drive.scene.json") << scene.dump(2);
+  {
+    const CliRun rendered = run_rockface("render " + (root / "drive.scene.json").string() +
+                                         " --out " + (root / "render").string());
+    ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
+  }
+  const json truth = json::parse(std::ifstream(root / "render" / "truth.json"));
 
   const fs::path card = root / "DCIM";
   test::write_card(root / "render", card, "DSC_0101.JPG", "DSC_0102.JPG");
   ASSERT_FALSE(HasFailure());
-  // Each face trace's first end, and the last trace's other end: points on
-  // rock spread over the face (5 m across, 5 m high).
   std::ofstream gcp(card / "gcp.csv");
   gcp << "id,u,v,X,Y,Z\n";
+  // Each target's centre projected into the left photograph by OpenCV's
+  // camera model from the renderer's record (its pose, intrinsics and
+  // distortion; not rockface's projection), and tapped 2 px right of and
+  // 1 px above it, as a finger lands inside a disk about 20 px across.
+  {
+    const json& in = truth.at("intrinsics");
+    const cv::Matx33d k(in.at("fx").get<double>(), 0, in.at("cx").get<double>(), 0,
+                        in.at("fy").get<double>(), in.at("cy").get<double>(), 0, 0, 1);
+    const std::vector<double> distortion = in.at("distortion").get<std::vector<double>>();
+    const json& left = truth.at("cameras")[0];
+    cv::Matx33d rotation;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        rotation(i, j) = left.at("rotation_world_to_camera")[i][j].get<double>();
+    const cv::Vec3d station(left.at("position")[0].get<double>(),
+                            left.at("position")[1].get<double>(),
+                            left.at("position")[2].get<double>());
+    cv::Vec3d rvec;
+    cv::Rodrigues(rotation, rvec);
+    for (const auto& target : targets) {
+      const cv::Vec3d w(target.at("position")[0].get<double>(),
+                        target.at("position")[1].get<double>(),
+                        target.at("position")[2].get<double>());
+      // Relative to the camera's centre: survey coordinates of 5 million
+      // metres would cost the projection its millimetres.
+      const std::vector<cv::Point3d> object{cv::Point3d(w - station)};
+      std::vector<cv::Point2d> image;
+      cv::projectPoints(object, rvec, cv::Vec3d(0, 0, 0), k, distortion, image);
+      gcp << target.at("id").get<std::string>() << "," << std::setprecision(10) << image[0].x + 2
+          << "," << image[0].y - 1 << "," << std::setprecision(12) << w[0] << "," << w[1] << ","
+          << w[2] << "\n";
+    }
+  }
+  // Each face trace's first end, and the last trace's other end: points on
+  // rock spread over the face (5 m across, 5 m high).
   int n = 0;
   json last;
   for (const auto& t : truth.at("traces")) {
@@ -236,11 +297,12 @@ TEST(CardTunnelVisit, MonitoringTargetsPlaceTheVisitInSurveyCoordinates) {
   CliRun r = run_rockface("replay " + card.string() + " --project " + project.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("scale: control points"), std::string::npos) << r.out;
-  // Natural points on the rock, none on a target: each read from the 3D
-  // image, not from the range pole's targets standing in front of the face
-  // (control_targets.h; a trace's end beside a pole target was once taken
-  // for it, and the camera placed 0.85 m off).
-  EXPECT_NE(r.out.find("(0 of " + std::to_string(n) + " measured on their targets"),
+  // The five monitoring targets measured on their targets; the natural
+  // points on the rock read from the 3D image, not from the range pole's
+  // targets standing in front of the face (control_targets.h; a trace's end
+  // beside a pole target was once taken for it, and the camera placed
+  // 0.85 m off).
+  EXPECT_NE(r.out.find("(5 of " + std::to_string(n + 5) + " measured on their targets"),
             std::string::npos)
       << r.out;
   {
@@ -256,12 +318,14 @@ TEST(CardTunnelVisit, MonitoringTargetsPlaceTheVisitInSurveyCoordinates) {
                                   left.at("position")[2].get<double>());
     EXPECT_LT((datum - station).norm(), 12.0);
     // The left camera's centre in survey coordinates against the renderer's
-    // station: the targets are picked to two lattice steps (about 1 cm at
-    // 8 m, fast preset) over a face 5 m across, so the camera 8 m in front
-    // is placed to a few centimetres; 0.1 m.
+    // station. The natural points are read from the fast preset's 3D image
+    // to 1-3 cm (two lattice steps at 8 m), the targets to millimetres; 14
+    // points spread 5 m across and 6 m deep place the camera 8 m in front
+    // to about rms / sqrt(14) times the lever (8 / 2.5): 1-2 cm (1.4 cm
+    // here); 0.05 m.
     const storage::Model m = store.load_model(models[0].id);
     ASSERT_TRUE(m.camera_to_mesh);
-    EXPECT_LT((datum + m.camera_to_mesh->t - station).norm(), 0.1)
+    EXPECT_LT((datum + m.camera_to_mesh->t - station).norm(), 0.05)
         << (datum + m.camera_to_mesh->t).transpose();
   }
   const std::string files = " --alignment " + samples + "tunnel-drive.alignment.csv --profile " +
