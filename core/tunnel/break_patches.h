@@ -9,7 +9,9 @@
 // kept where a whole rectangle of them of one sign covers the cell, cells
 // without a value inside the rectangle not held against it), so a band
 // narrower than the rectangle counts for nothing and a break keeps its
-// area, flanks included, wherever the rectangle fits.
+// area, flanks included, wherever the rectangle fits. The rectangle must lie
+// inside the round: a band at the round's ends shorter than it counts for
+// nothing either (the crease where the face meets the lining).
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -64,15 +64,23 @@ void tell_the_geologist(ProfileDeviation& out, const DeviationOptions& options, 
                    format_fixed(1000 * per_cell->min_sigma_m, 1) + " to " +
                    format_fixed(1000 * per_cell->max_sigma_m, 1) + " mm, median " +
                    format_fixed(1000 * per_cell->median_sigma_m, 1) +
-                   " mm) are not counted, but for the flanks of a break beyond them down to half "
-                   "of that";
+                   " mm) are not counted, but for the flanks of a break beyond them, followed "
+                   "down to the design";
   else if (out.noise_threshold_m > 0)
     out.message += "; deviations within " + format_fixed(1000 * out.noise_threshold_m, 1) +
                    " mm (" + format_fixed(options.noise_sigmas, 0) +
                    " sigma of the 3D image's stated depth precision) are not counted, "
-                   "but for the flanks of a break beyond them down to half of that";
+                   "but for the flanks of a break beyond them, followed down to the design";
   else
     out.message += "; the 3D image states no depth precision: every deviation is counted";
+  if (out.noise_patches > 0)
+    out.message += "; " + std::to_string(out.noise_patches) + " patch" +
+                   (out.noise_patches == 1 ? "" : "es") + " beyond the noise left out (" +
+                   format_fixed(out.noise_patches_overbreak_m3, 3) + " m³ over, " +
+                   format_fixed(out.noise_patches_underbreak_m3, 3) +
+                   " m³ under): no deeper than " + format_fixed(options.noise_sigmas, 0) +
+                   " sigma of the lining around them, whose measured spread can exceed the "
+                   "predicted precision where the rock is poorly textured";
   if (out.lining_offset.cells > 0)
     out.message +=
         "; the lining lies " + format_fixed(1000 * out.lining_offset.median_m, 1) + " ± " +

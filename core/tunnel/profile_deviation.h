@@ -110,7 +110,10 @@ struct DeviationOptions {
   // errors that pass the noise threshold lie in narrower bands (issue 38:
   // on the D heading 0.29 of its 0.38 m3 of underbreak, where the scene has
   // 0.09), while the smallest break that matters for a round's volume is a
-  // metre or more across. 0 = every counted cell counts.
+  // metre or more across. 0 = every counted cell counts. A patch so kept
+  // counts when it is deeper than the lining around it is rough
+  // (break_significance.h: noise_sigmas x the larger of its cells'
+  // predicted sigma and the spread of the lining within 1 m around it).
   double min_break_chainage_m = 0.75;
   double min_break_outline_m = 0.25;
 };
@@ -215,12 +218,21 @@ struct ProfileDeviation {
 
   // Issue 38: what the figures count, what they leave out, how sure they are.
   // Only cells whose deviation lies beyond the noise threshold (noise_sigmas
-  // x the stated depth sigma; 0 when none was stated), and the flanks of such
-  // a break down to half the threshold (cells of the same sign connected to
-  // one beyond it), count as over- or underbreak, in the volumes, the areas
-  // and the largest of each.
+  // x the stated depth sigma; 0 when none was stated), in a patch the patch
+  // rule keeps (min_break_chainage_m x min_break_outline_m) and deeper than
+  // the lining around it is rough (break_significance.h), count as over- or
+  // underbreak, with their break's flanks followed down to the design
+  // (break_flanks.h): in the volumes, the areas and the largest of each.
   double noise_threshold_m = 0;
-  // The lining's offset from the design as a whole (the median cell). When
+  // Patches the patch rule kept that were no deeper on average than
+  // noise_sigmas x the larger of their predicted sigma and the spread of the
+  // lining around them: left out as the reconstruction's noise, and said
+  // (their count and their volume of each sign, m3).
+  std::size_t noise_patches = 0;
+  double noise_patches_overbreak_m3 = 0, noise_patches_underbreak_m3 = 0;
+  // The lining's offset from the design as a whole (the median of the cells
+  // within the noise threshold of the median of all, so that the breaks do
+  // not pull it; its standard error from their spread). When
   // it lies within the noise threshold it cannot be told from the
   // reconstruction's bias and is removed from every cell; beyond it the
   // lining really lies off the design (a round excavated all round wide) and

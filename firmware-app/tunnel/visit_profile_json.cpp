@@ -94,6 +94,13 @@ std::string visit_profile_json(const VisitProfile& v) {
   j["cells_left_out"] = {{"off_the_lining", d.cells_off_lining},
                          {"below_the_invert", d.cells_below_invert},
                          {"max_invert_overbreak_m", round_to(d.max_invert_overbreak_m, 0.001)}};
+  // Patches beyond the noise threshold no deeper than the lining around them
+  // is rough (break_significance.h): left out of the volumes, and said.
+  if (measured)
+    j["noise_patches_left_out"] = {
+        {"patches", d.noise_patches},
+        {"overbreak_m3", round_to(d.noise_patches_overbreak_m3, 0.001)},
+        {"underbreak_m3", round_to(d.noise_patches_underbreak_m3, 0.001)}};
   json left_out = json::array();
   for (const auto& l : d.sections_left_out)
     left_out.push_back({{"chainage_from", round_to(l.chainage_from, 0.001)},
