@@ -631,6 +631,9 @@ class TunnelBreakTruth : public ::testing::Test {
                 << 1000 * m.cell_precision->max_sigma_m << " mm, median "
                 << 1000 * m.cell_precision->median_sigma_m << " mm\n";
     print_precision_bands(precision_bands(h, m, m.tunnel.alignment(store.project().datum)));
+    // Patches beyond the noise left out as noise are said, and only then.
+    EXPECT_EQ(d.noise_patches > 0, d.message.find("beyond the noise left out") != std::string::npos)
+        << name << ": " << d.noise_patches << " patches; " << d.message;
     // The truth is a real break in the round (else the test says nothing).
     ASSERT_GT(t.over_m3, 0.1) << name;
     ASSERT_GT(t.under_m3, 0.02) << name;
@@ -803,29 +806,26 @@ TEST_F(TunnelBreakTruth, TheSecondHeadingsModelIsRegisteredWithItsTrueHeading) {
   expect_the_true_heading(*d_heading_, "D heading");
 }
 
-// NOT YET MET (disabled) in the tenth session, registered by five
-// monitoring targets (heading error -0.019 deg, was 0.216): underbreak
-// 0.116 m3 for 0.128 (-9 %, within 10 %), both largest breaks within 3 cm
-// and 0.5 m (0.353 m at 110.02 / 5.92; 0.108 m at 110.02 / 15.65), but the
-// overbreak 0.644 m3 for 0.748 (-14 %). Its truth counts every piece both
-// photographs see in their frames and that the lining itself does not hide
-// (lining_hides, new: nothing of this pocket is hidden), yet 0.055 m3 of it
-// lies on cells the round has no value for (the pocket's near flank, which
-// turns away from the cameras: seen at grazing incidence, where the dense
-// matching leaves holes wider than the 0.5 m interpolated), and on the cells
-// it valued the overbreak reads 7 % under their truth (0.644 for 0.693:
-// the noise threshold trims the bump's shallow edges and the measured cells
-// lie 2.3 mm inside the truth on average). With holes filled up to the
-// smallest counted break's length (0.75 m, profile_deviation.h; was 0.5)
-// the near flank is interpolated: overbreak 0.686 for 0.748 (-8.3 %),
-// underbreak 0.116 for 0.128 (-9.3 %), both within 10 % here. Still
-// disabled: the underbreak's margin is 0.7 % of its truth, about one cell
-// of the developed view (0.05 x 0.25 m at 0.1 m deep is 1 % of it), so a
-// cell passing the noise threshold or not on another machine's floating
-// point would turn the test; a figure that turns on the machine is not met
-// (the facet test's lesson). What is left: the noise threshold's trimming of
-// a break's shallow edges, taken as a bias and stated or removed.
-TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchItsScene) {
+// Tenth session: registered by five monitoring targets (heading error
+// -0.019 deg, was 0.216) and holes filled up to 0.75 m, every figure was
+// met here (overbreak 0.686 m3 for 0.748, -8.3 %; underbreak 0.116 for
+// 0.128, -9.3 %) but the underbreak's margin was 0.7 % of its truth, and
+// the test stayed disabled. Eleventh session (2026-11-30): a patch no
+// deeper than the lining around it is rough is left out as noise
+// (break_significance.h), a break's flanks are followed down to the design
+// (break_flanks.h), a band at the round's ends shorter than the patch rule
+// does not count (break_patches.h), and the lining's offset is the median
+// of the cells within the noise (its breaks no longer pull it): overbreak
+// 0.693 for 0.748 (-7.4 %), underbreak 0.118 for 0.128 (-7.7 %), largest
+// 0.353 m at 110.02 / 5.92 and 0.108 m at 110.02 / 15.65. Run as another
+// machine would run it, with OpenCV's SSE4 code paths instead of AVX2
+// (OPENCV_CPU_DISABLE=AVX2,FMA3,AVX,FP16,POPCNT), every figure moved by 1 %
+// or less (-8.4 %, -7.3 %); before these rules the second heading's
+// underbreak moved from +6.6 % to +14.5 % so (docs/accuracy-cost.md,
+// "Issue 38 (eleventh session)"). Enabled. What the remaining -7 % is:
+// the breaks' crests read 8-10 % shallow (0.108 for 0.12 here, 0.092 for
+// 0.10 on the D heading), the dense matching's smoothing of a bump.
+TEST_F(TunnelBreakTruth, TheSampleHeadingsVolumesAndLargestBreaksMatchItsScene) {
   expect_the_truth(*sample_, "sample heading");
 }
 
@@ -856,7 +856,11 @@ TEST_F(TunnelBreakTruth, DISABLED_TheSampleHeadingsVolumesAndLargestBreaksMatchI
 // is met: overbreak 0.498 m3 for 0.477 (+4 %; 0.500, +4.8 %, with holes
 // filled up to 0.75 m), underbreak 0.0996 for 0.0935 (+7 %), largest overbreak 0.284 m at 57.38
 // / 3.91 (0.30 at 57.5 / 3.9), largest underbreak 0.093 m at 58.11 / 14.09 (0.10 at 58.1 / 14.05).
-// Enabled again.
+// Enabled again. Eleventh session: that +7 % was the true underbreak read
+// 8 % short plus 0.02 m3 of noise patches on the far walls and the crease
+// by the face, which OpenCV's SSE4 code paths made +14.5 %: with the rules
+// above (the sample's test), overbreak 0.476 for 0.477 (-0.2 %; SSE4
+// -2.3 %), underbreak 0.0871 for 0.0935 (-6.9 %; SSE4 -8.0 %).
 TEST_F(TunnelBreakTruth, ASecondHeadingOfAnotherShapeAndTextureMatchesItsScene) {
   expect_the_truth(*d_heading_, "D heading");
 }
