@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/common/error.h"
+#include "core/tunnel/developed_cells.h"
 
 namespace rockface::tunnel {
 
@@ -22,10 +23,7 @@ std::vector<std::int8_t> follow_break_flanks(std::size_t rows, std::size_t cols,
   while (!stack.empty()) {
     const std::size_t k = stack.back();
     stack.pop_back();
-    const std::size_t r = k / cols, c = k % cols;
-    const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
-                               r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
-    for (std::size_t q : nb) {
+    for (std::size_t q : developed_neighbours(k, rows, cols)) {
       if (out[q] != 0 || !valued[q]) continue;
       const double d = deviation[q];
       if ((d > 0 ? 1 : -1) == out[k] && d != 0 && std::abs(d) <= std::abs(deviation[k])) {

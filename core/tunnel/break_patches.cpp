@@ -3,24 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/common/error.h"
+#include "core/tunnel/developed_cells.h"
 
 namespace rockface::tunnel {
 
 namespace {
 
-// Calls f(q) for every cell of the rectangle about (r, c): rows cut at the
-// round's ends, columns wrapping round the outline.
+// The patch rule's rectangle about (r, c) (developed_cells.h).
 template <typename F>
 void for_rectangle(std::size_t r, std::size_t c, std::size_t rows, std::size_t cols,
                    const PatchSize& size, F&& f) {
-  const std::size_t r0 = r >= size.half_rows ? r - size.half_rows : 0;
-  const std::size_t r1 = std::min(rows - 1, r + size.half_rows);
-  const std::size_t wide = std::min(cols, 2 * size.half_cols + 1);
-  for (std::size_t rr = r0; rr <= r1; ++rr)
-    for (std::size_t i = 0; i < wide; ++i)
-      f(rr * cols + (c + cols - size.half_cols % cols + i) % cols);
+  for_developed_rectangle(r, c, rows, cols, size.half_rows, size.half_cols, std::forward<F>(f));
 }
 
 }  // namespace

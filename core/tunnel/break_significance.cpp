@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/common/error.h"
+#include "core/tunnel/developed_cells.h"
 
 namespace rockface::tunnel {
 
@@ -51,10 +52,7 @@ std::vector<std::int8_t> significant_breaks(std::size_t rows, std::size_t cols,
     patch.assign(1, start);
     labelled[start] = 1;
     for (std::size_t i = 0; i < patch.size(); ++i) {
-      const std::size_t k = patch[i], r = k / cols, c = k % cols;
-      const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
-                                 r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
-      for (std::size_t q : nb)
+      for (std::size_t q : developed_neighbours(patch[i], rows, cols))
         if (!labelled[q] && sign[q] == sign[start]) {
           labelled[q] = 1;
           patch.push_back(q);
@@ -71,19 +69,14 @@ std::vector<std::int8_t> significant_breaks(std::size_t rows, std::size_t cols,
     p.predicted_sigma_m /= static_cast<double>(patch.size());
     // The lining around it: valued cells no patch holds within the ring.
     ring.clear();
-    const std::size_t wide = std::min(cols, 2 * options.ring_cols + 1);
-    for (std::size_t k : patch) {
-      const std::size_t r = k / cols, c = k % cols;
-      const std::size_t r0 = r >= options.ring_rows ? r - options.ring_rows : 0;
-      const std::size_t r1 = std::min(rows - 1, r + options.ring_rows);
-      for (std::size_t rr = r0; rr <= r1; ++rr)
-        for (std::size_t i = 0; i < wide; ++i) {
-          const std::size_t q = rr * cols + (c + cols - options.ring_cols % cols + i) % cols;
-          if (ring_mark[q] == patch_number || !valued[q] || sign[q] != 0) continue;
-          ring_mark[q] = patch_number;
-          ring.push_back(deviation[q]);
-        }
-    }
+    for (std::size_t k : patch)
+      for_developed_rectangle(k / cols, k % cols, rows, cols, options.ring_rows, options.ring_cols,
+                              [&](std::size_t q) {
+                                if (ring_mark[q] == patch_number || !valued[q] || sign[q] != 0)
+                                  return;
+                                ring_mark[q] = patch_number;
+                                ring.push_back(deviation[q]);
+                              });
     double noise = p.predicted_sigma_m;
     if (ring.size() >= options.min_ring_cells) {
       p.ring_sigma_m = robust_spread(ring);

@@ -15,6 +15,7 @@
 #include "core/tunnel/break_flanks.h"
 #include "core/tunnel/break_patches.h"
 #include "core/tunnel/break_significance.h"
+#include "core/tunnel/developed_cells.h"
 #include "core/tunnel/deviation_message.h"
 #include "core/tunnel/lining_interpolation.h"
 #include "core/tunnel/lining_precision.h"
@@ -410,10 +411,7 @@ std::vector<std::uint8_t> counted_cells(const DeviationCells& g, const Deviation
     while (!stack.empty()) {
       const std::size_t k = stack.back();
       stack.pop_back();
-      const std::size_t r = k / cols, c = k % cols;
-      const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
-                                 r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
-      for (std::size_t q : nb) {
+      for (std::size_t q : developed_neighbours(k, rows, cols)) {
         if (counted[q] || !valued(q)) continue;
         const double d = dev(q);
         if ((d > 0) == over && std::abs(d) > 0.5 * g.threshold[q]) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/tunnel/developed_cells.h"
+
 namespace rockface::tunnel {
 
 namespace {
@@ -44,9 +46,7 @@ std::vector<UnderbreakPatch> underbreak_patches(
         p.max_depth_m = depth;
         p.deepest = position_of_cell[k];
       }
-      const std::size_t nb[4] = {r > 0 ? k - cols : k, r + 1 < rows ? k + cols : k,
-                                 r * cols + (c + cols - 1) % cols, r * cols + (c + 1) % cols};
-      for (std::size_t n : nb)
+      for (std::size_t n : developed_neighbours(k, rows, cols))
         if (!done[n] && beyond(n)) {
           done[n] = 1;
           stack.push_back(n);
