@@ -2,7 +2,8 @@
 // rectangle keeps every counted cell, flanks included; a band narrower
 // than the rectangle in either direction counts for nothing; a cell with
 // no value inside a patch does not cut it; patches of opposite sign do not
-// hold each other up; the outline wraps.
+// hold each other up; the outline wraps; the rectangle lies inside the
+// round.
 #include "core/tunnel/break_patches.h"
 
 #include <gtest/gtest.h>
@@ -69,6 +70,27 @@ TEST(BreakPatches, TheOutlineWraps) {
   v.fill(1, 3, 37, 42, -1);
   const auto kept = open_break_patches(v.rows, v.cols, v.sign, v.valued, {1, 2});
   EXPECT_EQ(v.count(kept, -1), 3 * 6);
+}
+
+TEST(BreakPatches, ABandAtTheRoundsEndsShorterThanTheRectangleDoesNotCount) {
+  // The rectangle (3 sections) must lie inside the round: a band in the
+  // last two sections (the crease by the face) counts for nothing, and so
+  // does one in the first two; a break of 4 sections running into the
+  // round's end keeps all of its cells, the end section included.
+  View v(12, 40);
+  v.fill(10, 11, 2, 12, -1);
+  v.fill(0, 1, 20, 30, 1);
+  v.fill(0, 3, 32, 38, -1);
+  const auto kept = open_break_patches(v.rows, v.cols, v.sign, v.valued, {1, 2});
+  EXPECT_EQ(v.count(kept, 1), 0);
+  EXPECT_EQ(v.count(kept, -1), 4 * 7);
+  // A round of two sections (shorter than the rectangle) takes the
+  // rectangle as long as it is: a patch across both counts.
+  View short_round(2, 40);
+  short_round.fill(0, 1, 5, 15, 1);
+  const auto whole = open_break_patches(short_round.rows, short_round.cols, short_round.sign,
+                                        short_round.valued, {1, 2});
+  EXPECT_EQ(short_round.count(whole, 1), 2 * 11);
 }
 
 TEST(BreakPatches, TheRectangleIsTheLargestOddCountOfCellsWithinTheSize) {
