@@ -568,6 +568,33 @@ TEST(ProfileDeviation, AFloorMetFarBelowTheDesignIsLeftOutAndARealFloorBreakIsCo
   EXPECT_NEAR(d.overbreak_volume_m3, truth, 0.05 * truth);
 }
 
+TEST(ProfileDeviation, TheLiningsOffsetIsMeasuredOnTheLiningNotPulledByItsBreaks) {
+  // The same lining, 3 mm inside the design with +-7 mm of noise, now with
+  // underbreak 0.1 m deep over 1.5 rad of its 2 pi along the whole round
+  // (24 % of the cells). The median of every cell would lie at the 34 %
+  // point of the intact cells' noise (-10 to +4 mm): -5.2 mm. The offset
+  // is the median of the cells within the noise threshold (1 cm) of that:
+  // the intact ones, -3 mm, to the tolerance of the test above (0.3 mm).
+  const Alignment al = north_tunnel();
+  const auto in_break = [](double t, double) { return t > 0.5 && t < 2.0; };
+  const std::vector<double> rows = steps(0, 12, 0.07);
+  Mesh m;
+  add_tube(
+      m, al, {0, 0}, rows,
+      [&](double t, double c) {
+        return 3.0 - 0.003 + facet_noise(t, c, 0.007) - (in_break(t, c) ? 0.1 : 0.0);
+      },
+      kEverywhere);
+  DeviationOptions o;
+  o.chainage_from = 2;
+  o.chainage_to = 10;
+  o.depth_sigma_m = 0.005;
+  const ProfileDeviation d = profile_deviation(m.input(), al, circle_profile(3.0), o);
+  ASSERT_EQ(d.status, DeviationStatus::ok) << d.message;
+  EXPECT_NEAR(d.lining_offset.median_m, -0.003, 3e-4);
+  EXPECT_TRUE(d.lining_offset_removed);
+}
+
 TEST(ProfileDeviation, NoiseWithinTheStatedPrecisionIsNotCountedAndTheOffsetIsStated) {
   // A lining 3 mm inside the design line with +-7 mm of noise per facet (as
   // a reconstruction's surface: a bias and noise), and one pocket of
